@@ -1,0 +1,85 @@
+"""Geodesy: geodetic -> ECEF position (paper eq. 1) and the ENU -> ECEF rotation T (eq. 4).
+
+Frames (SPEC section 1): ``ecef`` is WGS-84 earth-centred earth-fixed; ``enu`` is the
+local geographic frame at a platform (x east, y north, z up along the geodetic normal).
+Latitude B, longitude L in radians, height H above the ellipsoid in metres.
+"""
+
+import sympy as sp
+
+from .constants import WGS84_A, WGS84_B, WGS84_E2
+from .spec import FunctionSpec, Port
+
+lat, lon, alt = sp.symbols("lat lon alt", real=True)
+
+
+def geodetic2ecef_expr(B, L, H) -> sp.Matrix:
+    """Eq. (1): ECEF position (m) of geodetic (B, L, H)."""
+    N = WGS84_A / sp.sqrt(1 - WGS84_E2 * sp.sin(B) ** 2)  # prime-vertical radius of curvature
+    return sp.Matrix(
+        [
+            (N + H) * sp.cos(B) * sp.cos(L),
+            (N + H) * sp.cos(B) * sp.sin(L),
+            (N * (1 - WGS84_E2) + H) * sp.sin(B),
+        ]
+    )
+
+
+def enu2ecef_standard_expr(B, L) -> sp.Matrix:
+    """R_ecef_enu: the orthonormal rotation taking ENU components to ECEF components."""
+    sB, cB, sL, cL = sp.sin(B), sp.cos(B), sp.sin(L), sp.cos(L)
+    return sp.Matrix(
+        [
+            [-sL, -sB * cL, cB * cL],
+            [cL, -sB * sL, cB * sL],
+            [0, cB, sB],
+        ]
+    )
+
+
+def enu2ecef_paper_expr(B, L) -> sp.Matrix:
+    """Eq. (4) of seed 000 exactly as printed (reproduction only).
+
+    It is a rotation too, but it equals the standard one evaluated at a latitude psi
+    with tan(psi) = (a/b)^2 tan(B): the local frame is tilted by ~0.12 deg at 20 deg N.
+    """
+    a4, b4 = WGS84_A**4, WGS84_B**4
+    sB, cB, sL, cL = sp.sin(B), sp.cos(B), sp.sin(L), sp.cos(L)
+    d1 = sp.sqrt(1 - (a4 - b4) / a4 * cB**2)
+    d2 = sp.sqrt(1 + (a4 - b4) / b4 * sB**2)
+    return sp.Matrix(
+        [
+            [-sL, -sB * cL / d1, cB * cL / d2],
+            [cL, -sB * sL / d1, cB * sL / d2],
+            [0, cB / d2, sB / d1],
+        ]
+    )
+
+
+T_VARIANTS = {"standard": enu2ecef_standard_expr, "paper": enu2ecef_paper_expr}
+
+LAT_DOMAIN = (-sp.pi / 2, sp.pi / 2)
+GEO_DOMAIN = {"lat": (-1.5707963267948966, 1.5707963267948966), "lon": (-3.141592653589793, 3.141592653589793), "alt": (-500.0, 1.0e5)}
+
+
+def specs() -> list[FunctionSpec]:
+    out = [
+        FunctionSpec(
+            name="geodetic2ecef",
+            doc="ECEF position (m) of a geodetic point (lat, lon in rad; alt in m above WGS-84). Eq. (1).",
+            inputs=(Port("lat", lat, "rad"), Port("lon", lon, "rad"), Port("alt", alt, "m")),
+            outputs=(Port("p_ecef", geodetic2ecef_expr(lat, lon, alt), "m"),),
+            domain=GEO_DOMAIN,
+        )
+    ]
+    for variant, fn in T_VARIANTS.items():
+        out.append(
+            FunctionSpec(
+                name=f"enu2ecef_rotation_{variant}",
+                doc=f"R_ecef_enu at (lat, lon) in rad, '{variant}' variant (SPEC section 2 item 2).",
+                inputs=(Port("lat", lat, "rad"), Port("lon", lon, "rad")),
+                outputs=(Port("R_ecef_enu", fn(lat, lon), "1"),),
+                domain=GEO_DOMAIN,
+            )
+        )
+    return out

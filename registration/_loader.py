@@ -1,0 +1,318 @@
+"""Load the generated CasADi functions: hash-checked, lazily, once; compiled C when possible.
+
+Artifacts live in ``registration/_generated`` when installed (the repository's ``generated/``
+folder is mapped there by ``pyproject.toml``) or in ``generated/`` beside the package in a source
+checkout. Every artifact's sha256 is checked against ``manifest.json`` before it is used.
+
+Backends (environment variable ``REGISTRATION_BACKEND``):
+
+- ``c``: the shipped C sources plus a small batch driver are compiled once into a shared
+  library in a per-user cache (``$REGISTRATION_CACHE_DIR``, else ``$XDG_CACHE_HOME`` or
+  ``~/.cache``, subfolder ``sensor-registration``), keyed by the sources' hash, and called through
+  ctypes with numpy buffers passed by pointer (zero copy for contiguous float64 input);
+- ``casadi``: the serialized functions, evaluated with ``Function.map`` (no compiler needed);
+- ``auto`` (default): ``c`` if a C compiler works, otherwise ``casadi`` with one warning.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import hashlib
+import json
+import os
+import platform
+import shutil
+import subprocess
+import sys
+import tempfile
+import threading
+import warnings
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["GeneratedFunction", "get", "manifest", "backend", "ArtifactError", "generated_dir"]
+
+_LOCK = threading.RLock()
+_DRIVER = Path(__file__).with_name("_batch.c")
+_CFLAGS = ["-O2", "-fPIC", "-shared"]
+
+
+class ArtifactError(RuntimeError):
+    """A generated artifact is missing, tampered with, or does not match the manifest."""
+
+
+@lru_cache(maxsize=1)
+def generated_dir() -> Path:
+    try:
+        from importlib.resources import files
+
+        import registration._generated as pkg  # noqa: F401  (installed layout)
+
+        path = Path(str(files("registration._generated")))
+        if (path / "manifest.json").exists():
+            return path
+    except ImportError:
+        pass
+    path = Path(__file__).resolve().parent.parent / "generated"
+    if not (path / "manifest.json").exists():
+        raise ArtifactError(
+            "cannot find the generated artifacts (registration/_generated or generated/manifest.json); "
+            "run `python -m derive` in a source checkout and reinstall"
+        )
+    return path
+
+
+@lru_cache(maxsize=1)
+def manifest() -> dict:
+    return json.loads((generated_dir() / "manifest.json").read_text())
+
+
+def _read_checked(name: str, kind: str) -> bytes:
+    meta = manifest()["functions"].get(name)
+    if meta is None:
+        raise ArtifactError(f"no generated function named {name!r}; known: {sorted(manifest()['functions'])}")
+    art = meta["artifacts"][kind]
+    path = generated_dir() / art["file"]
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise ArtifactError(f"generated artifact {path} is missing: {exc}") from exc
+    digest = hashlib.sha256(data).hexdigest()
+    if digest != art["sha256"]:
+        raise ArtifactError(
+            f"generated artifact {path} does not match manifest.json (sha256 {digest[:12]}... != "
+            f"{art['sha256'][:12]}...): it was edited or is stale; run `python -m derive` and reinstall"
+        )
+    return data
+
+
+# --------------------------------------------------------------------------- C backend
+def _cache_root() -> Path:
+    if os.environ.get("REGISTRATION_CACHE_DIR"):
+        return Path(os.environ["REGISTRATION_CACHE_DIR"])
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return Path(base) / "sensor-registration"
+
+
+def _compiler() -> str | None:
+    cc = os.environ.get("CC") or shutil.which("cc") or shutil.which("gcc") or shutil.which("clang")
+    return cc
+
+
+@lru_cache(maxsize=1)
+def _c_library():
+    """Compile (once per source hash) and load the shared library; None when impossible."""
+    cc = _compiler()
+    if cc is None:
+        raise ArtifactError("no C compiler found (set CC)")
+    names = sorted(manifest()["functions"])
+    sources = [(f"{n}.c", _read_checked(n, "c")) for n in names]
+    key = hashlib.sha256()
+    for fname, data in sources:
+        key.update(fname.encode() + data)
+    key.update(_DRIVER.read_bytes())
+    key.update(" ".join([cc, *_CFLAGS, platform.machine(), sys.platform]).encode())
+    digest = key.hexdigest()[:24]
+    target_dir = _cache_root() / digest
+    lib_path = target_dir / "libregistration_generated.so"
+    if not lib_path.exists():
+        target_dir.mkdir(parents=True, exist_ok=True)
+        with tempfile.TemporaryDirectory(dir=target_dir) as tmp:
+            tmp = Path(tmp)
+            paths = [str(_DRIVER)]
+            for fname, data in sources:
+                (tmp / fname).write_bytes(data)
+                paths.append(str(tmp / fname))
+            out = tmp / "lib.so"
+            proc = subprocess.run([cc, *_CFLAGS, "-o", str(out), *paths, "-lm"], capture_output=True, text=True)
+            if proc.returncode != 0:
+                raise ArtifactError(f"C compilation failed: {proc.stderr.strip()[:2000]}")
+            os.replace(out, lib_path)  # atomic publish: concurrent builders never see half a file
+    lib = ctypes.CDLL(str(lib_path))
+    lib.registration_batch.restype = ctypes.c_int
+    return lib
+
+
+# --------------------------------------------------------------------------- backend choice
+_backend_cache: dict = {}
+
+
+def backend() -> str:
+    """The backend in use: 'c' or 'casadi' (decided once per process)."""
+    with _LOCK:
+        if "name" in _backend_cache:
+            return _backend_cache["name"]
+        wanted = os.environ.get("REGISTRATION_BACKEND", "auto").lower()
+        if wanted not in {"auto", "c", "casadi"}:
+            raise ValueError(f"REGISTRATION_BACKEND must be auto, c or casadi, got {wanted!r}")
+        name = "casadi"
+        if wanted in {"auto", "c"}:
+            try:
+                _c_library()
+                name = "c"
+            except (ArtifactError, OSError) as exc:
+                if wanted == "c":
+                    raise
+                warnings.warn(
+                    f"compiled C backend unavailable ({exc}); using the serialized CasADi functions (slower)",
+                    RuntimeWarning,
+                    stacklevel=2,
+                )
+        _backend_cache["name"] = name
+        return name
+
+
+# --------------------------------------------------------------------------- functions
+class GeneratedFunction:
+    """One generated function, vectorised over a leading axis of N points.
+
+    Each input is given either at its core shape (broadcast to every point) or with one extra
+    leading axis of length N: a scalar input as () or (N,), a vector (r,) or (N, r), a matrix
+    (r, c) or (N, r, c). Outputs always have the leading axis: (N,), (N, r) or (N, r, c).
+    """
+
+    def __init__(self, name: str, force_backend: str | None = None):
+        meta = manifest()["functions"][name]
+        self.name = name
+        self.doc = meta["doc"]
+        self.input_names = [p["name"] for p in meta["inputs"]]
+        self.output_names = [p["name"] for p in meta["outputs"]]
+        self.input_shapes = [tuple(p["shape"]) for p in meta["inputs"]]
+        self.output_shapes = [tuple(p["shape"]) for p in meta["outputs"]]
+        self._work = meta["work"]
+        self._backend = force_backend or backend()
+        self._casadi = None
+        self._maps: dict = {}
+        if self._backend == "c":
+            lib = _c_library()
+            self._fptr = ctypes.cast(getattr(lib, name), ctypes.c_void_p)
+            self._batch = lib.registration_batch
+            self._arg = (ctypes.c_void_p * max(self._work["sz_arg"], 1))()
+            self._res = (ctypes.c_void_p * max(self._work["sz_res"], 1))()
+            self._iw = np.zeros(max(self._work["sz_iw"], 1), dtype=np.int64)
+            self._w = np.zeros(max(self._work["sz_w"], 1), dtype=np.float64)
+        self.__doc__ = self.doc
+
+    @property
+    def casadi(self):
+        """The serialized ``casadi.Function`` (hash-checked), e.g. for automatic differentiation."""
+        return self._casadi_fn()
+
+    def __repr__(self) -> str:
+        ins = ", ".join(f"{n}{list(s)}" for n, s in zip(self.input_names, self.input_shapes))
+        outs = ", ".join(f"{n}{list(s)}" for n, s in zip(self.output_names, self.output_shapes))
+        return f"<generated {self.name}({ins}) -> ({outs}) [{self._backend}]>"
+
+    # -- argument handling
+    def _prepare(self, args):
+        if len(args) != len(self.input_names):
+            raise TypeError(f"{self.name} takes {len(self.input_names)} inputs {self.input_names}, got {len(args)}")
+        prepared, n = [], None
+        for name, shape, arg in zip(self.input_names, self.input_shapes, args):
+            a = np.asarray(arg, dtype=np.float64)
+            core = () if shape == (1, 1) else ((shape[0],) if shape[1] == 1 else shape)
+            if a.shape == core:
+                batched = False
+            elif a.ndim == len(core) + 1 and a.shape[1:] == core:
+                batched = True
+                if n is None:
+                    n = a.shape[0]
+                elif a.shape[0] != n:
+                    raise ValueError(
+                        f"{self.name}: input {name!r} has {a.shape[0]} points but an earlier input has {n}"
+                    )
+            else:
+                raise ValueError(f"{self.name}: input {name!r} must have shape {core} or (N, *{core}), got {a.shape}")
+            prepared.append((a, batched, core))
+        return prepared, (1 if n is None else n)
+
+    def __call__(self, *args):
+        prepared, n = self._prepare(args)
+        if self._backend == "c":
+            return self._call_c(prepared, n)
+        return self._call_casadi(prepared, n)
+
+    def _call_c(self, prepared, n):
+        in_ptr = (ctypes.c_void_p * len(prepared))()
+        in_stride = (ctypes.c_longlong * len(prepared))()
+        keep = []
+        for j, (a, batched, core) in enumerate(prepared):
+            if len(core) == 2:  # CasADi is column-major per point
+                a = np.swapaxes(a, -1, -2)
+            a = np.ascontiguousarray(a)
+            keep.append(a)
+            in_ptr[j] = a.ctypes.data
+            in_stride[j] = int(np.prod(core)) if batched else 0
+        outs = []
+        out_ptr = (ctypes.c_void_p * len(self.output_shapes))()
+        out_stride = (ctypes.c_longlong * len(self.output_shapes))()
+        for j, (r, c) in enumerate(self.output_shapes):
+            buf = np.empty((n, r * c), dtype=np.float64)
+            outs.append(buf)
+            out_ptr[j] = buf.ctypes.data
+            out_stride[j] = r * c
+        flag = self._batch(
+            self._fptr, ctypes.c_longlong(n),
+            len(prepared), in_ptr, in_stride,
+            len(outs), out_ptr, out_stride,
+            self._arg, self._res, self._iw.ctypes.data_as(ctypes.c_void_p), self._w.ctypes.data_as(ctypes.c_void_p),
+        )
+        if flag:
+            raise RuntimeError(f"generated function {self.name} failed with flag {flag}")
+        return tuple(self._shape_out(buf, n, shape) for buf, shape in zip(outs, self.output_shapes))
+
+    @staticmethod
+    def _shape_out(buf, n, shape):
+        r, c = shape
+        if (r, c) == (1, 1):
+            return buf.reshape(n)
+        if c == 1:
+            return buf.reshape(n, r)
+        return buf.reshape(n, c, r).swapaxes(1, 2)
+
+    def _casadi_fn(self):
+        if self._casadi is None:
+            import casadi as ca
+
+            text = _read_checked(self.name, "casadi")
+            lines = [ln for ln in text.decode().splitlines() if ln and not ln.startswith("#")]
+            self._casadi = ca.Function.deserialize("".join(lines))
+        return self._casadi
+
+    def _call_casadi(self, prepared, n):
+        import casadi as ca
+
+        fn = self._casadi_fn()
+        if n not in self._maps:
+            self._maps = {n: fn.map(n, "serial")}  # keep one: big maps are cheap to rebuild, costly to hoard
+        mapped = self._maps[n]
+        dms = []
+        for a, batched, core in prepared:
+            r = core[0] if core else 1
+            c = core[1] if len(core) == 2 else 1
+            if batched:
+                a2 = a.reshape(n, r, c).transpose(1, 0, 2).reshape(r, n * c)
+            else:
+                a2 = a.reshape(r, c)
+            dms.append(ca.DM(a2))
+        res = mapped(*dms)
+        res = res if isinstance(res, (list, tuple)) else [res]
+        outs = []
+        for dm, (r, c) in zip(res, self.output_shapes):
+            arr = np.asarray(ca.DM(dm).full()).reshape(r, n, c).transpose(1, 0, 2)
+            outs.append(arr.reshape(n) if (r, c) == (1, 1) else (arr.reshape(n, r) if c == 1 else arr))
+        return tuple(outs)
+
+
+_functions: dict = {}
+
+
+def get(name: str) -> GeneratedFunction:
+    """The generated function ``name``, loaded once per process (thread-safe)."""
+    with _LOCK:
+        fn = _functions.get(name)
+        if fn is None:
+            fn = _functions[name] = GeneratedFunction(name)
+        return fn
