@@ -1,0 +1,40 @@
+"""Shared fixtures: the derive specs (sympy) and random points inside each spec's domain."""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+import pytest
+
+
+@lru_cache(maxsize=1)
+def all_specs():
+    from derive.registry import all_specs as _all
+
+    return {s.name: s for s in _all()}
+
+
+def port_size(port) -> int:
+    r, c = port.shape
+    return r * c
+
+
+def sample_inputs(spec, n: int, rng: np.random.Generator) -> list[np.ndarray]:
+    """Uniform random inputs in the spec's domain, one array per input, leading axis n."""
+    out = []
+    for port in spec.inputs:
+        dom = spec.domain.get(port.name)
+        size = port_size(port)
+        if dom is None:
+            raise KeyError(f"{spec.name}: no test domain for input {port.name}")
+        bounds = [dom] if size == 1 and isinstance(dom[0], (int, float)) else list(dom)
+        cols = [rng.uniform(lo, hi, n) for lo, hi in bounds]
+        arr = np.stack(cols, axis=-1)
+        out.append(arr[:, 0] if size == 1 else arr)
+    return out
+
+
+@pytest.fixture(scope="session")
+def specs():
+    return all_specs()

@@ -1,0 +1,46 @@
+"""Bad input gets a clear ValueError naming the argument, the first bad index and the unit."""
+
+import numpy as np
+import pytest
+
+from registration import frames
+
+
+def test_latitude_out_of_range_names_index_and_unit():
+    with pytest.raises(ValueError, match=r"lat: value 2.* at index 1 .*rad"):
+        frames.geodetic2ecef([0.1, 2.0], 0.0, 0.0)
+
+
+def test_degrees_passed_as_radians_get_a_hint():
+    with pytest.raises(ValueError, match="look like degrees"):
+        frames.geodetic2ecef(45.0, 10.0, 0.0)
+    with pytest.raises(ValueError, match="look like degrees"):
+        frames.deck2enu(1000.0, 90.0, 0.0, 0.0, 0.0, 0.0)
+
+
+def test_non_finite_values_are_refused():
+    with pytest.raises(ValueError, match=r"alt: non-finite value nan at index 2"):
+        frames.geodetic2ecef(0.0, 0.0, [0.0, 1.0, np.nan])
+    with pytest.raises(ValueError, match="heading: non-finite"):
+        frames.deck2enu(1000.0, 0.0, 0.0, np.inf, 0.0, 0.0)
+
+
+@pytest.mark.parametrize("bad", [0.0, -5.0])
+def test_non_positive_range_is_refused(bad):
+    with pytest.raises(ValueError, match=r"r: value .* at index 1 must be > 0 m"):
+        frames.deck2enu_jacobians([100.0, bad], 0.0, 0.0, 0.0, 0.0, 0.0)
+
+
+def test_mismatched_lengths_are_refused():
+    with pytest.raises(ValueError, match="lengths must match"):
+        frames.geodetic2ecef([0.1, 0.2], [0.1, 0.2, 0.3], 0.0)
+
+
+def test_unknown_variant_is_refused():
+    with pytest.raises(ValueError, match="variant"):
+        frames.enu2ecef_rotation(0.1, 0.2, variant="wgs72")
+
+
+def test_non_numeric_input_is_refused():
+    with pytest.raises(ValueError, match="lat: expected numbers"):
+        frames.geodetic2ecef("north", 0.0, 0.0)
