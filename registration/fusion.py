@@ -1,0 +1,534 @@
+"""D: dissimilar-dimension fusion of a radar with a sensor that measures fewer polar components.
+
+SPEC section 3 (seed 003). A radar at ``site_radar_loc`` measures every polar component of a
+target; a second sensor at ``site_second_loc`` (another site or the same one) measures any
+non-empty subset of them:
+
+- 2-D: ``range``, ``azimuth`` (alias ``bearing``);
+- 3-D: ``range``, ``azimuth``, ``elevation``.
+
+Frame ``loc``: one local Cartesian frame shared by both sensors (in the paper's figures the
+plane with +x from the radar A towards the second site B). Polar coordinates of a point seen
+from a site are ``[r, az(, el)]``: range in metres, azimuth counter-clockwise from +x, elevation
+above the x-y plane, radians (the generated ``polar2cartesian*`` / ``cartesian2polar*``
+functions, derive/polar.py). Every transform and Jacobian is a generated function; this module
+only does linear algebra on top of them.
+
+The paper's method (:func:`fuse_paper`), steps (1)-(5) of SPEC section 3:
+
+1. radar point ``C`` and covariance ``P = J_A diag(sigma_A^2) J_A^T``;
+2. ``C`` in the second site's polar frame, each component's variance propagated from ``P``
+   (eq. 7: the diagonal of ``G P G^T``, ``G = d polar_B / d p``);
+3. inverse-variance fusion of each component the second sensor measures with that sensor's
+   value (angles fused on the wrapped difference);
+4. pseudo-measurement point ``H`` rebuilt at the second site from the fused polar values, with
+   ``R = J_B diag(var_fused) J_B^T`` (eq. 9-12; like the paper, cross-covariances between the
+   polar components at the second site are dropped);
+5. ``X = R (P + R)^-1 X_C + P (P + R)^-1 X_H`` (eq. 13), claimed covariance
+   ``P (P + R)^-1 R = (P^-1 + R^-1)^-1``.
+
+Step 5 treats ``X_C`` and ``X_H`` as independent although ``H`` is built from the radar's own
+data, so the claimed covariance is optimistic. :func:`fuse_paper` therefore also returns the
+*consistent* covariance: the first-order propagation of both sensors' raw noise through all five
+steps (weights held at their evaluated values), which is what the method actually delivers.
+
+Beyond the paper, :func:`fuse_optimal` is the maximum-likelihood fuser on the raw measurements
+(Gauss-Newton from the radar point) and :func:`crlb` its Cramer-Rao bound. GDOP (eq. 18) is
+``sqrt(trace(cov))``: :func:`gdop` from a covariance, :func:`gdop_from_samples` from points.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _loader
+from .validation import as_float_array, check_finite, check_positive, check_range
+
+__all__ = [
+    "COMPONENTS",
+    "FusionResult",
+    "OptimalResult",
+    "parse_components",
+    "radar_point",
+    "fuse_paper",
+    "fuse_optimal",
+    "crlb",
+    "fisher_information",
+    "gdop",
+    "gdop_from_samples",
+    "wrap_angle",
+]
+
+#: polar components in generated-function order, per dimension
+COMPONENTS = {2: ("range", "azimuth"), 3: ("range", "azimuth", "elevation")}
+_ALIASES = {"bearing": "azimuth", "r": "range", "az": "azimuth", "el": "elevation"}
+_UNITS = {"range": "m", "azimuth": "rad", "elevation": "rad"}
+#: a point closer than this fraction of the radar range to a site is "at the site"
+_SITE_TOL = 1e-9
+
+
+def wrap_angle(a: np.ndarray) -> np.ndarray:
+    """Angles (rad) wrapped to (-pi, pi]."""
+    w = np.mod(np.asarray(a, dtype=np.float64) + np.pi, 2.0 * np.pi) - np.pi
+    return np.where(w == -np.pi, np.pi, w)
+
+
+# --------------------------------------------------------------------------- generated transforms
+def _polar2cartesian(polar: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """polar (N, d) -> p (N, d) relative to the site, J = dp/dpolar (N, d, d)."""
+    d = polar.shape[-1]
+    return _loader.get(f"polar2cartesian{d}")(polar)
+
+
+def _cartesian2polar(p_rel: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """p relative to a site (N, d) -> polar (N, d), J = dpolar/dp (N, d, d)."""
+    d = p_rel.shape[-1]
+    return _loader.get(f"cartesian2polar{d}")(p_rel)
+
+
+# --------------------------------------------------------------------------- input checks
+def parse_components(components, dim: int) -> np.ndarray:
+    """Indices (into ``COMPONENTS[dim]``) of the named components, in the order given.
+
+    Raises ValueError for an unknown or duplicated name, an empty list, or ``elevation`` in 2-D.
+    """
+    if dim not in COMPONENTS:
+        raise ValueError(f"dim: expected 2 or 3 polar components (range, azimuth[, elevation]), got {dim}")
+    if isinstance(components, str):
+        components = [c for c in components.replace(",", " ").split() if c]
+    names = list(components)
+    if not names:
+        raise ValueError(f"components: the second sensor must measure at least one of {COMPONENTS[dim]}")
+    allowed = COMPONENTS[dim]
+    idx = []
+    for raw in names:
+        if not isinstance(raw, str):
+            raise ValueError(f"components: expected component names from {allowed}, got {raw!r}")
+        name = _ALIASES.get(raw.strip().lower(), raw.strip().lower())
+        if name not in allowed:
+            raise ValueError(
+                f"components: unknown component {raw!r} for a {dim}-D problem; expected names from {allowed}"
+                + (" (alias 'bearing' = 'azimuth')" if dim == 2 else "")
+            )
+        i = allowed.index(name)
+        if i in idx:
+            raise ValueError(f"components: {name!r} is listed twice")
+        idx.append(i)
+    return np.asarray(idx, dtype=np.intp)
+
+
+def _polar_checks(name: str, z: np.ndarray, names: tuple[str, ...]) -> None:
+    for j, comp in enumerate(names):
+        col = z[..., j]
+        field = f"{name}[..., {j}] ({comp})"
+        if comp == "range":
+            check_positive(field, col, "m")
+        elif comp == "azimuth":
+            check_range(field, col, -2 * np.pi, 2 * np.pi, "rad (azimuth, counter-clockwise from +x)", angle=True)
+        else:
+            check_range(field, col, -np.pi / 2, np.pi / 2, "rad (elevation above the x-y plane)", angle=True)
+
+
+def _as_rows(name: str, value, width: int, what: str) -> np.ndarray:
+    """A (width,) or (N, width) float array as (N, width)."""
+    a = as_float_array(name, value)
+    if a.ndim == 1 and a.shape[0] == width:
+        return a[None, :]
+    if a.ndim == 2 and a.shape[1] == width:
+        return a
+    raise ValueError(f"{name}: expected shape ({width},) or (N, {width}) [{what}], got {a.shape}")
+
+
+def _sigmas(name: str, value, width: int, names: tuple[str, ...]) -> np.ndarray:
+    units = ", ".join(f"{n} {_UNITS[n]}" for n in names)
+    s = _as_rows(name, value, width, f"standard deviations: {units}")
+    check_positive(name, s, f"(standard deviations: {units})")
+    return s
+
+
+def _site(name: str, value, dim: int) -> np.ndarray:
+    s = as_float_array(name, value)
+    if s.shape != (dim,):
+        raise ValueError(f"{name}: expected a position of shape ({dim},) in metres (frame loc), got {s.shape}")
+    check_finite(name, s, "m")
+    return s
+
+
+def _common_n(**arrays: np.ndarray) -> int:
+    n, first = 1, None
+    for key, a in arrays.items():
+        if a.shape[0] != 1:
+            if first is None:
+                n, first = a.shape[0], key
+            elif a.shape[0] != n:
+                raise ValueError(f"{key}: has {a.shape[0]} rows but {first} has {n}; lengths must match")
+    return n
+
+
+def _bcast(a: np.ndarray, n: int) -> np.ndarray:
+    return np.broadcast_to(a, (n,) + a.shape[1:]) if a.shape[0] != n else a
+
+
+def _check_off_site(name: str, range_m: np.ndarray, scale_m: np.ndarray) -> None:
+    bad = range_m <= _SITE_TOL * np.maximum(scale_m, 1.0)
+    if bad.any():
+        i = int(np.argwhere(bad)[0][0])
+        raise ValueError(
+            f"{name}: the target at row {i} is at the sensor's site (distance {range_m[i]:.3g} m); "
+            "bearings from a site to itself are undefined"
+        )
+
+
+# --------------------------------------------------------------------------- small linear algebra
+def _sym(m: np.ndarray) -> np.ndarray:
+    return 0.5 * (m + np.swapaxes(m, -1, -2))
+
+
+def _sandwich(a: np.ndarray, diag: np.ndarray) -> np.ndarray:
+    """a diag(diag) a^T for stacks: a (N, m, k), diag (N, k) -> (N, m, m)."""
+    return _sym(np.einsum("nik,nk,njk->nij", a, diag, a))
+
+
+def _congruence(a: np.ndarray, m: np.ndarray) -> np.ndarray:
+    """a m a^T for stacks."""
+    return _sym(a @ m @ np.swapaxes(a, -1, -2))
+
+
+def gdop(cov) -> np.ndarray:
+    """GDOP (eq. 18) = sqrt(trace(cov)) in metres for a covariance (d, d) or a stack (..., d, d) in m^2."""
+    c = as_float_array("cov", cov)
+    if c.ndim < 2 or c.shape[-1] != c.shape[-2]:
+        raise ValueError(f"cov: expected a square covariance (..., d, d) in m^2, got shape {c.shape}")
+    return np.sqrt(np.trace(c, axis1=-2, axis2=-1))
+
+
+def gdop_from_samples(p, truth=None) -> float:
+    """GDOP (m) of sample points ``p`` (N, d) in metres.
+
+    Without ``truth``: sqrt(trace of the sample covariance about the sample mean), the definition
+    of eq. (18). With ``truth`` (d,): the root-mean-square distance to it (includes any bias).
+    """
+    x = as_float_array("p", p)
+    if x.ndim != 2 or x.shape[0] < 2:
+        raise ValueError(f"p: expected at least 2 sample points of shape (N, d) in metres, got {x.shape}")
+    if truth is None:
+        dev = x - x.mean(axis=0)
+        return float(np.sqrt(np.sum(dev * dev) / (x.shape[0] - 1)))
+    t = as_float_array("truth", truth)
+    if t.shape != (x.shape[1],):
+        raise ValueError(f"truth: expected shape ({x.shape[1]},) in metres, got {t.shape}")
+    dev = x - t
+    return float(np.sqrt(np.sum(dev * dev) / x.shape[0]))
+
+
+# --------------------------------------------------------------------------- step (1)
+def radar_point(z_radar, sigma_radar, site_radar_loc=None) -> tuple[np.ndarray, np.ndarray]:
+    """Step (1): radar polar measurement -> point ``p_loc`` (N, d) m and covariance ``P`` (N, d, d) m^2.
+
+    ``z_radar`` (d,) or (N, d): [r m, az rad(, el rad)] seen from ``site_radar_loc`` (d,) m
+    (default the origin). ``sigma_radar`` (d,) or (N, d): standard deviations in the same units.
+    """
+    z = as_float_array("z_radar", z_radar)
+    dim = z.shape[-1] if z.ndim in (1, 2) else -1
+    if dim not in COMPONENTS:
+        raise ValueError(f"z_radar: expected shape (d,) or (N, d) with d = 2 or 3 (range m, azimuth rad[, elevation rad]), got {z.shape}")
+    z = _as_rows("z_radar", z, dim, "range m, azimuth rad[, elevation rad]")
+    _polar_checks("z_radar", z, COMPONENTS[dim])
+    s = _sigmas("sigma_radar", sigma_radar, dim, COMPONENTS[dim])
+    site = _site("site_radar_loc", np.zeros(dim) if site_radar_loc is None else site_radar_loc, dim)
+    n = _common_n(z_radar=z, sigma_radar=s)
+    p_rel, J = _polar2cartesian(np.ascontiguousarray(_bcast(z, n)))
+    return p_rel + site, _sandwich(J, _bcast(s, n) ** 2)
+
+
+# --------------------------------------------------------------------------- the paper's method
+@dataclass(frozen=True)
+class FusionResult:
+    """Output of :func:`fuse_paper`; every array has a leading axis of N measurement pairs.
+
+    Positions in metres in frame ``loc``; covariances in m^2; polar values [r m, az rad(, el rad)]
+    seen from the second site.
+    """
+
+    #: step (1): radar point C (N, d) and its covariance P (N, d, d)
+    p_radar_loc: np.ndarray
+    P_radar: np.ndarray
+    #: step (2): C in the second site's polar frame (N, d) and each component's variance (eq. 7)
+    polar_radar_at_second: np.ndarray
+    var_radar_at_second: np.ndarray
+    #: step (3): fused polar values at the second site and their variances
+    polar_fused_at_second: np.ndarray
+    var_fused_at_second: np.ndarray
+    #: step (4): pseudo-measurement H and the paper's covariance R (cross terms dropped)
+    p_pseudo_loc: np.ndarray
+    R_pseudo: np.ndarray
+    #: first-order covariance of H from both sensors' raw noise (what H really scatters with)
+    R_pseudo_consistent: np.ndarray
+    #: step (5): fused point X (eq. 13), the method's own covariance, and the consistent one
+    p_fused_loc: np.ndarray
+    P_claimed: np.ndarray
+    P_consistent: np.ndarray
+    #: d X / d z_radar (N, d, d) and d X / d z_second (N, d, k): the first-order sensitivities
+    dX_dz_radar: np.ndarray
+    dX_dz_second: np.ndarray
+
+
+def _second_inputs(z_second, sigma_second, components, dim: int):
+    idx = parse_components(components, dim)
+    k = idx.size
+    names = tuple(COMPONENTS[dim][i] for i in idx)
+    z2 = _as_rows("z_second", z_second, k, ", ".join(f"{n} {_UNITS[n]}" for n in names))
+    _polar_checks("z_second", z2, names)
+    s2 = _sigmas("sigma_second", sigma_second, k, names)
+    return idx, z2, s2
+
+
+def fuse_paper(
+    z_radar,
+    sigma_radar,
+    z_second,
+    sigma_second,
+    components,
+    site_second_loc,
+    site_radar_loc=None,
+) -> FusionResult:
+    """The paper's dissimilar-dimension fusion, steps (1)-(5), vectorised over N pairs.
+
+    Parameters
+    ----------
+    z_radar : (d,) or (N, d)
+        Radar polar measurement [r m, az rad(, el rad)] from ``site_radar_loc``; d = 2 or 3.
+    sigma_radar : (d,) or (N, d)
+        Radar standard deviations [m, rad(, rad)].
+    z_second : (k,) or (N, k)
+        The second sensor's measurement of ``components`` (in that order) from ``site_second_loc``.
+    sigma_second : (k,) or (N, k)
+        Its standard deviations, same order and units.
+    components : sequence of str
+        Names of the components the second sensor measures (``range``, ``azimuth``/``bearing``,
+        ``elevation`` in 3-D), any non-empty subset in any order.
+    site_second_loc, site_radar_loc : (d,)
+        Site positions in metres, frame ``loc`` (radar default: the origin). Equal sites are the
+        same-platform case: then the transformed variances equal the radar's own.
+    """
+    z_a = as_float_array("z_radar", z_radar)
+    dim = z_a.shape[-1] if z_a.ndim in (1, 2) else -1
+    if dim not in COMPONENTS:
+        raise ValueError(f"z_radar: expected shape (d,) or (N, d) with d = 2 or 3 (range m, azimuth rad[, elevation rad]), got {z_a.shape}")
+    z_a = _as_rows("z_radar", z_a, dim, "range m, azimuth rad[, elevation rad]")
+    _polar_checks("z_radar", z_a, COMPONENTS[dim])
+    s_a = _sigmas("sigma_radar", sigma_radar, dim, COMPONENTS[dim])
+    site_a = _site("site_radar_loc", np.zeros(dim) if site_radar_loc is None else site_radar_loc, dim)
+    site_b = _site("site_second_loc", site_second_loc, dim)
+    idx, z_b, s_b = _second_inputs(z_second, sigma_second, components, dim)
+    n = _common_n(z_radar=z_a, sigma_radar=s_a, z_second=z_b, sigma_second=s_b)
+    z_a, s_a, z_b, s_b = (np.ascontiguousarray(_bcast(a, n)) for a in (z_a, s_a, z_b, s_b))
+    var_a, var_b = s_a**2, s_b**2
+
+    # (1) radar point and covariance
+    p_c_rel, J_a = _polar2cartesian(z_a)
+    p_c = p_c_rel + site_a
+    P = _sandwich(J_a, var_a)
+
+    # (2) C seen from the second site; variances by the Cartesian -> polar Jacobian (eq. 7)
+    polar_b, G = _cartesian2polar(p_c - site_b)
+    _check_off_site("site_second_loc", polar_b[:, 0], z_a[:, 0])
+    Q = _congruence(G, P)
+    var_b_prime = np.diagonal(Q, axis1=1, axis2=2).copy()
+
+    # (3) inverse-variance fusion of the components the second sensor measures
+    w = np.zeros((n, dim))  # weight of the second sensor per component (0 where not measured)
+    w[:, idx] = var_b_prime[:, idx] / (var_b_prime[:, idx] + var_b)
+    innov = z_b - polar_b[:, idx]
+    innov = np.where(idx != 0, wrap_angle(innov), innov)  # angles fused on the wrapped difference
+    polar_f = polar_b.copy()
+    polar_f[:, idx] += w[:, idx] * innov
+    polar_f[:, 1] = wrap_angle(polar_f[:, 1])  # azimuth back to (-pi, pi]
+    var_f = var_b_prime.copy()
+    var_f[:, idx] = var_b_prime[:, idx] * var_b / (var_b_prime[:, idx] + var_b)
+    if (polar_f[:, 0] <= 0).any():
+        i = int(np.argwhere(polar_f[:, 0] <= 0)[0][0])
+        raise ValueError(f"z_second: the fused range at row {i} is not positive ({polar_f[i, 0]:.3g} m)")
+
+    # (4) pseudo-measurement H at the second site and its covariance (paper: diagonal polar cov)
+    p_h_rel, J_h = _polar2cartesian(np.ascontiguousarray(polar_f))
+    p_h = p_h_rel + site_b
+    R = _sandwich(J_h, var_f)
+
+    # (5) convex combination, eq. (13)
+    S_inv = np.linalg.inv(P + R)
+    W_h = P @ S_inv  # weight of H; weight of C is R S^-1 = I - W_h
+    p_x = p_c + np.einsum("nij,nj->ni", W_h, p_h - p_c)
+    P_claimed = _sym(P @ S_inv @ R)
+
+    # consistent covariance: first-order propagation of the raw noise, weights held fixed
+    D = np.ones((n, dim))
+    D[:, idx] = 1.0 - w[:, idx]  # d polar_f / d polar_b (diagonal)
+    E = np.zeros((n, dim, idx.size))  # d polar_f / d z_second
+    E[:, idx, np.arange(idx.size)] = w[:, idx]
+    dH_dC = J_h @ (D[:, :, None] * G)
+    dH_da = dH_dC @ J_a
+    dH_db = J_h @ E
+    W_c = np.eye(dim) - W_h
+    dX_da = (W_c + W_h @ dH_dC) @ J_a
+    dX_db = W_h @ dH_db
+    P_consistent = _sandwich(dX_da, var_a) + _sandwich(dX_db, var_b)
+    R_consistent = _sandwich(dH_da, var_a) + _sandwich(dH_db, var_b)
+
+    return FusionResult(
+        p_radar_loc=p_c,
+        P_radar=P,
+        polar_radar_at_second=polar_b,
+        var_radar_at_second=var_b_prime,
+        polar_fused_at_second=polar_f,
+        var_fused_at_second=var_f,
+        p_pseudo_loc=p_h,
+        R_pseudo=R,
+        R_pseudo_consistent=R_consistent,
+        p_fused_loc=p_x,
+        P_claimed=P_claimed,
+        P_consistent=P_consistent,
+        dX_dz_radar=dX_da,
+        dX_dz_second=dX_db,
+    )
+
+
+# --------------------------------------------------------------------------- optimal fuser and CRLB
+def _model(p_loc: np.ndarray, site_a: np.ndarray, site_b: np.ndarray, idx: np.ndarray):
+    """Predicted measurements [radar polar (d), second (k)] and their Jacobian d/dp (N, d+k, d)."""
+    pol_a, G_a = _cartesian2polar(p_loc - site_a)
+    pol_b, G_b = _cartesian2polar(p_loc - site_b)
+    return np.concatenate([pol_a, pol_b[:, idx]], axis=1), np.concatenate([G_a, G_b[:, idx, :]], axis=1)
+
+
+def _residual(z: np.ndarray, h: np.ndarray, angle_cols: np.ndarray) -> np.ndarray:
+    r = z - h
+    r[:, angle_cols] = wrap_angle(r[:, angle_cols])
+    return r
+
+
+@dataclass(frozen=True)
+class OptimalResult:
+    """Output of :func:`fuse_optimal` (leading axis N)."""
+
+    #: maximum-likelihood position (N, d), metres, frame loc
+    p_loc: np.ndarray
+    #: inverse Fisher information at the estimate (N, d, d), m^2: the fuser's own covariance
+    P: np.ndarray
+    #: Gauss-Newton iterations used per pair, and whether the step fell below ``tol_m``
+    iterations: np.ndarray
+    converged: np.ndarray
+
+
+def fisher_information(p_loc, sigma_radar, sigma_second, components, site_second_loc, site_radar_loc=None) -> np.ndarray:
+    """Fisher information (N, d, d) in 1/m^2 of the raw measurements about the position ``p_loc`` (d,) or (N, d) m."""
+    p = as_float_array("p_loc", p_loc)
+    dim = p.shape[-1] if p.ndim in (1, 2) else -1
+    if dim not in COMPONENTS:
+        raise ValueError(f"p_loc: expected shape (d,) or (N, d) in metres with d = 2 or 3, got {p.shape}")
+    p = _as_rows("p_loc", p, dim, "m")
+    check_finite("p_loc", p, "m")
+    s_a = _sigmas("sigma_radar", sigma_radar, dim, COMPONENTS[dim])
+    site_a = _site("site_radar_loc", np.zeros(dim) if site_radar_loc is None else site_radar_loc, dim)
+    site_b = _site("site_second_loc", site_second_loc, dim)
+    idx = parse_components(components, dim)
+    s_b = _sigmas("sigma_second", sigma_second, idx.size, tuple(COMPONENTS[dim][i] for i in idx))
+    n = _common_n(p_loc=p, sigma_radar=s_a, sigma_second=s_b)
+    p = np.ascontiguousarray(_bcast(p, n))
+    scale = np.linalg.norm(p - site_a, axis=1)
+    _check_off_site("site_radar_loc", scale, scale)
+    _check_off_site("site_second_loc", np.linalg.norm(p - site_b, axis=1), scale)
+    _, H = _model(p, site_a, site_b, idx)
+    inv_var = np.concatenate([_bcast(s_a, n), _bcast(s_b, n)], axis=1) ** -2
+    return _sym(np.einsum("nki,nk,nkj->nij", H, inv_var, H))
+
+
+def crlb(p_loc, sigma_radar, sigma_second, components, site_second_loc, site_radar_loc=None) -> np.ndarray:
+    """Cramer-Rao bound (N, d, d) in m^2 on the position of a target at ``p_loc`` (d,) or (N, d) m.
+
+    The inverse Fisher information of the radar's polar measurement and the second sensor's
+    components, all with independent Gaussian noise: no unbiased fuser of these raw measurements
+    can have a smaller covariance.
+    """
+    return _sym(np.linalg.inv(fisher_information(p_loc, sigma_radar, sigma_second, components, site_second_loc, site_radar_loc)))
+
+
+def fuse_optimal(
+    z_radar,
+    sigma_radar,
+    z_second,
+    sigma_second,
+    components,
+    site_second_loc,
+    site_radar_loc=None,
+    *,
+    max_iterations: int = 30,
+    tol_m: float = 1e-6,
+) -> OptimalResult:
+    """Maximum-likelihood fusion of the raw measurements by Gauss-Newton from the radar point.
+
+    Minimises sum ((z - h(p)) / sigma)^2 over both sensors' components (angle residuals wrapped to
+    (-pi, pi]); a step that raises the cost is halved (up to 20 times). Same inputs as
+    :func:`fuse_paper`. Its covariance is the inverse Fisher information at the estimate, which
+    tends to :func:`crlb` as the noise shrinks.
+    """
+    if not (isinstance(max_iterations, (int, np.integer)) and max_iterations >= 1):
+        raise ValueError(f"max_iterations: expected a positive integer, got {max_iterations!r}")
+    if not (np.isfinite(tol_m) and tol_m > 0):
+        raise ValueError(f"tol_m: expected a positive step tolerance in metres, got {tol_m!r}")
+    z_a = as_float_array("z_radar", z_radar)
+    dim = z_a.shape[-1] if z_a.ndim in (1, 2) else -1
+    if dim not in COMPONENTS:
+        raise ValueError(f"z_radar: expected shape (d,) or (N, d) with d = 2 or 3 (range m, azimuth rad[, elevation rad]), got {z_a.shape}")
+    z_a = _as_rows("z_radar", z_a, dim, "range m, azimuth rad[, elevation rad]")
+    site_a = _site("site_radar_loc", np.zeros(dim) if site_radar_loc is None else site_radar_loc, dim)
+    site_b = _site("site_second_loc", site_second_loc, dim)
+    idx, z_b, s_b = _second_inputs(z_second, sigma_second, components, dim)
+    s_a = _sigmas("sigma_radar", sigma_radar, dim, COMPONENTS[dim])
+    _polar_checks("z_radar", z_a, COMPONENTS[dim])
+    n = _common_n(z_radar=z_a, sigma_radar=s_a, z_second=z_b, sigma_second=s_b)
+    z = np.concatenate([_bcast(z_a, n), _bcast(z_b, n)], axis=1)
+    inv_var = np.concatenate([_bcast(s_a, n), _bcast(s_b, n)], axis=1) ** -2
+    angle_cols = np.flatnonzero(np.concatenate([np.arange(dim), idx]) != 0)
+
+    p_rel, _ = _polar2cartesian(np.ascontiguousarray(_bcast(z_a, n)))
+    p = p_rel + site_a
+    scale = np.maximum(np.asarray(_bcast(z_a, n))[:, 0], 1.0)
+    iterations = np.zeros(n, dtype=np.int64)
+    converged = np.zeros(n, dtype=bool)
+    active = np.arange(n)
+    for _ in range(max_iterations):
+        if active.size == 0:
+            break
+        pa = p[active]
+        _check_off_site("site_second_loc", np.linalg.norm(pa - site_b, axis=1), scale[active])
+        _check_off_site("site_radar_loc", np.linalg.norm(pa - site_a, axis=1), scale[active])
+        h, H = _model(pa, site_a, site_b, idx)
+        r = _residual(z[active], h, angle_cols)
+        iv = inv_var[active]
+        cost = np.sum(r * r * iv, axis=1)
+        A = np.einsum("nki,nk,nkj->nij", H, iv, H)
+        g = np.einsum("nki,nk->ni", H, iv * r)
+        step = np.linalg.solve(A, g[..., None])[..., 0]
+        # backtracking: halve the step where the cost went up
+        pending = np.arange(active.size)
+        for _halve in range(20):
+            trial = pa[pending] + step[pending]
+            h_t, _ = _model(trial, site_a, site_b, idx)
+            r_t = _residual(z[active[pending]], h_t, angle_cols)
+            worse = np.sum(r_t * r_t * iv[pending], axis=1) > cost[pending] * (1 + 1e-12) + 1e-300
+            if not worse.any():
+                break
+            step[pending[worse]] *= 0.5
+            pending = pending[worse]
+        p[active] = pa + step
+        iterations[active] += 1
+        done = np.linalg.norm(step, axis=1) < tol_m
+        converged[active[done]] = True
+        active = active[~done]
+
+    _, H = _model(p, site_a, site_b, idx)
+    P = _sym(np.linalg.inv(np.einsum("nki,nk,nkj->nij", H, inv_var, H)))
+    return OptimalResult(p_loc=p, P=P, iterations=iterations, converged=converged)
