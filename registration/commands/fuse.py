@@ -1,0 +1,265 @@
+"""``registration fuse``: the paper's dissimilar-dimension fusion scenarios, with honest rows beside them.
+
+Prints one table (analytic and Monte Carlo GDOP per estimator, beside the paper's figure) and,
+with ``--out DIR``, writes ``summary.json``, ``measurements.png`` (like the paper's Fig. 3/5:
+geometry, radar points and pseudo-measurement points) and ``fused.png`` (like Fig. 4/6: fused
+points of the paper's method and of the optimal fuser), all with 2-sigma covariance ellipses.
+
+Units at this edge: metres, degrees (``_deg``) for positions of the target, milliradians
+(``_mrad``) for angle standard deviations (the paper quotes them in mrad).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+import numpy as np
+
+from .. import fusion
+from ..fusion_scenarios import ROW_LABELS, FusionEvaluation, evaluate, paper_scenario
+
+HELP = "Fuse a radar with a remote bearing-only or range-only sensor (paper scenarios 1 and 2): GDOP, CRLB, optimal fuser."
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--scenario", type=int, choices=(1, 2), default=1,
+                        help="the paper's scenario: 1 radar + passive bearing sensor, 2 radar + laser range finder (default 1); "
+                             "the options below override its parameters")
+    parser.add_argument("--trials", type=int, default=1000, help="Monte Carlo measurement pairs (default 1000, as in the paper)")
+    parser.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
+    parser.add_argument("--out", type=Path, default=None, help="folder for summary.json and the PNG plots")
+    g = parser.add_argument_group("geometry (radar A at the origin, azimuth counter-clockwise from +x)")
+    g.add_argument("--baseline-m", type=float, default=None, help="second site B at (L, 0[, 0]) metres")
+    g.add_argument("--site-second-m", type=float, nargs="+", default=None, metavar="XYZ",
+                   help="second site B anywhere: X Y [Z] metres (Z only in 3-D)")
+    g.add_argument("--target-range-m", type=float, default=None, help="true target range from the radar, m")
+    g.add_argument("--target-azimuth-deg", type=float, default=None, help="true target azimuth from the radar, deg")
+    g.add_argument("--target-elevation-deg", type=float, default=None,
+                   help="true target elevation from the radar, deg; giving it makes the problem 3-D")
+    s = parser.add_argument_group("sensors")
+    s.add_argument("--sigma-range-m", type=float, default=None, help="radar range standard deviation, m")
+    s.add_argument("--sigma-azimuth-mrad", type=float, default=None, help="radar azimuth standard deviation, mrad")
+    s.add_argument("--sigma-elevation-mrad", type=float, default=None, help="radar elevation standard deviation, mrad (3-D; default = azimuth)")
+    s.add_argument("--second", type=str, default=None,
+                   help="components the second sensor measures, comma separated: range, azimuth (bearing), elevation (3-D)")
+    s.add_argument("--sigma-second-range-m", type=float, default=None, help="second sensor range standard deviation, m")
+    s.add_argument("--sigma-second-azimuth-mrad", type=float, default=None, help="second sensor azimuth standard deviation, mrad")
+    s.add_argument("--sigma-second-elevation-mrad", type=float, default=None, help="second sensor elevation standard deviation, mrad")
+    parser.add_argument("--max-plot-points", type=int, default=2000, help="points drawn per set in the plots (default 2000)")
+
+
+# --------------------------------------------------------------------------- scenario from options
+def _scenario_from_args(args):
+    base = paper_scenario(args.scenario)
+    changes = {}
+    dim = 3 if args.target_elevation_deg is not None else base.dim
+    target = list(base.target_polar)
+    if args.target_range_m is not None:
+        target[0] = args.target_range_m
+    if args.target_azimuth_deg is not None:
+        target[1] = np.radians(args.target_azimuth_deg)
+    if dim == 3:
+        target = target[:2] + [np.radians(args.target_elevation_deg)]
+    if args.target_range_m is not None or args.target_azimuth_deg is not None or dim != base.dim:
+        changes["target_polar"] = np.array(target, dtype=float)
+
+    site = list(base.site_second_loc) + [0.0] * (dim - base.dim)
+    if args.baseline_m is not None and args.site_second_m is not None:
+        raise ValueError("--baseline-m and --site-second-m: give one of them, not both")
+    if args.baseline_m is not None:
+        site = [args.baseline_m] + [0.0] * (dim - 1)
+    if args.site_second_m is not None:
+        if len(args.site_second_m) != dim:
+            raise ValueError(f"--site-second-m: expected {dim} coordinates (m) for a {dim}-D problem, got {len(args.site_second_m)}")
+        site = list(args.site_second_m)
+    if args.baseline_m is not None or args.site_second_m is not None or dim != base.dim:
+        changes["site_second_loc"] = np.array(site, dtype=float)
+        changes["site_radar_loc"] = np.zeros(dim)
+
+    sig_r = list(base.sigma_radar)
+    if args.sigma_range_m is not None:
+        sig_r[0] = args.sigma_range_m
+    if args.sigma_azimuth_mrad is not None:
+        sig_r[1] = args.sigma_azimuth_mrad * 1e-3
+    if dim == 3:
+        el = args.sigma_elevation_mrad * 1e-3 if args.sigma_elevation_mrad is not None else sig_r[1]
+        sig_r = sig_r[:2] + [el]
+    elif args.sigma_elevation_mrad is not None:
+        raise ValueError("--sigma-elevation-mrad: only for a 3-D problem (give --target-elevation-deg)")
+    if args.sigma_range_m is not None or args.sigma_azimuth_mrad is not None or dim != base.dim:
+        changes["sigma_radar"] = np.array(sig_r, dtype=float)
+
+    given = {
+        "range": args.sigma_second_range_m,
+        "azimuth": None if args.sigma_second_azimuth_mrad is None else args.sigma_second_azimuth_mrad * 1e-3,
+        "elevation": None if args.sigma_second_elevation_mrad is None else args.sigma_second_elevation_mrad * 1e-3,
+    }
+    base_sig = dict(zip(base.components, base.sigma_second))
+    comps = tuple(base.components) if args.second is None else tuple(
+        fusion.COMPONENTS[dim][i] for i in fusion.parse_components(args.second, dim)
+    )
+    sig_b = []
+    for c in comps:
+        if given[c] is not None:
+            sig_b.append(given[c])
+        elif c in base_sig:
+            sig_b.append(base_sig[c])
+        else:
+            unit = "m" if c == "range" else "mrad"
+            raise ValueError(f"--sigma-second-{c}-{unit}: needed because the second sensor measures {c}")
+    for c, v in given.items():
+        if v is not None and c not in comps:
+            raise ValueError(f"--sigma-second-{c}-{'m' if c == 'range' else 'mrad'}: the second sensor does not measure {c} (see --second)")
+    if args.second is not None or any(v is not None for v in given.values()):
+        changes["components"] = comps
+        changes["sigma_second"] = np.array(sig_b, dtype=float)
+    return base.with_changes(**changes) if changes else base
+
+
+# --------------------------------------------------------------------------- table
+def _fmt(v) -> str:
+    return "-" if v is None else f"{v:.1f}"
+
+
+def format_table(ev: FusionEvaluation) -> str:
+    """The table the command prints: analytic and Monte Carlo GDOP (m) per row, beside the paper's."""
+    se = ev.monte_carlo_se_m
+    head = f"{ev.scenario.name}  ({ev.trials} Monte Carlo pairs, seed {ev.seed})"
+    cols = f"{'':38s} {'analytic':>10s} {'Monte Carlo':>18s} {'paper':>8s}"
+    lines = [head, "GDOP = sqrt(trace of position covariance), metres", cols, "-" * len(cols)]
+    for r in ev.rows:
+        mc = r["monte_carlo_gdop_m"]
+        mc_s = "-" if mc is None else f"{mc:.1f} +- {se[r['name']]:.1f}"
+        paper_s = ev.scenario.paper_printed.get(r["name"]) or _fmt(r["paper_gdop_m"])
+        lines.append(f"{ROW_LABELS[r['name']]:38s} {_fmt(r['analytic_gdop_m']):>10s} {mc_s:>18s} {paper_s:>8s}")
+    d = ev.details
+    lines.append("")
+    lines.append(
+        f"improvement over radar (Monte Carlo): paper method x{d['improvement_over_radar']['paper_actual']:.2f}, "
+        f"optimal x{d['improvement_over_radar']['optimal']:.2f}; CRLB/paper-method GDOP = {d['efficiency_paper_vs_crlb']:.3f}"
+    )
+    lines.append(f"claimed covariance below the CRLB: {'YES' if ev.claimed_below_crlb else 'no'}"
+                 f" (in {100 * ev.claimed_below_crlb_fraction:.0f}% of the trials)")
+    for w in ev.warnings:
+        lines.append(f"warning: {w}")
+    for n in ev.scenario.notes:
+        lines.append(f"note: {n}")
+    return "\n".join(lines)
+
+
+# --------------------------------------------------------------------------- plots
+def _ellipse(mean: np.ndarray, cov: np.ndarray, k: float = 2.0, n: int = 200) -> np.ndarray:
+    """Points (n, 2) of the k-sigma ellipse {x : (x - mean)^T cov^-1 (x - mean) = k^2} (x-y block)."""
+    c = cov[:2, :2]
+    vals, vecs = np.linalg.eigh(c)
+    t = np.linspace(0.0, 2.0 * np.pi, n)
+    circle = np.stack([np.cos(t), np.sin(t)])
+    return (mean[:2, None] + k * vecs @ (np.sqrt(np.maximum(vals, 0.0))[:, None] * circle)).T
+
+
+def _plot(ev: FusionEvaluation, out: Path, max_points: int) -> list[Path]:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    sc = ev.scenario
+    p_true = ev.p_true_loc
+    km = 1e-3
+    m = min(max_points, ev.trials)
+    pts = {k: v[:m] for k, v in ev.points.items()}
+    proj = " (x-y projection)" if sc.dim == 3 else ""
+    paths = []
+
+    # Fig. 3 / 5 analogue: geometry and the radar and pseudo-measurement point sets
+    fig, (ax0, ax1) = plt.subplots(1, 2, figsize=(13, 5.8), gridspec_kw={"width_ratios": [1, 1.25]})
+    a, b = np.asarray(sc.site_radar_loc, float), np.asarray(sc.site_second_loc, float)
+    ax0.plot([a[0] * km, p_true[0] * km], [a[1] * km, p_true[1] * km], "k-", lw=1)
+    ax0.plot([b[0] * km, p_true[0] * km], [b[1] * km, p_true[1] * km], "k--", lw=1)
+    ax0.plot([a[0] * km, b[0] * km], [a[1] * km, b[1] * km], color="0.6", lw=1)
+    ax0.plot(a[0] * km, a[1] * km, "ks", ms=8)
+    ax0.plot(b[0] * km, b[1] * km, "k^", ms=8)
+    ax0.plot(p_true[0] * km, p_true[1] * km, "r*", ms=12)
+    ax0.annotate("A radar", (a[0] * km, a[1] * km), textcoords="offset points", xytext=(6, -14))
+    ax0.annotate("B " + "+".join(sc.components), (b[0] * km, b[1] * km), textcoords="offset points", xytext=(6, -14))
+    ax0.annotate("target C", (p_true[0] * km, p_true[1] * km), textcoords="offset points", xytext=(6, 6))
+    ax0.set_aspect("equal", adjustable="datalim")
+    ax0.set_xlabel("x (km), from A towards B")
+    ax0.set_ylabel("y (km)")
+    ax0.set_title(f"(a) geometry{proj}")
+    ax0.grid(alpha=0.3)
+
+    ax1.plot((pts["radar"][:, 0] - p_true[0]), (pts["radar"][:, 1] - p_true[1]), "k+", ms=4, alpha=0.6,
+             label=f"radar points C (GDOP {ev.row('radar')['monte_carlo_gdop_m']:.0f} m)")
+    ax1.plot((pts["pseudo_measurement"][:, 0] - p_true[0]), (pts["pseudo_measurement"][:, 1] - p_true[1]), "x",
+             color="0.55", ms=4, alpha=0.6,
+             label=f"pseudo-measurements H (GDOP {ev.row('pseudo_measurement')['monte_carlo_gdop_m']:.0f} m)")
+    zero = np.zeros(sc.dim)
+    e = _ellipse(zero, ev.analytic_cov["radar"])
+    ax1.plot(e[:, 0], e[:, 1], "k-", lw=1.5, label="2σ ellipse of P (radar)")
+    e = _ellipse(zero, ev.analytic_cov["pseudo_measurement"])
+    ax1.plot(e[:, 0], e[:, 1], "-", color="tab:orange", lw=1.5, label="2σ ellipse of R (paper's H covariance)")
+    e = _ellipse(zero, ev.analytic_cov["pseudo_measurement_consistent"])
+    ax1.plot(e[:, 0], e[:, 1], "--", color="tab:blue", lw=1.5, label="2σ ellipse of H's actual covariance")
+    ax1.set_aspect("equal", adjustable="datalim")
+    ax1.set_xlabel("x error (m)")
+    ax1.set_ylabel("y error (m)")
+    ax1.set_title(f"(b) {m} radar and pseudo-measurement points{proj}")
+    ax1.grid(alpha=0.3)
+    ax1.legend(fontsize=8, loc="upper left", framealpha=0.9)
+    fig.suptitle(sc.name)
+    fig.tight_layout()
+    path = out / "measurements.png"
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    paths.append(path)
+
+    # Fig. 4 / 6 analogue: fused points
+    fig, ax = plt.subplots(figsize=(11.5, 7))
+    ax.plot(pts["paper"][:, 0] - p_true[0], pts["paper"][:, 1] - p_true[1], ".", color="k", ms=3, alpha=0.55,
+            label=f"paper method X (GDOP {ev.row('paper_actual')['monte_carlo_gdop_m']:.0f} m)")
+    ax.plot(pts["optimal"][:, 0] - p_true[0], pts["optimal"][:, 1] - p_true[1], ".", color="tab:green", ms=2, alpha=0.45,
+            label=f"optimal fuser (GDOP {ev.row('optimal')['monte_carlo_gdop_m']:.0f} m)")
+    for key, style, color, label in (
+        ("paper_claimed", "--", "tab:red", "2σ: paper's claimed covariance (eq. 13)"),
+        ("paper_actual", "-", "k", "2σ: paper method's consistent covariance"),
+        ("crlb", ":", "tab:green", "2σ: Cramér-Rao bound"),
+        ("radar", "-", "0.6", "2σ: radar alone"),
+    ):
+        e = _ellipse(zero, ev.analytic_cov[key])
+        ax.plot(e[:, 0], e[:, 1], style, color=color, lw=1.8, label=label)
+    lim = 3.2 * np.sqrt(np.max(np.linalg.eigvalsh(ev.analytic_cov["paper_actual"][:2, :2])))
+    ax.set_xlim(-lim, lim)
+    ax.set_ylim(-lim, lim)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x error (m)")
+    ax.set_ylabel("y error (m)")
+    ax.set_title(f"{sc.name}\n{m} fused points{proj} (radar ellipse clipped)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=9, loc="center left", bbox_to_anchor=(1.02, 0.5))
+    fig.tight_layout()
+    path = out / "fused.png"
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    paths.append(path)
+    return paths
+
+
+# --------------------------------------------------------------------------- entry point
+def run(args) -> int:
+    if args.trials < 2:
+        raise ValueError(f"--trials: expected at least 2 Monte Carlo pairs, got {args.trials}")
+    if args.max_plot_points < 1:
+        raise ValueError(f"--max-plot-points: expected a positive count, got {args.max_plot_points}")
+    sc = _scenario_from_args(args)
+    ev = evaluate(sc, trials=args.trials, seed=args.seed)
+    print(format_table(ev))
+    if args.out is not None:
+        out = Path(args.out)
+        out.mkdir(parents=True, exist_ok=True)
+        (out / "summary.json").write_text(json.dumps(ev.to_json(), indent=2) + "\n")
+        paths = _plot(ev, out, args.max_plot_points)
+        print(f"wrote {out / 'summary.json'}, " + ", ".join(str(p) for p in paths))
+    return 0
