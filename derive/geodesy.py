@@ -58,6 +58,16 @@ def enu2ecef_paper_expr(B, L) -> sp.Matrix:
 
 T_VARIANTS = {"standard": enu2ecef_standard_expr, "paper": enu2ecef_paper_expr}
 
+
+def radii_of_curvature_expr(B) -> sp.Matrix:
+    """[M, N]: meridian and prime-vertical radii of curvature (m) at geodetic latitude B.
+
+    Used to move platforms over the ellipsoid: dB/dt = v_north / (M + H),
+    dL/dt = v_east / ((N + H) cos B).
+    """
+    w2 = 1 - WGS84_E2 * sp.sin(B) ** 2
+    return sp.Matrix([WGS84_A * (1 - WGS84_E2) / w2 ** sp.Rational(3, 2), WGS84_A / sp.sqrt(w2)])
+
 LAT_DOMAIN = (-sp.pi / 2, sp.pi / 2)
 GEO_DOMAIN = {"lat": (-1.5707963267948966, 1.5707963267948966), "lon": (-3.141592653589793, 3.141592653589793), "alt": (-500.0, 1.0e5)}
 
@@ -72,6 +82,15 @@ def specs() -> list[FunctionSpec]:
             domain=GEO_DOMAIN,
         )
     ]
+    out.append(
+        FunctionSpec(
+            name="radii_of_curvature",
+            doc="Meridian radius M and prime-vertical radius N (m) of WGS-84 at latitude lat (rad).",
+            inputs=(Port("lat", lat, "rad"),),
+            outputs=(Port("radii", radii_of_curvature_expr(lat), "m"),),
+            domain=GEO_DOMAIN,
+        )
+    )
     for variant, fn in T_VARIANTS.items():
         out.append(
             FunctionSpec(

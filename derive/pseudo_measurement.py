@@ -9,7 +9,7 @@ H and M are exactly dZ/d(attitude, measurement) and dZ/d(measurement): the tests
 
 import sympy as sp
 
-from .attitude import MEAS_DOMAIN, PI, phi_expr
+from .attitude import MEAS_DOMAIN, PI, deck2enu_rotation_expr, phi_expr
 from .geodesy import GEO_DOMAIN, T_VARIANTS, geodetic2ecef_expr
 from .spec import FunctionSpec, JacobianDecl, Port, jacobian
 
@@ -22,6 +22,20 @@ def plot2ecef_expr(nav, att, meas, variant: str) -> sp.Matrix:
     """Eq. (3): X = T(B, L) Phi(C, phi, theta, r, q, e) + geodetic2ecef(B, L, H)."""
     T = T_VARIANTS[variant](nav[0], nav[1])
     return T * phi_expr(att[0], att[1], att[2], meas[0], meas[1], meas[2]) + geodetic2ecef_expr(*nav)
+
+
+def ecef2plot_expr(p_ecef, nav, att, variant: str) -> sp.Matrix:
+    """Inverse of eq. (3): target ECEF -> the radar plot [r, q, e] a ship would measure.
+
+    u_enu = T^T (X - X_e); u_deck = R_enu_deck^T u_enu; r = |u|, q = atan2(u_x, u_y) (from the bow,
+    starboard positive), e = atan2(u_z, hypot(u_x, u_y)).
+    """
+    T = T_VARIANTS[variant](nav[0], nav[1])
+    u_enu = T.T * (sp.Matrix(p_ecef) - geodetic2ecef_expr(*nav))
+    u = deck2enu_rotation_expr(*att).T * u_enu
+    return sp.Matrix(
+        [sp.sqrt(u[0] ** 2 + u[1] ** 2 + u[2] ** 2), sp.atan2(u[0], u[1]), sp.atan2(u[2], sp.sqrt(u[0] ** 2 + u[1] ** 2))]
+    )
 
 
 PAIR_DOMAIN = {
@@ -60,6 +74,24 @@ def specs() -> list[FunctionSpec]:
                 ),
                 outputs=(Port("p_ecef", X, "m"),),
                 domain={**GEO_DOMAIN, **MEAS_DOMAIN},
+            )
+        )
+
+        x, y, z = sp.symbols("x y z", real=True)
+        out.append(
+            FunctionSpec(
+                name=f"ecef2plot_{variant}",
+                doc=(
+                    f"Inverse of eq. (3), T variant '{variant}': target ECEF p (m) seen from a ship at "
+                    "(lat, lon rad; alt m) with attitude (heading, pitch, roll rad) -> plot [r m, q rad, e rad]."
+                ),
+                inputs=(
+                    Port("p_ecef", sp.Matrix([x, y, z]), "m"),
+                    Port("lat", lat, "rad"), Port("lon", lon, "rad"), Port("alt", alt, "m"),
+                    Port("heading", heading, "rad"), Port("pitch", pitch, "rad"), Port("roll", roll, "rad"),
+                ),
+                outputs=(Port("plot", ecef2plot_expr([x, y, z], [lat, lon, alt], [heading, pitch, roll], variant), "m, rad, rad"),),
+                domain={**GEO_DOMAIN, **MEAS_DOMAIN, "p_ecef": [(-7.0e6, 7.0e6)] * 3},
             )
         )
 

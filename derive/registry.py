@@ -1,9 +1,9 @@
 """Every function the runtime may call: the list ``python -m derive`` emits."""
 
-from . import attitude, geodesy, polar, pseudo_measurement
+from . import attitude, geodesy, kalman, landing, polar, pseudo_measurement
 from .constants import CONSTANTS
 
-MODULES = [geodesy, attitude, pseudo_measurement, polar]
+MODULES = [geodesy, attitude, pseudo_measurement, polar, kalman, landing]
 
 
 def all_specs() -> list:

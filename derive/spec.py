@@ -72,3 +72,36 @@ def jacobian(f: sp.MatrixBase, *variables) -> sp.Matrix:
     for v in variables:
         flat.extend(list(v) if isinstance(v, sp.MatrixBase) else [v])
     return sp.Matrix(f).jacobian(sp.Matrix(flat))
+
+
+@dataclass(frozen=True)
+class CasadiPort:
+    """An input or output of a function built directly in CasADi (no sympy expression)."""
+
+    name: str
+    shape: tuple[int, int]
+    unit: str = ""
+
+
+@dataclass(frozen=True)
+class CasadiSpec:
+    """A function composed in CasADi from sympy-derived pieces (e.g. a whole Kalman step).
+
+    ``build()`` returns the ``casadi.Function``; its input/output names and shapes must match
+    ``inputs``/``outputs``. There is no sympy expression to evaluate directly, so the tests check
+    these against an independent NumPy composition instead.
+    """
+
+    name: str
+    doc: str
+    inputs: tuple[CasadiPort, ...]
+    outputs: tuple[CasadiPort, ...]
+    builder: object
+    domain: dict = field(default_factory=dict)
+    jacobians: tuple = ()
+
+    def build(self):
+        fn = self.builder()
+        assert [fn.name_in(i) for i in range(fn.n_in())] == [p.name for p in self.inputs], self.name
+        assert [fn.name_out(i) for i in range(fn.n_out())] == [p.name for p in self.outputs], self.name
+        return fn

@@ -132,6 +132,7 @@ def _c_library():
             os.replace(out, lib_path)  # atomic publish: concurrent builders never see half a file
     lib = ctypes.CDLL(str(lib_path))
     lib.registration_batch.restype = ctypes.c_int
+    lib.registration_scan.restype = ctypes.c_longlong
     return lib
 
 
@@ -189,6 +190,7 @@ class GeneratedFunction:
             lib = _c_library()
             self._fptr = ctypes.cast(getattr(lib, name), ctypes.c_void_p)
             self._batch = lib.registration_batch
+            self._scan = lib.registration_scan
             self._arg = (ctypes.c_void_p * max(self._work["sz_arg"], 1))()
             self._res = (ctypes.c_void_p * max(self._work["sz_res"], 1))()
             self._iw = np.zeros(max(self._work["sz_iw"], 1), dtype=np.int64)
@@ -271,6 +273,102 @@ class GeneratedFunction:
         if c == 1:
             return buf.reshape(n, r)
         return buf.reshape(n, c, r).swapaxes(1, 2)
+
+    # -- sequential evaluation (a compiled filter loop)
+    def scan(self, n: int, carry: dict[str, str], inputs: dict, keep_last: tuple[str, ...] = ()) -> dict:
+        """Evaluate the function ``n`` times in sequence, feeding outputs back as inputs.
+
+        ``carry`` maps an input name to the output name it takes from the previous step; the
+        given value of that input is the initial one. Every other input is given either at its
+        core shape (the same every step) or with a leading axis of length ``n`` (one per step).
+        Returns every output with a leading axis of length ``n`` except those in ``keep_last``,
+        returned for the last step only. In the C backend the whole loop runs in compiled code.
+        Carried inputs must be the first inputs, paired with the first outputs in the same order
+        (CasADi's ``mapaccum`` convention, used by the serialized backend).
+        """
+        names_in, names_out = self.input_names, self.output_names
+        k = len(carry)
+        if list(carry) != names_in[:k] or list(carry.values()) != names_out[:k]:
+            raise ValueError(f"{self.name}: carried inputs must be the first {k} inputs paired with the first outputs")
+        args = []
+        for name in names_in:
+            if name not in inputs:
+                raise ValueError(f"{self.name}: missing input {name!r}")
+            args.append(inputs[name])
+        prepared, n_batch = self._prepare(args)
+        for (a, batched, core), name in zip(prepared, names_in):
+            if name in carry and batched:
+                raise ValueError(f"{self.name}: carried input {name!r} takes one initial value")
+            if batched and a.shape[0] != n:
+                raise ValueError(f"{self.name}: input {name!r} has {a.shape[0]} steps, expected {n}")
+        if self._backend == "c":
+            outs = self._scan_c(prepared, n, k, set(keep_last))
+        else:
+            outs = self._scan_casadi(prepared, n, k)
+            outs = [o[-1:] if name in keep_last else o for o, name in zip(outs, names_out)]
+        result = {}
+        for name, buf, shape in zip(names_out, outs, self.output_shapes):
+            m = buf.shape[0]
+            arr = self._shape_out(buf.reshape(m, -1), m, shape)
+            result[name] = arr[0] if name in keep_last else arr
+        return result
+
+    def _scan_c(self, prepared, n, k, keep_last):
+        n_in, n_out = len(prepared), len(self.output_shapes)
+        in_ptr = (ctypes.c_void_p * n_in)()
+        in_stride = (ctypes.c_longlong * n_in)()
+        in_size = (ctypes.c_longlong * n_in)()
+        carry_from = (ctypes.c_int * n_in)()
+        keep = []
+        for j, (a, batched, core) in enumerate(prepared):
+            if len(core) == 2:
+                a = np.swapaxes(a, -1, -2)
+            a = np.ascontiguousarray(a)
+            keep.append(a)
+            size = int(np.prod(core)) if core else 1
+            in_ptr[j] = a.ctypes.data
+            in_stride[j] = size if batched else 0
+            in_size[j] = size
+            carry_from[j] = j if j < k else -1
+        outs = []
+        out_ptr = (ctypes.c_void_p * n_out)()
+        out_stride = (ctypes.c_longlong * n_out)()
+        names = self.output_names
+        for j, (r, c) in enumerate(self.output_shapes):
+            last = names[j] in keep_last
+            buf = np.empty((1 if last else n, r * c), dtype=np.float64)
+            outs.append(buf)
+            out_ptr[j] = buf.ctypes.data
+            out_stride[j] = 0 if last else r * c
+        scratch = np.empty(max(1, sum(in_size[j] for j in range(k))), dtype=np.float64)
+        failed = self._scan(
+            self._fptr, ctypes.c_longlong(n),
+            n_in, in_ptr, in_stride, carry_from, in_size,
+            n_out, out_ptr, out_stride,
+            self._arg, self._res, self._iw.ctypes.data_as(ctypes.c_void_p), self._w.ctypes.data_as(ctypes.c_void_p),
+            scratch.ctypes.data_as(ctypes.c_void_p),
+        )
+        if failed:
+            raise RuntimeError(f"generated function {self.name} failed at step {failed - 1}")
+        return outs
+
+    def _scan_casadi(self, prepared, n, k):
+        import casadi as ca
+
+        acc = self._casadi_fn().mapaccum("scan", n, k, {})
+        dms = []
+        for a, batched, core in prepared:
+            r = core[0] if core else 1
+            c = core[1] if len(core) == 2 else 1
+            a2 = a.reshape(n, r, c).transpose(1, 0, 2).reshape(r, n * c) if batched else a.reshape(r, c)
+            dms.append(ca.DM(a2))
+        res = acc(*dms)
+        res = res if isinstance(res, (list, tuple)) else [res]
+        outs = []
+        for dm, (r, c) in zip(res, self.output_shapes):
+            arr = np.asarray(ca.DM(dm).full()).reshape(r, n, c).transpose(1, 0, 2)
+            outs.append(arr.transpose(0, 2, 1).reshape(n, r * c))  # column-major per step, like C
+        return outs
 
     def _casadi_fn(self):
         if self._casadi is None:

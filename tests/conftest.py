@@ -31,7 +31,8 @@ def sample_inputs(spec, n: int, rng: np.random.Generator) -> list[np.ndarray]:
         bounds = [dom] if size == 1 and isinstance(dom[0], (int, float)) else list(dom)
         cols = [rng.uniform(lo, hi, n) for lo, hi in bounds]
         arr = np.stack(cols, axis=-1)
-        out.append(arr[:, 0] if size == 1 else arr)
+        r, c = port.shape
+        out.append(arr[:, 0] if size == 1 else (arr if c == 1 else arr.reshape(n, c, r).transpose(0, 2, 1)))
     return out
 
 

@@ -43,18 +43,20 @@ def test_c_casadi_and_sympy_agree(name):
     inputs = sample_inputs(spec, n, np.random.default_rng(7))
     c_out = _loader.GeneratedFunction(name, force_backend="c")(*inputs)
     ca_out = _loader.GeneratedFunction(name, force_backend="casadi")(*inputs)
-    sy_out = _sympy_eval(spec, inputs, n)
+    has_sympy = not hasattr(spec, "build")  # CasadiSpec functions are checked against NumPy elsewhere
+    sy_out = _sympy_eval(spec, inputs, n) if has_sympy else [None] * len(spec.outputs)
     by_name = dict(zip([p.name for p in spec.outputs], c_out))
     for port, a, b, s in zip(spec.outputs, c_out, ca_out, sy_out):
         a = a.reshape(n, *port.shape)
         b = b.reshape(n, *port.shape)
-        s = s.reshape(n, *port.shape)
+        s = s.reshape(n, *port.shape) if has_sympy else None
         scale = np.abs(a).reshape(n, -1).max(axis=1)
         for other in SCALE_FROM.get(port.name, ()):
             scale = np.maximum(scale, np.abs(by_name[other]).max(axis=1))
         scale = scale[:, None, None] + 1e-300
         assert (np.abs(a - b) <= 1e-12 * scale).all(), f"{name}.{port.name}: C vs CasADi"
-        assert (np.abs(a - s) <= 1e-12 * scale).all(), f"{name}.{port.name}: C vs sympy"
+        if has_sympy:
+            assert (np.abs(a - s) <= 1e-12 * scale).all(), f"{name}.{port.name}: C vs sympy"
 
 
 def test_vectorised_call_equals_pointwise_calls():

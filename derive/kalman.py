@@ -1,0 +1,123 @@
+"""The whole registration Kalman step (SPEC section 2, eqs. 18-23) composed in CasADi.
+
+Built from the sympy-derived pseudo-measurement (derive/pseudo_measurement.py), so the step
+has no second copy of the model. One step, for state x (12) = [dC_A, dphi_A, dtheta_A, dr_A,
+dq_A, de_A, dC_B, ..., de_B] (rad and m), covariance P (12x12), random-walk process noise Q:
+
+* predict: ``x- = x``, ``P- = P + Q``;
+* linearisation ``paper``: Z, H, M at the raw measurements, innovation ``nu = Z - H x-``;
+  ``relinearized``: Z, H, M at the measurements corrected by x- (attitude and plot minus the
+  estimated errors), innovation ``nu = Z(corrected)`` (an extended Kalman filter step);
+* ``R = M R0 M^T``, ``S = H P- H^T + R``, gain by a linear solve (no explicit inverse),
+  ``K = P- H^T S^-1``; Joseph-form covariance update, symmetrised, which keeps P positive
+  definite; normalised innovation squared ``nis = nu^T S^-1 nu``;
+* ``info`` accumulates the Fisher information ``H^T R^-1 H`` for the observability report.
+
+The first three inputs are carried from the first three outputs of the previous step
+(``mapaccum`` convention), so a whole run is one compiled loop.
+"""
+
+import casadi as ca
+
+from .pseudo_measurement import PAIR_DOMAIN, specs as pair_specs
+from .emit import to_casadi_function
+from .spec import CasadiPort, CasadiSpec
+
+LINEARIZATIONS = ("paper", "relinearized")
+N_STATE = 12
+
+INPUTS = (
+    CasadiPort("x", (N_STATE, 1), "rad, m"),
+    CasadiPort("P", (N_STATE, N_STATE), "rad^2, m^2"),
+    CasadiPort("info", (N_STATE, N_STATE), "1/rad^2, 1/m^2"),
+    CasadiPort("Q", (N_STATE, N_STATE), "rad^2, m^2 per step"),
+    CasadiPort("row", (18, 1), "nav_a, att_a, meas_a, nav_b, att_b, meas_b (rad, m)"),
+    CasadiPort("sigma0", (6, 1), "m, rad, rad, m, rad, rad"),
+)
+OUTPUTS = (
+    CasadiPort("x_new", (N_STATE, 1), "rad, m"),
+    CasadiPort("P_new", (N_STATE, N_STATE), "rad^2, m^2"),
+    CasadiPort("info_new", (N_STATE, N_STATE), "1/rad^2, 1/m^2"),
+    CasadiPort("nu", (3, 1), "m"),
+    CasadiPort("S", (3, 3), "m^2"),
+    CasadiPort("nis", (1, 1), "1"),
+)
+
+
+def _pair_function(variant: str) -> ca.Function:
+    spec = next(s for s in pair_specs() if s.name == f"pseudo_measurement_{variant}")
+    return to_casadi_function(spec)
+
+
+def _build(variant: str, linearization: str):
+    def build() -> ca.Function:
+        pair = _pair_function(variant)
+        x = ca.SX.sym("x", N_STATE)
+        P = ca.SX.sym("P", N_STATE, N_STATE)
+        info = ca.SX.sym("info", N_STATE, N_STATE)
+        Q = ca.SX.sym("Q", N_STATE, N_STATE)
+        row = ca.SX.sym("row", 18)
+        sigma0 = ca.SX.sym("sigma0", 6)
+
+        P_pred = P + Q
+        if linearization == "paper":
+            at = row
+        else:  # measurements and attitudes corrected by the current estimate
+            corr = ca.vertcat(ca.SX.zeros(3), x[0:6], ca.SX.zeros(3), x[6:12])
+            at = row - corr
+        Z, H, M, R, _, _ = pair(at[0:3], at[3:6], at[6:9], at[9:12], at[12:15], at[15:18], sigma0)
+        nu = Z - H @ x if linearization == "paper" else Z
+        S = H @ P_pred @ H.T + R
+        S = 0.5 * (S + S.T)
+        K = ca.solve(S, H @ P_pred).T
+        x_new = x + K @ nu
+        IKH = ca.SX.eye(N_STATE) - K @ H
+        P_new = IKH @ P_pred @ IKH.T + K @ R @ K.T
+        P_new = 0.5 * (P_new + P_new.T)
+        info_new = info + H.T @ ca.solve(R, H)
+        info_new = 0.5 * (info_new + info_new.T)
+        nis = nu.T @ ca.solve(S, nu)
+        return ca.Function(
+            f"kalman_step_{linearization}_{variant}",
+            [x, P, info, Q, row, sigma0],
+            [x_new, P_new, info_new, nu, S, nis],
+            [p.name for p in INPUTS],
+            [p.name for p in OUTPUTS],
+            {"cse": True},
+        )
+
+    return build
+
+
+def _domain():
+    row = PAIR_DOMAIN["nav_a"] + PAIR_DOMAIN["att_a"] + [(1.0e4, 1.0e5), (-3.0, 3.0), (0.0, 0.2)]
+    row = row + row
+    eye = [(1.0, 1.0) if i == j else (0.0, 0.0) for j in range(N_STATE) for i in range(N_STATE)]
+    return {
+        "x": [(-0.01, 0.01)] * 3 + [(-1000.0, 1000.0)] + [(-0.01, 0.01)] * 5 + [(-1000.0, 1000.0)] + [(-0.01, 0.01)] * 2,
+        "P": eye,
+        "info": eye,
+        "Q": [(0.0, 0.0)] * (N_STATE * N_STATE),
+        "row": row,
+        "sigma0": PAIR_DOMAIN["sigma0"],
+    }
+
+
+def specs() -> list[CasadiSpec]:
+    out = []
+    for variant in ("standard", "paper"):
+        for lin in LINEARIZATIONS:
+            out.append(
+                CasadiSpec(
+                    name=f"kalman_step_{lin}_{variant}",
+                    doc=(
+                        f"One registration Kalman step (eqs. 18-23), linearisation '{lin}', T variant '{variant}'. "
+                        "Inputs x, P, info carried from outputs x_new, P_new, info_new of the previous step."
+                    ),
+                    inputs=INPUTS,
+                    outputs=OUTPUTS,
+                    builder=_build(variant, lin),
+                    domain=_domain(),
+                )
+            )
+    return out

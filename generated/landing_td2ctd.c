@@ -1,0 +1,254 @@
+/*
+ * GENERATED FILE - DO NOT EDIT BY HAND.
+ * Produced by `python -m derive` from the sympy derivations in derive/.
+ * Edit derive/ and regenerate; `python -m derive --check` verifies freshness.
+ */
+/* How to prefix internal symbols */
+#ifdef CASADI_CODEGEN_PREFIX
+  #define CASADI_NAMESPACE_CONCAT(NS, ID) _CASADI_NAMESPACE_CONCAT(NS, ID)
+  #define _CASADI_NAMESPACE_CONCAT(NS, ID) NS ## ID
+  #define CASADI_PREFIX(ID) CASADI_NAMESPACE_CONCAT(CODEGEN_PREFIX, ID)
+#else
+  #define CASADI_PREFIX(ID) landing_td2ctd_ ## ID
+#endif
+
+#include <math.h>
+
+#ifndef casadi_real
+#define casadi_real double
+#endif
+
+#ifndef casadi_int
+#define casadi_int long long int
+#endif
+
+/* Add prefix to internal symbols */
+#define casadi_f0 CASADI_PREFIX(f0)
+#define casadi_s0 CASADI_PREFIX(s0)
+#define casadi_s1 CASADI_PREFIX(s1)
+#define casadi_s2 CASADI_PREFIX(s2)
+#define casadi_sq CASADI_PREFIX(sq)
+
+/* Symbol visibility in DLLs */
+#ifndef CASADI_SYMBOL_EXPORT
+  #if defined(_WIN32) || defined(__WIN32__) || defined(__CYGWIN__)
+    #if defined(STATIC_LINKED)
+      #define CASADI_SYMBOL_EXPORT
+    #else
+      #define CASADI_SYMBOL_EXPORT __declspec(dllexport)
+    #endif
+  #elif defined(__GNUC__) && defined(GCC_HASCLASSVISIBILITY)
+    #define CASADI_SYMBOL_EXPORT __attribute__ ((visibility ("default")))
+  #else
+    #define CASADI_SYMBOL_EXPORT
+  #endif
+#endif
+
+casadi_real casadi_sq(casadi_real x) { return x*x;}
+
+/* Configuration this file was compiled with */
+CASADI_SYMBOL_EXPORT void landing_td2ctd_casadi_version(int* major, int* minor, int* patch) {
+  *major = 3;
+  *minor = 8;
+  *patch = 2;
+}
+CASADI_SYMBOL_EXPORT int landing_td2ctd_casadi_int_size(void) { return (int) sizeof(casadi_int); }
+CASADI_SYMBOL_EXPORT int landing_td2ctd_casadi_real_size(void) { return (int) sizeof(casadi_real); }
+
+static const casadi_int casadi_s0[3] = {3, 1, 1};
+static const casadi_int casadi_s1[3] = {1, 1, 1};
+static const casadi_int casadi_s2[3] = {3, 3, 1};
+
+/* landing_td2ctd:(p_td[3],attitude[3],angled_deck,d_camera_deck[3])->(polar_ctd[3],B[3x3]) */
+static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18;
+  a00=arg[0]? arg[0][0] : 0;
+  a01=arg[3]? arg[3][0] : 0;
+  a02=arg[1]? arg[1][2] : 0;
+  a03=cos(a02);
+  a04=arg[1]? arg[1][0] : 0;
+  a05=cos(a04);
+  a06=(a03*a05);
+  a07=arg[1]? arg[1][1] : 0;
+  a08=sin(a07);
+  a02=sin(a02);
+  a04=sin(a04);
+  a09=(a02*a04);
+  a10=(a08*a09);
+  a10=(a06+a10);
+  a11=arg[2]? arg[2][0] : 0;
+  a12=sin(a11);
+  a13=(a10*a12);
+  a14=(a08*a02);
+  a14=(a14*a05);
+  a15=(a03*a04);
+  a14=(a14-a15);
+  a11=cos(a11);
+  a16=(a14*a11);
+  a13=(a13-a16);
+  a13=(a01*a13);
+  a00=(a00-a13);
+  a13=arg[3]? arg[3][1] : 0;
+  a07=cos(a07);
+  a04=(a07*a04);
+  a16=(a12*a04);
+  a17=(a07*a05);
+  a18=(a17*a11);
+  a16=(a16-a18);
+  a16=(a13*a16);
+  a00=(a00-a16);
+  a16=arg[3]? arg[3][2] : 0;
+  a05=(a02*a05);
+  a15=(a08*a15);
+  a05=(a05-a15);
+  a15=(a12*a05);
+  a06=(a08*a06);
+  a09=(a09+a06);
+  a06=(a09*a11);
+  a15=(a15+a06);
+  a15=(a16*a15);
+  a00=(a00-a15);
+  a15=casadi_sq(a00);
+  a06=arg[0]? arg[0][1] : 0;
+  a10=(a10*a11);
+  a14=(a12*a14);
+  a10=(a10+a14);
+  a10=(a01*a10);
+  a06=(a06-a10);
+  a17=(a12*a17);
+  a04=(a04*a11);
+  a17=(a17+a04);
+  a17=(a13*a17);
+  a06=(a06-a17);
+  a05=(a05*a11);
+  a12=(a12*a09);
+  a05=(a05-a12);
+  a05=(a16*a05);
+  a06=(a06-a05);
+  a05=casadi_sq(a06);
+  a15=(a15+a05);
+  a05=arg[0]? arg[0][2] : 0;
+  a08=(a08*a13);
+  a05=(a05-a08);
+  a02=(a07*a02);
+  a02=(a02*a01);
+  a05=(a05+a02);
+  a07=(a07*a03);
+  a07=(a07*a16);
+  a05=(a05-a07);
+  a07=casadi_sq(a05);
+  a07=(a15+a07);
+  a16=sqrt(a07);
+  if (res[0]!=0) res[0][0]=a16;
+  a03=atan2(a06,a00);
+  if (res[0]!=0) res[0][1]=a03;
+  a03=sqrt(a15);
+  a02=atan2(a05,a03);
+  if (res[0]!=0) res[0][2]=a02;
+  a02=(a00/a16);
+  if (res[1]!=0) res[1][0]=a02;
+  a02=(a06/a15);
+  a02=(-a02);
+  if (res[1]!=0) res[1][1]=a02;
+  a02=(a05/a07);
+  a02=(a02/a03);
+  a01=(a00*a02);
+  a01=(-a01);
+  if (res[1]!=0) res[1][2]=a01;
+  a01=(a06/a16);
+  if (res[1]!=0) res[1][3]=a01;
+  a00=(a00/a15);
+  if (res[1]!=0) res[1][4]=a00;
+  a06=(a06*a02);
+  a06=(-a06);
+  if (res[1]!=0) res[1][5]=a06;
+  a05=(a05/a16);
+  if (res[1]!=0) res[1][6]=a05;
+  a05=0.;
+  if (res[1]!=0) res[1][7]=a05;
+  a03=(a03/a07);
+  if (res[1]!=0) res[1][8]=a03;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int landing_td2ctd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f0(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int landing_td2ctd_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void landing_td2ctd_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void landing_td2ctd_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void landing_td2ctd_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int landing_td2ctd_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int landing_td2ctd_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real landing_td2ctd_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* landing_td2ctd_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "p_td";
+    case 1: return "attitude";
+    case 2: return "angled_deck";
+    case 3: return "d_camera_deck";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* landing_td2ctd_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "polar_ctd";
+    case 1: return "B";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* landing_td2ctd_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s1;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* landing_td2ctd_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int landing_td2ctd_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 2;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int landing_td2ctd_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 2*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+
