@@ -1,0 +1,346 @@
+"""Online ECEF registration of two ship radars (SPEC section 2; Wang et al. 2011, eqs. 18-23).
+
+Each row of the data holds one synchronous pair of plots of a common target by radar A and
+radar B, with each ship's navigation (geodetic, exact) and measured attitude. The filter
+estimates the 12 registration errors (:data:`registration.state.STATE_NAMES`): per ship the
+heading, pitch and roll errors and the radar's range, bearing and elevation biases. Every
+model evaluation runs in the generated Kalman step (derive/kalman.py); a batch run with fixed Q
+is one compiled loop.
+
+Conventions: SI units and radians; measured = true + error; corrected = measured - estimate.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from dataclasses import asdict, dataclass, field
+from typing import Mapping
+
+import numpy as np
+
+from . import _loader
+from .observability import ObservabilityReport, observability_report
+from .state import DATA_COLUMNS, N_STATE, SENSOR_COLUMNS, STATE_LABELS, STATE_NAMES, STATE_UNITS
+
+__all__ = ["RegistrationConfig", "RegistrationResult", "OnlineRegistrar", "register", "validate_data", "difference_statistics"]
+
+LINEARIZATIONS = ("paper", "relinearized")
+Q_MODES = ("fixed", "adaptive")
+T_VARIANTS = ("standard", "paper")
+_CARRY = {"x": "x_new", "P": "P_new", "info": "info_new"}
+_DEG = np.pi / 180
+
+
+@dataclass
+class RegistrationConfig:
+    """Filter settings. All sigmas are standard deviations in SI units (m, rad).
+
+    sigma0: measurement noise ``[sr_A, sq_A, se_A, sr_B, sq_B, se_B]`` (R0 of eq. 19).
+    prior_sigma: initial state standard deviations (P0 = diag(prior_sigma^2)), STATE_NAMES order.
+    x0: initial estimate (default zeros).
+    q_mode: ``fixed`` (Q = diag(q_sigma^2) per step) or ``adaptive`` (eqs. 21-22: the sample
+        covariance of the last ``q_window`` estimates, plus the fixed Q as a floor).
+    linearization: ``paper`` (H, Z at the raw measurements) or ``relinearized`` (at the
+        measurements corrected by the current estimate: an extended Kalman filter).
+    t_variant: ``standard`` (orthonormal ENU->ECEF) or ``paper`` (eq. 4 as printed).
+    """
+
+    sigma0: tuple = (50.0, 0.5 * _DEG, 0.5 * _DEG, 50.0, 0.5 * _DEG, 0.5 * _DEG)
+    prior_sigma: tuple = (0.5 * _DEG, 0.2 * _DEG, 0.2 * _DEG, 2000.0, 1.0 * _DEG, 1.0 * _DEG) * 2
+    x0: tuple | None = None
+    q_mode: str = "fixed"
+    q_sigma: tuple = (1e-6, 1e-6, 1e-6, 0.01, 1e-6, 1e-6) * 2
+    q_window: int = 20
+    linearization: str = "paper"
+    t_variant: str = "standard"
+
+    def __post_init__(self):
+        self.sigma0 = tuple(float(v) for v in self.sigma0)
+        self.prior_sigma = tuple(float(v) for v in self.prior_sigma)
+        self.q_sigma = tuple(float(v) for v in self.q_sigma)
+        if len(self.sigma0) != 6 or not all(np.isfinite(self.sigma0)) or min(self.sigma0) <= 0:
+            raise ValueError("sigma0: expected 6 finite values > 0 [m, rad, rad, m, rad, rad]")
+        if max(self.sigma0[i] for i in (1, 2, 4, 5)) > 0.35:
+            raise ValueError("sigma0: angle sigmas above 20 deg; pass radians, not degrees")
+        if len(self.prior_sigma) != N_STATE or min(self.prior_sigma) <= 0 or not all(np.isfinite(self.prior_sigma)):
+            raise ValueError(f"prior_sigma: expected {N_STATE} finite values > 0 (rad or m, STATE_NAMES order)")
+        if len(self.q_sigma) != N_STATE or min(self.q_sigma) < 0 or not all(np.isfinite(self.q_sigma)):
+            raise ValueError(f"q_sigma: expected {N_STATE} finite values >= 0 (rad or m per step)")
+        if self.x0 is not None:
+            self.x0 = tuple(float(v) for v in self.x0)
+            if len(self.x0) != N_STATE or not all(np.isfinite(self.x0)):
+                raise ValueError(f"x0: expected {N_STATE} finite values")
+        if self.q_mode not in Q_MODES:
+            raise ValueError(f"q_mode: expected one of {Q_MODES}, got {self.q_mode!r}")
+        if self.linearization not in LINEARIZATIONS:
+            raise ValueError(f"linearization: expected one of {LINEARIZATIONS}, got {self.linearization!r}")
+        if self.t_variant not in T_VARIANTS:
+            raise ValueError(f"t_variant: expected one of {T_VARIANTS}, got {self.t_variant!r}")
+        if int(self.q_window) < 2:
+            raise ValueError("q_window: need at least 2 estimates")
+
+    @property
+    def step_name(self) -> str:
+        return f"kalman_step_{self.linearization}_{self.t_variant}"
+
+    def to_json(self) -> dict:
+        return asdict(self)
+
+
+# --------------------------------------------------------------------------- data checks
+_LIMITS = {
+    "lat": (-np.pi / 2, np.pi / 2, "rad (latitude, [-pi/2, pi/2])"),
+    "lon": (-2 * np.pi, 2 * np.pi, "rad"),
+    "alt": (-1.2e4, 1.0e6, "m above the WGS-84 ellipsoid"),
+    "heading": (-2 * np.pi, 2 * np.pi, "rad"),
+    "pitch": (-np.pi / 2, np.pi / 2, "rad"),
+    "roll": (-np.pi / 2, np.pi / 2, "rad"),
+    "bearing": (-2 * np.pi, 2 * np.pi, "rad"),
+    "elevation": (-np.pi / 2, np.pi / 2, "rad"),
+}
+
+
+def _row_error(row: int, column: str, value, expected: str) -> ValueError:
+    return ValueError(f"row {row}, column {column!r}: value {value!r} {expected}")
+
+
+def _check_block(block: np.ndarray, first_row: int = 0) -> None:
+    """Check a (K, 18) block of rows in contract order; raise naming the first bad row/column."""
+    names = [f"{p}_{c}" for p in ("a", "b") for c in SENSOR_COLUMNS]
+    bad_finite = ~np.isfinite(block)
+    problems = []
+    if bad_finite.any():
+        r, c = np.argwhere(bad_finite)[0]
+        problems.append((r, c, "is not finite; expected a number"))
+    for j, name in enumerate(names):
+        col = SENSOR_COLUMNS[j % 9]
+        v = block[:, j]
+        with np.errstate(invalid="ignore"):
+            if col == "range":
+                bad = v <= 0
+                msg = "must be > 0 m (slant range)"
+            else:
+                lo, hi, unit = _LIMITS[col]
+                bad = (v < lo) | (v > hi)
+                msg = f"is outside [{lo:g}, {hi:g}] {unit}"
+                if unit.startswith("rad") and bad.any() and np.nanmax(np.abs(v)) <= 360:
+                    msg += " (looks like degrees: convert with numpy.radians)"
+        if bad.any():
+            r = int(np.argmax(bad))
+            problems.append((r, j, msg))
+    if problems:
+        r, c, msg = min(problems)
+        raise _row_error(first_row + int(r), names[c], float(block[r, c]), msg)
+
+
+def validate_data(data: Mapping) -> tuple[np.ndarray, np.ndarray]:
+    """Check a data mapping (dict of arrays or DataFrame); return ``time (K,)`` and ``rows (K, 18)``.
+
+    Raises ValueError naming the row and column of the first problem: a missing column, a
+    non-finite value, a latitude or angle out of range, a non-positive range, or a timestamp that
+    does not increase.
+    """
+    missing = [c for c in DATA_COLUMNS if c not in data]
+    if missing:
+        raise ValueError(f"missing column(s) {missing}; expected {list(DATA_COLUMNS)} (SI units, radians)")
+    try:
+        cols = [np.asarray(data[c], dtype=np.float64) for c in DATA_COLUMNS]
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"non-numeric column in data: {exc}") from exc
+    k = cols[0].shape
+    for name, col in zip(DATA_COLUMNS, cols):
+        if col.ndim != 1 or col.shape != k:
+            raise ValueError(f"column {name!r}: shape {col.shape}, expected {k} like 'time' (one value per row)")
+    if k[0] == 0:
+        raise ValueError("data has no rows")
+    time = cols[0]
+    if not np.isfinite(time).all():
+        r = int(np.argmax(~np.isfinite(time)))
+        raise _row_error(r, "time", float(time[r]), "is not finite; expected seconds")
+    steps = np.diff(time)
+    if (steps <= 0).any():
+        r = int(np.argmax(steps <= 0)) + 1
+        raise _row_error(r, "time", float(time[r]), f"does not increase (previous row: {time[r - 1]!r}); timestamps must be strictly increasing")
+    rows = np.stack(cols[1:], axis=1)
+    _check_block(rows)
+    return time, rows
+
+
+def _row_from_mapping(row: Mapping | np.ndarray) -> np.ndarray:
+    if isinstance(row, np.ndarray) or isinstance(row, (list, tuple)):
+        arr = np.asarray(row, dtype=np.float64)
+        if arr.shape != (18,):
+            raise ValueError(f"row: expected 18 values in contract order (a_lat ... b_elevation), got shape {arr.shape}")
+        return arr
+    missing = [c for c in DATA_COLUMNS[1:] if c not in row]
+    if missing:
+        raise ValueError(f"row: missing column(s) {missing}")
+    return np.array([float(row[c]) for c in DATA_COLUMNS[1:]])
+
+
+# --------------------------------------------------------------------------- results
+def difference_statistics(diff: np.ndarray) -> dict:
+    """max |.|, mean and standard deviation per ECEF axis of a (K, 3) difference, in metres."""
+    diff = np.asarray(diff)
+    return {
+        "max": np.abs(diff).max(axis=0).tolist(),
+        "mean": diff.mean(axis=0).tolist(),
+        "std": diff.std(axis=0, ddof=1).tolist() if len(diff) > 1 else [0.0, 0.0, 0.0],
+    }
+
+
+@dataclass
+class RegistrationResult:
+    """Everything a run produced. Shapes: K rows; 12 states in :data:`STATE_NAMES` order."""
+
+    config: RegistrationConfig
+    time: np.ndarray
+    estimates: np.ndarray  # (K, 12) posterior estimate after each row
+    covariances: np.ndarray  # (K, 12, 12)
+    innovations: np.ndarray  # (K, 3) m
+    innovation_covariances: np.ndarray  # (K, 3, 3) m^2
+    nis: np.ndarray  # (K,)
+    information: np.ndarray  # (12, 12) accumulated sum H^T R^-1 H
+    raw_difference_ecef: np.ndarray  # (K, 3) X_A - X_B from the measured values
+    corrected_difference_ecef: np.ndarray  # (K, 3) X_A - X_B corrected with the estimate after each row
+    corrected_a_ecef: np.ndarray  # (K, 3) corrected target position from radar A
+    corrected_b_ecef: np.ndarray  # (K, 3)
+    observability: ObservabilityReport
+    state_names: tuple = STATE_NAMES
+
+    @property
+    def final(self) -> np.ndarray:
+        return self.estimates[-1]
+
+    @property
+    def final_sigma(self) -> np.ndarray:
+        return np.sqrt(np.diag(self.covariances[-1]))
+
+    def statistics(self) -> dict:
+        """The Table-1-style before/after statistics (metres)."""
+        return {"before": difference_statistics(self.raw_difference_ecef), "after": difference_statistics(self.corrected_difference_ecef)}
+
+    def identifiable_combinations(self) -> list[dict]:
+        """Estimates of the sums that are identifiable when the parts are not (e.g. dC_a + dq_a)."""
+        out = []
+        P, x = self.covariances[-1], self.final
+        for a, b in self.observability.identifiable_sums:
+            i, j = STATE_NAMES.index(a), STATE_NAMES.index(b)
+            var = P[i, i] + P[j, j] + 2 * P[i, j]
+            out.append({"name": f"{a} + {b}", "indices": [i, j], "estimate": float(x[i] + x[j]), "sigma": float(np.sqrt(max(var, 0.0)))})
+        return out
+
+
+# --------------------------------------------------------------------------- filter
+class OnlineRegistrar:
+    """Streaming registration: call :meth:`update` with one row at a time.
+
+    A row is a mapping with the data-contract columns (without ``time``) or an array of the
+    18 values in contract order. The row is validated before the state is touched, so a bad row
+    raises ValueError and leaves the filter exactly as it was.
+    """
+
+    def __init__(self, config: RegistrationConfig | None = None):
+        self.config = config or RegistrationConfig()
+        self._step = _loader.get(self.config.step_name)
+        self.x = np.array(self.config.x0 if self.config.x0 is not None else np.zeros(N_STATE))
+        self.P = np.diag(np.square(self.config.prior_sigma))
+        self.info = np.zeros((N_STATE, N_STATE))
+        self._q_fixed = np.diag(np.square(self.config.q_sigma))
+        self._sigma0 = np.array(self.config.sigma0)
+        self._window: deque = deque(maxlen=int(self.config.q_window))
+        self.n_updates = 0
+        self.last_time: float | None = None
+
+    def process_noise(self) -> np.ndarray:
+        """Q for the next step: fixed, or eqs. 21-22 (sample covariance of the last N estimates)."""
+        if self.config.q_mode == "fixed" or len(self._window) < 2:
+            return self._q_fixed
+        est = np.array(self._window)
+        dev = est - est.mean(axis=0)
+        return dev.T @ dev / len(est) + self._q_fixed
+
+    def update(self, row, time: float | None = None) -> dict:
+        """Process one row; return {'x', 'P', 'nu', 'S', 'nis'} after the update."""
+        values = _row_from_mapping(row)
+        _check_block(values[None, :], first_row=self.n_updates)
+        if time is not None:
+            if not np.isfinite(time):
+                raise _row_error(self.n_updates, "time", time, "is not finite; expected seconds")
+            if self.last_time is not None and time <= self.last_time:
+                raise _row_error(self.n_updates, "time", time, f"does not increase (previous: {self.last_time}); timestamps must be strictly increasing")
+        x, P, info, nu, S, nis = self._step(self.x, self.P, self.info, self.process_noise(), values, self._sigma0)
+        if not (np.isfinite(x).all() and np.isfinite(P).all()):
+            raise RuntimeError(f"row {self.n_updates}: the filter step produced non-finite values; state left unchanged")
+        self.x, self.P, self.info = x[0], P[0], info[0]
+        self._window.append(self.x.copy())
+        self.n_updates += 1
+        self.last_time = time if time is not None else self.last_time
+        return {"x": self.x, "P": self.P, "nu": nu[0], "S": S[0], "nis": float(nis[0])}
+
+    def observability(self) -> ObservabilityReport:
+        return observability_report(self.info, np.array(self.config.prior_sigma), STATE_NAMES, STATE_LABELS, STATE_UNITS)
+
+
+def _corrected_rows(rows: np.ndarray, estimates: np.ndarray) -> np.ndarray:
+    corr = np.zeros_like(rows)
+    corr[:, 3:9] = estimates[:, 0:6]
+    corr[:, 12:18] = estimates[:, 6:12]
+    out = rows - corr
+    for j in (7, 16):  # bearings back into (-pi, pi]
+        out[:, j] = np.angle(np.exp(1j * out[:, j]))
+    return out
+
+
+def _pair_outputs(rows: np.ndarray, config: RegistrationConfig):
+    fn = _loader.get(f"pseudo_measurement_{config.t_variant}")
+    args = [rows[:, 0:3], rows[:, 3:6], rows[:, 6:9], rows[:, 9:12], rows[:, 12:15], rows[:, 15:18], np.array(config.sigma0)]
+    return dict(zip(fn.output_names, fn(*args)))
+
+
+def register(data: Mapping, config: RegistrationConfig | None = None, *, progress: bool = False) -> RegistrationResult:
+    """Run the registration filter over a whole data set (batch).
+
+    ``data``: dict of arrays or pandas DataFrame following the data contract (``time`` in s and
+    for prefixes ``a_``/``b_``: lat, lon, alt, heading, pitch, roll, range, bearing, elevation;
+    SI units, radians). The data are validated before any estimation. With ``q_mode='fixed'``
+    the whole run is one compiled loop; the adaptive mode steps row by row.
+    """
+    config = config or RegistrationConfig()
+    time, rows = validate_data(data)
+    k = len(time)
+    registrar = OnlineRegistrar(config)
+    if config.q_mode == "fixed":
+        out = registrar._step.scan(
+            k,
+            _CARRY,
+            {"x": registrar.x, "P": registrar.P, "info": registrar.info, "Q": registrar._q_fixed, "row": rows, "sigma0": registrar._sigma0},
+            keep_last=("info_new",),
+        )
+        estimates, covs, info = out["x_new"], out["P_new"], out["info_new"]
+        nu, S, nis = out["nu"], out["S"], out["nis"]
+        if not (np.isfinite(estimates).all() and np.isfinite(covs).all()):
+            raise RuntimeError("the filter produced non-finite values; check the data and the configuration")
+    else:
+        estimates, covs = np.empty((k, N_STATE)), np.empty((k, N_STATE, N_STATE))
+        nu, S, nis = np.empty((k, 3)), np.empty((k, 3, 3)), np.empty(k)
+        iterator = range(k)
+        if progress:
+            from tqdm import tqdm
+
+            iterator = tqdm(iterator, desc="registering", unit="row")
+        for i in iterator:
+            r = registrar.update(rows[i], time=float(time[i]))
+            estimates[i], covs[i], nu[i], S[i], nis[i] = r["x"], r["P"], r["nu"], r["S"], r["nis"]
+        info = registrar.info
+
+    raw = _pair_outputs(rows, config)
+    corrected = _pair_outputs(_corrected_rows(rows, estimates), config)
+    report = observability_report(info, np.array(config.prior_sigma), STATE_NAMES, STATE_LABELS, STATE_UNITS)
+    return RegistrationResult(
+        config=config, time=time, estimates=estimates, covariances=covs, innovations=nu,
+        innovation_covariances=S, nis=nis, information=info,
+        raw_difference_ecef=raw["Z"], corrected_difference_ecef=corrected["Z"],
+        corrected_a_ecef=corrected["p_a_ecef"], corrected_b_ecef=corrected["p_b_ecef"],
+        observability=report,
+    )
