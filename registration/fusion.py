@@ -67,6 +67,8 @@ _ALIASES = {"bearing": "azimuth", "r": "range", "az": "azimuth", "el": "elevatio
 _UNITS = {"range": "m", "azimuth": "rad", "elevation": "rad"}
 #: a point closer than this fraction of the radar range to a site is "at the site"
 _SITE_TOL = 1e-9
+#: pairs processed per block: keeps the temporaries in cache (results do not depend on it)
+_BLOCK = 16384
 
 
 def wrap_angle(a: np.ndarray) -> np.ndarray:
@@ -171,29 +173,84 @@ def _bcast(a: np.ndarray, n: int) -> np.ndarray:
     return np.broadcast_to(a, (n,) + a.shape[1:]) if a.shape[0] != n else a
 
 
-def _check_off_site(name: str, range_m: np.ndarray, scale_m: np.ndarray) -> None:
+def _check_off_site(name: str, range_m: np.ndarray, scale_m: np.ndarray, offset: int = 0) -> None:
     bad = range_m <= _SITE_TOL * np.maximum(scale_m, 1.0)
     if bad.any():
         i = int(np.argwhere(bad)[0][0])
         raise ValueError(
-            f"{name}: the target at row {i} is at the sensor's site (distance {range_m[i]:.3g} m); "
+            f"{name}: the target at row {offset + i} is at the sensor's site (distance {range_m[i]:.3g} m); "
             "bearings from a site to itself are undefined"
         )
 
 
 # --------------------------------------------------------------------------- small linear algebra
+# Internally, stacks of tiny matrices (d <= 3) are held "structure of arrays": a matrix stack is
+# (rows, cols, N) and a vector stack (rows, N), so every entry is one contiguous array of N values
+# and each product is a handful of whole-array operations (much faster than (N, d, d) @ in numpy).
+def _soa(m: np.ndarray) -> np.ndarray:
+    """(N, ...) -> (..., N), contiguous."""
+    return np.ascontiguousarray(np.moveaxis(m, 0, -1))
+
+
+def _aos(m: np.ndarray) -> np.ndarray:
+    """(..., N) -> (N, ...), contiguous."""
+    return np.ascontiguousarray(np.moveaxis(m, -1, 0))
+
+
+def _mm(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """(i, k, N) x (k, j, N) -> (i, j, N)."""
+    out = a[:, 0, None, :] * b[None, 0, :, :]
+    for k in range(1, a.shape[1]):
+        out += a[:, k, None, :] * b[None, k, :, :]
+    return out
+
+
+def _mv(a: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """(i, k, N) x (k, N) -> (i, N)."""
+    out = a[:, 0, :] * v[0]
+    for k in range(1, a.shape[1]):
+        out += a[:, k, :] * v[k]
+    return out
+
+
+def _t(a: np.ndarray) -> np.ndarray:
+    return a.transpose(1, 0, 2)
+
+
 def _sym(m: np.ndarray) -> np.ndarray:
-    return 0.5 * (m + np.swapaxes(m, -1, -2))
+    return 0.5 * (m + _t(m))
 
 
 def _sandwich(a: np.ndarray, diag: np.ndarray) -> np.ndarray:
-    """a diag(diag) a^T for stacks: a (N, m, k), diag (N, k) -> (N, m, m)."""
-    return _sym(np.einsum("nik,nk,njk->nij", a, diag, a))
+    """a diag(diag) a^T: a (i, k, N), diag (k, N) -> symmetric (i, i, N)."""
+    return _sym(_mm(a * diag[None, :, :], _t(a)))
 
 
-def _congruence(a: np.ndarray, m: np.ndarray) -> np.ndarray:
-    """a m a^T for stacks."""
-    return _sym(a @ m @ np.swapaxes(a, -1, -2))
+def _inv(m: np.ndarray) -> np.ndarray:
+    """Inverse of a (d, d, N) stack, d = 2 or 3, by the adjugate.
+
+    Raises ValueError when a matrix is singular to working precision (a degenerate geometry).
+    """
+    d = m.shape[0]
+    out = np.empty_like(m)
+    if d == 2:
+        a, b, c, e = m[0, 0], m[0, 1], m[1, 0], m[1, 1]
+        det = a * e - b * c
+        scale = np.abs(a * e) + np.abs(b * c)
+        out[0, 0], out[0, 1], out[1, 0], out[1, 1] = e, -b, -c, a
+    else:
+        r0, r1, r2 = m[0], m[1], m[2]
+        out[:, 0] = np.cross(r1, r2, axis=0)
+        out[:, 1] = np.cross(r2, r0, axis=0)
+        out[:, 2] = np.cross(r0, r1, axis=0)
+        det = np.sum(r0 * out[:, 0], axis=0)
+        scale = np.sqrt(np.sum(r0 * r0, axis=0) * np.sum(r1 * r1, axis=0) * np.sum(r2 * r2, axis=0))  # Hadamard
+    bad = ~(np.abs(det) > 1e-13 * scale)
+    if bad.any():
+        i = int(np.argwhere(bad)[0][0])
+        raise ValueError(f"singular {d}x{d} covariance or information matrix at row {i}: degenerate geometry")
+    out /= det
+    return out
 
 
 def gdop(cov) -> np.ndarray:
@@ -240,7 +297,7 @@ def radar_point(z_radar, sigma_radar, site_radar_loc=None) -> tuple[np.ndarray, 
     site = _site("site_radar_loc", np.zeros(dim) if site_radar_loc is None else site_radar_loc, dim)
     n = _common_n(z_radar=z, sigma_radar=s)
     p_rel, J = _polar2cartesian(np.ascontiguousarray(_bcast(z, n)))
-    return p_rel + site, _sandwich(J, _bcast(s, n) ** 2)
+    return p_rel + site, _aos(_sandwich(_soa(J), _soa(_bcast(s, n)) ** 2))
 
 
 # --------------------------------------------------------------------------- the paper's method
@@ -324,88 +381,112 @@ def fuse_paper(
     site_b = _site("site_second_loc", site_second_loc, dim)
     idx, z_b, s_b = _second_inputs(z_second, sigma_second, components, dim)
     n = _common_n(z_radar=z_a, sigma_radar=s_a, z_second=z_b, sigma_second=s_b)
-    z_a, s_a, z_b, s_b = (np.ascontiguousarray(_bcast(a, n)) for a in (z_a, s_a, z_b, s_b))
-    var_a, var_b = s_a**2, s_b**2
+    z_a, s_a, z_b, s_b = (_bcast(a, n) for a in (z_a, s_a, z_b, s_b))
+    blocks = [
+        _fuse_paper_block(z_a[i:i + _BLOCK], s_a[i:i + _BLOCK], z_b[i:i + _BLOCK], s_b[i:i + _BLOCK], idx, site_a, site_b, i)
+        for i in range(0, n, _BLOCK)
+    ]
+    if len(blocks) == 1:
+        return blocks[0]
+    return FusionResult(**{f: np.concatenate([getattr(b, f) for b in blocks]) for f in FusionResult.__dataclass_fields__})
+
+
+def _fuse_paper_block(z_a, s_a, z_b, s_b, idx, site_a, site_b, offset: int) -> FusionResult:
+    """Steps (1)-(5) on validated (n, .) inputs; ``offset`` numbers rows in error messages."""
+    n, dim = z_a.shape
+    z_a = np.ascontiguousarray(z_a)
+    z_b = _soa(z_b)  # (k, n)
+    var_a = _soa(s_a) ** 2  # (d, n)
+    var_b = _soa(s_b) ** 2  # (k, n)
 
     # (1) radar point and covariance
-    p_c_rel, J_a = _polar2cartesian(z_a)
-    p_c = p_c_rel + site_a
+    p_c_rel, J_a_n = _polar2cartesian(z_a)
+    p_c = _soa(p_c_rel) + site_a[:, None]  # (d, N)
+    J_a = _soa(J_a_n)
     P = _sandwich(J_a, var_a)
 
     # (2) C seen from the second site; variances by the Cartesian -> polar Jacobian (eq. 7)
-    polar_b, G = _cartesian2polar(p_c - site_b)
-    _check_off_site("site_second_loc", polar_b[:, 0], z_a[:, 0])
-    Q = _congruence(G, P)
-    var_b_prime = np.diagonal(Q, axis1=1, axis2=2).copy()
+    polar_b_n, G_n = _cartesian2polar(_aos(p_c - site_b[:, None]))
+    polar_b, G = _soa(polar_b_n), _soa(G_n)
+    _check_off_site("site_second_loc", polar_b[0], z_a[:, 0], offset)
+    var_b_prime = np.sum(_mm(G, P) * G, axis=1)  # diag(G P G^T), (d, N)
 
     # (3) inverse-variance fusion of the components the second sensor measures
-    w = np.zeros((n, dim))  # weight of the second sensor per component (0 where not measured)
-    w[:, idx] = var_b_prime[:, idx] / (var_b_prime[:, idx] + var_b)
-    innov = z_b - polar_b[:, idx]
-    innov = np.where(idx != 0, wrap_angle(innov), innov)  # angles fused on the wrapped difference
+    w = var_b_prime[idx] / (var_b_prime[idx] + var_b)  # weight of the second sensor, (k, N)
+    innov = z_b - polar_b[idx]
+    angles = idx != 0
+    innov[angles] = wrap_angle(innov[angles])  # angles fused on the wrapped difference
     polar_f = polar_b.copy()
-    polar_f[:, idx] += w[:, idx] * innov
-    polar_f[:, 1] = wrap_angle(polar_f[:, 1])  # azimuth back to (-pi, pi]
+    polar_f[idx] += w * innov
+    polar_f[1] = wrap_angle(polar_f[1])  # azimuth back to (-pi, pi]
     var_f = var_b_prime.copy()
-    var_f[:, idx] = var_b_prime[:, idx] * var_b / (var_b_prime[:, idx] + var_b)
-    if (polar_f[:, 0] <= 0).any():
-        i = int(np.argwhere(polar_f[:, 0] <= 0)[0][0])
-        raise ValueError(f"z_second: the fused range at row {i} is not positive ({polar_f[i, 0]:.3g} m)")
+    var_f[idx] = var_b_prime[idx] * var_b / (var_b_prime[idx] + var_b)
+    if (polar_f[0] <= 0).any():
+        i = int(np.argwhere(polar_f[0] <= 0)[0][0])
+        raise ValueError(f"z_second: the fused range at row {offset + i} is not positive ({polar_f[0, i]:.3g} m)")
 
     # (4) pseudo-measurement H at the second site and its covariance (paper: diagonal polar cov)
-    p_h_rel, J_h = _polar2cartesian(np.ascontiguousarray(polar_f))
-    p_h = p_h_rel + site_b
+    p_h_rel, J_h_n = _polar2cartesian(_aos(polar_f))
+    p_h = _soa(p_h_rel) + site_b[:, None]
+    J_h = _soa(J_h_n)
     R = _sandwich(J_h, var_f)
 
     # (5) convex combination, eq. (13)
-    S_inv = np.linalg.inv(P + R)
-    W_h = P @ S_inv  # weight of H; weight of C is R S^-1 = I - W_h
-    p_x = p_c + np.einsum("nij,nj->ni", W_h, p_h - p_c)
-    P_claimed = _sym(P @ S_inv @ R)
+    W_h = _mm(P, _inv(P + R))  # weight of H; weight of C is R (P + R)^-1 = I - W_h
+    p_x = p_c + _mv(W_h, p_h - p_c)
+    P_claimed = _sym(_mm(W_h, R))
 
     # consistent covariance: first-order propagation of the raw noise, weights held fixed
-    D = np.ones((n, dim))
-    D[:, idx] = 1.0 - w[:, idx]  # d polar_f / d polar_b (diagonal)
-    E = np.zeros((n, dim, idx.size))  # d polar_f / d z_second
-    E[:, idx, np.arange(idx.size)] = w[:, idx]
-    dH_dC = J_h @ (D[:, :, None] * G)
-    dH_da = dH_dC @ J_a
-    dH_db = J_h @ E
-    W_c = np.eye(dim) - W_h
-    dX_da = (W_c + W_h @ dH_dC) @ J_a
-    dX_db = W_h @ dH_db
+    D = np.ones((dim, n))
+    D[idx] = 1.0 - w  # d polar_f / d polar_b (diagonal)
+    dH_dC = _mm(J_h, D[:, None, :] * G)
+    dH_da = _mm(dH_dC, J_a)
+    dH_db = J_h[:, idx, :] * w[None, :, :]  # J_h d polar_f / d z_second, (d, k, N)
+    W_c = np.eye(dim)[:, :, None] - W_h
+    dX_da = _mm(W_c + _mm(W_h, dH_dC), J_a)
+    dX_db = _mm(W_h, dH_db)
     P_consistent = _sandwich(dX_da, var_a) + _sandwich(dX_db, var_b)
     R_consistent = _sandwich(dH_da, var_a) + _sandwich(dH_db, var_b)
 
     return FusionResult(
-        p_radar_loc=p_c,
-        P_radar=P,
-        polar_radar_at_second=polar_b,
-        var_radar_at_second=var_b_prime,
-        polar_fused_at_second=polar_f,
-        var_fused_at_second=var_f,
-        p_pseudo_loc=p_h,
-        R_pseudo=R,
-        R_pseudo_consistent=R_consistent,
-        p_fused_loc=p_x,
-        P_claimed=P_claimed,
-        P_consistent=P_consistent,
-        dX_dz_radar=dX_da,
-        dX_dz_second=dX_db,
+        p_radar_loc=_aos(p_c),
+        P_radar=_aos(P),
+        polar_radar_at_second=polar_b_n,
+        var_radar_at_second=_aos(var_b_prime),
+        polar_fused_at_second=_aos(polar_f),
+        var_fused_at_second=_aos(var_f),
+        p_pseudo_loc=_aos(p_h),
+        R_pseudo=_aos(R),
+        R_pseudo_consistent=_aos(R_consistent),
+        p_fused_loc=_aos(p_x),
+        P_claimed=_aos(P_claimed),
+        P_consistent=_aos(P_consistent),
+        dX_dz_radar=_aos(dX_da),
+        dX_dz_second=_aos(dX_db),
     )
 
 
 # --------------------------------------------------------------------------- optimal fuser and CRLB
 def _model(p_loc: np.ndarray, site_a: np.ndarray, site_b: np.ndarray, idx: np.ndarray):
-    """Predicted measurements [radar polar (d), second (k)] and their Jacobian d/dp (N, d+k, d)."""
-    pol_a, G_a = _cartesian2polar(p_loc - site_a)
-    pol_b, G_b = _cartesian2polar(p_loc - site_b)
-    return np.concatenate([pol_a, pol_b[:, idx]], axis=1), np.concatenate([G_a, G_b[:, idx, :]], axis=1)
+    """Predicted measurements [radar polar (d), second (k)] as (d+k, N) and their Jacobian d/dp (d+k, d, N).
+
+    ``p_loc`` (d, N) metres; sites (d,).
+    """
+    pol_a, G_a = _cartesian2polar(_aos(p_loc - site_a[:, None]))
+    pol_b, G_b = _cartesian2polar(_aos(p_loc - site_b[:, None]))
+    h = np.concatenate([_soa(pol_a), _soa(pol_b[:, idx])], axis=0)
+    H = np.concatenate([_soa(G_a), _soa(G_b[:, idx, :])], axis=0)
+    return h, H
 
 
-def _residual(z: np.ndarray, h: np.ndarray, angle_cols: np.ndarray) -> np.ndarray:
+def _information(H: np.ndarray, inv_var: np.ndarray) -> np.ndarray:
+    """H^T diag(inv_var) H: H (m, d, N), inv_var (m, N) -> (d, d, N)."""
+    return _sym(_mm(_t(H) * inv_var[None, :, :], H))
+
+
+def _residual(z: np.ndarray, h: np.ndarray, angle_rows: np.ndarray) -> np.ndarray:
     r = z - h
-    r[:, angle_cols] = wrap_angle(r[:, angle_cols])
+    r[angle_rows] = wrap_angle(r[angle_rows])
     return r
 
 
@@ -436,13 +517,13 @@ def fisher_information(p_loc, sigma_radar, sigma_second, components, site_second
     idx = parse_components(components, dim)
     s_b = _sigmas("sigma_second", sigma_second, idx.size, tuple(COMPONENTS[dim][i] for i in idx))
     n = _common_n(p_loc=p, sigma_radar=s_a, sigma_second=s_b)
-    p = np.ascontiguousarray(_bcast(p, n))
-    scale = np.linalg.norm(p - site_a, axis=1)
+    p = _soa(_bcast(p, n))
+    scale = np.linalg.norm(p - site_a[:, None], axis=0)
     _check_off_site("site_radar_loc", scale, scale)
-    _check_off_site("site_second_loc", np.linalg.norm(p - site_b, axis=1), scale)
+    _check_off_site("site_second_loc", np.linalg.norm(p - site_b[:, None], axis=0), scale)
     _, H = _model(p, site_a, site_b, idx)
-    inv_var = np.concatenate([_bcast(s_a, n), _bcast(s_b, n)], axis=1) ** -2
-    return _sym(np.einsum("nki,nk,nkj->nij", H, inv_var, H))
+    inv_var = _soa(np.concatenate([_bcast(s_a, n), _bcast(s_b, n)], axis=1)) ** -2
+    return _aos(_information(H, inv_var))
 
 
 def crlb(p_loc, sigma_radar, sigma_second, components, site_second_loc, site_radar_loc=None) -> np.ndarray:
@@ -452,7 +533,8 @@ def crlb(p_loc, sigma_radar, sigma_second, components, site_second_loc, site_rad
     components, all with independent Gaussian noise: no unbiased fuser of these raw measurements
     can have a smaller covariance.
     """
-    return _sym(np.linalg.inv(fisher_information(p_loc, sigma_radar, sigma_second, components, site_second_loc, site_radar_loc)))
+    info = _soa(fisher_information(p_loc, sigma_radar, sigma_second, components, site_second_loc, site_radar_loc))
+    return _aos(_sym(_inv(info)))
 
 
 def fuse_optimal(
@@ -489,46 +571,61 @@ def fuse_optimal(
     s_a = _sigmas("sigma_radar", sigma_radar, dim, COMPONENTS[dim])
     _polar_checks("z_radar", z_a, COMPONENTS[dim])
     n = _common_n(z_radar=z_a, sigma_radar=s_a, z_second=z_b, sigma_second=s_b)
-    z = np.concatenate([_bcast(z_a, n), _bcast(z_b, n)], axis=1)
-    inv_var = np.concatenate([_bcast(s_a, n), _bcast(s_b, n)], axis=1) ** -2
-    angle_cols = np.flatnonzero(np.concatenate([np.arange(dim), idx]) != 0)
+    z_all = np.concatenate([_bcast(z_a, n), _bcast(z_b, n)], axis=1)  # (N, d+k)
+    s_all = np.concatenate([_bcast(s_a, n), _bcast(s_b, n)], axis=1)
+    blocks = [
+        _fuse_optimal_block(z_all[i:i + _BLOCK], s_all[i:i + _BLOCK], idx, site_a, site_b, max_iterations, tol_m, i)
+        for i in range(0, n, _BLOCK)
+    ]
+    if len(blocks) == 1:
+        return blocks[0]
+    return OptimalResult(**{f: np.concatenate([getattr(b, f) for b in blocks]) for f in OptimalResult.__dataclass_fields__})
 
-    p_rel, _ = _polar2cartesian(np.ascontiguousarray(_bcast(z_a, n)))
-    p = p_rel + site_a
-    scale = np.maximum(np.asarray(_bcast(z_a, n))[:, 0], 1.0)
+
+def _fuse_optimal_block(z_all, s_all, idx, site_a, site_b, max_iterations: int, tol_m: float, offset: int) -> OptimalResult:
+    """Gauss-Newton on validated (n, d+k) measurements and sigmas; ``offset`` numbers rows in errors."""
+    n, dim = z_all.shape[0], site_a.size
+    z = _soa(z_all)  # (d+k, n)
+    inv_var = _soa(s_all) ** -2
+    angle_rows = np.flatnonzero(np.concatenate([np.arange(dim), idx]) != 0)
+
+    p_rel, _ = _polar2cartesian(np.ascontiguousarray(z_all[:, :dim]))
+    p = _soa(p_rel) + site_a[:, None]  # start at the radar point, (d, N)
+    scale = np.maximum(z[0], 1.0)
     iterations = np.zeros(n, dtype=np.int64)
     converged = np.zeros(n, dtype=bool)
     active = np.arange(n)
     for _ in range(max_iterations):
         if active.size == 0:
             break
-        pa = p[active]
-        _check_off_site("site_second_loc", np.linalg.norm(pa - site_b, axis=1), scale[active])
-        _check_off_site("site_radar_loc", np.linalg.norm(pa - site_a, axis=1), scale[active])
+        pa = p[:, active]
+        for name, site in (("site_second_loc", site_b), ("site_radar_loc", site_a)):
+            near = np.linalg.norm(pa - site[:, None], axis=0) <= _SITE_TOL * scale[active]
+            if near.any():
+                i = offset + int(active[np.argmax(near)])
+                raise ValueError(f"{name}: the Gauss-Newton estimate for row {i} reached the sensor's site; degenerate geometry")
+        za, iv = z[:, active], inv_var[:, active]
         h, H = _model(pa, site_a, site_b, idx)
-        r = _residual(z[active], h, angle_cols)
-        iv = inv_var[active]
-        cost = np.sum(r * r * iv, axis=1)
-        A = np.einsum("nki,nk,nkj->nij", H, iv, H)
-        g = np.einsum("nki,nk->ni", H, iv * r)
-        step = np.linalg.solve(A, g[..., None])[..., 0]
+        r = _residual(za, h, angle_rows)
+        cost = np.sum(r * r * iv, axis=0)
+        HtW = _t(H) * iv[None, :, :]  # (d, m, N)
+        step = _mv(_inv(_mm(HtW, H)), _mv(HtW, r))
         # backtracking: halve the step where the cost went up
         pending = np.arange(active.size)
         for _halve in range(20):
-            trial = pa[pending] + step[pending]
-            h_t, _ = _model(trial, site_a, site_b, idx)
-            r_t = _residual(z[active[pending]], h_t, angle_cols)
-            worse = np.sum(r_t * r_t * iv[pending], axis=1) > cost[pending] * (1 + 1e-12) + 1e-300
+            h_t, _ = _model(pa[:, pending] + step[:, pending], site_a, site_b, idx)
+            r_t = _residual(za[:, pending], h_t, angle_rows)
+            worse = np.sum(r_t * r_t * iv[:, pending], axis=0) > cost[pending] * (1 + 1e-12) + 1e-300
             if not worse.any():
                 break
-            step[pending[worse]] *= 0.5
+            step[:, pending[worse]] *= 0.5
             pending = pending[worse]
-        p[active] = pa + step
+        p[:, active] = pa + step
         iterations[active] += 1
-        done = np.linalg.norm(step, axis=1) < tol_m
+        done = np.sqrt(np.sum(step * step, axis=0)) < tol_m
         converged[active[done]] = True
         active = active[~done]
 
     _, H = _model(p, site_a, site_b, idx)
-    P = _sym(np.linalg.inv(np.einsum("nki,nk,nkj->nij", H, inv_var, H)))
-    return OptimalResult(p_loc=p, P=P, iterations=iterations, converged=converged)
+    P = _inv(_information(H, inv_var))
+    return OptimalResult(p_loc=_aos(p), P=_aos(_sym(P)), iterations=iterations, converged=converged)
