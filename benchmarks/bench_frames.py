@@ -1,0 +1,417 @@
+#!/usr/bin/env python3
+"""Throughput of the generated frame transforms, against pymap3d, pyproj and a plain C loop.
+
+Run from a checkout (the package installed, editable or not)::
+
+    python3 benchmarks/bench_frames.py                 # 10^6 points
+    python3 benchmarks/bench_frames.py --n 200000 --json results.json
+
+Everything is measured in the same run, on the same random inputs: one untimed warm-up, then
+``--repeat`` rounds interleaved across the contenders of a section, best time kept
+(``time.perf_counter``). On a shared machine the best-of figures still move by 10-20 % between
+runs; the ratios are what to read. Every contender's output is compared with ours, so a fast
+but wrong path would show up in the ``max |diff|`` column.
+
+1. ``geodetic2ecef``: ``registration.frames.geodetic2ecef`` (input validation included) and the
+   raw ``registration._loader.get("geodetic2ecef")`` (no validation) against
+   ``pymap3d.geodetic2ecef`` (numpy-vectorised, ``deg=False``) and a pyproj ``Transformer``
+   EPSG:4979 -> EPSG:4978 (``radians=True``, so no degree conversion is charged to pyproj).
+   Aim (issue 2): faster than pyproj.
+2. The full radar plot conversion (geodetic position + attitude + measurement -> target ECEF):
+   ``registration.frames.plot2ecef`` and the raw ``plot2ecef_standard`` against
+   (a) a plain C loop over the same generated code, written and compiled here into a temporary
+   folder with the loader's optimisation flags (the practical limit); (b) the serialized CasADi
+   backend (``Function.map``); (c) item-by-item conversion of each point into ``casadi.DM`` on
+   ``--dm-n`` points (why that path is avoided). Aim: within 2x of the plain C loop.
+3. The fixed per-call cost of the wrappers at N = 1 (not an aim; what a per-plot caller pays).
+
+The plain C harness ``#include``s the shipped ``generated/<name>.c`` (so the compiler may inline
+the generated body into the loop), reads the very same inputs from a binary file, calls the
+generated function once per point on structure-of-arrays inputs (as the runtime's batch driver
+does), times the loop with ``clock_gettime(CLOCK_MONOTONIC)`` and prints the ns per point. It is
+built with the loader's ``-O2`` (``-fPIC -shared`` dropped: it is an executable). A second mode
+calls through a volatile function pointer the compiler cannot see through, which is what the
+runtime's driver (a separate translation unit reached by ctypes) pays. Needs a C compiler
+(``CC``, else cc/gcc/clang, as the loader); without one those rows are skipped.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import platform
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+import registration
+from registration import _loader, frames
+
+# --------------------------------------------------------------------------- inputs
+
+
+def make_inputs(n: int, seed: int) -> dict[str, np.ndarray]:
+    """Random plots: platforms over the whole globe, heights -500 m .. 100 km, ship-like attitude."""
+    rng = np.random.default_rng(seed)
+    # uniform on the sphere in latitude (arcsin of a uniform), uniform longitude in [-pi, pi)
+    return {
+        "lat": np.arcsin(rng.uniform(-1.0, 1.0, n)),
+        "lon": rng.uniform(-np.pi, np.pi, n),
+        "alt": rng.uniform(-500.0, 1.0e5, n),
+        "heading": rng.uniform(0.0, 2 * np.pi, n),
+        "pitch": rng.uniform(-0.2, 0.2, n),
+        "roll": rng.uniform(-0.4, 0.4, n),
+        "r": rng.uniform(500.0, 3.0e5, n),
+        "q": rng.uniform(-np.pi, np.pi, n),
+        "e": rng.uniform(-0.1, 0.6, n),
+    }
+
+
+GEO_NAMES = ["lat", "lon", "alt"]
+PLOT_NAMES = ["lat", "lon", "alt", "heading", "pitch", "roll", "r", "q", "e"]
+
+
+def timed(fn):
+    """A contender timed with perf_counter: returns a callable giving (seconds, output)."""
+
+    def run():
+        t0 = time.perf_counter()
+        out = fn()
+        return time.perf_counter() - t0, out
+
+    return run
+
+
+def measure(contenders: dict, rounds: int) -> dict:
+    """Best time of each contender over ``rounds`` interleaved rounds, after one untimed warm-up.
+
+    ``contenders`` maps a label to a callable returning (seconds, output). Interleaving (round 1
+    of every contender, then round 2, ...) spreads any change in machine load over all of them,
+    so the ratios stay meaningful on a shared machine. Returns {label: (best seconds, output)}.
+    """
+    best = {}
+    for label, fn in contenders.items():  # warm-up: lazy loading, caches, page faults
+        best[label] = (float("inf"), fn()[1])
+    for _ in range(rounds):
+        for label, fn in contenders.items():
+            t, out = fn()
+            best[label] = (min(t, best[label][0]), out)
+    return best
+
+
+# --------------------------------------------------------------------------- plain C harness
+
+HARNESS = r"""
+/* Benchmark harness (not shipped): plain C loop over one CasADi-generated function. */
+#define _POSIX_C_SOURCE 199309L
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+#include "@SOURCE@"
+
+#define N_IN @N_IN@
+#define N_OUT_EL @N_OUT_EL@
+#define SZ_W @SZ_W@
+#define SZ_IW @SZ_IW@
+
+typedef int (*gen_fn)(const casadi_real **, casadi_real **, casadi_int *, casadi_real *, int);
+
+static double now_ns(void) {
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e9 + (double)ts.tv_nsec;
+}
+
+int main(int argc, char **argv) {
+    if (argc != 6) { fprintf(stderr, "usage: n repeat in.bin out.bin direct|pointer\n"); return 2; }
+    long long n = atoll(argv[1]);
+    int repeat = atoi(argv[2]);
+    int direct = argv[5][0] == 'd';
+    /* a volatile function pointer: the compiler cannot inline through it (like the ctypes driver) */
+    gen_fn volatile indirect = @FUNC@;
+    double *in = malloc(sizeof(double) * (size_t)(N_IN * n));
+    double *out = malloc(sizeof(double) * (size_t)(N_OUT_EL * n));
+    FILE *f = fopen(argv[3], "rb");
+    if (!in || !out || !f || fread(in, sizeof(double), (size_t)(N_IN * n), f) != (size_t)(N_IN * n)) {
+        fprintf(stderr, "cannot read inputs\n"); return 1;
+    }
+    fclose(f);
+    const casadi_real *arg[N_IN + 1];
+    casadi_real *res[2];
+    casadi_int iw[SZ_IW + 1];
+    casadi_real w[SZ_W + 1];
+    double best = 1e300;
+    for (int rep = 0; rep < repeat + 1; ++rep) { /* first pass: warm-up, untimed */
+        double t0 = now_ns();
+        if (direct) {
+            for (long long i = 0; i < n; ++i) {
+                for (int j = 0; j < N_IN; ++j) arg[j] = in + j * n + i;  /* structure of arrays */
+                res[0] = out + N_OUT_EL * i;
+                @FUNC@(arg, res, iw, w, 0);
+            }
+        } else {
+            gen_fn fp = indirect;
+            for (long long i = 0; i < n; ++i) {
+                for (int j = 0; j < N_IN; ++j) arg[j] = in + j * n + i;
+                res[0] = out + N_OUT_EL * i;
+                fp(arg, res, iw, w, 0);
+            }
+        }
+        double dt = now_ns() - t0;
+        if (rep > 0 && dt < best) best = dt;
+    }
+    f = fopen(argv[4], "wb");
+    if (!f || fwrite(out, sizeof(double), (size_t)(N_OUT_EL * n), f) != (size_t)(N_OUT_EL * n)) {
+        fprintf(stderr, "cannot write outputs\n"); return 1;
+    }
+    fclose(f);
+    printf("%.6f\n", best / (double)n);
+    return 0;
+}
+"""
+
+
+def c_flags() -> list[str]:
+    """The loader's optimisation flags, minus the shared-library ones."""
+    return [f for f in _loader._CFLAGS if f not in ("-shared", "-fPIC")]
+
+
+class PlainC:
+    """The plain C loop over one generated function, built into ``tmp``; call ``run(mode)``."""
+
+    def __init__(self, name: str, inputs: list[np.ndarray], tmp: Path):
+        cc = _loader._compiler()
+        if cc is None:
+            raise RuntimeError("no C compiler (set CC)")
+        meta = _loader.manifest()["functions"][name]
+        if any(tuple(p["shape"]) != (1, 1) for p in meta["inputs"]) or len(meta["outputs"]) != 1:
+            raise RuntimeError(f"the harness handles scalar inputs and one output only: {name}")
+        r, c = meta["outputs"][0]["shape"]
+        self.n, self.width = inputs[0].shape[0], r * c
+        src = tmp / f"{name}.c"
+        src.write_bytes(_loader._read_checked(name, "c"))  # the shipped source, hash-checked
+        code = (
+            HARNESS.replace("@SOURCE@", src.name)
+            .replace("@FUNC@", name)
+            .replace("@N_IN@", str(len(inputs)))
+            .replace("@N_OUT_EL@", str(self.width))
+            .replace("@SZ_W@", str(meta["work"]["sz_w"]))
+            .replace("@SZ_IW@", str(meta["work"]["sz_iw"]))
+        )
+        harness = tmp / f"harness_{name}.c"
+        harness.write_text(code)
+        self.exe = tmp / f"harness_{name}"
+        cmd = [cc, *c_flags(), "-o", str(self.exe), str(harness), "-lm"]
+        proc = subprocess.run(cmd, capture_output=True, text=True, cwd=tmp)
+        if proc.returncode != 0:
+            raise RuntimeError(f"harness compilation failed: {' '.join(cmd)}\n{proc.stderr}")
+        self.command = " ".join(cmd)
+        self.in_bin, self.out_bin = tmp / f"{name}.in", tmp / f"{name}.out"
+        np.ascontiguousarray(np.stack(inputs)).tofile(self.in_bin)  # SoA: input j at in + j*n
+
+    def runner(self, mode: str, repeat: int = 1):
+        """A contender: one process run (untimed warm-up pass + ``repeat`` timed passes)."""
+
+        def run():
+            proc = subprocess.run(
+                [str(self.exe), str(self.n), str(repeat), str(self.in_bin), str(self.out_bin), mode],
+                capture_output=True, text=True)
+            if proc.returncode != 0:
+                raise RuntimeError(f"harness failed: {proc.stderr.strip()}")
+            ns = float(proc.stdout.strip())
+            out = np.fromfile(self.out_bin, dtype=np.float64).reshape(self.n, self.width)
+            return ns * 1e-9 * self.n, out
+
+        return run
+
+
+# --------------------------------------------------------------------------- contenders
+
+
+def casadi_item_by_item(name: str, inputs: list[np.ndarray]) -> np.ndarray:
+    """The slow path: every scalar of every point converted to casadi.DM, one call per point."""
+    import casadi as ca
+
+    fn = _loader.GeneratedFunction(name, force_backend="casadi").casadi
+    m = inputs[0].shape[0]
+    out = np.empty((m, 3))
+    for i in range(m):
+        res = fn(*[ca.DM(float(a[i])) for a in inputs])
+        out[i] = np.asarray(res.full()).ravel()
+    return out
+
+
+def max_abs_diff(a, b) -> float:
+    return float(np.max(np.abs(np.asarray(a).reshape(len(b), -1) - np.asarray(b).reshape(len(b), -1))))
+
+
+def row(label: str, seconds: float, n: int, diff: float | None, note: str = "") -> dict:
+    return {"method": label, "n": n, "seconds": seconds, "points_per_s": n / seconds,
+            "ns_per_point": seconds / n * 1e9, "max_abs_diff_m": diff, "note": note}
+
+
+def print_table(title: str, rows: list[dict], ref_label: str) -> None:
+    ref = next(r for r in rows if r["method"] == ref_label)
+    print(f"\n{title}")
+    print(f"  (x ref = throughput relative to '{ref_label}'; > 1 is faster; max |diff| vs ours, metres)")
+    head = f"  {'method':<44} {'N':>9} {'best ms':>10} {'ns/pt':>9} {'points/s':>12} {'x ref':>8} {'max |diff|':>11}"
+    print(head)
+    print("  " + "-" * (len(head) - 2))
+    for r in rows:
+        diff = "-" if r["max_abs_diff_m"] is None else f"{r['max_abs_diff_m']:.1e}"
+        print(f"  {r['method']:<44} {r['n']:>9} {r['seconds'] * 1e3:>10.2f} {r['ns_per_point']:>9.1f} "
+              f"{r['points_per_s']:>12.3e} {r['points_per_s'] / ref['points_per_s']:>8.2f} {diff:>11}")
+
+
+# --------------------------------------------------------------------------- main
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--n", type=int, default=1_000_000, help="points per batch (default 10^6)")
+    ap.add_argument("--repeat", type=int, default=7, help="timed rounds, best is kept (default 7)")
+    ap.add_argument("--dm-n", type=int, default=10_000, help="points for the item-by-item casadi.DM path")
+    ap.add_argument("--casadi-repeat", type=int, default=2, help="repetitions for the CasADi map backend")
+    ap.add_argument("--seed", type=int, default=20110101)
+    ap.add_argument("--json", metavar="FILE", help="also write the results as JSON")
+    args = ap.parse_args(argv)
+    n, rep = args.n, args.repeat
+
+    import casadi
+    import pymap3d
+    import pyproj
+
+    machine = {
+        "platform": platform.platform(),
+        "machine": platform.machine(),
+        "processor": platform.processor() or "?",
+        "cpu_count": os.cpu_count(),
+        "python": platform.python_version(),
+        "numpy": np.__version__,
+        "casadi": casadi.__version__,
+        "pymap3d": pymap3d.__version__,
+        "pyproj": pyproj.__version__,
+        "proj": pyproj.proj_version_str,
+        "registration": getattr(registration, "__version__", "?"),
+        "backend": _loader.backend(),
+        "compiler": _loader._compiler(),
+        "cflags": " ".join(_loader._CFLAGS),
+    }
+    print("machine: " + ", ".join(f"{k}={v}" for k, v in machine.items()))
+    print(f"N = {n}, best of {rep} interleaved rounds (perf_counter; the C harness times itself with "
+          "clock_gettime), one untimed warm-up each")
+
+    data = make_inputs(n, args.seed)
+    geo = [data[k] for k in GEO_NAMES]
+    plot = [data[k] for k in PLOT_NAMES]
+
+    PJ, PC = "pyproj Transformer 4979->4978 (radians)", "plain C loop, direct call (inlinable)"
+    OURS_G, RAW_G = "ours: frames.geodetic2ecef (validated)", "ours: _loader.get('geodetic2ecef') (raw)"
+    OURS_P, RAW_P = "ours: frames.plot2ecef (validated)", "ours: _loader.get('plot2ecef_standard') (raw)"
+    raw_g, raw_p = _loader.get("geodetic2ecef"), _loader.get("plot2ecef_standard")
+    tr = pyproj.Transformer.from_crs("EPSG:4979", "EPSG:4978")
+
+    with tempfile.TemporaryDirectory(prefix="bench_frames_") as tmp:
+        tmp = Path(tmp)
+        harness = {}
+        for name, inputs in (("geodetic2ecef", geo), ("plot2ecef_standard", plot)):
+            try:
+                harness[name] = PlainC(name, inputs, tmp)
+            except RuntimeError as exc:
+                print(f"plain C harness for {name} unavailable: {exc}")
+
+        # ---- 1. geodetic2ecef
+        c1 = {
+            OURS_G: timed(lambda: frames.geodetic2ecef(*geo)),
+            RAW_G: timed(lambda: raw_g(*geo)[0]),
+            "pymap3d.geodetic2ecef (deg=False)": timed(lambda: np.stack(pymap3d.geodetic2ecef(*geo, deg=False), -1)),
+            PJ: timed(lambda: np.stack(tr.transform(*geo, radians=True), -1)),
+        }
+        if "geodetic2ecef" in harness:
+            c1[PC] = harness["geodetic2ecef"].runner("direct")
+        res1 = measure(c1, rep)
+        ours = res1[OURS_G][1]
+        rows1 = [row(k, t, n, max_abs_diff(out, ours)) for k, (t, out) in res1.items()]
+
+        # ---- 2. plot -> ECEF
+        c2 = {
+            OURS_P: timed(lambda: frames.plot2ecef(*plot)),
+            RAW_P: timed(lambda: raw_p(*plot)[0]),
+        }
+        if "plot2ecef_standard" in harness:
+            c2[PC] = harness["plot2ecef_standard"].runner("direct")
+            c2["plain C loop, via function pointer"] = harness["plot2ecef_standard"].runner("pointer")
+        res2 = measure(c2, rep)
+        ours_p = res2[OURS_P][1]
+        rows2 = [row(k, t, n, max_abs_diff(out, ours_p)) for k, (t, out) in res2.items()]
+        harness_cmd = harness["plot2ecef_standard"].command if "plot2ecef_standard" in harness else None
+
+    cas = _loader.GeneratedFunction("plot2ecef_standard", force_backend="casadi")
+    first, _ = timed(lambda: cas(*plot)[0])()
+    res = measure({"c": timed(lambda: cas(*plot)[0])}, args.casadi_repeat)["c"]
+    rows2.append(row("CasADi serialized, Function.map (backend)", res[0], n, max_abs_diff(res[1], ours_p),
+                     f"first call incl. map construction {first:.2f} s; best of {args.casadi_repeat}"))
+    m = min(args.dm_n, n)
+    t, out = timed(lambda: casadi_item_by_item("plot2ecef_standard", [a[:m] for a in plot]))()
+    rows2.append(row("casadi.DM item by item, one call per point", t, m, max_abs_diff(out, ours_p[:m]),
+                     f"{m} points only, one pass"))
+
+    # ---- 3. per-call overhead (small batches: what a per-plot caller pays)
+    one = [a[:1] for a in plot]
+    calls = 2000
+
+    def per_call(fn):
+        def loop():
+            for _ in range(calls):
+                fn()
+
+        return timed(loop)
+
+    res3 = measure({f"{OURS_P}, N=1": per_call(lambda: frames.plot2ecef(*one)),
+                    f"{RAW_P}, N=1": per_call(lambda: raw_p(*one))}, rep)
+    rows3 = [{"method": k, "calls": calls, "us_per_call": t / calls * 1e6} for k, (t, _) in res3.items()]
+
+    print_table(f"1. geodetic2ecef, {n} random points over the globe (h -500 m .. 100 km)", rows1,
+                "pyproj Transformer 4979->4978 (radians)")
+    ref2 = PC if harness_cmd else RAW_P
+    print_table(f"2. radar plot -> target ECEF (plot2ecef_standard), {n} plots", rows2, ref2)
+    for r in rows2:
+        if r["note"]:
+            print(f"  note: {r['method']}: {r['note']}")
+    if harness_cmd:
+        print(f"  plain C harness built with: {harness_cmd}")
+
+    print("\n3. per-call latency, one plot per call (fixed overhead of the numpy/ctypes wrapper)")
+    for r in rows3:
+        print(f"  {r['method']:<54} {r['us_per_call']:8.1f} us/call")
+
+    # ---- aims
+    by1, by2 = ({r["method"]: r for r in rows} for rows in (rows1, rows2))
+    aims = {}
+    for key in (OURS_G, RAW_G):
+        aims[f"{key} throughput / pyproj"] = by1[key]["points_per_s"] / by1[PJ]["points_per_s"]
+    if PC in by2:
+        for key in (OURS_P, RAW_P):
+            aims[f"{key} time / plain C"] = by2[key]["seconds"] / by2[PC]["seconds"]
+    print("\naims (issue 2):")
+    for k, v in aims.items():
+        if k.endswith("pyproj"):
+            print(f"  {k:<62} {v:6.2f}x  (aim > 1: {'met' if v > 1 else 'NOT met'})")
+        else:
+            print(f"  {k:<62} {v:6.2f}x  (aim <= 2: {'met' if v <= 2 else 'NOT met'})")
+
+    if args.json:
+        Path(args.json).write_text(json.dumps(
+            {"machine": machine, "n": n, "repeat": rep, "seed": args.seed,
+             "geodetic2ecef": rows1, "plot2ecef": rows2, "per_call": rows3, "aims": aims}, indent=2) + "\n")
+        print(f"\nwrote {args.json}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
