@@ -1,5 +1,10 @@
 """Observability of the registration state from the accumulated Fisher information.
 
+The batch :func:`registration.online.register` evaluates the information at the final estimate
+(the measurements corrected by it): along the estimated true geometry. Evaluated at the raw
+measurements instead, a level ship whose pitch reads 0.03 deg (a pitch *error*) would seem to
+separate heading error from bearing bias, an artefact that grows as the noise shrinks.
+
 The information matrix ``J = sum_k H_k^T R_k^-1 H_k`` is scaled to comparable units with the
 prior standard deviations ``D = diag(sigma_prior)``: ``J_s = D J D`` is dimensionless, and an
 eigenvalue ``s`` of ``J_s`` says how much the data shrink the prior along that direction: the

@@ -200,7 +200,8 @@ class RegistrationResult:
     innovations: np.ndarray  # (K, 3) m
     innovation_covariances: np.ndarray  # (K, 3, 3) m^2
     nis: np.ndarray  # (K,)
-    information: np.ndarray  # (12, 12) accumulated sum H^T R^-1 H
+    information: np.ndarray  # (12, 12) sum H^T R^-1 H as the filter accumulated it (at its linearisation points)
+    information_at_estimate: np.ndarray  # (12, 12) the same sum re-evaluated at the final estimate (observability)
     raw_difference_ecef: np.ndarray  # (K, 3) X_A - X_B from the measured values
     corrected_difference_ecef: np.ndarray  # (K, 3) X_A - X_B corrected with the estimate after each row
     corrected_a_ecef: np.ndarray  # (K, 3) corrected target position from radar A
@@ -279,7 +280,16 @@ class OnlineRegistrar:
         return {"x": self.x, "P": self.P, "nu": nu[0], "S": S[0], "nis": float(nis[0])}
 
     def observability(self) -> ObservabilityReport:
+        """From the information accumulated at the filter's own linearisation points (streaming)."""
         return observability_report(self.info, np.array(self.config.prior_sigma), STATE_NAMES, STATE_LABELS, STATE_UNITS)
+
+
+def information_matrix(H: np.ndarray, R: np.ndarray) -> np.ndarray:
+    """sum_k H_k^T R_k^-1 H_k for H (K, 3, 12) and R (K, 3, 3), by Cholesky solves."""
+    L = np.linalg.cholesky(R)
+    W = np.linalg.solve(L, H)  # L^-1 H, so W^T W = H^T R^-1 H
+    J = np.einsum("kai,kaj->ij", W, W)
+    return 0.5 * (J + J.T)
 
 
 def _corrected_rows(rows: np.ndarray, estimates: np.ndarray) -> np.ndarray:
@@ -336,10 +346,12 @@ def register(data: Mapping, config: RegistrationConfig | None = None, *, progres
 
     raw = _pair_outputs(rows, config)
     corrected = _pair_outputs(_corrected_rows(rows, estimates), config)
-    report = observability_report(info, np.array(config.prior_sigma), STATE_NAMES, STATE_LABELS, STATE_UNITS)
+    at_final = _pair_outputs(_corrected_rows(rows, np.broadcast_to(estimates[-1], estimates.shape)), config)
+    info_final = information_matrix(at_final["H"], at_final["R"])
+    report = observability_report(info_final, np.array(config.prior_sigma), STATE_NAMES, STATE_LABELS, STATE_UNITS)
     return RegistrationResult(
         config=config, time=time, estimates=estimates, covariances=covs, innovations=nu,
-        innovation_covariances=S, nis=nis, information=info,
+        innovation_covariances=S, nis=nis, information=info, information_at_estimate=info_final,
         raw_difference_ecef=raw["Z"], corrected_difference_ecef=corrected["Z"],
         corrected_a_ecef=corrected["p_a_ecef"], corrected_b_ecef=corrected["p_b_ecef"],
         observability=report,

@@ -1,0 +1,98 @@
+"""Plots of an online-registration run (the paper's Fig. 2-4), written as PNG with matplotlib (Agg)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from .online import RegistrationResult
+from .state import IS_ANGLE, STATE_LABELS, STATE_NAMES, display_unit, to_display
+
+
+def _pyplot():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def plot_tracks(data: dict, truth: dict | None, path: Path) -> Path:
+    """Ships' tracks and the target (Fig. 2a/1): longitude/latitude in degrees."""
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(7, 6))
+    for prefix, colour in (("a", "tab:blue"), ("b", "tab:orange")):
+        lon, lat = np.degrees(data[f"{prefix}_lon"]), np.degrees(data[f"{prefix}_lat"])
+        ax.plot(lon, lat, color=colour, lw=3, label=f"ship {prefix.upper()}")
+        ax.plot(lon[0], lat[0], "o", color=colour)
+    if truth and "target_lon" in truth:
+        lon, lat = np.degrees(truth["target_lon"]), np.degrees(truth["target_lat"])
+        ax.plot(lon, lat, color="tab:red", lw=1.5, label="target (truth)")
+        ax.plot(lon[0], lat[0], "o", color="tab:red")
+        ax.annotate("start", (lon[0], lat[0]), textcoords="offset points", xytext=(5, 5), fontsize=8)
+    ax.set_xlabel("longitude (deg E)")
+    ax.set_ylabel("latitude (deg N)")
+    ax.set_title("Ship tracks and target (dots: start)")
+    ax.set_aspect(1 / np.cos(np.radians(np.mean(np.degrees(data["a_lat"])))))
+    ax.grid(alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def plot_differences(result: RegistrationResult, path: Path) -> Path:
+    """X_A - X_B per ECEF axis before and after registration (Fig. 2c and 4c)."""
+    plt = _pyplot()
+    fig, axes = plt.subplots(3, 1, figsize=(9, 8), sharex=True)
+    for i, (ax, axis) in enumerate(zip(axes, "XYZ")):
+        ax.plot(result.time, result.raw_difference_ecef[:, i], color="tab:red", lw=0.8, label="before")
+        ax.plot(result.time, result.corrected_difference_ecef[:, i], color="tab:green", lw=0.8, label="after")
+        ax.axhline(0, color="k", lw=0.5)
+        ax.set_ylabel(f"{axis}_A - {axis}_B (m)")
+        ax.grid(alpha=0.3)
+    axes[0].legend(loc="upper right")
+    axes[0].set_title("ECEF difference of the two radars' target positions")
+    axes[-1].set_xlabel("time (s)")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def plot_estimates(result: RegistrationResult, truth_state: np.ndarray | None, path: Path) -> Path:
+    """Every state's estimate against time with a +-2 sigma band and the true value (Fig. 3)."""
+    plt = _pyplot()
+    fig, axes = plt.subplots(6, 2, figsize=(11, 15), sharex=True)  # left: ship/radar A, right: B
+    sigma = np.sqrt(np.einsum("kii->ki", result.covariances))
+    est = to_display(result.estimates)
+    sig = np.where(IS_ANGLE, np.degrees(sigma), sigma)
+    status = result.observability.status
+    for i, ax in enumerate(axes.T.ravel()):
+        ax.fill_between(result.time, est[:, i] - 2 * sig[:, i], est[:, i] + 2 * sig[:, i], color="tab:blue", alpha=0.2, label="±2σ")
+        ax.plot(result.time, est[:, i], color="tab:blue", lw=1, label="estimate")
+        if truth_state is not None:
+            ax.axhline(to_display(truth_state)[i], color="k", ls="--", lw=1, label="truth")
+        name = STATE_NAMES[i]
+        flag = status.get(name, "")
+        ax.set_title(f"{STATE_LABELS[i]} ({display_unit(i)})" + ("" if flag == "identifiable" else f"\n[{flag}]"),
+                     fontsize=9, color="k" if flag == "identifiable" else "tab:red")
+        ax.grid(alpha=0.3)
+        lo = np.percentile(est[:, i] - 2 * sig[:, i], 5)
+        hi = np.percentile(est[:, i] + 2 * sig[:, i], 95)
+        if truth_state is not None:
+            t = to_display(truth_state)[i]
+            lo, hi = min(lo, t), max(hi, t)
+        pad = 0.1 * (hi - lo + 1e-12)
+        ax.set_ylim(lo - pad, hi + pad)
+    axes[0, 0].legend(fontsize=7, loc="upper right")
+    for ax in axes[-1]:
+        ax.set_xlabel("time (s)")
+    fig.suptitle("Registration error estimates, ship A (left) and B (right)\nred titles: not identifiable or weak in this scenario")
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+    return path
