@@ -170,7 +170,7 @@ def _plot(ev: FusionEvaluation, out: Path, max_points: int) -> list[Path]:
     km = 1e-3
     m = min(max_points, ev.trials)
     pts = {k: v[:m] for k, v in ev.points.items()}
-    proj = " (x-y projection)" if sc.dim == 3 else ""
+    proj = " (x-y projection; GDOPs over x, y, z)" if sc.dim == 3 else ""
     paths = []
 
     # Fig. 3 / 5 analogue: geometry and the radar and pseudo-measurement point sets
@@ -186,7 +186,8 @@ def _plot(ev: FusionEvaluation, out: Path, max_points: int) -> list[Path]:
     ax0.annotate("B " + "+".join(sc.components), (b[0] * km, b[1] * km), textcoords="offset points", xytext=(6, -14))
     ax0.annotate("target C", (p_true[0] * km, p_true[1] * km), textcoords="offset points", xytext=(6, 6))
     ax0.set_aspect("equal", adjustable="datalim")
-    ax0.set_xlabel("x (km), from A towards B")
+    ax0.set_xlabel("x (km), from A towards B" if not np.any(b[1:] - a[1:]) else "x (km)")
+    ax0.margins(0.12)
     ax0.set_ylabel("y (km)")
     ax0.set_title(f"(a) geometry{proj}")
     ax0.grid(alpha=0.3)
