@@ -19,6 +19,7 @@ from __future__ import annotations
 import ctypes
 import hashlib
 import json
+import math
 import os
 import platform
 import shutil
@@ -246,7 +247,7 @@ class GeneratedFunction:
             a = np.ascontiguousarray(a)
             keep.append(a)
             in_ptr[j] = a.ctypes.data
-            in_stride[j] = int(np.prod(core)) if batched else 0
+            in_stride[j] = math.prod(core) if batched else 0
         outs = []
         out_ptr = (ctypes.c_void_p * len(self.output_shapes))()
         out_stride = (ctypes.c_longlong * len(self.output_shapes))()
@@ -325,7 +326,7 @@ class GeneratedFunction:
                 a = np.swapaxes(a, -1, -2)
             a = np.ascontiguousarray(a)
             keep.append(a)
-            size = int(np.prod(core)) if core else 1
+            size = math.prod(core)
             in_ptr[j] = a.ctypes.data
             in_stride[j] = size if batched else 0
             in_size[j] = size

@@ -51,8 +51,9 @@ def _attitude(heading, pitch, roll):
 
 
 def _ordered(values: dict, names: list[str]):
-    broadcast_1d(**values)
-    return [values[n] for n in names]
+    n = broadcast_1d(**values)
+    # a length-1 array broadcasts like a scalar
+    return [values[k].reshape(()) if values[k].shape == (1,) and n != 1 else values[k] for k in names]
 
 
 def geodetic2ecef(lat, lon, alt) -> np.ndarray:

@@ -36,6 +36,8 @@ def _degree_hint(arr: np.ndarray, limit: float) -> str:
 
 def check_range(name: str, arr: np.ndarray, low: float, high: float, unit: str, *, angle: bool = False) -> None:
     """Raise if any value lies outside [low, high]; hint when radians were expected and degrees came."""
+    if arr.size and np.min(arr) >= low and np.max(arr) <= high:  # fast path (NaN/inf fail it)
+        return
     check_finite(name, arr, unit)
     bad = (arr < low) | (arr > high)
     if bad.any():
@@ -46,6 +48,8 @@ def check_range(name: str, arr: np.ndarray, low: float, high: float, unit: str, 
 
 
 def check_positive(name: str, arr: np.ndarray, unit: str) -> None:
+    if arr.size and np.min(arr) > 0 and np.isfinite(np.max(arr)):  # fast path
+        return
     check_finite(name, arr, unit)
     bad = arr <= 0
     if bad.any():

@@ -44,3 +44,9 @@ def test_unknown_variant_is_refused():
 def test_non_numeric_input_is_refused():
     with pytest.raises(ValueError, match="lat: expected numbers"):
         frames.geodetic2ecef("north", 0.0, 0.0)
+
+
+def test_length_one_array_broadcasts_like_a_scalar():
+    out = frames.geodetic2ecef(np.array([0.1]), np.array([0.1, 0.2]), 0.0)
+    assert out.shape == (2, 3)
+    assert np.allclose(out[0], frames.geodetic2ecef(0.1, 0.1, 0.0)[0])
