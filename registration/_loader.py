@@ -104,7 +104,7 @@ def _compiler() -> str | None:
 
 @lru_cache(maxsize=1)
 def _c_library():
-    """Compile (once per source hash) and load the shared library; None when impossible."""
+    """Compile (once per source hash, sources in parallel) and load the shared library; raise ArtifactError if impossible."""
     cc = _compiler()
     if cc is None:
         raise ArtifactError("no C compiler found (set CC)")
@@ -126,10 +126,24 @@ def _c_library():
             for fname, data in sources:
                 (tmp / fname).write_bytes(data)
                 paths.append(str(tmp / fname))
+            # compile each source in parallel (the Kalman steps are large), then link once
+            objects = [str(tmp / f"{i}.o") for i in range(len(paths))]
+
+            def compile_one(src_obj):
+                src, obj = src_obj
+                return subprocess.run([cc, "-O2", "-fPIC", "-c", src, "-o", obj], capture_output=True, text=True)
+
+            from concurrent.futures import ThreadPoolExecutor
+
+            with ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+                results = list(pool.map(compile_one, zip(paths, objects)))
+            failed = [r for r in results if r.returncode != 0]
+            if failed:
+                raise ArtifactError(f"C compilation failed: {failed[0].stderr.strip()[:2000]}")
             out = tmp / "lib.so"
-            proc = subprocess.run([cc, *_CFLAGS, "-o", str(out), *paths, "-lm"], capture_output=True, text=True)
+            proc = subprocess.run([cc, "-shared", "-o", str(out), *objects, "-lm"], capture_output=True, text=True)
             if proc.returncode != 0:
-                raise ArtifactError(f"C compilation failed: {proc.stderr.strip()[:2000]}")
+                raise ArtifactError(f"C link failed: {proc.stderr.strip()[:2000]}")
             os.replace(out, lib_path)  # atomic publish: concurrent builders never see half a file
     lib = ctypes.CDLL(str(lib_path))
     lib.registration_batch.restype = ctypes.c_int
