@@ -594,37 +594,44 @@ def _fuse_optimal_block(z_all, s_all, idx, site_a, site_b, max_iterations: int, 
     scale = np.maximum(z[0], 1.0)
     iterations = np.zeros(n, dtype=np.int64)
     converged = np.zeros(n, dtype=bool)
+
+    def evaluate(points, rows):
+        """Residuals (m, n'), Jacobians (m, d, n') and costs (n') at points (d, n') for block rows."""
+        for name, site in (("site_second_loc", site_b), ("site_radar_loc", site_a)):
+            near = np.sqrt(np.sum((points - site[:, None]) ** 2, axis=0)) <= _SITE_TOL * scale[rows]
+            if near.any():
+                i = offset + int(rows[np.argmax(near)])
+                raise ValueError(f"{name}: the Gauss-Newton iterate for row {i} reached the sensor's site; degenerate geometry")
+        h, H = _model(points, site_a, site_b, idx)
+        r = _residual(z[:, rows], h, angle_rows)
+        return r, H, np.sum(r * r * inv_var[:, rows], axis=0)
+
     active = np.arange(n)
+    r, H, cost = evaluate(p, active)  # at the current iterate, for the active rows
     for _ in range(max_iterations):
         if active.size == 0:
             break
-        pa = p[:, active]
-        for name, site in (("site_second_loc", site_b), ("site_radar_loc", site_a)):
-            near = np.linalg.norm(pa - site[:, None], axis=0) <= _SITE_TOL * scale[active]
-            if near.any():
-                i = offset + int(active[np.argmax(near)])
-                raise ValueError(f"{name}: the Gauss-Newton estimate for row {i} reached the sensor's site; degenerate geometry")
-        za, iv = z[:, active], inv_var[:, active]
-        h, H = _model(pa, site_a, site_b, idx)
-        r = _residual(za, h, angle_rows)
-        cost = np.sum(r * r * iv, axis=0)
-        HtW = _t(H) * iv[None, :, :]  # (d, m, N)
+        iv = inv_var[:, active]
+        HtW = _t(H) * iv[None, :, :]  # (d, m, n')
         step = _mv(_inv(_mm(HtW, H)), _mv(HtW, r))
-        # backtracking: halve the step where the cost went up
-        pending = np.arange(active.size)
+        p_new = p[:, active] + step
+        r_new, H_new, cost_new = evaluate(p_new, active)
+        # backtracking: halve the step where the cost went up (the evaluation is reused next iteration)
         for _halve in range(20):
-            h_t, _ = _model(pa[:, pending] + step[:, pending], site_a, site_b, idx)
-            r_t = _residual(za[:, pending], h_t, angle_rows)
-            worse = np.sum(r_t * r_t * iv[:, pending], axis=0) > cost[pending] * (1 + 1e-12) + 1e-300
-            if not worse.any():
+            big = np.sum(step * step, axis=0) >= tol_m * tol_m  # below tol_m rounding decides, not the model
+            worse = np.flatnonzero((cost_new > cost * (1 + 1e-9) + 1e-300) & big)
+            if worse.size == 0:
                 break
-            step[:, pending[worse]] *= 0.5
-            pending = pending[worse]
-        p[:, active] = pa + step
+            step[:, worse] *= 0.5
+            p_new[:, worse] = p[:, active[worse]] + step[:, worse]
+            r_w, H_w, c_w = evaluate(p_new[:, worse], active[worse])
+            r_new[:, worse], H_new[:, :, worse], cost_new[worse] = r_w, H_w, c_w
+        p[:, active] = p_new
         iterations[active] += 1
-        done = np.sqrt(np.sum(step * step, axis=0)) < tol_m
-        converged[active[done]] = True
-        active = active[~done]
+        keep = np.sqrt(np.sum(step * step, axis=0)) >= tol_m
+        converged[active[~keep]] = True
+        active = active[keep]
+        r, H, cost = r_new[:, keep], H_new[:, :, keep], cost_new[keep]
 
     _, H = _model(p, site_a, site_b, idx)
     P = _inv(_information(H, inv_var))
