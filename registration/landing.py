@@ -482,6 +482,8 @@ def process(
     """
     t_r = as_float_array("t_radar", t_radar)
     t_c = as_float_array("t_camera", t_camera)
+    if t_r.ndim != 1 or t_r.size < 2 or t_c.ndim != 1 or t_c.size < 2:
+        raise ValueError("t_radar, t_camera: expected 1-D arrays of at least 2 timestamps (s)")
     pol = _runs_first("polar_rdr", polar_rdr, 3, t_r.size)
     ang = _runs_first("angles_cam", angles_cam, 2, t_c.size)
     if pol.shape[0] != ang.shape[0]:
@@ -493,22 +495,26 @@ def process(
         raise ValueError(f"sigma_rdr: expected 3 values [m, rad, rad], sigma_cam 2 values [rad, rad]; got {s_r.shape}, {s_c.shape}")
     check_positive("sigma_rdr", s_r, "[m, rad, rad]")
     check_positive("sigma_cam", s_c, "[rad, rad]")
-    if t_r.ndim != 1 or t_r.size < 2 or t_c.ndim != 1 or t_c.size < 2:
-        raise ValueError("t_radar, t_camera: expected 1-D arrays of at least 2 timestamps (s)")
     tau = fusion_instants(t_r, t_c, config) if t_fusion is None else as_float_array("t_fusion", t_fusion)
 
     common = dict(
         degree=config.degree, half_window_s=config.half_window_s, max_extrapolation_s=config.max_extrapolation_s, strict=False
     )
     # all runs as extra columns: one fit per window serves every run
-    ra = align(
-        t_r, pol.transpose(1, 0, 2).reshape(t_r.size, runs * 3), tau,
-        clock_offset_s=config.radar_clock_offset_s, angle_columns=list(range(1, runs * 3, 3)), **common,
-    )
-    ca = align(
-        t_c, ang.transpose(1, 0, 2).reshape(t_c.size, runs * 2), tau,
-        clock_offset_s=config.camera_clock_offset_s, angle_columns=list(range(0, runs * 2, 2)), **common,
-    )
+    try:
+        ra = align(
+            t_r, pol.transpose(1, 0, 2).reshape(t_r.size, runs * 3), tau,
+            clock_offset_s=config.radar_clock_offset_s, angle_columns=list(range(1, runs * 3, 3)), **common,
+        )
+    except ValueError as exc:
+        raise ValueError(f"radar track (t = t_radar, y = polar_rdr as columns [r, a, b] per run): {exc}") from exc
+    try:
+        ca = align(
+            t_c, ang.transpose(1, 0, 2).reshape(t_c.size, runs * 2), tau,
+            clock_offset_s=config.camera_clock_offset_s, angle_columns=list(range(0, runs * 2, 2)), **common,
+        )
+    except ValueError as exc:
+        raise ValueError(f"camera track (t = t_camera, y = angles_cam as columns [a, b] per run): {exc}") from exc
     ok = ra.valid & ca.valid
     if not ok.any():
         raise ValueError("no fusion instant can be evaluated by both sensors; check the timestamps and window")

@@ -144,3 +144,21 @@ def test_cli_rejects_bad_options(tmp_path, capsys):
     assert "must divide --bin-m" in capsys.readouterr().err
     assert cli.main(["landing", "--out", str(tmp_path), "--roll-deg", "60"]) == 2
     assert "roll_amplitude_rad" in capsys.readouterr().err
+
+
+def test_process_refuses_bad_tracks_with_the_alignment_messages():
+    from registration.landing import process
+
+    sc = default_scenario()
+    sim = simulate(sc, runs=1, rng=1)
+    args = dict(sigma_rdr=sc.radar.sigma, sigma_cam=sc.camera.sigma, attitude_fn=sc.attitude, geometry=sc.geometry)
+    t_bad = sim.t_radar.copy()
+    t_bad[10] = t_bad[9]
+    with pytest.raises(ValueError, match="radar track .*t: duplicate timestamp"):
+        process(t_bad, sim.polar_rdr, t_camera=sim.t_camera, angles_cam=sim.angles_cam, **args)
+    ang = sim.angles_cam.copy()
+    ang[0, 5, 1] = np.nan
+    with pytest.raises(ValueError, match="camera track .*y: non-finite sample nan at index 5"):
+        process(sim.t_radar, sim.polar_rdr, t_camera=sim.t_camera, angles_cam=ang, **args)
+    with pytest.raises(ValueError, match=r"polar_rdr: expected shape \(\d+, 3\) or \(R, \d+, 3\)"):
+        process(sim.t_radar, sim.polar_rdr[:, :-1], t_camera=sim.t_camera, angles_cam=sim.angles_cam, **args)
