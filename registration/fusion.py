@@ -161,6 +161,8 @@ def _site(name: str, value, dim: int) -> np.ndarray:
 def _common_n(**arrays: np.ndarray) -> int:
     n, first = 1, None
     for key, a in arrays.items():
+        if a.shape[0] == 0:
+            raise ValueError(f"{key}: has no rows; expected at least one measurement pair")
         if a.shape[0] != 1:
             if first is None:
                 n, first = a.shape[0], key

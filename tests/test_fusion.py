@@ -351,6 +351,7 @@ def test_bearing_across_the_pi_cut_is_fused_on_the_wrapped_difference():
         (dict(site_second_loc=[80e3, 0.0, 0.0]), r"site_second_loc: expected a position of shape \(2,\)"),
         (dict(site_second_loc=[100e3 * np.cos(0.26), 100e3 * np.sin(0.26)]), "at the sensor's site"),
         (dict(z_radar=[100e3, np.nan]), "non-finite"),
+        (dict(z_radar=np.zeros((0, 2))), "has no rows"),
     ],
 )
 def test_bad_input_raises_clear_value_error(kwargs, match):
