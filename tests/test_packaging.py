@@ -1,0 +1,27 @@
+"""The wheel must contain every runtime package and the generated artifacts."""
+
+import tomllib
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parent.parent
+
+
+def test_every_runtime_package_is_listed_in_pyproject():
+    cfg = tomllib.loads((REPO / "pyproject.toml").read_text())["tool"]["setuptools"]
+    listed = set(cfg["packages"])
+    found = {
+        ".".join(p.parent.relative_to(REPO).parts)
+        for p in (REPO / "registration").rglob("__init__.py")
+        if "__pycache__" not in p.parts
+    }
+    assert found <= listed, f"packages missing from pyproject.toml: {sorted(found - listed)}"
+    assert cfg["package-dir"]["registration._generated"] == "generated"
+    data = cfg["package-data"]["registration._generated"]
+    assert {"*.c", "*.casadi", "manifest.json"} <= set(data)
+    assert "_batch.c" in cfg["package-data"]["registration"]
+
+
+def test_casadi_and_sympy_are_pinned_exactly():
+    deps = tomllib.loads((REPO / "pyproject.toml").read_text())["project"]["dependencies"]
+    pins = {d.split("==")[0]: d for d in deps if "==" in d}
+    assert "casadi" in pins and "sympy" in pins
