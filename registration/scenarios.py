@@ -74,8 +74,8 @@ def _dead_reckon(lat0, lon0, alt, course, speed, dt, substeps=10):
     h = dt / substeps
     for i in range(k):
         lat[i], lon[i] = la, lo
+        M, N = radii(la)[0][0]  # constant to ~1e-7 over one step (< 200 m of latitude)
         for _ in range(substeps):
-            M, N = radii(la)[0][0]
             la += speed[i] * np.cos(course[i]) * h / (M + alt[i])
             lo += speed[i] * np.sin(course[i]) * h / ((N + alt[i]) * np.cos(la))
     return lat, lon
