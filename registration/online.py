@@ -104,33 +104,54 @@ def _row_error(row: int, column: str, value, expected: str) -> ValueError:
     return ValueError(f"row {row}, column {column!r}: value {value!r} {expected}")
 
 
+#: Problem codes of :func:`cell_problems`, in the order of precedence within one cell.
+PROBLEM_OK, PROBLEM_NON_FINITE, PROBLEM_OUT_OF_RANGE, PROBLEM_NON_POSITIVE = 0, 1, 2, 3
+#: Contract names of the 18 row columns (``time`` excluded), in ``row`` order.
+ROW_COLUMNS = tuple(f"{p}_{c}" for p in ("a", "b") for c in SENSOR_COLUMNS)
+
+
+def cell_problems(block: np.ndarray) -> np.ndarray:
+    """Problem code of every cell of a (K, 18) block in contract order (SI units, radians).
+
+    0: fine; 1: not finite; 2: outside the column's limits (:data:`_LIMITS`: latitude and angles,
+    altitude); 3: a range that is not > 0. A non-finite cell is reported as non-finite only.
+    Shared by :func:`validate_data`, :meth:`OnlineRegistrar.update` and the file reader
+    (:mod:`registration.rowcheck`), so every entry point applies the same rules.
+    """
+    block = np.asarray(block, dtype=np.float64)
+    codes = np.zeros(block.shape, dtype=np.int8)
+    finite = np.isfinite(block)
+    with np.errstate(invalid="ignore"):
+        for j in range(block.shape[1]):
+            col = SENSOR_COLUMNS[j % 9]
+            v = block[:, j]
+            if col == "range":
+                codes[:, j] = np.where(v <= 0, PROBLEM_NON_POSITIVE, PROBLEM_OK)
+            else:
+                lo, hi, _ = _LIMITS[col]
+                codes[:, j] = np.where((v < lo) | (v > hi), PROBLEM_OUT_OF_RANGE, PROBLEM_OK)
+    codes[~finite] = PROBLEM_NON_FINITE
+    return codes
+
+
 def _check_block(block: np.ndarray, first_row: int = 0) -> None:
     """Check a (K, 18) block of rows in contract order; raise naming the first bad row/column."""
-    names = [f"{p}_{c}" for p in ("a", "b") for c in SENSOR_COLUMNS]
-    bad_finite = ~np.isfinite(block)
-    problems = []
-    if bad_finite.any():
-        r, c = np.argwhere(bad_finite)[0]
-        problems.append((r, c, "is not finite; expected a number"))
-    for j, name in enumerate(names):
-        col = SENSOR_COLUMNS[j % 9]
-        v = block[:, j]
+    codes = cell_problems(block)
+    if not codes.any():
+        return
+    r, c = (int(v) for v in np.argwhere(codes)[0])  # first bad cell in row-major order
+    code = codes[r, c]
+    if code == PROBLEM_NON_FINITE:
+        msg = "is not finite; expected a number"
+    elif code == PROBLEM_NON_POSITIVE:
+        msg = "must be > 0 m (slant range)"
+    else:
+        lo, hi, unit = _LIMITS[SENSOR_COLUMNS[c % 9]]
+        msg = f"is outside [{lo:g}, {hi:g}] {unit}"
         with np.errstate(invalid="ignore"):
-            if col == "range":
-                bad = v <= 0
-                msg = "must be > 0 m (slant range)"
-            else:
-                lo, hi, unit = _LIMITS[col]
-                bad = (v < lo) | (v > hi)
-                msg = f"is outside [{lo:g}, {hi:g}] {unit}"
-                if unit.startswith("rad") and bad.any() and np.nanmax(np.abs(v)) <= 360:
-                    msg += " (looks like degrees: convert with numpy.radians)"
-        if bad.any():
-            r = int(np.argmax(bad))
-            problems.append((r, j, msg))
-    if problems:
-        r, c, msg = min(problems)
-        raise _row_error(first_row + int(r), names[c], float(block[r, c]), msg)
+            if unit.startswith("rad") and np.nanmax(np.abs(block[:, c])) <= 360:
+                msg += " (looks like degrees: convert with numpy.radians)"
+    raise _row_error(first_row + r, ROW_COLUMNS[c], float(block[r, c]), msg)
 
 
 def validate_data(data: Mapping) -> tuple[np.ndarray, np.ndarray]:
@@ -278,6 +299,105 @@ class OnlineRegistrar:
         self.n_updates += 1
         self.last_time = time if time is not None else self.last_time
         return {"x": self.x, "P": self.P, "nu": nu[0], "S": S[0], "nis": float(nis[0])}
+
+    def update_block(self, rows: np.ndarray, times: np.ndarray | None = None, *, partial: bool = False) -> dict:
+        """Process a (K, 18) block of rows in contract order; the same arithmetic as K calls of :meth:`update`.
+
+        With fixed Q the block runs as one compiled loop (the scan of :func:`register`), carrying
+        x, P and the information from the state the filter is in, so a run split into blocks is
+        bit-for-bit the run in one piece. The block is validated before the state is touched.
+        Returns ``x (K, 12)``, ``P (K, 12, 12)``, ``nu``, ``S``, ``nis`` and ``n``, the rows taken.
+
+        A step whose result is not finite is never committed. With ``partial=False`` it raises
+        RuntimeError and the state is left as it was before the block; with ``partial=True`` the
+        rows before it are committed and returned (``n`` < K), so the caller can set that row aside.
+        """
+        rows = np.ascontiguousarray(rows, dtype=np.float64)
+        if rows.ndim != 2 or rows.shape[1] != 18:
+            raise ValueError(f"rows: expected shape (K, 18) in contract order, got {rows.shape}")
+        k = rows.shape[0]
+        _check_block(rows, first_row=self.n_updates)
+        if times is not None:
+            times = np.asarray(times, dtype=np.float64)
+            if times.shape != (k,):
+                raise ValueError(f"times: expected shape ({k},), got {times.shape}")
+            if not np.isfinite(times).all():
+                r = int(np.argmax(~np.isfinite(times)))
+                raise _row_error(self.n_updates + r, "time", float(times[r]), "is not finite; expected seconds")
+            prev = np.concatenate([[-np.inf if self.last_time is None else self.last_time], times[:-1]])
+            if (times <= prev).any():
+                r = int(np.argmax(times <= prev))
+                raise _row_error(self.n_updates + r, "time", float(times[r]), f"does not increase (previous: {prev[r]}); timestamps must be strictly increasing")
+        if k == 0:
+            return {"x": np.empty((0, N_STATE)), "P": np.empty((0, N_STATE, N_STATE)), "nu": np.empty((0, 3)),
+                    "S": np.empty((0, 3, 3)), "nis": np.empty(0), "n": 0}
+        if self.config.q_mode == "fixed":
+            out = self._step.scan(
+                k, _CARRY,
+                {"x": self.x, "P": self.P, "info": self.info, "Q": self._q_fixed, "row": rows, "sigma0": self._sigma0},
+            )
+            x, P, info = out["x_new"], out["P_new"], out["info_new"]
+            nu, S, nis = out["nu"], out["S"], out["nis"]
+            ok = np.isfinite(x).all(axis=1) & np.isfinite(P).all(axis=(1, 2)) & np.isfinite(info).all(axis=(1, 2))
+            n = k if ok.all() else int(np.argmax(~ok))
+            if n < k and not partial:
+                raise RuntimeError(f"row {self.n_updates + n}: the filter step produced non-finite values; state left unchanged")
+            if n:
+                self.x, self.P, self.info = x[n - 1].copy(), P[n - 1].copy(), info[n - 1].copy()
+                for i in range(max(0, n - self._window.maxlen), n):
+                    self._window.append(x[i].copy())
+                self.n_updates += n
+                if times is not None:
+                    self.last_time = float(times[n - 1])
+            return {"x": x[:n], "P": P[:n], "nu": nu[:n], "S": S[:n], "nis": nis[:n], "n": n}
+        saved = self.state_dict()
+        xs, Ps = np.empty((k, N_STATE)), np.empty((k, N_STATE, N_STATE))
+        nus, Ss, niss = np.empty((k, 3)), np.empty((k, 3, 3)), np.empty(k)
+        n = k
+        for i in range(k):
+            try:
+                r = self.update(rows[i], time=None if times is None else float(times[i]))
+            except RuntimeError:
+                if not partial:
+                    self.load_state_dict(saved)
+                    raise
+                n = i
+                break
+            xs[i], Ps[i], nus[i], Ss[i], niss[i] = r["x"], r["P"], r["nu"], r["S"], r["nis"]
+        return {"x": xs[:n], "P": Ps[:n], "nu": nus[:n], "S": Ss[:n], "nis": niss[:n], "n": n}
+
+    def state_dict(self) -> dict:
+        """Everything that determines the next steps (plain numpy arrays and numbers; copies)."""
+        return {
+            "x": self.x.copy(), "P": self.P.copy(), "info": self.info.copy(),
+            "window": np.array(self._window).reshape(-1, N_STATE),
+            "n_updates": int(self.n_updates), "last_time": self.last_time,
+        }
+
+    def load_state_dict(self, state: dict) -> None:
+        """Restore a :meth:`state_dict` (shapes are checked; values must be finite)."""
+        x = np.array(state["x"], dtype=np.float64)
+        P = np.array(state["P"], dtype=np.float64)
+        info = np.array(state["info"], dtype=np.float64)
+        window = np.array(state["window"], dtype=np.float64).reshape(-1, N_STATE)
+        if x.shape != (N_STATE,) or P.shape != (N_STATE, N_STATE) or info.shape != (N_STATE, N_STATE):
+            raise ValueError("state: x must be (12,), P and info (12, 12)")
+        if len(window) > self._window.maxlen:
+            raise ValueError(f"state: window holds {len(window)} estimates, more than q_window = {self._window.maxlen}")
+        if not (np.isfinite(x).all() and np.isfinite(P).all() and np.isfinite(info).all() and np.isfinite(window).all()):
+            raise ValueError("state: non-finite values")
+        self.x, self.P, self.info = x, P, info
+        self._window.clear()
+        self._window.extend(w.copy() for w in window)
+        self.n_updates = int(state["n_updates"])
+        last = state.get("last_time")
+        self.last_time = None if last is None else float(last)
+
+    @classmethod
+    def from_state_dict(cls, state: dict, config: RegistrationConfig | None = None) -> "OnlineRegistrar":
+        reg = cls(config)
+        reg.load_state_dict(state)
+        return reg
 
     def observability(self) -> ObservabilityReport:
         """From the information accumulated at the filter's own linearisation points (streaming)."""
