@@ -246,10 +246,10 @@ def iter_frames(path, columns, chunk_rows: int, start_row: int = 0) -> Iterator[
     wanted = [c for c in columns if c in present]
     try:
         if fmt == "csv":
-            header = [str(c) for c in pd.read_csv(path, nrows=0).columns]
-            usecols = [h for h in header if h.strip() in wanted]
-            source = pd.read_csv(path, usecols=usecols if usecols else None, chunksize=chunk_rows,
-                                 index_col=False, skipinitialspace=True)
+            # every column is parsed (no usecols): with usecols pandas silently drops the extra fields
+            # of a malformed line instead of reporting it
+            source = (f[[c for c in f.columns if str(c).strip() in wanted]]
+                      for f in pd.read_csv(path, chunksize=chunk_rows, index_col=False, skipinitialspace=True))
             base = 0
         else:
             import pyarrow.parquet as pq

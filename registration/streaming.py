@@ -354,7 +354,7 @@ def _run_filter(path: Path, total_rows, form, fingerprint, ckpt, options: RunOpt
         st = {
             "phase": "filter", "rows_done": 0, "last_time": None, "rows_total": 0, "accepted": 0,
             "rejected": {}, "filter_rejected": [], "nis_sum": 0.0, "first_time": None, "time": None,
-            "obs_rows_done": 0, "obs_last_time": None, "obs_info": np.zeros((N_STATE, N_STATE)), "obs_used": 0,
+            "obs_rows_done": 0, "obs_last_time": None, "obs_info": np.zeros((N_STATE, N_STATE)), "obs_used": 0, "first_rejection": None,
         }
         raw_stats, cor_stats = _Stats(), _Stats()
     else:
@@ -416,6 +416,8 @@ def _run_filter(path: Path, total_rows, form, fingerprint, ckpt, options: RunOpt
                     rejected.append_rows(_rejected_rows(path, sorted(rej, key=lambda r: r.row)))
                     for r in rej:
                         st["rejected"][r.code] = st["rejected"].get(r.code, 0) + 1
+                    if rej and st.get("first_rejection") is None:
+                        st["first_rejection"] = f"row {rej[0].row}, column {rej[0].column!r}: {rej[0].reason}"
                     st["rows_total"] += blk.n_rows
                     st["accepted"] += blk.n_rows - len(rej)
                     st["rows_done"] = first + blk.n_rows
@@ -426,7 +428,9 @@ def _run_filter(path: Path, total_rows, form, fingerprint, ckpt, options: RunOpt
             finally:
                 bar.close()
             if st["accepted"] == 0:
-                raise ValueError(f"{path}: no valid rows to register ({st['rows_total']} rows read, all rejected; see {out / 'rejected.csv'})")
+                raise ValueError(
+                    f"{path}: no valid rows to register: all {st['rows_total']} rows rejected {st['rejected']}, the first "
+                    f"at {st.get('first_rejection')}; see {out / 'rejected.csv'}")
             st["phase"] = "observability" if options.observability == "final" else "summary"
             last_saved = 0
             save()
