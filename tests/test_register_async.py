@@ -1,0 +1,144 @@
+"""`registration register` on two asynchronous plot files (+ navigation): pairing and accounting."""
+
+from __future__ import annotations
+
+import json
+from functools import lru_cache
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from registration.cli import main
+from registration.io import to_file_frame
+from registration.scenarios import ShipMotion, paper_scenario
+from registration.state import STATE_NAMES
+
+FAST = ["--no-plots", "--no-progress"]
+NAV = ("lat_deg", "lon_deg", "alt_m", "heading_deg", "pitch_deg", "roll_deg")
+DT = 0.05  # simulation grid: 1 Hz, 0.8 Hz and 10 Hz all fall on it
+
+
+@lru_cache(maxsize=2)
+def fine(seed: int = 4, seconds: float = 300.0):
+    """The paper scenario simulated at 20 Hz with rolling ships, in file units."""
+    sc = paper_scenario(n_steps=int(seconds / DT), dt=DT, seed=seed, ship_motion=ShipMotion())
+    return sc, to_file_frame(sc.data)
+
+
+def write_async(tmp_path, *, offset_b=0.3, nav_in_plots=False, drop_b=None, seed=4):
+    """Radar A at 1 Hz, radar B at 0.8 Hz on a clock 0.3 s ahead, navigation at 10 Hz."""
+    sc, f = fine(seed)
+    a = f.iloc[::20]
+    b = f.iloc[::25]
+    cols_a = ["time_s", "a_range_m", "a_bearing_deg", "a_elevation_deg"] + ([f"a_{c}" for c in NAV] if nav_in_plots else [])
+    cols_b = ["time_s", "b_range_m", "b_bearing_deg", "b_elevation_deg"] + ([f"b_{c}" for c in NAV] if nav_in_plots else [])
+    a = a[cols_a].rename(columns=lambda c: c[2:] if c.startswith("a_") else c)  # unprefixed: A by position
+    b = b[cols_b].copy()  # prefixed: says it is radar B's
+    b["time_s"] = b["time_s"] + offset_b
+    if drop_b is not None:
+        b = b[(b["time_s"] < drop_b[0]) | (b["time_s"] > drop_b[1])]
+    paths = [tmp_path / "radar_a.csv", tmp_path / "radar_b.parquet"]
+    a.to_csv(paths[0], index=False)
+    b.to_parquet(paths[1], index=False)
+    extra = []
+    if not nav_in_plots:
+        nav = f[["time_s"] + [f"{p}_{c}" for p in "ab" for c in NAV]].iloc[::2]
+        paths.append(tmp_path / "nav.csv")
+        nav.to_csv(paths[2], index=False)
+        extra = ["--nav", str(paths[2])]
+    return sc, paths, extra, (len(a), len(b))
+
+
+def _summary(out):
+    return json.loads((out / "summary.json").read_text())
+
+
+def _check_against_truth(summary, truth, k=3.5):
+    """Every state and identifiable combination within k sigma of the simulation's truth."""
+    est = {e["name"]: e for e in summary["estimates"]}
+    for i, name in enumerate(STATE_NAMES):
+        e = est[name]
+        assert abs(e["estimate"] - truth[i]) <= k * e["sigma"], (name, (e["estimate"] - truth[i]) / e["sigma"])
+
+
+def test_async_plots_with_clock_offset_and_10hz_navigation_are_consistent_with_the_truth(tmp_path):
+    sc, paths, nav, (n_a, n_b) = write_async(tmp_path)
+    out = tmp_path / "reg"
+    assert main(["register", str(paths[0]), str(paths[1]), *nav, "--clock-offset-b", "0.3", "--out", str(out), *FAST]) == 0
+    s = _summary(out)
+    p = s["pairing"]
+    # A's instants are whole seconds; B's plots (0, 1.25, 2.5, ... s on the reference clock) coincide every 5 s
+    assert p["instants"] == n_a and p["exact"] == 60 and p["paired"] == p["exact"] + p["interpolated"]
+    assert p["paired"] + p["unpaired"] == p["instants"]
+    assert p["unpaired"] == 1 and p["unpaired_reasons"] == {"plots of radar B: extrapolation beyond limit": 1}  # t = 299 s
+    unpaired = pd.read_csv(out / "unpaired.csv")
+    assert unpaired["time_s"].tolist() == [299.0] and "extrapolation" in unpaired["reason"][0]
+    files = p["files"]
+    assert files[str(paths[1])]["rows"] == n_b and files[str(paths[2])]["rows"] == 3000
+    assert all(f["accepted"] + f["rejected"] == f["rows"] for f in files.values())
+    assert s["rows"]["accepted"] == p["paired"]
+    _check_against_truth(s, sc.truth_state)
+    # the synchronous run on the same scenario at 1 Hz: the two agree within the asynchronous sigmas
+    sync = tmp_path / "sync.csv"
+    fine()[1].iloc[::20].to_csv(sync, index=False)
+    assert main(["register", str(sync), "--out", str(tmp_path / "sync"), *FAST]) == 0
+    ref = {e["name"]: e for e in _summary(tmp_path / "sync")["estimates"]}
+    for e in s["estimates"][:12]:
+        assert abs(e["estimate"] - ref[e["name"]]["estimate"]) <= 3 * e["sigma"], e["name"]
+
+
+def test_ignoring_the_clock_offset_changes_the_pairing(tmp_path):
+    """Without --clock-offset-b no plot of B coincides with an instant of A: the offset is honoured."""
+    _, paths, nav, _ = write_async(tmp_path)
+    assert main(["register", *map(str, paths[:2]), *nav, "--out", str(tmp_path / "reg"), "--observability", "filter", *FAST]) == 0
+    assert _summary(tmp_path / "reg")["pairing"]["exact"] == 0
+
+
+def test_navigation_inside_the_plot_files_and_a_gap(tmp_path):
+    sc, paths, nav, (n_a, _) = write_async(tmp_path, nav_in_plots=True, drop_b=(100.0, 130.0))
+    assert nav == []
+    out = tmp_path / "reg"
+    assert main(["register", *map(str, paths), "--clock-offset-b", "0.3", "--pair-at", "a", "--out", str(out), *FAST]) == 0
+    p = _summary(out)["pairing"]
+    gap = p["unpaired_reasons"].get("plots of radar B with navigation: gap", 0)
+    assert 25 <= gap <= 32  # the instants inside the 30 s hole in B's plots
+    rows = pd.read_csv(out / "unpaired.csv")
+    assert rows["reason"].str.contains("gap of").sum() == gap
+    assert p["paired"] + p["unpaired"] == n_a
+    _check_against_truth(_summary(out), sc.truth_state)
+
+
+@pytest.mark.parametrize("mode", ["stop", "skip"])
+def test_bad_rows_in_a_plot_file_are_named_or_set_aside(tmp_path, capsys, mode):
+    _, paths, nav, (_, n_b) = write_async(tmp_path)
+    b = pd.read_parquet(paths[1])
+    b.loc[7, "b_range_m"] = -5.0
+    b.loc[9, "time_s"] = b.loc[8, "time_s"]
+    b.to_parquet(paths[1], index=False)
+    nav_frame = pd.read_csv(paths[2])
+    nav_frame.loc[11, "a_lat_deg"] = 91.0
+    nav_frame.to_csv(paths[2], index=False)
+    out = tmp_path / "reg"
+    rc = main(["register", *map(str, paths[:2]), *nav, "--clock-offset-b", "0.3", "--on-bad-row", mode, "--out", str(out), *FAST])
+    if mode == "stop":
+        assert rc == 2
+        err = capsys.readouterr().err
+        assert "row" in err and ("radar_b.parquet: row 7, column 'b_range_m'" in err or "nav.csv: row 11, column 'a_lat_deg'" in err)
+        return
+    assert rc == 0
+    rej = pd.read_csv(out / "rejected.csv")
+    got = {(r.file.rsplit("/", 1)[-1], r.row, r.reason_code) for r in rej.itertuples()}
+    assert got == {("radar_b.parquet", 7, "non_positive_range"), ("radar_b.parquet", 9, "time_duplicate"),
+                   ("nav.csv", 11, "out_of_range")}
+    files = _summary(out)["pairing"]["files"]
+    assert files[str(paths[1])] == {"role": "plots of radar B", "rows": n_b, "accepted": n_b - 2, "rejected": 2}
+    assert files[str(paths[2])]["rejected"] == 1
+
+
+def test_ambiguous_or_missing_navigation_is_refused(tmp_path, capsys):
+    _, paths, nav, _ = write_async(tmp_path)
+    assert main(["register", *map(str, paths[:2]), "--out", str(tmp_path / "reg"), *FAST]) == 2
+    assert "no navigation for ship A" in capsys.readouterr().err
+    assert main(["register", *map(str, paths[:2]), *nav, *nav, "--out", str(tmp_path / "reg"), *FAST]) == 2
+    assert "given twice" in capsys.readouterr().err
