@@ -254,7 +254,9 @@ def iter_frames(path, columns, chunk_rows: int, start_row: int = 0) -> Iterator[
         else:
             import pyarrow.parquet as pq
 
-            pf = pq.ParquetFile(str(path))
+            # pre_buffer=False: with pyarrow's default read-ahead the process keeps growing with the
+            # file (measured: +60 MiB per million rows); without it memory stays flat
+            pf = pq.ParquetFile(str(path), pre_buffer=False)
             md = pf.metadata
             base, g = 0, 0
             while g < md.num_row_groups and base + md.row_group(g).num_rows <= start_row:

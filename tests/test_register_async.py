@@ -142,3 +142,18 @@ def test_ambiguous_or_missing_navigation_is_refused(tmp_path, capsys):
     assert "no navigation for ship A" in capsys.readouterr().err
     assert main(["register", *map(str, paths[:2]), *nav, *nav, "--out", str(tmp_path / "reg"), *FAST]) == 2
     assert "given twice" in capsys.readouterr().err
+
+
+def test_async_run_with_checkpoint_reuses_its_pairing_and_knows_it_is_done(tmp_path, capsys):
+    _, paths, nav, _ = write_async(tmp_path, seed=5)
+    out, ckpt = tmp_path / "reg", tmp_path / "run.ckpt"
+    args = ["register", *map(str, paths[:2]), *nav, "--clock-offset-b", "0.3", "--out", str(out), "--checkpoint", str(ckpt),
+            "--checkpoint-every", "50", "--observability", "filter", *FAST]
+    assert main(args) == 0
+    first = (out / "estimates.csv").read_bytes()
+    assert main(args) == 0
+    assert "already complete" in capsys.readouterr().err
+    ckpt.unlink()  # start over: the published pairing is reused, the results are the same
+    assert main(args) == 0
+    assert "reusing the pairing" in capsys.readouterr().err
+    assert (out / "estimates.csv").read_bytes() == first
