@@ -592,16 +592,63 @@ def _plots(sync_path: Path, out: Path, options: RunOptions, summary: dict) -> li
     nav_cols = ["a_lat_deg", "a_lon_deg", "b_lat_deg", "b_lon_deg"]
     total = summary["rows"]["read"]
     nav = _strided(sync_path, nav_cols, max(1, -(-total // _PLOT_POINTS)), file_format(sync_path))
-    data = {}
+    tracks = {}
     for c in nav_cols:
-        v = np.asarray(nav[c], dtype=float) if c in nav else np.empty(0)
-        data[c.replace("_deg", "")] = np.radians(v)
-    ok = np.ones(len(data["a_lat"]), dtype=bool)
-    for v in data.values():
-        ok &= np.isfinite(v) & (np.abs(v) <= np.pi * 2)
+        v = pd_numeric(nav[c]) if c in nav else np.empty(0)
+        tracks[c] = v
+    ok = np.ones(len(tracks["a_lat_deg"]), dtype=bool)
+    for c, v in tracks.items():
+        ok &= np.isfinite(v) & (np.abs(v) <= (90 if "lat" in c else 360))
+    targets = {s: _approx_lat_lon_deg(pos[[f"{s}_ecef_x_m", f"{s}_ecef_y_m", f"{s}_ecef_z_m"]].to_numpy()) for s in "ab"}
     if ok.sum() >= 2:
-        written.append(str(plot_tracks({k: v[ok] for k, v in data.items()}, None, out / "tracks.png")))
+        written.append(str(_plot_recorded_tracks({k: v[ok] for k, v in tracks.items()}, targets, out / "tracks.png")))
     return written
+
+
+def pd_numeric(col) -> np.ndarray:
+    import pandas as pd
+
+    return np.asarray(pd.to_numeric(col, errors="coerce"), dtype=float)
+
+
+def _approx_lat_lon_deg(p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """ECEF -> geodetic latitude/longitude (deg) by Bowring's formula: for the track plot only
+    (metre-level, the package has no generated inverse of geodetic2ecef)."""
+    a, f = 6378137.0, 1 / 298.257223563
+    b, e2 = a * (1 - f), f * (2 - f)
+    ep2 = (a * a - b * b) / (b * b)
+    x, y, z = p[:, 0], p[:, 1], p[:, 2]
+    rho = np.hypot(x, y)
+    th = np.arctan2(z * a, rho * b)
+    lat = np.arctan2(z + ep2 * b * np.sin(th) ** 3, rho - e2 * a * np.cos(th) ** 3)
+    return np.degrees(lat), np.degrees(np.arctan2(y, x))
+
+
+def _plot_recorded_tracks(tracks: dict, targets: dict, path: Path) -> Path:
+    """Ships' tracks and the target as each radar places it after registration (lon/lat, deg)."""
+    from .online_plots import _pyplot
+
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(7, 6))
+    for s, colour in (("a", "tab:blue"), ("b", "tab:orange")):
+        lon, lat = tracks[f"{s}_lon_deg"], tracks[f"{s}_lat_deg"]
+        ax.plot(lon, lat, color=colour, lw=3, label=f"ship {s.upper()}")
+        ax.plot(lon[0], lat[0], "o", color=colour)
+    for s, colour in (("a", "tab:red"), ("b", "tab:purple")):
+        lat, lon = targets[s]
+        good = np.isfinite(lat) & np.isfinite(lon)
+        if good.any():
+            ax.plot(lon[good], lat[good], ".", ms=2, color=colour, label=f"target, corrected plots of radar {s.upper()}")
+    ax.set_xlabel("longitude (deg E)")
+    ax.set_ylabel("latitude (deg N)")
+    ax.set_title("Ship tracks and the target (dots on tracks: start)")
+    ax.set_aspect(1 / max(np.cos(np.radians(np.nanmean(tracks["a_lat_deg"]))), 0.05))
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
 
 
 # --------------------------------------------------------------------------- validation only
