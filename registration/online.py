@@ -412,6 +412,27 @@ def information_matrix(H: np.ndarray, R: np.ndarray) -> np.ndarray:
     return 0.5 * (J + J.T)
 
 
+def information_skipping_bad_rows(H: np.ndarray, R: np.ndarray) -> tuple[np.ndarray, int]:
+    """sum H^T R^-1 H over the rows, leaving out rows whose R is not positive definite or whose term
+    is not finite (possible only for extreme accepted values); returns (J, rows used)."""
+    try:
+        J = information_matrix(H, R)
+        if np.isfinite(J).all() and np.abs(J).max() < 1e200:
+            return J, len(H)
+    except np.linalg.LinAlgError:
+        pass
+    J, used = np.zeros((N_STATE, N_STATE)), 0
+    for k in range(len(H)):
+        try:
+            Jk = information_matrix(H[k:k + 1], R[k:k + 1])
+        except np.linalg.LinAlgError:
+            continue
+        if np.isfinite(Jk).all() and np.abs(Jk).max() < 1e200 and np.isfinite(J + Jk).all():
+            J, used = J + Jk, used + 1
+    return J, used
+
+
+
 def _corrected_rows(rows: np.ndarray, estimates: np.ndarray) -> np.ndarray:
     corr = np.zeros_like(rows)
     corr[:, 3:9] = estimates[:, 0:6]
@@ -467,7 +488,7 @@ def register(data: Mapping, config: RegistrationConfig | None = None, *, progres
     raw = _pair_outputs(rows, config)
     corrected = _pair_outputs(_corrected_rows(rows, estimates), config)
     at_final = _pair_outputs(_corrected_rows(rows, np.broadcast_to(estimates[-1], estimates.shape)), config)
-    info_final = information_matrix(at_final["H"], at_final["R"])
+    info_final, _ = information_skipping_bad_rows(at_final["H"], at_final["R"])
     report = observability_report(info_final, np.array(config.prior_sigma), STATE_NAMES, STATE_LABELS, STATE_UNITS)
     return RegistrationResult(
         config=config, time=time, estimates=estimates, covariances=covs, innovations=nu,

@@ -44,7 +44,7 @@ from . import _loader
 from .checkpoint import CheckpointError, load_checkpoint, save_checkpoint
 from .io import SYNC_COLUMNS, CsvAppender, FileFormatError, PartsWriter, file_format, iter_frames, read_columns
 from .observability import observability_report
-from .online import OnlineRegistrar, RegistrationConfig, RegistrationResult, _corrected_rows, _pair_outputs, information_matrix
+from .online import OnlineRegistrar, RegistrationConfig, RegistrationResult, _corrected_rows, _pair_outputs, information_skipping_bad_rows
 from .rowcheck import BadRowError, Rejection, check_frame, sync_layout
 from .state import IS_ANGLE, N_STATE, STATE_LABELS, STATE_NAMES, STATE_UNITS
 
@@ -449,7 +449,7 @@ def _run_filter(path: Path, total_rows, form, fingerprint, ckpt, options: RunOpt
                     if len(acc):
                         rows18 = blk.values[acc, 1:]
                         pair = _pair_outputs(_corrected_rows(rows18, np.broadcast_to(x_final, (len(acc), N_STATE))), cfg)
-                        J, used = _information(pair["H"], pair["R"])
+                        J, used = information_skipping_bad_rows(pair["H"], pair["R"])
                         st["obs_info"] = st["obs_info"] + J
                         st["obs_used"] += used
                     st["obs_rows_done"] = first + blk.n_rows
@@ -468,26 +468,6 @@ def _run_filter(path: Path, total_rows, form, fingerprint, ckpt, options: RunOpt
     info = st["obs_info"] if options.observability == "final" else reg.info
     report = observability_report(info, np.array(cfg.prior_sigma), STATE_NAMES, STATE_LABELS, STATE_UNITS)
     return _summary(path, reg, report, raw_stats, cor_stats, st, options, outs_spec)
-
-
-def _information(H: np.ndarray, R: np.ndarray) -> tuple[np.ndarray, int]:
-    """sum H^T R^-1 H over the rows, leaving out rows whose R is not positive definite or whose term
-    is not finite (possible only for extreme accepted values); returns (J, rows used)."""
-    try:
-        J = information_matrix(H, R)
-        if np.isfinite(J).all() and np.abs(J).max() < 1e200:
-            return J, len(H)
-    except np.linalg.LinAlgError:
-        pass
-    J, used = np.zeros((N_STATE, N_STATE)), 0
-    for k in range(len(H)):
-        try:
-            Jk = information_matrix(H[k:k + 1], R[k:k + 1])
-        except np.linalg.LinAlgError:
-            continue
-        if np.isfinite(Jk).all() and np.abs(Jk).max() < 1e200 and np.isfinite(J + Jk).all():
-            J, used = J + Jk, used + 1
-    return J, used
 
 
 def _emit(outputs, rows_abs, times, rows18, res, cfg, raw_stats, cor_stats, st) -> None:
