@@ -110,6 +110,11 @@ PROBLEM_OK, PROBLEM_NON_FINITE, PROBLEM_OUT_OF_RANGE, PROBLEM_NON_POSITIVE = 0, 
 ROW_COLUMNS = tuple(f"{p}_{c}" for p in ("a", "b") for c in SENSOR_COLUMNS)
 
 
+_COL_IS_RANGE = np.array([SENSOR_COLUMNS[j % 9] == "range" for j in range(18)])
+_COL_LO = np.array([-np.inf if SENSOR_COLUMNS[j % 9] == "range" else _LIMITS[SENSOR_COLUMNS[j % 9]][0] for j in range(18)])
+_COL_HI = np.array([np.inf if SENSOR_COLUMNS[j % 9] == "range" else _LIMITS[SENSOR_COLUMNS[j % 9]][1] for j in range(18)])
+
+
 def cell_problems(block: np.ndarray) -> np.ndarray:
     """Problem code of every cell of a (K, 18) block in contract order (SI units, radians).
 
@@ -119,18 +124,11 @@ def cell_problems(block: np.ndarray) -> np.ndarray:
     (:mod:`registration.rowcheck`), so every entry point applies the same rules.
     """
     block = np.asarray(block, dtype=np.float64)
-    codes = np.zeros(block.shape, dtype=np.int8)
-    finite = np.isfinite(block)
     with np.errstate(invalid="ignore"):
-        for j in range(block.shape[1]):
-            col = SENSOR_COLUMNS[j % 9]
-            v = block[:, j]
-            if col == "range":
-                codes[:, j] = np.where(v <= 0, PROBLEM_NON_POSITIVE, PROBLEM_OK)
-            else:
-                lo, hi, _ = _LIMITS[col]
-                codes[:, j] = np.where((v < lo) | (v > hi), PROBLEM_OUT_OF_RANGE, PROBLEM_OK)
-    codes[~finite] = PROBLEM_NON_FINITE
+        out_of_range = (block < _COL_LO) | (block > _COL_HI)
+        non_positive = _COL_IS_RANGE & (block <= 0)
+    codes = np.where(non_positive, PROBLEM_NON_POSITIVE, np.where(out_of_range, PROBLEM_OUT_OF_RANGE, PROBLEM_OK)).astype(np.int8)
+    codes[~np.isfinite(block)] = PROBLEM_NON_FINITE
     return codes
 
 
@@ -265,6 +263,7 @@ class OnlineRegistrar:
     def __init__(self, config: RegistrationConfig | None = None):
         self.config = config or RegistrationConfig()
         self._step = _loader.get(self.config.step_name)
+        self._bound = None  # single-row caller with preallocated buffers, made on first update()
         self.x = np.array(self.config.x0 if self.config.x0 is not None else np.zeros(N_STATE))
         self.P = np.diag(np.square(self.config.prior_sigma))
         self.info = np.zeros((N_STATE, N_STATE))
@@ -291,14 +290,16 @@ class OnlineRegistrar:
                 raise _row_error(self.n_updates, "time", time, "is not finite; expected seconds")
             if self.last_time is not None and time <= self.last_time:
                 raise _row_error(self.n_updates, "time", time, f"does not increase (previous: {self.last_time}); timestamps must be strictly increasing")
-        x, P, info, nu, S, nis = self._step(self.x, self.P, self.info, self.process_noise(), values, self._sigma0)
+        if self._bound is None:
+            self._bound = self._step.bind()
+        x, P, info, nu, S, nis = self._bound(self.x, self.P, self.info, self.process_noise(), values, self._sigma0)
         if not (np.isfinite(x).all() and np.isfinite(P).all()):
             raise RuntimeError(f"row {self.n_updates}: the filter step produced non-finite values; state left unchanged")
-        self.x, self.P, self.info = x[0], P[0], info[0]
+        self.x, self.P, self.info = x, P, info
         self._window.append(self.x.copy())
         self.n_updates += 1
         self.last_time = time if time is not None else self.last_time
-        return {"x": self.x, "P": self.P, "nu": nu[0], "S": S[0], "nis": float(nis[0])}
+        return {"x": self.x, "P": self.P, "nu": nu, "S": S, "nis": nis}
 
     def update_block(self, rows: np.ndarray, times: np.ndarray | None = None, *, partial: bool = False) -> dict:
         """Process a (K, 18) block of rows in contract order; the same arithmetic as K calls of :meth:`update`.

@@ -79,3 +79,16 @@ def test_mismatched_lengths_are_refused():
     fn = _loader.get("geodetic2ecef")
     with pytest.raises(ValueError, match="points"):
         fn(np.zeros(3), np.zeros(4), 0.0)
+
+
+@pytest.mark.parametrize("name", ["kalman_step_paper_standard", "deck2enu_jacobians", "cartesian2polar3"])
+def test_bound_single_point_call_equals_vectorised_call(name):
+    spec = all_specs()[name]
+    inputs = sample_inputs(spec, 3, np.random.default_rng(11))
+    fn = _loader.get(name)
+    bound = fn.bind()
+    batch = fn(*inputs)
+    for i in range(3):
+        single = bound(*[a[i] for a in inputs])
+        for b, s in zip(batch, single):
+            assert np.array_equal(np.asarray(b[i]), np.asarray(s))
