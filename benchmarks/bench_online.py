@@ -1,0 +1,421 @@
+#!/usr/bin/env python3
+"""Speed of the online registration loop (issue 3 "Speed"), against a plain NumPy filter.
+
+Run from a checkout (the package installed, editable or not)::
+
+    python3 benchmarks/bench_online.py                       # 300 rows and 10^5 rows
+    python3 benchmarks/bench_online.py --long 20000 --json bench_online.json
+
+Data: the paper scenario (``paper_scenario(seed)``: 300 synchronous pairs); the long run tiles
+those rows (times renumbered so they increase) to ``--long`` rows. Filter: the default
+:class:`RegistrationConfig` (linearization ``paper``, T ``standard``, Q ``fixed``).
+
+Contenders, all in the same run, best of ``--repeat`` interleaved rounds after one warm-up:
+
+1. ``register()``: the whole batch call (validation, the compiled scan of the generated Kalman
+   step, corrected differences, observability report), amortised per row; and the compiled scan
+   alone (``_loader.get(step).scan``), the floor of the batch path.
+2. The streaming ``OnlineRegistrar.update(row)``, one call per row (rows as numpy arrays).
+3. The baseline: the SAME filter in plain NumPy, written here. Z, H, M come from the generated
+   ``pseudo_measurement_standard`` (the model is never re-derived), R = M R0 M^T; then per step
+   predict, gain by ``numpy.linalg.solve``, Joseph update, symmetrisation, information and NIS,
+   storing every estimate and covariance like ``register()`` does. Two flavours:
+   ``numpy (per-row model)`` calls the generated function once per row, as a NumPy user
+   stepping a filter would; ``numpy (model vectorised)`` evaluates Z, H, M for all rows up
+   front (valid for the ``paper`` linearisation, whose Z, H, M do not depend on the state), so
+   the loop is pure NumPy linear algebra: the strongest baseline.
+
+Before anything is timed, both baselines' estimates and covariances are checked against
+``register()``'s to 1e-9 relative (per state, relative to the largest magnitude of that state's
+series), so the comparison is between identical computations.
+
+Aims (issue 3): <= 5 us per step amortised for the batch run, >= 20x faster than the NumPy
+baseline; the script says whether each is met, and prints a breakdown of where the time goes.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import platform
+import sys
+import time
+
+import numpy as np
+
+import registration
+from registration import _loader
+from registration.online import OnlineRegistrar, RegistrationConfig, register
+from registration.scenarios import paper_scenario
+from registration.state import DATA_COLUMNS, N_STATE
+
+AIM_US_PER_STEP = 5.0
+AIM_RATIO = 20.0
+TOLERANCE = 1e-9
+
+
+# --------------------------------------------------------------------------- data
+def scenario_data(n_rows: int, seed: int) -> dict:
+    """The paper scenario's 300 rows, tiled to ``n_rows`` rows with increasing timestamps."""
+    base = paper_scenario(seed).data
+    k = len(base["time"])
+    reps = -(-n_rows // k)
+    data = {c: np.tile(np.asarray(base[c]), reps)[:n_rows].copy() for c in DATA_COLUMNS[1:]}
+    data["time"] = np.arange(n_rows, dtype=float)
+    return data
+
+
+def rows_of(data: dict) -> np.ndarray:
+    return np.ascontiguousarray(np.stack([data[c] for c in DATA_COLUMNS[1:]], axis=1))
+
+
+# --------------------------------------------------------------------------- the NumPy baseline
+class NumpyFilter:
+    """The registration filter of derive/kalman.py ('paper' linearisation) in plain NumPy."""
+
+    def __init__(self, config: RegistrationConfig):
+        if config.linearization != "paper" or config.q_mode != "fixed":
+            raise ValueError("the baseline implements linearization 'paper' with a fixed Q")
+        self.model = _loader.get(f"pseudo_measurement_{config.t_variant}")
+        self.sigma0 = np.array(config.sigma0)
+        self.R0 = np.diag(np.square(self.sigma0))
+        self.Q = np.diag(np.square(config.q_sigma))
+        self.x0 = np.zeros(N_STATE) if config.x0 is None else np.array(config.x0)
+        self.P0 = np.diag(np.square(config.prior_sigma))
+
+    def model_rows(self, rows: np.ndarray):
+        """Z (K, 3), H (K, 3, 12), M (K, 3, 6) for all rows in one vectorised call."""
+        out = dict(zip(self.model.output_names, self.model(
+            rows[:, 0:3], rows[:, 3:6], rows[:, 6:9], rows[:, 9:12], rows[:, 12:15], rows[:, 15:18], self.sigma0)))
+        return out["Z"], out["H"], out["M"]
+
+    def model_row(self, row: np.ndarray):
+        """Z (3,), H (3, 12), M (3, 6) for one row (one call of the generated function)."""
+        Z, H, M, _, _, _ = self.model(row[0:3], row[3:6], row[6:9], row[9:12], row[12:15], row[15:18], self.sigma0)
+        return Z[0], H[0], M[0]
+
+    def run(self, rows: np.ndarray, vectorised: bool) -> dict:
+        k = len(rows)
+        xs, Ps = np.empty((k, N_STATE)), np.empty((k, N_STATE, N_STATE))
+        nus, Ss, niss = np.empty((k, 3)), np.empty((k, 3, 3)), np.empty(k)
+        x, P, info = self.x0.copy(), self.P0.copy(), np.zeros((N_STATE, N_STATE))
+        Q, R0, eye = self.Q, self.R0, np.eye(N_STATE)
+        if vectorised:
+            Zs, Hs, Ms = self.model_rows(rows)
+        for i in range(k):
+            if vectorised:
+                Z, H, M = Zs[i], Hs[i], Ms[i]
+            else:
+                Z, H, M = self.model_row(rows[i])
+            R = M @ R0 @ M.T
+            P_pred = P + Q
+            HP = H @ P_pred
+            S = HP @ H.T + R
+            S = 0.5 * (S + S.T)
+            K = np.linalg.solve(S, HP).T
+            nu = Z - H @ x
+            x = x + K @ nu
+            IKH = eye - K @ H
+            P = IKH @ P_pred @ IKH.T + K @ R @ K.T
+            P = 0.5 * (P + P.T)
+            info = info + H.T @ np.linalg.solve(R, H)
+            info = 0.5 * (info + info.T)
+            xs[i], Ps[i], nus[i], Ss[i] = x, P, nu, S
+            niss[i] = nu @ np.linalg.solve(S, nu)
+        return {"x": xs, "P": Ps, "nu": nus, "S": Ss, "nis": niss, "info": info}
+
+
+def compare(reference, other) -> dict:
+    """Largest relative difference per output: per state, relative to the largest |value| of that
+    state's series (for P: of its diagonal), so tiny cross terms do not inflate the figure."""
+    def rel(a, b, scale):
+        return float(np.max(np.abs(a - b) / scale))
+
+    sx = np.max(np.abs(reference.estimates), axis=0)
+    sx = np.where(sx > 0, sx, 1.0)
+    d = np.sqrt(np.max(np.einsum("kii->ki", reference.covariances), axis=0))
+    sP = d[:, None] * d[None, :]
+    return {
+        "estimates": rel(reference.estimates, other["x"], sx[None, :]),
+        "covariances": rel(reference.covariances, other["P"], sP[None]),
+        "nis": rel(reference.nis, other["nis"], max(1.0, float(np.max(np.abs(reference.nis))))),
+        "information": rel(reference.information, other["info"], np.max(np.abs(reference.information))),
+    }
+
+
+# --------------------------------------------------------------------------- timing
+def measure(contenders: dict, rounds: int) -> dict:
+    """Best seconds per contender over ``rounds`` interleaved rounds after one untimed warm-up."""
+    best = {}
+    for label, fn in contenders.items():
+        fn()
+        best[label] = float("inf")
+    for _ in range(rounds):
+        for label, fn in contenders.items():
+            t0 = time.perf_counter()
+            fn()
+            best[label] = min(best[label], time.perf_counter() - t0)
+    return best
+
+
+def streaming(config, rows):
+    def go():
+        reg = OnlineRegistrar(config)
+        for i in range(len(rows)):
+            reg.update(rows[i])
+        return reg
+    return go
+
+
+def scan_only(config, rows):
+    """The compiled scan of the generated Kalman step alone (what register() runs for q_mode fixed)."""
+    step = _loader.get(config.step_name)
+    inputs = {
+        "x": np.zeros(N_STATE) if config.x0 is None else np.array(config.x0),
+        "P": np.diag(np.square(config.prior_sigma)), "info": np.zeros((N_STATE, N_STATE)),
+        "Q": np.diag(np.square(config.q_sigma)), "row": rows, "sigma0": np.array(config.sigma0),
+    }
+    carry = {"x": "x_new", "P": "P_new", "info": "info_new"}  # the step's mapaccum convention
+
+    def go():
+        return step.scan(len(rows), carry, inputs, keep_last=("info_new",))
+    return go
+
+
+def profile_breakdown(fn, calls: int, per: int, top: int = 8) -> list[tuple[str, float]]:
+    """Where ``fn``'s time goes: cProfile over ``calls`` calls, the callees with the largest
+    cumulative time, in us per row (``per`` rows per call). The profiler's own overhead inflates
+    Python-heavy parts; the shares, not the absolute figures, are the point."""
+    import cProfile
+    import pstats
+
+    prof = cProfile.Profile()
+    prof.enable()
+    for _ in range(calls):
+        fn()
+    prof.disable()
+    stats = pstats.Stats(prof).stats
+    total = sum(v[2] for v in stats.values())  # total own time
+    rows = []
+    for (file, line, name), (_, _, _, cum, _) in stats.items():
+        if "registration" in file or "numpy" in file or name.startswith("<built-in") or name.startswith("<method"):
+            short = f"{file.split('/')[-1]}:{name}" if not file.startswith("~") else name
+            rows.append((short, cum / (calls * per) * 1e6))
+    rows.sort(key=lambda t: -t[1])
+    return [("total (profiled)", total / (calls * per) * 1e6)] + rows[1:top + 1]
+
+
+# --------------------------------------------------------------------------- compiler flags experiment
+HARNESS = r"""
+/* Benchmark harness (not shipped): the generated Kalman step in a plain C loop, x, P, info carried. */
+#define _POSIX_C_SOURCE 199309L
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include "@SOURCE@"
+static double now_ns(void) { struct timespec t; clock_gettime(CLOCK_MONOTONIC, &t); return t.tv_sec * 1e9 + t.tv_nsec; }
+int main(int argc, char **argv) {
+    long n = atol(argv[1]); int repeat = atoi(argv[2]);
+    double *in = malloc(sizeof(double) * (size_t)(18 * n + 12 + 3 * 144 + 6));
+    FILE *f = fopen(argv[3], "rb");
+    if (!in || !f || fread(in, sizeof(double), (size_t)(18 * n + 12 + 3 * 144 + 6), f) != (size_t)(18 * n + 12 + 3 * 144 + 6)) return 1;
+    fclose(f);
+    double *rows = in, *x0 = in + 18 * n, *P0 = x0 + 12, *info0 = P0 + 144, *Q = info0 + 144, *s0 = Q + 144;
+    double *xo = malloc(sizeof(double) * 12 * (size_t)n), *Po = malloc(sizeof(double) * 144 * (size_t)n);
+    double x[12], P[144], info[144], info2[144], nu[3], S[9], nis, w[@SZ_W@ + 1];
+    casadi_int iw[@SZ_IW@ + 1];
+    double best = 1e300;
+    for (int rep = 0; rep <= repeat; ++rep) {
+        memcpy(x, x0, sizeof x); memcpy(P, P0, sizeof P); memcpy(info, info0, sizeof info);
+        double t0 = now_ns();
+        for (long i = 0; i < n; ++i) {
+            const double *arg[6] = {x, P, info, Q, rows + 18 * i, s0};
+            double *res[6] = {xo + 12 * i, Po + 144 * i, info2, nu, S, &nis};
+            @FUNC@(arg, res, iw, w, 0);
+            memcpy(x, xo + 12 * i, sizeof x); memcpy(P, Po + 144 * i, sizeof P); memcpy(info, info2, sizeof info);
+        }
+        double dt = (now_ns() - t0) / (double)n;
+        if (rep > 0 && dt < best) best = dt;
+    }
+    printf("%.6f %.17g\n", best / 1e3, xo[12 * (n - 1) + 3]);
+    return 0;
+}
+"""
+
+
+def flags_experiment(config, rows: np.ndarray, reference_last: np.ndarray, repeat: int) -> dict:
+    """The same generated step in a plain C loop, built with the loader's flags and with more
+    aggressive (non-portable) ones: how much of the step's cost a compiler setting could remove."""
+    import subprocess
+    import tempfile
+    from pathlib import Path
+
+    cc = _loader._compiler()
+    if cc is None:
+        return {}
+    name = config.step_name
+    work = _loader.manifest()["functions"][name]["work"]
+    out = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        (tmp / f"{name}.c").write_bytes(_loader._read_checked(name, "c"))  # the shipped source, hash-checked
+        code = HARNESS.replace("@SOURCE@", f"{name}.c").replace("@FUNC@", name)
+        code = code.replace("@SZ_W@", str(work["sz_w"])).replace("@SZ_IW@", str(work["sz_iw"]))
+        (tmp / "harness.c").write_text(code)
+        x0 = np.zeros(N_STATE) if config.x0 is None else np.array(config.x0)
+        # matrices in column-major order (CasADi's), all symmetric here anyway
+        blob = np.concatenate([rows.ravel(), x0, np.diag(np.square(config.prior_sigma)).ravel(),
+                               np.zeros(N_STATE * N_STATE), np.diag(np.square(config.q_sigma)).ravel(), np.array(config.sigma0)])
+        blob.astype("<f8").tofile(tmp / "in.bin")
+        loader_flags = [f for f in _loader._CFLAGS if f not in ("-shared", "-fPIC")]
+        for label, flags in (("plain C, loader flags " + " ".join(loader_flags), loader_flags),
+                             ("plain C, -O3 -march=native", ["-O3", "-march=native"])):
+            exe = tmp / ("h" + str(len(out)))
+            proc = subprocess.run([cc, *flags, "-o", str(exe), str(tmp / "harness.c"), "-lm"], capture_output=True, text=True)
+            if proc.returncode != 0:
+                out[label] = None
+                continue
+            res = subprocess.run([str(exe), str(len(rows)), str(repeat), str(tmp / "in.bin")], capture_output=True, text=True)
+            us, last = (float(v) for v in res.stdout.split())
+            if not np.isclose(last, reference_last, rtol=1e-9):
+                raise SystemExit(f"{label}: last dr_a estimate {last} != register()'s {reference_last}")
+            out[label] = us
+    return out
+
+
+# --------------------------------------------------------------------------- main
+def bench_size(n_rows: int, seed: int, rounds: int, stream_rows: int, config) -> dict:
+    data = scenario_data(n_rows, seed)
+    rows = rows_of(data)
+    base = NumpyFilter(config)
+
+    # correctness first: the baselines must compute what register() computes
+    ref = register(data, config)
+    diffs = {}
+    for label, vec in (("numpy (model vectorised)", True), ("numpy (per-row model)", False)):
+        d = compare(ref, base.run(rows, vec))
+        diffs[label] = d
+        if max(d.values()) > TOLERANCE:
+            raise SystemExit(f"{label}: differs from register() by {d} (relative) > {TOLERANCE}: not the same filter")
+
+    contenders = {
+        "register() (batch, whole call)": lambda: register(data, config),
+        "compiled scan alone": scan_only(config, rows),
+        "numpy (model vectorised)": lambda: base.run(rows, True),
+        "numpy (per-row model)": lambda: base.run(rows, False),
+    }
+    n_stream = min(stream_rows, n_rows)
+    contenders[f"OnlineRegistrar.update() x {n_stream}"] = streaming(config, rows[:n_stream])
+    best = measure(contenders, rounds)
+    per_step = {k: v / (n_stream if k.startswith("OnlineRegistrar") else n_rows) for k, v in best.items()}
+    return {"rows": n_rows, "stream_rows": n_stream, "seconds": best, "us_per_step": {k: v * 1e6 for k, v in per_step.items()},
+            "max_relative_difference_vs_register": diffs}
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--long", type=int, default=100_000, help="rows of the long run (tiled scenario; default 10^5)")
+    ap.add_argument("--stream-rows", type=int, default=20_000,
+                    help="rows fed to OnlineRegistrar.update() in the long run (default 2*10^4; it is the slow path)")
+    ap.add_argument("--repeat", type=int, default=3, help="timed rounds per contender; the best is kept (default 3)")
+    ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--json", type=str, default=None, help="also write the figures to this JSON file")
+    ap.add_argument("--flags", action="store_true",
+                    help="also time the generated step in a plain C loop built with the loader's flags and with -O3 -march=native")
+    args = ap.parse_args(argv)
+
+    config = RegistrationConfig()  # paper linearisation, standard T, fixed Q: one compiled scan
+    print(f"registration {registration.__version__}, backend {_loader.backend()}, numpy {np.__version__}, "
+          f"python {platform.python_version()}, {platform.machine()} {platform.processor() or ''}".rstrip())
+    print(f"filter {config.step_name}, q_mode {config.q_mode}; best of {args.repeat} rounds\n")
+
+    results = {}
+    for n in (300, args.long):
+        r = bench_size(n, args.seed, args.repeat, args.stream_rows, config)
+        results[str(n)] = r
+        us = r["us_per_step"]
+        ref_batch = us["register() (batch, whole call)"]
+        ref_scan = us["compiled scan alone"]
+        print(f"{n} rows (baselines equal register() to "
+              f"{max(max(d.values()) for d in r['max_relative_difference_vs_register'].values()):.1e} relative)")
+        print(f"  {'contender':<40}{'us/step':>10}{'time / register()':>19}{'time / scan':>13}")
+        for label, v in us.items():
+            print(f"  {label:<40}{v:10.2f}{v / ref_batch:18.1f}x{v / ref_scan:12.1f}x")
+        print()
+
+    long = results[str(args.long)]["us_per_step"]
+    short = results["300"]["us_per_step"]
+    batch_long = long["register() (batch, whole call)"]
+    ratio_long = long["numpy (model vectorised)"] / batch_long
+    ratio_short = short["numpy (model vectorised)"] / short["register() (batch, whole call)"]
+    aims = {
+        "batch_us_per_step_long": batch_long,
+        "batch_us_per_step_300": short["register() (batch, whole call)"],
+        "aim_us_per_step": AIM_US_PER_STEP,
+        "met_us_per_step_long": batch_long <= AIM_US_PER_STEP,
+        "met_us_per_step_300": short["register() (batch, whole call)"] <= AIM_US_PER_STEP,
+        "ratio_vs_vectorised_numpy_long": ratio_long,
+        "ratio_vs_vectorised_numpy_300": ratio_short,
+        "ratio_vs_per_row_numpy_long": long["numpy (per-row model)"] / batch_long,
+        "aim_ratio": AIM_RATIO,
+        "met_ratio_long": ratio_long >= AIM_RATIO,
+        "met_ratio_300": ratio_short >= AIM_RATIO,
+    }
+    yes = {True: "met", False: "NOT met"}
+    print("Aims (issue 3):")
+    print(f"  <= {AIM_US_PER_STEP} us/step amortised, batch register(): {args.long} rows {batch_long:.2f} us "
+          f"({yes[aims['met_us_per_step_long']]}); 300 rows {aims['batch_us_per_step_300']:.2f} us ({yes[aims['met_us_per_step_300']]})")
+    print(f"  >= {AIM_RATIO:.0f}x the NumPy baseline (strongest: model vectorised): {args.long} rows {ratio_long:.1f}x "
+          f"({yes[aims['met_ratio_long']]}); 300 rows {ratio_short:.1f}x ({yes[aims['met_ratio_300']]}); "
+          f"against the per-row NumPy filter {aims['ratio_vs_per_row_numpy_long']:.0f}x")
+
+    # where the time goes (cProfile; the profiler's overhead inflates the Python-heavy parts)
+    step = _loader.get(config.step_name).casadi
+    model = _loader.get(f"pseudo_measurement_{config.t_variant}").casadi
+    scan_us = long["compiled scan alone"]
+    print(f"\nThe compiled step: {step.n_instructions()} CasADi instructions per step (of which the pseudo-measurement "
+          f"{model.n_instructions()}, the Kalman algebra the rest), {scan_us:.2f} us per step in the scan: "
+          f"{step.n_instructions() / scan_us / 1e3:.1f} G instructions/s, i.e. compute-bound scalar code.")
+    data300 = scenario_data(300, args.seed)
+    rows300 = rows_of(data300)
+    br = profile_breakdown(lambda: register(data300, config), 20, 300)
+    print("register() on 300 rows, by callee (cProfile, cumulative us per row):")
+    for k, v in br:
+        print(f"  {k:<52}{v:10.2f}")
+    data_long = scenario_data(args.long, args.seed)
+    br_long = profile_breakdown(lambda: register(data_long, config), 1, args.long)
+    print(f"register() on {args.long} rows, by callee (cProfile, cumulative us per row):")
+    for k, v in br_long:
+        print(f"  {k:<52}{v:10.2f}")
+    ub = profile_breakdown(streaming(config, rows300), 3, 300)
+    print("OnlineRegistrar.update() on 300 rows, by callee (cProfile, cumulative us per row):")
+    for k, v in ub:
+        print(f"  {k:<52}{v:10.2f}")
+
+    flags = {}
+    if args.flags:
+        ref_last = register(data_long, config).estimates[-1, 3]
+        flags = flags_experiment(config, rows_of(data_long), ref_last, args.repeat)
+        print(f"\nThe same generated step in a plain C loop ({args.long} rows, results checked against register()):")
+        for k, v in flags.items():
+            print(f"  {k:<52}{'build failed' if v is None else f'{v:10.2f}'}")
+
+    if args.json:
+        payload = {
+            "plain_c_us_per_step": flags,
+            "machine": {"python": platform.python_version(), "machine": platform.machine(), "numpy": np.__version__,
+                        "backend": _loader.backend(), "platform": platform.platform()},
+            "config": config.to_json(), "results": results, "aims": aims,
+            "register_profile_us_per_row_300": dict(br),
+            "register_profile_us_per_row_long": dict(br_long),
+            "update_profile_us_per_row_300": dict(ub),
+        }
+        with open(args.json, "w") as fh:
+            json.dump(payload, fh, indent=1)
+        print(f"\nwrote {args.json}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
