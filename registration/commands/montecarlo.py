@@ -17,43 +17,20 @@ from pathlib import Path
 
 import numpy as np
 
+from .simulate import add_scenario_arguments, parse_motion
+
 HELP = "Monte Carlo over seeds: RMSE of the identifiable estimates vs the filter's 2σ and the Cramér-Rao bound, and NEES"
-
-DEFAULT_MOTION = "2,8,5,12"  # the ShipMotion() defaults: pitch 2 deg / 8 s, roll 5 deg / 12 s
-
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--runs", type=int, default=100, help="number of Monte Carlo runs (default 100)")
     p.add_argument("--seed", type=int, default=0, help="first seed; run i uses seed + i (default 0)")
-    p.add_argument("--angle-sigma-deg", type=float, default=0.5, help="bearing/elevation noise sigma, deg (paper: 0.5)")
-    p.add_argument("--range-sigma-m", type=float, default=50.0, help="range noise sigma, m (paper: 50)")
-    p.add_argument("--steps", type=int, default=300, help="measurement pairs per run at 1 s (paper: 300)")
-    p.add_argument(
-        "--ship-motion", nargs="?", const=DEFAULT_MOTION, default=None, metavar="PITCH_DEG,PITCH_S,ROLL_DEG,ROLL_S",
-        help=f"let both ships pitch and roll (no value: the ShipMotion defaults {DEFAULT_MOTION}); default: level ships",
-    )
-    p.add_argument("--linearization", choices=["paper", "relinearized"], default="paper")
-    p.add_argument("--q-mode", choices=["fixed", "adaptive"], default="fixed")
-    p.add_argument("--t-variant", choices=["standard", "paper"], default="standard",
-                   help="the filter's T (the data are simulated with the standard T)")
+    add_scenario_arguments(p)
     p.add_argument("--include-weak", action="store_true",
                    help="also show states that are only weakly observable (flagged; never part of the NEES)")
     p.add_argument("--sum", action="append", default=[], metavar="NAME+NAME",
                    help="also show a sum of two states, e.g. dC_a+dq_a (flagged unless identifiable; repeatable)")
     p.add_argument("--out", type=Path, default=Path("out/montecarlo"), help="output folder (default out/montecarlo)")
     p.add_argument("--no-plot", action="store_true", help="skip the PNG")
-
-
-def _motion(text: str | None):
-    from ..scenarios import ShipMotion
-
-    if text is None:
-        return None
-    try:
-        pd, ps, rd, rs = (float(v) for v in text.split(","))
-    except ValueError as exc:
-        raise ValueError(f"--ship-motion: expected PITCH_DEG,PITCH_S,ROLL_DEG,ROLL_S, got {text!r}") from exc
-    return ShipMotion(np.radians(pd), ps, np.radians(rd), rs)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -77,7 +54,7 @@ def run(args: argparse.Namespace) -> int:
     result = run_montecarlo(
         args.runs, args.seed, config, include_weak=args.include_weak, extra_sums=sums, progress=True,
         angle_sigma=angle, range_sigma=args.range_sigma_m, n_steps=args.steps,
-        ship_motion=_motion(args.ship_motion), t_variant="standard",
+        ship_motion=parse_motion(args.ship_motion), t_variant="standard",
     )
     print(result.table())
     out = Path(args.out)

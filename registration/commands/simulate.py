@@ -13,18 +13,24 @@ HELP = "simulate the paper's two-ship scenario, register online, and compare wit
 DEFAULT_MOTION = "2,8,5,12"
 
 
-def add_arguments(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--seed", type=int, default=0, help="random seed of the measurement noise (default 0)")
+def add_scenario_arguments(p: argparse.ArgumentParser) -> None:
+    """Options shared by `simulate` and `montecarlo`: the paper scenario and the filter settings."""
     p.add_argument("--angle-sigma-deg", type=float, default=0.5, help="bearing/elevation noise sigma, deg (paper: 0.5)")
     p.add_argument("--range-sigma-m", type=float, default=50.0, help="range noise sigma, m (paper: 50)")
-    p.add_argument("--steps", type=int, default=300, help="number of synchronous measurement pairs at 1 s (paper: 300)")
+    p.add_argument("--steps", type=int, default=300, help="synchronous measurement pairs at 1 s (paper: 300)")
     p.add_argument(
         "--ship-motion", nargs="?", const=DEFAULT_MOTION, default=None, metavar="PITCH_DEG,PITCH_S,ROLL_DEG,ROLL_S",
         help=f"let both ships pitch and roll sinusoidally (no value: {DEFAULT_MOTION}); default: level ships as in the paper",
     )
     p.add_argument("--linearization", choices=["paper", "relinearized"], default="paper")
     p.add_argument("--q-mode", choices=["fixed", "adaptive"], default="fixed")
-    p.add_argument("--t-variant", choices=["standard", "paper"], default="standard")
+    p.add_argument("--t-variant", choices=["standard", "paper"], default="standard",
+                   help="the filter's T (the data are simulated with the standard T)")
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--seed", type=int, default=0, help="random seed of the measurement noise (default 0)")
+    add_scenario_arguments(p)
     p.add_argument("--out", type=Path, default=Path("out/simulate"), help="output folder (default out/simulate)")
     p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     p.add_argument("--export", type=Path, default=None, help="also write the simulated data (file format of `registration register`)")
