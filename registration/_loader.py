@@ -46,23 +46,24 @@ class ArtifactError(RuntimeError):
 
 @lru_cache(maxsize=1)
 def generated_dir() -> Path:
+    """The artifacts of *this* copy of the package: ``generated/`` beside it in a source checkout,
+    else the installed ``registration/_generated`` (never another checkout's editable install)."""
+    here = Path(__file__).resolve().parent
+    for path in (here / "_generated", here.parent / "generated"):
+        if (path / "manifest.json").exists():
+            return path
     try:
         from importlib.resources import files
-
-        import registration._generated as pkg  # noqa: F401  (installed layout)
 
         path = Path(str(files("registration._generated")))
         if (path / "manifest.json").exists():
             return path
     except ImportError:
         pass
-    path = Path(__file__).resolve().parent.parent / "generated"
-    if not (path / "manifest.json").exists():
-        raise ArtifactError(
-            "cannot find the generated artifacts (registration/_generated or generated/manifest.json); "
-            "run `python -m derive` in a source checkout and reinstall"
-        )
-    return path
+    raise ArtifactError(
+        "cannot find the generated artifacts (registration/_generated or generated/manifest.json); "
+        "run `python -m derive` in a source checkout and reinstall"
+    )
 
 
 @lru_cache(maxsize=1)
