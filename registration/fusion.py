@@ -158,6 +158,19 @@ def _site(name: str, value, dim: int) -> np.ndarray:
     return s
 
 
+def _radar_inputs(z_radar, sigma_radar, site_radar_loc):
+    """Checked radar plot rows (N, d), sigmas, site (default origin) and the dimension d."""
+    z = as_float_array("z_radar", z_radar)
+    dim = z.shape[-1] if z.ndim in (1, 2) else -1
+    if dim not in COMPONENTS:
+        raise ValueError(f"z_radar: expected shape (d,) or (N, d) with d = 2 or 3 (range m, azimuth rad[, elevation rad]), got {z.shape}")
+    z = _as_rows("z_radar", z, dim, "range m, azimuth rad[, elevation rad]")
+    _polar_checks("z_radar", z, COMPONENTS[dim])
+    s = _sigmas("sigma_radar", sigma_radar, dim, COMPONENTS[dim])
+    site = _site("site_radar_loc", np.zeros(dim) if site_radar_loc is None else site_radar_loc, dim)
+    return z, s, site, dim
+
+
 def _common_n(**arrays: np.ndarray) -> int:
     n, first = 1, None
     for key, a in arrays.items():
@@ -289,14 +302,7 @@ def radar_point(z_radar, sigma_radar, site_radar_loc=None) -> tuple[np.ndarray, 
     ``z_radar`` (d,) or (N, d): [r m, az rad(, el rad)] seen from ``site_radar_loc`` (d,) m
     (default the origin). ``sigma_radar`` (d,) or (N, d): standard deviations in the same units.
     """
-    z = as_float_array("z_radar", z_radar)
-    dim = z.shape[-1] if z.ndim in (1, 2) else -1
-    if dim not in COMPONENTS:
-        raise ValueError(f"z_radar: expected shape (d,) or (N, d) with d = 2 or 3 (range m, azimuth rad[, elevation rad]), got {z.shape}")
-    z = _as_rows("z_radar", z, dim, "range m, azimuth rad[, elevation rad]")
-    _polar_checks("z_radar", z, COMPONENTS[dim])
-    s = _sigmas("sigma_radar", sigma_radar, dim, COMPONENTS[dim])
-    site = _site("site_radar_loc", np.zeros(dim) if site_radar_loc is None else site_radar_loc, dim)
+    z, s, site, dim = _radar_inputs(z_radar, sigma_radar, site_radar_loc)
     n = _common_n(z_radar=z, sigma_radar=s)
     p_rel, J = _polar2cartesian(np.ascontiguousarray(_bcast(z, n)))
     return p_rel + site, _aos(_sandwich(_soa(J), _soa(_bcast(s, n)) ** 2))
@@ -372,14 +378,7 @@ def fuse_paper(
         Site positions in metres, frame ``loc`` (radar default: the origin). Equal sites are the
         same-platform case: then the transformed variances equal the radar's own.
     """
-    z_a = as_float_array("z_radar", z_radar)
-    dim = z_a.shape[-1] if z_a.ndim in (1, 2) else -1
-    if dim not in COMPONENTS:
-        raise ValueError(f"z_radar: expected shape (d,) or (N, d) with d = 2 or 3 (range m, azimuth rad[, elevation rad]), got {z_a.shape}")
-    z_a = _as_rows("z_radar", z_a, dim, "range m, azimuth rad[, elevation rad]")
-    _polar_checks("z_radar", z_a, COMPONENTS[dim])
-    s_a = _sigmas("sigma_radar", sigma_radar, dim, COMPONENTS[dim])
-    site_a = _site("site_radar_loc", np.zeros(dim) if site_radar_loc is None else site_radar_loc, dim)
+    z_a, s_a, site_a, dim = _radar_inputs(z_radar, sigma_radar, site_radar_loc)
     site_b = _site("site_second_loc", site_second_loc, dim)
     idx, z_b, s_b = _second_inputs(z_second, sigma_second, components, dim)
     n = _common_n(z_radar=z_a, sigma_radar=s_a, z_second=z_b, sigma_second=s_b)
