@@ -24,7 +24,8 @@ from .state import DATA_COLUMNS, N_STATE, SENSOR_COLUMNS, STATE_LABELS, STATE_NA
 
 __all__ = ["RegistrationConfig", "RegistrationResult", "OnlineRegistrar", "register", "validate_data", "difference_statistics"]
 
-LINEARIZATIONS = ("paper", "relinearized")
+LINEARIZATIONS = ("paper", "relinearized", "fitted")
+DEFAULT_LINEARIZATION = "fitted"
 Q_MODES = ("fixed", "adaptive")
 T_VARIANTS = ("standard", "paper")
 _CARRY = {"x": "x_new", "P": "P_new", "info": "info_new"}
@@ -40,8 +41,10 @@ class RegistrationConfig:
     x0: initial estimate (default zeros).
     q_mode: ``fixed`` (Q = diag(q_sigma^2) per step) or ``adaptive`` (eqs. 21-22: the sample
         covariance of the last ``q_window`` estimates, plus the fixed Q as a floor).
-    linearization: ``paper`` (H, Z at the raw measurements) or ``relinearized`` (at the
-        measurements corrected by the current estimate: an extended Kalman filter).
+    linearization: ``paper`` (H, Z at the raw measurements, as printed), ``relinearized`` (at
+        the measurements corrected by the current estimate: an extended Kalman filter) or
+        ``fitted`` (at the plots each radar would see of the fused target position, the
+        Gauss-Newton point of the joint maximum-likelihood problem; derive/kalman.py).
     t_variant: ``standard`` (orthonormal ENU->ECEF) or ``paper`` (eq. 4 as printed).
     """
 
@@ -51,7 +54,7 @@ class RegistrationConfig:
     q_mode: str = "fixed"
     q_sigma: tuple = (1e-6, 1e-6, 1e-6, 0.01, 1e-6, 1e-6) * 2
     q_window: int = 20
-    linearization: str = "paper"
+    linearization: str = DEFAULT_LINEARIZATION
     t_variant: str = "standard"
 
     def __post_init__(self):

@@ -8,6 +8,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ..online import DEFAULT_LINEARIZATION, LINEARIZATIONS
+
 HELP = "register recorded data: a synchronous table or two per-radar plot files (+ navigation), CSV or Parquet"
 
 
@@ -24,7 +26,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--on-bad-row", choices=["stop", "skip"], default="stop",
                    help="stop at the first bad row (default) or set bad rows aside in rejected.csv")
     p.add_argument("--format", choices=["csv", "parquet"], default="csv", help="format of the outputs (default csv)")
-    p.add_argument("--linearization", choices=["paper", "relinearized"], default="paper")
+    p.add_argument("--linearization", choices=list(LINEARIZATIONS), default=DEFAULT_LINEARIZATION,
+                   help=f"where the filter linearises the model (default {DEFAULT_LINEARIZATION}; paper: as printed)")
     p.add_argument("--q-mode", choices=["fixed", "adaptive"], default="fixed")
     p.add_argument("--q-window", type=int, default=20, help="estimates in the adaptive-Q window (default 20)")
     p.add_argument("--t-variant", choices=["standard", "paper"], default="standard")

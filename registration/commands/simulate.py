@@ -8,6 +8,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ..online import DEFAULT_LINEARIZATION, LINEARIZATIONS
+
 HELP = "simulate the paper's two-ship scenario, register online, and compare with the paper's Table 1"
 
 DEFAULT_MOTION = "2,8,5,12"
@@ -22,7 +24,8 @@ def add_scenario_arguments(p: argparse.ArgumentParser) -> None:
         "--ship-motion", nargs="?", const=DEFAULT_MOTION, default=None, metavar="PITCH_DEG,PITCH_S,ROLL_DEG,ROLL_S",
         help=f"let both ships pitch and roll sinusoidally (no value: {DEFAULT_MOTION}); default: level ships as in the paper",
     )
-    p.add_argument("--linearization", choices=["paper", "relinearized"], default="paper")
+    p.add_argument("--linearization", choices=list(LINEARIZATIONS), default=DEFAULT_LINEARIZATION,
+                   help=f"where the filter linearises the model (default {DEFAULT_LINEARIZATION}; paper: as printed)")
     p.add_argument("--q-mode", choices=["fixed", "adaptive"], default="fixed")
     p.add_argument("--t-variant", choices=["standard", "paper"], default="standard",
                    help="the filter's T (the data are simulated with the standard T)")
