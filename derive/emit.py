@@ -8,8 +8,10 @@ from __future__ import annotations
 
 import hashlib
 import json
+import os
 import platform
 import shutil
+import tempfile
 from pathlib import Path
 
 import casadi as ca
@@ -187,10 +189,31 @@ def _port_meta(port) -> dict:
 
 
 def emit_all(specs: list, out_dir: Path, constants: dict) -> dict:
-    """Write every artifact and the manifest into ``out_dir`` (created or emptied)."""
+    """Write every artifact and the manifest into ``out_dir``, replacing it as a whole.
+
+    Everything is built in a sibling temporary folder first; ``out_dir`` is replaced only when
+    every function was built, so a failing derivation leaves the previous artifacts intact.
+    """
+    out_dir = Path(out_dir)
+    out_dir.parent.mkdir(parents=True, exist_ok=True)
+    staging = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-", dir=out_dir.parent))
+    staging.chmod(0o755)
+    try:
+        manifest = _emit_into(specs, staging, constants)
+    except BaseException:
+        shutil.rmtree(staging, ignore_errors=True)
+        raise
     if out_dir.exists():
-        shutil.rmtree(out_dir)
-    out_dir.mkdir(parents=True)
+        old = out_dir.with_name(f".{out_dir.name}-old-{os.getpid()}")
+        out_dir.rename(old)
+        staging.rename(out_dir)
+        shutil.rmtree(old)
+    else:
+        staging.rename(out_dir)
+    return manifest
+
+
+def _emit_into(specs: list, out_dir: Path, constants: dict) -> dict:
     functions = {}
     for spec in sorted(specs, key=lambda s: s.name):
         fn = spec.build() if hasattr(spec, "build") else to_casadi_function(spec)

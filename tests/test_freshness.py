@@ -91,3 +91,31 @@ def test_tampered_artifact_is_refused(tmp_path, monkeypatch):
             _loader.GeneratedFunction("geodetic2ecef", force_backend="casadi").casadi
     finally:
         _loader.manifest.cache_clear()
+
+
+def test_failed_derivation_leaves_previous_artifacts_intact(tmp_path):
+    """A derivation that raises half-way must not wipe the existing output folder."""
+    sys.path.insert(0, str(REPO))
+    try:
+        from derive.emit import emit_all
+        from derive.registry import CONSTANTS, all_specs
+    finally:
+        sys.path.remove(str(REPO))
+    out = tmp_path / "generated"
+    out.mkdir()
+    (out / "keep.txt").write_text("previous artifacts")
+    specs = [s for s in all_specs() if s.name in ("geodetic2ecef", "radii_of_curvature")]
+
+    class Broken:
+        name = "zz_broken"  # sorted last: fails after the others were written
+
+        def build(self):
+            raise RuntimeError("derivation failed")
+
+    with pytest.raises(RuntimeError, match="derivation failed"):
+        emit_all([*specs, Broken()], out, CONSTANTS)
+    assert [p.name for p in out.iterdir()] == ["keep.txt"]
+    assert [p.name for p in tmp_path.iterdir()] == ["generated"]  # no staging folder left behind
+    manifest = emit_all(specs, out, CONSTANTS)
+    assert sorted(manifest["functions"]) == ["geodetic2ecef", "radii_of_curvature"]
+    assert not (out / "keep.txt").exists() and (out / "manifest.json").exists()
