@@ -27,6 +27,8 @@ import numpy as np
 
 UNOBSERVABLE_BELOW = 1e-2
 WEAK_BELOW = 10.0
+#: a same-unit pair direction e_i - e_j within ~8 deg of the unobservable subspace is named a pair
+PAIR_IN_NULL_COSINE = 0.99
 
 
 @dataclass
@@ -106,6 +108,11 @@ def _pair_directions(scaled: np.ndarray, d: np.ndarray, units, names, labels) ->
     """
     found = []
     n = len(names)
+    # the unobservable eigen-subspace: pairs are also recognised inside it, so that a null
+    # space that is degenerate (two tiny, nearly equal eigenvalues whose eigenvectors mix the
+    # two ships' pairs) or slightly tilted (evaluated at a small pitch/roll) is still named
+    eigval, eigvec = np.linalg.eigh(scaled)
+    null = eigvec[:, eigval < UNOBSERVABLE_BELOW]
     for i in range(n):
         for j in range(i + 1, n):
             if units[i] != units[j]:
@@ -114,7 +121,8 @@ def _pair_directions(scaled: np.ndarray, d: np.ndarray, units, names, labels) ->
             v[i], v[j] = 1.0 / d[i], -1.0 / d[j]  # e_i - e_j in prior-scaled coordinates
             v /= np.linalg.norm(v)
             info = float(v @ scaled @ v)
-            if info < UNOBSERVABLE_BELOW:
+            in_null = float(np.linalg.norm(null.T @ v)) > PAIR_IN_NULL_COSINE if null.size else False
+            if info < UNOBSERVABLE_BELOW or in_null:
                 text = f"{labels[i]} and {labels[j]} enter only as their sum {names[i]} + {names[j]}"
                 coeffs = {names[i]: 1.0, names[j]: -1.0}
                 found.append((Combination(coeffs, info, text, (names[i], names[j])), v))
