@@ -409,10 +409,19 @@ class OnlineRegistrar:
 
 
 def information_matrix(H: np.ndarray, R: np.ndarray) -> np.ndarray:
-    """sum_k H_k^T R_k^-1 H_k for H (K, 3, 12) and R (K, 3, 3), by Cholesky solves."""
+    """sum_k H_k^T R_k^-1 H_k for H (K, 3, 12) and R (K, 3, 3), by Cholesky solves.
+
+    W_k = L_k^-1 H_k by forward substitution written over the whole batch (numpy's batched
+    ``solve`` pays a LAPACK call per 3x3 system, ~10x slower here), then J = W^T W in one
+    matrix product over the stacked rows.
+    """
     L = np.linalg.cholesky(R)
-    W = np.linalg.solve(L, H)  # L^-1 H, so W^T W = H^T R^-1 H
-    J = np.einsum("kai,kaj->ij", W, W)
+    W = np.empty(np.shape(H), dtype=float)
+    W[:, 0] = H[:, 0] / L[:, 0, 0, None]
+    W[:, 1] = (H[:, 1] - L[:, 1, 0, None] * W[:, 0]) / L[:, 1, 1, None]
+    W[:, 2] = (H[:, 2] - L[:, 2, 0, None] * W[:, 0] - L[:, 2, 1, None] * W[:, 1]) / L[:, 2, 2, None]
+    W = W.reshape(-1, H.shape[-1])
+    J = W.T @ W
     return 0.5 * (J + J.T)
 
 

@@ -213,3 +213,16 @@ def test_paper_t_variant_runs_and_differs_slightly():
     # differently, but both runs stay finite and close compared with the raw differences
     assert np.isfinite(b.estimates).all()
     assert not np.allclose(a.raw_difference_ecef, b.raw_difference_ecef)
+
+
+def test_information_matrix_equals_per_row_solves():
+    from registration.online import information_matrix
+
+    rng = np.random.default_rng(3)
+    H = rng.normal(size=(50, 3, 12)) * np.array([1e3, 1.0, 1e-2])[None, :, None]
+    A = rng.normal(size=(50, 3, 3))
+    R = A @ A.transpose(0, 2, 1) + 0.1 * np.eye(3)
+    ref = sum(H[k].T @ np.linalg.solve(R[k], H[k]) for k in range(50))
+    J = information_matrix(H, R)
+    assert np.allclose(J, ref, rtol=1e-9, atol=1e-12 * np.abs(ref).max())
+    assert np.array_equal(J, J.T)
