@@ -456,6 +456,17 @@ def _corrected_rows(rows: np.ndarray, estimates: np.ndarray) -> np.ndarray:
     return out
 
 
+def _target_positions(rows: np.ndarray, config: RegistrationConfig) -> tuple[np.ndarray, np.ndarray]:
+    """Target ECEF (K, 3) seen by radar A and by radar B (eq. 3), from rows in the step's layout.
+
+    Two calls of the generated plot2ecef: about half the cost of the pair model, which also
+    builds H, M and R."""
+    fn = _loader.get(f"plot2ecef_{config.t_variant}")
+    p_a = fn(*(rows[:, j] for j in range(9)))[0]
+    p_b = fn(*(rows[:, 9 + j] for j in range(9)))[0]
+    return np.asarray(p_a).reshape(-1, 3), np.asarray(p_b).reshape(-1, 3)
+
+
 def _pair_outputs(rows: np.ndarray, config: RegistrationConfig):
     fn = _loader.get(f"pseudo_measurement_{config.t_variant}")
     args = [rows[:, 0:3], rows[:, 3:6], rows[:, 6:9], rows[:, 9:12], rows[:, 12:15], rows[:, 15:18], np.array(config.sigma0)]
@@ -498,15 +509,15 @@ def register(data: Mapping, config: RegistrationConfig | None = None, *, progres
             estimates[i], covs[i], nu[i], S[i], nis[i] = r["x"], r["P"], r["nu"], r["S"], r["nis"]
         info = registrar.info
 
-    raw = _pair_outputs(rows, config)
-    corrected = _pair_outputs(_corrected_rows(rows, estimates), config)
+    raw_a, raw_b = _target_positions(rows, config)
+    corrected_a, corrected_b = _target_positions(_corrected_rows(rows, estimates), config)
     at_final = _pair_outputs(_corrected_rows(rows, np.broadcast_to(estimates[-1], estimates.shape)), config)
     info_final, _ = information_skipping_bad_rows(at_final["H"], at_final["R"])
     report = observability_report(info_final, np.array(config.prior_sigma), STATE_NAMES, STATE_LABELS, STATE_UNITS)
     return RegistrationResult(
         config=config, time=time, estimates=estimates, covariances=covs, innovations=nu,
         innovation_covariances=S, nis=nis, information=info, information_at_estimate=info_final,
-        raw_difference_ecef=raw["Z"], corrected_difference_ecef=corrected["Z"],
-        corrected_a_ecef=corrected["p_a_ecef"], corrected_b_ecef=corrected["p_b_ecef"],
+        raw_difference_ecef=raw_a - raw_b, corrected_difference_ecef=corrected_a - corrected_b,
+        corrected_a_ecef=corrected_a, corrected_b_ecef=corrected_b,
         observability=report,
     )

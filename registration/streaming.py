@@ -44,7 +44,10 @@ from . import _loader
 from .checkpoint import CheckpointError, load_checkpoint, save_checkpoint
 from .io import SYNC_COLUMNS, CsvAppender, FileFormatError, PartsWriter, file_format, iter_frames, read_columns
 from .observability import observability_report
-from .online import OnlineRegistrar, RegistrationConfig, RegistrationResult, _corrected_rows, _pair_outputs, information_skipping_bad_rows
+from .online import (
+    OnlineRegistrar, RegistrationConfig, RegistrationResult, _corrected_rows, _pair_outputs, _target_positions,
+    information_skipping_bad_rows,
+)
 from .rowcheck import BadRowError, Rejection, check_frame, sync_layout
 from .state import IS_ANGLE, N_STATE, STATE_LABELS, STATE_NAMES, STATE_UNITS
 
@@ -484,15 +487,16 @@ def _emit(outputs, rows_abs, times, rows18, res, cfg, raw_stats, cor_stats, st) 
         est[f"{name}_sigma_{unit}"] = sig[:, i] * k
     est["nis"] = nis
     outputs["estimates"].append_frame(pd.DataFrame(est, columns=ESTIMATE_COLUMNS))
-    raw = _pair_outputs(rows18, cfg)
-    cor = _pair_outputs(_corrected_rows(rows18, x), cfg)
-    pos = np.concatenate([cor["p_a_ecef"], cor["p_b_ecef"], raw["Z"], cor["Z"]], axis=1)
+    raw_a, raw_b = _target_positions(rows18, cfg)
+    cor_a, cor_b = _target_positions(_corrected_rows(rows18, x), cfg)
+    raw_z, cor_z = raw_a - raw_b, cor_a - cor_b
+    pos = np.concatenate([cor_a, cor_b, raw_z, cor_z], axis=1)
     frame = pd.DataFrame(pos, columns=POSITION_COLUMNS[2:])
     frame.insert(0, "time_s", times)
     frame.insert(0, "row", rows_abs.astype(np.int64))
     outputs["positions"].append_frame(frame)
-    raw_stats.add(raw["Z"])
-    cor_stats.add(cor["Z"])
+    raw_stats.add(raw_z)
+    cor_stats.add(cor_z)
     st["nis_sum"] = st["nis_sum"] + float(np.sum(nis))
     if st["first_time"] is None:
         st["first_time"] = float(times[0])
