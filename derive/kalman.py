@@ -144,8 +144,54 @@ def _domain():
     }
 
 
+INFO_INPUTS = (
+    CasadiPort("info", (N_STATE, N_STATE), "1/rad^2, 1/m^2"),
+    CasadiPort("x", (N_STATE, 1), "rad, m"),
+    CasadiPort("row", (18, 1), "nav_a, att_a, meas_a, nav_b, att_b, meas_b (rad, m)"),
+    CasadiPort("sigma0", (6, 1), "m, rad, rad, m, rad, rad"),
+)
+INFO_OUTPUTS = (CasadiPort("info_new", (N_STATE, N_STATE), "1/rad^2, 1/m^2"),)
+
+
+def _build_information(variant: str):
+    """``info + H^T R^-1 H`` with H, R at the row corrected by a fixed estimate x: the
+    information along the estimated true geometry, for the observability report. Carried like
+    the Kalman step, so the sum over a whole run is one compiled loop."""
+
+    def build() -> ca.Function:
+        pair = _pair_function(variant)
+        info = ca.SX.sym("info", N_STATE, N_STATE)
+        x = ca.SX.sym("x", N_STATE)
+        row = ca.SX.sym("row", 18)
+        sigma0 = ca.SX.sym("sigma0", 6)
+        c = row - ca.vertcat(ca.SX.zeros(3), x[0:6], ca.SX.zeros(3), x[6:12])
+        _, H, _, R, _, _ = pair(c[0:3], c[3:6], c[6:9], c[9:12], c[12:15], c[15:18], sigma0)
+        info_new = _mirror_upper(info + H.T @ ca.solve(R, H))
+        return ca.Function(
+            f"information_step_{variant}", [info, x, row, sigma0], [info_new],
+            [p.name for p in INFO_INPUTS], [p.name for p in INFO_OUTPUTS], {"cse": True},
+        )
+
+    return build
+
+
 def specs() -> list[CasadiSpec]:
     out = []
+    for variant in ("standard", "paper"):
+        domain = _domain()
+        out.append(
+            CasadiSpec(
+                name=f"information_step_{variant}",
+                doc=(
+                    f"Fisher information accumulation, T variant '{variant}': info_new = info + H^T R^-1 H, "
+                    "H and R at the row corrected by the fixed estimate x. Input info carried from output info_new."
+                ),
+                inputs=INFO_INPUTS,
+                outputs=INFO_OUTPUTS,
+                builder=_build_information(variant),
+                domain={"info": domain["info"], "x": domain["x"], "row": domain["row"], "sigma0": domain["sigma0"]},
+            )
+        )
     for variant in ("standard", "paper"):
         for lin in LINEARIZATIONS:
             out.append(

@@ -446,6 +446,26 @@ def information_skipping_bad_rows(H: np.ndarray, R: np.ndarray) -> tuple[np.ndar
 
 
 
+def information_at_estimate(rows: np.ndarray, x: np.ndarray, config: RegistrationConfig) -> tuple[np.ndarray, int]:
+    """sum_k H_k^T R_k^-1 H_k with H, R at the rows (K, 18) corrected by one estimate x (12,).
+
+    One compiled loop of the generated ``information_step``. If any row makes the sum
+    non-finite (possible only for extreme accepted values), the NumPy path recomputes it and
+    leaves such rows out. Returns (J, rows used).
+    """
+    if len(rows) == 0:
+        return np.zeros((N_STATE, N_STATE)), 0
+    step = _loader.get(f"information_step_{config.t_variant}")
+    out = step.scan(len(rows), {"info": "info_new"},
+                    {"info": np.zeros((N_STATE, N_STATE)), "x": np.asarray(x, dtype=float), "row": rows,
+                     "sigma0": np.array(config.sigma0)}, keep_last=("info_new",))
+    J = out["info_new"]
+    if np.isfinite(J).all() and np.abs(J).max() < 1e200:
+        return J, len(rows)
+    pair = _pair_outputs(_corrected_rows(rows, np.broadcast_to(x, (len(rows), N_STATE))), config)
+    return information_skipping_bad_rows(pair["H"], pair["R"])
+
+
 def _corrected_rows(rows: np.ndarray, estimates: np.ndarray) -> np.ndarray:
     corr = np.zeros_like(rows)
     corr[:, 3:9] = estimates[:, 0:6]
@@ -511,8 +531,7 @@ def register(data: Mapping, config: RegistrationConfig | None = None, *, progres
 
     raw_a, raw_b = _target_positions(rows, config)
     corrected_a, corrected_b = _target_positions(_corrected_rows(rows, estimates), config)
-    at_final = _pair_outputs(_corrected_rows(rows, np.broadcast_to(estimates[-1], estimates.shape)), config)
-    info_final, _ = information_skipping_bad_rows(at_final["H"], at_final["R"])
+    info_final, _ = information_at_estimate(rows, estimates[-1], config)
     report = observability_report(info_final, np.array(config.prior_sigma), STATE_NAMES, STATE_LABELS, STATE_UNITS)
     return RegistrationResult(
         config=config, time=time, estimates=estimates, covariances=covs, innovations=nu,

@@ -45,8 +45,7 @@ from .checkpoint import CheckpointError, load_checkpoint, save_checkpoint
 from .io import SYNC_COLUMNS, CsvAppender, FileFormatError, PartsWriter, file_format, iter_frames, read_columns
 from .observability import observability_report
 from .online import (
-    OnlineRegistrar, RegistrationConfig, RegistrationResult, _corrected_rows, _pair_outputs, _target_positions,
-    information_skipping_bad_rows,
+    OnlineRegistrar, RegistrationConfig, RegistrationResult, _corrected_rows, _target_positions, information_at_estimate,
 )
 from .rowcheck import BadRowError, Rejection, check_frame, sync_layout
 from .state import IS_ANGLE, N_STATE, STATE_LABELS, STATE_NAMES, STATE_UNITS
@@ -451,8 +450,7 @@ def _run_filter(path: Path, total_rows, form, fingerprint, ckpt, options: RunOpt
                         acc = np.array([i for i in acc if int(first + i) not in filter_rejected], dtype=np.int64)
                     if len(acc):
                         rows18 = blk.values[acc, 1:]
-                        pair = _pair_outputs(_corrected_rows(rows18, np.broadcast_to(x_final, (len(acc), N_STATE))), cfg)
-                        J, used = information_skipping_bad_rows(pair["H"], pair["R"])
+                        J, used = information_at_estimate(np.ascontiguousarray(rows18), x_final, cfg)
                         st["obs_info"] = st["obs_info"] + J
                         st["obs_used"] += used
                     st["obs_rows_done"] = first + blk.n_rows

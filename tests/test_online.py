@@ -226,3 +226,22 @@ def test_information_matrix_equals_per_row_solves():
     J = information_matrix(H, R)
     assert np.allclose(J, ref, rtol=1e-9, atol=1e-12 * np.abs(ref).max())
     assert np.array_equal(J, J.T)
+
+
+def test_information_at_estimate_compiled_equals_numpy_and_skips_extreme_rows():
+    from registration.online import _corrected_rows, _pair_outputs, information_at_estimate, information_skipping_bad_rows
+
+    sc = paper_scenario(seed=2, n_steps=80)
+    cfg = RegistrationConfig(sigma0=tuple(sc.sigma0))
+    _, rows = validate_data(sc.data)
+    x = sc.truth_state
+    pair = _pair_outputs(_corrected_rows(rows, np.broadcast_to(x, (len(rows), 12))), cfg)
+    ref, _ = information_skipping_bad_rows(pair["H"], pair["R"])
+    J, used = information_at_estimate(rows, x, cfg)
+    assert used == 80 and np.allclose(J, ref, rtol=1e-10, atol=1e-12 * np.abs(ref).max())
+    bad = rows.copy()
+    bad[5, 7] = np.nan  # a bearing that slipped through: its term is not finite
+    J_bad, used_bad = information_at_estimate(bad, x, cfg)
+    assert used_bad == 79 and np.isfinite(J_bad).all()
+    keep = np.arange(80) != 5
+    assert np.allclose(J_bad, information_at_estimate(rows[keep], x, cfg)[0], rtol=1e-10)
