@@ -132,7 +132,8 @@ def _c_library():
 
             def compile_one(src_obj):
                 src, obj = src_obj
-                return subprocess.run([cc, "-O2", "-fPIC", "-c", src, "-o", obj], capture_output=True, text=True)
+                flags = [f for f in _CFLAGS if f != "-shared"]  # the same flags as in the cache key
+                return subprocess.run([cc, *flags, "-c", src, "-o", obj], capture_output=True, text=True)
 
             from concurrent.futures import ThreadPoolExecutor
 
