@@ -13,11 +13,16 @@ dq_A, de_A, dC_B, ..., de_B] (rad and m), covariance P (12x12), random-walk proc
   ``R_i = M_i R0_i M_i^T``; ``p`` is projected back into each radar's plot ``t_i``
   (ecef2plot with the corrected attitude), and the constraint ``X_A(c_A) - X_B(c_B) = 0`` of
   the corrected plots c is linearised there: ``nu = Z(t) + M(t) (c - t)`` (bearing
-  differences wrapped), ``H = H(t)``, ``R = R(t)``. This is the Gauss-Newton linearisation
-  point of the joint maximum-likelihood problem (target and registration errors): unlike the
-  raw or corrected plots, t carries only the fused position's small error, so H no longer
-  shares the angle noise of the innovation (an errors-in-variables bias of order sigma^2 that
-  the weakly determined range biases amplify; see README, issue 3);
+  differences wrapped; Z(t) = 0 up to rounding), ``H = H(t)``, ``R = R(t)``. The plots t are
+  the maximum-likelihood noise-free plots given the current registration estimate (to first
+  order, ``c - t = R0 M^T R^-1 Z(c)``: a Gauss-Helmert linearisation point). They carry only
+  the fused position's small error, so H no longer shares the angle noise of the innovation:
+  that correlation is an errors-in-variables bias of order sigma^2 which the weakly determined
+  range biases amplify to about 1 sigma at the paper's 0.5 deg noise (README, issue 3). The
+  point ignores the registration estimate's own uncertainty (a joint MAP step would use
+  ``S = H P H^T + R`` in place of R, or iterate): while the misregistration is still large it
+  is attributed to noise, which is why large errors with sharp sensors or very wide priors
+  are handled worse than by ``relinearized`` (README);
 * ``R = M R0 M^T``, ``S = H P- H^T + R``, gain by a linear solve (no explicit inverse),
   ``K = P- H^T S^-1``; Joseph-form covariance update, symmetric by construction (upper triangle
   mirrored), which keeps P positive definite; normalised innovation squared ``nis = nu^T S^-1 nu``;

@@ -43,8 +43,10 @@ class RegistrationConfig:
         covariance of the last ``q_window`` estimates, plus the fixed Q as a floor).
     linearization: ``paper`` (H, Z at the raw measurements, as printed), ``relinearized`` (at
         the measurements corrected by the current estimate: an extended Kalman filter) or
-        ``fitted`` (at the plots each radar would see of the fused target position, the
-        Gauss-Newton point of the joint maximum-likelihood problem; derive/kalman.py).
+        ``fitted`` (the default: at the plots each radar would see of the fused target
+        position, the maximum-likelihood noise-free plots given the current estimate; removes
+        the paper filter's range-bias errors at 0.5 deg noise, but needs a prior within the
+        model's linear range; derive/kalman.py and the README).
     t_variant: ``standard`` (orthonormal ENU->ECEF) or ``paper`` (eq. 4 as printed).
     """
 

@@ -57,8 +57,24 @@ def _fitted_reference(x, P, Q, row, sigma0, variant="standard"):
     return x + K @ nu, I_KH @ P_pred @ I_KH.T + K @ R @ K.T, nu, S
 
 
+def _row_seen_near_the_stern(row: np.ndarray) -> np.ndarray:
+    """The same geometry with radar A's bearing just above -pi: heading and bearing of a
+    level ship enter only as C + q, so turning the deck by the difference keeps the target's
+    position. The fused target's plot lies ~0.03 rad further round, beyond -pi, where
+    ecef2plot reports it near +pi: the plot difference must be wrapped."""
+    out = row.copy()
+    q_new = -np.pi + 1e-2
+    out[3] = row[3] + row[7] - q_new
+    out[7] = q_new
+    return out
+
+
 @pytest.mark.parametrize("variant", ["standard", "paper"])
 def test_fitted_step_equals_numpy_composition(variant):
+    """The generated step against an independent composition (information-form fusion) of the
+    generated pair model and ecef2plot. It shares the innovation formula, so it checks the
+    composition (argument order, fusion, signs, wrapping), not the idea: the Monte Carlo test
+    below checks that."""
     scenario = paper_scenario(seed=4, n_steps=40)
     _, rows = validate_data(scenario.data)
     cfg = RegistrationConfig(sigma0=tuple(scenario.sigma0))
@@ -70,18 +86,23 @@ def test_fitted_step_equals_numpy_composition(variant):
         P = np.diag(np.array(cfg.prior_sigma) ** 2)
         Q = np.diag(np.array(cfg.q_sigma) ** 2)
         row = rows[k].copy()
-        if k == 13:  # a bearing near +-pi: the plot differences must wrap
-            row[7] = np.pi - 1e-4
+        if k == 13:
+            row = _row_seen_near_the_stern(row)
+            x[4] = 0.0  # corrected bearing -pi + 1e-2
         out = dict(zip(step.output_names, (np.squeeze(v) for v in step(x, P, np.zeros((12, 12)), Q, row, sigma0))))
         x_ref, P_ref, nu_ref, S_ref = _fitted_reference(x, P, Q, row, sigma0, variant)
+        assert np.abs(out["nu"]).max() < 5e3  # metres: a sane innovation, no 2 pi slip
         assert np.allclose(out["nu"], nu_ref, rtol=1e-7, atol=1e-6), (out["nu"], nu_ref)
         assert np.allclose(out["S"], S_ref, rtol=1e-9)
         assert np.allclose(out["x_new"], x_ref, rtol=1e-7, atol=1e-10 * np.abs(x_ref).max())
         assert np.allclose(out["P_new"], P_ref, rtol=1e-7, atol=1e-9 * np.abs(P_ref).max())
 
 
-def test_fitted_equals_relinearized_without_noise_in_the_limit():
-    """With noise off and the truth as estimate, every linearisation point is the true plot."""
+def test_fitted_linearisation_point_is_the_true_plot_without_noise():
+    """With noise off and the truth as estimate, the fused target back-projects onto the
+    corrected plots (ecef2plot inverts plot2ecef), so the fitted step linearises exactly where
+    the relinearized one does: zero innovation, the same S. (It cannot tell a wrong innovation
+    formula apart, since c - t = 0 here; the Monte Carlo test below can.)"""
     sc = paper_scenario(n_steps=5, angle_sigma=0.0, range_sigma=0.0)
     _, rows = validate_data(sc.data)
     sigma0 = np.array([50.0, 0.0087, 0.0087] * 2)
@@ -97,8 +118,10 @@ def _bias_z_scores(linearization: str, runs: int = 40):
     in standard errors; and the NEES summed over runs with its degrees of freedom.
 
     A Bayesian filter with a zero-mean prior is pulled towards zero by -P P0^-1 x_true (the
-    linear-Gaussian posterior mean); that pull is expected and is taken out before testing
-    for a bias of the linearisation itself.
+    linear-Gaussian posterior mean; exact for Q = 0, and Q is negligible here: 300 steps of
+    1e-6 rad and 1 cm); that pull is expected and is taken out before testing for a bias of
+    the linearisation itself. The seeds are those of the development runs; the paper filter's
+    failure of the same test shows its power (about 0.5 sigma of bias over 40 runs).
     """
     errs, nees = [], 0.0
     for seed in range(runs):
