@@ -8,21 +8,18 @@ dq_A, de_A, dC_B, ..., de_B] (rad and m), covariance P (12x12), random-walk proc
 * linearisation ``paper``: Z, H, M at the raw measurements, innovation ``nu = Z - H x-``;
   ``relinearized``: Z, H, M at the measurements corrected by x- (attitude and plot minus the
   estimated errors), innovation ``nu = Z(corrected)`` (an extended Kalman filter step);
-  ``fitted``: H, M at the plots each radar would see of the fused target. The corrected
-  positions X_A, X_B are fused, ``p = X_A + R_A (R_A + R_B)^-1 (X_B - X_A)`` with
-  ``R_i = M_i R0_i M_i^T``; ``p`` is projected back into each radar's plot ``t_i``
-  (ecef2plot with the corrected attitude), and the constraint ``X_A(c_A) - X_B(c_B) = 0`` of
-  the corrected plots c is linearised there: ``nu = Z(t) + M(t) (c - t)`` (bearing
-  differences wrapped; Z(t) = 0 up to rounding), ``H = H(t)``, ``R = R(t)``. The plots t are
-  the maximum-likelihood noise-free plots given the current registration estimate (to first
-  order, ``c - t = R0 M^T R^-1 Z(c)``: a Gauss-Helmert linearisation point). They carry only
-  the fused position's small error, so H no longer shares the angle noise of the innovation:
-  that correlation is an errors-in-variables bias of order sigma^2 which the weakly determined
-  range biases amplify to about 1 sigma at the paper's 0.5 deg noise (README, issue 3). The
-  point ignores the registration estimate's own uncertainty (a joint MAP step would use
-  ``S = H P H^T + R`` in place of R, or iterate): while the misregistration is still large it
-  is attributed to noise, which is why large errors with sharp sensors or very wide priors
-  are handled worse than by ``relinearized`` (README);
+  ``fitted``: H, M at the fitted plots t: the maximum a posteriori estimate of the noise-free
+  plots given this row and the prior N(x-, P-) of the registration errors. With Z, H, M, R
+  at the corrected plots c, ``S = H P- H^T + R`` and ``v = R0 M^T S^-1 Z(c)`` (the MAP noise
+  of the linearised model ``Z(c) = H (x - x-) + M v``), ``t = c - v`` (plots only; the
+  attitude is not noisy). The constraint ``X_A(c_A) - X_B(c_B) = 0`` is linearised there:
+  ``nu = Z(t) + M(t) (c - t)`` (bearing differences wrapped), ``H = H(t)``, ``R = R(t)``.
+  Once P is small, S ~ R and t is the plot pair of the fused target (the two radars' positions
+  weighted by their covariances), which carries only the fused position's small error: H no
+  longer shares the angle noise of the innovation. That correlation is an errors-in-variables
+  bias of order sigma^2 which the weakly determined range biases amplify to about 1 sigma at
+  the paper's 0.5 deg noise (README, issue 3). While P is large, S >> R and t stays near c
+  (the ``relinearized`` point): a large misregistration is not mistaken for noise;
 * ``R = M R0 M^T``, ``S = H P- H^T + R``, gain by a linear solve (no explicit inverse),
   ``K = P- H^T S^-1``; Joseph-form covariance update, symmetric by construction (upper triangle
   mirrored), which keeps P positive definite; normalised innovation squared ``nis = nu^T S^-1 nu``;
@@ -59,29 +56,9 @@ OUTPUTS = (
 )
 
 
-def _pair_function(variant: str, name: str = "pseudo_measurement") -> ca.Function:
-    spec = next(s for s in pair_specs() if s.name == f"{name}_{variant}")
+def _pair_function(variant: str) -> ca.Function:
+    spec = next(s for s in pair_specs() if s.name == f"pseudo_measurement_{variant}")
     return to_casadi_function(spec)
-
-
-def _wrap(angle: ca.SX) -> ca.SX:
-    """Angle difference into (-pi, pi]."""
-    return ca.atan2(ca.sin(angle), ca.cos(angle))
-
-
-def _fitted_linearisation(pair: ca.Function, ecef2plot: ca.Function, c: ca.SX, sigma0: ca.SX):
-    """Innovation, H and R linearised at the plots of the fused target (module docstring)."""
-    _, _, M, _, p_a, p_b = pair(c[0:3], c[3:6], c[6:9], c[9:12], c[12:15], c[15:18], sigma0)
-    M_a, M_b = M[:, 0:3], -M[:, 3:6]
-    R_a = M_a @ ca.diag(sigma0[0:3] ** 2) @ M_a.T
-    R_b = M_b @ ca.diag(sigma0[3:6] ** 2) @ M_b.T
-    p_fused = p_a + R_a @ ca.solve(R_a + R_b, p_b - p_a)
-    t_a = ecef2plot(p_fused, c[0], c[1], c[2], c[3], c[4], c[5])
-    t_b = ecef2plot(p_fused, c[9], c[10], c[11], c[12], c[13], c[14])
-    Z, H, M, R, _, _ = pair(c[0:3], c[3:6], t_a, c[9:12], c[12:15], t_b, sigma0)
-    d_a, d_b = c[6:9] - t_a, c[15:18] - t_b
-    d = ca.vertcat(d_a[0], _wrap(d_a[1]), d_a[2], d_b[0], _wrap(d_b[1]), d_b[2])
-    return Z + M @ d, H, R
 
 
 def _mirror_upper(A: ca.SX) -> ca.SX:
@@ -94,6 +71,16 @@ def _mirror_upper(A: ca.SX) -> ca.SX:
             out[i, j] = A[i, j]
             out[j, i] = A[i, j]
     return out
+
+
+def _fitted_linearisation(pair: ca.Function, c: ca.SX, P_pred: ca.SX, sigma0: ca.SX):
+    """Innovation, H and R at the MAP plots t = c - R0 M^T S^-1 Z(c) (module docstring)."""
+    Z, H, M, R, _, _ = pair(c[0:3], c[3:6], c[6:9], c[9:12], c[12:15], c[15:18], sigma0)
+    S = H @ P_pred @ H.T + R
+    v = ca.diag(sigma0**2) @ M.T @ ca.solve(0.5 * (S + S.T), Z)
+    t_a, t_b = c[6:9] - v[0:3], c[15:18] - v[3:6]
+    Z, H, M, R, _, _ = pair(c[0:3], c[3:6], t_a, c[9:12], c[12:15], t_b, sigma0)
+    return Z + M @ v, H, R
 
 
 def _build(variant: str, linearization: str):
@@ -110,7 +97,7 @@ def _build(variant: str, linearization: str):
         # measurements and attitudes corrected by the current estimate
         corrected = row - ca.vertcat(ca.SX.zeros(3), x[0:6], ca.SX.zeros(3), x[6:12])
         if linearization == "fitted":
-            nu, H, R = _fitted_linearisation(pair, _pair_function(variant, "ecef2plot"), corrected, sigma0)
+            nu, H, R = _fitted_linearisation(pair, corrected, P_pred, sigma0)
         else:
             at = row if linearization == "paper" else corrected
             Z, H, M, R, _, _ = pair(at[0:3], at[3:6], at[6:9], at[9:12], at[12:15], at[15:18], sigma0)

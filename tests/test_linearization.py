@@ -4,8 +4,9 @@ range-bias defect of the ``paper`` linearisation that it removes.
 Background: with 0.5 deg angle noise, H and R evaluated at the raw (or corrected) plots share
 the angle noise of the innovation. That errors-in-variables effect is of order sigma^2, and the
 weakly determined range biases amplify it: the paper's filter ends about 1 sigma off in the
-range biases and its NEES says it is optimistic. The fitted filter linearises at the plots of
-the fused target, which carry only the fused position's error.
+range biases and its NEES says it is optimistic. The fitted filter linearises at the MAP
+noise-free plots given the row and the registration prior; once P is small they are the plots
+of the fused target, which carry only the fused position's error.
 """
 
 from __future__ import annotations
@@ -24,33 +25,33 @@ T_ID[0, 3] = T_ID[1, 9] = 1.0
 T_ID[2, [0, 4]] = T_ID[3, [6, 10]] = 1.0
 
 
-def _wrap(a):
-    return np.angle(np.exp(1j * a))
+def _map_plots(c, P_pred, sigma0, variant="standard"):
+    """The MAP noise-free plots given the corrected row c and the prior N(x-, P-), by solving
+    the KKT system of  min v^T R0^-1 v + dx^T P^-1 dx  s.t.  Z(c) = H dx + M v  (other algebra
+    than the generated step's v = R0 M^T S^-1 Z). Returns (t_a, t_b, v, Z(c))."""
+    pair = _loader.get(f"pseudo_measurement_{variant}")
+    Z, H, M, _, _, _ = (np.squeeze(v) for v in pair(*np.split(c, 6), sigma0))
+    n, m = 12, 6
+    K = np.zeros((n + m + 3, n + m + 3))
+    K[:n, :n] = np.linalg.inv(P_pred)
+    K[n:n + m, n:n + m] = np.diag(1.0 / sigma0**2)
+    K[:n, n + m:], K[n:n + m, n + m:] = H.T, M.T
+    K[n + m:, :n], K[n + m:, n:n + m] = H, M
+    sol = np.linalg.solve(K, np.concatenate([np.zeros(n + m), Z]))
+    v = sol[n:n + m]
+    return c[6:9] - v[0:3], c[15:18] - v[3:6], v, Z
 
 
 def _fitted_reference(x, P, Q, row, sigma0, variant="standard"):
-    """The fitted step composed in NumPy from the generated pair model and ecef2plot.
-
-    The fusion is written in information form here ((W_A + W_B)^-1 (W_A X_A + W_B X_B)),
-    the generated step uses X_A + R_A (R_A + R_B)^-1 (X_B - X_A): same point, other algebra.
-    """
+    """The fitted step composed in NumPy from the generated pair model (MAP plots by KKT)."""
     pair = _loader.get(f"pseudo_measurement_{variant}")
-    ecef2plot = _loader.get(f"ecef2plot_{variant}")
     c = row - np.concatenate([np.zeros(3), x[0:6], np.zeros(3), x[6:12]])
-    _, _, M, _, p_a, p_b = (np.squeeze(v) for v in pair(*np.split(c, 6), sigma0))
-    W_a = np.linalg.inv(M[:, 0:3] @ np.diag(sigma0[0:3] ** 2) @ M[:, 0:3].T)
-    W_b = np.linalg.inv(M[:, 3:6] @ np.diag(sigma0[3:6] ** 2) @ M[:, 3:6].T)
-    p = np.linalg.solve(W_a + W_b, W_a @ p_a + W_b @ p_b)
-    t_a = np.squeeze(ecef2plot(p, *c[0:6]))
-    t_b = np.squeeze(ecef2plot(p, *c[9:15]))
+    P_pred = P + Q
+    t_a, t_b, v, _ = _map_plots(c, P_pred, sigma0, variant)
     fitted = c.copy()
     fitted[6:9], fitted[15:18] = t_a, t_b
-    Z, H, M, R, q_a, q_b = (np.squeeze(v) for v in pair(*np.split(fitted, 6), sigma0))
-    assert np.allclose(q_a, p, atol=1e-6) and np.allclose(q_b, p, atol=1e-6)  # both plots see one point
-    d = np.concatenate([c[6:9] - t_a, c[15:18] - t_b])
-    d[[1, 4]] = _wrap(d[[1, 4]])
-    nu = Z + M @ d
-    P_pred = P + Q
+    Z, H, M, R, _, _ = (np.squeeze(u) for u in pair(*np.split(fitted, 6), sigma0))
+    nu = Z + M @ v
     S = H @ P_pred @ H.T + R
     K = np.linalg.solve(S, H @ P_pred).T
     I_KH = np.eye(12) - K @ H
@@ -60,10 +61,10 @@ def _fitted_reference(x, P, Q, row, sigma0, variant="standard"):
 def _row_seen_near_the_stern(row: np.ndarray) -> np.ndarray:
     """The same geometry with radar A's bearing just above -pi: heading and bearing of a
     level ship enter only as C + q, so turning the deck by the difference keeps the target's
-    position. The fused target's plot lies ~0.03 rad further round, beyond -pi, where
-    ecef2plot reports it near +pi: the plot difference must be wrapped."""
+    position. The fitted bearing t = c - v may then lie beyond -pi; it never passes through
+    an atan2, so nothing may jump by 2 pi."""
     out = row.copy()
-    q_new = -np.pi + 1e-2
+    q_new = -np.pi + 1e-3
     out[3] = row[3] + row[7] - q_new
     out[7] = q_new
     return out
@@ -71,9 +72,9 @@ def _row_seen_near_the_stern(row: np.ndarray) -> np.ndarray:
 
 @pytest.mark.parametrize("variant", ["standard", "paper"])
 def test_fitted_step_equals_numpy_composition(variant):
-    """The generated step against an independent composition (information-form fusion) of the
-    generated pair model and ecef2plot. It shares the innovation formula, so it checks the
-    composition (argument order, fusion, signs, wrapping), not the idea: the Monte Carlo test
+    """The generated step against an independent composition (the MAP plots from a KKT system)
+    of the generated pair model. It shares the innovation formula, so it checks the
+    composition (argument order, signs, the MAP point), not the idea: the Monte Carlo test
     below checks that."""
     scenario = paper_scenario(seed=4, n_steps=40)
     _, rows = validate_data(scenario.data)
@@ -88,7 +89,7 @@ def test_fitted_step_equals_numpy_composition(variant):
         row = rows[k].copy()
         if k == 13:
             row = _row_seen_near_the_stern(row)
-            x[4] = 0.0  # corrected bearing -pi + 1e-2
+            x[4] = 0.0  # corrected bearing -pi + 1e-3
         out = dict(zip(step.output_names, (np.squeeze(v) for v in step(x, P, np.zeros((12, 12)), Q, row, sigma0))))
         x_ref, P_ref, nu_ref, S_ref = _fitted_reference(x, P, Q, row, sigma0, variant)
         assert np.abs(out["nu"]).max() < 5e3  # metres: a sane innovation, no 2 pi slip
@@ -98,11 +99,9 @@ def test_fitted_step_equals_numpy_composition(variant):
         assert np.allclose(out["P_new"], P_ref, rtol=1e-7, atol=1e-9 * np.abs(P_ref).max())
 
 
-def test_fitted_linearisation_point_is_the_true_plot_without_noise():
-    """With noise off and the truth as estimate, the fused target back-projects onto the
-    corrected plots (ecef2plot inverts plot2ecef), so the fitted step linearises exactly where
-    the relinearized one does: zero innovation, the same S. (It cannot tell a wrong innovation
-    formula apart, since c - t = 0 here; the Monte Carlo test below can.)"""
+def test_fitted_point_is_the_true_plot_without_noise():
+    """With noise off and the truth as estimate, Z(c) = 0, so v = 0 and the fitted step
+    linearises exactly where the relinearized one does: zero innovation, the same S."""
     sc = paper_scenario(n_steps=5, angle_sigma=0.0, range_sigma=0.0)
     _, rows = validate_data(sc.data)
     sigma0 = np.array([50.0, 0.0087, 0.0087] * 2)
@@ -111,6 +110,29 @@ def test_fitted_linearisation_point_is_the_true_plot_without_noise():
     b = dict(zip(["x", "P", "info", "nu", "S", "nis"], _loader.get("kalman_step_relinearized_standard")(*args)))
     assert np.abs(np.squeeze(a["nu"])).max() < 1e-5  # metres: the truth explains the data exactly
     assert np.allclose(np.squeeze(a["S"]), np.squeeze(b["S"]), rtol=1e-6)
+
+
+def test_fitted_point_moves_from_the_corrected_plots_to_the_fused_target_as_p_shrinks():
+    """Large P: the row's disagreement is put on the registration, t ~ c. Small P: it is put on
+    the noise, and t is the plot pair of one fused target (X_A(t_a) = X_B(t_b) up to the
+    second-order terms of the linearisation), which is what removes the angle noise from H."""
+    sc = paper_scenario(seed=1, n_steps=20)
+    _, rows = validate_data(sc.data)
+    cfg = RegistrationConfig(sigma0=tuple(sc.sigma0))
+    sigma0 = np.array(cfg.sigma0)
+    c = rows[10] - np.concatenate([np.zeros(3), sc.truth_state[0:6], np.zeros(3), sc.truth_state[6:12]])
+    pair = _loader.get("pseudo_measurement_standard")
+    for scale, expect_fused in ((1e-8, True), (1e4, False)):
+        P = np.diag(np.square(cfg.prior_sigma)) * scale
+        t_a, t_b, v, Z = _map_plots(c, P, sigma0)
+        fitted = c.copy()
+        fitted[6:9], fitted[15:18] = t_a, t_b
+        Z_t = np.squeeze(pair(*np.split(fitted, 6), sigma0)[0])
+        if expect_fused:  # the two radars' plots of one point: Z(t) ~ 0
+            assert np.linalg.norm(Z_t) < 0.01 * np.linalg.norm(Z), (Z_t, Z)
+        else:  # t ~ c: hardly any of Z is put on the noise
+            assert np.abs(v[[1, 2, 4, 5]]).max() < 0.01 * np.abs(sigma0[[1, 2, 4, 5]]).max()
+            assert np.linalg.norm(Z_t) > 0.9 * np.linalg.norm(Z)
 
 
 def _bias_z_scores(linearization: str, runs: int = 40):
