@@ -101,8 +101,9 @@ def test_paper_and_relinearized_agree_for_small_biases_and_differ_for_large():
                            heading_error=np.radians(0.002), level_error=np.radians(0.001), **QUIET)
     cfg = dict(sigma0=(1.0, 1e-4, 1e-4) * 2)
     a = register(small.data, RegistrationConfig(linearization="paper", **cfg))
-    b = register(small.data, RegistrationConfig(linearization="relinearized", **cfg))
-    assert (np.abs(a.final - b.final) < 0.01 * a.final_sigma).all(), np.abs(a.final - b.final) / a.final_sigma
+    for lin in ("relinearized", "fitted"):
+        b = register(small.data, RegistrationConfig(linearization=lin, **cfg))
+        assert (np.abs(a.final - b.final) < 0.01 * a.final_sigma).all(), (lin, np.abs(a.final - b.final) / a.final_sigma)
     # Large errors: the paper linearises at the raw measurements, so second-order terms
     # (range x angle error^2 ~ 60 km x (3 deg)^2 / 2 ~ 80 m) stay in its residual.
     large = paper_scenario(ship_motion=ShipMotion(), range_bias=5000.0, angle_bias=np.radians(3.0),
@@ -113,6 +114,11 @@ def test_paper_and_relinearized_agree_for_small_biases_and_differ_for_large():
     res_a = np.array(a.statistics()["after"]["std"])
     res_b = np.array(b.statistics()["after"]["std"])
     assert np.linalg.norm(res_b) < 0.7 * np.linalg.norm(res_a), (res_a, res_b)
+    # fitted: while P is large its linearisation point stays at the corrected plots, so it
+    # removes the second-order residuals like relinearized (a fused-target point would not)
+    c = register(large.data, RegistrationConfig(linearization="fitted", prior_sigma=prior * 2, **cfg))
+    res_c = np.array(c.statistics()["after"]["std"])
+    assert np.linalg.norm(res_c) < 0.7 * np.linalg.norm(res_a), (res_a, res_c)
 
 
 def test_streaming_update_equals_batch():
