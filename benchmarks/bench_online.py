@@ -13,7 +13,7 @@ those rows (times renumbered so they increase) to ``--long`` rows. Filters, both
 
 * ``RegistrationConfig(linearization="paper")``: Z, H, M at the raw measurements;
 * ``RegistrationConfig(linearization="fitted")``, the default of ``RegistrationConfig()``:
-  H, R at the plots each radar would see of the fused target (derive/kalman.py).
+  H, R at the MAP noise-free plots given the row and the current estimate (derive/kalman.py).
 
 Contenders per filter, all at the same rows, best of ``--repeat`` interleaved rounds after one
 warm-up (for ``register()`` and the NumPy baselines the correctness check just before is it):
@@ -25,14 +25,11 @@ warm-up (for ``register()`` and the NumPy baselines the correctness check just b
    first ``--stream-rows`` rows (it is the slow path; per-step figures are per row it saw).
 3. The baseline: the SAME filter in plain NumPy, written here (class ``NumpyFilter``). The model
    is never re-derived: only the generated ``pseudo_measurement_standard`` (Z, H, M, R, the two
-   ECEF positions) and, for ``fitted``, ``ecef2plot_standard`` are called; everything else is
-   NumPy. Per step: the linearisation, predict, gain by ``numpy.linalg.solve``, Joseph update,
+   ECEF positions) is called; everything else is NumPy. Per step: the linearisation, predict, gain by ``numpy.linalg.solve``, Joseph update,
    symmetrisation, information and NIS, storing every estimate and covariance like
    ``register()`` does. ``paper``: R = M R0 M^T and nu = Z - H x. ``fitted``: correct the row
-   by x, evaluate the pair model there, fuse the two positions
-   ``p = X_A + R_A (R_A + R_B)^-1 (X_B - X_A)`` with ``R_i = M_i R0_i M_i^T``, project p into
-   each radar's plot t_i by ecef2plot, evaluate the pair model with the plots replaced by t_i
-   (Z, H, M, R) and take nu = Z + M (c - t) with the bearing differences wrapped. Flavours:
+   by x, evaluate the pair model there, S = H P- H^T + R, the MAP noise v = R0 M^T S^-1 Z,
+   fitted plots t = c - v, evaluate the pair model at t (Z, H, M, R) and take nu = Z + M v. Flavours:
    ``numpy (per-row model)`` calls the generated functions once per row through their
    single-point fast path (``GeneratedFunction.bind()``: preallocated buffers, one ctypes call),
    as a NumPy user stepping a filter would; ``numpy (model vectorised)`` (``paper`` only)
@@ -92,15 +89,14 @@ def rows_of(data: dict) -> np.ndarray:
 # --------------------------------------------------------------------------- the NumPy baseline
 class NumpyFilter:
     """The registration filter of derive/kalman.py in plain NumPy: linearisation ``paper`` or
-    ``fitted``, fixed Q. Only the generated pair model and ecef2plot are used; the model is
-    never re-derived, and all the filter algebra is written out here."""
+    ``fitted``, fixed Q. Only the generated pair model is used; the model is never re-derived,
+    and all the filter algebra is written out here."""
 
     def __init__(self, config: RegistrationConfig):
         if config.linearization not in ("paper", "fitted") or config.q_mode != "fixed":
             raise ValueError("the baseline implements linearization 'paper' or 'fitted' with a fixed Q")
         self.linearization = config.linearization
         self.model = _loader.get(f"pseudo_measurement_{config.t_variant}")
-        self.ecef2plot = _loader.get(f"ecef2plot_{config.t_variant}")
         self.sigma0 = np.array(config.sigma0)
         self.R0 = np.diag(np.square(self.sigma0))
         self.var_a, self.var_b = np.square(self.sigma0[0:3]), np.square(self.sigma0[3:6])
@@ -119,25 +115,20 @@ class NumpyFilter:
             rows[:, 0:3], rows[:, 3:6], rows[:, 6:9], rows[:, 9:12], rows[:, 12:15], rows[:, 15:18], self.sigma0)))
         return out["Z"], out["H"], out["M"]
 
-    def fitted_row(self, x: np.ndarray, row: np.ndarray, pair, to_plot):
+    def fitted_row(self, x: np.ndarray, P_pred: np.ndarray, row: np.ndarray, pair):
         """Innovation nu (3,), H (3, 12), R (3, 3) of the fitted linearisation for one row.
 
-        ``pair`` and ``to_plot`` are single-point callers of the generated pseudo-measurement
-        and ecef2plot. Same point as derive/kalman.py ``_fitted_linearisation``, written here."""
+        ``pair`` is a single-point caller of the generated pseudo-measurement. Same point as
+        derive/kalman.py ``_fitted_linearisation``, written here."""
         c = row.copy()                                   # corrected row
         c[3:9] -= x[0:6]
         c[12:18] -= x[6:12]
-        _, _, M, _, p_a, p_b = pair(c[0:3], c[3:6], c[6:9], c[9:12], c[12:15], c[15:18], self.sigma0)
-        M_a, M_b = M[:, 0:3], -M[:, 3:6]
-        R_a = (M_a * self.var_a) @ M_a.T                 # M_a diag(sigma0_a^2) M_a^T
-        R_b = (M_b * self.var_b) @ M_b.T
-        p = p_a + R_a @ np.linalg.solve(R_a + R_b, p_b - p_a)   # fused target
-        (t_a,) = to_plot(p, c[0], c[1], c[2], c[3], c[4], c[5])
-        (t_b,) = to_plot(p, c[9], c[10], c[11], c[12], c[13], c[14])
+        Z, H, M, R, _, _ = pair(c[0:3], c[3:6], c[6:9], c[9:12], c[12:15], c[15:18], self.sigma0)
+        S = H @ P_pred @ H.T + R
+        v = (self.R0 @ M.T) @ np.linalg.solve(0.5 * (S + S.T), Z)   # MAP noise of the plots
+        t_a, t_b = c[6:9] - v[0:3], c[15:18] - v[3:6]
         Z, H, M, R, _, _ = pair(c[0:3], c[3:6], t_a, c[9:12], c[12:15], t_b, self.sigma0)
-        d = np.concatenate([c[6:9] - t_a, c[15:18] - t_b])
-        d[1::3] = np.arctan2(np.sin(d[1::3]), np.cos(d[1::3]))  # bearings (d[1], d[4]) into (-pi, pi]
-        return Z + M @ d, H, R
+        return Z + M @ v, H, R
 
     def run(self, rows: np.ndarray, vectorised: bool) -> dict:
         if vectorised and self.linearization != "paper":
@@ -148,13 +139,14 @@ class NumpyFilter:
         nus, Ss, niss = np.empty((k, 3)), np.empty((k, 3, 3)), np.empty(k)
         x, P, info = self.x0.copy(), self.P0.copy(), np.zeros((N_STATE, N_STATE))
         Q, R0, eye, sigma0 = self.Q, self.R0, np.eye(N_STATE), self.sigma0
-        pair, to_plot = self.model.bind(), self.ecef2plot.bind()  # single-point callers, preallocated
+        pair = self.model.bind()  # single-point caller, preallocated
         if vectorised:
             Zs, Hs, Ms = self.model_rows(rows)
         for i in range(k):
             row = rows[i]
+            P_pred = P + Q
             if fitted:
-                nu, H, R = self.fitted_row(x, row, pair, to_plot)
+                nu, H, R = self.fitted_row(x, P_pred, row, pair)
             else:
                 if vectorised:
                     Z, H, M = Zs[i], Hs[i], Ms[i]
@@ -162,7 +154,6 @@ class NumpyFilter:
                     Z, H, M, _, _, _ = pair(row[0:3], row[3:6], row[6:9], row[9:12], row[12:15], row[15:18], sigma0)
                 R = M @ R0 @ M.T
                 nu = Z - H @ x
-            P_pred = P + Q
             HP = H @ P_pred
             S = HP @ H.T + R
             S = 0.5 * (S + S.T)
@@ -475,14 +466,12 @@ def main(argv=None) -> int:
     # where the time goes, for the default configuration (cProfile; its overhead inflates the Python-heavy parts)
     config = configs[default]
     pair = _loader.get(f"pseudo_measurement_{config.t_variant}").casadi.n_instructions()
-    to_plot = _loader.get(f"ecef2plot_{config.t_variant}").casadi.n_instructions()
     print()
     for lin, cfg in configs.items():
         n_ins = _loader.get(cfg.step_name).casadi.n_instructions()
         scan_us = per_config[lin]["results"][str(args.long)]["us_per_step"][SCAN]
         part = (f"the pseudo-measurement ({pair}) once" if lin == "paper" else
-                f"the pseudo-measurement ({pair}) twice and ecef2plot ({to_plot}) twice, before common subexpressions, "
-                "plus the fusion")
+                f"the pseudo-measurement ({pair}) twice, before common subexpressions, plus the MAP plots")
         print(f"{cfg.step_name}: {n_ins} CasADi instructions per step ({part}; the Kalman algebra the rest), "
               f"{scan_us:.2f} us per step in the scan: {n_ins / scan_us / 1e3:.1f} G instructions/s.")
     print(f"\nProfile of the default configuration ({default}):")
