@@ -43,10 +43,11 @@ class RegistrationConfig:
         covariance of the last ``q_window`` estimates, plus the fixed Q as a floor).
     linearization: ``paper`` (H, Z at the raw measurements, as printed), ``relinearized`` (at
         the measurements corrected by the current estimate: an extended Kalman filter) or
-        ``fitted`` (the default: at the plots each radar would see of the fused target
-        position, the maximum-likelihood noise-free plots given the current estimate; removes
-        the paper filter's range-bias errors at 0.5 deg noise, but needs a prior within the
-        model's linear range; derive/kalman.py and the README).
+        ``fitted`` (the default: at the most probable noise-free plots given the row and the
+        current estimate with its covariance; the plots of one fused target once the
+        registration is well known. Removes the paper filter's range-bias errors at 0.5 deg
+        noise; like any EKF it needs a prior within the model's linear range;
+        derive/kalman.py and the README).
     t_variant: ``standard`` (orthonormal ENU->ECEF) or ``paper`` (eq. 4 as printed).
     """
 
