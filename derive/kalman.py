@@ -12,8 +12,8 @@ dq_A, de_A, dC_B, ..., de_B] (rad and m), covariance P (12x12), random-walk proc
   plots given this row and the prior N(x-, P-) of the registration errors. With Z, H, M, R
   at the corrected plots c, ``S = H P- H^T + R`` and ``v = R0 M^T S^-1 Z(c)`` (the MAP noise
   of the linearised model ``Z(c) = H (x - x-) + M v``), ``t = c - v`` (plots only; the
-  attitude is not noisy). The constraint ``X_A(c_A) - X_B(c_B) = 0`` is linearised there:
-  ``nu = Z(t) + M(t) (c - t)`` (bearing differences wrapped), ``H = H(t)``, ``R = R(t)``.
+  attitude is not noisy). The noise-free constraint ``X_A(c_A - v_A) - X_B(c_B - v_B) = 0``
+  is linearised there: ``nu = Z(t) + M(t) (c - t)``, ``H = H(t)``, ``R = R(t)``.
   Once P is small, S ~ R and t is the plot pair of the fused target (the two radars' positions
   weighted by their covariances), which carries only the fused position's small error: H no
   longer shares the angle noise of the innovation. That correlation is an errors-in-variables

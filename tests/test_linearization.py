@@ -82,10 +82,12 @@ def test_fitted_step_equals_numpy_composition(variant):
     sigma0 = np.array(cfg.sigma0)
     step = _loader.get(f"kalman_step_fitted_{variant}")
     rng = np.random.default_rng(7)
-    for k in (0, 13, 39):
+    for k in (0, 13, 39, 20):
         x = rng.normal(size=12) * np.array(cfg.prior_sigma) * 0.3
         P = np.diag(np.array(cfg.prior_sigma) ** 2)
         Q = np.diag(np.array(cfg.q_sigma) ** 2)
+        if k == 20:  # a small P and a Q of the same size: the MAP point must use P- = P + Q
+            P, Q = P * 1e-4, P * 1e-4
         row = rows[k].copy()
         if k == 13:
             row = _row_seen_near_the_stern(row)
@@ -127,7 +129,12 @@ def test_fitted_point_moves_from_the_corrected_plots_to_the_fused_target_as_p_sh
         t_a, t_b, v, Z = _map_plots(c, P, sigma0)
         fitted = c.copy()
         fitted[6:9], fitted[15:18] = t_a, t_b
-        Z_t = np.squeeze(pair(*np.split(fitted, 6), sigma0)[0])
+        Z_t, H_t, _, R_t, _, _ = (np.squeeze(u) for u in pair(*np.split(fitted, 6), sigma0))
+        # the generated step linearises at this t: its S is H(t) P H(t)^T + R(t), not the one at c
+        x_est = sc.truth_state
+        out = _loader.get("kalman_step_fitted_standard")(x_est, P, np.zeros((12, 12)), np.zeros((12, 12)), rows[10], sigma0)
+        S_step = np.squeeze(out[4])
+        assert np.allclose(S_step, H_t @ P @ H_t.T + R_t, rtol=1e-8), (S_step, H_t @ P @ H_t.T + R_t)
         if expect_fused:  # the two radars' plots of one point: Z(t) ~ 0
             assert np.linalg.norm(Z_t) < 0.01 * np.linalg.norm(Z), (Z_t, Z)
         else:  # t ~ c: hardly any of Z is put on the noise
