@@ -61,6 +61,21 @@ def _pair_function(variant: str) -> ca.Function:
     return to_casadi_function(spec)
 
 
+def _pair_at(pair: ca.Function, row: ca.SX, sigma0: ca.SX):
+    """The pair model at an 18-row (nav_a, att_a, meas_a, nav_b, att_b, meas_b)."""
+    return pair(row[0:3], row[3:6], row[6:9], row[9:12], row[12:15], row[15:18], sigma0)
+
+
+def _corrected(row: ca.SX, x: ca.SX) -> ca.SX:
+    """Attitudes and plots of the row minus the estimated errors x (navigation untouched)."""
+    return row - ca.vertcat(ca.SX.zeros(3), x[0:6], ca.SX.zeros(3), x[6:12])
+
+
+def _add_information(info: ca.SX, H: ca.SX, R: ca.SX) -> ca.SX:
+    """``info + H^T R^-1 H``, symmetric by construction."""
+    return _mirror_upper(info + H.T @ ca.solve(R, H))
+
+
 def _mirror_upper(A: ca.SX) -> ca.SX:
     """Symmetric matrix from the upper triangle of A: the lower entries are never computed
     (about 20 % fewer operations in the step than averaging A and A^T)."""
@@ -75,11 +90,11 @@ def _mirror_upper(A: ca.SX) -> ca.SX:
 
 def _fitted_linearisation(pair: ca.Function, c: ca.SX, P_pred: ca.SX, sigma0: ca.SX):
     """Innovation, H and R at the MAP plots t = c - R0 M^T S^-1 Z(c) (module docstring)."""
-    Z, H, M, R, _, _ = pair(c[0:3], c[3:6], c[6:9], c[9:12], c[12:15], c[15:18], sigma0)
+    Z, H, M, R, _, _ = _pair_at(pair, c, sigma0)
     S = H @ P_pred @ H.T + R
     v = ca.diag(sigma0**2) @ M.T @ ca.solve(0.5 * (S + S.T), Z)
-    t_a, t_b = c[6:9] - v[0:3], c[15:18] - v[3:6]
-    Z, H, M, R, _, _ = pair(c[0:3], c[3:6], t_a, c[9:12], c[12:15], t_b, sigma0)
+    t = c - ca.vertcat(ca.SX.zeros(6), v[0:3], ca.SX.zeros(6), v[3:6])  # plots only
+    Z, H, M, R, _, _ = _pair_at(pair, t, sigma0)
     return Z + M @ v, H, R
 
 
@@ -94,13 +109,12 @@ def _build(variant: str, linearization: str):
         sigma0 = ca.SX.sym("sigma0", 6)
 
         P_pred = P + Q
-        # measurements and attitudes corrected by the current estimate
-        corrected = row - ca.vertcat(ca.SX.zeros(3), x[0:6], ca.SX.zeros(3), x[6:12])
+        corrected = _corrected(row, x)
         if linearization == "fitted":
             nu, H, R = _fitted_linearisation(pair, corrected, P_pred, sigma0)
         else:
             at = row if linearization == "paper" else corrected
-            Z, H, M, R, _, _ = pair(at[0:3], at[3:6], at[6:9], at[9:12], at[12:15], at[15:18], sigma0)
+            Z, H, M, R, _, _ = _pair_at(pair, at, sigma0)
             nu = Z - H @ x if linearization == "paper" else Z
         S = H @ P_pred @ H.T + R
         S = 0.5 * (S + S.T)
@@ -108,7 +122,7 @@ def _build(variant: str, linearization: str):
         x_new = x + K @ nu
         IKH = ca.SX.eye(N_STATE) - K @ H
         P_new = _mirror_upper(IKH @ P_pred @ IKH.T + K @ R @ K.T)
-        info_new = _mirror_upper(info + H.T @ ca.solve(R, H))
+        info_new = _add_information(info, H, R)
         nis = nu.T @ ca.solve(S, nu)
         return ca.Function(
             f"kalman_step_{linearization}_{variant}",
@@ -156,9 +170,8 @@ def _build_information(variant: str):
         x = ca.SX.sym("x", N_STATE)
         row = ca.SX.sym("row", 18)
         sigma0 = ca.SX.sym("sigma0", 6)
-        c = row - ca.vertcat(ca.SX.zeros(3), x[0:6], ca.SX.zeros(3), x[6:12])
-        _, H, _, R, _, _ = pair(c[0:3], c[3:6], c[6:9], c[9:12], c[12:15], c[15:18], sigma0)
-        info_new = _mirror_upper(info + H.T @ ca.solve(R, H))
+        _, H, _, R, _, _ = _pair_at(pair, _corrected(row, x), sigma0)
+        info_new = _add_information(info, H, R)
         return ca.Function(
             f"information_step_{variant}", [info, x, row, sigma0], [info_new],
             [p.name for p in INFO_INPUTS], [p.name for p in INFO_OUTPUTS], {"cse": True},
