@@ -50,7 +50,8 @@ from pathlib import Path
 import numpy as np
 
 import registration
-from registration import _loader, frames
+from registration import _codegen as _loader
+from registration.core import frames
 
 # --------------------------------------------------------------------------- inputs
 

@@ -61,10 +61,10 @@ import time
 import numpy as np
 
 import registration
-from registration import _loader
-from registration.online import OnlineRegistrar, RegistrationConfig, register
-from registration.scenarios import paper_scenario
-from registration.state import DATA_COLUMNS, N_STATE
+from registration import _codegen as _loader
+from registration.online.filter import OnlineRegistrar, RegistrationConfig, register
+from registration.online.scenario import paper_scenario
+from registration.online.contract import DATA_COLUMNS, N_STATE
 
 AIM_US_PER_STEP = 5.0
 AIM_RATIO = 20.0

@@ -54,9 +54,9 @@ def status(key):
 
 
 import numpy, pandas, pyarrow, pyarrow.parquet, pyarrow.csv  # noqa: F401  (baseline)
-from registration import _loader
-from registration.online import RegistrationConfig, register
-from registration.streaming import RunOptions, run_register
+from registration import _codegen as _loader
+from registration.online.filter import RegistrationConfig, register
+from registration.recorded.runner import RunOptions, run_register
 for name in ("kalman_step_paper_standard", "pseudo_measurement_standard"):
     _loader.get(name)
 base = status("VmRSS")
@@ -71,7 +71,7 @@ if mode == "stream":
     summary = run_register([path], opts)
     rows = summary["rows"]["read"]
 else:
-    from registration.io import read_table
+    from registration.recorded.formats import read_table
     result = register(read_table(path))
     rows = len(result.time)
 dt = time.perf_counter() - t0
@@ -86,8 +86,8 @@ def make_inputs(n_rows: int, folder: Path) -> dict:
     import pyarrow.csv as pacsv
     import pyarrow.parquet as pq
 
-    from registration.io import to_file_frame
-    from registration.scenarios import paper_scenario
+    from registration.recorded.formats import to_file_frame
+    from registration.online.scenario import paper_scenario
 
     base = to_file_frame(paper_scenario(n_steps=300, seed=0).data)
     piece_copies = 334  # ~100,000 rows per piece

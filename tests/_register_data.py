@@ -7,9 +7,9 @@ from functools import lru_cache
 import numpy as np
 import pandas as pd
 
-from registration.io import to_file_frame
-from registration.scenarios import ShipMotion, paper_scenario
-from registration.state import IS_ANGLE
+from registration.recorded.formats import to_file_frame
+from registration.online.scenario import ShipMotion, paper_scenario
+from registration.online.contract import IS_ANGLE
 
 
 @lru_cache(maxsize=4)

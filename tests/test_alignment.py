@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 from numpy.polynomial import Polynomial
 
-from registration.alignment import REASON_EXTRAPOLATION, REASON_TOO_FEW, align
+from registration.core.alignment import REASON_EXTRAPOLATION, REASON_TOO_FEW, align
 
 
 def _irregular_times(rng, n, t0=0.0, mean_dt=0.05):

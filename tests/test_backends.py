@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from registration import _loader
+from registration import _codegen as _loader
 
 from .conftest import all_specs, sample_inputs
 

@@ -4,7 +4,7 @@ ENU: x east, y north, z up)."""
 import numpy as np
 import pytest
 
-from registration import frames
+from registration.core import frames
 
 R = 1000.0
 

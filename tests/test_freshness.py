@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from registration import _loader
+from registration._codegen import loader as _loader
 
 REPO = Path(__file__).resolve().parent.parent
 REGEN = "python -m derive"

@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from registration import fusion as F
+from registration.fusion import fuser as F
 
 PAPER1 = dict(z=np.array([100e3, np.radians(15.0)]), s=np.array([100.0, 7e-3]), comps=("azimuth",),
               s2=np.array([4e-3]), site=np.array([80e3, 0.0]))

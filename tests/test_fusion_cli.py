@@ -7,9 +7,9 @@ import json
 import numpy as np
 import pytest
 
-from registration import fusion as F
+from registration.fusion import fuser as F
 from registration.cli import main
-from registration.fusion_scenarios import ROW_NAMES, FusionScenario, evaluate, paper_scenario, true_measurements
+from registration.fusion.scenarios import ROW_NAMES, FusionScenario, evaluate, paper_scenario, true_measurements
 
 
 def gaussian_gdop_se(cov: np.ndarray, n: int) -> float:

@@ -7,7 +7,8 @@ import pymap3d
 import pyproj
 import pytest
 
-from registration import _loader, frames
+from registration import _codegen as _loader
+from registration.core import frames
 
 WGS84_A = 6378137.0
 WGS84_B = WGS84_A * (1 - 1 / 298.257223563)

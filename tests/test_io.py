@@ -8,11 +8,11 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from registration.checkpoint import CheckpointError, load_checkpoint, save_checkpoint
+from registration.recorded.checkpoint import CheckpointError, load_checkpoint, save_checkpoint
 from registration.cli import main
-from registration.io import (SYNC_COLUMNS, CsvAppender, FileFormatError, PartsWriter, from_file_frame, iter_frames,
+from registration.recorded.formats import (SYNC_COLUMNS, CsvAppender, FileFormatError, PartsWriter, from_file_frame, iter_frames,
                              read_table, to_file_frame, write_table)
-from registration.state import DATA_COLUMNS
+from registration.online.contract import DATA_COLUMNS
 
 from ._register_data import frame, scenario
 

@@ -25,7 +25,7 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from registration import _loader
+from registration import _codegen as _loader
 
 from .conftest import all_specs, sample_inputs
 from ._edges import with_edges

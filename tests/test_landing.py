@@ -15,8 +15,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from registration import _loader
-from registration.landing import (
+from registration import _codegen as _loader
+from registration.landing.model import (
     LandingGeometry,
     combine,
     deck_to_touchdown_rotation,
@@ -25,7 +25,7 @@ from registration.landing import (
     transfer_radar,
     variance_ratios,
 )
-from registration.scenarios_landing import default_geometry
+from registration.landing.scenario import default_geometry
 
 GEOM = default_geometry()
 ATT = np.array([0.006, 0.015, -0.03])  # yaw, pitch, roll (rad): a few tenths of a degree to 2 deg

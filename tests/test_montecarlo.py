@@ -8,10 +8,10 @@ import numpy as np
 import pytest
 from scipy.stats import chi2
 
-from registration.montecarlo import crlb_information, nees_interval, nees_series, parse_sum, run_montecarlo
-from registration.online import RegistrationConfig, register
-from registration.scenarios import paper_scenario
-from registration.state import N_STATE, STATE_NAMES
+from registration.online.montecarlo import crlb_information, nees_interval, nees_series, parse_sum, run_montecarlo
+from registration.online.filter import RegistrationConfig, register
+from registration.online.scenario import paper_scenario
+from registration.online.contract import N_STATE, STATE_NAMES
 
 RUNS = 8
 

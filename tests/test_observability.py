@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.observability import observability_report
-from registration.online import RegistrationConfig, register
-from registration.scenarios import paper_scenario
-from registration.state import STATE_LABELS, STATE_NAMES, STATE_UNITS
+from registration.core.observability import observability_report
+from registration.online.filter import RegistrationConfig, register
+from registration.online.scenario import paper_scenario
+from registration.online.contract import STATE_LABELS, STATE_NAMES, STATE_UNITS
 
 PRIOR = np.array(RegistrationConfig().prior_sigma)
 

@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 from scipy import stats
 
-from registration.online import OnlineRegistrar, RegistrationConfig, register, validate_data
-from registration.scenarios import ShipMotion, paper_scenario
-from registration.state import DATA_COLUMNS, STATE_NAMES
+from registration.online.filter import OnlineRegistrar, RegistrationConfig, register, validate_data
+from registration.online.scenario import ShipMotion, paper_scenario
+from registration.online.contract import DATA_COLUMNS, STATE_NAMES
 
 QUIET = dict(angle_sigma=0.0, range_sigma=0.0)
 SHARP = RegistrationConfig(sigma0=(1.0, 1e-4, 1e-4) * 2, linearization="relinearized")
@@ -222,7 +222,7 @@ def test_paper_t_variant_runs_and_differs_slightly():
 
 
 def test_information_matrix_equals_per_row_solves():
-    from registration.online import information_matrix
+    from registration.online.filter import information_matrix
 
     rng = np.random.default_rng(3)
     H = rng.normal(size=(50, 3, 12)) * np.array([1e3, 1.0, 1e-2])[None, :, None]
@@ -235,7 +235,7 @@ def test_information_matrix_equals_per_row_solves():
 
 
 def test_information_at_estimate_compiled_equals_numpy_and_skips_extreme_rows():
-    from registration.online import _corrected_rows, _pair_outputs, information_at_estimate, information_skipping_bad_rows
+    from registration.online.filter import _corrected_rows, _pair_outputs, information_at_estimate, information_skipping_bad_rows
 
     sc = paper_scenario(seed=2, n_steps=80)
     cfg = RegistrationConfig(sigma0=tuple(sc.sigma0))

@@ -10,9 +10,9 @@ import pandas as pd
 import pytest
 
 from registration.cli import main
-from registration.io import to_file_frame
-from registration.scenarios import ShipMotion, paper_scenario
-from registration.state import STATE_NAMES
+from registration.recorded.formats import to_file_frame
+from registration.online.scenario import ShipMotion, paper_scenario
+from registration.online.contract import STATE_NAMES
 
 FAST = ["--no-plots", "--no-progress"]
 NAV = ("lat_deg", "lon_deg", "alt_m", "heading_deg", "pitch_deg", "roll_deg")

@@ -17,9 +17,9 @@ import pandas as pd
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from registration.io import SYNC_COLUMNS, FileFormatError, iter_frames
-from registration.rowcheck import BadRowError, check_frame, sync_layout
-from registration.streaming import RunOptions, run_register
+from registration.recorded.formats import SYNC_COLUMNS, FileFormatError, iter_frames
+from registration.recorded.rowcheck import BadRowError, check_frame, sync_layout
+from registration.recorded.runner import RunOptions, run_register
 
 from ._register_data import frame
 
@@ -106,7 +106,7 @@ def near_valid_tables(draw):
 @SETTINGS
 @given(df=near_valid_tables(), q_mode=st.sampled_from(["fixed", "adaptive"]), lin=st.sampled_from(["paper", "relinearized"]))
 def test_runner_never_lets_the_filter_state_become_non_finite(df, q_mode, lin):
-    from registration.online import RegistrationConfig
+    from registration.online.filter import RegistrationConfig
 
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "t.csv"

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from registration import frames
+from registration.core import frames
 
 
 def test_latitude_out_of_range_names_index_and_unit():

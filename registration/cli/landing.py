@@ -22,8 +22,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..landing import FUSION_METHODS
-from ..scenarios_landing import (
+from registration.landing.model import FUSION_METHODS
+from registration.landing.scenario import (
     MonteCarloResult,
     LandingScenario,
     default_bin_edges,

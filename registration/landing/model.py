@@ -27,9 +27,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import _loader
-from .alignment import AlignedSamples, align
-from .validation import as_float_array, check_finite, check_positive, check_range
+from registration import _codegen as _loader
+from registration.core.alignment import AlignedSamples, align
+from registration.core.validation import as_float_array, check_finite, check_positive, check_range
 
 __all__ = [
     "LandingGeometry",

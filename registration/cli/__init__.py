@@ -1,4 +1,4 @@
-"""``registration`` command line: one sub-command per module in :mod:`registration.commands`."""
+"""``registration`` command line: one sub-command per module of this package."""
 
 from __future__ import annotations
 
@@ -6,9 +6,8 @@ import argparse
 import importlib
 import sys
 
-#: sub-command name -> module in registration.commands (listed in the order shown in --help)
+#: sub-command name -> module of registration.cli (listed in the order shown in --help)
 COMMANDS = {
-    "demo": "demo",
     "simulate": "simulate",
     "montecarlo": "montecarlo",
     "fuse": "fuse",
@@ -26,9 +25,9 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True)
     for name, module in COMMANDS.items():
         try:
-            mod = importlib.import_module(f"registration.commands.{module}")
+            mod = importlib.import_module(f"registration.cli.{module}")
         except ModuleNotFoundError as exc:
-            if exc.name == f"registration.commands.{module}":
+            if exc.name == f"registration.cli.{module}":
                 continue  # capability not built yet
             raise
         p = sub.add_parser(name, help=mod.HELP, description=mod.HELP)

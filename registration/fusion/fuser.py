@@ -43,8 +43,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _loader
-from .validation import as_float_array, check_finite, check_positive, check_range
+from registration import _codegen as _loader
+from registration.core.validation import as_float_array, check_finite, check_positive, check_range
 
 __all__ = [
     "COMPONENTS",

@@ -17,8 +17,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import fusion
-from ..fusion_scenarios import ROW_LABELS, FusionEvaluation, evaluate, paper_scenario
+from registration.fusion import fuser as fusion
+from registration.fusion.scenarios import ROW_LABELS, FusionEvaluation, evaluate, paper_scenario
 
 HELP = "Fuse a radar with a remote bearing-only or range-only sensor (paper scenarios 1 and 2): GDOP, CRLB, optimal fuser."
 

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .simulate import add_scenario_arguments, parse_motion
+from registration.cli.simulate import add_scenario_arguments, parse_motion
 
 HELP = "Monte Carlo over seeds: RMSE of the identifiable estimates vs the filter's 2σ and the Cramér-Rao bound, and NEES"
 
@@ -34,8 +34,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..montecarlo import parse_sum, run_montecarlo
-    from ..online import RegistrationConfig
+    from registration.online.montecarlo import parse_sum, run_montecarlo
+    from registration.online.filter import RegistrationConfig
 
     if args.runs < 2:
         raise ValueError(f"--runs: expected at least 2 runs, got {args.runs}")

@@ -33,9 +33,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .io import NAV_KINDS, PLOT_KINDS, SYNC_FIELDS, TIME_FIELD, Field, sensor_fields
-from .online import _LIMITS, PROBLEM_NON_FINITE, PROBLEM_NON_POSITIVE, PROBLEM_OUT_OF_RANGE, cell_problems
-from .state import SENSOR_COLUMNS
+from registration.recorded.formats import NAV_KINDS, PLOT_KINDS, SYNC_FIELDS, TIME_FIELD, Field, sensor_fields
+from registration.online.filter import _LIMITS, PROBLEM_NON_FINITE, PROBLEM_NON_POSITIVE, PROBLEM_OUT_OF_RANGE, cell_problems
+from registration.online.contract import SENSOR_COLUMNS
 
 __all__ = ["BadRowError", "Layout", "CheckedBlock", "Rejection", "check_frame", "sync_layout", "plot_layout", "nav_layout", "REASON_CODES"]
 

@@ -16,8 +16,8 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from . import fusion
-from .validation import as_float_array, check_positive
+from registration.fusion import fuser as fusion
+from registration.core.validation import as_float_array, check_positive
 
 __all__ = [
     "FusionScenario",

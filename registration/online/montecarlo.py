@@ -40,10 +40,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import _loader
-from .online import RegistrationConfig, register
-from .scenarios import paper_scenario
-from .state import IS_ANGLE, N_STATE, STATE_LABELS, STATE_NAMES
+from registration import _codegen as _loader
+from registration.online.filter import RegistrationConfig, register
+from registration.online.scenario import paper_scenario
+from registration.online.contract import IS_ANGLE, N_STATE, STATE_LABELS, STATE_NAMES
 
 __all__ = ["Quantity", "MonteCarloResult", "run_montecarlo", "crlb_information", "nees_interval", "nees_series", "parse_sum"]
 

@@ -36,7 +36,7 @@ from typing import Iterator, Mapping
 
 import numpy as np
 
-from .state import DATA_COLUMNS, SENSOR_COLUMNS
+from registration.online.contract import DATA_COLUMNS, SENSOR_COLUMNS
 
 __all__ = [
     "FileFormatError", "Field", "SYNC_FIELDS", "SYNC_COLUMNS", "PLOT_FIELDS", "NAV_FIELDS", "file_format",
@@ -185,7 +185,7 @@ def read_table(path, *, validate: bool = True) -> dict:
     For files that fit in memory (the streaming reader is :func:`iter_frames`). With ``validate``
     the rows are checked like :func:`registration.online.validate_data` (first problem raises).
     """
-    from .rowcheck import check_frame, sync_layout
+    from registration.recorded.rowcheck import check_frame, sync_layout
 
     frames = list(iter_frames(path, SYNC_COLUMNS, chunk_rows=1 << 20))
     import pandas as pd
@@ -335,7 +335,7 @@ class CsvAppender:
             size, rows = resume
             actual = self.path.stat().st_size if self.path.exists() else -1
             if actual < size:
-                from .checkpoint import CheckpointError
+                from registration.recorded.checkpoint import CheckpointError
 
                 raise CheckpointError(
                     f"{self.path} holds {max(actual, 0)} bytes but the checkpoint recorded {size}: the output was "
@@ -423,7 +423,7 @@ class PartsWriter:
             present = {p.name for p in self.path.glob("part-*.parquet")}
             missing = [self._name(i) for i in range(self.size) if self._name(i) not in present]
             if missing:
-                from .checkpoint import CheckpointError
+                from registration.recorded.checkpoint import CheckpointError
 
                 raise CheckpointError(f"{self.path}: part(s) {missing[:3]} recorded by the checkpoint are missing; delete the checkpoint to start over")
             for name in present:

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..online import DEFAULT_LINEARIZATION, LINEARIZATIONS
+from registration.online.filter import DEFAULT_LINEARIZATION, LINEARIZATIONS
 
 HELP = "simulate the paper's two-ship scenario, register online, and compare with the paper's Table 1"
 
@@ -40,7 +40,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def parse_motion(text: str | None):
-    from ..scenarios import ShipMotion
+    from registration.online.scenario import ShipMotion
 
     if text is None:
         return None
@@ -73,7 +73,7 @@ def table1_lines(stats: dict, paper: dict, noise_free: dict | None = None) -> li
 
 
 def estimate_rows(result, truth_state) -> list[dict]:
-    from ..state import IS_ANGLE, STATE_NAMES
+    from registration.online.contract import IS_ANGLE, STATE_NAMES
 
     rows = []
     sigma = result.final_sigma
@@ -105,8 +105,8 @@ def estimate_lines(rows: list[dict]) -> list[str]:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..online import RegistrationConfig, register
-    from ..scenarios import PAPER_TABLE1, paper_scenario
+    from registration.online.filter import RegistrationConfig, register
+    from registration.online.scenario import PAPER_TABLE1, paper_scenario
 
     if not 0 < args.angle_sigma_deg < 20:
         raise ValueError("--angle-sigma-deg: expected a value in (0, 20) degrees")
@@ -166,13 +166,13 @@ def run(args: argparse.Namespace) -> int:
     (out / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
     written = [out / "summary.json"]
     if not args.no_plots:
-        from ..online_plots import plot_differences, plot_estimates, plot_tracks
+        from registration.online.plots import plot_differences, plot_estimates, plot_tracks
 
         written.append(plot_tracks(scenario.data, scenario.truth, out / "tracks.png"))
         written.append(plot_differences(result, out / "differences.png"))
         written.append(plot_estimates(result, scenario.truth_state, out / "estimates.png"))
     if args.export is not None:
-        from ..io import write_table  # recorded-data formats (issue 6)
+        from registration.recorded.formats import write_table  # recorded-data formats (issue 6)
 
         write_table(scenario.data, args.export)
         written.append(args.export)

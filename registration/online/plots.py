@@ -6,8 +6,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .online import RegistrationResult
-from .state import IS_ANGLE, STATE_LABELS, STATE_NAMES, display_unit, to_display
+from registration.online.filter import RegistrationResult
+from registration.online.contract import IS_ANGLE, STATE_LABELS, STATE_NAMES, display_unit, to_display
 
 
 def _pyplot():

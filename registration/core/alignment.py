@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.polynomial import legendre
 
-from .validation import as_float_array
+from registration.core.validation import as_float_array
 
 __all__ = ["AlignedSamples", "align", "REASON_OK", "REASON_TOO_FEW", "REASON_EXTRAPOLATION", "REASON_ILL_CONDITIONED"]
 

@@ -48,8 +48,8 @@ class ArtifactError(RuntimeError):
 def generated_dir() -> Path:
     """The artifacts of *this* copy of the package: ``generated/`` beside it in a source checkout,
     else the installed ``registration/_generated`` (never another checkout's editable install)."""
-    here = Path(__file__).resolve().parent
-    for path in (here / "_generated", here.parent / "generated"):
+    package = Path(__file__).resolve().parent.parent
+    for path in (package / "_generated", package.parent / "generated"):
         if (path / "manifest.json").exists():
             return path
     try:

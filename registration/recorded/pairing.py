@@ -41,9 +41,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .alignment import REASON_EXTRAPOLATION, align
-from .io import NAV_FIELDS, NAV_KINDS, PLOT_KINDS, SYNC_COLUMNS, iter_frames, read_columns
-from .rowcheck import CheckedBlock, check_frame, nav_layout, plot_layout
+from registration.core.alignment import REASON_EXTRAPOLATION, align
+from registration.recorded.formats import NAV_FIELDS, NAV_KINDS, PLOT_KINDS, SYNC_COLUMNS, iter_frames, read_columns
+from registration.recorded.rowcheck import CheckedBlock, check_frame, nav_layout, plot_layout
 
 __all__ = ["PairingOptions", "Source", "plan_sources", "pair_streams"]
 

@@ -26,8 +26,8 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from . import _loader
-from .landing import (
+from registration import _codegen as _loader
+from registration.landing.model import (
     FUSION_METHODS,
     LandingConfig,
     LandingGeometry,

@@ -40,15 +40,15 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from . import _loader
-from .checkpoint import CheckpointError, load_checkpoint, save_checkpoint
-from .io import SYNC_COLUMNS, CsvAppender, FileFormatError, PartsWriter, file_format, iter_frames, read_columns
-from .observability import observability_report
-from .online import (
+from registration import _codegen as _loader
+from registration.recorded.checkpoint import CheckpointError, load_checkpoint, save_checkpoint
+from registration.recorded.formats import SYNC_COLUMNS, CsvAppender, FileFormatError, PartsWriter, file_format, iter_frames, read_columns
+from registration.core.observability import observability_report
+from registration.online.filter import (
     OnlineRegistrar, RegistrationConfig, RegistrationResult, _corrected_rows, _target_positions, information_at_estimate,
 )
-from .rowcheck import BadRowError, Rejection, check_frame, sync_layout
-from .state import IS_ANGLE, N_STATE, STATE_LABELS, STATE_NAMES, STATE_UNITS
+from registration.recorded.rowcheck import BadRowError, Rejection, check_frame, sync_layout
+from registration.online.contract import IS_ANGLE, N_STATE, STATE_LABELS, STATE_NAMES, STATE_UNITS
 
 __all__ = ["RunOptions", "run_register", "ESTIMATE_COLUMNS", "POSITION_COLUMNS", "REJECTED_COLUMNS", "UNPAIRED_COLUMNS"]
 
@@ -113,7 +113,7 @@ def _scan_file(path) -> tuple[str, int]:
 
 def _total_rows(path, newlines: int) -> int | None:
     if file_format(path) == "parquet":
-        from .io import count_rows
+        from registration.recorded.formats import count_rows
 
         return count_rows(path)
     return max(newlines - 1, 0)
@@ -214,7 +214,7 @@ def run_register(inputs, options: RunOptions) -> dict:
 
     scans = {str(p): _scan_file(p) for p in inputs + navs}
     if form == "asynchronous":
-        from .pairing import PairingOptions
+        from registration.recorded.pairing import PairingOptions
 
         options.pairing = options.pairing or PairingOptions()
     common = {
@@ -266,7 +266,7 @@ def run_register(inputs, options: RunOptions) -> dict:
 
 
 def _ensure_pairing(inputs, navs, scans, common, options: RunOptions, log, *, resuming: bool):
-    from .pairing import pair_streams, plan_sources
+    from registration.recorded.pairing import pair_streams, plan_sources
 
     out = options.out
     ext = ".csv" if options.out_format == "csv" else ".parquet"
@@ -502,7 +502,7 @@ def _emit(outputs, rows_abs, times, rows18, res, cfg, raw_stats, cor_stats, st) 
 
 
 def _summary(path, reg: OnlineRegistrar, report, raw_stats, cor_stats, st, options: RunOptions, outs_spec) -> dict:
-    from .commands.simulate import estimate_rows
+    from registration.cli.simulate import estimate_rows
 
     ns = SimpleNamespace(final=reg.x, final_sigma=np.sqrt(np.diag(reg.P)), covariances=reg.P[None], observability=report)
     ns.identifiable_combinations = lambda: RegistrationResult.identifiable_combinations(ns)
@@ -548,8 +548,8 @@ def _strided(path, columns, stride: int, fmt: str):
 
 
 def _plots(sync_path: Path, out: Path, options: RunOptions, summary: dict) -> list[str]:
-    from .observability import ObservabilityReport
-    from .online_plots import plot_differences, plot_estimates, plot_tracks
+    from registration.core.observability import ObservabilityReport
+    from registration.online.plots import plot_differences, plot_estimates, plot_tracks
 
     n = max(int(summary["rows"]["accepted"]), 1)
     stride = max(1, -(-n // _PLOT_POINTS))
@@ -608,7 +608,7 @@ def _approx_lat_lon_deg(p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def _plot_recorded_tracks(tracks: dict, targets: dict, path: Path) -> Path:
     """Ships' tracks and the target as each radar places it after registration (lon/lat, deg)."""
-    from .online_plots import _pyplot
+    from registration.online.plots import _pyplot
 
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(7, 6))
@@ -646,7 +646,7 @@ def validate_files(inputs, options: RunOptions, max_listed: int = 20) -> dict:
     if len(inputs) == 1:
         jobs = [(inputs[0], sync_layout())]
     else:
-        from .pairing import PairingOptions, plan_sources
+        from registration.recorded.pairing import PairingOptions, plan_sources
 
         jobs = [(src.path, src.layout) for src in plan_sources(inputs, navs, options.pairing or PairingOptions())]
     report = {"files": {}, "problems": []}

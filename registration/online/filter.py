@@ -18,9 +18,9 @@ from typing import Mapping
 
 import numpy as np
 
-from . import _loader
-from .observability import ObservabilityReport, observability_report
-from .state import DATA_COLUMNS, N_STATE, SENSOR_COLUMNS, STATE_LABELS, STATE_NAMES, STATE_UNITS
+from registration import _codegen as _loader
+from registration.core.observability import ObservabilityReport, observability_report
+from registration.online.contract import DATA_COLUMNS, N_STATE, SENSOR_COLUMNS, STATE_LABELS, STATE_NAMES, STATE_UNITS
 
 __all__ = ["RegistrationConfig", "RegistrationResult", "OnlineRegistrar", "register", "validate_data", "difference_statistics"]
 

@@ -11,8 +11,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import _loader
-from .state import N_STATE, STATE_NAMES
+from registration import _codegen as _loader
+from registration.online.contract import N_STATE, STATE_NAMES
 
 __all__ = ["ShipMotion", "Scenario", "paper_scenario", "PAPER_TABLE1"]
 

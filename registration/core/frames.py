@@ -1,0 +1,115 @@
+"""Frame transforms: geodetic -> ECEF, ENU -> ECEF rotation, deck -> ENU (with Jacobians).
+
+Thin numpy wrappers over the generated functions (derive/geodesy.py, derive/attitude.py).
+Vectorised over a leading axis of N points: scalars in give one row out. SI units and radians.
+
+Frames (SPEC section 1): ``ecef`` WGS-84 earth-centred earth-fixed; ``enu`` x east, y north,
+z up; ``deck`` x starboard, y bow, z up. Attitude: heading C clockwise from true north, pitch
+phi positive bow up, roll theta positive starboard down; ``R_enu_deck = Rz(C) Rx(phi) Ry(theta)``.
+Radar: range r (m), deck bearing q from the bow, starboard positive, elevation e above the deck.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from registration import _codegen as _loader
+from registration.core.validation import as_float_array, broadcast_1d, check_angle, check_latitude, check_positive, check_range
+
+__all__ = ["geodetic2ecef", "enu2ecef_rotation", "deck2enu", "deck2enu_jacobians", "deck2enu_rotation", "plot2ecef"]
+
+T_VARIANTS = ("standard", "paper")
+
+
+def _geodetic(lat, lon, alt=None):
+    lat = as_float_array("lat", lat)
+    lon = as_float_array("lon", lon)
+    check_latitude("lat", lat)
+    check_angle("lon", lon)
+    out = {"lat": lat, "lon": lon}
+    if alt is not None:
+        alt = as_float_array("alt", alt)
+        check_range("alt", alt, -1.2e4, 1.0e7, "m above the WGS-84 ellipsoid")
+        out["alt"] = alt
+    return out
+
+
+def _measurement(r, q, e):
+    r, q, e = as_float_array("r", r), as_float_array("q", q), as_float_array("e", e)
+    check_positive("r", r, "m (slant range)")
+    check_angle("q", q)
+    check_range("e", e, -np.pi / 2, np.pi / 2, "rad (elevation)", angle=True)
+    return {"r": r, "q": q, "e": e}
+
+
+def _attitude(heading, pitch, roll):
+    h, p, rl = as_float_array("heading", heading), as_float_array("pitch", pitch), as_float_array("roll", roll)
+    check_angle("heading", h)
+    check_range("pitch", p, -np.pi / 2, np.pi / 2, "rad", angle=True)
+    check_range("roll", rl, -np.pi / 2, np.pi / 2, "rad", angle=True)
+    return {"heading": h, "pitch": p, "roll": rl}
+
+
+def _ordered(values: dict, names: list[str]):
+    n = broadcast_1d(**values)
+    # a length-1 array broadcasts like a scalar
+    return [values[k].reshape(()) if values[k].shape == (1,) and n != 1 else values[k] for k in names]
+
+
+def geodetic2ecef(lat, lon, alt) -> np.ndarray:
+    """ECEF position (N, 3) in metres of geodetic points.
+
+    lat, lon in radians (lat in [-pi/2, pi/2]); alt in metres above the WGS-84 ellipsoid.
+    Example: ``geodetic2ecef(0, 0, 0)`` -> ``[[6378137, 0, 0]]``.
+    """
+    v = _geodetic(lat, lon, alt)
+    return _loader.get("geodetic2ecef")(*_ordered(v, ["lat", "lon", "alt"]))[0]
+
+
+def enu2ecef_rotation(lat, lon, variant: str = "standard") -> np.ndarray:
+    """R_ecef_enu (N, 3, 3) at geodetic (lat, lon) in radians: ``v_ecef = R_ecef_enu @ v_enu``.
+
+    ``variant='standard'`` is the orthonormal rotation about the geodetic normal. ``'paper'`` is
+    eq. (4) of Wang et al. 2011 as printed, for reproduction only: it equals the standard rotation
+    at a latitude psi with tan psi = (a/b)^2 tan lat, a tilt of ~0.12 deg at 20 deg N.
+    """
+    if variant not in T_VARIANTS:
+        raise ValueError(f"variant: expected one of {T_VARIANTS}, got {variant!r}")
+    v = _geodetic(lat, lon)
+    return _loader.get(f"enu2ecef_rotation_{variant}")(*_ordered(v, ["lat", "lon"]))[0]
+
+
+def deck2enu_rotation(heading, pitch, roll) -> np.ndarray:
+    """R_enu_deck (N, 3, 3) = Rz(heading) Rx(pitch) Ry(roll), angles in radians."""
+    v = _attitude(heading, pitch, roll)
+    return _loader.get("deck2enu_rotation")(*_ordered(v, ["heading", "pitch", "roll"]))[0]
+
+
+def deck2enu(r, q, e, heading, pitch, roll) -> np.ndarray:
+    """Phi (eq. 2): radar plot -> target offset from the radar in ENU, (N, 3) metres.
+
+    r slant range (m, > 0); q deck bearing from the bow, starboard positive (rad); e elevation
+    above the deck (rad); heading, pitch, roll (rad). Example: heading 90 deg, level ship,
+    q = 0, e = 0, r = 1000 -> ``[[1000, 0, 0]]`` (the bow points east).
+    """
+    v = {**_measurement(r, q, e), **_attitude(heading, pitch, roll)}
+    return _loader.get("deck2enu")(*_ordered(v, ["r", "q", "e", "heading", "pitch", "roll"]))[0]
+
+
+def deck2enu_jacobians(r, q, e, heading, pitch, roll) -> tuple[np.ndarray, np.ndarray]:
+    """Psi (N, 3, 6) = dPhi/d(heading, pitch, roll, r, q, e) and Gamma (N, 3, 3) = dPhi/d(r, q, e).
+
+    Units: metres per radian for angle columns, dimensionless for the range column. Eq. (11).
+    """
+    v = {**_measurement(r, q, e), **_attitude(heading, pitch, roll)}
+    _, psi, gamma = _loader.get("deck2enu_jacobians")(*_ordered(v, ["r", "q", "e", "heading", "pitch", "roll"]))
+    return psi, gamma
+
+
+def plot2ecef(lat, lon, alt, heading, pitch, roll, r, q, e, variant: str = "standard") -> np.ndarray:
+    """Eq. (3): a radar plot from a ship at (lat, lon rad, alt m) with attitude (rad) -> target ECEF (N, 3) m."""
+    if variant not in T_VARIANTS:
+        raise ValueError(f"variant: expected one of {T_VARIANTS}, got {variant!r}")
+    v = {**_geodetic(lat, lon, alt), **_attitude(heading, pitch, roll), **_measurement(r, q, e)}
+    names = ["lat", "lon", "alt", "heading", "pitch", "roll", "r", "q", "e"]
+    return _loader.get(f"plot2ecef_{variant}")(*_ordered(v, names))[0]
