@@ -27,7 +27,7 @@ import pytest
 
 from registration import _codegen as _loader
 
-from .conftest import all_specs, sample_inputs
+from tests.conftest import all_specs, sample_inputs
 from ._edges import with_edges
 
 N_POINTS = 1200

@@ -17,7 +17,7 @@ from registration.cli import main
 
 from ._register_data import tiled
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def _command(inp, out, ckpt):

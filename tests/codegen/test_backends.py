@@ -14,7 +14,7 @@ import sympy as sp
 
 from registration import _codegen as _loader
 
-from .conftest import all_specs, sample_inputs
+from tests.conftest import all_specs, sample_inputs
 
 SCALE_FROM = {"Z": ("p_a_ecef", "p_b_ecef")}
 

@@ -14,7 +14,7 @@ import pytest
 
 from registration._codegen import loader as _loader
 
-REPO = Path(__file__).resolve().parent.parent
+REPO = Path(__file__).resolve().parents[2]
 REGEN = "python -m derive"
 
 
