@@ -28,10 +28,15 @@ def check_finite(name: str, arr: np.ndarray, unit: str) -> None:
         raise ValueError(f"{name}: non-finite value {v} at index {i}; expected a finite number in {unit}")
 
 
-def _degree_hint(arr: np.ndarray, limit: float) -> str:
-    if np.nanmax(np.abs(arr)) <= 360.0 and np.nanmax(np.abs(arr)) > limit:
-        return " (these look like degrees: convert with numpy.radians)"
-    return ""
+#: The one wording of the hint given when radians were expected and degrees seem to have come.
+DEGREE_HINT = " (these look like degrees: convert with numpy.radians)"
+
+
+def degree_hint(arr: np.ndarray, limit: float) -> str:
+    """:data:`DEGREE_HINT` when the largest |value| lies in (limit, 360], else ''."""
+    with np.errstate(invalid="ignore"):
+        peak = np.nanmax(np.abs(arr)) if np.size(arr) else 0.0
+    return DEGREE_HINT if limit < peak <= 360.0 else ""
 
 
 def check_range(name: str, arr: np.ndarray, low: float, high: float, unit: str, *, angle: bool = False) -> None:
@@ -43,7 +48,7 @@ def check_range(name: str, arr: np.ndarray, low: float, high: float, unit: str, 
     if bad.any():
         i = _first_bad(bad)
         v = arr[tuple(np.argwhere(bad)[0])] if arr.ndim else arr
-        hint = _degree_hint(arr, max(abs(low), abs(high))) if angle else ""
+        hint = degree_hint(arr, max(abs(low), abs(high))) if angle else ""
         raise ValueError(f"{name}: value {v} at index {i} is outside [{low:g}, {high:g}] {unit}{hint}")
 
 

@@ -1,0 +1,14 @@
+"""Angles: wrapping to (-pi, pi]. Radians inside the package; degrees only at the edges
+(``numpy.radians`` / ``numpy.degrees`` convert, no hand-written constants)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["wrap_angle"]
+
+
+def wrap_angle(a) -> np.ndarray:
+    """Angles (rad) wrapped to (-pi, pi]; float64 array of the input's shape."""
+    w = np.mod(np.asarray(a, dtype=np.float64) + np.pi, 2.0 * np.pi) - np.pi
+    return np.where(w == -np.pi, np.pi, w)
