@@ -1,7 +1,9 @@
 """Time alignment: sliding-window least-squares polynomial fits evaluated at requested instants.
 
-Seed 002, eqs. (5)-(6): each measured coordinate is fitted over a window of samples with a small
-basis and the fit is evaluated at the fusion instants. This module is sensor-agnostic: give it one
+Wang, Liu, Gao, "A self-calibration method based on fusion of landing guidance radar and
+centerline camera" (Ship Science and Technology 39(3), 2017), eqs. (5)-(6): each measured
+coordinate is fitted over a window of samples with a small basis and the fit is evaluated at the
+fusion instants. This module is sensor-agnostic: give it one
 sensor's timestamps ``t`` (s) and samples ``y`` (one or many columns) and the instants at which
 you need values; it tells you which instants could not be evaluated and why.
 
@@ -114,6 +116,146 @@ def _windows_nearest(t: np.ndarray, tau: np.ndarray, n: int) -> tuple[np.ndarray
     return lo, np.full(tau.size, n, dtype=np.intp)
 
 
+def _check_samples(t, y) -> tuple[np.ndarray, np.ndarray]:
+    """Timestamps (n,) and samples as (n, K)."""
+    t = as_float_array("t", t)
+    _check_sample_times(t)
+    y = as_float_array("y", y)
+    y2 = y.reshape(-1, 1) if y.ndim == 1 else y
+    if y2.ndim != 2 or y2.shape[0] != t.size:
+        raise ValueError(f"y: expected shape ({t.size},) or ({t.size}, K) to match t, got {y.shape}")
+    bad = ~np.isfinite(y2)
+    if bad.any():
+        i, k = (int(v) for v in np.argwhere(bad)[0])
+        raise ValueError(f"y: non-finite sample {float(y2[i, k])} at index {i}, column {k} (t = {float(t[i])!r} s); remove or fill it before aligning")
+    return t, y2
+
+
+def _check_instants(t_eval) -> np.ndarray:
+    tau = as_float_array("t_eval", t_eval)
+    tau = tau.reshape(-1) if tau.ndim == 0 else tau
+    _check_times("t_eval", tau)
+    return tau
+
+
+def _check_options(
+    degree, half_window_s, n_nearest, max_extrapolation_s, clock_offset_s, angle_columns, n_columns: int
+) -> tuple[int, list[int]]:
+    """Validated degree and angle column indices."""
+    if not isinstance(degree, (int, np.integer)) or degree < 0:
+        raise ValueError(f"degree: expected an integer >= 0, got {degree!r}")
+    degree = int(degree)
+    if (half_window_s is None) == (n_nearest is None):
+        raise ValueError("give exactly one of half_window_s (s) and n_nearest (samples)")
+    if half_window_s is not None and not (np.isfinite(half_window_s) and half_window_s > 0):
+        raise ValueError(f"half_window_s: expected a finite number > 0 s, got {half_window_s!r}")
+    if n_nearest is not None and (not isinstance(n_nearest, (int, np.integer)) or n_nearest < degree + 1):
+        raise ValueError(f"n_nearest: expected an integer >= degree + 1 = {degree + 1} samples, got {n_nearest!r}")
+    if not (np.isfinite(max_extrapolation_s) and max_extrapolation_s >= 0):
+        raise ValueError(f"max_extrapolation_s: expected a finite number >= 0 s, got {max_extrapolation_s!r}")
+    if not np.isfinite(clock_offset_s):
+        raise ValueError(f"clock_offset_s: expected a finite number in s, got {clock_offset_s!r}")
+    cols = [int(c) for c in angle_columns]
+    for c in cols:
+        if not -n_columns <= c < n_columns:
+            raise ValueError(f"angle_columns: column {c} does not exist (y has {n_columns} columns)")
+    return degree, cols
+
+
+def _windows(t_ref: np.ndarray, tau: np.ndarray, half_window_s, n_nearest) -> tuple[np.ndarray, np.ndarray]:
+    """Each instant's window as first sample index and sample count."""
+    if half_window_s is not None:
+        return _windows_half_width(t_ref, tau, float(half_window_s))
+    return _windows_nearest(t_ref, tau, int(n_nearest))
+
+
+def _screen(
+    t_ref: np.ndarray, tau: np.ndarray, lo: np.ndarray, n: np.ndarray, p: int, max_extrapolation_s: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """Per instant: the reason it cannot be evaluated before fitting ("" if none) and its
+    distance (s) outside its window's sample span (inf for an empty window)."""
+    reason = np.full(tau.size, REASON_OK, dtype=object)
+    ext = np.full(tau.size, np.inf)
+    has = n > 0
+    first = t_ref[np.minimum(lo, t_ref.size - 1)]
+    last = t_ref[np.clip(lo + n - 1, 0, t_ref.size - 1)]
+    ext[has] = np.maximum(0.0, np.maximum(first[has] - tau[has], tau[has] - last[has]))
+    reason[n < p] = REASON_TOO_FEW
+    # a tiny tolerance so an instant exactly on the limit is accepted despite rounding
+    too_far = (n >= p) & (ext > max_extrapolation_s * (1 + 1e-12) + 1e-12)
+    reason[too_far] = REASON_EXTRAPOLATION
+    return reason, ext
+
+
+def _fit_windows(
+    t_ref: np.ndarray, y2: np.ndarray, tau: np.ndarray, lo: np.ndarray, n: np.ndarray, degree: int
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Fit W windows (``lo``, ``n``) and evaluate at ``tau`` (W,): values (W, K), variance
+    factors (W,) and which windows are well conditioned (W,)."""
+    nmax = int(n.max())
+    offs = np.arange(nmax)
+    mask = offs[None, :] < n[:, None]  # (W, nmax)
+    idx = np.minimum(lo[:, None] + offs[None, :], t_ref.size - 1)
+    dt = np.where(mask, t_ref[idx] - tau[:, None], 0.0)
+    scale = np.abs(dt).max(axis=1)
+    scale[scale == 0] = 1.0  # a window of one sample exactly at tau (degree 0)
+    u = dt / scale[:, None]
+    V = legendre.legvander(u, degree) * mask[..., None]  # (W, nmax, p); padded rows are zero
+    sv = np.linalg.svd(V, compute_uv=False)
+    cond = sv[:, 0] / np.where(sv[:, -1] > 0, sv[:, -1], np.finfo(float).tiny)
+    good = cond <= MAX_CONDITION
+    e0 = legendre.legvander(np.zeros(1), degree)[0]  # basis values at u = 0, i.e. at tau
+    w = np.einsum("p,wpn->wn", e0, np.linalg.pinv(V))  # smoother weights at tau
+    w = np.where(mask, w, 0.0)
+    vals = np.einsum("wn,wnk->wk", w, y2[idx])
+    return vals, np.sum(w * w, axis=1), good
+
+
+def _fit_instants(
+    t_ref: np.ndarray, y2: np.ndarray, tau: np.ndarray, lo: np.ndarray, n: np.ndarray, degree: int, reason: np.ndarray,
+    chunk: int,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Fitted values (M, K) and variance factors (M,) at every instant not yet refused in
+    ``reason`` (NaN elsewhere), ``chunk`` windows at a time; ill-conditioned windows are marked
+    in ``reason`` (in place)."""
+    out = np.full((tau.size, y2.shape[1]), np.nan)
+    vf = np.full(tau.size, np.nan)
+    todo = np.flatnonzero(reason == REASON_OK)
+    for start in range(0, todo.size, chunk):
+        sel = todo[start : start + chunk]
+        vals, factors, good = _fit_windows(t_ref, y2, tau[sel], lo[sel], n[sel], degree)
+        reason[sel[~good]] = REASON_ILL_CONDITIONED
+        out[sel[good]] = vals[good]
+        vf[sel[good]] = factors[good]
+    return out, vf
+
+
+def _refuse_first_invalid(
+    tau: np.ndarray, valid: np.ndarray, reason: np.ndarray, n: np.ndarray, ext: np.ndarray, degree: int,
+    max_extrapolation_s: float,
+) -> None:
+    i = int(np.argmax(~valid))
+    detail = {
+        REASON_TOO_FEW: f"its window holds {int(n[i])} sample(s) but degree {degree} needs at least {degree + 1}",
+        REASON_EXTRAPOLATION: (
+            f"it lies {ext[i]:.6g} s outside its window's samples, beyond max_extrapolation_s = {max_extrapolation_s:g} s"
+        ),
+        REASON_ILL_CONDITIONED: f"its window's sample times are too clustered (condition number > {MAX_CONDITION:g})",
+    }[reason[i]]
+    raise ValueError(
+        f"t_eval: instant {float(tau[i])!r} s (index {i}) cannot be evaluated: {detail}. "
+        f"{int((~valid).sum())} of {tau.size} instants fail; pass strict=False to get them flagged instead"
+    )
+
+
+def _wrap_columns(out: np.ndarray, cols: list[int]) -> None:
+    """Wrap the angle columns of ``out`` to (-pi, pi] in place."""
+    out[:, cols] = np.angle(np.exp(1j * out[:, cols]))
+    wrapped = out[:, cols]
+    wrapped[wrapped == -np.pi] = np.pi
+    out[:, cols] = wrapped
+
+
 def align(
     t,
     y,
@@ -156,106 +298,24 @@ def align(
             or (``strict``) an instant with too few samples, beyond the extrapolation limit or
             with an ill-conditioned window.
     """
-    t = as_float_array("t", t)
-    _check_sample_times(t)
-    y = as_float_array("y", y)
-    one_d = y.ndim == 1
-    y2 = y.reshape(-1, 1) if one_d else y
-    if y2.ndim != 2 or y2.shape[0] != t.size:
-        raise ValueError(f"y: expected shape ({t.size},) or ({t.size}, K) to match t, got {y.shape}")
-    bad = ~np.isfinite(y2)
-    if bad.any():
-        i, k = (int(v) for v in np.argwhere(bad)[0])
-        raise ValueError(f"y: non-finite sample {float(y2[i, k])} at index {i}, column {k} (t = {float(t[i])!r} s); remove or fill it before aligning")
-    tau = as_float_array("t_eval", t_eval)
-    tau = tau.reshape(-1) if tau.ndim == 0 else tau
-    _check_times("t_eval", tau)
-
-    if not isinstance(degree, (int, np.integer)) or degree < 0:
-        raise ValueError(f"degree: expected an integer >= 0, got {degree!r}")
-    degree = int(degree)
-    if (half_window_s is None) == (n_nearest is None):
-        raise ValueError("give exactly one of half_window_s (s) and n_nearest (samples)")
-    if half_window_s is not None and not (np.isfinite(half_window_s) and half_window_s > 0):
-        raise ValueError(f"half_window_s: expected a finite number > 0 s, got {half_window_s!r}")
-    if n_nearest is not None and (not isinstance(n_nearest, (int, np.integer)) or n_nearest < degree + 1):
-        raise ValueError(f"n_nearest: expected an integer >= degree + 1 = {degree + 1} samples, got {n_nearest!r}")
-    if not (np.isfinite(max_extrapolation_s) and max_extrapolation_s >= 0):
-        raise ValueError(f"max_extrapolation_s: expected a finite number >= 0 s, got {max_extrapolation_s!r}")
-    if not np.isfinite(clock_offset_s):
-        raise ValueError(f"clock_offset_s: expected a finite number in s, got {clock_offset_s!r}")
-    cols = [int(c) for c in angle_columns]
-    for c in cols:
-        if not -y2.shape[1] <= c < y2.shape[1]:
-            raise ValueError(f"angle_columns: column {c} does not exist (y has {y2.shape[1]} columns)")
-
+    t, y2 = _check_samples(t, y)
+    tau = _check_instants(t_eval)
+    degree, cols = _check_options(
+        degree, half_window_s, n_nearest, max_extrapolation_s, clock_offset_s, angle_columns, y2.shape[1]
+    )
     t_ref = t - clock_offset_s
     if cols:
         y2 = y2.copy()
         y2[:, cols] = np.unwrap(y2[:, cols], axis=0)
+    lo, n = _windows(t_ref, tau, half_window_s, n_nearest)
+    reason, ext = _screen(t_ref, tau, lo, n, degree + 1, max_extrapolation_s)
 
-    if half_window_s is not None:
-        lo, n = _windows_half_width(t_ref, tau, float(half_window_s))
-    else:
-        lo, n = _windows_nearest(t_ref, tau, int(n_nearest))
-
-    m_out, k_out = tau.size, y2.shape[1]
-    out = np.full((m_out, k_out), np.nan)
-    vf = np.full(m_out, np.nan)
-    reason = np.full(m_out, REASON_OK, dtype=object)
-    ext = np.full(m_out, np.inf)
-    has = n > 0
-    first = t_ref[np.minimum(lo, t.size - 1)]
-    last = t_ref[np.clip(lo + n - 1, 0, t.size - 1)]
-    ext[has] = np.maximum(0.0, np.maximum(first[has] - tau[has], tau[has] - last[has]))
-    p = degree + 1
-    reason[n < p] = REASON_TOO_FEW
-    # a tiny tolerance so an instant exactly on the limit is accepted despite rounding
-    too_far = (n >= p) & (ext > max_extrapolation_s * (1 + 1e-12) + 1e-12)
-    reason[too_far] = REASON_EXTRAPOLATION
-
-    todo = np.flatnonzero(reason == REASON_OK)
-    e0 = legendre.legvander(np.zeros(1), degree)[0]  # basis values at u = 0, i.e. at tau
-    for start in range(0, todo.size, chunk):
-        sel = todo[start : start + chunk]
-        nmax = int(n[sel].max())
-        offs = np.arange(nmax)
-        mask = offs[None, :] < n[sel, None]  # (W, nmax)
-        idx = np.minimum(lo[sel, None] + offs[None, :], t.size - 1)
-        dt = np.where(mask, t_ref[idx] - tau[sel, None], 0.0)
-        scale = np.abs(dt).max(axis=1)
-        scale[scale == 0] = 1.0  # a window of one sample exactly at tau (degree 0)
-        u = dt / scale[:, None]
-        V = legendre.legvander(u, degree) * mask[..., None]  # (W, nmax, p); padded rows are zero
-        sv = np.linalg.svd(V, compute_uv=False)
-        cond = sv[:, 0] / np.where(sv[:, -1] > 0, sv[:, -1], np.finfo(float).tiny)
-        good = cond <= MAX_CONDITION
-        reason[sel[~good]] = REASON_ILL_CONDITIONED
-        w = np.einsum("p,wpn->wn", e0, np.linalg.pinv(V))  # smoother weights at tau
-        w = np.where(mask, w, 0.0)
-        vals = np.einsum("wn,wnk->wk", w, y2[idx])
-        out[sel[good]] = vals[good]
-        vf[sel[good]] = np.sum(w * w, axis=1)[good]
-
+    out, vf = _fit_instants(t_ref, y2, tau, lo, n, degree, reason, chunk)
     valid = reason == REASON_OK
     if strict and not valid.all():
-        i = int(np.argmax(~valid))
-        detail = {
-            REASON_TOO_FEW: f"its window holds {int(n[i])} sample(s) but degree {degree} needs at least {p}",
-            REASON_EXTRAPOLATION: (
-                f"it lies {ext[i]:.6g} s outside its window's samples, beyond max_extrapolation_s = {max_extrapolation_s:g} s"
-            ),
-            REASON_ILL_CONDITIONED: f"its window's sample times are too clustered (condition number > {MAX_CONDITION:g})",
-        }[reason[i]]
-        raise ValueError(
-            f"t_eval: instant {float(tau[i])!r} s (index {i}) cannot be evaluated: {detail}. "
-            f"{int((~valid).sum())} of {m_out} instants fail; pass strict=False to get them flagged instead"
-        )
+        _refuse_first_invalid(tau, valid, reason, n, ext, degree, max_extrapolation_s)
     if cols:
-        out[:, cols] = np.angle(np.exp(1j * out[:, cols]))
-        wrapped = out[:, cols]
-        wrapped[wrapped == -np.pi] = np.pi  # (-pi, pi]
-        out[:, cols] = wrapped
+        _wrap_columns(out, cols)
     return AlignedSamples(
         t=tau,
         y=out,

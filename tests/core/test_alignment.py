@@ -1,4 +1,4 @@
-"""Time alignment (registration.alignment): exactness, convergence, noise propagation, clocks, errors.
+"""Time alignment (registration.core.alignment): exactness, convergence, noise propagation, clocks, errors.
 
 Statistics. The Monte Carlo checks use many independent noise columns K sharing one clock (the
 fit is linear, so each column is an independent replicate). For white Gaussian noise of variance
@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 from numpy.polynomial import Polynomial
 
-from registration.core.alignment import REASON_EXTRAPOLATION, REASON_TOO_FEW, align
+from registration.core.alignment import REASON_EXTRAPOLATION, REASON_ILL_CONDITIONED, REASON_TOO_FEW, align
 
 
 def _irregular_times(rng, n, t0=0.0, mean_dt=0.05):
@@ -193,6 +193,18 @@ def test_extrapolation_beyond_the_limit_is_refused():
     assert ok.valid.all() and ok.extrapolation_s[0] == pytest.approx(0.05)
     res = align(T, Y, [-0.15, 1.0], degree=1, half_window_s=0.3, strict=False)
     assert res.reason.tolist() == [REASON_EXTRAPOLATION, ""]
+
+
+def test_clustered_window_is_refused_as_ill_conditioned():
+    """Two of a degree-2 window's three samples 1e-10 s apart: the fit is refused, not returned."""
+    t = np.array([0.0, 1e-10, 1.0, 5.0, 6.0, 7.0])
+    y = np.arange(6.0) ** 2
+    with pytest.raises(ValueError, match=r"too clustered \(condition number > 1e\+08\)"):
+        align(t, y, [0.5], degree=2, half_window_s=1.0)
+    res = align(t, y, [0.5, 6.0], degree=2, half_window_s=1.0, strict=False)
+    assert res.reason.tolist() == [REASON_ILL_CONDITIONED, ""]
+    assert np.isnan(res.y[0, 0]) and np.isnan(res.variance_factor[0])
+    assert res.y[1, 0] == pytest.approx(16.0, abs=1e-9) and res.variance_factor[1] == pytest.approx(1.0)
 
 
 def test_bad_options_are_refused():
