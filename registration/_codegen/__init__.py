@@ -1,7 +1,13 @@
-"""Access to the generated functions (``generated/``): artifact lookup and hash checks, the
-compiled C backend and the serialized CasADi fallback. Only the runtime uses it; users call the
-capability subpackages."""
+"""Access to the generated functions (``generated/``) for the runtime: hash-checked artifacts and
+what their manifest records (:mod:`.artifacts`), the compiled C backend (:mod:`.cbackend`), the
+serialized CasADi fallback (:mod:`.casadi_backend`) and the numpy callables on top
+(:mod:`.function`). Users call the capability subpackages, not this one."""
 
-from registration._codegen.loader import ArtifactError, BoundCall, GeneratedFunction, backend, generated_dir, get, manifest
+from registration._codegen.artifacts import ArtifactError, generated_dir, manifest, read_artifact, variants, wgs84
+from registration._codegen.cbackend import CFLAGS, compiler
+from registration._codegen.function import BoundCall, GeneratedFunction, backend, get
 
-__all__ = ["ArtifactError", "BoundCall", "GeneratedFunction", "backend", "generated_dir", "get", "manifest"]
+__all__ = [
+    "CFLAGS", "ArtifactError", "BoundCall", "GeneratedFunction", "backend", "compiler", "generated_dir", "get",
+    "manifest", "read_artifact", "variants", "wgs84",
+]

@@ -12,7 +12,8 @@ from pathlib import Path
 
 import pytest
 
-from registration._codegen import loader as _loader
+from registration import _codegen
+from registration._codegen import artifacts
 
 REPO = Path(__file__).resolve().parents[2]
 REGEN = "python -m derive"
@@ -27,7 +28,7 @@ def test_manifest_matches_derive_sources():
 
 
 def test_manifest_records_tools_and_artifacts():
-    m = _loader.manifest()
+    m = _codegen.manifest()
     assert set(m["tool_versions"]) == {"casadi", "sympy", "python"}
     import casadi
     import sympy
@@ -36,7 +37,7 @@ def test_manifest_records_tools_and_artifacts():
     assert m["tool_versions"]["sympy"] == sympy.__version__
     for name, meta in m["functions"].items():
         for kind in ("casadi", "c"):
-            path = _loader.generated_dir() / meta["artifacts"][kind]["file"]
+            path = _codegen.generated_dir() / meta["artifacts"][kind]["file"]
             assert hashlib.sha256(path.read_bytes()).hexdigest() == meta["artifacts"][kind]["sha256"], name
             assert b"DO NOT EDIT" in path.read_bytes()[:400]
         assert meta["inputs"] and meta["outputs"]
@@ -81,16 +82,16 @@ def test_regeneration_is_deterministic(tmp_path):
 
 def test_tampered_artifact_is_refused(tmp_path, monkeypatch):
     copy = tmp_path / "generated"
-    shutil.copytree(_loader.generated_dir(), copy)
+    shutil.copytree(_codegen.generated_dir(), copy)
     target = copy / "geodetic2ecef.casadi"
     target.write_bytes(target.read_bytes().replace(b"a", b"b", 1))
-    monkeypatch.setattr(_loader, "generated_dir", lambda: copy)
-    _loader.manifest.cache_clear()
+    monkeypatch.setattr(artifacts, "generated_dir", lambda: copy)  # the name read_artifact calls
+    artifacts.manifest.cache_clear()
     try:
-        with pytest.raises(_loader.ArtifactError, match="does not match manifest"):
-            _loader.GeneratedFunction("geodetic2ecef", force_backend="casadi").casadi
+        with pytest.raises(_codegen.ArtifactError, match="does not match manifest"):
+            _codegen.GeneratedFunction("geodetic2ecef", force_backend="casadi").casadi
     finally:
-        _loader.manifest.cache_clear()
+        artifacts.manifest.cache_clear()
 
 
 def test_failed_derivation_leaves_previous_artifacts_intact(tmp_path):

@@ -1,0 +1,226 @@
+"""The compiled C backend: build the shipped C sources once into a cached shared library and
+call the generated functions through ctypes with numpy buffers passed by pointer.
+
+The library holds every generated function plus the batch and scan drivers of ``_batch.c``. It
+is built once per source hash in a per-user cache (``$REGISTRATION_CACHE_DIR``, else
+``$XDG_CACHE_HOME`` or ``~/.cache``, subfolder ``sensor-registration``), keyed by the sources,
+the driver, the compiler, :data:`CFLAGS` and the platform. Values cross the boundary in
+CasADi's layout: float64, column-major per point.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import functools
+import hashlib
+import math
+import os
+import platform
+import shutil
+import subprocess
+import sys
+import tempfile
+from concurrent.futures import ThreadPoolExecutor
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+
+from registration._codegen.artifacts import ArtifactError, manifest, read_artifact
+
+__all__ = ["CFLAGS", "DRIVER", "CKernel", "PointCall", "cache_root", "compiler", "library"]
+
+#: Compiler flags of the shared library (each source is compiled with these minus ``-shared``).
+CFLAGS = ["-O2", "-fPIC", "-shared"]
+#: The hand-written batch/scan driver compiled into the library.
+DRIVER = Path(__file__).with_name("_batch.c")
+LIBRARY_NAME = "libregistration_generated.so"
+
+
+def cache_root() -> Path:
+    """The folder holding the compiled libraries, one subfolder per cache key."""
+    if os.environ.get("REGISTRATION_CACHE_DIR"):
+        return Path(os.environ["REGISTRATION_CACHE_DIR"])
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return Path(base) / "sensor-registration"
+
+
+def compiler() -> str | None:
+    """The C compiler to use: ``$CC``, else cc, gcc or clang on the PATH; None if there is none."""
+    return os.environ.get("CC") or shutil.which("cc") or shutil.which("gcc") or shutil.which("clang")
+
+
+def cache_key(cc: str, sources: list[tuple[str, bytes]]) -> str:
+    """Key of the library built by ``cc`` from ``sources`` ((file name, bytes) pairs) and the driver."""
+    key = hashlib.sha256()
+    for fname, data in sources:
+        key.update(fname.encode() + data)
+    key.update(DRIVER.read_bytes())
+    key.update(" ".join([cc, *CFLAGS, platform.machine(), sys.platform]).encode())
+    return key.hexdigest()[:24]
+
+
+def build_library(cc: str, sources: list[tuple[str, bytes]], lib_path: Path) -> None:
+    """Compile the driver and ``sources`` in parallel, link them into ``lib_path`` (published
+    atomically: concurrent builders never see half a file); ArtifactError on failure."""
+    lib_path.parent.mkdir(parents=True, exist_ok=True)
+    with tempfile.TemporaryDirectory(dir=lib_path.parent) as tmp:
+        tmp = Path(tmp)
+        paths = [str(DRIVER)]
+        for fname, data in sources:
+            (tmp / fname).write_bytes(data)
+            paths.append(str(tmp / fname))
+        objects = [str(tmp / f"{i}.o") for i in range(len(paths))]
+        flags = [f for f in CFLAGS if f != "-shared"]  # the same flags as in the cache key
+
+        def compile_one(src_obj):
+            src, obj = src_obj
+            return subprocess.run([cc, *flags, "-c", src, "-o", obj], capture_output=True, text=True)
+
+        with ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+            results = list(pool.map(compile_one, zip(paths, objects)))
+        failed = [r for r in results if r.returncode != 0]
+        if failed:
+            raise ArtifactError(f"C compilation failed: {failed[0].stderr.strip()[:2000]}")
+        out = tmp / "lib.so"
+        proc = subprocess.run([cc, "-shared", "-o", str(out), *objects, "-lm"], capture_output=True, text=True)
+        if proc.returncode != 0:
+            raise ArtifactError(f"C link failed: {proc.stderr.strip()[:2000]}")
+        os.replace(out, lib_path)
+
+
+@lru_cache(maxsize=1)
+def library() -> ctypes.CDLL:
+    """The shared library of every generated function (built if not cached); ArtifactError if impossible."""
+    cc = compiler()
+    if cc is None:
+        raise ArtifactError("no C compiler found (set CC)")
+    sources = [(f"{n}.c", read_artifact(n, "c")) for n in sorted(manifest()["functions"])]
+    lib_path = cache_root() / cache_key(cc, sources) / LIBRARY_NAME
+    if not lib_path.exists():
+        build_library(cc, sources, lib_path)
+    lib = ctypes.CDLL(str(lib_path))
+    lib.registration_batch.restype = ctypes.c_int
+    lib.registration_scan.restype = ctypes.c_longlong
+    return lib
+
+
+def _pointer(a: np.ndarray) -> ctypes.c_void_p:
+    return a.ctypes.data_as(ctypes.c_void_p)
+
+
+def _column_major(prepared) -> list[np.ndarray]:
+    """Contiguous float64 copies (or views) of prepared inputs, matrices column-major per point."""
+    out = []
+    for a, _batched, core in prepared:
+        if len(core) == 2:
+            a = np.swapaxes(a, -1, -2)
+        out.append(np.ascontiguousarray(a))
+    return out
+
+
+class CKernel:
+    """One compiled generated function with its CasADi work buffers.
+
+    ``prepared`` inputs are ``(array, batched, core shape)`` triples; outputs are returned as flat
+    ``(points, r * c)`` float64 buffers, column-major per point.
+    """
+
+    def __init__(self, name: str, work: dict):
+        lib = library()
+        self.name = name
+        self._fptr = ctypes.cast(getattr(lib, name), ctypes.c_void_p)
+        self._batch = lib.registration_batch
+        self._scan = lib.registration_scan
+        self._arg = (ctypes.c_void_p * max(work["sz_arg"], 1))()
+        self._res = (ctypes.c_void_p * max(work["sz_res"], 1))()
+        self._iw = np.zeros(max(work["sz_iw"], 1), dtype=np.int64)
+        self._w = np.zeros(max(work["sz_w"], 1), dtype=np.float64)
+
+    def call(self, prepared, n: int, output_shapes) -> list[np.ndarray]:
+        """Evaluate at ``n`` points (unbatched inputs broadcast with stride 0)."""
+        arrays = _column_major(prepared)  # kept alive until the call returns
+        in_ptr = (ctypes.c_void_p * len(prepared))(*[a.ctypes.data for a in arrays])
+        in_stride = (ctypes.c_longlong * len(prepared))(
+            *[math.prod(core) if batched else 0 for _a, batched, core in prepared])
+        outs = [np.empty((n, r * c), dtype=np.float64) for r, c in output_shapes]
+        out_ptr = (ctypes.c_void_p * len(outs))(*[b.ctypes.data for b in outs])
+        out_stride = (ctypes.c_longlong * len(outs))(*[r * c for r, c in output_shapes])
+        flag = self._batch(
+            self._fptr, ctypes.c_longlong(n),
+            len(prepared), in_ptr, in_stride,
+            len(outs), out_ptr, out_stride,
+            self._arg, self._res, _pointer(self._iw), _pointer(self._w),
+        )
+        if flag:
+            raise RuntimeError(f"generated function {self.name} failed with flag {flag}")
+        return outs
+
+    def scan(self, prepared, n: int, k: int, last_only: list[bool], output_shapes) -> list[np.ndarray]:
+        """Evaluate ``n`` steps in sequence, the first ``k`` inputs carried from the first ``k``
+        outputs of the previous step; outputs flagged in ``last_only`` keep only the last step."""
+        n_in, n_out = len(prepared), len(output_shapes)
+        arrays = _column_major(prepared)
+        sizes = [math.prod(core) for _a, _b, core in prepared]
+        in_ptr = (ctypes.c_void_p * n_in)(*[a.ctypes.data for a in arrays])
+        in_stride = (ctypes.c_longlong * n_in)(*[s if b else 0 for s, (_a, b, _c) in zip(sizes, prepared)])
+        in_size = (ctypes.c_longlong * n_in)(*sizes)
+        carry_from = (ctypes.c_int * n_in)(*[j if j < k else -1 for j in range(n_in)])
+        outs = [np.empty((1 if last else n, r * c), dtype=np.float64)
+                for last, (r, c) in zip(last_only, output_shapes)]
+        out_ptr = (ctypes.c_void_p * n_out)(*[b.ctypes.data for b in outs])
+        out_stride = (ctypes.c_longlong * n_out)(
+            *[0 if last else r * c for last, (r, c) in zip(last_only, output_shapes)])
+        scratch = np.empty(max(1, sum(sizes[:k])), dtype=np.float64)
+        failed = self._scan(
+            self._fptr, ctypes.c_longlong(n),
+            n_in, in_ptr, in_stride, carry_from, in_size,
+            n_out, out_ptr, out_stride,
+            self._arg, self._res, _pointer(self._iw), _pointer(self._w), _pointer(scratch),
+        )
+        if failed:
+            raise RuntimeError(f"generated function {self.name} failed at step {failed - 1}")
+        return outs
+
+    def point_caller(self, input_shapes, output_shapes) -> "PointCall":
+        """A single-point caller of this function with preallocated buffers."""
+        call = functools.partial(self._batch, self._fptr, ctypes.c_longlong(1))
+        return PointCall(self.name, call, input_shapes, output_shapes, self._arg, self._res,
+                         _pointer(self._iw), _pointer(self._w))
+
+
+class PointCall:
+    """Evaluate one compiled function at one point: inputs at their core shapes are copied into
+    preallocated column-major buffers, one ctypes call, outputs returned as new arrays of their
+    core shapes (floats for scalars)."""
+
+    def __init__(self, name, call, input_shapes, output_shapes, arg, res, iw, w):
+        self.name = name
+        self._input_shapes, self._output_shapes = list(input_shapes), list(output_shapes)
+        self._in = [np.zeros(r * c) for r, c in self._input_shapes]
+        self._out = [np.zeros(r * c) for r, c in self._output_shapes]
+        n_in, n_out = len(self._in), len(self._out)
+        in_ptr = (ctypes.c_void_p * n_in)(*[a.ctypes.data for a in self._in])
+        in_stride = (ctypes.c_longlong * n_in)(*([0] * n_in))
+        out_ptr = (ctypes.c_void_p * n_out)(*[a.ctypes.data for a in self._out])
+        out_stride = (ctypes.c_longlong * n_out)(*([0] * n_out))
+        self._call = functools.partial(call, n_in, in_ptr, in_stride, n_out, out_ptr, out_stride, arg, res, iw, w)
+
+    def __call__(self, *inputs) -> tuple:
+        for buf, (r, c), value in zip(self._in, self._input_shapes, inputs):
+            if c == 1:
+                buf[:] = np.ravel(value)
+            else:
+                buf[:] = np.asarray(value, dtype=np.float64).T.ravel()  # column-major
+        flag = self._call()
+        if flag:
+            raise RuntimeError(f"generated function {self.name} failed with flag {flag}")
+        outs = []
+        for buf, (r, c) in zip(self._out, self._output_shapes):
+            if (r, c) == (1, 1):
+                outs.append(float(buf[0]))
+            elif c == 1:
+                outs.append(buf.copy())
+            else:
+                outs.append(buf.reshape(c, r).T.copy())
+        return tuple(outs)
