@@ -1,14 +1,16 @@
-"""Dissimilar-dimension fusion of a 3-D radar with a bearing-only or range-only remote sensor.
+"""Dissimilar-dimension fusion of a radar with a remote sensor that measures fewer polar components.
 
-The pseudo-measurement method of the paper (GDOP, its claimed covariance and a consistent one),
-the optimal maximum-likelihood fuser and the Cramér-Rao bound; ``scenarios`` holds the paper's
-two scenarios and their Monte Carlo evaluation.
+``paper``: the paper's pseudo-measurement method with its claimed and its consistent covariance;
+``optimal``: the maximum-likelihood fuser, Fisher information and Cramér-Rao bound; ``gdop``: the
+accuracy figure; ``polar`` and ``inputs``: components, transforms and input checks;
+``scenarios``: the paper's two scenarios and their Monte Carlo evaluation.
 """
 
-from registration.fusion.fuser import (
-    COMPONENTS, FusionResult, OptimalResult, crlb, fisher_information, fuse_optimal, fuse_paper, gdop, gdop_from_samples,
-    parse_components, radar_point, wrap_angle,
-)
+from registration.core.angles import wrap_angle
+from registration.fusion.gdop import gdop, gdop_from_samples
+from registration.fusion.optimal import OptimalResult, crlb, fisher_information, fuse_optimal
+from registration.fusion.paper import FusionResult, fuse_paper, radar_point
+from registration.fusion.polar import COMPONENTS, parse_components
 
 __all__ = ["COMPONENTS", "FusionResult", "OptimalResult", "crlb", "fisher_information", "fuse_optimal", "fuse_paper",
            "gdop", "gdop_from_samples", "parse_components", "radar_point", "wrap_angle"]

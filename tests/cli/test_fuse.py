@@ -7,9 +7,11 @@ import json
 import numpy as np
 import pytest
 
-from registration.fusion import fuser as F
+from registration import fusion as F
 from registration.cli import main
-from registration.fusion.scenarios import ROW_NAMES, FusionScenario, evaluate, paper_scenario, true_measurements
+from registration.fusion.evaluation import ROW_NAMES, evaluate
+from registration.fusion.polar import cartesian2polar
+from registration.fusion.scenarios import FusionScenario, paper_scenario, true_measurements
 
 
 def gaussian_gdop_se(cov: np.ndarray, n: int) -> float:
@@ -107,7 +109,7 @@ def test_claimed_information_is_the_fisher_information_plus_the_radar_counted_ag
         res = F.fuse_paper(za, sc.sigma_radar, zb, sc.sigma_second, sc.components, sc.site_second_loc)
         fisher = F.fisher_information(F.radar_point(za, sc.sigma_radar)[0], sc.sigma_radar, sc.sigma_second,
                                       sc.components, sc.site_second_loc)[0]
-        _, G = F._cartesian2polar(res.p_radar_loc - sc.site_second_loc)
+        _, G = cartesian2polar(res.p_radar_loc - sc.site_second_loc)
         extra = G[0].T @ np.diag(1.0 / res.var_radar_at_second[0]) @ G[0]
         claimed_info = np.linalg.inv(res.P_claimed[0])
         np.testing.assert_allclose(claimed_info, fisher + extra, rtol=1e-6, atol=1e-9 * np.abs(fisher).max())

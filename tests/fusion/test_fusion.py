@@ -14,7 +14,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from registration.fusion import fuser as F
+from registration import fusion as F
+from registration.fusion.inputs import BLOCK
+from registration.fusion.polar import cartesian2polar
 
 PAPER1 = dict(z=np.array([100e3, np.radians(15.0)]), s=np.array([100.0, 7e-3]), comps=("azimuth",),
               s2=np.array([4e-3]), site=np.array([80e3, 0.0]))
@@ -311,9 +313,9 @@ def test_2d_problem_embedded_in_3d_gives_the_same_answer(name):
 
 def test_vectorised_equals_row_by_row_and_blocks_are_invisible():
     c = PAPER2
-    _, za, zb = draw(c, F._BLOCK + 37, seed=8)  # two blocks
+    _, za, zb = draw(c, BLOCK + 37, seed=8)  # two blocks
     full = fuse(c, za, zb)
-    for i in (0, 5, F._BLOCK - 1, F._BLOCK, F._BLOCK + 36):
+    for i in (0, 5, BLOCK - 1, BLOCK, BLOCK + 36):
         one = fuse(c, za[i], zb[i])
         np.testing.assert_allclose(full.p_fused_loc[i], one.p_fused_loc[0], rtol=1e-14)
         np.testing.assert_allclose(full.P_consistent[i], one.P_consistent[0], rtol=1e-12)
