@@ -22,8 +22,8 @@ from pathlib import Path
 
 import numpy as np
 
-from registration.landing.model import FUSION_METHODS
-from registration.landing.scenario import (
+from registration.landing import (
+    FUSION_METHODS,
     MonteCarloResult,
     LandingScenario,
     default_bin_edges,

@@ -15,17 +15,17 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from registration import _codegen as _loader
-from registration.landing.model import (
+from registration import _codegen
+from registration.landing import (
     LandingGeometry,
     combine,
+    default_geometry,
     deck_to_touchdown_rotation,
     radar_to_touchdown,
     transfer_camera,
     transfer_radar,
     variance_ratios,
 )
-from registration.landing.scenario import default_geometry
 
 GEOM = default_geometry()
 ATT = np.array([0.006, 0.015, -0.03])  # yaw, pitch, roll (rad): a few tenths of a degree to 2 deg
@@ -39,11 +39,11 @@ def _level_geometry(angled_deck=0.0):
 
 
 def _radar_polar_of(p_td, att=ATT, geom=GEOM):
-    return _loader.get("landing_td2radar")(p_td, att, geom.angled_deck_rad, geom.d_radar_deck_m)[0]
+    return _codegen.get("landing_td2radar")(p_td, att, geom.angled_deck_rad, geom.d_radar_deck_m)[0]
 
 
 def _camera_angles_of(p_td, att=ATT, geom=GEOM):
-    return _loader.get("landing_td2camera")(p_td, att, geom.angled_deck_rad, geom.d_camera_deck_m)[0]
+    return _codegen.get("landing_td2camera")(p_td, att, geom.angled_deck_rad, geom.d_camera_deck_m)[0]
 
 
 # --------------------------------------------------------------------------- conventions
@@ -64,7 +64,7 @@ def test_angled_deck_centreline_points_aft_and_to_starboard():
 def test_positive_pitch_lowers_the_stern_so_the_aircraft_appears_higher():
     """The touchdown point is 105 m aft of the motion centre: 0.01 rad bow-up pitch drops it ~1 m,
     so a point fixed in the mean frame is ~1 m higher in the (deck-following) touchdown frame."""
-    p = _loader.get("landing_mtd2td")(np.zeros(3), [0.0, 0.01, 0.0], GEOM.angled_deck_rad, GEOM.l_touchdown_deck_m)[0][0]
+    p = _codegen.get("landing_mtd2td")(np.zeros(3), [0.0, 0.01, 0.0], GEOM.angled_deck_rad, GEOM.l_touchdown_deck_m)[0][0]
     assert p[2] == pytest.approx(105.0 * np.sin(0.01) + 20.0 * (1 - np.cos(0.01)), abs=1e-3)
 
 
@@ -72,7 +72,7 @@ def test_positive_roll_lowers_starboard():
     """A deck point 10 m to starboard of the touchdown point (camera there) moves down with roll."""
     z = np.zeros(3)
     g = LandingGeometry(0.0, z, z, np.array([10.0, 0.0, 0.0]))
-    polar = _loader.get("landing_td2ctd")(np.array([1000.0, 0.0, 0.0]), [0.0, 0.0, 0.02], 0.0, g.d_camera_deck_m)[0][0]
+    polar = _codegen.get("landing_td2ctd")(np.array([1000.0, 0.0, 0.0]), [0.0, 0.0, 0.02], 0.0, g.d_camera_deck_m)[0][0]
     assert polar[2] > 0  # the camera went down, so the target is seen higher
 
 
@@ -103,14 +103,14 @@ def test_radar_round_trip(approach_points):
 def test_camera_angles_agree_with_the_ctd_polar_of_the_point(approach_points):
     p, att = approach_points
     cam = transfer_camera(_camera_angles_of(p, att), np.diag(SIG_C**2), att, GEOM)
-    polar = _loader.get("landing_td2ctd")(p, att, GEOM.angled_deck_rad, GEOM.d_camera_deck_m)[0]
+    polar = _codegen.get("landing_td2ctd")(p, att, GEOM.angled_deck_rad, GEOM.d_camera_deck_m)[0]
     assert cam.angles_ctd == pytest.approx(polar[:, 1:], abs=1e-12)
 
 
 def test_rebuild_from_ctd_polar_is_the_inverse(approach_points):
     p, att = approach_points
-    polar = _loader.get("landing_td2ctd")(p, att, GEOM.angled_deck_rad, GEOM.d_camera_deck_m)[0]
-    back = _loader.get("landing_ctd2td")(polar, att, GEOM.angled_deck_rad, GEOM.d_camera_deck_m)[0]
+    polar = _codegen.get("landing_td2ctd")(p, att, GEOM.angled_deck_rad, GEOM.d_camera_deck_m)[0]
+    back = _codegen.get("landing_ctd2td")(polar, att, GEOM.angled_deck_rad, GEOM.d_camera_deck_m)[0]
     assert back == pytest.approx(p, abs=1e-9 * 4000)
 
 
@@ -147,7 +147,7 @@ def test_transferred_radar_covariance_matches_monte_carlo(slant_m):
     P_R = np.diag(SIG_R**2)
     P_R[1, 2] = P_R[2, 1] = 0.3 * SIG_R[1] * SIG_R[2]  # a correlated radar, for generality
     draws = rng.multivariate_normal(polar_true, P_R, N_MC)
-    moved = _loader.get("landing_radar2ctd")(draws, ATT, GEOM.angled_deck_rad, GEOM.d_radar_deck_m, GEOM.d_camera_deck_m)[0]
+    moved = _codegen.get("landing_radar2ctd")(draws, ATT, GEOM.angled_deck_rad, GEOM.d_radar_deck_m, GEOM.d_camera_deck_m)[0]
     rt = transfer_radar(polar_true, P_R, ATT, GEOM)
     assert _whitened_error(moved, rt.P_ctd[0], angle_cols=(1,)) < TOL
     # negative control: leaving the rotation M out (B A instead of B M A) is detected, by > 25
@@ -162,7 +162,7 @@ def test_transferred_camera_covariance_matches_monte_carlo():
     ang_true = np.array([0.02, 0.06])
     P_C = np.diag([4e-4, 2e-4]) ** 2
     draws = rng.multivariate_normal(ang_true, P_C, N_MC)
-    moved = _loader.get("landing_camera2ctd")(draws, att, GEOM.angled_deck_rad)[0]
+    moved = _codegen.get("landing_camera2ctd")(draws, att, GEOM.angled_deck_rad)[0]
     ct = transfer_camera(ang_true, P_C, att, GEOM)
     assert _whitened_error(moved, ct.P_ctd[0]) < TOL
     assert _whitened_error(moved, P_C) > TOL  # ignoring the attitude rotation is detected (it mixes a and b)

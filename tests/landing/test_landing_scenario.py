@@ -22,8 +22,16 @@ import numpy as np
 import pytest
 
 from registration import cli
-from registration.landing.model import combine
-from registration.landing.scenario import default_scenario, monte_carlo, run_once, simulate, with_overrides
+from registration.landing import (
+    combine,
+    deck_to_touchdown_rotation,
+    default_scenario,
+    monte_carlo,
+    process,
+    run_once,
+    simulate,
+    with_overrides,
+)
 
 RUNS = 100
 
@@ -39,8 +47,6 @@ def test_scenario_kinematics():
     c = sc.closure_speed_mps
     # |v_ship + c d| = ground speed, with the ship's velocity along its mean heading
     d = -sc.glide_direction_mtd
-    from registration.landing.model import deck_to_touchdown_rotation
-
     v_ship = deck_to_touchdown_rotation(np.zeros(3), sc.geometry)[0] @ [0.0, sc.ship.speed_mps, 0.0]
     assert np.linalg.norm(v_ship + c * d) == pytest.approx(70.0)
     assert 50 < c < 60
@@ -147,8 +153,6 @@ def test_cli_rejects_bad_options(tmp_path, capsys):
 
 
 def test_process_refuses_bad_tracks_with_the_alignment_messages():
-    from registration.landing.model import process
-
     sc = default_scenario()
     sim = simulate(sc, runs=1, rng=1)
     args = dict(sigma_rdr=sc.radar.sigma, sigma_cam=sc.camera.sigma, attitude_fn=sc.attitude, geometry=sc.geometry)
