@@ -1,9 +1,9 @@
-"""``registration landing --out DIR``: radar/camera fusion along a simulated carrier approach (seed 002).
+"""``registration landing --out DIR``: radar/camera fusion along a simulated carrier approach.
 
-Simulates Monte Carlo runs of the SPEC section 4 approach (every parameter can be changed below),
+Simulates Monte Carlo runs of the default approach (every parameter can be changed below),
 time-aligns both sensors to common fusion instants, moves the radar into the camera's polar frame
-with its covariance (eqs. 7-11), fuses (eq. 12) and prints the 3-D position RMSE in range bins for
-radar only, camera angles with radar range, and fused (plus the joint "information" fusion).
+with its covariance and fuses (Wang, Liu & Gao 2017, eqs. 7-12), and prints the 3-D position RMSE
+in range bins for radar only, camera angles with radar range, and fused (plus the joint update).
 
 Writes into DIR: ``summary.json`` (``bins``: ``range_min_m, range_max_m, rmse_radar_m,
 rmse_camera_m, rmse_fused_m`` and more), ``attitude.png`` (Fig. 1), ``variance_ratios.png``
@@ -18,6 +18,7 @@ from __future__ import annotations
 import argparse
 import json
 import time
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -25,6 +26,7 @@ import numpy as np
 from registration.landing import (
     FUSION_METHODS,
     MonteCarloResult,
+    LandingConfig,
     LandingScenario,
     default_bin_edges,
     default_geometry,
@@ -33,7 +35,7 @@ from registration.landing import (
     with_overrides,
 )
 
-HELP = "Simulate a carrier approach and fuse landing radar with the centreline camera: RMSE by range bin, plots (seed 002)."
+HELP = "Simulate a carrier approach and fuse the landing radar with the centreline camera: position RMSE by range bin, plots."
 
 LABELS = {
     "radar": "radar only",
@@ -109,8 +111,6 @@ def scenario_from_args(args: argparse.Namespace) -> LandingScenario:
             clock_offset_s=args.camera_clock_offset_ms * 1e-3,
         ),
     )
-    from dataclasses import replace
-
     return replace(sc, geometry=default_geometry(float(np.radians(args.angled_deck_deg))))
 
 
@@ -139,8 +139,6 @@ def regroup(mc: MonteCarloResult, edges: np.ndarray) -> MonteCarloResult:
     def merge(a, axis):
         return np.stack([a.take(range(i, j), axis=axis).sum(axis=axis) for i, j in sl], axis=axis)
 
-    from dataclasses import replace
-
     return replace(
         mc,
         bin_edges_m=np.asarray(edges, dtype=float),
@@ -152,17 +150,26 @@ def regroup(mc: MonteCarloResult, edges: np.ndarray) -> MonteCarloResult:
 
 
 # --------------------------------------------------------------------------- plots
-def _plots(out: Path, sc: LandingScenario, mc: MonteCarloResult, fine: MonteCarloResult) -> list[str]:
+def _pyplot():
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     plt.rcParams.update({"font.size": 11, "axes.grid": True, "grid.alpha": 0.3})
-    files = []
-    rng_m = mc.range_m
+    return plt
 
-    # Fig. 1: attitude
+
+def _save(fig, path: Path) -> str:
+    import matplotlib.pyplot as plt
+
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path.name
+
+
+def _plot_attitude(plt, mc: MonteCarloResult, path: Path) -> str:
+    """The paper's Fig. 1: the ship's attitude along the approach, deg."""
     fig, ax = plt.subplots(figsize=(9, 4.5), constrained_layout=True)
     for k, (name, color) in enumerate((("yaw", "tab:green"), ("pitch", "tab:blue"), ("roll", "tab:red"))):
         ax.plot(mc.t, np.degrees(mc.attitude[:, k]), color=color, label=name)
@@ -172,18 +179,20 @@ def _plots(out: Path, sc: LandingScenario, mc: MonteCarloResult, fine: MonteCarl
     top = float(np.degrees(np.abs(mc.attitude).max()))
     ax.set_ylim(-1.15 * top, 1.6 * top)
     ax.legend(loc="upper center", ncol=3)
-    files.append(_save(fig, out / "attitude.png"))
+    return _save(fig, path)
 
-    # Figs. 2-3: variance amplification ratios
+
+def _plot_ratios(plt, mc: MonteCarloResult, path: Path) -> str:
+    """The paper's Figs. 2-3: variance amplification ratios of both sensors against range."""
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.8), constrained_layout=True)
     r = mc.ratios["radar"]
     for k, (name, color) in enumerate((("range", "tab:purple"), ("azimuth", "tab:blue"), ("elevation", "tab:orange"))):
-        axes[0].plot(rng_m, r[:, k], color=color, label=name)
+        axes[0].plot(mc.range_m, r[:, k], color=color, label=name)
     axes[0].set_yscale("log")
     axes[0].set_title("Radar: variance seen from the camera / own variance")
     c = mc.ratios["camera"]
     for k, (name, color) in enumerate((("azimuth", "tab:blue"), ("elevation", "tab:orange"))):
-        axes[1].plot(rng_m, c[:, k], color=color, label=name)
+        axes[1].plot(mc.range_m, c[:, k], color=color, label=name)
     axes[1].set_title("Camera: variance in touchdown axes / own variance")
     lo, hi = float(np.min(c)), float(np.max(c))
     pad = max(0.002, 0.2 * (hi - lo))
@@ -193,9 +202,11 @@ def _plots(out: Path, sc: LandingScenario, mc: MonteCarloResult, fine: MonteCarl
         ax.set_ylabel("variance ratio")
         ax.invert_xaxis()
         ax.legend()
-    files.append(_save(fig, out / "variance_ratios.png"))
+    return _save(fig, path)
 
-    # Fig. 4: RMSE of the methods against range, and relative to camera angles + radar range
+
+def _plot_rmse(plt, mc: MonteCarloResult, fine: MonteCarloResult, path: Path) -> str:
+    """The paper's Fig. 4: RMSE of the methods against range, and eq. 12 relative to camera + radar range."""
     fig, (ax, ax2) = plt.subplots(2, 1, figsize=(9, 7.5), sharex=True, constrained_layout=True,
                                   gridspec_kw={"height_ratios": [3, 2]})
     centres = 0.5 * (fine.bin_edges_m[:-1] + fine.bin_edges_m[1:])
@@ -215,20 +226,23 @@ def _plots(out: Path, sc: LandingScenario, mc: MonteCarloResult, fine: MonteCarl
     ax2.set_title("the eq. 12 gain is small: the 3-D error is dominated by the radar range, which both share", fontsize=10)
     ax2.set_xlabel("range to touchdown point (m)")
     ax2.invert_xaxis()
-    files.append(_save(fig, out / "rmse.png"))
+    return _save(fig, path)
 
-    # Fig. 5: fused error in polar coordinates about the camera (one run)
+
+def _plot_polar(plt, mc: MonteCarloResult, path: Path) -> str:
+    """The paper's Fig. 5: one run's fused error in polar coordinates about the camera, with the
+    predicted 3-sigma band."""
     ex = mc.example["paper"]
     fig, axes = plt.subplots(3, 1, figsize=(10, 8.5), sharex=True, constrained_layout=True)
     scale = (1.0, 1e3, 1e3)
     units = ("range error (m)", "azimuth error (mrad)", "elevation error (mrad)")
     for k, ax in enumerate(axes):
         if "camera" in mc.example:
-            ax.plot(rng_m, mc.example["camera"]["polar_error"][:, k] * scale[k], color="tab:blue", lw=0.7, alpha=0.45,
+            ax.plot(mc.range_m, mc.example["camera"]["polar_error"][:, k] * scale[k], color="tab:blue", lw=0.7, alpha=0.45,
                     label="camera angles + radar range")
-        ax.plot(rng_m, ex["polar_error"][:, k] * scale[k], color="black", lw=0.8, label="fused (eq. 12)")
+        ax.plot(mc.range_m, ex["polar_error"][:, k] * scale[k], color="black", lw=0.8, label="fused (eq. 12)")
         s3 = 3 * ex["polar_sigma"][:, k] * scale[k]
-        ax.fill_between(rng_m, -s3, s3, color="tab:orange", alpha=0.25, label="fused ±3σ (predicted)")
+        ax.fill_between(mc.range_m, -s3, s3, color="tab:orange", alpha=0.25, label="fused ±3σ (predicted)")
         ax.set_ylabel(units[k])
         ymax = float(np.nanmax(s3) if k == 0 else np.nanpercentile(s3, 99)) * 1.3
         ax.set_ylim(-ymax, ymax)
@@ -236,16 +250,18 @@ def _plots(out: Path, sc: LandingScenario, mc: MonteCarloResult, fine: MonteCarl
     axes[-1].set_xlabel("range to touchdown point (m)")
     axes[-1].invert_xaxis()
     axes[0].set_title("Fused estimate in polar coordinates about the camera (touchdown axes), one run")
-    files.append(_save(fig, out / "fused_polar.png"))
-    return files
+    return _save(fig, path)
 
 
-def _save(fig, path: Path) -> str:
-    import matplotlib.pyplot as plt
-
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path.name
+def _plots(out: Path, mc: MonteCarloResult, fine: MonteCarloResult) -> list[str]:
+    """Write the four PNGs into ``out``; return their file names."""
+    plt = _pyplot()
+    return [
+        _plot_attitude(plt, mc, out / "attitude.png"),
+        _plot_ratios(plt, mc, out / "variance_ratios.png"),
+        _plot_rmse(plt, mc, fine, out / "rmse.png"),
+        _plot_polar(plt, mc, out / "fused_polar.png"),
+    ]
 
 
 # --------------------------------------------------------------------------- run
@@ -263,26 +279,25 @@ def _table(mc: MonteCarloResult) -> str:
     return "\n".join(rows)
 
 
-def run(args: argparse.Namespace) -> int:
-    _check_args(args)
-    sc = scenario_from_args(args)
-    config = sc.config(
-        fusion_rate_hz=args.fusion_rate_hz, degree=args.degree, half_window_s=args.half_window_s, methods=FUSION_METHODS
+def _config(args: argparse.Namespace, sc: LandingScenario) -> LandingConfig:
+    """The processing options; the scenario's clock offsets unless --ignore-clock-offsets."""
+    offsets = dict(radar_clock_offset_s=0.0, camera_clock_offset_s=0.0) if args.ignore_clock_offsets else {}
+    return sc.config(
+        fusion_rate_hz=args.fusion_rate_hz, degree=args.degree, half_window_s=args.half_window_s, methods=FUSION_METHODS,
+        **offsets,
     )
-    if args.ignore_clock_offsets:
-        config = sc.config(
-            fusion_rate_hz=args.fusion_rate_hz, degree=args.degree, half_window_s=args.half_window_s,
-            radar_clock_offset_s=0.0, camera_clock_offset_s=0.0,
-        )
-    out: Path = args.out
-    out.mkdir(parents=True, exist_ok=True)
-    start = time.perf_counter()
+
+
+def _evaluate(args: argparse.Namespace, sc: LandingScenario, config: LandingConfig) -> tuple[MonteCarloResult, MonteCarloResult]:
+    """Monte Carlo statistics in --plot-bin-m bins (for the plot) and in --bin-m bins (table, JSON)."""
     top = default_bin_edges(sc, args.bin_m)
     fine_edges = np.arange(0.0, top[-1] + args.plot_bin_m / 2, args.plot_bin_m)
     fine = monte_carlo(sc, config, runs=args.runs, seed=args.seed, bin_edges_m=fine_edges, progress=True)
-    mc = regroup(fine, top)
-    elapsed = time.perf_counter() - start
+    return fine, regroup(fine, top)
 
+
+def _report(args: argparse.Namespace, sc: LandingScenario, config: LandingConfig, mc: MonteCarloResult) -> tuple[dict, np.ndarray]:
+    """Print the RMSE table, the mean NEES and the paired z-scores; return NEES per method and z per bin."""
     print(f"registration landing: {args.runs} Monte Carlo runs of a {sc.duration_s:.1f} s approach "
           f"(closure {sc.closure_speed_mps:.1f} m/s), {mc.t.size} fusion instants per run at {config.fusion_rate_hz:g} Hz")
     print("3-D position RMSE in the touchdown frame by range to the touchdown point:")
@@ -292,7 +307,11 @@ def run(args: argparse.Namespace) -> int:
           + ", ".join(f"{LABELS[m]} {v:.2f}" for m, v in nees.items()))
     z = mc.paired_z("paper", "camera")
     print(f"fused vs camera+radar range: paired z-score per bin (runs independent) min {np.nanmin(z):.1f}")
+    return nees, z
 
+
+def _bins_json(mc: MonteCarloResult, z: np.ndarray) -> list[dict]:
+    """One record per range bin: RMSE per method (m), instants, z-score, polar RMSE and NEES."""
     bins = []
     for b in range(mc.bin_edges_m.size - 1):
         prm = {m: mc.polar_rmse(m)[b] for m in mc.methods}
@@ -311,8 +330,46 @@ def run(args: argparse.Namespace) -> int:
             },
             "nees": {m: float(mc.nees(m)[b]) for m in mc.methods},
         })
-    files = _plots(out, sc, mc, fine)
+    return bins
+
+
+def _scenario_json(sc: LandingScenario) -> dict:
+    """The scenario at the edge's units (deg, mrad, ms)."""
     g = sc.geometry
+    return {
+        "glide_slope_deg": float(np.degrees(sc.approach.glide_slope_rad)),
+        "ground_speed_mps": sc.approach.ground_speed_mps,
+        "closure_speed_mps": sc.closure_speed_mps,
+        "start_range_m": sc.approach.start_range_m,
+        "end_range_m": sc.approach.end_range_m,
+        "duration_s": sc.duration_s,
+        "ship_speed_mps": sc.ship.speed_mps,
+        "yaw_deg": float(np.degrees(sc.ship.yaw_amplitude_rad)), "yaw_period_s": sc.ship.yaw_period_s,
+        "pitch_deg": float(np.degrees(sc.ship.pitch_amplitude_rad)), "pitch_period_s": sc.ship.pitch_period_s,
+        "roll_deg": float(np.degrees(sc.ship.roll_amplitude_rad)), "roll_period_s": sc.ship.roll_period_s,
+        "angled_deck_deg": float(np.degrees(g.angled_deck_rad)),
+        "l_touchdown_deck_m": g.l_touchdown_deck_m.tolist(),
+        "l_radar_deck_m": g.l_radar_deck_m.tolist(),
+        "l_camera_deck_m": g.l_camera_deck_m.tolist(),
+        "radar": {"rate_hz": sc.radar.rate_hz, "sigma_range_m": sc.radar.sigma_range_m,
+                  "sigma_angle_mrad": sc.radar.sigma_azimuth_rad * 1e3, "clock_offset_ms": sc.radar.clock_offset_s * 1e3},
+        "camera": {"rate_hz": sc.camera.rate_hz, "sigma_angle_mrad": sc.camera.sigma_azimuth_rad * 1e3,
+                   "clock_offset_ms": sc.camera.clock_offset_s * 1e3},
+    }
+
+
+def run(args: argparse.Namespace) -> int:
+    _check_args(args)
+    sc = scenario_from_args(args)
+    config = _config(args, sc)
+    out: Path = args.out
+    out.mkdir(parents=True, exist_ok=True)
+    start = time.perf_counter()
+    fine, mc = _evaluate(args, sc, config)
+    elapsed = time.perf_counter() - start
+    nees, z = _report(args, sc, config, mc)
+    bins = _bins_json(mc, z)
+    files = _plots(out, mc, fine)
     summary = {
         "command": "registration landing",
         "runs": args.runs,
@@ -322,26 +379,7 @@ def run(args: argparse.Namespace) -> int:
                     "fused eq. 12": "rmse_fused_m", "fused joint update": "rmse_fused_information_m"},
         "bins": bins,
         "mean_nees": nees,
-        "scenario": {
-            "glide_slope_deg": float(np.degrees(sc.approach.glide_slope_rad)),
-            "ground_speed_mps": sc.approach.ground_speed_mps,
-            "closure_speed_mps": sc.closure_speed_mps,
-            "start_range_m": sc.approach.start_range_m,
-            "end_range_m": sc.approach.end_range_m,
-            "duration_s": sc.duration_s,
-            "ship_speed_mps": sc.ship.speed_mps,
-            "yaw_deg": float(np.degrees(sc.ship.yaw_amplitude_rad)), "yaw_period_s": sc.ship.yaw_period_s,
-            "pitch_deg": float(np.degrees(sc.ship.pitch_amplitude_rad)), "pitch_period_s": sc.ship.pitch_period_s,
-            "roll_deg": float(np.degrees(sc.ship.roll_amplitude_rad)), "roll_period_s": sc.ship.roll_period_s,
-            "angled_deck_deg": float(np.degrees(g.angled_deck_rad)),
-            "l_touchdown_deck_m": g.l_touchdown_deck_m.tolist(),
-            "l_radar_deck_m": g.l_radar_deck_m.tolist(),
-            "l_camera_deck_m": g.l_camera_deck_m.tolist(),
-            "radar": {"rate_hz": sc.radar.rate_hz, "sigma_range_m": sc.radar.sigma_range_m,
-                      "sigma_angle_mrad": sc.radar.sigma_azimuth_rad * 1e3, "clock_offset_ms": sc.radar.clock_offset_s * 1e3},
-            "camera": {"rate_hz": sc.camera.rate_hz, "sigma_angle_mrad": sc.camera.sigma_azimuth_rad * 1e3,
-                       "clock_offset_ms": sc.camera.clock_offset_s * 1e3},
-        },
+        "scenario": _scenario_json(sc),
         "processing": {
             "fusion_rate_hz": config.fusion_rate_hz, "degree": config.degree, "half_window_s": config.half_window_s,
             "radar_clock_offset_ms": config.radar_clock_offset_s * 1e3,
