@@ -1,4 +1,4 @@
-"""Tests for D: dissimilar-dimension fusion (registration.fusion, SPEC section 3, issue 4).
+"""Tests of dissimilar-dimension fusion (registration.fusion): the paper's method, the optimal fuser, the CRLB.
 
 Statistical tests use vectorised Monte Carlo with fixed seeds. Each states its reasoning: for n
 independent Gaussian samples, a variance estimate has a relative standard error sqrt(2/(n-1)),
