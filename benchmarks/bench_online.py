@@ -62,7 +62,7 @@ import numpy as np
 
 import registration
 from registration import _codegen as _loader
-from registration.online.filter import OnlineRegistrar, RegistrationConfig, register
+from registration.online import OnlineRegistrar, RegistrationConfig, register
 from registration.online.scenario import paper_scenario
 from registration.online.contract import DATA_COLUMNS, N_STATE
 

@@ -35,7 +35,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from registration.online.montecarlo import parse_sum, run_montecarlo
-    from registration.online.filter import RegistrationConfig
+    from registration.online import RegistrationConfig
 
     if args.runs < 2:
         raise ValueError(f"--runs: expected at least 2 runs, got {args.runs}")

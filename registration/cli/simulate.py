@@ -1,4 +1,4 @@
-"""``registration simulate``: the paper scenario (seed 000) end to end, with a report and plots."""
+"""``registration simulate``: the two-ship scenario of Wang et al. 2011 end to end, with a report and plots."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
-from registration.online.filter import DEFAULT_LINEARIZATION, LINEARIZATIONS
+from registration.online import DEFAULT_LINEARIZATION, LINEARIZATIONS
 
 HELP = "simulate the paper's two-ship scenario, register online, and compare with the paper's Table 1"
 
@@ -72,27 +72,6 @@ def table1_lines(stats: dict, paper: dict, noise_free: dict | None = None) -> li
     return lines
 
 
-def estimate_rows(result, truth_state) -> list[dict]:
-    from registration.online.contract import IS_ANGLE, STATE_NAMES
-
-    rows = []
-    sigma = result.final_sigma
-    for i, name in enumerate(STATE_NAMES):
-        rows.append({
-            "name": name, "unit": "rad" if IS_ANGLE[i] else "m", "estimate": float(result.final[i]),
-            "sigma": float(sigma[i]), "truth": None if truth_state is None else float(truth_state[i]),
-            "status": result.observability.status[name],
-        })
-    for comb in result.identifiable_combinations():
-        i, j = comb["indices"]
-        rows.append({
-            "name": comb["name"], "unit": "rad", "estimate": comb["estimate"], "sigma": comb["sigma"],
-            "truth": None if truth_state is None else float(truth_state[i] + truth_state[j]),
-            "status": "identifiable combination",
-        })
-    return rows
-
-
 def estimate_lines(rows: list[dict]) -> list[str]:
     lines = [f"  {'state':<14}{'estimate':>12}{'± 2σ':>10}{'truth':>10}  unit  status"]
     for r in rows:
@@ -105,7 +84,7 @@ def estimate_lines(rows: list[dict]) -> list[str]:
 
 
 def run(args: argparse.Namespace) -> int:
-    from registration.online.filter import RegistrationConfig, register
+    from registration.online import RegistrationConfig, register
     from registration.online.scenario import PAPER_TABLE1, paper_scenario
 
     if not 0 < args.angle_sigma_deg < 20:
@@ -127,9 +106,9 @@ def run(args: argparse.Namespace) -> int:
         seed=args.seed, angle_sigma=0.0, range_sigma=0.0, n_steps=args.steps, ship_motion=motion, t_variant="standard",
     )
     noise_free = register(quiet.data, config).statistics()
-    rows = estimate_rows(result, scenario.truth_state)
+    rows = result.estimate_rows(scenario.truth_state)
 
-    print(f"Paper scenario (seed 000 section 4): {args.steps} pairs at 1 s, seed {args.seed}, "
+    print(f"Paper scenario (Wang et al. 2011, section 4): {args.steps} pairs at 1 s, seed {args.seed}, "
           f"angle noise {args.angle_sigma_deg} deg, range noise {args.range_sigma_m} m, "
           f"ships {'level (paper)' if motion is None else 'pitching/rolling ' + args.ship_motion}; "
           f"linearization {args.linearization}, Q {args.q_mode}, T {args.t_variant}")
@@ -172,7 +151,7 @@ def run(args: argparse.Namespace) -> int:
         written.append(plot_differences(result, out / "differences.png"))
         written.append(plot_estimates(result, scenario.truth_state, out / "estimates.png"))
     if args.export is not None:
-        from registration.recorded.formats import write_table  # recorded-data formats (issue 6)
+        from registration.recorded.formats import write_table
 
         write_table(scenario.data, args.export)
         written.append(args.export)

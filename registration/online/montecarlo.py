@@ -1,37 +1,8 @@
-"""Monte Carlo evaluation of the online registration filter on the paper scenario.
+"""Monte Carlo evaluation of the online filter on the paper scenario: RMSE against the filter's
+sigma and the Cramér-Rao bound, and NEES/NIS against their chi-square intervals (docs/online.md).
 
-:func:`run_montecarlo` runs :func:`registration.scenarios.paper_scenario` with seeds
-``seed0 .. seed0 + runs - 1`` (the trajectory and the truth are the same in every run; only the
-measurement noise changes), registers each run with :func:`registration.online.register` and,
-for every *identifiable* quantity, compares against time:
-
-* the **RMSE** over runs of the estimate (``sqrt(mean_runs (c^T (x_hat - x))^2)``);
-* the **filter's own sigma**: ``sqrt(c^T P c)``, as the root mean square over runs (the figure
-  to set beside the RMSE) and as the mean 2-sigma;
-* a **Cramér-Rao bound** with the prior: ``CRLB_k = (P0^-1 + sum_{i<=k} H_i^T R_i^-1 H_i)^-1``,
-  with ``H_i`` and ``R_i`` from the generated ``pseudo_measurement_<variant>`` function evaluated
-  at the TRUE plots and attitudes of the scenario (``Scenario.truth``), the scenario's noise
-  sigmas, and the world's T variant (the one the data were simulated with). H is never
-  re-derived here.
-
-The truth is the same in every run and the prior is centred on zero, so the bound (a Bayesian
-one, an average over truths drawn from the prior) is not a strict floor for the RMSE at this one
-truth: where the data say little, the estimate sits near the prior mean and the RMSE can dip
-below it (early in the run); the ``bias`` (mean error over runs) shows what is systematic.
-
-Which quantities are identifiable comes from the observability report of the runs themselves:
-a state counts when ``result.observability.status`` calls it ``identifiable`` in *every* run; a
-sum such as ``dC_a + dq_a`` (identifiable on a level ship although its parts are not) counts when
-``result.identifiable_combinations()`` lists it in every run. Weak states (``include_weak``) and
-user-requested sums (``extra_sums``) can be shown too, flagged, but never enter the NEES.
-
-**NEES** of the identifiable part (dimension m): ``e^T (T P T^T)^-1 e`` with ``e = T (x_hat - x)``,
-averaged over the M runs. For a consistent filter ``M * avgNEES ~ chi2(M m)``, so the 95 %
-interval of the average is ``[chi2.ppf(0.025, M m) / M, chi2.ppf(0.975, M m) / M]``
-(:func:`nees_interval`). The NIS (3 degrees of freedom per step) gets the same treatment.
-
-Memory: every run's estimates and covariances are kept (about 1.2 kB per row and run: 35 MB
-for 100 runs of 300 rows).
+Seeds ``seed0 .. seed0 + runs - 1`` change only the noise; a state (or sum) is evaluated when the
+observability report calls it identifiable in every run. Memory: about 1.2 kB per row and run.
 """
 
 from __future__ import annotations
@@ -40,76 +11,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from registration import _codegen as _loader
-from registration.online.filter import RegistrationConfig, register
+from registration.online.batch import register
+from registration.online.crlb import crlb_from_information, crlb_information, nees_interval, nees_series
+from registration.online.config import RegistrationConfig
 from registration.online.scenario import paper_scenario
 from registration.online.contract import IS_ANGLE, N_STATE, STATE_LABELS, STATE_NAMES
 
 __all__ = ["Quantity", "MonteCarloResult", "run_montecarlo", "crlb_information", "nees_interval", "nees_series", "parse_sum"]
 
-_DEG = 180.0 / np.pi
-
-
-# --------------------------------------------------------------------------- helpers
-def nees_interval(runs: int, dof: int, level: float = 0.95) -> tuple[float, float]:
-    """Two-sided ``level`` interval of the run-averaged NEES (or NIS) of a consistent filter.
-
-    With ``runs`` independent runs and ``dof`` dimensions per run, ``runs * avg ~ chi2(runs * dof)``,
-    so the interval of the average is ``chi2.ppf((1 -+ level) / 2, runs * dof) / runs``.
-    """
-    from scipy.stats import chi2
-
-    if runs < 1 or dof < 1:
-        raise ValueError(f"nees_interval: need runs >= 1 and dof >= 1, got runs={runs}, dof={dof}")
-    alpha = 1.0 - level
-    n = runs * dof
-    return float(chi2.ppf(alpha / 2, n) / runs), float(chi2.ppf(1 - alpha / 2, n) / runs)
-
-
-def crlb_information(scenario, sigma0=None, t_variant: str | None = None) -> np.ndarray:
-    """Per-step Fisher information ``H_i^T R_i^-1 H_i`` (K, 12, 12) at the scenario's true values.
-
-    H and R come from the generated ``pseudo_measurement_<t_variant>`` evaluated at the exact
-    navigation, the TRUE attitude and the TRUE plots (``scenario.truth``), with the noise sigmas
-    ``sigma0`` (default: those the scenario was simulated with). ``t_variant`` defaults to the
-    variant the scenario was simulated with.
-    """
-    t_variant = t_variant or scenario.description.get("t_variant", "standard")
-    sigma0 = np.asarray(scenario.sigma0 if sigma0 is None else sigma0, dtype=float)
-    fn = _loader.get(f"pseudo_measurement_{t_variant}")
-    d, tr = scenario.data, scenario.truth
-    args = []
-    for p in ("a", "b"):
-        args.append(np.stack([d[f"{p}_lat"], d[f"{p}_lon"], d[f"{p}_alt"]], axis=1))
-        args.append(np.stack([tr[f"{p}_heading"], tr[f"{p}_pitch"], tr[f"{p}_roll"]], axis=1))
-        args.append(np.asarray(tr[f"{p}_plot"], dtype=float))
-    out = dict(zip(fn.output_names, fn(*args, sigma0)))
-    H, R = out["H"], out["R"]
-    RinvH = np.linalg.solve(R, H)  # (K, 3, 12)
-    info = np.einsum("kai,kaj->kij", H, RinvH)
-    return 0.5 * (info + info.transpose(0, 2, 1))
-
-
-def nees_series(err: np.ndarray, P: np.ndarray, T: np.ndarray) -> np.ndarray:
-    """NEES of the part ``T x`` of the state: ``e^T (T P T^T)^-1 e`` with ``e = T err``.
-
-    ``err`` (runs, K, n) estimate - truth, ``P`` (runs, K, n, n) the filter covariances, ``T``
-    (m, n) the directions. Returns (runs, K).
-    """
-    e = err @ T.T
-    C = np.einsum("qi,rkij,pj->rkqp", T, P, T, optimize=True)
-    return np.einsum("rkq,rkq->rk", e, np.linalg.solve(C, e[..., None])[..., 0])
-
-
-def _crlb_from_information(info_steps: np.ndarray, prior_sigma) -> np.ndarray:
-    """``(P0^-1 + cumsum information)^-1`` for every step (K, 12, 12)."""
-    p0_inv = np.diag(1.0 / np.square(np.asarray(prior_sigma, dtype=float)))
-    J = p0_inv[None] + np.cumsum(info_steps, axis=0)
-    # scale to unit diagonal before inverting: the states mix radians and metres
-    s = 1.0 / np.sqrt(np.einsum("kii->ki", J))
-    Js = s[:, :, None] * J * s[:, None, :]
-    C = s[:, :, None] * np.linalg.inv(Js) * s[:, None, :]
-    return 0.5 * (C + C.transpose(0, 2, 1))
 
 
 def parse_sum(text: str) -> tuple[str, str]:
@@ -146,7 +55,7 @@ class Quantity:
     @property
     def scale(self) -> float:
         """SI -> display (deg or m)."""
-        return _DEG if self.angle else 1.0
+        return np.degrees(1.0) if self.angle else 1.0
 
     @property
     def label(self) -> str:
@@ -359,6 +268,68 @@ class MonteCarloResult:
 
 
 # --------------------------------------------------------------------------- runner
+def _collect_runs(runs: int, seed0: int, config, progress: bool, scenario_kwargs: dict) -> dict:
+    """Register every seed's scenario; keep errors, covariances, NIS, the mean CRLB and status counts."""
+    iterator = range(runs)
+    if progress:
+        from tqdm import tqdm
+
+        iterator = tqdm(iterator, desc="Monte Carlo", unit="run")
+    out: dict = {"status_counts": {n: {} for n in STATE_NAMES}, "combo_counts": {}}
+    for r in iterator:
+        sc = paper_scenario(seed=seed0 + r, **scenario_kwargs)
+        cfg = config if config is not None else RegistrationConfig(sigma0=tuple(sc.sigma0))
+        res = register(sc.data, cfg)
+        if r == 0:
+            k = len(res.time)
+            out.update(time=res.time, description=dict(sc.description), err=np.empty((runs, k, N_STATE)),
+                       P=np.empty((runs, k, N_STATE, N_STATE)), nis=np.empty((runs, k)),
+                       crlb=np.zeros((k, N_STATE, N_STATE)))
+        out["err"][r] = res.estimates - sc.truth_state
+        out["P"][r] = res.covariances
+        out["nis"][r] = res.nis
+        out["crlb"] += crlb_from_information(crlb_information(sc), cfg.prior_sigma)
+        for name, status in res.observability.status.items():
+            counts = out["status_counts"][name]
+            counts[status] = counts.get(status, 0) + 1
+        for comb in res.identifiable_combinations():
+            pair = tuple(STATE_NAMES[i] for i in sorted(comb["indices"]))
+            out["combo_counts"][pair] = out["combo_counts"].get(pair, 0) + 1
+    out["config"] = cfg
+    out["crlb"] = out["crlb"] / runs
+    return out
+
+
+def _direction(names) -> np.ndarray:
+    d = np.zeros(N_STATE)
+    d[[STATE_NAMES.index(n) for n in names]] = 1.0
+    return d
+
+
+def _select_quantities(runs, status_counts, combo_counts, include_weak, sums_requested) -> tuple[list, dict]:
+    """Identifiable (in every run) states, then identifiable sums, then flagged weak states and requested sums."""
+    quantities: list[Quantity] = []
+    excluded = {}
+    for i, name in enumerate(STATE_NAMES):
+        counts = status_counts[name]
+        if counts.get("identifiable", 0) == runs:
+            quantities.append(Quantity(name, _direction([name]), "identifiable", bool(IS_ANGLE[i])))
+        elif include_weak and counts.get("not identifiable", 0) == 0:
+            quantities.append(Quantity(name, _direction([name]), "weak", bool(IS_ANGLE[i])))
+        else:
+            excluded[name] = ", ".join(f"{s}: {c}" for s, c in sorted(counts.items()))
+    for (a, b), count in sorted(combo_counts.items(), key=lambda t: (STATE_NAMES.index(t[0][0]), STATE_NAMES.index(t[0][1]))):
+        if count == runs:
+            quantities.append(Quantity(f"{a} + {b}", _direction([a, b]), "identifiable combination", bool(IS_ANGLE[STATE_NAMES.index(a)])))
+    have = {q.name for q in quantities}
+    for a, b in sums_requested:
+        name = f"{a} + {b}"
+        if name not in have:
+            quantities.append(Quantity(name, _direction([a, b]), "requested sum", bool(IS_ANGLE[STATE_NAMES.index(a)])))
+            have.add(name)
+    return quantities, excluded
+
+
 def run_montecarlo(
     runs: int = 100,
     seed0: int = 0,
@@ -384,79 +355,14 @@ def run_montecarlo(
     if "seed" in scenario_kwargs:
         raise ValueError("pass the first seed as seed0, not in the scenario arguments")
     sums_requested = [parse_sum(s) if isinstance(s, str) else parse_sum("+".join(s)) for s in extra_sums]
-    iterator = range(runs)
-    if progress:
-        from tqdm import tqdm
-
-        iterator = tqdm(iterator, desc="Monte Carlo", unit="run")
-
-    err = P = nis = None
-    crlb_sum = None
-    status_counts = {n: {} for n in STATE_NAMES}
-    combo_counts: dict[tuple[str, str], int] = {}
-    description = None
-    time = None
-    for r in iterator:
-        sc = paper_scenario(seed=seed0 + r, **scenario_kwargs)
-        cfg = config if config is not None else RegistrationConfig(sigma0=tuple(sc.sigma0))
-        res = register(sc.data, cfg)
-        if err is None:
-            k = len(res.time)
-            time, description = res.time, dict(sc.description)
-            err = np.empty((runs, k, N_STATE))
-            P = np.empty((runs, k, N_STATE, N_STATE))
-            nis = np.empty((runs, k))
-            crlb_sum = np.zeros((k, N_STATE, N_STATE))
-        err[r] = res.estimates - sc.truth_state
-        P[r] = res.covariances
-        nis[r] = res.nis
-        crlb_sum += _crlb_from_information(crlb_information(sc), cfg.prior_sigma)
-        for name, status in res.observability.status.items():
-            status_counts[name][status] = status_counts[name].get(status, 0) + 1
-        for comb in res.identifiable_combinations():
-            pair = tuple(STATE_NAMES[i] for i in sorted(comb["indices"]))
-            combo_counts[pair] = combo_counts.get(pair, 0) + 1
-    config_used = cfg
-    crlb = crlb_sum / runs
-
-    # -- which quantities: identifiable (in every run) states, then sums, then flagged extras
-    quantities: list[Quantity] = []
-    excluded = {}
-    for i, name in enumerate(STATE_NAMES):
-        counts = status_counts[name]
-        e = np.zeros(N_STATE)
-        e[i] = 1.0
-        if counts.get("identifiable", 0) == runs:
-            quantities.append(Quantity(name, e, "identifiable", bool(IS_ANGLE[i])))
-        else:
-            if include_weak and counts.get("not identifiable", 0) == 0:
-                quantities.append(Quantity(name, e, "weak", bool(IS_ANGLE[i])))
-            else:
-                excluded[name] = ", ".join(f"{s}: {c}" for s, c in sorted(counts.items()))
-    for (a, b), count in sorted(combo_counts.items(), key=lambda t: (STATE_NAMES.index(t[0][0]), STATE_NAMES.index(t[0][1]))):
-        if count == runs:
-            d = np.zeros(N_STATE)
-            d[[STATE_NAMES.index(a), STATE_NAMES.index(b)]] = 1.0
-            quantities.append(Quantity(f"{a} + {b}", d, "identifiable combination", bool(IS_ANGLE[STATE_NAMES.index(a)])))
-    have = {q.name for q in quantities}
-    for a, b in sums_requested:
-        name = f"{a} + {b}"
-        if name not in have:
-            d = np.zeros(N_STATE)
-            d[[STATE_NAMES.index(a), STATE_NAMES.index(b)]] = 1.0
-            quantities.append(Quantity(name, d, "requested sum", bool(IS_ANGLE[STATE_NAMES.index(a)])))
-            have.add(name)
-
+    runs_data = _collect_runs(runs, seed0, config, progress, scenario_kwargs)
+    quantities, excluded = _select_quantities(runs, runs_data["status_counts"], runs_data["combo_counts"],
+                                              include_weak, sums_requested)
+    err, P, crlb = runs_data["err"], runs_data["P"], runs_data["crlb"]
     m = len(quantities)
     T = np.array([q.direction for q in quantities]).reshape(m, N_STATE)
     e_q = err @ T.T  # (runs, K, m)
     var_q = np.einsum("qi,rkij,qj->rkq", T, P, T, optimize=True)
-    rmse = np.sqrt(np.mean(e_q**2, axis=0))
-    mean_error = np.mean(e_q, axis=0)
-    filter_sigma = np.sqrt(np.mean(var_q, axis=0))
-    two_sigma = np.mean(2.0 * np.sqrt(np.clip(var_q, 0.0, None)), axis=0)
-    crlb_sigma = np.sqrt(np.clip(np.einsum("qi,kij,qj->kq", T, crlb, T), 0.0, None))
-
     in_nees = np.array([q.in_nees for q in quantities], dtype=bool)
     m_nees = int(in_nees.sum())
     if m_nees:
@@ -464,14 +370,18 @@ def run_montecarlo(
         interval = nees_interval(runs, m_nees)
     else:
         nees, interval = None, None
-
+    description = runs_data["description"]
+    combo_counts = runs_data["combo_counts"]
     description.pop("seed", None)
     return MonteCarloResult(
-        runs=runs, seed0=seed0, config=config_used, scenario=description,
+        runs=runs, seed0=seed0, config=runs_data["config"], scenario=description,
         scenario_kwargs={k: (v.__dict__ if hasattr(v, "__dict__") else v) for k, v in scenario_kwargs.items()},
-        time=time, quantities=quantities, rmse=rmse, mean_error=mean_error, filter_sigma=filter_sigma,
-        filter_two_sigma_mean=two_sigma, crlb_sigma=crlb_sigma, nees=nees, nees_dof=m_nees, nees_interval=interval,
-        nis=nis.mean(axis=0), nis_interval=nees_interval(runs, 3),
-        status_counts=status_counts, combination_counts={f"{a} + {b}": c for (a, b), c in combo_counts.items()},
+        time=runs_data["time"], quantities=quantities, rmse=np.sqrt(np.mean(e_q**2, axis=0)),
+        mean_error=np.mean(e_q, axis=0), filter_sigma=np.sqrt(np.mean(var_q, axis=0)),
+        filter_two_sigma_mean=np.mean(2.0 * np.sqrt(np.clip(var_q, 0.0, None)), axis=0),
+        crlb_sigma=np.sqrt(np.clip(np.einsum("qi,kij,qj->kq", T, crlb, T), 0.0, None)),
+        nees=nees, nees_dof=m_nees, nees_interval=interval,
+        nis=runs_data["nis"].mean(axis=0), nis_interval=nees_interval(runs, 3),
+        status_counts=runs_data["status_counts"], combination_counts={f"{a} + {b}": c for (a, b), c in combo_counts.items()},
         excluded=excluded,
     )

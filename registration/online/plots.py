@@ -6,22 +6,14 @@ from pathlib import Path
 
 import numpy as np
 
-from registration.online.filter import RegistrationResult
+from registration.core.plotting import pyplot
+from registration.online.result import RegistrationResult
 from registration.online.contract import IS_ANGLE, STATE_LABELS, STATE_NAMES, display_unit, to_display
-
-
-def _pyplot():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
 
 
 def plot_tracks(data: dict, truth: dict | None, path: Path) -> Path:
     """Ships' tracks and the target (Fig. 2a/1): longitude/latitude in degrees."""
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(7, 6))
     for prefix, colour in (("a", "tab:blue"), ("b", "tab:orange")):
         lon, lat = np.degrees(data[f"{prefix}_lon"]), np.degrees(data[f"{prefix}_lat"])
@@ -46,7 +38,7 @@ def plot_tracks(data: dict, truth: dict | None, path: Path) -> Path:
 
 def plot_differences(result: RegistrationResult, path: Path) -> Path:
     """X_A - X_B per ECEF axis before and after registration (Fig. 2c and 4c)."""
-    plt = _pyplot()
+    plt = pyplot()
     fig, axes = plt.subplots(3, 1, figsize=(9, 8), sharex=True)
     for i, (ax, axis) in enumerate(zip(axes, "XYZ")):
         ax.plot(result.time, result.raw_difference_ecef[:, i], color="tab:red", lw=0.8, label="before")
@@ -65,7 +57,7 @@ def plot_differences(result: RegistrationResult, path: Path) -> Path:
 
 def plot_estimates(result: RegistrationResult, truth_state: np.ndarray | None, path: Path) -> Path:
     """Every state's estimate against time with a +-2 sigma band and the true value (Fig. 3)."""
-    plt = _pyplot()
+    plt = pyplot()
     fig, axes = plt.subplots(6, 2, figsize=(11, 15), sharex=True)  # left: ship/radar A, right: B
     sigma = np.sqrt(np.einsum("kii->ki", result.covariances))
     est = to_display(result.estimates)

@@ -1,8 +1,8 @@
-"""Simulated scenarios for online registration (SPEC section 2, seed 000 section 4).
+"""Simulated scenarios for online registration: the two-ship set-up of Wang et al. 2011, section 4.
 
-:func:`paper_scenario` rebuilds the paper's two-ship set-up. The paper's target came from a
-simulator (STAGE) we do not have; the trajectory here is our own design "in that spirit", fully
-documented in the docstring, and is not tuned to reproduce any printed number.
+:func:`paper_scenario` rebuilds the paper's ships, errors and noise. The paper's target came
+from a simulator (STAGE) that is not available; the trajectory here is our own, documented in the
+docstring, and is not tuned to reproduce any printed number.
 """
 
 from __future__ import annotations
@@ -11,7 +11,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from registration import _codegen as _loader
+from registration import _codegen
+from registration.core.angles import wrap_angle
 from registration.online.contract import N_STATE, STATE_NAMES
 
 __all__ = ["ShipMotion", "Scenario", "paper_scenario", "PAPER_TABLE1"]
@@ -67,7 +68,7 @@ def _dead_reckon(lat0, lon0, alt, course, speed, dt, substeps=10):
     Returns lat, lon (K,) at the sample instants; latitude and longitude rates use the WGS-84
     radii of curvature (generated function ``radii_of_curvature``).
     """
-    radii = _loader.get("radii_of_curvature")
+    radii = _codegen.get("radii_of_curvature")
     k = len(course)
     lat, lon = np.empty(k), np.empty(k)
     la, lo = float(lat0), float(lon0)
@@ -91,6 +92,54 @@ def _target_course(t: np.ndarray) -> np.ndarray:
     return np.radians(np.mod(deg, 360.0))
 
 
+#: The paper's ships: start (rad), course (rad, clockwise from north), speed (m/s), wave phase.
+_PAPER_SHIPS = {
+    "a": dict(lat0=np.radians(20.0), lon0=np.radians(115.0), course=np.radians(150.0), speed=12.0, phase=0.0),
+    "b": dict(lat0=np.radians(20.0), lon0=np.radians(115.5), course=np.radians(330.0), speed=8.0, phase=2.1),
+}
+
+
+def _paper_target(t: np.ndarray, dt: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Target latitude, longitude (rad) and altitude (m): 45 km north of the ships' midpoint, 200 m/s."""
+    n_steps = len(t)
+    mid_lat, mid_lon = np.radians(20.0), np.radians(115.25)
+    M, N = _codegen.get("radii_of_curvature")(mid_lat)[0][0]
+    tgt_alt = np.linspace(2000.0, 4000.0, n_steps)
+    tgt_lat, tgt_lon = _dead_reckon(
+        mid_lat + 45_000.0 / (M + 2000.0), mid_lon, tgt_alt, _target_course(t), 200.0 * np.ones(n_steps), dt
+    )
+    return tgt_lat, tgt_lon, tgt_alt
+
+
+def _ship_plots(prefix, ship, t, dt, p_target_ecef, errors, sigmas, rng, *, ship_motion, antenna_height, t_variant):
+    """One ship's data-contract columns (measured, with errors and noise) and its truth."""
+    n_steps = len(t)
+    ones = np.ones(n_steps)
+    alt = antenna_height * ones
+    lat, lon = _dead_reckon(ship["lat0"], ship["lon0"], alt, ship["course"] * ones, ship["speed"] * ones, dt)
+    heading = ship["course"] * ones
+    if ship_motion is None:
+        pitch, roll = np.zeros(n_steps), np.zeros(n_steps)
+    else:
+        pitch, roll = ship_motion.angles(t, ship["phase"])
+    plot = _codegen.get(f"ecef2plot_{t_variant}")(p_target_ecef, lat, lon, alt, heading, pitch, roll)[0]
+    noise = rng.normal(size=(n_steps, 3)) * sigmas
+    measured = plot + [errors["range"], errors["bearing"], errors["elevation"]] + noise
+    data = {
+        f"{prefix}_lat": lat, f"{prefix}_lon": lon, f"{prefix}_alt": alt,
+        f"{prefix}_heading": wrap_angle(heading + errors["heading"]),
+        f"{prefix}_pitch": pitch + errors["pitch"], f"{prefix}_roll": roll + errors["roll"],
+        f"{prefix}_range": measured[:, 0],
+        f"{prefix}_bearing": wrap_angle(measured[:, 1]),
+        f"{prefix}_elevation": measured[:, 2],
+    }
+    truth = {
+        f"{prefix}_heading": heading, f"{prefix}_pitch": pitch, f"{prefix}_roll": roll,
+        f"{prefix}_plot": plot, f"{prefix}_p_ecef": _codegen.get("geodetic2ecef")(lat, lon, alt)[0],
+    }
+    return data, truth
+
+
 def paper_scenario(
     seed: int = 0,
     *,
@@ -106,7 +155,7 @@ def paper_scenario(
     antenna_height: float = 20.0,
     t_variant: str = "standard",
 ) -> Scenario:
-    """The paper's scenario (seed 000, section 4), with our own documented target trajectory.
+    """The paper's scenario (Wang et al. 2011, section 4), with our own documented target trajectory.
 
     Ships (true values; navigation is exact, as the paper assumes high-precision GPS):
 
@@ -139,54 +188,23 @@ def paper_scenario(
             raise ValueError(f"{name}: {v} rad is implausibly large (pass radians, not degrees)")
     rng = np.random.default_rng(seed)
     t = np.arange(n_steps) * dt
-    ones = np.ones(n_steps)
-
-    ships = {
-        "a": dict(lat0=np.radians(20.0), lon0=np.radians(115.0), course=np.radians(150.0), speed=12.0, phase=0.0),
-        "b": dict(lat0=np.radians(20.0), lon0=np.radians(115.5), course=np.radians(330.0), speed=8.0, phase=2.1),
-    }
-    mid_lat, mid_lon = np.radians(20.0), np.radians(115.25)
-    M, N = _loader.get("radii_of_curvature")(mid_lat)[0][0]
-    tgt_alt = np.linspace(2000.0, 4000.0, n_steps)
-    tgt_lat, tgt_lon = _dead_reckon(
-        mid_lat + 45_000.0 / (M + 2000.0), mid_lon, tgt_alt, _target_course(t), 200.0 * ones, dt
-    )
-    p_target_ecef = _loader.get("geodetic2ecef")(tgt_lat, tgt_lon, tgt_alt)[0]
-
+    tgt_lat, tgt_lon, tgt_alt = _paper_target(t, dt)
+    p_target_ecef = _codegen.get("geodetic2ecef")(tgt_lat, tgt_lon, tgt_alt)[0]
     errors = {
         "heading": heading_error, "pitch": level_error, "roll": level_error,
         "range": range_bias, "bearing": angle_bias, "elevation": angle_bias,
     }
     truth_state = np.array([errors[k] for k in ("heading", "pitch", "roll", "range", "bearing", "elevation")] * 2)
     assert truth_state.shape == (N_STATE,)
-
     data = {"time": t}
     truth = {"p_target_ecef": p_target_ecef, "target_lat": tgt_lat, "target_lon": tgt_lon, "target_alt": tgt_alt}
-    ecef2plot = _loader.get(f"ecef2plot_{t_variant}")
-    for prefix, ship in ships.items():
-        alt = antenna_height * ones
-        lat, lon = _dead_reckon(ship["lat0"], ship["lon0"], alt, ship["course"] * ones, ship["speed"] * ones, dt)
-        heading = ship["course"] * ones
-        if ship_motion is None:
-            pitch, roll = np.zeros(n_steps), np.zeros(n_steps)
-        else:
-            pitch, roll = ship_motion.angles(t, ship["phase"])
-        plot = ecef2plot(p_target_ecef, lat, lon, alt, heading, pitch, roll)[0]
-        noise = rng.normal(size=(n_steps, 3)) * [range_sigma, angle_sigma, angle_sigma]
-        measured = plot + [errors["range"], errors["bearing"], errors["elevation"]] + noise
-        data.update({
-            f"{prefix}_lat": lat, f"{prefix}_lon": lon, f"{prefix}_alt": alt,
-            f"{prefix}_heading": np.angle(np.exp(1j * (heading + errors["heading"]))),
-            f"{prefix}_pitch": pitch + errors["pitch"], f"{prefix}_roll": roll + errors["roll"],
-            f"{prefix}_range": measured[:, 0],
-            f"{prefix}_bearing": np.angle(np.exp(1j * measured[:, 1])),
-            f"{prefix}_elevation": measured[:, 2],
-        })
-        truth.update({
-            f"{prefix}_heading": heading, f"{prefix}_pitch": pitch, f"{prefix}_roll": roll,
-            f"{prefix}_plot": plot, f"{prefix}_p_ecef": _loader.get("geodetic2ecef")(lat, lon, alt)[0],
-        })
-    sigma0 = np.array([range_sigma, angle_sigma, angle_sigma] * 2)
+    sigmas = np.array([range_sigma, angle_sigma, angle_sigma])
+    for prefix, ship in _PAPER_SHIPS.items():
+        ship_data, ship_truth = _ship_plots(prefix, ship, t, dt, p_target_ecef, errors, sigmas, rng,
+                                            ship_motion=ship_motion, antenna_height=antenna_height, t_variant=t_variant)
+        data.update(ship_data)
+        truth.update(ship_truth)
+    sigma0 = np.tile(sigmas, 2)
     description = {
         "seed": seed, "n_steps": n_steps, "dt_s": dt, "angle_sigma_rad": angle_sigma, "range_sigma_m": range_sigma,
         "ship_motion": None if ship_motion is None else ship_motion.__dict__, "t_variant": t_variant,

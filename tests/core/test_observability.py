@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from registration.core.observability import observability_report
-from registration.online.filter import RegistrationConfig, register
+from registration.online import RegistrationConfig, register
 from registration.online.scenario import paper_scenario
 from registration.online.contract import STATE_LABELS, STATE_NAMES, STATE_UNITS
 

@@ -16,7 +16,7 @@ import pytest
 from scipy import stats
 
 from registration import _codegen as _loader
-from registration.online.filter import RegistrationConfig, register, validate_data
+from registration.online import RegistrationConfig, register, validate_data
 from registration.online.scenario import paper_scenario
 
 #: the identifiable part on level ships: dr_a, dr_b, dC_a + dq_a, dC_b + dq_b

@@ -6,10 +6,9 @@ import json
 
 import numpy as np
 import pytest
-from scipy.stats import chi2
 
 from registration.online.montecarlo import crlb_information, nees_interval, nees_series, parse_sum, run_montecarlo
-from registration.online.filter import RegistrationConfig, register
+from registration.online import RegistrationConfig, register
 from registration.online.scenario import paper_scenario
 from registration.online.contract import N_STATE, STATE_NAMES
 
@@ -78,16 +77,20 @@ def test_crlb_information_matches_the_filter_without_errors():
     np.testing.assert_allclose(info.sum(axis=0), got, rtol=1e-8, atol=1e-12 * np.abs(got).max())
 
 
-def test_nees_interval_arithmetic():
-    lo, hi = nees_interval(100, 4)
-    assert lo == pytest.approx(chi2.ppf(0.025, 400) / 100)
-    assert hi == pytest.approx(chi2.ppf(0.975, 400) / 100)
-    assert lo < 4 < hi
+def test_nees_interval_covers_the_average_of_chi_square_draws_at_its_level():
+    """The interval holds the run-averaged NEES of a consistent filter with the stated probability."""
+    rng = np.random.default_rng(7)
+    for runs, dof, level in ((100, 4, 0.95), (20, 3, 0.99), (5, 12, 0.90)):
+        lo, hi = nees_interval(runs, dof, level)
+        avg = rng.chisquare(dof, size=(40_000, runs)).mean(axis=1)
+        coverage = np.mean((avg >= lo) & (avg <= hi))
+        assert coverage == pytest.approx(level, abs=0.006), (runs, dof, level, coverage)
+        assert np.mean(avg < lo) == pytest.approx((1 - level) / 2, abs=0.005)  # two-sided, equal tails
     # one run, one dimension: the textbook chi2(1) quantiles
     lo1, hi1 = nees_interval(1, 1)
     assert lo1 == pytest.approx(0.000982, rel=1e-3) and hi1 == pytest.approx(5.0239, rel=1e-4)
     # more runs, narrower interval around the dimension
-    assert nees_interval(1000, 4)[1] - nees_interval(1000, 4)[0] < hi - lo
+    assert nees_interval(1000, 4)[1] - nees_interval(1000, 4)[0] < nees_interval(100, 4)[1] - nees_interval(100, 4)[0]
     with pytest.raises(ValueError):
         nees_interval(0, 3)
 
