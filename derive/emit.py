@@ -1,4 +1,7 @@
-"""sympy -> CasADi SX -> serialized Function + C source, with a manifest.
+"""The emitter: each function spec becomes a CasADi Function (sympy -> SX, after CSE), written as
+a serialized ``.casadi`` file and C source, plus ``manifest.json`` (each artifact's sha256, the
+derive sources hash, tool versions, constants, variant names); and the folder comparison behind
+``python -m derive --check``.
 
 Deterministic: the same derive sources and tool versions give the same bytes (run under
 PYTHONHASHSEED=0, which ``python -m derive`` arranges).
@@ -147,6 +150,7 @@ def to_casadi_function(spec: FunctionSpec) -> ca.Function:
 
 # --------------------------------------------------------------------------- files
 def sha256_bytes(data: bytes) -> str:
+    """Hex sha256 of ``data``."""
     return hashlib.sha256(data).hexdigest()
 
 
@@ -159,6 +163,7 @@ def derive_sources_sha256(derive_dir: Path = DERIVE_DIR) -> str:
 
 
 def tool_versions() -> dict:
+    """The versions of the tools whose output the artifacts depend on."""
     return {
         "casadi": ca.__version__,
         "sympy": sp.__version__,
@@ -178,19 +183,15 @@ def _c_text(fn: ca.Function) -> bytes:
     return (head + cg.dump()).encode()
 
 
-def read_casadi_text(data: bytes) -> str:
-    """Strip the do-not-edit header from a ``.casadi`` artifact; return the serialized string."""
-    lines = [ln for ln in data.decode().splitlines() if ln and not ln.startswith("#")]
-    return "".join(lines)
-
-
 def _port_meta(port) -> dict:
     return {"name": port.name, "shape": list(port.shape), "unit": port.unit}
 
 
-def emit_all(specs: list, out_dir: Path, constants: dict) -> dict:
+def emit_all(specs: list, out_dir: Path, constants: dict, variants: dict) -> dict:
     """Write every artifact and the manifest into ``out_dir``, replacing it as a whole.
 
+    ``constants`` (name -> sympy number) and ``variants`` (kind -> variant names) are recorded in
+    the manifest for the runtime.
     Everything is built in a sibling temporary folder first; ``out_dir`` is replaced only when
     every function was built, so a failing derivation leaves the previous artifacts intact.
     """
@@ -199,7 +200,7 @@ def emit_all(specs: list, out_dir: Path, constants: dict) -> dict:
     staging = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-", dir=out_dir.parent))
     staging.chmod(0o755)
     try:
-        manifest = _emit_into(specs, staging, constants)
+        manifest = _emit_into(specs, staging, constants, variants)
     except BaseException:
         shutil.rmtree(staging, ignore_errors=True)
         raise
@@ -213,7 +214,7 @@ def emit_all(specs: list, out_dir: Path, constants: dict) -> dict:
     return manifest
 
 
-def _emit_into(specs: list, out_dir: Path, constants: dict) -> dict:
+def _emit_into(specs: list, out_dir: Path, constants: dict, variants: dict) -> dict:
     functions = {}
     for spec in sorted(specs, key=lambda s: s.name):
         fn = spec.build() if hasattr(spec, "build") else to_casadi_function(spec)
@@ -241,6 +242,7 @@ def _emit_into(specs: list, out_dir: Path, constants: dict) -> dict:
         "tool_versions": tool_versions(),
         "constants": {k: float(v) for k, v in constants.items()},
         "functions": functions,
+        "variants": {kind: list(names) for kind, names in variants.items()},
     }
     (out_dir / MANIFEST_NAME).write_text(json.dumps(manifest, indent=2, sort_keys=True) + "\n")
     return manifest

@@ -20,7 +20,7 @@ class Port:
 
     ``expr`` is a sympy ``Matrix`` (column vector or matrix) or a single
     ``Symbol``/expression for a scalar. ``unit`` is free text for the manifest
-    (SI units and radians only, SPEC section 1).
+    (SI units and radians only).
     """
 
     name: str
@@ -51,6 +51,8 @@ class JacobianDecl:
 
 @dataclass(frozen=True)
 class FunctionSpec:
+    """A function given by sympy expressions: its name, docstring, ports and declared Jacobians."""
+
     name: str
     doc: str
     inputs: tuple[Port, ...]
@@ -58,12 +60,6 @@ class FunctionSpec:
     jacobians: tuple[JacobianDecl, ...] = field(default_factory=tuple)
     #: Input domains for random testing: name -> (low, high) per entry.
     domain: dict = field(default_factory=dict)
-
-    def input(self, name: str) -> Port:
-        return next(p for p in self.inputs if p.name == name)
-
-    def output(self, name: str) -> Port:
-        return next(p for p in self.outputs if p.name == name)
 
 
 def jacobian(f: sp.MatrixBase, *variables) -> sp.Matrix:

@@ -1,4 +1,9 @@
-"""generated/ is fresh, deterministic, and protected against tampering."""
+"""generated/ is fresh, deterministic, and protected against tampering.
+
+One full regeneration per test run (``python -m derive --check --fresh``, a module fixture) serves
+the freshness check and the determinism check; the stale-source test emits only the derive
+module it changes.
+"""
 
 from __future__ import annotations
 
@@ -17,6 +22,42 @@ from registration._codegen import artifacts
 
 REPO = Path(__file__).resolve().parents[2]
 REGEN = "python -m derive"
+EMIT_ONE_MODULE = """
+import sys
+from pathlib import Path
+from importlib import import_module
+from derive.emit import emit_all
+from derive.registry import CONSTANTS, VARIANTS
+emit_all(import_module("derive." + sys.argv[1]).specs(), Path(sys.argv[2]), CONSTANTS, VARIANTS)
+"""
+
+
+def _derive_env(root: Path) -> dict:
+    return dict(os.environ, PYTHONPATH=str(root), PYTHONHASHSEED="0")
+
+
+def _run_derive(args, cwd):
+    return subprocess.run([sys.executable, "-m", "derive", *args], cwd=cwd, capture_output=True, text=True,
+                          env=_derive_env(cwd))
+
+
+def _emit_modules(jobs: list[tuple[Path, str, Path]]) -> None:
+    """Emit the specs of one derive module per job (derive root, module, output folder), in parallel
+    subprocesses under the hash seed ``python -m derive`` uses."""
+    procs = [subprocess.Popen([sys.executable, "-c", EMIT_ONE_MODULE, module, str(out)], cwd=root,
+                              env=_derive_env(root), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+             for root, module, out in jobs]
+    for proc in procs:
+        _, err = proc.communicate()
+        assert proc.returncode == 0, err
+
+
+@pytest.fixture(scope="module")
+def fresh_check(tmp_path_factory):
+    """``python -m derive --check`` on this tree, keeping its fresh generation: (process, folder)."""
+    fresh = tmp_path_factory.mktemp("fresh") / "generated"
+    proc = _run_derive(["--check", "--fresh", str(fresh)], REPO)
+    return proc, fresh
 
 
 def test_manifest_matches_derive_sources():
@@ -43,41 +84,58 @@ def test_manifest_records_tools_and_artifacts():
         assert meta["inputs"] and meta["outputs"]
 
 
-def _run_derive(args, cwd):
-    env = dict(os.environ, PYTHONPATH=str(cwd))
-    return subprocess.run([sys.executable, "-m", "derive", *args], cwd=cwd, capture_output=True, text=True, env=env)
-
-
-def test_full_check_passes_on_this_tree():
-    proc = _run_derive(["--check"], REPO)
+def test_full_check_passes_on_this_tree(fresh_check):
+    proc, fresh = fresh_check
     assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert "generated/ is fresh" in proc.stdout
+    assert (fresh / "manifest.json").exists()  # the fresh generation was kept for the tests below
 
 
-def test_changed_derive_source_makes_check_fail_naming_the_command(tmp_path):
-    copy = tmp_path / "repo"
-    shutil.copytree(REPO / "derive", copy / "derive")
-    shutil.copytree(REPO / "generated", copy / "generated")
-    src = copy / "derive" / "attitude.py"
-    src.write_text(src.read_text().replace("r_ * sp.sin(e_)])", "r_ * sp.sin(e_) * 2])"))
-    proc = _run_derive(["--check"], copy)
-    assert proc.returncode != 0
-    assert "python -m derive" in proc.stdout
-    assert "deck2enu" in proc.stdout
-    # the fast check notices too
+def test_regeneration_is_deterministic(fresh_check):
+    """The checked-in generated/ was written by an earlier, independent run of ``python -m derive``:
+    byte equality with the fixture's fresh run shows two runs give the same bytes."""
+    _, fresh = fresh_check
+    files = sorted(p.name for p in fresh.iterdir() if p.is_file())
+    assert "manifest.json" in files and len(files) > 2
+    assert files == sorted(p.name for p in (REPO / "generated").iterdir() if p.is_file())
+    for f in files:
+        assert (fresh / f).read_bytes() == (REPO / "generated" / f).read_bytes(), (
+            f"{f}: two generations differ (derive/ changed without `{REGEN}`, or emission is not deterministic)")
+
+
+def test_changed_derive_source_makes_check_fail_naming_the_command(tmp_path, capsys):
+    from derive.__main__ import check
     from derive.emit import derive_sources_sha256
 
-    recorded = json.loads((copy / "generated" / "manifest.json").read_text())["derive_sources_sha256"]
+    copy = tmp_path / "repo"
+    shutil.copytree(REPO / "derive", copy / "derive", ignore=shutil.ignore_patterns("__pycache__"))
+    src = copy / "derive" / "attitude.py"
+    changed = src.read_text().replace("r_ * sp.sin(e_)])", "r_ * sp.sin(e_) * 2])")
+    assert changed != src.read_text()
+    src.write_text(changed)
+    # the fast check notices
+    recorded = json.loads((REPO / "generated" / "manifest.json").read_text())["derive_sources_sha256"]
     assert recorded != derive_sources_sha256(copy / "derive")
+    # the full check: the changed module's functions, emitted before and after the change
+    before, after = tmp_path / "before", tmp_path / "after"
+    _emit_modules([(REPO, "attitude", before), (copy, "attitude", after)])
+    assert check(after, before) == 1
+    out = capsys.readouterr().out
+    assert "python -m derive" in out
+    assert "differs: deck2enu.c" in out and "differs: deck2enu.casadi" in out
+    assert "deck2enu_rotation" not in out  # no radar measurement in it: unchanged, not blamed
+    assert "the derive/ sources changed" in out
+    assert check(before, before) == 0
 
 
-def test_regeneration_is_deterministic(tmp_path):
-    out1, out2 = tmp_path / "g1", tmp_path / "g2"
-    assert _run_derive(["--out", str(out1)], REPO).returncode == 0
-    assert _run_derive(["--out", str(out2)], REPO).returncode == 0
-    files = sorted(p.name for p in out1.iterdir())
-    assert files == sorted(p.name for p in out2.iterdir())
-    for f in files:
-        assert (out1 / f).read_bytes() == (out2 / f).read_bytes(), f
+def test_fresh_folder_goes_with_check_only():
+    from derive.__main__ import parse_args
+
+    with pytest.raises(SystemExit):
+        parse_args(["--fresh", "elsewhere"])
+    with pytest.raises(SystemExit):
+        parse_args(["--check", "--fresh", "generated", "--out", "generated"])
+    assert parse_args(["--check", "--fresh", "elsewhere"]).fresh == Path("elsewhere")
 
 
 def test_tampered_artifact_is_refused(tmp_path, monkeypatch):
@@ -96,12 +154,9 @@ def test_tampered_artifact_is_refused(tmp_path, monkeypatch):
 
 def test_failed_derivation_leaves_previous_artifacts_intact(tmp_path):
     """A derivation that raises half-way must not wipe the existing output folder."""
-    sys.path.insert(0, str(REPO))
-    try:
-        from derive.emit import emit_all
-        from derive.registry import CONSTANTS, all_specs
-    finally:
-        sys.path.remove(str(REPO))
+    from derive.emit import emit_all
+    from derive.registry import CONSTANTS, VARIANTS, all_specs
+
     out = tmp_path / "generated"
     out.mkdir()
     (out / "keep.txt").write_text("previous artifacts")
@@ -114,9 +169,9 @@ def test_failed_derivation_leaves_previous_artifacts_intact(tmp_path):
             raise RuntimeError("derivation failed")
 
     with pytest.raises(RuntimeError, match="derivation failed"):
-        emit_all([*specs, Broken()], out, CONSTANTS)
+        emit_all([*specs, Broken()], out, CONSTANTS, VARIANTS)
     assert [p.name for p in out.iterdir()] == ["keep.txt"]
     assert [p.name for p in tmp_path.iterdir()] == ["generated"]  # no staging folder left behind
-    manifest = emit_all(specs, out, CONSTANTS)
+    manifest = emit_all(specs, out, CONSTANTS, VARIANTS)
     assert sorted(manifest["functions"]) == ["geodetic2ecef", "radii_of_curvature"]
     assert not (out / "keep.txt").exists() and (out / "manifest.json").exists()
