@@ -22,7 +22,7 @@ _PROGRESS_BLOCK = 2000
 def _run_filter(registrar: OnlineRegistrar, time: np.ndarray, rows: np.ndarray, progress: bool) -> dict:
     """All rows through the filter, in one block (or in blocks with a progress bar); arrays per row."""
     k = len(time)
-    if not progress:
+    if not progress or k <= _PROGRESS_BLOCK:
         return registrar.update_block(rows, time)
     from tqdm import tqdm
 
