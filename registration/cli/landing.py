@@ -25,25 +25,19 @@ import numpy as np
 
 from registration.landing import (
     FUSION_METHODS,
-    MonteCarloResult,
     LandingConfig,
     LandingScenario,
+    MonteCarloResult,
     default_bin_edges,
     default_geometry,
     default_scenario,
     monte_carlo,
+    regroup,
     with_overrides,
 )
+from registration.landing.plots import METHOD_LABELS, write_plots
 
 HELP = "Simulate a carrier approach and fuse the landing radar with the centreline camera: position RMSE by range bin, plots."
-
-LABELS = {
-    "radar": "radar only",
-    "camera": "camera angles + radar range",
-    "paper": "fused (eq. 12)",
-    "information": "fused, joint update",
-}
-
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     d = default_scenario()
@@ -128,143 +122,6 @@ def _check_args(args: argparse.Namespace) -> None:
         raise ValueError(f"--plot-bin-m ({args.plot_bin_m} m) must divide --bin-m ({args.bin_m} m)")
 
 
-def regroup(mc: MonteCarloResult, edges: np.ndarray) -> MonteCarloResult:
-    """Merge fine bins into coarser ones whose edges are a subset of the fine edges."""
-    fine = mc.bin_edges_m
-    idx = [int(np.argmin(np.abs(fine - e))) for e in edges]
-    if any(abs(fine[i] - e) > 1e-6 for i, e in zip(idx, edges)):
-        raise ValueError("coarse bin edges must be fine bin edges")
-    sl = list(zip(idx[:-1], idx[1:]))
-
-    def merge(a, axis):
-        return np.stack([a.take(range(i, j), axis=axis).sum(axis=axis) for i, j in sl], axis=axis)
-
-    return replace(
-        mc,
-        bin_edges_m=np.asarray(edges, dtype=float),
-        sse={m: merge(v, 1) for m, v in mc.sse.items()},
-        count=merge(mc.count, 0),
-        nees_sum={m: merge(v, 1) for m, v in mc.nees_sum.items()},
-        polar_sse={m: merge(v, 0) for m, v in mc.polar_sse.items()},
-    )
-
-
-# --------------------------------------------------------------------------- plots
-def _pyplot():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    plt.rcParams.update({"font.size": 11, "axes.grid": True, "grid.alpha": 0.3})
-    return plt
-
-
-def _save(fig, path: Path) -> str:
-    import matplotlib.pyplot as plt
-
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path.name
-
-
-def _plot_attitude(plt, mc: MonteCarloResult, path: Path) -> str:
-    """The paper's Fig. 1: the ship's attitude along the approach, deg."""
-    fig, ax = plt.subplots(figsize=(9, 4.5), constrained_layout=True)
-    for k, (name, color) in enumerate((("yaw", "tab:green"), ("pitch", "tab:blue"), ("roll", "tab:red"))):
-        ax.plot(mc.t, np.degrees(mc.attitude[:, k]), color=color, label=name)
-    ax.set_xlabel("time since the start of the approach (s)")
-    ax.set_ylabel("angle (deg)")
-    ax.set_title("Ship attitude about the mean heading (known without error)")
-    top = float(np.degrees(np.abs(mc.attitude).max()))
-    ax.set_ylim(-1.15 * top, 1.6 * top)
-    ax.legend(loc="upper center", ncol=3)
-    return _save(fig, path)
-
-
-def _plot_ratios(plt, mc: MonteCarloResult, path: Path) -> str:
-    """The paper's Figs. 2-3: variance amplification ratios of both sensors against range."""
-    fig, axes = plt.subplots(1, 2, figsize=(12, 4.8), constrained_layout=True)
-    r = mc.ratios["radar"]
-    for k, (name, color) in enumerate((("range", "tab:purple"), ("azimuth", "tab:blue"), ("elevation", "tab:orange"))):
-        axes[0].plot(mc.range_m, r[:, k], color=color, label=name)
-    axes[0].set_yscale("log")
-    axes[0].set_title("Radar: variance seen from the camera / own variance")
-    c = mc.ratios["camera"]
-    for k, (name, color) in enumerate((("azimuth", "tab:blue"), ("elevation", "tab:orange"))):
-        axes[1].plot(mc.range_m, c[:, k], color=color, label=name)
-    axes[1].set_title("Camera: variance in touchdown axes / own variance")
-    lo, hi = float(np.min(c)), float(np.max(c))
-    pad = max(0.002, 0.2 * (hi - lo))
-    axes[1].set_ylim(lo - pad, hi + pad)
-    for ax in axes:
-        ax.set_xlabel("range to touchdown point (m)")
-        ax.set_ylabel("variance ratio")
-        ax.invert_xaxis()
-        ax.legend()
-    return _save(fig, path)
-
-
-def _plot_rmse(plt, mc: MonteCarloResult, fine: MonteCarloResult, path: Path) -> str:
-    """The paper's Fig. 4: RMSE of the methods against range, and eq. 12 relative to camera + radar range."""
-    fig, (ax, ax2) = plt.subplots(2, 1, figsize=(9, 7.5), sharex=True, constrained_layout=True,
-                                  gridspec_kw={"height_ratios": [3, 2]})
-    centres = 0.5 * (fine.bin_edges_m[:-1] + fine.bin_edges_m[1:])
-    styles = {"radar": ("tab:red", "o"), "camera": ("tab:blue", "s"), "paper": ("black", "^"), "information": ("tab:green", "v")}
-    base = fine.rmse("camera")
-    for m in fine.methods:
-        col, mk = styles[m]
-        ax.plot(centres, fine.rmse(m), color=col, marker=mk, ms=4, label=LABELS[m], lw=1.5 if m != "paper" else 2)
-        if m == "paper":
-            ax2.plot(centres, 100 * (fine.rmse(m) / base - 1), color=col, marker=mk, ms=4, label=LABELS[m])
-    ax.set_ylabel("3-D position RMSE (m)")
-    ax.set_ylim(bottom=0)
-    ax.set_title(f"Positioning RMSE along the approach ({mc.runs} runs, {fine.bin_edges_m[1] - fine.bin_edges_m[0]:g} m bins)")
-    ax.legend()
-    ax2.set_ylabel("fused (eq. 12) RMSE vs\ncamera + radar range (%)")
-    ax2.axhline(0, color="tab:blue", lw=1)
-    ax2.set_title("the eq. 12 gain is small: the 3-D error is dominated by the radar range, which both share", fontsize=10)
-    ax2.set_xlabel("range to touchdown point (m)")
-    ax2.invert_xaxis()
-    return _save(fig, path)
-
-
-def _plot_polar(plt, mc: MonteCarloResult, path: Path) -> str:
-    """The paper's Fig. 5: one run's fused error in polar coordinates about the camera, with the
-    predicted 3-sigma band."""
-    ex = mc.example["paper"]
-    fig, axes = plt.subplots(3, 1, figsize=(10, 8.5), sharex=True, constrained_layout=True)
-    scale = (1.0, 1e3, 1e3)
-    units = ("range error (m)", "azimuth error (mrad)", "elevation error (mrad)")
-    for k, ax in enumerate(axes):
-        if "camera" in mc.example:
-            ax.plot(mc.range_m, mc.example["camera"]["polar_error"][:, k] * scale[k], color="tab:blue", lw=0.7, alpha=0.45,
-                    label="camera angles + radar range")
-        ax.plot(mc.range_m, ex["polar_error"][:, k] * scale[k], color="black", lw=0.8, label="fused (eq. 12)")
-        s3 = 3 * ex["polar_sigma"][:, k] * scale[k]
-        ax.fill_between(mc.range_m, -s3, s3, color="tab:orange", alpha=0.25, label="fused ±3σ (predicted)")
-        ax.set_ylabel(units[k])
-        ymax = float(np.nanmax(s3) if k == 0 else np.nanpercentile(s3, 99)) * 1.3
-        ax.set_ylim(-ymax, ymax)
-    axes[0].legend(loc="upper left", ncol=3, fontsize=9)
-    axes[-1].set_xlabel("range to touchdown point (m)")
-    axes[-1].invert_xaxis()
-    axes[0].set_title("Fused estimate in polar coordinates about the camera (touchdown axes), one run")
-    return _save(fig, path)
-
-
-def _plots(out: Path, mc: MonteCarloResult, fine: MonteCarloResult) -> list[str]:
-    """Write the four PNGs into ``out``; return their file names."""
-    plt = _pyplot()
-    return [
-        _plot_attitude(plt, mc, out / "attitude.png"),
-        _plot_ratios(plt, mc, out / "variance_ratios.png"),
-        _plot_rmse(plt, mc, fine, out / "rmse.png"),
-        _plot_polar(plt, mc, out / "fused_polar.png"),
-    ]
-
-
-# --------------------------------------------------------------------------- run
 def _table(mc: MonteCarloResult) -> str:
     heads = ["range bin (m)", "radar (m)", "camera+radar r (m)", "fused (m)"]
     keys = ["radar", "camera", "paper"]
@@ -304,7 +161,7 @@ def _report(args: argparse.Namespace, sc: LandingScenario, config: LandingConfig
     print(_table(mc))
     nees = {m: float(np.nansum(mc.nees_sum[m]) / (mc.count.sum() * mc.runs)) for m in mc.methods}
     print("mean NEES (3 when the predicted covariance is right): "
-          + ", ".join(f"{LABELS[m]} {v:.2f}" for m, v in nees.items()))
+          + ", ".join(f"{METHOD_LABELS[m]} {v:.2f}" for m, v in nees.items()))
     z = mc.paired_z("paper", "camera")
     print(f"fused vs camera+radar range: paired z-score per bin (runs independent) min {np.nanmin(z):.1f}")
     return nees, z
@@ -369,7 +226,7 @@ def run(args: argparse.Namespace) -> int:
     elapsed = time.perf_counter() - start
     nees, z = _report(args, sc, config, mc)
     bins = _bins_json(mc, z)
-    files = _plots(out, mc, fine)
+    files = write_plots(out, mc, fine)
     summary = {
         "command": "registration landing",
         "runs": args.runs,

@@ -4,7 +4,7 @@ polar errors about the camera) and the variance amplification ratios on the nois
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -14,7 +14,7 @@ from registration.landing.scenario import LandingScenario
 from registration.landing.simulation import run_once, simulate
 from registration.landing.transfer import transfer_camera, transfer_radar, variance_ratios
 
-__all__ = ["MonteCarloResult", "default_bin_edges", "monte_carlo"]
+__all__ = ["MonteCarloResult", "default_bin_edges", "monte_carlo", "regroup"]
 
 
 @dataclass
@@ -182,4 +182,25 @@ def monte_carlo(
         bin_edges_m=edges, methods=methods, sse=sse, count=truth.onehot.sum(axis=0), nees_sum=nees_sum,
         polar_sse=polar_sse, t=truth.t, range_m=truth.range_m, example=example,
         ratios=_noise_free_ratios(scenario, truth.t, att), attitude=att, runs=runs,
+    )
+
+
+def regroup(mc: MonteCarloResult, edges: np.ndarray) -> MonteCarloResult:
+    """Merge fine bins into coarser ones whose edges are a subset of the fine edges."""
+    fine = mc.bin_edges_m
+    idx = [int(np.argmin(np.abs(fine - e))) for e in edges]
+    if any(abs(fine[i] - e) > 1e-6 for i, e in zip(idx, edges)):
+        raise ValueError("coarse bin edges must be fine bin edges")
+    sl = list(zip(idx[:-1], idx[1:]))
+
+    def merge(a, axis):
+        return np.stack([a.take(range(i, j), axis=axis).sum(axis=axis) for i, j in sl], axis=axis)
+
+    return replace(
+        mc,
+        bin_edges_m=np.asarray(edges, dtype=float),
+        sse={m: merge(v, 1) for m, v in mc.sse.items()},
+        count=merge(mc.count, 0),
+        nees_sum={m: merge(v, 1) for m, v in mc.nees_sum.items()},
+        polar_sse={m: merge(v, 0) for m, v in mc.polar_sse.items()},
     )

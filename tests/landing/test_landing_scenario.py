@@ -28,6 +28,7 @@ from registration.landing import (
     default_scenario,
     monte_carlo,
     process,
+    regroup,
     run_once,
     simulate,
     with_overrides,
@@ -125,6 +126,21 @@ def test_uncorrected_clock_offset_shows_up_as_inconsistency():
     n_bad = bad.nees_sum["paper"].sum() / (bad.count.sum() * bad.runs)
     assert n_good == pytest.approx(3.0, abs=0.1)
     assert n_bad > 4.0
+
+
+def test_regrouped_fine_bins_equal_the_coarse_bins_computed_directly():
+    """The CLI computes 100 m bins once and merges them into 500 m bins: same statistics."""
+    sc = default_scenario()
+    fine = monte_carlo(sc, runs=4, seed=9, bin_edges_m=np.arange(0.0, 4050.0, 100.0))
+    coarse = monte_carlo(sc, runs=4, seed=9, bin_edges_m=np.arange(0.0, 4250.0, 500.0))
+    merged = regroup(fine, coarse.bin_edges_m)
+    assert merged.count.tolist() == coarse.count.tolist() and coarse.count.sum() > 0
+    for m in coarse.methods:
+        assert merged.sse[m] == pytest.approx(coarse.sse[m], rel=1e-12)
+        assert merged.nees_sum[m] == pytest.approx(coarse.nees_sum[m], rel=1e-12)
+        assert merged.polar_sse[m] == pytest.approx(coarse.polar_sse[m], rel=1e-12)
+    with pytest.raises(ValueError, match="coarse bin edges must be fine bin edges"):
+        regroup(fine, np.array([0.0, 250.0, 4000.0]))
 
 
 def test_cli_writes_summary_and_plots(tmp_path, capsys):
