@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Speed of the online registration loop (issue 3 "Speed"), against a plain NumPy filter.
+"""Speed of the online registration loop (compiled Kalman step and batch register()), against a plain NumPy filter.
 
 Run from a checkout (the package installed, editable or not)::
 
@@ -20,7 +20,7 @@ warm-up (for ``register()`` and the NumPy baselines the correctness check just b
 
 1. ``register()``: the whole batch call (validation, the compiled scan of the generated Kalman
    step, corrected differences, observability report), amortised per row; and the compiled scan
-   alone (``_loader.get(step).scan``), the floor of the batch path.
+   alone (``_codegen.get(step).scan``), the floor of the batch path.
 2. The streaming ``OnlineRegistrar.update(row)``, one call per row (rows as numpy arrays), on the
    first ``--stream-rows`` rows (it is the slow path; per-step figures are per row it saw).
 3. The baseline: the SAME filter in plain NumPy, written here (class ``NumpyFilter``). The model
@@ -41,7 +41,7 @@ Before anything is timed, every baseline's estimates and covariances (and NIS, i
 checked against ``register()``'s to 1e-9 relative (per state, relative to the largest magnitude
 of that state's series), so the comparison is between identical computations.
 
-Aims (issue 3), per filter: <= 5 us per step amortised for the batch ``register()``, >= 20x
+Aims, per filter: <= 5 us per step amortised for the batch ``register()``, >= 20x
 faster than the strongest NumPy baseline (``paper``: the vectorised one, the per-row ratio also
 printed; ``fitted``: the per-row one); the script says whether each is met. The profile (where
 the time of ``register()`` and ``update()`` goes) is for the default filter; ``--flags`` builds
@@ -61,7 +61,7 @@ import time
 import numpy as np
 
 import registration
-from registration import _codegen as _loader
+from registration import _codegen
 from registration.online import OnlineRegistrar, RegistrationConfig, register
 from registration.online.scenario import paper_scenario
 from registration.online.contract import DATA_COLUMNS, N_STATE
@@ -96,7 +96,7 @@ class NumpyFilter:
         if config.linearization not in ("paper", "fitted") or config.q_mode != "fixed":
             raise ValueError("the baseline implements linearization 'paper' or 'fitted' with a fixed Q")
         self.linearization = config.linearization
-        self.model = _loader.get(f"pseudo_measurement_{config.t_variant}")
+        self.model = _codegen.get(f"pseudo_measurement_{config.t_variant}")
         self.sigma0 = np.array(config.sigma0)
         self.R0 = np.diag(np.square(self.sigma0))
         self.var_a, self.var_b = np.square(self.sigma0[0:3]), np.square(self.sigma0[3:6])
@@ -215,7 +215,7 @@ def streaming(config, rows):
 
 def scan_only(config, rows):
     """The compiled scan of the generated Kalman step alone (what register() runs for q_mode fixed)."""
-    step = _loader.get(config.step_name)
+    step = _codegen.get(config.step_name)
     inputs = {
         "x": np.zeros(N_STATE) if config.x0 is None else np.array(config.x0),
         "P": np.diag(np.square(config.prior_sigma)), "info": np.zeros((N_STATE, N_STATE)),
@@ -297,15 +297,15 @@ def flags_experiment(config, rows: np.ndarray, reference_last: np.ndarray, repea
     import tempfile
     from pathlib import Path
 
-    cc = _loader._compiler()
+    cc = _codegen.compiler()
     if cc is None:
         return {}
     name = config.step_name
-    work = _loader.manifest()["functions"][name]["work"]
+    work = _codegen.manifest()["functions"][name]["work"]
     out = {}
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        (tmp / f"{name}.c").write_bytes(_loader._read_checked(name, "c"))  # the shipped source, hash-checked
+        (tmp / f"{name}.c").write_bytes(_codegen.read_artifact(name, "c"))  # the shipped source, hash-checked
         code = HARNESS.replace("@SOURCE@", f"{name}.c").replace("@FUNC@", name)
         code = code.replace("@SZ_W@", str(work["sz_w"])).replace("@SZ_IW@", str(work["sz_iw"]))
         (tmp / "harness.c").write_text(code)
@@ -314,7 +314,7 @@ def flags_experiment(config, rows: np.ndarray, reference_last: np.ndarray, repea
         blob = np.concatenate([rows.ravel(), x0, np.diag(np.square(config.prior_sigma)).ravel(),
                                np.zeros(N_STATE * N_STATE), np.diag(np.square(config.q_sigma)).ravel(), np.array(config.sigma0)])
         blob.astype("<f8").tofile(tmp / "in.bin")
-        loader_flags = [f for f in _loader._CFLAGS if f not in ("-shared", "-fPIC")]
+        loader_flags = [f for f in _codegen.CFLAGS if f not in ("-shared", "-fPIC")]
         for label, flags in (("plain C, loader flags " + " ".join(loader_flags), loader_flags),
                              ("plain C, -O3 -march=native", ["-O3", "-march=native"])):
             exe = tmp / ("h" + str(len(out)))
@@ -396,7 +396,7 @@ def print_aims(aims: dict, long_n: int, linearization: str) -> None:
     yes = {True: "met", False: "NOT met"}
     why = ("model vectorised up front" if linearization == "paper" else
            "per-row model: the fitted linearisation point depends on the state, so no NumPy code can evaluate the model up front")
-    print(f"Aims (issue 3), linearization {linearization}:")
+    print(f"Aims, linearization {linearization}:")
     print(f"  <= {AIM_US_PER_STEP} us/step amortised, batch register(): {long_n} rows {aims['batch_us_per_step_long']:.2f} us "
           f"({yes[aims['met_us_per_step_long']]}); 300 rows {aims['batch_us_per_step_300']:.2f} us "
           f"({yes[aims['met_us_per_step_300']]})")
@@ -416,7 +416,7 @@ def machine_line() -> str:
             cpu = next((ln.split(":", 1)[1].strip() for ln in fh if ln.startswith("model name")), cpu)
     except OSError:
         pass
-    return (f"registration {registration.__version__}, backend {_loader.backend()}, numpy {np.__version__}, "
+    return (f"registration {registration.__version__}, backend {_codegen.backend()}, numpy {np.__version__}, "
             f"python {platform.python_version()}, {platform.machine()} {cpu}, {os.cpu_count()} CPUs").replace("  ", " ")
 
 
@@ -465,10 +465,10 @@ def main(argv=None) -> int:
 
     # where the time goes, for the default configuration (cProfile; its overhead inflates the Python-heavy parts)
     config = configs[default]
-    pair = _loader.get(f"pseudo_measurement_{config.t_variant}").casadi.n_instructions()
+    pair = _codegen.get(f"pseudo_measurement_{config.t_variant}").casadi.n_instructions()
     print()
     for lin, cfg in configs.items():
-        n_ins = _loader.get(cfg.step_name).casadi.n_instructions()
+        n_ins = _codegen.get(cfg.step_name).casadi.n_instructions()
         scan_us = per_config[lin]["results"][str(args.long)]["us_per_step"][SCAN]
         part = (f"the pseudo-measurement ({pair}) once" if lin == "paper" else
                 f"the pseudo-measurement ({pair}) twice, before common subexpressions, plus the MAP plots")
@@ -503,7 +503,7 @@ def main(argv=None) -> int:
     if args.json:
         payload = {
             "machine": {"line": machine_line(), "python": platform.python_version(), "machine": platform.machine(),
-                        "numpy": np.__version__, "backend": _loader.backend(), "platform": platform.platform()},
+                        "numpy": np.__version__, "backend": _codegen.backend(), "platform": platform.platform()},
             "default_linearization": default, "configs": per_config,
             "profile_config": default,
             "register_profile_us_per_row_300": dict(br),
