@@ -1,6 +1,6 @@
-"""Geodesy: geodetic -> ECEF position (paper eq. 1) and the ENU -> ECEF rotation T (eq. 4).
+"""Geodesy: geodetic -> ECEF position and the ENU -> ECEF rotation T (Wang et al. 2011, eqs. (1), (4)).
 
-Frames (SPEC section 1): ``ecef`` is WGS-84 earth-centred earth-fixed; ``enu`` is the
+Frames (docs/conventions.md): ``ecef`` is WGS-84 earth-centred earth-fixed; ``enu`` is the
 local geographic frame at a platform (x east, y north, z up along the geodetic normal).
 Latitude B, longitude L in radians, height H above the ellipsoid in metres.
 """
@@ -38,7 +38,7 @@ def enu2ecef_standard_expr(B, L) -> sp.Matrix:
 
 
 def enu2ecef_paper_expr(B, L) -> sp.Matrix:
-    """Eq. (4) of seed 000 exactly as printed (reproduction only).
+    """Eq. (4) of Wang et al. 2011 exactly as printed (reproduction only).
 
     It is a rotation too, but it equals the standard one evaluated at a latitude psi
     with tan(psi) = (a/b)^2 tan(B): the local frame is tilted by ~0.12 deg at 20 deg N.
@@ -68,7 +68,6 @@ def radii_of_curvature_expr(B) -> sp.Matrix:
     w2 = 1 - WGS84_E2 * sp.sin(B) ** 2
     return sp.Matrix([WGS84_A * (1 - WGS84_E2) / w2 ** sp.Rational(3, 2), WGS84_A / sp.sqrt(w2)])
 
-LAT_DOMAIN = (-sp.pi / 2, sp.pi / 2)
 GEO_DOMAIN = {"lat": (-1.5707963267948966, 1.5707963267948966), "lon": (-3.141592653589793, 3.141592653589793), "alt": (-500.0, 1.0e5)}
 
 
@@ -95,7 +94,7 @@ def specs() -> list[FunctionSpec]:
         out.append(
             FunctionSpec(
                 name=f"enu2ecef_rotation_{variant}",
-                doc=f"R_ecef_enu at (lat, lon) in rad, '{variant}' variant (SPEC section 2 item 2).",
+                doc=f"R_ecef_enu at (lat, lon) in rad, '{variant}' variant (docs/online.md).",
                 inputs=(Port("lat", lat, "rad"), Port("lon", lon, "rad")),
                 outputs=(Port("R_ecef_enu", fn(lat, lon), "1"),),
                 domain=GEO_DOMAIN,

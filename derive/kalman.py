@@ -1,4 +1,4 @@
-"""The whole registration Kalman step (SPEC section 2, eqs. 18-23) composed in CasADi.
+"""The whole registration Kalman step (Wang et al. 2011, eqs. (18)-(23)) composed in CasADi.
 
 Built from the sympy-derived pseudo-measurement (derive/pseudo_measurement.py), so the step
 has no second copy of the model. One step, for state x (12) = [dC_A, dphi_A, dtheta_A, dr_A,
@@ -18,7 +18,7 @@ dq_A, de_A, dC_B, ..., de_B] (rad and m), covariance P (12x12), random-walk proc
   weighted by their covariances), which carries only the fused position's small error: H no
   longer shares the angle noise of the innovation. That correlation is an errors-in-variables
   bias of order sigma^2 which the weakly determined range biases amplify to about 1 sigma at
-  the paper's 0.5 deg noise (README, issue 3). While P is large, S >> R and t stays near c
+  the paper's 0.5 deg noise (docs/online.md). While P is large, S >> R and t stays near c
   (the ``relinearized`` point): a large misregistration is not mistaken for noise;
 * ``R = M R0 M^T``, ``S = H P- H^T + R``, gain by a linear solve (no explicit inverse),
   ``K = P- H^T S^-1``; Joseph-form covariance update, symmetric by construction (upper triangle

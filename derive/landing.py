@@ -1,12 +1,12 @@
-"""Carrier landing (seed 002): the radar/camera space alignment chain and its Jacobians (eqs. 7-11).
+"""Carrier landing (Wang, Liu and Gao 2017): the radar/camera space alignment chain and its Jacobians (eqs. 7-11).
 
 Frames (all right-handed, metres; see docs/landing.md for pictures in words and numeric examples):
 
-- ``deck``: ship-fixed (SPEC section 1): origin at the ship's motion centre (the point the ship
+- ``deck``: ship-fixed (docs/conventions.md): origin at the ship's motion centre (the point the ship
   pitches, rolls and yaws about), x starboard, y bow, z up along the deck normal.
 - ``level``: same origin, not rotating with the ship's oscillations: x starboard and y bow along
   the ship's *mean* heading, z up (vertical). ``R_level_deck = Rz(yaw) Rx(pitch) Ry(roll)``, the
-  SPEC attitude formula with the heading replaced by the yaw deviation from the mean heading
+  package's attitude formula with the heading replaced by the yaw deviation from the mean heading
   (positive yaw turns the bow to starboard, positive pitch lifts the bow, positive roll puts the
   starboard side down). This is the paper's ``T_R^-1``.
 - ``lnd`` (paper's T_L): the level frame with x aft, y starboard, z up: ``R_lnd_level = Rz(-pi/2)``.

@@ -1,4 +1,4 @@
-"""Polar <-> Cartesian transforms and their Jacobians, 2-D and 3-D (SPEC sections 3-5).
+"""Polar <-> Cartesian transforms and their Jacobians, 2-D and 3-D (docs/fusion.md, docs/landing.md).
 
 Convention shared by the fusion (D) and landing (L) capabilities: the angle ``az`` is measured
 counter-clockwise from the +x axis towards +y; ``el`` is above the x-y plane.

@@ -2,7 +2,7 @@
 
 For radars A and B seeing one target at one instant:
 ``Z = X_A - X_B`` with ``X_i = T_i Phi_i + X_e,i``;
-``H = [T_A Psi_A, -T_B Psi_B]`` (3x12, state order of SPEC section 2);
+``H = [T_A Psi_A, -T_B Psi_B]`` (3x12, state order of registration.online.contract);
 ``M = [T_A Gamma_A, -T_B Gamma_B]`` (3x6); ``R = M R0 M^T``, ``R0 = diag(sigma^2)``.
 H and M are exactly dZ/d(attitude, measurement) and dZ/d(measurement): the tests check that.
 """
