@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from registration import _codegen as _loader
+from registration import _codegen
 
 from tests.conftest import all_specs, sample_inputs
 
@@ -21,7 +21,6 @@ SCALE_FROM = {"Z": ("p_a_ecef", "p_b_ecef")}
 
 def _sympy_eval(spec, inputs, n):
     symbols = [s for p in spec.inputs for s in p.matrix.T]  # column-major, as CasADi
-    flat_in = [a.reshape(n, -1, order="C") for a in inputs]
     cols = []
     for p, a in zip(spec.inputs, inputs):
         r, c = p.shape
@@ -32,7 +31,6 @@ def _sympy_eval(spec, inputs, n):
         f = sp.lambdify(symbols, port.matrix, modules="numpy")
         res = np.array([np.asarray(f(*row), dtype=float) for row in values])
         outs.append(res)
-    del flat_in
     return outs
 
 
@@ -41,8 +39,8 @@ def test_c_casadi_and_sympy_agree(name):
     spec = all_specs()[name]
     n = 40
     inputs = sample_inputs(spec, n, np.random.default_rng(7))
-    c_out = _loader.GeneratedFunction(name, force_backend="c")(*inputs)
-    ca_out = _loader.GeneratedFunction(name, force_backend="casadi")(*inputs)
+    c_out = _codegen.GeneratedFunction(name, force_backend="c")(*inputs)
+    ca_out = _codegen.GeneratedFunction(name, force_backend="casadi")(*inputs)
     has_sympy = not hasattr(spec, "build")  # CasadiSpec functions are checked against NumPy elsewhere
     sy_out = _sympy_eval(spec, inputs, n) if has_sympy else [None] * len(spec.outputs)
     by_name = dict(zip([p.name for p in spec.outputs], c_out))
@@ -60,7 +58,7 @@ def test_c_casadi_and_sympy_agree(name):
 
 
 def test_vectorised_call_equals_pointwise_calls():
-    fn = _loader.get("plot2ecef_standard")
+    fn = _codegen.get("plot2ecef_standard")
     spec = all_specs()["plot2ecef_standard"]
     inputs = sample_inputs(spec, 5, np.random.default_rng(3))
     batch = fn(*inputs)[0]
@@ -69,14 +67,14 @@ def test_vectorised_call_equals_pointwise_calls():
 
 
 def test_broadcast_input_uses_stride_zero():
-    fn = _loader.get("geodetic2ecef")
+    fn = _codegen.get("geodetic2ecef")
     out = fn(np.array([0.1, 0.2, 0.3]), 0.5, 10.0)[0]
     ref = np.vstack([fn(v, 0.5, 10.0)[0] for v in (0.1, 0.2, 0.3)])
     assert np.array_equal(out, ref)
 
 
 def test_mismatched_lengths_are_refused():
-    fn = _loader.get("geodetic2ecef")
+    fn = _codegen.get("geodetic2ecef")
     with pytest.raises(ValueError, match="points"):
         fn(np.zeros(3), np.zeros(4), 0.0)
 
@@ -85,7 +83,7 @@ def test_mismatched_lengths_are_refused():
 def test_bound_single_point_call_equals_vectorised_call(name):
     spec = all_specs()[name]
     inputs = sample_inputs(spec, 3, np.random.default_rng(11))
-    fn = _loader.get(name)
+    fn = _codegen.get(name)
     bound = fn.bind()
     batch = fn(*inputs)
     for i in range(3):

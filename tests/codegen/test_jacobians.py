@@ -3,7 +3,7 @@ differentiation of the generated primal function, and central finite differences
 
 Points: 1200 uniform random points in each function's domain (see derive/*.py ``domain``) with
 edge cases written into random rows (poles, +-180 deg longitude, zero elevation, bearings at
-and near +-pi, elevation near +-90 deg; tests/_edges.py).
+and near +-pi, elevation near +-90 deg; tests/codegen/_edges.py).
 
 Tolerances, per point i, Jacobian entry (row a, column k):
 
@@ -25,7 +25,7 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from registration import _codegen as _loader
+from registration import _codegen
 
 from tests.conftest import all_specs, sample_inputs
 from ._edges import with_edges
@@ -54,7 +54,7 @@ def _flatten_point(arr: np.ndarray, n: int) -> np.ndarray:
 
 
 def _casadi_ad(spec, decl, inputs, n):
-    fn = _loader.get(spec.name).casadi
+    fn = _codegen.get(spec.name).casadi
     syms = [ca.SX.sym(p.name, *p.shape) for p in spec.inputs]
     outs = fn.call(syms)
     out_names = [p.name for p in spec.outputs]
@@ -72,7 +72,7 @@ def _casadi_ad(spec, decl, inputs, n):
 
 
 def _central_differences(spec, decl, inputs, n):
-    fn = _loader.get(spec.name)
+    fn = _codegen.get(spec.name)
     out_idx = [p.name for p in spec.outputs].index(decl.of)
     angle = _angle_mask(spec.outputs[out_idx])
     cols = []
@@ -100,7 +100,7 @@ def test_jacobian_three_ways(name, decl):
     spec = all_specs()[name]
     rng = np.random.default_rng(12345)
     inputs = with_edges(spec, sample_inputs(spec, N_POINTS, rng), rng)
-    fn = _loader.get(name)
+    fn = _codegen.get(name)
     outs = dict(zip(fn.output_names, fn(*inputs)))
     j_sym = outs[decl.output].reshape(N_POINTS, -1, outs[decl.output].shape[-1])
     col_scale = np.abs(j_sym).max(axis=1, keepdims=True) + 1e-300
@@ -145,7 +145,7 @@ def test_a_wrong_jacobian_is_caught():
     decl = spec.jacobians[0]
     rng = np.random.default_rng(1)
     inputs = sample_inputs(spec, 50, rng)
-    fn = _loader.get(spec.name)
+    fn = _codegen.get(spec.name)
     psi = fn(*inputs)[1].copy()
     psi[:, :, 4] *= -1  # flip dPhi/dq
     j_fd, steps = _central_differences(spec, decl, inputs, 50)
