@@ -25,6 +25,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+__all__ = ["Combination", "ObservabilityReport", "observability_report", "UNOBSERVABLE_BELOW", "WEAK_BELOW", "PAIR_RELATIVE"]
+
 UNOBSERVABLE_BELOW = 1e-2
 WEAK_BELOW = 10.0
 #: a same-unit pair is named a sum when its difference carries less than this share of the

@@ -4,6 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 
+__all__ = ["as_float_array", "check_finite", "check_range", "check_positive", "check_latitude", "check_angle",
+           "broadcast_1d", "degree_hint", "DEGREE_HINT", "HALF_PI"]
+
 HALF_PI = np.pi / 2
 
 
