@@ -13,12 +13,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration import _codegen as _loader
+from registration import _codegen
 from registration.core.validation import as_float_array, broadcast_1d, check_angle, check_latitude, check_positive, check_range
 
 __all__ = ["geodetic2ecef", "enu2ecef_rotation", "deck2enu", "deck2enu_jacobians", "deck2enu_rotation", "plot2ecef"]
 
-T_VARIANTS = ("standard", "paper")
+#: ENU->ECEF rotation variants that derive/ emitted: the standard one and the paper's eq. (4).
+T_VARIANTS = _codegen.variants("t_variant")
 
 
 def _geodetic(lat, lon, alt=None):
@@ -63,7 +64,7 @@ def geodetic2ecef(lat, lon, alt) -> np.ndarray:
     Example: ``geodetic2ecef(0, 0, 0)`` -> ``[[6378137, 0, 0]]``.
     """
     v = _geodetic(lat, lon, alt)
-    return _loader.get("geodetic2ecef")(*_ordered(v, ["lat", "lon", "alt"]))[0]
+    return _codegen.get("geodetic2ecef")(*_ordered(v, ["lat", "lon", "alt"]))[0]
 
 
 def enu2ecef_rotation(lat, lon, variant: str = "standard") -> np.ndarray:
@@ -76,13 +77,13 @@ def enu2ecef_rotation(lat, lon, variant: str = "standard") -> np.ndarray:
     if variant not in T_VARIANTS:
         raise ValueError(f"variant: expected one of {T_VARIANTS}, got {variant!r}")
     v = _geodetic(lat, lon)
-    return _loader.get(f"enu2ecef_rotation_{variant}")(*_ordered(v, ["lat", "lon"]))[0]
+    return _codegen.get(f"enu2ecef_rotation_{variant}")(*_ordered(v, ["lat", "lon"]))[0]
 
 
 def deck2enu_rotation(heading, pitch, roll) -> np.ndarray:
     """R_enu_deck (N, 3, 3) = Rz(heading) Rx(pitch) Ry(roll), angles in radians."""
     v = _attitude(heading, pitch, roll)
-    return _loader.get("deck2enu_rotation")(*_ordered(v, ["heading", "pitch", "roll"]))[0]
+    return _codegen.get("deck2enu_rotation")(*_ordered(v, ["heading", "pitch", "roll"]))[0]
 
 
 def deck2enu(r, q, e, heading, pitch, roll) -> np.ndarray:
@@ -93,7 +94,7 @@ def deck2enu(r, q, e, heading, pitch, roll) -> np.ndarray:
     q = 0, e = 0, r = 1000 -> ``[[1000, 0, 0]]`` (the bow points east).
     """
     v = {**_measurement(r, q, e), **_attitude(heading, pitch, roll)}
-    return _loader.get("deck2enu")(*_ordered(v, ["r", "q", "e", "heading", "pitch", "roll"]))[0]
+    return _codegen.get("deck2enu")(*_ordered(v, ["r", "q", "e", "heading", "pitch", "roll"]))[0]
 
 
 def deck2enu_jacobians(r, q, e, heading, pitch, roll) -> tuple[np.ndarray, np.ndarray]:
@@ -102,7 +103,7 @@ def deck2enu_jacobians(r, q, e, heading, pitch, roll) -> tuple[np.ndarray, np.nd
     Units: metres per radian for angle columns, dimensionless for the range column. Eq. (11).
     """
     v = {**_measurement(r, q, e), **_attitude(heading, pitch, roll)}
-    _, psi, gamma = _loader.get("deck2enu_jacobians")(*_ordered(v, ["r", "q", "e", "heading", "pitch", "roll"]))
+    _, psi, gamma = _codegen.get("deck2enu_jacobians")(*_ordered(v, ["r", "q", "e", "heading", "pitch", "roll"]))
     return psi, gamma
 
 
@@ -112,4 +113,4 @@ def plot2ecef(lat, lon, alt, heading, pitch, roll, r, q, e, variant: str = "stan
         raise ValueError(f"variant: expected one of {T_VARIANTS}, got {variant!r}")
     v = {**_geodetic(lat, lon, alt), **_attitude(heading, pitch, roll), **_measurement(r, q, e)}
     names = ["lat", "lon", "alt", "heading", "pitch", "roll", "r", "q", "e"]
-    return _loader.get(f"plot2ecef_{variant}")(*_ordered(v, names))[0]
+    return _codegen.get(f"plot2ecef_{variant}")(*_ordered(v, names))[0]

@@ -7,7 +7,7 @@ import pymap3d
 import pyproj
 import pytest
 
-from registration import _codegen as _loader
+from registration import _codegen
 from registration.core import frames
 
 WGS84_A = 6378137.0
@@ -42,7 +42,7 @@ def test_geodetic2ecef_matches_pymap3d_to_a_millimetre():
 
 
 def test_manifest_constants_are_wgs84():
-    c = _loader.manifest()["constants"]
+    c = _codegen.manifest()["constants"]
     assert c["wgs84_a_m"] == WGS84_A
     assert c["wgs84_b_m"] == pytest.approx(WGS84_B, rel=1e-15)
 

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 from scipy import stats
 
-from registration import _codegen as _loader
+from registration import _codegen
 from registration.online import RegistrationConfig, register, validate_data
 from registration.online.scenario import paper_scenario
 
@@ -29,7 +29,7 @@ def _map_plots(c, P_pred, sigma0, variant="standard"):
     """The MAP noise-free plots given the corrected row c and the prior N(x-, P-), by solving
     the KKT system of  min v^T R0^-1 v + dx^T P^-1 dx  s.t.  Z(c) = H dx + M v  (other algebra
     than the generated step's v = R0 M^T S^-1 Z). Returns (t_a, t_b, v, Z(c))."""
-    pair = _loader.get(f"pseudo_measurement_{variant}")
+    pair = _codegen.get(f"pseudo_measurement_{variant}")
     Z, H, M, _, _, _ = (np.squeeze(v) for v in pair(*np.split(c, 6), sigma0))
     n, m = 12, 6
     K = np.zeros((n + m + 3, n + m + 3))
@@ -44,7 +44,7 @@ def _map_plots(c, P_pred, sigma0, variant="standard"):
 
 def _fitted_reference(x, P, Q, row, sigma0, variant="standard"):
     """The fitted step composed in NumPy from the generated pair model (MAP plots by KKT)."""
-    pair = _loader.get(f"pseudo_measurement_{variant}")
+    pair = _codegen.get(f"pseudo_measurement_{variant}")
     c = row - np.concatenate([np.zeros(3), x[0:6], np.zeros(3), x[6:12]])
     P_pred = P + Q
     t_a, t_b, v, _ = _map_plots(c, P_pred, sigma0, variant)
@@ -80,7 +80,7 @@ def test_fitted_step_equals_numpy_composition(variant):
     _, rows = validate_data(scenario.data)
     cfg = RegistrationConfig(sigma0=tuple(scenario.sigma0))
     sigma0 = np.array(cfg.sigma0)
-    step = _loader.get(f"kalman_step_fitted_{variant}")
+    step = _codegen.get(f"kalman_step_fitted_{variant}")
     rng = np.random.default_rng(7)
     for k in (0, 13, 39, 20):
         x = rng.normal(size=12) * np.array(cfg.prior_sigma) * 0.3
@@ -108,8 +108,8 @@ def test_fitted_point_is_the_true_plot_without_noise():
     _, rows = validate_data(sc.data)
     sigma0 = np.array([50.0, 0.0087, 0.0087] * 2)
     args = (sc.truth_state, np.eye(12), np.zeros((12, 12)), np.zeros((12, 12)), rows[2], sigma0)
-    a = dict(zip(["x", "P", "info", "nu", "S", "nis"], _loader.get("kalman_step_fitted_standard")(*args)))
-    b = dict(zip(["x", "P", "info", "nu", "S", "nis"], _loader.get("kalman_step_relinearized_standard")(*args)))
+    a = dict(zip(["x", "P", "info", "nu", "S", "nis"], _codegen.get("kalman_step_fitted_standard")(*args)))
+    b = dict(zip(["x", "P", "info", "nu", "S", "nis"], _codegen.get("kalman_step_relinearized_standard")(*args)))
     assert np.abs(np.squeeze(a["nu"])).max() < 1e-5  # metres: the truth explains the data exactly
     assert np.allclose(np.squeeze(a["S"]), np.squeeze(b["S"]), rtol=1e-6)
 
@@ -123,7 +123,7 @@ def test_fitted_point_moves_from_the_corrected_plots_to_the_fused_target_as_p_sh
     cfg = RegistrationConfig(sigma0=tuple(sc.sigma0))
     sigma0 = np.array(cfg.sigma0)
     c = rows[10] - np.concatenate([np.zeros(3), sc.truth_state[0:6], np.zeros(3), sc.truth_state[6:12]])
-    pair = _loader.get("pseudo_measurement_standard")
+    pair = _codegen.get("pseudo_measurement_standard")
     for scale, expect_fused in ((1e-8, True), (1e4, False)):
         P = np.diag(np.square(cfg.prior_sigma)) * scale
         t_a, t_b, v, Z = _map_plots(c, P, sigma0)
@@ -132,7 +132,7 @@ def test_fitted_point_moves_from_the_corrected_plots_to_the_fused_target_as_p_sh
         Z_t, H_t, _, R_t, _, _ = (np.squeeze(u) for u in pair(*np.split(fitted, 6), sigma0))
         # the generated step linearises at this t: its S is H(t) P H(t)^T + R(t), not the one at c
         x_est = sc.truth_state
-        out = _loader.get("kalman_step_fitted_standard")(x_est, P, np.zeros((12, 12)), np.zeros((12, 12)), rows[10], sigma0)
+        out = _codegen.get("kalman_step_fitted_standard")(x_est, P, np.zeros((12, 12)), np.zeros((12, 12)), rows[10], sigma0)
         S_step = np.squeeze(out[4])
         assert np.allclose(S_step, H_t @ P @ H_t.T + R_t, rtol=1e-8), (S_step, H_t @ P @ H_t.T + R_t)
         if expect_fused:  # the two radars' plots of one point: Z(t) ~ 0
