@@ -32,6 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.polynomial import legendre
 
+from registration.core.angles import wrap_angle
 from registration.core.validation import as_float_array
 
 __all__ = ["AlignedSamples", "align", "REASON_OK", "REASON_TOO_FEW", "REASON_EXTRAPOLATION", "REASON_ILL_CONDITIONED"]
@@ -250,10 +251,7 @@ def _refuse_first_invalid(
 
 def _wrap_columns(out: np.ndarray, cols: list[int]) -> None:
     """Wrap the angle columns of ``out`` to (-pi, pi] in place."""
-    out[:, cols] = np.angle(np.exp(1j * out[:, cols]))
-    wrapped = out[:, cols]
-    wrapped[wrapped == -np.pi] = np.pi
-    out[:, cols] = wrapped
+    out[:, cols] = wrap_angle(out[:, cols])
 
 
 def align(
