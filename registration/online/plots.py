@@ -38,11 +38,16 @@ def plot_tracks(data: dict, truth: dict | None, path: Path) -> Path:
 
 def plot_differences(result: RegistrationResult, path: Path) -> Path:
     """X_A - X_B per ECEF axis before and after registration (Fig. 2c and 4c)."""
+    return plot_difference_series(result.time, result.raw_difference_ecef, result.corrected_difference_ecef, path)
+
+
+def plot_difference_series(time: np.ndarray, raw: np.ndarray, corrected: np.ndarray, path: Path) -> Path:
+    """X_A - X_B (K, 3) in m per ECEF axis, before (``raw``) and after registration, against time (K,) in s."""
     plt = pyplot()
     fig, axes = plt.subplots(3, 1, figsize=(9, 8), sharex=True)
     for i, (ax, axis) in enumerate(zip(axes, "XYZ")):
-        ax.plot(result.time, result.raw_difference_ecef[:, i], color="tab:red", lw=0.8, label="before")
-        ax.plot(result.time, result.corrected_difference_ecef[:, i], color="tab:green", lw=0.8, label="after")
+        ax.plot(time, raw[:, i], color="tab:red", lw=0.8, label="before")
+        ax.plot(time, corrected[:, i], color="tab:green", lw=0.8, label="after")
         ax.axhline(0, color="k", lw=0.5)
         ax.set_ylabel(f"{axis}_A - {axis}_B (m)")
         ax.grid(alpha=0.3)
@@ -57,15 +62,21 @@ def plot_differences(result: RegistrationResult, path: Path) -> Path:
 
 def plot_estimates(result: RegistrationResult, truth_state: np.ndarray | None, path: Path) -> Path:
     """Every state's estimate against time with a +-2 sigma band and the true value (Fig. 3)."""
+    sigma = np.sqrt(np.einsum("kii->ki", result.covariances))
+    return plot_estimate_series(result.time, result.estimates, sigma, result.observability.status, truth_state, path)
+
+
+def plot_estimate_series(time: np.ndarray, estimates: np.ndarray, sigma: np.ndarray, status: dict,
+                         truth_state: np.ndarray | None, path: Path) -> Path:
+    """Estimates (K, 12) with a +-2 ``sigma`` (K, 12) band against time (K,) in s, SI units and
+    radians (drawn in degrees or metres); ``status``: state name -> observability status."""
     plt = pyplot()
     fig, axes = plt.subplots(6, 2, figsize=(11, 15), sharex=True)  # left: ship/radar A, right: B
-    sigma = np.sqrt(np.einsum("kii->ki", result.covariances))
-    est = to_display(result.estimates)
+    est = to_display(estimates)
     sig = np.where(IS_ANGLE, np.degrees(sigma), sigma)
-    status = result.observability.status
     for i, ax in enumerate(axes.T.ravel()):
-        ax.fill_between(result.time, est[:, i] - 2 * sig[:, i], est[:, i] + 2 * sig[:, i], color="tab:blue", alpha=0.2, label="±2σ")
-        ax.plot(result.time, est[:, i], color="tab:blue", lw=1, label="estimate")
+        ax.fill_between(time, est[:, i] - 2 * sig[:, i], est[:, i] + 2 * sig[:, i], color="tab:blue", alpha=0.2, label="±2σ")
+        ax.plot(time, est[:, i], color="tab:blue", lw=1, label="estimate")
         if truth_state is not None:
             ax.axhline(to_display(truth_state)[i], color="k", ls="--", lw=1, label="truth")
         name = STATE_NAMES[i]
