@@ -1,4 +1,4 @@
-"""Checkpoints of a streaming registration run: exact, atomic, and safe to read (issue 6).
+"""Checkpoints of a streaming registration run: exact, atomic, and safe to read.
 
 Format: one UTF-8 JSON document (no pickle: reading it executes no code) ::
 

@@ -1,110 +1,32 @@
-"""Recorded-data files: CSV and Parquet, with units in the column names (issue 6).
-
-The Python data contract (:data:`registration.state.DATA_COLUMNS`) is in SI units and radians.
-Files carry their units in the column names instead, and this module is the only place that
-converts between the two:
-
-* a **synchronous table** (one row = one pair of plots of a common target by radar A and radar B
-  at the same instant): ``time_s`` and, for each prefix ``a_`` and ``b_``: ``lat_deg``,
-  ``lon_deg``, ``alt_m``, ``heading_deg``, ``pitch_deg``, ``roll_deg``, ``range_m``,
-  ``bearing_deg``, ``elevation_deg`` (:data:`SYNC_COLUMNS`);
-* a **per-sensor plot file** (asynchronous form): ``time_s``, ``range_m``, ``bearing_deg``,
-  ``elevation_deg`` and, optionally, the ship's navigation ``lat_deg`` ... ``roll_deg``
-  (:data:`PLOT_FIELDS`, :data:`NAV_FIELDS`); the names may carry the sensor's prefix
-  (``a_range_m``) to say which radar the file belongs to;
-* a **navigation file**: ``time_s`` and the prefixed navigation columns of one or both ships
-  (``a_lat_deg`` ... ``b_roll_deg``).
+"""Reading and writing recorded tables: CSV and Parquet, units converted only here.
 
 The format follows the suffix: ``.csv`` or ``.parquet`` (``.pq``). CSV is read with pandas in
-chunks (``chunksize``) and Parquet by record batches, so a reader never holds more than one
-block of rows; CSV outputs are written with pyarrow (shortest round-trip float text, so a value
-read back is bit-for-bit the value written).
+chunks and Parquet by record batches, so a reader never holds more than one block of rows
+(:func:`iter_frames`); CSV outputs are written with pyarrow (shortest round-trip float text, so a
+value read back is bit-for-bit the value written). :func:`to_file_frame` and
+:func:`from_file_frame` convert between the data contract (SI units, radians) and the file
+columns of :mod:`registration.recorded.columns` (degrees, metres).
 
-Errors: :class:`FileFormatError` (a ``ValueError``) for a file that cannot be read as a table at
-all (unknown suffix, unreadable CSV line, not a Parquet file, ...). Row-level problems are the
-business of :mod:`registration.rowcheck`.
+Errors: :class:`~registration.recorded.columns.FileFormatError` (a ``ValueError``) for a file that
+cannot be read as a table at all (unknown suffix, unreadable CSV line, not a Parquet file, ...);
+row-level problems are the business of :mod:`registration.recorded.rowcheck`.
 """
 
 from __future__ import annotations
 
-import csv
 import hashlib
-import os
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterator, Mapping
 
 import numpy as np
 
-from registration.online.contract import DATA_COLUMNS, SENSOR_COLUMNS
+from registration.recorded.columns import SYNC_COLUMNS, SYNC_FIELDS, FileFormatError
+from registration.recorded.rowcheck import check_frame, sync_layout
 
 __all__ = [
-    "FileFormatError", "Field", "SYNC_FIELDS", "SYNC_COLUMNS", "PLOT_FIELDS", "NAV_FIELDS", "file_format",
-    "to_file_frame", "from_file_frame", "write_table", "read_table", "read_columns", "iter_frames",
-    "file_sha256", "CsvAppender",
+    "file_format", "to_file_frame", "from_file_frame", "write_table", "write_frame", "read_table", "read_columns",
+    "count_rows", "iter_frames", "scan_file",
 ]
-
-_UNIT = {"lat": "deg", "lon": "deg", "alt": "m", "heading": "deg", "pitch": "deg", "roll": "deg",
-         "range": "m", "bearing": "deg", "elevation": "deg"}
-_MEANING = {
-    "lat": "geodetic latitude of the radar antenna (WGS-84), north positive",
-    "lon": "geodetic longitude of the radar antenna, east positive",
-    "alt": "antenna height above the WGS-84 ellipsoid",
-    "heading": "measured ship heading, clockwise from true north",
-    "pitch": "measured ship pitch (bow up positive)",
-    "roll": "measured ship roll (starboard down positive)",
-    "range": "measured slant range to the target (> 0)",
-    "bearing": "measured target bearing in the deck frame, clockwise from the bow",
-    "elevation": "measured target elevation above the deck plane",
-}
-NAV_KINDS = SENSOR_COLUMNS[:6]
-PLOT_KINDS = SENSOR_COLUMNS[6:]
-
-
-class FileFormatError(ValueError):
-    """A file that cannot be read as a table (suffix, CSV syntax, Parquet structure)."""
-
-
-@dataclass(frozen=True)
-class Field:
-    """One file column: its name in the file, the contract column and the scale to SI."""
-
-    file_name: str  # e.g. "a_lat_deg"
-    kind: str  # "time" or one of SENSOR_COLUMNS
-    prefix: str  # "a", "b" or "" (unprefixed)
-    unit: str  # "s", "deg" or "m"
-
-    @property
-    def contract_name(self) -> str:
-        return "time" if self.kind == "time" else f"{self.prefix}_{self.kind}"
-
-    @property
-    def scale(self) -> float:
-        """Multiply a file value by this to get SI units / radians."""
-        return np.pi / 180 if self.unit == "deg" else 1.0
-
-    @property
-    def meaning(self) -> str:
-        return "timestamp, seconds (any epoch; strictly increasing)" if self.kind == "time" else _MEANING[self.kind]
-
-
-TIME_FIELD = Field("time_s", "time", "", "s")
-
-
-def sensor_fields(prefix: str, kinds=SENSOR_COLUMNS) -> tuple[Field, ...]:
-    """Fields of one sensor; ``prefix`` '' gives the unprefixed names (``range_m``)."""
-    lead = f"{prefix}_" if prefix else ""
-    return tuple(Field(f"{lead}{k}_{_UNIT[k]}", k, prefix, _UNIT[k]) for k in kinds)
-
-
-#: The synchronous table, in contract order (``time`` first).
-SYNC_FIELDS = (TIME_FIELD,) + sensor_fields("a") + sensor_fields("b")
-SYNC_COLUMNS = tuple(f.file_name for f in SYNC_FIELDS)
-#: A per-sensor plot file: the required columns (unprefixed form).
-PLOT_FIELDS = (TIME_FIELD,) + sensor_fields("", PLOT_KINDS)
-#: The navigation columns of one ship (unprefixed form); prefixed in a navigation file.
-NAV_FIELDS = sensor_fields("", NAV_KINDS)
-assert tuple(f.contract_name for f in SYNC_FIELDS) == DATA_COLUMNS
 
 
 def file_format(path) -> str:
@@ -135,7 +57,7 @@ def to_file_frame(data: Mapping, fields=SYNC_FIELDS):
 def from_file_frame(frame, fields=SYNC_FIELDS) -> dict:
     """A DataFrame with unit-named columns -> data-contract dict of float64 arrays (SI, radians).
 
-    No checks beyond the presence of the columns; see :mod:`registration.rowcheck` for those.
+    No checks beyond the presence of the columns; see :mod:`registration.recorded.rowcheck` for those.
     """
     missing = [f.file_name for f in fields if f.file_name not in frame]
     if missing:
@@ -185,10 +107,9 @@ def read_table(path, *, validate: bool = True) -> dict:
     For files that fit in memory (the streaming reader is :func:`iter_frames`). With ``validate``
     the rows are checked like :func:`registration.online.validate_data` (first problem raises).
     """
-    from registration.recorded.rowcheck import check_frame, sync_layout
+    import pandas as pd
 
     frames = list(iter_frames(path, SYNC_COLUMNS, chunk_rows=1 << 20))
-    import pandas as pd
 
     frame = pd.concat([f for _, f in frames], ignore_index=True) if frames else pd.DataFrame(columns=list(SYNC_COLUMNS))
     if validate:
@@ -307,157 +228,14 @@ def _rechunk(source, base: int, start_row: int, chunk_rows: int, path) -> Iterat
         yield pos - have, block
 
 
-def file_sha256(path, block: int = 1 << 20) -> str:
-    h = hashlib.sha256()
+def scan_file(path, block: int = 1 << 22) -> tuple[str, int]:
+    """sha256 (hex) of a file's bytes and its number of newlines (a row estimate for CSV progress)."""
+    h, lines = hashlib.sha256(), 0
     try:
         with open(path, "rb") as f:
             while chunk := f.read(block):
                 h.update(chunk)
+                lines += chunk.count(b"\n")
     except OSError as exc:
         raise FileFormatError(f"{path}: {exc}") from exc
-    return h.hexdigest()
-
-
-# --------------------------------------------------------------------------- appendable outputs
-class CsvAppender:
-    """An output CSV that grows block by block and can be cut back to a recorded length.
-
-    ``size`` and ``rows`` describe what has been written; :meth:`sync` makes it durable (flush +
-    fsync) before a checkpoint records them; :meth:`open` with ``resume=(size, rows)`` truncates
-    the file to that length (refusing when the file is shorter: rows would be missing).
-    """
-
-    def __init__(self, path, columns: list[str], *, resume: tuple[int, int] | None = None, keep_existing: bool = False):
-        self.path = Path(path)
-        self.columns = list(columns)
-        header = (",".join(_csv_quote(c) for c in self.columns) + "\n").encode()
-        if resume is not None:
-            size, rows = resume
-            actual = self.path.stat().st_size if self.path.exists() else -1
-            if actual < size:
-                from registration.recorded.checkpoint import CheckpointError
-
-                raise CheckpointError(
-                    f"{self.path} holds {max(actual, 0)} bytes but the checkpoint recorded {size}: the output was "
-                    "truncated or replaced after the checkpoint, so rows would be lost; delete the checkpoint to start over"
-                )
-            self._f = open(self.path, "r+b")
-            self._f.truncate(size)
-            self._f.seek(size)
-            self.rows = rows
-        elif keep_existing and self.path.exists() and self.path.stat().st_size > 0:
-            self._f = open(self.path, "r+b")
-            self._f.seek(0, os.SEEK_END)
-            self.rows = None  # unknown: counted by the writer of the existing part
-        else:
-            self._f = open(self.path, "wb")
-            self._f.write(header)
-            self.rows = 0
-        self.size = self._f.tell()
-
-    def append_frame(self, frame) -> None:
-        """Append a DataFrame whose columns are :attr:`columns` (numbers), without a header."""
-        import io
-
-        import pyarrow as pa
-        import pyarrow.csv as pacsv
-
-        if not len(frame):
-            return
-        buf = io.BytesIO()
-        pacsv.write_csv(pa.Table.from_pandas(frame, preserve_index=False), buf,
-                        write_options=pacsv.WriteOptions(include_header=False))
-        self._write(buf.getvalue(), len(frame))
-
-    def append_rows(self, rows: list[list]) -> None:
-        """Append rows of text/number cells with Python's csv module (quoted as needed)."""
-        if not rows:
-            return
-        import io
-
-        buf = io.StringIO()
-        w = csv.writer(buf, lineterminator="\n")
-        w.writerows(rows)
-        self._write(buf.getvalue().encode(), len(rows))
-
-    def _write(self, data: bytes, n: int) -> None:
-        self._f.write(data)
-        self.size += len(data)
-        if self.rows is not None:
-            self.rows += n
-
-    def sync(self) -> None:
-        self._f.flush()
-        os.fsync(self._f.fileno())
-
-    def close(self) -> None:
-        if not self._f.closed:
-            self._f.flush()
-            self._f.close()
-
-
-def _csv_quote(text: str) -> str:
-    return f'"{text}"' if any(ch in text for ch in ',"\n') else text
-
-
-class PartsWriter:
-    """A Parquet output that grows block by block: a folder of part files ``part-NNNNNN.parquet``.
-
-    Each part is written to a temporary name, fsync'ed and renamed, so a part is either whole or
-    absent. ``size`` counts the parts; ``open`` with ``resume=(parts, rows)`` deletes later parts.
-    ``pandas.read_parquet(folder)`` reads the parts in order as one table.
-    """
-
-    def __init__(self, path, columns: list[str], *, resume: tuple[int, int] | None = None):
-        self.path = Path(path)
-        self.columns = list(columns)
-        self.path.mkdir(parents=True, exist_ok=True)
-        for tmp in self.path.glob("*.tmp"):
-            tmp.unlink()
-        if resume is None:
-            for part in self.path.glob("part-*.parquet"):
-                part.unlink()
-            self.size, self.rows = 0, 0
-        else:
-            self.size, self.rows = resume
-            present = {p.name for p in self.path.glob("part-*.parquet")}
-            missing = [self._name(i) for i in range(self.size) if self._name(i) not in present]
-            if missing:
-                from registration.recorded.checkpoint import CheckpointError
-
-                raise CheckpointError(f"{self.path}: part(s) {missing[:3]} recorded by the checkpoint are missing; delete the checkpoint to start over")
-            for name in present:
-                if int(name[5:11]) >= self.size:
-                    (self.path / name).unlink()
-
-    @staticmethod
-    def _name(i: int) -> str:
-        return f"part-{i:06d}.parquet"
-
-    def append_frame(self, frame) -> None:
-        import pyarrow as pa
-        import pyarrow.parquet as pq
-
-        if not len(frame):
-            return
-        final = self.path / self._name(self.size)
-        tmp = final.with_name(final.name + ".tmp")
-        pq.write_table(pa.Table.from_pandas(frame, preserve_index=False), str(tmp))
-        with open(tmp, "rb") as f:
-            os.fsync(f.fileno())
-        os.replace(tmp, final)
-        self.size += 1
-        self.rows += len(frame)
-
-    def sync(self) -> None:
-        try:
-            fd = os.open(self.path, os.O_RDONLY)
-            try:
-                os.fsync(fd)
-            finally:
-                os.close(fd)
-        except OSError:
-            pass
-
-    def close(self) -> None:
-        pass
+    return h.hexdigest(), lines

@@ -1,6 +1,6 @@
-"""Row validation of recorded files, with a reason for every bad row (issue 6).
+"""Row validation of recorded files, with a reason for every bad row.
 
-The numeric rules are those of the Python API: :func:`registration.online.cell_problems` decides,
+The numeric rules are those of the Python API: :func:`registration.online.contract.cell_problems` decides,
 for every value converted to SI units and radians, whether it is finite, inside its column's
 limits (latitude and angles, altitude) and, for a range, > 0. This module adds what only a file
 can get wrong (a missing column, a cell that is not a number) and the timestamp rule, and turns
@@ -15,7 +15,7 @@ Reasons (``code``: meaning):
 * ``non_positive_range``: a range <= 0 m;
 * ``time_backwards`` / ``time_duplicate``: the timestamp is below / equal to that of the previous
   accepted row (timestamps must be strictly increasing);
-* ``filter_non_finite``: (set by the runner) the filter step for this row would have produced
+* ``filter_non_finite``: (set by the filter pass) the filter step for this row would have produced
   non-finite values, so the row was not used.
 
 A row with several problems gets the first one, in column order (time first); the timestamp order
@@ -33,9 +33,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from registration.recorded.formats import NAV_KINDS, PLOT_KINDS, SYNC_FIELDS, TIME_FIELD, Field, sensor_fields
-from registration.online.filter import _LIMITS, PROBLEM_NON_FINITE, PROBLEM_NON_POSITIVE, PROBLEM_OUT_OF_RANGE, cell_problems
-from registration.online.contract import SENSOR_COLUMNS
+from registration.online.contract import (
+    LIMITS, N_ROW, PROBLEM_NON_FINITE, PROBLEM_NON_POSITIVE, SENSOR_COLUMNS, SENSOR_ROW, SENSORS, cell_problems,
+)
+from registration.recorded.columns import NAV_KINDS, PLOT_KINDS, SYNC_FIELDS, TIME_FIELD, Field, sensor_fields
 
 __all__ = ["BadRowError", "Layout", "CheckedBlock", "Rejection", "check_frame", "sync_layout", "plot_layout", "nav_layout", "REASON_CODES"]
 
@@ -43,7 +44,7 @@ REASON_CODES = (
     "missing_column", "non_numeric", "non_finite", "out_of_range", "non_positive_range",
     "time_backwards", "time_duplicate", "filter_non_finite",
 )
-_NON_NUMERIC, _MISSING = 10, 11  # file-level codes beside online.cell_problems' 1..3
+_NON_NUMERIC, _MISSING = 10, 11  # file-level codes beside contract.cell_problems' 1..3
 
 
 class BadRowError(ValueError):
@@ -71,11 +72,11 @@ class Layout:
 
 
 def _slot(sensor: str, kind: str) -> int:
-    return (0 if sensor == "a" else 9) + SENSOR_COLUMNS.index(kind)
+    return SENSOR_ROW[sensor].start + SENSOR_COLUMNS.index(kind)
 
 
 def sync_layout() -> Layout:
-    return Layout("synchronous table", SYNC_FIELDS, tuple(range(18)))
+    return Layout("synchronous table", SYNC_FIELDS, tuple(range(N_ROW)))
 
 
 def plot_layout(sensor: str, prefixed: bool, with_nav: bool) -> Layout:
@@ -176,7 +177,7 @@ def _fmt(v: float) -> str:
 
 
 def _limits_text(f: Field) -> tuple[float, float, str]:
-    lo, hi, unit = _LIMITS[f.kind]
+    lo, hi, _ = LIMITS[f.kind]
     if f.unit == "deg":
         lo, hi = round(np.degrees(lo), 9), round(np.degrees(hi), 9)
     what = {"lat": "latitude", "alt": "altitude above the ellipsoid"}.get(f.kind, "angle")
@@ -236,8 +237,8 @@ def check_frame(frame, layout: Layout, file: str, *, first_row: int, mode: str =
         values[:, j] = v * f.scale if f.scale != 1.0 else v
         codes[bad, j] = _NON_NUMERIC
     # numeric rules of the Python API, applied to the SI values placed in a contract row
-    block = np.zeros((k, 18))
-    block[:, [6, 15]] = 1.0  # ranges of absent sensors: a valid placeholder
+    block = np.zeros((k, N_ROW))
+    block[:, [_slot(s, "range") for s in SENSORS]] = 1.0  # ranges of absent sensors: a valid placeholder
     block[:, list(layout.slots)] = values[:, 1:]
     problems = cell_problems(block)[:, list(layout.slots)]
     sub = codes[:, 1:]
