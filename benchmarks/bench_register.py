@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Throughput and peak memory of ``registration register`` on large recorded files (issue 6).
+"""Throughput and peak memory of ``registration register`` on large recorded files.
 
 Run from a checkout (the package installed, editable or not)::
 
@@ -11,7 +11,7 @@ rows, time shifted so it keeps increasing, with a little extra noise per row (1 
 in the angles) so that the copies differ, written once per size as CSV and as Parquet (row groups
 of 100,000). Each measurement runs in a fresh worker process that imports the package, records
 its resident set size (RSS, ``/proc/self/status`` VmRSS), resets the peak mark (``clear_refs``), runs
-:func:`registration.streaming.run_register` exactly as the CLI does (no plots, no progress bar) and
+:func:`registration.recorded.run_register` exactly as the CLI does (no plots, no progress bar) and
 reports the wall time and its peak RSS during the run (VmHWM; ``ru_maxrss`` where /proc is missing,
 which also counts the pre-exec image). "Above baseline" subtracts the RSS after the
 imports (numpy, pandas, pyarrow, casadi, the compiled generated code), which does not depend on
@@ -55,8 +55,8 @@ def status(key):
 
 import numpy, pandas, pyarrow, pyarrow.parquet, pyarrow.csv  # noqa: F401  (baseline)
 from registration import _codegen as _loader
-from registration.online.filter import RegistrationConfig, register
-from registration.recorded.runner import RunOptions, run_register
+from registration.online import RegistrationConfig, register
+from registration.recorded import RunOptions, read_table, run_register
 for name in ("kalman_step_paper_standard", "pseudo_measurement_standard"):
     _loader.get(name)
 base = status("VmRSS")
@@ -71,7 +71,6 @@ if mode == "stream":
     summary = run_register([path], opts)
     rows = summary["rows"]["read"]
 else:
-    from registration.recorded.formats import read_table
     result = register(read_table(path))
     rows = len(result.time)
 dt = time.perf_counter() - t0
@@ -86,7 +85,7 @@ def make_inputs(n_rows: int, folder: Path) -> dict:
     import pyarrow.csv as pacsv
     import pyarrow.parquet as pq
 
-    from registration.recorded.formats import to_file_frame
+    from registration.recorded import to_file_frame
     from registration.online.scenario import paper_scenario
 
     base = to_file_frame(paper_scenario(n_steps=300, seed=0).data)

@@ -1,4 +1,4 @@
-"""``registration register``: register recorded files (CSV/Parquet), streaming and resumable (issue 6)."""
+"""``registration register``: register recorded files (CSV/Parquet), streaming and resumable."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
-from registration.online.filter import DEFAULT_LINEARIZATION, LINEARIZATIONS
+from registration.online import DEFAULT_LINEARIZATION, LINEARIZATIONS
 
 HELP = "register recorded data: a synchronous table or two per-radar plot files (+ navigation), CSV or Parquet"
 
@@ -60,9 +60,8 @@ def parse_sigma(text: str) -> tuple:
 
 
 def build_options(args: argparse.Namespace):
-    from registration.online.filter import RegistrationConfig
-    from registration.recorded.pairing import PairingOptions
-    from registration.recorded.runner import RunOptions
+    from registration.online import RegistrationConfig
+    from registration.recorded import PairingOptions, RunOptions
 
     config = RegistrationConfig(sigma0=parse_sigma(args.sigma), q_mode=args.q_mode, q_window=args.q_window,
                                 linearization=args.linearization, t_variant=args.t_variant)
@@ -77,8 +76,8 @@ def build_options(args: argparse.Namespace):
 
 
 def run(args: argparse.Namespace) -> int:
-    from registration.recorded.runner import run_register, validate_files
     from registration.cli.simulate import estimate_lines
+    from registration.recorded import run_register, validate_files
 
     options = build_options(args)
     if args.validate_only:

@@ -14,8 +14,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 def schema() -> dict:
     """The file forms as a dict: for each form, a list of {column, unit, meaning, required}."""
-    from registration.recorded.formats import NAV_FIELDS, PLOT_FIELDS, SYNC_FIELDS
-    from registration.recorded.runner import ESTIMATE_COLUMNS, POSITION_COLUMNS, REJECTED_COLUMNS, UNPAIRED_COLUMNS
+    from registration.recorded import (
+        ESTIMATE_COLUMNS, NAV_FIELDS, PLOT_FIELDS, POSITION_COLUMNS, REJECTED_COLUMNS, SYNC_FIELDS, UNPAIRED_COLUMNS,
+    )
 
     def rows(fields, prefix="", required=True):
         out = []

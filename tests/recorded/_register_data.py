@@ -7,7 +7,7 @@ from functools import lru_cache
 import numpy as np
 import pandas as pd
 
-from registration.recorded.formats import to_file_frame
+from registration.recorded import to_file_frame
 from registration.online.scenario import ShipMotion, paper_scenario
 from registration.online.contract import IS_ANGLE
 

@@ -8,11 +8,12 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from registration.recorded.checkpoint import CheckpointError, load_checkpoint, save_checkpoint
 from registration.cli import main
-from registration.recorded.formats import (SYNC_COLUMNS, CsvAppender, FileFormatError, PartsWriter, from_file_frame, iter_frames,
-                             read_table, to_file_frame, write_table)
 from registration.online.contract import DATA_COLUMNS
+from registration.recorded import (
+    SYNC_COLUMNS, CheckpointError, CsvAppender, FileFormatError, PartsWriter, from_file_frame, iter_frames, load_checkpoint,
+    read_table, save_checkpoint, to_file_frame, write_table,
+)
 
 from ._register_data import frame, scenario
 

@@ -9,9 +9,8 @@ import pandas as pd
 import pytest
 
 from registration.cli import main
-from registration.recorded.formats import read_table
-from registration.online.filter import RegistrationConfig, register
-from registration.recorded.rowcheck import REASON_CODES
+from registration.online import RegistrationConfig, register
+from registration.recorded import REASON_CODES, from_file_frame, load_checkpoint, read_table, save_checkpoint
 
 from ._register_data import estimates_from_file, file_estimates, file_sigmas, frame, in_file_units, scenario
 
@@ -116,8 +115,6 @@ def test_every_bad_row_reason_in_skip_mode_accounts_for_every_row(tmp_path, suff
     assert summary["rows"]["read"] == n and summary["rows"]["accepted"] + summary["rows"]["rejected"] == n
     # the accepted rows give the same estimates as the API fed with exactly those rows
     clean = frame(60).drop(index=[b[0] for b in BAD]).reset_index(drop=True)
-    from registration.recorded.formats import from_file_frame
-
     api = register(from_file_frame(clean), RegistrationConfig())
     assert np.array_equal(file_estimates(est), in_file_units(api.estimates))
 
@@ -208,8 +205,6 @@ def test_checkpoint_for_other_inputs_or_options_is_refused(tmp_path, capsys):
 
 
 def test_resume_refuses_outputs_shorter_than_the_checkpoint(tmp_path, capsys):
-    from registration.recorded.checkpoint import load_checkpoint, save_checkpoint
-
     inp, ckpt = tmp_path / "in.csv", tmp_path / "run.ckpt"
     frame(100).to_csv(inp, index=False)
     assert _checkpointed(tmp_path, inp, ckpt) == 0

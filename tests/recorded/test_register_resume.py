@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from registration.recorded.checkpoint import CheckpointError, load_checkpoint
+from registration.recorded import CheckpointError, load_checkpoint
 from registration.cli import main
 
 from ._register_data import tiled
