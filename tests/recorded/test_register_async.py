@@ -10,7 +10,7 @@ import pandas as pd
 import pytest
 
 from registration.cli import main
-from registration.recorded.formats import to_file_frame
+from registration.recorded import to_file_frame
 from registration.online.scenario import ShipMotion, paper_scenario
 from registration.online.contract import STATE_NAMES
 
@@ -109,24 +109,44 @@ def test_navigation_inside_the_plot_files_and_a_gap(tmp_path):
     _check_against_truth(_summary(out), sc.truth_state)
 
 
-@pytest.mark.parametrize("mode", ["stop", "skip"])
-def test_bad_rows_in_a_plot_file_are_named_or_set_aside(tmp_path, capsys, mode):
+def _damage(paths, *, plots: bool = True, nav: bool = True) -> None:
+    """Radar B's plot row 7: range -5 m, row 9: B's time repeated; navigation row 11: latitude 91 deg."""
+    if plots:
+        b = pd.read_parquet(paths[1])
+        b.loc[7, "b_range_m"] = -5.0
+        b.loc[9, "time_s"] = b.loc[8, "time_s"]
+        b.to_parquet(paths[1], index=False)
+    if nav:
+        nav_frame = pd.read_csv(paths[2])
+        nav_frame.loc[11, "a_lat_deg"] = 91.0
+        nav_frame.to_csv(paths[2], index=False)
+
+
+B_ROW_7 = "radar_b.parquet: row 7, column 'b_range_m': value -5.0 must be > 0 m (slant range) [non_positive_range]"
+NAV_ROW_11 = "nav.csv: row 11, column 'a_lat_deg': value 91.0 is outside [-90, 90] deg (latitude) [out_of_range]"
+
+
+@pytest.mark.parametrize("plots,nav_file,expected", [
+    (True, False, B_ROW_7),
+    (False, True, NAV_ROW_11),
+    # both: the files are read in the order plot files (A, B), then navigation files, so B's row comes first
+    (True, True, B_ROW_7),
+])
+def test_stop_mode_names_the_first_bad_row_in_reading_order(tmp_path, capsys, plots, nav_file, expected):
+    _, paths, nav, _ = write_async(tmp_path)
+    _damage(paths, plots=plots, nav=nav_file)
+    rc = main(["register", *map(str, paths[:2]), *nav, "--clock-offset-b", "0.3", "--out", str(tmp_path / "reg"), *FAST])
+    assert rc == 2
+    err = capsys.readouterr().err
+    assert err.count(": row ") == 1 and f"{tmp_path}/{expected}" in err
+    assert not (tmp_path / "reg" / "paired.csv").exists()  # nothing published
+
+
+def test_skip_mode_sets_bad_rows_of_every_file_aside(tmp_path):
     _, paths, nav, (_, n_b) = write_async(tmp_path)
-    b = pd.read_parquet(paths[1])
-    b.loc[7, "b_range_m"] = -5.0
-    b.loc[9, "time_s"] = b.loc[8, "time_s"]
-    b.to_parquet(paths[1], index=False)
-    nav_frame = pd.read_csv(paths[2])
-    nav_frame.loc[11, "a_lat_deg"] = 91.0
-    nav_frame.to_csv(paths[2], index=False)
+    _damage(paths)
     out = tmp_path / "reg"
-    rc = main(["register", *map(str, paths[:2]), *nav, "--clock-offset-b", "0.3", "--on-bad-row", mode, "--out", str(out), *FAST])
-    if mode == "stop":
-        assert rc == 2
-        err = capsys.readouterr().err
-        assert "row" in err and ("radar_b.parquet: row 7, column 'b_range_m'" in err or "nav.csv: row 11, column 'a_lat_deg'" in err)
-        return
-    assert rc == 0
+    assert main(["register", *map(str, paths[:2]), *nav, "--clock-offset-b", "0.3", "--on-bad-row", "skip", "--out", str(out), *FAST]) == 0
     rej = pd.read_csv(out / "rejected.csv")
     got = {(r.file.rsplit("/", 1)[-1], r.row, r.reason_code) for r in rej.itertuples()}
     assert got == {("radar_b.parquet", 7, "non_positive_range"), ("radar_b.parquet", 9, "time_duplicate"),
