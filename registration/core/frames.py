@@ -14,7 +14,9 @@ from __future__ import annotations
 import numpy as np
 
 from registration import _codegen
-from registration.core.validation import as_float_array, broadcast_1d, check_angle, check_latitude, check_positive, check_range
+from registration.core.validation import (
+    as_float_array, broadcast_1d, check_altitude, check_angle, check_latitude, check_positive, check_range,
+)
 
 __all__ = ["geodetic2ecef", "enu2ecef_rotation", "deck2enu", "deck2enu_jacobians", "deck2enu_rotation", "plot2ecef"]
 
@@ -25,12 +27,12 @@ T_VARIANTS = _codegen.variants("t_variant")
 def _geodetic(lat, lon, alt=None):
     lat = as_float_array("lat", lat)
     lon = as_float_array("lon", lon)
-    check_latitude("lat", lat)
+    lat = check_latitude("lat", lat)
     check_angle("lon", lon)
     out = {"lat": lat, "lon": lon}
     if alt is not None:
         alt = as_float_array("alt", alt)
-        check_range("alt", alt, -1.2e4, 1.0e7, "m above the WGS-84 ellipsoid")
+        check_altitude("alt", alt)
         out["alt"] = alt
     return out
 

@@ -5,30 +5,49 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = ["as_float_array", "check_finite", "check_range", "check_positive", "check_latitude", "check_angle",
-           "broadcast_1d", "degree_hint", "DEGREE_HINT", "HALF_PI"]
+           "check_altitude", "broadcast_1d", "degree_hint", "DEGREE_HINT", "HALF_PI", "LATITUDE_SLACK", "ALTITUDE_LIMITS_M"]
 
 HALF_PI = np.pi / 2
+#: Latitudes up to this much beyond +-pi/2 (rad) are accepted and clipped: float32 pi/2 rounds
+#: 4.4e-8 rad above the float64 value.
+LATITUDE_SLACK = 1e-7
+#: Accepted heights above the WGS-84 ellipsoid (m), for platforms and targets alike: from below the
+#: deepest ocean trench to the top of low Earth orbit.
+ALTITUDE_LIMITS_M = (-12_000.0, 1_000_000.0)
 
 
 def as_float_array(name: str, value) -> np.ndarray:
-    try:
-        arr = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError) as exc:
-        raise ValueError(f"{name}: expected numbers, got {type(value).__name__} ({exc})") from exc
-    return arr
+    """``value`` as float64; refuses None, booleans, strings and other non-numbers, naming ``name``."""
+    arr = np.asarray(value, dtype=object) if value is None else np.asarray(value)
+    if arr.dtype.kind in "biufc" and arr.dtype.kind not in "bc":
+        return arr.astype(np.float64, copy=False)
+    if arr.dtype.kind == "O":
+        try:
+            arr = arr.astype(np.float64)
+        except (TypeError, ValueError):
+            arr = None
+        if arr is not None and not any(v is None or isinstance(v, (bool, np.bool_, str)) for v in np.ravel(np.asarray(value, dtype=object))):
+            return arr
+    if value is None or isinstance(value, (str, bytes, bool, np.bool_)):
+        what = repr(value)
+    else:
+        what = f"a {type(value).__name__} holding non-numbers (None, booleans or strings)"
+    raise ValueError(f"{name}: expected numbers, got {what}")
 
 
-def _first_bad(mask: np.ndarray) -> str:
+def _at(mask: np.ndarray) -> str:
+    """' at index i' for the first True of mask, or '' for a scalar."""
+    if mask.ndim == 0:
+        return ""
     idx = np.argwhere(mask)[0]
-    return str(tuple(int(i) for i in idx)) if mask.ndim > 1 else str(int(idx[0])) if mask.ndim == 1 else "scalar"
+    return f" at index {tuple(int(i) for i in idx) if mask.ndim > 1 else int(idx[0])}"
 
 
 def check_finite(name: str, arr: np.ndarray, unit: str) -> None:
     bad = ~np.isfinite(arr)
     if bad.any():
-        i = _first_bad(bad)
         v = arr[tuple(np.argwhere(bad)[0])] if arr.ndim else arr
-        raise ValueError(f"{name}: non-finite value {v} at index {i}; expected a finite number in {unit}")
+        raise ValueError(f"{name}: non-finite value {v}{_at(bad)}; expected a finite number in {unit}")
 
 
 #: The one wording of the hint given when radians were expected and degrees seem to have come.
@@ -49,10 +68,9 @@ def check_range(name: str, arr: np.ndarray, low: float, high: float, unit: str, 
     check_finite(name, arr, unit)
     bad = (arr < low) | (arr > high)
     if bad.any():
-        i = _first_bad(bad)
         v = arr[tuple(np.argwhere(bad)[0])] if arr.ndim else arr
         hint = degree_hint(arr, max(abs(low), abs(high))) if angle else ""
-        raise ValueError(f"{name}: value {v} at index {i} is outside [{low:g}, {high:g}] {unit}{hint}")
+        raise ValueError(f"{name}: value {v}{_at(bad)} is outside [{low:g}, {high:g}] {unit}{hint}")
 
 
 def check_positive(name: str, arr: np.ndarray, unit: str) -> None:
@@ -61,13 +79,21 @@ def check_positive(name: str, arr: np.ndarray, unit: str) -> None:
     check_finite(name, arr, unit)
     bad = arr <= 0
     if bad.any():
-        i = _first_bad(bad)
         v = arr[tuple(np.argwhere(bad)[0])] if arr.ndim else arr
-        raise ValueError(f"{name}: value {v} at index {i} must be > 0 {unit}")
+        raise ValueError(f"{name}: value {v}{_at(bad)} must be > 0 {unit}")
 
 
-def check_latitude(name: str, arr: np.ndarray) -> None:
-    check_range(name, arr, -HALF_PI, HALF_PI, "rad (latitude, [-pi/2, pi/2])", angle=True)
+def check_latitude(name: str, arr: np.ndarray) -> np.ndarray:
+    """Latitudes in rad within [-pi/2, pi/2] (float32 rounding tolerated); returns them clipped to it."""
+    check_range(name, arr, -HALF_PI - LATITUDE_SLACK, HALF_PI + LATITUDE_SLACK, "rad (latitude, [-pi/2, pi/2])", angle=True)
+    if arr.size and np.max(np.abs(arr)) > HALF_PI:
+        return np.clip(arr, -HALF_PI, HALF_PI)
+    return arr
+
+
+def check_altitude(name: str, arr: np.ndarray) -> None:
+    """Heights in m above the WGS-84 ellipsoid within :data:`ALTITUDE_LIMITS_M`."""
+    check_range(name, arr, *ALTITUDE_LIMITS_M, "m above the WGS-84 ellipsoid")
 
 
 def check_angle(name: str, arr: np.ndarray, bound: float = 2 * np.pi) -> None:

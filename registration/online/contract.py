@@ -15,7 +15,7 @@ from typing import Mapping
 import numpy as np
 
 from registration.core.angles import wrap_angle
-from registration.core.validation import degree_hint
+from registration.core.validation import ALTITUDE_LIMITS_M, degree_hint
 
 __all__ = [
     "STATE_NAMES", "STATE_LABELS", "STATE_UNITS", "IS_ANGLE", "N_STATE", "SENSORS", "SENSOR_COLUMNS", "DATA_COLUMNS",
@@ -56,7 +56,7 @@ NAV, ATTITUDE, PLOT = slice(0, 6), slice(3, 6), slice(6, 9)
 LIMITS = {
     "lat": (-np.pi / 2, np.pi / 2, "rad (latitude, [-pi/2, pi/2])"),
     "lon": (-2 * np.pi, 2 * np.pi, "rad"),
-    "alt": (-1.2e4, 1.0e6, "m above the WGS-84 ellipsoid"),
+    "alt": (*ALTITUDE_LIMITS_M, "m above the WGS-84 ellipsoid"),
     "heading": (-2 * np.pi, 2 * np.pi, "rad"),
     "pitch": (-np.pi / 2, np.pi / 2, "rad"),
     "roll": (-np.pi / 2, np.pi / 2, "rad"),
@@ -133,15 +133,21 @@ def validate_data(data: Mapping) -> tuple[np.ndarray, np.ndarray]:
     """
     missing = [c for c in DATA_COLUMNS if c not in data]
     if missing:
-        raise ValueError(f"missing column(s) {missing}; expected {list(DATA_COLUMNS)} (SI units, radians)")
-    try:
-        cols = [np.asarray(data[c], dtype=np.float64) for c in DATA_COLUMNS]
-    except (TypeError, ValueError) as exc:
-        raise ValueError(f"non-numeric column in data: {exc}") from exc
+        raise ValueError(f"missing column(s) {missing}; expected {list(DATA_COLUMNS)} (SI units, radians)"
+                         + _file_columns_hint(data))
+    cols = []
+    for name in DATA_COLUMNS:
+        try:
+            cols.append(np.asarray(data[name], dtype=np.float64))
+        except (TypeError, ValueError) as exc:
+            raise ValueError(f"column {name!r}: expected numbers ({exc})") from exc
+        if cols[-1].ndim != 1:
+            raise ValueError(f"column {name!r}: expected a 1-D array with one value per row, got "
+                             + ("a single value" if cols[-1].ndim == 0 else f"shape {cols[-1].shape}"))
     k = cols[0].shape
     for name, col in zip(DATA_COLUMNS, cols):
-        if col.ndim != 1 or col.shape != k:
-            raise ValueError(f"column {name!r}: shape {col.shape}, expected {k} like 'time' (one value per row)")
+        if col.shape != k:
+            raise ValueError(f"column {name!r}: {col.shape[0]} values, but 'time' has {k[0]}; one value per row")
     if k[0] == 0:
         raise ValueError("data has no rows")
     time = cols[0]
@@ -149,6 +155,15 @@ def validate_data(data: Mapping) -> tuple[np.ndarray, np.ndarray]:
     rows = np.stack(cols[1:], axis=1)
     check_rows(rows)
     return time, rows
+
+
+def _file_columns_hint(data) -> str:
+    """A pointer to the file reader when ``data`` carries file column names (``*_deg``, ``*_m``, ``time_s``)."""
+    names = [str(c) for c in (data.columns if hasattr(data, "columns") else data)]
+    if any(n.endswith(("_deg", "_m")) or n == "time_s" for n in names):
+        return ("; these are the file columns (degrees, metres): read the file with "
+                "registration.recorded.read_table(path), which converts them to this contract")
+    return ""
 
 
 def row_from_mapping(row: Mapping | np.ndarray) -> np.ndarray:
@@ -160,8 +175,17 @@ def row_from_mapping(row: Mapping | np.ndarray) -> np.ndarray:
         return arr
     missing = [c for c in ROW_COLUMNS if c not in row]
     if missing:
-        raise ValueError(f"row: missing column(s) {missing}")
-    return np.array([float(row[c]) for c in ROW_COLUMNS])
+        raise ValueError(f"row: missing column(s) {missing}" + _file_columns_hint(row))
+    values = np.empty(N_ROW)
+    for j, c in enumerate(ROW_COLUMNS):
+        try:
+            cell = np.asarray(row[c], dtype=np.float64).reshape(-1)
+        except (TypeError, ValueError) as exc:
+            raise ValueError(f"row: column {c!r}: expected a number ({exc})") from exc
+        if cell.size != 1:
+            raise ValueError(f"row: column {c!r} holds {cell.size} values; update() takes one row (use update_block for several)")
+        values[j] = cell[0]
+    return values
 
 
 def correct_rows(rows: np.ndarray, estimates: np.ndarray) -> np.ndarray:

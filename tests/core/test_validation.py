@@ -50,3 +50,29 @@ def test_length_one_array_broadcasts_like_a_scalar():
     out = frames.geodetic2ecef(np.array([0.1]), np.array([0.1, 0.2]), 0.0)
     assert out.shape == (2, 3)
     assert np.allclose(out[0], frames.geodetic2ecef(0.1, 0.1, 0.0)[0])
+
+
+@pytest.mark.parametrize("value, shown", [(None, "None"), (True, "True"), ("0.5", "'0.5'"), ([0.1, None], "a list holding non-numbers")])
+def test_none_booleans_and_strings_are_not_numbers(value, shown):
+    with pytest.raises(ValueError, match=f"lat: expected numbers, got {shown}"):
+        frames.geodetic2ecef(value, 0.0, 0.0)
+
+
+def test_float32_poles_are_accepted_and_clipped():
+    for pole in (np.float32(np.pi / 2), np.float32(-np.pi / 2)):
+        assert abs(float(pole)) > np.pi / 2  # float32 rounding leaves the float64 range
+        p = frames.geodetic2ecef(pole, np.float32(0.3), np.float32(0.0))
+        np.testing.assert_allclose(p, frames.geodetic2ecef(float(np.sign(pole)) * np.pi / 2, 0.3, 0.0), atol=1e-6)
+    with pytest.raises(ValueError, match="lat: value"):
+        frames.geodetic2ecef(np.pi / 2 + 1e-6, 0.0, 0.0)
+
+
+def test_scalar_errors_name_no_index_and_altitude_uses_the_one_window():
+    from registration.core.validation import ALTITUDE_LIMITS_M
+
+    with pytest.raises(ValueError) as info:
+        frames.geodetic2ecef(0.0, 0.0, np.nan)
+    assert "index" not in str(info.value)
+    frames.geodetic2ecef(0.0, 0.0, ALTITUDE_LIMITS_M[1])
+    with pytest.raises(ValueError, match=r"alt: value .* is outside \[-12000, 1e\+06\] m"):
+        frames.geodetic2ecef(0.0, 0.0, ALTITUDE_LIMITS_M[1] * 1.01)

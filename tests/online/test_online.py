@@ -259,3 +259,35 @@ def test_information_at_estimate_compiled_equals_numpy_and_skips_extreme_rows():
     assert used_bad == 79 and np.isfinite(J_bad).all()
     keep = np.arange(80) != 5
     assert np.allclose(J_bad, information_at_estimate(rows[keep], x, cfg.sigma0, cfg.t_variant)[0], rtol=1e-10)
+
+
+def test_scalars_and_file_columns_get_a_message_that_says_what_to_do():
+    scenario = paper_scenario(n_steps=10)
+    with pytest.raises(ValueError, match="column 'time': expected a 1-D array with one value per row, got a single value"):
+        register({k: float(v[0]) for k, v in scenario.data.items()})
+    file_named = {("time_s" if k == "time" else f"{k}_deg" if k.endswith(("lat", "lon")) else k): v for k, v in scenario.data.items()}
+    with pytest.raises(ValueError, match=r"missing column\(s\).*read the file with registration.recorded.read_table"):
+        register(file_named)
+    with pytest.raises(ValueError, match="column 'a_lat': 10 values, but 'time' has 9"):
+        register({**scenario.data, "time": scenario.data["time"][:9]})
+
+
+def test_update_takes_a_dataframe_row_and_refuses_several():
+    pd = pytest.importorskip("pandas")
+    scenario = paper_scenario(n_steps=10)
+    frame = pd.DataFrame(scenario.data)
+    by_series, by_frame, by_array = OnlineRegistrar(), OnlineRegistrar(), OnlineRegistrar()
+    for i in range(3):
+        a = by_series.update(frame.iloc[i].drop("time"))
+        b = by_frame.update(frame.iloc[[i]])
+        c = by_array.update(frame.iloc[i][list(DATA_COLUMNS[1:])].to_numpy())
+        np.testing.assert_array_equal(a["x"], c["x"])
+        np.testing.assert_array_equal(b["x"], c["x"])
+    with pytest.raises(ValueError, match="holds 2 values; update\\(\\) takes one row"):
+        by_frame.update(frame.iloc[[4, 5]])
+    assert by_frame.n_updates == 3
+
+
+def test_result_prints_in_one_line():
+    text = repr(register(paper_scenario(n_steps=20).data))
+    assert text.startswith("RegistrationResult(20 rows") and "\n" not in text and len(text) < 200
