@@ -10,24 +10,10 @@ from __future__ import annotations
 import numpy as np
 
 from registration import _codegen
+from registration.core.consistency import nees_interval
 from registration.online.contract import SENSORS
 
-__all__ = ["nees_interval", "crlb_information", "nees_series", "crlb_from_information"]
-
-
-def nees_interval(runs: int, dof: int, level: float = 0.95) -> tuple[float, float]:
-    """Two-sided ``level`` interval of the run-averaged NEES (or NIS) of a consistent filter.
-
-    With ``runs`` independent runs and ``dof`` dimensions per run, ``runs * avg ~ chi2(runs * dof)``,
-    so the interval of the average is ``chi2.ppf((1 -+ level) / 2, runs * dof) / runs``.
-    """
-    from scipy.stats import chi2
-
-    if runs < 1 or dof < 1:
-        raise ValueError(f"nees_interval: need runs >= 1 and dof >= 1, got runs={runs}, dof={dof}")
-    alpha = 1.0 - level
-    n = runs * dof
-    return float(chi2.ppf(alpha / 2, n) / runs), float(chi2.ppf(1 - alpha / 2, n) / runs)
+__all__ = ["crlb_information", "nees_series", "crlb_from_information"]
 
 
 def crlb_information(scenario, sigma0=None, t_variant: str | None = None) -> np.ndarray:

@@ -12,7 +12,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from registration.online.batch import register
-from registration.online.crlb import crlb_from_information, crlb_information, nees_interval, nees_series
+from registration.core.consistency import nees_interval
+from registration.online.crlb import crlb_from_information, crlb_information, nees_series
 from registration.online.config import RegistrationConfig
 from registration.online.scenario import paper_scenario
 from registration.online.contract import IS_ANGLE, N_STATE, STATE_LABELS, STATE_NAMES

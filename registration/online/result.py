@@ -10,6 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from registration.core.consistency import ConsistencyReport, check_consistency
 from registration.core.observability import ObservabilityReport
 from registration.online.config import RegistrationConfig
 from registration.online.contract import IS_ANGLE, STATE_NAMES
@@ -89,6 +90,11 @@ class RegistrationResult:
         """The before/after statistics of the ECEF differences (metres), as in the paper's Table 1."""
         return {"before": difference_statistics(self.raw_difference_ecef), "after": difference_statistics(self.corrected_difference_ecef)}
 
+    @property
+    def consistency(self) -> ConsistencyReport:
+        """Mean NIS (3 degrees of freedom per row) against its chi-square band; ``.ok`` is the gate."""
+        return check_consistency(self.nis, 3, "NIS")
+
     def identifiable_combinations(self) -> list[dict]:
         """Estimates of the sums that are identifiable when the parts are not (e.g. dC_a + dq_a)."""
         return identifiable_combinations(self.final, self.covariances[-1], self.observability)
@@ -103,4 +109,4 @@ class RegistrationResult:
             counts[status] = counts.get(status, 0) + 1
         states = ", ".join(f"{n} {s}" for s, n in sorted(counts.items()))
         return (f"RegistrationResult({len(self.time)} rows, linearization={self.config.linearization!r}, "
-                f"t_variant={self.config.t_variant!r}, states: {states})")
+                f"t_variant={self.config.t_variant!r}, states: {states}, mean NIS {float(np.mean(self.nis)):.3g})")
