@@ -1,0 +1,141 @@
+"""The plot model of fleet registration: one sensor on one platform sees one target.
+
+Built on the two-ship model's expressions (derive/pseudo_measurement.py: ``ecef2plot_expr`` and
+``plot2ecef_expr``, themselves built from geodesy.py and attitude.py), extended by the sensor's
+lever arm and by the registration errors of the fleet problem (docs/fleet.md):
+
+* the platform reports navigation (lat, lon rad; alt m) and attitude (heading, pitch, roll rad);
+  its true attitude is ``reported - att_err`` (``att_err`` = heading, pitch, roll errors, rad);
+* the sensor sits at ``lever_deck`` (m, deck frame: x starboard, y bow, z up) from the platform's
+  navigation point and measures ``[r, q, e] = true + bias + noise`` (``bias`` = range m, bearing
+  rad, elevation rad), the plot of docs/conventions.md in the deck frame.
+
+With ``u_deck = R_enu_deck^T R_ecef_enu^T (p_ecef - p_nav_ecef) - lever_deck``, the prediction is
+``ecef2plot(p_ecef - R_ecef_enu R_enu_deck lever_deck)`` (the sensor's position moved to the
+navigation point) plus the biases. The residual is measured minus predicted, the bearing wrapped
+to (-pi, pi] as ``atan2(sin d, cos d)``; its Jacobian is that of the unwrapped difference (the
+wrap has derivative 1 wherever it is continuous). The slant range is the same number as
+ecef2plot's first entry but taken as ``|p_ecef - p_sensor_ecef|`` before any rotation: the
+rotations preserve length, so the range depends on the attitude only through the lever arm, and
+differentiating ``|R^T v|`` instead would subtract terms of the size of the range (1e5 m) to get
+that lever-arm term (1e1 m), losing eight digits in d range / d attitude.
+
+Channel subsets (2-D radar, passive angle sensor, bearing-only, range-only) use the same function:
+the runtime weights the unmeasured channels by zero.
+"""
+
+import sympy as sp
+
+from .attitude import MEAS_DOMAIN, deck2enu_rotation_expr
+from .geodesy import GEO_DOMAIN, T_VARIANTS, geodetic2ecef_expr
+from .pseudo_measurement import ecef2plot_expr, plot2ecef_expr
+from .spec import FunctionSpec, JacobianDecl, Port, jacobian
+
+VARIANT = "standard"  # the orthonormal ENU -> ECEF rotation; the paper's eq. (4) is for reproduction only
+
+
+def _vec(prefix: str, names: list[str]) -> sp.Matrix:
+    return sp.Matrix(sp.symbols([f"{prefix}_{n}" for n in names], real=True))
+
+
+def lever_ecef_expr(nav, att, lever_deck) -> sp.Matrix:
+    """The lever arm in ECEF components (m): R_ecef_enu(lat, lon) R_enu_deck(att) lever_deck."""
+    return T_VARIANTS[VARIANT](nav[0], nav[1]) * deck2enu_rotation_expr(*att) * sp.Matrix(lever_deck)
+
+
+def predicted_plot_expr(p_ecef, nav, att_reported, att_err, bias, lever_deck) -> sp.Matrix:
+    """Plot [r m, q rad, e rad] the sensor reports for a target at p_ecef: true plot + bias (q unwrapped)."""
+    att = [att_reported[i] - att_err[i] for i in range(3)]
+    p_shifted = sp.Matrix(p_ecef) - lever_ecef_expr(nav, att, lever_deck)
+    plot = ecef2plot_expr(p_shifted, nav, att, VARIANT)
+    offset_ecef = p_shifted - geodetic2ecef_expr(*nav)
+    slant = sp.sqrt(offset_ecef.dot(offset_ecef))  # = plot[0], without rotating first (see module doc)
+    return sp.Matrix([slant, plot[1], plot[2]]) + sp.Matrix(bias)
+
+
+def corrected_plot2ecef_expr(nav, att_reported, att_err, bias, lever_deck, meas) -> sp.Matrix:
+    """Target ECEF (m) from a plot corrected by the biases and an attitude corrected by its errors."""
+    att = [att_reported[i] - att_err[i] for i in range(3)]
+    plot = [meas[i] - bias[i] for i in range(3)]
+    return plot2ecef_expr(nav, att, plot, VARIANT) + lever_ecef_expr(nav, att, lever_deck)
+
+
+def _wrap(x):
+    """x wrapped to (-pi, pi] (differentiable away from the cut, derivative 1)."""
+    return sp.atan2(sp.sin(x), sp.cos(x))
+
+
+FLEET_DOMAIN = {
+    **GEO_DOMAIN,
+    **MEAS_DOMAIN,
+    "p_ecef": [(-7.0e6, 7.0e6)] * 3,
+    "att_err": [(-0.1, 0.1)] * 3,
+    "bias": [(-5000.0, 5000.0), (-0.1, 0.1), (-0.1, 0.1)],
+    "lever_deck": [(-100.0, 100.0)] * 3,
+}
+
+
+def _nav_ports(lat, lon, alt, heading, pitch, roll) -> tuple:
+    return (
+        Port("lat", lat, "rad"), Port("lon", lon, "rad"), Port("alt", alt, "m"),
+        Port("heading", heading, "rad"), Port("pitch", pitch, "rad"), Port("roll", roll, "rad"),
+    )
+
+
+def specs() -> list[FunctionSpec]:
+    lat, lon, alt = sp.symbols("lat lon alt", real=True)
+    heading, pitch, roll = sp.symbols("heading pitch roll", real=True)
+    r, q, e = sp.symbols("r q e", real=True)
+    p_ecef = sp.Matrix(sp.symbols("x y z", real=True))
+    att_err = _vec("d", ["heading", "pitch", "roll"])
+    bias = _vec("b", ["r", "q", "e"])
+    lever = _vec("lever", ["x", "y", "z"])
+    nav, att = [lat, lon, alt], [heading, pitch, roll]
+
+    predicted = predicted_plot_expr(p_ecef, nav, att, att_err, bias, lever)
+    difference = sp.Matrix([r, q, e]) - predicted
+    residual = sp.Matrix([difference[0], _wrap(difference[1]), difference[2]])
+    J = jacobian(difference, p_ecef, att_err, bias)
+    plot = sp.Matrix([predicted[0], _wrap(predicted[1]), predicted[2]])
+    nav_ports = _nav_ports(lat, lon, alt, heading, pitch, roll)
+    residual_spec = FunctionSpec(
+        name="fleet_residual",
+        doc=(
+            "One plot of fleet registration: target p_ecef (m); platform navigation lat, lon (rad), "
+            "alt (m) and reported heading, pitch, roll (rad); attitude errors att_err (rad; true = "
+            "reported - error); sensor biases [range m, bearing rad, elevation rad]; lever_deck (m, deck "
+            "frame); measured r (m), q, e (rad). Outputs residual = measured - predicted (bearing wrapped "
+            "to (-pi, pi]), J = d residual / d(p_ecef, att_err, bias) (3x9), and the predicted plot "
+            "(true plot + bias, bearing wrapped)."
+        ),
+        inputs=(
+            Port("p_ecef", p_ecef, "m"), *nav_ports,
+            Port("att_err", att_err, "rad"), Port("bias", bias, "m, rad, rad"), Port("lever_deck", lever, "m"),
+            Port("r", r, "m"), Port("q", q, "rad"), Port("e", e, "rad"),
+        ),
+        outputs=(
+            Port("residual", residual, "m, rad, rad"),
+            Port("J", J, "m/m, m/rad, 1; rad/m, 1, 1"),
+            Port("plot", plot, "m, rad, rad"),
+        ),
+        jacobians=(JacobianDecl("J", "residual", ("p_ecef", "att_err", "bias")),),
+        domain=FLEET_DOMAIN,
+    )
+    p_target = corrected_plot2ecef_expr(nav, att, att_err, bias, lever, [r, q, e])
+    plot2ecef_spec = FunctionSpec(
+        name="fleet_plot2ecef",
+        doc=(
+            "Target ECEF (m) of one plot corrected by the registration errors: navigation lat, lon (rad), "
+            "alt (m), reported heading, pitch, roll (rad), attitude errors att_err (rad), sensor biases "
+            "[range m, bearing rad, elevation rad], lever_deck (m, deck frame), measured r (m), q, e (rad). "
+            "The inverse of fleet_residual's predicted plot."
+        ),
+        inputs=(
+            *nav_ports,
+            Port("att_err", att_err, "rad"), Port("bias", bias, "m, rad, rad"), Port("lever_deck", lever, "m"),
+            Port("r", r, "m"), Port("q", q, "rad"), Port("e", e, "rad"),
+        ),
+        outputs=(Port("p_ecef", p_target, "m"),),
+        domain=FLEET_DOMAIN,
+    )
+    return [residual_spec, plot2ecef_spec]
