@@ -57,12 +57,12 @@ def _start(plan: RunPlan, options: RunOptions) -> tuple[RunState, Outputs]:
     """A new state and fresh outputs, or the checkpoint's state and outputs cut back to its marks."""
     if plan.resume is None:
         state = RunState(OnlineRegistrar(options.config))
-        return state, Outputs(options.out, options.out_format, keep_rejected=plan.form == "asynchronous")
+        return state, Outputs(options, keep_rejected=plan.form == "asynchronous")
     payload = plan.resume
     options.message(f"registration register: resuming from checkpoint {options.checkpoint} at row "
                     f"{payload['state']['rows_done']} (phase {payload['phase']})")
     state = RunState.from_checkpoint(payload, options.config)
-    return state, Outputs(options.out, options.out_format, payload["outputs"])
+    return state, Outputs(options, payload["outputs"])
 
 
 def _filter_pass(table: Table, state: RunState, outputs: Outputs, options: RunOptions, saver: Checkpointer) -> None:

@@ -52,7 +52,11 @@ class PairingOptions:
 
 @dataclass
 class RunOptions:
-    """What ``registration register`` does with its inputs; see the CLI's ``--help`` for each option."""
+    """A recorded-data run: output folder ``out``, filter ``config``, bad rows ``"stop"`` or
+    ``"skip"``, an optional ``checkpoint`` file saved every ``checkpoint_every`` rows, rows per
+    block ``chunk_rows``, outputs ``"csv"`` or ``"parquet"``, information matrix ``"final"``
+    (second pass at the final estimate) or ``"filter"``, plots, progress bar, navigation files
+    ``nav`` and ``pairing`` for the asynchronous form, ``log`` for messages."""
 
     out: Path
     config: RegistrationConfig = field(default_factory=RegistrationConfig)

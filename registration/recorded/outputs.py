@@ -15,14 +15,15 @@ import numpy as np
 
 from registration.online.contract import IS_ANGLE, STATE_NAMES
 from registration.recorded.columns import ESTIMATE_COLUMNS, POSITION_COLUMNS, REJECTED_COLUMNS
+from registration.recorded.options import RunOptions
 from registration.recorded.writers import CsvAppender, open_appender
 
 __all__ = ["DifferenceStats", "Outputs", "output_paths", "estimate_frame", "position_frame", "rejected_rows"]
 
 
-def output_paths(out: Path, fmt: str) -> dict[str, Path]:
-    """Paths of the estimates, positions and rejected outputs in folder ``out`` for format ``fmt``."""
-    ext = ".csv" if fmt == "csv" else ".parquet"
+def output_paths(options: RunOptions) -> dict[str, Path]:
+    """Paths of the estimates, positions and rejected outputs of a run."""
+    out, ext = options.out, options.output_suffix
     return {"estimates": out / f"estimates{ext}", "positions": out / f"positions{ext}", "rejected": out / "rejected.csv"}
 
 
@@ -30,8 +31,8 @@ class Outputs:
     """The filter pass's three outputs. ``marks`` (from a checkpoint): ``{name: [size, rows]}``
     to cut each back to; ``keep_rejected``: append to an existing rejected.csv (the pairing's)."""
 
-    def __init__(self, out: Path, fmt: str, marks: dict | None = None, *, keep_rejected: bool = False):
-        paths = output_paths(out, fmt)
+    def __init__(self, options: RunOptions, marks: dict | None = None, *, keep_rejected: bool = False):
+        paths, fmt = output_paths(options), options.out_format
         self.estimates = open_appender(paths["estimates"], ESTIMATE_COLUMNS, fmt, None if marks is None else tuple(marks["estimates"]))
         self.positions = open_appender(paths["positions"], POSITION_COLUMNS, fmt, None if marks is None else tuple(marks["positions"]))
         if marks is None:

@@ -16,6 +16,7 @@ from registration.online.contract import IS_ANGLE
 from registration.online.plots import plot_difference_series, plot_estimate_series
 from registration.recorded.columns import ESTIMATE_COLUMNS, POSITION_COLUMNS
 from registration.recorded.formats import iter_frames
+from registration.recorded.options import RunOptions
 from registration.recorded.outputs import output_paths
 
 __all__ = ["write_plots", "PLOT_POINTS"]
@@ -24,9 +25,9 @@ PLOT_POINTS = 4000
 _NAV_COLUMNS = ["a_lat_deg", "a_lon_deg", "b_lat_deg", "b_lon_deg"]
 
 
-def write_plots(table_path: Path, out: Path, out_format: str, summary: dict) -> list[str]:
-    """Draw the three plots of the run that ``summary`` describes into ``out``; return their paths."""
-    paths = output_paths(out, out_format)
+def write_plots(table_path: Path, options: RunOptions, summary: dict) -> list[str]:
+    """Draw the three plots of the run that ``summary`` describes into ``options.out``; return their paths."""
+    out, paths = options.out, output_paths(options)
     stride = max(1, -(-max(int(summary["rows"]["accepted"]), 1) // PLOT_POINTS))
     est = _strided(paths["estimates"], ESTIMATE_COLUMNS, stride)
     pos = _strided(paths["positions"], POSITION_COLUMNS, stride)

@@ -36,7 +36,7 @@ def build_summary(table: Table, plan: RunPlan, state: RunState, options: RunOpti
         "observability": {**report.to_json(), "information": "at the final estimate (second pass)" if final
                           else "accumulated by the filter at its linearisation points"},
         "mean_nis": state.nis_sum / accepted if accepted else None,
-        "outputs": {k: str(p) for k, p in output_paths(options.out, options.out_format).items()},
+        "outputs": {k: str(p) for k, p in output_paths(options).items()},
         "form": plan.form,
         "inputs": plan.input_list(),
     }

@@ -46,7 +46,7 @@ def run_register(inputs, options: RunOptions) -> dict:
     summary = build_summary(table, plan, state, options, elapsed_s=round(time.perf_counter() - started, 3))
     write_json_atomic(options.out / "summary.json", summary)
     if options.plots:
-        summary["plots"] = write_plots(table.path, options.out, options.out_format, summary)
+        summary["plots"] = write_plots(table.path, options, summary)
         write_json_atomic(options.out / "summary.json", summary)
     if options.checkpoint is not None:
         mark_done(options.checkpoint)
