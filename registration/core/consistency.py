@@ -76,6 +76,13 @@ class ConsistencyReport:
             text += ("; the data do not fit the model. Likely causes: " + "; ".join(LIKELY_CAUSES) + ".")
         return text
 
+    @classmethod
+    def from_mean(cls, mean: float, samples: int, dof: int, quantity: str = "NIS") -> "ConsistencyReport":
+        """The report for a mean already accumulated over ``samples`` values (streaming runs)."""
+        if samples < 1:
+            raise ValueError(f"{quantity}: no samples to check")
+        return cls(quantity, int(samples), int(dof), float(mean), nees_interval(int(samples), int(dof)))
+
     def to_json(self) -> dict:
         return {"quantity": self.quantity, "samples": self.samples, "dof": self.dof, "mean": self.mean,
                 "interval_95": list(self.interval), "ratio": self.ratio, "status": self.status,
@@ -87,5 +94,4 @@ def check_consistency(values, dof: int, quantity: str = "NIS") -> ConsistencyRep
     values = np.asarray(values, dtype=np.float64).reshape(-1)
     if values.size == 0:
         raise ValueError(f"{quantity}: no samples to check")
-    mean = float(np.mean(values))
-    return ConsistencyReport(quantity, int(values.size), int(dof), mean, nees_interval(int(values.size), int(dof)))
+    return ConsistencyReport.from_mean(float(np.mean(values)), int(values.size), int(dof), quantity)

@@ -32,3 +32,10 @@ def test_a_sigma_in_the_wrong_unit_fails_the_gate_and_the_right_one_passes():
     wrong = register(scenario.data, RegistrationConfig(sigma0=wrong_sigma))
     assert not wrong.consistency.ok, wrong.consistency.message()
     assert wrong.consistency.to_json()["status"] == "grossly inconsistent"
+
+
+def test_a_streamed_mean_gives_the_same_report():
+    values = np.random.default_rng(2).chisquare(3, size=500)
+    from registration.core.consistency import ConsistencyReport
+
+    assert ConsistencyReport.from_mean(float(np.mean(values)), 500, 3) == check_consistency(values, 3)
