@@ -1,0 +1,146 @@
+"""Exit codes and error reporting shared by every ``registration`` sub-command.
+
+Every failure the user can cause or meet (a bad option, an unreadable input, an unwritable output,
+Ctrl-C, a closed pipe) ends with at most one line on standard error and one of these exit codes;
+``REGISTRATION_DEBUG=1`` in the environment adds the Python traceback.
+
+====  ==========================================================================================
+code  meaning
+====  ==========================================================================================
+0     success
+1     ``register --validate-only``: some rows are bad (listed on standard output)
+2     bad input: an invalid option or value, an input that cannot be read, an output that cannot
+      be written (the message names the option or the path)
+3     the run finished and wrote its outputs, but its normalised innovations grossly contradict
+      the model (the consistency gate; see :mod:`registration.core.consistency`);
+      ``--allow-inconsistent`` accepts such a run with exit code 0
+130   interrupted (Ctrl-C); outputs may be incomplete
+141   standard output was closed early (e.g. piped into ``head``): the command stops quietly,
+      like a program ended by SIGPIPE (128 + 13)
+====  ==========================================================================================
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import tempfile
+from contextlib import contextmanager
+from pathlib import Path
+
+__all__ = [
+    "EXIT_OK", "EXIT_BAD_ROWS", "EXIT_BAD_INPUT", "EXIT_INCONSISTENT", "EXIT_INTERRUPTED", "EXIT_BROKEN_PIPE",
+    "DEBUG_ENV", "EXIT_CODES_EPILOG", "CommandError", "os_error_message", "writing", "prepare_out",
+    "check_suffix", "add_allow_inconsistent", "consistency_gate", "interrupt_message",
+]
+
+EXIT_OK = 0
+EXIT_BAD_ROWS = 1
+EXIT_BAD_INPUT = 2
+EXIT_INCONSISTENT = 3
+EXIT_INTERRUPTED = 130
+EXIT_BROKEN_PIPE = 141
+
+#: Set this environment variable to 1 to see the traceback behind an error message.
+DEBUG_ENV = "REGISTRATION_DEBUG"
+
+#: The exit-code table as shown at the end of ``--help``.
+EXIT_CODES_EPILOG = (
+    "exit codes: 0 success; 1 register --validate-only found bad rows; 2 bad input (option, value, "
+    "unreadable input or unwritable output); 3 the run's normalised innovations grossly contradict the "
+    "model (outputs written; --allow-inconsistent accepts the run); 130 interrupted (Ctrl-C); "
+    f"141 standard output closed early. {DEBUG_ENV}=1 shows the traceback behind an error."
+)
+
+
+class CommandError(Exception):
+    """An error the user can fix; ``main`` prints its message as one line and exits with ``code``."""
+
+    def __init__(self, message: str, code: int = EXIT_BAD_INPUT):
+        super().__init__(message)
+        self.code = code
+
+
+def os_error_message(exc: OSError, action: str | None = None) -> str:
+    """``[action ]PATH: reason`` for an operating-system error, e.g. ``cannot write out/a.json: Read-only file system``."""
+    reason = exc.strerror or str(exc) or type(exc).__name__
+    if exc.filename is None:
+        return f"{action}: {reason}" if action else reason
+    target = os.fsdecode(exc.filename)
+    if exc.filename2 is not None:
+        target += f" -> {os.fsdecode(exc.filename2)}"
+    return f"{action} {target}: {reason}" if action else f"{target}: {reason}"
+
+
+@contextmanager
+def writing(path):
+    """Turn an operating-system error inside the block into ``CommandError('cannot write PATH: reason')``."""
+    try:
+        yield
+    except BrokenPipeError:
+        raise
+    except OSError as exc:
+        raise CommandError(f"cannot write {path}: {exc.strerror or exc}") from exc
+
+
+def prepare_out(out) -> Path:
+    """Create the output folder ``out`` (and its parents) and check that a file can be written in it.
+
+    Called before the work starts, so an unusable ``--out`` fails at once with exit code 2.
+    """
+    out = Path(out)
+    if out.exists() and not out.is_dir():
+        raise CommandError(f"cannot use {out} as the output folder: it exists and is not a folder (--out)")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise CommandError(f"cannot create the output folder {out}: {exc.strerror or exc} (--out)") from exc
+    try:
+        with tempfile.TemporaryFile(dir=out):
+            pass
+    except OSError as exc:
+        raise CommandError(f"cannot write in the output folder {out}: {exc.strerror or exc} (--out)") from exc
+    return out
+
+
+def check_suffix(path, suffixes, option: str) -> None:
+    """Raise ``CommandError`` unless ``path`` ends with one of ``suffixes`` (checked before the work starts)."""
+    suffix = Path(path).suffix.lower()
+    if suffix not in suffixes:
+        got = f"'{suffix}'" if suffix else "no extension"
+        raise CommandError(f"{option}: cannot write {path}: unknown file type ({got}); supported: {', '.join(suffixes)}")
+
+
+def add_allow_inconsistent(p: argparse.ArgumentParser) -> None:
+    """The ``--allow-inconsistent`` flag of every command that runs the consistency gate."""
+    p.add_argument("--allow-inconsistent", action="store_true",
+                   help="exit 0 even when the normalised innovations grossly contradict the model "
+                        f"(otherwise exit code {EXIT_INCONSISTENT} after writing the outputs)")
+
+
+def consistency_gate(prog: str, report, allow: bool) -> int:
+    """Print ``consistency: ...`` for a :class:`~registration.core.consistency.ConsistencyReport`; return the exit code.
+
+    A grossly inconsistent run gives :data:`EXIT_INCONSISTENT` with the report (and its likely
+    causes) on standard error, unless ``allow``; then a warning and 0.
+    """
+    print(f"consistency: {report.message()}")
+    if report.ok:
+        return EXIT_OK
+    if allow:
+        print(f"{prog}: warning: inconsistent run accepted (--allow-inconsistent)", file=sys.stderr)
+        return EXIT_OK
+    print(f"{prog}: error: {report.message()} Give --allow-inconsistent to accept the run "
+          f"(exit code {EXIT_INCONSISTENT}).", file=sys.stderr)
+    return EXIT_INCONSISTENT
+
+
+def interrupt_message(prog: str, args: argparse.Namespace | None) -> str:
+    """What Ctrl-C prints: where it stopped and, for a run with ``--checkpoint FILE``, how to resume."""
+    checkpoint = getattr(args, "checkpoint", None)
+    if checkpoint:
+        return f"{prog}: interrupted; rerun the same command to resume from its checkpoint {checkpoint}"
+    out = getattr(args, "out", None)
+    where = f"; outputs in {out} may be incomplete" if out else ""
+    return f"{prog}: interrupted{where}"
