@@ -22,6 +22,13 @@ that lever-arm term (1e1 m), losing eight digits in d range / d attitude.
 
 Channel subsets (2-D radar, passive angle sensor, bearing-only, range-only) use the same function:
 the runtime weights the unmeasured channels by zero.
+
+``fleet_rows_<n>`` composes ``fleet_residual`` in CasADi (no second copy of the model) into the
+rows the batch solver's normal equations are built from (registration/fleet/normal.py): with
+weights ``w = mask / sigma`` per channel and the values ``basis`` (n) of the target window's
+polynomial basis at the plot time, ``Z = [basis^T (x) diag(w) J_p | diag(w) J_x | w * residual]``
+(3 x (3 n + 7): target-coefficient columns, the 6 state columns, the whitened residual), emitted
+transposed so that each plot's three rows lie contiguous in memory.
 """
 
 import sympy as sp
@@ -29,9 +36,12 @@ import sympy as sp
 from .attitude import MEAS_DOMAIN, deck2enu_rotation_expr
 from .geodesy import GEO_DOMAIN, T_VARIANTS, geodetic2ecef_expr
 from .pseudo_measurement import ecef2plot_expr, plot2ecef_expr
-from .spec import FunctionSpec, JacobianDecl, Port, jacobian
+from .spec import CasadiPort, CasadiSpec, FunctionSpec, JacobianDecl, Port, jacobian
 
 VARIANT = "standard"  # the orthonormal ENU -> ECEF rotation; the paper's eq. (4) is for reproduction only
+#: Sizes of the polynomial basis the rows function is emitted for: 1 (a position per instant) and
+#: 4 (up to cubic; lower degrees mask the higher coefficients).
+ROW_BASIS_SIZES = (1, 4)
 
 
 def _vec(prefix: str, names: list[str]) -> sp.Matrix:
@@ -138,4 +148,39 @@ def specs() -> list[FunctionSpec]:
         outputs=(Port("p_ecef", p_target, "m"),),
         domain=FLEET_DOMAIN,
     )
-    return [residual_spec, plot2ecef_spec]
+    return [residual_spec, plot2ecef_spec, *[_rows_spec(residual_spec, n) for n in ROW_BASIS_SIZES]]
+
+
+def _rows_spec(residual_spec: FunctionSpec, n_basis: int) -> CasadiSpec:
+    scalar = {p.name for p in residual_spec.inputs if p.shape == (1, 1)}
+    inputs = tuple(CasadiPort(p.name, p.shape, p.unit) for p in residual_spec.inputs) + (
+        CasadiPort("weight", (3, 1), "1/m, 1/rad, 1/rad"), CasadiPort("basis", (n_basis, 1), "1"))
+    m = 3 * n_basis + 7
+    name = f"fleet_rows_{n_basis}"
+
+    def build():
+        import casadi as ca
+
+        from .emit import to_casadi_function
+
+        residual = to_casadi_function(residual_spec)
+        args = [ca.SX.sym(p.name, *p.shape) for p in inputs]
+        res, J, _ = residual(*args[:-2])
+        w, basis = args[-2], args[-1]
+        A = ca.diag(w) @ J
+        Z = ca.horzcat(*[basis[k] * A[:, 0:3] for k in range(n_basis)], A[:, 3:9], w * res)
+        return ca.Function(name, args, [Z.T], [p.name for p in inputs], ["rows_t"], {"cse": True})
+
+    domain = {**FLEET_DOMAIN, "weight": [(0.0, 0.1), (0.0, 3000.0), (0.0, 3000.0)], "basis": [(-1.0, 1.0)] * n_basis}
+    return CasadiSpec(
+        name=name,
+        doc=(
+            f"Rows of the batch normal equations for one plot, polynomial basis of size {n_basis}: the inputs of "
+            "fleet_residual, channel weights w = mask / sigma (1/m, 1/rad, 1/rad) and the basis values at the plot "
+            f"time. Output rows_t ({m}x3) = Z^T, Z = [basis^T (x) diag(w) J_p | diag(w) J_x | w * residual]."
+        ),
+        inputs=inputs,
+        outputs=(CasadiPort("rows_t", (m, 3), "1/m, 1/rad"),),
+        builder=build,
+        domain={k: v for k, v in domain.items() if k in {p.name for p in inputs} | scalar},
+    )
