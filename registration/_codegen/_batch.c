@@ -54,3 +54,85 @@ long long registration_scan(casadi_fn f, long long n,
     }
     return 0;
 }
+
+/*
+ * Batched scan: `runs` independent sequences of n steps each (e.g. Monte Carlo runs), one after
+ * the other, each as in registration_scan. Input j of run r, step i starts at
+ * in_ptr[j] + r * in_run_stride[j] + i * in_stride[j]; output j at
+ * out_ptr[j] + r * out_run_stride[j] + i * out_stride[j]. A carried input starts every run from
+ * that run's own initial value. in_base and out_base are n_in and n_out pointer slots (work
+ * space). Returns 0 when every step succeeded, else r * n + i + 1 for the first failing step i of
+ * the first failing run r (the runs after it are not evaluated).
+ */
+long long registration_scan_runs(casadi_fn f, long long runs, long long n,
+                                 int n_in, const double *const *in_ptr, const long long *in_run_stride,
+                                 const long long *in_stride, const int *carry_from, const long long *in_size,
+                                 int n_out, double *const *out_ptr, const long long *out_run_stride,
+                                 const long long *out_stride,
+                                 const double **in_base, double **out_base,
+                                 const double **arg, double **res, casadi_int *iw, double *w, double *scratch)
+{
+    for (long long r = 0; r < runs; ++r) {
+        for (int j = 0; j < n_in; ++j) in_base[j] = in_ptr[j] + r * in_run_stride[j];
+        for (int j = 0; j < n_out; ++j) out_base[j] = out_ptr[j] + r * out_run_stride[j];
+        long long failed = registration_scan(f, n, n_in, in_base, in_stride, carry_from, in_size,
+                                             n_out, out_base, out_stride, arg, res, iw, w, scratch);
+        if (failed) return r * n + failed;
+    }
+    return 0;
+}
+
+/*
+ * One step of a function whose first n_carry inputs are a state carried from its first n_carry
+ * outputs (a streaming filter), with persistent buffers: in_ptr[j] holds input j, out_ptr[j]
+ * receives output j (never aliasing an input). in_size/out_size are their lengths in doubles.
+ *
+ * Before evaluating, input check_in (if >= 0) is compared element-wise with [low, high]; a value
+ * outside, or NaN, returns REGISTRATION_STEP_OUT_OF_BOUNDS without evaluating. After evaluating,
+ * the outputs listed in finite_out[0 .. n_finite) must hold only finite values, else
+ * REGISTRATION_STEP_NON_FINITE is returned and the state is left as it was. A non-zero flag of f
+ * returns REGISTRATION_STEP_FAILED. On success the first n_carry outputs are copied into the
+ * first n_carry inputs (the new state) and 0 is returned.
+ */
+#define REGISTRATION_STEP_OUT_OF_BOUNDS 1
+#define REGISTRATION_STEP_NON_FINITE 2
+#define REGISTRATION_STEP_FAILED 3
+
+typedef struct {
+    casadi_fn f;
+    int n_in, n_out, n_carry, check_in, n_finite;
+    double *const *in_ptr;
+    double *const *out_ptr;
+    const long long *in_size;
+    const long long *out_size;
+    const double *low;
+    const double *high;
+    const int *finite_out;
+    const double **arg;
+    double **res;
+    casadi_int *iw;
+    double *w;
+} registration_stepper;
+
+int registration_step(const registration_stepper *s)
+{
+    if (s->check_in >= 0) {
+        const double *v = s->in_ptr[s->check_in];
+        for (long long k = 0; k < s->in_size[s->check_in]; ++k)
+            if (!(v[k] >= s->low[k] && v[k] <= s->high[k])) return REGISTRATION_STEP_OUT_OF_BOUNDS;
+    }
+    for (int j = 0; j < s->n_in; ++j) s->arg[j] = s->in_ptr[j];
+    for (int j = 0; j < s->n_out; ++j) s->res[j] = s->out_ptr[j];
+    if (s->f(s->arg, s->res, s->iw, s->w, 0)) return REGISTRATION_STEP_FAILED;
+    for (int m = 0; m < s->n_finite; ++m) {
+        const double *v = s->out_ptr[s->finite_out[m]];
+        for (long long k = 0; k < s->out_size[s->finite_out[m]]; ++k)
+            if (!(v[k] - v[k] == 0.0)) return REGISTRATION_STEP_NON_FINITE;  /* inf - inf and NaN are NaN */
+    }
+    for (int j = 0; j < s->n_carry; ++j) {
+        double *dst = s->in_ptr[j];
+        const double *src = s->out_ptr[j];
+        for (long long k = 0; k < s->in_size[j]; ++k) dst[k] = src[k];
+    }
+    return 0;
+}

@@ -102,6 +102,8 @@ def library() -> ctypes.CDLL:
     lib = ctypes.CDLL(str(lib_path))
     lib.registration_batch.restype = ctypes.c_int
     lib.registration_scan.restype = ctypes.c_longlong
+    lib.registration_scan_runs.restype = ctypes.c_longlong
+    lib.registration_step.restype = ctypes.c_int
     return lib
 
 
@@ -132,6 +134,8 @@ class CKernel:
         self._fptr = ctypes.cast(getattr(lib, name), ctypes.c_void_p)
         self._batch = lib.registration_batch
         self._scan = lib.registration_scan
+        self._scan_runs = lib.registration_scan_runs
+        self.work = work
         self._arg = (ctypes.c_void_p * max(work["sz_arg"], 1))()
         self._res = (ctypes.c_void_p * max(work["sz_res"], 1))()
         self._iw = np.zeros(max(work["sz_iw"], 1), dtype=np.int64)
@@ -180,6 +184,37 @@ class CKernel:
         )
         if failed:
             raise RuntimeError(f"generated function {self.name} failed at step {failed - 1}")
+        return outs
+
+    def scan_runs(self, inputs, runs: int, n: int, k: int, last_only: list[bool], output_shapes) -> list[np.ndarray]:
+        """``runs`` independent scans of ``n`` steps in one compiled call (see :meth:`scan`).
+
+        ``inputs``: per input ``(array, run stride, step stride, size)``: a contiguous float64
+        array (matrices column-major), its strides in doubles (0 broadcasts) and the number of
+        doubles of one value. Outputs are flat ``(runs, n, r * c)`` buffers, or
+        ``(runs, 1, r * c)`` for those flagged in ``last_only``."""
+        n_in, n_out = len(inputs), len(output_shapes)
+        sizes = [r * c for r, c in output_shapes]
+        in_size = (ctypes.c_longlong * n_in)(*[size for *_rest, size in inputs])
+        in_ptr = (ctypes.c_void_p * n_in)(*[a.ctypes.data for a, *_rest in inputs])
+        in_run = (ctypes.c_longlong * n_in)(*[rs for _a, rs, _s, _z in inputs])
+        in_step = (ctypes.c_longlong * n_in)(*[ss for _a, _r, ss, _z in inputs])
+        carry_from = (ctypes.c_int * n_in)(*[j if j < k else -1 for j in range(n_in)])
+        outs = [np.empty((runs, 1 if last else n, size)) for last, size in zip(last_only, sizes)]
+        out_ptr = (ctypes.c_void_p * n_out)(*[b.ctypes.data for b in outs])
+        out_run = (ctypes.c_longlong * n_out)(*[b.shape[1] * b.shape[2] for b in outs])
+        out_step = (ctypes.c_longlong * n_out)(*[0 if last else size for last, size in zip(last_only, sizes)])
+        scratch = np.empty(max(1, sum(in_size[:k])), dtype=np.float64)
+        failed = self._scan_runs(
+            self._fptr, ctypes.c_longlong(runs), ctypes.c_longlong(n),
+            n_in, in_ptr, in_run, in_step, carry_from, in_size,
+            n_out, out_ptr, out_run, out_step,
+            (ctypes.c_void_p * n_in)(), (ctypes.c_void_p * n_out)(),
+            self._arg, self._res, _pointer(self._iw), _pointer(self._w), _pointer(scratch),
+        )
+        if failed:
+            run, step = divmod(int(failed) - 1, n)
+            raise RuntimeError(f"generated function {self.name} failed at step {step} of run {run}")
         return outs
 
     def point_caller(self, input_shapes, output_shapes) -> "PointCall":

@@ -17,6 +17,7 @@ import numpy as np
 from registration._codegen.artifacts import ArtifactError, manifest
 from registration._codegen.casadi_backend import CasadiKernel
 from registration._codegen.cbackend import CKernel, PointCall, library
+from registration._codegen.stepper import CStepper, PyStepper
 
 __all__ = ["BoundCall", "GeneratedFunction", "backend", "get"]
 
@@ -142,6 +143,19 @@ class GeneratedFunction:
         """The compiled single-point caller with preallocated buffers; None on the CasADi backend."""
         return None if self._c is None else self._c.point_caller(self.input_shapes, self.output_shapes)
 
+    def stepper(self, carry: dict[str, str], feed: str, *, low=None, high=None, finite: tuple[str, ...] = (),
+                deliver: tuple[str, ...] = ()) -> CStepper | PyStepper:
+        """Single steps with a carried state kept in persistent buffers (a streaming filter).
+
+        ``carry`` as in :meth:`scan`; ``feed`` the input written at every step; ``low``/``high``
+        element-wise bounds of the fed input, checked before evaluating; ``finite`` the outputs
+        that must be finite for the new state to be committed; ``deliver`` the outputs
+        ``results()`` returns. See :mod:`registration._codegen.stepper`.
+        """
+        if self._c is None:
+            return PyStepper(self, carry, feed, low, high, finite, deliver)
+        return CStepper(self, self._c, library(), carry, feed, low, high, finite, deliver)
+
     def scan(self, n: int, carry: dict[str, str], inputs: dict, keep_last: tuple[str, ...] = ()) -> dict:
         """Evaluate the function ``n`` times in sequence, feeding outputs back as inputs.
 
@@ -179,6 +193,71 @@ class GeneratedFunction:
             arr = shape_outputs(buf.reshape(m, -1), m, shape)
             result[name] = arr[0] if name in keep_last else arr
         return result
+
+
+    def scan_runs(self, runs: int, n: int, carry: dict[str, str], inputs: dict, keep_last: tuple[str, ...] = ()) -> dict:
+        """``runs`` independent scans of ``n`` steps each (e.g. Monte Carlo runs), as :meth:`scan`.
+
+        Each input is given at its core shape (the same in every run and step), with one leading
+        axis of length ``runs`` (one value per run, the same at every step; for a carried input,
+        each run's initial value) or with two, ``(runs, n, *core)`` (one value per run and step).
+        Returns every output as ``(runs, n, *core)``, those in ``keep_last`` as ``(runs, *core)``
+        (each run's last step). Run ``r`` gives bit for bit what :meth:`scan` gives with run
+        ``r``'s inputs. In the C backend all runs are one compiled call.
+        """
+        names_in, names_out = self.input_names, self.output_names
+        k = len(carry)
+        if list(carry) != names_in[:k] or list(carry.values()) != names_out[:k]:
+            raise ValueError(f"{self.name}: carried inputs must be the first {k} inputs paired with the first outputs")
+        if runs < 1 or n < 1:
+            raise ValueError(f"{self.name}: need at least one run and one step, got runs={runs}, n={n}")
+        lead = [self._runs_input(name, inputs, runs, n, name in carry) for name in names_in]
+        last = [name in keep_last for name in names_out]
+        if self._c is not None:
+            outs = self._c.scan_runs([_strided(a, core) for a, core in lead], runs, n, k, last, self.output_shapes)
+        else:
+            outs = [np.stack(o) for o in zip(*(self._casadi_run(lead, r, n, k) for r in range(runs)))]
+            outs = [o[:, -1:] if flag else o for o, flag in zip(outs, last)]
+        result = {}
+        for name, buf, shape, flag in zip(names_out, outs, self.output_shapes, last):
+            m = buf.shape[1]
+            arr = shape_outputs(buf.reshape(runs * m, -1), runs * m, shape)
+            arr = arr.reshape(runs, m, *arr.shape[1:])
+            result[name] = arr[:, 0] if flag else arr
+        return result
+
+    def _runs_input(self, name: str, inputs: dict, runs: int, n: int, carried: bool):
+        """Input ``name`` as a ``(runs or 1, n or 1, *core)`` float64 array, and its core shape."""
+        if name not in inputs:
+            raise ValueError(f"{self.name}: missing input {name!r}")
+        shape = self.input_shapes[self.input_names.index(name)]
+        core = () if shape == (1, 1) else ((shape[0],) if shape[1] == 1 else shape)
+        a = np.asarray(inputs[name], dtype=np.float64)
+        lead = a.shape[:a.ndim - len(core)]
+        allowed = [(), (runs,)] + ([] if carried else [(runs, n)])
+        if a.shape[len(lead):] != core or lead not in allowed:
+            kinds = " or ".join(str((*lo, *core)) for lo in allowed)
+            raise ValueError(f"{self.name}: input {name!r} must have shape {kinds}, got {a.shape}")
+        lead = lead + (1,) * (2 - len(lead))
+        return a.reshape(*lead, *core), core
+
+    def _casadi_run(self, lead, r: int, n: int, k: int) -> list[np.ndarray]:
+        """Run ``r`` of :meth:`scan_runs` on the CasADi backend: flat ``(n, r * c)`` outputs."""
+        prepared = []
+        for a, core in lead:
+            one = a[r if a.shape[0] > 1 else 0]
+            prepared.append((one, True, core) if one.shape[0] > 1 else (one[0], False, core))
+        return self._casadi.scan(prepared, n, k, self.output_shapes)
+
+
+def _strided(a: np.ndarray, core: tuple) -> tuple:
+    """A ``(runs or 1, n or 1, *core)`` input as the compiled scan takes it: a contiguous
+    column-major array, its run and step strides in doubles (0 where broadcast) and its size."""
+    size = int(np.prod(core, dtype=int))
+    if len(core) == 2:
+        a = np.swapaxes(a, -1, -2)
+    a = np.ascontiguousarray(a)
+    return a, size * a.shape[1] if a.shape[0] > 1 else 0, size if a.shape[1] > 1 else 0, size
 
 
 class BoundCall:

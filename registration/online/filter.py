@@ -15,17 +15,45 @@ from registration import _codegen
 from registration.core.observability import ObservabilityReport, observability_report
 from registration.online.config import RegistrationConfig
 from registration.online.contract import (
-    N_ROW, N_STATE, STATE_LABELS, STATE_NAMES, STATE_UNITS, check_rows, check_times, row_from_mapping,
+    LIMITS, N_ROW, N_STATE, SENSOR_COLUMNS, SENSORS, STATE_LABELS, STATE_NAMES, STATE_UNITS, check_rows, check_times,
+    row_from_mapping,
 )
 
-__all__ = ["OnlineRegistrar"]
+__all__ = ["OnlineRegistrar", "ROW_LOW", "ROW_HIGH"]
+
+_OK, _OUT_OF_BOUNDS = int(_codegen.StepCode.OK), int(_codegen.StepCode.OUT_OF_BOUNDS)
+_ROW_SHAPE, _F64 = (N_ROW,), np.dtype(np.float64)
 
 _CARRY = {"x": "x_new", "P": "P_new", "info": "info_new"}
+_DELIVER = ("x_new", "P_new", "nu", "S", "nis")
+#: Element-wise bounds of a row for the compiled pre-check of :meth:`OnlineRegistrar.update`: the
+#: contract's LIMITS, and for ranges [smallest normal float, largest finite float] so that NaN, inf
+#: and ranges <= 0 fail. A row it rejects goes to the detailed check_rows (which names the problem,
+#: or accepts a positive subnormal range).
+_KINDS = SENSOR_COLUMNS * len(SENSORS)
+ROW_LOW = np.array([np.finfo(np.float64).tiny if k == "range" else LIMITS[k][0] for k in _KINDS])
+ROW_HIGH = np.array([np.finfo(np.float64).max if k == "range" else LIMITS[k][1] for k in _KINDS])
 
 
 def _empty_block() -> dict:
     return {"x": np.empty((0, N_STATE)), "P": np.empty((0, N_STATE, N_STATE)), "nu": np.empty((0, 3)),
             "S": np.empty((0, 3, 3)), "nis": np.empty(0), "n": 0}
+
+
+def _frozen(a) -> np.ndarray:
+    """A float64 copy that cannot be written (the filter's state is replaced, never mutated)."""
+    a = np.array(a, dtype=np.float64)
+    a.flags.writeable = False
+    return a
+
+
+def _time_follows(time, last) -> bool:
+    """True if ``time`` (s) is finite and after ``last`` (None: any finite time); plain float tests."""
+    try:
+        t = float(time)
+    except (TypeError, ValueError):
+        return False
+    return -np.inf < t < np.inf and (last is None or t > last)
 
 
 class OnlineRegistrar:
@@ -35,21 +63,42 @@ class OnlineRegistrar:
     18 values in contract order (SI units, radians). Rows are validated before the state is
     touched, so a bad row raises ValueError and leaves the filter exactly as it was.
     Attributes: ``x`` (12,) estimate, ``P`` (12, 12) covariance, ``info`` (12, 12) the information
-    the filter accumulated at its linearisation points, ``n_updates``, ``last_time`` (s).
+    the filter accumulated at its linearisation points (read-only arrays: assign new values, or use
+    :meth:`load_state_dict`), ``n_updates``, ``last_time`` (s).
     """
 
     def __init__(self, config: RegistrationConfig | None = None):
         self.config = config or RegistrationConfig()
         self._step = _codegen.get(self.config.step_name)
-        self._bound = None  # single-row caller with preallocated buffers, made on first update()
-        self.x = np.array(self.config.x0 if self.config.x0 is not None else np.zeros(N_STATE))
-        self.P = np.diag(np.square(self.config.prior_sigma))
-        self.info = np.zeros((N_STATE, N_STATE))
+        self._stepper = None  # the compiled single-row stepper holding the state, made on first update()
+        self._x = _frozen(self.config.x0 if self.config.x0 is not None else np.zeros(N_STATE))
+        self._P = _frozen(np.diag(np.square(self.config.prior_sigma)))
+        self._info = _frozen(np.zeros((N_STATE, N_STATE)))
         self._q_fixed = np.diag(np.square(self.config.q_sigma))
+        self._adaptive = self.config.q_mode != "fixed"
         self._sigma0 = np.array(self.config.sigma0)
         self._window: deque = deque(maxlen=int(self.config.q_window))
         self.n_updates = 0
         self.last_time: float | None = None
+
+    # After update() the state lives in the stepper's buffers; these read it back when asked.
+    def _state(self, name: str) -> np.ndarray:
+        value = getattr(self, "_" + name)
+        if value is None:
+            value = _frozen(self._stepper.get(name))
+            setattr(self, "_" + name, value)
+        return value
+
+    def _set_state(self, name: str, value) -> None:
+        value = _frozen(value)
+        setattr(self, "_" + name, value)
+        if self._stepper is not None:
+            self._stepper.set(name, value)
+
+    x = property(lambda self: self._state("x"), lambda self, v: self._set_state("x", v), doc="(12,) estimate")
+    P = property(lambda self: self._state("P"), lambda self, v: self._set_state("P", v), doc="(12, 12) covariance")
+    info = property(lambda self: self._state("info"), lambda self, v: self._set_state("info", v),
+                    doc="(12, 12) information accumulated at the filter's linearisation points")
 
     def process_noise(self) -> np.ndarray:
         """Q for the next step: fixed, or eqs. (21)-(22) (sample covariance of the last N estimates)."""
@@ -59,22 +108,46 @@ class OnlineRegistrar:
         dev = est - est.mean(axis=0)
         return dev.T @ dev / len(est) + self._q_fixed
 
+    def _make_stepper(self):
+        stepper = self._step.stepper(_CARRY, "row", low=ROW_LOW, high=ROW_HIGH, finite=("x_new", "P_new"),
+                                     deliver=_DELIVER)
+        for name, value in (("x", self.x), ("P", self.P), ("info", self.info), ("Q", self._q_fixed),
+                            ("sigma0", self._sigma0)):
+            stepper.set(name, value)
+        self._stepper = stepper
+        return stepper
+
     def update(self, row, time: float | None = None) -> dict:
-        """Process one row; return {'x', 'P', 'nu', 'S', 'nis'} after the update (nu in m, S in m^2)."""
-        values = row_from_mapping(row)
-        check_rows(values[None, :], first_row=self.n_updates)
+        """Process one row; return {'x', 'P', 'nu', 'S', 'nis'} after the update (nu in m, S in m^2).
+
+        The returned arrays are new and the caller's: changing them does not change the filter.
+        One compiled call checks the row's bounds, steps the filter and commits the state only if
+        the new x and P are finite; the detailed checks run only to name a problem.
+        """
+        if type(row) is np.ndarray and row.shape == _ROW_SHAPE and row.dtype is _F64:
+            values = row
+        else:
+            values = row_from_mapping(row)
+        n = self.n_updates
+        if time is not None and not _time_follows(time, self.last_time):
+            check_rows(values[None, :], first_row=n)  # a bad row is named before a bad time
+            check_times(np.array([time], dtype=float), n, self.last_time)
+        stepper = self._stepper or self._make_stepper()
+        if self._adaptive:
+            stepper.set("Q", self.process_noise())
+        code = stepper.step(values)
+        if code == _OUT_OF_BOUNDS:
+            check_rows(values[None, :], first_row=n)  # raises, naming the row and column
+            code = stepper.step(values, check=False)  # accepted after all (a subnormal range)
+        if code != _OK:
+            raise RuntimeError(f"row {n}: the filter step produced non-finite values; state left unchanged")
+        x, P, nu, S, nis = stepper.results()
+        self._x = self._P = self._info = None
+        self._window.append(x.copy())
+        self.n_updates = n + 1
         if time is not None:
-            check_times(np.array([time], dtype=float), self.n_updates, self.last_time)
-        if self._bound is None:
-            self._bound = self._step.bind()
-        x, P, info, nu, S, nis = self._bound(self.x, self.P, self.info, self.process_noise(), values, self._sigma0)
-        if not (np.isfinite(x).all() and np.isfinite(P).all()):
-            raise RuntimeError(f"row {self.n_updates}: the filter step produced non-finite values; state left unchanged")
-        self.x, self.P, self.info = x, P, info
-        self._window.append(self.x.copy())
-        self.n_updates += 1
-        self.last_time = time if time is not None else self.last_time
-        return {"x": self.x, "P": self.P, "nu": nu, "S": S, "nis": nis}
+            self.last_time = time
+        return {"x": x, "P": P, "nu": nu, "S": S, "nis": nis}
 
     def update_block(self, rows: np.ndarray, times: np.ndarray | None = None, *, partial: bool = False) -> dict:
         """Process a (K, 18) block of rows; the same arithmetic as K calls of :meth:`update`.
