@@ -1,0 +1,75 @@
+"""Batch maximum-likelihood registration of a fleet: :func:`solve_batch`.
+
+The solver (:mod:`registration.fleet.solver`) finds the estimate; this module evaluates what is
+known about it there: the states' covariance (the Cramér-Rao bound at the estimate, targets
+eliminated), the fused target positions with their covariance, the normalised residuals and
+their chi-square check, and the observability report.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from registration.core.consistency import nees_interval
+from registration.fleet.covariance import fused_targets, solution_information, state_covariance
+from registration.fleet.observability import fleet_observability
+from registration.fleet.problem import FleetProblem
+from registration.fleet.result import BatchResult, ChiSquareCheck
+from registration.fleet.solver import BatchOptions, fit
+
+__all__ = ["solve_batch"]
+
+
+def _residual_table(fit_, ev) -> np.ndarray:
+    """(input plot rows, 3) normalised residuals; NaN where not measured or excluded."""
+    problem, design = fit_.problem, fit_.design
+    out = np.full((problem.n_input_plots, 3), np.nan)
+    e = np.where(design.weight > 0, ev.e, np.nan)
+    out[problem.row[design.blocks.order]] = e[design.slot]
+    return out
+
+
+def _chi_square(fit_, ev) -> ChiSquareCheck:
+    design, layout = fit_.design, fit_.problem.layout
+    n_values = int(np.count_nonzero(design.weight)) + 3 * design.ref_p.shape[0]
+    n_values += int(np.count_nonzero(design.prior_weight[layout.free]))
+    n_params = layout.free.size + 3 * int(design.blocks.coef_mask.sum())
+    dof = n_values - n_params
+    if dof < 1:
+        return ChiSquareCheck(ev.cost, dof, (float("nan"), float("nan")))
+    lo, hi = nees_interval(1, dof)
+    return ChiSquareCheck(ev.cost, dof, (lo / dof, hi / dof))
+
+
+def solve_batch(problem: FleetProblem, options: BatchOptions | None = None) -> BatchResult:
+    """Register a fleet: maximum-likelihood (or, with finite priors, maximum a posteriori)
+    estimates of every platform's attitude errors and every sensor's biases, jointly with the
+    target trajectories, from all plots at once. See docs/fleet.md for the model and the method.
+    """
+    fit_ = fit(problem, options or BatchOptions())
+    problem = fit_.problem
+    layout = problem.layout
+    free = layout.free
+    sol = solution_information(fit_)
+    report = fleet_observability(sol.information_data, free, layout, problem.sensor_platform,
+                                 problem.platform_ids, problem.sensor_ids)
+    scale = layout.scale[free]
+    P_free, undetermined = state_covariance(sol.information, scale)
+    n = layout.n
+    P = np.zeros((n, n))
+    P[np.ix_(free, free)] = P_free
+    P_sink = np.zeros((n + 1, n + 1))
+    P_sink[:n, :n] = P
+    sigma = np.sqrt(np.clip(np.diag(P), 0, None))
+    status = {layout.names[i]: "fixed" for i in layout.fixed}
+    status.update(report.status)
+    if undetermined.size:  # states leaning on a direction left out of the covariance
+        sigma[free[np.linalg.norm(undetermined, axis=1) > 0.1]] = np.inf
+    return BatchResult(
+        layout=layout, estimate=fit_.x.copy(), covariance=P, sigma=sigma, status=status,
+        targets=fused_targets(fit_, sol.reduced, P_sink), residuals=_residual_table(fit_, sol.evaluation),
+        chi_square=_chi_square(fit_, sol.evaluation), observability=report, excluded=problem.excluded,
+        information=sol.information_data, free_names=tuple(layout.names[i] for i in free), scale=scale,
+        undetermined=undetermined, converged=fit_.converged, iterations=fit_.iterations,
+        cost_history=fit_.cost_history,
+    )

@@ -1,0 +1,188 @@
+"""The target model of the batch solver: each target's track cut into time windows, the position
+in each window a polynomial in time (docs/fleet.md, "Asynchronous sensors").
+
+Window ``b`` of target ``j`` spans ``[t0, t1]``; with ``tau = (t - centre) / half`` in [-1, 1] the
+position is ``p(t) = sum_k P_k(tau) c_bk`` (Legendre polynomials P_0..P_d, c_bk in ECEF m), so
+a window is a block of ``3 (d + 1)`` nuisance parameters: the small blocks that the Schur
+complement eliminates. A window whose plots fall at fewer than ``d + 1`` distinct instants gets
+the degree those instants can carry (the unused coefficients are masked; degrees 1 to 3 share
+the cubic's four coefficients, the higher ones masked). ``window_s = 0`` makes
+one block per distinct (target, time) with degree 0: the target position at every instant where
+it is measured (synchronous sensors).
+
+Plots are ordered by (block, sensor); a *group* is the plots of one sensor in one block. The
+coupling of a block with the registration states is held per group (a ``3 (d + 1) x 6`` matrix
+over the platform's three attitude errors and the sensor's three biases). For the Schur
+complement the groups of a block are laid side by side (``group_rank``, ``local_state``), so each
+block's coupling is one dense ``3 (d + 1) x 6 g`` matrix (g = the most groups in any block).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.polynomial import legendre
+
+from registration.fleet.problem import FleetProblem
+
+__all__ = ["Blocks", "make_blocks", "legendre_basis"]
+
+#: Two reference/plot times closer than this (s) are the same instant (window_s = 0).
+SAME_INSTANT_S = 1e-6
+
+
+def legendre_basis(tau: np.ndarray, n: int) -> np.ndarray:
+    """(N, n) values of P_0..P_{n-1} at tau."""
+    return legendre.legvander(tau, n - 1)
+
+
+@dataclass(frozen=True)
+class Blocks:
+    """The block structure (plots in ``order``, i.e. sorted by block then sensor)."""
+
+    n_coef: int  # d + 1
+    order: np.ndarray  # (N,) plot indices of the problem, sorted by (block, sensor)
+    block: np.ndarray  # (N,) block of each sorted plot
+    basis: np.ndarray  # (N, n_coef) masked Legendre values of each sorted plot
+    block_start: np.ndarray  # (B,) first sorted plot of each block
+    block_target: np.ndarray  # (B,) target index
+    block_centre: np.ndarray  # (B,) s
+    block_half: np.ndarray  # (B,) s
+    coef_mask: np.ndarray  # (B, n_coef) bool: coefficient used
+    group_start: np.ndarray  # (G,) first sorted plot of each (block, sensor) group
+    group_block: np.ndarray  # (G,)
+    group_sensor: np.ndarray  # (G,)
+    group_state: np.ndarray  # (G, 6) state indices (attitude errors, biases); n_state = none
+    group_rank: np.ndarray  # (G,) position of the group among its block's groups
+    local_state: np.ndarray  # (B, 6 max_groups) state indices of each block's groups (n = padding)
+    group_block_start: np.ndarray  # (B,) first group of each block
+    chunk_size: int  # plots per chunk: a group's plots are cut into chunks of this many (zero padded)
+    chunk_slot: np.ndarray  # (N,) row of each sorted plot in the padded chunk array
+    chunk_group_start: np.ndarray  # (G,) first chunk of each group
+    ref_index: np.ndarray  # (R',) references used (index into problem.references)
+    ref_block: np.ndarray  # (R',)
+    ref_basis: np.ndarray  # (R', n_coef)
+
+    @property
+    def n_blocks(self) -> int:
+        return int(self.block_start.shape[0])
+
+    @property
+    def n_chunks(self) -> int:
+        return int(self.chunk_slot.max()) // self.chunk_size + 1 if self.chunk_slot.size else 0
+
+    def basis_at(self, block: np.ndarray, time: np.ndarray) -> np.ndarray:
+        """(M, n_coef) masked basis values of times ``time`` (s) in blocks ``block``."""
+        tau = (time - self.block_centre[block]) / self.block_half[block]
+        return legendre_basis(tau, self.n_coef) * self.coef_mask[block]
+
+
+def _window_keys(target, time, ref_target, ref_time, n_targets: int, window_s: float):
+    """Window key of each plot and reference (-1: reference outside its target's plot span), and
+    per target the first time t0 (s), window length (s) and first key."""
+    t0 = np.full(n_targets, np.inf)
+    t1 = np.full(n_targets, -np.inf)
+    np.minimum.at(t0, target, time)
+    np.maximum.at(t1, target, time)
+    span = t1 - t0
+    count = np.maximum(1, np.ceil(span / window_s - 1e-9)).astype(np.int64)
+    length = np.where(span > 0, span / count, 1.0)
+    offset = np.concatenate([[0], np.cumsum(count)[:-1]])
+
+    def keys(tg, t):
+        w = np.clip(np.floor((t - t0[tg]) / length[tg]), 0, count[tg] - 1).astype(np.int64)
+        return offset[tg] + w
+
+    inside = (ref_time >= t0[ref_target] - SAME_INSTANT_S) & (ref_time <= t1[ref_target] + SAME_INSTANT_S)
+    return keys(target, time), np.where(inside, keys(ref_target, ref_time), -1), t0, length, offset
+
+
+def _instant_keys(target, time, ref_target, ref_time):
+    """One key per distinct (target, time) instant (window_s = 0), shared by plots and references."""
+    tg = np.r_[target, ref_target]
+    rounded = np.round(np.r_[time, ref_time] / SAME_INSTANT_S).astype(np.int64)
+    _, key = np.unique(np.stack([tg, rounded]), axis=1, return_inverse=True)
+    key = key.reshape(-1)
+    return key[: time.size], key[time.size:]
+
+
+def _block_geometry(problem: FleetProblem, window_s: float, degree: int):
+    """Block of each plot and reference (-1: none), and per block: target, centre, half-width, degree."""
+    target, time = problem.target, problem.time
+    ref_target, ref_time = problem.ref_target, problem.references.time
+    if window_s == 0:
+        key, ref_key = _instant_keys(target, time, ref_target, ref_time)
+    else:
+        key, ref_key, t0, length, offset = _window_keys(target, time, ref_target, ref_time,
+                                                        len(problem.target_ids), window_s)
+    uniq, block = np.unique(key, return_inverse=True)
+    pos = np.clip(np.searchsorted(uniq, ref_key), 0, uniq.size - 1)
+    ref_block = np.where(uniq[pos] == ref_key, pos, -1)
+    first = np.zeros(uniq.size, dtype=np.int64)
+    first[block[::-1]] = np.arange(time.size)[::-1]
+    if window_s == 0:
+        return block, ref_block, target[first], time[first], np.ones(uniq.size), np.zeros(uniq.size, dtype=np.int64)
+    b_target = target[first]
+    w = uniq - offset[b_target]
+    centre = t0[b_target] + (w + 0.5) * length[b_target]
+    distinct = np.unique(np.stack([block, np.round(time / SAME_INSTANT_S).astype(np.int64)]), axis=1)[0]
+    n_times = np.bincount(distinct, minlength=uniq.size)
+    return block, ref_block, b_target, centre, 0.5 * length[b_target], np.minimum(degree, n_times - 1)
+
+
+def _local_states(group_block: np.ndarray, group_state: np.ndarray, n_blocks: int, n_state: int):
+    """Each group's rank within its block and, per block, the state indices of its groups side by
+    side (6 per group, padded with the sink index ``n_state`` up to the largest block)."""
+    n_in = np.bincount(group_block, minlength=n_blocks)
+    first_group = np.r_[0, np.cumsum(n_in)[:-1]]
+    rank = np.arange(group_block.size) - first_group[group_block]
+    local = np.full((n_blocks, max(int(n_in.max(initial=1)), 1), 6), n_state, dtype=np.int64)
+    local[group_block, rank] = group_state
+    return rank, local.reshape(n_blocks, -1)
+
+
+def _chunks(group_start: np.ndarray, n: int):
+    """Cut each group's plots into chunks of C plots: C, each plot's padded row, each group's first chunk.
+
+    C is the median group size, clipped to [1, 32]: the products of a chunk are one small dense
+    matrix product, and padding wastes fewer than C plots per group.
+    """
+    sizes = np.diff(np.r_[group_start, n])
+    size = int(np.clip(np.median(sizes), 1, 32)) if sizes.size else 1
+    per_group = -(-sizes // size)
+    chunk_group_start = np.r_[0, np.cumsum(per_group)[:-1]]
+    group_of = np.repeat(np.arange(sizes.size), sizes)
+    pos = np.arange(n) - group_start[group_of]
+    slot = (chunk_group_start[group_of] + pos // size) * size + pos % size
+    return size, slot, chunk_group_start
+
+
+def make_blocks(problem: FleetProblem, window_s: float, degree: int) -> Blocks:
+    """The block structure of ``problem`` for windows of ``window_s`` s and polynomials of ``degree``."""
+    block, ref_block, b_target, centre, half, b_degree = _block_geometry(problem, window_s, degree)
+    n_blocks = centre.size
+    order = np.lexsort((problem.sensor, block))
+    block_sorted, sensor_sorted = block[order], problem.sensor[order]
+    block_start = np.flatnonzero(np.r_[True, np.diff(block_sorted) != 0])
+    change = np.r_[True, (np.diff(block_sorted) != 0) | (np.diff(sensor_sorted) != 0)]
+    group_start = np.flatnonzero(change)
+    group_block, group_sensor = block_sorted[group_start], sensor_sorted[group_start]
+    layout = problem.layout
+    att = layout.att_index[problem.sensor_platform[group_sensor]]
+    bias = layout.bias_index[group_sensor]
+    group_state = np.where(np.concatenate([att, bias], axis=1) < 0, layout.n, np.concatenate([att, bias], axis=1))
+    n_coef = 1 if degree == 0 else 4  # the basis sizes of the generated rows functions
+    coef_mask = np.arange(n_coef)[None, :] <= b_degree[:, None]
+    tau = (problem.time[order] - centre[block_sorted]) / half[block_sorted]
+    basis = legendre_basis(tau, n_coef) * coef_mask[block_sorted]
+    rank, local_state = _local_states(group_block, group_state, n_blocks, layout.n)
+    ref_index = np.flatnonzero(ref_block >= 0)
+    ref_block = ref_block[ref_index]
+    ref_tau = (problem.references.time[ref_index] - centre[ref_block]) / half[ref_block]
+    ref_basis = legendre_basis(ref_tau, n_coef) * coef_mask[ref_block]
+    chunk_size, chunk_slot, chunk_group_start = _chunks(group_start, order.size)
+    group_block_start = np.flatnonzero(np.r_[True, np.diff(group_block) != 0])
+    return Blocks(n_coef, order, block_sorted, basis, block_start, b_target, centre, half, coef_mask,
+                  group_start, group_block, group_sensor, group_state, rank, local_state,
+                  group_block_start, chunk_size, chunk_slot, chunk_group_start, ref_index, ref_block, ref_basis)

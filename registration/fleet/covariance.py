@@ -1,0 +1,112 @@
+"""Uncertainty at the solution: the states' covariance (the inverse of the information with the
+target trajectories eliminated: the Cramér-Rao bound at the estimate) and the fused target
+positions with their covariance.
+
+Directions of the state space that the data (and priors) do not determine, scaled eigenvalue
+below the core's UNOBSERVABLE_BELOW (see :mod:`registration.fleet.observability`), are left out
+of the inverse (a pseudo-inverse): the covariance then describes the determined combinations
+only, and the states involved in the left-out directions are reported with sigma ``inf``.
+
+A target position at time t in window b is ``p = sum_k P_k(tau) c_bk``. The coefficients' covariance is
+``V_b^-1 + Y_b P Y_b^T`` (``Y_b = V_b^-1 W_b``: how the registration estimate moves them).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from registration.core.observability import UNOBSERVABLE_BELOW
+from registration.fleet.normal import evaluate, normal_equations, positions
+from registration.fleet.schur import Reduced, reduce
+
+__all__ = ["FusedTargets", "Solution", "solution_information", "state_covariance", "fused_targets"]
+
+
+@dataclass(frozen=True)
+class FusedTargets:
+    """Fused positions at every instant (target, time) where a target was measured.
+
+    ``target`` (M,) ids, ``time`` (M,) s, ``p_ecef`` (M, 3) m, ``covariance`` (M, 3, 3) m^2,
+    ``n_plots`` (M,) plots at that instant.
+    """
+
+    target: np.ndarray
+    time: np.ndarray
+    p_ecef: np.ndarray
+    covariance: np.ndarray
+    n_plots: np.ndarray
+
+    def of(self, target: str):
+        """(time, p_ecef, covariance) of one target."""
+        sel = self.target == str(target)
+        if not sel.any():
+            raise ValueError(f"no fused positions of target {target!r} (targets: {sorted(set(self.target))})")
+        return self.time[sel], self.p_ecef[sel], self.covariance[sel]
+
+
+@dataclass
+class Solution:
+    """Residuals, normal equations and their reduction at the estimate (undamped)."""
+
+    evaluation: object
+    normal: object
+    reduced: Reduced
+    information_data: np.ndarray  # (n_free, n_free): data only (priors removed)
+    information: np.ndarray  # (n_free, n_free): data and priors
+
+
+def solution_information(fit) -> Solution:
+    ev = evaluate(fit.design, fit.x, fit.coef)
+    normal = normal_equations(fit.design, ev)
+    red = reduce(fit.design.blocks, normal, 0.0)
+    free = fit.problem.layout.free
+    S = red.S[np.ix_(free, free)]
+    prior = fit.design.prior_weight[free] ** 2
+    return Solution(ev, normal, red, S - np.diag(prior), S)
+
+
+def state_covariance(information: np.ndarray, scale: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(covariance (n, n), left-out directions (n, k) in scaled coordinates) of the free states.
+
+    Pseudo-inverse of ``information`` in coordinates scaled by ``scale`` (prior or reference
+    sigma), leaving out directions whose scaled eigenvalue is below UNOBSERVABLE_BELOW.
+    """
+    n = information.shape[0]
+    if n == 0:
+        return np.zeros((0, 0)), np.zeros((0, 0))
+    Js = scale[:, None] * information * scale[None, :]
+    w, v = np.linalg.eigh(0.5 * (Js + Js.T))
+    keep = w >= UNOBSERVABLE_BELOW
+    P = (v[:, keep] / w[keep]) @ v[:, keep].T
+    return scale[:, None] * P * scale[None, :], v[:, ~keep]
+
+
+def _coefficient_covariance(blk, red: Reduced, P_full: np.ndarray) -> np.ndarray:
+    """(B, q, q) covariance of each window's coefficients: V_b^-1 + Y_b P_b Y_b^T."""
+    idx = blk.local_state
+    P_local = P_full[idx[:, :, None], idx[:, None, :]]  # (B, 6 g, 6 g)
+    cov = red.V_inv + np.matmul(np.matmul(red.Y, P_local), red.Y.transpose(0, 2, 1))
+    return 0.5 * (cov + cov.transpose(0, 2, 1))
+
+
+def fused_targets(fit, red: Reduced, P_full: np.ndarray) -> FusedTargets:
+    """Fused positions and covariances at every measured instant of every target."""
+    blk, problem = fit.design.blocks, fit.problem
+    time = problem.time[blk.order]
+    ticks = np.round(time * 1e6).astype(np.int64)
+    order = np.lexsort((ticks, blk.block))
+    new = np.r_[True, (np.diff(blk.block[order]) != 0) | (np.diff(ticks[order]) != 0)]
+    first = order[new]
+    counts = np.diff(np.r_[np.flatnonzero(new), order.size])
+    block, t = blk.block[first], time[first]
+    basis = blk.basis_at(block, t)
+    p = positions(basis, block, fit.coef)
+    q = 3 * blk.n_coef
+    B = (basis[:, None, :, None] * np.eye(3)[None, :, None, :]).reshape(-1, 3, q)  # basis (x) I3
+    cov_c = _coefficient_covariance(blk, red, P_full)
+    cov = np.matmul(np.matmul(B, cov_c[block]), B.transpose(0, 2, 1))
+    target = np.array(problem.target_ids, dtype=str)[blk.block_target[block]]
+    by_target = np.lexsort((t, blk.block_target[block]))
+    return FusedTargets(target[by_target], t[by_target], p[by_target], cov[by_target], counts[by_target])

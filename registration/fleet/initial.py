@@ -1,0 +1,53 @@
+"""Starting values of the batch solver: registration errors zero, each target window at the mean
+of the positions its plots give with zero errors.
+
+Each plot becomes an ECEF position through the generated ``fleet_plot2ecef`` with zero attitude
+errors and biases. A plot without range (passive angle sensor, bearing-only) is placed at
+:data:`ASSUMED_RANGE_M` along its line of sight, and one without elevation at elevation 0 (the
+deck plane). A window's constant coefficient is the mean over its plots that have a range (over
+all its plots if none has); the higher coefficients start at zero. The solver then refines the
+windows alone before it frees the registration states (:mod:`registration.fleet.solver`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from registration import _codegen
+from registration.fleet.normal import Design
+
+__all__ = ["ASSUMED_RANGE_M", "plot_positions", "initial_coefficients"]
+
+#: Range (m) assumed for a plot that has none, to start its target somewhere on its line of sight.
+ASSUMED_RANGE_M = 30_000.0
+
+
+def plot_positions(design: Design, x: np.ndarray | None = None) -> np.ndarray:
+    """(rows, 3) ECEF position of each design row, corrected by states ``x`` (default zeros)."""
+    n = design.nav.shape[0]
+    xs = np.zeros(design.n_state + 1) if x is None else np.append(x, 0.0)
+    has = design.weight > 0
+    r = np.where(has[:, 0], design.meas[:, 0], ASSUMED_RANGE_M)  # an absent channel's bias is 0
+    e = np.where(has[:, 2], design.meas[:, 2], 0.0)
+    nav = design.nav
+    p = _codegen.get("fleet_plot2ecef")(
+        nav[:, 0], nav[:, 1], nav[:, 2], nav[:, 3], nav[:, 4], nav[:, 5],
+        xs[design.att_state], xs[design.bias_state], design.lever, r, design.meas[:, 1], e)[0]
+    return p.reshape(n, 3)
+
+
+def initial_coefficients(design: Design) -> np.ndarray:
+    """(B, n_coef, 3) starting coefficients: window means of the plot positions (module docstring)."""
+    blk = design.blocks
+    p = plot_positions(design)
+    ranged = (design.weight[:, 0] > 0).astype(np.float64)
+    real = design.real.astype(np.float64)
+    starts = design.block_start
+    n_ranged = np.add.reduceat(ranged, starts)
+    n_all = np.add.reduceat(real, starts)
+    sum_ranged = np.add.reduceat(p * ranged[:, None], starts, axis=0)
+    sum_all = np.add.reduceat(p * real[:, None], starts, axis=0)
+    mean = np.where((n_ranged > 0)[:, None], sum_ranged / np.maximum(n_ranged, 1)[:, None], sum_all / n_all[:, None])
+    coef = np.zeros((blk.n_blocks, blk.n_coef, 3))
+    coef[:, 0] = mean
+    return coef

@@ -1,0 +1,193 @@
+"""Checks and conversion of the platforms, sensors, plots and references tables (see
+:mod:`registration.fleet.tables` for their columns and units). Every error names the table, the
+row and the object (platform, sensor or target id)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from registration.core.frames import geodetic2ecef
+from registration.core.validation import check_range, degree_hint
+from registration.fleet.tables import ATTITUDE_ERRORS, CHANNELS, DEFAULT_REFERENCE_SIGMA, Table, read_table
+
+__all__ = ["index_of", "SensorSpecs", "PlotColumns", "References", "read_platforms", "read_sensors", "read_plots",
+           "read_references"]
+
+#: The accepted window of each measured channel (low, high, unit).
+CHANNEL_LIMITS = {
+    "range": (0.0, 1.0e8, "m (slant range, > 0)"),
+    "bearing": (-2 * np.pi, 2 * np.pi, "rad"),
+    "elevation": (-np.pi / 2, np.pi / 2, "rad"),
+}
+#: A noise sigma above this (rad) for an angle channel is taken for degrees.
+MAX_ANGLE_SIGMA = 0.35
+
+
+def _sigma_column(table: Table, column: str, rows_ids, *, allow_missing: bool, what: str) -> np.ndarray:
+    """A non-negative sigma column; NaN means 'missing' when allowed, else 'no prior' (inf).
+    Errors name the row and the object."""
+    values = table.floats(column, default=np.nan if allow_missing else np.inf)
+    if not allow_missing:
+        values = np.where(np.isnan(values), np.inf, values)
+    for row in range(table.n_rows):
+        v = values[row]
+        if np.isnan(v):
+            continue
+        if v < 0:
+            raise table.error(row, f"{column} of {what} {str(rows_ids[row])!r} is {v}; expected a standard deviation >= 0")
+    return values
+
+
+def read_platforms(platforms, sensor_platforms: np.ndarray) -> tuple[tuple[str, ...], np.ndarray]:
+    """Platform ids (table order, else order of first use by a sensor) and their attitude-error
+    priors (P, 3) rad (inf = none, 0 = fixed)."""
+    if platforms is None:
+        ids = tuple(str(p) for p in dict.fromkeys(sensor_platforms))
+        return ids, np.full((len(ids), 3), np.inf)
+    table = read_table("platforms", platforms, ("platform",))
+    ids = table.ids("platform")
+    dupes = sorted({p for p in ids if list(ids).count(p) > 1})
+    if dupes:
+        raise ValueError(f"platforms: duplicate platform ids {dupes}")
+    priors = np.stack([_sigma_column(table, f"prior_{a}", ids, allow_missing=False, what="platform")
+                       for a in ATTITUDE_ERRORS], axis=1)
+    return tuple(str(p) for p in ids), priors
+
+
+def index_of(values: np.ndarray, ids) -> np.ndarray:
+    """Index of each of ``values`` (strings) in ``ids``; -1 where absent (vectorised)."""
+    unique, inverse = np.unique(values, return_inverse=True)
+    lookup = {v: i for i, v in enumerate(ids)}
+    return np.array([lookup.get(u, -1) for u in unique], dtype=np.int64)[inverse].reshape(values.shape)
+
+
+@dataclass(frozen=True)
+class SensorSpecs:
+    """Sensors in table order: platform index (S,), measured channels (S, 3) bool, noise sigma
+    (S, 3) m/rad (NaN where not measured), bias priors (S, 3), lever arm (S, 3) m (deck frame)."""
+
+    ids: tuple[str, ...]
+    platform: np.ndarray
+    channels: np.ndarray
+    sigma: np.ndarray
+    prior: np.ndarray
+    lever: np.ndarray
+
+
+def read_sensors(table: Table, platform_ids) -> SensorSpecs:
+    ids = table.ids("sensor")
+    dupes = sorted({s for s in ids if list(ids).count(s) > 1})
+    if dupes:
+        raise ValueError(f"sensors: duplicate sensor ids {dupes}")
+    plat = table.ids("platform")
+    index = {p: i for i, p in enumerate(platform_ids)}
+    for row, p in enumerate(plat):
+        if p not in index:
+            raise table.error(row, f"sensor {str(ids[row])!r} is on unknown platform {str(p)!r} (platforms: {list(platform_ids)})")
+    sigma = np.stack([_sigma_column(table, f"sigma_{c}", ids, allow_missing=True, what="sensor") for c in CHANNELS], axis=1)
+    for row in range(table.n_rows):
+        if np.any(sigma[row] == 0):
+            k = int(np.flatnonzero(sigma[row] == 0)[0])
+            raise table.error(row, f"sigma_{CHANNELS[k]} of sensor {str(ids[row])!r} is 0; a measured channel needs a noise "
+                                   "standard deviation > 0 (NaN = channel not measured)")
+        if np.all(np.isnan(sigma[row])):
+            raise table.error(row, f"sensor {str(ids[row])!r} measures no channel: give sigma_range, sigma_bearing "
+                                   "and/or sigma_elevation")
+        if np.nanmax(sigma[row, 1:], initial=0.0) > MAX_ANGLE_SIGMA:
+            raise table.error(row, f"angle sigma of sensor {str(ids[row])!r} above 20 deg; pass radians, not degrees")
+    prior = np.stack([_sigma_column(table, f"prior_{c}", ids, allow_missing=False, what="sensor") for c in CHANNELS], axis=1)
+    lever = np.stack([table.floats(f"lever_{a}", default=0.0) for a in "xyz"], axis=1)
+    check_range("sensors.lever", lever, -1.0e4, 1.0e4, "m (deck frame)")
+    return SensorSpecs(tuple(str(s) for s in ids), np.array([index[p] for p in plat], dtype=np.int64), ~np.isnan(sigma), sigma,
+                       prior, lever)
+
+
+@dataclass(frozen=True)
+class PlotColumns:
+    """Plots in table order: time (N,) s, sensor index (N,), target id (N,), measured values (N, 3)
+    (m, rad, rad; 0 where not measured), mask (N, 3) True where measured."""
+
+    time: np.ndarray
+    sensor: np.ndarray
+    target: np.ndarray
+    meas: np.ndarray
+    mask: np.ndarray
+
+
+def _check_channel(table: Table, values: np.ndarray, k: int, sensor_ids, sensor: np.ndarray) -> None:
+    name = CHANNELS[k]
+    lo, hi, unit = CHANNEL_LIMITS[name]
+    finite = np.isfinite(values)
+    bad = np.flatnonzero(np.isinf(values) | (finite & ((values <= lo if k == 0 else values < lo) | (values > hi))))
+    if bad.size:
+        row = int(bad[0])
+        hint = degree_hint(values[finite], max(abs(lo), abs(hi))) if k else ""
+        raise table.error(row, f"{name} {values[row]} of sensor {str(sensor_ids[sensor[row]])!r} is outside "
+                               f"{'(' if k == 0 else '['}{lo:g}, {hi:g}] {unit}{hint}")
+
+
+def read_plots(table: Table, sensors: SensorSpecs) -> PlotColumns:
+    time = table.floats("time")
+    bad = np.flatnonzero(~np.isfinite(time))
+    if bad.size:
+        raise table.error(int(bad[0]), f"time {time[bad[0]]} is not a finite number of seconds")
+    names = table.ids("sensor")
+    sensor = index_of(names, sensors.ids)
+    if (sensor < 0).any():
+        row = int(np.flatnonzero(sensor < 0)[0])
+        raise table.error(row, f"unknown sensor {str(names[row])!r} (sensors: {list(sensors.ids)})")
+    meas = np.stack([table.floats(c, default=np.nan) for c in CHANNELS], axis=1)
+    for k in range(3):
+        _check_channel(table, meas[:, k], k, sensors.ids, sensor)
+    mask = np.isfinite(meas)
+    extra = mask & ~sensors.channels[sensor]
+    if extra.any():
+        row, k = (int(v) for v in np.argwhere(extra)[0])
+        raise table.error(row, f"sensor {str(names[row])!r} has a {CHANNELS[k]} value but does not measure {CHANNELS[k]} "
+                               f"(no sigma_{CHANNELS[k]} in the sensors table)")
+    empty = np.flatnonzero(~mask.any(axis=1))
+    if empty.size:
+        raise table.error(int(empty[0]), f"plot of sensor {str(names[empty[0]])!r} has no measured channel")
+    return PlotColumns(time, sensor, table.ids("target"), np.where(mask, meas, 0.0), mask)
+
+
+@dataclass(frozen=True)
+class References:
+    """Known target positions: target id (R,), time (R,) s, p_ecef (R, 3) m, sigma (R,) m per axis."""
+
+    target: np.ndarray
+    time: np.ndarray
+    p_ecef: np.ndarray
+    sigma: np.ndarray
+
+    @staticmethod
+    def empty() -> "References":
+        return References(np.array([], dtype=object), np.zeros(0), np.zeros((0, 3)), np.zeros(0))
+
+
+def read_references(references, target_ids) -> References:
+    if references is None:
+        return References.empty()
+    table = read_table("references", references, ("target", "time"))
+    target = table.ids("target")
+    known = set(target_ids)
+    for row, t in enumerate(target):
+        if t not in known:
+            raise table.error(row, f"reference target {str(t)!r} has no plots (targets: {sorted(str(k) for k in known)})")
+    time = table.floats("time")
+    if table.has("x"):
+        p = np.stack([table.floats(c) for c in "xyz"], axis=1)
+        check_range("references.x/y/z", p, -1.0e8, 1.0e8, "m (ECEF)")
+    elif table.has("lat"):
+        p = geodetic2ecef(table.floats("lat"), table.floats("lon"), table.floats("alt"))
+    else:
+        raise ValueError("references: give the known position as ECEF x, y, z (m) or as lat, lon (rad), alt (m)")
+    sigma = table.floats("sigma", default=DEFAULT_REFERENCE_SIGMA)
+    bad = np.flatnonzero(~(np.isfinite(time) & (sigma > 0) & np.isfinite(sigma)))
+    if bad.size:
+        r = int(bad[0])
+        raise table.error(r, f"reference of target {str(target[r])!r}: time {time[r]} s and sigma {sigma[r]} m must be "
+                             "finite and sigma > 0 (the accuracy of the known position)")
+    return References(target, time, p.reshape(-1, 3), sigma)

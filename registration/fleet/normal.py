@@ -1,0 +1,183 @@
+"""Whitened residuals and the Gauss-Newton normal equations of the batch problem, block by block.
+
+Unknowns: the registration states ``x`` (n) and the window coefficients ``c`` (B blocks of
+``n_coef x 3``, :mod:`registration.fleet.blocks`). Each plot's whitened residual and Jacobian
+rows come from the generated ``fleet_rows_<n_coef>`` (``fleet_residual`` weighted by
+``mask / sigma``, so unmeasured channels weigh nothing, and multiplied out with the window's
+polynomial basis) in one batched call. With whitened residuals ``e`` and Jacobians ``A``
+(``e(theta + d) ~ e + A d``) the normal equations ``A^T A d = b`` with ``b = -A^T e`` are held
+in their block form:
+
+* ``V`` (B, q, q), q = 3 n_coef: the target-window blocks (plots and reference positions);
+* ``W`` (G, q, 6): coupling of a block with the 6 states of one sensor's group (platform attitude
+  errors, sensor biases);
+* ``U`` (n + 1, n + 1): the states' block (index n collects the absent biases and is dropped);
+* ``b_c`` (B, q) and ``b_x`` (n + 1,).
+
+A reference position ``y`` (sigma s) of a target adds the residual ``(y - p(t)) / s``; the prior
+of state i adds ``(0 - x_i) / sigma_i``. All sums over plots are segment sums over the
+(block, sensor) order: no Python loop over plots.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from registration import _codegen
+from registration.fleet.blocks import Blocks
+from registration.fleet.problem import FleetProblem
+
+__all__ = ["Design", "Evaluation", "Normal", "make_design", "evaluate", "normal_equations", "positions"]
+
+
+@dataclass(frozen=True)
+class Design:
+    """The problem's plots in padded block order, ready for evaluation.
+
+    Rows are the plots sorted by (block, sensor), each group's plots cut into chunks of
+    ``blocks.chunk_size`` and padded with copies of a real plot of weight zero (``real`` False),
+    so the products of a chunk are one dense matrix product without any copying. ``slot`` (N,)
+    is the row of each sorted plot; ``block_start`` (B,) the first row of each block.
+    """
+
+    blocks: Blocks
+    n_state: int
+    slot: np.ndarray  # (N,)
+    real: np.ndarray  # (rows,) bool
+    block: np.ndarray  # (rows,)
+    basis: np.ndarray  # (rows, n_coef)
+    block_start: np.ndarray  # (B,)
+    nav: np.ndarray  # (rows, 6)
+    meas: np.ndarray  # (rows, 3)
+    weight: np.ndarray  # (rows, 3) mask / sigma, 1/m and 1/rad; 0 for padding
+    lever: np.ndarray  # (rows, 3)
+    att_state: np.ndarray  # (rows, 3) state index (n = none)
+    bias_state: np.ndarray  # (rows, 3)
+    ref_p: np.ndarray  # (R', 3) ECEF m
+    ref_weight: np.ndarray  # (R',) 1 / sigma
+    prior_weight: np.ndarray  # (n,) 1 / prior sigma (0: no prior; fixed states are not free)
+    scale: np.ndarray  # (n,) prior or reference sigma of each state (registration.fleet.layout.state_scale)
+
+
+def make_design(problem: FleetProblem, blocks: Blocks) -> Design:
+    n_rows = blocks.n_chunks * blocks.chunk_size
+    source = np.full(n_rows, -1, dtype=np.int64)
+    source[blocks.chunk_slot] = np.arange(blocks.order.size)
+    real = source >= 0
+    chunk_first = source[(np.arange(n_rows) // blocks.chunk_size) * blocks.chunk_size]
+    source = np.where(real, source, chunk_first)  # padding copies its chunk's first plot
+    o = blocks.order[source]
+    layout = problem.layout
+    sensor = problem.sensor[o]
+    att = layout.att_index[problem.sensor_platform[sensor]]
+    bias = np.where(layout.bias_index[sensor] < 0, layout.n, layout.bias_index[sensor])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        weight = np.where(problem.mask[o] & real[:, None], 1.0 / problem.sensor_sigma[sensor], 0.0)
+        prior_weight = np.where(np.isfinite(layout.prior_sigma) & (layout.prior_sigma > 0), 1.0 / layout.prior_sigma, 0.0)
+    refs = problem.references
+    return Design(blocks, layout.n, blocks.chunk_slot, real, blocks.block[source], blocks.basis[source],
+                  blocks.chunk_slot[blocks.block_start], problem.nav[o], problem.meas[o], weight,
+                  problem.sensor_lever[sensor], att, bias, refs.p_ecef[blocks.ref_index],
+                  1.0 / refs.sigma[blocks.ref_index], prior_weight, layout.scale)
+
+
+def positions(basis: np.ndarray, block: np.ndarray, coef: np.ndarray) -> np.ndarray:
+    """(M, 3) ECEF positions sum_k basis[:, k] coef[block, k] (m)."""
+    return np.einsum("mk,mkj->mj", basis, coef[block])
+
+
+@dataclass(frozen=True)
+class Evaluation:
+    """At (x, coef): the whitened rows ``Z`` (rows, 3, q + 7) = [A_c | A_x | e] of every plot (A_c:
+    Jacobian w.r.t. its window's coefficients, A_x: w.r.t. its 6 states, e: whitened residual),
+    the whitened reference residuals (R', 3) and the total sum of squares."""
+
+    x: np.ndarray
+    coef: np.ndarray
+    Z: np.ndarray
+    e_ref: np.ndarray
+    cost: float  # sum of squares of every whitened residual, references and priors included
+
+    @property
+    def e(self) -> np.ndarray:
+        """(rows, 3) whitened residuals of the plots (0 where not measured)."""
+        return self.Z[:, :, -1]
+
+
+def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
+    """Residuals at states ``x`` (n,) and coefficients ``coef`` (B, n_coef, 3): one call of the
+    generated ``fleet_rows_<n_coef>`` for all plots."""
+    blk = design.blocks
+    p = positions(design.basis, design.block, coef)
+    xs = np.append(x, 0.0)
+    nav = design.nav
+    rows_t = _codegen.get(f"fleet_rows_{blk.n_coef}")(
+        p, nav[:, 0], nav[:, 1], nav[:, 2], nav[:, 3], nav[:, 4], nav[:, 5],
+        xs[design.att_state], xs[design.bias_state], design.lever,
+        design.meas[:, 0], design.meas[:, 1], design.meas[:, 2], design.weight,
+        design.basis[:, 0] if blk.n_coef == 1 else design.basis)[0]
+    Z = rows_t.swapaxes(1, 2)  # each plot's 3 rows, contiguous
+    e = Z[:, :, -1]
+    e_ref = (design.ref_p - positions(blk.ref_basis, blk.ref_block, coef)) * design.ref_weight[:, None]
+    prior = x * design.prior_weight
+    cost = float(np.sum(e * e) + np.sum(e_ref * e_ref) + np.sum(prior * prior))
+    return Evaluation(x, coef, Z, e_ref, cost)
+
+
+@dataclass
+class Normal:
+    """The normal equations in block form (module docstring)."""
+
+    V: np.ndarray  # (B, q, q)
+    W: np.ndarray  # (G, q, 6)
+    U: np.ndarray  # (n + 1, n + 1)
+    b_c: np.ndarray  # (B, q)
+    b_x: np.ndarray  # (n + 1,)
+
+
+def _reference_terms(blk: Blocks, ev: Evaluation, ref_weight: np.ndarray, V: np.ndarray, b_c: np.ndarray) -> None:
+    """Add the reference positions' terms to V (B, K, 3, K, 3) and b_c (B, K, 3) in place."""
+    if blk.ref_block.size == 0:
+        return
+    K, B = blk.n_coef, blk.n_blocks
+    w2 = ref_weight**2
+    for k in range(K):
+        for a in range(3):
+            b_c[:, k, a] += np.bincount(blk.ref_block, blk.ref_basis[:, k] * ref_weight * ev.e_ref[:, a], B)
+        for m in range(K):
+            ref = np.bincount(blk.ref_block, blk.ref_basis[:, k] * blk.ref_basis[:, m] * w2, B)
+            V[:, k, np.arange(3), m, np.arange(3)] += ref[:, None]
+
+
+def _chunk_products(design: Design, ev: Evaluation) -> np.ndarray:
+    """(G, m, m) sums over each group of Z^T Z (m = q + 7 columns of Evaluation.Z).
+
+    The rows are in chunks (Design), so each chunk's product is one small dense matrix product.
+    """
+    blk = design.blocks
+    Z = ev.Z.reshape(-1, 3 * blk.chunk_size, ev.Z.shape[2])
+    gram = np.matmul(np.ascontiguousarray(Z.transpose(0, 2, 1)), Z)
+    if gram.shape[0] == blk.group_start.size:  # one chunk per group
+        return gram
+    return np.add.reduceat(gram, blk.chunk_group_start, axis=0)
+
+
+def normal_equations(design: Design, ev: Evaluation) -> Normal:
+    """The block normal equations at an evaluation (undamped)."""
+    blk = design.blocks
+    K, n1, q = blk.n_coef, design.n_state + 1, 3 * blk.n_coef
+    G = _chunk_products(design, ev)
+    V = np.add.reduceat(G[:, :q, :q], blk.group_block_start, axis=0)
+    b_c = -np.add.reduceat(G[:, :q, -1], blk.group_block_start, axis=0)
+    V5, b_c3 = V.reshape(-1, K, 3, K, 3), b_c.reshape(-1, K, 3)
+    _reference_terms(blk, ev, design.ref_weight, V5, b_c3)
+    idx = blk.group_state
+    flat = (idx[:, :, None] * n1 + idx[:, None, :]).reshape(-1)
+    U = np.bincount(flat, G[:, q:q + 6, q:q + 6].reshape(-1), n1 * n1).reshape(n1, n1)
+    b_x = -np.bincount(idx.reshape(-1), G[:, q:q + 6, -1].reshape(-1), n1)
+    pw = np.append(design.prior_weight, 0.0)
+    U[np.diag_indices(n1)] += pw**2
+    b_x -= pw**2 * np.append(ev.x, 0.0)
+    return Normal(V, np.ascontiguousarray(G[:, :q, q:q + 6]), U, b_c, b_x)

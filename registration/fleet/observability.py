@@ -1,0 +1,159 @@
+"""Which registration states of a fleet the data determine, named in the user's terms.
+
+Input: the information matrix of the free states with the target trajectories eliminated (the
+Schur complement of the data alone, at the solution). It is scaled, as in
+:mod:`registration.core.observability`, by each state's prior sigma, or by a reference size when
+the state has no prior (:data:`registration.fleet.layout.REFERENCE_SCALE`: 1 deg, 1 km), so an eigenvalue ``s`` means a
+posterior sigma of ``1 / sqrt(s)`` in those units; classes and thresholds are the core's
+(unobservable below 0.01, weak below 10).
+
+A known structural degeneracy is named first: on a platform that neither pitches nor rolls, the
+heading error and the bearing biases of its sensors rotate every line of sight about the same
+vertical axis, so only ``heading error + bearing bias`` of each sensor is identifiable. The
+direction ``(+1 on the heading error, -1 on each bearing bias)`` is tested directly and, when
+each state alone is observable, reported as such: unobservable below 0.01, "barely separated"
+(weak) below 10. Lever arms and the earth's curvature give a level platform's heading error a
+little information of its own, so the weak case is common. Every
+remaining weak or unobservable direction (orthogonal to the named ones) is named by its dominant
+states.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from registration.core.observability import (
+    UNOBSERVABLE_BELOW, WEAK_BELOW, Combination, ObservabilityReport,
+)
+from registration.fleet.layout import state_scale
+
+__all__ = ["fleet_observability"]
+
+def _level_patterns(layout, free: np.ndarray, sensor_platform: np.ndarray, platform_ids, sensor_ids):
+    """(platform id, sensor ids, own-unit direction over the free states) per platform with a free
+    heading error and free bearing biases."""
+    pos = {int(i): k for k, i in enumerate(free)}
+    out = []
+    for p, pid in enumerate(platform_ids):
+        h = int(layout.att_index[p, 0])
+        sensors = [s for s in np.flatnonzero(sensor_platform == p) if int(layout.bias_index[s, 1]) in pos]
+        if h not in pos or not sensors:
+            continue
+        v = np.zeros(free.size)
+        v[pos[h]] = 1.0
+        for s in sensors:
+            v[pos[int(layout.bias_index[s, 1])]] = -1.0
+        out.append((pid, [sensor_ids[s] for s in sensors], v))
+    return out
+
+
+def _level_text(layout, pid: str, sensors: list, weak: bool) -> str:
+    h = f"{pid}:heading_error"
+    if weak:
+        return (f"heading error of platform {pid} and the bearing biases of {', '.join(sensors)} are barely separated; "
+                "better determined are the sums " + ", ".join(f"{h} + {s}:bearing_bias" for s in sensors))
+    if len(sensors) == 1:
+        return (f"heading error of platform {pid} and bearing bias of sensor {sensors[0]} enter only as their sum "
+                f"{h} + {sensors[0]}:bearing_bias")
+    return (f"heading error of platform {pid} and the bearing biases of its sensors {', '.join(sensors)} enter only "
+            "as the sums " + ", ".join(f"{h} + {s}:bearing_bias" for s in sensors))
+
+
+def _name(v_scaled: np.ndarray, d: np.ndarray, names, labels, eigenvalue: float, unobservable: bool) -> Combination:
+    """A generic direction (prior-scaled coordinates) named by its dominant states."""
+    v = v_scaled / np.abs(v_scaled).max()
+    idx = [i for i in np.argsort(-np.abs(v)) if abs(v[i]) >= 0.15]
+    own = v * d / d[idx[0]]  # coefficients in the states' own units
+    coeffs = {names[i]: round(float(own[i]), 4) for i in idx}
+    if len(idx) == 1:
+        return Combination(coeffs, float(eigenvalue), f"{labels[idx[0]]} ({names[idx[0]]})")
+    i, j = idx[:2]
+    if len(idx) == 2 and abs(abs(own[j]) - 1.0) < 0.05:
+        kind, sign = ("difference", "-") if own[j] > 0 else ("sum", "+")
+        verb = "enter only as their" if unobservable else "are separated mainly through their"
+        return Combination(coeffs, float(eigenvalue), f"{labels[i]} and {labels[j]} {verb} {kind} "
+                                                      f"{names[i]} {sign} {names[j]}",
+                           (names[i], names[j]) if kind == "sum" else None)
+    terms = ", ".join(f"{labels[k]} ({own[k]:+.3g})" for k in idx)
+    head = "the data do not see a joint change of" if unobservable else "poorly determined joint change of"
+    return Combination(coeffs, float(eigenvalue), f"{head} {terms} (relative sizes in rad and m)")
+
+
+def _named_structural(null: np.ndarray, weak: np.ndarray, layout, free, patterns):
+    """The level-platform patterns that lie mostly in the unobservable (or weak) eigen-directions."""
+    named = []
+    for pid, sensors, v, vs in patterns:
+        f_null = float(np.sum((null.T @ vs) ** 2))
+        f_weak = float(np.sum((weak.T @ vs) ** 2))
+        if f_null + f_weak <= 0.5:
+            continue
+        unobservable = f_null > 0.5
+        coeffs = {layout.names[free[k]]: float(v[k]) for k in np.flatnonzero(v)}
+        pair = tuple(coeffs) if len(coeffs) == 2 else None
+        comb = Combination(coeffs, float(f_null), _level_text(layout, pid, sensors, not unobservable), pair)
+        named.append((unobservable, comb, vs))
+    return named
+
+
+def _status(names, null: np.ndarray, weak: np.ndarray) -> dict:
+    """Per state: not identifiable (more than 0.3 of it in the unobservable directions), weak (more
+    than 0.3 in the weak ones, or more than 0.1 unobservable) or identifiable."""
+    p_null = np.linalg.norm(null, axis=1) if null.size else np.zeros(len(names))
+    p_weak = np.linalg.norm(weak, axis=1) if weak.size else np.zeros(len(names))
+    return {name: "not identifiable" if p_null[i] > 0.3 else "weak" if (p_weak[i] > 0.3 or p_null[i] > 0.1)
+            else "identifiable" for i, name in enumerate(names)}
+
+
+def _generic(Js, named_vectors: list, d, names, labels) -> list[tuple[bool, Combination]]:
+    """Weak and unobservable directions orthogonal to the named ones, named by their dominant states."""
+    n = Js.shape[0]
+    if named_vectors:
+        w = np.linalg.qr(np.array(named_vectors).T)[0]
+        basis = np.linalg.svd(np.eye(n) - w @ w.T)[0][:, : n - w.shape[1]]
+    else:
+        basis = np.eye(n)
+    if basis.shape[1] == 0:
+        return []
+    eigval, eigvec = np.linalg.eigh(basis.T @ Js @ basis)
+    vectors = basis @ eigvec
+    null = eigval < UNOBSERVABLE_BELOW
+    out = [(True, _name(u, d, names, labels, float(u @ Js @ u / (u @ u)), True)) for u in _simple_basis(vectors[:, null]).T]
+    for s_val, u in zip(eigval, vectors.T):
+        if UNOBSERVABLE_BELOW <= s_val < WEAK_BELOW:
+            out.append((False, _name(u, d, names, labels, s_val, False)))
+    return out
+
+
+def _simple_basis(N: np.ndarray) -> np.ndarray:
+    """A basis of span(N) in which each vector has a 1 at its own pivot state and 0 at the others'
+    (reduced row echelon form, pivots by QR with column pivoting): a degenerate null space is then
+    named as 'these states move together' rather than as arbitrary mixtures."""
+    if N.shape[1] == 0:
+        return N
+    from scipy.linalg import qr
+
+    _, _, piv = qr(N.T, pivoting=True)
+    pivots = piv[: N.shape[1]]
+    return N @ np.linalg.inv(N[pivots, :])
+
+
+def fleet_observability(information: np.ndarray, free: np.ndarray, layout, sensor_platform, platform_ids,
+                        sensor_ids) -> ObservabilityReport:
+    """Classify the free states' directions from their information (n_free x n_free, data only)."""
+    names = [layout.names[i] for i in free]
+    labels = [layout.labels[i] for i in free]
+    d = state_scale(layout)[free]
+    Js = d[:, None] * np.asarray(information, dtype=float) * d[None, :]
+    Js = 0.5 * (Js + Js.T)
+    w, v = np.linalg.eigh(Js) if free.size else (np.zeros(0), np.zeros((0, 0)))
+    null, weak = v[:, w < UNOBSERVABLE_BELOW], v[:, (w >= UNOBSERVABLE_BELOW) & (w < WEAK_BELOW)]
+    report = ObservabilityReport(singular_values=np.clip(w, 0, None)[::-1])
+    patterns = [(pid, sensors, vec, vec / d / np.linalg.norm(vec / d))
+                for pid, sensors, vec in _level_patterns(layout, free, sensor_platform, platform_ids, sensor_ids)]
+    named = _named_structural(null, weak, layout, free, patterns)
+    for is_unobs, comb, _ in named:
+        (report.unobservable if is_unobs else report.weak).append(comb)
+    for is_unobs, comb in _generic(Js, [vs for _, _, vs in named], d, names, labels):
+        (report.unobservable if is_unobs else report.weak).append(comb)
+    report.status.update(_status(names, null, weak))
+    return report

@@ -1,0 +1,164 @@
+"""A fleet registration problem: the checked description built from the long-form tables.
+
+:func:`build_problem` (also :meth:`FleetProblem.from_tables`) reads the tables of
+:mod:`registration.fleet.tables`, checks them (errors name the table, row and object),
+interpolates each platform's navigation to the plot times, lays out the registration state
+(:class:`~registration.fleet.layout.StateLayout`) and sets aside the targets that carry no
+registration information: a target seen by one sensor only, and not a reference, fits that
+sensor's plots exactly whatever the errors are.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from registration.fleet.inputs import References, index_of, read_platforms, read_plots, read_references, read_sensors
+from registration.fleet.layout import StateLayout, make_layout
+from registration.fleet.navigation import navigation_at, platform_navigation
+from registration.fleet.tables import read_table
+
+__all__ = ["Exclusion", "FleetProblem", "build_problem"]
+
+
+@dataclass(frozen=True)
+class Exclusion:
+    """Plots set aside: which target, over which time span (s), how many plots, and why."""
+
+    target: str
+    reason: str
+    n_plots: int
+    t_start: float
+    t_end: float
+
+    def text(self) -> str:
+        return f"target {self.target} ({self.n_plots} plots, {self.t_start:g} s to {self.t_end:g} s): {self.reason}"
+
+
+@dataclass(frozen=True)
+class FleetProblem:
+    """Platforms, sensors, plots (with their platform's navigation) and references, checked.
+
+    Per kept plot ``i`` (N in all): ``time[i]`` s, ``sensor[i]`` and ``platform[i]`` (indices
+    into ``sensor_ids``/``platform_ids``), ``target[i]`` (index into ``target_ids``), ``meas[i]``
+    (range m, bearing rad, elevation rad; 0 where not measured), ``mask[i]`` (True where measured),
+    ``nav[i]`` (lat, lon rad, alt m, heading, pitch, roll rad as reported), and ``row[i]``, its row
+    in the input plots table. Sensors: ``sensor_sigma`` (S, 3) noise sigma (NaN = not measured),
+    ``sensor_lever`` (S, 3) m, deck frame. ``excluded``: targets set aside, with reasons.
+    """
+
+    platform_ids: tuple[str, ...]
+    sensor_ids: tuple[str, ...]
+    target_ids: tuple[str, ...]
+    sensor_platform: np.ndarray
+    sensor_sigma: np.ndarray
+    sensor_lever: np.ndarray
+    layout: StateLayout
+    time: np.ndarray
+    sensor: np.ndarray
+    target: np.ndarray
+    meas: np.ndarray
+    mask: np.ndarray
+    nav: np.ndarray
+    row: np.ndarray
+    n_input_plots: int
+    references: References
+    ref_target: np.ndarray  # (R,) index into target_ids
+    excluded: tuple[Exclusion, ...] = field(default_factory=tuple)
+
+    @property
+    def n_plots(self) -> int:
+        return int(self.time.shape[0])
+
+    @property
+    def platform(self) -> np.ndarray:
+        return self.sensor_platform[self.sensor]
+
+    @property
+    def sigma(self) -> np.ndarray:
+        """(N, 3) noise sigma of each plot's channels (NaN where not measured)."""
+        return np.where(self.mask, self.sensor_sigma[self.sensor], np.nan)
+
+    @classmethod
+    def from_tables(cls, plots, sensors, navigation, platforms=None, references=None) -> "FleetProblem":
+        """See :func:`build_problem`."""
+        return build_problem(plots, sensors, navigation, platforms, references)
+
+    def drop_plots(self, drop: np.ndarray, exclusions) -> "FleetProblem":
+        """The problem without the plots flagged in ``drop`` (N,), with ``exclusions`` recorded."""
+        keep = ~np.asarray(drop, dtype=bool)
+        per_plot = {k: getattr(self, k)[keep] for k in ("time", "sensor", "target", "meas", "mask", "nav", "row")}
+        return replace(self, **per_plot, excluded=self.excluded + tuple(exclusions))
+
+    def lines(self) -> list[str]:
+        """A short human-readable summary."""
+        out = [f"{len(self.platform_ids)} platforms, {len(self.sensor_ids)} sensors, {len(self.target_ids)} targets, "
+               f"{self.n_plots} plots used of {self.n_input_plots}, {len(self.references.time)} reference positions, "
+               f"{self.layout.n} states ({self.layout.free.size} estimated)"]
+        out += [f"  excluded: {e.text()}" for e in self.excluded]
+        return out
+
+
+def _first_seen(ids: np.ndarray) -> tuple[str, ...]:
+    """The distinct ids in order of first appearance."""
+    unique, first = np.unique(ids, return_index=True)
+    return tuple(str(u) for u in unique[np.argsort(first)])
+
+
+def _single_sensor_targets(plots, references) -> list[Exclusion]:
+    """Targets seen by one sensor only and not references: no registration information."""
+    out = []
+    refs = set(references.target)
+    targets = _first_seen(plots.target)
+    which = index_of(plots.target, targets)
+    n_sensors = np.zeros(len(targets), dtype=np.int64)
+    pairs = np.unique(np.stack([which, plots.sensor]), axis=1)
+    np.add.at(n_sensors, pairs[0], 1)
+    for k in np.flatnonzero(n_sensors == 1):
+        tid = targets[k]
+        if tid not in refs:
+            sel = which == k
+            t = plots.time[sel]
+            out.append(Exclusion(str(tid), "seen by one sensor only and not a reference: its plots fit any "
+                                           "registration errors, so they carry no registration information",
+                                 int(sel.sum()), float(t.min()), float(t.max())))
+    return out
+
+
+def build_problem(plots, sensors, navigation, platforms=None, references=None) -> FleetProblem:
+    """Check the long-form tables (see :mod:`registration.fleet.tables`) and build the problem.
+
+    ValueError names the table, row and object for: a missing column, an unknown sensor,
+    platform or reference target, a sensor with no measured channel, a negative or zero noise
+    sigma, a negative prior, a value out of range (with a hint when degrees seem to have been
+    given for radians), a plot outside its platform's navigation time span.
+    """
+    sensors_t = read_table("sensors", sensors, ("sensor", "platform"))
+    platform_ids, platform_priors = read_platforms(platforms, sensors_t.ids("platform"))
+    specs = read_sensors(sensors_t, platform_ids)
+    plots_t = read_table("plots", plots, ("time", "sensor", "target"))
+    cols = read_plots(plots_t, specs)
+    refs = read_references(references, list(dict.fromkeys(cols.target)))
+    excluded = _single_sensor_targets(cols, refs)
+    keep = np.flatnonzero(~np.isin(cols.target, [e.target for e in excluded]))
+    target_ids = _first_seen(cols.target[keep])
+    sensor = cols.sensor[keep]
+    time = cols.time[keep]
+    tracks = platform_navigation(read_table("navigation", navigation, ("platform",)), platform_ids)
+
+    def describe(i: int) -> str:
+        return f"plots row {int(keep[i])} (sensor {str(specs.ids[sensor[i]])!r}, time {time[i]:g} s)"
+
+    nav = navigation_at(tracks, platform_ids, specs.platform[sensor], time, describe)
+    layout = make_layout(platform_ids, platform_priors, specs.ids, specs.channels, specs.prior)
+    ref_keep = np.isin(refs.target, target_ids)
+    refs = References(refs.target[ref_keep], refs.time[ref_keep], refs.p_ecef[ref_keep], refs.sigma[ref_keep])
+    return FleetProblem(
+        platform_ids=tuple(platform_ids), sensor_ids=specs.ids, target_ids=target_ids,
+        sensor_platform=specs.platform, sensor_sigma=specs.sigma, sensor_lever=specs.lever, layout=layout,
+        time=time, sensor=sensor, target=index_of(cols.target[keep], target_ids),
+        meas=cols.meas[keep], mask=cols.mask[keep], nav=nav, row=keep, n_input_plots=int(cols.time.shape[0]),
+        references=refs, ref_target=index_of(refs.target, target_ids),
+        excluded=tuple(excluded),
+    )

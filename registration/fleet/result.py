@@ -1,0 +1,116 @@
+"""The result of batch fleet registration (:class:`BatchResult`)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from registration.core.observability import ObservabilityReport
+from registration.fleet.covariance import FusedTargets
+from registration.fleet.layout import StateLayout
+
+__all__ = ["BatchResult", "ChiSquareCheck"]
+
+
+@dataclass(frozen=True)
+class ChiSquareCheck:
+    """Sum of squared normalised residuals (plots, references, priors) against its degrees of freedom.
+
+    ``dof`` = measured values - estimated parameters (states and trajectory coefficients).
+    ``mean`` = chi2 / dof is 1 for data that fit the model; ``interval`` is its two-sided 95 %
+    band for a chi-square with ``dof`` degrees of freedom.
+    """
+
+    chi2: float
+    dof: int
+    interval: tuple[float, float]
+
+    @property
+    def mean(self) -> float:
+        return self.chi2 / self.dof if self.dof > 0 else float("nan")
+
+    @property
+    def ok(self) -> bool:
+        return self.interval[0] <= self.mean <= self.interval[1]
+
+    def text(self) -> str:
+        lo, hi = self.interval
+        return (f"mean squared normalised residual {self.mean:.4f} over {self.dof} degrees of freedom "
+                f"(95 % band [{lo:.4f}, {hi:.4f}]): {'consistent' if self.ok else 'OUTSIDE the band'}")
+
+
+@dataclass
+class BatchResult:
+    """Estimates, their covariance, fused targets, residuals and observability.
+
+    ``estimate`` (n,) and ``covariance`` (n, n) in the order of ``layout.names`` (rad, m); fixed
+    states are 0 with zero covariance. ``sigma`` (n,): 0 for fixed states, inf for states that lean
+    on a direction neither the data nor a prior determine (left out of the covariance). ``status``
+    per state, from the data alone (:mod:`registration.fleet.observability`): ``fixed``,
+    ``identifiable``, ``weak`` or ``not identifiable``. ``residuals`` (rows of the input plots table, 3): normalised residuals
+    (measured - predicted) / sigma of range, bearing, elevation; NaN where not measured or where
+    the plot was excluded. ``information``: the free states' information from the data alone
+    (targets eliminated), in the order of ``free_names``.
+    """
+
+    layout: StateLayout
+    estimate: np.ndarray
+    covariance: np.ndarray
+    sigma: np.ndarray
+    status: dict
+    targets: FusedTargets
+    residuals: np.ndarray
+    chi_square: ChiSquareCheck
+    observability: ObservabilityReport
+    excluded: tuple
+    information: np.ndarray
+    free_names: tuple
+    scale: np.ndarray  # (n_free,) prior or reference sigma of each free state (rad, m)
+    undetermined: np.ndarray  # (n_free, k) directions left out of the covariance, scaled by ``scale``
+    converged: bool
+    iterations: int
+    cost_history: list = field(default_factory=list)
+
+    def value(self, name: str) -> float:
+        return float(self.estimate[self.layout.index(name)])
+
+    def sigma_of(self, name: str) -> float:
+        return float(self.sigma[self.layout.index(name)])
+
+    def combination(self, coefficients: dict) -> tuple[float, float]:
+        """Value and sigma of ``sum_i a_i x_i`` for ``coefficients`` {state name: a_i}, e.g.
+        ``{"A:heading_error": 1, "A1:bearing_bias": 1}``. The sigma is inf when the combination
+        leans on a direction the data do not determine (more than 1 % of it, in scaled units)."""
+        a = np.zeros(self.layout.n)
+        for name, c in coefficients.items():
+            a[self.layout.index(name)] = float(c)
+        value = float(a @ self.estimate)
+        a_scaled = a[self.layout.free] * self.scale
+        lean = np.linalg.norm(self.undetermined.T @ a_scaled) if self.undetermined.size else 0.0
+        if lean > 0.01 * max(float(np.linalg.norm(a_scaled)), 1e-300):
+            return value, float("inf")
+        return value, float(np.sqrt(max(float(a @ self.covariance @ a), 0.0)))
+
+    def rows(self, truth: dict | None = None) -> list[dict]:
+        """One dict per state: name, label, unit, estimate, sigma, status (and truth when given)."""
+        out = []
+        for i, name in enumerate(self.layout.names):
+            row = {"name": name, "label": self.layout.labels[i], "unit": self.layout.units[i],
+                   "estimate": float(self.estimate[i]), "sigma": float(self.sigma[i]), "status": self.status[name]}
+            if truth is not None:
+                row["truth"] = float(truth[name])
+            out.append(row)
+        return out
+
+    def lines(self) -> list[str]:
+        """A printable summary (angles in degrees)."""
+        out = [f"converged: {self.converged} after {self.iterations} iterations", self.chi_square.text()]
+        for row in self.rows():
+            deg = row["unit"] == "rad"
+            f = np.degrees if deg else float
+            unit = "deg" if deg else "m"
+            out.append(f"  {row['label']:<36s} {f(row['estimate']):+12.4f} +- {f(row['sigma']):.4f} {unit}  {row['status']}")
+        out += self.observability.lines()
+        out += [f"  excluded: {e.text()}" for e in self.excluded]
+        return out

@@ -1,0 +1,98 @@
+"""Tracks of the simulated fleet: ships (geodetic, with wave motion) and targets (ENU about a
+centre point, placed in ECEF through the generated ``geodetic2ecef`` and
+``enu2ecef_rotation_standard``)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from registration import _codegen
+from registration.core.angles import wrap_angle
+
+__all__ = ["ShipTrack", "Circle", "Line", "enu2ecef_points"]
+
+
+def enu2ecef_points(centre, p_enu: np.ndarray) -> np.ndarray:
+    """(N, 3) ECEF (m) of points given in the ENU frame at ``centre`` = (lat, lon rad, alt m)."""
+    lat, lon, alt = centre
+    origin = _codegen.get("geodetic2ecef")(lat, lon, alt)[0][0]
+    R_ecef_enu = _codegen.get("enu2ecef_rotation_standard")(lat, lon)[0][0]
+    return origin + np.atleast_2d(p_enu) @ R_ecef_enu.T
+
+
+@dataclass(frozen=True)
+class ShipTrack:
+    """A ship sailing a straight course with sinusoidal pitch and roll.
+
+    Start ``east0``, ``north0`` (m from the centre), ``course`` (rad clockwise from north; the
+    heading equals it), ``speed`` (m/s), navigation point ``height`` (m above the ellipsoid),
+    pitch and roll amplitudes (rad) and periods (s), wave ``phase`` (rad). The true track is
+    defined in geodetic coordinates: the east/north offsets are divided by the radii of curvature
+    at the centre (any track is a valid truth; the plots are computed from this one).
+    """
+
+    east0: float
+    north0: float
+    course: float
+    speed: float
+    height: float
+    pitch_amplitude: float
+    pitch_period: float
+    roll_amplitude: float
+    roll_period: float
+    phase: float
+
+    @staticmethod
+    def geodetic(centre, east: np.ndarray, north: np.ndarray, height: float):
+        """(lat, lon) rad of points offset east/north (m) from ``centre`` at ``height`` m."""
+        M, N = _codegen.get("radii_of_curvature")(centre[0])[0][0]
+        lat = centre[0] + north / (M + height)
+        lon = centre[1] + east / ((N + height) * np.cos(centre[0]))
+        return lat, lon
+
+    def navigation(self, centre, t: np.ndarray, motion: bool = True) -> np.ndarray:
+        """(N, 6) true lat, lon (rad), alt (m), heading, pitch, roll (rad) at times t (s)."""
+        east = self.east0 + self.speed * t * np.sin(self.course)
+        north = self.north0 + self.speed * t * np.cos(self.course)
+        lat, lon = self.geodetic(centre, east, north, self.height)
+        scale = 1.0 if motion else 0.0
+        pitch = scale * self.pitch_amplitude * np.sin(2 * np.pi * t / self.pitch_period + self.phase)
+        roll = scale * self.roll_amplitude * np.sin(2 * np.pi * t / self.roll_period + 1.3 * self.phase + 0.7)
+        heading = np.full(t.shape, float(wrap_angle(self.course)))
+        return np.stack([lat, lon, np.full(t.shape, self.height), heading, pitch, roll], axis=1)
+
+
+@dataclass(frozen=True)
+class Circle:
+    """A target circling counter-clockwise: centre east/north (m), radius (m), speed (m/s),
+    altitude z (m, ENU up), start angle (rad from east)."""
+
+    east: float
+    north: float
+    radius: float
+    speed: float
+    z: float
+    phase: float
+
+    def enu(self, t: np.ndarray) -> np.ndarray:
+        a = self.phase + self.speed / self.radius * t
+        return np.stack([self.east + self.radius * np.cos(a), self.north + self.radius * np.sin(a),
+                         np.full(np.shape(t), self.z)], axis=-1)
+
+
+@dataclass(frozen=True)
+class Line:
+    """A target on a straight course: start east/north (m), course (rad from north), speed
+    (m/s), altitude z (m, ENU up)."""
+
+    east: float
+    north: float
+    course: float
+    speed: float
+    z: float
+
+    def enu(self, t: np.ndarray) -> np.ndarray:
+        return np.stack([self.east + self.speed * t * np.sin(self.course), self.north + self.speed * t * np.cos(self.course),
+                         np.full(np.shape(t), self.z)], axis=-1)

@@ -1,0 +1,117 @@
+"""One (damped) Gauss-Newton step of the batch problem with the target blocks eliminated by the
+Schur complement, as in bundle adjustment.
+
+With ``V_b`` the block of window b, ``W_g`` the coupling of group g (one sensor in one window)
+with its 6 states, ``U`` the states' block and damping ``lambda D`` (Marquardt: D the diagonal
+of the normal matrix):
+
+* with the groups of block b side by side, ``W_b`` (q x 6 g) over the states ``local_state[b]``:
+  ``Y_b = V_b^-1 W_b``, ``y_b = V_b^-1 b_c,b`` (batched inverses of the small blocks);
+* ``S = U - sum_b W_b^T Y_b`` and ``r = b_x - sum_b W_b^T y_b``, each block's terms scattered
+  into the states by index with ``bincount``;
+* ``S_ff dx = r_f`` on the free states, solved in coordinates scaled by each state's prior (or
+  reference) sigma within the directions the undamped information determines (scaled eigenvalue
+  at least the core's UNOBSERVABLE_BELOW, :func:`determined_directions`): what the data cannot
+  see is left where it is (minimum-norm step) and the damping cannot hide it;
+* ``dc_b = y_b - Y_b dx[local_state[b]]``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from registration.core.observability import UNOBSERVABLE_BELOW
+from registration.fleet.blocks import Blocks
+from registration.fleet.normal import Normal
+
+__all__ = ["Reduced", "determined_directions", "local_coupling", "masked_blocks", "reduce", "solve_reduced", "damped_step"]
+
+
+@dataclass
+class Reduced:
+    """The Schur complement on all states and what back-substitution needs."""
+
+    S: np.ndarray  # (n + 1, n + 1); row/column n is the sink of absent biases
+    r: np.ndarray  # (n + 1,)
+    V_inv: np.ndarray  # (B, q, q)
+    Y: np.ndarray  # (B, q, 6 g): V_b^-1 W_b over the block's local states
+    y: np.ndarray  # (B, q)
+
+
+def local_coupling(blk: Blocks, W: np.ndarray) -> np.ndarray:
+    """(B, q, 6 g): each block's group couplings W (G, q, 6) side by side (zeros for padding)."""
+    q = W.shape[1]
+    g = blk.local_state.shape[1] // 6
+    out = np.zeros((blk.n_blocks, g, q, 6))
+    out[blk.group_block, blk.group_rank] = W
+    return out.transpose(0, 2, 1, 3).reshape(blk.n_blocks, q, 6 * g)
+
+
+def masked_blocks(blk: Blocks, V: np.ndarray) -> np.ndarray:
+    """Put 1 on the diagonal of masked (unused) coefficients so the blocks can be inverted."""
+    unused = np.repeat(~blk.coef_mask, 3, axis=1).astype(np.float64)  # (B, q), coefficient-major
+    out = V.copy()
+    q = V.shape[1]
+    out[:, np.arange(q), np.arange(q)] += unused
+    return out
+
+
+def reduce(blk: Blocks, normal: Normal, lam: float = 0.0) -> Reduced:
+    """Eliminate the target blocks (damped by ``lam`` times the diagonal)."""
+    V = masked_blocks(blk, normal.V)
+    q = V.shape[1]
+    diag_V = V[:, np.arange(q), np.arange(q)]
+    V[:, np.arange(q), np.arange(q)] += lam * diag_V
+    V_inv = np.linalg.inv(V)
+    V_inv = 0.5 * (V_inv + V_inv.transpose(0, 2, 1))
+    W = local_coupling(blk, normal.W)  # (B, q, 6 g)
+    Y = np.matmul(V_inv, W)
+    y = np.matmul(V_inv, normal.b_c[:, :, None])[:, :, 0]
+    n1 = normal.U.shape[0]
+    WY = np.matmul(W.transpose(0, 2, 1), Y)  # (B, 6 g, 6 g)
+    idx = blk.local_state
+    flat = (idx[:, :, None] * n1 + idx[:, None, :]).reshape(-1)
+    S = normal.U - np.bincount(flat, WY.reshape(-1), n1 * n1).reshape(n1, n1)
+    S[np.diag_indices(n1)] += lam * np.diag(normal.U)
+    Wy = np.matmul(W.transpose(0, 2, 1), y[:, :, None])[:, :, 0]  # (B, 6 g)
+    r = normal.b_x - np.bincount(idx.reshape(-1), Wy.reshape(-1), n1)
+    return Reduced(0.5 * (S + S.T), r, V_inv, Y, y)
+
+
+def determined_directions(S: np.ndarray, scale: np.ndarray) -> np.ndarray:
+    """(n, k) orthonormal basis, in coordinates scaled by ``scale``, of the directions whose scaled
+    information (undamped Schur complement ``S``) is at least UNOBSERVABLE_BELOW."""
+    if S.shape[0] == 0:
+        return np.zeros((0, 0))
+    Ss = scale[:, None] * S * scale[None, :]
+    w, v = np.linalg.eigh(0.5 * (Ss + Ss.T))
+    return v[:, w >= UNOBSERVABLE_BELOW]
+
+
+def solve_reduced(S: np.ndarray, r: np.ndarray, scale: np.ndarray, determined: np.ndarray) -> np.ndarray:
+    """Solution of S dx = r within the ``determined`` directions (scaled coordinates): what the data
+    and priors leave undetermined is not moved (the minimum-norm step)."""
+    if S.shape[0] == 0 or determined.shape[1] == 0:
+        return np.zeros(S.shape[0])
+    Q = determined
+    Ss = scale[:, None] * S * scale[None, :]
+    z = np.linalg.solve(Q.T @ Ss @ Q, Q.T @ (scale * r))
+    return scale * (Q @ z)
+
+
+def damped_step(blk: Blocks, normal: Normal, free: np.ndarray, scale: np.ndarray, determined: np.ndarray, lam: float):
+    """The step (dx (n,), dcoef (B, n_coef, 3)) and its predicted cost reduction."""
+    red = reduce(blk, normal, lam)
+    n = normal.U.shape[0] - 1
+    dx = np.zeros(n + 1)
+    dx[free] = solve_reduced(red.S[np.ix_(free, free)], red.r[free], scale, determined)
+    dc = red.y - np.matmul(red.Y, dx[blk.local_state][:, :, None])[:, :, 0]
+    dc = dc * np.repeat(blk.coef_mask, 3, axis=1)
+    # predicted reduction of the sum of squares for the damped step: d^T b + lam d^T D d
+    q = dc.shape[1]
+    diag_V = normal.V[:, np.arange(q), np.arange(q)]
+    b_dot = float(dx[free] @ normal.b_x[free] + np.sum(dc * normal.b_c))
+    damp = lam * float(np.sum(np.diag(normal.U)[free] * dx[free] ** 2) + np.sum(diag_V * dc**2))
+    return dx[:n], dc.reshape(blk.n_blocks, blk.n_coef, 3), b_dot + damp

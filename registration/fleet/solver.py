@@ -1,0 +1,156 @@
+"""Batch maximum-likelihood registration of a fleet (:func:`solve_batch`).
+
+Jointly over every registration state (platform attitude errors, sensor biases) and every target
+window's trajectory coefficients (:mod:`registration.fleet.blocks`), the sum of squared whitened
+residuals of all plots, reference positions and priors is minimised by Levenberg-Marquardt
+(Marquardt's diagonal scaling, Nielsen's damping update) with the target blocks eliminated by the
+Schur complement (:mod:`registration.fleet.schur`). Two phases, both from the same code:
+
+1. the target windows alone, registration states held at zero, from the window means of the
+   plot positions (:mod:`registration.fleet.initial`): the targets move to where the
+   unregistered sensors jointly put them (roughly: until a step gains less than 0.1 %);
+2. everything together.
+
+The solver stops when the predicted reduction of the sum of squares falls below ``tolerance``
+(chi-square units: a remaining change of order ``sqrt(tolerance)`` standard deviations).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from registration.fleet.blocks import make_blocks
+from registration.fleet.initial import initial_coefficients
+from registration.fleet.normal import Design, evaluate, make_design, normal_equations
+from registration.fleet.problem import Exclusion, FleetProblem
+from registration.fleet.schur import damped_step, determined_directions, masked_blocks, reduce
+
+__all__ = ["BatchOptions", "Fit", "fit", "levenberg_marquardt", "singular_blocks"]
+
+LAMBDA_START = 1e-3
+LAMBDA_MAX = 1e16
+#: A window whose Jacobi-scaled information has an eigenvalue below this is not determined.
+SINGULAR_BLOCK = 1e-10
+#: The first phase (targets alone) stops when a step would gain less than this share of the cost.
+TARGETS_FIRST = 1e-3
+
+
+@dataclass(frozen=True)
+class BatchOptions:
+    """Settings of :func:`solve_batch`.
+
+    window_s: length (s) of the windows each target track is cut into; 0 = one window per
+        distinct instant (synchronous sensors). degree: polynomial degree of the position in a
+        window. max_iterations: per phase. tolerance: stop when the predicted reduction of the
+        sum of squares is below this (chi-square units).
+    """
+
+    window_s: float = 20.0
+    degree: int = 3
+    max_iterations: int = 100
+    tolerance: float = 1e-6
+
+    def __post_init__(self):
+        if not (np.isfinite(self.window_s) and self.window_s >= 0):
+            raise ValueError(f"window_s: expected a length >= 0 s, got {self.window_s}")
+        if int(self.degree) != self.degree or not 0 <= self.degree <= 3:
+            raise ValueError(f"degree: expected an integer 0..3, got {self.degree}")
+        if self.window_s == 0 and self.degree != 0:
+            object.__setattr__(self, "degree", 0)
+        if not self.max_iterations >= 1 or not self.tolerance > 0:
+            raise ValueError("max_iterations must be >= 1 and tolerance > 0")
+
+
+@dataclass
+class Fit:
+    """The solution of the least-squares problem and how it was reached."""
+
+    problem: FleetProblem
+    design: Design
+    x: np.ndarray
+    coef: np.ndarray
+    converged: bool
+    iterations: int
+    cost_history: list
+
+
+def levenberg_marquardt(design: Design, x, coef, free: np.ndarray, options: BatchOptions, relative: float = 0.0):
+    """Minimise the sum of squares over the free states and all coefficients from (x, coef).
+
+    Stops when the predicted reduction is below ``options.tolerance`` or ``relative`` times the
+    sum of squares. Returns (evaluation at the solution, converged, iterations, cost per accepted
+    step).
+    """
+    ev = evaluate(design, x, coef)
+    scale = design.scale[free]
+    determined = None
+    lam, nu = LAMBDA_START, 2.0
+    history, converged, it = [ev.cost], False, 0
+    for it in range(1, options.max_iterations + 1):
+        normal = normal_equations(design, ev)
+        if determined is None:  # structural: found once, at the start
+            determined = determined_directions(reduce(design.blocks, normal, 0.0).S[np.ix_(free, free)], scale)
+        accepted = False
+        while lam < LAMBDA_MAX:
+            dx, dc, pred = damped_step(design.blocks, normal, free, scale, determined, lam)
+            if pred < max(options.tolerance, relative * ev.cost) and lam <= 1.0:
+                converged = True
+                break
+            trial = evaluate(design, ev.x + dx, ev.coef + dc)
+            rho = (ev.cost - trial.cost) / pred if pred > 0 else -1.0
+            if np.isfinite(trial.cost) and rho > 0:
+                lam *= max(1.0 / 3.0, 1.0 - (2.0 * rho - 1.0) ** 3)
+                nu, ev, accepted = 2.0, trial, True
+                history.append(ev.cost)
+                break
+            lam, nu = lam * nu, nu * 2.0
+        if converged or not accepted:
+            break
+    return ev, converged, it, history
+
+
+def singular_blocks(design: Design, coef: np.ndarray) -> np.ndarray:
+    """Indices of the windows whose position is not determined by their plots and references:
+    the Jacobi-scaled block has an eigenvalue below SINGULAR_BLOCK times its largest."""
+    normal = normal_equations(design, evaluate(design, np.zeros(design.n_state), coef))
+    V = masked_blocks(design.blocks, normal.V)
+    q = V.shape[1]
+    d = np.sqrt(np.abs(V[:, np.arange(q), np.arange(q)])) + 1e-300
+    scaled = V / d[:, :, None] / d[:, None, :]
+    w = np.linalg.eigvalsh(0.5 * (scaled + scaled.transpose(0, 2, 1)))
+    return np.flatnonzero(~(w[:, 0] > SINGULAR_BLOCK * w[:, -1]))
+
+
+def _exclude_singular(problem: FleetProblem, design: Design, bad: np.ndarray) -> FleetProblem:
+    blk = design.blocks
+    drop = np.zeros(problem.n_plots, dtype=bool)
+    exclusions = []
+    for b in bad:
+        end = blk.block_start[b + 1] if b + 1 < blk.n_blocks else blk.order.size
+        plots = blk.order[blk.block_start[b]:end]
+        drop[plots] = True
+        sensors = sorted({problem.sensor_ids[s] for s in problem.sensor[plots]})
+        t = problem.time[plots]
+        exclusions.append(Exclusion(problem.target_ids[blk.block_target[b]],
+                                    f"singular geometry: its position is not determined by the plots of "
+                                    f"{', '.join(sensors)} in this window", int(plots.size), float(t.min()), float(t.max())))
+    return problem.drop_plots(drop, exclusions)
+
+
+def fit(problem: FleetProblem, options: BatchOptions | None = None) -> Fit:
+    """Solve the batch problem (module docstring); windows of singular geometry are set aside."""
+    options = options or BatchOptions()
+    if problem.n_plots == 0:
+        raise ValueError("no plots to register (every target was excluded: " + "; ".join(e.text() for e in problem.excluded) + ")")
+    design = make_design(problem, make_blocks(problem, options.window_s, options.degree))
+    coef = initial_coefficients(design)
+    bad = singular_blocks(design, coef)
+    if bad.size:
+        problem = _exclude_singular(problem, design, bad)
+        return fit(problem, options)
+    x = np.zeros(design.n_state)
+    ev, _, it1, hist1 = levenberg_marquardt(design, x, coef, np.zeros(0, dtype=np.int64), options, TARGETS_FIRST)
+    ev, converged, it2, hist2 = levenberg_marquardt(design, ev.x, ev.coef, problem.layout.free, options)
+    return Fit(problem, design, ev.x, ev.coef, converged, it1 + it2, hist1 + hist2[1:])

@@ -1,0 +1,106 @@
+"""Long-form input tables of fleet registration: their columns, units and defaults, and the reading
+of a pandas DataFrame or a mapping of column name -> array into checked numpy columns.
+
+Every table is long form, one row per item; SI units and radians (docs/conventions.md):
+
+* ``platforms`` (optional): ``platform`` id; the prior standard deviations of its attitude errors
+  ``prior_heading``, ``prior_pitch``, ``prior_roll`` (rad; missing or ``inf`` = no prior, 0 = the
+  error is known to be zero and is held fixed).
+* ``sensors``: ``sensor`` id, ``platform`` id; the noise standard deviation of each measured
+  channel ``sigma_range`` (m), ``sigma_bearing``, ``sigma_elevation`` (rad), NaN or missing = the
+  channel is not measured; the prior standard deviations of the biases ``prior_range`` (m),
+  ``prior_bearing``, ``prior_elevation`` (rad; same meaning as the platform priors); the lever arm
+  ``lever_x``, ``lever_y``, ``lever_z`` (m, deck frame: starboard, bow, up; default 0).
+* ``navigation``: ``platform``, ``time`` (s), ``lat``, ``lon`` (rad), ``alt`` (m), ``heading``,
+  ``pitch``, ``roll`` (rad) as reported (true + attitude error). A platform with one row is a
+  fixed site (its time is not used); otherwise the rows are interpolated to the plot times.
+* ``plots``: ``time`` (s), ``sensor``, ``target``, ``range`` (m), ``bearing``, ``elevation`` (rad);
+  NaN (or a missing column) = not measured.
+* ``references`` (optional): ``target``, ``time`` (s) and the known position either as ECEF
+  ``x``, ``y``, ``z`` (m) or geodetic ``lat``, ``lon`` (rad), ``alt`` (m); ``sigma`` (m, standard
+  deviation per axis of the known position, default :data:`DEFAULT_REFERENCE_SIGMA`).
+"""
+
+from __future__ import annotations
+
+from typing import Mapping
+
+import numpy as np
+
+from registration.core.validation import as_float_array
+
+__all__ = ["Table", "read_table", "CHANNELS", "CHANNEL_UNITS", "ATTITUDE_ERRORS", "NAV_COLUMNS",
+           "DEFAULT_REFERENCE_SIGMA"]
+
+#: The measured channels, in plot order, and their units.
+CHANNELS = ("range", "bearing", "elevation")
+CHANNEL_UNITS = ("m", "rad", "rad")
+#: A platform's attitude errors, in state order.
+ATTITUDE_ERRORS = ("heading", "pitch", "roll")
+#: Navigation columns, in the order the generated functions take them.
+NAV_COLUMNS = ("lat", "lon", "alt", "heading", "pitch", "roll")
+#: Standard deviation per axis (m) of a reference position when the table gives none.
+DEFAULT_REFERENCE_SIGMA = 1.0
+
+
+class Table:
+    """One input table as numpy columns, with errors that name the table, column and row."""
+
+    def __init__(self, name: str, columns: dict[str, np.ndarray], n_rows: int):
+        self.name = name
+        self.columns = columns
+        self.n_rows = n_rows
+
+    def has(self, column: str) -> bool:
+        return column in self.columns
+
+    def ids(self, column: str) -> np.ndarray:
+        """An id column as strings (ids may be given as numbers or strings)."""
+        return np.asarray(self.require(column)).astype(str)
+
+    def floats(self, column: str, default: float | None = None) -> np.ndarray:
+        """A numeric column as float64; ``default`` fills a missing column (None: it is required)."""
+        if column not in self.columns:
+            if default is None:
+                self.require(column)
+            return np.full(self.n_rows, float(default))
+        values = self.columns[column]
+        if values.dtype == bool or values.dtype.kind in "OUS" and any(isinstance(v, (str, bool)) for v in values):
+            raise ValueError(f"{self.name}: column {column!r} must hold numbers, got {values.dtype} values")
+        return as_float_array(f"{self.name}.{column}", values).reshape(self.n_rows)
+
+    def require(self, column: str) -> np.ndarray:
+        """The raw column; ValueError naming the table and its columns when it is missing."""
+        if column not in self.columns:
+            raise ValueError(f"{self.name}: missing column {column!r} (columns: {sorted(self.columns)})")
+        return self.columns[column]
+
+    def error(self, row: int, message: str) -> ValueError:
+        """The error for one bad row: ``<table> row R: message``."""
+        return ValueError(f"{self.name} row {row}: {message}")
+
+
+def read_table(name: str, table, required: tuple[str, ...] = ()) -> Table:
+    """A pandas DataFrame or a mapping of column name -> 1-D array (equal lengths) as a :class:`Table`."""
+    if table is None:
+        raise ValueError(f"{name}: a table is required")
+    if hasattr(table, "to_dict") and hasattr(table, "columns") and not isinstance(table, Mapping):
+        table = {str(c): table[c].to_numpy() for c in table.columns}
+    if not isinstance(table, Mapping):
+        raise ValueError(f"{name}: expected a pandas DataFrame or a mapping of column -> array, got {type(table).__name__}")
+    columns, n = {}, None
+    for key, values in table.items():
+        arr = np.asarray(values)
+        if arr.ndim == 0:
+            raise ValueError(f"{name}: column {key!r} is a scalar; give one value per row")
+        if arr.ndim != 1:
+            raise ValueError(f"{name}: column {key!r} must be 1-D, got shape {arr.shape}")
+        if n is None:
+            n = arr.shape[0]
+        elif arr.shape[0] != n:
+            raise ValueError(f"{name}: column {key!r} has {arr.shape[0]} rows, other columns have {n}")
+        columns[str(key)] = arr
+    out = Table(name, columns, n or 0)
+    for column in required:
+        out.require(column)
+    return out
