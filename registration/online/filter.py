@@ -19,12 +19,13 @@ from registration.online.contract import (
     row_from_mapping,
 )
 
-__all__ = ["OnlineRegistrar", "ROW_LOW", "ROW_HIGH"]
+__all__ = ["OnlineRegistrar", "ROW_LOW", "ROW_HIGH", "STEP_CARRY"]
 
 _OK, _OUT_OF_BOUNDS = int(_codegen.StepCode.OK), int(_codegen.StepCode.OUT_OF_BOUNDS)
 _ROW_SHAPE, _F64 = (N_ROW,), np.dtype(np.float64)
 
-_CARRY = {"x": "x_new", "P": "P_new", "info": "info_new"}
+#: The Kalman step's carried inputs and the outputs they take from the previous step.
+STEP_CARRY = {"x": "x_new", "P": "P_new", "info": "info_new"}
 _DELIVER = ("x_new", "P_new", "nu", "S", "nis")
 #: Element-wise bounds of a row for the compiled pre-check of :meth:`OnlineRegistrar.update`: the
 #: contract's LIMITS, and for ranges [smallest normal float, largest finite float] so that NaN, inf
@@ -109,7 +110,7 @@ class OnlineRegistrar:
         return dev.T @ dev / len(est) + self._q_fixed
 
     def _make_stepper(self):
-        stepper = self._step.stepper(_CARRY, "row", low=ROW_LOW, high=ROW_HIGH, finite=("x_new", "P_new"),
+        stepper = self._step.stepper(STEP_CARRY, "row", low=ROW_LOW, high=ROW_HIGH, finite=("x_new", "P_new"),
                                      deliver=_DELIVER)
         for name, value in (("x", self.x), ("P", self.P), ("info", self.info), ("Q", self._q_fixed),
                             ("sigma0", self._sigma0)):
@@ -177,13 +178,13 @@ class OnlineRegistrar:
         """Fixed Q: one compiled loop; only the last information matrix is kept unless a row fails."""
         k = len(rows)
         inputs = {"x": self.x, "P": self.P, "info": self.info, "Q": self._q_fixed, "row": rows, "sigma0": self._sigma0}
-        out = self._step.scan(k, _CARRY, inputs, keep_last=("info_new",))
+        out = self._step.scan(k, STEP_CARRY, inputs, keep_last=("info_new",))
         x, P = out["x_new"], out["P_new"]
         ok = np.isfinite(x).all(axis=1) & np.isfinite(P).all(axis=(1, 2))
         if ok.all() and np.isfinite(out["info_new"]).all():
             n, info = k, out["info_new"]
         else:  # rare: find the first failing row with every step's information
-            out = self._step.scan(k, _CARRY, inputs)
+            out = self._step.scan(k, STEP_CARRY, inputs)
             ok &= np.isfinite(out["info_new"]).all(axis=(1, 2))
             n = int(np.argmax(~ok))
             info = out["info_new"][n - 1] if n else self.info

@@ -7,15 +7,16 @@ docstring, and is not tuned to reproduce any printed number.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from registration import _codegen
 from registration.core.angles import wrap_angle
-from registration.online.contract import N_STATE, STATE_NAMES
+from registration.online.contract import N_ROW, N_STATE, ROW_COLUMNS, SENSOR_COLUMNS, SENSOR_ROW, SENSORS, STATE_NAMES
 
-__all__ = ["ShipMotion", "Scenario", "paper_scenario", "PAPER_TABLE1"]
+__all__ = ["ShipMotion", "Scenario", "ScenarioRuns", "paper_scenario", "paper_scenarios", "PAPER_TABLE1"]
 
 #: Table 1 of Wang et al. 2011 (metres): X_A - X_B per ECEF axis before and after registration.
 PAPER_TABLE1 = {
@@ -66,19 +67,23 @@ def _dead_reckon(lat0, lon0, alt, course, speed, dt, substeps=10):
     """Integrate a track over the ellipsoid. course (K,) rad clockwise from north, speed (K,) m/s.
 
     Returns lat, lon (K,) at the sample instants; latitude and longitude rates use the WGS-84
-    radii of curvature (generated function ``radii_of_curvature``).
+    radii of curvature (generated function ``radii_of_curvature``). The steps are sequential
+    (each uses the radii at its start), so :func:`paper_scenarios` runs this once per scenario
+    configuration and caches the tracks.
     """
-    radii = _codegen.get("radii_of_curvature")
+    radii = _codegen.get("radii_of_curvature").bind()
     k = len(course)
     lat, lon = np.empty(k), np.empty(k)
     la, lo = float(lat0), float(lon0)
     h = dt / substeps
     for i in range(k):
         lat[i], lon[i] = la, lo
-        M, N = radii(la)[0][0]  # constant to ~1e-7 over one step (< 200 m of latitude)
+        M, N = radii(la)[0]  # constant to ~1e-7 over one step (< 200 m of latitude)
+        dla = speed[i] * np.cos(course[i]) * h / (M + alt[i])  # the same in every substep
+        east, radius = speed[i] * np.sin(course[i]) * h, N + alt[i]
         for _ in range(substeps):
-            la += speed[i] * np.cos(course[i]) * h / (M + alt[i])
-            lo += speed[i] * np.sin(course[i]) * h / ((N + alt[i]) * np.cos(la))
+            la += dla
+            lo += east / (radius * np.cos(la))
     return lat, lon
 
 
@@ -111,8 +116,8 @@ def _paper_target(t: np.ndarray, dt: float) -> tuple[np.ndarray, np.ndarray, np.
     return tgt_lat, tgt_lon, tgt_alt
 
 
-def _ship_plots(prefix, ship, t, dt, p_target_ecef, errors, sigmas, rng, *, ship_motion, antenna_height, t_variant):
-    """One ship's data-contract columns (measured, with errors and noise) and its truth."""
+def _ship_truth(prefix, ship, t, dt, p_target_ecef, *, ship_motion, antenna_height, t_variant) -> dict:
+    """One ship's true track (rad, m), attitude (rad) and the true plot of the target (m, rad)."""
     n_steps = len(t)
     ones = np.ones(n_steps)
     alt = antenna_height * ones
@@ -123,25 +128,86 @@ def _ship_plots(prefix, ship, t, dt, p_target_ecef, errors, sigmas, rng, *, ship
     else:
         pitch, roll = ship_motion.angles(t, ship["phase"])
     plot = _codegen.get(f"ecef2plot_{t_variant}")(p_target_ecef, lat, lon, alt, heading, pitch, roll)[0]
-    noise = rng.normal(size=(n_steps, 3)) * sigmas
-    measured = plot + [errors["range"], errors["bearing"], errors["elevation"]] + noise
-    data = {
+    return {
         f"{prefix}_lat": lat, f"{prefix}_lon": lon, f"{prefix}_alt": alt,
-        f"{prefix}_heading": wrap_angle(heading + errors["heading"]),
-        f"{prefix}_pitch": pitch + errors["pitch"], f"{prefix}_roll": roll + errors["roll"],
-        f"{prefix}_range": measured[:, 0],
-        f"{prefix}_bearing": wrap_angle(measured[:, 1]),
-        f"{prefix}_elevation": measured[:, 2],
-    }
-    truth = {
         f"{prefix}_heading": heading, f"{prefix}_pitch": pitch, f"{prefix}_roll": roll,
         f"{prefix}_plot": plot, f"{prefix}_p_ecef": _codegen.get("geodetic2ecef")(lat, lon, alt)[0],
     }
-    return data, truth
 
 
-def paper_scenario(
-    seed: int = 0,
+@functools.lru_cache(maxsize=8, typed=True)
+def _geometry(n_steps: int, dt: float, ship_motion, antenna_height: float, t_variant: str) -> dict:
+    """Everything that does not depend on the errors and the noise: time (s), the target's and the
+    ships' true tracks, attitudes and plots. Cached per configuration (read-only arrays)."""
+    t = np.arange(n_steps) * dt
+    tgt_lat, tgt_lon, tgt_alt = _paper_target(t, dt)
+    p_target_ecef = _codegen.get("geodetic2ecef")(tgt_lat, tgt_lon, tgt_alt)[0]
+    geo = {"time": t, "p_target_ecef": p_target_ecef, "target_lat": tgt_lat, "target_lon": tgt_lon, "target_alt": tgt_alt}
+    for prefix, ship in _PAPER_SHIPS.items():
+        geo.update(_ship_truth(prefix, ship, t, dt, p_target_ecef, ship_motion=ship_motion,
+                               antenna_height=antenna_height, t_variant=t_variant))
+    for a in geo.values():
+        a.flags.writeable = False
+    return geo
+
+
+def _measured_rows(geo: dict, errors: dict, sigmas: np.ndarray, noise: dict) -> np.ndarray:
+    """Measured rows (R, K, 18) in contract order: navigation exact, attitude plus its errors,
+    plots plus biases plus ``noise[prefix]`` (R, K, 3) standard normal draws scaled by ``sigmas``."""
+    runs, k = next(iter(noise.values())).shape[:2]
+    rows = np.empty((runs, k, N_ROW))
+    for prefix in SENSORS:
+        col = {c: SENSOR_ROW[prefix].start + j for j, c in enumerate(SENSOR_COLUMNS)}
+        rows[:, :, col["lat"]] = geo[f"{prefix}_lat"]
+        rows[:, :, col["lon"]] = geo[f"{prefix}_lon"]
+        rows[:, :, col["alt"]] = geo[f"{prefix}_alt"]
+        rows[:, :, col["heading"]] = wrap_angle(geo[f"{prefix}_heading"] + errors["heading"])
+        rows[:, :, col["pitch"]] = geo[f"{prefix}_pitch"] + errors["pitch"]
+        rows[:, :, col["roll"]] = geo[f"{prefix}_roll"] + errors["roll"]
+        measured = geo[f"{prefix}_plot"] + [errors["range"], errors["bearing"], errors["elevation"]] + noise[prefix] * sigmas
+        rows[:, :, col["range"]] = measured[..., 0]
+        rows[:, :, col["bearing"]] = wrap_angle(measured[..., 1])
+        rows[:, :, col["elevation"]] = measured[..., 2]
+    return rows
+
+
+@dataclass
+class ScenarioRuns:
+    """Runs of one scenario configuration that differ only in their noise (one seed per run).
+
+    ``rows`` (R, K, 18): each run's measured rows in contract order (SI units, radians); ``time``
+    (K,) s; ``truth`` the true tracks and plots, the same in every run; ``truth_state``, ``sigma0``
+    and ``description`` as in :class:`Scenario` (the description without the seed).
+    """
+
+    seeds: tuple
+    time: np.ndarray
+    rows: np.ndarray
+    truth_state: np.ndarray
+    truth: dict
+    sigma0: np.ndarray
+    description: dict
+
+    def scenario(self, i: int) -> Scenario:
+        """Run ``i`` as a :class:`Scenario` (its own copies of every array)."""
+        data = {"time": np.array(self.time)}
+        data.update({c: self.rows[i, :, j].copy() for j, c in enumerate(ROW_COLUMNS)})
+        return Scenario(data=data, truth_state=self.truth_state.copy(), truth={k: np.array(v) for k, v in self.truth.items()},
+                        sigma0=self.sigma0.copy(), description={"seed": self.seeds[i], **self.description})
+
+
+def _check_arguments(n_steps, dt, angles: dict) -> None:
+    if n_steps < 2:
+        raise ValueError("n_steps: need at least 2 measurement pairs")
+    if not dt > 0:
+        raise ValueError("dt: must be > 0 s")
+    for name, v in angles.items():
+        if abs(v) > np.radians(20):
+            raise ValueError(f"{name}: {v} rad is implausibly large (pass radians, not degrees)")
+
+
+def paper_scenarios(
+    seeds,
     *,
     n_steps: int = 300,
     dt: float = 1.0,
@@ -154,7 +220,44 @@ def paper_scenario(
     ship_motion: ShipMotion | None = None,
     antenna_height: float = 20.0,
     t_variant: str = "standard",
-) -> Scenario:
+) -> ScenarioRuns:
+    """:func:`paper_scenario` for every seed of ``seeds`` at once, as :class:`ScenarioRuns`.
+
+    Run ``i`` holds bit for bit the rows of ``paper_scenario(seeds[i], ...)``. The tracks and the
+    true plots are computed once per configuration (and cached); per seed only the noise is drawn.
+    """
+    _check_arguments(n_steps, dt, {"angle_sigma": angle_sigma, "angle_bias": angle_bias,
+                                   "heading_error": heading_error, "level_error": level_error})
+    seeds = tuple(seeds)
+    try:
+        geo = _geometry(n_steps, dt, ship_motion, antenna_height, t_variant)
+    except TypeError:  # an unhashable ship motion: not cached
+        geo = _geometry.__wrapped__(n_steps, dt, ship_motion, antenna_height, t_variant)
+    errors = {
+        "heading": heading_error, "pitch": level_error, "roll": level_error,
+        "range": range_bias, "bearing": angle_bias, "elevation": angle_bias,
+    }
+    truth_state = np.array([errors[k] for k in ("heading", "pitch", "roll", "range", "bearing", "elevation")] * 2)
+    assert truth_state.shape == (N_STATE,)
+    sigmas = np.array([range_sigma, angle_sigma, angle_sigma])
+    noise = {p: np.empty((len(seeds), n_steps, 3)) for p in SENSORS}
+    for r, seed in enumerate(seeds):
+        rng = np.random.default_rng(seed)
+        for p in SENSORS:  # ship A's draws, then ship B's
+            noise[p][r] = rng.normal(size=(n_steps, 3))
+    truth = {k: geo[k] for k in ("p_target_ecef", "target_lat", "target_lon", "target_alt")}
+    for p in SENSORS:
+        truth.update({f"{p}_{k}": geo[f"{p}_{k}"] for k in ("heading", "pitch", "roll", "plot", "p_ecef")})
+    description = {
+        "n_steps": n_steps, "dt_s": dt, "angle_sigma_rad": angle_sigma, "range_sigma_m": range_sigma,
+        "ship_motion": None if ship_motion is None else ship_motion.__dict__, "t_variant": t_variant,
+        "truth": dict(zip(STATE_NAMES, truth_state.tolist())),
+    }
+    return ScenarioRuns(seeds=seeds, time=geo["time"], rows=_measured_rows(geo, errors, sigmas, noise),
+                        truth_state=truth_state, truth=truth, sigma0=np.tile(sigmas, 2), description=description)
+
+
+def paper_scenario(seed: int = 0, **kwargs) -> Scenario:
     """The paper's scenario (Wang et al. 2011, section 4), with our own documented target trajectory.
 
     Ships (true values; navigation is exact, as the paper assumes high-precision GPS):
@@ -174,40 +277,12 @@ def paper_scenario(
     60 deg, straight for 60 s, then a 2 deg/s left turn back to 240 deg (turn radius 5.7 km). It
     stays 40-75 km from both ships, at 1.5-5 deg elevation, inside both radars' coverage.
 
-    ``n_steps`` synchronous measurement pairs at ``dt`` s (paper: 300 at 1 s). Returns a
-    :class:`Scenario` whose ``data`` follows the registration data contract (SI units, radians):
-    ``time`` and, per prefix ``a_``/``b_``: lat, lon, alt, heading, pitch, roll (measured, i.e.
-    with attitude errors), range, bearing, elevation (measured: true + bias + noise).
+    ``n_steps`` synchronous measurement pairs at ``dt`` s (paper: 300 at 1 s). Keyword arguments
+    (defaults in :func:`paper_scenarios`): ``n_steps``, ``dt``, ``angle_sigma``, ``range_sigma``,
+    ``range_bias``, ``angle_bias``, ``heading_error``, ``level_error``, ``ship_motion``,
+    ``antenna_height``, ``t_variant``. Returns a :class:`Scenario` whose ``data`` follows the
+    registration data contract (SI units, radians): ``time`` and, per prefix ``a_``/``b_``: lat,
+    lon, alt, heading, pitch, roll (measured, i.e. with attitude errors), range, bearing,
+    elevation (measured: true + bias + noise).
     """
-    if n_steps < 2:
-        raise ValueError("n_steps: need at least 2 measurement pairs")
-    if not dt > 0:
-        raise ValueError("dt: must be > 0 s")
-    for name, v in (("angle_sigma", angle_sigma), ("angle_bias", angle_bias), ("heading_error", heading_error), ("level_error", level_error)):
-        if abs(v) > np.radians(20):
-            raise ValueError(f"{name}: {v} rad is implausibly large (pass radians, not degrees)")
-    rng = np.random.default_rng(seed)
-    t = np.arange(n_steps) * dt
-    tgt_lat, tgt_lon, tgt_alt = _paper_target(t, dt)
-    p_target_ecef = _codegen.get("geodetic2ecef")(tgt_lat, tgt_lon, tgt_alt)[0]
-    errors = {
-        "heading": heading_error, "pitch": level_error, "roll": level_error,
-        "range": range_bias, "bearing": angle_bias, "elevation": angle_bias,
-    }
-    truth_state = np.array([errors[k] for k in ("heading", "pitch", "roll", "range", "bearing", "elevation")] * 2)
-    assert truth_state.shape == (N_STATE,)
-    data = {"time": t}
-    truth = {"p_target_ecef": p_target_ecef, "target_lat": tgt_lat, "target_lon": tgt_lon, "target_alt": tgt_alt}
-    sigmas = np.array([range_sigma, angle_sigma, angle_sigma])
-    for prefix, ship in _PAPER_SHIPS.items():
-        ship_data, ship_truth = _ship_plots(prefix, ship, t, dt, p_target_ecef, errors, sigmas, rng,
-                                            ship_motion=ship_motion, antenna_height=antenna_height, t_variant=t_variant)
-        data.update(ship_data)
-        truth.update(ship_truth)
-    sigma0 = np.tile(sigmas, 2)
-    description = {
-        "seed": seed, "n_steps": n_steps, "dt_s": dt, "angle_sigma_rad": angle_sigma, "range_sigma_m": range_sigma,
-        "ship_motion": None if ship_motion is None else ship_motion.__dict__, "t_variant": t_variant,
-        "truth": dict(zip(STATE_NAMES, truth_state.tolist())),
-    }
-    return Scenario(data=data, truth_state=truth_state, truth=truth, sigma0=sigma0, description=description)
+    return paper_scenarios((seed,), **kwargs).scenario(0)
