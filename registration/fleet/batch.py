@@ -29,6 +29,13 @@ def _residual_table(fit_, ev) -> np.ndarray:
     return out
 
 
+def _per_input_row(problem: FleetProblem, values: np.ndarray) -> np.ndarray:
+    """Per-plot ``values`` placed at the plots' input rows ('' for excluded rows)."""
+    out = np.full(problem.n_input_plots, "", dtype=values.dtype if values.size else str)
+    out[problem.row] = values
+    return out
+
+
 def _chi_square(fit_, ev) -> ChiSquareCheck:
     design, layout = fit_.design, fit_.problem.layout
     n_values = int(np.count_nonzero(design.weight)) + 3 * design.ref_p.shape[0]
@@ -71,5 +78,7 @@ def solve_batch(problem: FleetProblem, options: BatchOptions | None = None) -> B
         chi_square=_chi_square(fit_, sol.evaluation), observability=report, excluded=problem.excluded,
         information=sol.information_data, free_names=tuple(layout.names[i] for i in free), scale=scale,
         undetermined=undetermined, converged=fit_.converged, iterations=fit_.iterations,
+        plot_target=_per_input_row(problem, np.array(problem.target_ids, dtype=str)[problem.target]),
+        plot_sensor=_per_input_row(problem, np.array(problem.sensor_ids, dtype=str)[problem.sensor]),
         cost_history=fit_.cost_history,
     )

@@ -100,10 +100,12 @@ def _window_keys(target, time, ref_target, ref_time, n_targets: int, window_s: f
 
 def _instant_keys(target, time, ref_target, ref_time):
     """One key per distinct (target, time) instant (window_s = 0), shared by plots and references."""
-    tg = np.r_[target, ref_target]
+    tg = np.r_[target, ref_target].astype(np.int64)
     rounded = np.round(np.r_[time, ref_time] / SAME_INSTANT_S).astype(np.int64)
-    _, key = np.unique(np.stack([tg, rounded]), axis=1, return_inverse=True)
-    key = key.reshape(-1)
+    order = np.lexsort((rounded, tg))
+    new = np.r_[True, (np.diff(tg[order]) != 0) | (np.diff(rounded[order]) != 0)]
+    key = np.empty(tg.size, dtype=np.int64)
+    key[order] = np.cumsum(new) - 1
     return key[: time.size], key[time.size:]
 
 
@@ -126,8 +128,10 @@ def _block_geometry(problem: FleetProblem, window_s: float, degree: int):
     b_target = target[first]
     w = uniq - offset[b_target]
     centre = t0[b_target] + (w + 0.5) * length[b_target]
-    distinct = np.unique(np.stack([block, np.round(time / SAME_INSTANT_S).astype(np.int64)]), axis=1)[0]
-    n_times = np.bincount(distinct, minlength=uniq.size)
+    ticks = np.round(time / SAME_INSTANT_S).astype(np.int64)
+    order = np.lexsort((ticks, block))
+    first_of_instant = np.r_[True, (np.diff(block[order]) != 0) | (np.diff(ticks[order]) != 0)]
+    n_times = np.bincount(block[order][first_of_instant], minlength=uniq.size)
     return block, ref_block, b_target, centre, 0.5 * length[b_target], np.minimum(degree, n_times - 1)
 
 

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from registration.core.observability import UNOBSERVABLE_BELOW
-from registration.fleet.normal import evaluate, normal_equations, positions
+from registration.fleet.normal import positions
 from registration.fleet.schur import Reduced, reduce
 
 __all__ = ["FusedTargets", "Solution", "solution_information", "state_covariance", "fused_targets"]
@@ -58,8 +58,8 @@ class Solution:
 
 
 def solution_information(fit) -> Solution:
-    ev = evaluate(fit.design, fit.x, fit.coef)
-    normal = normal_equations(fit.design, ev)
+    """The information at the solution (from the fit's own residuals and normal equations)."""
+    ev, normal = fit.evaluation, fit.normal
     red = reduce(fit.design.blocks, normal, 0.0)
     free = fit.problem.layout.free
     S = red.S[np.ix_(free, free)]

@@ -70,6 +70,8 @@ class BatchResult:
     undetermined: np.ndarray  # (n_free, k) directions left out of the covariance, scaled by ``scale``
     converged: bool
     iterations: int
+    plot_target: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=str))  # (input rows,)
+    plot_sensor: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=str))  # (input rows,)
     cost_history: list = field(default_factory=list)
 
     def value(self, name: str) -> float:
@@ -91,6 +93,24 @@ class BatchResult:
         if lean > 0.01 * max(float(np.linalg.norm(a_scaled)), 1e-300):
             return value, float("inf")
         return value, float(np.sqrt(max(float(a @ self.covariance @ a), 0.0)))
+
+    def residual_check(self, by: str = "target") -> dict:
+        """Mean squared normalised residual per target (``by="target"``) or per sensor
+        (``by="sensor"``): {id: (mean, number of measured values)}. Where the model fits it is a
+        little below 1 (the fitted trajectory coefficients absorb part of the residuals: for a
+        target about ``1 - 3 x its coefficients / its values``); well above 1 points at that
+        target's track model (a window too long for its manoeuvres) or at that sensor's stated
+        noise or an unmodelled error."""
+        if by not in ("target", "sensor"):
+            raise ValueError(f"by: expected 'target' or 'sensor', got {by!r}")
+        ids = self.plot_target if by == "target" else self.plot_sensor
+        sq = np.nansum(self.residuals**2, axis=1)
+        n = np.sum(np.isfinite(self.residuals), axis=1)
+        out = {}
+        for key in np.unique(ids[n > 0]):
+            sel = (ids == key) & (n > 0)
+            out[str(key)] = (float(sq[sel].sum() / n[sel].sum()), int(n[sel].sum()))
+        return out
 
     def rows(self, truth: dict | None = None) -> list[dict]:
         """One dict per state: name, label, unit, estimate, sigma, status (and truth when given)."""

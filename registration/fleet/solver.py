@@ -8,7 +8,7 @@ Schur complement (:mod:`registration.fleet.schur`). Two phases, both from the sa
 
 1. the target windows alone, registration states held at zero, from the window means of the
    plot positions (:mod:`registration.fleet.initial`): the targets move to where the
-   unregistered sensors jointly put them (roughly: until a step gains less than 0.1 %);
+   unregistered sensors jointly put them (roughly: until a step gains less than 1 %);
 2. everything together.
 
 The solver stops when the predicted reduction of the sum of squares falls below ``tolerance``
@@ -23,7 +23,7 @@ import numpy as np
 
 from registration.fleet.blocks import make_blocks
 from registration.fleet.initial import initial_coefficients
-from registration.fleet.normal import Design, evaluate, make_design, normal_equations
+from registration.fleet.normal import Design, Evaluation, Normal, evaluate, make_design, normal_equations
 from registration.fleet.problem import Exclusion, FleetProblem
 from registration.fleet.schur import damped_step, determined_directions, masked_blocks, reduce
 
@@ -34,7 +34,7 @@ LAMBDA_MAX = 1e16
 #: A window whose Jacobi-scaled information has an eigenvalue below this is not determined.
 SINGULAR_BLOCK = 1e-10
 #: The first phase (targets alone) stops when a step would gain less than this share of the cost.
-TARGETS_FIRST = 1e-3
+TARGETS_FIRST = 1e-2
 
 
 @dataclass(frozen=True)
@@ -65,7 +65,8 @@ class BatchOptions:
 
 @dataclass
 class Fit:
-    """The solution of the least-squares problem and how it was reached."""
+    """The solution of the least-squares problem and how it was reached; ``evaluation`` and
+    ``normal`` are the residuals and the undamped normal equations at the solution."""
 
     problem: FleetProblem
     design: Design
@@ -74,22 +75,25 @@ class Fit:
     converged: bool
     iterations: int
     cost_history: list
+    evaluation: Evaluation
+    normal: Normal
 
 
-def levenberg_marquardt(design: Design, x, coef, free: np.ndarray, options: BatchOptions, relative: float = 0.0):
-    """Minimise the sum of squares over the free states and all coefficients from (x, coef).
+def levenberg_marquardt(design: Design, start: Evaluation, free: np.ndarray, options: BatchOptions,
+                        relative: float = 0.0, normal: Normal | None = None):
+    """Minimise the sum of squares over the free states and all coefficients from ``start``.
 
     Stops when the predicted reduction is below ``options.tolerance`` or ``relative`` times the
-    sum of squares. Returns (evaluation at the solution, converged, iterations, cost per accepted
-    step).
+    sum of squares. Returns (evaluation and normal equations at the solution, converged,
+    iterations, cost per accepted step). ``normal``: the normal equations at ``start`` if known.
     """
-    ev = evaluate(design, x, coef)
+    ev = start
     scale = design.scale[free]
     determined = None
     lam, nu = LAMBDA_START, 2.0
     history, converged, it = [ev.cost], False, 0
     for it in range(1, options.max_iterations + 1):
-        normal = normal_equations(design, ev)
+        normal = normal if normal is not None else normal_equations(design, ev)
         if determined is None:  # structural: found once, at the start
             determined = determined_directions(reduce(design.blocks, normal, 0.0).S[np.ix_(free, free)], scale)
         accepted = False
@@ -102,19 +106,19 @@ def levenberg_marquardt(design: Design, x, coef, free: np.ndarray, options: Batc
             rho = (ev.cost - trial.cost) / pred if pred > 0 else -1.0
             if np.isfinite(trial.cost) and rho > 0:
                 lam *= max(1.0 / 3.0, 1.0 - (2.0 * rho - 1.0) ** 3)
-                nu, ev, accepted = 2.0, trial, True
+                nu, ev, normal, accepted = 2.0, trial, None, True
                 history.append(ev.cost)
                 break
             lam, nu = lam * nu, nu * 2.0
         if converged or not accepted:
             break
-    return ev, converged, it, history
+    normal = normal if normal is not None else normal_equations(design, ev)
+    return ev, normal, converged, it, history
 
 
-def singular_blocks(design: Design, coef: np.ndarray) -> np.ndarray:
+def singular_blocks(design: Design, normal: Normal) -> np.ndarray:
     """Indices of the windows whose position is not determined by their plots and references:
     the Jacobi-scaled block has an eigenvalue below SINGULAR_BLOCK times its largest."""
-    normal = normal_equations(design, evaluate(design, np.zeros(design.n_state), coef))
     V = masked_blocks(design.blocks, normal.V)
     q = V.shape[1]
     d = np.sqrt(np.abs(V[:, np.arange(q), np.arange(q)])) + 1e-300
@@ -145,12 +149,12 @@ def fit(problem: FleetProblem, options: BatchOptions | None = None) -> Fit:
     if problem.n_plots == 0:
         raise ValueError("no plots to register (every target was excluded: " + "; ".join(e.text() for e in problem.excluded) + ")")
     design = make_design(problem, make_blocks(problem, options.window_s, options.degree))
-    coef = initial_coefficients(design)
-    bad = singular_blocks(design, coef)
+    start = evaluate(design, np.zeros(design.n_state), initial_coefficients(design))
+    normal = normal_equations(design, start)
+    bad = singular_blocks(design, normal)
     if bad.size:
-        problem = _exclude_singular(problem, design, bad)
-        return fit(problem, options)
-    x = np.zeros(design.n_state)
-    ev, _, it1, hist1 = levenberg_marquardt(design, x, coef, np.zeros(0, dtype=np.int64), options, TARGETS_FIRST)
-    ev, converged, it2, hist2 = levenberg_marquardt(design, ev.x, ev.coef, problem.layout.free, options)
-    return Fit(problem, design, ev.x, ev.coef, converged, it1 + it2, hist1 + hist2[1:])
+        return fit(_exclude_singular(problem, design, bad), options)
+    ev, normal, _, it1, hist1 = levenberg_marquardt(design, start, np.zeros(0, dtype=np.int64), options,
+                                                    TARGETS_FIRST, normal)
+    ev, normal, converged, it2, hist2 = levenberg_marquardt(design, ev, problem.layout.free, options, 0.0, normal)
+    return Fit(problem, design, ev.x, ev.coef, converged, it1 + it2, hist1 + hist2[1:], ev, normal)

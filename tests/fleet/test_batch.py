@@ -88,6 +88,17 @@ def test_fused_targets_and_residual_table(noisy):
     unmeasured = ~np.isfinite(sc.plots["range"])
     assert np.isnan(result.residuals[unmeasured, 0]).all() and np.isfinite(result.residuals[~unmeasured, 0]).all()
     assert 0.9 < np.nanstd(result.residuals) < 1.1
+    by_target, by_sensor = result.residual_check("target"), result.residual_check("sensor")
+    assert set(by_target) == set(sc.config.targets) and set(by_sensor) == set(sc.config.sensors)
+    assert all(0.8 < mean < 1.1 for mean, _ in list(by_target.values()) + list(by_sensor.values()))
+
+
+def test_a_window_too_long_for_the_manoeuvres_shows_in_the_residuals():
+    """At 1/100 of the noise, 60 s windows cannot follow the circling targets (a cubic over 50 deg
+    of T1's circle errs by several metres): their residuals stand out, the straight-flying T2's do not."""
+    sc = fleet_scenario(6, noise_scale=0.01, duration_s=120.0)
+    check = solve_batch(sc.problem(), BatchOptions(window_s=60.0)).residual_check("target")
+    assert check["T1"][0] > 3.0 and check["T5"][0] > 2.0 and check["T2"][0] < 1.3
 
 
 SITE = {"S": (0.0, 0.0, 50.0)}
