@@ -13,7 +13,7 @@ from registration import _codegen
 from registration.core.consistency import nees_interval
 from registration.online.contract import SENSORS
 
-__all__ = ["crlb_information", "nees_series", "crlb_from_information"]
+__all__ = ["crlb_information", "nees_series", "crlb_from_information", "quadratic_forms"]
 
 
 def crlb_information(scenario, sigma0=None, t_variant: str | None = None) -> np.ndarray:
@@ -47,8 +47,53 @@ def nees_series(err: np.ndarray, P: np.ndarray, T: np.ndarray) -> np.ndarray:
     (m, n) the directions. Returns (runs, K).
     """
     e = err @ T.T
-    C = np.einsum("qi,rkij,pj->rkqp", T, P, T, optimize=True)
+    C = quadratic_forms(P, T)
     return np.einsum("rkq,rkq->rk", e, np.linalg.solve(C, e[..., None])[..., 0])
+
+
+def _unit_rows(T: np.ndarray):
+    """For T whose rows each hold one or two entries equal to 1 and zeros elsewhere: the first and
+    last column of each row's ones and whether it has two; None for any other T."""
+    ones = T == 1.0
+    counts = ones.sum(axis=1)
+    if T.ndim != 2 or not ((ones | (T == 0.0)).all() and ((counts == 1) | (counts == 2)).all()):
+        return None
+    first = np.argmax(ones, axis=1)
+    last = T.shape[1] - 1 - np.argmax(ones[:, ::-1], axis=1)
+    return first, last, counts == 2
+
+
+def quadratic_forms(P: np.ndarray, T: np.ndarray, *, diagonal: bool = False) -> np.ndarray:
+    """``T P T^T`` for a stack of finite matrices P (..., n, n) and directions T (m, n): (..., m, m),
+    or only its diagonal (..., m) (the variances along the directions, in P's units).
+
+    Directions that are single states or sums of two (rows of T holding one or two ones) are
+    gathered and added: each stage of ``numpy.einsum('qi,...ij,pj->...qp', T, P, T, optimize=True)``
+    (over i, then over j) adds at most two non-zero terms, so the result is the einsum's bit for
+    bit, without its large intermediates. Any other T goes through that einsum.
+    """
+    T = np.asarray(T, dtype=float)
+    unit = _unit_rows(T) if T.size else None
+    if unit is None:
+        if diagonal:
+            return np.einsum("qi,...ij,qj->...q", T, P, T, optimize=True)
+        return np.einsum("qi,...ij,pj->...qp", T, P, T, optimize=True)
+    a, b, pair = unit
+    if diagonal:  # (P_aa + P_ba) + (P_ab + P_bb) for a sum, P_aa for a state
+        out = P[..., a, a]
+        if pair.any():
+            ap, bp = a[pair], b[pair]
+            out[..., pair] = (P[..., ap, ap] + P[..., bp, ap]) + (P[..., ap, bp] + P[..., bp, bp])
+        return out
+    # C_qp = (P[a_q, a_p] + P[b_q, a_p]) + (P[a_q, b_p] + P[b_q, b_p]), the b terms only for sums
+    C = P[..., a[:, None], a[None, :]]
+    if pair.any():
+        bq = b[pair][:, None]
+        C[..., pair, :] += P[..., bq, a[None, :]]
+        second = P[..., a[:, None], bq.T]
+        second[..., pair, :] += P[..., bq, bq.T]
+        C[..., pair] += second
+    return C
 
 
 def crlb_from_information(info_steps: np.ndarray, prior_sigma) -> np.ndarray:

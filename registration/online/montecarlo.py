@@ -16,13 +16,14 @@ from registration.core.consistency import nees_interval
 from registration.core.observability import observability_report
 from registration.online.config import RegistrationConfig
 from registration.online.contract import IS_ANGLE, N_STATE, STATE_LABELS, STATE_NAMES, STATE_UNITS, check_times
-from registration.online.crlb import crlb_from_information, crlb_information, nees_series
+from registration.online.crlb import crlb_from_information, crlb_information, nees_series, quadratic_forms
 from registration.online.mcresult import MonteCarloResult, Quantity
 from registration.online.result import identifiable_combinations
 from registration.online.runs import check_run_rows, filter_runs, information_at_estimates
 from registration.online.scenario import paper_scenarios
 
-__all__ = ["Quantity", "MonteCarloResult", "run_montecarlo", "crlb_information", "nees_interval", "nees_series", "parse_sum"]
+__all__ = ["Quantity", "MonteCarloResult", "run_montecarlo", "collect_runs", "summarise_runs", "crlb_information",
+           "nees_interval", "nees_series", "parse_sum"]
 
 
 def parse_sum(text: str) -> tuple[str, str]:
@@ -62,8 +63,15 @@ def _observability_counts(J: np.ndarray, x: np.ndarray, P: np.ndarray, prior_sig
     return status_counts, combo_counts
 
 
-def _collect_runs(runs: int, seed0: int, config, progress: bool, scenario_kwargs: dict) -> dict:
-    """Simulate and register every seed's run; keep errors, covariances, NIS, the CRLB and status counts."""
+def collect_runs(runs: int, seed0: int, config: RegistrationConfig | None, progress: bool, scenario_kwargs: dict) -> dict:
+    """Simulate and register every seed's run: what :func:`summarise_runs` needs.
+
+    Keys: ``time`` (K,) s; ``description`` of the scenario (without the seed); ``err`` (R, K, 12)
+    estimate - truth and ``P`` (R, K, 12, 12) the filter's covariances (rad, m); ``nis`` (R, K);
+    ``crlb`` (K, 12, 12) the Cramér-Rao bound; ``config`` the filter settings used;
+    ``status_counts`` (state -> {status: runs}) and ``combo_counts`` ((a, b) -> runs listing the
+    identifiable sum a + b), counted over the runs in seed order.
+    """
     sims = paper_scenarios(range(seed0, seed0 + runs), **scenario_kwargs)
     cfg = config if config is not None else RegistrationConfig(sigma0=tuple(sims.sigma0))
     check_times(sims.time)
@@ -134,14 +142,23 @@ def run_montecarlo(
     if "seed" in scenario_kwargs:
         raise ValueError("pass the first seed as seed0, not in the scenario arguments")
     sums_requested = [parse_sum(s) if isinstance(s, str) else parse_sum("+".join(s)) for s in extra_sums]
-    runs_data = _collect_runs(runs, seed0, config, progress, scenario_kwargs)
+    runs_data = collect_runs(runs, seed0, config, progress, scenario_kwargs)
+    return summarise_runs(runs_data, seed0, include_weak=include_weak, sums_requested=sums_requested,
+                          scenario_kwargs=scenario_kwargs)
+
+
+def summarise_runs(runs_data: dict, seed0: int, *, include_weak: bool = False, sums_requested=(),
+                   scenario_kwargs: dict | None = None) -> MonteCarloResult:
+    """The statistics of :func:`collect_runs`'s output (``sums_requested``: (name, name) pairs)."""
+    runs = len(runs_data["err"])
+    scenario_kwargs = scenario_kwargs or {}
     quantities, excluded = _select_quantities(runs, runs_data["status_counts"], runs_data["combo_counts"],
                                               include_weak, sums_requested)
     err, P, crlb = runs_data["err"], runs_data["P"], runs_data["crlb"]
     m = len(quantities)
     T = np.array([q.direction for q in quantities]).reshape(m, N_STATE)
     e_q = err @ T.T  # (runs, K, m)
-    var_q = np.einsum("qi,rkij,qj->rkq", T, P, T, optimize=True)
+    var_q = quadratic_forms(P, T, diagonal=True)  # T P T^T per run and step, as numpy.einsum gives it
     in_nees = np.array([q.in_nees for q in quantities], dtype=bool)
     m_nees = int(in_nees.sum())
     if m_nees:

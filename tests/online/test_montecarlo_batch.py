@@ -9,7 +9,7 @@ import pytest
 
 from registration.online import RegistrationConfig, register
 from registration.online.contract import DATA_COLUMNS, N_STATE, ROW_COLUMNS
-from registration.online.crlb import crlb_from_information, crlb_information
+from registration.online.crlb import crlb_from_information, crlb_information, quadratic_forms
 from registration.online.montecarlo import run_montecarlo
 from registration.online.runs import check_run_rows, filter_runs, information_at_estimates
 from registration.online.scenario import ShipMotion, paper_scenario, paper_scenarios
@@ -103,3 +103,18 @@ def test_montecarlo_equals_register_run_by_run():
     crlb = crlb_from_information(crlb_information(paper_scenario(SEEDS[0], **KW)), cfg.prior_sigma)
     np.testing.assert_array_equal(res.crlb_sigma, np.sqrt(np.clip(np.einsum("qi,kij,qj->kq", T, crlb, T), 0.0, None)))
     assert sum(res.status_counts["dr_a"].values()) == len(SEEDS)
+
+
+@pytest.mark.parametrize("rows", [[[3]], [[0, 4], [3], [6, 10]], [[1, 2], [0, 11]]])
+def test_quadratic_forms_of_states_and_sums_equal_the_einsum(rows):
+    """Gathered T P T^T equals numpy.einsum's bit for bit (each stage adds at most two terms)."""
+    rng = np.random.default_rng(2)
+    A = rng.normal(size=(4, 7, N_STATE, N_STATE)) * np.logspace(-8, 3, N_STATE)
+    P = A @ A.swapaxes(-1, -2)
+    T = np.zeros((len(rows), N_STATE))
+    for q, idx in enumerate(rows):
+        T[q, idx] = 1.0
+    np.testing.assert_array_equal(quadratic_forms(P, T), np.einsum("qi,rkij,pj->rkqp", T, P, T, optimize=True))
+    np.testing.assert_array_equal(quadratic_forms(P, T, diagonal=True), np.einsum("qi,rkij,qj->rkq", T, P, T, optimize=True))
+    W = T * 0.5  # any other direction goes through the einsum
+    np.testing.assert_array_equal(quadratic_forms(P, W), np.einsum("qi,rkij,pj->rkqp", W, P, W, optimize=True))
