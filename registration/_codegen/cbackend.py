@@ -111,6 +111,12 @@ def _pointer(a: np.ndarray) -> ctypes.c_void_p:
     return a.ctypes.data_as(ctypes.c_void_p)
 
 
+def _work_args(work: tuple) -> tuple:
+    """The work space of :meth:`CKernel.work_buffers` as ctypes arguments."""
+    arg, res, iw, w = work
+    return arg, res, _pointer(iw), _pointer(w)
+
+
 def _column_major(prepared) -> list[np.ndarray]:
     """Contiguous float64 copies (or views) of prepared inputs, matrices column-major per point."""
     out = []
@@ -136,10 +142,13 @@ class CKernel:
         self._scan = lib.registration_scan
         self._scan_runs = lib.registration_scan_runs
         self.work = work
-        self._arg = (ctypes.c_void_p * max(work["sz_arg"], 1))()
-        self._res = (ctypes.c_void_p * max(work["sz_res"], 1))()
-        self._iw = np.zeros(max(work["sz_iw"], 1), dtype=np.int64)
-        self._w = np.zeros(max(work["sz_w"], 1), dtype=np.float64)
+
+    def work_buffers(self) -> tuple:
+        """Fresh work space for one evaluation (arg, res, iw, w): calls never share it, so
+        threads may evaluate the same function at once."""
+        work = self.work
+        return ((ctypes.c_void_p * max(work["sz_arg"], 1))(), (ctypes.c_void_p * max(work["sz_res"], 1))(),
+                np.zeros(max(work["sz_iw"], 1), dtype=np.int64), np.zeros(max(work["sz_w"], 1), dtype=np.float64))
 
     def call(self, prepared, n: int, output_shapes) -> list[np.ndarray]:
         """Evaluate at ``n`` points (unbatched inputs broadcast with stride 0)."""
@@ -150,11 +159,12 @@ class CKernel:
         outs = [np.empty((n, r * c), dtype=np.float64) for r, c in output_shapes]
         out_ptr = (ctypes.c_void_p * len(outs))(*[b.ctypes.data for b in outs])
         out_stride = (ctypes.c_longlong * len(outs))(*[r * c for r, c in output_shapes])
+        work = self.work_buffers()  # referenced until the call returns
         flag = self._batch(
             self._fptr, ctypes.c_longlong(n),
             len(prepared), in_ptr, in_stride,
             len(outs), out_ptr, out_stride,
-            self._arg, self._res, _pointer(self._iw), _pointer(self._w),
+            *_work_args(work),
         )
         if flag:
             raise RuntimeError(f"generated function {self.name} failed with flag {flag}")
@@ -176,11 +186,12 @@ class CKernel:
         out_stride = (ctypes.c_longlong * n_out)(
             *[0 if last else r * c for last, (r, c) in zip(last_only, output_shapes)])
         scratch = np.empty(max(1, sum(sizes[:k])), dtype=np.float64)
+        work = self.work_buffers()
         failed = self._scan(
             self._fptr, ctypes.c_longlong(n),
             n_in, in_ptr, in_stride, carry_from, in_size,
             n_out, out_ptr, out_stride,
-            self._arg, self._res, _pointer(self._iw), _pointer(self._w), _pointer(scratch),
+            *_work_args(work), _pointer(scratch),
         )
         if failed:
             raise RuntimeError(f"generated function {self.name} failed at step {failed - 1}")
@@ -205,12 +216,13 @@ class CKernel:
         out_run = (ctypes.c_longlong * n_out)(*[b.shape[1] * b.shape[2] for b in outs])
         out_step = (ctypes.c_longlong * n_out)(*[0 if last else size for last, size in zip(last_only, sizes)])
         scratch = np.empty(max(1, sum(in_size[:k])), dtype=np.float64)
+        work = self.work_buffers()
         failed = self._scan_runs(
             self._fptr, ctypes.c_longlong(runs), ctypes.c_longlong(n),
             n_in, in_ptr, in_run, in_step, carry_from, in_size,
             n_out, out_ptr, out_run, out_step,
             (ctypes.c_void_p * n_in)(), (ctypes.c_void_p * n_out)(),
-            self._arg, self._res, _pointer(self._iw), _pointer(self._w), _pointer(scratch),
+            *_work_args(work), _pointer(scratch),
         )
         if failed:
             run, step = divmod(int(failed) - 1, n)
@@ -220,8 +232,8 @@ class CKernel:
     def point_caller(self, input_shapes, output_shapes) -> "PointCall":
         """A single-point caller of this function with preallocated buffers."""
         call = functools.partial(self._batch, self._fptr, ctypes.c_longlong(1))
-        return PointCall(self.name, call, input_shapes, output_shapes, self._arg, self._res,
-                         _pointer(self._iw), _pointer(self._w))
+        work = self.work_buffers()
+        return PointCall(self.name, call, input_shapes, output_shapes, work, *_work_args(work))
 
 
 class PointCall:
@@ -229,8 +241,9 @@ class PointCall:
     preallocated column-major buffers, one ctypes call, outputs returned as new arrays of their
     core shapes (floats for scalars)."""
 
-    def __init__(self, name, call, input_shapes, output_shapes, arg, res, iw, w):
+    def __init__(self, name, call, input_shapes, output_shapes, work, arg, res, iw, w):
         self.name = name
+        self._work = work  # kept alive: the call holds pointers into it
         self._input_shapes, self._output_shapes = list(input_shapes), list(output_shapes)
         self._in = [np.zeros(r * c) for r, c in self._input_shapes]
         self._out = [np.zeros(r * c) for r, c in self._output_shapes]

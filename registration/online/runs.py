@@ -51,9 +51,11 @@ def filter_runs(config: RegistrationConfig, rows: np.ndarray) -> dict:
               "sigma0": np.array(config.sigma0)}
     out = _codegen.get(config.step_name).scan_runs(runs, k, STEP_CARRY, inputs, keep_last=("info_new", "nu", "S"))
     x, P, info = out["x_new"], out["P_new"], out["info_new"]
-    ok = np.isfinite(x).all(axis=(1, 2)) & np.isfinite(P).all(axis=(1, 2, 3)) & np.isfinite(info).all(axis=(1, 2))
-    if not ok.all():
-        _one_run(config, rows, int(np.argmax(~ok)))  # raises, naming the row
+    with np.errstate(over="ignore", invalid="ignore"):  # a sum is finite when every term is (or it overflowed)
+        total = x.sum(axis=(1, 2)) + P.sum(axis=(1, 2, 3)) + info.sum(axis=(1, 2))
+    for r in np.flatnonzero(~np.isfinite(total)):
+        if not (np.isfinite(x[r]).all() and np.isfinite(P[r]).all() and np.isfinite(info[r]).all()):
+            _one_run(config, rows, int(r))  # raises, naming the row
     return {"x": x, "P": P, "nis": out["nis"], "info": info}
 
 

@@ -150,3 +150,4 @@ def test_stepper_reads_an_asymmetric_matrix_input_in_its_own_orientation():
     np.testing.assert_array_equal(x, ref[0][0])
     np.testing.assert_array_equal(P, ref[1][0])
     np.testing.assert_array_equal(st.get("Q"), Q)
+
