@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Speed of the online registration loop (compiled Kalman step and batch register()), against a plain NumPy filter.
+"""Speed of the online registration loop (compiled Kalman step, batch register(), streaming
+update()), against the same filter in plain NumPy.
 
 Run from a checkout (the package installed, editable or not)::
 
@@ -7,46 +8,25 @@ Run from a checkout (the package installed, editable or not)::
     python3 benchmarks/bench_online.py --long 20000 --json bench_online.json
     python3 benchmarks/bench_online.py --flags               # also the compiler-flags experiment
 
-Data: the paper scenario (``paper_scenario(seed)``: 300 synchronous pairs); the long run tiles
-those rows (times renumbered so they increase) to ``--long`` rows. Filters, both in one run
-(T ``standard``, Q ``fixed``, the other settings the defaults of :class:`RegistrationConfig`):
+Data: the paper scenario's 300 rows (``paper_scenario(seed)``), tiled to ``--long`` rows (times
+renumbered). Filters: ``RegistrationConfig(linearization=...)`` with ``paper`` (model at the raw
+measurements) and ``fitted`` (the default), T ``standard``, Q ``fixed``. Contenders per filter,
+at the same rows, best of ``--repeat`` interleaved rounds after one warm-up:
 
-* ``RegistrationConfig(linearization="paper")``: Z, H, M at the raw measurements;
-* ``RegistrationConfig(linearization="fitted")``, the default of ``RegistrationConfig()``:
-  H, R at the MAP noise-free plots given the row and the current estimate (derive/kalman.py).
+1. ``register()``, the whole batch call, and the compiled scan alone (its floor);
+2. ``OnlineRegistrar.update(row)`` one call per row on the first ``--stream-rows`` rows, and the
+   compiled stepper it calls, alone (``stepper.step`` in a loop: the C step plus one ctypes
+   call); update() minus that is its Python bookkeeping;
+3. ``NumpyFilter``: the same filter in NumPy, written here; only the generated pair model
+   (``pseudo_measurement_standard``) is called, per row through ``GeneratedFunction.bind()``
+   (``numpy (per-row model)``) or, for ``paper`` only, for all rows up front (``numpy (model
+   vectorised)``; the ``fitted`` point depends on the state, so it cannot be).
 
-Contenders per filter, all at the same rows, best of ``--repeat`` interleaved rounds after one
-warm-up (for ``register()`` and the NumPy baselines the correctness check just before is it):
-
-1. ``register()``: the whole batch call (validation, the compiled scan of the generated Kalman
-   step, corrected differences, observability report), amortised per row; and the compiled scan
-   alone (``_codegen.get(step).scan``), the floor of the batch path.
-2. The streaming ``OnlineRegistrar.update(row)``, one call per row (rows as numpy arrays), on the
-   first ``--stream-rows`` rows (it is the slow path; per-step figures are per row it saw).
-3. The baseline: the SAME filter in plain NumPy, written here (class ``NumpyFilter``). The model
-   is never re-derived: only the generated ``pseudo_measurement_standard`` (Z, H, M, R, the two
-   ECEF positions) is called; everything else is NumPy. Per step: the linearisation, predict, gain by ``numpy.linalg.solve``, Joseph update,
-   symmetrisation, information and NIS, storing every estimate and covariance like
-   ``register()`` does. ``paper``: R = M R0 M^T and nu = Z - H x. ``fitted``: correct the row
-   by x, evaluate the pair model there, S = H P- H^T + R, the MAP noise v = R0 M^T S^-1 Z,
-   fitted plots t = c - v, evaluate the pair model at t (Z, H, M, R) and take nu = Z + M v. Flavours:
-   ``numpy (per-row model)`` calls the generated functions once per row through their
-   single-point fast path (``GeneratedFunction.bind()``: preallocated buffers, one ctypes call),
-   as a NumPy user stepping a filter would; ``numpy (model vectorised)`` (``paper`` only)
-   evaluates Z, H, M for all rows up front, so the loop is pure NumPy linear algebra. The
-   ``fitted`` linearisation point depends on the state, so it cannot be vectorised up front:
-   for it the per-row baseline is the strongest NumPy baseline there is.
-
-Before anything is timed, every baseline's estimates and covariances (and NIS, information) are
-checked against ``register()``'s to 1e-9 relative (per state, relative to the largest magnitude
-of that state's series), so the comparison is between identical computations.
-
-Aims, per filter: <= 5 us per step amortised for the batch ``register()``, >= 20x
-faster than the strongest NumPy baseline (``paper``: the vectorised one, the per-row ratio also
-printed; ``fitted``: the per-row one); the script says whether each is met. The profile (where
-the time of ``register()`` and ``update()`` goes) is for the default filter; ``--flags`` builds
-each filter's generated step into a plain C loop with the loader's flags and with
-``-O3 -march=native``. ``--json`` writes every figure, per filter under ``configs``.
+Every baseline is first checked against ``register()`` to 1e-9 relative. Aims: <= 5 us per row
+for ``register()`` amortised and for ``update()``; ``register()`` >= 20x the strongest NumPy
+baseline; the script says whether each is met, prints where ``register()``'s and ``update()``'s
+time goes (cProfile) and, with ``--flags``, the generated step in a plain C loop built with the
+loader's flags and with ``-O3 -march=native``. ``--json`` writes every figure.
 """
 
 from __future__ import annotations
@@ -63,6 +43,7 @@ import numpy as np
 import registration
 from registration import _codegen
 from registration.online import OnlineRegistrar, RegistrationConfig, register
+from registration.online.filter import ROW_HIGH, ROW_LOW, STEP_CARRY
 from registration.online.scenario import paper_scenario
 from registration.online.contract import DATA_COLUMNS, N_STATE
 
@@ -213,6 +194,21 @@ def streaming(config, rows):
     return go
 
 
+def stepper_only(config, rows):
+    """The compiled stepper update() calls, alone (made as update() makes it): one ctypes call per row."""
+    def go():
+        st = _codegen.get(config.step_name).stepper(STEP_CARRY, "row", low=ROW_LOW, high=ROW_HIGH,
+                                                      finite=("x_new", "P_new"), deliver=("x_new", "P_new", "nu", "S", "nis"))
+        start = OnlineRegistrar(config)
+        for name, value in (("x", start.x), ("P", start.P), ("info", start.info), ("Q", start.process_noise()),
+                            ("sigma0", np.array(config.sigma0))):
+            st.set(name, value)
+        step = st.step
+        for i in range(len(rows)):
+            step(rows[i])
+    return go
+
+
 def scan_only(config, rows):
     """The compiled scan of the generated Kalman step alone (what register() runs for q_mode fixed)."""
     step = _codegen.get(config.step_name)
@@ -333,6 +329,7 @@ def flags_experiment(config, rows: np.ndarray, reference_last: np.ndarray, repea
 # --------------------------------------------------------------------------- main
 VECTORISED, PER_ROW = "numpy (model vectorised)", "numpy (per-row model)"
 BATCH, SCAN = "register() (batch, whole call)", "compiled scan alone"
+UPDATE, STEPPER = "OnlineRegistrar.update() per row", "compiled stepper alone, per row"
 
 
 def bench_size(n_rows: int, seed: int, rounds: int, stream_rows: int, config) -> dict:
@@ -356,10 +353,11 @@ def bench_size(n_rows: int, seed: int, rounds: int, stream_rows: int, config) ->
     for label, vec in flavours.items():
         contenders[label] = (lambda v: lambda: base.run(rows, v))(vec)
     n_stream = min(stream_rows, n_rows)
-    contenders[f"OnlineRegistrar.update() x {n_stream}"] = streaming(config, rows[:n_stream])
+    contenders[UPDATE] = streaming(config, rows[:n_stream])
+    contenders[STEPPER] = stepper_only(config, rows[:n_stream])
     # the baselines' last run (the check) is their warm-up: at 10^5 rows a per-row run takes seconds
     best = measure(contenders, rounds, warm=frozenset([BATCH, *flavours]))
-    per_step = {k: v / (n_stream if k.startswith("OnlineRegistrar") else n_rows) for k, v in best.items()}
+    per_step = {k: v / (n_stream if k in (UPDATE, STEPPER) else n_rows) for k, v in best.items()}
     return {"rows": n_rows, "stream_rows": n_stream, "seconds": best, "us_per_step": {k: v * 1e6 for k, v in per_step.items()},
             "max_relative_difference_vs_register": diffs}
 
@@ -386,6 +384,10 @@ def aims_of(results: dict, long_n: int, linearization: str) -> dict:
         "ratio_vs_per_row_numpy_long": long[PER_ROW] / long[BATCH],
         "scan_ratio_vs_per_row_numpy_long": long[PER_ROW] / long[SCAN],
         "aim_ratio": AIM_RATIO,
+        "update_us_per_step_long": long[UPDATE],
+        "update_over_scan_long": long[UPDATE] / long[SCAN],
+        "update_python_us_per_step_long": long[UPDATE] - long[STEPPER],
+        "met_update_us_per_step_long": long[UPDATE] <= AIM_US_PER_STEP,
     }
     aims["met_ratio_long"] = aims["ratio_vs_strongest_numpy_long"] >= AIM_RATIO
     aims["met_ratio_300"] = aims["ratio_vs_strongest_numpy_300"] >= AIM_RATIO
@@ -407,6 +409,9 @@ def print_aims(aims: dict, long_n: int, linearization: str) -> None:
     if linearization == "paper":
         print(f"     against the per-row NumPy filter: register() {aims['ratio_vs_per_row_numpy_long']:.1f}x, "
               f"the compiled scan alone {aims['scan_ratio_vs_per_row_numpy_long']:.1f}x")
+    print(f"  <= {AIM_US_PER_STEP} us/row for update(): {aims['update_us_per_step_long']:.2f} us "
+          f"({yes[aims['met_update_us_per_step_long']]}), {aims['update_over_scan_long']:.2f}x the compiled scan's step; "
+          f"Python around the compiled stepper {aims['update_python_us_per_step_long']:.2f} us")
 
 
 def machine_line() -> str:
@@ -420,33 +425,14 @@ def machine_line() -> str:
             f"python {platform.python_version()}, {platform.machine()} {cpu}, {os.cpu_count()} CPUs").replace("  ", " ")
 
 
-def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--long", type=int, default=100_000, help="rows of the long run (tiled scenario; default 10^5)")
-    ap.add_argument("--stream-rows", type=int, default=20_000,
-                    help="rows fed to OnlineRegistrar.update() in the long run (default 2*10^4; it is the slow path)")
-    ap.add_argument("--repeat", type=int, default=3, help="timed rounds per contender; the best is kept (default 3)")
-    ap.add_argument("--seed", type=int, default=0)
-    ap.add_argument("--json", type=str, default=None, help="also write the figures to this JSON file")
-    ap.add_argument("--flags", action="store_true",
-                    help="also time each configuration's generated step in a plain C loop built with the loader's "
-                         "flags and with -O3 -march=native")
-    args = ap.parse_args(argv)
-
-    default = RegistrationConfig().linearization
-    configs = {lin: RegistrationConfig(linearization=lin) for lin in ("paper", "fitted")}  # standard T, fixed Q
-    print(machine_line())
-    print(f"configurations: {', '.join(f'{lin} ({c.step_name})' for lin, c in configs.items())}; "
-          f"default RegistrationConfig(): {default}; q_mode fixed; best of {args.repeat} rounds")
-
-    data_long = scenario_data(args.long, args.seed)
+def run_configs(configs: dict, default: str, args) -> dict:
+    """Every contender at 300 rows and at the long run, per configuration, with the aims."""
     per_config = {}
     for lin, config in configs.items():
         print(f"\n=== linearization {lin}{' (the default)' if lin == default else ''}: {config.step_name} ===\n")
         results = {}
         for n in (300, args.long):
-            r = bench_size(n, args.seed, args.repeat, args.stream_rows, config)
-            results[str(n)] = r
+            r = results[str(n)] = bench_size(n, args.seed, args.repeat, args.stream_rows, config)
             us = r["us_per_step"]
             print(f"{n} rows (NumPy baselines equal register() to "
                   f"{max(max(d.values()) for d in r['max_relative_difference_vs_register'].values()):.1e} relative)")
@@ -457,16 +443,10 @@ def main(argv=None) -> int:
         aims = aims_of(results, args.long, lin)
         print_aims(aims, args.long, lin)
         per_config[lin] = {"config": config.to_json(), "results": results, "aims": aims}
-
-    # the two filters side by side (long run)
     lp, lf = (per_config[k]["results"][str(args.long)]["us_per_step"] for k in ("paper", "fitted"))
     print(f"\nfitted / paper cost, {args.long} rows: register() {lf[BATCH] / lp[BATCH]:.2f}x, compiled scan "
-          f"{lf[SCAN] / lp[SCAN]:.2f}x, per-row NumPy {lf[PER_ROW] / lp[PER_ROW]:.2f}x")
-
-    # where the time goes, for the default configuration (cProfile; its overhead inflates the Python-heavy parts)
-    config = configs[default]
-    pair = _codegen.get(f"pseudo_measurement_{config.t_variant}").casadi.n_instructions()
-    print()
+          f"{lf[SCAN] / lp[SCAN]:.2f}x, per-row NumPy {lf[PER_ROW] / lp[PER_ROW]:.2f}x\n")
+    pair = _codegen.get("pseudo_measurement_standard").casadi.n_instructions()
     for lin, cfg in configs.items():
         n_ins = _codegen.get(cfg.step_name).casadi.n_instructions()
         scan_us = per_config[lin]["results"][str(args.long)]["us_per_step"][SCAN]
@@ -474,44 +454,59 @@ def main(argv=None) -> int:
                 f"the pseudo-measurement ({pair}) twice, before common subexpressions, plus the MAP plots")
         print(f"{cfg.step_name}: {n_ins} CasADi instructions per step ({part}; the Kalman algebra the rest), "
               f"{scan_us:.2f} us per step in the scan: {n_ins / scan_us / 1e3:.1f} G instructions/s.")
-    print(f"\nProfile of the default configuration ({default}):")
-    data300 = scenario_data(300, args.seed)
-    rows300 = rows_of(data300)
-    br = profile_breakdown(lambda: register(data300, config), 20, 300)
-    print("register() on 300 rows, by callee (cProfile, cumulative us per row):")
-    for k, v in br:
-        print(f"  {k:<52}{v:10.2f}")
-    br_long = profile_breakdown(lambda: register(data_long, config), 1, args.long)
-    print(f"register() on {args.long} rows, by callee (cProfile, cumulative us per row):")
-    for k, v in br_long:
-        print(f"  {k:<52}{v:10.2f}")
-    ub = profile_breakdown(streaming(config, rows300), 3, 300)
-    print("OnlineRegistrar.update() on 300 rows, by callee (cProfile, cumulative us per row):")
-    for k, v in ub:
-        print(f"  {k:<52}{v:10.2f}")
+    return per_config
 
+
+def profiles(config, data_long: dict, seed: int) -> dict:
+    """Where register()'s and update()'s time goes (cProfile; its overhead inflates the Python-heavy parts)."""
+    data300 = scenario_data(300, seed)
+    out = {
+        "register_profile_us_per_row_300": profile_breakdown(lambda: register(data300, config), 20, 300),
+        "register_profile_us_per_row_long": profile_breakdown(lambda: register(data_long, config), 1, len(data_long["time"])),
+        "update_profile_us_per_row_300": profile_breakdown(streaming(config, rows_of(data300)), 3, 300),
+    }
+    titles = ("register() on 300 rows", f"register() on {len(data_long['time'])} rows", "OnlineRegistrar.update() on 300 rows")
+    print(f"\nProfile of the default configuration ({config.linearization}):")
+    for title, rows in zip(titles, out.values()):
+        print(f"{title}, by callee (cProfile, cumulative us per row):")
+        for k, v in rows:
+            print(f"  {k:<52}{v:10.2f}")
+    return {k: dict(v) for k, v in out.items()}
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--long", type=int, default=100_000, help="rows of the long run (tiled scenario; default 10^5)")
+    ap.add_argument("--stream-rows", type=int, default=20_000,
+                    help="rows fed to OnlineRegistrar.update() in the long run (default 2*10^4)")
+    ap.add_argument("--repeat", type=int, default=3, help="timed rounds per contender; the best is kept (default 3)")
+    ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--json", type=str, default=None, help="also write the figures to this JSON file")
+    ap.add_argument("--flags", action="store_true",
+                    help="also time each configuration's generated step in a plain C loop built with the loader's "
+                         "flags and with -O3 -march=native")
+    args = ap.parse_args(argv)
+    default = RegistrationConfig().linearization
+    configs = {lin: RegistrationConfig(linearization=lin) for lin in ("paper", "fitted")}  # standard T, fixed Q
+    print(machine_line())
+    print(f"configurations: {', '.join(f'{lin} ({c.step_name})' for lin, c in configs.items())}; "
+          f"default RegistrationConfig(): {default}; q_mode fixed; best of {args.repeat} rounds")
+    data_long = scenario_data(args.long, args.seed)
+    per_config = run_configs(configs, default, args)
+    profile = profiles(configs[default], data_long, args.seed)
     if args.flags:
-        rows_long = rows_of(data_long)
         for lin, cfg in configs.items():
-            ref_last = register(data_long, cfg).estimates[-1, 3]
-            flags = flags_experiment(cfg, rows_long, ref_last, args.repeat)
+            flags = flags_experiment(cfg, rows_of(data_long), register(data_long, cfg).estimates[-1, 3], args.repeat)
             per_config[lin]["plain_c_us_per_step"] = flags
             print(f"\n{cfg.step_name} in a plain C loop ({args.long} rows, results checked against register()):")
             for k, v in flags.items():
                 print(f"  {k:<52}{'build failed' if v is None else f'{v:10.2f}'}")
-
     if args.json:
-        payload = {
-            "machine": {"line": machine_line(), "python": platform.python_version(), "machine": platform.machine(),
-                        "numpy": np.__version__, "backend": _codegen.backend(), "platform": platform.platform()},
-            "default_linearization": default, "configs": per_config,
-            "profile_config": default,
-            "register_profile_us_per_row_300": dict(br),
-            "register_profile_us_per_row_long": dict(br_long),
-            "update_profile_us_per_row_300": dict(ub),
-        }
+        machine = {"line": machine_line(), "python": platform.python_version(), "machine": platform.machine(),
+                   "numpy": np.__version__, "backend": _codegen.backend(), "platform": platform.platform()}
         with open(args.json, "w") as fh:
-            json.dump(payload, fh, indent=1)
+            json.dump({"machine": machine, "default_linearization": default, "configs": per_config,
+                       "profile_config": default, **profile}, fh, indent=1)
         print(f"\nwrote {args.json}")
     return 0
 

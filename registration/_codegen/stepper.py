@@ -69,6 +69,25 @@ def _from_column_major(buf: np.ndarray, shape: tuple[int, int]):
     return buf if c == 1 else buf.reshape(c, r).T
 
 
+def _results_function(shapes: list[tuple[int, int]]):
+    """``f(block)``: a copy of the first doubles of ``block``, returned as one view per shape in
+    order (vectors; matrices from column-major; floats for scalars). Written out for the shapes,
+    so a step's results cost one copy and a few views, not a loop."""
+    parts, at = [], 0
+    for r, c in shapes:
+        if (r, c) == (1, 1):
+            parts.append(f"float(b[{at}])")
+        elif c == 1:
+            parts.append(f"b[{at}:{at + r}]")
+        else:
+            parts.append(f"b[{at}:{at + r * c}].reshape({c}, {r}).T")
+        at += r * c
+    namespace: dict = {}
+    body = f"({', '.join(parts)},)" if parts else "()"
+    exec(f"def results(block):\n    b = block[:{at}].copy()\n    return {body}\n", namespace)  # noqa: S102
+    return namespace["results"]
+
+
 class _Layout:
     """Names, shapes and which inputs are carried, fed, bounded; which outputs are checked and delivered."""
 
@@ -109,12 +128,8 @@ class CStepper:
             offsets[j], at = at, at + sizes[j]
         self._block = np.zeros(max(at, 1))
         self._out = [self._block[o:o + s] for o, s in zip(offsets, sizes)]
-        self._n_deliver = sum(sizes[j] for j in lay.deliver)
-        self._plan, at = [], 0  # per delivered output: its slice of the copied block, (cols, rows) of a matrix, scalar?
-        for j in lay.deliver:
-            r, c = lay.out_shapes[j]
-            self._plan.append((slice(at, at + r * c), (c, r) if c > 1 else None, (r, c) == (1, 1)))
-            at += r * c
+        #: results() -> the delivered outputs of the last successful step as new arrays (one copy in all)
+        self.results = functools.partial(_results_function([lay.out_shapes[j] for j in lay.deliver]), self._block)
         self._feed = self._in[lay.feed]
         work = kernel.work
         keep = self._keep = {
@@ -157,15 +172,6 @@ class CStepper:
             return self._call()
         finally:
             self._struct.check_in = saved
-
-    def results(self) -> tuple:
-        """The delivered outputs of the last successful step, as new arrays (one copy in all)."""
-        block = self._block[:self._n_deliver].copy()
-        outs = []
-        for part, cols_rows, scalar in self._plan:
-            v = block[part]
-            outs.append(float(v[0]) if scalar else (v.reshape(cols_rows).T if cols_rows else v))
-        return tuple(outs)
 
 
 class PyStepper:

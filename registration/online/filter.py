@@ -21,7 +21,7 @@ from registration.online.contract import (
 
 __all__ = ["OnlineRegistrar", "ROW_LOW", "ROW_HIGH", "STEP_CARRY"]
 
-_OK, _OUT_OF_BOUNDS = int(_codegen.StepCode.OK), int(_codegen.StepCode.OUT_OF_BOUNDS)
+_OK, _OUT_OF_BOUNDS, _FAILED = (int(_codegen.StepCode[c]) for c in ("OK", "OUT_OF_BOUNDS", "FAILED"))
 _ROW_SHAPE, _F64 = (N_ROW,), np.dtype(np.float64)
 
 #: The Kalman step's carried inputs and the outputs they take from the previous step.
@@ -96,6 +96,16 @@ class OnlineRegistrar:
         if self._stepper is not None:
             self._stepper.set(name, value)
 
+    def __getstate__(self) -> dict:
+        """For pickle and copy: the state as arrays, without the compiled functions (found again on load)."""
+        state = dict(self.__dict__)
+        state.update(_x=self.x, _P=self.P, _info=self.info, _stepper=None, _step=None)
+        return state
+
+    def __setstate__(self, state: dict) -> None:
+        self.__dict__.update(state)
+        self._step = _codegen.get(self.config.step_name)
+
     x = property(lambda self: self._state("x"), lambda self, v: self._set_state("x", v), doc="(12,) estimate")
     P = property(lambda self: self._state("P"), lambda self, v: self._set_state("P", v), doc="(12, 12) covariance")
     info = property(lambda self: self._state("info"), lambda self, v: self._set_state("info", v),
@@ -140,6 +150,8 @@ class OnlineRegistrar:
         if code == _OUT_OF_BOUNDS:
             check_rows(values[None, :], first_row=n)  # raises, naming the row and column
             code = stepper.step(values, check=False)  # accepted after all (a subnormal range)
+        if code == _FAILED:
+            raise RuntimeError(f"row {n}: the generated step {self.config.step_name} returned an error; state left unchanged")
         if code != _OK:
             raise RuntimeError(f"row {n}: the filter step produced non-finite values; state left unchanged")
         x, P, nu, S, nis = stepper.results()

@@ -133,3 +133,20 @@ def test_bad_time_raises_value_error_and_leaves_the_state(scenario, time, messag
     _assert_state(reg, before)
     reg.update(rows[1], time=np.float32(10.5))  # any number after the last time
     assert reg.n_updates == 2
+
+
+def test_a_copied_registrar_continues_like_the_original(scenario):
+    import copy
+    import pickle
+
+    rows = _rows(scenario)
+    reg = OnlineRegistrar()
+    for k in range(5):
+        reg.update(rows[k], time=float(k))
+    twins = [copy.deepcopy(reg), pickle.loads(pickle.dumps(reg))]
+    ref = reg.update(rows[5], time=5.0)
+    for twin in twins:
+        out = twin.update(rows[5], time=5.0)
+        for key in ("x", "P", "nis"):
+            np.testing.assert_array_equal(out[key], ref[key])
+        np.testing.assert_array_equal(twin.info, reg.info)
