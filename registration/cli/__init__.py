@@ -1,10 +1,20 @@
-"""``registration`` command line: one sub-command per module of this package."""
+"""``registration`` command line: one sub-command per module of this package.
+
+A sub-command module defines ``HELP`` (one line), ``add_arguments(parser)`` and ``run(args) -> int``;
+optionally ``interrupt_hint(args) -> str | None``, the text Ctrl-C prints (e.g. how to resume).
+Errors, exit codes and the consistency gate: :mod:`registration.cli.errors`.
+"""
 
 from __future__ import annotations
 
 import argparse
 import importlib
 import sys
+import textwrap
+
+from registration import __version__
+from registration.cli.errors import EXIT_CODES_EPILOG, run_guarded
+from registration.cli.options import HelpFormatter
 
 #: sub-command name -> module of registration.cli (listed in the order shown in --help)
 COMMANDS = {
@@ -20,9 +30,12 @@ COMMANDS = {
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="registration",
-        description="Register and fuse radar measurements across moving ships (SI units inside; _deg options at the edge).",
+        description=textwrap.fill("Register and fuse radar measurements across moving ships "
+                                  "(SI units inside; options in degrees end in _deg)."),
+        epilog=EXIT_CODES_EPILOG, formatter_class=HelpFormatter,
     )
-    sub = parser.add_subparsers(dest="command", required=True)
+    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for name, module in COMMANDS.items():
         try:
             mod = importlib.import_module(f"registration.cli.{module}")
@@ -30,19 +43,20 @@ def build_parser() -> argparse.ArgumentParser:
             if exc.name == f"registration.cli.{module}":
                 continue  # capability not built yet
             raise
-        p = sub.add_parser(name, help=mod.HELP, description=mod.HELP)
+        p = sub.add_parser(name, help=mod.HELP, description=textwrap.fill(mod.HELP), epilog=EXIT_CODES_EPILOG,
+                           formatter_class=HelpFormatter)
         mod.add_arguments(p)
-        p.set_defaults(_run=mod.run)
+        p.set_defaults(_run=mod.run, _hint=getattr(mod, "interrupt_hint", None))
     return parser
 
 
 def main(argv: list[str] | None = None) -> int:
-    args = build_parser().parse_args(argv)
+    """Run the command line ``argv`` (default: ``sys.argv[1:]``); return the exit code (see ``--help``)."""
     try:
-        return int(args._run(args) or 0)
-    except ValueError as exc:  # bad input: a clear message, not a traceback
-        print(f"registration {args.command}: error: {exc}", file=sys.stderr)
-        return 2
+        args = build_parser().parse_args(argv)
+    except SystemExit as exc:  # --help, --version, or an option argparse rejected (its message is printed)
+        return exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 2)
+    return run_guarded(f"registration {args.command}", args._run, args, args._hint)
 
 
 if __name__ == "__main__":

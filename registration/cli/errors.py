@@ -26,13 +26,15 @@ import argparse
 import os
 import sys
 import tempfile
+import traceback
 from contextlib import contextmanager
 from pathlib import Path
 
 __all__ = [
     "EXIT_OK", "EXIT_BAD_ROWS", "EXIT_BAD_INPUT", "EXIT_INCONSISTENT", "EXIT_INTERRUPTED", "EXIT_BROKEN_PIPE",
     "DEBUG_ENV", "EXIT_CODES_EPILOG", "CommandError", "os_error_message", "writing", "prepare_out",
-    "check_suffix", "add_allow_inconsistent", "consistency_gate", "interrupt_message",
+    "add_allow_inconsistent", "consistency_line", "consistency_gate", "interrupt_message",
+    "run_guarded",
 ]
 
 EXIT_OK = 0
@@ -46,12 +48,15 @@ EXIT_BROKEN_PIPE = 141
 DEBUG_ENV = "REGISTRATION_DEBUG"
 
 #: The exit-code table as shown at the end of ``--help``.
-EXIT_CODES_EPILOG = (
-    "exit codes: 0 success; 1 register --validate-only found bad rows; 2 bad input (option, value, "
-    "unreadable input or unwritable output); 3 the run's normalised innovations grossly contradict the "
-    "model (outputs written; --allow-inconsistent accepts the run); 130 interrupted (Ctrl-C); "
-    f"141 standard output closed early. {DEBUG_ENV}=1 shows the traceback behind an error."
-)
+EXIT_CODES_EPILOG = f"""exit codes:
+  {EXIT_OK:<4} success
+  {EXIT_BAD_ROWS:<4} register --validate-only: some rows are bad
+  {EXIT_BAD_INPUT:<4} bad input: an invalid option or value, an unreadable input, an unwritable output
+  {EXIT_INCONSISTENT:<4} the run's normalised innovations grossly contradict the model (outputs written;
+       --allow-inconsistent accepts the run)
+  {EXIT_INTERRUPTED:<4} interrupted (Ctrl-C)
+  {EXIT_BROKEN_PIPE:<4} standard output closed early (e.g. piped into head)
+{DEBUG_ENV}=1 in the environment shows the traceback behind an error message."""
 
 
 class CommandError(Exception):
@@ -75,13 +80,17 @@ def os_error_message(exc: OSError, action: str | None = None) -> str:
 
 @contextmanager
 def writing(path):
-    """Turn an operating-system error inside the block into ``CommandError('cannot write PATH: reason')``."""
+    """Turn an operating-system error inside the block into ``CommandError('cannot write PATH: reason')``.
+
+    PATH is the file the error names, else ``path``.
+    """
     try:
         yield
     except BrokenPipeError:
         raise
     except OSError as exc:
-        raise CommandError(f"cannot write {path}: {exc.strerror or exc}") from exc
+        target = os.fsdecode(exc.filename) if exc.filename is not None else path
+        raise CommandError(f"cannot write {target}: {exc.strerror or exc}") from exc
 
 
 def prepare_out(out) -> Path:
@@ -104,14 +113,6 @@ def prepare_out(out) -> Path:
     return out
 
 
-def check_suffix(path, suffixes, option: str) -> None:
-    """Raise ``CommandError`` unless ``path`` ends with one of ``suffixes`` (checked before the work starts)."""
-    suffix = Path(path).suffix.lower()
-    if suffix not in suffixes:
-        got = f"'{suffix}'" if suffix else "no extension"
-        raise CommandError(f"{option}: cannot write {path}: unknown file type ({got}); supported: {', '.join(suffixes)}")
-
-
 def add_allow_inconsistent(p: argparse.ArgumentParser) -> None:
     """The ``--allow-inconsistent`` flag of every command that runs the consistency gate."""
     p.add_argument("--allow-inconsistent", action="store_true",
@@ -119,13 +120,17 @@ def add_allow_inconsistent(p: argparse.ArgumentParser) -> None:
                         f"(otherwise exit code {EXIT_INCONSISTENT} after writing the outputs)")
 
 
-def consistency_gate(prog: str, report, allow: bool) -> int:
-    """Print ``consistency: ...`` for a :class:`~registration.core.consistency.ConsistencyReport`; return the exit code.
+def consistency_line(report) -> str:
+    """The report line every command with a consistency gate prints on standard output."""
+    return f"consistency: {report.message()}"
 
-    A grossly inconsistent run gives :data:`EXIT_INCONSISTENT` with the report (and its likely
-    causes) on standard error, unless ``allow``; then a warning and 0.
+
+def consistency_gate(prog: str, report, allow: bool) -> int:
+    """The exit code of a run with a :class:`~registration.core.consistency.ConsistencyReport`.
+
+    Call it after the outputs are written. A grossly inconsistent run gives :data:`EXIT_INCONSISTENT`
+    with the report (and its likely causes) on standard error, unless ``allow``: then a warning and 0.
     """
-    print(f"consistency: {report.message()}")
     if report.ok:
         return EXIT_OK
     if allow:
@@ -144,3 +149,50 @@ def interrupt_message(prog: str, args: argparse.Namespace | None) -> str:
     out = getattr(args, "out", None)
     where = f"; outputs in {out} may be incomplete" if out else ""
     return f"{prog}: interrupted{where}"
+
+
+def _debug() -> bool:
+    return os.environ.get(DEBUG_ENV, "").strip() not in ("", "0")
+
+
+def _fail(prog: str, message: str, code: int) -> int:
+    if _debug():
+        traceback.print_exc()
+    print(f"{prog}: error: {message}", file=sys.stderr)
+    return code
+
+
+def _silence_stdout() -> None:
+    """Point standard output at the null device so the interpreter's final flush cannot fail again."""
+    try:
+        fd = sys.stdout.fileno()
+    except (AttributeError, OSError, ValueError):
+        return  # not a real file (captured output): nothing left to flush
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, fd)
+    os.close(devnull)
+
+
+def run_guarded(prog: str, run, args: argparse.Namespace, hint=None) -> int:
+    """``run(args)`` with every expected failure turned into one line on standard error and an exit code.
+
+    ``hint(args)``, if given, may return the text Ctrl-C prints (e.g. how to resume); None falls
+    back to :func:`interrupt_message`. Other exceptions are bugs and keep their traceback.
+    """
+    try:
+        return int(run(args) or 0)
+    except BrokenPipeError:
+        _silence_stdout()
+        return EXIT_BROKEN_PIPE
+    except KeyboardInterrupt:
+        if _debug():
+            traceback.print_exc()
+        # on a line of its own: a progress bar may have left the cursor at the end of its line
+        print("\n" + ((hint(args) if hint else None) or interrupt_message(prog, args)), file=sys.stderr)
+        return EXIT_INTERRUPTED
+    except CommandError as exc:
+        return _fail(prog, str(exc), exc.code)
+    except OSError as exc:
+        return _fail(prog, os_error_message(exc), EXIT_BAD_INPUT)
+    except ValueError as exc:
+        return _fail(prog, str(exc), EXIT_BAD_INPUT)

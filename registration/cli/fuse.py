@@ -1,7 +1,7 @@
 """``registration fuse``: the paper's dissimilar-dimension fusion scenarios, with honest rows beside them.
 
-Prints one table (analytic and Monte Carlo GDOP per estimator, beside the paper's figure) and,
-with ``--out DIR``, writes ``summary.json``, ``measurements.png`` (like the paper's Fig. 3/5:
+Prints one table (analytic and Monte Carlo GDOP per estimator, beside the paper's figure) and
+writes into ``--out DIR`` (default ``out/fuse``) ``summary.json``, ``measurements.png`` (like the paper's Fig. 3/5:
 geometry, radar points and pseudo-measurement points) and ``fused.png`` (like Fig. 4/6: fused
 points of the paper's method and of the optimal fuser), all with 2-sigma covariance ellipses.
 
@@ -17,38 +17,70 @@ from pathlib import Path
 
 import numpy as np
 
+from registration.cli.errors import prepare_out, writing
+from registration.cli.options import add_no_plots, add_out, add_seed
 from registration.fusion import COMPONENTS, parse_components
 from registration.fusion.evaluation import ROW_LABELS, FusionEvaluation, evaluate
 from registration.fusion.scenarios import paper_scenario
 
-HELP = "Fuse a radar with a remote bearing-only or range-only sensor (paper scenarios 1 and 2): GDOP, CRLB, optimal fuser."
+HELP = "fuse a radar with a remote bearing-only or range-only sensor (paper scenarios 1 and 2): GDOP, CRLB, optimal fuser"
+
+
+def _per_scenario(value) -> str:
+    """``default: scenario 1 X, scenario 2 Y`` for a parameter ``value(scenario)`` (number or text) of the paper's scenarios."""
+    def text(v) -> str:
+        return v if isinstance(v, str) else f"{v:g}"
+    return "default: " + ", ".join(f"scenario {n} {text(value(paper_scenario(n)))}" for n in (1, 2))
+
+
+def _second_sigma(component: str, scale: float):
+    """The second sensor's standard deviation of ``component`` times ``scale``, or 'not measured'."""
+    def value(sc):
+        sig = dict(zip(sc.components, sc.sigma_second))
+        return float(sig[component]) * scale if component in sig else "not measured"
+    return value
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--scenario", type=int, choices=(1, 2), default=1,
-                        help="the paper's scenario: 1 radar + passive bearing sensor, 2 radar + laser range finder (default 1); "
+                        help="the paper's scenario: 1 radar + passive bearing sensor, 2 radar + laser range finder; "
                              "the options below override its parameters")
-    parser.add_argument("--trials", type=int, default=1000, help="Monte Carlo measurement pairs (default 1000, as in the paper)")
-    parser.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
-    parser.add_argument("--out", type=Path, default=None, help="folder for summary.json and the PNG plots")
+    parser.add_argument("--trials", type=int, default=1000, metavar="N",
+                        help="Monte Carlo measurement pairs (the paper's count; at least 2)")
+    add_seed(parser, 0, "random seed of the measurement noise")
+    add_out(parser, "fuse", "summary.json, measurements.png and fused.png")
+    add_no_plots(parser)
+    parser.add_argument("--max-plot-points", type=int, default=2000, metavar="N", help="points drawn per set in the plots")
     g = parser.add_argument_group("geometry (radar A at the origin, azimuth counter-clockwise from +x)")
-    g.add_argument("--baseline-m", type=float, default=None, help="second site B at (L, 0[, 0]) metres")
+    g.add_argument("--baseline-m", type=float, default=None, metavar="M",
+                   help="second site B at (L, 0[, 0]) metres; " + _per_scenario(lambda sc: sc.site_second_loc[0]))
     g.add_argument("--site-second-m", type=float, nargs="+", default=None, metavar="XYZ",
-                   help="second site B anywhere: X Y [Z] metres (Z only in 3-D)")
-    g.add_argument("--target-range-m", type=float, default=None, help="true target range from the radar, m")
-    g.add_argument("--target-azimuth-deg", type=float, default=None, help="true target azimuth from the radar, deg")
-    g.add_argument("--target-elevation-deg", type=float, default=None,
-                   help="true target elevation from the radar, deg; giving it makes the problem 3-D")
+                   help="second site B anywhere: X Y [Z] metres (Z only in 3-D); default: on the x axis (--baseline-m)")
+    g.add_argument("--target-range-m", type=float, default=None, metavar="M",
+                   help="true target range from the radar, m; " + _per_scenario(lambda sc: sc.target_polar[0]))
+    g.add_argument("--target-azimuth-deg", type=float, default=None, metavar="DEG",
+                   help="true target azimuth from the radar, deg; "
+                        + _per_scenario(lambda sc: np.degrees(sc.target_polar[1])))
+    g.add_argument("--target-elevation-deg", type=float, default=None, metavar="DEG",
+                   help="true target elevation from the radar, deg; giving it makes the problem 3-D; default: 2-D")
     s = parser.add_argument_group("sensors")
-    s.add_argument("--sigma-range-m", type=float, default=None, help="radar range standard deviation, m")
-    s.add_argument("--sigma-azimuth-mrad", type=float, default=None, help="radar azimuth standard deviation, mrad")
-    s.add_argument("--sigma-elevation-mrad", type=float, default=None, help="radar elevation standard deviation, mrad (3-D; default = azimuth)")
-    s.add_argument("--second", type=str, default=None,
-                   help="components the second sensor measures, comma separated: range, azimuth (bearing), elevation (3-D)")
-    s.add_argument("--sigma-second-range-m", type=float, default=None, help="second sensor range standard deviation, m")
-    s.add_argument("--sigma-second-azimuth-mrad", type=float, default=None, help="second sensor azimuth standard deviation, mrad")
-    s.add_argument("--sigma-second-elevation-mrad", type=float, default=None, help="second sensor elevation standard deviation, mrad")
-    parser.add_argument("--max-plot-points", type=int, default=2000, help="points drawn per set in the plots (default 2000)")
+    s.add_argument("--sigma-range-m", type=float, default=None, metavar="M",
+                   help="radar range standard deviation, m; " + _per_scenario(lambda sc: sc.sigma_radar[0]))
+    s.add_argument("--sigma-azimuth-mrad", type=float, default=None, metavar="MRAD",
+                   help="radar azimuth standard deviation, mrad; " + _per_scenario(lambda sc: sc.sigma_radar[1] * 1e3))
+    s.add_argument("--sigma-elevation-mrad", type=float, default=None, metavar="MRAD",
+                   help="radar elevation standard deviation, mrad (3-D only); default: the azimuth's")
+    s.add_argument("--second", type=str, default=None, metavar="COMPONENTS",
+                   help="components the second sensor measures, comma separated: range, azimuth (bearing), "
+                        "elevation (3-D); " + _per_scenario(lambda sc: ",".join(sc.components)))
+    s.add_argument("--sigma-second-range-m", type=float, default=None, metavar="M",
+                   help="second sensor range standard deviation, m; " + _per_scenario(_second_sigma("range", 1.0)))
+    s.add_argument("--sigma-second-azimuth-mrad", type=float, default=None, metavar="MRAD",
+                   help="second sensor azimuth standard deviation, mrad; "
+                        + _per_scenario(_second_sigma("azimuth", 1e3)))
+    s.add_argument("--sigma-second-elevation-mrad", type=float, default=None, metavar="MRAD",
+                   help="second sensor elevation standard deviation, mrad (3-D); default: none, the paper's scenarios "
+                        "are 2-D (required when --second includes elevation)")
 
 
 # --------------------------------------------------------------------------- scenario from options
@@ -275,13 +307,17 @@ def run(args) -> int:
         raise ValueError(f"--trials: expected at least 2 Monte Carlo pairs, got {args.trials}")
     if args.max_plot_points < 1:
         raise ValueError(f"--max-plot-points: expected a positive count, got {args.max_plot_points}")
+    if args.seed < 0:
+        raise ValueError(f"--seed: expected an integer >= 0, got {args.seed}")
     sc = _scenario_from_args(args)
+    out = prepare_out(args.out)
     ev = evaluate(sc, trials=args.trials, seed=args.seed)
     print(format_table(ev))
-    if args.out is not None:
-        out = Path(args.out)
-        out.mkdir(parents=True, exist_ok=True)
-        (out / "summary.json").write_text(json.dumps(ev.to_json(), indent=2) + "\n")
-        paths = _plot(ev, out, args.max_plot_points)
-        print(f"wrote {out / 'summary.json'}, " + ", ".join(str(p) for p in paths))
+    written = [out / "summary.json"]
+    with writing(written[0]):
+        written[0].write_text(json.dumps(ev.to_json(), indent=2) + "\n")
+    if not args.no_plots:
+        with writing(out):
+            written += _plot(ev, out, args.max_plot_points)
+    print("wrote " + ", ".join(str(p) for p in written))
     return 0

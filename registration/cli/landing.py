@@ -1,13 +1,13 @@
-"""``registration landing --out DIR``: radar/camera fusion along a simulated carrier approach.
+"""``registration landing``: radar/camera fusion along a simulated carrier approach.
 
 Simulates Monte Carlo runs of the default approach (every parameter can be changed below),
 time-aligns both sensors to common fusion instants, moves the radar into the camera's polar frame
 with its covariance and fuses (Wang, Liu & Gao 2017, eqs. 7-12), and prints the 3-D position RMSE
 in range bins for radar only, camera angles with radar range, and fused (plus the joint update).
 
-Writes into DIR: ``summary.json`` (``bins``: ``range_min_m, range_max_m, rmse_radar_m,
-rmse_camera_m, rmse_fused_m`` and more), ``attitude.png`` (Fig. 1), ``variance_ratios.png``
-(Figs. 2-3), ``rmse.png`` (Fig. 4) and ``fused_polar.png`` (Fig. 5).
+Writes into ``--out DIR`` (default ``out/landing``): ``summary.json`` (``bins``: ``range_min_m, range_max_m, rmse_radar_m,
+rmse_camera_m, rmse_fused_m`` and more) and, unless ``--no-plots``, ``attitude.png`` (Fig. 1),
+``variance_ratios.png`` (Figs. 2-3), ``rmse.png`` (Fig. 4) and ``fused_polar.png`` (Fig. 5).
 
 Units at this edge: metres, seconds, degrees (``_deg``), milliradians (``_mrad``) for angle noise
 and milliseconds (``_ms``) for clock offsets; SI and radians inside.
@@ -35,46 +35,56 @@ from registration.landing import (
     regroup,
     with_overrides,
 )
+from registration.cli.errors import prepare_out, writing
+from registration.cli.options import add_no_plots, add_out, add_seed
 from registration.landing.plots import METHOD_LABELS, write_plots
 
-HELP = "Simulate a carrier approach and fuse the landing radar with the centreline camera: position RMSE by range bin, plots."
+HELP = "simulate a carrier approach and fuse the landing radar with the centreline camera: position RMSE by range bin, plots"
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     d = default_scenario()
-    parser.add_argument("--out", type=Path, required=True, help="folder for summary.json and the PNG plots (created)")
-    parser.add_argument("--runs", type=int, default=200, help="Monte Carlo runs of the whole approach (default 200)")
-    parser.add_argument("--seed", type=int, default=1, help="random seed (default 1)")
-    parser.add_argument("--bin-m", type=float, default=500.0, help="range-bin width of the printed table, m (default 500)")
-    parser.add_argument("--plot-bin-m", type=float, default=100.0,
-                        help="range-bin width of the RMSE plot, m (default 100; must divide --bin-m)")
+    add_out(parser, "landing", "summary.json and the PNG plots")
+    add_no_plots(parser)
+    parser.add_argument("--runs", type=int, default=200, metavar="N", help="Monte Carlo runs of the whole approach (at least 2)")
+    add_seed(parser, 1, "random seed of the simulated measurements")
+    parser.add_argument("--bin-m", type=float, default=500.0, metavar="M", help="range-bin width of the printed table, m")
+    parser.add_argument("--plot-bin-m", type=float, default=100.0, metavar="M",
+                        help="range-bin width of the RMSE plot, m (must divide --bin-m)")
     p = parser.add_argument_group("processing")
-    p.add_argument("--fusion-rate-hz", type=float, default=10.0, help="rate of the common fusion instants, Hz (default 10)")
-    p.add_argument("--degree", type=int, default=2, help="polynomial degree of the time alignment (default 2)")
-    p.add_argument("--half-window-s", type=float, default=0.25, help="half-width of the time-alignment window, s (default 0.25)")
+    p.add_argument("--fusion-rate-hz", type=float, default=10.0, metavar="HZ", help="rate of the common fusion instants, Hz")
+    p.add_argument("--degree", type=int, default=2, metavar="N", help="polynomial degree of the time alignment")
+    p.add_argument("--half-window-s", type=float, default=0.25, metavar="S", help="half-width of the time-alignment window, s")
     p.add_argument("--ignore-clock-offsets", action="store_true",
                    help="process as if both clocks had no offset (shows what an uncalibrated clock costs)")
     s = parser.add_argument_group("scenario")
-    s.add_argument("--glide-slope-deg", type=float, default=np.degrees(d.approach.glide_slope_rad), help="glide slope, deg (3.5)")
-    s.add_argument("--ground-speed-mps", type=float, default=d.approach.ground_speed_mps, help="aircraft ground speed, m/s (70)")
-    s.add_argument("--start-range-m", type=float, default=d.approach.start_range_m, help="start, m along the path to touchdown (4000)")
-    s.add_argument("--end-range-m", type=float, default=d.approach.end_range_m, help="end, m along the path to touchdown (0)")
-    s.add_argument("--ship-speed-mps", type=float, default=d.ship.speed_mps, help="carrier speed, m/s (15)")
-    s.add_argument("--angled-deck-deg", type=float, default=np.degrees(d.geometry.angled_deck_rad), help="angled-deck angle, deg (9)")
+    s.add_argument("--glide-slope-deg", type=float, default=np.degrees(d.approach.glide_slope_rad), metavar="DEG",
+                   help="glide slope, deg")
+    s.add_argument("--ground-speed-mps", type=float, default=d.approach.ground_speed_mps, metavar="M/S",
+                   help="aircraft ground speed, m/s")
+    s.add_argument("--start-range-m", type=float, default=d.approach.start_range_m, metavar="M",
+                   help="start, m along the path to touchdown")
+    s.add_argument("--end-range-m", type=float, default=d.approach.end_range_m, metavar="M",
+                   help="end, m along the path to touchdown")
+    s.add_argument("--ship-speed-mps", type=float, default=d.ship.speed_mps, metavar="M/S", help="carrier speed, m/s")
+    s.add_argument("--angled-deck-deg", type=float, default=np.degrees(d.geometry.angled_deck_rad), metavar="DEG",
+                   help="angled-deck angle, deg")
     for axis, amp, per in (("yaw", d.ship.yaw_amplitude_rad, d.ship.yaw_period_s),
                            ("pitch", d.ship.pitch_amplitude_rad, d.ship.pitch_period_s),
                            ("roll", d.ship.roll_amplitude_rad, d.ship.roll_period_s)):
-        s.add_argument(f"--{axis}-deg", type=float, default=np.degrees(amp), help=f"{axis} amplitude, deg ({np.degrees(amp):g})")
-        s.add_argument(f"--{axis}-period-s", type=float, default=per, help=f"{axis} period, s ({per:g})")
-    s.add_argument("--radar-rate-hz", type=float, default=d.radar.rate_hz, help="radar rate, Hz (20)")
-    s.add_argument("--radar-sigma-range-m", type=float, default=d.radar.sigma_range_m, help="radar range noise, m (3)")
-    s.add_argument("--radar-sigma-angle-mrad", type=float, default=d.radar.sigma_azimuth_rad * 1e3,
-                   help="radar azimuth and elevation noise, mrad (1)")
-    s.add_argument("--radar-clock-offset-ms", type=float, default=d.radar.clock_offset_s * 1e3, help="radar clock offset, ms (0)")
-    s.add_argument("--camera-rate-hz", type=float, default=d.camera.rate_hz, help="camera rate, Hz (25)")
-    s.add_argument("--camera-sigma-angle-mrad", type=float, default=d.camera.sigma_azimuth_rad * 1e3,
-                   help="camera azimuth and elevation noise, mrad (0.3)")
-    s.add_argument("--camera-clock-offset-ms", type=float, default=d.camera.clock_offset_s * 1e3,
-                   help="camera clock offset (its clock reads true time + offset), ms (4)")
+        s.add_argument(f"--{axis}-deg", type=float, default=np.degrees(amp), metavar="DEG", help=f"{axis} amplitude, deg")
+        s.add_argument(f"--{axis}-period-s", type=float, default=per, metavar="S", help=f"{axis} period, s")
+    s.add_argument("--radar-rate-hz", type=float, default=d.radar.rate_hz, metavar="HZ", help="radar rate, Hz")
+    s.add_argument("--radar-sigma-range-m", type=float, default=d.radar.sigma_range_m, metavar="M",
+                   help="radar range noise standard deviation, m")
+    s.add_argument("--radar-sigma-angle-mrad", type=float, default=d.radar.sigma_azimuth_rad * 1e3, metavar="MRAD",
+                   help="radar azimuth and elevation noise standard deviation, mrad")
+    s.add_argument("--radar-clock-offset-ms", type=float, default=d.radar.clock_offset_s * 1e3, metavar="MS",
+                   help="radar clock offset (its clock reads true time + offset), ms")
+    s.add_argument("--camera-rate-hz", type=float, default=d.camera.rate_hz, metavar="HZ", help="camera rate, Hz")
+    s.add_argument("--camera-sigma-angle-mrad", type=float, default=d.camera.sigma_azimuth_rad * 1e3, metavar="MRAD",
+                   help="camera azimuth and elevation noise standard deviation, mrad")
+    s.add_argument("--camera-clock-offset-ms", type=float, default=d.camera.clock_offset_s * 1e3, metavar="MS",
+                   help="camera clock offset (its clock reads true time + offset), ms")
 
 
 def scenario_from_args(args: argparse.Namespace) -> LandingScenario:
@@ -109,6 +119,12 @@ def scenario_from_args(args: argparse.Namespace) -> LandingScenario:
 
 
 def _check_args(args: argparse.Namespace) -> None:
+    """Reject impossible options before the simulation (ValueError naming the option)."""
+    for name, value in vars(args).items():
+        if isinstance(value, float) and not np.isfinite(value):
+            raise ValueError(f"--{name.replace('_', '-')}: expected a finite number, got {value}")
+    if args.seed < 0:
+        raise ValueError(f"--seed: expected an integer >= 0, got {args.seed}")
     if args.runs < 2:
         raise ValueError(f"--runs: expected at least 2 Monte Carlo runs, got {args.runs}")
     for name in ("bin_m", "plot_bin_m", "fusion_rate_hz", "half_window_s", "radar_rate_hz", "camera_rate_hz"):
@@ -219,14 +235,16 @@ def run(args: argparse.Namespace) -> int:
     _check_args(args)
     sc = scenario_from_args(args)
     config = _config(args, sc)
-    out: Path = args.out
-    out.mkdir(parents=True, exist_ok=True)
+    out = prepare_out(args.out)
     start = time.perf_counter()
     fine, mc = _evaluate(args, sc, config)
     elapsed = time.perf_counter() - start
     nees, z = _report(args, sc, config, mc)
     bins = _bins_json(mc, z)
-    files = write_plots(out, mc, fine)
+    files = []
+    if not args.no_plots:
+        with writing(out):
+            files = write_plots(out, mc, fine)
     summary = {
         "command": "registration landing",
         "runs": args.runs,
@@ -244,6 +262,8 @@ def run(args: argparse.Namespace) -> int:
         },
         "plots": files,
     }
-    (out / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
-    print(f"wrote {out / 'summary.json'} and {', '.join(files)} ({elapsed:.1f} s Monte Carlo)")
+    with writing(out / "summary.json"):
+        (out / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
+    plots = f" and {', '.join(files)}" if files else ""
+    print(f"wrote {out / 'summary.json'}{plots} ({elapsed:.1f} s Monte Carlo)")
     return 0

@@ -8,46 +8,79 @@ from pathlib import Path
 
 import numpy as np
 
-from registration.online import DEFAULT_LINEARIZATION, LINEARIZATIONS
+from registration.cli.errors import (
+    add_allow_inconsistent, consistency_gate, consistency_line, prepare_out, writing,
+)
+from registration.cli.options import add_no_plots, add_out, add_seed
+from registration.online import DEFAULT_LINEARIZATION, LINEARIZATIONS, Q_MODES, T_VARIANTS
 
-HELP = "simulate the paper's two-ship scenario, register online, and compare with the paper's Table 1"
+HELP = "simulate the two-ship scenario of Wang et al. 2011, register online, and compare with the paper's Table 1"
 
 DEFAULT_MOTION = "2,8,5,12"
 
 
 def add_scenario_arguments(p: argparse.ArgumentParser) -> None:
     """Options shared by `simulate` and `montecarlo`: the paper scenario and the filter settings."""
-    p.add_argument("--angle-sigma-deg", type=float, default=0.5, help="bearing/elevation noise sigma, deg (paper: 0.5)")
-    p.add_argument("--range-sigma-m", type=float, default=50.0, help="range noise sigma, m (paper: 50)")
-    p.add_argument("--steps", type=int, default=300, help="synchronous measurement pairs at 1 s (paper: 300)")
+    p.add_argument("--angle-sigma-deg", type=float, default=0.5, metavar="DEG",
+                   help="bearing and elevation noise standard deviation, deg (the paper's value)")
+    p.add_argument("--range-sigma-m", type=float, default=50.0, metavar="M",
+                   help="range noise standard deviation, m (the paper's value)")
+    p.add_argument("--steps", type=int, default=300, metavar="N",
+                   help="synchronous measurement pairs, one per second (the paper's count)")
     p.add_argument(
         "--ship-motion", nargs="?", const=DEFAULT_MOTION, default=None, metavar="PITCH_DEG,PITCH_S,ROLL_DEG,ROLL_S",
-        help=f"let both ships pitch and roll sinusoidally (no value: {DEFAULT_MOTION}); default: level ships as in the paper",
+        help="let both ships pitch and roll sinusoidally: amplitudes in deg (below 45), periods in s "
+             f"(no value: {DEFAULT_MOTION}); default: level ships, as in the paper",
     )
     p.add_argument("--linearization", choices=list(LINEARIZATIONS), default=DEFAULT_LINEARIZATION,
-                   help=f"where the filter linearises the model (default {DEFAULT_LINEARIZATION}; paper: as printed)")
-    p.add_argument("--q-mode", choices=["fixed", "adaptive"], default="fixed")
-    p.add_argument("--t-variant", choices=["standard", "paper"], default="standard",
-                   help="the filter's T (the data are simulated with the standard T)")
+                   help="where the filter linearises the model: paper = at the raw measurements (as printed), "
+                        "relinearized = at the corrected measurements (extended Kalman filter), "
+                        "fitted = at the most probable noise-free plots")
+    p.add_argument("--q-mode", choices=list(Q_MODES), default="fixed",
+                   help="the filter's process noise Q: fixed (a small constant Q per step) or adaptive "
+                        "(the sample covariance of the last 20 estimates, the fixed Q as a floor; eqs. 21-22)")
+    p.add_argument("--t-variant", choices=list(T_VARIANTS), default="standard",
+                   help="the filter's ENU->ECEF rotation T: standard (orthonormal) or paper (eq. 4 as printed); "
+                        "the data are always simulated with the standard T")
+
+
+def check_scenario_arguments(args: argparse.Namespace) -> None:
+    """Reject out-of-range scenario options before any work (ValueError naming the option)."""
+    if not 0 < args.angle_sigma_deg < 20:
+        raise ValueError(f"--angle-sigma-deg: expected a value in (0, 20) degrees, got {args.angle_sigma_deg}")
+    if not 0 < args.range_sigma_m < 1e6:
+        raise ValueError(f"--range-sigma-m: expected a value in (0, 1e6) m, got {args.range_sigma_m}")
+    if args.steps < 2:
+        raise ValueError(f"--steps: expected at least 2 measurement pairs, got {args.steps}")
+    if args.seed < 0:
+        raise ValueError(f"--seed: expected an integer >= 0, got {args.seed}")
+    parse_motion(args.ship_motion)
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--seed", type=int, default=0, help="random seed of the measurement noise (default 0)")
+    add_seed(p, 0)
     add_scenario_arguments(p)
-    p.add_argument("--out", type=Path, default=Path("out/simulate"), help="output folder (default out/simulate)")
-    p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
-    p.add_argument("--export", type=Path, default=None, help="also write the simulated data (file format of `registration register`)")
+    add_out(p, "simulate")
+    add_no_plots(p)
+    p.add_argument("--export", type=Path, default=None, metavar="FILE",
+                   help="also write the simulated data as FILE (.csv or .parquet; the format `registration register` "
+                        "reads, see `registration schema`); default: not written")
+    add_allow_inconsistent(p)
 
 
 def parse_motion(text: str | None):
+    """``PITCH_DEG,PITCH_S,ROLL_DEG,ROLL_S`` -> ShipMotion (radians, seconds); None -> None (level ships)."""
     from registration.online.scenario import ShipMotion
 
     if text is None:
         return None
+    expected = f"--ship-motion: expected PITCH_DEG,PITCH_S,ROLL_DEG,ROLL_S (e.g. {DEFAULT_MOTION}), got {text!r}"
     try:
         pd, ps, rd, rs = (float(v) for v in text.split(","))
     except ValueError as exc:
-        raise ValueError(f"--ship-motion: expected PITCH_DEG,PITCH_S,ROLL_DEG,ROLL_S, got {text!r}") from exc
+        raise ValueError(expected) from exc
+    if not (0 <= pd < 45 and 0 <= rd < 45 and 0 < ps < np.inf and 0 < rs < np.inf):
+        raise ValueError(expected + ": amplitudes in [0, 45) deg and periods > 0 s")
     return ShipMotion(np.radians(pd), ps, np.radians(rd), rs)
 
 
@@ -83,34 +116,29 @@ def estimate_lines(rows: list[dict]) -> list[str]:
     return lines
 
 
-def run(args: argparse.Namespace) -> int:
-    from registration.online import RegistrationConfig, register
-    from registration.online.scenario import PAPER_TABLE1, paper_scenario
+def _check(args: argparse.Namespace) -> None:
+    """Every option checked and the output places prepared before the simulation starts."""
+    check_scenario_arguments(args)
+    if args.export is not None:
+        from registration.recorded.formats import file_format
 
-    if not 0 < args.angle_sigma_deg < 20:
-        raise ValueError("--angle-sigma-deg: expected a value in (0, 20) degrees")
-    if not args.range_sigma_m > 0:
-        raise ValueError("--range-sigma-m: expected a value > 0 m")
-    motion = parse_motion(args.ship_motion)
-    scenario = paper_scenario(
-        seed=args.seed, angle_sigma=np.radians(args.angle_sigma_deg), range_sigma=args.range_sigma_m,
-        n_steps=args.steps, ship_motion=motion, t_variant="standard",
-    )
-    config = RegistrationConfig(
-        sigma0=tuple(scenario.sigma0), q_mode=args.q_mode, linearization=args.linearization, t_variant=args.t_variant,
-    )
-    result = register(scenario.data, config, progress=True)
-    stats = result.statistics()
-    # The same run with the noise switched off: what the systematic errors alone produce.
-    quiet = paper_scenario(
-        seed=args.seed, angle_sigma=0.0, range_sigma=0.0, n_steps=args.steps, ship_motion=motion, t_variant="standard",
-    )
-    noise_free = register(quiet.data, config).statistics()
-    rows = result.estimate_rows(scenario.truth_state)
+        try:
+            file_format(args.export)
+        except ValueError as exc:
+            raise ValueError(f"--export: {exc}") from exc
+        if args.export.is_dir():
+            raise ValueError(f"--export: {args.export} is a folder; expected a file name ending in .csv or .parquet")
+        prepare_out(args.export.parent)
+    prepare_out(args.out)
+
+
+def _print_report(args, scenario, result, stats, noise_free, rows) -> None:
+    """The report on standard output: scenario line, Table 1, estimates, observability, consistency."""
+    from registration.online.scenario import PAPER_TABLE1
 
     print(f"Paper scenario (Wang et al. 2011, section 4): {args.steps} pairs at 1 s, seed {args.seed}, "
           f"angle noise {args.angle_sigma_deg} deg, range noise {args.range_sigma_m} m, "
-          f"ships {'level (paper)' if motion is None else 'pitching/rolling ' + args.ship_motion}; "
+          f"ships {'level (paper)' if args.ship_motion is None else 'pitching/rolling ' + args.ship_motion}; "
           f"linearization {args.linearization}, Q {args.q_mode}, T {args.t_variant}")
     print()
     print("Table 1 (paper) beside this run. Ours uses our own target trajectory (the paper's came from a")
@@ -127,10 +155,14 @@ def run(args: argparse.Namespace) -> int:
     print("Observability:")
     for line in result.observability.lines():
         print(line)
-    print(f"\nmean NIS {float(np.mean(result.nis)):.3f} (3 expected for a consistent filter)")
+    print("\n" + consistency_line(result.consistency))
+
+
+def _write(args, scenario, config, result, stats, noise_free, rows) -> list[Path]:
+    """summary.json, the plots and the --export file; the paths written."""
+    from registration.online.scenario import PAPER_TABLE1
 
     out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
     summary = {
         "scenario": scenario.description,
         "config": config.to_json(),
@@ -141,19 +173,49 @@ def run(args: argparse.Namespace) -> int:
         "estimates": rows,
         "observability": result.observability.to_json(),
         "mean_nis": float(np.mean(result.nis)),
+        "consistency": result.consistency.to_json(),
     }
-    (out / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
     written = [out / "summary.json"]
+    with writing(written[0]):
+        written[0].write_text(json.dumps(summary, indent=2) + "\n")
     if not args.no_plots:
         from registration.online.plots import plot_differences, plot_estimates, plot_tracks
 
-        written.append(plot_tracks(scenario.data, scenario.truth, out / "tracks.png"))
-        written.append(plot_differences(result, out / "differences.png"))
-        written.append(plot_estimates(result, scenario.truth_state, out / "estimates.png"))
+        for name, draw in (("tracks.png", lambda p: plot_tracks(scenario.data, scenario.truth, p)),
+                           ("differences.png", lambda p: plot_differences(result, p)),
+                           ("estimates.png", lambda p: plot_estimates(result, scenario.truth_state, p))):
+            with writing(out / name):
+                written.append(draw(out / name))
     if args.export is not None:
         from registration.recorded.formats import write_table
 
-        write_table(scenario.data, args.export)
-        written.append(args.export)
+        with writing(args.export):
+            written.append(write_table(scenario.data, args.export))
+    return written
+
+
+def run(args: argparse.Namespace) -> int:
+    from registration.online import RegistrationConfig, register
+    from registration.online.scenario import paper_scenario
+
+    _check(args)
+    motion = parse_motion(args.ship_motion)
+    scenario = paper_scenario(
+        seed=args.seed, angle_sigma=np.radians(args.angle_sigma_deg), range_sigma=args.range_sigma_m,
+        n_steps=args.steps, ship_motion=motion, t_variant="standard",
+    )
+    config = RegistrationConfig(
+        sigma0=tuple(scenario.sigma0), q_mode=args.q_mode, linearization=args.linearization, t_variant=args.t_variant,
+    )
+    result = register(scenario.data, config, progress=True)
+    stats = result.statistics()
+    # The same run with the noise switched off: what the systematic errors alone produce.
+    quiet = paper_scenario(
+        seed=args.seed, angle_sigma=0.0, range_sigma=0.0, n_steps=args.steps, ship_motion=motion, t_variant="standard",
+    )
+    noise_free = register(quiet.data, config).statistics()
+    rows = result.estimate_rows(scenario.truth_state)
+    _print_report(args, scenario, result, stats, noise_free, rows)
+    written = _write(args, scenario, config, result, stats, noise_free, rows)
     print("\nwrote " + ", ".join(str(p) for p in written))
-    return 0
+    return consistency_gate("registration simulate", result.consistency, args.allow_inconsistent)

@@ -1,0 +1,149 @@
+"""Every failure a user can meet ends with one line on standard error and a documented exit code, no traceback."""
+
+from __future__ import annotations
+
+import argparse
+import errno
+import os
+import pathlib
+import signal
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from registration.cli import main
+from registration.cli.errors import (
+    DEBUG_ENV, EXIT_BAD_INPUT, EXIT_BROKEN_PIPE, EXIT_INCONSISTENT, EXIT_INTERRUPTED, interrupt_message,
+)
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def cli(*args, cwd=None, env=None, **popen):
+    """``python -m registration ARGS`` with the checkout on the path."""
+    env = {**os.environ, "PYTHONPATH": str(ROOT), **(env or {})}
+    return subprocess.Popen([sys.executable, "-m", "registration", *args], cwd=cwd, env=env, **popen)
+
+
+def test_the_exit_codes_are_the_documented_ones():
+    assert (EXIT_BAD_INPUT, EXIT_INCONSISTENT, EXIT_INTERRUPTED, EXIT_BROKEN_PIPE) == (2, 3, 130, 141)
+
+
+@pytest.mark.parametrize("command", [
+    ["simulate", "--steps", "20", "--no-plots"], ["montecarlo", "--runs", "2", "--steps", "20", "--no-plots"],
+    ["fuse", "--trials", "10", "--no-plots"], ["landing", "--runs", "2", "--no-plots"],
+])
+def test_out_naming_an_existing_file_is_one_line(tmp_path, capsys, command):
+    """Before: FileExistsError with a traceback from mkdir."""
+    afile = tmp_path / "afile"
+    afile.write_text("keep me")
+    assert main([*command, "--out", str(afile)]) == EXIT_BAD_INPUT
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "Traceback" not in err
+    assert err.startswith(f"registration {command[0]}: error: ") and str(afile) in err and "--out" in err
+    assert afile.read_text() == "keep me"
+
+
+def test_an_unusable_out_fails_before_the_work(tmp_path, capsys, monkeypatch):
+    """The output folder is checked first: the simulation never starts."""
+    import registration.online
+
+    monkeypatch.setattr(registration.online, "register", lambda *a, **k: pytest.fail("simulation started"))
+    (tmp_path / "afile").write_text("")
+    assert main(["simulate", "--out", str(tmp_path / "afile" / "sub")]) == EXIT_BAD_INPUT
+    assert "cannot create the output folder" in capsys.readouterr().err
+
+
+def test_a_read_only_output_names_the_path(tmp_path, capsys, monkeypatch):
+    """Before: OSError [Errno 30] with a traceback (running as root, read-only is simulated)."""
+    def read_only(self, *args, **kwargs):
+        raise OSError(errno.EROFS, os.strerror(errno.EROFS), str(self))
+
+    monkeypatch.setattr(pathlib.Path, "write_text", read_only)
+    out = tmp_path / "ro"
+    assert main(["simulate", "--steps", "20", "--no-plots", "--out", str(out)]) == EXIT_BAD_INPUT
+    err = capsys.readouterr().err
+    assert err == f"registration simulate: error: cannot write {out / 'summary.json'}: Read-only file system\n"
+
+
+def test_an_unwritable_export_names_the_path(tmp_path, capsys, monkeypatch):
+    import registration.recorded.formats as formats
+
+    def read_only(frame, path, fmt=None):
+        raise OSError(errno.EROFS, os.strerror(errno.EROFS), str(path))
+
+    monkeypatch.setattr(formats, "write_frame", read_only)
+    export = tmp_path / "data.csv"
+    assert main(["simulate", "--steps", "20", "--no-plots", "--out", str(tmp_path / "o"), "--export", str(export)]) == 2
+    assert capsys.readouterr().err == f"registration simulate: error: cannot write {export}: Read-only file system\n"
+
+
+def test_a_folder_where_a_file_goes_is_one_line(tmp_path, capsys):
+    """A real operating-system error while writing (root cannot be kept out by permissions; a folder can)."""
+    (tmp_path / "summary.json").mkdir()
+    assert main(["fuse", "--trials", "10", "--no-plots", "--out", str(tmp_path)]) == EXIT_BAD_INPUT
+    err = capsys.readouterr().err
+    assert err.startswith("registration fuse: error: cannot write ") and "summary.json: Is a directory" in err
+    assert "Traceback" not in err
+
+
+def test_the_debug_variable_shows_the_traceback(tmp_path, capsys, monkeypatch):
+    (tmp_path / "afile").write_text("")
+    monkeypatch.setenv(DEBUG_ENV, "1")
+    assert main(["fuse", "--trials", "10", "--out", str(tmp_path / "afile")]) == EXIT_BAD_INPUT
+    err = capsys.readouterr().err
+    assert "Traceback" in err and err.rstrip().endswith("(--out)")
+
+
+def test_ctrl_c_says_where_it_stopped(tmp_path, capsys, monkeypatch):
+    """Before: a raw KeyboardInterrupt traceback."""
+    import registration.online
+
+    def interrupted(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(registration.online, "register", interrupted)
+    out = tmp_path / "sim"
+    assert main(["simulate", "--out", str(out)]) == EXIT_INTERRUPTED
+    assert capsys.readouterr().err == f"\nregistration simulate: interrupted; outputs in {out} may be incomplete\n"
+
+
+def test_ctrl_c_with_a_checkpoint_says_how_to_resume():
+    args = argparse.Namespace(checkpoint=Path("run.ckpt"), out=Path("reg"))
+    text = interrupt_message("registration register", args)
+    assert text == "registration register: interrupted; rerun the same command to resume from its checkpoint run.ckpt"
+    assert "resume" not in interrupt_message("registration register", argparse.Namespace(checkpoint=None, out=Path("r")))
+
+
+def test_a_real_sigint_exits_130_without_traceback(tmp_path):
+    proc = cli("landing", "--runs", "100000", "--no-plots", "--out", "land", cwd=tmp_path,
+               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    seen = b""
+    while b"batch/s" not in seen:  # the progress bar has moved: the work has started
+        chunk = os.read(proc.stderr.fileno(), 4096)
+        if not chunk:
+            break  # the command ended on its own
+        seen += chunk
+    proc.send_signal(signal.SIGINT)
+    try:
+        err = (seen + proc.stderr.read()).decode()
+        code = proc.wait(timeout=60)
+    finally:
+        proc.kill()
+    assert code == EXIT_INTERRUPTED, err
+    assert "Traceback" not in err and "KeyboardInterrupt" not in err
+    assert err.endswith("\nregistration landing: interrupted; outputs in land may be incomplete\n")
+
+
+@pytest.mark.parametrize("command", [["schema"], ["schema", "--json"], ["simulate", "--steps", "20", "--no-plots"]])
+def test_a_closed_pipe_stops_quietly(tmp_path, command):
+    """Before: BrokenPipeError tracebacks (e.g. `registration schema | head -1`)."""
+    read_end, write_end = os.pipe()
+    os.close(read_end)  # the reader is gone before the first line
+    proc = cli(*command, cwd=tmp_path, stdout=write_end, stderr=subprocess.PIPE)
+    os.close(write_end)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == EXIT_BROKEN_PIPE
+    assert b"Traceback" not in err and b"BrokenPipe" not in err and b"Exception ignored" not in err
