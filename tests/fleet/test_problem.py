@@ -169,3 +169,18 @@ def test_nothing_left_to_register(scenario):
     t["references"] = None
     with pytest.raises(ValueError, match=r"no plots to register .*seen by one sensor only"):
         solve_batch(build_problem(**t))
+
+
+def test_navigation_is_interpolated_across_north_and_a_site_is_constant():
+    """Heading 179 deg then -179 deg: half way it is 180 deg, not 0; a one-row site holds always."""
+    nav = {"platform": np.array(["A", "A", "S"]), "time": np.array([0.0, 10.0, 0.0]),
+           "lat": np.array([0.6, 0.6002, 0.61]), "lon": np.array([3.1415, -3.1415, 0.2]), "alt": np.array([10.0, 10.0, 50.0]),
+           "heading": np.radians([179.0, -179.0, 0.0]), "pitch": np.array([0.0, 0.02, 0.0]), "roll": np.zeros(3)}
+    sensors = {"sensor": np.array(["a", "s"]), "platform": np.array(["A", "S"]), "sigma_bearing": np.array([0.01, 0.01])}
+    plots = {"time": np.array([5.0, 5.0, 123.0]), "sensor": np.array(["a", "s", "s"]), "target": np.array(["T", "T", "T"]),
+             "bearing": np.array([0.1, 0.2, 0.3])}
+    problem = build_problem(plots, sensors, nav)
+    a, s = problem.nav[0], problem.nav[1]
+    np.testing.assert_allclose([a[0], abs(a[1]), abs(a[3]), a[4]], [0.6001, np.pi, np.pi, 0.01], atol=1e-12)
+    np.testing.assert_array_equal(problem.nav[2], s)
+    np.testing.assert_allclose(s[:3], [0.61, 0.2, 50.0])
