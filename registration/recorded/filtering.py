@@ -16,15 +16,21 @@ import numpy as np
 from registration.online.contract import correct_rows
 from registration.online.filter import OnlineRegistrar
 from registration.online.information import information_at_estimate, target_positions
-from registration.recorded.columns import SYNC_COLUMNS
+from registration.recorded.columns import SYNC_COLUMNS, FileFormatError
 from registration.recorded.formats import iter_frames
 from registration.recorded.options import RunOptions
 from registration.recorded.outputs import Outputs, estimate_frame, position_frame, rejected_rows
 from registration.recorded.plan import RunPlan, Table
+from registration.recorded.plotseries import PLOT_POINTS, PlotSeries
 from registration.recorded.rowcheck import BadRowError, CheckedBlock, Rejection, check_frame, sync_layout
 from registration.recorded.runstate import Checkpointer, RunState
 
-__all__ = ["filter_table"]
+__all__ = ["filter_table", "NoValidRowsError"]
+
+
+class NoValidRowsError(ValueError):
+    """Pass 1 accepted no row: every row was rejected (listed in rejected.csv) or nothing was paired."""
+
 
 _NON_FINITE_STEP = "the filter step for this row produced non-finite values (extreme geometry or values)"
 
@@ -39,9 +45,7 @@ def filter_table(table: Table, plan: RunPlan, options: RunOptions) -> RunState:
         if state.phase == "filter":
             _filter_pass(table, state, outputs, options, saver)
             if state.rows_accepted == 0:
-                raise ValueError(
-                    f"{table.path}: no valid rows to register: all {state.rows_read} rows rejected {state.rejected}, the first "
-                    f"at {state.first_rejection}; see {options.out / 'rejected.csv'}")
+                raise _nothing_to_register(table, plan, state, options)
             state.phase = "observability" if options.observability == "final" else "summary"
             saver.save(state, outputs)
         if state.phase == "observability":
@@ -53,16 +57,28 @@ def filter_table(table: Table, plan: RunPlan, options: RunOptions) -> RunState:
     return state
 
 
+def _nothing_to_register(table: Table, plan: RunPlan, state: RunState, options: RunOptions) -> ValueError:
+    """The error of a pass 1 that accepted no row: no rows at all, or every row rejected."""
+    if state.rows_read == 0 and plan.form == "synchronous":
+        return FileFormatError(f"{table.label}: no data rows (the file holds only a header)")
+    if state.rows_read == 0:
+        return NoValidRowsError(f"no instant of the two plot files could be paired, so there is nothing to register; "
+                                f"see {options.out / 'unpaired.csv'} and {options.out / 'rejected.csv'}")
+    codes = ", ".join(f"{n} {code}" for code, n in sorted(state.rejected.items()))
+    return NoValidRowsError(f"{table.label}: no valid rows to register: all {state.rows_read} rows rejected ({codes}), the "
+                            f"first at {state.first_rejection}; see {options.out / 'rejected.csv'}")
+
+
 def _start(plan: RunPlan, options: RunOptions) -> tuple[RunState, Outputs]:
     """A new state and fresh outputs, or the checkpoint's state and outputs cut back to its marks."""
     if plan.resume is None:
-        state = RunState(OnlineRegistrar(options.config))
-        return state, Outputs(options, keep_rejected=plan.form == "asynchronous")
+        state = RunState(OnlineRegistrar(options.config), plot_series=PlotSeries(PLOT_POINTS) if options.plots else None)
+        return state, Outputs(options, plan.folder, keep_rejected=plan.form == "asynchronous")
     payload = plan.resume
     options.message(f"registration register: resuming from checkpoint {options.checkpoint} at row "
                     f"{payload['state']['rows_done']} (phase {payload['phase']})")
     state = RunState.from_checkpoint(payload, options.config)
-    return state, Outputs(options, payload["outputs"])
+    return state, Outputs(options, plan.folder, payload["outputs"])
 
 
 def _filter_pass(table: Table, state: RunState, outputs: Outputs, options: RunOptions, saver: Checkpointer) -> None:
@@ -72,10 +88,10 @@ def _filter_pass(table: Table, state: RunState, outputs: Outputs, options: RunOp
     bar = options.progress_bar(table.rows, where.rows_done, "registering")
     try:
         for first, frame in iter_frames(table.path, SYNC_COLUMNS, options.block_rows, start_row=where.rows_done):
-            block = check_frame(frame, layout, str(table.path), first_row=first, mode=options.on_bad_row, last_time=where.last_time)
+            block = check_frame(frame, layout, table.label, first_row=first, mode=options.on_bad_row, last_time=where.last_time)
             where.last_time = block.last_time
             rejections = list(block.rejections) + _register_block(block, table, state, outputs, options)
-            outputs.rejected.append_rows(rejected_rows(table.path, sorted(rejections, key=lambda r: r.row)))
+            outputs.rejected.append_rows(rejected_rows(table.label, sorted(rejections, key=lambda r: r.row)))
             state.add_rejections(rejections)
             state.rows_read += block.n_rows
             state.rows_accepted += block.n_rows - len(rejections)
@@ -101,7 +117,7 @@ def _register_block(block: CheckedBlock, table: Table, state: RunState, outputs:
         if s < len(accepted):  # this row's step would not be finite: never committed
             row = int(block.first_row + accepted[s])
             if options.on_bad_row != "skip":
-                raise BadRowError(str(table.path), row, "*", "filter_non_finite", _NON_FINITE_STEP)
+                raise BadRowError(table.label, row, "*", "filter_non_finite", _NON_FINITE_STEP)
             rejections.append(Rejection(row, "*", "filter_non_finite", _NON_FINITE_STEP, "{}"))
             state.filter_rejected.add(row)
             s += 1
@@ -117,6 +133,8 @@ def _write_registered(rows_abs, times, rows, result: dict, state: RunState, outp
     raw_diff, cor_diff = raw_a - raw_b, cor_a - cor_b
     outputs.positions.append_frame(position_frame(rows_abs, times, cor_a, cor_b, raw_diff, cor_diff))
     state.add_registered(times, result["nis"], raw_diff, cor_diff)
+    if state.plot_series is not None:
+        state.plot_series.add(times, x, result["P"], raw_diff, cor_diff, cor_a, cor_b, rows)
 
 
 def _observability_pass(table: Table, state: RunState, outputs: Outputs, options: RunOptions, saver: Checkpointer) -> None:
@@ -127,7 +145,7 @@ def _observability_pass(table: Table, state: RunState, outputs: Outputs, options
     bar = options.progress_bar(table.rows, where.rows_done, "observability")
     try:
         for first, frame in iter_frames(table.path, SYNC_COLUMNS, options.block_rows, start_row=where.rows_done):
-            block = check_frame(frame, layout, str(table.path), first_row=first, mode="skip", last_time=where.last_time)
+            block = check_frame(frame, layout, table.label, first_row=first, mode="skip", last_time=where.last_time)
             where.last_time = block.last_time
             accepted = np.flatnonzero(block.accepted)
             if state.filter_rejected:

@@ -1,10 +1,10 @@
 """The outputs of the filter pass: estimates, positions and rejected rows, and the streaming
 before/after statistics of the ECEF differences.
 
-:class:`Outputs` opens the three appendable files (new, or cut back to the marks a checkpoint
-recorded); :func:`estimate_frame` and :func:`position_frame` turn one block of filter results
-into rows in file units (degrees and metres); :class:`DifferenceStats` accumulates max |.|,
-mean and standard deviation per ECEF axis (m) without keeping the rows.
+:class:`Outputs` opens the three appendable files in the run's folder (new, or cut back to the
+marks a checkpoint recorded); :func:`estimate_frame` and :func:`position_frame` turn one block
+of filter results into rows in file units (degrees and metres); :class:`DifferenceStats`
+accumulates max |.|, mean and standard deviation per ECEF axis (m) without keeping the rows.
 """
 
 from __future__ import annotations
@@ -16,23 +16,26 @@ import numpy as np
 from registration.online.contract import IS_ANGLE, STATE_NAMES
 from registration.recorded.columns import ESTIMATE_COLUMNS, POSITION_COLUMNS, REJECTED_COLUMNS
 from registration.recorded.options import RunOptions
+from registration.recorded.outfolder import RunFolder
 from registration.recorded.writers import CsvAppender, open_appender
 
 __all__ = ["DifferenceStats", "Outputs", "output_paths", "estimate_frame", "position_frame", "rejected_rows"]
 
 
-def output_paths(options: RunOptions) -> dict[str, Path]:
-    """Paths of the estimates, positions and rejected outputs of a run."""
-    out, ext = options.out, options.output_suffix
+def output_paths(options: RunOptions, folder: Path | None = None) -> dict[str, Path]:
+    """Paths of the estimates, positions and rejected outputs of a run in ``folder`` (default: ``options.out``)."""
+    out, ext = options.out if folder is None else Path(folder), options.output_suffix
     return {"estimates": out / f"estimates{ext}", "positions": out / f"positions{ext}", "rejected": out / "rejected.csv"}
 
 
 class Outputs:
-    """The filter pass's three outputs. ``marks`` (from a checkpoint): ``{name: [size, rows]}``
-    to cut each back to; ``keep_rejected``: append to an existing rejected.csv (the pairing's)."""
+    """The filter pass's three outputs in the run folder ``folder``. ``marks`` (from a checkpoint):
+    ``{name: [size, rows]}`` to cut each back to; ``keep_rejected``: append to an existing
+    rejected.csv (the pairing's)."""
 
-    def __init__(self, options: RunOptions, marks: dict | None = None, *, keep_rejected: bool = False):
-        paths, fmt = output_paths(options), options.out_format
+    def __init__(self, options: RunOptions, folder: RunFolder, marks: dict | None = None, *, keep_rejected: bool = False):
+        paths, fmt = output_paths(options, folder.path), options.out_format
+        self.folder = folder
         self.estimates = open_appender(paths["estimates"], ESTIMATE_COLUMNS, fmt, None if marks is None else tuple(marks["estimates"]))
         self.positions = open_appender(paths["positions"], POSITION_COLUMNS, fmt, None if marks is None else tuple(marks["positions"]))
         if marks is None:
@@ -44,8 +47,12 @@ class Outputs:
         return (self.estimates, self.positions, self.rejected)
 
     def marks(self) -> dict:
-        """``{name: [size, rows]}``: what a checkpoint records to resume these outputs."""
-        return {name: [w.size, w.rows] for name, w in zip(("estimates", "positions", "rejected"), self._all())}
+        """``{name: [size, rows]}`` and the run folder's name: what a checkpoint records to resume
+        these outputs (no folder for a run resumed in ``--out`` itself)."""
+        marks = {name: [w.size, w.rows] for name, w in zip(("estimates", "positions", "rejected"), self._all())}
+        if not self.folder.in_place:
+            marks["folder"] = self.folder.path.name
+        return marks
 
     def sync(self) -> None:
         for w in self._all():

@@ -2,8 +2,10 @@
 
 :func:`plan_run` returns a :class:`RunPlan`: the form (one synchronous table, or two plot files
 of the asynchronous form), each input's sha256, the fingerprint (sha256 of the inputs' contents
-and of every option that changes the results) and, when ``options.checkpoint`` exists and was
-written for the same fingerprint, its payload or, for a finished run, its summary.
+and of every option that changes the results), the folder the run writes into
+(:mod:`registration.recorded.outfolder`: a new one inside ``--out``, or the one the checkpoint
+records) and, when ``options.checkpoint`` exists and was written for the same fingerprint, its
+payload or, for a finished run, its summary.
 """
 
 from __future__ import annotations
@@ -15,20 +17,27 @@ from pathlib import Path
 
 from registration.recorded.checkpoint import CheckpointError, load_checkpoint
 from registration.recorded.columns import FileFormatError
-from registration.recorded.formats import count_rows, file_format, scan_file
+from registration.recorded.formats import count_rows, file_format, iter_frames, read_columns, scan_file
 from registration.recorded.options import PairingOptions, RunOptions
+from registration.recorded.outfolder import RunFolder, mark_in_place, new_run_folder, prepare_out, publish
 
 __all__ = ["Table", "RunPlan", "plan_run", "fingerprint", "table_rows"]
 
 
 @dataclass
 class Table:
-    """The synchronous table the filter reads: its path, its rows (None: unknown) and, for the
-    asynchronous form, the pairing report."""
+    """The synchronous table the filter reads: its path, its rows (None: unknown), for the
+    asynchronous form the pairing report, and the path messages and rejected.csv name it by
+    (``published``: where it will be in ``--out``; default ``path``)."""
 
     path: Path
     rows: int | None
     pairing: dict | None = None
+    published: Path | None = None
+
+    @property
+    def label(self) -> str:
+        return str(self.path if self.published is None else self.published)
 
 
 @dataclass
@@ -45,6 +54,7 @@ class RunPlan:
     fingerprint: str
     resume: dict | None = None
     finished: dict | None = None
+    folder: RunFolder | None = None  # where the run writes (None for a finished run)
 
     def newlines(self, path: Path) -> int:
         return self.scans[str(path)][1]
@@ -82,13 +92,26 @@ def _check_inputs(inputs: list[Path], navs: list[Path]) -> str:
     return "synchronous" if len(inputs) == 1 else "asynchronous"
 
 
+def _check_has_rows(path: Path, newlines: int) -> None:
+    """Refuse a table with a header and no data rows, naming it."""
+    if file_format(path) == "parquet":
+        empty = count_rows(path) == 0
+    else:  # a CSV of more than two lines has rows; shorter ones are read to make sure
+        empty = newlines <= 2 and next(iter_frames(path, read_columns(path), 1), None) is None
+    if empty:
+        raise FileFormatError(f"{path}: no data rows (the file holds only a header)")
+
+
 def plan_run(inputs, options: RunOptions) -> RunPlan:
-    """Check the inputs, create ``options.out``, hash the inputs and look up the checkpoint."""
+    """Check the inputs and ``options.out``, hash the inputs, look up the checkpoint, and choose
+    (usually: create) the folder the run writes into."""
     inputs = [Path(p) for p in inputs]
     navs = [Path(p) for p in options.nav]
     form = _check_inputs(inputs, navs)
-    options.out.mkdir(parents=True, exist_ok=True)
     scans = {str(p): scan_file(p) for p in inputs + navs}
+    for p in inputs + navs:
+        _check_has_rows(p, scans[str(p)][1])
+    prepare_out(options.out)
     pairing = options.pairing or (PairingOptions() if form == "asynchronous" else None)
     inputs_key = {
         "inputs": [scans[str(p)][0] for p in inputs], "nav": [scans[str(p)][0] for p in navs], "form": form,
@@ -100,7 +123,11 @@ def plan_run(inputs, options: RunOptions) -> RunPlan:
     if options.checkpoint is not None and Path(options.checkpoint).exists():
         plan.resume = _matching_checkpoint(options, fp)
         if plan.resume.get("phase") == "done":
-            plan.finished = _finished_summary(options)
+            plan.finished = _finished_summary(options, plan.resume)
+            return plan
+        plan.folder = _resume_folder(options, plan.resume, fp)
+    else:
+        plan.folder = new_run_folder(options.out, options.checkpoint)
     return plan
 
 
@@ -114,7 +141,38 @@ def _matching_checkpoint(options: RunOptions, fp: str) -> dict:
     return payload
 
 
-def _finished_summary(options: RunOptions) -> dict:
+def _recorded_folder(options: RunOptions, payload: dict) -> Path | None:
+    name = payload.get("outputs", {}).get("folder")
+    return None if name is None else options.out / name
+
+
+def _resume_folder(options: RunOptions, payload: dict, fp: str) -> RunFolder:
+    """The folder the checkpoint's run writes into. A checkpoint without one (older versions), or
+    whose folder is gone while ``--out`` holds a summary of the same fingerprint, resumes in ``--out``."""
+    path = _recorded_folder(options, payload)
+    if path is not None and path.is_dir():
+        return RunFolder(options.out, path)
+    if path is not None and _summary_fingerprint(options.out) != fp:
+        raise CheckpointError(
+            f"checkpoint {options.checkpoint} continues a run whose unfinished outputs were in {path}, which no longer "
+            "exists; delete the checkpoint to start over")
+    folder = RunFolder(options.out, options.out)
+    mark_in_place(folder, options.checkpoint)
+    return folder
+
+
+def _summary_fingerprint(out: Path) -> str | None:
+    try:
+        return json.loads((out / "summary.json").read_text()).get("fingerprint")
+    except (OSError, ValueError, AttributeError):
+        return None
+
+
+def _finished_summary(options: RunOptions, payload: dict) -> dict:
+    """The summary of a finished run, published now if a kill came between the end and the publication."""
+    path = _recorded_folder(options, payload)
+    if path is not None and path.is_dir():
+        publish(RunFolder(options.out, path))
     summary_path = options.out / "summary.json"
     if not summary_path.exists():
         raise CheckpointError(f"checkpoint {options.checkpoint} says the run is complete but {summary_path} is missing; delete the checkpoint to recompute")

@@ -1,10 +1,12 @@
 """The summary of a recorded-data run (``summary.json``): rows, before/after statistics (m), final
-estimates with 1 sigma (SI units and display units), observability, mean NIS, outputs."""
+estimates with 1 sigma (SI units and display units), observability, mean NIS and its consistency
+gate, warnings about the inputs, outputs (where they are once published in ``--out``)."""
 
 from __future__ import annotations
 
 import numpy as np
 
+from registration.core.consistency import ConsistencyReport
 from registration.core.observability import observability_report
 from registration.online.contract import STATE_LABELS, STATE_NAMES, STATE_UNITS
 from registration.online.result import estimate_rows
@@ -13,17 +15,30 @@ from registration.recorded.outputs import output_paths
 from registration.recorded.plan import RunPlan, Table
 from registration.recorded.runstate import RunState
 
-__all__ = ["build_summary"]
+__all__ = ["build_summary", "summary_consistency", "NIS_DOF"]
+
+#: Degrees of freedom of one normalised innovation: the 3 ECEF components of X_A - X_B.
+NIS_DOF = 3
 
 
-def build_summary(table: Table, plan: RunPlan, state: RunState, options: RunOptions, elapsed_s: float) -> dict:
-    """The summary dict of a finished run that took ``elapsed_s`` seconds."""
+def summary_consistency(summary: dict) -> ConsistencyReport | None:
+    """The consistency gate of a run from its summary: the mean NIS over the registered rows
+    against its chi-square band (None when no row was registered)."""
+    accepted = summary["rows"]["accepted"]
+    if summary.get("mean_nis") is None or not accepted:
+        return None
+    return ConsistencyReport.from_mean(summary["mean_nis"], accepted, NIS_DOF, "NIS")
+
+
+def build_summary(table: Table, plan: RunPlan, state: RunState, options: RunOptions, elapsed_s: float,
+                  warnings: list[str] = ()) -> dict:
+    """The summary dict of a finished run that took ``elapsed_s`` seconds; ``warnings``: about its inputs."""
     final = options.observability == "final"
     info = state.obs_info if final else state.registrar.info
     report = observability_report(info, np.array(options.config.prior_sigma), STATE_NAMES, STATE_LABELS, STATE_UNITS)
     accepted = state.rows_accepted
     summary = {
-        "table": str(table.path),
+        "table": table.label,
         "state_names": list(STATE_NAMES),
         "config": options.config.to_json(),
         "options": _options_json(options),
@@ -39,7 +54,11 @@ def build_summary(table: Table, plan: RunPlan, state: RunState, options: RunOpti
         "outputs": {k: str(p) for k, p in output_paths(options).items()},
         "form": plan.form,
         "inputs": plan.input_list(),
+        "fingerprint": plan.fingerprint,
+        "warnings": list(warnings),
     }
+    gate = summary_consistency(summary)
+    summary["consistency"] = None if gate is None else gate.to_json()
     if table.pairing is not None:
         summary["pairing"] = table.pairing
     summary["elapsed_s"] = elapsed_s

@@ -1,29 +1,40 @@
-"""``registration register`` as a pipeline: plan -> pair (asynchronous form) -> filter -> report.
+"""``registration register`` as a pipeline: plan -> pair (asynchronous form) -> filter -> report -> publish.
 
 Each stage is a module of its own and hands its result to the next:
 
-1. :func:`~registration.recorded.plan.plan_run`: check the inputs, fingerprint them, find the
-   checkpoint to resume from;
-2. :func:`~registration.recorded.paired.pair_inputs` (two plot files only): the published
+1. :func:`~registration.recorded.plan.plan_run`: check the inputs and ``--out``, fingerprint the
+   inputs, find the checkpoint to resume from, and choose the run's own folder inside ``--out``
+   (:mod:`registration.recorded.outfolder`);
+2. :func:`~registration.recorded.unitcheck.input_warnings`: angle columns that seem to hold
+   radians (printed at once, listed in the summary);
+3. :func:`~registration.recorded.paired.pair_inputs` (two plot files only): the published
    synchronous table ``paired.csv|parquet``;
-3. :func:`~registration.recorded.filtering.filter_table`: read, check and filter the table block
+4. :func:`~registration.recorded.filtering.filter_table`: read, check and filter the table block
    by block, writing estimates, positions and rejected rows, then the information matrix at the
    final estimate; checkpointed and resumable bit for bit;
-4. :func:`~registration.recorded.report.build_summary`, ``summary.json``, the plots, and the
-   checkpoint marked ``done``.
+5. :func:`~registration.recorded.report.build_summary` (with the consistency gate's figures),
+   ``summary.json``, the plots (from the points kept while filtering,
+   :mod:`registration.recorded.plotseries`), the checkpoint marked ``done``;
+6. :func:`~registration.recorded.outfolder.publish`: the run's folder replaces the outputs of an
+   earlier run in ``--out``.
+
+A run that fails is not published, except when every row was rejected (``rejected.csv`` says
+why); its folder is removed unless a checkpoint records it (then rerunning resumes in it).
 """
 
 from __future__ import annotations
 
 import time
 
-from registration.recorded.filtering import filter_table
+from registration.recorded.filtering import NoValidRowsError, filter_table
 from registration.recorded.options import RunOptions
+from registration.recorded.outfolder import discard, publish, records_folder
 from registration.recorded.paired import pair_inputs
-from registration.recorded.plan import plan_run
-from registration.recorded.plots import write_plots
+from registration.recorded.plan import RunPlan, plan_run
+from registration.recorded.plots import series_from_outputs, write_plots
 from registration.recorded.report import build_summary
 from registration.recorded.runstate import mark_done
+from registration.recorded.unitcheck import input_warnings
 from registration.recorded.writers import write_json_atomic
 
 __all__ = ["run_register"]
@@ -32,22 +43,46 @@ __all__ = ["run_register"]
 def run_register(inputs, options: RunOptions) -> dict:
     """Register recorded data: one synchronous table, or two per-sensor plot files (+ navigation).
 
-    Writes into ``options.out``: ``estimates`` and ``positions`` (.csv or .parquet),
+    Publishes into ``options.out``: ``estimates`` and ``positions`` (.csv or .parquet),
     ``rejected.csv``, ``summary.json``, the plots and, for the asynchronous form, ``paired.*``,
-    ``unpaired.csv`` and ``pairing.json``. Returns the summary. Raises ValueError subclasses for
-    bad input: FileFormatError, BadRowError (``on_bad_row="stop"``), CheckpointError.
+    ``unpaired.csv`` and ``pairing.json``, replacing what an earlier run wrote there. Returns the
+    summary; its ``consistency`` says whether the data fit the model (the caller decides what a
+    grossly inconsistent run means). Raises ValueError subclasses for bad input: FileFormatError,
+    BadRowError (``on_bad_row="stop"``), CheckpointError, OutputFolderError, NoValidRowsError.
     """
     started = time.perf_counter()
     plan = plan_run(inputs, options)
     if plan.finished is not None:
         return plan.finished
+    try:
+        summary = _run(plan, options, started)
+    except NoValidRowsError:
+        publish(plan.folder)  # a complete answer: rejected.csv lists every row with its reason
+        raise
+    except BaseException:
+        if not (options.checkpoint is not None and records_folder(options.checkpoint, plan.folder.path.name)):
+            discard(plan.folder)
+        raise
+    if options.checkpoint is not None:
+        mark_done(options.checkpoint)  # a kill from here on: the rerun publishes the folder the checkpoint records
+    publish(plan.folder)  # an interrupted publication is completed by the next run into --out
+    return summary
+
+
+def _run(plan: RunPlan, options: RunOptions, started: float) -> dict:
+    """The stages after the plan, in the run's folder, up to its summary.json and plots."""
+    warnings = input_warnings(plan)
+    for w in warnings:
+        options.message(f"registration register: warning: {w}")
     table = pair_inputs(plan, options) if plan.form == "asynchronous" else plan.sync_table()
     state = filter_table(table, plan, options)
-    summary = build_summary(table, plan, state, options, elapsed_s=round(time.perf_counter() - started, 3))
-    write_json_atomic(options.out / "summary.json", summary)
+    summary = build_summary(table, plan, state, options, elapsed_s=round(time.perf_counter() - started, 3), warnings=warnings)
+    folder = plan.folder
+    write_json_atomic(folder.path / "summary.json", summary)
     if options.plots:
-        summary["plots"] = write_plots(table.path, options, summary)
-        write_json_atomic(options.out / "summary.json", summary)
-    if options.checkpoint is not None:
-        mark_done(options.checkpoint)
+        series = state.plot_series.arrays() if state.plot_series is not None else \
+            series_from_outputs(table.path, options, folder.path, state.rows_accepted)  # a resumed run
+        paths = write_plots(series, summary["observability"]["status"], folder.path)
+        summary["plots"] = [str(folder.final(p)) for p in paths]
+        write_json_atomic(folder.path / "summary.json", summary)
     return summary

@@ -19,6 +19,7 @@ from registration.online.contract import N_STATE
 from registration.online.filter import OnlineRegistrar
 from registration.recorded.checkpoint import load_checkpoint, save_checkpoint
 from registration.recorded.outputs import DifferenceStats, Outputs
+from registration.recorded.plotseries import PlotSeries
 
 __all__ = ["PassPosition", "RunState", "Checkpointer", "mark_done", "PHASES"]
 
@@ -55,6 +56,7 @@ class RunState:
     corrected: DifferenceStats = field(default_factory=DifferenceStats)  # X_A - X_B after correction
     obs_info: np.ndarray = field(default_factory=lambda: np.zeros((N_STATE, N_STATE)))  # information at the final estimate
     obs_used: int = 0  # rows in obs_info
+    plot_series: PlotSeries | None = None  # points for the plots (not checkpointed: None after a resume)
 
     def add_rejections(self, rejections: list) -> None:
         """Count rejected rows by reason (in the order given) and remember the first one."""
@@ -64,7 +66,7 @@ class RunState:
             self.first_rejection = f"row {rejections[0].row}, column {rejections[0].column!r}: {rejections[0].reason}"
 
     def add_registered(self, times: np.ndarray, nis: np.ndarray, raw_diff: np.ndarray, corrected_diff: np.ndarray) -> None:
-        """Take in one run of registered rows: their times (s), NIS and ECEF differences (m)."""
+        """Take in one run of registered rows for the statistics: their times (s), NIS and ECEF differences (m)."""
         self.raw.add(raw_diff)
         self.corrected.add(corrected_diff)
         self.nis_sum = self.nis_sum + float(np.sum(nis))

@@ -1,0 +1,249 @@
+"""The output folder of a run, replaced whole: ``--out`` never holds a mixture of two runs.
+
+A run writes into a folder of its own inside OUT, ``OUT/partial-<pid>-<token>``, which holds a
+file ``INCOMPLETE`` saying which run it is, its checkpoint and how to resume. Only when the run
+has finished are its outputs *published* (:func:`publish`): the files an earlier run wrote into
+OUT (:data:`OUTPUT_NAMES`) are moved aside, then the new ones are moved in (renames within one
+file system; ``summary.json`` leaves first and arrives last), and both folders are removed. During
+these few renames OUT carries an ``INCOMPLETE`` file of its own listing the files being moved,
+so a kill at that moment leaves OUT marked, and the next run into OUT completes the move. Files
+in OUT that a run does not write are never moved or deleted.
+
+A failed or interrupted run without a checkpoint removes its folder: OUT is unchanged. A
+checkpointed run keeps it: the checkpoint records the folder's name, and rerunning the same
+command resumes inside it. A checkpoint written before runs had folders of their own (no name
+recorded) resumes in OUT itself, which is then marked ``INCOMPLETE`` until the run ends.
+Leftover folders of processes that are gone and cannot be resumed are removed by the next run.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import secrets
+import shutil
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from registration.recorded.checkpoint import CheckpointError, load_checkpoint
+
+__all__ = ["OUTPUT_NAMES", "MARKER", "OutputFolderError", "RunFolder", "prepare_out", "new_run_folder",
+           "mark_in_place", "publish", "discard", "records_folder"]
+
+#: What a run writes into OUT (a Parquet output is a folder of parts).
+OUTPUT_NAMES = frozenset({
+    "estimates.csv", "estimates.parquet", "positions.csv", "positions.parquet", "rejected.csv", "summary.json",
+    "estimates.png", "differences.png", "tracks.png", "paired.csv", "paired.parquet", "pairing.json", "unpaired.csv",
+})
+#: The file that marks a folder whose contents are not a finished run.
+MARKER = "INCOMPLETE"
+_PARTIAL = "partial-"
+_ASIDE = ".replaced-"
+
+
+class OutputFolderError(ValueError):
+    """An ``--out`` that cannot be used: a file, or a folder that cannot be created or written."""
+
+
+def _is_output(name: str) -> bool:
+    """A name a run writes, or one of its temporary files (``*.tmp``, ``paired.*.partial``)."""
+    for suffix in (".tmp", ".partial"):
+        if name.endswith(suffix):
+            name = name[: -len(suffix)]
+    return name in OUTPUT_NAMES
+
+
+@dataclass(frozen=True)
+class RunFolder:
+    """Where a run writes (``path``) and where its outputs end up (``out``, the ``--out`` folder).
+    ``path == out`` for a checkpoint of an older version resumed in place."""
+
+    out: Path
+    path: Path
+
+    @property
+    def in_place(self) -> bool:
+        return self.path == self.out
+
+    def final(self, path) -> Path:
+        """Where ``path`` (a file of this folder) is once the run is published."""
+        path = Path(path)
+        try:
+            return self.out / path.relative_to(self.path)
+        except ValueError:
+            return path
+
+
+def _pid_alive(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (PermissionError, OverflowError):
+        return True
+    return True
+
+
+def _pid_of(name: str) -> int | None:
+    """The process id in ``partial-<pid>-<token>`` or ``.replaced-partial-<pid>-<token>``."""
+    try:
+        return int(name.removeprefix(_ASIDE).removeprefix(_PARTIAL).split("-")[0])
+    except ValueError:
+        return None
+
+
+def _fsync_dir(path: Path) -> None:
+    try:
+        fd = os.open(path, os.O_RDONLY)
+        try:
+            os.fsync(fd)
+        finally:
+            os.close(fd)
+    except OSError:  # some file systems refuse fsync on a folder; the renames are still atomic
+        pass
+
+
+def _write_text(path: Path, text: str) -> None:
+    with open(path, "w") as f:
+        f.write(text)
+        f.flush()
+        os.fsync(f.fileno())
+
+
+def _remove(path: Path) -> None:
+    if path.is_dir() and not path.is_symlink():
+        shutil.rmtree(path)
+    elif path.exists() or path.is_symlink():
+        path.unlink()
+
+
+def _marker_fields(path: Path) -> dict:
+    """The ``key: value`` lines of a marker file (empty if it cannot be read)."""
+    try:
+        lines = path.read_text().splitlines()
+    except (OSError, UnicodeDecodeError):
+        return {}
+    return dict(line.split(": ", 1) for line in lines if ": " in line and not line.startswith(" "))
+
+
+def records_folder(checkpoint, name: str) -> bool:
+    """Whether the checkpoint file ``checkpoint`` records the run folder ``name`` (True when it
+    cannot be read: it may still be needed)."""
+    if checkpoint is None or not Path(checkpoint).exists():
+        return False
+    try:
+        return load_checkpoint(checkpoint).get("outputs", {}).get("folder") == name
+    except CheckpointError:
+        return True
+
+
+def prepare_out(out: Path) -> None:
+    """Create ``out``; complete a publication that was interrupted; remove leftovers of runs that
+    are gone and cannot be resumed. Raises :class:`OutputFolderError` for an unusable ``out``."""
+    if out.exists() and not out.is_dir():
+        raise OutputFolderError(f"--out {out}: is a file, not a folder; give a folder (it is created if missing)")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise OutputFolderError(f"--out {out}: cannot create the folder: {exc.strerror or exc}") from exc
+    _complete_publication(out)
+    for d in sorted(out.glob(f"{_PARTIAL}*")) + sorted(out.glob(f"{_ASIDE}*")):
+        pid = _pid_of(d.name)
+        if not d.is_dir() or pid is None or _pid_alive(pid):
+            continue
+        if d.name.startswith(_ASIDE):
+            shutil.rmtree(d, ignore_errors=True)
+            continue
+        ckpt = _marker_fields(d / MARKER).get("checkpoint")
+        if ckpt == "none" or (ckpt is not None and not records_folder(ckpt, d.name)):
+            shutil.rmtree(d, ignore_errors=True)
+
+
+def _complete_publication(out: Path) -> None:
+    """Finish moving the outputs of a run whose publication into ``out`` was interrupted (its
+    process is gone). Without its run folder, ``out`` stays marked unless every file arrived."""
+    fields = _marker_fields(out / MARKER)
+    if "publishing" not in fields:
+        return
+    work, names = out / fields["publishing"], json.loads(fields.get("files", "[]"))
+    pid = _pid_of(work.name)
+    if pid is not None and _pid_alive(pid):
+        return
+    if work.is_dir() or all((out / n).exists() for n in names):
+        _move_in(out, work, names)
+
+
+def new_run_folder(out: Path, checkpoint) -> RunFolder:
+    """A new, empty run folder inside ``out`` with its ``INCOMPLETE`` marker."""
+    for _ in range(100):
+        path = out / f"{_PARTIAL}{os.getpid()}-{secrets.token_hex(3)}"
+        try:
+            path.mkdir()
+            break
+        except FileExistsError:
+            continue
+        except OSError as exc:
+            raise OutputFolderError(f"--out {out}: cannot write in the folder: {exc.strerror or exc}") from exc
+    if checkpoint is None:
+        how = (f"checkpoint: none\nWithout --checkpoint this run cannot be resumed; once process {os.getpid()} is gone "
+               f"the folder can be deleted (the next run into {out} deletes it).\n")
+    else:
+        how = (f"checkpoint: {Path(checkpoint).resolve()}\nTo resume, rerun the same command (same inputs, options, "
+               "--out and --checkpoint); it continues in this folder.\n")
+    _write_text(path / MARKER, f"This folder holds the unfinished outputs of a `registration register` run (process "
+                               f"{os.getpid()}, started {time.strftime('%Y-%m-%d %H:%M:%S')}). They are moved into "
+                               f"{out} when the run finishes; until then {out} keeps what it held before.\n" + how)
+    return RunFolder(out, path)
+
+
+def mark_in_place(folder: RunFolder, checkpoint) -> None:
+    """Mark ``out`` itself incomplete while a checkpoint of an older version resumes in it."""
+    _write_text(folder.out / MARKER, "The outputs in this folder are those of an unfinished `registration register` run.\n"
+                                     f"checkpoint: {Path(checkpoint).resolve()}\nTo resume, rerun the same command.\n")
+
+
+def publish(folder: RunFolder) -> None:
+    """Replace the outputs of an earlier run in ``folder.out`` by those of ``folder.path``."""
+    out = folder.out
+    if folder.in_place:
+        (out / MARKER).unlink(missing_ok=True)
+        return
+    fields = _marker_fields(out / MARKER)
+    if fields.get("publishing") == folder.path.name:  # this very publication was interrupted: same files
+        names = json.loads(fields["files"])
+    else:
+        names = sorted((p.name for p in folder.path.iterdir() if p.name != MARKER), key=lambda n: (n == "summary.json", n))
+        _write_text(out / MARKER, f"The outputs of a `registration register` run are being moved into this folder. If "
+                                  f"this file stays, that was interrupted: the next run into {out} completes it.\n"
+                                  f"publishing: {folder.path.name}\nfiles: {json.dumps(names)}\n")
+        _fsync_dir(out)
+    _move_in(out, folder.path, names)
+
+
+def _move_in(out: Path, work: Path, names: list[str]) -> None:
+    """Move ``names`` from ``work`` into ``out``, earlier outputs aside first; safe to repeat
+    after an interruption (what has already arrived stays)."""
+    aside = out / (_ASIDE + work.name)
+    aside.mkdir(exist_ok=True)
+    new = set(names)
+    old = [p for p in out.iterdir()
+           if _is_output(p.name) and (p.name not in new or (work / p.name).exists())]
+    for p in sorted(old, key=lambda p: p.name != "summary.json"):
+        _remove(aside / p.name)
+        os.rename(p, aside / p.name)
+    for name in names:
+        if (work / name).exists():
+            os.rename(work / name, out / name)
+    _fsync_dir(out)
+    (out / MARKER).unlink(missing_ok=True)
+    shutil.rmtree(aside, ignore_errors=True)
+    shutil.rmtree(work, ignore_errors=True)
+
+
+def discard(folder: RunFolder) -> None:
+    """Remove a run folder that will never be published (never ``out`` itself)."""
+    if not folder.in_place:
+        shutil.rmtree(folder.path, ignore_errors=True)
