@@ -1,4 +1,10 @@
-"""``registration register``: register recorded files (CSV/Parquet), streaming and resumable."""
+"""``registration register``: register recorded files (CSV/Parquet), streaming and resumable.
+
+Exit codes (:mod:`registration.cli.errors`): 0 success; 1 ``--validate-only`` found bad rows; 2 bad
+input (an unreadable or empty file, a bad row in stop mode, every row rejected, a damaged
+checkpoint, an unusable ``--out``); 3 the run finished and was published, but its mean NIS is
+more than 10 x its expectation (the likely causes are printed; ``--allow-inconsistent`` accepts it).
+"""
 
 from __future__ import annotations
 
@@ -8,6 +14,8 @@ from pathlib import Path
 
 import numpy as np
 
+from registration.cli.errors import EXIT_BAD_ROWS, EXIT_OK, add_allow_inconsistent, consistency_gate, consistency_line
+from registration.cli.options import add_no_plots, add_out
 from registration.online import DEFAULT_LINEARIZATION, LINEARIZATIONS
 
 HELP = "register recorded data: a synchronous table or two per-radar plot files (+ navigation), CSV or Parquet"
@@ -16,35 +24,48 @@ HELP = "register recorded data: a synchronous table or two per-radar plot files 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("inputs", nargs="+", type=Path, metavar="INPUT",
                    help="one synchronous table, or two per-radar plot files (A then B); see `registration schema`")
-    p.add_argument("--out", type=Path, required=True, help="output folder")
+    add_out(p, "register", "the estimates, positions, rejected rows, summary.json and plots; a run works in "
+                           "DIR/partial-<pid>-<token> and, once finished, replaces the outputs of the run before it whole")
     p.add_argument("--nav", type=Path, action="append", default=[], metavar="FILE",
-                   help="navigation file (asynchronous form; repeat for one file per ship)")
+                   help="navigation file (asynchronous form; repeat for one file per ship; default: none)")
     p.add_argument("--checkpoint", type=Path, default=None, metavar="FILE",
-                   help="save the run's state to FILE every --checkpoint-every rows; rerunning the same command resumes")
-    p.add_argument("--checkpoint-every", type=int, default=100_000, metavar="N", help="rows between checkpoints (default 100000)")
-    p.add_argument("--chunk-rows", type=int, default=20_000, metavar="N", help="rows read and filtered per block (default 20000)")
+                   help="save the run's state to FILE every --checkpoint-every rows; rerunning the same command resumes "
+                        "(default: no checkpoint)")
+    p.add_argument("--checkpoint-every", type=int, default=100_000, metavar="N",
+                   help="rows between checkpoints")
+    p.add_argument("--chunk-rows", type=int, default=20_000, metavar="N", help="rows read and filtered per block")
     p.add_argument("--on-bad-row", choices=["stop", "skip"], default="stop",
-                   help="stop at the first bad row (default) or set bad rows aside in rejected.csv")
-    p.add_argument("--format", choices=["csv", "parquet"], default="csv", help="format of the outputs (default csv)")
+                   help="stop at the first bad row, or skip: set bad rows aside in rejected.csv")
+    p.add_argument("--format", choices=["csv", "parquet"], default="csv", help="format of the outputs")
     p.add_argument("--linearization", choices=list(LINEARIZATIONS), default=DEFAULT_LINEARIZATION,
-                   help=f"where the filter linearises the model (default {DEFAULT_LINEARIZATION}; paper: as printed)")
-    p.add_argument("--q-mode", choices=["fixed", "adaptive"], default="fixed")
-    p.add_argument("--q-window", type=int, default=20, help="estimates in the adaptive-Q window (default 20)")
-    p.add_argument("--t-variant", choices=["standard", "paper"], default="standard")
+                   help="where the filter linearises the model: paper = at the raw measurements (as printed), "
+                        "relinearized = at the corrected measurements, fitted = at the most probable noise-free plots")
+    p.add_argument("--q-mode", choices=["fixed", "adaptive"], default="fixed",
+                   help="the filter's process noise Q: fixed, or adaptive from the last --q-window estimates")
+    p.add_argument("--q-window", type=int, default=20, metavar="N", help="estimates in the adaptive-Q window")
+    p.add_argument("--t-variant", choices=["standard", "paper"], default="standard",
+                   help="the filter's ENU->ECEF rotation T: standard (orthonormal) or paper (as printed)")
     p.add_argument("--sigma", default="50,0.5,0.5", metavar="R_M,Q_DEG,E_DEG[,R_M,Q_DEG,E_DEG]",
-                   help="radar noise sigmas: range (m), bearing and elevation (deg); 3 values for both radars or 6 (A then B)")
+                   help="radar noise sigmas: range in m, bearing and elevation in deg; 3 values for both radars or 6 "
+                        "(A then B)")
     p.add_argument("--observability", choices=["final", "filter"], default="final",
-                   help="information matrix at the final estimate (second pass, default) or as the filter accumulated it")
+                   help="information matrix at the final estimate (second pass) or as the filter accumulated it")
     p.add_argument("--validate-only", action="store_true", help="check every row and report, without estimating")
-    p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    add_no_plots(p)
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
+    add_allow_inconsistent(p)
     g = p.add_argument_group("asynchronous form (two plot files)")
-    g.add_argument("--clock-offset-a", type=float, default=0.0, metavar="S", help="radar A's clock reads reference time + S seconds")
-    g.add_argument("--clock-offset-b", type=float, default=0.0, metavar="S", help="radar B's clock reads reference time + S seconds")
-    g.add_argument("--pair-at", choices=["a", "b"], default="a", help="common instants = this radar's plot times (default a)")
-    g.add_argument("--interp-degree", type=int, default=1, help="degree of the sliding-window fit (default 1: linear between neighbours)")
-    g.add_argument("--max-extrapolation-s", type=float, default=0.0, help="largest extrapolation beyond a stream's samples (default 0)")
-    g.add_argument("--max-gap-s", type=float, default=None, help="widest gap between samples to interpolate across (default 2.5 x median interval)")
+    g.add_argument("--clock-offset-a", type=float, default=0.0, metavar="S",
+                   help="radar A's clock offset, s: its clock reads reference time + S")
+    g.add_argument("--clock-offset-b", type=float, default=0.0, metavar="S",
+                   help="radar B's clock offset, s: its clock reads reference time + S")
+    g.add_argument("--pair-at", choices=["a", "b"], default="a", help="common instants = this radar's plot times")
+    g.add_argument("--interp-degree", type=int, default=1, metavar="N",
+                   help="degree of the sliding-window fit, 1: linear between neighbours")
+    g.add_argument("--max-extrapolation-s", type=float, default=0.0, metavar="S",
+                   help="largest extrapolation beyond a stream's samples, s")
+    g.add_argument("--max-gap-s", type=float, default=None, metavar="S",
+                   help="widest gap between samples to interpolate across, s (default: 2.5 x the median interval)")
 
 
 def parse_sigma(text: str) -> tuple:
@@ -75,9 +96,20 @@ def build_options(args: argparse.Namespace):
                       nav=list(args.nav), pairing=pairing)
 
 
+def interrupt_hint(args: argparse.Namespace) -> str:
+    """What Ctrl-C prints: where the unfinished outputs are and, with a checkpoint, how to resume."""
+    if getattr(args, "validate_only", False):
+        return "registration register: interrupted"
+    if args.checkpoint is None:
+        return (f"registration register: interrupted; nothing was written: {args.out} holds what it held before "
+                "(give --checkpoint FILE to make a long run resumable)")
+    return (f"registration register: interrupted; rerun the same command to resume from its checkpoint {args.checkpoint} "
+            f"(the unfinished outputs are in {args.out}/partial-*; {args.out} holds what it held before)")
+
+
 def run(args: argparse.Namespace) -> int:
     from registration.cli.simulate import estimate_lines
-    from registration.recorded import run_register, validate_files
+    from registration.recorded import run_register, summary_consistency, validate_files
 
     options = build_options(args)
     if args.validate_only:
@@ -89,9 +121,19 @@ def run(args: argparse.Namespace) -> int:
             print(f"{path} ({r['layout']}): {r['rows']} rows, {r['accepted']} valid, {n_bad} bad {r['rejected_by_reason'] or ''}")
         for prob in report["problems"]:
             print(f"  {prob['file']}: row {prob['row']}, column {prob['column']!r}: {prob['reason']} [{prob['code']}]")
-        return 1 if bad else 0
+        return EXIT_BAD_ROWS if bad else EXIT_OK
 
     summary = run_register(args.inputs, options)
+    gate = summary_consistency(summary)
+    _print_summary(summary, estimate_lines, gate)
+    print(f"\nwrote {args.out}/ (" + ", ".join(Path(v).name for v in summary["outputs"].values()) + ", summary.json"
+          + (", plots" if summary.get("plots") else "") + ")")
+    return EXIT_OK if gate is None else consistency_gate("registration register", gate, args.allow_inconsistent)
+
+
+def _print_summary(summary: dict, estimate_lines, gate) -> None:
+    """The report on standard output: rows, pairing, X_A - X_B before/after, estimates, observability,
+    consistency (``gate``), warnings about the inputs."""
     rows = summary["rows"]
     print(f"registration register: {summary['form']} input, {rows['read']} rows read, {rows['accepted']} registered, "
           f"{rows['rejected']} rejected {rows['rejected_by_reason'] or ''}")
@@ -113,8 +155,7 @@ def run(args: argparse.Namespace) -> int:
         print(f"  UNOBSERVABLE: {t}")
     for t in obs["weak"]:
         print(f"  weak:         {t}")
-    if summary.get("mean_nis") is not None:
-        print(f"\nmean NIS {summary['mean_nis']:.3f} (3 expected for a consistent filter)")
-    print(f"\nwrote {args.out}/ (" + ", ".join(Path(v).name for v in summary["outputs"].values()) + ", summary.json"
-          + (", plots" if summary.get("plots") else "") + ")")
-    return 0
+    if gate is not None:
+        print("\n" + consistency_line(gate))
+    for w in summary.get("warnings", []):
+        print(f"warning: {w}")
