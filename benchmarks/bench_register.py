@@ -5,14 +5,15 @@ Run from a checkout (the package installed, editable or not)::
 
     python3 benchmarks/bench_register.py                       # 10^5 and 10^6 rows
     python3 benchmarks/bench_register.py --rows 100000 300000 --json results.json
+    python3 benchmarks/bench_register.py --rows 3000000 --cases csv csv-plots   # plots on and off
 
 Input: the paper scenario (300 synchronous pairs at 1 s, seed 0) tiled until the wanted number of
 rows, time shifted so it keeps increasing, with a little extra noise per row (1 m in range, 0.001 deg
 in the angles) so that the copies differ, written once per size as CSV and as Parquet (row groups
 of 100,000). Each measurement runs in a fresh worker process that imports the package, records
 its resident set size (RSS, ``/proc/self/status`` VmRSS), resets the peak mark (``clear_refs``), runs
-:func:`registration.recorded.run_register` exactly as the CLI does (no plots, no progress bar) and
-reports the wall time and its peak RSS during the run (VmHWM; ``ru_maxrss`` where /proc is missing,
+:func:`registration.recorded.run_register` exactly as the CLI does (no progress bar; no plots except
+in the ``*-plots`` cases, which draw the three PNGs as the CLI does by default) and reports the wall time and its peak RSS during the run (VmHWM; ``ru_maxrss`` where /proc is missing,
 which also counts the pre-exec image). "Above baseline" subtracts the RSS after the
 imports (numpy, pandas, pyarrow, casadi, the compiled generated code), which does not depend on
 the input. Rows per second count input rows over the whole command: both passes (filter, then the
@@ -67,7 +68,7 @@ except OSError:
     pass
 t0 = time.perf_counter()
 if mode == "stream":
-    opts = RunOptions(out=out, plots=False, progress=False, log=lambda m: None, **extra)
+    opts = RunOptions(out=out, progress=False, log=lambda m: None, **{"plots": False, **extra})
     summary = run_register([path], opts)
     rows = summary["rows"]["read"]
 else:
@@ -126,11 +127,28 @@ def measure(mode: str, path: Path, out: Path, extra: dict) -> dict:
     return json.loads(proc.stdout.strip().splitlines()[-1])
 
 
+#: name -> (input format, RunOptions fields); "{ckpt}" is replaced by a checkpoint path
+CASES = {
+    "csv": ("csv", {"out_format": "csv"}),
+    "parquet": ("parquet", {"out_format": "parquet"}),
+    "csv-checkpoint": ("csv", {"out_format": "csv", "checkpoint": "{ckpt}", "checkpoint_every": 100_000}),
+    "csv-one-pass": ("csv", {"out_format": "csv", "observability": "filter"}),
+    "csv-plots": ("csv", {"out_format": "csv", "plots": True}),
+}
+
+
+def _label(fmt: str, extra: dict) -> str:
+    return (f"stream {fmt} in -> {extra['out_format']} out" + (", checkpoint every 1e5" if extra.get("checkpoint") else "")
+            + (", one pass (observability=filter)" if extra.get("observability") == "filter" else "")
+            + (", with plots" if extra.get("plots") else ""))
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--rows", type=int, nargs="+", default=[100_000, 1_000_000])
+    ap.add_argument("--rows", type=int, nargs="+", default=[100_000, 1_000_000], help="input sizes, rows")
+    ap.add_argument("--cases", nargs="+", choices=list(CASES), default=list(CASES), help="which runs to measure (default: all)")
     ap.add_argument("--api-max-rows", type=int, default=300_000, help="largest size also run through the in-memory API")
-    ap.add_argument("--json", type=Path, default=None)
+    ap.add_argument("--json", type=Path, default=None, help="also write the results to this JSON file")
     args = ap.parse_args(argv)
     results = []
     with tempfile.TemporaryDirectory() as tmp:
@@ -140,22 +158,16 @@ def main(argv=None) -> int:
             paths = make_inputs(n, tmp)
             sizes = {k: p.stat().st_size / 2**20 for k, p in paths.items()}
             print(f"# {n} rows: CSV {sizes['csv']:.0f} MiB, Parquet {sizes['parquet']:.0f} MiB (written in {time.perf_counter() - t:.1f} s)", flush=True)
-            cases = [
-                ("stream", "csv", {"out_format": "csv"}),
-                ("stream", "parquet", {"out_format": "parquet"}),
-                ("stream", "csv", {"out_format": "csv", "checkpoint": str(tmp / "bench.ckpt"), "checkpoint_every": 100_000}),
-                ("stream", "csv", {"out_format": "csv", "observability": "filter"}),
-            ]
+            cases = [("stream", *CASES[name]) for name in args.cases]
             if n <= args.api_max_rows:
                 cases.append(("api", "csv", {}))
             for mode, fmt, extra in cases:
+                extra = {k: (str(tmp / "bench.ckpt") if v == "{ckpt}" else v) for k, v in extra.items()}
                 ck = extra.get("checkpoint")
                 if ck and Path(ck).exists():
                     Path(ck).unlink()
                 r = measure(mode, paths[fmt], tmp / f"out_{n}_{len(results)}", extra)
-                label = "API register (in memory)" if mode == "api" else (
-                    f"stream {fmt} in -> {extra['out_format']} out" + (", checkpoint every 1e5" if ck else "")
-                    + (", one pass (observability=filter)" if extra.get("observability") == "filter" else ""))
+                label = "API register (in memory)" if mode == "api" else _label(fmt, extra)
                 r.update({"case": label, "input_mib": sizes[fmt]})
                 results.append(r)
                 print(f"{n:>9} rows  {label:<58} {r['rows'] / r['seconds']:>9.0f} rows/s  {r['seconds']:7.2f} s  "
