@@ -76,15 +76,18 @@ def collect_runs(runs: int, seed0: int, config: RegistrationConfig | None, progr
     cfg = config if config is not None else RegistrationConfig(sigma0=tuple(sims.sigma0))
     check_times(sims.time)
     check_run_rows(sims.rows)
-    out = filter_runs(cfg, sims.rows)
-    x_final = out["x"][:, -1]
-    J = information_at_estimates(sims.rows, x_final, cfg.sigma0, cfg.t_variant)
-    status_counts, combo_counts = _observability_counts(J, x_final, out["P"][:, -1], cfg.prior_sigma, progress)
     # the bound uses only the true plots and attitudes, the same in every run
     crlb = crlb_from_information(crlb_information(sims.scenario(0)), cfg.prior_sigma)
-    return {"time": np.array(sims.time), "description": dict(sims.description), "err": out["x"] - sims.truth_state,
-            "P": out["P"], "nis": out["nis"], "crlb": crlb, "config": cfg,
-            "status_counts": status_counts, "combo_counts": combo_counts}
+    out = filter_runs(cfg, sims.rows)
+    x_final = out["x"][:, -1].copy()
+    J = information_at_estimates(sims.rows, x_final, cfg.sigma0, cfg.t_variant)
+    time, description, truth_state = np.array(sims.time), dict(sims.description), sims.truth_state
+    del sims  # the rows are no longer needed
+    status_counts, combo_counts = _observability_counts(J, x_final, out["P"][:, -1], cfg.prior_sigma, progress)
+    err = out["x"]
+    err -= truth_state  # estimate - truth, in place (the estimates are not needed any more)
+    return {"time": time, "description": description, "err": err, "P": out["P"], "nis": out["nis"], "crlb": crlb,
+            "config": cfg, "status_counts": status_counts, "combo_counts": combo_counts}
 
 
 def _direction(names) -> np.ndarray:
