@@ -84,6 +84,18 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 # --------------------------------------------------------------------------- scenario from options
+def _check_numbers(args) -> None:
+    """Finite numbers everywhere, standard deviations and the target range > 0 (ValueError naming the option)."""
+    if args.seed < 0:
+        raise ValueError(f"--seed: expected an integer >= 0, got {args.seed}")
+    for name, value in vars(args).items():
+        values = value if isinstance(value, list) else [value]
+        if any(isinstance(v, float) and not np.isfinite(v) for v in values):
+            raise ValueError(f"--{name.replace('_', '-')}: expected finite numbers, got {value}")
+        if (name.startswith("sigma_") or name == "target_range_m") and value is not None and not value > 0:
+            raise ValueError(f"--{name.replace('_', '-')}: expected a value > 0, got {value}")
+
+
 def _scenario_from_args(args):
     base = paper_scenario(args.scenario)
     changes = {}
@@ -130,9 +142,12 @@ def _scenario_from_args(args):
         "elevation": None if args.sigma_second_elevation_mrad is None else args.sigma_second_elevation_mrad * 1e-3,
     }
     base_sig = dict(zip(base.components, base.sigma_second))
-    comps = tuple(base.components) if args.second is None else tuple(
-        COMPONENTS[dim][i] for i in parse_components(args.second, dim)
-    )
+    try:
+        comps = tuple(base.components) if args.second is None else tuple(
+            COMPONENTS[dim][i] for i in parse_components(args.second, dim)
+        )
+    except ValueError as exc:
+        raise ValueError(f"--second: {exc}") from exc
     sig_b = []
     for c in comps:
         if given[c] is not None:
@@ -307,8 +322,7 @@ def run(args) -> int:
         raise ValueError(f"--trials: expected at least 2 Monte Carlo pairs, got {args.trials}")
     if args.max_plot_points < 1:
         raise ValueError(f"--max-plot-points: expected a positive count, got {args.max_plot_points}")
-    if args.seed < 0:
-        raise ValueError(f"--seed: expected an integer >= 0, got {args.seed}")
+    _check_numbers(args)
     sc = _scenario_from_args(args)
     out = prepare_out(args.out)
     ev = evaluate(sc, trials=args.trials, seed=args.seed)

@@ -133,6 +133,13 @@ def _check_args(args: argparse.Namespace) -> None:
     for name in ("radar_sigma_range_m", "radar_sigma_angle_mrad", "camera_sigma_angle_mrad"):
         if not getattr(args, name) > 0:
             raise ValueError(f"--{name.replace('_', '-')}: expected a standard deviation > 0, got {getattr(args, name)}")
+    for name in ("yaw_period_s", "pitch_period_s", "roll_period_s", "ground_speed_mps"):
+        if not getattr(args, name) > 0:
+            raise ValueError(f"--{name.replace('_', '-')}: expected > 0, got {getattr(args, name)}")
+    if not args.ship_speed_mps >= 0:
+        raise ValueError(f"--ship-speed-mps: expected >= 0 m/s, got {args.ship_speed_mps}")
+    if not args.start_range_m > args.end_range_m >= 0:
+        raise ValueError(f"--start-range-m, --end-range-m: expected start > end >= 0 m, got {args.start_range_m}, {args.end_range_m}")
     ratio = args.bin_m / args.plot_bin_m
     if abs(ratio - round(ratio)) > 1e-9:
         raise ValueError(f"--plot-bin-m ({args.plot_bin_m} m) must divide --bin-m ({args.bin_m} m)")

@@ -53,7 +53,10 @@ def run(args: argparse.Namespace) -> int:
     if args.runs < 2:
         raise ValueError(f"--runs: expected at least 2 runs, got {args.runs}")
     check_scenario_arguments(args)
-    sums = [parse_sum(s) for s in args.sum]
+    try:
+        sums = [parse_sum(s) for s in args.sum]
+    except ValueError as exc:
+        raise ValueError(f"--sum: {exc}") from exc
     out = prepare_out(args.out)
     angle = float(np.radians(args.angle_sigma_deg))
     config = RegistrationConfig(

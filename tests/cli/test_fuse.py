@@ -234,7 +234,7 @@ def test_cli_same_site_laser(tmp_path):
     [
         (["--second", "heading"], "unknown component 'heading'"),
         (["--second", "range"], "--sigma-second-range-m: needed"),
-        (["--sigma-range-m", "-1"], "sigma_radar"),
+        (["--sigma-range-m", "-1"], "--sigma-range-m: expected a value > 0, got -1.0"),
         (["--site-second-m", "1", "2", "3"], "expected 2 coordinates"),
         (["--baseline-m", "5", "--site-second-m", "1", "2"], "not both"),
         (["--sigma-second-range-m", "10"], "does not measure range"),
