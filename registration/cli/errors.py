@@ -67,15 +67,15 @@ class CommandError(Exception):
         self.code = code
 
 
-def os_error_message(exc: OSError, action: str | None = None) -> str:
-    """``[action ]PATH: reason`` for an operating-system error, e.g. ``cannot write out/a.json: Read-only file system``."""
+def os_error_message(exc: OSError) -> str:
+    """``PATH: reason`` for an operating-system error, e.g. ``data.csv: No such file or directory``."""
     reason = exc.strerror or str(exc) or type(exc).__name__
     if exc.filename is None:
-        return f"{action}: {reason}" if action else reason
+        return reason
     target = os.fsdecode(exc.filename)
     if exc.filename2 is not None:
         target += f" -> {os.fsdecode(exc.filename2)}"
-    return f"{action} {target}: {reason}" if action else f"{target}: {reason}"
+    return f"{target}: {reason}"
 
 
 @contextmanager

@@ -80,6 +80,18 @@ def test_an_unwritable_export_names_the_path(tmp_path, capsys, monkeypatch):
     assert capsys.readouterr().err == f"registration simulate: error: cannot write {export}: Read-only file system\n"
 
 
+def test_any_os_error_names_its_path(tmp_path, capsys, monkeypatch):
+    """An operating-system error from anywhere in a run: 'PATH: reason', exit 2."""
+    import registration.online
+
+    def unreadable(*args, **kwargs):
+        raise PermissionError(errno.EACCES, os.strerror(errno.EACCES), "/data/in.csv")
+
+    monkeypatch.setattr(registration.online, "register", unreadable)
+    assert main(["simulate", "--out", str(tmp_path)]) == EXIT_BAD_INPUT
+    assert capsys.readouterr().err == "registration simulate: error: /data/in.csv: Permission denied\n"
+
+
 def test_a_folder_where_a_file_goes_is_one_line(tmp_path, capsys):
     """A real operating-system error while writing (root cannot be kept out by permissions; a folder can)."""
     (tmp_path / "summary.json").mkdir()
