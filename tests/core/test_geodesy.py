@@ -74,7 +74,7 @@ def test_up_axis_is_the_geodetic_normal():
 
 
 def test_paper_rotation_is_standard_at_tilted_latitude():
-    """Eq. (4) as printed = standard T at psi with tan psi = (a/b)^2 tan B (SPEC section 2)."""
+    """Eq. (4) as printed = standard T at psi with tan psi = (a/b)^2 tan B (Wang et al. 2011, eq. (4))."""
     lat, lon, _ = _random_geodetic(2_000, 6)
     lat = np.clip(lat, -1.5, 1.5)
     psi = np.arctan((WGS84_A / WGS84_B) ** 2 * np.tan(lat))
