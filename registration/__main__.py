@@ -1,9 +1,7 @@
-"""``python -m registration``: the same as the ``registration`` command.
+"""``python -m registration``: the same as the ``registration`` command (an entry point, on top of the CLI)."""
 
-An entry point, not a library module: it runs ``registration.cli`` as a program (``runpy``), the
-way ``python -m registration.cli`` does, so no library module imports the command line.
-"""
+import sys
 
-import runpy
+from registration.cli import main
 
-runpy.run_module("registration.cli", run_name="__main__", alter_sys=True)
+sys.exit(main())

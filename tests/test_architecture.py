@@ -56,7 +56,8 @@ def _graph() -> dict[str, set[str]]:
 
 
 def _is_cli(m: str) -> bool:
-    return m == "registration.cli" or m.startswith("registration.cli.")
+    """The command line and the entry points that run it (``python -m registration``)."""
+    return m == "registration.cli" or m.startswith("registration.cli.") or m.endswith(".__main__")
 
 
 def test_the_checker_sees_the_package():
