@@ -29,7 +29,7 @@ def difference_statistics(diff: np.ndarray) -> dict:
 
 
 def identifiable_combinations(x: np.ndarray, P: np.ndarray, report: ObservabilityReport) -> list[dict]:
-    """Estimates (rad) and 1 sigma of the sums that are identifiable when their parts are not (e.g. dC_a + dq_a)."""
+    """Estimates (rad or m, the states' unit) and 1 sigma of the sums that are identifiable when their parts are not (e.g. dC_a + dq_a)."""
     out = []
     for a, b in report.identifiable_sums:
         i, j = STATE_NAMES.index(a), STATE_NAMES.index(b)
@@ -51,7 +51,7 @@ def estimate_rows(x: np.ndarray, P: np.ndarray, report: ObservabilityReport, tru
     for comb in identifiable_combinations(x, P, report):
         i, j = comb["indices"]
         rows.append({
-            "name": comb["name"], "unit": "rad", "estimate": comb["estimate"], "sigma": comb["sigma"],
+            "name": comb["name"], "unit": "rad" if IS_ANGLE[i] else "m", "estimate": comb["estimate"], "sigma": comb["sigma"],
             "truth": None if truth_state is None else float(truth_state[i] + truth_state[j]),
             "status": "identifiable combination",
         })

@@ -291,3 +291,15 @@ def test_update_takes_a_dataframe_row_and_refuses_several():
 def test_result_prints_in_one_line():
     text = repr(register(paper_scenario(n_steps=20).data))
     assert text.startswith("RegistrationResult(20 rows") and "\n" not in text and len(text) < 200
+
+
+def test_a_sum_of_ranges_is_tabulated_in_metres():
+    from registration.core.observability import ObservabilityReport
+    from registration.online.result import estimate_rows
+
+    report = ObservabilityReport(np.ones(12), status={n: "weak" for n in STATE_NAMES})
+    from registration.core.observability import Combination
+
+    report.unobservable.append(Combination({}, 0.0, "dr_a + dr_b", identifiable_sum=("dr_a", "dr_b")))
+    rows = estimate_rows(np.arange(12.0), np.eye(12), report)
+    assert rows[-1]["name"] == "dr_a + dr_b" and rows[-1]["unit"] == "m" and rows[-1]["estimate"] == 3.0 + 9.0
