@@ -69,22 +69,13 @@ def _from_column_major(buf: np.ndarray, shape: tuple[int, int]):
     return buf if c == 1 else buf.reshape(c, r).T
 
 
-def _results_function(shapes: list[tuple[int, int]]):
-    """``f(block)``: a copy of the first doubles of ``block``, returned as one view per shape in
-    order (vectors; matrices from column-major; floats for scalars). Written out for the shapes,
-    so a step's results cost one copy and a few views, not a loop."""
-    parts, at = [], 0
-    for r, c in shapes:
-        if (r, c) == (1, 1):
-            parts.append(f"float(b[{at}])")
-        elif c == 1:
-            parts.append(f"b[{at}:{at + r}]")
-        else:
-            parts.append(f"b[{at}:{at + r * c}].reshape({c}, {r}).T")
-        at += r * c
-    namespace: dict = {}
+def _results_function(views: list[np.ndarray]):
+    """``f()``: a new copy of each view (of an output buffer, at its core shape), a float for a
+    one-element view. Written out for the views, so a step's results cost one copy per output."""
+    namespace = {f"v{i}": v for i, v in enumerate(views)}
+    parts = [f"float(v{i}[0])" if v.shape == (1,) else f"v{i}.copy()" for i, v in enumerate(views)]
     body = f"({', '.join(parts)},)" if parts else "()"
-    exec(f"def results(block):\n    b = block[:{at}].copy()\n    return {body}\n", namespace)  # noqa: S102
+    exec(f"def results():\n    return {body}\n", namespace)  # noqa: S102
     return namespace["results"]
 
 
@@ -122,14 +113,11 @@ class CStepper:
         lay = self._layout = _Layout(fn, carry, feed, low, high, finite, deliver)
         self._in = [np.zeros(r * c) for r, c in lay.in_shapes]
         sizes = [r * c for r, c in lay.out_shapes]
-        order = lay.deliver + [j for j in range(len(sizes)) if j not in lay.deliver]  # delivered first, contiguous
-        offsets, at = [0] * len(sizes), 0
-        for j in order:
-            offsets[j], at = at, at + sizes[j]
-        self._block = np.zeros(max(at, 1))
-        self._out = [self._block[o:o + s] for o, s in zip(offsets, sizes)]
-        #: results() -> the delivered outputs of the last successful step as new arrays (one copy in all)
-        self.results = functools.partial(_results_function([lay.out_shapes[j] for j in lay.deliver]), self._block)
+        self._out = [np.zeros(size) for size in sizes]
+        views = [self._out[j] if lay.out_shapes[j][1] == 1 else self._out[j].reshape(lay.out_shapes[j][::-1]).T
+                 for j in lay.deliver]  # matrices are column-major
+        #: results() -> the delivered outputs of the last successful step, as new arrays (floats for scalars)
+        self.results = _results_function(views)
         self._feed = self._in[lay.feed]
         work = kernel.work
         keep = self._keep = {

@@ -147,13 +147,8 @@ class OnlineRegistrar:
         if self._adaptive:
             stepper.set("Q", self.process_noise())
         code = stepper.step(values)
-        if code == _OUT_OF_BOUNDS:
-            check_rows(values[None, :], first_row=n)  # raises, naming the row and column
-            code = stepper.step(values, check=False)  # accepted after all (a subnormal range)
-        if code == _FAILED:
-            raise RuntimeError(f"row {n}: the generated step {self.config.step_name} returned an error; state left unchanged")
-        if code != _OK:
-            raise RuntimeError(f"row {n}: the filter step produced non-finite values; state left unchanged")
+        if code:
+            self._refused(code, stepper, values, n)
         x, P, nu, S, nis = stepper.results()
         self._x = self._P = self._info = None
         self._window.append(x.copy())
@@ -161,6 +156,17 @@ class OnlineRegistrar:
         if time is not None:
             self.last_time = time
         return {"x": x, "P": P, "nu": nu, "S": S, "nis": nis}
+
+    def _refused(self, code: int, stepper, values: np.ndarray, n: int) -> None:
+        """After a step the stepper refused: raise, naming the problem, or step again when only its
+        conservative bounds objected (a subnormal range the detailed check accepts)."""
+        if code == _OUT_OF_BOUNDS:
+            check_rows(values[None, :], first_row=n)  # raises, naming the row and column
+            code = stepper.step(values, check=False)
+        if code == _FAILED:
+            raise RuntimeError(f"row {n}: the generated step {self.config.step_name} returned an error; state left unchanged")
+        if code != _OK:
+            raise RuntimeError(f"row {n}: the filter step produced non-finite values; state left unchanged")
 
     def update_block(self, rows: np.ndarray, times: np.ndarray | None = None, *, partial: bool = False) -> dict:
         """Process a (K, 18) block of rows; the same arithmetic as K calls of :meth:`update`.
