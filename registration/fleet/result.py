@@ -113,10 +113,12 @@ class BatchResult:
         return out
 
     def rows(self, truth: dict | None = None) -> list[dict]:
-        """One dict per state: name, label, unit, estimate, sigma, status (and truth when given)."""
+        """One dict per state: name, object (platform or sensor id), quantity, label, unit,
+        estimate, sigma, status (and truth when given)."""
         out = []
         for i, name in enumerate(self.layout.names):
-            row = {"name": name, "label": self.layout.labels[i], "unit": self.layout.units[i],
+            row = {"name": name, "object": self.layout.objects[i], "quantity": self.layout.quantities[i],
+                   "label": self.layout.labels[i], "unit": self.layout.units[i],
                    "estimate": float(self.estimate[i]), "sigma": float(self.sigma[i]), "status": self.status[name]}
             if truth is not None:
                 row["truth"] = float(truth[name])

@@ -76,6 +76,16 @@ def test_converges_from_zero_with_5_degree_and_3_km_errors():
     assert result.chi_square.ok, result.chi_square.text()
 
 
+def test_estimates_per_object(noisy):
+    sc, result = noisy
+    rows = {(r["object"], r["quantity"]): r for r in result.rows(sc.truth_state)}
+    assert rows[("S", "heading_error")]["status"] == "fixed" and rows[("S", "heading_error")]["sigma"] == 0.0
+    assert ("C-2D", "elevation_bias") not in rows and ("C-2D", "range_bias") in rows
+    row = rows[("A-ESM", "bearing_bias")]
+    assert row["label"] == "bearing bias of sensor A-ESM" and row["unit"] == "rad"
+    assert abs(row["estimate"] - row["truth"]) < 4 * row["sigma"]
+
+
 def test_fused_targets_and_residual_table(noisy):
     sc, result = noisy
     ft = result.targets
