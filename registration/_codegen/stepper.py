@@ -72,10 +72,17 @@ def _from_column_major(buf: np.ndarray, shape: tuple[int, int]):
 def _results_function(views: list[np.ndarray]):
     """``f()``: a new copy of each view (of an output buffer, at its core shape), a float for a
     one-element view. Written out for the views, so a step's results cost one copy per output."""
-    namespace = {f"v{i}": v for i, v in enumerate(views)}
-    parts = [f"float(v{i}[0])" if v.shape == (1,) else f"v{i}.copy()" for i, v in enumerate(views)]
+    return functools.partial(_results_template(tuple(v.shape == (1,) for v in views)), *views)
+
+
+@functools.lru_cache(maxsize=None)
+def _results_template(scalars: tuple[bool, ...]):
+    """``f(*views)`` for views of which those flagged in ``scalars`` become floats (compiled once per pattern)."""
+    names = [f"v{i}" for i in range(len(scalars))]
+    parts = [f"float({n}[0])" if scalar else f"{n}.copy()" for n, scalar in zip(names, scalars)]
     body = f"({', '.join(parts)},)" if parts else "()"
-    exec(f"def results():\n    return {body}\n", namespace)  # noqa: S102
+    namespace: dict = {}
+    exec(f"def results({', '.join(names)}):\n    return {body}\n", namespace)  # noqa: S102
     return namespace["results"]
 
 
