@@ -363,7 +363,7 @@ def bench_size(n_rows: int, seed: int, rounds: int, stream_rows: int, config) ->
 
 
 def aims_of(results: dict, long_n: int, linearization: str) -> dict:
-    """The issue's two aims for one configuration, at 300 rows and at the long run.
+    """The aims for one configuration, at 300 rows and at the long run.
 
     The ratio is taken against the strongest NumPy baseline the linearisation admits: the
     vectorised one for ``paper``; for ``fitted`` the per-row one (its linearisation point

@@ -1,4 +1,4 @@
-"""The ``fitted`` linearisation (issue 3): its step against a NumPy composition, and the
+"""The ``fitted`` linearisation: its step against a NumPy composition, and the
 range-bias defect of the ``paper`` linearisation that it removes.
 
 Background: with 0.5 deg angle noise, H and R evaluated at the raw (or corrected) plots share

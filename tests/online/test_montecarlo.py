@@ -1,4 +1,4 @@
-"""Monte Carlo evaluation (issue 3): shapes, RMSE behaviour, the Cramér-Rao bound, the chi-square arithmetic."""
+"""Monte Carlo evaluation: shapes, RMSE behaviour, the Cramér-Rao bound, the chi-square arithmetic."""
 
 from __future__ import annotations
 
