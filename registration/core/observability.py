@@ -174,10 +174,11 @@ def observability_report(information: np.ndarray, prior_sigma: np.ndarray, names
         else:
             report.weak.append(comb)
             weak_basis.append(u_vec)
+    q_unobs = np.linalg.qr(np.array(unobs_basis).T)[0] if unobs_basis else None
     for i, name in enumerate(names):
         e = np.zeros(n)
         e[i] = 1.0
-        p_unobs = np.linalg.norm(np.linalg.qr(np.array(unobs_basis).T)[0].T @ e) if unobs_basis else 0.0
+        p_unobs = np.linalg.norm(q_unobs.T @ e) if q_unobs is not None else 0.0
         p_weak = np.linalg.norm(np.array(weak_basis) @ e) if weak_basis else 0.0
         if p_unobs > 0.3:
             report.status[name] = "not identifiable"
