@@ -47,6 +47,8 @@ from registration.online.filter import ROW_HIGH, ROW_LOW, STEP_CARRY
 from registration.online.scenario import paper_scenario
 from registration.online.contract import DATA_COLUMNS, N_STATE
 
+from online_baseline import NumpyFilter  # noqa: E402 (a script beside this one)
+
 AIM_US_PER_STEP = 5.0
 AIM_RATIO = 20.0
 TOLERANCE = 1e-9
@@ -65,89 +67,6 @@ def scenario_data(n_rows: int, seed: int) -> dict:
 
 def rows_of(data: dict) -> np.ndarray:
     return np.ascontiguousarray(np.stack([data[c] for c in DATA_COLUMNS[1:]], axis=1))
-
-
-# --------------------------------------------------------------------------- the NumPy baseline
-class NumpyFilter:
-    """The registration filter of derive/kalman.py in plain NumPy: linearisation ``paper`` or
-    ``fitted``, fixed Q. Only the generated pair model is used; the model is never re-derived,
-    and all the filter algebra is written out here."""
-
-    def __init__(self, config: RegistrationConfig):
-        if config.linearization not in ("paper", "fitted") or config.q_mode != "fixed":
-            raise ValueError("the baseline implements linearization 'paper' or 'fitted' with a fixed Q")
-        self.linearization = config.linearization
-        self.model = _codegen.get(f"pseudo_measurement_{config.t_variant}")
-        self.sigma0 = np.array(config.sigma0)
-        self.R0 = np.diag(np.square(self.sigma0))
-        self.var_a, self.var_b = np.square(self.sigma0[0:3]), np.square(self.sigma0[3:6])
-        self.Q = np.diag(np.square(config.q_sigma))
-        self.x0 = np.zeros(N_STATE) if config.x0 is None else np.array(config.x0)
-        self.P0 = np.diag(np.square(config.prior_sigma))
-
-    @property
-    def flavours(self) -> tuple[bool, ...]:
-        """``vectorised`` values this linearisation admits: the fitted point depends on the state."""
-        return (True, False) if self.linearization == "paper" else (False,)
-
-    def model_rows(self, rows: np.ndarray):
-        """Z (K, 3), H (K, 3, 12), M (K, 3, 6) for all rows in one vectorised call."""
-        out = dict(zip(self.model.output_names, self.model(
-            rows[:, 0:3], rows[:, 3:6], rows[:, 6:9], rows[:, 9:12], rows[:, 12:15], rows[:, 15:18], self.sigma0)))
-        return out["Z"], out["H"], out["M"]
-
-    def fitted_row(self, x: np.ndarray, P_pred: np.ndarray, row: np.ndarray, pair):
-        """Innovation nu (3,), H (3, 12), R (3, 3) of the fitted linearisation for one row.
-
-        ``pair`` is a single-point caller of the generated pseudo-measurement. Same point as
-        derive/kalman.py ``_fitted_linearisation``, written here."""
-        c = row.copy()                                   # corrected row
-        c[3:9] -= x[0:6]
-        c[12:18] -= x[6:12]
-        Z, H, M, R, _, _ = pair(c[0:3], c[3:6], c[6:9], c[9:12], c[12:15], c[15:18], self.sigma0)
-        S = H @ P_pred @ H.T + R
-        v = (self.R0 @ M.T) @ np.linalg.solve(0.5 * (S + S.T), Z)   # MAP noise of the plots
-        t_a, t_b = c[6:9] - v[0:3], c[15:18] - v[3:6]
-        Z, H, M, R, _, _ = pair(c[0:3], c[3:6], t_a, c[9:12], c[12:15], t_b, self.sigma0)
-        return Z + M @ v, H, R
-
-    def run(self, rows: np.ndarray, vectorised: bool) -> dict:
-        if vectorised and self.linearization != "paper":
-            raise ValueError("only the paper linearisation can evaluate its model up front")
-        fitted = self.linearization == "fitted"
-        k = len(rows)
-        xs, Ps = np.empty((k, N_STATE)), np.empty((k, N_STATE, N_STATE))
-        nus, Ss, niss = np.empty((k, 3)), np.empty((k, 3, 3)), np.empty(k)
-        x, P, info = self.x0.copy(), self.P0.copy(), np.zeros((N_STATE, N_STATE))
-        Q, R0, eye, sigma0 = self.Q, self.R0, np.eye(N_STATE), self.sigma0
-        pair = self.model.bind()  # single-point caller, preallocated
-        if vectorised:
-            Zs, Hs, Ms = self.model_rows(rows)
-        for i in range(k):
-            row = rows[i]
-            P_pred = P + Q
-            if fitted:
-                nu, H, R = self.fitted_row(x, P_pred, row, pair)
-            else:
-                if vectorised:
-                    Z, H, M = Zs[i], Hs[i], Ms[i]
-                else:
-                    Z, H, M, _, _, _ = pair(row[0:3], row[3:6], row[6:9], row[9:12], row[12:15], row[15:18], sigma0)
-                R = M @ R0 @ M.T
-                nu = Z - H @ x
-            HP = H @ P_pred
-            S = HP @ H.T + R
-            S = 0.5 * (S + S.T)
-            K = np.linalg.solve(S, HP).T
-            x = x + K @ nu
-            IKH = eye - K @ H
-            P = IKH @ P_pred @ IKH.T + K @ R @ K.T
-            P = 0.5 * (P + P.T)
-            info = info + H.T @ np.linalg.solve(R, H)
-            info = 0.5 * (info + info.T)
-            xs[i], Ps[i], nus[i], Ss[i] = x, P, nu, S
-            niss[i] = nu @ np.linalg.solve(S, nu)
-        return {"x": xs, "P": Ps, "nu": nus, "S": Ss, "nis": niss, "info": info}
 
 
 def compare(reference, other) -> dict:
@@ -245,85 +164,6 @@ def profile_breakdown(fn, calls: int, per: int, top: int = 8) -> list[tuple[str,
             rows.append((short, cum / (calls * per) * 1e6))
     rows.sort(key=lambda t: -t[1])
     return [("total (profiled)", total / (calls * per) * 1e6)] + rows[1:top + 1]
-
-
-# --------------------------------------------------------------------------- compiler flags experiment
-HARNESS = r"""
-/* Benchmark harness (not shipped): the generated Kalman step in a plain C loop, x, P, info carried. */
-#define _POSIX_C_SOURCE 199309L
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <time.h>
-#include "@SOURCE@"
-static double now_ns(void) { struct timespec t; clock_gettime(CLOCK_MONOTONIC, &t); return t.tv_sec * 1e9 + t.tv_nsec; }
-int main(int argc, char **argv) {
-    long n = atol(argv[1]); int repeat = atoi(argv[2]);
-    double *in = malloc(sizeof(double) * (size_t)(18 * n + 12 + 3 * 144 + 6));
-    FILE *f = fopen(argv[3], "rb");
-    if (!in || !f || fread(in, sizeof(double), (size_t)(18 * n + 12 + 3 * 144 + 6), f) != (size_t)(18 * n + 12 + 3 * 144 + 6)) return 1;
-    fclose(f);
-    double *rows = in, *x0 = in + 18 * n, *P0 = x0 + 12, *info0 = P0 + 144, *Q = info0 + 144, *s0 = Q + 144;
-    double *xo = malloc(sizeof(double) * 12 * (size_t)n), *Po = malloc(sizeof(double) * 144 * (size_t)n);
-    double x[12], P[144], info[144], info2[144], nu[3], S[9], nis, w[@SZ_W@ + 1];
-    casadi_int iw[@SZ_IW@ + 1];
-    double best = 1e300;
-    for (int rep = 0; rep <= repeat; ++rep) {
-        memcpy(x, x0, sizeof x); memcpy(P, P0, sizeof P); memcpy(info, info0, sizeof info);
-        double t0 = now_ns();
-        for (long i = 0; i < n; ++i) {
-            const double *arg[6] = {x, P, info, Q, rows + 18 * i, s0};
-            double *res[6] = {xo + 12 * i, Po + 144 * i, info2, nu, S, &nis};
-            @FUNC@(arg, res, iw, w, 0);
-            memcpy(x, xo + 12 * i, sizeof x); memcpy(P, Po + 144 * i, sizeof P); memcpy(info, info2, sizeof info);
-        }
-        double dt = (now_ns() - t0) / (double)n;
-        if (rep > 0 && dt < best) best = dt;
-    }
-    printf("%.6f %.17g\n", best / 1e3, xo[12 * (n - 1) + 3]);
-    return 0;
-}
-"""
-
-
-def flags_experiment(config, rows: np.ndarray, reference_last: np.ndarray, repeat: int) -> dict:
-    """The same generated step in a plain C loop, built with the loader's flags and with more
-    aggressive (non-portable) ones: how much of the step's cost a compiler setting could remove."""
-    import subprocess
-    import tempfile
-    from pathlib import Path
-
-    cc = _codegen.compiler()
-    if cc is None:
-        return {}
-    name = config.step_name
-    work = _codegen.manifest()["functions"][name]["work"]
-    out = {}
-    with tempfile.TemporaryDirectory() as tmp:
-        tmp = Path(tmp)
-        (tmp / f"{name}.c").write_bytes(_codegen.read_artifact(name, "c"))  # the shipped source, hash-checked
-        code = HARNESS.replace("@SOURCE@", f"{name}.c").replace("@FUNC@", name)
-        code = code.replace("@SZ_W@", str(work["sz_w"])).replace("@SZ_IW@", str(work["sz_iw"]))
-        (tmp / "harness.c").write_text(code)
-        x0 = np.zeros(N_STATE) if config.x0 is None else np.array(config.x0)
-        # matrices in column-major order (CasADi's), all symmetric here anyway
-        blob = np.concatenate([rows.ravel(), x0, np.diag(np.square(config.prior_sigma)).ravel(),
-                               np.zeros(N_STATE * N_STATE), np.diag(np.square(config.q_sigma)).ravel(), np.array(config.sigma0)])
-        blob.astype("<f8").tofile(tmp / "in.bin")
-        loader_flags = [f for f in _codegen.CFLAGS if f not in ("-shared", "-fPIC")]
-        for label, flags in (("plain C, loader flags " + " ".join(loader_flags), loader_flags),
-                             ("plain C, -O3 -march=native", ["-O3", "-march=native"])):
-            exe = tmp / ("h" + str(len(out)))
-            proc = subprocess.run([cc, *flags, "-o", str(exe), str(tmp / "harness.c"), "-lm"], capture_output=True, text=True)
-            if proc.returncode != 0:
-                out[label] = None
-                continue
-            res = subprocess.run([str(exe), str(len(rows)), str(repeat), str(tmp / "in.bin")], capture_output=True, text=True)
-            us, last = (float(v) for v in res.stdout.split())
-            if not np.isclose(last, reference_last, rtol=1e-9):
-                raise SystemExit(f"{label}: last dr_a estimate {last} != register()'s {reference_last}")
-            out[label] = us
-    return out
 
 
 # --------------------------------------------------------------------------- main
@@ -495,6 +335,8 @@ def main(argv=None) -> int:
     per_config = run_configs(configs, default, args)
     profile = profiles(configs[default], data_long, args.seed)
     if args.flags:
+        from online_flags import flags_experiment
+
         for lin, cfg in configs.items():
             flags = flags_experiment(cfg, rows_of(data_long), register(data_long, cfg).estimates[-1, 3], args.repeat)
             per_config[lin]["plain_c_us_per_step"] = flags

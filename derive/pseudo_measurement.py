@@ -9,7 +9,7 @@ H and M are exactly dZ/d(attitude, measurement) and dZ/d(measurement): the tests
 
 import sympy as sp
 
-from .attitude import MEAS_DOMAIN, PI, deck2enu_rotation_expr, phi_expr
+from .attitude import MEAS_DOMAIN, deck2enu_rotation_expr, phi_expr
 from .geodesy import GEO_DOMAIN, T_VARIANTS, geodetic2ecef_expr
 from .spec import FunctionSpec, JacobianDecl, Port, jacobian
 

@@ -9,7 +9,6 @@ more than 10 x its expectation (the likely causes are printed; ``--allow-inconsi
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
 
 import numpy as np

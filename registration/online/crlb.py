@@ -10,7 +10,6 @@ from __future__ import annotations
 import numpy as np
 
 from registration import _codegen
-from registration.core.consistency import nees_interval
 from registration.online.contract import SENSORS
 
 __all__ = ["crlb_information", "nees_series", "crlb_from_information", "quadratic_forms"]

@@ -16,7 +16,6 @@ import pytest
 
 from registration import fusion as F
 from registration.fusion.inputs import BLOCK
-from registration.fusion.polar import cartesian2polar
 
 PAPER1 = dict(z=np.array([100e3, np.radians(15.0)]), s=np.array([100.0, 7e-3]), comps=("azimuth",),
               s2=np.array([4e-3]), site=np.array([80e3, 0.0]))

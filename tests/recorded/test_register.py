@@ -12,7 +12,7 @@ from registration.cli import main
 from registration.online import RegistrationConfig, register
 from registration.recorded import REASON_CODES, from_file_frame, load_checkpoint, read_table, save_checkpoint
 
-from ._register_data import estimates_from_file, file_estimates, file_sigmas, frame, in_file_units, scenario
+from ._register_data import file_estimates, file_sigmas, frame, in_file_units, scenario
 
 FAST = ["--no-plots", "--no-progress"]
 
