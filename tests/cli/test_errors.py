@@ -6,9 +6,11 @@ import argparse
 import errno
 import os
 import pathlib
+import select
 import signal
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -132,19 +134,24 @@ def test_ctrl_c_with_a_checkpoint_says_how_to_resume():
 def test_a_real_sigint_exits_130_without_traceback(tmp_path):
     proc = cli("landing", "--runs", "100000", "--no-plots", "--out", "land", cwd=tmp_path,
                stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    seen = b""
-    while b"batch/s" not in seen:  # the progress bar has moved: the work has started
-        chunk = os.read(proc.stderr.fileno(), 4096)
-        if not chunk:
-            break  # the command ended on its own
-        seen += chunk
-    proc.send_signal(signal.SIGINT)
+    seen, deadline = b"", time.monotonic() + 120
     try:
-        err = (seen + proc.stderr.read()).decode()
-        code = proc.wait(timeout=60)
-    finally:
+        while b"batch/s" not in seen and time.monotonic() < deadline:  # the progress bar has moved
+            ready, _, _ = select.select([proc.stderr], [], [], 1.0)
+            if not ready:
+                continue
+            chunk = os.read(proc.stderr.fileno(), 4096)
+            if not chunk:
+                break  # the command ended on its own
+            seen += chunk
+        proc.send_signal(signal.SIGINT)
+        _, rest = proc.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
         proc.kill()
-    assert code == EXIT_INTERRUPTED, err
+        proc.communicate()
+        pytest.fail("the command did not stop within 60 s of SIGINT")
+    err = (seen + rest).decode()
+    assert proc.returncode == EXIT_INTERRUPTED, err
     assert "Traceback" not in err and "KeyboardInterrupt" not in err
     assert err.endswith("\nregistration landing: interrupted; outputs in land may be incomplete\n")
 
