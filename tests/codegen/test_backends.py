@@ -28,7 +28,7 @@ def _sympy_eval(spec, inputs, n):
     values = np.concatenate(cols, axis=1)
     outs = []
     for port in spec.outputs:
-        f = sp.lambdify(symbols, port.matrix, modules="numpy")
+        f = sp.lambdify(symbols, port.matrix, modules="numpy", cse=True)
         res = np.array([np.asarray(f(*row), dtype=float) for row in values])
         outs.append(res)
     return outs

@@ -135,6 +135,7 @@ def test_every_jacobian_is_declared():
         ("cartesian2polar2", "J"),
         ("polar2cartesian3", "J"),
         ("cartesian2polar3", "J"),
+        ("fleet_residual", "J"),
     ]:
         assert need in declared
 
