@@ -10,7 +10,7 @@ import argparse
 import sys
 from pathlib import Path
 
-__all__ = ["HelpFormatter", "add_out", "add_no_plots", "add_seed", "OUT_ROOT"]
+__all__ = ["HelpFormatter", "add_out", "add_no_plots", "add_seed", "add_dask", "check_dask", "OUT_ROOT"]
 
 #: ``--out`` defaults to OUT_ROOT/<command> (relative to the working folder).
 OUT_ROOT = Path("out")
@@ -58,3 +58,29 @@ def add_no_plots(p: argparse.ArgumentParser, old_spelling: str | None = None) ->
 def add_seed(p: argparse.ArgumentParser, default: int, what: str = "random seed of the measurement noise") -> None:
     """``--seed N`` (an integer)."""
     p.add_argument("--seed", type=int, default=default, metavar="N", help=what)
+
+
+def add_dask(p: argparse.ArgumentParser, chunks: str) -> None:
+    """``--scheduler ADDRESS`` and ``--workers N``: run the ``chunks`` on a dask cluster (optional extra)."""
+    g = p.add_argument_group("parallel and distributed runs (install sensor-registration[dask])")
+    g.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                   help=f"run the {chunks} on the dask.distributed scheduler at ADDRESS, e.g. tcp://host:8786 "
+                        "(default: in this process)")
+    g.add_argument("--workers", type=int, default=None, metavar="N",
+                   help=f"run the {chunks} on a local dask cluster of N worker processes, one thread each "
+                        "(default: in this process)")
+
+
+def check_dask(args: argparse.Namespace) -> None:
+    """Reject bad ``--scheduler``/``--workers`` values, or a missing dask, before any work (ValueError)."""
+    if args.workers is not None and args.workers < 1:
+        raise ValueError(f"--workers: expected at least 1 worker, got {args.workers}")
+    if args.scheduler and args.workers:
+        raise ValueError("--scheduler, --workers: give one or the other")
+    if args.scheduler or args.workers:
+        from registration.core.parallel import require_distributed
+
+        try:
+            require_distributed()
+        except ImportError as exc:
+            raise ValueError(f"--{'scheduler' if args.scheduler else 'workers'}: {exc}") from None
