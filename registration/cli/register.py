@@ -13,8 +13,8 @@ from pathlib import Path
 
 import numpy as np
 
-from registration.cli.errors import EXIT_BAD_ROWS, EXIT_OK, add_allow_inconsistent, consistency_gate, consistency_line
-from registration.cli.options import add_no_plots, add_out
+from registration.cli.errors import EXIT_BAD_INPUT, EXIT_BAD_ROWS, EXIT_OK, add_allow_inconsistent, consistency_gate, consistency_line
+from registration.cli.options import add_dask, add_no_plots, add_out, check_dask
 from registration.online import DEFAULT_LINEARIZATION, LINEARIZATIONS
 
 HELP = "register recorded data: a synchronous table or two per-radar plot files (+ navigation), CSV or Parquet"
@@ -53,6 +53,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     add_no_plots(p)
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
     add_allow_inconsistent(p)
+    p.add_argument("--each", action="store_true",
+                   help="every INPUT is a synchronous table of its own: one registration per file, into DIR/<file stem>/")
+    add_dask(p, "files of --each")
     g = p.add_argument_group("asynchronous form (two plot files)")
     g.add_argument("--clock-offset-a", type=float, default=0.0, metavar="S",
                    help="radar A's clock offset, s: its clock reads reference time + S")
@@ -110,6 +113,10 @@ def run(args: argparse.Namespace) -> int:
     from registration.cli.simulate import estimate_lines
     from registration.recorded import run_register, summary_consistency, validate_files
 
+    if args.each:
+        return run_each(args)
+    if args.scheduler or args.workers:
+        raise ValueError("--scheduler, --workers: only with --each (one registration per file)")
     options = build_options(args)
     if args.validate_only:
         report = validate_files(args.inputs, options)
@@ -158,3 +165,61 @@ def _print_summary(summary: dict, estimate_lines, gate) -> None:
         print("\n" + consistency_line(gate))
     for w in summary.get("warnings", []):
         print(f"warning: {w}")
+
+
+def register_file(task: tuple) -> dict:
+    """``(path, RunOptions)`` registered: ``{"file", "summary"}``, or ``{"file", "error"}`` for bad input."""
+    from registration.recorded import run_register
+
+    path, options = task
+    try:
+        return {"file": str(path), "summary": run_register([path], options)}
+    except (ValueError, OSError) as exc:
+        return {"file": str(path), "error": f"{type(exc).__name__}: {exc}"}
+
+
+def each_tasks(args: argparse.Namespace) -> list[tuple]:
+    """One ``(path, RunOptions)`` per input, its outputs in ``--out``/<file stem> (checked before any work)."""
+    import dataclasses
+
+    if args.checkpoint is not None or args.nav:
+        raise ValueError("--each: every input is a synchronous table; --checkpoint and --nav do not apply")
+    stems = [Path(p).stem for p in args.inputs]
+    if len(set(stems)) != len(stems):
+        dup = sorted({s for s in stems if stems.count(s) > 1})
+        raise ValueError(f"--each: two inputs share the file stem {dup[0]!r} (their outputs would share a folder)")
+    check_dask(args)
+    args.inputs = list(args.inputs)
+    base = build_options(argparse.Namespace(**{**vars(args), "inputs": args.inputs[:1]}))
+    return [(Path(p), dataclasses.replace(base, out=Path(args.out) / Path(p).stem, progress=False)) for p in args.inputs]
+
+
+def run_each(args: argparse.Namespace) -> int:
+    """``--each``: every input registered on its own (on a dask cluster with --workers/--scheduler)."""
+    from registration.core.parallel import dask_client, map_chunks
+    from registration.recorded import summary_consistency, validate_files
+
+    tasks = each_tasks(args)
+    if args.validate_only:
+        bad = 0
+        for path, options in tasks:
+            (r,) = validate_files([path], options)["files"].values()
+            bad += r["rows"] - r["accepted"]
+            print(f"{path} ({r['layout']}): {r['rows']} rows, {r['accepted']} valid, {r['rows'] - r['accepted']} bad")
+        return EXIT_BAD_ROWS if bad else EXIT_OK
+    with dask_client(args.scheduler, args.workers) as client:
+        done = map_chunks(register_file, tasks, client, progress=not args.no_progress, desc="files")
+    codes = []
+    for (path, options), d in zip(tasks, done):
+        if "error" in d:
+            print(f"{path}: error: {d['error']}")
+            codes.append(EXIT_BAD_INPUT)
+            continue
+        rows, gate = d["summary"]["rows"], summary_consistency(d["summary"])
+        print(f"{path}: {rows['accepted']} of {rows['read']} rows registered into {options.out}/"
+              + ("" if gate is None else "; " + consistency_line(gate)))
+        codes.append(EXIT_OK if gate is None else consistency_gate(f"registration register {path}", gate,
+                                                                   args.allow_inconsistent))
+    failed = codes.count(EXIT_BAD_INPUT)
+    print(f"registration register --each: {len(tasks) - failed} of {len(tasks)} files registered")
+    return max(codes)
