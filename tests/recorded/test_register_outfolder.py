@@ -8,6 +8,7 @@ half-way says so (``INCOMPLETE``) and resumes in its folder.
 from __future__ import annotations
 
 import json
+import shutil
 import subprocess
 import sys
 
@@ -35,16 +36,29 @@ def _snapshot(folder):
     return {str(p.relative_to(folder)): p.read_bytes() for p in sorted(folder.rglob("*")) if p.is_file()}
 
 
-def _good_run(tmp_path):
-    inp, out = tmp_path / "good.csv", tmp_path / "reg"
+@pytest.fixture(scope="module")
+def good_template(tmp_path_factory):
+    """One good run with plots (the slow part), copied into each test that needs an earlier run."""
+    base = tmp_path_factory.mktemp("good")
+    inp, out = base / "good.csv", base / "reg"
     frame(120).to_csv(inp, index=False)
     assert _run(inp, "--out", out, "--no-progress") == 0  # with plots
+    return base
+
+
+def _good_run(tmp_path, template):
+    """The input and the output folder of a finished good run, in ``tmp_path`` (paths as if run there)."""
+    inp, out = tmp_path / "good.csv", tmp_path / "reg"
+    shutil.copyfile(template / "good.csv", inp)
+    shutil.copytree(template / "reg", out)
+    summary = out / "summary.json"
+    summary.write_text(summary.read_text().replace(str(template), str(tmp_path)))
     return inp, out
 
 
 @pytest.mark.parametrize("mistake", ["bad_row", "unreadable", "header_only"])
-def test_a_failed_run_leaves_the_earlier_run_untouched(tmp_path, capsys, mistake):
-    _, out = _good_run(tmp_path)
+def test_a_failed_run_leaves_the_earlier_run_untouched(tmp_path, capsys, mistake, good_template):
+    _, out = _good_run(tmp_path, good_template)
     before = _snapshot(out)
     assert {"summary.json", "estimates.png", "estimates.csv"} <= set(before)
     bad = tmp_path / "bad.csv"
@@ -62,9 +76,9 @@ def test_a_failed_run_leaves_the_earlier_run_untouched(tmp_path, capsys, mistake
     assert not list(out.glob("partial-*")) and not (out / MARKER).exists()
 
 
-def test_every_row_rejected_replaces_the_earlier_run_whole(tmp_path):
+def test_every_row_rejected_replaces_the_earlier_run_whole(tmp_path, good_template):
     """All rows rejected is an answer (rejected.csv says why): published, with nothing of the run before."""
-    _, out = _good_run(tmp_path)
+    _, out = _good_run(tmp_path, good_template)
     bad = tmp_path / "bad.csv"
     f = frame(50)
     f["b_range_m"] = 0.0
@@ -123,8 +137,8 @@ def _options(out, ckpt=None):
                       log=lambda m: None)
 
 
-def test_an_interrupted_run_without_checkpoint_changes_nothing(tmp_path, monkeypatch):
-    inp, out = _good_run(tmp_path)
+def test_an_interrupted_run_without_checkpoint_changes_nothing(tmp_path, monkeypatch, good_template):
+    inp, out = _good_run(tmp_path, good_template)
     before = _snapshot(out)
     other = tmp_path / "other.csv"
     frame(100, seed=3).to_csv(other, index=False)
@@ -134,8 +148,8 @@ def test_an_interrupted_run_without_checkpoint_changes_nothing(tmp_path, monkeyp
     assert _snapshot(out) == before and not list(out.glob("partial-*"))
 
 
-def test_a_checkpointed_run_stopped_half_way_is_marked_and_resumes_into_place(tmp_path, monkeypatch):
-    inp, out = _good_run(tmp_path)
+def test_a_checkpointed_run_stopped_half_way_is_marked_and_resumes_into_place(tmp_path, monkeypatch, good_template):
+    inp, out = _good_run(tmp_path, good_template)
     before = _snapshot(out)
     other, ckpt = tmp_path / "other.csv", tmp_path / "run.ckpt"
     frame(100, seed=3).to_csv(other, index=False)
@@ -170,8 +184,8 @@ def _dead_pid() -> int:
     return proc.pid
 
 
-def test_an_interrupted_publication_is_completed_by_the_next_run(tmp_path, monkeypatch):
-    inp, out = _good_run(tmp_path)
+def test_an_interrupted_publication_is_completed_by_the_next_run(tmp_path, monkeypatch, good_template):
+    inp, out = _good_run(tmp_path, good_template)
     new = tmp_path / "new"
     frame(60, seed=2).to_csv(tmp_path / "new.csv", index=False)
     assert _run(tmp_path / "new.csv", "--out", new, "--no-progress") == 0
