@@ -57,7 +57,7 @@ def dask_client(scheduler: str | None = None, workers: int | None = None):
     if int(workers) < 1:
         raise ValueError(f"--workers: expected at least 1 worker, got {workers}")
     with distributed.LocalCluster(n_workers=int(workers), threads_per_worker=1, processes=True,
-                                  dashboard_address=None) as cluster, distributed.Client(cluster) as client:
+                                  dashboard_address=":0") as cluster, distributed.Client(cluster) as client:
         yield client
 
 
