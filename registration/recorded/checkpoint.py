@@ -26,7 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["CheckpointError", "save_checkpoint", "load_checkpoint", "encode", "decode", "FORMAT", "VERSION"]
+__all__ = ["CheckpointError", "save_checkpoint", "load_checkpoint", "fsync_dir", "encode", "decode", "FORMAT", "VERSION"]
 
 FORMAT = "sensor-registration-checkpoint"
 VERSION = 1
@@ -85,13 +85,18 @@ def save_checkpoint(path, payload: dict) -> None:
         f.flush()
         os.fsync(f.fileno())
     os.replace(tmp, path)
+    fsync_dir(path.parent if str(path.parent) else Path("."))
+
+
+def fsync_dir(path: Path) -> None:
+    """Make the renames inside folder ``path`` durable (fsync of the folder), where the file system allows it."""
     try:
-        fd = os.open(path.parent if str(path.parent) else ".", os.O_RDONLY)
+        fd = os.open(path, os.O_RDONLY)
         try:
             os.fsync(fd)
         finally:
             os.close(fd)
-    except OSError:  # some file systems refuse fsync on a directory; the rename is still atomic
+    except OSError:  # some file systems refuse fsync on a folder; the renames are still atomic
         pass
 
 

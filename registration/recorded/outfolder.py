@@ -26,7 +26,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from registration.recorded.checkpoint import CheckpointError, load_checkpoint
+from registration.recorded.checkpoint import CheckpointError, fsync_dir, load_checkpoint
 
 __all__ = ["OUTPUT_NAMES", "MARKER", "OutputFolderError", "RunFolder", "prepare_out", "new_run_folder",
            "mark_in_place", "publish", "discard", "records_folder"]
@@ -93,17 +93,6 @@ def _pid_of(name: str) -> int | None:
         return int(name.removeprefix(_ASIDE).removeprefix(_PARTIAL).split("-")[0])
     except ValueError:
         return None
-
-
-def _fsync_dir(path: Path) -> None:
-    try:
-        fd = os.open(path, os.O_RDONLY)
-        try:
-            os.fsync(fd)
-        finally:
-            os.close(fd)
-    except OSError:  # some file systems refuse fsync on a folder; the renames are still atomic
-        pass
 
 
 def _write_text(path: Path, text: str) -> None:
@@ -219,7 +208,7 @@ def publish(folder: RunFolder) -> None:
         _write_text(out / MARKER, f"The outputs of a `registration register` run are being moved into this folder. If "
                                   f"this file stays, that was interrupted: the next run into {out} completes it.\n"
                                   f"publishing: {folder.path.name}\nfiles: {json.dumps(names)}\n")
-        _fsync_dir(out)
+        fsync_dir(out)
     _move_in(out, folder.path, names)
 
 
@@ -237,7 +226,7 @@ def _move_in(out: Path, work: Path, names: list[str]) -> None:
     for name in names:
         if (work / name).exists():
             os.rename(work / name, out / name)
-    _fsync_dir(out)
+    fsync_dir(out)
     (out / MARKER).unlink(missing_ok=True)
     shutil.rmtree(aside, ignore_errors=True)
     shutil.rmtree(work, ignore_errors=True)
