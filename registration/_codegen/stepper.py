@@ -96,6 +96,9 @@ class _Layout:
         k = len(carry)
         if list(carry) != self.inputs[:k] or list(carry.values()) != self.outputs[:k]:
             raise ValueError(f"{fn.name}: carried inputs must be the first {k} inputs paired with the first outputs")
+        if self.in_shapes[:k] != self.out_shapes[:k]:
+            raise ValueError(f"{fn.name}: a carried input and its output differ in shape "
+                             f"({self.in_shapes[:k]} vs {self.out_shapes[:k]})")
         if feed not in self.inputs[k:]:
             raise ValueError(f"{fn.name}: the fed input must be a non-carried input, got {feed!r}")
         self.n_carry, self.feed = k, self.inputs.index(feed)

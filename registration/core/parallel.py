@@ -44,9 +44,11 @@ def dask_client(scheduler: str | None = None, workers: int | None = None):
     number of worker processes of a ``LocalCluster`` on this machine, one thread each. Neither:
     None. The local cluster is closed when the block ends.
     """
-    if scheduler and workers:
+    if scheduler and workers is not None:
         raise ValueError("--scheduler and --workers: give one or the other (--workers starts a cluster on this machine)")
-    if not scheduler and not workers:
+    if workers is not None and int(workers) < 1:
+        raise ValueError(f"--workers: expected at least 1 worker, got {workers}")
+    if not scheduler and workers is None:
         yield None
         return
     distributed = require_distributed()
@@ -54,8 +56,6 @@ def dask_client(scheduler: str | None = None, workers: int | None = None):
         with distributed.Client(scheduler) as client:
             yield client
         return
-    if int(workers) < 1:
-        raise ValueError(f"--workers: expected at least 1 worker, got {workers}")
     with distributed.LocalCluster(n_workers=int(workers), threads_per_worker=1, processes=True,
                                   dashboard_address=":0") as cluster, distributed.Client(cluster) as client:
         yield client

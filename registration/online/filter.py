@@ -15,7 +15,7 @@ from registration import _codegen
 from registration.core.observability import ObservabilityReport, observability_report
 from registration.online.config import RegistrationConfig
 from registration.online.contract import (
-    LIMITS, N_ROW, N_STATE, SENSOR_COLUMNS, SENSORS, STATE_LABELS, STATE_NAMES, STATE_UNITS, check_rows, check_times,
+    LIMITS, N_ROW, N_STATE, SENSOR_COLUMNS, SENSORS, STATE_LABELS, STATE_NAMES, STATE_UNITS, check_rows, check_times, row_error,
     row_from_mapping,
 )
 
@@ -48,12 +48,18 @@ def _frozen(a) -> np.ndarray:
     return a
 
 
-def _time_follows(time, last) -> bool:
-    """True if ``time`` (s) is finite and after ``last`` (None: any finite time); plain float tests."""
+def _seconds(time, row: int) -> float:
+    """``time`` as a float (s); a string, None-like or other non-number raises, naming the row."""
+    if isinstance(time, (str, bytes, bool, np.bool_)):
+        raise row_error(row, "time", time, "is not a number; expected seconds")
     try:
-        t = float(time)
-    except (TypeError, ValueError):
-        return False
+        return float(time)
+    except (TypeError, ValueError) as exc:
+        raise row_error(row, "time", time, "is not a number; expected seconds") from exc
+
+
+def _time_follows(t: float, last) -> bool:
+    """True if ``t`` (s) is finite and after ``last`` (None: any finite time); plain float tests."""
     return -np.inf < t < np.inf and (last is None or t > last)
 
 
@@ -140,9 +146,15 @@ class OnlineRegistrar:
         else:
             values = row_from_mapping(row)
         n = self.n_updates
-        if time is not None and not _time_follows(time, self.last_time):
-            check_rows(values[None, :], first_row=n)  # a bad row is named before a bad time
-            check_times(np.array([time], dtype=float), n, self.last_time)
+        if time is not None:
+            try:
+                time = _seconds(time, n)
+            except ValueError:
+                check_rows(values[None, :], first_row=n)  # a bad row is named before a bad time
+                raise
+            if not _time_follows(time, self.last_time):
+                check_rows(values[None, :], first_row=n)
+                check_times(np.array([time], dtype=float), n, self.last_time)
         stepper = self._stepper or self._make_stepper()
         if self._adaptive:
             stepper.set("Q", self.process_noise())

@@ -157,7 +157,12 @@ def _complete_publication(out: Path) -> None:
     fields = _marker_fields(out / MARKER)
     if "publishing" not in fields:
         return
-    work, names = out / fields["publishing"], json.loads(fields.get("files", "[]"))
+    try:
+        names = json.loads(fields.get("files", "[]"))
+    except json.JSONDecodeError as exc:
+        raise OutputFolderError(f"{out / MARKER}: damaged (its file list cannot be read); the folder holds an "
+                                "interrupted publication: check it, then delete the marker to go on") from exc
+    work = out / fields["publishing"]
     pid = _pid_of(work.name)
     if pid is not None and _pid_alive(pid):
         return

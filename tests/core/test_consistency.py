@@ -34,8 +34,20 @@ def test_a_sigma_in_the_wrong_unit_fails_the_gate_and_the_right_one_passes():
     assert wrong.consistency.to_json()["status"] == "grossly inconsistent"
 
 
-def test_a_streamed_mean_gives_the_same_report():
-    values = np.random.default_rng(2).chisquare(3, size=500)
+def test_a_streamed_mean_is_judged_against_the_chi_square_quantiles():
+    """from_mean (streaming runs keep only a sum and a count): the band is the chi-square quantiles
+    of the mean of n values (scipy.stats, an independent route), and the status follows it."""
+    from scipy.stats import chi2
+
     from registration.core.consistency import ConsistencyReport
 
-    assert ConsistencyReport.from_mean(float(np.mean(values)), 500, 3) == check_consistency(values, 3)
+    n, dof = 500, 3
+    lo, hi = chi2.ppf(0.025, n * dof) / n, chi2.ppf(0.975, n * dof) / n
+    inside = ConsistencyReport.from_mean(3.0, n, dof)
+    assert inside.interval == pytest.approx((lo, hi), rel=1e-12) and inside.status == "consistent"
+    assert ConsistencyReport.from_mean(hi * 1.01, n, dof).status == "outside band"
+    assert ConsistencyReport.from_mean(lo * 0.99, n, dof).status == "outside band"
+    assert not ConsistencyReport.from_mean(dof * GROSS_FACTOR * 1.01, n, dof).ok
+    with pytest.raises(ValueError, match="no samples"):
+        ConsistencyReport.from_mean(3.0, 0, dof)
+

@@ -122,7 +122,8 @@ def test_bad_row_raises_value_error_and_a_bad_row_is_named_before_a_bad_time(sce
 
 
 @pytest.mark.parametrize("time,message", [(10.0, "does not increase"), (np.nan, "not finite"), (np.inf, "not finite"),
-                                          ("soon", "could not convert")])
+                                          ("soon", "row 1, column 'time': value 'soon' is not a number; expected seconds"),
+                                          ("11.0", "row 1, column 'time': value '11.0' is not a number")])
 def test_bad_time_raises_value_error_and_leaves_the_state(scenario, time, message):
     rows = _rows(scenario)
     reg = OnlineRegistrar()
@@ -133,6 +134,9 @@ def test_bad_time_raises_value_error_and_leaves_the_state(scenario, time, messag
     _assert_state(reg, before)
     reg.update(rows[1], time=np.float32(10.5))  # any number after the last time
     assert reg.n_updates == 2
+    assert type(reg.last_time) is float and reg.state_dict()["last_time"] == 10.5
+    reg.update(rows[2], time=11)  # an int is a number of seconds too
+    assert type(reg.last_time) is float
 
 
 def test_a_copied_registrar_continues_like_the_original(scenario):
@@ -150,3 +154,4 @@ def test_a_copied_registrar_continues_like_the_original(scenario):
         for key in ("x", "P", "nis"):
             np.testing.assert_array_equal(out[key], ref[key])
         np.testing.assert_array_equal(twin.info, reg.info)
+
