@@ -1,0 +1,310 @@
+"""Fleet tables as files: CSV or Parquet in file units (degrees, metres, seconds), converted to the
+long-form tables of :mod:`registration.fleet.tables` (SI units, radians) and back.
+
+File columns (one row per item; an empty cell is "not given"):
+
+* ``plots``: ``time_s``, ``sensor``, ``target``, ``range_m``, ``bearing_deg``, ``elevation_deg``
+  (an empty cell: the sensor does not measure that channel);
+* ``navigation``: ``time_s``, ``platform``, ``lat_deg``, ``lon_deg``, ``alt_m``, ``heading_deg``,
+  ``pitch_deg``, ``roll_deg`` as reported (one row for a fixed site);
+* ``sensors``: ``sensor``, ``platform``, ``sigma_range_m``, ``sigma_bearing_deg``,
+  ``sigma_elevation_deg`` (empty: channel not measured); optional prior sigmas of the biases
+  ``prior_range_bias_m``, ``prior_bearing_bias_deg``, ``prior_elevation_bias_deg`` (empty or
+  ``inf``: no prior; 0: known to be zero, held fixed) and lever arm ``lever_x_m``, ``lever_y_m``,
+  ``lever_z_m`` (deck frame: starboard, bow, up; default 0);
+* ``platforms`` (optional): ``platform``, ``prior_heading_deg``, ``prior_pitch_deg``,
+  ``prior_roll_deg`` (same meaning as the bias priors);
+* ``reference`` (optional): ``time_s``, ``target`` and the known position as ``lat_deg``,
+  ``lon_deg``, ``alt_m`` or as ECEF ``x_m``, ``y_m``, ``z_m``; optional ``sigma_m`` (per axis).
+
+Every cell problem raises a ValueError naming the file, the row (from 0, the first data row), the
+column and its unit. Rows keep their file order, so the row numbers of the errors of
+:func:`~registration.fleet.problem.build_problem` are file rows too (:meth:`FleetTables.problem`
+names the file in them).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from registration.fleet.problem import FleetProblem, build_problem
+from registration.fleet.tables import DEFAULT_REFERENCE_SIGMA
+
+__all__ = ["FILE_COLUMNS", "FleetTables", "read_fleet_tables", "write_fleet_tables", "ecef2geodetic",
+           "MIN_UNIT_CHECK_VALUES"]
+
+#: Per table: (file column, table column, unit, required, (low, high) accepted in file units).
+#: unit "id" = an identifier; "deg" columns are converted to radians.
+FILE_COLUMNS = {
+    "plots": (("time_s", "time", "s", True, None), ("sensor", "sensor", "id", True, None),
+              ("target", "target", "id", True, None), ("range_m", "range", "m", False, (0.0, 1e8)),
+              ("bearing_deg", "bearing", "deg", False, (-360.0, 360.0)),
+              ("elevation_deg", "elevation", "deg", False, (-90.0, 90.0))),
+    "navigation": (("time_s", "time", "s", True, None), ("platform", "platform", "id", True, None),
+                   ("lat_deg", "lat", "deg", True, (-90.0, 90.0)), ("lon_deg", "lon", "deg", True, (-360.0, 360.0)),
+                   ("alt_m", "alt", "m", True, (-1.2e4, 1e6)), ("heading_deg", "heading", "deg", True, (-360.0, 360.0)),
+                   ("pitch_deg", "pitch", "deg", True, (-90.0, 90.0)), ("roll_deg", "roll", "deg", True, (-90.0, 90.0))),
+    "sensors": (("sensor", "sensor", "id", True, None), ("platform", "platform", "id", True, None),
+                ("sigma_range_m", "sigma_range", "m", False, (0.0, 1e6)),
+                ("sigma_bearing_deg", "sigma_bearing", "deg", False, (0.0, 20.0)),
+                ("sigma_elevation_deg", "sigma_elevation", "deg", False, (0.0, 20.0)),
+                ("prior_range_bias_m", "prior_range", "m", False, (0.0, math.inf)),
+                ("prior_bearing_bias_deg", "prior_bearing", "deg", False, (0.0, math.inf)),
+                ("prior_elevation_bias_deg", "prior_elevation", "deg", False, (0.0, math.inf)),
+                ("lever_x_m", "lever_x", "m", False, (-1e4, 1e4)), ("lever_y_m", "lever_y", "m", False, (-1e4, 1e4)),
+                ("lever_z_m", "lever_z", "m", False, (-1e4, 1e4))),
+    "platforms": (("platform", "platform", "id", True, None),
+                  ("prior_heading_deg", "prior_heading", "deg", False, (0.0, math.inf)),
+                  ("prior_pitch_deg", "prior_pitch", "deg", False, (0.0, math.inf)),
+                  ("prior_roll_deg", "prior_roll", "deg", False, (0.0, math.inf))),
+    "reference": (("time_s", "time", "s", True, None), ("target", "target", "id", True, None),
+                  ("lat_deg", "lat", "deg", False, (-90.0, 90.0)), ("lon_deg", "lon", "deg", False, (-360.0, 360.0)),
+                  ("alt_m", "alt", "m", False, (-1.2e4, 1e8)), ("x_m", "x", "m", False, (-1e8, 1e8)),
+                  ("y_m", "y", "m", False, (-1e8, 1e8)), ("z_m", "z", "m", False, (-1e8, 1e8)),
+                  ("sigma_m", "sigma", "m", False, (0.0, 1e6))),
+}
+#: Sigma columns whose value must be > 0 (a prior may be 0: fixed).
+_POSITIVE = {"range_m", "sigma_range_m", "sigma_bearing_deg", "sigma_elevation_deg", "sigma_m"}
+#: Fewest values of a bearing column (or of lat/lon) for the radians-in-degrees check.
+MIN_UNIT_CHECK_VALUES = 100
+#: Table name -> the library table name used in build_problem's errors.
+_LIBRARY_NAME = {"plots": "plots", "navigation": "navigation", "sensors": "sensors", "platforms": "platforms",
+                 "reference": "references"}
+
+
+@dataclass
+class FleetTables:
+    """The tables read from files, in SI units and radians (mappings of column -> array, ready for
+    :func:`~registration.fleet.problem.build_problem`), and the file each came from."""
+
+    plots: dict
+    navigation: dict
+    sensors: dict
+    platforms: dict | None = None
+    references: dict | None = None
+    paths: dict = field(default_factory=dict)
+
+    def problem(self) -> FleetProblem:
+        """:func:`build_problem` on the tables; its errors name the file the row is in."""
+        try:
+            return build_problem(self.plots, self.sensors, self.navigation, self.platforms, self.references)
+        except ValueError as exc:
+            text = str(exc)
+            for name, path in self.paths.items():
+                lib = _LIBRARY_NAME[name]
+                if re.match(rf"{lib}( row \d+)?:", text):
+                    text = f"{path}: " + re.sub(rf"^{lib} ", "", text) + " (values in SI units and radians)"
+                    break
+            raise ValueError(text) from exc
+
+    def rows(self) -> dict:
+        """Rows per table read."""
+        return {name: int(len(next(iter(t.values())))) for name, t in self._tables().items()}
+
+    def _tables(self) -> dict:
+        tables = {"plots": self.plots, "navigation": self.navigation, "sensors": self.sensors,
+                  "platforms": self.platforms, "reference": self.references}
+        return {k: v for k, v in tables.items() if v is not None}
+
+
+def _read_frame(path: Path):
+    """A CSV or Parquet file as a DataFrame, id columns as text."""
+    import pandas as pd
+
+    from registration.recorded.formats import file_format
+
+    fmt = file_format(path)
+    if not path.is_file():
+        raise ValueError(f"{path}: no such file")
+    try:
+        if fmt == "csv":
+            frame = pd.read_csv(path, dtype={"sensor": str, "platform": str, "target": str}, skipinitialspace=True)
+        else:
+            frame = pd.read_parquet(path)
+    except Exception as exc:  # pandas/pyarrow parse errors of many types
+        raise ValueError(f"{path}: cannot read it as {fmt.upper()}: {exc}") from exc
+    frame.columns = [str(c).strip() for c in frame.columns]
+    return frame
+
+
+def _id_column(path, frame, column: str) -> np.ndarray:
+    values = frame[column]
+    empty = np.flatnonzero(values.isna().to_numpy())
+    if empty.size:
+        raise ValueError(f"{path}: row {int(empty[0])}, column {column!r}: empty; every row needs an id")
+    return np.array([str(v).strip() for v in values], dtype=object).astype(str)
+
+
+def _number_column(path, frame, column: str, unit: str, required: bool, limits) -> np.ndarray:
+    """Numbers in file units; NaN for an empty optional cell. Errors name file, row, column, unit."""
+    import pandas as pd
+
+    raw = frame[column]
+    values = pd.to_numeric(raw, errors="coerce").to_numpy(dtype=np.float64)
+    given = raw.notna().to_numpy() & ~raw.astype(str).str.strip().isin(["", "nan", "NaN"]).to_numpy()
+    bad = np.flatnonzero(given & np.isnan(values))
+    if bad.size:
+        r = int(bad[0])
+        raise ValueError(f"{path}: row {r}, column {column!r}: {raw.iloc[r]!r} is not a number ({unit})")
+    if required and np.isnan(values).any():
+        r = int(np.flatnonzero(np.isnan(values))[0])
+        raise ValueError(f"{path}: row {r}, column {column!r}: empty; a number ({unit}) is required")
+    lo, hi = limits if limits is not None else (-math.inf, math.inf)
+    strict = column in _POSITIVE
+    finite_only = not (column.startswith("prior_") and hi == math.inf)
+    out = ((values <= lo) if strict else (values < lo)) | (values > hi) | (finite_only & np.isinf(values))
+    bad = np.flatnonzero(out)
+    if bad.size:
+        r = int(bad[0])
+        span = f"{'(' if strict else '['}{lo:g}, {hi:g}]"
+        raise ValueError(f"{path}: row {r}, column {column!r}: {values[r]:g} {unit} is outside {span} {unit}")
+    return values
+
+
+def _radians_check(path, columns: dict) -> None:
+    """Radians in degree columns: every bearing within +-2 pi, or every lat within +-pi/2 and lon
+    within +-2 pi, over at least MIN_UNIT_CHECK_VALUES values (degrees span far more)."""
+    checks = [("bearing_deg",), ("lat_deg", "lon_deg")]
+    for names in checks:
+        if not all(n in columns for n in names):
+            continue
+        vals = [columns[n][np.isfinite(columns[n])] for n in names]
+        if min(v.size for v in vals) < MIN_UNIT_CHECK_VALUES or not any(np.any(v != 0) for v in vals):
+            continue
+        bounds = (2 * math.pi,) if len(names) == 1 else (math.pi / 2, 2 * math.pi)
+        if all(np.max(np.abs(v)) <= b for v, b in zip(vals, bounds)):
+            col = columns[names[0]]
+            r = int(np.nanargmax(np.abs(col)))
+            raise ValueError(f"{path}: row {r}, column {names[0]!r}: all {vals[0].size} values of "
+                             f"{' and '.join(repr(n) for n in names)} lie within +-{np.max(np.abs(vals[0])):.3g} "
+                             f"(the largest here, {col[r]:.4g}): radians? These columns are in degrees")
+
+
+def _read_one(name: str, path: Path) -> dict:
+    """One file -> table dict in SI units and radians (columns of :mod:`registration.fleet.tables`)."""
+    frame = _read_frame(path)
+    spec = FILE_COLUMNS[name]
+    missing = [c for c, _, _, req, _ in spec if req and c not in frame.columns]
+    if missing:
+        raise ValueError(f"{path}: missing column(s) {missing}; the {name} table has columns "
+                         f"{[c for c, *_ in spec]} (columns found: {list(frame.columns)})")
+    known = {c for c, *_ in spec}
+    unknown = [c for c in frame.columns if c not in known]
+    if unknown:
+        raise ValueError(f"{path}: unknown column(s) {unknown}; the {name} table has columns {sorted(known)}")
+    numbers, out = {}, {}
+    for column, key, unit, required, limits in spec:
+        if column not in frame.columns:
+            continue
+        if unit == "id":
+            out[key] = _id_column(path, frame, column)
+            continue
+        numbers[column] = _number_column(path, frame, column, unit, required, limits)
+        out[key] = np.radians(numbers[column]) if unit == "deg" else numbers[column]
+        if column.startswith("prior_"):
+            out[key] = np.where(np.isnan(out[key]), np.inf, out[key])  # empty: no prior
+    _radians_check(path, numbers)
+    return out
+
+
+def _check_ids(tables: dict, paths: dict) -> None:
+    """Cross references between files: sensors of the plots, platforms of the sensors."""
+    checks = [("plots", "sensor", "sensors", "sensor"), ("sensors", "platform", "navigation", "platform")]
+    if "platforms" in tables:
+        checks.append(("sensors", "platform", "platforms", "platform"))
+    for table, column, other, key in checks:
+        known = {str(v) for v in tables[other][key]}
+        values = tables[table][column]
+        bad = np.flatnonzero(~np.isin(values, list(known)))
+        if bad.size:
+            r = int(bad[0])
+            raise ValueError(f"{paths[table]}: row {r}, column {column!r}: unknown {column} {str(values[r])!r}; "
+                             f"{paths[other]} lists {sorted(known)}")
+
+
+def read_fleet_tables(plots, navigation, sensors, platforms=None, reference=None) -> FleetTables:
+    """Read the fleet files (paths; ``.csv`` or ``.parquet``) into :class:`FleetTables` (SI, radians).
+
+    ValueError naming the file, row (from 0), column and unit for: an unreadable file, a missing or
+    unknown column, a cell that is not a number, an empty required cell, a value out of range, a
+    degree column that holds radians, an id not listed in the table it refers to.
+    """
+    paths = {k: Path(v) for k, v in (("plots", plots), ("navigation", navigation), ("sensors", sensors),
+                                     ("platforms", platforms), ("reference", reference)) if v is not None}
+    tables = {name: _read_one(name, path) for name, path in paths.items()}
+    ref = tables.get("reference")
+    if ref is not None and not ({"lat", "lon", "alt"} <= set(ref) or {"x", "y", "z"} <= set(ref)):
+        raise ValueError(f"{paths['reference']}: give the known positions as lat_deg, lon_deg, alt_m or as x_m, y_m, z_m")
+    if ref is not None and "sigma" in ref:
+        ref["sigma"] = np.where(np.isnan(ref["sigma"]), DEFAULT_REFERENCE_SIGMA, ref["sigma"])
+    _check_ids(tables, paths)
+    return FleetTables(tables["plots"], tables["navigation"], tables["sensors"], tables.get("platforms"), ref, paths)
+
+
+def ecef2geodetic(p_ecef) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """WGS-84 ECEF (N, 3) m -> lat, lon (rad), alt (m), by fixed-point iteration (below 1 mm
+    and 1e-12 rad after 6 iterations for heights below 1000 km)."""
+    a, f = 6378137.0, 1 / 298.257223563
+    e2 = f * (2 - f)
+    p = np.asarray(p_ecef, dtype=np.float64).reshape(-1, 3)
+    x, y, z = p.T
+    lon = np.arctan2(y, x)
+    rho = np.hypot(x, y)
+    lat = np.arctan2(z, rho * (1 - e2))
+    for _ in range(6):
+        n = a / np.sqrt(1 - e2 * np.sin(lat) ** 2)
+        alt = rho * np.cos(lat) + z * np.sin(lat) - a * a / n
+        lat = np.arctan2(z, rho * (1 - e2 * n / (n + alt)))
+    n = a / np.sqrt(1 - e2 * np.sin(lat) ** 2)
+    alt = rho * np.cos(lat) + z * np.sin(lat) - a * a / n
+    return lat, lon, alt
+
+
+def _file_frame(name: str, table):
+    """A table (SI, radians) -> DataFrame of the file columns present; inf priors written empty."""
+    import pandas as pd
+
+    table = {str(k): np.asarray(v) for k, v in dict(table).items()}
+    if name == "reference" and "x" in table and "lat" not in table:
+        lat, lon, alt = ecef2geodetic(np.stack([table.pop(c) for c in "xyz"], axis=1))
+        table.update(lat=lat, lon=lon, alt=alt)
+    out = {}
+    for column, key, unit, _, _ in FILE_COLUMNS[name]:
+        if key not in table:
+            continue
+        v = table[key]
+        if unit == "id":
+            out[column] = v.astype(str)
+            continue
+        v = np.asarray(v, dtype=np.float64)
+        if column.startswith("prior_"):
+            v = np.where(np.isinf(v), np.nan, v)
+        out[column] = np.degrees(v) if unit == "deg" else v
+    return pd.DataFrame(out)
+
+
+def write_fleet_tables(folder, plots, navigation, sensors, platforms=None, references=None,
+                       fmt: str = "csv") -> list[Path]:
+    """Write the tables (SI units, radians; as :func:`build_problem` takes them) as files in
+    ``folder``: ``plots``, ``navigation``, ``sensors``, ``platforms`` (if given) and ``reference``
+    (if given; ECEF positions are written as lat/lon/alt) with suffix ``.csv`` or ``.parquet``
+    (``fmt``). CSV floats are written as their shortest round-trip text. Returns the paths."""
+    from registration.recorded.formats import write_frame
+
+    if fmt not in ("csv", "parquet"):
+        raise ValueError(f"fmt: expected 'csv' or 'parquet', got {fmt!r}")
+    folder = Path(folder)
+    written = []
+    for name, table in (("plots", plots), ("navigation", navigation), ("sensors", sensors),
+                        ("platforms", platforms), ("reference", references)):
+        if table is None:
+            continue
+        path = folder / f"{name}.{fmt}"
+        write_frame(_file_frame(name, table), path, fmt)
+        written.append(path)
+    return written
