@@ -24,6 +24,7 @@ COMMANDS = {
     "landing": "landing",
     "schema": "schema",
     "register": "register",
+    "fleet": "fleet",
 }
 
 

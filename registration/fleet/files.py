@@ -97,7 +97,7 @@ class FleetTables:
             text = str(exc)
             for name, path in self.paths.items():
                 lib = _LIBRARY_NAME[name]
-                if re.match(rf"{lib}( row \d+)?:", text):
+                if re.match(rf"{lib}( row \d+)?[ :]", text):
                     text = f"{path}: " + re.sub(rf"^{lib} ", "", text) + " (values in SI units and radians)"
                     break
             raise ValueError(text) from exc

@@ -1,0 +1,127 @@
+"""``registration fleet``: batch registration of a fleet (any number of platforms and sensors).
+
+``fleet simulate`` runs the built-in fleet (three ships, a shore site, six sensors, five targets)
+and writes its input tables as a working example; ``fleet register`` reads such tables (CSV or
+Parquet, degrees and metres; see :mod:`registration.fleet.files`) and registers them. Both print
+the estimates per sensor and platform, the observability report and the chi-square check, and
+write ``estimates.csv``, ``summary.json`` and the plots. See docs/fleet.md.
+"""
+
+from __future__ import annotations
+
+import argparse
+import textwrap
+from pathlib import Path
+
+from registration.cli.errors import EXIT_CODES_EPILOG, add_allow_inconsistent, prepare_out
+from registration.cli.options import HelpFormatter, add_no_plots, add_out, add_seed
+
+HELP = "batch registration of a fleet: simulate the built-in fleet, or register fleet tables read from files"
+
+SIMULATE_HELP = ("simulate the built-in fleet (3 ships, a shore site, 6 sensors, 5 targets), register it in one "
+                 "batch, and write its input tables as a working example for `fleet register`")
+REGISTER_HELP = ("register a fleet from plots, navigation and sensors tables (CSV or Parquet, degrees and metres; "
+                 "see docs/fleet.md)")
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    sub = p.add_subparsers(dest="action", required=True, metavar="ACTION")
+    sim = sub.add_parser("simulate", help=SIMULATE_HELP, description=textwrap.fill(SIMULATE_HELP),
+                         epilog=EXIT_CODES_EPILOG, formatter_class=HelpFormatter)
+    add_seed(sim, 0)
+    add_out(sim, "fleet-simulate", "the input tables, estimates.csv, summary.json and the PNG plots")
+    add_no_plots(sim)
+    sim.add_argument("--format", choices=("csv", "parquet"), default="csv", help="file format of the tables written")
+    add_allow_inconsistent(sim)
+    reg = sub.add_parser("register", help=REGISTER_HELP, description=textwrap.fill(REGISTER_HELP),
+                         epilog=EXIT_CODES_EPILOG, formatter_class=HelpFormatter)
+    files = reg.add_argument_group("input tables (.csv or .parquet)")
+    files.add_argument("--plots", type=Path, required=True, metavar="FILE",
+                       help="time_s, sensor, target, range_m, bearing_deg, elevation_deg (empty cell: not measured)")
+    files.add_argument("--navigation", type=Path, required=True, metavar="FILE",
+                       help="time_s, platform, lat_deg, lon_deg, alt_m, heading_deg, pitch_deg, roll_deg "
+                            "(one row for a fixed site)")
+    files.add_argument("--sensors", type=Path, required=True, metavar="FILE",
+                       help="sensor, platform, sigma_range_m, sigma_bearing_deg, sigma_elevation_deg; optional "
+                            "prior_range_bias_m, prior_bearing_bias_deg, prior_elevation_bias_deg (0 = fixed), "
+                            "lever_x_m, lever_y_m, lever_z_m")
+    files.add_argument("--platforms", type=Path, default=None, metavar="FILE",
+                       help="platform, prior_heading_deg, prior_pitch_deg, prior_roll_deg (0 = fixed); "
+                            "default: no priors")
+    files.add_argument("--reference", type=Path, default=None, metavar="FILE",
+                       help="time_s, target, lat_deg, lon_deg, alt_m (or x_m, y_m, z_m), optional sigma_m: "
+                            "known target positions; default: none")
+    reg.add_argument("--window-s", type=float, default=20.0, metavar="S",
+                     help="length of the windows each target track is cut into, s (0: one per instant)")
+    add_out(reg, "fleet-register", "estimates.csv, summary.json and the PNG plots")
+    add_no_plots(reg)
+    add_allow_inconsistent(reg)
+
+
+def _inputs(tables, problem, window_s: float) -> dict:
+    return {"files": {k: str(v) for k, v in tables.paths.items()}, "rows": tables.rows(), "window_s": window_s,
+            "platforms": list(problem.platform_ids), "sensors": list(problem.sensor_ids),
+            "targets": list(problem.target_ids), "plots_used": problem.n_plots,
+            "plots_read": problem.n_input_plots}
+
+
+def _solve(tables, window_s: float):
+    from registration.fleet import BatchOptions, solve_batch
+
+    options = BatchOptions(window_s=window_s)
+    problem = tables.problem()
+    return problem, solve_batch(problem, options)
+
+
+def run_simulate(args: argparse.Namespace) -> int:
+    """Simulate, write the tables, read them back and register what was written (so `fleet register`
+    on these files gives the same numbers)."""
+    from registration.cli.fleet_output import gate, print_report, write_outputs
+    from registration.fleet import fleet_scenario, read_fleet_tables, write_fleet_tables
+    from registration.cli.errors import writing
+
+    if args.seed < 0:
+        raise ValueError(f"--seed: expected an integer >= 0, got {args.seed}")
+    out = prepare_out(args.out)
+    s = fleet_scenario(args.seed)
+    with writing(out):
+        tables_written = write_fleet_tables(out, s.plots, s.navigation, s.sensors, s.platforms, s.references,
+                                            args.format)
+    names = {p.stem: p for p in tables_written}
+    tables = read_fleet_tables(names["plots"], names["navigation"], names["sensors"], names.get("platforms"),
+                               names.get("reference"))
+    problem, result = _solve(tables, 20.0)
+    from registration.cli.fleet_output import estimate_rows
+
+    rows = estimate_rows(result, s.truth_state)
+    header = [f"Simulated fleet, seed {args.seed}: " + problem.lines()[0],
+              f"converged: {result.converged} after {result.iterations} iterations"]
+    print_report(result, rows, header)
+    inputs = {**_inputs(tables, problem, 20.0), "scenario": {k: (float(v) if not isinstance(v, (bool, str)) else v)
+                                                             for k, v in s.description.items()}}
+    written = write_outputs(out, problem, result, rows, inputs, plots=not args.no_plots, truth=s.truth_state)
+    print("\nwrote " + ", ".join(str(p) for p in [*tables_written, *written]))
+    return gate("registration fleet simulate", result, args.allow_inconsistent)
+
+
+def run_register(args: argparse.Namespace) -> int:
+    """Read the tables, register, print and write the outputs; exit 3 on a gross misfit."""
+    from registration.cli.fleet_output import estimate_rows, gate, print_report, write_outputs
+    from registration.fleet import read_fleet_tables
+
+    if not (args.window_s >= 0 and args.window_s < float("inf")):
+        raise ValueError(f"--window-s: expected a length >= 0 s, got {args.window_s}")
+    out = prepare_out(args.out)
+    tables = read_fleet_tables(args.plots, args.navigation, args.sensors, args.platforms, args.reference)
+    problem, result = _solve(tables, args.window_s)
+    rows = estimate_rows(result)
+    header = ["Fleet tables " + ", ".join(str(p) for p in tables.paths.values()) + ":", problem.lines()[0],
+              f"converged: {result.converged} after {result.iterations} iterations"]
+    print_report(result, rows, header)
+    written = write_outputs(out, problem, result, rows, _inputs(tables, problem, args.window_s), plots=not args.no_plots)
+    print("\nwrote " + ", ".join(str(p) for p in written))
+    return gate("registration fleet register", result, args.allow_inconsistent)
+
+
+def run(args: argparse.Namespace) -> int:
+    return run_simulate(args) if args.action == "simulate" else run_register(args)

@@ -1,0 +1,119 @@
+"""`registration fleet simulate` and `registration fleet register`: outputs, reproduction, errors, gate."""
+
+import json
+import shutil
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from registration.cli import main
+
+TABLES = ("plots", "navigation", "sensors", "platforms", "reference")
+ESTIMATE_COLUMNS = ["object", "state", "unit", "estimate", "sigma", "status"]
+
+
+@pytest.fixture(scope="module")
+def simulated(tmp_path_factory):
+    out = tmp_path_factory.mktemp("fleet") / "sim"
+    assert main(["fleet", "simulate", "--out", str(out)]) == 0
+    return out
+
+
+def _register_args(folder, out, fmt="csv", extra=()):
+    args = ["fleet", "register", "--out", str(out), "--no-plots", *extra]
+    for name in TABLES:
+        args += [f"--{name}", str(folder / f"{name}.{fmt}")]
+    return args
+
+
+def test_simulate_writes_tables_and_outputs(simulated):
+    for name in (*TABLES, "estimates", "summary"):
+        assert any(simulated.glob(f"{name}.*")), name
+    for png in ("estimates.png", "map.png", "residuals.png"):
+        assert (simulated / png).stat().st_size > 10_000
+    est = pd.read_csv(simulated / "estimates.csv")
+    assert list(est.columns) == [*ESTIMATE_COLUMNS, "truth"]
+    assert set(est["state"]) == {"range_bias", "bearing_bias", "elevation_bias", "heading_error", "pitch_error", "roll_error"}
+    assert set(est["unit"]) == {"m", "deg"}
+    free = est[est["status"] != "fixed"]
+    assert (np.abs(free["estimate"] - free["truth"]) < 4 * free["sigma"]).all()
+    summary = json.loads((simulated / "summary.json").read_text())
+    assert {"estimates", "observability", "chi_square", "consistency", "excluded", "inputs"} <= set(summary)
+    assert summary["chi_square"]["consistent"] and summary["inputs"]["plots_used"] == 4725
+
+
+def test_a_zero_prior_is_listed_fixed_with_sigma_0(simulated):
+    est = pd.read_csv(simulated / "estimates.csv")
+    site = est[est["object"] == "S"]
+    assert len(site) == 3 and (site["status"] == "fixed").all() and (site["sigma"] == 0).all() and (site["estimate"] == 0).all()
+
+
+def test_register_reproduces_simulate_bit_for_bit(simulated, tmp_path, capsys):
+    assert main(_register_args(simulated, tmp_path / "reg")) == 0
+    assert "every state is observable" in capsys.readouterr().out
+    got = pd.read_csv(tmp_path / "reg" / "estimates.csv")
+    want = pd.read_csv(simulated / "estimates.csv").drop(columns="truth")
+    pd.testing.assert_frame_equal(got, want, check_exact=True)
+    assert not list((tmp_path / "reg").glob("*.png"))
+
+
+def test_parquet_tables_register_to_the_same_estimates(simulated, tmp_path):
+    assert main(["fleet", "simulate", "--format", "parquet", "--no-plots", "--out", str(tmp_path / "sim")]) == 0
+    assert (tmp_path / "sim" / "plots.parquet").exists() and not (tmp_path / "sim" / "plots.csv").exists()
+    assert main(_register_args(tmp_path / "sim", tmp_path / "reg", "parquet")) == 0
+    got = pd.read_csv(tmp_path / "reg" / "estimates.csv")
+    pd.testing.assert_frame_equal(got, pd.read_csv(simulated / "estimates.csv").drop(columns="truth"), check_exact=True)
+
+
+def test_a_zero_bias_prior_in_the_sensors_file_fixes_that_bias(simulated, tmp_path):
+    folder = tmp_path / "in"
+    shutil.copytree(simulated, folder)
+    sensors = pd.read_csv(folder / "sensors.csv")
+    sensors["prior_range_bias_m"] = np.where(sensors["sensor"] == "S-2D", 0.0, np.nan)
+    sensors.to_csv(folder / "sensors.csv", index=False)
+    assert main(_register_args(folder, tmp_path / "reg", extra=["--allow-inconsistent"])) == 0
+    est = pd.read_csv(tmp_path / "reg" / "estimates.csv").set_index(["object", "state"])
+    row = est.loc[("S-2D", "range_bias")]
+    assert row["status"] == "fixed" and row["sigma"] == 0 and row["estimate"] == 0
+
+
+def _broken(simulated, tmp_path, name, edit):
+    folder = tmp_path / "in"
+    shutil.copytree(simulated, folder)
+    frame = pd.read_csv(folder / f"{name}.csv", dtype={"sensor": str, "platform": str, "target": str})
+    edit(frame)
+    frame.to_csv(folder / f"{name}.csv", index=False)
+    return folder
+
+
+@pytest.mark.parametrize("name, edit, words", [
+    ("plots", lambda f: f.__setitem__("bearing_deg", np.radians(f["bearing_deg"])), ["plots.csv", "row", "'bearing_deg'", "radians?"]),
+    ("sensors", lambda f: f.pop("platform"), ["sensors.csv", "missing column", "platform"]),
+    ("plots", lambda f: f.__setitem__("sensor", np.where(f.index == 11, "X1", f["sensor"])),
+     ["plots.csv", "row 11", "'sensor'", "unknown sensor 'X1'"]),
+    ("navigation", lambda f: f.__setitem__("time_s", f["time_s"] * 0.5),
+     ["plots.csv", "row", "outside", "navigation"]),
+])
+def test_bad_tables_exit_2_naming_file_row_column(simulated, tmp_path, capsys, name, edit, words):
+    folder = _broken(simulated, tmp_path, name, edit)
+    assert main(_register_args(folder, tmp_path / "reg")) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("registration fleet: error:")
+    for word in words:
+        assert word in err, (word, err)
+
+
+def test_gross_misfit_exits_3_after_writing_unless_allowed(simulated, tmp_path, capsys):
+    folder = _broken(simulated, tmp_path, "sensors", lambda f: f.__setitem__("sigma_bearing_deg", f["sigma_bearing_deg"] / 10))
+    assert main(_register_args(folder, tmp_path / "reg")) == 3
+    err = capsys.readouterr().err
+    assert "grossly inconsistent" in err and "Likely causes" in err and "--allow-inconsistent" in err
+    assert (tmp_path / "reg" / "estimates.csv").exists() and (tmp_path / "reg" / "summary.json").exists()
+    assert main(_register_args(folder, tmp_path / "reg2", extra=["--allow-inconsistent"])) == 0
+
+
+def test_fleet_needs_an_action_and_the_register_files(capsys):
+    assert main(["fleet"]) == 2
+    assert main(["fleet", "register", "--plots", "p.csv"]) == 2
+    assert "--navigation" in capsys.readouterr().err
