@@ -13,7 +13,7 @@ import argparse
 import textwrap
 from pathlib import Path
 
-from registration.cli.errors import EXIT_CODES_EPILOG, add_allow_inconsistent, prepare_out
+from registration.cli.errors import EXIT_CODES_EPILOG, add_allow_inconsistent, prepare_out, writing
 from registration.cli.options import HelpFormatter, add_no_plots, add_out, add_seed
 
 HELP = "batch registration of a fleet: simulate the built-in fleet, or register fleet tables read from files"
@@ -76,9 +76,8 @@ def _solve(tables, window_s: float):
 def run_simulate(args: argparse.Namespace) -> int:
     """Simulate, write the tables, read them back and register what was written (so `fleet register`
     on these files gives the same numbers)."""
-    from registration.cli.fleet_output import gate, print_report, write_outputs
+    from registration.cli.fleet_output import estimate_rows, gate, print_report, write_outputs
     from registration.fleet import fleet_scenario, read_fleet_tables, write_fleet_tables
-    from registration.cli.errors import writing
 
     if args.seed < 0:
         raise ValueError(f"--seed: expected an integer >= 0, got {args.seed}")
@@ -91,8 +90,6 @@ def run_simulate(args: argparse.Namespace) -> int:
     tables = read_fleet_tables(names["plots"], names["navigation"], names["sensors"], names.get("platforms"),
                                names.get("reference"))
     problem, result = _solve(tables, 20.0)
-    from registration.cli.fleet_output import estimate_rows
-
     rows = estimate_rows(result, s.truth_state)
     header = [f"Simulated fleet, seed {args.seed}: " + problem.lines()[0],
               f"converged: {result.converged} after {result.iterations} iterations"]
