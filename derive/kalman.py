@@ -23,6 +23,9 @@ dq_A, de_A, dC_B, ..., de_B] (rad and m), covariance P (12x12), random-walk proc
 * ``R = M R0 M^T``, ``S = H P- H^T + R``, gain by a linear solve (no explicit inverse),
   ``K = P- H^T S^-1``; Joseph-form covariance update, symmetric by construction (upper triangle
   mirrored), which keeps P positive definite; normalised innovation squared ``nis = nu^T S^-1 nu``;
+  the ``_carlson`` functions compute the same P+ as ``C+ C+^T`` from the upper Cholesky factor
+  C of P- by Carlson's triangular square-root update, one whitened measurement row at a time
+  (:func:`carlson_update`): positive definite by construction, x, nu, S, nis unchanged;
 * ``info`` accumulates the Fisher information ``H^T R^-1 H`` for the observability report.
 
 The first three inputs are carried from the first three outputs of the previous step
@@ -36,6 +39,8 @@ from .emit import to_casadi_function
 from .spec import CasadiPort, CasadiSpec
 
 LINEARIZATIONS = ("paper", "relinearized", "fitted")
+#: Covariance updates: ``joseph`` (the functions without a suffix) and ``carlson`` (``_carlson``).
+COVARIANCE_UPDATES = ("joseph", "carlson")
 N_STATE = 12
 
 INPUTS = (
@@ -88,6 +93,73 @@ def _mirror_upper(A: ca.SX) -> ca.SX:
     return out
 
 
+def _chol_upper(A: ca.SX) -> ca.SX:
+    """Upper-triangular U with positive diagonal and ``A = U U^T`` (A symmetric positive definite;
+    only its upper triangle is read). The diagonal is a square root of a Schur complement of A:
+    NaN, never a silently wrong factor, if A is not numerically positive definite."""
+    n = A.shape[0]
+    U = ca.SX.zeros(n, n)
+    for j in reversed(range(n)):
+        U[j, j] = ca.sqrt(A[j, j] - sum((U[j, k] ** 2 for k in range(j + 1, n)), ca.SX(0)))
+        inv = 1 / U[j, j]  # one division per column: divisions, not products, bound the step's time
+        for i in range(j):
+            U[i, j] = (A[i, j] - sum((U[i, k] * U[j, k] for k in range(j + 1, n)), ca.SX(0))) * inv
+    return U
+
+
+def _forward_substitution(L: ca.SX, B: ca.SX) -> ca.SX:
+    """``L^-1 B`` for lower-triangular L (one division per row)."""
+    rows = []
+    for i in range(L.shape[0]):
+        acc = B[i, :] - sum((L[i, k] * rows[k] for k in range(i)), ca.SX.zeros(1, B.shape[1]))
+        rows.append(acc * (1 / L[i, i]))
+    return ca.vertcat(*rows)
+
+
+def _carlson_scalar(C: ca.SX, h: ca.SX) -> ca.SX:
+    """Carlson's triangular square-root update (Carlson 1973) for one scalar measurement of unit
+    variance: upper-triangular C (P = C C^T) to C+ with ``C+ C+^T = P - P h h^T P / (h^T P h + 1)``.
+    Each diagonal entry is multiplied by ``sqrt(alpha_{j-1} / alpha_j)`` in (0, 1], alpha_j >= 1:
+    C+ keeps a positive diagonal, so P+ is positive definite by construction."""
+    n = C.shape[0]
+    C = ca.SX(C)
+    alpha = ca.SX(1.0)
+    w = [ca.SX(0)] * n
+    for j in range(n):
+        sigma = sum((C[i, j] * h[i] for i in range(j + 1)), ca.SX(0))
+        beta = alpha
+        alpha = beta + sigma**2
+        inv_gamma = 1 / ca.sqrt(alpha * beta)
+        eta, zeta = beta * inv_gamma, sigma * inv_gamma
+        for i in range(j + 1):
+            tau = C[i, j]
+            C[i, j] = eta * tau - zeta * w[i]
+            w[i] = w[i] + tau * sigma
+    return C
+
+
+def carlson_update(P_pred: ca.SX, H: ca.SX, R: ca.SX) -> ca.SX:
+    """``P+ = P- - P- H^T S^-1 H P-`` (S = H P- H^T + R) as ``C+ C+^T``: the upper Cholesky factor
+    C of P-, the rows of H whitened by the lower Cholesky factor of R (``L^-1 H``, unit noise),
+    then one Carlson update per whitened row. Symmetric by construction (upper triangle of the
+    product, mirrored) and positive definite whenever C+ has a positive diagonal (always, for
+    a finite P- whose factor exists)."""
+    C = _chol_upper(P_pred)
+    m = R.shape[0]
+    J = ca.SX(ca.DM.eye(m)[list(reversed(range(m))), :])  # reversal: lower factor from the upper one
+    L = J @ _chol_upper(J @ R @ J) @ J
+    Hw = _forward_substitution(L, H)  # the whitened rows
+    for k in range(m):
+        C = _carlson_scalar(C, Hw[k, :].T)
+    n = C.shape[0]
+    P_new = ca.SX.zeros(n, n)
+    for i in range(n):
+        for j in range(i, n):
+            P_new[i, j] = sum((C[i, k] * C[j, k] for k in range(j, n)), ca.SX(0))
+            P_new[j, i] = P_new[i, j]
+    return P_new
+
+
 def _fitted_linearisation(pair: ca.Function, c: ca.SX, P_pred: ca.SX, sigma0: ca.SX):
     """Innovation, H and R at the MAP plots t = c - R0 M^T S^-1 Z(c) (module docstring)."""
     Z, H, M, R, _, _ = _pair_at(pair, c, sigma0)
@@ -98,7 +170,9 @@ def _fitted_linearisation(pair: ca.Function, c: ca.SX, P_pred: ca.SX, sigma0: ca
     return Z + M @ v, H, R
 
 
-def _build(variant: str, linearization: str):
+def _build(variant: str, linearization: str, update: str = "joseph"):
+    suffix = "" if update == "joseph" else f"_{update}"
+
     def build() -> ca.Function:
         pair = _pair_function(variant)
         x = ca.SX.sym("x", N_STATE)
@@ -120,12 +194,15 @@ def _build(variant: str, linearization: str):
         S = 0.5 * (S + S.T)
         K = ca.solve(S, H @ P_pred).T
         x_new = x + K @ nu
-        IKH = ca.SX.eye(N_STATE) - K @ H
-        P_new = _mirror_upper(IKH @ P_pred @ IKH.T + K @ R @ K.T)
+        if update == "joseph":
+            IKH = ca.SX.eye(N_STATE) - K @ H
+            P_new = _mirror_upper(IKH @ P_pred @ IKH.T + K @ R @ K.T)
+        else:
+            P_new = carlson_update(P_pred, H, R)
         info_new = _add_information(info, H, R)
         nis = nu.T @ ca.solve(S, nu)
         return ca.Function(
-            f"kalman_step_{linearization}_{variant}",
+            f"kalman_step_{linearization}_{variant}{suffix}",
             [x, P, info, Q, row, sigma0],
             [x_new, P_new, info_new, nu, S, nis],
             [p.name for p in INPUTS],
@@ -197,19 +274,22 @@ def specs() -> list[CasadiSpec]:
                 domain={"info": domain["info"], "x": domain["x"], "row": domain["row"], "sigma0": domain["sigma0"]},
             )
         )
-    for variant in ("standard", "paper"):
-        for lin in LINEARIZATIONS:
-            out.append(
-                CasadiSpec(
-                    name=f"kalman_step_{lin}_{variant}",
-                    doc=(
-                        f"One registration Kalman step (eqs. 18-23), linearisation '{lin}', T variant '{variant}'. "
-                        "Inputs x, P, info carried from outputs x_new, P_new, info_new of the previous step."
-                    ),
-                    inputs=INPUTS,
-                    outputs=OUTPUTS,
-                    builder=_build(variant, lin),
-                    domain=_domain(),
+    for update in COVARIANCE_UPDATES:
+        suffix = "" if update == "joseph" else f"_{update}"
+        for variant in ("standard", "paper"):
+            for lin in LINEARIZATIONS:
+                out.append(
+                    CasadiSpec(
+                        name=f"kalman_step_{lin}_{variant}{suffix}",
+                        doc=(
+                            f"One registration Kalman step (eqs. 18-23), linearisation '{lin}', T variant '{variant}'"
+                            + ("" if update == "joseph" else f", covariance update '{update}'") + ". "
+                            "Inputs x, P, info carried from outputs x_new, P_new, info_new of the previous step."
+                        ),
+                        inputs=INPUTS,
+                        outputs=OUTPUTS,
+                        builder=_build(variant, lin, update),
+                        domain=_domain(),
+                    )
                 )
-            )
     return out

@@ -7,7 +7,11 @@ from .constants import CONSTANTS
 MODULES = [geodesy, attitude, pseudo_measurement, polar, kalman, landing, fleet]
 
 #: Variant names functions are emitted for, by kind, in derive's order (recorded in the manifest).
-VARIANTS = {"linearization": list(kalman.LINEARIZATIONS), "t_variant": list(geodesy.T_VARIANTS)}
+VARIANTS = {
+    "linearization": list(kalman.LINEARIZATIONS),
+    "t_variant": list(geodesy.T_VARIANTS),
+    "covariance_update": list(kalman.COVARIANCE_UPDATES),
+}
 
 
 def all_specs() -> list:

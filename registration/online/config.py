@@ -13,12 +13,13 @@ import numpy as np
 from registration import _codegen
 from registration.online.contract import N_STATE
 
-__all__ = ["RegistrationConfig", "LINEARIZATIONS", "DEFAULT_LINEARIZATION", "Q_MODES", "T_VARIANTS"]
+__all__ = ["RegistrationConfig", "COVARIANCE_UPDATES", "LINEARIZATIONS", "DEFAULT_LINEARIZATION", "Q_MODES", "T_VARIANTS"]
 
 LINEARIZATIONS = _codegen.variants("linearization")
 DEFAULT_LINEARIZATION = "fitted"
 Q_MODES = ("fixed", "adaptive")
 T_VARIANTS = _codegen.variants("t_variant")
+COVARIANCE_UPDATES = _codegen.variants("covariance_update")
 
 
 def _choice(name: str, value: str, choices: tuple) -> None:
@@ -48,6 +49,9 @@ class RegistrationConfig:
         ``fitted`` (the default: at the most probable noise-free plots given the row and the
         current estimate with its covariance; see docs/online.md).
     t_variant: ``standard`` (orthonormal ENU->ECEF) or ``paper`` (eq. (4) as printed).
+    covariance_update: ``joseph`` (the default: Joseph form, ``(I-KH) P (I-KH)^T + K R K^T``) or
+        ``carlson`` (the same P from its triangular square root, positive definite by construction,
+        about half the covariance arithmetic; equal to Joseph to rounding; see docs/online.md).
     """
 
     sigma0: tuple = (50.0, np.radians(0.5), np.radians(0.5), 50.0, np.radians(0.5), np.radians(0.5))
@@ -58,6 +62,7 @@ class RegistrationConfig:
     q_window: int = 20
     linearization: str = DEFAULT_LINEARIZATION
     t_variant: str = "standard"
+    covariance_update: str = "joseph"
 
     def __post_init__(self):
         self.sigma0 = _sigmas("sigma0", self.sigma0, 6, zero_ok=False, what="[m, rad, rad, m, rad, rad]")
@@ -72,13 +77,16 @@ class RegistrationConfig:
         _choice("q_mode", self.q_mode, Q_MODES)
         _choice("linearization", self.linearization, LINEARIZATIONS)
         _choice("t_variant", self.t_variant, T_VARIANTS)
+        _choice("covariance_update", self.covariance_update, COVARIANCE_UPDATES)
         if int(self.q_window) < 2:
             raise ValueError("q_window: need at least 2 estimates")
 
     @property
     def step_name(self) -> str:
-        """Name of the generated Kalman step for this linearisation and T variant."""
-        return f"kalman_step_{self.linearization}_{self.t_variant}"
+        """Name of the generated Kalman step for this linearisation, T variant and covariance update
+        (the Joseph steps carry no suffix)."""
+        suffix = "" if self.covariance_update == "joseph" else f"_{self.covariance_update}"
+        return f"kalman_step_{self.linearization}_{self.t_variant}{suffix}"
 
     def to_json(self) -> dict:
         return asdict(self)

@@ -1,0 +1,120 @@
+#!/usr/bin/env python3
+"""Speed of the compiled Kalman step per covariance update: Joseph against Carlson, one run.
+
+Run from a checkout (the package installed, editable or not)::
+
+    python3 benchmarks/bench_step.py                    # 10^5 steps, every linearisation
+    python3 benchmarks/bench_step.py --steps 1000000    # also the 10^6-step positive-definiteness check
+
+Data: the paper scenario's 300 rows (``paper_scenario(seed)``) tiled to ``--steps`` rows, T
+``standard``, the default fixed Q. Each step runs in the compiled scan (the loader's portable
+flags, ``registration._codegen.CFLAGS``) with x, P, info carried and only the last outputs kept,
+so the figure is the step itself plus the scan's copies, in us per step: best of ``--repeat``
+interleaved rounds after one warm-up. Printed per linearisation: us/step for each update, the
+ratio Joseph / Carlson, whether the 1 us aim is met, and the largest difference of the final P
+(relative to its diagonal scale) between the two.
+
+With ``--ill`` the prior is ill conditioned (prior sigmas spanning 1e-9 rad to 1e4 m, no process
+noise, so the condition number of P grows as the filter converges) and the script checks after
+the run that every carried P of the Carlson step has a Cholesky factor and no NaN.
+"""
+
+from __future__ import annotations
+
+import argparse
+import platform
+import time
+
+import numpy as np
+
+from registration import _codegen
+from registration.online import RegistrationConfig
+from registration.online.contract import DATA_COLUMNS, N_STATE
+from registration.online.filter import STEP_CARRY
+from registration.online.scenario import paper_scenario
+
+AIM_US = 1.0
+UPDATES = ("joseph", "carlson")
+
+
+def tiled_rows(n: int, seed: int) -> np.ndarray:
+    """(n, 18) rows: the paper scenario's rows repeated."""
+    base = paper_scenario(seed).data
+    rows = np.stack([np.asarray(base[c]) for c in DATA_COLUMNS[1:]], axis=1)
+    return np.ascontiguousarray(np.tile(rows, (-(-n // len(rows)), 1))[:n])
+
+
+def inputs_of(config: RegistrationConfig, rows: np.ndarray) -> dict:
+    return {"x": np.zeros(N_STATE), "P": np.diag(np.square(config.prior_sigma)), "info": np.zeros((N_STATE, N_STATE)),
+            "Q": np.diag(np.square(config.q_sigma)), "row": rows, "sigma0": np.array(config.sigma0)}
+
+
+def run(config: RegistrationConfig, rows: np.ndarray, keep_all: bool = False) -> dict:
+    keep = () if keep_all else ("x_new", "P_new", "info_new", "nu", "S", "nis")
+    return _codegen.get(config.step_name).scan(len(rows), STEP_CARRY, inputs_of(config, rows), keep_last=keep)
+
+
+def time_steps(configs: dict, rows: np.ndarray, rounds: int) -> dict:
+    """Best us per step over ``rounds`` interleaved rounds after one warm-up, per label."""
+    best = {label: float("inf") for label in configs}
+    for cfg in configs.values():
+        run(cfg, rows)
+    for _ in range(rounds):
+        for label, cfg in configs.items():
+            t0 = time.perf_counter()
+            run(cfg, rows)
+            best[label] = min(best[label], (time.perf_counter() - t0) / len(rows) * 1e6)
+    return best
+
+
+def p_difference(a: np.ndarray, b: np.ndarray) -> float:
+    """max |a - b| / sqrt(a_ii a_jj): the difference of two covariances on the scale of a."""
+    d = np.sqrt(np.diag(a))
+    return float(np.max(np.abs(a - b) / np.outer(d, d)))
+
+
+def positive_definite_all(P: np.ndarray) -> tuple[bool, float]:
+    """(every P in the (K, 12, 12) stack is finite and has a Cholesky factor, largest condition number)."""
+    if not np.isfinite(P).all():
+        return False, float("nan")
+    try:
+        np.linalg.cholesky(P)
+    except np.linalg.LinAlgError:
+        return False, float("nan")
+    ev = np.linalg.eigvalsh(P[-1])
+    return True, float(ev[-1] / ev[0])
+
+
+def ill_config(update: str) -> RegistrationConfig:
+    prior = (1e-9, 1e-9, 1e-9, 1e4, 1e-9, 1e-9) * 2
+    return RegistrationConfig(linearization="fitted", prior_sigma=prior, q_sigma=(0.0,) * N_STATE, covariance_update=update)
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--steps", type=int, default=100_000)
+    ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--ill", action="store_true", help="also the ill-conditioned positive-definiteness check")
+    args = ap.parse_args(argv)
+    rows = tiled_rows(args.steps, args.seed)
+    print(f"{platform.machine()} {platform.processor() or ''} flags {' '.join(_codegen.CFLAGS)}; {args.steps} steps")
+    print(f"{'linearisation':14s} {'joseph us':>10s} {'carlson us':>11s} {'ratio':>6s} {'aim<=1us':>9s} {'max dP (final)':>15s}")
+    for lin in _codegen.variants("linearization"):
+        cfgs = {u: RegistrationConfig(linearization=lin, covariance_update=u) for u in UPDATES}
+        us = time_steps(cfgs, rows, args.repeat)
+        dP = p_difference(run(cfgs["joseph"], rows)["P_new"], run(cfgs["carlson"], rows)["P_new"])
+        print(f"{lin:14s} {us['joseph']:10.3f} {us['carlson']:11.3f} {us['joseph'] / us['carlson']:6.2f} "
+              f"{'met' if us['carlson'] <= AIM_US else 'NOT met':>9s} {dP:15.2e}")
+    if args.ill:
+        for update in UPDATES:
+            t0 = time.perf_counter()
+            out = run(ill_config(update), rows, keep_all=True)
+            ok, cond = positive_definite_all(out["P_new"])
+            print(f"ill-conditioned {update}: {args.steps} steps in {time.perf_counter() - t0:.2f} s, "
+                  f"every P positive definite and finite: {ok}; final cond(P) {cond:.2e}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
