@@ -81,13 +81,30 @@ def positive_definite_all(P: np.ndarray) -> tuple[bool, float]:
         np.linalg.cholesky(P)
     except np.linalg.LinAlgError:
         return False, float("nan")
-    ev = np.linalg.eigvalsh(P[-1])
-    return True, float(ev[-1] / ev[0])
+    return True, float(np.linalg.cond(P[-1]))
 
 
 def ill_config(update: str) -> RegistrationConfig:
     prior = (1e-9, 1e-9, 1e-9, 1e4, 1e-9, 1e-9) * 2
     return RegistrationConfig(linearization="fitted", prior_sigma=prior, q_sigma=(0.0,) * N_STATE, covariance_update=update)
+
+
+def ill_run(update: str, rows: np.ndarray, chunk: int = 100_000) -> tuple[bool, float, float]:
+    """The ill-conditioned run in chunks of ``chunk`` steps, x, P, info carried across chunks;
+    returns (every P finite with a Cholesky factor, final cond(P), seconds)."""
+    cfg = ill_config(update)
+    fn = _codegen.get(cfg.step_name)
+    inputs = inputs_of(cfg, rows[:0])
+    ok, cond, t0 = True, float("nan"), time.perf_counter()
+    for start in range(0, len(rows), chunk):
+        inputs["row"] = rows[start:start + chunk]
+        out = fn.scan(len(inputs["row"]), STEP_CARRY, inputs, keep_last=("info_new",))
+        good, cond = positive_definite_all(out["P_new"])
+        ok &= good
+        if not good:
+            break
+        inputs.update(x=out["x_new"][-1], P=out["P_new"][-1], info=out["info_new"])
+    return ok, cond, time.perf_counter() - t0
 
 
 def main(argv=None) -> int:
@@ -108,11 +125,9 @@ def main(argv=None) -> int:
               f"{'met' if us['carlson'] <= AIM_US else 'NOT met':>9s} {dP:15.2e}")
     if args.ill:
         for update in UPDATES:
-            t0 = time.perf_counter()
-            out = run(ill_config(update), rows, keep_all=True)
-            ok, cond = positive_definite_all(out["P_new"])
-            print(f"ill-conditioned {update}: {args.steps} steps in {time.perf_counter() - t0:.2f} s, "
-                  f"every P positive definite and finite: {ok}; final cond(P) {cond:.2e}")
+            ok, cond, sec = ill_run(update, rows)
+            print(f"ill-conditioned {update}: {args.steps} steps in {sec:.2f} s, "
+                  f"every P finite with a Cholesky factor: {ok}; final cond(P) {cond:.2e}")
     return 0
 
 

@@ -54,7 +54,7 @@ def test_config_names_the_step():
 @pytest.mark.parametrize("lin", ["paper", "relinearized", "fitted"])
 def test_each_step_matches_joseph_to_the_conditioning_tolerance(lin):
     """From the same inputs at every step of a Joseph run: the same x, nu, S, nis, and P within
-    the tolerance derived from the conditioning of P- (it reaches about 1e-4 here)."""
+    the tolerance derived from the conditioning of P- (lambda_min(Corr(P-)) falls to about 1e-3 here)."""
     cfg = RegistrationConfig(linearization=lin)
     rows = _rows(600)
     joseph = _codegen.get(cfg.step_name)
