@@ -93,26 +93,46 @@ def _mirror_upper(A: ca.SX) -> ca.SX:
     return out
 
 
-def _chol_upper(A: ca.SX) -> ca.SX:
+def _tree_sum(terms) -> ca.SX:
+    """Sum by pairs: a dependency chain of log2(n) additions instead of n (the C compiler keeps the
+    order CasADi writes, and the step's time is bound by its longest chain, not its operations)."""
+    terms = list(terms)
+    if not terms:
+        return ca.SX(0)
+    while len(terms) > 1:
+        terms = [terms[i] + terms[i + 1] if i + 1 < len(terms) else terms[i] for i in range(0, len(terms), 2)]
+    return terms[0]
+
+
+def _chol_upper(A: ca.SX) -> tuple[ca.SX, list]:
     """Upper-triangular U with positive diagonal and ``A = U U^T`` (A symmetric positive definite;
-    only its upper triangle is read). The diagonal is a square root of a Schur complement of A:
-    NaN, never a silently wrong factor, if A is not numerically positive definite."""
+    only its upper triangle is read), and the reciprocals of its diagonal. The diagonal is a square
+    root of a Schur complement s of A: NaN, never a silently wrong factor, if A is not numerically
+    positive definite. ``1/U_jj = sqrt(1/s)`` and ``U_jj = s sqrt(1/s)``: one division per column
+    (CasADi folds a product with ``1/d`` back into a division, and divisions, not products, bound
+    the step's time)."""
     n = A.shape[0]
-    U = ca.SX.zeros(n, n)
+    U, inv = ca.SX.zeros(n, n), [None] * n
     for j in reversed(range(n)):
-        U[j, j] = ca.sqrt(A[j, j] - sum((U[j, k] ** 2 for k in range(j + 1, n)), ca.SX(0)))
-        inv = 1 / U[j, j]  # one division per column: divisions, not products, bound the step's time
+        s = A[j, j] - _tree_sum(U[j, k] ** 2 for k in range(j + 1, n))
+        inv[j] = ca.sqrt(1 / s)
+        U[j, j] = s * inv[j]
         for i in range(j):
-            U[i, j] = (A[i, j] - sum((U[i, k] * U[j, k] for k in range(j + 1, n)), ca.SX(0))) * inv
-    return U
+            U[i, j] = (A[i, j] - _tree_sum(U[i, k] * U[j, k] for k in range(j + 1, n))) * inv[j]
+    return U, inv
 
 
-def _forward_substitution(L: ca.SX, B: ca.SX) -> ca.SX:
-    """``L^-1 B`` for lower-triangular L (one division per row)."""
+def _whitened(R: ca.SX, H: ca.SX) -> ca.SX:
+    """``L^-1 H`` with L the lower Cholesky factor of R (from the upper factor of R reversed),
+    by forward substitution: rows of unit noise."""
+    m = R.shape[0]
+    J = ca.SX(ca.DM.eye(m)[list(reversed(range(m))), :])
+    U, inv = _chol_upper(J @ R @ J)
+    L, inv = J @ U @ J, inv[::-1]
     rows = []
-    for i in range(L.shape[0]):
-        acc = B[i, :] - sum((L[i, k] * rows[k] for k in range(i)), ca.SX.zeros(1, B.shape[1]))
-        rows.append(acc * (1 / L[i, i]))
+    for i in range(m):
+        acc = H[i, :] - sum((L[i, k] * rows[k] for k in range(i)), ca.SX.zeros(1, H.shape[1]))
+        rows.append(acc * inv[i])
     return ca.vertcat(*rows)
 
 
@@ -126,10 +146,10 @@ def _carlson_scalar(C: ca.SX, h: ca.SX) -> ca.SX:
     alpha = ca.SX(1.0)
     w = [ca.SX(0)] * n
     for j in range(n):
-        sigma = sum((C[i, j] * h[i] for i in range(j + 1)), ca.SX(0))
+        sigma = _tree_sum(C[i, j] * h[i] for i in range(j + 1))
         beta = alpha
         alpha = beta + sigma**2
-        inv_gamma = 1 / ca.sqrt(alpha * beta)
+        inv_gamma = ca.sqrt(1 / (alpha * beta))  # not 1/sqrt: kept a product (see _chol_upper)
         eta, zeta = beta * inv_gamma, sigma * inv_gamma
         for i in range(j + 1):
             tau = C[i, j]
@@ -144,18 +164,15 @@ def carlson_update(P_pred: ca.SX, H: ca.SX, R: ca.SX) -> ca.SX:
     then one Carlson update per whitened row. Symmetric by construction (upper triangle of the
     product, mirrored) and positive definite whenever C+ has a positive diagonal (always, for
     a finite P- whose factor exists)."""
-    C = _chol_upper(P_pred)
-    m = R.shape[0]
-    J = ca.SX(ca.DM.eye(m)[list(reversed(range(m))), :])  # reversal: lower factor from the upper one
-    L = J @ _chol_upper(J @ R @ J) @ J
-    Hw = _forward_substitution(L, H)  # the whitened rows
-    for k in range(m):
+    C, _ = _chol_upper(P_pred)
+    Hw = _whitened(R, H)
+    for k in range(R.shape[0]):
         C = _carlson_scalar(C, Hw[k, :].T)
     n = C.shape[0]
     P_new = ca.SX.zeros(n, n)
     for i in range(n):
         for j in range(i, n):
-            P_new[i, j] = sum((C[i, k] * C[j, k] for k in range(j, n)), ca.SX(0))
+            P_new[i, j] = _tree_sum(C[i, k] * C[j, k] for k in range(j, n))
             P_new[j, i] = P_new[i, j]
     return P_new
 
