@@ -97,3 +97,20 @@ def test_stays_positive_definite_over_ill_conditioned_steps():
     assert np.isfinite(P).all() and np.isfinite(out["x_new"]).all()
     assert (np.einsum("kii->ki", P) > 0).all()
     np.linalg.cholesky(P)  # raises LinAlgError if any P is not positive definite
+
+
+def test_a_singular_covariance_is_refused_not_propagated():
+    """A P- without a Cholesky factor (here a loaded P with a zero variance, no Q) gives NaN in
+    the Carlson step, so the registrar refuses the row and keeps its state; Joseph steps on."""
+    row = _rows(1)[0]
+    for update, refused in (("joseph", False), ("carlson", True)):
+        reg = OnlineRegistrar(RegistrationConfig(covariance_update=update, q_sigma=(0.0,) * N_STATE))
+        state = reg.state_dict()
+        state["P"] = np.diag([0.0] + [1e-4] * (N_STATE - 1))
+        reg.load_state_dict(state)
+        if refused:
+            with pytest.raises(RuntimeError, match="non-finite"):
+                reg.update(row)
+            assert reg.n_updates == 0 and reg.P[0, 0] == 0.0
+        else:
+            reg.update(row)
