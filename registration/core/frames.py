@@ -15,10 +15,10 @@ import numpy as np
 
 from registration import _codegen
 from registration.core.validation import (
-    as_float_array, broadcast_1d, check_altitude, check_angle, check_latitude, check_positive, check_range,
+    as_float_array, broadcast_1d, check_altitude, check_angle, check_finite, check_latitude, check_positive, check_range,
 )
 
-__all__ = ["geodetic2ecef", "enu2ecef_rotation", "deck2enu", "deck2enu_jacobians", "deck2enu_rotation", "plot2ecef"]
+__all__ = ["geodetic2ecef", "ecef2geodetic", "enu2ecef_rotation", "deck2enu", "deck2enu_jacobians", "deck2enu_rotation", "plot2ecef"]
 
 #: ENU->ECEF rotation variants that derive/ emitted: the standard one and the paper's eq. (4).
 T_VARIANTS = _codegen.variants("t_variant")
@@ -67,6 +67,24 @@ def geodetic2ecef(lat, lon, alt) -> np.ndarray:
     """
     v = _geodetic(lat, lon, alt)
     return _codegen.get("geodetic2ecef")(*_ordered(v, ["lat", "lon", "alt"]))[0]
+
+
+def ecef2geodetic(p_ecef) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Geodetic ``lat, lon`` (rad) and ``alt`` (m above WGS-84), each (N,), of ECEF points (N, 3) or (3,) in m.
+
+    The inverse of :func:`geodetic2ecef` (generated, Bowring's iteration: float64 rounding of the
+    latitude from -12 km to 1000 km of height). Points within 100 km of the earth's centre are refused.
+    """
+    p = as_float_array("p_ecef", p_ecef)
+    if p.ndim not in (1, 2) or p.shape[-1] != 3:
+        raise ValueError(f"p_ecef: expected shape (N, 3) or (3,) in m, got {p.shape}")
+    p = p.reshape(-1, 3)
+    check_finite("p_ecef", p, "m")
+    close = np.einsum("ij,ij->i", p, p) < 1e10
+    if close.any():
+        raise ValueError(f"p_ecef: point {int(np.argmax(close))} lies within 100 km of the earth's centre; expected ECEF metres")
+    geo = _codegen.get("ecef2geodetic")(p)[0].reshape(-1, 3)
+    return geo[:, 0], geo[:, 1], geo[:, 2]
 
 
 def enu2ecef_rotation(lat, lon, variant: str = "standard") -> np.ndarray:

@@ -32,10 +32,11 @@ from pathlib import Path
 
 import numpy as np
 
+from registration.core.frames import ecef2geodetic
 from registration.fleet.problem import FleetProblem, build_problem
 from registration.fleet.tables import DEFAULT_REFERENCE_SIGMA
 
-__all__ = ["FILE_COLUMNS", "FleetTables", "read_fleet_tables", "write_fleet_tables", "ecef2geodetic",
+__all__ = ["FILE_COLUMNS", "FleetTables", "read_fleet_tables", "write_fleet_tables",
            "MIN_UNIT_CHECK_VALUES"]
 
 #: Per table: (file column, table column, unit, required, (low, high) accepted in file units).
@@ -244,25 +245,6 @@ def read_fleet_tables(plots, navigation, sensors, platforms=None, reference=None
         ref["sigma"] = np.where(np.isnan(ref["sigma"]), DEFAULT_REFERENCE_SIGMA, ref["sigma"])
     _check_ids(tables, paths)
     return FleetTables(tables["plots"], tables["navigation"], tables["sensors"], tables.get("platforms"), ref, paths)
-
-
-def ecef2geodetic(p_ecef) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """WGS-84 ECEF (N, 3) m -> lat, lon (rad), alt (m), by fixed-point iteration (below 1 mm
-    and 1e-12 rad after 6 iterations for heights below 1000 km)."""
-    a, f = 6378137.0, 1 / 298.257223563
-    e2 = f * (2 - f)
-    p = np.asarray(p_ecef, dtype=np.float64).reshape(-1, 3)
-    x, y, z = p.T
-    lon = np.arctan2(y, x)
-    rho = np.hypot(x, y)
-    lat = np.arctan2(z, rho * (1 - e2))
-    for _ in range(6):
-        n = a / np.sqrt(1 - e2 * np.sin(lat) ** 2)
-        alt = rho * np.cos(lat) + z * np.sin(lat) - a * a / n
-        lat = np.arctan2(z, rho * (1 - e2 * n / (n + alt)))
-    n = a / np.sqrt(1 - e2 * np.sin(lat) ** 2)
-    alt = rho * np.cos(lat) + z * np.sin(lat) - a * a / n
-    return lat, lon, alt
 
 
 def _file_frame(name: str, table):

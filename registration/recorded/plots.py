@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from registration import _codegen
+from registration.core.frames import ecef2geodetic
 from registration.core.plotting import pyplot
 from registration.online.contract import IS_ANGLE
 from registration.online.plots import plot_difference_series, plot_estimate_series
@@ -64,7 +64,7 @@ def write_plots(series: dict, status: dict, folder: Path) -> list[Path]:
     ok = np.ones(len(nav), dtype=bool)
     for c, v in tracks.items():
         ok &= np.isfinite(v) & (np.abs(v) <= (90 if "lat" in c else 360))
-    targets = {s: _approx_lat_lon_deg(series[f"{s}_ecef"]) for s in "ab"}
+    targets = {s: _lat_lon_deg(series[f"{s}_ecef"]) for s in "ab"}
     if ok.sum() >= 2:
         written.append(_plot_tracks({k: v[ok] for k, v in tracks.items()}, targets, out / "tracks.png"))
     return written
@@ -121,17 +121,14 @@ def _numeric(col) -> np.ndarray:
     return np.asarray(pd.to_numeric(col, errors="coerce"), dtype=float)
 
 
-def _approx_lat_lon_deg(p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """ECEF (K, 3) in m -> geodetic latitude, longitude (deg) by Bowring's formula, with the WGS-84
-    constants of the generated code: metre-level, for the track plot only."""
-    wgs = _codegen.wgs84()
-    a, b, e2 = wgs["wgs84_a_m"], wgs["wgs84_b_m"], wgs["wgs84_e2"]
-    ep2 = (a * a - b * b) / (b * b)
-    x, y, z = p[:, 0], p[:, 1], p[:, 2]
-    rho = np.hypot(x, y)
-    th = np.arctan2(z * a, rho * b)
-    lat = np.arctan2(z + ep2 * b * np.sin(th) ** 3, rho - e2 * a * np.cos(th) ** 3)
-    return np.degrees(lat), np.degrees(np.arctan2(y, x))
+def _lat_lon_deg(p_ecef: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """ECEF (K, 3) in m -> geodetic latitude, longitude (deg); non-finite rows give NaN."""
+    lat, lon = np.full(len(p_ecef), np.nan), np.full(len(p_ecef), np.nan)
+    good = np.isfinite(p_ecef).all(axis=1) & (np.einsum("ij,ij->i", p_ecef, p_ecef) >= 1e10)
+    if good.any():
+        la, lo, _ = ecef2geodetic(p_ecef[good])
+        lat[good], lon[good] = np.degrees(la), np.degrees(lo)
+    return lat, lon
 
 
 def _plot_tracks(tracks: dict, targets: dict, path: Path) -> Path:

@@ -4,9 +4,9 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from registration.core.frames import geodetic2ecef
+from registration.core.frames import ecef2geodetic, geodetic2ecef
 from registration.fleet import fleet_scenario
-from registration.fleet.files import ecef2geodetic, read_fleet_tables, write_fleet_tables
+from registration.fleet.files import read_fleet_tables, write_fleet_tables
 
 NAMES = ("plots", "navigation", "sensors", "platforms", "reference")
 
