@@ -169,8 +169,7 @@ def iter_frames(path, columns, chunk_rows: int, start_row: int = 0) -> Iterator[
         if fmt == "csv":
             # every column is parsed (no usecols): with usecols pandas silently drops the extra fields
             # of a malformed line instead of reporting it
-            source = (f[[c for c in f.columns if str(c).strip() in wanted]]
-                      for f in pd.read_csv(path, chunksize=chunk_rows, index_col=False, skipinitialspace=True))
+            source = _csv_frames(path, chunk_rows, wanted)
             base = 0
         else:
             import pyarrow.parquet as pq
@@ -199,6 +198,24 @@ def iter_frames(path, columns, chunk_rows: int, start_row: int = 0) -> Iterator[
         if type(exc).__module__.startswith(("pyarrow", "pandas")):
             raise FileFormatError(f"{path}: cannot be read as {fmt.upper()}: {exc}") from exc
         raise
+
+
+def _csv_frames(path, chunk_rows: int, wanted: list[str]) -> Iterator[object]:
+    """The wanted columns of a CSV file, chunk by chunk. A first data line with more fields than the
+    header (which pandas would truncate with only a warning) raises instead, like any other."""
+    import warnings
+
+    import pandas as pd
+
+    reader = pd.read_csv(path, chunksize=chunk_rows, index_col=False, skipinitialspace=True)
+    while True:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", pd.errors.ParserWarning)
+            try:
+                frame = next(reader)
+            except StopIteration:
+                return
+        yield frame[[c for c in frame.columns if str(c).strip() in wanted]]
 
 
 def _rechunk(source, base: int, start_row: int, chunk_rows: int, path) -> Iterator[tuple[int, object]]:

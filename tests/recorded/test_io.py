@@ -128,3 +128,17 @@ def test_schema_prints_both_forms_with_units(capsys):
     s = json.loads(capsys.readouterr().out)
     assert [c["column"] for c in s["synchronous"]["columns"]] == list(SYNC_COLUMNS)
     assert {c["unit"] for c in s["synchronous"]["columns"]} == {"s", "deg", "m"}
+
+
+@pytest.mark.parametrize("line", [1, 40])
+def test_a_csv_line_with_an_extra_field_is_refused_wherever_it_stands(tmp_path, line):
+    """pandas truncates an over-long *first* data line with only a warning (data lost silently);
+    the reader refuses it like an over-long line anywhere else."""
+    from registration.recorded import FileFormatError, read_table
+
+    path = tmp_path / "extra.csv"
+    lines = frame(60).to_csv(index=False).splitlines()
+    lines[line] += ",1.0"
+    path.write_text("\n".join(lines) + "\n")
+    with pytest.raises(FileFormatError, match="cannot be read as CSV"):
+        read_table(path)
