@@ -10,6 +10,7 @@ import numpy as np
 
 from registration import _codegen
 from registration.core.angles import wrap_angle
+from registration.core.motion import ShipMotion
 
 __all__ = ["ShipTrack", "Circle", "Line", "enu2ecef_points"]
 
@@ -58,8 +59,8 @@ class ShipTrack:
         north = self.north0 + self.speed * t * np.cos(self.course)
         lat, lon = self.geodetic(centre, east, north, self.height)
         scale = 1.0 if motion else 0.0
-        pitch = scale * self.pitch_amplitude * np.sin(2 * np.pi * t / self.pitch_period + self.phase)
-        roll = scale * self.roll_amplitude * np.sin(2 * np.pi * t / self.roll_period + 1.3 * self.phase + 0.7)
+        waves = ShipMotion(self.pitch_amplitude, self.pitch_period, self.roll_amplitude, self.roll_period)
+        pitch, roll = (scale * a for a in waves.angles(t, self.phase))
         heading = np.full(t.shape, float(wrap_angle(self.course)))
         return np.stack([lat, lon, np.full(t.shape, self.height), heading, pitch, roll], axis=1)
 

@@ -14,6 +14,7 @@ import numpy as np
 
 from registration import _codegen
 from registration.core.angles import wrap_angle
+from registration.core.motion import ShipMotion
 from registration.online.contract import N_ROW, N_STATE, ROW_COLUMNS, SENSOR_COLUMNS, SENSOR_ROW, SENSORS, STATE_NAMES
 
 __all__ = ["ShipMotion", "Scenario", "ScenarioRuns", "paper_scenario", "paper_scenarios", "PAPER_TABLE1"]
@@ -23,33 +24,6 @@ PAPER_TABLE1 = {
     "before": {"max": [1515.85, 519.10, 463.77], "mean": [1303.56, 454.90, 338.27], "std": [185.47, 41.66, 68.14]},
     "after": {"max": [82.04, 47.31, 109.05], "mean": [17.15, -0.32, 18.10], "std": [35.22, 23.84, 56.50]},
 }
-
-
-@dataclass(frozen=True)
-class ShipMotion:
-    """Sinusoidal wave motion of a ship: pitch and roll amplitudes (rad) and periods (s).
-
-    ``pitch(t) = pitch_amplitude sin(2 pi t / pitch_period + phase)``, likewise roll.
-    """
-
-    pitch_amplitude: float = np.radians(2.0)
-    pitch_period: float = 8.0
-    roll_amplitude: float = np.radians(5.0)
-    roll_period: float = 12.0
-
-    def __post_init__(self):
-        for name in ("pitch_amplitude", "roll_amplitude"):
-            v = getattr(self, name)
-            if not (0 <= v < np.pi / 4):
-                raise ValueError(f"{name}: {v} rad is outside [0, pi/4) (pass radians, not degrees)")
-        for name in ("pitch_period", "roll_period"):
-            if not getattr(self, name) > 0:
-                raise ValueError(f"{name}: must be > 0 s")
-
-    def angles(self, t: np.ndarray, phase: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
-        pitch = self.pitch_amplitude * np.sin(2 * np.pi * t / self.pitch_period + phase)
-        roll = self.roll_amplitude * np.sin(2 * np.pi * t / self.roll_period + 1.3 * phase + 0.7)
-        return pitch, roll
 
 
 @dataclass
