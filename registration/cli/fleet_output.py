@@ -18,9 +18,7 @@ __all__ = ["chi_square_report", "estimate_rows", "print_report", "write_outputs"
 def chi_square_report(result) -> ConsistencyReport:
     """The batch chi-square check as a consistency report: the mean squared normalised residual
     per degree of freedom (expected 1), so the gate fails when it exceeds 10."""
-    chi = result.chi_square
-    return ConsistencyReport("squared normalised residual per degree of freedom", max(int(chi.dof), 1), 1,
-                             float(chi.mean), tuple(float(v) for v in chi.interval))
+    return result.chi_square.report
 
 
 def estimate_rows(result, truth: dict | None = None) -> list[dict]:

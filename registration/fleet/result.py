@@ -6,11 +6,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from registration.core.consistency import ConsistencyReport
 from registration.core.observability import ObservabilityReport
 from registration.fleet.covariance import FusedTargets
 from registration.fleet.layout import StateLayout
 
 __all__ = ["BatchResult", "ChiSquareCheck"]
+
+_QUANTITY = "squared normalised residual per degree of freedom"
 
 
 @dataclass(frozen=True)
@@ -18,21 +21,33 @@ class ChiSquareCheck:
     """Sum of squared normalised residuals (plots, references, priors) against its degrees of freedom.
 
     ``dof`` = measured values - estimated parameters (states and trajectory coefficients).
-    ``mean`` = chi2 / dof is 1 for data that fit the model; ``interval`` is its two-sided 95 %
-    band for a chi-square with ``dof`` degrees of freedom.
+    ``mean`` = chi2 / dof is 1 for data that fit the model; :attr:`report` judges it as the package's
+    consistency check does (a mean over ``dof`` values of one degree of freedom each).
     """
 
     chi2: float
     dof: int
-    interval: tuple[float, float]
 
     @property
     def mean(self) -> float:
         return self.chi2 / self.dof if self.dof > 0 else float("nan")
 
     @property
+    def report(self) -> ConsistencyReport:
+        """The consistency report: band, status and the gate (``.ok`` false above 10x its expectation)."""
+        if self.dof < 1:
+            return ConsistencyReport(_QUANTITY, 0, 1, float("nan"), (float("nan"), float("nan")))
+        return ConsistencyReport.from_mean(self.mean, self.dof, 1, _QUANTITY)
+
+    @property
+    def interval(self) -> tuple[float, float]:
+        """Two-sided 95 % band of ``mean``."""
+        return self.report.interval
+
+    @property
     def ok(self) -> bool:
-        return self.interval[0] <= self.mean <= self.interval[1]
+        """``mean`` inside its 95 % band."""
+        return self.report.status == "consistent"
 
     def text(self) -> str:
         lo, hi = self.interval
