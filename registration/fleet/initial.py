@@ -36,10 +36,11 @@ def plot_positions(design: Design, x: np.ndarray | None = None) -> np.ndarray:
     return p.reshape(n, 3)
 
 
-def initial_coefficients(design: Design) -> np.ndarray:
-    """(B, n_coef, 3) starting coefficients: window means of the plot positions (module docstring)."""
+def initial_coefficients(design: Design, x: np.ndarray | None = None) -> np.ndarray:
+    """(B, n_coef, 3) starting coefficients: window means of the plot positions corrected by the
+    states ``x`` (default zeros; module docstring)."""
     blk = design.blocks
-    p = plot_positions(design)
+    p = plot_positions(design, x)
     ranged = (design.weight[:, 0] > 0).astype(np.float64)
     real = design.real.astype(np.float64)
     starts = design.block_start

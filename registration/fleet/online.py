@@ -1,0 +1,321 @@
+"""The online fleet filter (:class:`FleetFilter`): the batch problem's model, processed epoch by
+epoch as the plots arrive.
+
+Plots are buffered until their *epoch* closes: with windows (``window_s > 0``) an epoch is one
+window of the absolute time grid ``[k window_s, (k + 1) window_s)``, shared by every target;
+with ``window_s = 0`` (synchronous sensors, one target position per instant) it is one instant,
+or the instants of ``[k epoch_s, (k + 1) epoch_s)`` when ``epoch_s > 0``. An epoch closes when a
+plot of a later epoch arrives (or at :meth:`FleetFilter.flush`), so plots must come in time
+order across epochs; within an epoch their order does not matter, and feeding the same plots in
+any number of chunks gives the same result bit for bit.
+
+Each closed epoch is one Kalman update of the registration states (platform attitude errors,
+sensor biases; rad and m):
+
+* predict: the states are constant up to a random walk, ``P += diag(q^2) dt`` (``q`` in
+  rad/sqrt(s) and m/sqrt(s), dt the time since the previous epoch);
+* the epoch's information ``L`` and gradient ``b`` at the current estimate
+  (:mod:`registration.fleet.online_epoch`: the target windows fitted with the states held, then
+  eliminated by the Schur complement);
+* update in coordinates scaled by each state's prior (or reference) sigma: with ``L = V w V^T``
+  over its determined directions (``w`` above 1e-12 of the largest), the measurement
+  ``nu = w^-1/2 V^T b`` of ``H = w^1/2 V^T`` with unit noise; ``S = H P H^T + I``,
+  ``K = P H^T S^-1``, ``x += K nu`` and the Joseph form ``P = (I - K H) P (I - K H)^T + K K^T``
+  (symmetric positive definite by construction), ``nis = nu^T S^-1 nu`` with ``dim nu`` degrees of
+  freedom. The update equals ``P+ = (P^-1 + L)^-1``, ``x+ = x + P+ b``.
+
+The starting point is either the priors of the tables (a state without prior starts with the
+sigma ``DIFFUSE`` times its reference scale: 10 deg, 10 km) or a batch result (``prior=``:
+its estimate and covariance). See docs/fleet.md, "Online filter".
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from registration.core.consistency import ConsistencyReport
+from registration.fleet.blocks import SAME_INSTANT_S
+from registration.fleet.inputs import References, index_of, read_platforms, read_plots, read_references, read_sensors
+from registration.fleet.layout import make_layout
+from registration.fleet.navigation import navigation_at, platform_navigation
+from registration.fleet.observability import fleet_observability
+from registration.fleet.online_epoch import epoch_information
+from registration.fleet.online_result import OnlineHistory, OnlineResult
+from registration.fleet.problem import Exclusion, FleetProblem
+from registration.fleet.solver import BatchOptions
+from registration.fleet.tables import read_table
+
+__all__ = ["DIFFUSE", "FleetFilter", "OnlineOptions", "information_update", "register_online"]
+
+#: Prior sigma of a state without prior, in units of its reference scale (1 deg, 1 km).
+DIFFUSE = 10.0
+#: Directions of an epoch's scaled information below this share of its largest are not updated.
+DETERMINED_SHARE = 1e-12
+#: An epoch is linearised again at its updated estimate while the update moves a state by more
+#: than this share of its reference scale (0.1 deg, 100 m), at most MAX_RELINEARISATIONS times (an
+#: iterated update): large initial errors are then found as the batch finds them, while in the
+#: steady state every epoch is linearised once (the second-order term of a 0.1 deg step is about
+#: 0.3 m at 100 km, far below the noise of a radar).
+RELINEARISE_ABOVE = 0.1
+MAX_RELINEARISATIONS = 10
+#: The innovation check leaves out the components whose prior variance exceeds this many times
+#: their noise variance: such an innovation measures the spread of the prior, not the fit of the
+#: data (the first epochs of states that start without prior, at DIFFUSE).
+PRIOR_DOMINATED = 100.0
+_BUFFER = ("time", "sensor", "target", "meas", "mask", "nav", "row")
+
+
+@dataclass(frozen=True)
+class OnlineOptions:
+    """Settings of :class:`FleetFilter`.
+
+    window_s, degree: the target windows, as in the batch (:class:`~registration.fleet.solver.BatchOptions`);
+        an epoch is one window of the absolute time grid. epoch_s: with ``window_s = 0``, the
+        length (s) of an epoch of instants (0: one instant per epoch). q_angle (rad/sqrt(s)), q_range
+        (m/sqrt(s)): random-walk process noise of the states. max_iterations: of each epoch's
+        coefficient fit.
+    """
+
+    window_s: float = 20.0
+    degree: int = 3
+    epoch_s: float = 0.0
+    q_angle: float = 1e-6
+    q_range: float = 0.01
+    max_iterations: int = 20
+
+    def __post_init__(self):
+        BatchOptions(window_s=self.window_s, degree=self.degree if self.window_s > 0 else 0)  # same checks
+        for name in ("epoch_s", "q_angle", "q_range"):
+            v = getattr(self, name)
+            if not (np.isfinite(v) and v >= 0):
+                raise ValueError(f"{name}: expected a finite value >= 0, got {v}")
+        if not int(self.max_iterations) >= 1:
+            raise ValueError(f"max_iterations: expected >= 1, got {self.max_iterations}")
+
+    def batch(self) -> BatchOptions:
+        return BatchOptions(window_s=self.window_s, degree=self.degree if self.window_s > 0 else 0,
+                            max_iterations=int(self.max_iterations))
+
+    def epoch_key(self, time: np.ndarray) -> np.ndarray:
+        length = self.window_s if self.window_s > 0 else self.epoch_s
+        if length > 0:
+            return np.floor(time / length).astype(np.int64)
+        return np.round(time / SAME_INSTANT_S).astype(np.int64)
+
+
+class FleetFilter:
+    """Online registration of a fleet (module docstring).
+
+    ``sensors``, ``navigation``, ``platforms``, ``references``: the tables of
+    :func:`registration.fleet.build_problem` (SI units, radians), given once; plots arrive with
+    :meth:`update`. ``prior``: a batch result (or anything with ``layout``, ``estimate`` and
+    ``covariance`` over the same states) to start from.
+    """
+
+    def __init__(self, sensors, navigation, platforms=None, references=None, *,
+                 options: OnlineOptions | None = None, prior=None):
+        self.options = options or OnlineOptions()
+        sensors_t = read_table("sensors", sensors, ("sensor", "platform"))
+        self.platform_ids, platform_priors = read_platforms(platforms, sensors_t.ids("platform"))
+        self.specs = read_sensors(sensors_t, self.platform_ids)
+        self.tracks = platform_navigation(read_table("navigation", navigation, ("platform",)), self.platform_ids)
+        ref_ids = [] if references is None else list(dict.fromkeys(read_table("references", references).ids("target")))
+        self.references = read_references(references, ref_ids)
+        self.layout = make_layout(self.platform_ids, platform_priors, self.specs.ids, self.specs.channels,
+                                  self.specs.prior)
+        self.x, self.P = _start(self.layout, prior)
+        self.information = np.zeros((self.layout.n, self.layout.n))
+        self._q2 = np.array([self.options.q_angle if u == "rad" else self.options.q_range for u in self.layout.units]) ** 2
+        self._buffer = {k: [] for k in _BUFFER}
+        self._n_read = 0
+        self._closed_key: int | None = None
+        self._t_last: float | None = None
+        self._history: list[tuple] = []
+        self._unused: dict[str, list] = {}
+        self.n_linearisations = 0
+
+    # -- input -----------------------------------------------------------------------------------
+    def update(self, plots) -> int:
+        """Add plots (a table with ``time``, ``sensor``, ``target`` and the measured channels, as
+        in :func:`registration.fleet.build_problem`) and process the epochs they close.
+        Returns the number of epochs processed. ValueError naming the row for a bad plot or for a
+        plot of an epoch already processed; the filter is unchanged when it raises."""
+        table = read_table("plots", plots, ("time", "sensor", "target"))
+        cols = read_plots(table, self.specs)
+        key = self.options.epoch_key(cols.time)
+        if self._closed_key is not None and (key <= self._closed_key).any():
+            row = int(np.flatnonzero(key <= self._closed_key)[0])
+            raise table.error(row, f"time {cols.time[row]:g} s falls in an epoch already processed; feed plots in "
+                                   "time order (an epoch closes when a plot of a later epoch arrives)")
+        platform = self.specs.platform[cols.sensor]
+        nav = navigation_at(self.tracks, self.platform_ids, platform, cols.time,
+                            lambda i: f"plots row {i} (sensor {self.specs.ids[cols.sensor[i]]!r}, time {cols.time[i]:g} s)")
+        new = {"time": cols.time, "sensor": cols.sensor, "target": cols.target.astype(str), "meas": cols.meas,
+               "mask": cols.mask, "nav": nav, "row": self._n_read + np.arange(cols.time.size)}
+        for k in _BUFFER:
+            self._buffer[k].append(new[k])
+        self._n_read += int(cols.time.size)
+        return self._process(closing_all=False)
+
+    def flush(self) -> int:
+        """Process every buffered epoch (the end of the data). Returns the number processed."""
+        return self._process(closing_all=True)
+
+    # -- processing ------------------------------------------------------------------------------
+    def _process(self, closing_all: bool) -> int:
+        buf = {k: np.concatenate(v) if v else None for k, v in self._buffer.items()}
+        if buf["time"] is None or buf["time"].size == 0:
+            return 0
+        key = self.options.epoch_key(buf["time"])
+        keys = np.unique(key)
+        closed = keys if closing_all else keys[:-1]
+        for k in closed:
+            sel = key == k
+            self._epoch({name: v[sel] for name, v in buf.items()})
+            self._closed_key = int(k)
+        rest = ~np.isin(key, closed)
+        self._buffer = {name: [v[rest]] for name, v in buf.items()}
+        return int(closed.size)
+
+    def _epoch(self, plots: dict) -> None:
+        t_end = float(plots["time"].max())
+        if self._t_last is not None:
+            self.P[np.diag_indices_from(self.P)] += self._q2 * max(t_end - self._t_last, 0.0) * (self.layout.prior_sigma > 0)
+        self._t_last = t_end
+        problem = self._problem(plots)
+        nis, dof, used = 0.0, 0, 0
+        x_lin = self.x
+        for _ in range(MAX_RELINEARISATIONS):
+            info = epoch_information(problem, x_lin, self.options.batch())
+            if info is None:
+                break
+            b = info.b + info.L @ (x_lin - self.x)  # the gradient at the prior mean of the model linearised at x_lin
+            x, P, nis, dof = information_update(self.x, self.P, info.L, b, self.layout.free, self.layout.scale)
+            moved = np.abs(x - x_lin)[self.layout.free] / self.layout.scale[self.layout.free]
+            self.n_linearisations += 1
+            x_lin, L, used = x, info.L, info.n_plots
+            if not moved.max(initial=0.0) > RELINEARISE_ABOVE:
+                break
+        if used:
+            self.x, self.P = x_lin, P
+            self.information += L
+        if used < plots["time"].size:
+            for tid in np.unique(plots["target"]):
+                self._unused.setdefault(str(tid), []).append(plots["time"][plots["target"] == tid])
+        self._history.append((t_end, self.x.copy(), np.sqrt(np.clip(np.diag(self.P), 0, None)), nis, dof, used))
+
+    def _problem(self, plots: dict) -> FleetProblem:
+        target_ids = tuple(dict.fromkeys(plots["target"]))
+        refs = self.references
+        sel = np.isin(refs.target, target_ids)
+        refs = References(refs.target[sel], refs.time[sel], refs.p_ecef[sel], refs.sigma[sel])
+        return FleetProblem(
+            platform_ids=tuple(self.platform_ids), sensor_ids=self.specs.ids, target_ids=target_ids,
+            sensor_platform=self.specs.platform, sensor_sigma=self.specs.sigma, sensor_lever=self.specs.lever,
+            layout=self.layout, time=plots["time"], sensor=plots["sensor"],
+            target=index_of(plots["target"], target_ids), meas=plots["meas"], mask=plots["mask"], nav=plots["nav"],
+            row=plots["row"], n_input_plots=self._n_read, references=refs,
+            ref_target=index_of(refs.target, target_ids))
+
+    # -- output ----------------------------------------------------------------------------------
+    @property
+    def estimate(self) -> np.ndarray:
+        """(n,) the current estimate (rad, m), in the order of ``layout.names``."""
+        return self.x.copy()
+
+    @property
+    def covariance(self) -> np.ndarray:
+        """(n, n) its covariance."""
+        return self.P.copy()
+
+    def result(self) -> OnlineResult:
+        """The estimates now, with the history, observability report and innovation check."""
+        layout = self.layout
+        f = layout.free
+        report = fleet_observability(self.information[np.ix_(f, f)], f, layout, self.specs.platform,
+                                     self.platform_ids, self.specs.ids)
+        status = {layout.names[i]: "fixed" for i in layout.fixed}
+        status.update(report.status)
+        h = self._history
+        hist = OnlineHistory(np.array([e[0] for e in h]), np.array([e[1] for e in h]).reshape(len(h), layout.n),
+                             np.array([e[2] for e in h]).reshape(len(h), layout.n), np.array([e[3] for e in h]),
+                             np.array([e[4] for e in h], dtype=np.int64), np.array([e[5] for e in h], dtype=np.int64))
+        dof = int(hist.dof.sum())
+        consistency = (ConsistencyReport.from_mean(float(hist.nis.sum()) / dof, dof, 1,
+                                                   "normalised innovation squared per degree of freedom")
+                       if dof else None)
+        return OnlineResult(layout, self.estimate, self.covariance, np.sqrt(np.clip(np.diag(self.P), 0, None)),
+                            status, report, consistency, hist, self._exclusions(), self._n_read, int(hist.n_plots.sum()))
+
+    def _exclusions(self) -> tuple[Exclusion, ...]:
+        out = []
+        for tid, times in self._unused.items():
+            t = np.concatenate(times)
+            out.append(Exclusion(tid, "no registration information in some epochs (seen by one sensor only, without a "
+                                      "reference, or its position not determined by its plots)", int(t.size),
+                                 float(t.min()), float(t.max())))
+        return tuple(out)
+
+
+def information_update(x: np.ndarray, P: np.ndarray, L: np.ndarray, b: np.ndarray, free: np.ndarray,
+                       scale: np.ndarray) -> tuple[np.ndarray, np.ndarray, float, int]:
+    """The Kalman update of (x (n,), P (n, n)) with information ``L`` (n, n) and gradient ``b`` (n,)
+    on the states ``free``, in coordinates scaled by ``scale`` (n,) (module docstring).
+    Returns the new x and P (copies), the normalised innovation squared and its degrees of freedom,
+    both over the innovation components whose prior variance is at most PRIOR_DOMINATED times their
+    noise variance."""
+    x, P = x.copy(), P.copy()
+    d = scale[free]
+    Ls = d[:, None] * L[np.ix_(free, free)] * d[None, :]
+    w, V = np.linalg.eigh(0.5 * (Ls + Ls.T))
+    keep = w > DETERMINED_SHARE * max(float(w[-1]) if w.size else 0.0, 0.0)
+    if not keep.any():
+        return x, P, 0.0, 0
+    w, V = w[keep], V[:, keep]
+    H = np.sqrt(w)[:, None] * V.T
+    nu = (V.T @ (d * b[free])) / np.sqrt(w)
+    Ps = P[np.ix_(free, free)] / d[:, None] / d[None, :]
+    PHt = Ps @ H.T
+    HPHt = H @ PHt
+    S = HPHt + np.eye(w.size)
+    K = np.linalg.solve(S, PHt.T).T
+    A = np.eye(free.size) - K @ H
+    Ps = A @ Ps @ A.T + K @ K.T
+    x[free] += d * (K @ nu)
+    P[np.ix_(free, free)] = d[:, None] * (0.5 * (Ps + Ps.T)) * d[None, :]
+    lam, U = np.linalg.eigh(0.5 * (HPHt + HPHt.T))  # S = U diag(1 + lam) U^T
+    tested = lam <= PRIOR_DOMINATED
+    return x, P, float(np.sum((U.T @ nu)[tested] ** 2 / (1.0 + lam[tested]))), int(tested.sum())
+
+
+def _start(layout, prior) -> tuple[np.ndarray, np.ndarray]:
+    """Initial estimate and covariance: the layout's priors, or a result over the same states."""
+    n = layout.n
+    if prior is None:
+        sigma = np.where(np.isfinite(layout.prior_sigma), layout.prior_sigma, DIFFUSE * layout.scale)
+        return np.zeros(n), np.diag(sigma**2)
+    names = tuple(getattr(getattr(prior, "layout", None), "names", ()))
+    if names != layout.names:
+        raise ValueError(f"prior: its states {list(names)} are not this filter's {list(layout.names)}")
+    x = np.array(prior.estimate, dtype=float)
+    P = np.array(prior.covariance, dtype=float)
+    if x.shape != (n,) or P.shape != (n, n) or not (np.isfinite(x).all() and np.isfinite(P).all()):
+        raise ValueError(f"prior: expected a finite estimate ({n},) and covariance ({n}, {n})")
+    fixed = layout.fixed
+    x[fixed], P[fixed], P[:, fixed] = 0.0, 0.0, 0.0
+    undetermined = ~np.isfinite(np.asarray(getattr(prior, "sigma", np.zeros(n)), dtype=float))
+    P[np.diag_indices(n)] += np.where(undetermined & (layout.prior_sigma > 0), (DIFFUSE * layout.scale) ** 2, 0.0)
+    return x, P
+
+
+def register_online(plots, sensors, navigation, platforms=None, references=None, *,
+                    options: OnlineOptions | None = None, prior=None) -> OnlineResult:
+    """Run :class:`FleetFilter` over a whole plots table (sorted by time here) and return its result."""
+    filt = FleetFilter(sensors, navigation, platforms, references, options=options, prior=prior)
+    table = read_table("plots", plots, ("time", "sensor", "target"))
+    order = np.argsort(table.floats("time"), kind="stable")
+    filt.update({k: v[order] for k, v in table.columns.items()})
+    filt.flush()
+    return filt.result()

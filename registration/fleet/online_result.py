@@ -1,0 +1,90 @@
+"""The state of the online fleet filter as a result (:class:`OnlineResult`): estimates with their
+covariance, the history over the epochs, the observability report and the innovation check."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from registration.core.consistency import ConsistencyReport
+from registration.core.observability import ObservabilityReport
+from registration.fleet.layout import StateLayout
+from registration.fleet.problem import Exclusion
+
+__all__ = ["OnlineHistory", "OnlineResult"]
+
+
+@dataclass(frozen=True)
+class OnlineHistory:
+    """The estimate after each epoch: ``time`` (E,) s (the epoch's last plot), ``estimate`` (E, n)
+    and ``sigma`` (E, n) in rad and m, ``nis`` (E,) and ``dof`` (E,) of each epoch's update,
+    ``n_plots`` (E,) plots used."""
+
+    time: np.ndarray
+    estimate: np.ndarray
+    sigma: np.ndarray
+    nis: np.ndarray
+    dof: np.ndarray
+    n_plots: np.ndarray
+
+    def of(self, layout: StateLayout, name: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(time s, estimate, sigma) of state ``name`` over the epochs (rad or m)."""
+        i = layout.index(name)
+        return self.time, self.estimate[:, i], self.sigma[:, i]
+
+
+@dataclass
+class OnlineResult:
+    """Estimates and covariance of the online fleet filter after its last epoch.
+
+    ``estimate`` (n,) and ``covariance`` (n, n) in the order of ``layout.names`` (rad, m); fixed
+    states are 0 with zero covariance. ``sigma`` (n,) the square root of the covariance's diagonal.
+    ``status`` per state from the information the data gave (``fixed``, ``identifiable``, ``weak``,
+    ``not identifiable``); where a state is not identifiable its sigma stays that of the prior.
+    ``consistency``: the normalised innovations squared of all epochs against their chi-square
+    band (None before the first informative epoch). ``excluded``: plots that carried no
+    registration information, per target.
+    """
+
+    layout: StateLayout
+    estimate: np.ndarray
+    covariance: np.ndarray
+    sigma: np.ndarray
+    status: dict
+    observability: ObservabilityReport
+    consistency: ConsistencyReport | None
+    history: OnlineHistory
+    excluded: tuple[Exclusion, ...]
+    n_plots_read: int
+    n_plots_used: int
+
+    def value(self, name: str) -> float:
+        return float(self.estimate[self.layout.index(name)])
+
+    def sigma_of(self, name: str) -> float:
+        return float(self.sigma[self.layout.index(name)])
+
+    def rows(self, truth: dict | None = None) -> list[dict]:
+        """One dict per state: name, object, quantity, label, unit, estimate, sigma, status (and truth)."""
+        out = []
+        for i, name in enumerate(self.layout.names):
+            row = {"name": name, "object": self.layout.objects[i], "quantity": self.layout.quantities[i],
+                   "label": self.layout.labels[i], "unit": self.layout.units[i],
+                   "estimate": float(self.estimate[i]), "sigma": float(self.sigma[i]), "status": self.status[name]}
+            if truth is not None:
+                row["truth"] = float(truth[name])
+            out.append(row)
+        return out
+
+    def lines(self) -> list[str]:
+        """A printable summary (angles in degrees)."""
+        out = [f"{self.history.time.size} epochs, {self.n_plots_used} of {self.n_plots_read} plots used"]
+        if self.consistency is not None:
+            out.append(self.consistency.message())
+        for row in self.rows():
+            f, unit = (np.degrees, "deg") if row["unit"] == "rad" else (float, "m")
+            out.append(f"  {row['label']:<36s} {f(row['estimate']):+12.4f} +- {f(row['sigma']):.4f} {unit}  {row['status']}")
+        out += self.observability.lines()
+        out += [f"  excluded: {e.text()}" for e in self.excluded]
+        return out
