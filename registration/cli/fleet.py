@@ -29,6 +29,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     sim = sub.add_parser("simulate", help=SIMULATE_HELP, description=textwrap.fill(SIMULATE_HELP),
                          epilog=EXIT_CODES_EPILOG, formatter_class=HelpFormatter)
     add_seed(sim, 0)
+    _add_method(sim)
     add_out(sim, "fleet-simulate", "the input tables, estimates.csv, summary.json and the PNG plots")
     add_no_plots(sim)
     sim.add_argument("--format", choices=("csv", "parquet"), default="csv", help="file format of the tables written")
@@ -52,10 +53,18 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                        help="time_s, target, lat_deg, lon_deg, alt_m (or x_m, y_m, z_m), optional sigma_m: "
                             "known target positions; default: none")
     reg.add_argument("--window-s", type=float, default=20.0, metavar="S",
-                     help="length of the windows each target track is cut into, s (0: one per instant)")
+                     help="length of the windows each target track is cut into, s (0: one per instant); the "
+                          "online filter updates once per window")
+    _add_method(reg)
     add_out(reg, "fleet-register", "estimates.csv, summary.json and the PNG plots")
     add_no_plots(reg)
     add_allow_inconsistent(reg)
+
+
+def _add_method(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--method", choices=("batch", "online"), default="batch",
+                   help="batch: maximum likelihood over all plots at once; online: the filter, one update per "
+                        "window of plots, with the estimates over time in history.csv (docs/fleet.md)")
 
 
 def _inputs(tables, problem, window_s: float) -> dict:
@@ -65,12 +74,21 @@ def _inputs(tables, problem, window_s: float) -> dict:
             "plots_read": problem.n_input_plots}
 
 
-def _solve(tables, window_s: float):
-    from registration.fleet import BatchOptions, solve_batch
+def _solve(tables, window_s: float, method: str):
+    """(problem, result) of the batch or the online method on the tables."""
+    from registration.fleet import BatchOptions, OnlineOptions, register_online, solve_batch
 
-    options = BatchOptions(window_s=window_s)
     problem = tables.problem()
-    return problem, solve_batch(problem, options)
+    if method == "online":
+        return problem, register_online(tables.plots, tables.sensors, tables.navigation, tables.platforms,
+                                        tables.references, options=OnlineOptions(window_s=window_s))
+    return problem, solve_batch(problem, BatchOptions(window_s=window_s))
+
+
+def _run_line(result) -> str:
+    if hasattr(result, "history"):
+        return f"online filter: {result.history.time.size} epochs, {result.n_plots_used} of {result.n_plots_read} plots used"
+    return f"converged: {result.converged} after {result.iterations} iterations"
 
 
 def run_simulate(args: argparse.Namespace) -> int:
@@ -89,12 +107,11 @@ def run_simulate(args: argparse.Namespace) -> int:
     names = {p.stem: p for p in tables_written}
     tables = read_fleet_tables(names["plots"], names["navigation"], names["sensors"], names.get("platforms"),
                                names.get("reference"))
-    problem, result = _solve(tables, 20.0)
+    problem, result = _solve(tables, 20.0, args.method)
     rows = estimate_rows(result, s.truth_state)
-    header = [f"Simulated fleet, seed {args.seed}: " + problem.lines()[0],
-              f"converged: {result.converged} after {result.iterations} iterations"]
+    header = [f"Simulated fleet, seed {args.seed}: " + problem.lines()[0], _run_line(result)]
     print_report(result, rows, header)
-    inputs = {**_inputs(tables, problem, 20.0), "scenario": {k: (float(v) if not isinstance(v, (bool, str)) else v)
+    inputs = {**_inputs(tables, problem, 20.0), "method": args.method, "scenario": {k: (float(v) if not isinstance(v, (bool, str)) else v)
                                                              for k, v in s.description.items()}}
     written = write_outputs(out, problem, result, rows, inputs, plots=not args.no_plots, truth=s.truth_state)
     print("\nwrote " + ", ".join(str(p) for p in [*tables_written, *written]))
@@ -110,12 +127,13 @@ def run_register(args: argparse.Namespace) -> int:
         raise ValueError(f"--window-s: expected a length >= 0 s, got {args.window_s}")
     out = prepare_out(args.out)
     tables = read_fleet_tables(args.plots, args.navigation, args.sensors, args.platforms, args.reference)
-    problem, result = _solve(tables, args.window_s)
+    problem, result = _solve(tables, args.window_s, args.method)
     rows = estimate_rows(result)
     header = ["Fleet tables " + ", ".join(str(p) for p in tables.paths.values()) + ":", problem.lines()[0],
-              f"converged: {result.converged} after {result.iterations} iterations"]
+              _run_line(result)]
     print_report(result, rows, header)
-    written = write_outputs(out, problem, result, rows, _inputs(tables, problem, args.window_s), plots=not args.no_plots)
+    inputs = {**_inputs(tables, problem, args.window_s), "method": args.method}
+    written = write_outputs(out, problem, result, rows, inputs, plots=not args.no_plots)
     print("\nwrote " + ", ".join(str(p) for p in written))
     return gate("registration fleet register", result, args.allow_inconsistent)
 

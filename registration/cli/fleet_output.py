@@ -1,6 +1,7 @@
 """What ``registration fleet simulate`` and ``fleet register`` print and write: the estimates per
-sensor and platform, the observability report, the chi-square check and its gate, ``estimates.csv``,
-``summary.json`` and the plots."""
+sensor and platform, the observability report, the consistency check and its gate (batch: the
+chi-square of the residuals; online: the normalised innovations), ``estimates.csv``,
+``summary.json`` (online: also ``history.csv``, the estimates over time) and the plots."""
 
 from __future__ import annotations
 
@@ -15,10 +16,16 @@ from registration.core.consistency import ConsistencyReport
 __all__ = ["chi_square_report", "estimate_rows", "print_report", "write_outputs", "gate"]
 
 
-def chi_square_report(result) -> ConsistencyReport:
-    """The batch chi-square check as a consistency report: the mean squared normalised residual
-    per degree of freedom (expected 1), so the gate fails when it exceeds 10."""
-    return result.chi_square.report
+def is_online(result) -> bool:
+    """True for a result of the online filter (it has a history), False for a batch result."""
+    return hasattr(result, "history")
+
+
+def chi_square_report(result) -> ConsistencyReport | None:
+    """The run's consistency report: batch, the chi-square check as the mean squared normalised
+    residual per degree of freedom (expected 1); online, the normalised innovations squared per
+    degree of freedom. The gate fails when it exceeds 10 times its expectation."""
+    return result.consistency if is_online(result) else result.chi_square.report
 
 
 def estimate_rows(result, truth: dict | None = None) -> list[dict]:
@@ -51,57 +58,110 @@ def print_report(result, rows: list[dict], header: list[str]) -> None:
         print(line)
     for e in result.excluded:
         print(f"  excluded: {e.text()}")
-    print(f"\nchi-square: {result.chi_square.text()}")
-    print(consistency_line(chi_square_report(result)))
+    if is_online(result):
+        print(f"\nonline: {result.history.time.size} epochs, {result.n_plots_used} of {result.n_plots_read} plots used")
+        if result.fit_check is not None:
+            print(f"residuals at the final estimate: {result.fit_check.text()}")
+    else:
+        print(f"\nchi-square: {result.chi_square.text()}")
+    report = chi_square_report(result)
+    print(consistency_line(report) if report is not None else "consistency: no informative epoch to check")
+
+
+def _finite(v):
+    return v if np.isfinite(v) else None
+
+
+def _check_json(check) -> dict:
+    return {"chi2": float(check.chi2), "dof": int(check.dof), "mean": _finite(float(check.mean)),
+            "interval_95": [_finite(float(v)) for v in check.interval], "consistent": bool(check.ok)}
 
 
 def _summary(result, rows: list[dict], inputs: dict) -> dict:
-    def finite(v):
-        return v if np.isfinite(v) else None
-
-    return {
-        "estimates": [{k: (finite(v) if isinstance(v, float) else v) for k, v in r.items()} for r in rows],
-        "converged": bool(result.converged), "iterations": int(result.iterations),
+    report = chi_square_report(result)
+    out = {
+        "method": "online" if is_online(result) else "batch",
+        "estimates": [{k: (_finite(v) if isinstance(v, float) else v) for k, v in r.items()} for r in rows],
         "observability": result.observability.to_json(),
-        "chi_square": {"chi2": float(result.chi_square.chi2), "dof": int(result.chi_square.dof),
-                       "mean": finite(float(result.chi_square.mean)),
-                       "interval_95": [finite(float(v)) for v in result.chi_square.interval],
-                       "consistent": bool(result.chi_square.ok)},
-        "consistency": chi_square_report(result).to_json(),
-        "residuals_by_sensor": {k: {"mean_square": v[0], "values": v[1]} for k, v in result.residual_check("sensor").items()},
-        "residuals_by_target": {k: {"mean_square": v[0], "values": v[1]} for k, v in result.residual_check("target").items()},
+        "consistency": report.to_json() if report is not None else None,
         "excluded": [{"target": e.target, "reason": e.reason, "plots": e.n_plots, "t_start_s": e.t_start,
                       "t_end_s": e.t_end} for e in result.excluded],
         "inputs": inputs,
     }
+    if is_online(result):
+        out["online"] = {"epochs": int(result.history.time.size), "plots_used": int(result.n_plots_used),
+                         "plots_read": int(result.n_plots_read)}
+        if result.fit_check is not None:
+            out["residuals_at_final_estimate"] = _check_json(result.fit_check)
+        return out
+    out.update({
+        "converged": bool(result.converged), "iterations": int(result.iterations),
+        "chi_square": _check_json(result.chi_square),
+        "residuals_by_sensor": {k: {"mean_square": v[0], "values": v[1]} for k, v in result.residual_check("sensor").items()},
+        "residuals_by_target": {k: {"mean_square": v[0], "values": v[1]} for k, v in result.residual_check("target").items()},
+    })
+    return out
+
+
+def _history_frame(result):
+    """The online estimates over time, long form: time_s, object, state, unit (m or deg), estimate, sigma."""
+    import pandas as pd
+
+    layout, h = result.layout, result.history
+    free = layout.free
+    k = np.array([np.degrees(1.0) if layout.units[i] == "rad" else 1.0 for i in free])
+    n_t = h.time.size
+    return pd.DataFrame({
+        "time_s": np.repeat(h.time, free.size),
+        "object": np.tile(np.array(layout.objects)[free], n_t),
+        "state": np.tile(np.array(layout.quantities)[free], n_t),
+        "unit": np.tile(np.where(k == 1.0, "m", "deg"), n_t),
+        "estimate": (h.estimate[:, free] * k).reshape(-1),
+        "sigma": (h.sigma[:, free] * k).reshape(-1),
+    })
 
 
 def write_outputs(out: Path, problem, result, rows: list[dict], inputs: dict, *, plots: bool,
                   truth: dict | None = None) -> list[Path]:
-    """estimates.csv, summary.json and (with ``plots``) estimates.png, map.png, residuals.png in ``out``."""
+    """estimates.csv, summary.json, history.csv (online) and (with ``plots``) estimates.png,
+    map.png, residuals.png in ``out``."""
     import pandas as pd
 
     from registration.recorded.formats import write_frame
 
-    path = out / "estimates.csv"
-    with writing(path):
-        write_frame(pd.DataFrame(rows), path, "csv")
-    written = [path]
+    online = is_online(result)
+    frames = [("estimates.csv", pd.DataFrame(rows))] + ([("history.csv", _history_frame(result))] if online else [])
+    written = []
+    for name, frame in frames:
+        with writing(out / name):
+            write_frame(frame, out / name, "csv")
+        written.append(out / name)
     path = out / "summary.json"
     with writing(path):
         path.write_text(json.dumps(_summary(result, rows, inputs), indent=2, allow_nan=False) + "\n")
     written.append(path)
     if plots:
-        from registration.fleet.plots import plot_estimates, plot_map, plot_residuals
+        written += _plots(out, problem, result, truth)
+    return written
 
-        for name, draw in (("estimates.png", lambda p: plot_estimates(result, p, truth)),
-                           ("map.png", lambda p: plot_map(problem, result, p)),
-                           ("residuals.png", lambda p: plot_residuals(result, p))):
-            with writing(out / name):
-                written.append(draw(out / name))
+
+def _plots(out: Path, problem, result, truth) -> list[Path]:
+    from registration.fleet.plots import plot_estimates, plot_history, plot_map, plot_residuals
+
+    online = is_online(result)
+    draws = [("estimates.png", lambda p: (plot_history if online else plot_estimates)(result, p, truth)),
+             ("map.png", lambda p: plot_map(problem, result, p))]
+    if result.residuals is not None:
+        title = ("at the final online estimate: " + result.fit_check.text()) if online else None
+        draws.append(("residuals.png", lambda p: plot_residuals(result, p, title)))
+    written = []
+    for name, draw in draws:
+        with writing(out / name):
+            written.append(draw(out / name))
     return written
 
 
 def gate(prog: str, result, allow: bool) -> int:
     """Exit code after the outputs are written: 3 when the data grossly contradict the model."""
-    return consistency_gate(prog, chi_square_report(result), allow)
+    report = chi_square_report(result)
+    return 0 if report is None else consistency_gate(prog, report, allow)

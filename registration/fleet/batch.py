@@ -13,19 +13,11 @@ import numpy as np
 from registration.fleet.covariance import fused_targets, solution_information, state_covariance
 from registration.fleet.observability import fleet_observability
 from registration.fleet.problem import FleetProblem
+from registration.fleet.residuals import residual_table
 from registration.fleet.result import BatchResult, ChiSquareCheck
 from registration.fleet.solver import BatchOptions, fit
 
 __all__ = ["solve_batch"]
-
-
-def _residual_table(fit_, ev) -> np.ndarray:
-    """(input plot rows, 3) normalised residuals; NaN where not measured or excluded."""
-    problem, design = fit_.problem, fit_.design
-    out = np.full((problem.n_input_plots, 3), np.nan)
-    e = np.where(design.weight > 0, ev.e, np.nan)
-    out[problem.row[design.blocks.order]] = e[design.slot]
-    return out
 
 
 def _per_input_row(problem: FleetProblem, values: np.ndarray) -> np.ndarray:
@@ -69,7 +61,7 @@ def solve_batch(problem: FleetProblem, options: BatchOptions | None = None) -> B
         sigma[free[np.linalg.norm(undetermined, axis=1) > 0.1]] = np.inf
     return BatchResult(
         layout=layout, estimate=fit_.x.copy(), covariance=P, sigma=sigma, status=status,
-        targets=fused_targets(fit_, sol.reduced, P_sink), residuals=_residual_table(fit_, sol.evaluation),
+        targets=fused_targets(fit_, sol.reduced, P_sink), residuals=residual_table(problem, fit_.design, sol.evaluation),
         chi_square=_chi_square(fit_, sol.evaluation), observability=report, excluded=problem.excluded,
         information=sol.information_data, free_names=tuple(layout.names[i] for i in free), scale=scale,
         undetermined=undetermined, converged=fit_.converged, iterations=fit_.iterations,

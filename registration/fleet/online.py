@@ -31,7 +31,7 @@ its estimate and covariance). See docs/fleet.md, "Online filter".
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -43,7 +43,8 @@ from registration.fleet.navigation import navigation_at, platform_navigation
 from registration.fleet.observability import fleet_observability
 from registration.fleet.online_epoch import epoch_information
 from registration.fleet.online_result import OnlineHistory, OnlineResult
-from registration.fleet.problem import Exclusion, FleetProblem
+from registration.fleet.problem import Exclusion, FleetProblem, build_problem
+from registration.fleet.residuals import residuals_at
 from registration.fleet.solver import BatchOptions
 from registration.fleet.tables import read_table
 
@@ -311,11 +312,18 @@ def _start(layout, prior) -> tuple[np.ndarray, np.ndarray]:
 
 
 def register_online(plots, sensors, navigation, platforms=None, references=None, *,
-                    options: OnlineOptions | None = None, prior=None) -> OnlineResult:
-    """Run :class:`FleetFilter` over a whole plots table (sorted by time here) and return its result."""
+                    options: OnlineOptions | None = None, prior=None, residuals: bool = True) -> OnlineResult:
+    """Run :class:`FleetFilter` over a whole plots table (sorted by time here) and return its result;
+    with ``residuals``, also the normalised residuals of every plot at the final estimate
+    (:func:`registration.fleet.residuals.residuals_at`)."""
     filt = FleetFilter(sensors, navigation, platforms, references, options=options, prior=prior)
     table = read_table("plots", plots, ("time", "sensor", "target"))
     order = np.argsort(table.floats("time"), kind="stable")
     filt.update({k: v[order] for k, v in table.columns.items()})
     filt.flush()
-    return filt.result()
+    result = filt.result()
+    if residuals and result.n_plots_used:
+        problem = build_problem(plots, sensors, navigation, platforms, references)
+        table, check, _ = residuals_at(problem, result.estimate, filt.options.batch())
+        result = replace(result, residuals=table, fit_check=check)
+    return result

@@ -3,7 +3,7 @@ covariance, the history over the epochs, the observability report and the innova
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -11,6 +11,7 @@ from registration.core.consistency import ConsistencyReport
 from registration.core.observability import ObservabilityReport
 from registration.fleet.layout import StateLayout
 from registration.fleet.problem import Exclusion
+from registration.fleet.result import ChiSquareCheck
 
 __all__ = ["OnlineHistory", "OnlineResult"]
 
@@ -44,7 +45,10 @@ class OnlineResult:
     ``not identifiable``); where a state is not identifiable its sigma stays that of the prior.
     ``consistency``: the normalised innovations squared of all epochs against their chi-square
     band (None before the first informative epoch). ``excluded``: plots that carried no
-    registration information, per target.
+    registration information, per target. ``residuals`` (input plot rows, 3) and ``fit_check``:
+    the normalised residuals of every plot at the final estimate with the trajectories fitted, and
+    their chi-square check (:func:`registration.fleet.residuals.residuals_at`; None unless computed,
+    as :func:`~registration.fleet.online.register_online` does).
     """
 
     layout: StateLayout
@@ -58,6 +62,8 @@ class OnlineResult:
     excluded: tuple[Exclusion, ...]
     n_plots_read: int
     n_plots_used: int
+    residuals: np.ndarray | None = field(default=None)
+    fit_check: ChiSquareCheck | None = field(default=None)
 
     def value(self, name: str) -> float:
         return float(self.estimate[self.layout.index(name)])
@@ -82,6 +88,8 @@ class OnlineResult:
         out = [f"{self.history.time.size} epochs, {self.n_plots_used} of {self.n_plots_read} plots used"]
         if self.consistency is not None:
             out.append(self.consistency.message())
+        if self.fit_check is not None:
+            out.append("residuals at the final estimate: " + self.fit_check.text())
         for row in self.rows():
             f, unit = (np.degrees, "deg") if row["unit"] == "rad" else (float, "m")
             out.append(f"  {row['label']:<36s} {f(row['estimate']):+12.4f} +- {f(row['sigma']):.4f} {unit}  {row['status']}")

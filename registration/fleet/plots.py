@@ -1,5 +1,6 @@
-"""PNG figures of a batch fleet registration (matplotlib, Agg): the estimates with their 2-sigma
-bars, a map of the plots before and after correction, and the histogram of normalised residuals.
+"""PNG figures of a fleet registration (matplotlib, Agg): the batch estimates with their 2-sigma
+bars or the online estimates over time with their 2-sigma bands, a map of the plots before and
+after correction, and the histogram of normalised residuals.
 
 Angles are drawn in degrees and ranges in metres; positions as longitude/latitude in degrees.
 """
@@ -16,7 +17,7 @@ from registration.fleet.files import ecef2geodetic
 from registration.fleet.problem import FleetProblem
 from registration.fleet.result import BatchResult
 
-__all__ = ["corrected_plot_positions", "plot_estimates", "plot_map", "plot_residuals"]
+__all__ = ["corrected_plot_positions", "plot_estimates", "plot_history", "plot_map", "plot_residuals"]
 
 
 def corrected_plot_positions(problem: FleetProblem, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -74,6 +75,36 @@ def plot_estimates(result: BatchResult, path, truth: dict | None = None) -> Path
     return Path(path)
 
 
+def plot_history(result, path, truth: dict | None = None) -> Path:
+    """The online filter's estimate of every free state over time (deg or m) with its 2-sigma band,
+    one panel per state; ``truth`` {state name: value (rad, m)} drawn as a dashed line."""
+    plt = pyplot()
+    layout, h = result.layout, result.history
+    free = layout.free
+    cols = 4
+    rows = max(1, -(-free.size // cols))
+    fig, axes = plt.subplots(rows, cols, figsize=(4 * cols, 2.4 * rows), sharex=True, squeeze=False)
+    for ax, i in zip(axes.flat, free):
+        k = np.degrees(1.0) if layout.units[i] == "rad" else 1.0
+        est, sig = h.estimate[:, i] * k, h.sigma[:, i] * k
+        ax.fill_between(h.time, est - 2 * sig, est + 2 * sig, color="tab:blue", alpha=0.25, lw=0)
+        ax.plot(h.time, est, color="tab:blue", lw=1)
+        if truth is not None:
+            ax.axhline(truth[layout.names[i]] * k, color="k", ls="--", lw=0.8)
+        ax.set_title(f"{layout.names[i]} ({'deg' if k != 1.0 else 'm'})", fontsize=8)
+        ax.tick_params(labelsize=7)
+        ax.grid(alpha=0.3)
+    for ax in list(axes.flat)[free.size:]:
+        ax.set_visible(False)
+    for ax in axes[-1]:
+        ax.set_xlabel("time (s)", fontsize=8)
+    fig.suptitle("Online estimates with 2σ bands" + (" (dashed: truth)" if truth is not None else ""))
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return Path(path)
+
+
 def plot_map(problem: FleetProblem, result: BatchResult, path) -> Path:
     """The plots with a range, as measured (left) and corrected by the estimates (right), in
     longitude/latitude (deg), one colour per target."""
@@ -98,8 +129,9 @@ def plot_map(problem: FleetProblem, result: BatchResult, path) -> Path:
     return Path(path)
 
 
-def plot_residuals(result: BatchResult, path) -> Path:
-    """Histogram of the normalised residuals per channel, with the standard normal density."""
+def plot_residuals(result: BatchResult, path, title: str | None = None) -> Path:
+    """Histogram of the normalised residuals per channel (``result.residuals``), with the standard
+    normal density; ``title`` defaults to the batch chi-square check."""
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(7, 4.5))
     grid = np.linspace(-5, 5, 201)
@@ -112,7 +144,7 @@ def plot_residuals(result: BatchResult, path) -> Path:
     ax.plot(grid, np.exp(-grid**2 / 2) / np.sqrt(2 * np.pi), "k--", lw=1, label="N(0, 1)")
     ax.set_xlabel("normalised residual (measured - predicted) / σ, clipped to ±6")
     ax.set_ylabel("density")
-    ax.set_title(result.chi_square.text(), fontsize=8)
+    ax.set_title(title if title is not None else result.chi_square.text(), fontsize=8)
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
     fig.tight_layout()

@@ -27,7 +27,7 @@ from registration.fleet.normal import Design, Evaluation, Normal, evaluate, make
 from registration.fleet.problem import Exclusion, FleetProblem
 from registration.fleet.schur import damped_step, determined_directions, masked_blocks, reduce
 
-__all__ = ["BatchOptions", "Fit", "fit", "levenberg_marquardt", "singular_blocks"]
+__all__ = ["BatchOptions", "Fit", "exclude_singular", "fit", "levenberg_marquardt", "singular_blocks"]
 
 LAMBDA_START = 1e-3
 LAMBDA_MAX = 1e16
@@ -127,7 +127,8 @@ def singular_blocks(design: Design, normal: Normal) -> np.ndarray:
     return np.flatnonzero(~(w[:, 0] > SINGULAR_BLOCK * w[:, -1]))
 
 
-def _exclude_singular(problem: FleetProblem, design: Design, bad: np.ndarray) -> FleetProblem:
+def exclude_singular(problem: FleetProblem, design: Design, bad: np.ndarray) -> FleetProblem:
+    """The problem without the plots of the windows ``bad`` (:func:`singular_blocks`), each recorded as an exclusion."""
     blk = design.blocks
     drop = np.zeros(problem.n_plots, dtype=bool)
     exclusions = []
@@ -153,7 +154,7 @@ def fit(problem: FleetProblem, options: BatchOptions | None = None) -> Fit:
     normal = normal_equations(design, start)
     bad = singular_blocks(design, normal)
     if bad.size:
-        return fit(_exclude_singular(problem, design, bad), options)
+        return fit(exclude_singular(problem, design, bad), options)
     ev, normal, _, it1, hist1 = levenberg_marquardt(design, start, np.zeros(0, dtype=np.int64), options,
                                                     TARGETS_FIRST, normal)
     ev, normal, converged, it2, hist2 = levenberg_marquardt(design, ev, problem.layout.free, options, 0.0, normal)

@@ -117,3 +117,31 @@ def test_fleet_needs_an_action_and_the_register_files(capsys):
     assert main(["fleet"]) == 2
     assert main(["fleet", "register", "--plots", "p.csv"]) == 2
     assert "--navigation" in capsys.readouterr().err
+
+
+def test_online_method_writes_the_history_and_ends_near_the_batch(simulated, tmp_path, capsys):
+    out = tmp_path / "online"
+    assert main([*_register_args(simulated, out), "--method", "online"]) == 0
+    text = capsys.readouterr().out
+    assert "online filter: 15 epochs" in text and "consistency: mean normalised innovation squared" in text
+    online = pd.read_csv(out / "estimates.csv")
+    batch = pd.read_csv(simulated / "estimates.csv")
+    assert list(online.columns) == ESTIMATE_COLUMNS
+    free = batch["status"] != "fixed"
+    assert (np.abs(online["estimate"] - batch["estimate"])[free] < 0.5 * batch["sigma"][free]).all()
+    assert (online["sigma"][~free] == 0).all() and (online["status"][~free] == "fixed").all()
+    history = pd.read_csv(out / "history.csv")
+    assert list(history.columns) == ["time_s", "object", "state", "unit", "estimate", "sigma"]
+    last = history[history["time_s"] == history["time_s"].max()].reset_index(drop=True)
+    np.testing.assert_allclose(last["estimate"], online["estimate"][free].to_numpy(), rtol=1e-12)
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["method"] == "online" and summary["consistency"]["status"] == "consistent"
+    assert summary["residuals_at_final_estimate"]["consistent"]
+
+
+def test_online_method_plots(simulated, tmp_path):
+    out = tmp_path / "online"
+    args = [a for a in _register_args(simulated, out) if a != "--no-plots"]
+    assert main([*args, "--method", "online"]) == 0
+    for png in ("estimates.png", "map.png", "residuals.png"):
+        assert (out / png).stat().st_size > 10_000

@@ -58,6 +58,10 @@ def test_asynchronous_fleet_ends_at_the_batch_solution(fleet):
     assert np.abs(_z(sc, online)).max() < 4.0
     assert online.consistency.ok and online.consistency.status == "consistent", online.consistency.message()
     assert online.status == batch.status
+    assert online.residuals.shape == batch.residuals.shape and online.fit_check.ok, online.fit_check.text()
+    both = np.isfinite(batch.residuals)
+    np.testing.assert_array_equal(np.isfinite(online.residuals), both)
+    assert np.abs(online.residuals[both] - batch.residuals[both]).max() < 0.2  # normalised units
 
 
 def test_history_tracks_the_estimate(fleet):
