@@ -9,9 +9,14 @@ Schur complement), ``batch`` (:func:`solve_batch`), ``result`` (:class:`BatchRes
 ``covariance``, ``observability``, ``online`` (:class:`FleetFilter`, :func:`register_online`: the
 same model epoch by epoch as plots arrive; ``online_epoch``, ``online_result``), ``scenario`` (:func:`fleet_scenario`), ``files`` (CSV/Parquet tables in
 degrees: :func:`read_fleet_tables`, :func:`write_fleet_tables`), ``plots`` (PNG figures of a result). See docs/fleet.md.
+``association`` (:func:`associate_and_register`: plots without target ids associated across sensors jointly
+with the registration; docs/association.md), ``clutter`` (:func:`association_scenario`: simulated plots
+without ids, with misses and clutter, and :func:`association_scores`).
 """
 
+from registration.fleet.association import AssociationOptions, AssociationResult, associate_and_register
 from registration.fleet.batch import solve_batch
+from registration.fleet.clutter import AssociationScenario, association_scenario, association_scores
 from registration.fleet.covariance import FusedTargets
 from registration.fleet.files import FleetTables, read_fleet_tables, write_fleet_tables
 from registration.fleet.online import FleetFilter, OnlineOptions, register_online
@@ -24,3 +29,5 @@ from registration.fleet.solver import BatchOptions
 __all__ = ["BatchOptions", "BatchResult", "ChiSquareCheck", "Exclusion", "FleetFilter", "FleetProblem", "FleetScenario",
            "FleetTables", "OnlineHistory", "OnlineOptions", "OnlineResult", "register_online",
            "FusedTargets", "build_problem", "fleet_scenario", "read_fleet_tables", "solve_batch", "write_fleet_tables"]
+__all__ += ["AssociationOptions", "AssociationResult", "AssociationScenario", "associate_and_register",
+            "association_scenario", "association_scores"]

@@ -1,0 +1,277 @@
+"""Association of plots across sensors without target ids, jointly with the registration:
+:func:`associate_and_register`.
+
+Which plot of one radar and which of another are the same aircraft is unknown while the biases
+are unknown, and the biases cannot be estimated until that is known. Both are solved together,
+by iterating: associate under the current estimate and its covariance, register the associated
+plots with :func:`~registration.fleet.batch.solve_batch`, associate again with the new estimate
+and covariance, until the association stops changing (at most ``max_iterations`` passes).
+
+Sensors plot at their own times, so plots of different sensors never share an instant. The
+association therefore works on tracklets, not on plots:
+
+1. **Tracks per sensor** (:mod:`registration.fleet.association_tracks`). A sensor's errors are
+   the same for all its plots, so its plots are linked over time without the registration:
+   constant-velocity Kalman tracks in ECEF, one global assignment per scan. Plots in no track of
+   ``min_track_plots`` plots are clutter.
+2. **Tracklets across sensors, per window** (:mod:`registration.fleet.association_match`). Each
+   track is cut in windows of ``window_s`` s on a grid common to all sensors, each piece fitted by
+   a straight line in ECEF with its covariance and its sensitivity to the registration states.
+   In each window the sensors' tracklets are assigned to each other by global assignments whose
+   cost is the negative log-likelihood of two lines being the same target, with the registration
+   covariance propagated through the Jacobians of the generated ``fleet_residual`` (gating with
+   the bias uncertainty included). Groups of consecutive windows sharing sensor tracks are chained
+   into targets.
+3. **Registration** of the plots of groups seen by two or more sensors; the rest are reported
+   unassociated (clutter, short pieces, targets one sensor alone saw).
+
+Assumptions: straight-line motion over a window (20 s by default; the tracks themselves follow
+turns); a sensor reports each target at most once per scan; the starting covariance
+(``initial_sigma_*`` or the tables' finite priors) covers the true errors.
+See docs/association.md for the method and its measured performance.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from registration.fleet.association_geometry import Assigner, plot_geometry
+from registration.fleet.association_match import chain_groups, group_tracklets, make_tracklets
+from registration.fleet.association_tracks import sensor_tracks
+from registration.fleet.batch import solve_batch
+from registration.fleet.problem import FleetProblem, build_problem
+from registration.fleet.result import BatchResult
+from registration.fleet.solver import BatchOptions
+from registration.fleet.tables import read_table
+
+__all__ = ["AssociationOptions", "AssociationResult", "associate_and_register"]
+
+
+@dataclass(frozen=True)
+class AssociationOptions:
+    """Settings of :func:`associate_and_register` (SI units, radians).
+
+    window_s: tracklet window (s), also the batch's target window. gate_probability: gates are this
+    quantile of chi-square. max_speed (m/s): a new track's velocity sigma. accel_sigma (m/s^2): the
+    tracks' white-acceleration noise. max_missed: scans in a row without a plot that close a track.
+    min_track_plots, min_tracklet_plots: shorter tracks are clutter, shorter pieces are left out.
+    max_iterations: association passes at most. initial_sigma_attitude, initial_sigma_angle_bias
+    (rad), initial_sigma_range_bias (m): the covariance of the first pass for states without a
+    finite prior in the tables. iteration_plots: the solves between passes use at most about this
+    many plots (whole windows, evenly spread); the final solve uses all. batch: the solver's options
+    (its window_s is replaced by this window_s).
+    """
+
+    window_s: float = 20.0
+    gate_probability: float = 0.999
+    max_speed: float = 400.0
+    accel_sigma: float = 20.0
+    max_missed: int = 3
+    min_track_plots: int = 5
+    min_tracklet_plots: int = 3
+    max_iterations: int = 6
+    initial_sigma_attitude: float = float(np.radians(1.0))
+    initial_sigma_angle_bias: float = float(np.radians(5.0))
+    initial_sigma_range_bias: float = 500.0
+    iteration_plots: int = 40_000
+    batch: BatchOptions = field(default_factory=BatchOptions)
+
+    def __post_init__(self):
+        checks = {"window_s": self.window_s > 0, "gate_probability": 0 < self.gate_probability < 1,
+                  "max_speed": self.max_speed > 0, "accel_sigma": self.accel_sigma > 0,
+                  "max_missed": self.max_missed >= 0, "min_track_plots": self.min_track_plots >= 2,
+                  "min_tracklet_plots": self.min_tracklet_plots >= 2, "max_iterations": self.max_iterations >= 1,
+                  "initial_sigma_attitude": self.initial_sigma_attitude > 0,
+                  "initial_sigma_angle_bias": self.initial_sigma_angle_bias > 0,
+                  "initial_sigma_range_bias": self.initial_sigma_range_bias > 0,
+                  "iteration_plots": self.iteration_plots >= 1}
+        bad = [k for k, ok in checks.items() if not ok]
+        if bad:
+            raise ValueError(f"AssociationOptions: invalid {', '.join(f'{k}={getattr(self, k)!r}' for k in bad)} "
+                             "(windows, sigmas, speeds > 0; gate_probability in (0, 1); counts >= their minimum)")
+
+
+@dataclass
+class AssociationResult:
+    """Target labels found for the plots and the registration of the associated plots.
+
+    ``labels`` (rows of the input plots table,): the target each plot was given, '' for a plot
+    left unassociated. ``batch``: the :class:`BatchResult` of the final registration (its
+    ``residuals``, ``plot_target`` and ``plot_sensor`` are per input row too). ``problem``: the
+    registered problem. ``unassociated_rows``: input rows left unassociated; per sensor id
+    ``unassociated_by_sensor``; of these ``n_clutter`` were in no track or piece long enough and
+    ``n_single_sensor`` in a piece no other sensor's matched. ``iterations``: association passes;
+    ``converged``: the last pass repeated the one before; ``changes``: plots whose label changed,
+    per pass after the first. Times (s): ``seconds_total``, ``seconds_assignment`` (inside
+    ``linear_sum_assignment``), ``seconds_registration`` (inside ``solve_batch``).
+    """
+
+    labels: np.ndarray
+    batch: BatchResult
+    problem: FleetProblem
+    unassociated_rows: np.ndarray
+    unassociated_by_sensor: dict
+    n_clutter: int
+    n_single_sensor: int
+    iterations: int
+    converged: bool
+    changes: list
+    seconds_total: float
+    seconds_assignment: float
+    seconds_registration: float
+
+    @property
+    def n_targets(self) -> int:
+        return int(np.unique(self.labels[self.labels != ""]).size)
+
+    @property
+    def n_associated(self) -> int:
+        return int(np.count_nonzero(self.labels != ""))
+
+    @property
+    def assignment_share(self) -> float:
+        """Share of the total time spent in the assignments."""
+        return self.seconds_assignment / self.seconds_total if self.seconds_total > 0 else 0.0
+
+    def lines(self) -> list[str]:
+        out = [f"association: {self.n_targets} targets, {self.n_associated} plots associated, "
+               f"{self.unassociated_rows.size} unassociated ({self.n_clutter} clutter or short, "
+               f"{self.n_single_sensor} seen by one sensor only), {self.iterations} passes "
+               f"({'converged' if self.converged else 'NOT converged'}), {self.seconds_total:.2f} s "
+               f"({100 * self.assignment_share:.1f} % in assignment)"]
+        out += [f"  unassociated plots of sensor {s}: {n}" for s, n in self.unassociated_by_sensor.items() if n]
+        return out + self.batch.lines()
+
+
+def _placeholder_problem(plots, sensors, navigation, platforms) -> FleetProblem:
+    """The checked problem of all plots under one placeholder target (the ``target`` column, if
+    any, is ignored)."""
+    table = read_table("plots", plots, ("time", "sensor"))
+    if table.n_rows == 0:
+        raise ValueError("plots: no plots to associate (the table is empty)")
+    columns = {k: v for k, v in table.columns.items() if k != "target"}
+    columns["target"] = np.full(table.n_rows, "?")
+    problem = build_problem(columns, sensors, navigation, platforms, None)
+    if problem.n_plots == 0:
+        raise ValueError(f"plots: association needs plots of at least two sensors; all {table.n_rows} plots are of "
+                         f"sensor {str(table.ids('sensor')[0])!r}")
+    return problem
+
+
+def _initial_covariance(problem: FleetProblem, options: AssociationOptions) -> np.ndarray:
+    layout = problem.layout
+    default = {"heading_error": options.initial_sigma_attitude, "pitch_error": options.initial_sigma_attitude,
+               "roll_error": options.initial_sigma_attitude, "range_bias": options.initial_sigma_range_bias,
+               "bearing_bias": options.initial_sigma_angle_bias, "elevation_bias": options.initial_sigma_angle_bias}
+    prior = layout.prior_sigma
+    sigma = np.where(np.isfinite(prior), prior, [default[q] for q in layout.quantities])
+    return np.diag(sigma**2)
+
+
+def _labels(problem: FleetProblem, tl, group: np.ndarray, chain: np.ndarray) -> np.ndarray:
+    """(N,) label of each plot ('' when its group has one sensor), numbered by first input row."""
+    n_groups = chain.size
+    sensors_in = np.zeros(n_groups, dtype=np.int64)
+    pairs = np.unique(np.stack([group, tl.sensor]), axis=1) if group.size else np.zeros((2, 0), dtype=np.int64)
+    np.add.at(sensors_in, pairs[0], 1)
+    plot_group = np.where(tl.of_plot >= 0, group[np.maximum(tl.of_plot, 0)], -1)
+    ok = (plot_group >= 0) & (sensors_in[np.maximum(plot_group, 0)] >= 2)
+    plot_chain = np.where(ok, chain[np.maximum(plot_group, 0)], -1)
+    out = np.full(problem.n_plots, "", dtype=object)
+    order = np.argsort(problem.row, kind="stable")
+    seen = plot_chain[order]
+    chains, first = np.unique(seen[seen >= 0], return_index=True)
+    names = {int(c): f"a{k + 1}" for k, c in enumerate(chains[np.argsort(first)])}
+    out[ok] = [names[int(c)] for c in plot_chain[ok]]
+    return out.astype(str)
+
+
+def _labelled(problem: FleetProblem, labels: np.ndarray, window_s: float, max_plots: int | None) -> FleetProblem:
+    """The problem of the labelled plots (at most about ``max_plots``: whole windows, evenly spread)."""
+    keep = labels != ""
+    if max_plots is not None and keep.sum() > max_plots:
+        window = np.floor(problem.time / window_s).astype(np.int64)
+        keep &= window % int(np.ceil(keep.sum() / max_plots)) == 0
+    if not keep.any():
+        raise ValueError("association: no plots could be associated across two sensors (see AssociationOptions: "
+                         "the gate and the initial sigmas)")
+    sub = problem.drop_plots(~keep, ())
+    ids, index = np.unique(labels[keep], return_inverse=True)
+    return replace(sub, target=index.astype(np.int64), target_ids=tuple(str(i) for i in ids))
+
+
+def _associate(problem: FleetProblem, track: np.ndarray, x: np.ndarray, P: np.ndarray, options: AssociationOptions,
+               assigner: Assigner) -> tuple[np.ndarray, np.ndarray]:
+    """One association pass under the estimate ``x`` and covariance ``P``: (labels (N,), tracklet of
+    each plot (N,), -1 for none)."""
+    geom = plot_geometry(problem, x)
+    tl = make_tracklets(problem, geom, track, options.window_s, options.min_tracklet_plots)
+    group = group_tracklets(problem, x, tl, P, options.gate_probability, assigner)
+    chain = chain_groups(tl, group, assigner)
+    return _labels(problem, tl, group, chain), tl.of_plot
+
+
+def _report(problem: FleetProblem, labels: np.ndarray, of_plot: np.ndarray) -> dict:
+    """The unassociated plots: input rows, counts per sensor, clutter and single-sensor counts."""
+    out = labels == ""
+    rows = np.sort(problem.row[out])
+    per_sensor = np.bincount(problem.sensor[out], minlength=len(problem.sensor_ids))
+    clutter = int(np.count_nonzero(out & (of_plot < 0)))
+    return {"unassociated_rows": rows, "n_clutter": clutter, "n_single_sensor": int(out.sum()) - clutter,
+            "unassociated_by_sensor": {s: int(n) for s, n in zip(problem.sensor_ids, per_sensor)}}
+
+
+def associate_and_register(plots, sensors, navigation, platforms=None, references=None,
+                           options: AssociationOptions | None = None) -> AssociationResult:
+    """Associate plots that carry no target ids across sensors and register the fleet with them.
+
+    ``plots``, ``sensors``, ``navigation``, ``platforms``: the long-form tables of
+    :mod:`registration.fleet.tables` (SI units, radians); ``plots`` needs ``time``, ``sensor`` and
+    the measured channels, and a ``target`` column, if present, is ignored. ``references`` is not
+    supported yet (their targets have no link to the plots): passing one is an error. ValueError
+    for an empty plots table, plots of one sensor only, or any error of
+    :func:`~registration.fleet.problem.build_problem` (unknown sensor, bad values; the message names
+    the table and row). Returns an :class:`AssociationResult`; the method is in the module docstring.
+    """
+    t0 = time.perf_counter()
+    if references is not None:
+        raise ValueError("references: not supported by associate_and_register (plots without target ids cannot be "
+                         "tied to a reference target); register without them or give the plots target ids")
+    options = options or AssociationOptions()
+    batch_options = replace(options.batch, window_s=options.window_s)
+    problem = _placeholder_problem(plots, sensors, navigation, platforms)
+    assigner = Assigner()
+    x, P = np.zeros(problem.layout.n), _initial_covariance(problem, options)
+    track = sensor_tracks(problem.time, problem.sensor, plot_geometry(problem, x), assigner,
+                          max_speed=options.max_speed, accel_sigma=options.accel_sigma,
+                          gate_probability=options.gate_probability, max_missed=options.max_missed,
+                          min_plots=options.min_track_plots)
+    labels, previous, changes, t_solve, converged = None, None, [], 0.0, False
+    for iteration in range(1, options.max_iterations + 1):
+        labels, of_plot = _associate(problem, track, x, P, options, assigner)
+        if previous is not None:
+            changes.append(int(np.count_nonzero(labels != previous)))
+            if changes[-1] == 0:
+                converged = True
+                break
+        if iteration == options.max_iterations:
+            break
+        previous = labels
+        t1 = time.perf_counter()
+        step = solve_batch(_labelled(problem, labels, options.window_s, options.iteration_plots), batch_options)
+        t_solve += time.perf_counter() - t1
+        x, P = step.estimate, step.covariance
+    final = _labelled(problem, labels, options.window_s, None)
+    t1 = time.perf_counter()
+    result = solve_batch(final, batch_options)
+    t_solve += time.perf_counter() - t1
+    n_rows = problem.n_input_plots
+    row_labels = np.full(n_rows, "", dtype=object)
+    row_labels[problem.row] = labels
+    return AssociationResult(labels=row_labels.astype(str), batch=result, problem=final, iterations=iteration,
+                             converged=converged, changes=changes, seconds_total=time.perf_counter() - t0,
+                             seconds_assignment=assigner.seconds, seconds_registration=t_solve,
+                             **_report(problem, labels, of_plot))
