@@ -196,3 +196,12 @@ def test_two_ships_batch_and_online_share_the_problem():
     batch = solve_batch(build_problem(**tables), BatchOptions(window_s=0))
     online = register_online(**tables, options=OnlineOptions(window_s=0.0), prior=batch)
     assert online.layout.names == batch.layout.names
+
+
+def test_nees_over_monte_carlo_runs_is_consistent():
+    """Ten fleets from zero: the mean NEES of the estimated states inside its 95 % band."""
+    from examples.fleet_online_nees import main
+
+    out = main(["--runs", "10", "--duration", "120"])
+    lo, hi = out["band"]
+    assert lo < out["online"] < hi, out
