@@ -5,9 +5,9 @@ Its information about the states is the batch problem's, restricted to those plo
 the filter's current estimate ``x-`` (docs/fleet.md, "Online filter"):
 
 1. each target window's trajectory coefficients are fitted to its plots with the states held at
-   ``x-`` (Levenberg-Marquardt on the coefficients alone, :func:`registration.fleet.solver.levenberg_marquardt`,
-   from the window means of the plots corrected by ``x-``): the fitted plots, as the two-ship filter's
-   ``fitted`` linearisation uses them;
+   ``x-`` (:func:`fit_windows`: Gauss-Newton on the coefficients alone, window by window, from the
+   window means of the plots corrected by ``x-``; Levenberg-Marquardt if a step fails to lower the
+   sum of squares): the fitted plots, as the two-ship filter's ``fitted`` linearisation uses them;
 2. there the plots' whitened rows give the normal equations, and the windows are eliminated by the
    Schur complement (:func:`registration.fleet.schur.reduce`): the states' information ``L`` and the
    gradient ``b`` of the epoch, so that ``L dx = b`` is the Gauss-Newton step from ``x-``.
@@ -26,12 +26,12 @@ import numpy as np
 from registration.fleet.blocks import make_blocks
 from registration.fleet.initial import initial_coefficients
 from registration.fleet.inputs import References
-from registration.fleet.normal import evaluate, make_design, normal_equations
+from registration.fleet.normal import Design, Evaluation, Normal, evaluate, make_design, normal_equations
 from registration.fleet.problem import FleetProblem
-from registration.fleet.schur import reduce
+from registration.fleet.schur import masked_blocks, reduce
 from registration.fleet.solver import BatchOptions, levenberg_marquardt, singular_blocks
 
-__all__ = ["EpochInformation", "epoch_information", "informative_plots"]
+__all__ = ["EpochInformation", "epoch_information", "fit_windows", "informative_plots"]
 
 
 @dataclass(frozen=True)
@@ -56,6 +56,26 @@ def informative_plots(target: np.ndarray, sensor: np.ndarray, ref_target: np.nda
     has_ref = np.zeros(n_sensors.size, dtype=bool)
     has_ref[ref_target[ref_target < n_sensors.size]] = True
     return (n_sensors[target] >= 2) | has_ref[target]
+
+
+def fit_windows(design: Design, start: Evaluation, normal: Normal, options: BatchOptions) -> tuple[Evaluation, Normal]:
+    """The window coefficients fitted with the states held (Gauss-Newton, each window's step
+    ``V_b^-1 b_c,b``), until the predicted reduction of the sum of squares is below
+    ``options.tolerance``; Levenberg-Marquardt from there if a step does not lower it."""
+    blk = design.blocks
+    mask = np.repeat(blk.coef_mask, 3, axis=1)
+    ev = start
+    for _ in range(options.max_iterations):
+        dc = np.linalg.solve(masked_blocks(blk, normal.V), normal.b_c[:, :, None])[:, :, 0] * mask
+        if not float(np.sum(dc * normal.b_c)) > options.tolerance:
+            return ev, normal
+        trial = evaluate(design, ev.x, ev.coef + dc.reshape(ev.coef.shape))
+        if not trial.cost < ev.cost:
+            break
+        ev = trial
+        normal = normal_equations(design, ev)
+    ev, normal, _, _, _ = levenberg_marquardt(design, ev, np.zeros(0, dtype=np.int64), options, 0.0, normal)
+    return ev, normal
 
 
 def _restricted(problem: FleetProblem, keep: np.ndarray) -> FleetProblem:
@@ -88,7 +108,7 @@ def epoch_information(problem: FleetProblem, x: np.ndarray, options: BatchOption
         problem = _restricted(problem, keep)
     else:
         return None
-    ev, normal, _, _, _ = levenberg_marquardt(design, start, np.zeros(0, dtype=np.int64), options, 0.0, normal)
+    ev, normal = fit_windows(design, start, normal, options)
     red = reduce(design.blocks, normal, 0.0)
     n = design.n_state
     return EpochInformation(red.S[:n, :n], red.r[:n], problem.n_plots, float(ev.cost),
