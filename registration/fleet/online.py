@@ -210,7 +210,8 @@ class FleetFilter:
     def _problem(self, plots: dict) -> FleetProblem:
         target_ids = tuple(dict.fromkeys(plots["target"]))
         refs = self.references
-        sel = np.isin(refs.target, target_ids)
+        t0, t1 = plots["time"].min() - SAME_INSTANT_S, plots["time"].max() + SAME_INSTANT_S
+        sel = np.isin(refs.target, target_ids) & (refs.time >= t0) & (refs.time <= t1)  # this epoch's only
         refs = References(refs.target[sel], refs.time[sel], refs.p_ecef[sel], refs.sigma[sel])
         return FleetProblem(
             platform_ids=tuple(self.platform_ids), sensor_ids=self.specs.ids, target_ids=target_ids,
