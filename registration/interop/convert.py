@@ -33,7 +33,7 @@ from registration.fleet.navigation import navigation_at, platform_navigation
 from registration.fleet.tables import CHANNELS, read_table
 from registration.interop.world import LocalFrame
 
-__all__ = ["EPOCH", "MODEL_CHANNELS", "POSITION_MAPPING", "STONESOUP_VERSION", "measurement_model", "model_kind",
+__all__ = ["EPOCH", "MODEL_CHANNELS", "POSITION_MAPPING", "STONESOUP_VERSION", "measurement_model", "model_kind", "model_pose",
            "measured_plot", "ss_covariance", "ss_vector", "tables_to_detections", "mounted_radar"]
 
 #: Default time origin of the tables (seconds since this instant, naive UTC).
@@ -51,6 +51,23 @@ def model_kind(model, sensor) -> type:
             return kind
     raise ValueError(f"sensor {sensor!r}: measurement model {type(model).__name__} is not supported "
                      f"(supported: {', '.join(k.__name__ for k in MODEL_CHANNELS)})")
+
+
+def model_pose(model, sensor) -> tuple[np.ndarray, np.ndarray]:
+    """The sensor's world position (3,) m (a 2-D model's height is 0) and Stone Soup orientation (3,)
+    rad held by ``model``. ValueError naming the sensor for a model without pose, or with the
+    all-zero pose that Stone Soup fills in when the sensor has no platform position and orientation."""
+    t, o = model.translation_offset, model.rotation_offset
+    if t is None or o is None:
+        raise ValueError(f"sensor {sensor!r}: its {type(model).__name__} has no translation_offset/rotation_offset "
+                         "(the platform lacks position or orientation)")
+    t, o = np.asarray(t, dtype=float).ravel(), np.asarray(o, dtype=float).ravel()
+    if not (np.any(t) or np.any(o)):
+        raise ValueError(f"sensor {sensor!r}: its {type(model).__name__} has the default pose (position 0, orientation "
+                         "0), which Stone Soup gives a sensor whose platform lacks position and orientation")
+    p = np.zeros(3)
+    p[:min(3, t.size)] = t[:3]
+    return p, o[:3]
 
 
 def ss_vector(kind: type, plot) -> StateVector:

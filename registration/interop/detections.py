@@ -18,7 +18,7 @@ from registration.interop.requires import STONESOUP_VERSION
 from stonesoup.types.detection import Clutter
 
 from registration.fleet.tables import CHANNELS, NAV_COLUMNS, read_table
-from registration.interop.convert import MODEL_CHANNELS, measured_plot, model_kind
+from registration.interop.convert import MODEL_CHANNELS, measured_plot, model_kind, model_pose
 from registration.interop.world import LocalFrame
 
 __all__ = ["STONESOUP_VERSION", "detections_to_tables"]
@@ -44,11 +44,8 @@ def _collect(detections: Iterable, sensor_key: str, target_key: str) -> list:
         sensor = det.metadata.get(sensor_key)
         if sensor is None:
             raise ValueError(f"detection {k} at {det.timestamp}: no metadata[{sensor_key!r}] naming its sensor")
-        model = det.measurement_model
-        model_kind(model, sensor)
-        if model.rotation_offset is None or model.translation_offset is None:
-            raise ValueError(f"sensor {sensor!r}: detection {k} has a model without rotation_offset/translation_offset "
-                             "(its platform has no position or orientation)")
+        model_kind(det.measurement_model, sensor)
+        model_pose(det.measurement_model, sensor)
         target = _target_of(det, target_key)
         if target is None:
             raise ValueError(f"sensor {sensor!r}: detection {k} at {det.timestamp} has no target id "
@@ -121,13 +118,6 @@ def _navigation_table(platform: np.ndarray, time: np.ndarray, nav: np.ndarray, s
     return {"platform": platform[keep], "time": time[keep], **{c: nav[keep, k] for k, c in enumerate(NAV_COLUMNS)}}
 
 
-def _pose(det) -> tuple[np.ndarray, np.ndarray]:
-    p = np.zeros(3)
-    t = np.asarray(det.measurement_model.translation_offset, dtype=float).ravel()
-    p[:min(3, t.size)] = t[:3]
-    return p, np.asarray(det.measurement_model.rotation_offset, dtype=float).ravel()[:3]
-
-
 def detections_to_tables(detections: Iterable, frame: LocalFrame, sensors=None, epoch: datetime.datetime | None = None,
                          *, sensor_key: str = "sensor", target_key: str = "target") -> dict:
     """The ``plots``, ``sensors`` and ``navigation`` tables (dicts of numpy columns, SI units,
@@ -147,7 +137,7 @@ def detections_to_tables(detections: Iterable, frame: LocalFrame, sensors=None, 
     time = np.array([(det.timestamp - epoch).total_seconds() for _, _, det in rows])
     sensor = np.array([r[0] for r in rows])
     plot = np.stack([measured_plot(det, s) for s, _, det in rows])
-    poses = [_pose(det) for _, _, det in rows]
+    poses = [model_pose(det.measurement_model, s) for s, _, det in rows]
     lever = np.stack([info[s][1] for s in sensor])
     nav = frame.navigation(np.stack([p for p, _ in poses]), np.stack([o for _, o in poses]), lever)
     platform = np.array([info[s][0] for s in sensor])

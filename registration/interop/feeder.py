@@ -10,7 +10,8 @@ A result is anything with ``layout.names`` (state names ``<platform>:heading_err
   ``reported - attitude error estimate`` (the lever arm turned with it);
 * **noise**: ``R + J P J^T``, R the model's noise, P the 6x6 covariance of P's three attitude
   errors and s's three biases, J = d plot / d(attitude errors, biases) from the generated
-  ``fleet_residual`` at the corrected target position (``fleet_plot2ecef``). A state the result
+  ``fleet_residual`` at the corrected target position (``fleet_plot2ecef``; a 2-D detection is
+  placed in the deck plane, elevation 0). A state the result
   holds fixed has zero covariance; a non-finite covariance (a state the data do not determine) is
   an error naming the states.
 
@@ -33,7 +34,7 @@ from stonesoup.types.array import CovarianceMatrix, StateVector
 from registration import _codegen
 from registration.core.angles import wrap_angle
 from registration.fleet.tables import ATTITUDE_ERRORS, CHANNELS, read_table
-from registration.interop.convert import MODEL_CHANNELS, measured_plot, model_kind, ss_covariance, ss_vector
+from registration.interop.convert import MODEL_CHANNELS, measured_plot, model_kind, model_pose, ss_covariance, ss_vector
 from registration.interop.world import LocalFrame
 
 __all__ = ["STONESOUP_VERSION", "RegistrationCorrector", "RegisteredDetectionFeeder"]
@@ -95,16 +96,11 @@ class RegistrationCorrector:
         sensor = str(sensor)
         model = detection.measurement_model
         kind = model_kind(model, sensor)
-        if model.rotation_offset is None or model.translation_offset is None:
-            raise ValueError(f"sensor {sensor!r}: its {kind.__name__} has no rotation_offset/translation_offset "
-                             "(the platform lacks position or orientation)")
+        p, orientation = model_pose(model, sensor)
         index = self.states(sensor, kind)
         x, P = self._values(index)
-        p = np.zeros(3)
-        t = np.asarray(model.translation_offset, dtype=float).ravel()
-        p[:min(3, t.size)] = t[:3]
         lever = self._sensors[sensor][1]
-        nav = self.frame.navigation(p, np.asarray(model.rotation_offset, dtype=float).ravel()[:3], lever)[0]
+        nav = self.frame.navigation(p, orientation, lever)[0]
         plot = measured_plot(detection, sensor)
         measured = np.where(np.isfinite(plot), plot, 0.0)
         corrected = measured - x[3:]
@@ -113,14 +109,16 @@ class RegistrationCorrector:
         fixed_nav[3:] -= x[:3]
         fixed_nav[3] = wrap_angle(fixed_nav[3])
         p_world, orientation = self.frame.sensor_pose(fixed_nav, lever)
+        size = np.asarray(model.translation_offset).size
         noise = np.asarray(model.covar(), dtype=float)
         if self.registration_noise:
             noise = noise + self._registration_noise(kind, sensor, index, nav, x, P, lever, measured)
         new_model = kind(ndim_state=model.ndim_state, mapping=model.mapping, noise_covar=CovarianceMatrix(noise),
-                         translation_offset=StateVector(p_world[0][:t.size]), rotation_offset=StateVector(orientation[0]))
+                         translation_offset=StateVector(p_world[0][:size]), rotation_offset=StateVector(orientation[0]))
         out = copy.copy(detection)
         out.state_vector = ss_vector(kind, corrected)
         out.measurement_model = new_model
+        out.metadata = dict(detection.metadata)
         return out
 
     def _registration_noise(self, kind, sensor, index, nav, x, P, lever, measured) -> np.ndarray:

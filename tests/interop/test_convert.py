@@ -13,6 +13,7 @@ from stonesoup.models.measurement.linear import LinearGaussian
 from stonesoup.models.measurement.nonlinear import (
     CartesianToBearingRange, CartesianToBearingRangeRate, CartesianToElevationBearingRange,
 )
+from stonesoup.sensor.radar import RadarElevationBearingRange
 from stonesoup.types.detection import Clutter, Detection
 from stonesoup.types.state import State
 
@@ -183,5 +184,9 @@ def test_bad_detections_and_sensors_are_refused_clearly():
     with pytest.raises(ValueError, match="R.*orientation"):
         detections_to_tables([Detection(z, measurement_model=bare, timestamp=EPOCH,
                                          metadata={"sensor": "R", "target": "T"})], FRAME)
+    loose = RadarElevationBearingRange(ndim_state=6, position_mapping=(0, 2, 4), noise_covar=np.eye(3))  # no platform
+    with pytest.raises(ValueError, match="R.*default pose"):
+        detections_to_tables([Detection(z, measurement_model=loose.measurement_model, timestamp=EPOCH,
+                                        metadata={"sensor": "R", "target": "T"})], FRAME)
     with pytest.raises(ValueError, match="ESM.*bearing"):
         measurement_model(FRAME, nav, (0, 0, 0), (np.nan, 1e-3, 1e-3), "ESM")

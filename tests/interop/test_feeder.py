@@ -5,6 +5,7 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 from stonesoup.models.measurement.nonlinear import CartesianToBearingRangeRate, CartesianToElevationBearingRange
+from stonesoup.sensor.radar import RadarElevationBearingRange
 from stonesoup.types.detection import Detection
 from stonesoup.types.state import State
 
@@ -153,6 +154,9 @@ def test_detections_that_cannot_be_corrected_are_refused_by_name(quiet_fleet):
     bare.rotation_offset = None
     with pytest.raises(ValueError, match="B-3D.*orientation"):
         corrector.correct(Detection(det.state_vector, measurement_model=bare, metadata={"sensor": "B-3D"}))
+    loose = RadarElevationBearingRange(ndim_state=6, position_mapping=(0, 2, 4), noise_covar=np.eye(3))  # no platform
+    with pytest.raises(ValueError, match="B-3D.*default pose"):
+        corrector.correct(Detection(det.state_vector, measurement_model=loose.measurement_model, metadata={"sensor": "B-3D"}))
     cov = np.zeros((len(names), len(names)))
     cov[names.index("B:heading_error"), names.index("B:heading_error")] = np.inf
     with pytest.raises(ValueError, match="B:heading_error"):
