@@ -92,7 +92,9 @@ long long registration_scan_runs(casadi_fn f, long long runs, long long n,
  * the outputs listed in finite_out[0 .. n_finite) must hold only finite values, else
  * REGISTRATION_STEP_NON_FINITE is returned and the state is left as it was. A non-zero flag of f
  * returns REGISTRATION_STEP_FAILED. On success the first n_carry outputs are copied into the
- * first n_carry inputs (the new state) and 0 is returned.
+ * first n_carry inputs (the new state), each output deliver_out[m] (m < n_deliver) is copied to
+ * deliver_ptr[m], which then advances past it (the caller's results of consecutive steps land in
+ * consecutive rows of its arrays; it resets the pointers before they run out), and 0 is returned.
  */
 #define REGISTRATION_STEP_OUT_OF_BOUNDS 1
 #define REGISTRATION_STEP_NON_FINITE 2
@@ -112,6 +114,9 @@ typedef struct {
     double **res;
     casadi_int *iw;
     double *w;
+    int n_deliver;
+    const int *deliver_out;
+    double **deliver_ptr;
 } registration_stepper;
 
 int registration_step(const registration_stepper *s)
@@ -133,6 +138,13 @@ int registration_step(const registration_stepper *s)
         double *dst = s->in_ptr[j];
         const double *src = s->out_ptr[j];
         for (long long k = 0; k < s->in_size[j]; ++k) dst[k] = src[k];
+    }
+    for (int m = 0; m < s->n_deliver; ++m) {
+        int j = s->deliver_out[m];
+        double *dst = s->deliver_ptr[m];
+        const double *src = s->out_ptr[j];
+        for (long long k = 0; k < s->out_size[j]; ++k) dst[k] = src[k];
+        s->deliver_ptr[m] = dst + s->out_size[j];
     }
     return 0;
 }

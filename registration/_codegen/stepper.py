@@ -45,6 +45,7 @@ class _StepperStruct(ctypes.Structure):
         ("out_size", ctypes.c_void_p), ("low", ctypes.c_void_p), ("high", ctypes.c_void_p),
         ("finite_out", ctypes.c_void_p), ("arg", ctypes.c_void_p), ("res", ctypes.c_void_p),
         ("iw", ctypes.c_void_p), ("w", ctypes.c_void_p),
+        ("n_deliver", ctypes.c_int), ("deliver_out", ctypes.c_void_p), ("deliver_ptr", ctypes.c_void_p),
     ]
 
 
@@ -69,18 +70,23 @@ def _from_column_major(buf: np.ndarray, shape: tuple[int, int]):
     return buf if c == 1 else buf.reshape(c, r).T
 
 
-def _results_function(views: list[np.ndarray]):
+def _results_function(views: list[np.ndarray], keys: tuple[str, ...] | None):
     """``f()``: a new copy of each view (of an output buffer, at its core shape), a float for a
-    one-element view. Written out for the views, so a step's results cost one copy per output."""
-    return functools.partial(_results_template(tuple(v.shape == (1,) for v in views)), *views)
+    one-element view; a tuple, or a dict under ``keys``. Written out for the views, so a step's
+    results cost one copy per output."""
+    return functools.partial(_results_template(tuple(v.shape == (1,) for v in views), keys), *views)
 
 
 @functools.lru_cache(maxsize=None)
-def _results_template(scalars: tuple[bool, ...]):
-    """``f(*views)`` for views of which those flagged in ``scalars`` become floats (compiled once per pattern)."""
+def _results_template(scalars: tuple[bool, ...], keys: tuple[str, ...] | None):
+    """``f(*views)`` for views of which those flagged in ``scalars`` become floats, returning a
+    tuple or (``keys`` given) a dict; compiled once per pattern."""
     names = [f"v{i}" for i in range(len(scalars))]
-    parts = [f"float({n}[0])" if scalar else f"{n}.copy()" for n, scalar in zip(names, scalars)]
-    body = f"({', '.join(parts)},)" if parts else "()"
+    parts = [f"{n}.item()" if scalar else f"{n}.copy()" for n, scalar in zip(names, scalars)]
+    if keys is not None:
+        body = "{" + ", ".join(f"{k!r}: {p}" for k, p in zip(keys, parts)) + "}"
+    else:
+        body = f"({', '.join(parts)},)" if parts else "()"
     namespace: dict = {}
     exec(f"def results({', '.join(names)}):\n    return {body}\n", namespace)  # noqa: S102
     return namespace["results"]
@@ -108,7 +114,9 @@ class _Layout:
         if (self.low is None) != (self.high is None):
             raise ValueError("give both low and high bounds, or neither")
         self.finite = [self.outputs.index(n) for n in finite]
-        self.deliver = [self.outputs.index(n) for n in deliver]
+        #: the keys of results() as a dict (``deliver`` a mapping key -> output name), or None for a tuple
+        self.keys = tuple(deliver) if isinstance(deliver, dict) else None
+        self.deliver = [self.outputs.index(n) for n in (deliver.values() if isinstance(deliver, dict) else deliver)]
 
 
 class CStepper:
@@ -116,7 +124,12 @@ class CStepper:
 
     ``set(name, value)`` writes an input (core shape), ``get(name)`` reads one back (a copy),
     ``step(value)`` writes the fed input and evaluates; after :data:`OK`, ``results()`` returns
-    the delivered outputs as new arrays of their core shapes (floats for scalars).
+    the delivered outputs as new arrays of their core shapes (floats for scalars): a tuple, or a
+    dict when ``deliver`` maps result keys to output names. ``advance(value)`` is ``step`` then
+    ``results`` in one call, for a streaming loop: the results, or the step's code (an int) if
+    it was not :data:`OK`. Its arrays are the caller's too, but cheaper: the compiled step copies
+    the delivered outputs into rows of blocks of :data:`BLOCK_ROWS` steps, and ``advance``
+    returns views of one row (a block is freed when no row of it is referenced any more).
     """
 
     def __init__(self, fn, kernel, library, carry: dict, feed: str, low=None, high=None, finite=(), deliver=()):
@@ -127,7 +140,7 @@ class CStepper:
         views = [self._out[j] if lay.out_shapes[j][1] == 1 else self._out[j].reshape(lay.out_shapes[j][::-1]).T
                  for j in lay.deliver]  # matrices are column-major
         #: results() -> the delivered outputs of the last successful step, as new arrays (floats for scalars)
-        self.results = _results_function(views)
+        self.results = _results_function(views, lay.keys)
         self._feed = self._in[lay.feed]
         work = kernel.work
         keep = self._keep = {
@@ -139,13 +152,30 @@ class CStepper:
             "arg": (ctypes.c_void_p * max(work["sz_arg"], 1))(), "res": (ctypes.c_void_p * max(work["sz_res"], 1))(),
             "iw": np.zeros(max(work["sz_iw"], 1), dtype=np.int64), "w": np.zeros(max(work["sz_w"], 1)),
             "low": lay.low if lay.low is not None else np.zeros(1), "high": lay.high if lay.high is not None else np.zeros(1),
+            "deliver_out": (ctypes.c_int * max(1, len(lay.deliver)))(*lay.deliver),
+            "deliver_ptr": (ctypes.c_void_p * max(1, len(lay.deliver)))(),
         }
         addr = {k: (v.ctypes.data if isinstance(v, np.ndarray) else ctypes.addressof(v)) for k, v in keep.items()}
         self._struct = _StepperStruct(
             f=ctypes.cast(getattr(library, fn.name), ctypes.c_void_p).value, n_in=len(self._in), n_out=len(self._out),
-            n_carry=lay.n_carry, check_in=lay.feed if lay.low is not None else -1, n_finite=len(lay.finite), **addr,
+            n_carry=lay.n_carry, check_in=lay.feed if lay.low is not None else -1, n_finite=len(lay.finite),
+            n_deliver=len(lay.deliver), **addr,
         )
-        self._call = functools.partial(library.registration_step, ctypes.byref(self._struct))
+        call = functools.partial(library.registration_step, ctypes.byref(self._struct))
+        blocks = _Blocks(keep["deliver_ptr"], [lay.out_shapes[j] for j in lay.deliver])
+        self.step, self.advance = _step_functions(self._feed, call, self._unchecked(call), blocks, lay.keys)
+
+    def _unchecked(self, call):
+        """``call`` with the bounds check of the fed input switched off for once."""
+        struct = self._struct
+
+        def unchecked():
+            saved, struct.check_in = struct.check_in, -1
+            try:
+                return call()
+            finally:
+                struct.check_in = saved
+        return unchecked
 
     def set(self, name: str, value) -> None:
         """Write input ``name`` (its core shape; a carried input sets the state)."""
@@ -158,18 +188,85 @@ class CStepper:
         out = _from_column_major(self._in[j], self._layout.in_shapes[j])
         return out if isinstance(out, float) else out.copy()
 
-    def step(self, value, check: bool = True) -> int:
+
+#: Steps per block of delivered results (see :class:`CStepper`): 64 rows of the Kalman step's
+#: x, P, nu, S, nis are 86 kB.
+BLOCK_ROWS = 64
+
+
+class _Blocks:
+    """Blocks of :data:`BLOCK_ROWS` rows into which the compiled step copies the delivered outputs;
+    ``new()`` allocates one, points the step's ``deliver_ptr`` at its first row and returns its
+    arrays: per output (rows,), (rows, r) or (rows, r, c) (column-major rows seen transposed)."""
+
+    def __init__(self, deliver_ptr, shapes: list[tuple[int, int]]):
+        self._ptr, self._shapes = deliver_ptr, shapes
+        sizes = [r * c for r, c in shapes]
+        self._offsets = [BLOCK_ROWS * sum(sizes[:m]) for m in range(len(sizes) + 1)]
+
+    def new(self) -> tuple:
+        block = np.empty(self._offsets[-1])
+        base = block.ctypes.data
+        arrays = []
+        for m, (r, c) in enumerate(self._shapes):
+            self._ptr[m] = base + block.itemsize * self._offsets[m]
+            part = block[self._offsets[m]:self._offsets[m + 1]]
+            arrays.append(part if (r, c) == (1, 1) else part.reshape(BLOCK_ROWS, r) if c == 1
+                          else part.reshape(BLOCK_ROWS, c, r).swapaxes(1, 2))
+        return tuple(arrays)
+
+
+def _step_functions(feed: np.ndarray, call, unchecked, blocks: _Blocks, keys: tuple[str, ...] | None):
+    """``step(value, check=True)`` and ``advance(value)`` of a :class:`CStepper` (closures: the names
+    are bound once, as these run once per row of a stream). Both count the successful steps, whose
+    results the compiled step has copied to the next row of the current block."""
+    rows = blocks.new()
+    row = 0
+    scalars = tuple(a.ndim == 1 for a in rows)
+    pick = _row_template(scalars, keys)
+
+    def step(value, check: bool = True) -> int:
         """Write the fed input (flat, in its column-major order) and evaluate one step; a code.
 
         ``check=False`` skips the bounds of the fed input (for values a detailed check accepted)."""
-        self._feed[:] = value
-        if check:
-            return self._call()
-        saved, self._struct.check_in = self._struct.check_in, -1
-        try:
-            return self._call()
-        finally:
-            self._struct.check_in = saved
+        nonlocal rows, row
+        feed[:] = value
+        code = call() if check else unchecked()
+        if not code:
+            row += 1
+            if row == BLOCK_ROWS:
+                rows, row = blocks.new(), 0
+        return code
+
+    def advance(value):
+        """``step(value)``, then the results as views of their row of the block; the code if not OK."""
+        nonlocal rows, row
+        feed[:] = value
+        code = call()
+        if code:
+            return code
+        out = pick(row, *rows)
+        row += 1
+        if row == BLOCK_ROWS:
+            rows, row = blocks.new(), 0
+        return out
+
+    return step, advance
+
+
+@functools.lru_cache(maxsize=None)
+def _row_template(scalars: tuple[bool, ...], keys: tuple[str, ...] | None):
+    """``f(i, *arrays)``: row ``i`` of each array (a float for those flagged in ``scalars``), as a
+    tuple or a dict under ``keys``; compiled once per pattern."""
+    names = [f"a{m}" for m in range(len(scalars))]
+    parts = [f"{n}.item(i)" if scalar else f"{n}[i]" for n, scalar in zip(names, scalars)]
+    if keys is not None:
+        body = "{" + ", ".join(f"{k!r}: {p}" for k, p in zip(keys, parts)) + "}"
+    else:
+        body = f"({', '.join(parts)},)" if parts else "()"
+    namespace: dict = {}
+    exec(f"def pick(i, {', '.join(names)}):\n    return {body}\n", namespace)  # noqa: S102
+    return namespace["pick"]
 
 
 class PyStepper:
@@ -205,6 +302,11 @@ class PyStepper:
         self._last = outs
         return OK
 
-    def results(self) -> tuple:
-        return tuple(float(self._last[j]) if np.ndim(self._last[j]) == 0 else np.array(self._last[j])
-                     for j in self._layout.deliver)
+    def results(self) -> tuple | dict:
+        out = tuple(float(self._last[j]) if np.ndim(self._last[j]) == 0 else np.array(self._last[j])
+                    for j in self._layout.deliver)
+        return out if self._layout.keys is None else dict(zip(self._layout.keys, out))
+
+    def advance(self, value) -> tuple | dict | int:
+        code = self.step(value)
+        return code if code else self.results()

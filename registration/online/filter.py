@@ -26,7 +26,8 @@ _ROW_SHAPE, _F64 = (N_ROW,), np.dtype(np.float64)
 
 #: The Kalman step's carried inputs and the outputs they take from the previous step.
 STEP_CARRY = {"x": "x_new", "P": "P_new", "info": "info_new"}
-_DELIVER = ("x_new", "P_new", "nu", "S", "nis")
+#: What update() returns (its keys) from the Kalman step's outputs.
+_DELIVER = {"x": "x_new", "P": "P_new", "nu": "nu", "S": "S", "nis": "nis"}
 #: Element-wise bounds of a row for the compiled pre-check of :meth:`OnlineRegistrar.update`: the
 #: contract's LIMITS, and for ranges [smallest normal float, largest finite float] so that NaN, inf
 #: and ranges <= 0 fail. A row it rejects goes to the detailed check_rows (which names the problem,
@@ -78,9 +79,12 @@ class OnlineRegistrar:
         self.config = config or RegistrationConfig()
         self._step = _codegen.get(self.config.step_name)
         self._stepper = None  # the compiled single-row stepper holding the state, made on first update()
-        self._x = _frozen(self.config.x0 if self.config.x0 is not None else np.zeros(N_STATE))
-        self._P = _frozen(np.diag(np.square(self.config.prior_sigma)))
-        self._info = _frozen(np.zeros((N_STATE, N_STATE)))
+        self._advance = None  # its advance(), bound once
+        # The state as read-only arrays; None after update(), when it lives in the stepper's buffers.
+        self._held: dict | None = {
+            "x": _frozen(self.config.x0 if self.config.x0 is not None else np.zeros(N_STATE)),
+            "P": _frozen(np.diag(np.square(self.config.prior_sigma))), "info": _frozen(np.zeros((N_STATE, N_STATE))),
+        }
         self._q_fixed = np.diag(np.square(self.config.q_sigma))
         self._adaptive = self.config.q_mode != "fixed"
         self._sigma0 = np.array(self.config.sigma0)
@@ -88,24 +92,28 @@ class OnlineRegistrar:
         self.n_updates = 0
         self.last_time: float | None = None
 
-    # After update() the state lives in the stepper's buffers; these read it back when asked.
     def _state(self, name: str) -> np.ndarray:
-        value = getattr(self, "_" + name)
+        """State ``name``: the held array, else read back (once) from the stepper's buffers."""
+        held = self._held
+        if held is None:
+            held = self._held = {}
+        value = held.get(name)
         if value is None:
-            value = _frozen(self._stepper.get(name))
-            setattr(self, "_" + name, value)
+            value = held[name] = _frozen(self._stepper.get(name))
         return value
 
     def _set_state(self, name: str, value) -> None:
         value = _frozen(value)
-        setattr(self, "_" + name, value)
+        if self._held is None:  # the state is in the stepper; the other two stay there
+            self._held = {}
+        self._held[name] = value
         if self._stepper is not None:
             self._stepper.set(name, value)
 
     def __getstate__(self) -> dict:
         """For pickle and copy: the state as arrays, without the compiled functions (found again on load)."""
         state = dict(self.__dict__)
-        state.update(_x=self.x, _P=self.P, _info=self.info, _stepper=None, _step=None)
+        state.update(_held={"x": self.x, "P": self.P, "info": self.info}, _stepper=None, _advance=None, _step=None)
         return state
 
     def __setstate__(self, state: dict) -> None:
@@ -126,13 +134,14 @@ class OnlineRegistrar:
         return dev.T @ dev / len(est) + self._q_fixed
 
     def _make_stepper(self):
+        """The compiled stepper, loaded with the state; returns its ``advance``."""
         stepper = self._step.stepper(STEP_CARRY, "row", low=ROW_LOW, high=ROW_HIGH, finite=("x_new", "P_new"),
                                      deliver=_DELIVER)
         for name, value in (("x", self.x), ("P", self.P), ("info", self.info), ("Q", self._q_fixed),
                             ("sigma0", self._sigma0)):
             stepper.set(name, value)
-        self._stepper = stepper
-        return stepper
+        self._stepper, self._advance = stepper, stepper.advance
+        return stepper.advance
 
     def update(self, row, time: float | None = None) -> dict:
         """Process one row; return {'x', 'P', 'nu', 'S', 'nis'} after the update (nu in m, S in m^2).
@@ -141,37 +150,40 @@ class OnlineRegistrar:
         One compiled call checks the row's bounds, steps the filter and commits the state only if
         the new x and P are finite; the detailed checks run only to name a problem.
         """
-        if type(row) is np.ndarray and row.shape == _ROW_SHAPE and row.dtype is _F64:
-            values = row
-        else:
-            values = row_from_mapping(row)
-        n = self.n_updates
+        if type(row) is not np.ndarray or row.shape != _ROW_SHAPE or row.dtype is not _F64:
+            row = row_from_mapping(row)
         if time is not None:
-            try:
-                time = _seconds(time, n)
-            except ValueError:
-                check_rows(values[None, :], first_row=n)  # a bad row is named before a bad time
-                raise
-            if not _time_follows(time, self.last_time):
-                check_rows(values[None, :], first_row=n)
-                check_times(np.array([time], dtype=float), n, self.last_time)
-        stepper = self._stepper or self._make_stepper()
+            time = self._checked_time(row, time)
+        advance = self._advance or self._make_stepper()
         if self._adaptive:
-            stepper.set("Q", self.process_noise())
-        code = stepper.step(values)
-        if code:
-            self._refused(code, stepper, values, n)
-        x, P, nu, S, nis = stepper.results()
-        self._x = self._P = self._info = None
-        self._window.append(x.copy())
-        self.n_updates = n + 1
+            self._stepper.set("Q", self.process_noise())
+        out = advance(row)
+        if type(out) is int:
+            out = self._refused(out, row)
+        self._held = None  # the new state is in the stepper's buffers
+        self._window.append(out["x"].copy())
+        self.n_updates += 1
         if time is not None:
             self.last_time = time
-        return {"x": x, "P": P, "nu": nu, "S": S, "nis": nis}
+        return out
 
-    def _refused(self, code: int, stepper, values: np.ndarray, n: int) -> None:
+    def _checked_time(self, row: np.ndarray, time) -> float:
+        """``time`` (s) as a float after ``last_time``; else ValueError, naming a bad row first."""
+        n = self.n_updates
+        try:
+            time = _seconds(time, n)
+        except ValueError:
+            check_rows(row[None, :], first_row=n)  # a bad row is named before a bad time
+            raise
+        if not _time_follows(time, self.last_time):
+            check_rows(row[None, :], first_row=n)
+            check_times(np.array([time], dtype=float), n, self.last_time)
+        return time
+
+    def _refused(self, code: int, values: np.ndarray) -> dict:
         """After a step the stepper refused: raise, naming the problem, or step again when only its
-        conservative bounds objected (a subnormal range the detailed check accepts)."""
+        conservative bounds objected (a subnormal range the detailed check accepts); the results."""
+        n, stepper = self.n_updates, self._stepper
         if code == _OUT_OF_BOUNDS:
             check_rows(values[None, :], first_row=n)  # raises, naming the row and column
             code = stepper.step(values, check=False)
@@ -179,6 +191,7 @@ class OnlineRegistrar:
             raise RuntimeError(f"row {n}: the generated step {self.config.step_name} returned an error; state left unchanged")
         if code != _OK:
             raise RuntimeError(f"row {n}: the filter step produced non-finite values; state left unchanged")
+        return stepper.results()
 
     def update_block(self, rows: np.ndarray, times: np.ndarray | None = None, *, partial: bool = False) -> dict:
         """Process a (K, 18) block of rows; the same arithmetic as K calls of :meth:`update`.

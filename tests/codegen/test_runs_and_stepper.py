@@ -151,3 +151,42 @@ def test_stepper_reads_an_asymmetric_matrix_input_in_its_own_orientation():
     np.testing.assert_array_equal(P, ref[1][0])
     np.testing.assert_array_equal(st.get("Q"), Q)
 
+
+
+@pytest.mark.parametrize("backend", _backends())
+def test_advance_gives_the_scan_s_results_as_the_caller_s_arrays_across_blocks(rows, backend):
+    """advance() = step() + results(), as a dict under the deliver keys; in the C backend its arrays
+    are rows of blocks the compiled step fills: every row stays the step's own, across block ends,
+    with step() calls and refused steps in between."""
+    from registration._codegen.stepper import BLOCK_ROWS
+
+    fn = GeneratedFunction(STEP, force_backend=backend)
+    stream = rows.reshape(-1, 18)
+    stream = np.concatenate([stream] * (-(-2 * BLOCK_ROWS // len(stream)) + 1))[:2 * BLOCK_ROWS + 7]
+    inputs = _inputs(stream)
+    ref = fn.scan(len(stream), CARRY, inputs)
+    low, high = np.full(18, -1e6), np.full(18, 1e6)
+    low[[6, 15]], high[[6, 15]] = 1.0, 1e305
+    st = fn.stepper(CARRY, "row", low=low, high=high, finite=("x_new", "P_new"),
+                    deliver={"x": "x_new", "P": "P_new", "nis": "nis"})
+    for name in ("x", "P", "info", "Q", "sigma0"):
+        st.set(name, inputs[name])
+    outs = []
+    for i, row in enumerate(stream):
+        if i % 10 == 3:
+            bad = row.copy()
+            bad[6] = np.nan
+            assert st.advance(bad) == StepCode.OUT_OF_BOUNDS  # a code, nothing delivered, the state kept
+        if i % 17 == 5:
+            assert st.step(row) == StepCode.OK
+            outs.append(st.results())  # a dict too, of new arrays
+        else:
+            outs.append(st.advance(row))
+        assert set(outs[-1]) == {"x", "P", "nis"} and isinstance(outs[-1]["nis"], float)
+    outs[0]["x"][:] = 0.0  # a caller writing into one row's arrays touches no other row, nor the state
+    outs[1]["P"][:] = 0.0
+    np.testing.assert_array_equal(np.array([o["x"] for o in outs[1:]]), ref["x_new"][1:])
+    np.testing.assert_array_equal(np.array([o["P"] for o in outs[2:]]), ref["P_new"][2:])
+    np.testing.assert_array_equal(outs[0]["P"], ref["P_new"][0])
+    np.testing.assert_array_equal([o["nis"] for o in outs], ref["nis"])
+    np.testing.assert_array_equal(st.get("x"), ref["x_new"][-1])

@@ -47,6 +47,23 @@ def test_update_equals_register_bit_for_bit(scenario, config):
     assert reg.n_updates == len(rows) and reg.last_time == scenario.data["time"][-1]
 
 
+def test_a_long_stream_keeps_every_row_s_results_the_caller_s(scenario):
+    """update() results come in blocks of rows the compiled step fills: over several blocks each
+    returned array is still that row's, whatever the caller did to the others."""
+    rows = np.tile(_rows(scenario), (3, 1))[:150]
+    data = {"time": np.arange(len(rows), dtype=float), **{c: rows[:, j] for j, c in enumerate(DATA_COLUMNS[1:])}}
+    batch = register(data)
+    reg = OnlineRegistrar()
+    outs = [reg.update(row) for row in rows]
+    for o in outs[::2]:
+        o["x"][:], o["P"][:], o["S"][:] = np.nan, np.nan, np.nan
+    for key, ref in (("x", batch.estimates), ("P", batch.covariances), ("nu", batch.innovations),
+                     ("S", batch.innovation_covariances), ("nis", batch.nis)):
+        np.testing.assert_array_equal(np.array([o[key] for o in outs[1::2]]), ref[1::2], err_msg=key)
+    np.testing.assert_array_equal(reg.x, batch.final)
+    np.testing.assert_array_equal(reg.state_dict()["window"], batch.estimates[-reg.config.q_window:])
+
+
 def test_update_then_block_then_update_is_one_run(scenario):
     """The state moves between the stepper and the compiled block loop without a bit lost."""
     rows, t = _rows(scenario), scenario.data["time"]
