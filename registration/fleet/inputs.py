@@ -5,6 +5,7 @@ row and the object (platform, sensor or target id)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Callable, NamedTuple
 
 import numpy as np
 
@@ -12,8 +13,8 @@ from registration.core.frames import geodetic2ecef
 from registration.core.validation import check_range, degree_hint
 from registration.fleet.tables import ATTITUDE_ERRORS, CHANNELS, DEFAULT_REFERENCE_SIGMA, Table, read_table
 
-__all__ = ["index_of", "SensorSpecs", "PlotColumns", "References", "read_platforms", "read_sensors", "read_plots",
-           "read_references"]
+__all__ = ["index_of", "SensorSpecs", "PlotColumns", "References", "RowProblem", "plot_problems", "read_platforms",
+           "read_sensors", "read_plots", "read_references"]
 
 #: The accepted window of each measured channel (low, high, unit).
 CHANNEL_LIMITS = {
@@ -116,41 +117,74 @@ class PlotColumns:
     mask: np.ndarray
 
 
-def _check_channel(table: Table, values: np.ndarray, k: int, sensor_ids, sensor: np.ndarray) -> None:
+class RowProblem(NamedTuple):
+    """One kind of problem of a table's rows: reason ``code`` and ``column`` (a str, or per row an
+    (N,) array of str), the rows it hits ``bad`` (N,) bool, and ``message(row)``, the reason of one
+    row (without the table and row, which :meth:`Table.error` adds)."""
+
+    code: str | np.ndarray
+    column: str | np.ndarray
+    bad: np.ndarray
+    message: Callable[[int], str]
+
+    def at(self, row: int) -> tuple[str, str]:
+        """(code, column) of one row."""
+        return tuple(v if isinstance(v, str) else str(v[row]) for v in (self.code, self.column))
+
+
+def _channel_problem(values: np.ndarray, k: int, sensor_ids, sensor: np.ndarray) -> RowProblem:
+    """Values of channel k outside its window (or infinite); codes as the recorded files' reasons."""
     name = CHANNELS[k]
     lo, hi, unit = CHANNEL_LIMITS[name]
     finite = np.isfinite(values)
-    bad = np.flatnonzero(np.isinf(values) | (finite & ((values <= lo if k == 0 else values < lo) | (values > hi))))
-    if bad.size:
-        row = int(bad[0])
+    below = finite & ((values <= lo) if k == 0 else (values < lo))
+    bad = np.isinf(values) | below | (finite & (values > hi))
+    code = np.where(np.isinf(values), "non_finite", np.where(below & (k == 0), "non_positive_range", "out_of_range"))
+
+    def message(row: int) -> str:
         hint = degree_hint(values[finite], max(abs(lo), abs(hi))) if k else ""
-        raise table.error(row, f"{name} {values[row]} of sensor {str(sensor_ids[sensor[row]])!r} is outside "
-                               f"{'(' if k == 0 else '['}{lo:g}, {hi:g}] {unit}{hint}")
+        return (f"{name} {values[row]} of sensor {str(sensor_ids[sensor[row]])!r} is outside "
+                f"{'(' if k == 0 else '['}{lo:g}, {hi:g}] {unit}{hint}")
+    return RowProblem(code, name, bad, message)
+
+
+def plot_problems(table: Table, sensors: SensorSpecs) -> list[RowProblem]:
+    """The problems of the plots rows, in the order :func:`read_plots` checks them: time not
+    finite, unknown sensor, a channel outside its window, a value in a channel the sensor does not
+    measure, no measured channel. A row may be hit by several; its first one is its reason."""
+    time = table.floats("time")
+    names = table.ids("sensor")
+    sensor = index_of(names, sensors.ids)
+    known = sensor >= 0
+    meas = np.stack([table.floats(c, default=np.nan) for c in CHANNELS], axis=1)
+    mask = np.isfinite(meas)
+    extra = mask & ~sensors.channels[np.where(known, sensor, 0)] & known[:, None]
+    first_extra = np.array(CHANNELS)[np.argmax(extra, axis=1)]
+
+    def unmeasured(row: int) -> str:
+        c = first_extra[row]
+        return f"sensor {str(names[row])!r} has a {c} value but does not measure {c} (no sigma_{c} in the sensors table)"
+    return [
+        RowProblem("non_finite", "time", ~np.isfinite(time), lambda r: f"time {time[r]} is not a finite number of seconds"),
+        RowProblem("unknown_sensor", "sensor", ~known,
+                   lambda r: f"unknown sensor {str(names[r])!r} (sensors: {list(sensors.ids)})"),
+        *(_channel_problem(meas[:, k], k, sensors.ids, sensor) for k in range(3)),
+        RowProblem("unmeasured_channel", first_extra, extra.any(axis=1), unmeasured),
+        RowProblem("no_channel", "range", ~mask.any(axis=1),
+                   lambda r: f"plot of sensor {str(names[r])!r} has no measured channel"),
+    ]
 
 
 def read_plots(table: Table, sensors: SensorSpecs) -> PlotColumns:
-    time = table.floats("time")
-    bad = np.flatnonzero(~np.isfinite(time))
-    if bad.size:
-        raise table.error(int(bad[0]), f"time {time[bad[0]]} is not a finite number of seconds")
-    names = table.ids("sensor")
-    sensor = index_of(names, sensors.ids)
-    if (sensor < 0).any():
-        row = int(np.flatnonzero(sensor < 0)[0])
-        raise table.error(row, f"unknown sensor {str(names[row])!r} (sensors: {list(sensors.ids)})")
+    """The checked plots; ValueError naming the row and sensor for the first of :func:`plot_problems`."""
+    for problem in plot_problems(table, sensors):
+        if problem.bad.any():
+            row = int(np.flatnonzero(problem.bad)[0])
+            raise table.error(row, problem.message(row))
     meas = np.stack([table.floats(c, default=np.nan) for c in CHANNELS], axis=1)
-    for k in range(3):
-        _check_channel(table, meas[:, k], k, sensors.ids, sensor)
     mask = np.isfinite(meas)
-    extra = mask & ~sensors.channels[sensor]
-    if extra.any():
-        row, k = (int(v) for v in np.argwhere(extra)[0])
-        raise table.error(row, f"sensor {str(names[row])!r} has a {CHANNELS[k]} value but does not measure {CHANNELS[k]} "
-                               f"(no sigma_{CHANNELS[k]} in the sensors table)")
-    empty = np.flatnonzero(~mask.any(axis=1))
-    if empty.size:
-        raise table.error(int(empty[0]), f"plot of sensor {str(names[empty[0]])!r} has no measured channel")
-    return PlotColumns(time, sensor, table.ids("target"), np.where(mask, meas, 0.0), mask)
+    return PlotColumns(table.floats("time"), index_of(table.ids("sensor"), sensors.ids), table.ids("target"),
+                       np.where(mask, meas, 0.0), mask)
 
 
 @dataclass(frozen=True)

@@ -18,7 +18,7 @@ from registration.core.angles import wrap_angle
 from registration.core.validation import check_range
 from registration.fleet.tables import NAV_COLUMNS, Table
 
-__all__ = ["NAV_LIMITS", "platform_navigation", "navigation_at"]
+__all__ = ["NAV_LIMITS", "platform_navigation", "navigation_at", "outside_navigation"]
 
 #: Accepted window (low, high, unit) of each navigation column.
 NAV_LIMITS = {
@@ -67,6 +67,18 @@ def platform_navigation(nav: Table, platform_ids) -> dict[str, tuple[np.ndarray,
     return out
 
 
+def outside_navigation(tracks: dict, platform_ids, plot_platform: np.ndarray, plot_time: np.ndarray) -> np.ndarray:
+    """(N,) bool: the plots whose time (s) lies outside their platform's navigation time span (a
+    fixed site, one navigation row, holds at every time; a NaN time is not flagged)."""
+    out = np.zeros(plot_time.shape[0], dtype=bool)
+    for p, pid in enumerate(platform_ids):
+        t = tracks[pid][0]
+        sel = plot_platform == p
+        if t.shape[0] > 1 and sel.any():
+            out[sel] = (plot_time[sel] < t[0]) | (plot_time[sel] > t[-1])
+    return out
+
+
 def navigation_at(tracks: dict, platform_ids, plot_platform: np.ndarray, plot_time: np.ndarray,
                   describe_row) -> np.ndarray:
     """(N, 6) navigation of each plot's platform at its time (NAV_COLUMNS order, angles wrapped).
@@ -74,6 +86,7 @@ def navigation_at(tracks: dict, platform_ids, plot_platform: np.ndarray, plot_ti
     ``describe_row(i)`` names plot i in errors (row, sensor, time).
     """
     out = np.empty((plot_time.shape[0], 6))
+    outside_all = outside_navigation(tracks, platform_ids, plot_platform, plot_time)
     for p, pid in enumerate(platform_ids):
         sel = np.flatnonzero(plot_platform == p)
         if sel.size == 0:
@@ -83,7 +96,7 @@ def navigation_at(tracks: dict, platform_ids, plot_platform: np.ndarray, plot_ti
             out[sel] = v[0]
             continue
         tp = plot_time[sel]
-        outside = np.flatnonzero((tp < t[0]) | (tp > t[-1]))
+        outside = np.flatnonzero(outside_all[sel])
         if outside.size:
             i = int(sel[outside[0]])
             raise ValueError(f"{describe_row(i)} lies outside the navigation of platform {str(pid)!r} "

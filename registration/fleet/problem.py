@@ -14,12 +14,14 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from registration.fleet.inputs import References, index_of, read_platforms, read_plots, read_references, read_sensors
+from registration.fleet.inputs import (
+    References, RowProblem, index_of, plot_problems, read_platforms, read_plots, read_references, read_sensors,
+)
 from registration.fleet.layout import StateLayout, make_layout
-from registration.fleet.navigation import navigation_at, platform_navigation
+from registration.fleet.navigation import navigation_at, outside_navigation, platform_navigation
 from registration.fleet.tables import read_table
 
-__all__ = ["Exclusion", "FleetProblem", "build_problem"]
+__all__ = ["Exclusion", "FleetProblem", "build_problem", "plot_row_problems"]
 
 
 @dataclass(frozen=True)
@@ -106,16 +108,23 @@ def _first_seen(ids: np.ndarray) -> tuple[str, ...]:
     return tuple(str(u) for u in unique[np.argsort(first)])
 
 
+def _seen_by_one_sensor(target: np.ndarray, sensor: np.ndarray) -> tuple[tuple[str, ...], np.ndarray, np.ndarray]:
+    """Targets in order of first appearance, each plot's index into them, and the targets (indices)
+    seen by one sensor only."""
+    targets = _first_seen(target)
+    which = index_of(target, targets)
+    n_sensors = np.zeros(len(targets), dtype=np.int64)
+    pairs = np.unique(np.stack([which, sensor]), axis=1)
+    np.add.at(n_sensors, pairs[0], 1)
+    return targets, which, np.flatnonzero(n_sensors == 1)
+
+
 def _single_sensor_targets(plots, references) -> list[Exclusion]:
     """Targets seen by one sensor only and not references: no registration information."""
     out = []
     refs = set(references.target)
-    targets = _first_seen(plots.target)
-    which = index_of(plots.target, targets)
-    n_sensors = np.zeros(len(targets), dtype=np.int64)
-    pairs = np.unique(np.stack([which, plots.sensor]), axis=1)
-    np.add.at(n_sensors, pairs[0], 1)
-    for k in np.flatnonzero(n_sensors == 1):
+    targets, which, single = _seen_by_one_sensor(plots.target, plots.sensor)
+    for k in single:
         tid = targets[k]
         if tid not in refs:
             sel = which == k
@@ -124,6 +133,34 @@ def _single_sensor_targets(plots, references) -> list[Exclusion]:
                                            "registration errors, so they carry no registration information",
                                  int(sel.sum()), float(t.min()), float(t.max())))
     return out
+
+
+def plot_row_problems(plots, sensors, navigation, platforms=None, reference_targets=()) -> list[RowProblem]:
+    """The problems of the plots rows that :func:`build_problem` raises for, per row, in its order
+    (:func:`~registration.fleet.inputs.plot_problems`, then ``outside_navigation``: a plot outside
+    its platform's navigation time span, not counting the targets it sets aside as seen by one
+    sensor, unless in ``reference_targets``). The other tables are checked as build_problem does
+    (ValueError naming table, row and object)."""
+    sensors_t = read_table("sensors", sensors, ("sensor", "platform"))
+    platform_ids, _ = read_platforms(platforms, sensors_t.ids("platform"))
+    specs = read_sensors(sensors_t, platform_ids)
+    plots_t = read_table("plots", plots, ("time", "sensor", "target"))
+    problems = plot_problems(plots_t, specs)
+    valid = ~np.any([p.bad for p in problems], axis=0)
+    tracks = platform_navigation(read_table("navigation", navigation, ("platform",)), platform_ids)
+    time, target = plots_t.floats("time"), plots_t.ids("target")
+    sensor = np.where(valid, index_of(plots_t.ids("sensor"), specs.ids), 0)
+    targets, which, single = _seen_by_one_sensor(target[valid], sensor[valid])
+    set_aside = [targets[k] for k in single if targets[k] not in set(np.asarray(reference_targets).astype(str))]
+    platform = specs.platform[sensor]
+    outside = valid & ~np.isin(target, set_aside) & outside_navigation(tracks, platform_ids, platform, time)
+
+    def message(row: int) -> str:
+        pid = platform_ids[platform[row]]
+        t = tracks[pid][0]
+        return (f"plot of sensor {specs.ids[sensor[row]]!r} at {time[row]:g} s lies outside the navigation of "
+                f"platform {str(pid)!r} ({t[0]:g} s to {t[-1]:g} s)")
+    return problems + [RowProblem("outside_navigation", "time", outside, message)]
 
 
 def build_problem(plots, sensors, navigation, platforms=None, references=None) -> FleetProblem:

@@ -109,3 +109,137 @@ def test_a_missing_file_is_named(tmp_path, scenario):
     paths["sensors"].unlink()
     with pytest.raises(ValueError, match="sensors.csv: no such file"):
         _read(paths)
+
+
+# --- on_bad_row="skip": bad rows of the plots and reference files set aside with a reason code ---
+
+def _frame(path):
+    return pd.read_csv(path, dtype={"sensor": str, "platform": str, "target": str})
+
+
+def _first_row(plots, sensor):
+    """A row of ``sensor`` away from the start and end of the file, after row 50."""
+    return int(plots.index[(plots["sensor"] == sensor) & (plots.index > 50)][0])
+
+
+def _spoil_plots(plots):
+    """Several kinds of bad rows; returns {row: (column, code)} as the reader should report them."""
+    plots = plots.astype({c: object for c in ("time_s", "range_m", "bearing_deg", "elevation_deg")})
+    c2d, a3d, esm = _first_row(plots, "C-2D"), _first_row(plots, "A-3D") + 7, _first_row(plots, "A-ESM")
+    edits = {
+        3: ("range_m", "far", "non_numeric"),
+        10: ("elevation_deg", 120.0, "out_of_range"),
+        20: ("sensor", "Z-9", "unknown_sensor"),
+        30: ("range_m", -5.0, "non_positive_range"),
+        44: ("time_s", np.nan, "non_finite"),
+        47: ("target", np.nan, "empty_id"),
+        c2d: ("elevation_deg", 1.0, "unmeasured_channel"),
+        a3d: ("time_s", 75.0, "outside_navigation"),
+    }
+    for row, (column, value, _) in edits.items():
+        plots.loc[row, column] = value
+    plots.loc[esm, ["bearing_deg", "elevation_deg"]] = np.nan
+    want = {row: (column, code) for row, (column, _, code) in edits.items()}
+    want[esm] = ("range_m", "no_channel")
+    return plots, want
+
+
+@pytest.fixture
+def spoiled(scenario, tmp_path):
+    """Files with bad plots rows and one bad reference row, and the same files without those rows."""
+    bad_dir, clean_dir = tmp_path / "bad", tmp_path / "clean"
+    bad_dir.mkdir(), clean_dir.mkdir()
+    paths, clean = _write(scenario, bad_dir), _write(scenario, clean_dir)
+    plots, want = _spoil_plots(_frame(paths["plots"]))
+    plots.to_csv(paths["plots"], index=False)
+    _frame(clean["plots"]).drop(index=list(want)).to_csv(clean["plots"], index=False)
+    ref = _frame(paths["reference"]).astype({"lat_deg": object})
+    ref.loc[5, "lat_deg"] = "north"
+    ref.to_csv(paths["reference"], index=False)
+    _frame(clean["reference"]).drop(index=[5]).to_csv(clean["reference"], index=False)
+    return paths, clean, want
+
+
+def test_skip_mode_sets_bad_rows_aside_with_their_reason(spoiled):
+    from registration.fleet.rejects import FLEET_REASON_CODES
+    from registration.recorded.rowcheck import REASON_CODES
+
+    paths, _, want = spoiled
+    with pytest.raises(ValueError, match=r"plots.csv: row 44, column 'time_s': empty"):
+        _read(paths)  # stop: the first problem in column order (time_s)
+    tables = read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row="skip")
+    got = {r.row: (r.column, r.code) for r in tables.rejected if r.file == str(paths["plots"])}
+    assert got == want
+    refs = [r for r in tables.rejected if r.file == str(paths["reference"])]
+    assert [(r.row, r.column, r.code) for r in refs] == [(5, "lat_deg", "non_numeric")]
+    assert set(REASON_CODES) <= set(FLEET_REASON_CODES) and {r.code for r in tables.rejected} <= set(FLEET_REASON_CODES)
+    n_plots = len(_frame(paths["plots"]))
+    assert tables.rows()["plots"] == n_plots - len(want) and tables.rows_read()["plots"] == n_plots
+    frame = tables.rejected_frame()
+    assert list(frame.columns) == ["file", "row", "column", "code", "reason"] and len(frame) == len(want) + 1
+    assert "'Z-9'" in frame.set_index("row").loc[20, "reason"]
+
+
+def test_skipped_tables_register_as_the_file_without_the_bad_rows(spoiled):
+    from registration.fleet import BatchOptions, solve_batch
+
+    paths, clean, want = spoiled
+    skipped = read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row="skip").problem()
+    reference = read_fleet_tables(*(clean[n] for n in NAMES), on_bad_row="skip").problem()
+    kept = np.setdiff1d(np.arange(skipped.n_input_plots), list(want))
+    np.testing.assert_array_equal(skipped.row, kept[reference.row])  # file rows of the plots used
+    assert skipped.n_input_plots == reference.n_input_plots + len(want)
+    options = BatchOptions(window_s=20.0)
+    a, b = solve_batch(skipped, options), solve_batch(reference, options)
+    for name in ("estimate", "covariance", "sigma"):
+        np.testing.assert_array_equal(getattr(a, name), getattr(b, name), err_msg=name)
+    np.testing.assert_array_equal(a.residuals[skipped.row], b.residuals[reference.row])
+    assert np.isnan(a.residuals[list(want)]).all()
+
+
+def test_skip_mode_on_good_files_sets_nothing_aside(scenario, tmp_path):
+    paths = _write(scenario, tmp_path)
+    tables = read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row="skip")
+    assert tables.rejected == [] and tables.rows() == _read(paths).rows()
+    assert list(tables.rejected_frame().columns) == ["file", "row", "column", "code", "reason"]
+    assert tables.rejected_frame().empty
+    with pytest.raises(ValueError, match="on_bad_row"):
+        read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row="ignore")
+
+
+def test_every_plot_row_bad_is_a_clear_error(scenario, tmp_path):
+    from registration.fleet.rejects import NoValidPlotsError
+
+    paths = _write(scenario, tmp_path)
+    plots = _frame(paths["plots"])
+    n = len(plots)
+    plots["range_m"], plots["sensor"] = "far", ["Z-9"] + list(plots["sensor"][1:])
+    plots.to_csv(paths["plots"], index=False)
+    with pytest.raises(NoValidPlotsError) as err:
+        read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row="skip")
+    text = str(err.value)
+    assert f"plots.csv: no valid rows to register: all {n} rows rejected ({n} non_numeric)" in text, text
+    assert "row 0, column 'range_m'" in text
+    assert len(err.value.rejected) == n and len(err.value.rejected_frame()) == n
+
+
+@pytest.mark.parametrize("name, column, row", [("navigation", "alt_m", 3), ("sensors", "sigma_bearing_deg", 1)])
+def test_a_bad_row_of_the_defining_files_still_stops_in_skip_mode(scenario, tmp_path, name, column, row):
+    paths = _write(scenario, tmp_path)
+    _edit(paths, name, _set(column, row, "high"))
+    with pytest.raises(ValueError, match=rf"{name}.csv: row {row}, column '{column}': 'high' is not a number"):
+        read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row="skip")
+
+
+def test_skip_mode_sets_aside_the_reference_of_a_target_left_without_plots(scenario, tmp_path):
+    paths = _write(scenario, tmp_path)
+    plots = _frame(paths["plots"]).astype({"range_m": object})
+    ref_target = str(_frame(paths["reference"])["target"][0])
+    rows = plots.index[plots["target"] == ref_target]
+    plots.loc[rows, "range_m"] = "far"
+    plots.loc[rows, ["bearing_deg", "elevation_deg"]] = np.nan
+    plots.to_csv(paths["plots"], index=False)
+    tables = read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row="skip")
+    codes = {r.code for r in tables.rejected if r.file == str(paths["reference"])}
+    assert codes == {"unknown_target"} and tables.rows()["reference"] == 0
+    assert tables.problem().references.time.size == 0

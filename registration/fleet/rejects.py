@@ -1,0 +1,124 @@
+"""Bad rows of the fleet's input files: the reason codes, the record of a row set aside, and the
+collection of one file's bad rows in either mode of ``on_bad_row``.
+
+``"stop"`` raises a ValueError for the first problem (``FILE: row R, column 'C': reason``);
+``"skip"`` records the first problem of each row as a :class:`RejectedRow` and the caller drops the
+row. Rows are numbered from 0, the first data row (a CSV header line is not a row).
+
+Reason codes (:data:`FLEET_REASON_CODES`): those of the recorded files
+(:data:`registration.recorded.rowcheck.REASON_CODES`: ``non_numeric``, ``non_finite`` for an
+empty, NaN or infinite number, ``out_of_range``, ``non_positive_range``, ...) and the fleet's own:
+
+* ``empty_id``: an empty sensor, target or platform id;
+* ``unknown_sensor``: a plot of a sensor the sensors file does not list;
+* ``unknown_target``: a reference position of a target that has no (accepted) plots;
+* ``no_channel``: a plot with no measured value (reported in column ``range_m``);
+* ``unmeasured_channel``: a value in a channel the sensor does not measure (no sigma for it);
+* ``outside_navigation``: a plot outside its platform's navigation time span.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Callable
+
+import numpy as np
+
+from registration.recorded.filtering import NoValidRowsError
+from registration.recorded.rowcheck import REASON_CODES
+
+if TYPE_CHECKING:
+    import pandas
+
+__all__ = ["BAD_ROW_MODES", "FLEET_REASON_CODES", "REJECTED_COLUMNS", "RejectedRow", "BadRows", "NoValidPlotsError",
+           "rejected_frame", "check_mode"]
+
+BAD_ROW_MODES = ("stop", "skip")
+FLEET_REASON_CODES = REASON_CODES + (
+    "empty_id", "unknown_sensor", "unknown_target", "no_channel", "unmeasured_channel", "outside_navigation",
+)
+#: Columns of :func:`rejected_frame` (and of the fleet's rejected.csv).
+REJECTED_COLUMNS = ("file", "row", "column", "code", "reason")
+
+
+def check_mode(on_bad_row: str) -> str:
+    """``on_bad_row`` itself, if it is one of :data:`BAD_ROW_MODES`; else a ValueError."""
+    if on_bad_row not in BAD_ROW_MODES:
+        raise ValueError(f"on_bad_row: expected 'stop' or 'skip', got {on_bad_row!r}")
+    return on_bad_row
+
+
+@dataclass(frozen=True)
+class RejectedRow:
+    """One input row set aside: its ``file`` (path as given), ``row`` (from 0, the first data row),
+    the ``column`` of its first problem, the reason ``code`` and the ``reason`` in words."""
+
+    file: str
+    row: int
+    column: str
+    code: str
+    reason: str
+
+    def text(self) -> str:
+        return f"{self.file}: row {self.row}, column {self.column!r}: {self.reason} [{self.code}]"
+
+
+def rejected_frame(rows) -> "pandas.DataFrame":
+    """The rejected rows as a DataFrame with columns :data:`REJECTED_COLUMNS` (empty frame with
+    those columns when there are none)."""
+    import pandas as pd
+
+    rows = list(rows)
+    return pd.DataFrame({c: pd.Series([getattr(r, c) for r in rows], dtype="int64" if c == "row" else object)
+                         for c in REJECTED_COLUMNS})
+
+
+class NoValidPlotsError(NoValidRowsError):
+    """Every row of the plots file was set aside in skip mode; ``rejected`` lists all rows set aside
+    (of every file), so they can still be written out."""
+
+    def __init__(self, file: str, n_rows: int, rejected: list[RejectedRow]):
+        self.rejected = list(rejected)
+        mine = [r for r in self.rejected if r.file == file]
+        codes = ", ".join(f"{n} {code}" for code, n in sorted(Counter(r.code for r in mine).items()))
+        first = f", the first at row {mine[0].row}, column {mine[0].column!r}: {mine[0].reason}" if mine else ""
+        super().__init__(f"{file}: no valid rows to register: all {n_rows} rows rejected ({codes}){first}")
+
+    def rejected_frame(self):
+        return rejected_frame(self.rejected)
+
+
+class BadRows:
+    """The bad rows of one file: ``skip`` True records the first problem of each row (the order of
+    the :meth:`add` calls decides which is first); False raises at the first problem added."""
+
+    def __init__(self, file, n_rows: int, skip: bool):
+        self.file, self.n_rows, self.skip = str(file), int(n_rows), skip
+        self.first: dict[int, tuple[str, str, str]] = {}  # row -> (column, code, reason)
+
+    def add(self, column: str | Callable[[int], str], code: str | Callable[[int], str], bad: np.ndarray,
+            reason: Callable[[int], str], rows: np.ndarray | None = None) -> None:
+        """Rows flagged in ``bad`` (K,) have the problem ``reason(i)``; ``rows`` (K,) maps them to
+        file rows (default: the identity). ``column``, ``code``: one for all, or per flagged row i."""
+        hit = np.flatnonzero(bad)
+        if hit.size == 0:
+            return
+        at = (lambda v, i: v if isinstance(v, str) else v(i))
+        file_row = (lambda i: int(i)) if rows is None else (lambda i: int(rows[i]))
+        if not self.skip:
+            i = int(hit[0])
+            raise ValueError(f"{self.file}: row {file_row(i)}, column {at(column, i)!r}: {reason(i)}")
+        for i in hit:
+            r = file_row(i)
+            if r not in self.first:
+                self.first[r] = (at(column, int(i)), at(code, int(i)), reason(int(i)))
+
+    def ok(self) -> np.ndarray:
+        """(n_rows,) bool: the rows with no problem recorded."""
+        out = np.ones(self.n_rows, dtype=bool)
+        out[list(self.first)] = False
+        return out
+
+    def rejected(self) -> list[RejectedRow]:
+        return [RejectedRow(self.file, r, *self.first[r]) for r in sorted(self.first)]
