@@ -56,6 +56,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                      help="length of the windows each target track is cut into, s (0: one per instant); the "
                           "online filter updates once per window")
     _add_method(reg)
+    reg.add_argument("--on-bad-row", choices=["stop", "skip"], default="stop",
+                     help="stop at the first bad row of the plots or reference file, or skip: set bad rows aside in "
+                          "rejected.csv (file, row, column, reason_code, reason) and register the rest")
     add_out(reg, "fleet-register", "estimates.csv, summary.json and the PNG plots")
     add_no_plots(reg)
     add_allow_inconsistent(reg)
@@ -118,22 +121,51 @@ def run_simulate(args: argparse.Namespace) -> int:
     return gate("registration fleet simulate", result, args.allow_inconsistent)
 
 
+def _write_rejected(out: Path, frame) -> Path:
+    from registration.recorded.formats import write_frame
+
+    path = out / "rejected.csv"
+    with writing(path):
+        write_frame(frame, path, "csv")
+    return path
+
+
+def _read_tables(args: argparse.Namespace, out: Path):
+    """The tables, bad rows stopping the run or set aside (then counted on standard output)."""
+    from registration.fleet import read_fleet_tables
+    from registration.fleet.rejects import NoValidPlotsError
+
+    try:
+        tables = read_fleet_tables(args.plots, args.navigation, args.sensors, args.platforms, args.reference,
+                                   on_bad_row=args.on_bad_row)
+    except NoValidPlotsError as exc:
+        _write_rejected(out, exc.rejected_frame())
+        raise
+    if tables.rejected:
+        counts = tables.rejected_frame().groupby(["file", "reason_code"]).size()
+        print(f"set aside {len(tables.rejected)} bad rows (in rejected.csv): "
+              + "; ".join(f"{f}: {n} {code}" for (f, code), n in counts.items()))
+    return tables
+
+
 def run_register(args: argparse.Namespace) -> int:
     """Read the tables, register, print and write the outputs; exit 3 on a gross misfit."""
     from registration.cli.fleet_output import estimate_rows, gate, print_report, write_outputs
-    from registration.fleet import read_fleet_tables
 
     if not (args.window_s >= 0 and args.window_s < float("inf")):
         raise ValueError(f"--window-s: expected a length >= 0 s, got {args.window_s}")
     out = prepare_out(args.out)
-    tables = read_fleet_tables(args.plots, args.navigation, args.sensors, args.platforms, args.reference)
+    tables = _read_tables(args, out)
     problem, result = _solve(tables, args.window_s, args.method)
     rows = estimate_rows(result)
     header = ["Fleet tables " + ", ".join(str(p) for p in tables.paths.values()) + ":", problem.lines()[0],
               _run_line(result)]
     print_report(result, rows, header)
-    inputs = {**_inputs(tables, problem, args.window_s), "method": args.method}
+    inputs = {**_inputs(tables, problem, args.window_s), "method": args.method, "on_bad_row": args.on_bad_row,
+              "rows_read": tables.rows_read(), "rows_rejected": len(tables.rejected)}
     written = write_outputs(out, problem, result, rows, inputs, plots=not args.no_plots)
+    if args.on_bad_row == "skip":
+        written.append(_write_rejected(out, tables.rejected_frame()))
     print("\nwrote " + ", ".join(str(p) for p in written))
     return gate("registration fleet register", result, args.allow_inconsistent)
 

@@ -38,8 +38,10 @@ BAD_ROW_MODES = ("stop", "skip")
 FLEET_REASON_CODES = REASON_CODES + (
     "empty_id", "unknown_sensor", "unknown_target", "no_channel", "unmeasured_channel", "outside_navigation",
 )
-#: Columns of :func:`rejected_frame` (and of the fleet's rejected.csv).
-REJECTED_COLUMNS = ("file", "row", "column", "code", "reason")
+#: Columns of :func:`rejected_frame` (and of the fleet's rejected.csv; named as in the rejected.csv of
+#: ``registration register``, whose rows also carry the raw values).
+REJECTED_COLUMNS = ("file", "row", "column", "reason_code", "reason")
+_ATTRIBUTE = {"reason_code": "code"}
 
 
 def check_mode(on_bad_row: str) -> str:
@@ -70,7 +72,8 @@ def rejected_frame(rows) -> "pandas.DataFrame":
     import pandas as pd
 
     rows = list(rows)
-    return pd.DataFrame({c: pd.Series([getattr(r, c) for r in rows], dtype="int64" if c == "row" else object)
+    return pd.DataFrame({c: pd.Series([getattr(r, _ATTRIBUTE.get(c, c)) for r in rows],
+                                      dtype="int64" if c == "row" else object)
                          for c in REJECTED_COLUMNS})
 
 

@@ -145,3 +145,32 @@ def test_online_method_plots(simulated, tmp_path):
     assert main([*args, "--method", "online"]) == 0
     for png in ("estimates.png", "map.png", "residuals.png"):
         assert (out / png).stat().st_size > 10_000
+
+
+def _spoil_plots(frame):
+    frame["range_m"] = frame["range_m"].astype(object)
+    frame.loc[3, "range_m"] = "abc"
+    frame.loc[7, "sensor"] = "X1"
+    frame.loc[20, "bearing_deg"] = 400.0
+
+
+def test_on_bad_row_skip_sets_rows_aside_and_registers_the_rest(simulated, tmp_path, capsys):
+    folder = _broken(simulated, tmp_path, "plots", _spoil_plots)
+    assert main(_register_args(folder, tmp_path / "stop")) == 2
+    assert "row 3" in capsys.readouterr().err
+    out = tmp_path / "skip"
+    assert main(_register_args(folder, out, extra=["--on-bad-row", "skip"])) == 0
+    assert "set aside 3 bad rows" in capsys.readouterr().out
+    rejected = pd.read_csv(out / "rejected.csv")
+    assert list(rejected.columns) == ["file", "row", "column", "reason_code", "reason"]
+    assert list(rejected["row"]) == [3, 7, 20]
+    assert list(rejected["reason_code"]) == ["non_numeric", "unknown_sensor", "out_of_range"]
+    # the same as registering a file without those rows
+    clean = _broken(simulated, tmp_path / "clean", "plots", lambda f: None)
+    plots = pd.read_csv(clean / "plots.csv", dtype={"sensor": str, "target": str})
+    plots.drop(index=[3, 7, 20]).to_csv(clean / "plots.csv", index=False)
+    assert main(_register_args(clean, tmp_path / "clean_out")) == 0
+    got, want = pd.read_csv(out / "estimates.csv"), pd.read_csv(tmp_path / "clean_out" / "estimates.csv")
+    pd.testing.assert_frame_equal(got, want, check_exact=True)
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["inputs"]["rows_rejected"] == 3 and summary["inputs"]["on_bad_row"] == "skip"

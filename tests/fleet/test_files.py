@@ -176,7 +176,7 @@ def test_skip_mode_sets_bad_rows_aside_with_their_reason(spoiled):
     n_plots = len(_frame(paths["plots"]))
     assert tables.rows()["plots"] == n_plots - len(want) and tables.rows_read()["plots"] == n_plots
     frame = tables.rejected_frame()
-    assert list(frame.columns) == ["file", "row", "column", "code", "reason"] and len(frame) == len(want) + 1
+    assert list(frame.columns) == ["file", "row", "column", "reason_code", "reason"] and len(frame) == len(want) + 1
     assert "'Z-9'" in frame.set_index("row").loc[20, "reason"]
 
 
@@ -201,7 +201,7 @@ def test_skip_mode_on_good_files_sets_nothing_aside(scenario, tmp_path):
     paths = _write(scenario, tmp_path)
     tables = read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row="skip")
     assert tables.rejected == [] and tables.rows() == _read(paths).rows()
-    assert list(tables.rejected_frame().columns) == ["file", "row", "column", "code", "reason"]
+    assert list(tables.rejected_frame().columns) == ["file", "row", "column", "reason_code", "reason"]
     assert tables.rejected_frame().empty
     with pytest.raises(ValueError, match="on_bad_row"):
         read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row="ignore")
