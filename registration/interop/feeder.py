@@ -54,13 +54,21 @@ class RegistrationCorrector:
         st = read_table("sensors", sensors, ("sensor", "platform"))
         lever = np.stack([st.floats(f"lever_{a}", default=0.0) for a in "xyz"], axis=1)
         self._sensors = {s: (str(p), lever[k]) for k, (s, p) in enumerate(zip(st.ids("sensor"), st.ids("platform")))}
+        self.result = result
         self.names = list(result.layout.names)
-        self.estimate = np.asarray(result.estimate, dtype=float)
-        self.covariance = np.asarray(result.covariance, dtype=float)
-        if self.estimate.shape != (len(self.names),) or self.covariance.shape != (len(self.names),) * 2:
-            raise ValueError(f"result: estimate {self.estimate.shape} and covariance {self.covariance.shape} do not "
-                             f"match the layout's {len(self.names)} states")
+        self.refresh()
         self.frame, self.sensor_key, self.registration_noise = frame, sensor_key, registration_noise
+
+    def refresh(self) -> None:
+        """Read the result's estimate and covariance again: a live result (the online filter,
+        :class:`registration.fleet.FleetFilter`, updated between scans) corrects the next
+        detections with what it knows by then."""
+        estimate = np.asarray(self.result.estimate, dtype=float)
+        covariance = np.asarray(self.result.covariance, dtype=float)
+        if estimate.shape != (len(self.names),) or covariance.shape != (len(self.names),) * 2:
+            raise ValueError(f"result: estimate {estimate.shape} and covariance {covariance.shape} do not "
+                             f"match the layout's {len(self.names)} states")
+        self.estimate, self.covariance = estimate, covariance
 
     def states(self, sensor: str, kind: type) -> list:
         """The indices (None where absent) of the sensor's platform's attitude errors and its biases."""
@@ -134,7 +142,9 @@ class RegistrationCorrector:
 
 class RegisteredDetectionFeeder(DetectionFeeder):
     """A Stone Soup feeder that yields the detections of ``reader`` corrected by a registration
-    result (see :class:`RegistrationCorrector`); an uncorrectable detection stops it with an error."""
+    result (see :class:`RegistrationCorrector`); an uncorrectable detection stops it with an error.
+    The result is read again before every scan, so a live online filter can be passed and updated
+    while the tracker runs."""
 
     result: object = Property(doc="Registration result: ``layout.names``, ``estimate`` (n,), ``covariance`` (n, n)")
     sensors: object = Property(doc="Sensors table: sensor -> platform and lever arm (m, deck frame)")
@@ -147,4 +157,5 @@ class RegisteredDetectionFeeder(DetectionFeeder):
         corrector = RegistrationCorrector(self.result, self.sensors, self.frame, sensor_key=self.sensor_key,
                                           registration_noise=self.registration_noise)
         for time, detections in self.reader:
+            corrector.refresh()  # a live result may have moved since the last scan
             yield time, {corrector.correct(detection) for detection in detections}

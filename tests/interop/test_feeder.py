@@ -163,3 +163,34 @@ def test_detections_that_cannot_be_corrected_are_refused_by_name(quiet_fleet):
         RegistrationCorrector(result_of(names, np.zeros(len(names)), cov), s.sensors, FRAME).correct(det)
     RegistrationCorrector(result_of(names, np.zeros(len(names)), cov), s.sensors, FRAME,
                           registration_noise=False).correct(det)
+
+
+def test_a_live_online_filter_corrects_each_scan_with_what_it_knows_by_then():
+    """The feeder reads the filter before every scan: scans fed before any update pass through
+    unchanged (zero estimate), scans after the filter has seen 60 s of plots come out corrected
+    by its estimate at that time."""
+    from registration.fleet import FleetFilter
+
+    s = fleet_scenario(6, duration_s=120.0)
+    filt = FleetFilter(s.sensors, s.navigation, s.platforms, s.references)
+    detections = detections_of(s, ("A-3D",))
+    early = [d for d in detections if (d.timestamp - EPOCH).total_seconds() < 10][:3]
+    late = [d for d in detections if (d.timestamp - EPOCH).total_seconds() > 100][:3]
+    order = np.argsort(s.plots["time"])
+    first = {k: v[order] for k, v in s.plots.items()}
+    first = {k: v[first["time"] < 61.0] for k, v in first.items()}
+
+    def scans():
+        for d in early:
+            yield d.timestamp, {d}
+        filt.update(first)  # the filter learns between the scans
+        for d in late:
+            yield d.timestamp, {d}
+
+    out = [next(iter(dets)) for _, dets in RegisteredDetectionFeeder(reader=scans(), result=filt, sensors=s.sensors,
+                                                                     frame=FRAME)]
+    bias = filt.estimate[filt.layout.index("A-3D:range_bias")]
+    assert abs(bias) > 50.0  # the filter has learned the range bias by the late scans
+    for before, after in zip(early + late, out):
+        shift = float(after.state_vector[-1] - before.state_vector[-1])
+        assert shift == (0.0 if before in early else pytest.approx(-bias, rel=1e-12))
