@@ -8,13 +8,14 @@ neighbour, two-point initiation) runs twice: on the raw detections and on the de
 corrected by ``RegisteredDetectionFeeder``. The OSPA distance (Stone Soup's ``OSPAMetric``,
 position only) of both runs against the truth is printed and plotted.
 
-Run: ``python docs/examples/stonesoup_tracking.py [out.png]``.
+Run: ``python docs/examples/stonesoup_tracking.py [out.png]`` (default ``out/stonesoup/ospa.png``).
 """
 
 from __future__ import annotations
 
 import datetime
 import sys
+from pathlib import Path
 from itertools import groupby
 
 import numpy as np
@@ -104,7 +105,7 @@ def plot(times_raw, ospa_raw, times_reg, ospa_reg, png: str) -> None:
     plt.close(fig)
 
 
-def main(png: str | None = "stonesoup_ospa.png", seed: int = 0, duration_s: float = 60.0) -> dict:
+def main(png: str | None = "out/stonesoup/ospa.png", seed: int = 0, duration_s: float = 60.0) -> dict:
     """Run both trackers; returns the mean OSPA (m) of the raw and the registered run, and the PNG path."""
     scenario = fleet_scenario(seed, duration_s=duration_s)
     result = solve_batch(scenario.problem())
@@ -121,6 +122,7 @@ def main(png: str | None = "stonesoup_ospa.png", seed: int = 0, duration_s: floa
     print(f"mean OSPA over {len(raw)} scans: raw {metrics['raw']:.1f} m ({n_raw} tracks), "
           f"registered {metrics['registered']:.1f} m ({n_reg} tracks); {len(truth)} targets")
     if png:
+        Path(png).parent.mkdir(parents=True, exist_ok=True)
         plot(t_raw, ospa_raw, t_reg, ospa_reg, png)
         print(f"wrote {png}")
     return metrics
