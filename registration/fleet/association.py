@@ -39,7 +39,8 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from registration.fleet.association_geometry import Assigner, plot_geometry
-from registration.fleet.association_match import chain_groups, group_tracklets, make_tracklets
+from registration.fleet.association_groups import group_tracklets
+from registration.fleet.association_match import chain_groups, make_tracklets
 from registration.fleet.association_tracks import sensor_tracks
 from registration.fleet.batch import solve_batch
 from registration.fleet.problem import FleetProblem, build_problem
@@ -48,6 +49,13 @@ from registration.fleet.solver import BatchOptions
 from registration.fleet.tables import read_table
 
 __all__ = ["AssociationOptions", "AssociationResult", "associate_and_register"]
+
+#: Stopping tolerance (chi-square units) of the solves between association passes: their estimate
+#: only sets the next gates, so a remaining change of about sqrt(0.01) = 0.1 sigma is enough.
+INTERMEDIATE_TOLERANCE = 1e-2
+#: Iterations per phase of those solves at most (a window that only 2-D radars determine can make
+#: Levenberg-Marquardt crawl along its poorly determined height).
+INTERMEDIATE_ITERATIONS = 25
 
 
 @dataclass(frozen=True)
@@ -61,7 +69,9 @@ class AssociationOptions:
     max_iterations: association passes at most. initial_sigma_attitude, initial_sigma_angle_bias
     (rad), initial_sigma_range_bias (m): the covariance of the first pass for states without a
     finite prior in the tables. iteration_plots: the solves between passes use at most about this
-    many plots (whole windows, evenly spread); the final solve uses all. batch: the solver's options
+    many plots (whole windows, evenly spread) and stop at :data:`INTERMEDIATE_TOLERANCE` or
+    :data:`INTERMEDIATE_ITERATIONS`; the final
+    solve uses all plots and ``batch``'s tolerance. batch: the solver's options
     (its window_s is replaced by this window_s).
     """
 
@@ -76,14 +86,14 @@ class AssociationOptions:
     initial_sigma_attitude: float = float(np.radians(1.0))
     initial_sigma_angle_bias: float = float(np.radians(5.0))
     initial_sigma_range_bias: float = 500.0
-    iteration_plots: int = 40_000
+    iteration_plots: int = 20_000
     batch: BatchOptions = field(default_factory=BatchOptions)
 
     def __post_init__(self):
         checks = {"window_s": self.window_s > 0, "gate_probability": 0 < self.gate_probability < 1,
                   "max_speed": self.max_speed > 0, "accel_sigma": self.accel_sigma > 0,
                   "max_missed": self.max_missed >= 0, "min_track_plots": self.min_track_plots >= 2,
-                  "min_tracklet_plots": self.min_tracklet_plots >= 2, "max_iterations": self.max_iterations >= 1,
+                  "min_tracklet_plots": self.min_tracklet_plots >= 3, "max_iterations": self.max_iterations >= 1,
                   "initial_sigma_attitude": self.initial_sigma_attitude > 0,
                   "initial_sigma_angle_bias": self.initial_sigma_angle_bias > 0,
                   "initial_sigma_range_bias": self.initial_sigma_range_bias > 0,
@@ -103,7 +113,8 @@ class AssociationResult:
     ``residuals``, ``plot_target`` and ``plot_sensor`` are per input row too). ``problem``: the
     registered problem. ``unassociated_rows``: input rows left unassociated; per sensor id
     ``unassociated_by_sensor``; of these ``n_clutter`` were in no track or piece long enough and
-    ``n_single_sensor`` in a piece no other sensor's matched. ``iterations``: association passes;
+    ``n_unconfirmed`` in a piece that no other sensor's matched, or that only sensors lacking a
+    channel matched (2-D radars, passive sensors: the target's height is then barely determined). ``iterations``: association passes;
     ``converged``: the last pass repeated the one before; ``changes``: plots whose label changed,
     per pass after the first. Times (s): ``seconds_total``, ``seconds_assignment`` (inside
     ``linear_sum_assignment``), ``seconds_registration`` (inside ``solve_batch``).
@@ -115,7 +126,7 @@ class AssociationResult:
     unassociated_rows: np.ndarray
     unassociated_by_sensor: dict
     n_clutter: int
-    n_single_sensor: int
+    n_unconfirmed: int
     iterations: int
     converged: bool
     changes: list
@@ -139,7 +150,7 @@ class AssociationResult:
     def lines(self) -> list[str]:
         out = [f"association: {self.n_targets} targets, {self.n_associated} plots associated, "
                f"{self.unassociated_rows.size} unassociated ({self.n_clutter} clutter or short, "
-               f"{self.n_single_sensor} seen by one sensor only), {self.iterations} passes "
+               f"{self.n_unconfirmed} not confirmed by a second sensor), {self.iterations} passes "
                f"({'converged' if self.converged else 'NOT converged'}), {self.seconds_total:.2f} s "
                f"({100 * self.assignment_share:.1f} % in assignment)"]
         out += [f"  unassociated plots of sensor {s}: {n}" for s, n in self.unassociated_by_sensor.items() if n]
@@ -172,14 +183,17 @@ def _initial_covariance(problem: FleetProblem, options: AssociationOptions) -> n
 
 
 def _labels(problem: FleetProblem, tl, group: np.ndarray, chain: np.ndarray) -> np.ndarray:
-    """(N,) label of each plot ('' when its group has one sensor), numbered by first input row."""
+    """(N,) label of each plot, numbered by first input row; '' unless its group holds two or more
+    sensors of which one measures range, bearing and elevation."""
     n_groups = chain.size
-    sensors_in = np.zeros(n_groups, dtype=np.int64)
+    sensors_in, full_in = np.zeros(n_groups, dtype=np.int64), np.zeros(n_groups, dtype=bool)
     pairs = np.unique(np.stack([group, tl.sensor]), axis=1) if group.size else np.zeros((2, 0), dtype=np.int64)
     np.add.at(sensors_in, pairs[0], 1)
+    full_in[pairs[0][(problem.layout.bias_index[pairs[1]] >= 0).all(axis=1)]] = True
     plot_group = np.where(tl.of_plot >= 0, group[np.maximum(tl.of_plot, 0)], -1)
-    ok = (plot_group >= 0) & (sensors_in[np.maximum(plot_group, 0)] >= 2)
-    plot_chain = np.where(ok, chain[np.maximum(plot_group, 0)], -1)
+    g = np.maximum(plot_group, 0)
+    ok = (plot_group >= 0) & (sensors_in[g] >= 2) & full_in[g]
+    plot_chain = np.where(ok, chain[g], -1)
     out = np.full(problem.n_plots, "", dtype=object)
     order = np.argsort(problem.row, kind="stable")
     seen = plot_chain[order]
@@ -204,11 +218,12 @@ def _labelled(problem: FleetProblem, labels: np.ndarray, window_s: float, max_pl
 
 
 def _associate(problem: FleetProblem, track: np.ndarray, x: np.ndarray, P: np.ndarray, options: AssociationOptions,
-               assigner: Assigner) -> tuple[np.ndarray, np.ndarray]:
+               assigner: Assigner, screen: bool) -> tuple[np.ndarray, np.ndarray]:
     """One association pass under the estimate ``x`` and covariance ``P``: (labels (N,), tracklet of
-    each plot (N,), -1 for none)."""
+    each plot (N,), -1 for none). ``screen``: leave out the pieces no quadratic fits."""
     geom = plot_geometry(problem, x)
-    tl = make_tracklets(problem, geom, track, options.window_s, options.min_tracklet_plots)
+    tl = make_tracklets(problem, geom, track, options.window_s, options.min_tracklet_plots,
+                        options.gate_probability if screen else None)
     group = group_tracklets(problem, x, tl, P, options.gate_probability, assigner)
     chain = chain_groups(tl, group, assigner)
     return _labels(problem, tl, group, chain), tl.of_plot
@@ -220,7 +235,7 @@ def _report(problem: FleetProblem, labels: np.ndarray, of_plot: np.ndarray) -> d
     rows = np.sort(problem.row[out])
     per_sensor = np.bincount(problem.sensor[out], minlength=len(problem.sensor_ids))
     clutter = int(np.count_nonzero(out & (of_plot < 0)))
-    return {"unassociated_rows": rows, "n_clutter": clutter, "n_single_sensor": int(out.sum()) - clutter,
+    return {"unassociated_rows": rows, "n_clutter": clutter, "n_unconfirmed": int(out.sum()) - clutter,
             "unassociated_by_sensor": {s: int(n) for s, n in zip(problem.sensor_ids, per_sensor)}}
 
 
@@ -242,6 +257,8 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
                          "tied to a reference target); register without them or give the plots target ids")
     options = options or AssociationOptions()
     batch_options = replace(options.batch, window_s=options.window_s)
+    between = replace(batch_options, tolerance=max(batch_options.tolerance, INTERMEDIATE_TOLERANCE),
+                      max_iterations=min(batch_options.max_iterations, INTERMEDIATE_ITERATIONS))
     problem = _placeholder_problem(plots, sensors, navigation, platforms)
     assigner = Assigner()
     x, P = np.zeros(problem.layout.n), _initial_covariance(problem, options)
@@ -251,7 +268,7 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
                           min_plots=options.min_track_plots)
     labels, previous, changes, t_solve, converged = None, None, [], 0.0, False
     for iteration in range(1, options.max_iterations + 1):
-        labels, of_plot = _associate(problem, track, x, P, options, assigner)
+        labels, of_plot = _associate(problem, track, x, P, options, assigner, iteration > 1)
         if previous is not None:
             changes.append(int(np.count_nonzero(labels != previous)))
             if changes[-1] == 0:
@@ -261,7 +278,7 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
             break
         previous = labels
         t1 = time.perf_counter()
-        step = solve_batch(_labelled(problem, labels, options.window_s, options.iteration_plots), batch_options)
+        step = solve_batch(_labelled(problem, labels, options.window_s, options.iteration_plots), between)
         t_solve += time.perf_counter() - t1
         x, P = step.estimate, step.covariance
     final = _labelled(problem, labels, options.window_s, None)

@@ -30,26 +30,26 @@ def _mahalanobis(d: np.ndarray, S: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def line_cost(tl, b: np.ndarray, line: np.ndarray, cov: np.ndarray, G: np.ndarray, P: np.ndarray):
-    """(d2, logdet), each (B, Gn), of tracklets ``b`` against group curves ``line`` (Gn, 9) with
-    covariance ``cov`` (Gn, 9, 9) and sensitivity ``G`` (Gn, 9, n); P (n, n) the states' covariance."""
-    d = tl.line[b][:, None, :] - line[None, :, :]
-    dG = tl.G[b][:, None] - G[None, :]
-    S = tl.cov[b][:, None] + cov[None, :] + dG @ P @ np.swapaxes(dG, -1, -2)
+    """(d2, logdet), each (K,), of K pairs: tracklets ``b`` (K,) against group curves ``line`` (K, 9)
+    with covariance ``cov`` (K, 9, 9) and sensitivity ``G`` (K, 9, n); P (n, n) the states' covariance."""
+    d = tl.line[b] - line
+    dG = tl.G[b] - G
+    S = tl.cov[b] + cov + dG @ P @ np.swapaxes(dG, -1, -2)
     return _mahalanobis(d, S)
 
 
 def measurement_cost(problem: FleetProblem, x: np.ndarray, tl, b: np.ndarray, line: np.ndarray, cov: np.ndarray,
                      G: np.ndarray, P: np.ndarray):
-    """(d2, logdet), each (B, Gn), in the channels of the tracklets' sensor (module docstring),
-    under the states ``x`` (n,)."""
-    n_b, n_g, n = b.size, line.shape[0], P.shape[0]
-    plot = np.broadcast_to(tl.rep[b][:, None, :], (n_b, n_g, 3)).reshape(-1)
-    tau = np.broadcast_to(tl.rep_tau[b][:, None, :], (n_b, n_g, 3)).reshape(-1)
-    grp = np.broadcast_to(np.arange(n_g)[None, :, None], (n_b, n_g, 3)).reshape(-1)
+    """(d2, logdet), each (K,), of K pairs as :func:`line_cost`, in the channels of the tracklets'
+    sensors (module docstring), under the states ``x`` (n,)."""
+    k_pairs, n = b.size, P.shape[0]
+    plot = tl.rep[b].reshape(-1)
+    tau = tl.rep_tau[b].reshape(-1)
+    grp = np.repeat(np.arange(k_pairs), 3)
     basis = np.concatenate([(tau**k)[:, None, None] * np.eye(3) for k in range(N_COEF)], axis=2)  # (M, 3, L)
     p = (basis @ line[grp][..., None])[..., 0]
     xs = np.append(np.asarray(x, dtype=np.float64), 0.0)
-    cols = state_columns(problem)[plot]
+    cols = state_columns(problem, plot)
     meas, mask = problem.meas[plot], problem.mask[plot]
     res, J = _codegen.get("fleet_residual")(p, *problem.nav[plot].T, xs[cols[:, :3]], xs[cols[:, 3:]],
                                            problem.sensor_lever[problem.sensor[plot]], *meas.T)[:2]
@@ -62,8 +62,7 @@ def measurement_cost(problem: FleetProblem, x: np.ndarray, tl, b: np.ndarray, li
         Dx[rows, :, cols[:, k]] += J[:, :, 3 + k]
     D = A @ G[grp] + Dx[:, :, :n]  # (M, 3, n)
     sigma = np.nan_to_num(problem.sensor_sigma[problem.sensor[plot]], nan=1.0)
-    shape = (n_b, n_g, 9)
-    A, D, r = A.reshape(n_b, n_g, 9, N_LINE), D.reshape(n_b, n_g, 9, n), res.reshape(shape)
-    S = A @ cov[None] @ np.swapaxes(A, -1, -2) + D @ P @ np.swapaxes(D, -1, -2)
-    S = S + np.eye(9) * (sigma**2).reshape(shape)[..., None]
+    A, D, r = A.reshape(k_pairs, 9, N_LINE), D.reshape(k_pairs, 9, n), res.reshape(k_pairs, 9)
+    S = A @ cov @ np.swapaxes(A, -1, -2) + D @ P @ np.swapaxes(D, -1, -2)
+    S = S + np.eye(9) * (sigma**2).reshape(k_pairs, 9)[..., None]
     return _mahalanobis(r, S)

@@ -49,17 +49,19 @@ class PlotGeometry:
     weight: np.ndarray
 
 
-def state_columns(problem: FleetProblem) -> np.ndarray:
-    """(N, 6) state index of each plot's platform attitude errors and sensor biases (-1: none)."""
+def state_columns(problem: FleetProblem, sel: np.ndarray | None = None) -> np.ndarray:
+    """(M, 6) state index of the attitude errors of the platform and the biases of the sensor of
+    plots ``sel`` (default all; -1 for a channel the sensor does not measure)."""
     layout = problem.layout
-    return np.concatenate([layout.att_index[problem.platform], layout.bias_index[problem.sensor]], axis=1)
+    sensor = problem.sensor if sel is None else problem.sensor[sel]
+    return np.concatenate([layout.att_index[problem.sensor_platform[sensor]], layout.bias_index[sensor]], axis=1)
 
 
 def plot_geometry(problem: FleetProblem, x: np.ndarray, sel: np.ndarray | None = None) -> PlotGeometry:
     """The geometry of the problem's plots ``sel`` (default all) under the states ``x`` (n,) rad/m."""
     sel = np.arange(problem.n_plots) if sel is None else np.asarray(sel)
     xs = np.append(np.asarray(x, dtype=np.float64), 0.0)  # index -1 (absent channel) reads 0
-    cols = state_columns(problem)[sel]
+    cols = state_columns(problem, sel)
     att, bias = xs[cols[:, :3]], xs[cols[:, 3:]]
     mask, meas, nav = problem.mask[sel], problem.meas[sel], problem.nav[sel]
     lever = problem.sensor_lever[problem.sensor[sel]]

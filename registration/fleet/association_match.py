@@ -1,25 +1,12 @@
-"""Second association stage: tracklets of different sensors that are the same target, per time
-window, under the current registration estimate and its covariance; then the windows' groups
-chained into targets.
+"""Second association stage: the tracklets, and the chaining of the windows' groups into targets.
 
 A tracklet is one sensor track's plots in one window of ``window_s`` seconds (the windows are a
 common grid, the same for every sensor). Its plots, corrected by the estimate ``x``, are fitted by
-a straight line in ECEF, ``p(t) = a + b tau`` (tau = (t - centre) / half-width), weighted by each
-plot's position information (:mod:`registration.fleet.association_geometry`); the fit gives the
-line's covariance C and its sensitivity G = d(a, b) / dx to the registration states.
-
-In each window the sensors are taken in turn, those measuring the most channels first; the first
-one's tracklets open groups and each next sensor's tracklets are assigned to the groups (a global
-assignment, :class:`~registration.fleet.association_geometry.Assigner`) with the cost
-
-    0.5 (d^T S^-1 d + log det S),  d = line_b - line_group,
-    S = C_b + C_group + (G_b - G_group) P (G_b - G_group)^T,
-
-the negative log-likelihood (up to a constant) of the two lines being the same target's, with the
-registration covariance P carried through both sides' sensitivities (errors shared by both
-sides cancel). Gate: chi-square with 6 degrees of freedom at ``gate_probability``; a tracklet
-outside every gate opens a group. A group's line is the information-weighted fusion of its
-members that measure the most channels.
+a quadratic in time in ECEF, ``p(t) = a + b tau + c tau^2`` (tau = (t - centre) / half-width;
+a straight line would miss a 3 km turn at 160 m/s by 100 m over 20 s), weighted by each plot's
+position information (:mod:`registration.fleet.association_geometry`); the fit gives the curve's
+covariance C and its sensitivity G = d(a, b, c) / dx to the registration states. The grouping of
+the tracklets across sensors, window by window, is :mod:`registration.fleet.association_groups`.
 
 Groups of consecutive windows are chained where they share sensor tracks (an assignment that
 maximises the shared tracks), and a chain is one target.
@@ -32,11 +19,10 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association_cost import line_cost, measurement_cost
 from registration.fleet.association_geometry import N_COEF, N_LINE, Assigner, PlotGeometry, state_columns
 from registration.fleet.problem import FleetProblem
 
-__all__ = ["Tracklets", "make_tracklets", "group_tracklets", "chain_groups"]
+__all__ = ["Tracklets", "make_tracklets", "chain_groups"]
 
 
 @dataclass(frozen=True)
@@ -56,35 +42,68 @@ class Tracklets:
     of_plot: np.ndarray
 
 
+def _piece_starts(track: np.ndarray, window: np.ndarray) -> np.ndarray:
+    """Where each (track, window) piece starts in plots sorted by track and window."""
+    if track.size == 0:
+        return np.zeros(0, dtype=np.int64)
+    return np.flatnonzero(np.r_[True, (track[1:] != track[:-1]) | (window[1:] != window[:-1])])
+
+
+def _fit_pieces(geom: PlotGeometry, order: np.ndarray, start: np.ndarray, tau: np.ndarray):
+    """Information-weighted quadratic fit of each piece (plots ``order`` split at ``start``):
+    (coefficients (K, L), covariance (K, L, L), sensitivity sums (K, L, 6), fit chi-square (K,))."""
+    info = geom.info[order]
+    basis = tau[:, None] ** np.arange(N_COEF)[None, :]  # (M, C): 1, tau, tau^2
+    outer = basis[:, :, None] * basis[:, None, :]
+    N = np.einsum("mab,mij->maibj", outer, info).reshape(-1, N_LINE, N_LINE)
+    p = geom.p_ecef[order]
+    rhs = (basis[:, :, None] * (info @ p[..., None])[..., 0][:, None, :]).reshape(-1, N_LINE)
+    sens = (basis[:, :, None, None] * (info @ geom.dp_dx[order])[:, None]).reshape(-1, N_LINE, 6)
+    N, rhs, sens = (np.add.reduceat(v, start, axis=0) for v in (N, rhs, sens))
+    cov = np.linalg.inv(N)
+    line = (cov @ rhs[..., None])[..., 0]
+    piece = np.cumsum(np.isin(np.arange(order.size), start)) - 1
+    fitted = np.einsum("mc,mci->mi", basis, line[piece].reshape(-1, N_COEF, 3))
+    v = p - fitted
+    chi = np.add.reduceat(np.einsum("mi,mij,mj->m", v, info, v), start)
+    return line, cov, cov @ sens, chi
+
+
 def make_tracklets(problem: FleetProblem, geom: PlotGeometry, track: np.ndarray, window_s: float,
-                   min_plots: int) -> Tracklets:
-    """Cut the sensor tracks ``track`` (N,) into windows and fit each piece (module docstring)."""
+                   min_plots: int, gate_probability: float | None) -> Tracklets:
+    """Cut the sensor tracks ``track`` (N,) into windows and fit each piece (module docstring).
+    Pieces of fewer than ``min_plots`` plots are left out, and, when ``gate_probability`` is given,
+    pieces no quadratic fits (chi-square of the fit, from the sensor noise alone, above that
+    quantile: mostly a track that swapped targets where two crossed). The test ignores the
+    registration's uncertainty, so it is only meaningful once the estimate is close: an angle
+    bias in a rolling deck frame moves the plots back and forth with the roll (a 5 deg bias under
+    4 deg of roll: about 0.35 deg), which no quadratic follows. Only pieces of sensors measuring
+    all three channels are tested: the deck-plane positions of a 2-D radar's plots wobble with the
+    roll whatever the estimate."""
     n = problem.layout.n
     window = np.floor(problem.time / window_s).astype(np.int64)
     in_track = np.flatnonzero(track >= 0)
     order = in_track[np.lexsort((window[in_track], track[in_track]))]
+    start = _piece_starts(track[order], window[order])
+    count = np.diff(np.r_[start, order.size])
+    order = order[np.repeat(count >= min_plots, count)]  # pieces long enough (a quadratic needs 3 scans)
     key_t, key_w = track[order], window[order]
-    start = np.flatnonzero(np.r_[True, (key_t[1:] != key_t[:-1]) | (key_w[1:] != key_w[:-1])])
+    start = _piece_starts(key_t, key_w)
     count = np.diff(np.r_[start, order.size])
     tau = (problem.time[order] - (key_w + 0.5) * window_s) / (0.5 * window_s)
-    info = geom.info[order]
-    basis = tau[:, None] ** np.arange(N_COEF)[None, :]  # (M, K): 1, tau, tau^2
-    outer = basis[:, :, None] * basis[:, None, :]  # (M, K, K)
-    N = np.einsum("mab,mij->maibj", outer, info).reshape(-1, N_LINE, N_LINE)
-    Ip = (info @ geom.p_ecef[order][..., None])[..., 0]
-    rhs = (basis[:, :, None] * Ip[:, None, :]).reshape(-1, N_LINE)
-    ID = info @ geom.dp_dx[order]  # (M, 3, 6)
-    sens = (basis[:, :, None, None] * ID[:, None]).reshape(-1, N_LINE, 6)
-    N, rhs, sens = (np.add.reduceat(v, start, axis=0) for v in (N, rhs, sens))
-    keep = count >= min_plots
-    cov = np.linalg.inv(N[keep])
-    line = (cov @ rhs[keep][..., None])[..., 0]
-    local = cov @ sens[keep]  # (T, L, 6) over the plot's state columns
-    cols = state_columns(problem)[order[start[keep]]]
+    line, cov, local, chi = _fit_pieces(geom, order, start, tau)
+    values = np.add.reduceat(problem.mask[order].sum(axis=1), start)
+    dof = values - N_LINE
+    keep = np.ones(start.size, dtype=bool)
+    full = problem.mask[order[start]].all(axis=1)  # a 2-D radar's deck-plane positions wobble with the roll
+    if gate_probability is not None:
+        keep &= ~full | (dof < 1) | (chi < chi2.ppf(gate_probability, np.maximum(dof, 1)))
+    line, cov, local = line[keep], cov[keep], local[keep]
+    cols = state_columns(problem, order[start[keep]])
     G = np.zeros((int(keep.sum()), N_LINE, n + 1))
-    rows = np.arange(cols.shape[0])[:, None]
+    rows = np.arange(cols.shape[0])
     for k in range(6):
-        G[rows[:, 0], :, cols[:, k]] += local[:, :, k]  # column -1 (absent channel) lands in the spare
+        G[rows, :, cols[:, k]] += local[:, :, k]  # column -1 (absent channel) lands in the spare
     tracklet_of_piece = np.where(keep, np.cumsum(keep) - 1, -1)
     of_plot = np.full(problem.n_plots, -1, dtype=np.int64)
     of_plot[order] = np.repeat(tracklet_of_piece, count)
@@ -92,82 +111,6 @@ def make_tracklets(problem: FleetProblem, geom: PlotGeometry, track: np.ndarray,
     at = np.stack([first, (first + last) // 2, last], axis=1)
     return Tracklets(key_t[first], key_w[first], problem.sensor[order[first]], line, cov, G[:, :, :n], order[at],
                      tau[at], of_plot)
-
-
-class _Groups:
-    """The groups of one window: fused information, information-weighted line and sensitivity."""
-
-    def __init__(self, n: int):
-        self.N = np.zeros((0, N_LINE, N_LINE))
-        self.h = np.zeros((0, N_LINE))
-        self.NG = np.zeros((0, N_LINE, n))
-        self.rank = np.zeros(0, dtype=np.int64)
-
-    def line(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        cov = np.linalg.inv(self.N)
-        return (cov @ self.h[..., None])[..., 0], cov, cov @ self.NG
-
-    def add(self, g: np.ndarray, tl: Tracklets, b: np.ndarray, rank: int) -> None:
-        """Fuse tracklets ``b`` into groups ``g`` (only into groups of the same rank)."""
-        fuse = self.rank[g] == rank
-        g, b = g[fuse], b[fuse]
-        Nb = np.linalg.inv(tl.cov[b])
-        self.N[g] += Nb
-        self.h[g] += (Nb @ tl.line[b][..., None])[..., 0]
-        self.NG[g] += Nb @ tl.G[b]
-
-    def open(self, tl: Tracklets, b: np.ndarray, rank: int) -> np.ndarray:
-        Nb = np.linalg.inv(tl.cov[b])
-        first = self.N.shape[0]
-        self.N = np.concatenate([self.N, Nb])
-        self.h = np.concatenate([self.h, (Nb @ tl.line[b][..., None])[..., 0]])
-        self.NG = np.concatenate([self.NG, Nb @ tl.G[b]])
-        self.rank = np.r_[self.rank, np.full(b.size, rank)]
-        return first + np.arange(b.size)
-
-
-def _window_groups(problem: FleetProblem, x: np.ndarray, tl: Tracklets, members: np.ndarray, P: np.ndarray,
-                   gate_probability: float, assigner: Assigner) -> np.ndarray:
-    """Group index (within the window) of each tracklet ``members`` of one window."""
-    rank = (problem.layout.bias_index >= 0).sum(axis=1)
-    groups = _Groups(P.shape[0])
-    out = np.full(members.size, -1, dtype=np.int64)
-    for s in np.lexsort((np.arange(rank.size), -rank)):
-        mine = np.flatnonzero(tl.sensor[members] == s)
-        if mine.size == 0:
-            continue
-        b = members[mine]
-        g = np.full(b.size, -1, dtype=np.int64)
-        if groups.N.shape[0]:
-            line, cov, G = groups.line()
-            if rank[s] == 3:
-                (d2, logdet), dof = line_cost(tl, b, line, cov, G, P), N_LINE
-            else:
-                (d2, logdet), dof = measurement_cost(problem, x, tl, b, line, cov, G, P), 3 * int(rank[s])
-            gate = float(chi2.ppf(gate_probability, dof))
-            cost = np.where(d2 < gate, 0.5 * (d2 + logdet), np.inf)
-            g = assigner.assign(cost, 0.5 * (gate + logdet.min(axis=1)))
-        matched = g >= 0
-        groups.add(g[matched], tl, b[matched], int(rank[s]))
-        out[mine[matched]] = g[matched]
-        out[mine[~matched]] = groups.open(tl, b[~matched], int(rank[s]))
-    return out
-
-
-def group_tracklets(problem: FleetProblem, x: np.ndarray, tl: Tracklets, P: np.ndarray, gate_probability: float,
-                    assigner: Assigner) -> np.ndarray:
-    """(T,) group id of each tracklet (unique over all windows), under the estimate ``x`` (n,) and
-    its covariance ``P`` (n, n)."""
-    group = np.full(tl.track.size, -1, dtype=np.int64)
-    order = np.argsort(tl.window, kind="stable")
-    bounds = np.flatnonzero(np.r_[True, tl.window[order][1:] != tl.window[order][:-1], True])
-    offset = 0
-    for a, b in zip(bounds[:-1], bounds[1:]):
-        members = order[a:b]
-        g = _window_groups(problem, x, tl, members, P, gate_probability, assigner)
-        group[members] = offset + g
-        offset += int(g.max()) + 1
-    return group
 
 
 def chain_groups(tl: Tracklets, group: np.ndarray, assigner: Assigner) -> np.ndarray:

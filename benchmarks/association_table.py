@@ -1,0 +1,103 @@
+#!/usr/bin/env python3
+"""The table of docs/association.md: association + registration of plots without target ids on
+simulated fleets with known truth, printed as markdown.
+
+Run from a checkout::
+
+    python3 benchmarks/association_table.py                  # 3 runs per row, 300 s each
+    python3 benchmarks/association_table.py --runs 1 --duration 120
+
+Each row is one simulated case of :func:`registration.fleet.association_scenario` (the default
+fleet's five radars: three 3-D, two 2-D, all asynchronous), run ``--runs`` times with different
+random draws (targets, biases' signs, noise, misses, clutter). Per run: the plots are associated and
+registered by :func:`associate_and_register`, and the same real plots (without the clutter) are
+registered with their true target ids as the reference. Columns (mean over the runs, worst run in
+brackets where it matters):
+
+* error: share of the real plots given a label that stands for another target (each label stands
+  for the true target of most of its plots);
+* unassoc.: share of the real plots left unassociated; clutter in: share of the clutter plots given
+  a label; labels/target: labels per true target (1 = no target split in pieces);
+* passes: association passes (all runs converged unless marked);
+* bias vs ids: the largest difference between the association's estimate and the true-id
+  registration's, over all states, in units of the true-id registration's sigma;
+* bias vs truth: the largest |estimate - truth| / sigma of the association's registration;
+* time: seconds of the association + registration, and of the true-id registration.
+"""
+
+from __future__ import annotations
+
+import argparse
+import time
+
+import numpy as np
+
+from registration.fleet import associate_and_register, association_scenario, association_scores, build_problem, solve_batch
+
+#: Rows: targets, crossing pairs, angle bias (deg), share of missed detections, clutter plots per scan.
+CASES = [
+    (5, False, 2.0, 0.0, 0.0),
+    (5, False, 2.0, 0.1, 1.0),
+    (5, False, 5.0, 0.1, 1.0),
+    (5, True, 2.0, 0.1, 1.0),
+    (5, True, 5.0, 0.1, 1.0),
+    (20, False, 2.0, 0.1, 1.0),
+    (20, False, 5.0, 0.1, 1.0),
+    (20, True, 2.0, 0.1, 1.0),
+    (20, True, 5.0, 0.1, 1.0),
+    (20, True, 5.0, 0.1, 5.0),
+]
+
+
+def run_case(n_targets: int, crossing: bool, bias_deg: float, p_missed: float, clutter: float, seed: int,
+             duration_s: float) -> dict:
+    """One run: the scores, the estimates against the true-id registration and the truth, the times."""
+    sim = association_scenario(n_targets, crossing=crossing, angle_bias=np.radians(bias_deg), p_missed=p_missed,
+                               clutter_per_scan=clutter, duration_s=duration_s, seed=seed)
+    sc = sim.scenario
+    t0 = time.perf_counter()
+    base = solve_batch(build_problem(sim.labelled_plots, sc.sensors, sc.navigation, sc.platforms))
+    t_ids = time.perf_counter() - t0
+    result = associate_and_register(sim.plots, sc.sensors, sc.navigation, sc.platforms)
+    free = base.layout.free
+    truth = sc.truth_vector(base.layout)
+    est = result.batch.estimate
+    return {**association_scores(result.labels, sim.true_target), "passes": result.iterations,
+            "converged": result.converged, "seconds": result.seconds_total, "seconds_ids": t_ids,
+            "vs_ids": float(np.max(np.abs(est - base.estimate)[free] / base.sigma[free])),
+            "vs_truth": float(np.max(np.abs(est - truth)[free] / result.batch.sigma[free])),
+            "plots": int(sim.plots["time"].size), "clutter": int(np.count_nonzero(sim.true_target == ""))}
+
+
+def _row(case, runs: list[dict]) -> str:
+    n, crossing, bias, missed, clutter = case
+    mean = {k: float(np.mean([r[k] for r in runs])) for k in runs[0] if k != "converged"}
+    worst = {k: float(np.max([r[k] for r in runs])) for k in runs[0] if k != "converged"}
+    conv = "" if all(r["converged"] for r in runs) else " (not all converged)"
+    return (f"| {n} | {'yes' if crossing else 'no'} | {bias:g} | {100 * missed:g} % | {clutter:g} | "
+            f"{mean['plots']:.0f} ({mean['clutter']:.0f}) | {100 * mean['error_rate']:.2f} % ({100 * worst['error_rate']:.2f} %) | "
+            f"{100 * mean['unassociated_rate']:.1f} % ({100 * worst['unassociated_rate']:.1f} %) | "
+            f"{100 * mean['clutter_associated']:.2f} % | {mean['labels_per_target']:.2f} | {mean['passes']:.1f}{conv} | "
+            f"{mean['vs_ids']:.2f} ({worst['vs_ids']:.2f}) | {mean['vs_truth']:.2f} ({worst['vs_truth']:.2f}) | "
+            f"{mean['seconds']:.1f} / {mean['seconds_ids']:.1f} |")
+
+
+def main(argv=None) -> list[str]:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--runs", type=int, default=3, help="runs per row (random draws)")
+    parser.add_argument("--duration", type=float, default=300.0, help="seconds of data per run")
+    args = parser.parse_args(argv)
+    lines = [f"{args.runs} runs of {args.duration:g} s per row; mean (worst run)", "",
+             "| targets | crossing | angle bias (deg) | missed | clutter / scan | plots (clutter) | error | unassoc. | "
+             "clutter in | labels / target | passes | bias vs ids (σ) | bias vs truth (σ) | time (s): assoc. / ids |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    print("\n".join(lines), flush=True)
+    for case in CASES:
+        runs = [run_case(*case, seed=seed, duration_s=args.duration) for seed in range(args.runs)]
+        lines.append(_row(case, runs))
+        print(lines[-1], flush=True)
+    return lines
+
+
+if __name__ == "__main__":
+    main()
