@@ -94,7 +94,9 @@ long long registration_scan_runs(casadi_fn f, long long runs, long long n,
  * returns REGISTRATION_STEP_FAILED. On success the first n_carry outputs are copied into the
  * first n_carry inputs (the new state), each output deliver_out[m] (m < n_deliver) is copied to
  * deliver_ptr[m], which then advances past it (the caller's results of consecutive steps land in
- * consecutive rows of its arrays; it resets the pointers before they run out), and 0 is returned.
+ * consecutive rows of its arrays; it resets the pointers before they run out), output ring_out
+ * (if >= 0) is copied into row ring_count % ring_len of the ring (the last ring_len values, for a
+ * caller that keeps a window of them), ring_count is incremented, and 0 is returned.
  */
 #define REGISTRATION_STEP_OUT_OF_BOUNDS 1
 #define REGISTRATION_STEP_NON_FINITE 2
@@ -117,9 +119,12 @@ typedef struct {
     int n_deliver;
     const int *deliver_out;
     double **deliver_ptr;
+    int ring_out, ring_len;
+    double *ring;
+    long long ring_count;
 } registration_stepper;
 
-int registration_step(const registration_stepper *s)
+int registration_step(registration_stepper *s)
 {
     if (s->check_in >= 0) {
         const double *v = s->in_ptr[s->check_in];
@@ -146,5 +151,12 @@ int registration_step(const registration_stepper *s)
         for (long long k = 0; k < s->out_size[j]; ++k) dst[k] = src[k];
         s->deliver_ptr[m] = dst + s->out_size[j];
     }
+    if (s->ring_out >= 0) {
+        long long size = s->out_size[s->ring_out];
+        double *dst = s->ring + (s->ring_count % s->ring_len) * size;
+        const double *src = s->out_ptr[s->ring_out];
+        for (long long k = 0; k < size; ++k) dst[k] = src[k];
+    }
+    s->ring_count += 1;
     return 0;
 }

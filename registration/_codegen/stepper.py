@@ -17,6 +17,7 @@ from __future__ import annotations
 import ctypes
 import enum
 import functools
+from collections import deque
 
 import numpy as np
 
@@ -46,6 +47,7 @@ class _StepperStruct(ctypes.Structure):
         ("finite_out", ctypes.c_void_p), ("arg", ctypes.c_void_p), ("res", ctypes.c_void_p),
         ("iw", ctypes.c_void_p), ("w", ctypes.c_void_p),
         ("n_deliver", ctypes.c_int), ("deliver_out", ctypes.c_void_p), ("deliver_ptr", ctypes.c_void_p),
+        ("ring_out", ctypes.c_int), ("ring_len", ctypes.c_int), ("ring", ctypes.c_void_p), ("ring_count", ctypes.c_longlong),
     ]
 
 
@@ -130,6 +132,8 @@ class CStepper:
     it was not :data:`OK`. Its arrays are the caller's too, but cheaper: the compiled step copies
     the delivered outputs into rows of blocks of :data:`BLOCK_ROWS` steps, and ``advance``
     returns views of one row (a block is freed when no row of it is referenced any more).
+    ``keep(name, length)`` keeps the last ``length`` values of output ``name`` of the successful
+    steps (copied by the compiled step into a ring), ``kept()`` returns them, ``set_kept`` loads them.
     """
 
     def __init__(self, fn, kernel, library, carry: dict, feed: str, low=None, high=None, finite=(), deliver=()):
@@ -159,8 +163,9 @@ class CStepper:
         self._struct = _StepperStruct(
             f=ctypes.cast(getattr(library, fn.name), ctypes.c_void_p).value, n_in=len(self._in), n_out=len(self._out),
             n_carry=lay.n_carry, check_in=lay.feed if lay.low is not None else -1, n_finite=len(lay.finite),
-            n_deliver=len(lay.deliver), **addr,
+            n_deliver=len(lay.deliver), ring_out=-1, **addr,
         )
+        self._ring: np.ndarray | None = None
         call = functools.partial(library.registration_step, ctypes.byref(self._struct))
         blocks = _Blocks(keep["deliver_ptr"], [lay.out_shapes[j] for j in lay.deliver])
         self.step, self.advance = _step_functions(self._feed, call, self._unchecked(call), blocks, lay.keys)
@@ -182,11 +187,53 @@ class CStepper:
         j = self._layout.inputs.index(name)
         self._in[j][:] = _column_major(value, self._layout.in_shapes[j], name)
 
+    def keep(self, name: str, length: int) -> None:
+        """From now on keep the last ``length`` (>= 1) values of vector output ``name``; none kept yet."""
+        j, size = _kept_output(self._layout, name, length)
+        self._ring = np.zeros((length, size))
+        self._struct.ring = self._ring.ctypes.data
+        self._struct.ring_out, self._struct.ring_len, self._struct.ring_count = j, length, 0
+
+    def kept(self) -> np.ndarray:
+        """The kept values, oldest first: a new (m, size) array, m <= length (see :meth:`keep`)."""
+        if self._ring is None:
+            raise ValueError("nothing is kept: call keep() first")
+        count, length = self._struct.ring_count, len(self._ring)
+        if count <= length:
+            return self._ring[:count].copy()
+        return np.roll(self._ring, -(count % length), axis=0)
+
+    def set_kept(self, values) -> None:
+        """Replace the kept values by ``values`` ((m, size), oldest first, m <= length)."""
+        if self._ring is None:
+            raise ValueError("nothing is kept: call keep() first")
+        values = _kept_values(values, self._ring.shape)
+        self._ring[:len(values)] = values
+        self._struct.ring_count = len(values)
+
     def get(self, name: str):
         """A copy of input ``name`` at its core shape (a carried input: the committed state)."""
         j = self._layout.inputs.index(name)
         out = _from_column_major(self._in[j], self._layout.in_shapes[j])
         return out if isinstance(out, float) else out.copy()
+
+
+def _kept_output(lay: _Layout, name: str, length: int) -> tuple[int, int]:
+    """Index and size of vector output ``name`` to keep ``length`` values of; ValueError if not one."""
+    if name not in lay.outputs or lay.out_shapes[lay.outputs.index(name)][1] != 1:
+        raise ValueError(f"{lay.fn_name}: keep() takes a vector output, got {name!r}")
+    if int(length) < 1:
+        raise ValueError(f"keep(): length must be at least 1, got {length}")
+    j = lay.outputs.index(name)
+    return j, lay.out_shapes[j][0]
+
+
+def _kept_values(values, shape: tuple[int, int]) -> np.ndarray:
+    """``values`` as an (m, size) float64 array with m <= the ring's length; ValueError otherwise."""
+    a = np.asarray(values, dtype=np.float64)
+    if a.ndim != 2 or a.shape[1] != shape[1] or len(a) > shape[0]:
+        raise ValueError(f"set_kept(): expected at most {shape[0]} values of size {shape[1]}, got shape {a.shape}")
+    return a
 
 
 #: Steps per block of delivered results (see :class:`CStepper`): 64 rows of the Kalman step's
@@ -277,6 +324,24 @@ class PyStepper:
         self._layout = _Layout(fn, carry, feed, low, high, finite, deliver)
         self._values = [np.zeros(_core(s)) for s in self._layout.in_shapes]
         self._last: list | None = None
+        self._ring: deque | None = None
+        self._ring_out = -1
+
+    def keep(self, name: str, length: int) -> None:
+        self._ring_out, size = _kept_output(self._layout, name, length)
+        self._ring = deque(maxlen=int(length))
+        self._ring_size = size
+
+    def kept(self) -> np.ndarray:
+        if self._ring is None:
+            raise ValueError("nothing is kept: call keep() first")
+        return np.array(self._ring).reshape(-1, self._ring_size)
+
+    def set_kept(self, values) -> None:
+        if self._ring is None:
+            raise ValueError("nothing is kept: call keep() first")
+        self._ring.clear()
+        self._ring.extend(_kept_values(values, (self._ring.maxlen, self._ring_size)).copy())
 
     def set(self, name: str, value) -> None:
         j = self._layout.inputs.index(name)
@@ -299,6 +364,8 @@ class PyStepper:
             return NON_FINITE
         for j in range(lay.n_carry):
             self._values[j] = np.array(outs[j])
+        if self._ring is not None:
+            self._ring.append(np.array(outs[self._ring_out], dtype=np.float64).ravel())
         self._last = outs
         return OK
 

@@ -7,8 +7,6 @@ is bit for bit the run in one piece. Wang et al. 2011, the filter of eqs. (18)-(
 
 from __future__ import annotations
 
-from collections import deque
-
 import numpy as np
 
 from registration import _codegen
@@ -84,36 +82,40 @@ class OnlineRegistrar:
         self._held: dict | None = {
             "x": _frozen(self.config.x0 if self.config.x0 is not None else np.zeros(N_STATE)),
             "P": _frozen(np.diag(np.square(self.config.prior_sigma))), "info": _frozen(np.zeros((N_STATE, N_STATE))),
+            "window": _frozen(np.empty((0, N_STATE))),  # the last q_window estimates, oldest first
         }
+        self._q_window = int(self.config.q_window)
         self._q_fixed = np.diag(np.square(self.config.q_sigma))
         self._adaptive = self.config.q_mode != "fixed"
         self._sigma0 = np.array(self.config.sigma0)
-        self._window: deque = deque(maxlen=int(self.config.q_window))
         self.n_updates = 0
         self.last_time: float | None = None
 
     def _state(self, name: str) -> np.ndarray:
-        """State ``name``: the held array, else read back (once) from the stepper's buffers."""
+        """State ``name`` (x, P, info or window): the held array, else read back (once) from the stepper."""
         held = self._held
         if held is None:
             held = self._held = {}
         value = held.get(name)
         if value is None:
-            value = held[name] = _frozen(self._stepper.get(name))
+            value = held[name] = _frozen(self._stepper.kept() if name == "window" else self._stepper.get(name))
         return value
 
     def _set_state(self, name: str, value) -> None:
         value = _frozen(value)
-        if self._held is None:  # the state is in the stepper; the other two stay there
+        if self._held is None:  # the state is in the stepper; the rest stays there
             self._held = {}
         self._held[name] = value
-        if self._stepper is not None:
+        if self._stepper is not None and name == "window":
+            self._stepper.set_kept(value)
+        elif self._stepper is not None:
             self._stepper.set(name, value)
 
     def __getstate__(self) -> dict:
         """For pickle and copy: the state as arrays, without the compiled functions (found again on load)."""
         state = dict(self.__dict__)
-        state.update(_held={"x": self.x, "P": self.P, "info": self.info}, _stepper=None, _advance=None, _step=None)
+        state.update(_held={k: self._state(k) for k in ("x", "P", "info", "window")}, _stepper=None, _advance=None,
+                     _step=None)
         return state
 
     def __setstate__(self, state: dict) -> None:
@@ -127,9 +129,11 @@ class OnlineRegistrar:
 
     def process_noise(self) -> np.ndarray:
         """Q for the next step: fixed, or eqs. (21)-(22) (sample covariance of the last N estimates)."""
-        if self.config.q_mode == "fixed" or len(self._window) < 2:
+        if self.config.q_mode == "fixed":
             return self._q_fixed
-        est = np.array(self._window)
+        est = self._state("window")
+        if len(est) < 2:
+            return self._q_fixed
         dev = est - est.mean(axis=0)
         return dev.T @ dev / len(est) + self._q_fixed
 
@@ -140,6 +144,8 @@ class OnlineRegistrar:
         for name, value in (("x", self.x), ("P", self.P), ("info", self.info), ("Q", self._q_fixed),
                             ("sigma0", self._sigma0)):
             stepper.set(name, value)
+        stepper.keep("x_new", self._q_window)  # the window of estimates, kept by the compiled step
+        stepper.set_kept(self._state("window"))
         self._stepper, self._advance = stepper, stepper.advance
         return stepper.advance
 
@@ -160,8 +166,7 @@ class OnlineRegistrar:
         out = advance(row)
         if type(out) is int:
             out = self._refused(out, row)
-        self._held = None  # the new state is in the stepper's buffers
-        self._window.append(out["x"].copy())
+        self._held = None  # the new state (and window) is in the stepper's buffers
         self.n_updates += 1
         if time is not None:
             self.last_time = time
@@ -234,9 +239,9 @@ class OnlineRegistrar:
             if not partial:
                 raise RuntimeError(f"row {self.n_updates + n}: the filter step produced non-finite values; state left unchanged")
         if n:
+            window = np.concatenate([self._state("window"), x[:n]])[-self._q_window:]
             self.x, self.P, self.info = x[n - 1].copy(), P[n - 1].copy(), np.array(info)
-            for i in range(max(0, n - self._window.maxlen), n):
-                self._window.append(x[i].copy())
+            self._set_state("window", window)
             self.n_updates += n
             if times is not None:
                 self.last_time = float(times[n - 1])
@@ -266,7 +271,7 @@ class OnlineRegistrar:
         """Everything that determines the next steps (plain numpy arrays and numbers; copies)."""
         return {
             "x": self.x.copy(), "P": self.P.copy(), "info": self.info.copy(),
-            "window": np.array(self._window).reshape(-1, N_STATE),
+            "window": self._state("window").copy(),
             "n_updates": int(self.n_updates), "last_time": self.last_time,
         }
 
@@ -278,13 +283,12 @@ class OnlineRegistrar:
         window = np.array(state["window"], dtype=np.float64).reshape(-1, N_STATE)
         if x.shape != (N_STATE,) or P.shape != (N_STATE, N_STATE) or info.shape != (N_STATE, N_STATE):
             raise ValueError("state: x must be (12,), P and info (12, 12)")
-        if len(window) > self._window.maxlen:
-            raise ValueError(f"state: window holds {len(window)} estimates, more than q_window = {self._window.maxlen}")
+        if len(window) > self._q_window:
+            raise ValueError(f"state: window holds {len(window)} estimates, more than q_window = {self._q_window}")
         if not (np.isfinite(x).all() and np.isfinite(P).all() and np.isfinite(info).all() and np.isfinite(window).all()):
             raise ValueError("state: non-finite values")
         self.x, self.P, self.info = x, P, info
-        self._window.clear()
-        self._window.extend(w.copy() for w in window)
+        self._set_state("window", window)
         self.n_updates = int(state["n_updates"])
         last = state.get("last_time")
         self.last_time = None if last is None else float(last)

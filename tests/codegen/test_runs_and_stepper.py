@@ -190,3 +190,34 @@ def test_advance_gives_the_scan_s_results_as_the_caller_s_arrays_across_blocks(r
     np.testing.assert_array_equal(outs[0]["P"], ref["P_new"][0])
     np.testing.assert_array_equal([o["nis"] for o in outs], ref["nis"])
     np.testing.assert_array_equal(st.get("x"), ref["x_new"][-1])
+
+
+@pytest.mark.parametrize("backend", _backends())
+def test_the_stepper_keeps_the_last_values_of_an_output(rows, backend):
+    """keep(): the compiled step copies each successful step's output into a ring; kept() gives the
+    last `length` of them oldest first (a refused step adds nothing); set_kept() replaces them."""
+    fn = GeneratedFunction(STEP, force_backend=backend)
+    stream = rows.reshape(-1, 18)
+    inputs = _inputs(stream)
+    ref = fn.scan(len(stream), CARRY, inputs)["x_new"]
+    low, high = np.full(18, -1e6), np.full(18, 1e6)
+    low[[6, 15]], high[[6, 15]] = 1.0, 1e305
+    st = _stepper(fn, inputs, low, high)
+    st.keep("x_new", 7)
+    assert st.kept().shape == (0, 12)
+    for i, row in enumerate(stream):
+        assert st.step(row) == StepCode.OK
+        bad = row.copy()
+        bad[6] = np.nan
+        assert st.step(bad) == StepCode.OUT_OF_BOUNDS
+        np.testing.assert_array_equal(st.kept(), ref[max(0, i - 6):i + 1])
+    st.set_kept(ref[:3])
+    np.testing.assert_array_equal(st.kept(), ref[:3])
+    st.step(stream[0])
+    assert len(st.kept()) == 4
+    with pytest.raises(ValueError, match="at most 7 values of size 12"):
+        st.set_kept(np.zeros((8, 12)))
+    with pytest.raises(ValueError, match="keep\\(\\) takes a vector output, got 'P_new'"):
+        st.keep("P_new", 3)
+    with pytest.raises(ValueError, match="length must be at least 1"):
+        st.keep("x_new", 0)

@@ -71,12 +71,13 @@ def test_update_then_block_then_update_is_one_run(scenario):
     reg = OnlineRegistrar()
     for k in range(10):
         reg.update(rows[k], time=t[k])
-    reg.update_block(rows[10:40], t[10:40])
-    for k in range(40, len(rows)):
+    reg.update_block(rows[10:50], t[10:50])  # the window then spans the block and the updates after it
+    for k in range(50, len(rows)):
         out = reg.update(rows[k], time=t[k])
     np.testing.assert_array_equal(out["x"], batch.final)
     np.testing.assert_array_equal(reg.P, batch.covariances[-1])
     np.testing.assert_array_equal(reg.info, batch.information)
+    np.testing.assert_array_equal(reg.state_dict()["window"], batch.estimates[-reg.config.q_window:])
 
 
 def test_returned_arrays_are_the_callers_and_the_state_is_read_only(scenario):
