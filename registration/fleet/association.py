@@ -66,12 +66,15 @@ class AssociationOptions:
     quantile of chi-square. max_speed (m/s): a new track's velocity sigma. accel_sigma (m/s^2): the
     tracks' white-acceleration noise. max_missed: scans in a row without a plot that close a track.
     min_track_plots, min_tracklet_plots: shorter tracks are clutter, shorter pieces are left out.
-    max_iterations: association passes at most. initial_sigma_attitude, initial_sigma_angle_bias
+    max_iterations: association passes at most, the last one included (1: a single pass under
+    the starting covariance). initial_sigma_attitude, initial_sigma_angle_bias
     (rad), initial_sigma_range_bias (m): the covariance of the first pass for states without a
-    finite prior in the tables. iteration_plots: the solves between passes use at most about this
-    many plots (whole windows, evenly spread) and stop at :data:`INTERMEDIATE_TOLERANCE` or
-    :data:`INTERMEDIATE_ITERATIONS`; the final
-    solve uses all plots and ``batch``'s tolerance. batch: the solver's options
+    finite prior in the tables. iteration_plots: the passes, and the solves between them, use only
+    every k-th window, k such that these hold about this many plots; once the association stops
+    changing there, one last pass covers all windows, with the sensors' tracks made again from the
+    plots corrected by the estimate. The solves between passes stop at
+    :data:`INTERMEDIATE_TOLERANCE` or :data:`INTERMEDIATE_ITERATIONS`; the final solve uses all the
+    associated plots and ``batch``'s settings. batch: the solver's options
     (its window_s is replaced by this window_s).
     """
 
@@ -115,8 +118,9 @@ class AssociationResult:
     ``unassociated_by_sensor``; of these ``n_clutter`` were in no track or piece long enough and
     ``n_unconfirmed`` in a piece that no other sensor's matched, or that only sensors lacking a
     channel matched (2-D radars, passive sensors: the target's height is then barely determined). ``iterations``: association passes;
-    ``converged``: the last pass repeated the one before; ``changes``: plots whose label changed,
-    per pass after the first. Times (s): ``seconds_total``, ``seconds_assignment`` (inside
+    ``converged``: a pass repeated the one before; ``changes``: plots whose label changed, per pass
+    after the first (on the windows of ``iteration_plots``; the last pass, over all windows with the
+    tracks made again from the corrected plots, is counted in ``iterations``, not in ``changes``). Times (s): ``seconds_total``, ``seconds_assignment`` (inside
     ``linear_sum_assignment``), ``seconds_registration`` (inside ``solve_batch``).
     """
 
@@ -203,12 +207,24 @@ def _labels(problem: FleetProblem, tl, group: np.ndarray, chain: np.ndarray) -> 
     return out.astype(str)
 
 
-def _labelled(problem: FleetProblem, labels: np.ndarray, window_s: float, max_plots: int | None) -> FleetProblem:
-    """The problem of the labelled plots (at most about ``max_plots``: whole windows, evenly spread)."""
+def _tracks(problem: FleetProblem, x: np.ndarray, options: AssociationOptions, assigner: Assigner) -> np.ndarray:
+    """The sensors' tracks (:func:`sensor_tracks`) of the plots corrected by the states ``x``."""
+    return sensor_tracks(problem.time, problem.sensor, plot_geometry(problem, x), assigner,
+                         max_speed=options.max_speed, accel_sigma=options.accel_sigma,
+                         gate_probability=options.gate_probability, max_missed=options.max_missed,
+                         min_plots=options.min_track_plots)
+
+
+def _window_subset(problem: FleetProblem, options: AssociationOptions) -> np.ndarray:
+    """(N,) the plots of the windows the passes before the last one use: every k-th window, k such
+    that they hold about ``options.iteration_plots`` plots (all windows when the data are fewer)."""
+    k = int(np.ceil(problem.n_plots / options.iteration_plots))
+    return np.floor(problem.time / options.window_s).astype(np.int64) % k == 0
+
+
+def _labelled(problem: FleetProblem, labels: np.ndarray) -> FleetProblem:
+    """The problem of the labelled plots, their labels as target ids."""
     keep = labels != ""
-    if max_plots is not None and keep.sum() > max_plots:
-        window = np.floor(problem.time / window_s).astype(np.int64)
-        keep &= window % int(np.ceil(keep.sum() / max_plots)) == 0
     if not keep.any():
         raise ValueError("association: no plots could be associated across two sensors (see AssociationOptions: "
                          "the gate and the initial sigmas)")
@@ -262,33 +278,33 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
     problem = _placeholder_problem(plots, sensors, navigation, platforms)
     assigner = Assigner()
     x, P = np.zeros(problem.layout.n), _initial_covariance(problem, options)
-    track = sensor_tracks(problem.time, problem.sensor, plot_geometry(problem, x), assigner,
-                          max_speed=options.max_speed, accel_sigma=options.accel_sigma,
-                          gate_probability=options.gate_probability, max_missed=options.max_missed,
-                          min_plots=options.min_track_plots)
-    labels, previous, changes, t_solve, converged = None, None, [], 0.0, False
-    for iteration in range(1, options.max_iterations + 1):
-        labels, of_plot = _associate(problem, track, x, P, options, assigner, iteration > 1)
+    track = _tracks(problem, x, options, assigner)
+    subset = _window_subset(problem, options)
+    labels, previous, changes, t_solve, converged, passes = None, None, [], 0.0, False, 0
+    for passes in range(1, options.max_iterations):  # the passes before the last, on the windows of ``subset``
+        labels, of_plot = _associate(problem, np.where(subset, track, -1), x, P, options, assigner, passes > 1)
         if previous is not None:
             changes.append(int(np.count_nonzero(labels != previous)))
             if changes[-1] == 0:
                 converged = True
                 break
-        if iteration == options.max_iterations:
-            break
         previous = labels
         t1 = time.perf_counter()
-        step = solve_batch(_labelled(problem, labels, options.window_s, options.iteration_plots), between)
+        step = solve_batch(_labelled(problem, labels), between)
         t_solve += time.perf_counter() - t1
         x, P = step.estimate, step.covariance
-    final = _labelled(problem, labels, options.window_s, None)
+    if passes:  # the last pass: all windows, and the sensors' tracks again from the plots corrected by the
+        track = _tracks(problem, x, options, assigner)  # estimate (an angle bias in a rolling deck frame
+    labels, of_plot = _associate(problem, track, x, P, options, assigner, passes > 0)  # sways the plots)
+    final = _labelled(problem, labels)
     t1 = time.perf_counter()
     result = solve_batch(final, batch_options)
     t_solve += time.perf_counter() - t1
     n_rows = problem.n_input_plots
     row_labels = np.full(n_rows, "", dtype=object)
     row_labels[problem.row] = labels
-    return AssociationResult(labels=row_labels.astype(str), batch=result, problem=final, iterations=iteration,
+    return AssociationResult(labels=row_labels.astype(str), batch=result, problem=final,
+                             iterations=passes + 1,
                              converged=converged, changes=changes, seconds_total=time.perf_counter() - t0,
                              seconds_assignment=assigner.seconds, seconds_registration=t_solve,
                              **_report(problem, labels, of_plot))

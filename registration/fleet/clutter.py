@@ -4,7 +4,8 @@ the scores of an association against the truth (:func:`association_scores`).
 The fleet is :mod:`registration.fleet.scenario`'s (three ships, one shore site) with its radars
 (3-D and 2-D; the passive sensor is left out) and ``n_targets`` targets on straight lines and
 circles, optionally in crossing pairs (two straight tracks through the same point at the same
-time and height). Each real plot is missed with probability ``p_missed``; each scan of each
+time and height). A target more than :data:`MAX_ELEVATION_RAD` above a radar is not seen; each
+other real plot is missed with probability ``p_missed``; each scan of each
 sensor gets a Poisson number of clutter plots (mean ``clutter_per_scan``) uniform in range
 (:data:`CLUTTER_RANGE_M`), bearing (all round) and elevation (:data:`CLUTTER_ELEVATION_RAD`).
 """
@@ -18,12 +19,14 @@ import numpy as np
 from registration.fleet.scenario import SENSORS, SHIPS, SITE, FleetConfig, FleetScenario, fleet_scenario
 from registration.fleet.scenario_tracks import Circle, Line
 
-__all__ = ["CLUTTER_RANGE_M", "CLUTTER_ELEVATION_RAD", "RADARS", "AssociationScenario", "association_targets",
+__all__ = ["CLUTTER_RANGE_M", "CLUTTER_ELEVATION_RAD", "MAX_ELEVATION_RAD", "RADARS", "AssociationScenario", "association_targets",
            "association_scenario", "association_scores"]
 
 #: Range (m) and elevation (rad) windows of the uniform clutter.
 CLUTTER_RANGE_M = (2.0e3, 100.0e3)
 CLUTTER_ELEVATION_RAD = (0.0, 0.3)
+#: Plots above this elevation (rad) are not made: the blind cone of a radar overhead.
+MAX_ELEVATION_RAD = float(np.radians(70.0))
 #: The scenario's radars (the default fleet's sensors that measure range).
 RADARS = {k: v for k, v in SENSORS.items() if np.isfinite(v[1][0])}
 
@@ -94,6 +97,7 @@ def association_scenario(n_targets: int = 5, *, crossing: bool = False, angle_bi
     config = FleetConfig(SHIPS, SITE, RADARS if sensors is None else sensors, targets, None)
     sc = fleet_scenario(seed, duration_s=duration_s, angle_bias=angle_bias, config=config, **fleet)
     kept = rng.random(sc.plots["time"].size) >= p_missed
+    kept &= ~(np.abs(sc.plots["elevation"]) > MAX_ELEVATION_RAD)  # overhead: outside a radar's coverage
     sc.plots = {k: v[kept] for k, v in sc.plots.items()}
     clutter = _clutter(sc, rng, clutter_per_scan)
     real = {k: v for k, v in sc.plots.items() if k != "target"}
