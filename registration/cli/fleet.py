@@ -13,6 +13,8 @@ import argparse
 import textwrap
 from pathlib import Path
 
+import numpy as np
+
 from registration.cli.errors import EXIT_CODES_EPILOG, add_allow_inconsistent, prepare_out, writing
 from registration.cli.options import HelpFormatter, add_no_plots, add_out, add_seed
 
@@ -38,7 +40,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                          epilog=EXIT_CODES_EPILOG, formatter_class=HelpFormatter)
     files = reg.add_argument_group("input tables (.csv or .parquet)")
     files.add_argument("--plots", type=Path, required=True, metavar="FILE",
-                       help="time_s, sensor, target, range_m, bearing_deg, elevation_deg (empty cell: not measured)")
+                       help="time_s, sensor, target, range_m, bearing_deg, elevation_deg (empty cell: not measured); without "
+                            "the target column the plots are associated across sensors jointly with the registration "
+                            "(associations.csv)")
     files.add_argument("--navigation", type=Path, required=True, metavar="FILE",
                        help="time_s, platform, lat_deg, lon_deg, alt_m, heading_deg, pitch_deg, roll_deg "
                             "(one row for a fixed site)")
@@ -86,6 +90,37 @@ def _solve(tables, window_s: float, method: str):
         return problem, register_online(tables.plots, tables.sensors, tables.navigation, tables.platforms,
                                         tables.references, options=OnlineOptions(window_s=window_s))
     return problem, solve_batch(problem, BatchOptions(window_s=window_s))
+
+
+def _associate(tables, window_s: float, method: str):
+    """Plots without target ids: (association, problem, batch result) of
+    :func:`registration.fleet.associate_and_register`."""
+    from registration.fleet import AssociationOptions, associate_and_register
+
+    if method == "online":
+        raise ValueError("--method online: the plots file has no target column; plots without target ids are "
+                         "associated jointly with the batch registration (omit --method or give target ids)")
+    if window_s <= 0:
+        raise ValueError(f"--window-s: plots without target ids are associated in windows; expected a length > 0 s, "
+                         f"got {window_s}")
+    association = associate_and_register(tables.plots, tables.sensors, tables.navigation, tables.platforms,
+                                         tables.references, AssociationOptions(window_s=window_s))
+    return association, association.problem, association.batch
+
+
+def _write_associations(out: Path, tables, association) -> Path:
+    """associations.csv: per plots-file row, its time, sensor and the target label found ('' = none)."""
+    import pandas as pd
+
+    from registration.recorded.formats import write_frame
+
+    rows = tables.file_rows.get("plots", np.arange(association.labels.size))
+    frame = pd.DataFrame({"row": rows, "time_s": tables.plots["time"], "sensor": tables.plots["sensor"],
+                          "target": association.labels})
+    path = out / "associations.csv"
+    with writing(path):
+        write_frame(frame, path, "csv")
+    return path
 
 
 def _run_line(result) -> str:
@@ -156,16 +191,28 @@ def run_register(args: argparse.Namespace) -> int:
         raise ValueError(f"--window-s: expected a length >= 0 s, got {args.window_s}")
     out = prepare_out(args.out)
     tables = _read_tables(args, out)
-    problem, result = _solve(tables, args.window_s, args.method)
+    association = None
+    if "target" in tables.plots:
+        problem, result = _solve(tables, args.window_s, args.method)
+    else:
+        association, problem, result = _associate(tables, args.window_s, args.method)
     rows = estimate_rows(result)
     header = ["Fleet tables " + ", ".join(str(p) for p in tables.paths.values()) + ":", problem.lines()[0],
+              *([] if association is None else association.lines()[:-len(association.batch.lines())]),
               _run_line(result)]
     print_report(result, rows, header)
     inputs = {**_inputs(tables, problem, args.window_s), "method": args.method, "on_bad_row": args.on_bad_row,
               "rows_read": tables.rows_read(), "rows_rejected": len(tables.rejected)}
+    if association is not None:
+        inputs["association"] = {"targets": association.n_targets, "plots_associated": association.n_associated,
+                                 "plots_unassociated": int(association.unassociated_rows.size),
+                                 "unassociated_by_sensor": {k: int(v) for k, v in association.unassociated_by_sensor.items()},
+                                 "passes": association.iterations, "converged": bool(association.converged)}
     written = write_outputs(out, problem, result, rows, inputs, plots=not args.no_plots)
     if args.on_bad_row == "skip":
         written.append(_write_rejected(out, tables.rejected_frame()))
+    if association is not None:
+        written.append(_write_associations(out, tables, association))
     print("\nwrote " + ", ".join(str(p) for p in written))
     return gate("registration fleet register", result, args.allow_inconsistent)
 

@@ -3,7 +3,8 @@ long-form tables of :mod:`registration.fleet.tables` (SI units, radians) and bac
 
 File columns (one row per item; an empty cell is "not given"):
 
-* ``plots``: ``time_s``, ``sensor``, ``target``, ``range_m``, ``bearing_deg``, ``elevation_deg``
+* ``plots``: ``time_s``, ``sensor``, ``target`` (optional: without it the plots are to be
+  associated, :mod:`registration.fleet.association`), ``range_m``, ``bearing_deg``, ``elevation_deg``
   (an empty cell: the sensor does not measure that channel);
 * ``navigation``: ``time_s``, ``platform``, ``lat_deg``, ``lon_deg``, ``alt_m``, ``heading_deg``,
   ``pitch_deg``, ``roll_deg`` as reported (one row for a fixed site);
@@ -45,7 +46,7 @@ __all__ = ["FILE_COLUMNS", "FleetTables", "read_fleet_tables", "write_fleet_tabl
 #: unit "id" = an identifier; "deg" columns are converted to radians.
 FILE_COLUMNS = {
     "plots": (("time_s", "time", "s", True, None), ("sensor", "sensor", "id", True, None),
-              ("target", "target", "id", True, None), ("range_m", "range", "m", False, (0.0, 1e8)),
+              ("target", "target", "id", False, None), ("range_m", "range", "m", False, (0.0, 1e8)),
               ("bearing_deg", "bearing", "deg", False, (-360.0, 360.0)),
               ("elevation_deg", "elevation", "deg", False, (-90.0, 90.0))),
     "navigation": (("time_s", "time", "s", True, None), ("platform", "platform", "id", True, None),
@@ -294,7 +295,7 @@ def _skip_rows(tables: dict, paths: dict, bads: dict) -> FleetTables:
     file_rows = {"plots": np.flatnonzero(keep)}
     ref = tables.get("reference")
     if ref is not None:
-        targets = set(tables["plots"]["target"])
+        targets = set(tables["plots"].get("target", ()))
         bads["reference"].add("target", "unknown_target", bads["reference"].ok() & ~np.isin(ref["target"], list(targets)),
                               lambda r: f"reference target {str(ref['target'][r])!r} has no plots kept "
                                         f"(targets: {sorted(targets)})")

@@ -144,11 +144,13 @@ def plot_row_problems(plots, sensors, navigation, platforms=None, reference_targ
     sensors_t = read_table("sensors", sensors, ("sensor", "platform"))
     platform_ids, _ = read_platforms(platforms, sensors_t.ids("platform"))
     specs = read_sensors(sensors_t, platform_ids)
-    plots_t = read_table("plots", plots, ("time", "sensor", "target"))
+    plots_t = read_table("plots", plots, ("time", "sensor"))
     problems = plot_problems(plots_t, specs)
     valid = ~np.any([p.bad for p in problems], axis=0)
     tracks = platform_navigation(read_table("navigation", navigation, ("platform",)), platform_ids)
-    time, target = plots_t.floats("time"), plots_t.ids("target")
+    time = plots_t.floats("time")
+    # without target ids (plots to be associated) no target is set aside as seen by one sensor
+    target = plots_t.ids("target") if plots_t.has("target") else np.full(plots_t.n_rows, "")
     sensor = np.where(valid, index_of(plots_t.ids("sensor"), specs.ids), 0)
     targets, which, single = _seen_by_one_sensor(target[valid], sensor[valid])
     set_aside = [targets[k] for k in single if targets[k] not in set(np.asarray(reference_targets).astype(str))]

@@ -174,3 +174,32 @@ def test_on_bad_row_skip_sets_rows_aside_and_registers_the_rest(simulated, tmp_p
     pd.testing.assert_frame_equal(got, want, check_exact=True)
     summary = json.loads((out / "summary.json").read_text())
     assert summary["inputs"]["rows_rejected"] == 3 and summary["inputs"]["on_bad_row"] == "skip"
+
+
+def test_plots_without_target_ids_are_associated(simulated, tmp_path, capsys):
+    truth = pd.read_csv(simulated / "plots.csv", dtype={"sensor": str, "target": str})
+    folder = _broken(simulated, tmp_path, "plots", lambda f: f.pop("target"))
+    out = tmp_path / "assoc"
+    assert main([a for a in _register_args(folder, out) if "reference" not in a]) == 0
+    assert "association:" in capsys.readouterr().out
+    found = pd.read_csv(out / "associations.csv", dtype={"target": str, "sensor": str}, keep_default_na=False)
+    assert list(found.columns) == ["row", "time_s", "sensor", "target"] and len(found) == len(truth)
+    labelled = found["target"] != ""
+    assert labelled.mean() > 0.98
+    # each label found is (almost) one true target: majority share over the labelled plots
+    pairs = pd.DataFrame({"found": found["target"][labelled], "true": truth["target"][labelled]})
+    majority = pairs.groupby("found")["true"].agg(lambda s: s.value_counts().iloc[0]).sum()
+    assert majority / labelled.sum() > 0.995
+    est = pd.read_csv(out / "estimates.csv")
+    want = pd.read_csv(simulated / "estimates.csv")
+    free = want["status"] != "fixed"
+    assert (np.abs(est["estimate"] - want["truth"])[free] < 4 * est["sigma"][free]).all()
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["inputs"]["association"]["converged"]
+
+
+def test_plots_without_target_ids_need_the_batch(simulated, tmp_path, capsys):
+    folder = _broken(simulated, tmp_path, "plots", lambda f: f.pop("target"))
+    args = [a for a in _register_args(folder, tmp_path / "o") if "reference" not in a]
+    assert main([*args, "--method", "online"]) == 2
+    assert "no target column" in capsys.readouterr().err
