@@ -7,6 +7,7 @@ Run from a checkout (the package installed, editable or not)::
     python3 benchmarks/bench_online.py                       # 300 rows and 10^5 rows, both filters
     python3 benchmarks/bench_online.py --long 20000 --json bench_online.json
     python3 benchmarks/bench_online.py --flags               # also the compiler-flags experiment
+    REGISTRATION_NATIVE=1 python3 benchmarks/bench_online.py # with the build for this CPU (or =exact)
 
 Data: the paper scenario's 300 rows (``paper_scenario(seed)``), tiled to ``--long`` rows (times
 renumbered). Filters: ``RegistrationConfig(linearization=...)`` with ``paper`` (model at the raw
@@ -42,6 +43,7 @@ import numpy as np
 
 import registration
 from registration import _codegen
+from registration._codegen import cbackend
 from registration.online import OnlineRegistrar, RegistrationConfig, register
 from registration.online.filter import ROW_HIGH, ROW_LOW, STEP_CARRY
 from registration.online.scenario import paper_scenario
@@ -88,20 +90,21 @@ def compare(reference, other) -> dict:
 
 
 # --------------------------------------------------------------------------- timing
-def measure(contenders: dict, rounds: int, warm: frozenset = frozenset()) -> dict:
+def measure(contenders: dict, rounds: int, warm: frozenset = frozenset()) -> tuple[dict, dict]:
     """Best seconds per contender over ``rounds`` interleaved rounds after one untimed warm-up
-    (skipped for the labels in ``warm``: already run just before, by the correctness check)."""
-    best = {}
+    (skipped for the labels in ``warm``: already run just before, by the correctness check), and
+    every round's seconds (the spread: this machine may be shared)."""
+    times: dict = {}
     for label, fn in contenders.items():
         if label not in warm:
             fn()
-        best[label] = float("inf")
+        times[label] = []
     for _ in range(rounds):
         for label, fn in contenders.items():
             t0 = time.perf_counter()
             fn()
-            best[label] = min(best[label], time.perf_counter() - t0)
-    return best
+            times[label].append(time.perf_counter() - t0)
+    return {label: min(t) for label, t in times.items()}, times
 
 
 def streaming(config, rows):
@@ -196,9 +199,11 @@ def bench_size(n_rows: int, seed: int, rounds: int, stream_rows: int, config) ->
     contenders[UPDATE] = streaming(config, rows[:n_stream])
     contenders[STEPPER] = stepper_only(config, rows[:n_stream])
     # the baselines' last run (the check) is their warm-up: at 10^5 rows a per-row run takes seconds
-    best = measure(contenders, rounds, warm=frozenset([BATCH, *flavours]))
-    per_step = {k: v / (n_stream if k in (UPDATE, STEPPER) else n_rows) for k, v in best.items()}
-    return {"rows": n_rows, "stream_rows": n_stream, "seconds": best, "us_per_step": {k: v * 1e6 for k, v in per_step.items()},
+    best, times = measure(contenders, rounds, warm=frozenset([BATCH, *flavours]))
+    per = {k: (n_stream if k in (UPDATE, STEPPER) else n_rows) / 1e6 for k in best}
+    spread = {k: [float(np.min(t)) / per[k], float(np.median(t)) / per[k], float(np.max(t)) / per[k]] for k, t in times.items()}
+    return {"rows": n_rows, "stream_rows": n_stream, "seconds": best, "us_per_step": {k: v / per[k] for k, v in best.items()},
+            "us_per_step_best_median_worst": spread,
             "max_relative_difference_vs_register": diffs}
 
 
@@ -261,7 +266,8 @@ def machine_line() -> str:
             cpu = next((ln.split(":", 1)[1].strip() for ln in fh if ln.startswith("model name")), cpu)
     except OSError:
         pass
-    return (f"registration {registration.__version__}, backend {_codegen.backend()}, numpy {np.__version__}, "
+    return (f"registration {registration.__version__}, backend {_codegen.backend()} ({cbackend.build_mode()} build), "
+            f"numpy {np.__version__}, "
             f"python {platform.python_version()}, {platform.machine()} {cpu}, {os.cpu_count()} CPUs").replace("  ", " ")
 
 
@@ -276,9 +282,11 @@ def run_configs(configs: dict, default: str, args) -> dict:
             us = r["us_per_step"]
             print(f"{n} rows (NumPy baselines equal register() to "
                   f"{max(max(d.values()) for d in r['max_relative_difference_vs_register'].values()):.1e} relative)")
-            print(f"  {'contender':<40}{'us/step':>10}{'time / register()':>19}{'time / scan':>13}")
+            print(f"  {'contender':<40}{'us/step':>10}{'time / register()':>19}{'time / scan':>13}"
+                  f"{'median, worst of ' + str(args.repeat):>24}")
             for label, v in us.items():
-                print(f"  {label:<40}{v:10.2f}{v / us[BATCH]:18.1f}x{v / us[SCAN]:12.1f}x")
+                _, med, worst = r["us_per_step_best_median_worst"][label]
+                print(f"  {label:<40}{v:10.2f}{v / us[BATCH]:18.1f}x{v / us[SCAN]:12.1f}x{med:14.2f}{worst:10.2f}")
             print()
         aims = aims_of(results, args.long, lin)
         print_aims(aims, args.long, lin)

@@ -14,6 +14,13 @@ interleaved rounds after one warm-up. Printed per linearisation: us/step for eac
 ratio Joseph / Carlson, whether the 1 us aim is met, and the largest difference of the final P
 (relative to its diagonal scale) between the two.
 
+The same steps are then timed in the builds for the local CPU (``REGISTRATION_NATIVE``, see
+``registration._codegen.cbackend``): ``native`` (-O3 -march=native, within ``NATIVE_RTOL`` of the
+portable results on the filter's statistical scale) and ``native-exact`` (the same without
+multiply-add fusion: bit for bit the portable results), all in this one run, printed with their
+ratios to the portable build and, for the run's last step, the largest difference from the
+portable build on that scale (``--no-native`` skips them; the first run builds the libraries).
+
 With ``--ill`` the prior is ill conditioned (prior sigmas spanning 1e-9 rad to 1e4 m, no process
 noise, so the condition number of P grows as the filter converges) and the script checks after
 the run that every carried P of the Carlson step has a Cholesky factor and no NaN.
@@ -28,6 +35,7 @@ import time
 import numpy as np
 
 from registration import _codegen
+from registration._codegen import cbackend
 from registration.online import RegistrationConfig
 from registration.online.contract import DATA_COLUMNS, N_STATE
 from registration.online.filter import STEP_CARRY
@@ -65,6 +73,69 @@ def time_steps(configs: dict, rows: np.ndarray, rounds: int) -> dict:
             run(cfg, rows)
             best[label] = min(best[label], (time.perf_counter() - t0) / len(rows) * 1e6)
     return best
+
+
+def kernel_run(config: RegistrationConfig, rows: np.ndarray, lib) -> dict:
+    """The compiled scan of ``config``'s step from library ``lib``, only the last outputs kept
+    (as :func:`run`, through the kernel directly so that several builds run in one process)."""
+    fn = _codegen.get(config.step_name)
+    work = _codegen.manifest()["functions"][fn.name]["work"]
+    prepared = []
+    for name, (r, c) in zip(fn.input_names, fn.input_shapes):
+        a = np.asarray(inputs_of(config, rows)[name], dtype=np.float64)
+        core = () if (r, c) == (1, 1) else ((r,) if c == 1 else (r, c))
+        prepared.append((a, a.shape != core, core))
+    outs = cbackend.CKernel(fn.name, work, lib).scan(prepared, len(rows), len(STEP_CARRY), [True] * len(fn.output_names),
+                                                     fn.output_shapes)
+    return {name: buf.reshape(c, r).T if c > 1 else buf.reshape(-1)
+            for name, buf, (r, c) in zip(fn.output_names, outs, fn.output_shapes)}
+
+
+def time_builds(configs: dict, rows: np.ndarray, libs: dict, rounds: int) -> dict:
+    """Best us per step over ``rounds`` interleaved rounds after one warm-up, per (label, build)."""
+    best = {(label, mode): float("inf") for label in configs for mode in libs}
+    for (label, mode) in best:
+        kernel_run(configs[label], rows, libs[mode])
+    for _ in range(rounds):
+        for (label, mode) in best:
+            t0 = time.perf_counter()
+            kernel_run(configs[label], rows, libs[mode])
+            best[label, mode] = min(best[label, mode], (time.perf_counter() - t0) / len(rows) * 1e6)
+    return best
+
+
+def sigma_difference(ref: dict, other: dict) -> float:
+    """Largest difference of the last step's x (in its sigmas) and P (in sqrt(P_ii P_jj))."""
+    sx = np.sqrt(np.diag(ref["P_new"]))
+    return max(float(np.max(np.abs(other["x_new"] - ref["x_new"]) / sx)), p_difference(ref["P_new"], other["P_new"]))
+
+
+def native_table(rows: np.ndarray, rounds: int) -> None:
+    """Portable against the native builds, per step, per linearisation and covariance update."""
+    cc = _codegen.compiler()
+    if cc is None or cbackend.native_target(cc) is None:
+        print("native builds: skipped (no C compiler accepting -march=native)")
+        return
+    names = sorted(_codegen.manifest()["functions"])
+    t0 = time.perf_counter()
+    libs = {mode: cbackend.library_of(names, mode) for mode in cbackend.BUILD_MODES}
+    print(f"\nbuilds for this CPU ({time.perf_counter() - t0:.1f} s to build or load): "
+          + "; ".join(f"{m} {' '.join(cbackend.cflags(m))}" for m in cbackend.BUILD_MODES))
+    print(f"{'linearisation':14s} {'update':8s} {'portable us':>12s} {'native us':>10s} {'ratio':>6s} {'exact us':>9s} "
+          f"{'ratio':>6s} {'native d/sigma':>15s} {'exact d':>8s}")
+    for lin in _codegen.variants("linearization"):
+        cfgs = {u: RegistrationConfig(linearization=lin, covariance_update=u) for u in UPDATES}
+        us = time_builds(cfgs, rows, libs, rounds)
+        for u, cfg in cfgs.items():
+            ref = kernel_run(cfg, rows, libs["portable"])
+            d_native = sigma_difference(ref, kernel_run(cfg, rows, libs["native"]))
+            exact = kernel_run(cfg, rows, libs["native-exact"])
+            same = all(np.array_equal(exact[k], ref[k]) for k in ref)
+            p, n, e = us[u, "portable"], us[u, "native"], us[u, "native-exact"]
+            print(f"{lin:14s} {u:8s} {p:12.3f} {n:10.3f} {p / n:6.2f} {e:9.3f} {p / e:6.2f} {d_native:15.1e} "
+                  f"{'0 (same)' if same else 'DIFFERS':>8s}")
+    print(f"native d/sigma: the last step's largest difference from the portable build after {len(rows)} steps "
+          f"(the stated per-step tolerance is {cbackend.NATIVE_RTOL:g}; over a run, differences may accumulate)")
 
 
 def p_difference(a: np.ndarray, b: np.ndarray) -> float:
@@ -113,6 +184,7 @@ def main(argv=None) -> int:
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--ill", action="store_true", help="also the ill-conditioned positive-definiteness check")
+    ap.add_argument("--no-native", action="store_true", help="skip the builds for the local CPU")
     args = ap.parse_args(argv)
     rows = tiled_rows(args.steps, args.seed)
     print(f"{platform.machine()} {platform.processor() or ''} flags {' '.join(_codegen.CFLAGS)}; {args.steps} steps")
@@ -123,6 +195,8 @@ def main(argv=None) -> int:
         dP = p_difference(run(cfgs["joseph"], rows)["P_new"], run(cfgs["carlson"], rows)["P_new"])
         print(f"{lin:14s} {us['joseph']:10.3f} {us['carlson']:11.3f} {us['joseph'] / us['carlson']:6.2f} "
               f"{'met' if us['carlson'] <= AIM_US else 'NOT met':>9s} {dP:15.2e}")
+    if not args.no_native:
+        native_table(rows, args.repeat)
     if args.ill:
         for update in UPDATES:
             ok, cond, sec = ill_run(update, rows)
