@@ -117,7 +117,8 @@ class AssociationResult:
     registered problem. ``unassociated_rows``: input rows left unassociated; per sensor id
     ``unassociated_by_sensor``; of these ``n_clutter`` were in no track or piece long enough and
     ``n_unconfirmed`` in a piece that no other sensor's matched, or that only sensors lacking a
-    channel matched (2-D radars, passive sensors: the target's height is then barely determined). ``iterations``: association passes;
+    channel matched (2-D radars, passive sensors: the target's height is then barely determined),
+    or in a chain of one window. ``iterations``: association passes;
     ``converged``: a pass repeated the one before; ``changes``: plots whose label changed, per pass
     after the first (on the windows of ``iteration_plots``; the last pass, over all windows with the
     tracks made again from the corrected plots, is counted in ``iterations``, not in ``changes``). Times (s): ``seconds_total``, ``seconds_assignment`` (inside
@@ -186,17 +187,24 @@ def _initial_covariance(problem: FleetProblem, options: AssociationOptions) -> n
     return np.diag(sigma**2)
 
 
-def _labels(problem: FleetProblem, tl, group: np.ndarray, chain: np.ndarray) -> np.ndarray:
+def _labels(problem: FleetProblem, tl, group: np.ndarray, chain: np.ndarray, min_windows: int) -> np.ndarray:
     """(N,) label of each plot, numbered by first input row; '' unless its group holds two or more
-    sensors of which one measures range, bearing and elevation."""
+    sensors of which one measures range, bearing and elevation (confirmed), and its chain holds
+    confirmed groups in ``min_windows`` windows or more. A chain of one window is mostly a target's tracklets
+    that missed their group by chance (a 0.1 % gate) and grouped apart: a second target at the same
+    place, which the batch solver fits only slowly."""
     n_groups = chain.size
     sensors_in, full_in = np.zeros(n_groups, dtype=np.int64), np.zeros(n_groups, dtype=bool)
     pairs = np.unique(np.stack([group, tl.sensor]), axis=1) if group.size else np.zeros((2, 0), dtype=np.int64)
     np.add.at(sensors_in, pairs[0], 1)
     full_in[pairs[0][(problem.layout.bias_index[pairs[1]] >= 0).all(axis=1)]] = True
+    confirmed = (sensors_in >= 2) & full_in
+    windows_in = np.zeros(n_groups, dtype=np.int64)
+    np.add.at(windows_in, chain[confirmed], 1)  # one group per window in a chain
+    confirmed &= windows_in[chain] >= min_windows
     plot_group = np.where(tl.of_plot >= 0, group[np.maximum(tl.of_plot, 0)], -1)
     g = np.maximum(plot_group, 0)
-    ok = (plot_group >= 0) & (sensors_in[g] >= 2) & full_in[g]
+    ok = (plot_group >= 0) & confirmed[g]
     plot_chain = np.where(ok, chain[g], -1)
     out = np.full(problem.n_plots, "", dtype=object)
     order = np.argsort(problem.row, kind="stable")
@@ -207,12 +215,18 @@ def _labels(problem: FleetProblem, tl, group: np.ndarray, chain: np.ndarray) -> 
     return out.astype(str)
 
 
-def _tracks(problem: FleetProblem, x: np.ndarray, options: AssociationOptions, assigner: Assigner) -> np.ndarray:
-    """The sensors' tracks (:func:`sensor_tracks`) of the plots corrected by the states ``x``."""
-    return sensor_tracks(problem.time, problem.sensor, plot_geometry(problem, x), assigner,
-                         max_speed=options.max_speed, accel_sigma=options.accel_sigma,
-                         gate_probability=options.gate_probability, max_missed=options.max_missed,
-                         min_plots=options.min_track_plots)
+def _tracks(problem: FleetProblem, x: np.ndarray, options: AssociationOptions, assigner: Assigner,
+            sel: np.ndarray | None = None) -> np.ndarray:
+    """(N,) the sensors' tracks (:func:`sensor_tracks`) of the plots ``sel`` (bool, default all)
+    corrected by the states ``x``; -1 for the other plots."""
+    sel = np.ones(problem.n_plots, dtype=bool) if sel is None else sel
+    at = np.flatnonzero(sel)
+    out = np.full(problem.n_plots, -1, dtype=np.int64)
+    out[at] = sensor_tracks(problem.time[at], problem.sensor[at], plot_geometry(problem, x, at), assigner,
+                            max_speed=options.max_speed, accel_sigma=options.accel_sigma,
+                            gate_probability=options.gate_probability, max_missed=options.max_missed,
+                            min_plots=options.min_track_plots)
+    return out
 
 
 def _window_subset(problem: FleetProblem, options: AssociationOptions) -> np.ndarray:
@@ -234,15 +248,17 @@ def _labelled(problem: FleetProblem, labels: np.ndarray) -> FleetProblem:
 
 
 def _associate(problem: FleetProblem, track: np.ndarray, x: np.ndarray, P: np.ndarray, options: AssociationOptions,
-               assigner: Assigner, screen: bool) -> tuple[np.ndarray, np.ndarray]:
+               assigner: Assigner, screen: bool, last: bool) -> tuple[np.ndarray, np.ndarray]:
     """One association pass under the estimate ``x`` and covariance ``P``: (labels (N,), tracklet of
-    each plot (N,), -1 for none). ``screen``: leave out the pieces no quadratic fits."""
+    each plot (N,), -1 for none). ``screen``: leave out the pieces no quadratic fits; ``last``: the
+    last pass, over all windows, where a target needs two windows (the passes before see every
+    k-th window only)."""
     geom = plot_geometry(problem, x)
     tl = make_tracklets(problem, geom, track, options.window_s, options.min_tracklet_plots,
                         options.gate_probability if screen else None)
     group = group_tracklets(problem, x, tl, P, options.gate_probability, assigner)
     chain = chain_groups(tl, group, assigner)
-    return _labels(problem, tl, group, chain), tl.of_plot
+    return _labels(problem, tl, group, chain, 2 if last else 1), tl.of_plot
 
 
 def _report(problem: FleetProblem, labels: np.ndarray, of_plot: np.ndarray) -> dict:
@@ -278,11 +294,11 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
     problem = _placeholder_problem(plots, sensors, navigation, platforms)
     assigner = Assigner()
     x, P = np.zeros(problem.layout.n), _initial_covariance(problem, options)
-    track = _tracks(problem, x, options, assigner)
     subset = _window_subset(problem, options)
+    track = _tracks(problem, x, options, assigner, subset)
     labels, previous, changes, t_solve, converged, passes = None, None, [], 0.0, False, 0
     for passes in range(1, options.max_iterations):  # the passes before the last, on the windows of ``subset``
-        labels, of_plot = _associate(problem, np.where(subset, track, -1), x, P, options, assigner, passes > 1)
+        labels, of_plot = _associate(problem, track, x, P, options, assigner, passes > 1, False)
         if previous is not None:
             changes.append(int(np.count_nonzero(labels != previous)))
             if changes[-1] == 0:
@@ -293,9 +309,9 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
         step = solve_batch(_labelled(problem, labels), between)
         t_solve += time.perf_counter() - t1
         x, P = step.estimate, step.covariance
-    if passes:  # the last pass: all windows, and the sensors' tracks again from the plots corrected by the
-        track = _tracks(problem, x, options, assigner)  # estimate (an angle bias in a rolling deck frame
-    labels, of_plot = _associate(problem, track, x, P, options, assigner, passes > 0)  # sways the plots)
+    if passes or not subset.all():  # the last pass: all windows, the sensors' tracks again from the plots
+        track = _tracks(problem, x, options, assigner)  # corrected by the estimate (an angle bias in a
+    labels, of_plot = _associate(problem, track, x, P, options, assigner, passes > 0, True)  # rolling deck sways them)
     final = _labelled(problem, labels)
     t1 = time.perf_counter()
     result = solve_batch(final, batch_options)

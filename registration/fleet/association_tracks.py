@@ -90,27 +90,31 @@ class _Tracks:
 
 def _match_scan(tracks: _Tracks, live: np.ndarray, xp, Pp, idx, sen, geom: PlotGeometry, gate: float,
                 assigner: Assigner) -> tuple[np.ndarray, np.ndarray]:
-    """Pairs (track index into ``tracks``, plot index into ``idx``) of one step, per sensor."""
-    pairs_t, pairs_p = [], []
-    for s in np.unique(sen):
-        ti = live[tracks.sensor[live] == s]
-        pj = np.flatnonzero(sen == s)
-        if ti.size == 0:
-            continue
-        a = np.searchsorted(live, ti)
-        v = geom.p_ecef[idx[pj]][None, :, :] - xp[a, None, :3]
-        S = Pp[a, None, :3, :3] + geom.cov[idx[pj]][None, :, :, :]
-        d2 = np.einsum("tpi,tpi->tp", v, np.linalg.solve(S, v[..., None])[..., 0])
-        logdet = np.linalg.slogdet(S)[1]
-        cost = np.where(d2 < gate, 0.5 * (d2 + logdet), np.inf)
-        no_match = 0.5 * (gate + logdet.min(axis=1))
-        col = assigner.assign(cost, no_match)
-        ok = col >= 0
-        pairs_t.append(ti[ok])
-        pairs_p.append(pj[col[ok]])
-    if not pairs_t:
+    """Pairs (track index into ``tracks``, plot index into ``idx``) of one step: one assignment
+    over all sensors, tracks and plots of different sensors never paired (``sen`` is sorted)."""
+    ts = tracks.sensor[live]
+    lo, hi = np.searchsorted(sen, ts, side="left"), np.searchsorted(sen, ts, side="right")
+    n = hi - lo
+    ki = np.repeat(np.arange(live.size), n)
+    pj = np.repeat(lo, n) + np.arange(ki.size) - np.repeat(np.cumsum(n) - n, n)
+    v = geom.p_ecef[idx[pj]] - xp[ki, :3]
+    # d2 >= |v|^2 / trace(S): pairs beyond the gate by this bound need no solve
+    trace = np.trace(Pp[:, :3, :3], axis1=1, axis2=2)[ki] + np.trace(geom.cov[idx[pj]], axis1=1, axis2=2)
+    near = np.einsum("ki,ki->k", v, v) < gate * trace
+    ki, pj, v = ki[near], pj[near], v[near]
+    if ki.size == 0:
         return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
-    return np.concatenate(pairs_t), np.concatenate(pairs_p)
+    S = Pp[ki, :3, :3] + geom.cov[idx[pj]]
+    d2 = np.einsum("ki,ki->k", v, np.linalg.solve(S, v[..., None])[..., 0])
+    logdet = np.linalg.slogdet(S)[1]
+    cost = np.full((live.size, idx.size), np.inf)
+    cost[ki, pj] = np.where(d2 < gate, 0.5 * (d2 + logdet), np.inf)
+    best = np.full(live.size, np.inf)
+    np.minimum.at(best, ki, logdet)
+    rows = np.unique(ki)
+    col = assigner.assign(cost[rows], 0.5 * (gate + best[rows]))
+    ok = col >= 0
+    return live[rows[ok]], col[ok]
 
 
 def _update(tracks: _Tracks, ti: np.ndarray, xp, Pp, z: np.ndarray, R: np.ndarray, t: np.ndarray) -> None:
