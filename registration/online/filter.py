@@ -20,7 +20,7 @@ from registration.online.contract import (
 __all__ = ["OnlineRegistrar", "ROW_LOW", "ROW_HIGH", "STEP_CARRY"]
 
 _OK, _OUT_OF_BOUNDS, _FAILED = (int(_codegen.StepCode[c]) for c in ("OK", "OUT_OF_BOUNDS", "FAILED"))
-_ROW_SHAPE, _F64 = (N_ROW,), np.dtype(np.float64)
+_ROW_SHAPE, _F64, _INF = (N_ROW,), np.dtype(np.float64), float("inf")
 
 #: The Kalman step's carried inputs and the outputs they take from the previous step.
 STEP_CARRY = {"x": "x_new", "P": "P_new", "info": "info_new"}
@@ -59,7 +59,7 @@ def _seconds(time, row: int) -> float:
 
 def _time_follows(t: float, last) -> bool:
     """True if ``t`` (s) is finite and after ``last`` (None: any finite time); plain float tests."""
-    return -np.inf < t < np.inf and (last is None or t > last)
+    return -_INF < t < _INF and (last is None or t > last)
 
 
 class OnlineRegistrar:
@@ -158,8 +158,8 @@ class OnlineRegistrar:
         """
         if type(row) is not np.ndarray or row.shape != _ROW_SHAPE or row.dtype is not _F64:
             row = row_from_mapping(row)
-        if time is not None:
-            time = self._checked_time(row, time)
+        if time is not None and not (type(time) is float and _time_follows(time, self.last_time)):
+            time = self._checked_time(row, time)  # a non-float, or one that does not follow: convert or raise
         advance = self._advance or self._make_stepper()
         if self._adaptive:
             self._stepper.set("Q", self.process_noise())
