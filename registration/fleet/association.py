@@ -2,30 +2,31 @@
 :func:`associate_and_register`.
 
 Which plot of one radar and which of another are the same aircraft is unknown while the biases
-are unknown, and the biases cannot be estimated until that is known. Both are solved together,
+are unknown, and the biases cannot be estimated until that is known. Both are found together
 by iterating: associate under the current estimate and its covariance, register the associated
-plots with :func:`~registration.fleet.batch.solve_batch`, associate again with the new estimate
-and covariance, until the association stops changing (at most ``max_iterations`` passes).
+plots with :func:`~registration.fleet.batch.solve_batch`, and associate again under the new
+estimate and covariance, until the association stops changing (at most ``max_iterations``
+passes).
 
 Sensors plot at their own times, so plots of different sensors never share an instant. The
 association therefore works on tracklets, not on plots:
 
 1. **Tracks per sensor** (:mod:`registration.fleet.association_tracks`). A sensor's errors are
-   the same for all its plots, so its plots are linked over time without the registration:
-   constant-velocity Kalman tracks in ECEF, one global assignment per scan. Plots in no track of
-   ``min_track_plots`` plots are clutter.
-2. **Tracklets across sensors, per window** (:mod:`registration.fleet.association_match`). Each
-   track is cut in windows of ``window_s`` s on a grid common to all sensors, each piece fitted by
-   a straight line in ECEF with its covariance and its sensitivity to the registration states.
-   In each window the sensors' tracklets are assigned to each other by global assignments whose
-   cost is the negative log-likelihood of two lines being the same target, with the registration
-   covariance propagated through the Jacobians of the generated ``fleet_residual`` (gating with
-   the bias uncertainty included). Groups of consecutive windows sharing sensor tracks are chained
-   into targets.
-3. **Registration** of the plots of groups seen by two or more sensors; the rest are reported
-   unassociated (clutter, short pieces, targets one sensor alone saw).
+   the same for all its plots, so its plots are linked over time without the registration, by
+   constant-velocity Kalman tracks in ECEF with one global assignment per scan.
+2. **Tracklets across sensors, per window** (:mod:`registration.fleet.association_match`,
+   :mod:`~registration.fleet.association_groups`, :mod:`~registration.fleet.association_cost`).
+   Each track is cut into windows of ``window_s`` s, on a grid common to all sensors. Each piece
+   is fitted by a quadratic in ECEF, with its covariance and its sensitivity to the registration
+   states. In every window the sensors' pieces are grouped by global assignments whose cost is
+   the negative log-likelihood of being the same target. That cost carries the registration
+   covariance through the Jacobians of the generated ``fleet_residual``, so the gates include
+   the bias uncertainty. Groups of consecutive windows that share sensor tracks are chained into
+   targets.
+3. **Registration** of the plots of confirmed groups. The rest are reported unassociated:
+   clutter, short pieces, and targets that one sensor alone, or only 2-D sensors, saw.
 
-Assumptions: straight-line motion over a window (20 s by default; the tracks themselves follow
+Assumptions: quadratic motion over a window (20 s by default; the tracks themselves follow
 turns); a sensor reports each target at most once per scan; the starting covariance
 (``initial_sigma_*`` or the tables' finite priors) covers the true errors.
 See docs/association.md for the method and its measured performance.
@@ -41,10 +42,10 @@ import numpy as np
 from registration.fleet.association_geometry import Assigner, plot_geometry
 from registration.fleet.association_groups import group_tracklets
 from registration.fleet.association_match import chain_groups, make_tracklets
+from registration.fleet.association_result import AssociationResult
 from registration.fleet.association_tracks import sensor_tracks
 from registration.fleet.batch import solve_batch
 from registration.fleet.problem import FleetProblem, build_problem
-from registration.fleet.result import BatchResult
 from registration.fleet.solver import BatchOptions
 from registration.fleet.tables import read_table
 
@@ -105,61 +106,6 @@ class AssociationOptions:
         if bad:
             raise ValueError(f"AssociationOptions: invalid {', '.join(f'{k}={getattr(self, k)!r}' for k in bad)} "
                              "(windows, sigmas, speeds > 0; gate_probability in (0, 1); counts >= their minimum)")
-
-
-@dataclass
-class AssociationResult:
-    """Target labels found for the plots and the registration of the associated plots.
-
-    ``labels`` (rows of the input plots table,): the target each plot was given, '' for a plot
-    left unassociated. ``batch``: the :class:`BatchResult` of the final registration (its
-    ``residuals``, ``plot_target`` and ``plot_sensor`` are per input row too). ``problem``: the
-    registered problem. ``unassociated_rows``: input rows left unassociated; per sensor id
-    ``unassociated_by_sensor``; of these ``n_clutter`` were in no track or piece long enough and
-    ``n_unconfirmed`` in a piece that no other sensor's matched, or that only sensors lacking a
-    channel matched (2-D radars, passive sensors: the target's height is then barely determined),
-    or in a chain of one window. ``iterations``: association passes;
-    ``converged``: a pass repeated the one before; ``changes``: plots whose label changed, per pass
-    after the first (on the windows of ``iteration_plots``; the last pass, over all windows with the
-    tracks made again from the corrected plots, is counted in ``iterations``, not in ``changes``). Times (s): ``seconds_total``, ``seconds_assignment`` (inside
-    ``linear_sum_assignment``), ``seconds_registration`` (inside ``solve_batch``).
-    """
-
-    labels: np.ndarray
-    batch: BatchResult
-    problem: FleetProblem
-    unassociated_rows: np.ndarray
-    unassociated_by_sensor: dict
-    n_clutter: int
-    n_unconfirmed: int
-    iterations: int
-    converged: bool
-    changes: list
-    seconds_total: float
-    seconds_assignment: float
-    seconds_registration: float
-
-    @property
-    def n_targets(self) -> int:
-        return int(np.unique(self.labels[self.labels != ""]).size)
-
-    @property
-    def n_associated(self) -> int:
-        return int(np.count_nonzero(self.labels != ""))
-
-    @property
-    def assignment_share(self) -> float:
-        """Share of the total time spent in the assignments."""
-        return self.seconds_assignment / self.seconds_total if self.seconds_total > 0 else 0.0
-
-    def lines(self) -> list[str]:
-        out = [f"association: {self.n_targets} targets, {self.n_associated} plots associated, "
-               f"{self.unassociated_rows.size} unassociated ({self.n_clutter} clutter or short, "
-               f"{self.n_unconfirmed} not confirmed by a second sensor), {self.iterations} passes "
-               f"({'converged' if self.converged else 'NOT converged'}), {self.seconds_total:.2f} s "
-               f"({100 * self.assignment_share:.1f} % in assignment)"]
-        out += [f"  unassociated plots of sensor {s}: {n}" for s, n in self.unassociated_by_sensor.items() if n]
-        return out + self.batch.lines()
 
 
 def _placeholder_problem(plots, sensors, navigation, platforms) -> FleetProblem:
