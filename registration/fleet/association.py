@@ -252,7 +252,7 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
                 break
         previous = labels
         t1 = time.perf_counter()
-        step = solve_batch(_labelled(problem, labels), between)
+        step = solve_batch(_labelled(problem, labels), between, x0=x)  # warm: from the last estimate
         t_solve += time.perf_counter() - t1
         x, P = step.estimate, step.covariance
     if passes or not subset.all():  # the last pass: all windows, the sensors' tracks again from the plots
@@ -260,7 +260,7 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
     labels, of_plot = _associate(problem, track, x, P, options, assigner, passes > 0, True)  # rolling deck sways them)
     final = _labelled(problem, labels)
     t1 = time.perf_counter()
-    result = solve_batch(final, batch_options)
+    result = solve_batch(final, batch_options, x0=x)
     t_solve += time.perf_counter() - t1
     n_rows = problem.n_input_plots
     row_labels = np.full(n_rows, "", dtype=object)

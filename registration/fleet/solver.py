@@ -144,17 +144,22 @@ def exclude_singular(problem: FleetProblem, design: Design, bad: np.ndarray) -> 
     return problem.drop_plots(drop, exclusions)
 
 
-def fit(problem: FleetProblem, options: BatchOptions | None = None) -> Fit:
-    """Solve the batch problem (module docstring); windows of singular geometry are set aside."""
+def fit(problem: FleetProblem, options: BatchOptions | None = None, x0: np.ndarray | None = None) -> Fit:
+    """Solve the batch problem (module docstring) from states ``x0`` (n,; rad, m; default zeros: a
+    warm start only saves iterations); windows of singular geometry are set aside."""
     options = options or BatchOptions()
+    x0 = np.zeros(problem.layout.n) if x0 is None else np.array(x0, dtype=np.float64)
+    if x0.shape != (problem.layout.n,) or not np.isfinite(x0).all():
+        raise ValueError(f"x0: expected {problem.layout.n} finite starting states, got shape {x0.shape}")
+    x0[problem.layout.fixed] = 0.0
     if problem.n_plots == 0:
         raise ValueError("no plots to register (every target was excluded: " + "; ".join(e.text() for e in problem.excluded) + ")")
     design = make_design(problem, make_blocks(problem, options.window_s, options.degree))
-    start = evaluate(design, np.zeros(design.n_state), initial_coefficients(design))
+    start = evaluate(design, x0, initial_coefficients(design, x0))
     normal = normal_equations(design, start)
     bad = singular_blocks(design, normal)
     if bad.size:
-        return fit(exclude_singular(problem, design, bad), options)
+        return fit(exclude_singular(problem, design, bad), options, x0)
     ev, normal, _, it1, hist1 = levenberg_marquardt(design, start, np.zeros(0, dtype=np.int64), options,
                                                     TARGETS_FIRST, normal)
     ev, normal, converged, it2, hist2 = levenberg_marquardt(design, ev, problem.layout.free, options, 0.0, normal)

@@ -153,3 +153,13 @@ def test_level_platforms_report_heading_and_bearing_sums():
         assert sigma < np.radians(0.05) and abs(value - truth) < 3.5 * sigma
     assert result.status["B:heading_error"] == "not identifiable" and np.isinf(result.sigma_of("B:heading_error"))
     assert result.status["S-2D:bearing_bias"] == "identifiable"  # the surveyed site's heading is fixed
+
+
+def test_a_warm_start_reaches_the_same_optimum_in_fewer_iterations(noisy):
+    sc, cold = noisy
+    warm = solve_batch(sc.problem(), x0=cold.estimate + 0.5 * cold.sigma * np.where(np.isfinite(cold.sigma), 1, 0))
+    free = cold.layout.free
+    assert warm.converged and warm.iterations < cold.iterations
+    assert np.abs((warm.estimate - cold.estimate)[free] / cold.sigma[free]).max() < 0.01
+    with pytest.raises(ValueError, match="x0"):
+        solve_batch(sc.problem(), x0=np.zeros(3))
