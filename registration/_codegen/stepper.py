@@ -5,7 +5,10 @@ constant inputs are written once, the carried state (the first inputs, fed from 
 outputs) stays in the buffers between steps, and a step writes only the one input that changes
 (``feed``). The compiled ``registration_step`` of ``_batch.c`` checks that input against
 element-wise bounds, evaluates the function, checks the chosen outputs are finite and only then
-commits the new state. :class:`PyStepper` does the same on the serialized CasADi backend.
+commits the new state; it also copies the delivered outputs into the caller's next row of a
+block (so that a streaming loop returns views, not per-row copies) and, if asked, one output
+into a ring of its last values (a window of estimates). :class:`PyStepper` does the same on the
+serialized CasADi backend.
 
 Codes returned by ``step``: :data:`OK`, :data:`OUT_OF_BOUNDS` (the fed input is outside its
 bounds or NaN; nothing evaluated), :data:`NON_FINITE` (a checked output is not finite; the state
