@@ -15,10 +15,9 @@ import pytest
 from registration import _codegen
 from registration._codegen import cbackend
 from registration.online import RegistrationConfig
-from registration.online.contract import N_STATE
+from registration.online.contract import DATA_COLUMNS, N_STATE
 from registration.online.filter import STEP_CARRY
 from registration.online.scenario import paper_scenario
-from registration.online.contract import DATA_COLUMNS
 
 STEPS = ("kalman_step_fitted_standard", "kalman_step_fitted_standard_carlson")
 UPDATE = {"kalman_step_fitted_standard": "joseph", "kalman_step_fitted_standard_carlson": "carlson"}
@@ -145,9 +144,22 @@ def test_each_build_has_its_own_cache_key():
     assert cbackend.cache_key("cc", sources, cbackend.cflags("native"), "-march=y") != keys["native"]  # another CPU
 
 
-def test_native_request_without_march_native_falls_back_to_the_portable_build(monkeypatch, portable):
-    monkeypatch.setenv(cbackend.NATIVE_ENV, "1")
+def test_a_compiler_without_march_native_gives_no_native_library(monkeypatch):
     monkeypatch.setattr(cbackend, "native_target", lambda cc: None)
+    with pytest.raises(_codegen.ArtifactError, match="does not accept -march=native"):
+        cbackend.library_of(["geodetic2ecef"], "native")
+
+
+def test_native_request_without_a_native_build_falls_back_to_the_portable_one(monkeypatch, portable):
+    portable_of = cbackend.library_of
+
+    def no_native(names, mode="portable"):
+        if mode != "portable":
+            raise _codegen.ArtifactError("the C compiler cc does not accept -march=native")
+        return portable_of(names, mode)
+
+    monkeypatch.setattr(cbackend, "library_of", no_native)
+    monkeypatch.setenv(cbackend.NATIVE_ENV, "1")
     with pytest.warns(RuntimeWarning, match="REGISTRATION_NATIVE: no native build .*-march=native.*portable"):
         lib = cbackend.library.__wrapped__()
     assert lib is portable
