@@ -39,7 +39,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from registration.fleet.association_geometry import Assigner, plot_geometry
+from registration.fleet.association_geometry import Assigner, PlotGeometry, plot_geometry
 from registration.fleet.association_groups import group_tracklets
 from registration.fleet.association_match import chain_groups, make_tracklets
 from registration.fleet.association_result import AssociationResult
@@ -162,17 +162,19 @@ def _labels(problem: FleetProblem, tl, group: np.ndarray, chain: np.ndarray, min
 
 
 def _tracks(problem: FleetProblem, x: np.ndarray, options: AssociationOptions, assigner: Assigner,
-            sel: np.ndarray | None = None) -> np.ndarray:
+            sel: np.ndarray | None = None) -> tuple[np.ndarray, PlotGeometry]:
     """(N,) the sensors' tracks (:func:`sensor_tracks`) of the plots ``sel`` (bool, default all)
-    corrected by the states ``x``; -1 for the other plots."""
+    corrected by the states ``x``, -1 for the other plots; and the geometry of those plots under
+    ``x`` (the association pass under the same ``x`` reuses it)."""
     sel = np.ones(problem.n_plots, dtype=bool) if sel is None else sel
     at = np.flatnonzero(sel)
     out = np.full(problem.n_plots, -1, dtype=np.int64)
-    out[at] = sensor_tracks(problem.time[at], problem.sensor[at], plot_geometry(problem, x, at), assigner,
+    geom = plot_geometry(problem, x, at)
+    out[at] = sensor_tracks(problem.time[at], problem.sensor[at], geom, assigner,
                             max_speed=options.max_speed, accel_sigma=options.accel_sigma,
                             gate_probability=options.gate_probability, max_missed=options.max_missed,
                             min_plots=options.min_track_plots)
-    return out
+    return out, geom
 
 
 def _window_subset(problem: FleetProblem, options: AssociationOptions) -> np.ndarray:
@@ -194,12 +196,13 @@ def _labelled(problem: FleetProblem, labels: np.ndarray) -> FleetProblem:
 
 
 def _associate(problem: FleetProblem, track: np.ndarray, x: np.ndarray, P: np.ndarray, options: AssociationOptions,
-               assigner: Assigner, screen: bool, last: bool) -> tuple[np.ndarray, np.ndarray]:
+               assigner: Assigner, screen: bool, last: bool,
+               geom: PlotGeometry | None = None) -> tuple[np.ndarray, np.ndarray]:
     """One association pass under the estimate ``x`` and covariance ``P``: (labels (N,), tracklet of
     each plot (N,), -1 for none). ``screen``: leave out the pieces no quadratic fits; ``last``: the
     last pass, over all windows, where a target needs two windows (the passes before see every
-    k-th window only)."""
-    geom = plot_geometry(problem, x)
+    k-th window only). ``geom``: the geometry under ``x`` of (at least) the tracks' plots, if known."""
+    geom = plot_geometry(problem, x, np.flatnonzero(track >= 0)) if geom is None else geom
     tl = make_tracklets(problem, geom, track, options.window_s, options.min_tracklet_plots,
                         options.gate_probability if screen else None)
     group = group_tracklets(problem, x, tl, P, options.gate_probability, assigner)
@@ -241,10 +244,10 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
     assigner = Assigner()
     x, P = np.zeros(problem.layout.n), _initial_covariance(problem, options)
     subset = _window_subset(problem, options)
-    track = _tracks(problem, x, options, assigner, subset)
+    track, geom = _tracks(problem, x, options, assigner, subset)
     labels, previous, changes, t_solve, converged, passes = None, None, [], 0.0, False, 0
     for passes in range(1, options.max_iterations):  # the passes before the last, on the windows of ``subset``
-        labels, of_plot = _associate(problem, track, x, P, options, assigner, passes > 1, False)
+        labels, of_plot = _associate(problem, track, x, P, options, assigner, passes > 1, False, geom)
         if previous is not None:
             changes.append(int(np.count_nonzero(labels != previous)))
             if changes[-1] == 0:
@@ -254,10 +257,10 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
         t1 = time.perf_counter()
         step = solve_batch(_labelled(problem, labels), between, x0=x)  # warm: from the last estimate
         t_solve += time.perf_counter() - t1
-        x, P = step.estimate, step.covariance
+        x, P, geom = step.estimate, step.covariance, None
     if passes or not subset.all():  # the last pass: all windows, the sensors' tracks again from the plots
-        track = _tracks(problem, x, options, assigner)  # corrected by the estimate (an angle bias in a
-    labels, of_plot = _associate(problem, track, x, P, options, assigner, passes > 0, True)  # rolling deck sways them)
+        track, geom = _tracks(problem, x, options, assigner)  # corrected by the estimate (an angle bias in a
+    labels, of_plot = _associate(problem, track, x, P, options, assigner, passes > 0, True, geom)  # rolling deck sways them)
     final = _labelled(problem, labels)
     t1 = time.perf_counter()
     result = solve_batch(final, batch_options, x0=x)

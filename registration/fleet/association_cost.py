@@ -18,10 +18,14 @@ from __future__ import annotations
 import numpy as np
 
 from registration import _codegen
-from registration.fleet.association_geometry import N_COEF, N_LINE, state_columns
+from registration.fleet.association_geometry import N_COEF, N_LINE
 from registration.fleet.problem import FleetProblem
 
-__all__ = ["line_cost", "measurement_cost"]
+__all__ = ["group_covariances", "joint_covariance", "line_cost", "measurement_cost"]
+
+
+#: Size of the joint vector (group curve (a, b, c), the tracklet sensor's six states).
+N_JOINT = N_LINE + 6
 
 
 def _mahalanobis(d: np.ndarray, S: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -29,40 +33,63 @@ def _mahalanobis(d: np.ndarray, S: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return d2, np.linalg.slogdet(S)[1]
 
 
-def line_cost(tl, b: np.ndarray, line: np.ndarray, cov: np.ndarray, G: np.ndarray, P: np.ndarray):
-    """(d2, logdet), each (K,), of K pairs: tracklets ``b`` (K,) against group curves ``line`` (K, 9)
-    with covariance ``cov`` (K, 9, 9) and sensitivity ``G`` (K, 9, n); P (n, n) the states' covariance."""
+def group_covariances(cov: np.ndarray, G: np.ndarray, P: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Per group curve (covariance ``cov`` (G, 9, 9), sensitivity ``G`` (G, 9, n)) under the states'
+    covariance P (n, n): the curve's covariance with the states' uncertainty ``cov + G P G^T``
+    (G, 9, 9), its covariance with each state ``G P`` (G, 9, n + 1) and P (n + 1, n + 1); the
+    last column of both is 0 (state index -1: a channel the sensor does not measure)."""
+    n = P.shape[0]
+    GP = np.zeros((G.shape[0], N_LINE, n + 1))
+    GP[:, :, :n] = G @ P
+    P_ext = np.zeros((n + 1, n + 1))
+    P_ext[:n, :n] = P
+    return cov + GP[:, :, :n] @ np.swapaxes(G, 1, 2), GP, P_ext
+
+
+def joint_covariance(groups: tuple[np.ndarray, np.ndarray, np.ndarray], g: np.ndarray, cols: np.ndarray) -> np.ndarray:
+    """(K, 15, 15) covariance of (group curve ``g`` (K,), the six states ``cols`` (K, 6) of the
+    tracklet's platform and sensor) per pair, from :func:`group_covariances` ``groups``."""
+    curve, GP, P_ext = groups
+    out = np.empty((g.size, N_JOINT, N_JOINT))
+    out[:, :N_LINE, :N_LINE] = curve[g]
+    out[:, :N_LINE, N_LINE:] = GP[g[:, None, None], np.arange(N_LINE)[None, :, None], cols[:, None, :]]
+    out[:, N_LINE:, :N_LINE] = np.swapaxes(out[:, :N_LINE, N_LINE:], 1, 2)
+    out[:, N_LINE:, N_LINE:] = P_ext[cols[:, :, None], cols[:, None, :]]
+    return out
+
+
+def line_cost(tl, b: np.ndarray, cols: np.ndarray, line: np.ndarray, joint: np.ndarray):
+    """(d2, logdet), each (K,), of K pairs: tracklets ``b`` (K,), their six state columns ``cols``
+    (K, 6), against group curves ``line`` (K, 9); ``joint`` (K, 15, 15) from :func:`joint_covariance`.
+    Covariance ``C_b + C_g + (G_b - G_g) P (G_b - G_g)^T``, written as ``C_b + W joint W^T``
+    with W = [I, -G_b] (G_b on the tracklet's own six states, its only nonzero columns)."""
     d = tl.line[b] - line
-    dG = tl.G[b] - G
-    S = tl.cov[b] + cov + dG @ P @ np.swapaxes(dG, -1, -2)
+    G_b = tl.G[b[:, None, None], np.arange(N_LINE)[None, :, None], np.maximum(cols, 0)[:, None, :]]
+    W = np.concatenate([np.broadcast_to(np.eye(N_LINE), (b.size, N_LINE, N_LINE)),
+                        -np.where(cols[:, None, :] >= 0, G_b, 0.0)], axis=2)
+    S = tl.cov[b] + W @ joint @ np.swapaxes(W, 1, 2)
     return _mahalanobis(d, S)
 
 
-def measurement_cost(problem: FleetProblem, x: np.ndarray, tl, b: np.ndarray, line: np.ndarray, cov: np.ndarray,
-                     G: np.ndarray, P: np.ndarray):
+def measurement_cost(problem: FleetProblem, x: np.ndarray, tl, b: np.ndarray, cols: np.ndarray, line: np.ndarray,
+                     joint: np.ndarray):
     """(d2, logdet), each (K,), of K pairs as :func:`line_cost`, in the channels of the tracklets'
-    sensors (module docstring), under the states ``x`` (n,)."""
-    k_pairs, n = b.size, P.shape[0]
+    sensors (module docstring), under the states ``x`` (n,). ``A C_g A^T + R + D P D^T`` is
+    written as ``W joint W^T + R`` with W = [A, J_x] (J_x: the sensor's six columns)."""
+    k_pairs = b.size
     plot = tl.rep[b].reshape(-1)
     tau = tl.rep_tau[b].reshape(-1)
     grp = np.repeat(np.arange(k_pairs), 3)
     basis = np.concatenate([(tau**k)[:, None, None] * np.eye(3) for k in range(N_COEF)], axis=2)  # (M, 3, L)
     p = (basis @ line[grp][..., None])[..., 0]
     xs = np.append(np.asarray(x, dtype=np.float64), 0.0)
-    cols = state_columns(problem, plot)
+    plot_cols = np.repeat(cols, 3, axis=0)
     meas, mask = problem.meas[plot], problem.mask[plot]
-    res, J = _codegen.get("fleet_residual")(p, *problem.nav[plot].T, xs[cols[:, :3]], xs[cols[:, 3:]],
+    res, J = _codegen.get("fleet_residual")(p, *problem.nav[plot].T, xs[plot_cols[:, :3]], xs[plot_cols[:, 3:]],
                                            problem.sensor_lever[problem.sensor[plot]], *meas.T)[:2]
     res, J = np.asarray(res).reshape(-1, 3), np.asarray(J).reshape(-1, 3, 9)
     res, J = np.where(mask, res, 0.0), np.where(mask[..., None], J, 0.0)
-    A = J[:, :, :3] @ basis  # (M, 3, L)
-    Dx = np.zeros((tau.size, 3, n + 1))
-    rows = np.arange(tau.size)
-    for k in range(6):
-        Dx[rows, :, cols[:, k]] += J[:, :, 3 + k]
-    D = A @ G[grp] + Dx[:, :, :n]  # (M, 3, n)
+    W = np.concatenate([J[:, :, :3] @ basis, J[:, :, 3:]], axis=2).reshape(k_pairs, 9, N_JOINT)
     sigma = np.nan_to_num(problem.sensor_sigma[problem.sensor[plot]], nan=1.0)
-    A, D, r = A.reshape(k_pairs, 9, N_LINE), D.reshape(k_pairs, 9, n), res.reshape(k_pairs, 9)
-    S = A @ cov @ np.swapaxes(A, -1, -2) + D @ P @ np.swapaxes(D, -1, -2)
-    S = S + np.eye(9) * (sigma**2).reshape(k_pairs, 9)[..., None]
-    return _mahalanobis(r, S)
+    S = W @ joint @ np.swapaxes(W, 1, 2) + np.eye(9) * (sigma**2).reshape(k_pairs, 9)[..., None]
+    return _mahalanobis(res.reshape(k_pairs, 9), S)

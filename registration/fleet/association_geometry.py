@@ -39,7 +39,8 @@ class PlotGeometry:
     """Per plot (N,): ``p_ecef`` (N, 3) m; ``info`` (N, 3, 3) 1/m^2 and ``cov`` (N, 3, 3) m^2 of the
     position from the sensor noise; ``dp_dx`` (N, 3, 6) d p_ecef / d(att_err (3), bias (3)) of the
     plot's platform and sensor; ``J`` (N, 3, 9) of ``fleet_residual`` at the position;
-    ``weight`` (N, 3) 1/sigma^2 of each channel (0 where not measured)."""
+    ``weight`` (N, 3) 1/sigma^2 of each channel (0 where not measured); ``plots`` (N,) the
+    problem's plot index of each row (increasing)."""
 
     p_ecef: np.ndarray
     info: np.ndarray
@@ -47,6 +48,11 @@ class PlotGeometry:
     dp_dx: np.ndarray
     J: np.ndarray
     weight: np.ndarray
+    plots: np.ndarray
+
+    def rows(self, plots: np.ndarray) -> np.ndarray:
+        """The rows of the problem's plots ``plots`` (each must be among :attr:`plots`)."""
+        return np.searchsorted(self.plots, plots)
 
 
 def state_columns(problem: FleetProblem, sel: np.ndarray | None = None) -> np.ndarray:
@@ -58,7 +64,8 @@ def state_columns(problem: FleetProblem, sel: np.ndarray | None = None) -> np.nd
 
 
 def plot_geometry(problem: FleetProblem, x: np.ndarray, sel: np.ndarray | None = None) -> PlotGeometry:
-    """The geometry of the problem's plots ``sel`` (default all) under the states ``x`` (n,) rad/m."""
+    """The geometry of the problem's plots ``sel`` (increasing indices; default all) under the
+    states ``x`` (n,) rad/m."""
     sel = np.arange(problem.n_plots) if sel is None else np.asarray(sel)
     xs = np.append(np.asarray(x, dtype=np.float64), 0.0)  # index -1 (absent channel) reads 0
     cols = state_columns(problem, sel)
@@ -76,7 +83,7 @@ def plot_geometry(problem: FleetProblem, x: np.ndarray, sel: np.ndarray | None =
     info = JtW @ Jp + np.eye(3) / UNCONSTRAINED_SIGMA_M**2
     cov = np.linalg.inv(info)
     dp_dx = -cov @ (JtW @ Jx)
-    return PlotGeometry(p, info, cov, dp_dx, J, weight)
+    return PlotGeometry(p, info, cov, dp_dx, J, weight, sel)
 
 
 class Assigner:

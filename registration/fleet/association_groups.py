@@ -12,8 +12,8 @@ from __future__ import annotations
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association_cost import line_cost, measurement_cost
-from registration.fleet.association_geometry import N_LINE, Assigner
+from registration.fleet.association_cost import group_covariances, joint_covariance, line_cost, measurement_cost
+from registration.fleet.association_geometry import N_LINE, Assigner, state_columns
 from registration.fleet.problem import FleetProblem
 
 __all__ = ["group_tracklets"]
@@ -73,14 +73,17 @@ def _pairs(b_window: np.ndarray, g_window: np.ndarray) -> tuple[np.ndarray, np.n
 def _costs(problem: FleetProblem, x, tl, b: np.ndarray, gi: np.ndarray, curves, P, full: bool):
     """(d2, logdet) of the pairs (tracklets ``b``, groups ``gi``), in chunks."""
     line, cov, G = curves
+    groups = group_covariances(cov, G, P)
+    cols = state_columns(problem, tl.rep[b, 0])
     d2, logdet = np.empty(b.size), np.empty(b.size)
     for a in range(0, b.size, PAIR_CHUNK):
         s = slice(a, a + PAIR_CHUNK)
         g = gi[s]
+        joint = joint_covariance(groups, g, cols[s])
         if full:
-            d2[s], logdet[s] = line_cost(tl, b[s], line[g], cov[g], G[g], P)
+            d2[s], logdet[s] = line_cost(tl, b[s], cols[s], line[g], joint)
         else:
-            d2[s], logdet[s] = measurement_cost(problem, x, tl, b[s], line[g], cov[g], G[g], P)
+            d2[s], logdet[s] = measurement_cost(problem, x, tl, b[s], cols[s], line[g], joint)
     return d2, logdet
 
 

@@ -52,14 +52,19 @@ def _piece_starts(track: np.ndarray, window: np.ndarray) -> np.ndarray:
 def _fit_pieces(geom: PlotGeometry, order: np.ndarray, start: np.ndarray, tau: np.ndarray):
     """Information-weighted quadratic fit of each piece (plots ``order`` split at ``start``):
     (coefficients (K, L), covariance (K, L, L), sensitivity sums (K, L, 6), fit chi-square (K,))."""
-    info = geom.info[order]
-    basis = tau[:, None] ** np.arange(N_COEF)[None, :]  # (M, C): 1, tau, tau^2
-    outer = basis[:, :, None] * basis[:, None, :]
-    N = np.einsum("mab,mij->maibj", outer, info).reshape(-1, N_LINE, N_LINE)
-    p = geom.p_ecef[order]
+    at = geom.rows(order)
+    info = geom.info[at]
+    power = tau[:, None] ** np.arange(2 * N_COEF - 1)[None, :]  # (M, 5): 1, tau, ..., tau^4
+    basis = power[:, :N_COEF]  # (M, C): 1, tau, tau^2
+    # N = sum over plots of kron(basis basis^T, info): sum tau^k info per piece first, then place
+    # the sums in the blocks (a, b) with a + b = k
+    moments = np.add.reduceat(power[:, :, None, None] * info[:, None], start, axis=0)  # (K, 5, 3, 3)
+    a, b = np.divmod(np.arange(N_COEF * N_COEF), N_COEF)
+    N = moments[:, a + b].reshape(-1, N_COEF, N_COEF, 3, 3).transpose(0, 1, 3, 2, 4).reshape(-1, N_LINE, N_LINE)
+    p = geom.p_ecef[at]
     rhs = (basis[:, :, None] * (info @ p[..., None])[..., 0][:, None, :]).reshape(-1, N_LINE)
-    sens = (basis[:, :, None, None] * (info @ geom.dp_dx[order])[:, None]).reshape(-1, N_LINE, 6)
-    N, rhs, sens = (np.add.reduceat(v, start, axis=0) for v in (N, rhs, sens))
+    sens = (basis[:, :, None, None] * (info @ geom.dp_dx[at])[:, None]).reshape(-1, N_LINE, 6)
+    rhs, sens = (np.add.reduceat(v, start, axis=0) for v in (rhs, sens))
     cov = np.linalg.inv(N)
     line = (cov @ rhs[..., None])[..., 0]
     piece = np.cumsum(np.isin(np.arange(order.size), start)) - 1
@@ -71,7 +76,8 @@ def _fit_pieces(geom: PlotGeometry, order: np.ndarray, start: np.ndarray, tau: n
 
 def make_tracklets(problem: FleetProblem, geom: PlotGeometry, track: np.ndarray, window_s: float,
                    min_plots: int, gate_probability: float | None) -> Tracklets:
-    """Cut the sensor tracks ``track`` (N,) into windows and fit each piece (module docstring).
+    """Cut the sensor tracks ``track`` (N,) into windows and fit each piece (module docstring);
+    ``geom`` covers at least the plots in a track.
     Pieces of fewer than ``min_plots`` plots are left out, and, when ``gate_probability`` is given,
     pieces no quadratic fits (chi-square of the fit, from the sensor noise alone, above that
     quantile: mostly a track that swapped targets where two crossed). The test ignores the

@@ -42,17 +42,49 @@ def _scan_steps(time: np.ndarray, sensor: np.ndarray) -> list[tuple[np.ndarray, 
 
 
 def _predict(x: np.ndarray, P: np.ndarray, dt: np.ndarray, q: float) -> tuple[np.ndarray, np.ndarray]:
-    """Constant-velocity prediction of states (K, 6) and covariances (K, 6, 6) by dt (K,) s."""
-    n = dt.size
-    F = np.tile(np.eye(6), (n, 1, 1))
-    F[:, :3, 3:] = dt[:, None, None] * np.eye(3)
-    Q = np.zeros((n, 6, 6))
-    Q[:, :3, :3] = (q**2 * dt**3 / 3)[:, None, None] * np.eye(3)
-    Q[:, :3, 3:] = Q[:, 3:, :3] = (q**2 * dt**2 / 2)[:, None, None] * np.eye(3)
-    Q[:, 3:, 3:] = (q**2 * dt)[:, None, None] * np.eye(3)
+    """Constant-velocity prediction of states (K, 6) and covariances (K, 6, 6, symmetric) by dt (K,) s
+    (F P F^T + Q written out by blocks: position, velocity)."""
+    d = dt[:, None, None]
+    eye = np.eye(3)
+    P11, P12, P22 = P[:, :3, :3], P[:, :3, 3:], P[:, 3:, 3:]
+    out = np.empty_like(P)
+    out[:, :3, :3] = P11 + d * (P12 + np.swapaxes(P12, 1, 2)) + d * d * P22 + (q * q * d**3 / 3) * eye
+    out[:, :3, 3:] = P12 + d * P22 + (q * q * d * d / 2) * eye
+    out[:, 3:, :3] = np.swapaxes(out[:, :3, 3:], 1, 2)
+    out[:, 3:, 3:] = P22 + (q * q * d) * eye
     x = x.copy()
     x[:, :3] += dt[:, None] * x[:, 3:]
-    return x, F @ P @ np.swapaxes(F, 1, 2) + Q
+    return x, out
+
+
+def _cholesky3(S: np.ndarray) -> tuple[np.ndarray, ...]:
+    """Cholesky factors (l00, l10, l20, l11, l21, l22), each (K,), of symmetric positive definite
+    3x3 matrices S (K, 3, 3), written out (batched numpy linalg costs more for 3x3)."""
+    l00 = np.sqrt(S[:, 0, 0])
+    l10, l20 = S[:, 1, 0] / l00, S[:, 2, 0] / l00
+    l11 = np.sqrt(S[:, 1, 1] - l10 * l10)
+    l21 = (S[:, 2, 1] - l20 * l10) / l11
+    l22 = np.sqrt(S[:, 2, 2] - l20 * l20 - l21 * l21)
+    return l00, l10, l20, l11, l21, l22
+
+
+def _forward3(L: tuple[np.ndarray, ...], b: np.ndarray) -> np.ndarray:
+    """y = L^-1 b for the factors L of :func:`_cholesky3` and b (K, 3) or (K, 3, m)."""
+    l00, l10, l20, l11, l21, l22 = (v.reshape(v.shape + (1,) * (b.ndim - 2)) for v in L)
+    y0 = b[:, 0] / l00
+    y1 = (b[:, 1] - l10 * y0) / l11
+    y2 = (b[:, 2] - l20 * y0 - l21 * y1) / l22
+    return np.stack([y0, y1, y2], axis=1)
+
+
+def _solve3(L: tuple[np.ndarray, ...], b: np.ndarray) -> np.ndarray:
+    """S^-1 b for S = L L^T (factors of :func:`_cholesky3`) and b (K, 3, m)."""
+    y = _forward3(L, b)
+    l00, l10, l20, l11, l21, l22 = (v[:, None] for v in L)
+    x2 = y[:, 2] / l22
+    x1 = (y[:, 1] - l21 * x2) / l11
+    x0 = (y[:, 0] - l10 * x1 - l20 * x2) / l00
+    return np.stack([x0, x1, x2], axis=1)
 
 
 class _Tracks:
@@ -88,39 +120,53 @@ class _Tracks:
         return ids
 
 
-def _match_scan(tracks: _Tracks, live: np.ndarray, xp, Pp, idx, sen, geom: PlotGeometry, gate: float,
-                assigner: Assigner) -> tuple[np.ndarray, np.ndarray]:
-    """Pairs (track index into ``tracks``, plot index into ``idx``) of one step: one assignment
-    over all sensors, tracks and plots of different sensors never paired (``sen`` is sorted)."""
+def _match_scan(tracks: _Tracks, live: np.ndarray, xp, Pp, sen, p: np.ndarray, cov: np.ndarray, trace: np.ndarray,
+                gate: float, assigner: Assigner) -> tuple[np.ndarray, np.ndarray]:
+    """Pairs (track index into ``tracks``, plot index into the step) of one step: one assignment
+    over all sensors, tracks and plots of different sensors never paired (``sen`` is sorted). The
+    step's plots: positions ``p`` (M, 3) m, covariances ``cov`` (M, 3, 3) m^2 and their traces (M,)."""
     ts = tracks.sensor[live]
     lo, hi = np.searchsorted(sen, ts, side="left"), np.searchsorted(sen, ts, side="right")
     n = hi - lo
     ki = np.repeat(np.arange(live.size), n)
     pj = np.repeat(lo, n) + np.arange(ki.size) - np.repeat(np.cumsum(n) - n, n)
-    v = geom.p_ecef[idx[pj]] - xp[ki, :3]
+    v = p[pj] - xp[ki, :3]
     # d2 >= |v|^2 / trace(S): pairs beyond the gate by this bound need no solve
-    trace = np.trace(Pp[:, :3, :3], axis1=1, axis2=2)[ki] + np.trace(geom.cov[idx[pj]], axis1=1, axis2=2)
-    near = np.einsum("ki,ki->k", v, v) < gate * trace
+    bound = (Pp[:, 0, 0] + Pp[:, 1, 1] + Pp[:, 2, 2])[ki] + trace[pj]
+    near = np.einsum("ki,ki->k", v, v) < gate * bound
     ki, pj, v = ki[near], pj[near], v[near]
     if ki.size == 0:
         return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
-    S = Pp[ki, :3, :3] + geom.cov[idx[pj]]
-    d2 = np.einsum("ki,ki->k", v, np.linalg.solve(S, v[..., None])[..., 0])
-    logdet = np.linalg.slogdet(S)[1]
-    cost = np.full((live.size, idx.size), np.inf)
-    cost[ki, pj] = np.where(d2 < gate, 0.5 * (d2 + logdet), np.inf)
+    L = _cholesky3(Pp[ki, :3, :3] + cov[pj])
+    y = _forward3(L, v)
+    d2 = np.einsum("ki,ki->k", y, y)
+    logdet = 2.0 * np.log(L[0] * L[3] * L[5])
     best = np.full(live.size, np.inf)
     np.minimum.at(best, ki, logdet)
-    rows = np.unique(ki)
-    col = assigner.assign(cost[rows], 0.5 * (gate + best[rows]))
-    ok = col >= 0
-    return live[rows[ok]], col[ok]
+    no_match = 0.5 * (gate + best)
+    inside = d2 < gate
+    ki, pj, cost = ki[inside], pj[inside], 0.5 * (d2 + logdet)[inside]
+    # a pair that is the only one of its track and of its plot is decided alone (the rest, linked
+    # through shared tracks or plots, by one assignment: the optimum of the whole step is the same)
+    alone = (np.bincount(ki, minlength=live.size)[ki] == 1) & (np.bincount(pj, minlength=p.shape[0])[pj] == 1)
+    take = alone & (cost < no_match[ki])
+    ti, pp = ki[take], pj[take]
+    if not alone.all():
+        rows, r_idx = np.unique(ki[~alone], return_inverse=True)
+        cols, c_idx = np.unique(pj[~alone], return_inverse=True)
+        matrix = np.full((rows.size, cols.size), np.inf)
+        matrix[r_idx, c_idx] = cost[~alone]
+        col = assigner.assign(matrix, no_match[rows])
+        ok = col >= 0
+        ti, pp = np.r_[ti, rows[ok]], np.r_[pp, cols[col[ok]]]
+    return live[ti], pp
 
 
 def _update(tracks: _Tracks, ti: np.ndarray, xp, Pp, z: np.ndarray, R: np.ndarray, t: np.ndarray) -> None:
     """Kalman update of tracks ``ti`` (their predictions xp, Pp) with plot positions z (m), R (m^2)."""
-    S = Pp[:, :3, :3] + R
-    K = np.swapaxes(np.linalg.solve(S, np.swapaxes(Pp[:, :, :3], 1, 2)), 1, 2)  # (n, 6, 3)
+    L = _cholesky3(Pp[:, :3, :3] + R)
+    Kt = _solve3(L, Pp[:, :3, :])  # K^T = S^-1 H P (3, 6)
+    K = np.swapaxes(Kt, 1, 2)
     x = xp + (K @ (z - xp[:, :3])[..., None])[..., 0]
     P = Pp - K @ Pp[:, :3, :]
     tracks.x[ti] = x
@@ -137,23 +183,28 @@ def sensor_tracks(time: np.ndarray, sensor: np.ndarray, geom: PlotGeometry, assi
     gate = float(chi2.ppf(gate_probability, 3))
     track = np.full(time.size, -1, dtype=np.int64)
     tracks = _Tracks()
+    n_sensors = int(sensor.max()) + 1
+    scan_time = np.zeros(n_sensors)
+    trace = np.trace(geom.cov, axis1=1, axis2=2)
     for idx, sen in _scan_steps(time, sensor):
-        stepping = np.isin(tracks.sensor, sen)
-        live = np.flatnonzero(stepping)
-        scan_time = np.zeros(int(sensor.max()) + 1)
+        stepping = np.zeros(n_sensors, dtype=bool)
+        stepping[sen] = True
+        live = np.flatnonzero(stepping[tracks.sensor])
         scan_time[sen] = time[idx]
         dt = scan_time[tracks.sensor[live]] - tracks.t[live]
         xp, Pp = _predict(tracks.x[live], tracks.P[live], dt, accel_sigma)
-        ti, pj = _match_scan(tracks, live, xp, Pp, idx, sen, geom, gate, assigner)
+        p, cov = geom.p_ecef[idx], geom.cov[idx]
+        ti, pj = _match_scan(tracks, live, xp, Pp, sen, p, cov, trace[idx], gate, assigner)
+        missed = np.ones(live.size, dtype=bool)
+        fresh = np.ones(idx.size, dtype=bool)
         if ti.size:
             a = np.searchsorted(live, ti)
-            _update(tracks, ti, xp[a], Pp[a], geom.p_ecef[idx[pj]], geom.cov[idx[pj]], time[idx[pj]])
+            _update(tracks, ti, xp[a], Pp[a], p[pj], cov[pj], time[idx[pj]])
             track[idx[pj]] = tracks.id[ti]
-        missed = np.setdiff1d(live, ti)
-        tracks.missed[missed] += 1
-        fresh = np.setdiff1d(np.arange(idx.size), pj)
-        track[idx[fresh]] = tracks.open(sen[fresh], geom.p_ecef[idx[fresh]], geom.cov[idx[fresh]], time[idx[fresh]],
-                                        max_speed)
+            missed[a] = False
+            fresh[pj] = False
+        tracks.missed[live[missed]] += 1
+        track[idx[fresh]] = tracks.open(sen[fresh], p[fresh], cov[fresh], time[idx[fresh]], max_speed)
         tracks.keep(tracks.missed <= max_missed)
     ids, counts = np.unique(track, return_counts=True)
     track[np.isin(track, ids[counts < min_plots])] = -1
