@@ -132,6 +132,7 @@ class FleetFilter:
         self._buffer = {k: [] for k in _BUFFER}
         self._n_read = 0
         self._closed_key: int | None = None
+        self._open_key: int | None = None  # the latest epoch buffered
         self._t_last: float | None = None
         self._history: list[tuple] = []
         self._unused: dict[str, list] = {}
@@ -158,6 +159,9 @@ class FleetFilter:
         for k in _BUFFER:
             self._buffer[k].append(new[k])
         self._n_read += int(cols.time.size)
+        if key.size == 0 or (self._open_key is not None and key.max() <= self._open_key):
+            return 0  # no epoch closes: the plots wait in the buffer
+        self._open_key = int(key.max())
         return self._process(closing_all=False)
 
     def flush(self) -> int:
