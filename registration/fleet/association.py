@@ -258,9 +258,11 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
         step = solve_batch(_labelled(problem, labels), between, x0=x)  # warm: from the last estimate
         t_solve += time.perf_counter() - t1
         x, P, geom = step.estimate, step.covariance, None
-    if passes or not subset.all():  # the last pass: all windows, the sensors' tracks again from the plots
-        track, geom = _tracks(problem, x, options, assigner)  # corrected by the estimate (an angle bias in a
-    labels, of_plot = _associate(problem, track, x, P, options, assigner, passes > 0, True, geom)  # rolling deck sways them)
+    # the last pass: all windows, the sensors' tracks again from the plots corrected by the estimate
+    # (an angle bias in a rolling deck sways them)
+    if passes or not subset.all():
+        track, geom = _tracks(problem, x, options, assigner)
+    labels, of_plot = _associate(problem, track, x, P, options, assigner, passes > 0, True, geom)
     final = _labelled(problem, labels)
     t1 = time.perf_counter()
     result = solve_batch(final, batch_options, x0=x)

@@ -29,44 +29,54 @@ N_JOINT = N_LINE + 6
 
 
 def _mahalanobis(d: np.ndarray, S: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    d2 = np.einsum("...i,...i->...", d, np.linalg.solve(S, d[..., None])[..., 0])
-    return d2, np.linalg.slogdet(S)[1]
+    """(d2, logdet) of differences d (K, m) with covariances S (K, m, m), from one Cholesky factor
+    per pair (LU-based ``solve`` and ``slogdet`` for a batch that is not numerically positive definite)."""
+    try:
+        L = np.linalg.cholesky(S)
+    except np.linalg.LinAlgError:
+        return np.einsum("...i,...i->...", d, np.linalg.solve(S, d[..., None])[..., 0]), np.linalg.slogdet(S)[1]
+    y = np.empty_like(d)
+    for i in range(d.shape[1]):  # forward substitution y = L^-1 d
+        y[:, i] = (d[:, i] - np.einsum("ki,ki->k", L[:, i, :i], y[:, :i])) / L[:, i, i]
+    diag = np.diagonal(L, axis1=1, axis2=2)
+    return np.einsum("ki,ki->k", y, y), 2.0 * np.log(diag).sum(axis=1)
 
 
-def group_covariances(cov: np.ndarray, G: np.ndarray, P: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def group_covariances(cov: np.ndarray, G: np.ndarray, P: np.ndarray,
+                      cols: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Per group curve (covariance ``cov`` (G, 9, 9), sensitivity ``G`` (G, 9, n)) under the states'
-    covariance P (n, n): the curve's covariance with the states' uncertainty ``cov + G P G^T``
-    (G, 9, 9), its covariance with each state ``G P`` (G, 9, n + 1) and P (n + 1, n + 1); the
-    last column of both is 0 (state index -1: a channel the sensor does not measure)."""
+    covariance P (n, n), for the tracklets of one sensor whose platform's and own states are
+    ``cols`` (6,; -1: a channel the sensor does not measure): the curve's covariance with the
+    states' uncertainty ``cov + G P G^T`` (G, 9, 9), its covariance with the six states (G, 9, 6),
+    and the six states' covariance (6, 6) (0 in the rows and columns of index -1)."""
     n = P.shape[0]
     GP = np.zeros((G.shape[0], N_LINE, n + 1))
     GP[:, :, :n] = G @ P
     P_ext = np.zeros((n + 1, n + 1))
     P_ext[:n, :n] = P
-    return cov + GP[:, :, :n] @ np.swapaxes(G, 1, 2), GP, P_ext
+    return cov + GP[:, :, :n] @ np.swapaxes(G, 1, 2), GP[:, :, cols], P_ext[np.ix_(cols, cols)]
 
 
-def joint_covariance(groups: tuple[np.ndarray, np.ndarray, np.ndarray], g: np.ndarray, cols: np.ndarray) -> np.ndarray:
-    """(K, 15, 15) covariance of (group curve ``g`` (K,), the six states ``cols`` (K, 6) of the
-    tracklet's platform and sensor) per pair, from :func:`group_covariances` ``groups``."""
-    curve, GP, P_ext = groups
+def joint_covariance(groups: tuple[np.ndarray, np.ndarray, np.ndarray], g: np.ndarray) -> np.ndarray:
+    """(K, 15, 15) covariance of (group curve ``g`` (K,), the six states of the tracklets' sensor)
+    per pair, from :func:`group_covariances` ``groups``."""
+    curve, GP, P_s = groups
     out = np.empty((g.size, N_JOINT, N_JOINT))
     out[:, :N_LINE, :N_LINE] = curve[g]
-    out[:, :N_LINE, N_LINE:] = GP[g[:, None, None], np.arange(N_LINE)[None, :, None], cols[:, None, :]]
-    out[:, N_LINE:, :N_LINE] = np.swapaxes(out[:, :N_LINE, N_LINE:], 1, 2)
-    out[:, N_LINE:, N_LINE:] = P_ext[cols[:, :, None], cols[:, None, :]]
+    cross = GP[g]
+    out[:, :N_LINE, N_LINE:] = cross
+    out[:, N_LINE:, :N_LINE] = np.swapaxes(cross, 1, 2)
+    out[:, N_LINE:, N_LINE:] = P_s
     return out
 
 
-def line_cost(tl, b: np.ndarray, cols: np.ndarray, line: np.ndarray, joint: np.ndarray):
-    """(d2, logdet), each (K,), of K pairs: tracklets ``b`` (K,), their six state columns ``cols``
-    (K, 6), against group curves ``line`` (K, 9); ``joint`` (K, 15, 15) from :func:`joint_covariance`.
-    Covariance ``C_b + C_g + (G_b - G_g) P (G_b - G_g)^T``, written as ``C_b + W joint W^T``
-    with W = [I, -G_b] (G_b on the tracklet's own six states, its only nonzero columns)."""
+def line_cost(tl, b: np.ndarray, G_b: np.ndarray, line: np.ndarray, joint: np.ndarray):
+    """(d2, logdet), each (K,), of K pairs: tracklets ``b`` (K,) with sensitivity ``G_b`` (K, 9, 6) to
+    their sensor's six states (their only nonzero columns), against group curves ``line`` (K, 9);
+    ``joint`` (K, 15, 15) from :func:`joint_covariance`. Covariance
+    ``C_b + C_g + (G_b - G_g) P (G_b - G_g)^T``, written as ``C_b + W joint W^T`` with W = [I, -G_b]."""
     d = tl.line[b] - line
-    G_b = tl.G[b[:, None, None], np.arange(N_LINE)[None, :, None], np.maximum(cols, 0)[:, None, :]]
-    W = np.concatenate([np.broadcast_to(np.eye(N_LINE), (b.size, N_LINE, N_LINE)),
-                        -np.where(cols[:, None, :] >= 0, G_b, 0.0)], axis=2)
+    W = np.concatenate([np.broadcast_to(np.eye(N_LINE), (b.size, N_LINE, N_LINE)), -G_b], axis=2)
     S = tl.cov[b] + W @ joint @ np.swapaxes(W, 1, 2)
     return _mahalanobis(d, S)
 
@@ -74,7 +84,8 @@ def line_cost(tl, b: np.ndarray, cols: np.ndarray, line: np.ndarray, joint: np.n
 def measurement_cost(problem: FleetProblem, x: np.ndarray, tl, b: np.ndarray, cols: np.ndarray, line: np.ndarray,
                      joint: np.ndarray):
     """(d2, logdet), each (K,), of K pairs as :func:`line_cost`, in the channels of the tracklets'
-    sensors (module docstring), under the states ``x`` (n,). ``A C_g A^T + R + D P D^T`` is
+    sensor (module docstring; ``cols`` (6,) its platform's and its own state columns, -1 where
+    not measured), under the states ``x`` (n,). ``A C_g A^T + R + D P D^T`` is
     written as ``W joint W^T + R`` with W = [A, J_x] (J_x: the sensor's six columns)."""
     k_pairs = b.size
     plot = tl.rep[b].reshape(-1)
@@ -83,10 +94,10 @@ def measurement_cost(problem: FleetProblem, x: np.ndarray, tl, b: np.ndarray, co
     basis = np.concatenate([(tau**k)[:, None, None] * np.eye(3) for k in range(N_COEF)], axis=2)  # (M, 3, L)
     p = (basis @ line[grp][..., None])[..., 0]
     xs = np.append(np.asarray(x, dtype=np.float64), 0.0)
-    plot_cols = np.repeat(cols, 3, axis=0)
     meas, mask = problem.meas[plot], problem.mask[plot]
-    res, J = _codegen.get("fleet_residual")(p, *problem.nav[plot].T, xs[plot_cols[:, :3]], xs[plot_cols[:, 3:]],
-                                           problem.sensor_lever[problem.sensor[plot]], *meas.T)[:2]
+    att, bias = (np.tile(xs[c], (plot.size, 1)) for c in (cols[:3], cols[3:]))
+    lever = problem.sensor_lever[problem.sensor[plot]]
+    res, J = _codegen.get("fleet_residual")(p, *problem.nav[plot].T, att, bias, lever, *meas.T)[:2]
     res, J = np.asarray(res).reshape(-1, 3), np.asarray(J).reshape(-1, 3, 9)
     res, J = np.where(mask, res, 0.0), np.where(mask[..., None], J, 0.0)
     W = np.concatenate([J[:, :, :3] @ basis, J[:, :, 3:]], axis=2).reshape(k_pairs, 9, N_JOINT)

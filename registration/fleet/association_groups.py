@@ -71,19 +71,21 @@ def _pairs(b_window: np.ndarray, g_window: np.ndarray) -> tuple[np.ndarray, np.n
 
 
 def _costs(problem: FleetProblem, x, tl, b: np.ndarray, gi: np.ndarray, curves, P, full: bool):
-    """(d2, logdet) of the pairs (tracklets ``b``, groups ``gi``), in chunks."""
+    """(d2, logdet) of the pairs (tracklets ``b``, all of one sensor; groups ``gi``), in chunks."""
     line, cov, G = curves
-    groups = group_covariances(cov, G, P)
-    cols = state_columns(problem, tl.rep[b, 0])
+    cols = state_columns(problem, tl.rep[b[:1], 0])[0]
+    groups = group_covariances(cov, G, P, cols)
+    if full:  # the tracklets' sensitivity to their own six states, their only nonzero columns
+        G_b = np.where(cols >= 0, tl.G[:, :, np.maximum(cols, 0)], 0.0)
     d2, logdet = np.empty(b.size), np.empty(b.size)
     for a in range(0, b.size, PAIR_CHUNK):
         s = slice(a, a + PAIR_CHUNK)
         g = gi[s]
-        joint = joint_covariance(groups, g, cols[s])
+        joint = joint_covariance(groups, g)
         if full:
-            d2[s], logdet[s] = line_cost(tl, b[s], cols[s], line[g], joint)
+            d2[s], logdet[s] = line_cost(tl, b[s], G_b[b[s]], line[g], joint)
         else:
-            d2[s], logdet[s] = measurement_cost(problem, x, tl, b[s], cols[s], line[g], joint)
+            d2[s], logdet[s] = measurement_cost(problem, x, tl, b[s], cols, line[g], joint)
     return d2, logdet
 
 
