@@ -130,14 +130,14 @@ def _match_scan(tracks: _Tracks, live: np.ndarray, xp, Pp, sen, p: np.ndarray, c
     n = hi - lo
     ki = np.repeat(np.arange(live.size), n)
     pj = np.repeat(lo, n) + np.arange(ki.size) - np.repeat(np.cumsum(n) - n, n)
-    v = p[pj] - xp[ki, :3]
+    v = p[pj] - np.ascontiguousarray(xp[:, :3])[ki]
     # d2 >= |v|^2 / trace(S): pairs beyond the gate by this bound need no solve
     bound = (Pp[:, 0, 0] + Pp[:, 1, 1] + Pp[:, 2, 2])[ki] + trace[pj]
     near = np.einsum("ki,ki->k", v, v) < gate * bound
     ki, pj, v = ki[near], pj[near], v[near]
     if ki.size == 0:
         return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
-    L = _cholesky3(Pp[ki, :3, :3] + cov[pj])
+    L = _cholesky3(np.ascontiguousarray(Pp[:, :3, :3])[ki] + cov[pj])
     y = _forward3(L, v)
     d2 = np.einsum("ki,ki->k", y, y)
     logdet = 2.0 * np.log(L[0] * L[3] * L[5])

@@ -124,3 +124,37 @@ def test_bad_input_is_refused_clearly(easy):
         AssociationOptions(gate_probability=1.5)
     with pytest.raises(ValueError, match="plots: missing column 'sensor'"):
         associate_and_register({"time": sim.plots["time"]}, sc.sensors, sc.navigation, sc.platforms)
+
+
+def test_line_cost_through_the_joint_covariance_matches_the_direct_formula():
+    """The tracklet-group cost built from the 15x15 joint covariance (group curve, the sensor's six
+    states) equals d^T S^-1 d and log det S with S = C_b + C_g + (G_b - G_g) P (G_b - G_g)^T
+    written out over all n states."""
+    from types import SimpleNamespace
+
+    from registration.fleet.association_cost import group_covariances, joint_covariance, line_cost
+
+    rng = np.random.default_rng(7)
+    n, n_groups, k = 12, 4, 6
+    cols = np.array([0, 1, 2, 7, 8, -1])  # platform attitude, sensor biases; -1: not measured
+    A = rng.normal(size=(n, n))
+    P = A @ A.T / n + 0.1 * np.eye(n)
+
+    def spd(m):
+        B = rng.normal(size=(m, 9, 9))
+        return B @ np.swapaxes(B, 1, 2) + np.eye(9)
+
+    G_g = rng.normal(size=(n_groups, 9, n))
+    C_g, line_g = spd(n_groups), rng.normal(size=(n_groups, 9)) * 3
+    G_b = np.zeros((k, 9, n))
+    G_b[:, :, cols[cols >= 0]] = rng.normal(size=(k, 9, int((cols >= 0).sum())))
+    tl = SimpleNamespace(line=rng.normal(size=(k, 9)) * 3, cov=spd(k), G=G_b)
+    b, g = np.arange(k), rng.integers(0, n_groups, k)
+    G_b6 = np.where(cols >= 0, G_b[:, :, np.maximum(cols, 0)], 0.0)
+    joint = joint_covariance(group_covariances(C_g, G_g, P, cols), g)
+    d2, logdet = line_cost(tl, b, G_b6, line_g[g], joint)
+    dG = G_b - G_g[g]
+    S = tl.cov + C_g[g] + dG @ P @ np.swapaxes(dG, 1, 2)
+    d = tl.line - line_g[g]
+    np.testing.assert_allclose(d2, np.einsum("ki,ki->k", d, np.linalg.solve(S, d[..., None])[..., 0]), rtol=1e-9)
+    np.testing.assert_allclose(logdet, np.linalg.slogdet(S)[1], rtol=1e-9)
