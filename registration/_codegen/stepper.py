@@ -88,13 +88,19 @@ def _results_template(scalars: tuple[bool, ...], keys: tuple[str, ...] | None):
     tuple or (``keys`` given) a dict; compiled once per pattern."""
     names = [f"v{i}" for i in range(len(scalars))]
     parts = [f"{n}.item()" if scalar else f"{n}.copy()" for n, scalar in zip(names, scalars)]
+    return _compiled("results", names, parts, keys)
+
+
+def _compiled(name: str, params: list[str], parts: list[str], keys: tuple[str, ...] | None):
+    """A function ``name(*params)`` returning the expressions ``parts`` as a tuple, or as a dict
+    under ``keys``: built once per pattern, so a call costs no per-field Python loop."""
     if keys is not None:
         body = "{" + ", ".join(f"{k!r}: {p}" for k, p in zip(keys, parts)) + "}"
     else:
         body = f"({', '.join(parts)},)" if parts else "()"
     namespace: dict = {}
-    exec(f"def results({', '.join(names)}):\n    return {body}\n", namespace)  # noqa: S102
-    return namespace["results"]
+    exec(f"def {name}({', '.join(params)}):\n    return {body}\n", namespace)  # noqa: S102
+    return namespace[name]
 
 
 class _Layout:
@@ -310,13 +316,7 @@ def _row_template(scalars: tuple[bool, ...], keys: tuple[str, ...] | None):
     tuple or a dict under ``keys``; compiled once per pattern."""
     names = [f"a{m}" for m in range(len(scalars))]
     parts = [f"{n}.item(i)" if scalar else f"{n}[i]" for n, scalar in zip(names, scalars)]
-    if keys is not None:
-        body = "{" + ", ".join(f"{k!r}: {p}" for k, p in zip(keys, parts)) + "}"
-    else:
-        body = f"({', '.join(parts)},)" if parts else "()"
-    namespace: dict = {}
-    exec(f"def pick(i, {', '.join(names)}):\n    return {body}\n", namespace)  # noqa: S102
-    return namespace["pick"]
+    return _compiled("pick", ["i", *names], parts, keys)
 
 
 class PyStepper:

@@ -11,7 +11,7 @@ from registration.core.consistency import ConsistencyReport
 from registration.core.observability import ObservabilityReport
 from registration.fleet.layout import StateLayout
 from registration.fleet.problem import Exclusion
-from registration.fleet.result import ChiSquareCheck
+from registration.fleet.result import ChiSquareCheck, state_lines, state_rows
 
 __all__ = ["OnlineHistory", "OnlineResult"]
 
@@ -73,15 +73,7 @@ class OnlineResult:
 
     def rows(self, truth: dict | None = None) -> list[dict]:
         """One dict per state: name, object, quantity, label, unit, estimate, sigma, status (and truth)."""
-        out = []
-        for i, name in enumerate(self.layout.names):
-            row = {"name": name, "object": self.layout.objects[i], "quantity": self.layout.quantities[i],
-                   "label": self.layout.labels[i], "unit": self.layout.units[i],
-                   "estimate": float(self.estimate[i]), "sigma": float(self.sigma[i]), "status": self.status[name]}
-            if truth is not None:
-                row["truth"] = float(truth[name])
-            out.append(row)
-        return out
+        return state_rows(self.layout, self.estimate, self.sigma, self.status, truth)
 
     def lines(self) -> list[str]:
         """A printable summary (angles in degrees)."""
@@ -90,9 +82,7 @@ class OnlineResult:
             out.append(self.consistency.message())
         if self.fit_check is not None:
             out.append("residuals at the final estimate: " + self.fit_check.text())
-        for row in self.rows():
-            f, unit = (np.degrees, "deg") if row["unit"] == "rad" else (float, "m")
-            out.append(f"  {row['label']:<36s} {f(row['estimate']):+12.4f} +- {f(row['sigma']):.4f} {unit}  {row['status']}")
+        out += state_lines(self.rows())
         out += self.observability.lines()
         out += [f"  excluded: {e.text()}" for e in self.excluded]
         return out

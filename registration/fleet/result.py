@@ -11,7 +11,7 @@ from registration.core.observability import ObservabilityReport
 from registration.fleet.covariance import FusedTargets
 from registration.fleet.layout import StateLayout
 
-__all__ = ["BatchResult", "ChiSquareCheck"]
+__all__ = ["BatchResult", "ChiSquareCheck", "state_lines", "state_rows"]
 
 _QUANTITY = "squared normalised residual per degree of freedom"
 
@@ -53,6 +53,30 @@ class ChiSquareCheck:
         lo, hi = self.interval
         return (f"mean squared normalised residual {self.mean:.4f} over {self.dof} degrees of freedom "
                 f"(95 % band [{lo:.4f}, {hi:.4f}]): {'consistent' if self.ok else 'OUTSIDE the band'}")
+
+
+def state_rows(layout: StateLayout, estimate: np.ndarray, sigma: np.ndarray, status: dict,
+               truth: dict | None = None) -> list[dict]:
+    """One dict per state of ``layout``: name, object (platform or sensor id), quantity, label,
+    unit, estimate, sigma (rad, m), status (and truth when given, {name: value})."""
+    out = []
+    for i, name in enumerate(layout.names):
+        row = {"name": name, "object": layout.objects[i], "quantity": layout.quantities[i],
+               "label": layout.labels[i], "unit": layout.units[i],
+               "estimate": float(estimate[i]), "sigma": float(sigma[i]), "status": status[name]}
+        if truth is not None:
+            row["truth"] = float(truth[name])
+        out.append(row)
+    return out
+
+
+def state_lines(rows: list[dict]) -> list[str]:
+    """One printable line per row of :func:`state_rows` (angles in degrees, ranges in m)."""
+    out = []
+    for row in rows:
+        f, unit = (np.degrees, "deg") if row["unit"] == "rad" else (float, "m")
+        out.append(f"  {row['label']:<36s} {f(row['estimate']):+12.4f} +- {f(row['sigma']):.4f} {unit}  {row['status']}")
+    return out
 
 
 @dataclass
@@ -130,24 +154,12 @@ class BatchResult:
     def rows(self, truth: dict | None = None) -> list[dict]:
         """One dict per state: name, object (platform or sensor id), quantity, label, unit,
         estimate, sigma, status (and truth when given)."""
-        out = []
-        for i, name in enumerate(self.layout.names):
-            row = {"name": name, "object": self.layout.objects[i], "quantity": self.layout.quantities[i],
-                   "label": self.layout.labels[i], "unit": self.layout.units[i],
-                   "estimate": float(self.estimate[i]), "sigma": float(self.sigma[i]), "status": self.status[name]}
-            if truth is not None:
-                row["truth"] = float(truth[name])
-            out.append(row)
-        return out
+        return state_rows(self.layout, self.estimate, self.sigma, self.status, truth)
 
     def lines(self) -> list[str]:
         """A printable summary (angles in degrees)."""
         out = [f"converged: {self.converged} after {self.iterations} iterations", self.chi_square.text()]
-        for row in self.rows():
-            deg = row["unit"] == "rad"
-            f = np.degrees if deg else float
-            unit = "deg" if deg else "m"
-            out.append(f"  {row['label']:<36s} {f(row['estimate']):+12.4f} +- {f(row['sigma']):.4f} {unit}  {row['status']}")
+        out += state_lines(self.rows())
         out += self.observability.lines()
         out += [f"  excluded: {e.text()}" for e in self.excluded]
         return out
