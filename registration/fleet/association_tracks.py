@@ -10,7 +10,9 @@ track). A track is a constant-velocity Kalman filter on the plot positions (proc
 acceleration of ``accel_sigma`` m/s^2; a new track's velocity has sigma ``max_speed``), closed after
 ``max_missed`` scans in a row without a plot. Tracks with fewer than ``min_plots`` plots are clutter.
 All sensors advance together, scan k of every sensor in one step, so the filter arithmetic is
-batched over the sensors' tracks.
+batched over the sensors' tracks (3x3 Cholesky factors written out). A track and a plot that are
+each other's only candidate in the gate are paired, or not, without the assignment: an isolated
+pair is its own optimum, so the result is that of one assignment over the whole step.
 """
 
 from __future__ import annotations
