@@ -61,6 +61,17 @@ MEAS_DOMAIN = {
 }
 
 
+#: A rotation matrix as nine symbols (row-major names R_<row><column>).
+R_ENU_DECK = sp.Matrix(3, 3, lambda i, j: sp.Symbol(f"R_{i}{j}", real=True))
+
+
+def enu2deck_attitude_expr(R) -> sp.Matrix:
+    """[heading, pitch, roll] of ``R = deck2enu_rotation_expr(C, phi, theta)``: with cos(phi) > 0 its
+    column 1 (the bow) is (sin C cos phi, cos C cos phi, sin phi) and its row 2 is
+    (-cos phi sin theta, sin phi, cos phi cos theta)."""
+    return sp.Matrix([sp.atan2(R[0, 1], R[1, 1]), sp.asin(R[2, 1]), sp.atan2(-R[2, 0], R[2, 2])])
+
+
 def specs() -> list[FunctionSpec]:
     Phi = phi_expr(heading, pitch, roll, r, q, e)
     Psi = jacobian(Phi, heading, pitch, roll, r, q, e)
@@ -72,6 +83,17 @@ def specs() -> list[FunctionSpec]:
             inputs=MEAS_INPUTS[3:],
             outputs=(Port("R_enu_deck", deck2enu_rotation_expr(heading, pitch, roll), "1"),),
             domain=MEAS_DOMAIN,
+        ),
+        FunctionSpec(
+            name="enu2deck_attitude",
+            doc=(
+                "heading, pitch, roll (rad) of a rotation R_enu_deck = Rz(C) Rx(phi) Ry(theta): the inverse of "
+                "deck2enu_rotation for pitch in [-pi/2, pi/2] (heading from the bow's horizontal components, pitch "
+                "from the bow's up component, roll from the up row)."
+            ),
+            inputs=(Port("R_enu_deck", R_ENU_DECK, "1"),),
+            outputs=(Port("attitude", enu2deck_attitude_expr(R_ENU_DECK), "rad"),),
+            domain={"R_enu_deck": [(-0.999, 0.999)] * 9},
         ),
         FunctionSpec(
             name="deck2enu",

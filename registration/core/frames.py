@@ -18,7 +18,8 @@ from registration.core.validation import (
     as_float_array, broadcast_1d, check_altitude, check_angle, check_finite, check_latitude, check_positive, check_range,
 )
 
-__all__ = ["geodetic2ecef", "ecef2geodetic", "enu2ecef_rotation", "deck2enu", "deck2enu_jacobians", "deck2enu_rotation", "plot2ecef"]
+__all__ = ["geodetic2ecef", "ecef2geodetic", "enu2ecef_rotation", "deck2enu", "deck2enu_jacobians", "deck2enu_rotation",
+           "enu2deck_attitude", "plot2ecef"]
 
 #: ENU->ECEF rotation variants that derive/ emitted: the standard one and the paper's eq. (4).
 T_VARIANTS = _codegen.variants("t_variant")
@@ -104,6 +105,19 @@ def deck2enu_rotation(heading, pitch, roll) -> np.ndarray:
     """R_enu_deck (N, 3, 3) = Rz(heading) Rx(pitch) Ry(roll), angles in radians."""
     v = _attitude(heading, pitch, roll)
     return _codegen.get("deck2enu_rotation")(*_ordered(v, ["heading", "pitch", "roll"]))[0]
+
+
+def enu2deck_attitude(R_enu_deck) -> np.ndarray:
+    """(N, 3) heading, pitch, roll (rad) of rotations R_enu_deck (N, 3, 3) or (3, 3) built as
+    :func:`deck2enu_rotation` builds them: its inverse for pitch in [-pi/2, pi/2] (heading in
+    (-pi, pi]). Entries rounded just past +-1 are clipped before the arcsine of the pitch."""
+    R = as_float_array("R_enu_deck", R_enu_deck)
+    if R.shape[-2:] != (3, 3) or R.ndim not in (2, 3):
+        raise ValueError(f"R_enu_deck: expected shape (N, 3, 3) or (3, 3), got {R.shape}")
+    R = R.reshape(-1, 3, 3).copy()
+    check_finite("R_enu_deck", R, "1")
+    R[:, 2, 1] = np.clip(R[:, 2, 1], -1.0, 1.0)
+    return _codegen.get("enu2deck_attitude")(R)[0].reshape(-1, 3)
 
 
 def deck2enu(r, q, e, heading, pitch, roll) -> np.ndarray:

@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 
 from registration.core.angles import wrap_angle
-from registration.core.frames import deck2enu_rotation, ecef2geodetic, enu2ecef_rotation, geodetic2ecef
+from registration.core.frames import deck2enu_rotation, ecef2geodetic, enu2deck_attitude, enu2ecef_rotation, geodetic2ecef
 from registration.core.validation import as_float_array
 
 __all__ = ["DECK2BODY", "LocalFrame", "orientation_rotation"]
@@ -49,18 +49,6 @@ def orientation_rotation(orientation) -> np.ndarray:
     """
     o = _rows("orientation", orientation, 3)
     return deck2enu_rotation(wrap_angle(np.pi / 2 - o[:, 2]), o[:, 1], o[:, 0])
-
-
-def _cardan(R_deck: np.ndarray) -> np.ndarray:
-    """(heading, pitch, roll) (N, 3) rad of rotations R = Rz(C) Rx(phi) Ry(theta) (docs/conventions.md).
-
-    Column 1 is the bow (sin C cos phi, cos C cos phi, sin phi); row 2 is (-cos phi sin theta,
-    sin phi, cos phi cos theta).
-    """
-    heading = np.arctan2(R_deck[:, 0, 1], R_deck[:, 1, 1])
-    pitch = np.arcsin(np.clip(R_deck[:, 2, 1], -1.0, 1.0))
-    roll = np.arctan2(-R_deck[:, 2, 0], R_deck[:, 2, 2])
-    return np.stack([wrap_angle(heading), pitch, roll], axis=1)
 
 
 class LocalFrame:
@@ -118,13 +106,13 @@ class LocalFrame:
         """Stone Soup orientations (N, 3) = (roll, pitch, yaw) rad of attitudes (rad, this package's
         convention, relative to the local ENU at (lat, lon) rad)."""
         R = self._world_enu(lat, lon) @ deck2enu_rotation(heading, pitch, roll)
-        c = _cardan(R)
+        c = enu2deck_attitude(R)
         return np.stack([c[:, 2], c[:, 1], wrap_angle(np.pi / 2 - c[:, 0])], axis=1)
 
     def attitude(self, lat, lon, orientation) -> np.ndarray:
         """Attitudes (N, 3) = (heading, pitch, roll) rad at (lat, lon) rad of Stone Soup orientations (N, 3)."""
         R = np.swapaxes(self._world_enu(lat, lon), 1, 2) @ orientation_rotation(orientation)
-        return _cardan(R)
+        return enu2deck_attitude(R)
 
     def sensor_pose(self, navigation, lever_deck=(0.0, 0.0, 0.0)) -> tuple[np.ndarray, np.ndarray]:
         """A sensor's world position (N, 3) m and Stone Soup orientation (N, 3) rad from navigation
