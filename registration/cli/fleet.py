@@ -10,6 +10,7 @@ write ``estimates.csv``, ``summary.json`` and the plots. See docs/fleet.md.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import textwrap
 from pathlib import Path
 
@@ -129,6 +130,30 @@ def _run_line(result) -> str:
     return f"converged: {result.converged} after {result.iterations} iterations"
 
 
+#: What `fleet register` writes into --out (the outputs of an earlier run there are replaced whole).
+REGISTER_OUTPUTS = frozenset({"estimates.csv", "history.csv", "summary.json", "associations.csv", "rejected.csv",
+                              "estimates.png", "map.png", "residuals.png"})
+#: `fleet simulate` writes its input tables too.
+SIMULATE_OUTPUTS = REGISTER_OUTPUTS | {f"{t}.{f}" for t in ("plots", "navigation", "sensors", "platforms", "reference")
+                                      for f in ("csv", "parquet")}
+
+
+@contextlib.contextmanager
+def _staged(out: Path, command: str, names: frozenset):
+    """A run folder inside ``out``: its files replace the earlier run's outputs in ``out`` (all of
+    ``names`` an earlier run left) only when the block ends normally; otherwise ``out`` is unchanged."""
+    from registration.recorded.outfolder import discard, new_run_folder, prepare_out as prepare_run_folder, publish
+
+    prepare_run_folder(out, names)
+    folder = new_run_folder(out, None, command, names)
+    try:
+        yield folder
+    except BaseException:
+        discard(folder)
+        raise
+    publish(folder)
+
+
 def run_simulate(args: argparse.Namespace) -> int:
     """Simulate, write the tables, read them back and register what was written (so `fleet register`
     on these files gives the same numbers)."""
@@ -139,20 +164,23 @@ def run_simulate(args: argparse.Namespace) -> int:
         raise ValueError(f"--seed: expected an integer >= 0, got {args.seed}")
     out = prepare_out(args.out)
     s = fleet_scenario(args.seed)
-    with writing(out):
-        tables_written = write_fleet_tables(out, s.plots, s.navigation, s.sensors, s.platforms, s.references,
-                                            args.format)
-    names = {p.stem: p for p in tables_written}
-    tables = read_fleet_tables(names["plots"], names["navigation"], names["sensors"], names.get("platforms"),
-                               names.get("reference"))
-    problem, result = _solve(tables, 20.0, args.method)
-    rows = estimate_rows(result, s.truth_state)
-    header = [f"Simulated fleet, seed {args.seed}: " + problem.lines()[0], _run_line(result)]
-    print_report(result, rows, header)
-    inputs = {**_inputs(tables, problem, 20.0), "method": args.method, "scenario": {k: (float(v) if not isinstance(v, (bool, str)) else v)
-                                                             for k, v in s.description.items()}}
-    written = write_outputs(out, problem, result, rows, inputs, plots=not args.no_plots, truth=s.truth_state)
-    print("\nwrote " + ", ".join(str(p) for p in [*tables_written, *written]))
+    with _staged(out, "registration fleet simulate", SIMULATE_OUTPUTS) as folder:
+        with writing(folder.path):
+            tables_written = write_fleet_tables(folder.path, s.plots, s.navigation, s.sensors, s.platforms,
+                                                s.references, args.format)
+        names = {p.stem: p for p in tables_written}
+        tables = read_fleet_tables(names["plots"], names["navigation"], names["sensors"], names.get("platforms"),
+                                   names.get("reference"))
+        tables.paths = {k: folder.final(v) for k, v in tables.paths.items()}  # where they will be
+        problem, result = _solve(tables, 20.0, args.method)
+        rows = estimate_rows(result, s.truth_state)
+        header = [f"Simulated fleet, seed {args.seed}: " + problem.lines()[0], _run_line(result)]
+        print_report(result, rows, header)
+        scenario = {k: (float(v) if not isinstance(v, (bool, str)) else v) for k, v in s.description.items()}
+        inputs = {**_inputs(tables, problem, 20.0), "method": args.method, "scenario": scenario}
+        written = write_outputs(folder.path, problem, result, rows, inputs, plots=not args.no_plots,
+                                truth=s.truth_state)
+    print("\nwrote " + ", ".join(str(folder.final(p)) for p in [*tables_written, *written]))
     return gate("registration fleet simulate", result, args.allow_inconsistent)
 
 
@@ -174,7 +202,8 @@ def _read_tables(args: argparse.Namespace, out: Path):
         tables = read_fleet_tables(args.plots, args.navigation, args.sensors, args.platforms, args.reference,
                                    on_bad_row=args.on_bad_row)
     except NoValidPlotsError as exc:
-        _write_rejected(out, exc.rejected_frame())
+        with _staged(out, "registration fleet register", REGISTER_OUTPUTS) as folder:
+            _write_rejected(folder.path, exc.rejected_frame())  # the list of what was wrong is the output
         raise
     if tables.rejected:
         counts = tables.rejected_frame().groupby(["file", "reason_code"]).size()
@@ -184,13 +213,24 @@ def _read_tables(args: argparse.Namespace, out: Path):
 
 
 def run_register(args: argparse.Namespace) -> int:
-    """Read the tables, register, print and write the outputs; exit 3 on a gross misfit."""
-    from registration.cli.fleet_output import estimate_rows, gate, print_report, write_outputs
+    """Read the tables, register, print and write the outputs (replacing an earlier run's in
+    --out only once all are written); exit 3 on a gross misfit."""
+    from registration.cli.fleet_output import gate
 
     if not (args.window_s >= 0 and args.window_s < float("inf")):
         raise ValueError(f"--window-s: expected a length >= 0 s, got {args.window_s}")
     out = prepare_out(args.out)
     tables = _read_tables(args, out)
+    with _staged(out, "registration fleet register", REGISTER_OUTPUTS) as folder:
+        result, written = _register_into(folder.path, args, tables)
+    print("\nwrote " + ", ".join(str(folder.final(p)) for p in written))
+    return gate("registration fleet register", result, args.allow_inconsistent)
+
+
+def _register_into(path: Path, args: argparse.Namespace, tables):
+    """Register the tables, print the report and write the outputs into ``path``: (result, files)."""
+    from registration.cli.fleet_output import estimate_rows, print_report, write_outputs
+
     association = None
     if "target" in tables.plots:
         problem, result = _solve(tables, args.window_s, args.method)
@@ -208,13 +248,12 @@ def run_register(args: argparse.Namespace) -> int:
                                  "plots_unassociated": int(association.unassociated_rows.size),
                                  "unassociated_by_sensor": {k: int(v) for k, v in association.unassociated_by_sensor.items()},
                                  "passes": association.iterations, "converged": bool(association.converged)}
-    written = write_outputs(out, problem, result, rows, inputs, plots=not args.no_plots)
+    written = write_outputs(path, problem, result, rows, inputs, plots=not args.no_plots)
     if args.on_bad_row == "skip":
-        written.append(_write_rejected(out, tables.rejected_frame()))
+        written.append(_write_rejected(path, tables.rejected_frame()))
     if association is not None:
-        written.append(_write_associations(out, tables, association))
-    print("\nwrote " + ", ".join(str(p) for p in written))
-    return gate("registration fleet register", result, args.allow_inconsistent)
+        written.append(_write_associations(path, tables, association))
+    return result, written
 
 
 def run(args: argparse.Namespace) -> int:

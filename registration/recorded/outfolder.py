@@ -46,12 +46,12 @@ class OutputFolderError(ValueError):
     """An ``--out`` that cannot be used: a file, or a folder that cannot be created or written."""
 
 
-def _is_output(name: str) -> bool:
-    """A name a run writes, or one of its temporary files (``*.tmp``, ``paired.*.partial``)."""
+def _is_output(name: str, names: frozenset = OUTPUT_NAMES) -> bool:
+    """A name a run writes (one of ``names``), or one of its temporary files (``*.tmp``, ``paired.*.partial``)."""
     for suffix in (".tmp", ".partial"):
         if name.endswith(suffix):
             name = name[: -len(suffix)]
-    return name in OUTPUT_NAMES
+    return name in names
 
 
 @dataclass(frozen=True)
@@ -61,6 +61,8 @@ class RunFolder:
 
     out: Path
     path: Path
+    command: str = "registration register"
+    names: frozenset = OUTPUT_NAMES  # what the command writes into OUT (earlier ones are replaced)
 
     @property
     def in_place(self) -> bool:
@@ -129,16 +131,17 @@ def records_folder(checkpoint, name: str) -> bool:
         return True
 
 
-def prepare_out(out: Path) -> None:
+def prepare_out(out: Path, output_names: frozenset = OUTPUT_NAMES) -> None:
     """Create ``out``; complete a publication that was interrupted; remove leftovers of runs that
-    are gone and cannot be resumed. Raises :class:`OutputFolderError` for an unusable ``out``."""
+    are gone and cannot be resumed. Raises :class:`OutputFolderError` for an unusable ``out``.
+    ``output_names``: what the command writes into ``out``."""
     if out.exists() and not out.is_dir():
         raise OutputFolderError(f"--out {out}: is a file, not a folder; give a folder (it is created if missing)")
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise OutputFolderError(f"--out {out}: cannot create the folder: {exc.strerror or exc}") from exc
-    _complete_publication(out)
+    _complete_publication(out, output_names)
     for d in sorted(out.glob(f"{_PARTIAL}*")) + sorted(out.glob(f"{_ASIDE}*")):
         pid = _pid_of(d.name)
         if not d.is_dir() or pid is None or _pid_alive(pid):
@@ -151,7 +154,7 @@ def prepare_out(out: Path) -> None:
             shutil.rmtree(d, ignore_errors=True)
 
 
-def _complete_publication(out: Path) -> None:
+def _complete_publication(out: Path, output_names: frozenset = OUTPUT_NAMES) -> None:
     """Finish moving the outputs of a run whose publication into ``out`` was interrupted (its
     process is gone). Without its run folder, ``out`` stays marked unless every file arrived."""
     fields = _marker_fields(out / MARKER)
@@ -167,11 +170,13 @@ def _complete_publication(out: Path) -> None:
     if pid is not None and _pid_alive(pid):
         return
     if work.is_dir() or all((out / n).exists() for n in names):
-        _move_in(out, work, names)
+        _move_in(out, work, names, output_names)
 
 
-def new_run_folder(out: Path, checkpoint) -> RunFolder:
-    """A new, empty run folder inside ``out`` with its ``INCOMPLETE`` marker."""
+def new_run_folder(out: Path, checkpoint, command: str = "registration register",
+                   output_names: frozenset = OUTPUT_NAMES) -> RunFolder:
+    """A new, empty run folder inside ``out`` with its ``INCOMPLETE`` marker, for ``command``
+    writing ``output_names``."""
     for _ in range(100):
         path = out / f"{_PARTIAL}{os.getpid()}-{secrets.token_hex(3)}"
         try:
@@ -187,10 +192,10 @@ def new_run_folder(out: Path, checkpoint) -> RunFolder:
     else:
         how = (f"checkpoint: {Path(checkpoint).resolve()}\nTo resume, rerun the same command (same inputs, options, "
                "--out and --checkpoint); it continues in this folder.\n")
-    _write_text(path / MARKER, f"This folder holds the unfinished outputs of a `registration register` run (process "
+    _write_text(path / MARKER, f"This folder holds the unfinished outputs of a `{command}` run (process "
                                f"{os.getpid()}, started {time.strftime('%Y-%m-%d %H:%M:%S')}). They are moved into "
                                f"{out} when the run finishes; until then {out} keeps what it held before.\n" + how)
-    return RunFolder(out, path)
+    return RunFolder(out, path, command, frozenset(output_names))
 
 
 def mark_in_place(folder: RunFolder, checkpoint) -> None:
@@ -210,21 +215,21 @@ def publish(folder: RunFolder) -> None:
         names = json.loads(fields["files"])
     else:
         names = sorted((p.name for p in folder.path.iterdir() if p.name != MARKER), key=lambda n: (n == "summary.json", n))
-        _write_text(out / MARKER, f"The outputs of a `registration register` run are being moved into this folder. If "
+        _write_text(out / MARKER, f"The outputs of a `{folder.command}` run are being moved into this folder. If "
                                   f"this file stays, that was interrupted: the next run into {out} completes it.\n"
                                   f"publishing: {folder.path.name}\nfiles: {json.dumps(names)}\n")
         fsync_dir(out)
-    _move_in(out, folder.path, names)
+    _move_in(out, folder.path, names, folder.names)
 
 
-def _move_in(out: Path, work: Path, names: list[str]) -> None:
+def _move_in(out: Path, work: Path, names: list[str], output_names: frozenset = OUTPUT_NAMES) -> None:
     """Move ``names`` from ``work`` into ``out``, earlier outputs aside first; safe to repeat
     after an interruption (what has already arrived stays)."""
     aside = out / (_ASIDE + work.name)
     aside.mkdir(exist_ok=True)
     new = set(names)
     old = [p for p in out.iterdir()
-           if _is_output(p.name) and (p.name not in new or (work / p.name).exists())]
+           if _is_output(p.name, output_names) and (p.name not in new or (work / p.name).exists())]
     for p in sorted(old, key=lambda p: p.name != "summary.json"):
         _remove(aside / p.name)
         os.rename(p, aside / p.name)

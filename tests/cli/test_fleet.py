@@ -203,3 +203,29 @@ def test_plots_without_target_ids_need_the_batch(simulated, tmp_path, capsys):
     args = [a for a in _register_args(folder, tmp_path / "o") if "reference" not in a]
     assert main([*args, "--method", "online"]) == 2
     assert "no target column" in capsys.readouterr().err
+
+
+def test_a_run_replaces_the_earlier_runs_outputs_whole(simulated, tmp_path, capsys):
+    """--out never holds a mixture of two runs: the online run's history.csv and PNGs go when a
+    batch run with --no-plots follows; a failed run leaves the earlier outputs as they were."""
+    out = tmp_path / "out"
+    args = [a for a in _register_args(simulated, out) if a != "--no-plots"]
+    assert main([*args, "--method", "online"]) == 0
+    assert (out / "history.csv").exists() and (out / "map.png").exists()
+    assert main(_register_args(simulated, out)) == 0
+    assert sorted(p.name for p in out.iterdir()) == ["estimates.csv", "summary.json"]
+    before = (out / "estimates.csv").read_bytes()
+    broken = _broken(simulated, tmp_path, "plots", lambda f: f.__setitem__("sensor", "X1"))
+    assert main(_register_args(broken, out)) == 2
+    assert sorted(p.name for p in out.iterdir()) == ["estimates.csv", "summary.json"]
+    assert (out / "estimates.csv").read_bytes() == before
+    capsys.readouterr()
+
+
+def test_registering_into_the_simulated_folder_keeps_its_tables(simulated, tmp_path):
+    folder = tmp_path / "sim"
+    shutil.copytree(simulated, folder)
+    assert main(_register_args(folder, folder)) == 0
+    for name in TABLES:
+        assert (folder / f"{name}.csv").exists(), name
+    assert not (folder / "estimates.png").exists()  # --no-plots: the simulate run's PNGs are replaced
