@@ -62,7 +62,7 @@ def add_seed(p: argparse.ArgumentParser, default: int, what: str = "random seed 
 
 def add_dask(p: argparse.ArgumentParser, chunks: str) -> None:
     """``--scheduler ADDRESS`` and ``--workers N``: run the ``chunks`` on a dask cluster (optional extra)."""
-    g = p.add_argument_group("parallel and distributed runs (install sensor-registration[dask])")
+    g = p.add_argument_group('parallel and distributed runs (needs dask: pip install "dask[distributed]")')
     g.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help=f"run the {chunks} on the dask.distributed scheduler at ADDRESS, e.g. tcp://host:8786 "
                         "(default: in this process)")

@@ -3,7 +3,7 @@
 The work is cut into chunks whose boundaries depend only on the problem (never on the number of
 workers), each chunk is computed by one call, and the results come back in chunk order, so a
 caller that merges them in that order gets the same answer, bit for bit, however many workers ran
-them. Dask is optional (``pip install "sensor-registration[dask]"``); without a scheduler address
+them. Dask is optional (``pip install "dask[distributed]"``); without a scheduler address
 or a worker count nothing of it is imported.
 """
 
@@ -15,8 +15,8 @@ import sys
 __all__ = ["DASK_MISSING", "chunk_ranges", "dask_client", "map_chunks", "require_distributed"]
 
 #: What a missing dask installation is reported as.
-DASK_MISSING = ('dask.distributed is not installed: install sensor-registration[dask] '
-                '(pip install "sensor-registration[dask]") to use --scheduler or --workers')
+DASK_MISSING = ('dask.distributed is not installed: pip install "dask[distributed]" (from a checkout of this '
+                'package: pip install ".[dask]") to use --scheduler or --workers')
 
 
 def require_distributed():

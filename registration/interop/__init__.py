@@ -1,1 +1,1 @@
-"""Interoperation with other frameworks: Stone Soup (:mod:`registration.interop.stonesoup`, needs ``pip install "sensor-registration[stonesoup]"``)."""
+"""Interoperation with other frameworks: Stone Soup (:mod:`registration.interop.stonesoup`, needs Stone Soup: ``pip install stonesoup``)."""

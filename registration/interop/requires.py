@@ -7,7 +7,7 @@ from __future__ import annotations
 
 __all__ = ["INSTALL_HINT", "STONESOUP_VERSION"]
 
-INSTALL_HINT = 'pip install "sensor-registration[stonesoup]"'
+INSTALL_HINT = 'pip install stonesoup (from a checkout of this package: pip install ".[stonesoup]")'
 
 try:
     import stonesoup

@@ -1,7 +1,7 @@
 """Stone Soup interoperation: detections <-> plot and navigation tables, and a feeder that
 corrects detections with a registration result. See docs/stonesoup.md.
 
-Needs the optional dependency Stone Soup: ``pip install "sensor-registration[stonesoup]"``;
+Needs the optional dependency Stone Soup: ``pip install stonesoup``;
 without it, importing this module raises ImportError saying so.
 
 Conventions (verified numerically by tests/interop/): Stone Soup's world is a local ENU frame

@@ -68,7 +68,7 @@ def test_missing_dask_is_a_clear_error(tmp_path, capsys, monkeypatch):
 
     monkeypatch.setitem(sys.modules, "dask.distributed", None)
     assert main(["montecarlo", "--runs", "3", "--workers", "2", "--out", str(tmp_path / "o")]) == 2
-    assert "install sensor-registration[dask]" in capsys.readouterr().err
+    assert 'pip install "dask[distributed]"' in capsys.readouterr().err
 
 
 def test_workers_give_the_in_process_json(tmp_path):
