@@ -14,7 +14,6 @@ Run: ``python docs/examples/stonesoup_tracking.py [out.png]`` (default ``out/sto
 from __future__ import annotations
 
 import datetime
-import sys
 from pathlib import Path
 from itertools import groupby
 
@@ -129,4 +128,11 @@ def main(png: str | None = "out/stonesoup/ospa.png", seed: int = 0, duration_s: 
 
 
 if __name__ == "__main__":
-    main(*sys.argv[1:2])
+    import argparse
+
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("png", nargs="?", default="out/stonesoup/ospa.png", help="the OSPA figure to write")
+    parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--duration", type=float, default=60.0, help="seconds of data")
+    args = parser.parse_args()
+    main(args.png, args.seed, args.duration)

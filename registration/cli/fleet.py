@@ -19,10 +19,12 @@ import numpy as np
 from registration.cli.errors import EXIT_CODES_EPILOG, add_allow_inconsistent, prepare_out, writing
 from registration.cli.options import HelpFormatter, add_no_plots, add_out, add_seed
 
-HELP = "batch registration of a fleet: simulate the built-in fleet, or register fleet tables read from files"
+HELP = ("registration of a fleet, in one batch or online: simulate the built-in fleet, or register fleet tables read "
+        "from files")
 
-SIMULATE_HELP = ("simulate the built-in fleet (3 ships, a shore site, 6 sensors, 5 targets), register it in one "
-                 "batch, and write its input tables as a working example for `fleet register`")
+SIMULATE_HELP = ("simulate the built-in fleet (3 ships, a shore site, 6 sensors, 5 targets), register it (in one "
+                 "batch, or online with --method online), and write its input tables as a working example for "
+                 "`fleet register`")
 REGISTER_HELP = ("register a fleet from plots, navigation and sensors tables (CSV or Parquet, degrees and metres; "
                  "see docs/fleet.md)")
 
@@ -62,7 +64,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                           "online filter updates once per window")
     _add_method(reg)
     reg.add_argument("--on-bad-row", choices=["stop", "skip"], default="stop",
-                     help="stop at the first bad row of the plots or reference file, or skip: set bad rows aside in "
+                     help="stop at the first bad value found in the plots or reference file (checked column by column), or "
+                          "skip: set bad rows aside in "
                           "rejected.csv (file, row, column, reason_code, reason) and register the rest")
     add_out(reg, "fleet-register", "estimates.csv, summary.json and the PNG plots")
     add_no_plots(reg)
@@ -72,7 +75,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 def _add_method(p: argparse.ArgumentParser) -> None:
     p.add_argument("--method", choices=("batch", "online"), default="batch",
                    help="batch: maximum likelihood over all plots at once; online: the filter, one update per "
-                        "window of plots, with the estimates over time in history.csv (docs/fleet.md)")
+                        "window of plots, with the estimates over time in history.csv (docs/fleet-online.md); plots without a target column need batch")
 
 
 def _inputs(tables, problem, window_s: float) -> dict:
@@ -206,9 +209,10 @@ def _read_tables(args: argparse.Namespace, out: Path):
             _write_rejected(folder.path, exc.rejected_frame())  # the list of what was wrong is the output
         raise
     if tables.rejected:
-        counts = tables.rejected_frame().groupby(["file", "reason_code"]).size()
-        print(f"set aside {len(tables.rejected)} bad rows (in rejected.csv): "
-              + "; ".join(f"{f}: {n} {code}" for (f, code), n in counts.items()))
+        frame = tables.rejected_frame()
+        per_file = {f: ", ".join(f"{n} {code}" for code, n in g.groupby("reason_code").size().items())
+                    for f, g in frame.groupby("file")}
+        print(f"set aside {len(frame)} bad rows (in rejected.csv): " + "; ".join(f"{f}: {c}" for f, c in per_file.items()))
     return tables
 
 

@@ -63,7 +63,7 @@ def print_report(result, rows: list[dict], header: list[str]) -> None:
         if result.fit_check is not None:
             print(f"residuals at the final estimate: {result.fit_check.text()}")
     else:
-        print(f"\nchi-square: {result.chi_square.text()}")
+        print()  # the batch's chi-square check is the consistency line below
     report = chi_square_report(result)
     print(consistency_line(report) if report is not None else "consistency: no informative epoch to check")
 

@@ -148,7 +148,8 @@ def _file_error(exc: ValueError, paths: dict, file_rows: dict | None = None) -> 
             rest = re.sub(rf"^{lib} ", "", text)
             if m.group(2) and file_rows and name in file_rows:
                 rest = re.sub(r"^row \d+", f"row {int(file_rows[name][int(m.group(2))])}", rest)
-            text = f"{path}: " + rest + " (values in SI units and radians)"
+            # the library speaks SI units and radians; say so where its message quotes an angle
+            text = f"{path}: " + rest + (" (values in SI units and radians)" if re.search(r"\brad\b", rest) else "")
             break
     return ValueError(text)
 
@@ -188,7 +189,7 @@ def _number_column(bad: BadRows, frame, column: str, unit: str, required: bool, 
     given = raw.notna().to_numpy() & ~raw.astype(str).str.strip().isin(["", "nan", "NaN"]).to_numpy()
     bad.add(column, "non_numeric", given & np.isnan(values), lambda r: f"{raw.iloc[r]!r} is not a number ({unit})")
     if required:
-        bad.add(column, "non_finite", np.isnan(values), lambda r: f"empty; a number ({unit}) is required")
+        bad.add(column, "non_finite", np.isnan(values), lambda r: f"empty or NaN; a number ({unit}) is required")
     lo, hi = limits if limits is not None else (-math.inf, math.inf)
     strict = column in _POSITIVE
     finite_only = not (column.startswith("prior_") and hi == math.inf)
@@ -340,7 +341,7 @@ def read_fleet_tables(plots, navigation, sensors, platforms=None, reference=None
         for key in ("x", "y", "z") if "x" in ref else ("lat", "lon", "alt"):
             column = _FILE_COLUMN[key]
             bads["reference"].add(column, "non_finite", np.isnan(ref[key]),
-                                  lambda r, u=column.rsplit("_", 1)[1]: f"empty; a number ({u}) is required for the position")
+                                  lambda r, u=column.rsplit("_", 1)[1]: f"empty or NaN; a number ({u}) is required for the position")
     _check_ids(tables, paths, bads)
     if skip:
         return _skip_rows(tables, paths, bads)
