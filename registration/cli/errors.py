@@ -52,8 +52,9 @@ EXIT_CODES_EPILOG = f"""exit codes:
   {EXIT_OK:<4} success
   {EXIT_BAD_ROWS:<4} register --validate-only: some rows are bad
   {EXIT_BAD_INPUT:<4} bad input: an invalid option or value, an unreadable input, an unwritable output
-  {EXIT_INCONSISTENT:<4} the run's normalised innovations grossly contradict the model (outputs written;
-       --allow-inconsistent accepts the run)
+  {EXIT_INCONSISTENT:<4} the run's consistency check (normalised innovations, or residuals for a batch
+       solution) says the data grossly contradict the model (outputs written; --allow-inconsistent
+       accepts the run)
   {EXIT_INTERRUPTED:<4} interrupted (Ctrl-C)
   {EXIT_BROKEN_PIPE:<4} standard output closed early (e.g. piped into head)
 {DEBUG_ENV}=1 in the environment shows the traceback behind an error message."""

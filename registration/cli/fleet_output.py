@@ -48,10 +48,10 @@ def print_report(result, rows: list[dict], header: list[str]) -> None:
     for line in header:
         print(line)
     has_truth = bool(rows) and "truth" in rows[0]
-    print(f"\n  {'object':<8}{'state':<16}{'estimate':>12}{'± 2σ':>10}{'truth' if has_truth else '':>10}  unit  status")
+    print(f"\n  {'object':<8}{'state':<16}{'estimate':>12}{'± 2σ':>10}{'truth' if has_truth else '':>{10 if has_truth else 0}}  unit  status")
     for r in rows:
         truth = f"{r['truth']:10.4g}" if has_truth else ""
-        print(f"  {r['object']:<8}{r['state']:<16}{r['estimate']:12.4g}{2 * r['sigma']:10.3g}{truth:>10}  "
+        print(f"  {r['object']:<8}{r['state']:<16}{r['estimate']:12.4g}{2 * r['sigma']:10.3g}{truth}  "
               f"{r['unit']:<4}  {r['status']}")
     print("\nObservability:")
     for line in result.observability.lines():
