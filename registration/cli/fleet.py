@@ -64,8 +64,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                           "online filter updates once per window")
     _add_method(reg)
     reg.add_argument("--on-bad-row", choices=["stop", "skip"], default="stop",
-                     help="stop at the first bad value found in the plots or reference file (checked column by column), or "
-                          "skip: set bad rows aside in "
+                     help="stop at the first bad row of the plots (then the reference) file, or skip: set bad rows aside in "
                           "rejected.csv (file, row, column, reason_code, reason) and register the rest")
     add_out(reg, "fleet-register", "estimates.csv, summary.json and the PNG plots")
     add_no_plots(reg)

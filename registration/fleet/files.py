@@ -326,7 +326,9 @@ def read_fleet_tables(plots, navigation, sensors, platforms=None, reference=None
     radians in a degree column). :class:`~registration.fleet.rejects.NoValidPlotsError` (a
     ValueError carrying the rejected rows) when no plot row is left.
     """
-    skip = check_mode(on_bad_row) == "skip"
+    if check_mode(on_bad_row) == "stop":
+        return _first_bad_row_stops(plots, navigation, sensors, platforms, reference)
+    skip = True
     paths = {k: Path(v) for k, v in (("plots", plots), ("navigation", navigation), ("sensors", sensors),
                                      ("platforms", platforms), ("reference", reference)) if v is not None}
     read = {name: _read_one(name, path, skip and name in ("plots", "reference")) for name, path in paths.items()}
@@ -343,9 +345,24 @@ def read_fleet_tables(plots, navigation, sensors, platforms=None, reference=None
             bads["reference"].add(column, "non_finite", np.isnan(ref[key]),
                                   lambda r, u=column.rsplit("_", 1)[1]: f"empty or NaN; a number ({u}) is required for the position")
     _check_ids(tables, paths, bads)
-    if skip:
-        return _skip_rows(tables, paths, bads)
-    return FleetTables(tables["plots"], tables["navigation"], tables["sensors"], tables.get("platforms"), ref, paths)
+    return _skip_rows(tables, paths, bads)
+
+
+def _first_bad_row_stops(plots, navigation, sensors, platforms, reference) -> FleetTables:
+    """Stop mode: every row is checked as in skip mode, then the first bad row of the plots file (else
+    of the reference file) raises, so the error names the earliest row whatever column is wrong."""
+    try:
+        tables = read_fleet_tables(plots, navigation, sensors, platforms, reference, on_bad_row="skip")
+    except NoValidPlotsError as exc:
+        rejected = exc.rejected
+    else:
+        rejected = tables.rejected
+        if not rejected:
+            tables.file_rows = {}
+            return tables
+    order = {str(Path(p)): k for k, p in enumerate((plots, reference)) if p is not None}
+    first = min(rejected, key=lambda r: (order.get(r.file, len(order)), r.row))
+    raise ValueError(f"{first.file}: row {first.row}, column {first.column!r}: {first.reason}")
 
 
 def _file_frame(name: str, table):
