@@ -18,7 +18,8 @@ from registration.fleet.association import AssociationOptions, AssociationResult
 from registration.fleet.batch import solve_batch
 from registration.fleet.clutter import AssociationScenario, association_scenario, association_scores
 from registration.fleet.covariance import FusedTargets
-from registration.fleet.files import FleetTables, read_fleet_tables, write_fleet_tables
+from registration.fleet.files import FleetTables, read_fleet_tables
+from registration.fleet.files_write import write_fleet_tables
 from registration.fleet.online import FleetFilter, OnlineOptions, register_online
 from registration.fleet.online_result import OnlineHistory, OnlineResult
 from registration.fleet.problem import Exclusion, FleetProblem, build_problem

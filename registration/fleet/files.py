@@ -1,5 +1,6 @@
 """Fleet tables as files: CSV or Parquet in file units (degrees, metres, seconds), converted to the
-long-form tables of :mod:`registration.fleet.tables` (SI units, radians) and back.
+long-form tables of :mod:`registration.fleet.tables` (SI units, radians); written back by
+:mod:`registration.fleet.files_write`.
 
 File columns (one row per item; an empty cell is "not given"):
 
@@ -34,12 +35,11 @@ from pathlib import Path
 
 import numpy as np
 
-from registration.core.frames import ecef2geodetic
 from registration.fleet.problem import FleetProblem, build_problem, plot_row_problems
 from registration.fleet.rejects import BadRows, NoValidPlotsError, RejectedRow, check_mode, rejected_frame
 from registration.fleet.tables import DEFAULT_REFERENCE_SIGMA
 
-__all__ = ["FILE_COLUMNS", "FleetTables", "read_fleet_tables", "write_fleet_tables",
+__all__ = ["FILE_COLUMNS", "FleetTables", "read_fleet_tables",
            "MIN_UNIT_CHECK_VALUES"]
 
 #: Per table: (file column, table column, unit, required, (low, high) accepted in file units).
@@ -363,48 +363,3 @@ def _first_bad_row_stops(plots, navigation, sensors, platforms, reference) -> Fl
     order = {str(Path(p)): k for k, p in enumerate((plots, reference)) if p is not None}
     first = min(rejected, key=lambda r: (order.get(r.file, len(order)), r.row))
     raise ValueError(f"{first.file}: row {first.row}, column {first.column!r}: {first.reason}")
-
-
-def _file_frame(name: str, table):
-    """A table (SI, radians) -> DataFrame of the file columns present; inf priors written empty."""
-    import pandas as pd
-
-    table = {str(k): np.asarray(v) for k, v in dict(table).items()}
-    if name == "reference" and "x" in table and "lat" not in table:
-        lat, lon, alt = ecef2geodetic(np.stack([table.pop(c) for c in "xyz"], axis=1))
-        table.update(lat=lat, lon=lon, alt=alt)
-    out = {}
-    for column, key, unit, _, _ in FILE_COLUMNS[name]:
-        if key not in table:
-            continue
-        v = table[key]
-        if unit == "id":
-            out[column] = v.astype(str)
-            continue
-        v = np.asarray(v, dtype=np.float64)
-        if column.startswith("prior_"):
-            v = np.where(np.isinf(v), np.nan, v)
-        out[column] = np.degrees(v) if unit == "deg" else v
-    return pd.DataFrame(out)
-
-
-def write_fleet_tables(folder, plots, navigation, sensors, platforms=None, references=None,
-                       fmt: str = "csv") -> list[Path]:
-    """Write the tables (SI units, radians; as :func:`build_problem` takes them) as files in
-    ``folder``: ``plots``, ``navigation``, ``sensors``, ``platforms`` (if given) and ``reference``
-    (if given; ECEF positions are written as lat/lon/alt) with suffix ``.csv`` or ``.parquet``
-    (``fmt``). CSV floats are written as their shortest round-trip text. Returns the paths."""
-    from registration.recorded.formats import write_frame
-
-    if fmt not in ("csv", "parquet"):
-        raise ValueError(f"fmt: expected 'csv' or 'parquet', got {fmt!r}")
-    folder = Path(folder)
-    written = []
-    for name, table in (("plots", plots), ("navigation", navigation), ("sensors", sensors),
-                        ("platforms", platforms), ("reference", references)):
-        if table is None:
-            continue
-        path = folder / f"{name}.{fmt}"
-        write_frame(_file_frame(name, table), path, fmt)
-        written.append(path)
-    return written

@@ -13,7 +13,7 @@ import numpy as np
 
 from registration import _codegen
 from registration.core.plotting import pyplot
-from registration.fleet.files import ecef2geodetic
+from registration.core.frames import ecef2geodetic
 from registration.fleet.problem import FleetProblem
 from registration.fleet.result import BatchResult
 

@@ -6,7 +6,8 @@ import pytest
 
 from registration.core.frames import ecef2geodetic, geodetic2ecef
 from registration.fleet import fleet_scenario
-from registration.fleet.files import read_fleet_tables, write_fleet_tables
+from registration.fleet.files import read_fleet_tables
+from registration.fleet.files_write import write_fleet_tables
 
 NAMES = ("plots", "navigation", "sensors", "platforms", "reference")
 

@@ -1,0 +1,59 @@
+"""Fleet tables written as files: the long-form tables of :mod:`registration.fleet.tables` (SI
+units, radians) as CSV or Parquet in the file units of :mod:`registration.fleet.files` (degrees,
+metres, seconds), so that :func:`~registration.fleet.files.read_fleet_tables` reads them back."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from registration.core.frames import ecef2geodetic
+from registration.fleet.files import FILE_COLUMNS
+
+__all__ = ["write_fleet_tables"]
+
+
+def _file_frame(name: str, table):
+    """A table (SI, radians) -> DataFrame of the file columns present; inf priors written empty."""
+    import pandas as pd
+
+    table = {str(k): np.asarray(v) for k, v in dict(table).items()}
+    if name == "reference" and "x" in table and "lat" not in table:
+        lat, lon, alt = ecef2geodetic(np.stack([table.pop(c) for c in "xyz"], axis=1))
+        table.update(lat=lat, lon=lon, alt=alt)
+    out = {}
+    for column, key, unit, _, _ in FILE_COLUMNS[name]:
+        if key not in table:
+            continue
+        v = table[key]
+        if unit == "id":
+            out[column] = v.astype(str)
+            continue
+        v = np.asarray(v, dtype=np.float64)
+        if column.startswith("prior_"):
+            v = np.where(np.isinf(v), np.nan, v)
+        out[column] = np.degrees(v) if unit == "deg" else v
+    return pd.DataFrame(out)
+
+
+def write_fleet_tables(folder, plots, navigation, sensors, platforms=None, references=None,
+                       fmt: str = "csv") -> list[Path]:
+    """Write the tables (SI units, radians; as :func:`build_problem` takes them) as files in
+    ``folder``: ``plots``, ``navigation``, ``sensors``, ``platforms`` (if given) and ``reference``
+    (if given; ECEF positions are written as lat/lon/alt) with suffix ``.csv`` or ``.parquet``
+    (``fmt``). CSV floats are written as their shortest round-trip text. Returns the paths."""
+    from registration.recorded.formats import write_frame
+
+    if fmt not in ("csv", "parquet"):
+        raise ValueError(f"fmt: expected 'csv' or 'parquet', got {fmt!r}")
+    folder = Path(folder)
+    written = []
+    for name, table in (("plots", plots), ("navigation", navigation), ("sensors", sensors),
+                        ("platforms", platforms), ("reference", references)):
+        if table is None:
+            continue
+        path = folder / f"{name}.{fmt}"
+        write_frame(_file_frame(name, table), path, fmt)
+        written.append(path)
+    return written
