@@ -10,7 +10,6 @@ write ``estimates.csv``, ``summary.json`` and the plots. See docs/fleet.md.
 from __future__ import annotations
 
 import argparse
-import contextlib
 import textwrap
 from pathlib import Path
 
@@ -18,6 +17,7 @@ import numpy as np
 
 from registration.cli.errors import EXIT_CODES_EPILOG, add_allow_inconsistent, prepare_out, writing
 from registration.cli.options import HelpFormatter, add_no_plots, add_out, add_seed
+from registration.cli.staging import staged_outputs
 
 HELP = ("registration of a fleet, in one batch or online: simulate the built-in fleet, or register fleet tables read "
         "from files")
@@ -140,22 +140,6 @@ SIMULATE_OUTPUTS = REGISTER_OUTPUTS | {f"{t}.{f}" for t in ("plots", "navigation
                                       for f in ("csv", "parquet")}
 
 
-@contextlib.contextmanager
-def _staged(out: Path, command: str, names: frozenset):
-    """A run folder inside ``out``: its files replace the earlier run's outputs in ``out`` (all of
-    ``names`` an earlier run left) only when the block ends normally; otherwise ``out`` is unchanged."""
-    from registration.recorded.outfolder import discard, new_run_folder, prepare_out as prepare_run_folder, publish
-
-    prepare_run_folder(out, names)
-    folder = new_run_folder(out, None, command, names)
-    try:
-        yield folder
-    except BaseException:
-        discard(folder)
-        raise
-    publish(folder)
-
-
 def run_simulate(args: argparse.Namespace) -> int:
     """Simulate, write the tables, read them back and register what was written (so `fleet register`
     on these files gives the same numbers)."""
@@ -166,7 +150,7 @@ def run_simulate(args: argparse.Namespace) -> int:
         raise ValueError(f"--seed: expected an integer >= 0, got {args.seed}")
     out = prepare_out(args.out)
     s = fleet_scenario(args.seed)
-    with _staged(out, "registration fleet simulate", SIMULATE_OUTPUTS) as folder:
+    with staged_outputs(out, "registration fleet simulate", SIMULATE_OUTPUTS) as folder:
         with writing(folder.path):
             tables_written = write_fleet_tables(folder.path, s.plots, s.navigation, s.sensors, s.platforms,
                                                 s.references, args.format)
@@ -204,7 +188,7 @@ def _read_tables(args: argparse.Namespace, out: Path):
         tables = read_fleet_tables(args.plots, args.navigation, args.sensors, args.platforms, args.reference,
                                    on_bad_row=args.on_bad_row)
     except NoValidPlotsError as exc:
-        with _staged(out, "registration fleet register", REGISTER_OUTPUTS) as folder:
+        with staged_outputs(out, "registration fleet register", REGISTER_OUTPUTS) as folder:
             _write_rejected(folder.path, exc.rejected_frame())  # the list of what was wrong is the output
         raise
     if tables.rejected:
@@ -224,7 +208,7 @@ def run_register(args: argparse.Namespace) -> int:
         raise ValueError(f"--window-s: expected a length >= 0 s, got {args.window_s}")
     out = prepare_out(args.out)
     tables = _read_tables(args, out)
-    with _staged(out, "registration fleet register", REGISTER_OUTPUTS) as folder:
+    with staged_outputs(out, "registration fleet register", REGISTER_OUTPUTS) as folder:
         result, written = _register_into(folder.path, args, tables)
     print("\nwrote " + ", ".join(str(folder.final(p)) for p in written))
     return gate("registration fleet register", result, args.allow_inconsistent)

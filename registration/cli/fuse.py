@@ -19,9 +19,13 @@ import numpy as np
 
 from registration.cli.errors import prepare_out, writing
 from registration.cli.options import add_no_plots, add_out, add_seed
+from registration.cli.staging import staged_outputs
 from registration.fusion import COMPONENTS, parse_components
 from registration.fusion.evaluation import ROW_LABELS, FusionEvaluation, evaluate
 from registration.fusion.scenarios import paper_scenario
+
+#: What `registration fuse` writes into --out (the outputs of an earlier run there are replaced whole).
+FUSE_OUTPUTS = frozenset({"summary.json", "measurements.png", "fused.png"})
 
 HELP = "fuse a radar with a remote bearing-only or range-only sensor (paper scenarios 1 and 2): GDOP, CRLB, optimal fuser"
 
@@ -327,11 +331,12 @@ def run(args) -> int:
     out = prepare_out(args.out)
     ev = evaluate(sc, trials=args.trials, seed=args.seed)
     print(format_table(ev))
-    written = [out / "summary.json"]
-    with writing(written[0]):
-        written[0].write_text(json.dumps(ev.to_json(), indent=2) + "\n")
-    if not args.no_plots:
-        with writing(out):
-            written += _plot(ev, out, args.max_plot_points)
-    print("wrote " + ", ".join(str(p) for p in written))
+    with staged_outputs(out, "registration fuse", FUSE_OUTPUTS) as folder:
+        written = [folder.path / "summary.json"]
+        with writing(written[0]):
+            written[0].write_text(json.dumps(ev.to_json(), indent=2) + "\n")
+        if not args.no_plots:
+            with writing(folder.path):
+                written += _plot(ev, folder.path, args.max_plot_points)
+    print("wrote " + ", ".join(str(folder.final(p)) for p in written))
     return 0

@@ -7,7 +7,8 @@ in range bins for radar only, camera angles with radar range, and fused (plus th
 
 Writes into ``--out DIR`` (default ``out/landing``): ``summary.json`` (``bins``: ``range_min_m, range_max_m, rmse_radar_m,
 rmse_camera_m, rmse_fused_m`` and more) and, unless ``--no-plots``, ``attitude.png`` (Fig. 1),
-``variance_ratios.png`` (Figs. 2-3), ``rmse.png`` (Fig. 4) and ``fused_polar.png`` (Fig. 5).
+``variance_ratios.png`` (Figs. 2-3), ``rmse.png`` (Fig. 4) and ``fused_polar.png`` (Fig. 5); an earlier
+run's outputs there are replaced only once all are written (:mod:`registration.cli.staging`).
 
 Units at this edge: metres, seconds, degrees (``_deg``), milliradians (``_mrad``) for angle noise
 and milliseconds (``_ms``) for clock offsets; SI and radians inside.
@@ -36,7 +37,11 @@ from registration.landing import (
 )
 from registration.cli.errors import prepare_out, writing
 from registration.cli.options import add_no_plots, add_out, add_seed
+from registration.cli.staging import staged_outputs
 from registration.landing.plots import METHOD_LABELS, write_plots
+
+#: What `registration landing` writes into --out (the outputs of an earlier run there are replaced whole).
+LANDING_OUTPUTS = frozenset({"summary.json", "attitude.png", "variance_ratios.png", "rmse.png", "fused_polar.png"})
 
 HELP = "simulate a carrier approach and fuse the landing radar with the centreline camera: position RMSE by range bin, plots"
 
@@ -247,11 +252,23 @@ def run(args: argparse.Namespace) -> int:
     elapsed = time.perf_counter() - start
     nees, z = _report(args, sc, config, mc)
     bins = _bins_json(mc, z)
-    files = []
-    if not args.no_plots:
-        with writing(out):
-            files = write_plots(out, mc, fine)
-    summary = {
+    with staged_outputs(out, "registration landing", LANDING_OUTPUTS) as folder:
+        files = []
+        if not args.no_plots:
+            with writing(folder.path):
+                files = write_plots(folder.path, mc, fine)
+        summary = _summary(args, sc, config, elapsed, bins, nees, files)
+        with writing(folder.path / "summary.json"):
+            (folder.path / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
+    plots = f" and {', '.join(files)}" if files else ""
+    print(f"wrote {folder.final(folder.path / 'summary.json')}{plots} ({elapsed:.1f} s Monte Carlo)")
+    return 0
+
+
+def _summary(args: argparse.Namespace, sc: LandingScenario, config: LandingConfig, elapsed: float, bins: list[dict],
+             nees: dict, files: list[str]) -> dict:
+    """summary.json: the command, the RMSE per range bin and method (m), NEES, scenario, processing."""
+    return {
         "command": "registration landing",
         "runs": args.runs,
         "seed": args.seed,
@@ -268,8 +285,3 @@ def run(args: argparse.Namespace) -> int:
         },
         "plots": files,
     }
-    with writing(out / "summary.json"):
-        (out / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
-    plots = f" and {', '.join(files)}" if files else ""
-    print(f"wrote {out / 'summary.json'}{plots} ({elapsed:.1f} s Monte Carlo)")
-    return 0

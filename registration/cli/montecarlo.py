@@ -3,7 +3,8 @@
 Runs the paper scenario with seeds SEED .. SEED + RUNS - 1 (:mod:`registration.montecarlo`),
 prints the final-step table (RMSE, filter sigma and 2-sigma, sqrt(CRLB), bias per identifiable
 quantity, in deg or m) with the average NEES against its 95 % chi-square interval, and writes
-``montecarlo.json`` and ``montecarlo.png`` into ``--out``.
+``montecarlo.json`` and ``montecarlo.png`` into ``--out`` (replacing an earlier run's outputs there
+only once all are written, see :mod:`registration.cli.staging`).
 
 ``--workers N`` or ``--scheduler ADDRESS`` runs the seeds in chunks of ``--chunk-runs`` on a dask
 cluster (the statistics are the same, bit for bit, as in this process). ``--sweep NAME=V1,V2,...``
@@ -25,11 +26,16 @@ import numpy as np
 
 from registration.cli.errors import add_allow_inconsistent, consistency_gate, consistency_line, prepare_out, writing
 from registration.cli.options import add_dask, add_no_plots, check_dask, add_out, add_seed
+from registration.cli.staging import staged_outputs
 from registration.cli.simulate import add_scenario_arguments, check_scenario_arguments, parse_motion
 from registration.online.distributed import DEFAULT_CHUNK_RUNS
 
 #: --sweep NAME -> the type of its values (the scenario options of the same name)
 SWEEPABLE = {"angle-sigma-deg": float, "range-sigma-m": float, "steps": int}
+
+#: What `registration montecarlo` writes into --out, with or without --sweep: a run replaces every
+#: one of these an earlier run left (a sweep replaces montecarlo.json too), so --out holds one run.
+MONTECARLO_OUTPUTS = frozenset({"montecarlo.json", "montecarlo.png", "sweep.csv", "sweep.parquet", "sweep.png"})
 
 HELP = "Monte Carlo over seeds: RMSE of the identifiable estimates vs the filter's 2σ and the Cramér-Rao bound, and NEES"
 
@@ -136,28 +142,30 @@ def run(args: argparse.Namespace) -> int:
     summary = result.to_json()
     summary["consistency"] = consistency.to_json()
     summary["command"] = {k: (str(v) if isinstance(v, Path) else v) for k, v in vars(args).items() if not k.startswith("_")}
-    written = [out / "montecarlo.json"]
-    with writing(written[0]):
-        written[0].write_text(json.dumps(summary, indent=1) + "\n")
-    if not args.no_plots:
-        with writing(out / "montecarlo.png"):
-            result.plot(out / "montecarlo.png")
-        written.append(out / "montecarlo.png")
-    print("wrote " + ", ".join(str(p) for p in written))
+    with staged_outputs(out, "registration montecarlo", MONTECARLO_OUTPUTS) as folder:
+        written = [folder.path / "montecarlo.json"]
+        with writing(written[0]):
+            written[0].write_text(json.dumps(summary, indent=1) + "\n")
+        if not args.no_plots:
+            with writing(folder.path / "montecarlo.png"):
+                result.plot(folder.path / "montecarlo.png")
+            written.append(folder.path / "montecarlo.png")
+    print("wrote " + ", ".join(str(folder.final(p)) for p in written))
     return consistency_gate("registration montecarlo", consistency, args.allow_inconsistent)
 
 
 def _write_sweep(args: argparse.Namespace, out: Path, name: str, values: list, results: list) -> int:
-    """The sweep's table and figure; exit code of the least consistent grid point."""
+    """The sweep's table and figure, published into ``out`` whole; exit code of the least consistent grid point."""
     from registration.online.sweep import plot_sweep, sweep_table, write_sweep_table
 
     table = sweep_table(name, values, results)
-    with writing(out / f"sweep.{args.format}"):
-        written = [write_sweep_table(table, out / "sweep", args.format)]
-    if not args.no_plots:
-        with writing(out / "sweep.png"):
-            plot_sweep(table, out / "sweep.png")
-        written.append(out / "sweep.png")
+    with staged_outputs(out, "registration montecarlo", MONTECARLO_OUTPUTS) as folder:
+        with writing(folder.path / f"sweep.{args.format}"):
+            written = [write_sweep_table(table, folder.path / "sweep", args.format)]
+        if not args.no_plots:
+            with writing(folder.path / "sweep.png"):
+                plot_sweep(table, folder.path / "sweep.png")
+            written.append(folder.path / "sweep.png")
     with_nees = table.drop_duplicates("value")[["value", "nees", "nees_low", "nees_high"]]
     print(f"Monte Carlo sweep over {name}: {len(values)} points x {args.runs} runs")
     print(table[["value", "quantity", "unit", "rmse", "filter_sigma", "crlb_sigma", "mean_error"]].to_string(
@@ -166,6 +174,6 @@ def _write_sweep(args: argparse.Namespace, out: Path, name: str, values: list, r
     reports = [pooled_consistency(r) for r in results]
     for v, rep in zip(values, reports):
         print(f"{name}={v}: " + consistency_line(rep))
-    print("wrote " + ", ".join(str(p) for p in written))
+    print("wrote " + ", ".join(str(folder.final(p)) for p in written))
     worst = next((r for r in reports if not r.ok), reports[0])
     return consistency_gate("registration montecarlo", worst, args.allow_inconsistent)

@@ -12,6 +12,7 @@ from registration.cli.errors import (
     add_allow_inconsistent, consistency_gate, consistency_line, prepare_out, writing,
 )
 from registration.cli.options import add_no_plots, add_out, add_seed
+from registration.cli.staging import staged_outputs
 from registration.online import DEFAULT_LINEARIZATION, LINEARIZATIONS, Q_MODES, T_VARIANTS
 
 HELP = "simulate the two-ship scenario of Wang et al. 2011, register online, and compare with the paper's Table 1"
@@ -158,11 +159,14 @@ def _print_report(args, scenario, result, stats, noise_free, rows) -> None:
     print("\n" + consistency_line(result.consistency))
 
 
-def _write(args, scenario, config, result, stats, noise_free, rows) -> list[Path]:
-    """summary.json, the plots and the --export file; the paths written."""
+#: What `registration simulate` writes into --out (the outputs of an earlier run there are replaced whole).
+SIMULATE_OUTPUTS = frozenset({"summary.json", "tracks.png", "differences.png", "estimates.png"})
+
+
+def _write(path: Path, args, scenario, config, result, stats, noise_free, rows) -> list[Path]:
+    """summary.json and the plots, into the run folder ``path``; the paths written."""
     from registration.online.scenario import PAPER_TABLE1
 
-    out = Path(args.out)
     summary = {
         "scenario": scenario.description,
         "config": config.to_json(),
@@ -175,7 +179,7 @@ def _write(args, scenario, config, result, stats, noise_free, rows) -> list[Path
         "mean_nis": float(np.mean(result.nis)),
         "consistency": result.consistency.to_json(),
     }
-    written = [out / "summary.json"]
+    written = [path / "summary.json"]
     with writing(written[0]):
         written[0].write_text(json.dumps(summary, indent=2) + "\n")
     if not args.no_plots:
@@ -184,17 +188,24 @@ def _write(args, scenario, config, result, stats, noise_free, rows) -> list[Path
         for name, draw in (("tracks.png", lambda p: plot_tracks(scenario.data, scenario.truth, p)),
                            ("differences.png", lambda p: plot_differences(result, p)),
                            ("estimates.png", lambda p: plot_estimates(result, scenario.truth_state, p))):
-            with writing(out / name):
-                written.append(draw(out / name))
-    if args.export is not None:
-        from registration.recorded.formats import write_table
-
-        with writing(args.export):
-            written.append(write_table(scenario.data, args.export))
+            with writing(path / name):
+                written.append(draw(path / name))
     return written
 
 
+def _export(scenario, path: Path) -> Path:
+    """The simulated data as ``path`` (--export), written after the --out outputs are published."""
+    from registration.recorded.formats import write_table
+
+    with writing(path):
+        return write_table(scenario.data, path)
+
+
 def run(args: argparse.Namespace) -> int:
+    """Simulate, register, print the report; publish summary.json and the plots into --out whole
+    (an earlier run's outputs there are replaced only once all are written; a failure leaves them
+    as they were). The --export file may lie outside --out, so it is not part of that publication:
+    it is written after it, and a failure there (exit 2) leaves --out holding this run's outputs."""
     from registration.online import RegistrationConfig, register
     from registration.online.scenario import paper_scenario
 
@@ -216,6 +227,9 @@ def run(args: argparse.Namespace) -> int:
     noise_free = register(quiet.data, config).statistics()
     rows = result.estimate_rows(scenario.truth_state)
     _print_report(args, scenario, result, stats, noise_free, rows)
-    written = _write(args, scenario, config, result, stats, noise_free, rows)
+    with staged_outputs(args.out, "registration simulate", SIMULATE_OUTPUTS) as folder:
+        written = [folder.final(p) for p in _write(folder.path, args, scenario, config, result, stats, noise_free, rows)]
+    if args.export is not None:
+        written.append(_export(scenario, args.export))
     print("\nwrote " + ", ".join(str(p) for p in written))
     return consistency_gate("registration simulate", result.consistency, args.allow_inconsistent)

@@ -101,6 +101,8 @@ def test_a_folder_where_a_file_goes_is_one_line(tmp_path, capsys):
     err = capsys.readouterr().err
     assert err.startswith("registration fuse: error: cannot write ") and "summary.json: Is a directory" in err
     assert "Traceback" not in err
+    assert (tmp_path / "summary.json").is_dir()  # not an earlier run's output: never replaced
+    assert not list(tmp_path.glob("partial-*"))
 
 
 def test_the_debug_variable_shows_the_traceback(tmp_path, capsys, monkeypatch):
