@@ -14,7 +14,7 @@ code  meaning
 3     the run finished and wrote its outputs, but its normalised innovations grossly contradict
       the model (the consistency gate; see :mod:`registration.core.consistency`);
       ``--allow-inconsistent`` accepts such a run with exit code 0
-130   interrupted (Ctrl-C); outputs may be incomplete
+130   interrupted (Ctrl-C); --out keeps the last finished run's outputs
 141   standard output was closed early (e.g. piped into ``head``): the command stops quietly,
       like a program ended by SIGPIPE (128 + 13)
 ====  ==========================================================================================
@@ -148,7 +148,7 @@ def interrupt_message(prog: str, args: argparse.Namespace | None) -> str:
     if checkpoint:
         return f"{prog}: interrupted; rerun the same command to resume from its checkpoint {checkpoint}"
     out = getattr(args, "out", None)
-    where = f"; outputs in {out} may be incomplete" if out else ""
+    where = f"; {out} keeps the outputs of the last finished run" if out else ""
     return f"{prog}: interrupted{where}"
 
 

@@ -123,7 +123,7 @@ def test_ctrl_c_says_where_it_stopped(tmp_path, capsys, monkeypatch):
     monkeypatch.setattr(registration.online, "register", interrupted)
     out = tmp_path / "sim"
     assert main(["simulate", "--out", str(out)]) == EXIT_INTERRUPTED
-    assert capsys.readouterr().err == f"\nregistration simulate: interrupted; outputs in {out} may be incomplete\n"
+    assert capsys.readouterr().err == f"\nregistration simulate: interrupted; {out} keeps the outputs of the last finished run\n"
 
 
 def test_ctrl_c_with_a_checkpoint_says_how_to_resume():
@@ -155,7 +155,7 @@ def test_a_real_sigint_exits_130_without_traceback(tmp_path):
     err = (seen + rest).decode()
     assert proc.returncode == EXIT_INTERRUPTED, err
     assert "Traceback" not in err and "KeyboardInterrupt" not in err
-    assert err.endswith("\nregistration landing: interrupted; outputs in land may be incomplete\n")
+    assert err.endswith("\nregistration landing: interrupted; land keeps the outputs of the last finished run\n")
 
 
 @pytest.mark.parametrize("command", [["schema"], ["schema", "--json"], ["simulate", "--steps", "20", "--no-plots"]])
