@@ -17,7 +17,7 @@ The solver stops when the predicted reduction of the sum of squares falls below 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -27,7 +27,8 @@ from registration.fleet.normal import Design, Evaluation, Normal, evaluate, make
 from registration.fleet.problem import Exclusion, FleetProblem
 from registration.fleet.schur import damped_step, determined_directions, masked_blocks, reduce
 
-__all__ = ["BatchOptions", "Fit", "exclude_singular", "fit", "levenberg_marquardt", "singular_blocks"]
+__all__ = ["BatchOptions", "Fit", "determined_design", "exclude_singular", "fit", "fit_windows", "levenberg_marquardt",
+           "singular_blocks"]
 
 LAMBDA_START = 1e-3
 LAMBDA_MAX = 1e16
@@ -144,6 +145,45 @@ def exclude_singular(problem: FleetProblem, design: Design, bad: np.ndarray) -> 
     return problem.drop_plots(drop, exclusions)
 
 
+def determined_design(problem: FleetProblem, options: BatchOptions, x0: np.ndarray, priors: bool = True):
+    """``(problem, design, start, normal)``: the design of ``problem`` with the windows whose position
+    their plots do not determine set aside (:func:`singular_blocks`, :func:`exclude_singular`, again
+    until none is left), its evaluation at states ``x0`` (n,) with the window means of the plots
+    corrected by ``x0`` and the normal equations there; None when no plot is left. Without
+    ``priors`` the states' priors are left out of the sums (a filter carries them itself)."""
+    while problem.n_plots:
+        design = make_design(problem, make_blocks(problem, options.window_s, options.degree))
+        if not priors:
+            design = replace(design, prior_weight=np.zeros_like(design.prior_weight))
+        start = evaluate(design, x0, initial_coefficients(design, x0))
+        normal = normal_equations(design, start)
+        bad = singular_blocks(design, normal)
+        if bad.size == 0:
+            return problem, design, start, normal
+        problem = exclude_singular(problem, design, bad)
+    return None
+
+
+def fit_windows(design: Design, start: Evaluation, normal: Normal, options: BatchOptions) -> tuple[Evaluation, Normal]:
+    """The window coefficients fitted with the states held (Gauss-Newton, each window's step
+    ``V_b^-1 b_c,b``), until the predicted reduction of the sum of squares is below
+    ``options.tolerance``; Levenberg-Marquardt from there if a step does not lower it."""
+    blk = design.blocks
+    mask = np.repeat(blk.coef_mask, 3, axis=1)
+    ev = start
+    for _ in range(options.max_iterations):
+        dc = np.linalg.solve(masked_blocks(blk, normal.V), normal.b_c[:, :, None])[:, :, 0] * mask
+        if not float(np.sum(dc * normal.b_c)) > options.tolerance:
+            return ev, normal
+        trial = evaluate(design, ev.x, ev.coef + dc.reshape(ev.coef.shape))
+        if not trial.cost < ev.cost:
+            break
+        ev = trial
+        normal = normal_equations(design, ev)
+    ev, normal, _, _, _ = levenberg_marquardt(design, ev, np.zeros(0, dtype=np.int64), options, 0.0, normal)
+    return ev, normal
+
+
 def fit(problem: FleetProblem, options: BatchOptions | None = None, x0: np.ndarray | None = None) -> Fit:
     """Solve the batch problem (module docstring) from states ``x0`` (n,; rad, m; default zeros: a
     warm start only saves iterations); windows of singular geometry are set aside."""
@@ -152,14 +192,10 @@ def fit(problem: FleetProblem, options: BatchOptions | None = None, x0: np.ndarr
     if x0.shape != (problem.layout.n,) or not np.isfinite(x0).all():
         raise ValueError(f"x0: expected {problem.layout.n} finite starting states, got shape {x0.shape}")
     x0[problem.layout.fixed] = 0.0
-    if problem.n_plots == 0:
+    found = determined_design(problem, options, x0)
+    if found is None:
         raise ValueError("no plots to register (every target was excluded: " + "; ".join(e.text() for e in problem.excluded) + ")")
-    design = make_design(problem, make_blocks(problem, options.window_s, options.degree))
-    start = evaluate(design, x0, initial_coefficients(design, x0))
-    normal = normal_equations(design, start)
-    bad = singular_blocks(design, normal)
-    if bad.size:
-        return fit(exclude_singular(problem, design, bad), options, x0)
+    problem, design, start, normal = found
     ev, normal, _, it1, hist1 = levenberg_marquardt(design, start, np.zeros(0, dtype=np.int64), options,
                                                     TARGETS_FIRST, normal)
     ev, normal, converged, it2, hist2 = levenberg_marquardt(design, ev, problem.layout.free, options, 0.0, normal)
