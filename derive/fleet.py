@@ -53,21 +53,46 @@ def lever_ecef_expr(nav, att, lever_deck) -> sp.Matrix:
     return T_VARIANTS[VARIANT](nav[0], nav[1]) * deck2enu_rotation_expr(*att) * sp.Matrix(lever_deck)
 
 
-def predicted_plot_expr(p_ecef, nav, att_reported, att_err, bias, lever_deck) -> sp.Matrix:
-    """Plot [r m, q rad, e rad] the sensor reports for a target at p_ecef: true plot + bias (q unwrapped)."""
-    att = [att_reported[i] - att_err[i] for i in range(3)]
+def sensor_offset_expr(p_ecef, nav, att, lever_deck, pos_err_enu=None) -> sp.Matrix:
+    """Target ECEF (m) moved by the sensor's offset from the navigation point: ``p_ecef`` minus the
+    lever arm in ECEF plus ``R_ecef_enu pos_err_enu`` (the stated sensor position is the true one
+    plus ``pos_err_enu``, m in the local ENU frame of the navigation point), so that the plot seen
+    from the navigation point equals the plot of ``p_ecef`` seen from the true sensor position."""
     p_shifted = sp.Matrix(p_ecef) - lever_ecef_expr(nav, att, lever_deck)
+    if pos_err_enu is not None:
+        p_shifted = p_shifted + T_VARIANTS[VARIANT](nav[0], nav[1]) * sp.Matrix(pos_err_enu)
+    return p_shifted
+
+
+def predicted_plot_expr(p_ecef, nav, att_reported, att_err, bias, lever_deck, gain=None, pos_err_enu=None) -> sp.Matrix:
+    """Plot [r m, q rad, e rad] the sensor reports for a target at p_ecef: true plot + bias (q unwrapped).
+
+    ``gain`` (dimensionless, optional): the range is ``(1 + gain)`` times the true slant range
+    before the range bias is added. ``pos_err_enu`` (m, optional): the stated sensor position
+    minus the true one, in ENU at the navigation point. Without them the expression is the
+    original three-error model, term for term.
+    """
+    att = [att_reported[i] - att_err[i] for i in range(3)]
+    p_shifted = sensor_offset_expr(p_ecef, nav, att, lever_deck, pos_err_enu)
     plot = ecef2plot_expr(p_shifted, nav, att, VARIANT)
     offset_ecef = p_shifted - geodetic2ecef_expr(*nav)
     slant = sp.sqrt(offset_ecef.dot(offset_ecef))  # = plot[0], without rotating first (see module doc)
+    if gain is not None:
+        slant = (1 + gain) * slant
     return sp.Matrix([slant, plot[1], plot[2]]) + sp.Matrix(bias)
 
 
-def corrected_plot2ecef_expr(nav, att_reported, att_err, bias, lever_deck, meas) -> sp.Matrix:
-    """Target ECEF (m) from a plot corrected by the biases and an attitude corrected by its errors."""
+def corrected_plot2ecef_expr(nav, att_reported, att_err, bias, lever_deck, meas, gain=None, pos_err_enu=None) -> sp.Matrix:
+    """Target ECEF (m) from a plot corrected by the biases (and range gain) and an attitude
+    corrected by its errors, seen from the true sensor position (the inverse of predicted_plot_expr)."""
     att = [att_reported[i] - att_err[i] for i in range(3)]
     plot = [meas[i] - bias[i] for i in range(3)]
-    return plot2ecef_expr(nav, att, plot, VARIANT) + lever_ecef_expr(nav, att, lever_deck)
+    if gain is not None:
+        plot[0] = plot[0] / (1 + gain)
+    p = plot2ecef_expr(nav, att, plot, VARIANT) + lever_ecef_expr(nav, att, lever_deck)
+    if pos_err_enu is not None:
+        p = p - T_VARIANTS[VARIANT](nav[0], nav[1]) * sp.Matrix(pos_err_enu)
+    return p
 
 
 def _wrap(x):
@@ -82,6 +107,12 @@ FLEET_DOMAIN = {
     "att_err": [(-0.1, 0.1)] * 3,
     "bias": [(-5000.0, 5000.0), (-0.1, 0.1), (-0.1, 0.1)],
     "lever_deck": [(-100.0, 100.0)] * 3,
+    # the extended model (fleet_residual_ext): target velocity, navigation rates, the new errors
+    "v_ecef": [(-400.0, 400.0)] * 3,
+    "nav_rate": [(-3e-6, 3e-6), (-3e-6, 3e-6), (-5.0, 5.0), (-0.05, 0.05), (-0.1, 0.1), (-0.1, 0.1)],
+    "gain": (-0.01, 0.01),
+    "dt": (-1.0, 1.0),
+    "pos_err": [(-100.0, 100.0)] * 3,
 }
 
 
@@ -148,15 +179,20 @@ def specs() -> list[FunctionSpec]:
         outputs=(Port("p_ecef", p_target, "m"),),
         domain=FLEET_DOMAIN,
     )
-    return [residual_spec, plot2ecef_spec, *[_rows_spec(residual_spec, n) for n in ROW_BASIS_SIZES]]
+    return [residual_spec, plot2ecef_spec, *[_rows_spec(residual_spec, n) for n in ROW_BASIS_SIZES],
+            *extended_specs()]
 
 
-def _rows_spec(residual_spec: FunctionSpec, n_basis: int) -> CasadiSpec:
-    scalar = {p.name for p in residual_spec.inputs if p.shape == (1, 1)}
-    inputs = tuple(CasadiPort(p.name, p.shape, p.unit) for p in residual_spec.inputs) + (
+def _rows_spec(residual_spec: FunctionSpec, n_basis: int, extended: bool = False) -> CasadiSpec:
+    """The rows function of ``residual_spec`` (fleet_residual, or fleet_residual_ext with ``extended``:
+    then the input ``dt`` is held at 0, its Jacobian column being the time bias's)."""
+    ports = [p for p in residual_spec.inputs if p.name != "dt"]
+    scalar = {p.name for p in ports if p.shape == (1, 1)}
+    inputs = tuple(CasadiPort(p.name, p.shape, p.unit) for p in ports) + (
         CasadiPort("weight", (3, 1), "1/m, 1/rad, 1/rad"), CasadiPort("basis", (n_basis, 1), "1"))
-    m = 3 * n_basis + 7
-    name = f"fleet_rows_{n_basis}"
+    n_state = 11 if extended else 6
+    m = 3 * n_basis + n_state + 1
+    name = f"fleet_rows_ext_{n_basis}" if extended else f"fleet_rows_{n_basis}"
 
     def build():
         import casadi as ca
@@ -165,22 +201,102 @@ def _rows_spec(residual_spec: FunctionSpec, n_basis: int) -> CasadiSpec:
 
         residual = to_casadi_function(residual_spec)
         args = [ca.SX.sym(p.name, *p.shape) for p in inputs]
-        res, J, _ = residual(*args[:-2])
+        call = list(args[:-2])
+        if extended:
+            call.insert([p.name for p in residual_spec.inputs].index("dt"), ca.SX(0.0))
+        res, J, _ = residual(*call)
         w, basis = args[-2], args[-1]
         A = ca.diag(w) @ J
-        Z = ca.horzcat(*[basis[k] * A[:, 0:3] for k in range(n_basis)], A[:, 3:9], w * res)
+        Z = ca.horzcat(*[basis[k] * A[:, 0:3] for k in range(n_basis)], A[:, 3:3 + n_state], w * res)
         return ca.Function(name, args, [Z.T], [p.name for p in inputs], ["rows_t"], {"cse": True})
 
     domain = {**FLEET_DOMAIN, "weight": [(0.0, 0.1), (0.0, 3000.0), (0.0, 3000.0)], "basis": [(-1.0, 1.0)] * n_basis}
+    state_doc = ("J_x over the 11 states (attitude errors, biases, range gain, time bias, position errors; the "
+                 "time bias's column is d residual / d dt at dt = 0)" if extended else "J_x over the 6 states")
     return CasadiSpec(
         name=name,
         doc=(
             f"Rows of the batch normal equations for one plot, polynomial basis of size {n_basis}: the inputs of "
-            "fleet_residual, channel weights w = mask / sigma (1/m, 1/rad, 1/rad) and the basis values at the plot "
-            f"time. Output rows_t ({m}x3) = Z^T, Z = [basis^T (x) diag(w) J_p | diag(w) J_x | w * residual]."
+            f"{residual_spec.name}{' (without dt)' if extended else ''}, channel weights w = mask / sigma (1/m, 1/rad, "
+            f"1/rad) and the basis values at the plot time. Output rows_t ({m}x3) = Z^T, Z = [basis^T (x) diag(w) J_p "
+            f"| diag(w) J_x | w * residual], {state_doc}."
         ),
         inputs=inputs,
         outputs=(CasadiPort("rows_t", (m, 3), "1/m, 1/rad"),),
         builder=build,
         domain={k: v for k, v in domain.items() if k in {p.name for p in inputs} | scalar},
     )
+
+
+def extended_specs() -> list:
+    """The extended plot model: range gain, time bias and sensor position error besides the
+    attitude errors and biases (docs/fleet.md, "Sensor error model").
+
+    ``fleet_residual_ext`` takes the target position ``p_ecef`` and velocity ``v_ecef`` (m, m/s)
+    and the platform's navigation and its rates ``nav_rate`` (rad/s, m/s) all at one time, and
+    sees the target and platform ``dt`` seconds earlier than that, to first order: ``p - v dt``,
+    ``nav - nav_rate dt``. The runtime evaluates the inputs at the plot's time corrected by the
+    current time-bias estimate and passes ``dt = 0``: the residual is then exact and the column
+    d residual / d dt is the time bias's, target and platform motion included.
+    """
+    lat, lon, alt = sp.symbols("lat lon alt", real=True)
+    heading, pitch, roll = sp.symbols("heading pitch roll", real=True)
+    r, q, e = sp.symbols("r q e", real=True)
+    gain, dt = sp.symbols("gain dt", real=True)
+    p_ecef = sp.Matrix(sp.symbols("x y z", real=True))
+    v_ecef = _vec("v", ["x", "y", "z"])
+    rate = _vec("rate", ["lat", "lon", "alt", "heading", "pitch", "roll"])
+    att_err = _vec("d", ["heading", "pitch", "roll"])
+    bias = _vec("b", ["r", "q", "e"])
+    lever = _vec("lever", ["x", "y", "z"])
+    pos_err = _vec("pos", ["east", "north", "up"])
+    nav6 = [lat, lon, alt, heading, pitch, roll]
+    seen = [nav6[i] - rate[i] * dt for i in range(6)]
+    p_seen = p_ecef - v_ecef * dt
+    predicted = predicted_plot_expr(p_seen, seen[:3], seen[3:], att_err, bias, lever, gain, pos_err)
+    difference = sp.Matrix([r, q, e]) - predicted
+    residual = sp.Matrix([difference[0], _wrap(difference[1]), difference[2]])
+    J = jacobian(difference, p_ecef, att_err, bias, gain, dt, pos_err)
+    plot = sp.Matrix([predicted[0], _wrap(predicted[1]), predicted[2]])
+    nav_ports = _nav_ports(*nav6)
+    error_ports = (Port("att_err", att_err, "rad"), Port("bias", bias, "m, rad, rad"), Port("gain", gain, "1"))
+    residual_spec = FunctionSpec(
+        name="fleet_residual_ext",
+        doc=(
+            "One plot of fleet registration with the extended sensor errors: target p_ecef (m) and velocity v_ecef "
+            "(m/s); platform navigation lat, lon (rad), alt (m), reported heading, pitch, roll (rad) and their rates "
+            "nav_rate (rad/s, m/s); attitude errors att_err (rad); biases [range m, bearing rad, elevation rad]; "
+            "range gain (1); dt (s): target and platform seen dt earlier, to first order; sensor position error "
+            "pos_err (m, ENU, stated - true); lever_deck (m); measured r (m), q, e (rad). Outputs residual = measured "
+            "- predicted (bearing wrapped), J = d residual / d(p_ecef, att_err, bias, gain, dt, pos_err) (3x14) and "
+            "the predicted plot."
+        ),
+        inputs=(
+            Port("p_ecef", p_ecef, "m"), Port("v_ecef", v_ecef, "m/s"), *nav_ports,
+            Port("nav_rate", rate, "rad/s, rad/s, m/s, rad/s, rad/s, rad/s"), *error_ports, Port("dt", dt, "s"),
+            Port("pos_err", pos_err, "m"), Port("lever_deck", lever, "m"),
+            Port("r", r, "m"), Port("q", q, "rad"), Port("e", e, "rad"),
+        ),
+        outputs=(
+            Port("residual", residual, "m, rad, rad"),
+            Port("J", J, "m/m, m/rad, 1, m, m/s, 1; rad/m, 1, 1, rad, rad/s, rad/m"),
+            Port("plot", plot, "m, rad, rad"),
+        ),
+        jacobians=(JacobianDecl("J", "residual", ("p_ecef", "att_err", "bias", "gain", "dt", "pos_err")),),
+        domain=FLEET_DOMAIN,
+    )
+    p_target = corrected_plot2ecef_expr(nav6[:3], nav6[3:], att_err, bias, lever, [r, q, e], gain, pos_err)
+    plot2ecef_spec = FunctionSpec(
+        name="fleet_plot2ecef_ext",
+        doc=(
+            "Target ECEF (m) of one plot corrected by the extended registration errors: navigation lat, lon (rad), "
+            "alt (m), reported heading, pitch, roll (rad), att_err (rad), biases [m, rad, rad], range gain (1), "
+            "sensor position error pos_err (m, ENU, stated - true), lever_deck (m), measured r (m), q, e (rad). "
+            "The inverse of fleet_residual_ext's predicted plot at dt = 0."
+        ),
+        inputs=(*nav_ports, *error_ports, Port("pos_err", pos_err, "m"), Port("lever_deck", lever, "m"),
+                Port("r", r, "m"), Port("q", q, "rad"), Port("e", e, "rad")),
+        outputs=(Port("p_ecef", p_target, "m"),),
+        domain=FLEET_DOMAIN,
+    )
+    return [residual_spec, plot2ecef_spec, *[_rows_spec(residual_spec, n, extended=True) for n in ROW_BASIS_SIZES]]

@@ -11,10 +11,12 @@ one block per distinct (target, time) with degree 0: the target position at ever
 it is measured (synchronous sensors).
 
 Plots are ordered by (block, sensor); a *group* is the plots of one sensor in one block. The
-coupling of a block with the registration states is held per group (a ``3 (d + 1) x 6`` matrix
-over the platform's three attitude errors and the sensor's three biases). For the Schur
-complement the groups of a block are laid side by side (``group_rank``, ``local_state``), so each
-block's coupling is one dense ``3 (d + 1) x 6 g`` matrix (g = the most groups in any block).
+coupling of a block with the registration states is held per group (a ``3 (d + 1) x w`` matrix
+over the sensor's ``w`` states: its platform's three attitude errors and its three biases, and
+with the extended errors its range gain, time bias and position errors, ``w = 11``;
+:meth:`~registration.fleet.layout.StateLayout.sensor_states`). For the Schur complement the
+groups of a block are laid side by side (``group_rank``, ``local_state``), so each block's
+coupling is one dense ``3 (d + 1) x w g`` matrix (g = the most groups in any block).
 """
 
 from __future__ import annotations
@@ -26,7 +28,7 @@ from numpy.polynomial import legendre
 
 from registration.fleet.problem import FleetProblem
 
-__all__ = ["Blocks", "make_blocks", "legendre_basis"]
+__all__ = ["Blocks", "make_blocks", "legendre_basis", "legendre_basis_rate"]
 
 #: Two reference/plot times closer than this (s) are the same instant (window_s = 0).
 SAME_INSTANT_S = 1e-6
@@ -35,6 +37,14 @@ SAME_INSTANT_S = 1e-6
 def legendre_basis(tau: np.ndarray, n: int) -> np.ndarray:
     """(N, n) values of P_0..P_{n-1} at tau."""
     return legendre.legvander(tau, n - 1)
+
+
+def legendre_basis_rate(tau: np.ndarray, n: int) -> np.ndarray:
+    """(N, n) derivatives d P_k / d tau of P_0..P_{n-1} at tau."""
+    if n == 1:
+        return np.zeros((np.size(tau), 1))
+    D = np.stack([legendre.legder(e) for e in np.eye(n)], axis=1)  # (n - 1, n): P_k' in P_0..P_{n-2}
+    return legendre.legvander(tau, n - 2) @ D
 
 
 @dataclass(frozen=True)
@@ -53,9 +63,9 @@ class Blocks:
     group_start: np.ndarray  # (G,) first sorted plot of each (block, sensor) group
     group_block: np.ndarray  # (G,)
     group_sensor: np.ndarray  # (G,)
-    group_state: np.ndarray  # (G, 6) state indices (attitude errors, biases); n_state = none
+    group_state: np.ndarray  # (G, w) state indices (layout.sensor_states); n_state = none
     group_rank: np.ndarray  # (G,) position of the group among its block's groups
-    local_state: np.ndarray  # (B, 6 max_groups) state indices of each block's groups (n = padding)
+    local_state: np.ndarray  # (B, w max_groups) state indices of each block's groups (n = padding)
     group_block_start: np.ndarray  # (B,) first group of each block
     chunk_size: int  # plots per chunk: a group's plots are cut into chunks of this many (zero padded)
     chunk_slot: np.ndarray  # (N,) row of each sorted plot in the padded chunk array
@@ -72,10 +82,22 @@ class Blocks:
     def n_chunks(self) -> int:
         return int(self.chunk_slot.max()) // self.chunk_size + 1 if self.chunk_slot.size else 0
 
+    @property
+    def width(self) -> int:
+        """States per group (6, or 11 with the extended errors)."""
+        return int(self.group_state.shape[1])
+
     def basis_at(self, block: np.ndarray, time: np.ndarray) -> np.ndarray:
         """(M, n_coef) masked basis values of times ``time`` (s) in blocks ``block``."""
         tau = (time - self.block_centre[block]) / self.block_half[block]
         return legendre_basis(tau, self.n_coef) * self.coef_mask[block]
+
+    def basis_rate_at(self, block: np.ndarray, time: np.ndarray) -> np.ndarray:
+        """(M, n_coef) masked time derivatives (1/s) of the basis at times ``time`` in blocks ``block``:
+        the velocity of a window is ``sum_k rate_k c_k``."""
+        half = self.block_half[block]
+        tau = (time - self.block_centre[block]) / half
+        return legendre_basis_rate(tau, self.n_coef) * self.coef_mask[block] / half[:, None]
 
 
 def _window_keys(target, time, ref_target, ref_time, n_targets: int, window_s: float):
@@ -137,11 +159,11 @@ def _block_geometry(problem: FleetProblem, window_s: float, degree: int):
 
 def _local_states(group_block: np.ndarray, group_state: np.ndarray, n_blocks: int, n_state: int):
     """Each group's rank within its block and, per block, the state indices of its groups side by
-    side (6 per group, padded with the sink index ``n_state`` up to the largest block)."""
+    side (w per group, padded with the sink index ``n_state`` up to the largest block)."""
     n_in = np.bincount(group_block, minlength=n_blocks)
     first_group = np.r_[0, np.cumsum(n_in)[:-1]]
     rank = np.arange(group_block.size) - first_group[group_block]
-    local = np.full((n_blocks, max(int(n_in.max(initial=1)), 1), 6), n_state, dtype=np.int64)
+    local = np.full((n_blocks, max(int(n_in.max(initial=1)), 1), group_state.shape[1]), n_state, dtype=np.int64)
     local[group_block, rank] = group_state
     return rank, local.reshape(n_blocks, -1)
 
@@ -173,9 +195,7 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int) -> Blocks:
     group_start = np.flatnonzero(change)
     group_block, group_sensor = block_sorted[group_start], sensor_sorted[group_start]
     layout = problem.layout
-    att = layout.att_index[problem.sensor_platform[group_sensor]]
-    bias = layout.bias_index[group_sensor]
-    group_state = np.where(np.concatenate([att, bias], axis=1) < 0, layout.n, np.concatenate([att, bias], axis=1))
+    group_state = layout.sensor_states(group_sensor, problem.sensor_platform)
     n_coef = 1 if degree == 0 else 4  # the basis sizes of the generated rows functions
     coef_mask = np.arange(n_coef)[None, :] <= b_degree[:, None]
     tau = (problem.time[order] - centre[block_sorted]) / half[block_sorted]

@@ -86,15 +86,17 @@ def state_covariance(information: np.ndarray, scale: np.ndarray) -> tuple[np.nda
 def _coefficient_covariance(blk, red: Reduced, P_full: np.ndarray) -> np.ndarray:
     """(B, q, q) covariance of each window's coefficients: V_b^-1 + Y_b P_b Y_b^T."""
     idx = blk.local_state
-    P_local = P_full[idx[:, :, None], idx[:, None, :]]  # (B, 6 g, 6 g)
+    P_local = P_full[idx[:, :, None], idx[:, None, :]]  # (B, w g, w g)
     cov = red.V_inv + np.matmul(np.matmul(red.Y, P_local), red.Y.transpose(0, 2, 1))
     return 0.5 * (cov + cov.transpose(0, 2, 1))
 
 
 def fused_targets(fit, red: Reduced, P_full: np.ndarray) -> FusedTargets:
-    """Fused positions and covariances at every measured instant of every target."""
+    """Fused positions and covariances at every measured instant of every target (with time
+    biases: the reported times corrected by the estimated biases; the covariance leaves out the
+    time biases' own uncertainty)."""
     blk, problem = fit.design.blocks, fit.problem
-    time = problem.time[blk.order]
+    time = fit.design.seen_time(fit.x)[fit.design.slot]  # the true instants: reported minus any time bias
     ticks = np.round(time * 1e6).astype(np.int64)
     order = np.lexsort((ticks, blk.block))
     new = np.r_[True, (np.diff(blk.block[order]) != 0) | (np.diff(ticks[order]) != 0)]

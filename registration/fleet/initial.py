@@ -30,6 +30,14 @@ def plot_positions(design: Design, x: np.ndarray | None = None) -> np.ndarray:
     r = np.where(has[:, 0], design.meas[:, 0], ASSUMED_RANGE_M)  # an absent channel's bias is 0
     e = np.where(has[:, 2], design.meas[:, 2], 0.0)
     nav = design.nav
+    if design.extended:  # the position where the platform was when the plot was seen
+        state = design.state
+        if design.time_biased:
+            nav = design.seen_at(design.seen_time(xs[:-1]))[0]
+        p = _codegen.get("fleet_plot2ecef_ext")(
+            nav[:, 0], nav[:, 1], nav[:, 2], nav[:, 3], nav[:, 4], nav[:, 5], xs[state[:, :3]], xs[state[:, 3:6]],
+            xs[state[:, 6]], xs[state[:, 8:11]], design.lever, r, design.meas[:, 1], e)[0]
+        return p.reshape(n, 3)
     p = _codegen.get("fleet_plot2ecef")(
         nav[:, 0], nav[:, 1], nav[:, 2], nav[:, 3], nav[:, 4], nav[:, 5],
         xs[design.att_state], xs[design.bias_state], design.lever, r, design.meas[:, 1], e)[0]

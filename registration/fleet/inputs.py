@@ -11,7 +11,9 @@ import numpy as np
 
 from registration.core.frames import geodetic2ecef
 from registration.core.validation import check_range, degree_hint
-from registration.fleet.tables import ATTITUDE_ERRORS, CHANNELS, DEFAULT_REFERENCE_SIGMA, Table, read_table
+from registration.fleet.tables import (
+    ATTITUDE_ERRORS, CHANNELS, DEFAULT_REFERENCE_SIGMA, EXTENDED_PRIOR_COLUMNS, Table, read_table,
+)
 
 __all__ = ["index_of", "SensorSpecs", "PlotColumns", "References", "RowProblem", "plot_problems", "read_platforms",
            "read_sensors", "read_plots", "read_references"]
@@ -24,6 +26,8 @@ CHANNEL_LIMITS = {
 }
 #: A noise sigma above this (rad) for an angle channel is taken for degrees.
 MAX_ANGLE_SIGMA = 0.35
+#: The largest accepted prior sigma of a range gain (dimensionless: 0.1 = 10 %).
+MAX_GAIN_PRIOR = 0.1
 
 
 def _sigma_column(table: Table, column: str, rows_ids, *, allow_missing: bool, what: str) -> np.ndarray:
@@ -67,7 +71,8 @@ def index_of(values: np.ndarray, ids) -> np.ndarray:
 @dataclass(frozen=True)
 class SensorSpecs:
     """Sensors in table order: platform index (S,), measured channels (S, 3) bool, noise sigma
-    (S, 3) m/rad (NaN where not measured), bias priors (S, 3), lever arm (S, 3) m (deck frame)."""
+    (S, 3) m/rad (NaN where not measured), bias priors (S, 3), lever arm (S, 3) m (deck frame),
+    priors of the extended errors (S, 5) in EXTENDED_ERRORS order (NaN = not modelled)."""
 
     ids: tuple[str, ...]
     platform: np.ndarray
@@ -75,6 +80,7 @@ class SensorSpecs:
     sigma: np.ndarray
     prior: np.ndarray
     lever: np.ndarray
+    extended_prior: np.ndarray
 
 
 def read_sensors(table: Table, platform_ids) -> SensorSpecs:
@@ -102,7 +108,24 @@ def read_sensors(table: Table, platform_ids) -> SensorSpecs:
     lever = np.stack([table.floats(f"lever_{a}", default=0.0) for a in "xyz"], axis=1)
     check_range("sensors.lever", lever, -1.0e4, 1.0e4, "m (deck frame)")
     return SensorSpecs(tuple(str(s) for s in ids), np.array([index[p] for p in plat], dtype=np.int64), ~np.isnan(sigma), sigma,
-                       prior, lever)
+                       prior, lever, _extended_priors(table, ids))
+
+
+def _extended_priors(table: Table, ids) -> np.ndarray:
+    """(S, 5) priors of the extended errors: NaN where the column is missing (not modelled), inf
+    for an empty cell or inf (no prior); a negative sigma, or a gain sigma above MAX_GAIN_PRIOR, is
+    an error naming the row and column."""
+    out = np.full((table.n_rows, len(EXTENDED_PRIOR_COLUMNS)), np.nan)
+    for k, column in enumerate(EXTENDED_PRIOR_COLUMNS):
+        if table.has(column):
+            out[:, k] = _sigma_column(table, column, ids, allow_missing=False, what="sensor")
+    if table.has("prior_range_gain"):
+        big = np.flatnonzero(np.isfinite(out[:, 0]) & (out[:, 0] > MAX_GAIN_PRIOR))
+        if big.size:
+            row = int(big[0])
+            raise table.error(row, f"prior_range_gain of sensor {str(ids[row])!r} is {out[row, 0]}; expected a "
+                                   f"dimensionless sigma <= {MAX_GAIN_PRIOR} (1e-4 = 100 ppm; not percent or ppm)")
+    return out
 
 
 @dataclass(frozen=True)

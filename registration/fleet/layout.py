@@ -1,10 +1,18 @@
 """The registration state of a fleet: per platform the heading, pitch and roll errors, per sensor
-one bias per measured channel, with names, labels and units in the user's terms.
+one bias per measured channel and, where the sensors table switches them on, the extended errors
+(range gain, time bias, position error east/north/up), with names, labels and units in the user's
+terms.
 
-State ``i`` is named ``<object>:<quantity>`` (``A:heading_error``, ``A1:range_bias``) and labelled
-``heading error of platform A`` / ``range bias of sensor A1``. Units: rad for attitude errors and
-angle biases, m for range biases. A prior standard deviation of 0 holds a state fixed at zero;
-``inf`` means no prior.
+State ``i`` is named ``<object>:<quantity>`` (``A:heading_error``, ``A1:range_bias``,
+``A1:range_gain``, ``A1:time_bias``, ``A1:position_east``) and labelled ``heading error of
+platform A`` / ``range bias of sensor A1``. Units: rad for attitude errors and angle biases, m for
+range biases and position errors, ``1`` (dimensionless) for range gains, s for time biases. A prior
+standard deviation of 0 holds a state fixed at zero; ``inf`` means no prior.
+
+Each sensor's states as the plot model takes them (``sensor_states``) are its platform's three
+attitude errors and its three biases (6 slots) or, when any sensor has an extended error, those
+and the five extended errors (11 slots, the order of ``EXTENDED_ERRORS``); an absent state's slot
+holds the sink index ``n``.
 """
 
 from __future__ import annotations
@@ -13,12 +21,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.fleet.tables import ATTITUDE_ERRORS, CHANNEL_UNITS, CHANNELS
+from registration.fleet.tables import ATTITUDE_ERRORS, CHANNEL_UNITS, CHANNELS, EXTENDED_ERRORS
 
-__all__ = ["REFERENCE_SCALE", "StateLayout", "make_layout", "state_scale"]
+__all__ = ["EXTENDED_LABELS", "EXTENDED_UNITS", "REFERENCE_SCALE", "StateLayout", "make_layout", "state_scale"]
 
-#: Scale of a state without prior: 1 deg for angles, 1 km for ranges.
-REFERENCE_SCALE = {"rad": float(np.radians(1.0)), "m": 1000.0}
+#: Scale of a state without prior: 1 deg for angles, 1 km for ranges and positions, 1e-3 (1000 ppm)
+#: for range gains, 1 s for time biases.
+REFERENCE_SCALE = {"rad": float(np.radians(1.0)), "m": 1000.0, "1": 1.0e-3, "s": 1.0}
+#: Units and label words of the extended errors, in EXTENDED_ERRORS order.
+EXTENDED_UNITS = ("1", "s", "m", "m", "m")
+EXTENDED_LABELS = ("range gain", "time bias", "east position error", "north position error", "up position error")
 
 
 def state_scale(layout) -> np.ndarray:
@@ -35,7 +47,9 @@ class StateLayout:
 
     ``att_index`` (P, 3): the state index of each platform's heading, pitch and roll error.
     ``bias_index`` (S, 3): the state index of each sensor's range, bearing and elevation bias, -1
-    for a channel the sensor does not measure. ``prior_sigma`` (n,): 0 = fixed, inf = no prior.
+    for a channel the sensor does not measure. ``extended_index`` (S, 5): the index of each
+    sensor's range gain, time bias and east, north, up position errors, -1 where not modelled.
+    ``prior_sigma`` (n,): 0 = fixed, inf = no prior.
     """
 
     names: tuple[str, ...]
@@ -46,10 +60,35 @@ class StateLayout:
     prior_sigma: np.ndarray
     att_index: np.ndarray
     bias_index: np.ndarray
+    extended_index: np.ndarray
 
     @property
     def n(self) -> int:
         return len(self.names)
+
+    @property
+    def extended(self) -> bool:
+        """True when any sensor has an extended error (range gain, time bias, position)."""
+        return bool((self.extended_index >= 0).any())
+
+    @property
+    def width(self) -> int:
+        """States per sensor in the plot model: 6, or 11 with the extended errors."""
+        return 11 if self.extended else 6
+
+    @property
+    def time_bias_index(self) -> np.ndarray:
+        """(S,) the state index of each sensor's time bias, -1 where not modelled."""
+        return self.extended_index[:, 1]
+
+    def sensor_states(self, sensor: np.ndarray, sensor_platform: np.ndarray) -> np.ndarray:
+        """(M, width) state indices of sensors ``sensor`` (M,) as the plot model takes them
+        (module docstring), ``n`` (the sink) where a state is absent."""
+        parts = [self.att_index[sensor_platform[sensor]], self.bias_index[sensor]]
+        if self.extended:
+            parts.append(self.extended_index[sensor])
+        idx = np.concatenate(parts, axis=1)
+        return np.where(idx < 0, self.n, idx)
 
     @property
     def free(self) -> np.ndarray:
@@ -74,30 +113,36 @@ class StateLayout:
 
 
 def make_layout(platform_ids, platform_priors: np.ndarray, sensor_ids, sensor_channels: np.ndarray,
-                sensor_priors: np.ndarray) -> StateLayout:
-    """The layout for platforms (priors (P, 3), rad) and sensors (channels (S, 3) bool, priors (S, 3))."""
+                sensor_priors: np.ndarray, extended_priors: np.ndarray | None = None) -> StateLayout:
+    """The layout for platforms (priors (P, 3), rad) and sensors (channels (S, 3) bool, priors (S, 3));
+    ``extended_priors`` (S, 5) the priors of the extended errors (EXTENDED_ERRORS order; NaN = not
+    modelled). A sensor without range has no range gain."""
     names, labels, units, objects, quantities, prior = [], [], [], [], [], []
+
+    def add(kind, obj, quantity, label, unit, sigma) -> int:
+        names.append(f"{obj}:{quantity}")
+        labels.append(f"{label} of {kind} {obj}")
+        units.append(unit)
+        objects.append(obj)
+        quantities.append(quantity)
+        prior.append(sigma)
+        return len(names) - 1
+
     att_index = np.zeros((len(platform_ids), 3), dtype=np.int64)
     for p, pid in enumerate(platform_ids):
         for k, what in enumerate(ATTITUDE_ERRORS):
-            att_index[p, k] = len(names)
-            names.append(f"{pid}:{what}_error")
-            labels.append(f"{what} error of platform {pid}")
-            units.append("rad")
-            objects.append(pid)
-            quantities.append(f"{what}_error")
-            prior.append(platform_priors[p, k])
+            att_index[p, k] = add("platform", pid, f"{what}_error", f"{what} error", "rad", platform_priors[p, k])
     bias_index = np.full((len(sensor_ids), 3), -1, dtype=np.int64)
+    extended_index = np.full((len(sensor_ids), len(EXTENDED_ERRORS)), -1, dtype=np.int64)
+    if extended_priors is None:
+        extended_priors = np.full((len(sensor_ids), len(EXTENDED_ERRORS)), np.nan)
     for s, sid in enumerate(sensor_ids):
         for k, channel in enumerate(CHANNELS):
-            if not sensor_channels[s, k]:
+            if sensor_channels[s, k]:
+                bias_index[s, k] = add("sensor", sid, f"{channel}_bias", f"{channel} bias", CHANNEL_UNITS[k], sensor_priors[s, k])
+        for k, what in enumerate(EXTENDED_ERRORS):
+            if np.isnan(extended_priors[s, k]) or (what == "range_gain" and not sensor_channels[s, 0]):
                 continue
-            bias_index[s, k] = len(names)
-            names.append(f"{sid}:{channel}_bias")
-            labels.append(f"{channel} bias of sensor {sid}")
-            units.append(CHANNEL_UNITS[k])
-            objects.append(sid)
-            quantities.append(f"{channel}_bias")
-            prior.append(sensor_priors[s, k])
+            extended_index[s, k] = add("sensor", sid, what, EXTENDED_LABELS[k], EXTENDED_UNITS[k], extended_priors[s, k])
     return StateLayout(tuple(names), tuple(labels), tuple(units), tuple(objects), tuple(quantities),
-                       np.array(prior, dtype=np.float64), att_index, bias_index)
+                       np.array(prior, dtype=np.float64), att_index, bias_index, extended_index)

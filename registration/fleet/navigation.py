@@ -18,7 +18,7 @@ from registration.core.angles import wrap_angle
 from registration.core.validation import check_range
 from registration.fleet.tables import NAV_COLUMNS, Table
 
-__all__ = ["NAV_LIMITS", "platform_navigation", "navigation_at", "outside_navigation"]
+__all__ = ["NAV_LIMITS", "platform_navigation", "navigation_at", "navigation_rate_at", "outside_navigation"]
 
 #: Accepted window (low, high, unit) of each navigation column.
 NAV_LIMITS = {
@@ -107,3 +107,35 @@ def navigation_at(tracks: dict, platform_ids, plot_platform: np.ndarray, plot_ti
         j = NAV_COLUMNS.index(c)
         out[:, j] = wrap_angle(out[:, j])
     return out
+
+
+def navigation_rate_at(tracks: dict, platform_ids, plot_platform: np.ndarray, plot_time: np.ndarray
+                       ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(nav (N, 6), rate (N, 6), outside (N,) bool) of each plot's platform at times ``plot_time`` (s).
+
+    ``nav`` as :func:`navigation_at` (linear interpolation, angles wrapped) but without raising: a
+    time outside its platform's navigation span takes the nearest end's values (zero rate) and is
+    flagged in ``outside``. ``rate``: the slope of the interpolated segment (rad/s, m/s; the right
+    segment at a sample time), 0 for a fixed site. Used where plots are seen at times corrected by
+    a time bias (the platform is seen then too).
+    """
+    n = plot_time.shape[0]
+    nav, rate = np.empty((n, 6)), np.zeros((n, 6))
+    outside = outside_navigation(tracks, platform_ids, plot_platform, plot_time)
+    for p, pid in enumerate(platform_ids):
+        sel = np.flatnonzero(plot_platform == p)
+        if sel.size == 0:
+            continue
+        t, v = tracks[pid]
+        if t.shape[0] == 1:
+            nav[sel] = v[0]
+            continue
+        tp = np.clip(plot_time[sel], t[0], t[-1])
+        k = np.clip(np.searchsorted(t, tp, side="right") - 1, 0, t.shape[0] - 2)
+        slope = (v[k + 1] - v[k]) / (t[k + 1] - t[k])[:, None]
+        nav[sel] = v[k] + slope * (tp - t[k])[:, None]
+        rate[sel] = np.where(outside[sel, None], 0.0, slope)
+    for c in _UNWRAP:
+        j = NAV_COLUMNS.index(c)
+        nav[:, j] = wrap_angle(nav[:, j])
+    return nav, rate, outside

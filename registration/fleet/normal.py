@@ -9,14 +9,20 @@ polynomial basis) in one batched call. With whitened residuals ``e`` and Jacobia
 in their block form:
 
 * ``V`` (B, q, q), q = 3 n_coef: the target-window blocks (plots and reference positions);
-* ``W`` (G, q, 6): coupling of a block with the 6 states of one sensor's group (platform attitude
-  errors, sensor biases);
+* ``W`` (G, q, w): coupling of a block with the w states of one sensor's group (platform attitude
+  errors, sensor biases and, with the extended model, range gain, time bias, position errors);
 * ``U`` (n + 1, n + 1): the states' block (index n collects the absent biases and is dropped);
 * ``b_c`` (B, q) and ``b_x`` (n + 1,).
 
 A reference position ``y`` (sigma s) of a target adds the residual ``(y - p(t)) / s``; the prior
 of state i adds ``(0 - x_i) / sigma_i``. All sums over plots are segment sums over the
 (block, sensor) order: no Python loop over plots.
+
+With the extended errors the rows come from ``fleet_rows_ext_<n_coef>``. A sensor with a time
+bias ``dt`` sees its target and its platform at ``t - dt``: each evaluation takes the window
+polynomial, its velocity (the polynomial's derivative) and the platform's navigation and its rate
+at that time (the navigation tracks interpolated again), so the residual is exact and the time
+bias's Jacobian column carries the target's and the platform's motion.
 """
 
 from __future__ import annotations
@@ -53,12 +59,39 @@ class Design:
     meas: np.ndarray  # (rows, 3)
     weight: np.ndarray  # (rows, 3) mask / sigma, 1/m and 1/rad; 0 for padding
     lever: np.ndarray  # (rows, 3)
-    att_state: np.ndarray  # (rows, 3) state index (n = none)
-    bias_state: np.ndarray  # (rows, 3)
+    state: np.ndarray  # (rows, w) state indices of each row's sensor (layout.sensor_states; n = none)
     ref_p: np.ndarray  # (R', 3) ECEF m
     ref_weight: np.ndarray  # (R',) 1 / sigma
     prior_weight: np.ndarray  # (n,) 1 / prior sigma (0: no prior; fixed states are not free)
     scale: np.ndarray  # (n,) prior or reference sigma of each state (registration.fleet.layout.state_scale)
+    time: np.ndarray  # (rows,) reported plot time (s)
+    seen_at: object = None  # with time biases: times (rows,) -> (nav, rate, outside) of each row's platform
+
+    @property
+    def att_state(self) -> np.ndarray:
+        """(rows, 3) state indices of the platform's attitude errors."""
+        return self.state[:, :3]
+
+    @property
+    def bias_state(self) -> np.ndarray:
+        """(rows, 3) state indices of the sensor's biases."""
+        return self.state[:, 3:6]
+
+    @property
+    def extended(self) -> bool:
+        return self.state.shape[1] > 6
+
+    @property
+    def time_biased(self) -> bool:
+        """True when some row's sensor has a time-bias state."""
+        return self.extended and bool((self.state[:, 7] < self.n_state).any())
+
+    def seen_time(self, x: np.ndarray) -> np.ndarray:
+        """(rows,) the time (s) each row's target and platform are seen at under states ``x`` (n,):
+        the reported time minus the sensor's time bias."""
+        if not self.time_biased:
+            return self.time
+        return self.time - np.append(x, 0.0)[self.state[:, 7]]
 
 
 def make_design(problem: FleetProblem, blocks: Blocks) -> Design:
@@ -71,16 +104,23 @@ def make_design(problem: FleetProblem, blocks: Blocks) -> Design:
     o = blocks.order[source]
     layout = problem.layout
     sensor = problem.sensor[o]
-    att = layout.att_index[problem.sensor_platform[sensor]]
-    bias = np.where(layout.bias_index[sensor] < 0, layout.n, layout.bias_index[sensor])
+    state = layout.sensor_states(sensor, problem.sensor_platform)
     with np.errstate(divide="ignore", invalid="ignore"):
         weight = np.where(problem.mask[o] & real[:, None], 1.0 / problem.sensor_sigma[sensor], 0.0)
         prior_weight = np.where(np.isfinite(layout.prior_sigma) & (layout.prior_sigma > 0), 1.0 / layout.prior_sigma, 0.0)
     refs = problem.references
+    seen_at = None
+    if layout.extended and (layout.time_bias_index[np.unique(sensor)] >= 0).any():
+        if blocks.n_coef == 1:
+            raise ValueError("a time bias needs target windows (window_s > 0): the targets' velocities come from the "
+                             "windows' polynomials; give window_s > 0 or drop the prior_time_bias column")
+
+        def seen_at(t, rows=o):
+            return problem.navigation_at(t, rows)
     return Design(blocks, layout.n, blocks.chunk_slot, real, blocks.block[source], blocks.basis[source],
                   blocks.chunk_slot[blocks.block_start], problem.nav[o], problem.meas[o], weight,
-                  problem.sensor_lever[sensor], att, bias, refs.p_ecef[blocks.ref_index],
-                  1.0 / refs.sigma[blocks.ref_index], prior_weight, layout.scale)
+                  problem.sensor_lever[sensor], state, refs.p_ecef[blocks.ref_index],
+                  1.0 / refs.sigma[blocks.ref_index], prior_weight, layout.scale, problem.time[o], seen_at)
 
 
 def positions(basis: np.ndarray, block: np.ndarray, coef: np.ndarray) -> np.ndarray:
@@ -90,8 +130,8 @@ def positions(basis: np.ndarray, block: np.ndarray, coef: np.ndarray) -> np.ndar
 
 @dataclass(frozen=True)
 class Evaluation:
-    """At (x, coef): the whitened rows ``Z`` (rows, 3, q + 7) = [A_c | A_x | e] of every plot (A_c:
-    Jacobian w.r.t. its window's coefficients, A_x: w.r.t. its 6 states, e: whitened residual),
+    """At (x, coef): the whitened rows ``Z`` (rows, 3, q + w + 1) = [A_c | A_x | e] of every plot (A_c:
+    Jacobian w.r.t. its window's coefficients, A_x: w.r.t. its w states, e: whitened residual),
     the whitened reference residuals (R', 3) and the total sum of squares."""
 
     x: np.ndarray
@@ -106,18 +146,40 @@ class Evaluation:
         return self.Z[:, :, -1]
 
 
+def _extended_rows(design: Design, xs: np.ndarray, coef: np.ndarray) -> np.ndarray:
+    """(rows, 3 n_coef + 12, 3) rows of the extended model at states ``xs`` (n + 1,, sink last)."""
+    blk, state = design.blocks, design.state
+    basis, nav = design.basis, design.nav
+    v, rate = np.zeros((basis.shape[0], 3)), np.zeros((basis.shape[0], 6))
+    if design.time_biased:
+        t_seen = design.seen_time(xs[:-1])
+        basis = blk.basis_at(design.block, t_seen)
+        v = positions(blk.basis_rate_at(design.block, t_seen), design.block, coef)
+        nav, rate, _ = design.seen_at(t_seen)
+    p = positions(basis, design.block, coef)
+    return _codegen.get(f"fleet_rows_ext_{blk.n_coef}")(
+        p, v, nav[:, 0], nav[:, 1], nav[:, 2], nav[:, 3], nav[:, 4], nav[:, 5], rate,
+        xs[state[:, :3]], xs[state[:, 3:6]], xs[state[:, 6]], xs[state[:, 8:11]], design.lever,
+        design.meas[:, 0], design.meas[:, 1], design.meas[:, 2], design.weight,
+        basis[:, 0] if blk.n_coef == 1 else basis)[0]
+
+
 def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
     """Residuals at states ``x`` (n,) and coefficients ``coef`` (B, n_coef, 3): one call of the
-    generated ``fleet_rows_<n_coef>`` for all plots."""
+    generated ``fleet_rows_<n_coef>`` (``fleet_rows_ext_<n_coef>`` with the extended errors) for
+    all plots."""
     blk = design.blocks
-    p = positions(design.basis, design.block, coef)
     xs = np.append(x, 0.0)
-    nav = design.nav
-    rows_t = _codegen.get(f"fleet_rows_{blk.n_coef}")(
-        p, nav[:, 0], nav[:, 1], nav[:, 2], nav[:, 3], nav[:, 4], nav[:, 5],
-        xs[design.att_state], xs[design.bias_state], design.lever,
-        design.meas[:, 0], design.meas[:, 1], design.meas[:, 2], design.weight,
-        design.basis[:, 0] if blk.n_coef == 1 else design.basis)[0]
+    if design.extended:
+        rows_t = _extended_rows(design, xs, coef)
+    else:
+        p = positions(design.basis, design.block, coef)
+        nav = design.nav
+        rows_t = _codegen.get(f"fleet_rows_{blk.n_coef}")(
+            p, nav[:, 0], nav[:, 1], nav[:, 2], nav[:, 3], nav[:, 4], nav[:, 5],
+            xs[design.att_state], xs[design.bias_state], design.lever,
+            design.meas[:, 0], design.meas[:, 1], design.meas[:, 2], design.weight,
+            design.basis[:, 0] if blk.n_coef == 1 else design.basis)[0]
     Z = rows_t.swapaxes(1, 2)  # each plot's 3 rows, contiguous
     e = Z[:, :, -1]
     e_ref = (design.ref_p - positions(blk.ref_basis, blk.ref_block, coef)) * design.ref_weight[:, None]
@@ -131,7 +193,7 @@ class Normal:
     """The normal equations in block form (module docstring)."""
 
     V: np.ndarray  # (B, q, q)
-    W: np.ndarray  # (G, q, 6)
+    W: np.ndarray  # (G, q, w)
     U: np.ndarray  # (n + 1, n + 1)
     b_c: np.ndarray  # (B, q)
     b_x: np.ndarray  # (n + 1,)
@@ -152,7 +214,7 @@ def _reference_terms(blk: Blocks, ev: Evaluation, ref_weight: np.ndarray, V: np.
 
 
 def _chunk_products(design: Design, ev: Evaluation) -> np.ndarray:
-    """(G, m, m) sums over each group of Z^T Z (m = q + 7 columns of Evaluation.Z).
+    """(G, m, m) sums over each group of Z^T Z (m = q + w + 1 columns of Evaluation.Z).
 
     The rows are in chunks (Design), so each chunk's product is one small dense matrix product.
     """
@@ -167,7 +229,7 @@ def _chunk_products(design: Design, ev: Evaluation) -> np.ndarray:
 def normal_equations(design: Design, ev: Evaluation) -> Normal:
     """The block normal equations at an evaluation (undamped)."""
     blk = design.blocks
-    K, n1, q = blk.n_coef, design.n_state + 1, 3 * blk.n_coef
+    K, n1, q, w = blk.n_coef, design.n_state + 1, 3 * blk.n_coef, blk.width
     G = _chunk_products(design, ev)
     V = np.add.reduceat(G[:, :q, :q], blk.group_block_start, axis=0)
     b_c = -np.add.reduceat(G[:, :q, -1], blk.group_block_start, axis=0)
@@ -175,9 +237,9 @@ def normal_equations(design: Design, ev: Evaluation) -> Normal:
     _reference_terms(blk, ev, design.ref_weight, V5, b_c3)
     idx = blk.group_state
     flat = (idx[:, :, None] * n1 + idx[:, None, :]).reshape(-1)
-    U = np.bincount(flat, G[:, q:q + 6, q:q + 6].reshape(-1), n1 * n1).reshape(n1, n1)
-    b_x = -np.bincount(idx.reshape(-1), G[:, q:q + 6, -1].reshape(-1), n1)
+    U = np.bincount(flat, G[:, q:q + w, q:q + w].reshape(-1), n1 * n1).reshape(n1, n1)
+    b_x = -np.bincount(idx.reshape(-1), G[:, q:q + w, -1].reshape(-1), n1)
     pw = np.append(design.prior_weight, 0.0)
     U[np.diag_indices(n1)] += pw**2
     b_x -= pw**2 * np.append(ev.x, 0.0)
-    return Normal(V, np.ascontiguousarray(G[:, :q, q:q + 6]), U, b_c, b_x)
+    return Normal(V, np.ascontiguousarray(G[:, :q, q:q + w]), U, b_c, b_x)

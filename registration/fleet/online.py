@@ -125,7 +125,7 @@ class FleetFilter:
         ref_ids = [] if references is None else list(dict.fromkeys(read_table("references", references).ids("target")))
         self.references = read_references(references, ref_ids)
         self.layout = make_layout(self.platform_ids, platform_priors, self.specs.ids, self.specs.channels,
-                                  self.specs.prior)
+                                  self.specs.prior, self.specs.extended_prior)
         self.x, self.P = _start(self.layout, prior)
         self.information = np.zeros((self.layout.n, self.layout.n))
         self._q2 = np.array([self.options.q_angle if u == "rad" else self.options.q_range for u in self.layout.units]) ** 2
@@ -223,7 +223,7 @@ class FleetFilter:
             layout=self.layout, time=plots["time"], sensor=plots["sensor"],
             target=index_of(plots["target"], target_ids), meas=plots["meas"], mask=plots["mask"], nav=plots["nav"],
             row=plots["row"], n_input_plots=self._n_read, references=refs,
-            ref_target=index_of(refs.target, target_ids))
+            ref_target=index_of(refs.target, target_ids), tracks=self.tracks)
 
     # -- output ----------------------------------------------------------------------------------
     @property

@@ -18,7 +18,7 @@ from registration.fleet.inputs import (
     References, RowProblem, index_of, plot_problems, read_platforms, read_plots, read_references, read_sensors,
 )
 from registration.fleet.layout import StateLayout, make_layout
-from registration.fleet.navigation import navigation_at, outside_navigation, platform_navigation
+from registration.fleet.navigation import navigation_at, navigation_rate_at, outside_navigation, platform_navigation
 from registration.fleet.tables import read_table
 
 __all__ = ["Exclusion", "FleetProblem", "build_problem", "plot_row_problems"]
@@ -68,6 +68,17 @@ class FleetProblem:
     references: References
     ref_target: np.ndarray  # (R,) index into target_ids
     excluded: tuple[Exclusion, ...] = field(default_factory=tuple)
+    tracks: dict | None = None  # per platform id: navigation (times, values), for plots seen at other times
+
+    def navigation_at(self, time: np.ndarray, plot: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(nav (M, 6), its rate (M, 6), outside (M,) bool) of the platforms of plots ``plot`` (M,;
+        default all) at times ``time`` (M,) s: the navigation interpolated as at build time, its
+        rate of change (rad/s, m/s) and whether a time lies outside the platform's navigation span
+        (the nearest end is used there). See :func:`registration.fleet.navigation.navigation_rate_at`."""
+        plot = np.arange(self.n_plots) if plot is None else plot
+        if self.tracks is None:
+            raise ValueError("this problem was built without its navigation tracks")
+        return navigation_rate_at(self.tracks, self.platform_ids, self.platform[plot], time)
 
     @property
     def n_plots(self) -> int:
@@ -190,7 +201,7 @@ def build_problem(plots, sensors, navigation, platforms=None, references=None) -
         return f"plots row {int(keep[i])} (sensor {str(specs.ids[sensor[i]])!r}, time {time[i]:g} s)"
 
     nav = navigation_at(tracks, platform_ids, specs.platform[sensor], time, describe)
-    layout = make_layout(platform_ids, platform_priors, specs.ids, specs.channels, specs.prior)
+    layout = make_layout(platform_ids, platform_priors, specs.ids, specs.channels, specs.prior, specs.extended_prior)
     ref_keep = np.isin(refs.target, target_ids)
     refs = References(refs.target[ref_keep], refs.time[ref_keep], refs.p_ecef[ref_keep], refs.sigma[ref_keep])
     return FleetProblem(
@@ -199,5 +210,5 @@ def build_problem(plots, sensors, navigation, platforms=None, references=None) -
         time=time, sensor=sensor, target=index_of(cols.target[keep], target_ids),
         meas=cols.meas[keep], mask=cols.mask[keep], nav=nav, row=keep, n_input_plots=int(cols.time.shape[0]),
         references=refs, ref_target=index_of(refs.target, target_ids),
-        excluded=tuple(excluded),
+        excluded=tuple(excluded), tracks=tracks,
     )

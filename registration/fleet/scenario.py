@@ -108,6 +108,26 @@ class FleetScenario:
         return {n: None if getattr(self, n) is None else pd.DataFrame(getattr(self, n)) for n in names}
 
 
+#: The extended errors the simulator can give every sensor, with the sensors-table prior column
+#: that switches each on (the position errors share one).
+EXTENDED_SIZES = {"range_gain": "prior_range_gain", "time_bias": "prior_time_bias", "position_error": "prior_position"}
+
+
+def _extended_truth(config: FleetConfig, rng, extended: dict) -> dict:
+    """Per sensor: range gain (sensors with range), time bias and east/north/up position errors of
+    the given sizes (None: not simulated) with random signs."""
+    truth = {}
+    for sid, (_, sigma, _, _, _) in config.sensors.items():
+        if extended.get("range_gain") is not None and np.isfinite(sigma[0]):
+            truth[f"{sid}:range_gain"] = extended["range_gain"] * rng.choice([-1.0, 1.0])
+        if extended.get("time_bias") is not None:
+            truth[f"{sid}:time_bias"] = extended["time_bias"] * rng.choice([-1.0, 1.0])
+        if extended.get("position_error") is not None:
+            for axis in ("east", "north", "up"):
+                truth[f"{sid}:position_{axis}"] = extended["position_error"] * rng.choice([-1.0, 1.0])
+    return truth
+
+
 def _truth_errors(config: FleetConfig, rng, sizes: dict) -> dict:
     """Attitude errors of the ships (the sites' are zero) and biases: given sizes, random signs."""
     truth = {}
@@ -159,11 +179,20 @@ def _sensor_plots(config: FleetConfig, sid: str, duration_s: float, truth: dict,
     times = np.arange(offset, duration_s, period)
     sigma = np.asarray(sigma)
     bias = np.array([truth.get(f"{sid}:{c}_bias", 0.0) for c in ("range", "bearing", "elevation")])
-    nav = _true_nav(config, pid, times, ship_motion)
+    seen = times - truth.get(f"{sid}:time_bias", 0.0)  # reported time = true time + time bias
+    nav = _true_nav(config, pid, seen, ship_motion)
     n_t = len(config.targets)
-    p = np.concatenate([enu2ecef_points(CENTRE, track.enu(times)) for track in config.targets.values()])
+    p = np.concatenate([enu2ecef_points(CENTRE, track.enu(seen)) for track in config.targets.values()])
     nav = np.tile(nav, (n_t, 1))
-    plot = _codegen.get("fleet_residual")(p, *nav.T, np.zeros(3), bias, np.asarray(lever, dtype=float), 0.0, 0.0, 0.0)[2]
+    lever = np.asarray(lever, dtype=float)
+    extended = [f"{sid}:{k}" for k in ("range_gain", "time_bias", "position_east")]
+    if any(k in truth for k in extended):  # the sensor sits at stated position - position error
+        pos_err = np.array([truth.get(f"{sid}:position_{a}", 0.0) for a in ("east", "north", "up")])
+        z3, z6 = np.zeros(3), np.zeros(6)
+        plot = _codegen.get("fleet_residual_ext")(p, z3, *nav.T, z6, z3, bias, truth.get(f"{sid}:range_gain", 0.0),
+                                                  0.0, pos_err, lever, 0.0, 0.0, 0.0)[2]
+    else:
+        plot = _codegen.get("fleet_residual")(p, *nav.T, np.zeros(3), bias, lever, 0.0, 0.0, 0.0)[2]
     measured = plot + noise_scale * rng.normal(size=plot.shape) * np.nan_to_num(sigma)
     measured[:, ~np.isfinite(sigma)] = np.nan
     measured[:, 1] = wrap_angle(measured[:, 1])
@@ -172,8 +201,9 @@ def _sensor_plots(config: FleetConfig, sid: str, duration_s: float, truth: dict,
             "range": measured[:, 0], "bearing": measured[:, 1], "elevation": measured[:, 2]}
 
 
-def _tables(config: FleetConfig, noise_scale: float) -> tuple[dict, dict]:
-    """The platforms table (ships without priors, sites fixed) and the sensors table."""
+def _tables(config: FleetConfig, noise_scale: float, extended: dict) -> tuple[dict, dict]:
+    """The platforms table (ships without priors, sites fixed) and the sensors table (with an
+    empty prior column, estimated without prior, for each simulated extended error)."""
     n_ships, n_sites = len(config.ships), len(config.sites)
     platforms = {"platform": np.array([*config.ships, *config.sites])}
     for a in ("heading", "pitch", "roll"):
@@ -184,6 +214,9 @@ def _tables(config: FleetConfig, noise_scale: float) -> tuple[dict, dict]:
         sensors[f"sigma_{c}"] = np.array([v[1][k] for v in spec], dtype=float) * noise_scale
     for k, a in enumerate("xyz"):
         sensors[f"lever_{a}"] = np.array([v[4][k] for v in spec], dtype=float)
+    for key, column in EXTENDED_SIZES.items():
+        if extended.get(key) is not None:
+            sensors[column] = np.full(len(spec), np.inf)
     return platforms, sensors
 
 
@@ -201,7 +234,8 @@ def fleet_scenario(seed: int = 0, *, duration_s: float = 300.0, angle_bias: floa
                    range_bias: float = 300.0, heading_error: float = np.radians(0.5),
                    level_error: float = np.radians(0.2), noise_scale: float = 1.0, ship_motion: bool = True,
                    reference_sigma: float = 3.0, nav_rate_hz: float = 10.0,
-                   config: FleetConfig = DEFAULT_FLEET) -> FleetScenario:
+                   config: FleetConfig = DEFAULT_FLEET, range_gain: float | None = None,
+                   time_bias: float | None = None, position_error: float | None = None) -> FleetScenario:
     """The fleet ``config`` (default: the module docstring's) over ``duration_s`` seconds.
 
     Errors: each ship's heading error is +-``heading_error`` and its pitch and roll errors
@@ -212,6 +246,13 @@ def fleet_scenario(seed: int = 0, *, duration_s: float = 300.0, angle_bias: floa
     noise ``reference_sigma`` (m). Navigation: ``nav_rate_hz`` for ships (reported = true +
     attitude error; the solver interpolates it linearly, an error of about 0.002 deg in roll at
     10 Hz), one row per site. No priors on the ships' errors and the biases (maximum likelihood).
+
+    Extended errors (docs/fleet.md, "Sensor error model"), each None by default (not simulated and
+    its column absent from the sensors table, so not modelled): ``range_gain`` (dimensionless,
+    sensors with range), ``time_bias`` (s: the sensor reports time = true time + bias) and
+    ``position_error`` (m per east, north and up axis: stated sensor position = true + error),
+    each +-size with random signs per sensor and estimated without prior (empty prior column).
+    A plot whose true time falls before the navigation starts is set aside by the solver.
     """
     for name, v in (("angle_bias", angle_bias), ("heading_error", heading_error), ("level_error", level_error)):
         if abs(v) > np.radians(20):
@@ -222,9 +263,17 @@ def fleet_scenario(seed: int = 0, *, duration_s: float = 300.0, angle_bias: floa
     sizes = {"angle_bias": angle_bias, "range_bias": range_bias, "heading_error": heading_error,
              "level_error": level_error}
     truth = _truth_errors(config, rng, sizes)
+    extended = {"range_gain": range_gain, "time_bias": time_bias, "position_error": position_error}
+    for name, v in extended.items():
+        if v is not None and not np.isfinite(v):
+            raise ValueError(f"{name}: expected a finite size or None, got {v}")
+    if range_gain is not None and abs(range_gain) > 0.1:
+        raise ValueError(f"range_gain: {range_gain} is implausibly large (dimensionless: 1e-3 = 1000 ppm)")
+    truth.update(_extended_truth(config, rng, extended))
     parts = [_sensor_plots(config, sid, duration_s, truth, rng, noise_scale, ship_motion) for sid in config.sensors]
     plots = {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
-    platforms, sensors = _tables(config, noise_scale)
+    platforms, sensors = _tables(config, noise_scale, extended)
+    sizes.update({k: v for k, v in extended.items() if v is not None})
     description = {"seed": seed, "duration_s": duration_s, **{f"{k}": v for k, v in sizes.items()},
                    "noise_scale": noise_scale, "ship_motion": ship_motion, "plots": int(plots["time"].size)}
     return FleetScenario(platforms, sensors, _navigation(config, duration_s, truth, ship_motion, nav_rate_hz), plots,

@@ -2,10 +2,10 @@
 Schur complement, as in bundle adjustment.
 
 With ``V_b`` the block of window b, ``W_g`` the coupling of group g (one sensor in one window)
-with its 6 states, ``U`` the states' block and damping ``lambda D`` (Marquardt: D the diagonal
+with its w states (6, or 11 with the extended errors), ``U`` the states' block and damping ``lambda D`` (Marquardt: D the diagonal
 of the normal matrix):
 
-* with the groups of block b side by side, ``W_b`` (q x 6 g) over the states ``local_state[b]``:
+* with the groups of block b side by side, ``W_b`` (q x w g) over the states ``local_state[b]``:
   ``Y_b = V_b^-1 W_b``, ``y_b = V_b^-1 b_c,b`` (batched inverses of the small blocks);
 * ``S = U - sum_b W_b^T Y_b`` and ``r = b_x - sum_b W_b^T y_b``, each block's terms scattered
   into the states by index with ``bincount``;
@@ -36,17 +36,17 @@ class Reduced:
     S: np.ndarray  # (n + 1, n + 1); row/column n is the sink of absent biases
     r: np.ndarray  # (n + 1,)
     V_inv: np.ndarray  # (B, q, q)
-    Y: np.ndarray  # (B, q, 6 g): V_b^-1 W_b over the block's local states
+    Y: np.ndarray  # (B, q, w g): V_b^-1 W_b over the block's local states
     y: np.ndarray  # (B, q)
 
 
 def local_coupling(blk: Blocks, W: np.ndarray) -> np.ndarray:
-    """(B, q, 6 g): each block's group couplings W (G, q, 6) side by side (zeros for padding)."""
-    q = W.shape[1]
-    g = blk.local_state.shape[1] // 6
-    out = np.zeros((blk.n_blocks, g, q, 6))
+    """(B, q, w g): each block's group couplings W (G, q, w) side by side (zeros for padding)."""
+    q, w = W.shape[1], W.shape[2]
+    g = blk.local_state.shape[1] // w
+    out = np.zeros((blk.n_blocks, g, q, w))
     out[blk.group_block, blk.group_rank] = W
-    return out.transpose(0, 2, 1, 3).reshape(blk.n_blocks, q, 6 * g)
+    return out.transpose(0, 2, 1, 3).reshape(blk.n_blocks, q, w * g)
 
 
 def masked_blocks(blk: Blocks, V: np.ndarray) -> np.ndarray:
@@ -66,16 +66,16 @@ def reduce(blk: Blocks, normal: Normal, lam: float = 0.0) -> Reduced:
     V[:, np.arange(q), np.arange(q)] += lam * diag_V
     V_inv = np.linalg.inv(V)
     V_inv = 0.5 * (V_inv + V_inv.transpose(0, 2, 1))
-    W = local_coupling(blk, normal.W)  # (B, q, 6 g)
+    W = local_coupling(blk, normal.W)  # (B, q, w g)
     Y = np.matmul(V_inv, W)
     y = np.matmul(V_inv, normal.b_c[:, :, None])[:, :, 0]
     n1 = normal.U.shape[0]
-    WY = np.matmul(W.transpose(0, 2, 1), Y)  # (B, 6 g, 6 g)
+    WY = np.matmul(W.transpose(0, 2, 1), Y)  # (B, w g, w g)
     idx = blk.local_state
     flat = (idx[:, :, None] * n1 + idx[:, None, :]).reshape(-1)
     S = normal.U - np.bincount(flat, WY.reshape(-1), n1 * n1).reshape(n1, n1)
     S[np.diag_indices(n1)] += lam * np.diag(normal.U)
-    Wy = np.matmul(W.transpose(0, 2, 1), y[:, :, None])[:, :, 0]  # (B, 6 g)
+    Wy = np.matmul(W.transpose(0, 2, 1), y[:, :, None])[:, :, 0]  # (B, w g)
     r = normal.b_x - np.bincount(idx.reshape(-1), Wy.reshape(-1), n1)
     return Reduced(0.5 * (S + S.T), r, V_inv, Y, y)
 

@@ -10,7 +10,11 @@ Every table is long form, one row per item; SI units and radians (docs/conventio
   channel ``sigma_range`` (m), ``sigma_bearing``, ``sigma_elevation`` (rad), NaN or missing = the
   channel is not measured; the prior standard deviations of the biases ``prior_range`` (m),
   ``prior_bearing``, ``prior_elevation`` (rad; same meaning as the platform priors); the lever arm
-  ``lever_x``, ``lever_y``, ``lever_z`` (m, deck frame: starboard, bow, up; default 0).
+  ``lever_x``, ``lever_y``, ``lever_z`` (m, deck frame: starboard, bow, up; default 0); optional
+  extended errors, each switched on by its column: ``prior_range_gain`` (dimensionless),
+  ``prior_time_bias`` (s), ``prior_position`` (m, one sigma for the east, north and up position
+  errors). A missing column leaves the error out of the model; an empty cell (NaN) or ``inf``
+  estimates it without a prior, a number is its prior sigma, 0 holds it at zero (listed as fixed).
 * ``navigation``: ``platform``, ``time`` (s), ``lat``, ``lon`` (rad), ``alt`` (m), ``heading``,
   ``pitch``, ``roll`` (rad) as reported (true + attitude error). A platform with one row is a
   fixed site (its time is not used); otherwise the rows are interpolated to the plot times.
@@ -29,14 +33,18 @@ import numpy as np
 
 from registration.core.validation import as_float_array
 
-__all__ = ["Table", "read_table", "CHANNELS", "CHANNEL_UNITS", "ATTITUDE_ERRORS", "NAV_COLUMNS",
-           "DEFAULT_REFERENCE_SIGMA"]
+__all__ = ["Table", "read_table", "CHANNELS", "CHANNEL_UNITS", "ATTITUDE_ERRORS", "EXTENDED_ERRORS",
+           "EXTENDED_PRIOR_COLUMNS", "NAV_COLUMNS", "DEFAULT_REFERENCE_SIGMA"]
 
 #: The measured channels, in plot order, and their units.
 CHANNELS = ("range", "bearing", "elevation")
 CHANNEL_UNITS = ("m", "rad", "rad")
 #: A platform's attitude errors, in state order.
 ATTITUDE_ERRORS = ("heading", "pitch", "roll")
+#: The extended errors of a sensor, in state order (after its three biases), and the sensors-table
+#: column of each one's prior (the three position errors share one).
+EXTENDED_ERRORS = ("range_gain", "time_bias", "position_east", "position_north", "position_up")
+EXTENDED_PRIOR_COLUMNS = ("prior_range_gain", "prior_time_bias", "prior_position", "prior_position", "prior_position")
 #: Navigation columns, in the order the generated functions take them.
 NAV_COLUMNS = ("lat", "lon", "alt", "heading", "pitch", "roll")
 #: Standard deviation per axis (m) of a reference position when the table gives none.
