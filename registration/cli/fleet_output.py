@@ -12,6 +12,7 @@ import numpy as np
 
 from registration.cli.errors import consistency_gate, consistency_line, writing
 from registration.core.consistency import ConsistencyReport
+from registration.fleet.layout import FILE_UNITS
 
 __all__ = ["chi_square_report", "estimate_rows", "print_report", "write_outputs", "gate"]
 
@@ -29,12 +30,13 @@ def chi_square_report(result) -> ConsistencyReport | None:
 
 
 def estimate_rows(result, truth: dict | None = None) -> list[dict]:
-    """One row per state in file units: object, state, unit (m or deg), estimate, sigma, status
-    (and truth when given); a state fixed by a zero prior has sigma 0 and status ``fixed``."""
+    """One row per state in file units: object, state, unit (m, deg, 1 for a range gain, s for a
+    time bias), estimate, sigma, status (and truth when given); a state fixed by a zero prior has
+    sigma 0 and status ``fixed``."""
     rows = []
     for r in result.rows(truth):
-        k = np.degrees(1.0) if r["unit"] == "rad" else 1.0
-        row = {"object": r["object"], "state": r["quantity"], "unit": "deg" if r["unit"] == "rad" else "m",
+        unit, k, _, _ = FILE_UNITS[r["unit"]]
+        row = {"object": r["object"], "state": r["quantity"], "unit": unit,
                "estimate": r["estimate"] * k, "sigma": r["sigma"] * k, "status": r["status"]}
         if truth is not None:
             row["truth"] = r["truth"] * k
@@ -43,16 +45,19 @@ def estimate_rows(result, truth: dict | None = None) -> list[dict]:
 
 
 def print_report(result, rows: list[dict], header: list[str]) -> None:
-    """Header lines, the estimate table (estimate, 2 sigma, truth if known, unit, status), the
-    observability report and the chi-square/consistency lines."""
+    """Header lines, the estimate table (estimate, 2 sigma, truth if known, unit, status; range gains
+    in ppm), the observability report and the chi-square/consistency lines."""
     for line in header:
         print(line)
+    for w in getattr(result, "warnings", ()):
+        print(f"WARNING: {w}")
     has_truth = bool(rows) and "truth" in rows[0]
     print(f"\n  {'object':<8}{'state':<16}{'estimate':>12}{'± 2σ':>10}{'truth' if has_truth else '':>{10 if has_truth else 0}}  unit  status")
     for r in rows:
-        truth = f"{r['truth']:10.4g}" if has_truth else ""
-        print(f"  {r['object']:<8}{r['state']:<16}{r['estimate']:12.4g}{2 * r['sigma']:10.3g}{truth}  "
-              f"{r['unit']:<4}  {r['status']}")
+        k, unit = (1e6, "ppm") if r["unit"] == "1" else (1.0, r["unit"])
+        truth = f"{k * r['truth']:10.4g}" if has_truth else ""
+        print(f"  {r['object']:<8}{r['state']:<16}{k * r['estimate']:12.4g}{2 * k * r['sigma']:10.3g}{truth}  "
+              f"{unit:<4}  {r['status']}")
     print("\nObservability:")
     for line in result.observability.lines():
         print(line)
@@ -86,6 +91,7 @@ def _summary(result, rows: list[dict], inputs: dict) -> dict:
         "consistency": report.to_json() if report is not None else None,
         "excluded": [{"target": e.target, "reason": e.reason, "plots": e.n_plots, "t_start_s": e.t_start,
                       "t_end_s": e.t_end} for e in result.excluded],
+        "warnings": list(getattr(result, "warnings", ())),
         "inputs": inputs,
     }
     if is_online(result):
@@ -104,18 +110,19 @@ def _summary(result, rows: list[dict], inputs: dict) -> dict:
 
 
 def _history_frame(result):
-    """The online estimates over time, long form: time_s, object, state, unit (m or deg), estimate, sigma."""
+    """The online estimates over time, long form: time_s, object, state, unit (as estimates.csv),
+    estimate, sigma."""
     import pandas as pd
 
     layout, h = result.layout, result.history
     free = layout.free
-    k = np.array([np.degrees(1.0) if layout.units[i] == "rad" else 1.0 for i in free])
+    k = np.array([FILE_UNITS[layout.units[i]][1] for i in free])
     n_t = h.time.size
     return pd.DataFrame({
         "time_s": np.repeat(h.time, free.size),
         "object": np.tile(np.array(layout.objects)[free], n_t),
         "state": np.tile(np.array(layout.quantities)[free], n_t),
-        "unit": np.tile(np.where(k == 1.0, "m", "deg"), n_t),
+        "unit": np.tile(np.array([FILE_UNITS[layout.units[i]][0] for i in free]), n_t),
         "estimate": (h.estimate[:, free] * k).reshape(-1),
         "sigma": (h.sigma[:, free] * k).reshape(-1),
     })

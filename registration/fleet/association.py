@@ -69,8 +69,9 @@ class AssociationOptions:
     min_track_plots, min_tracklet_plots: shorter tracks are clutter, shorter pieces are left out.
     max_iterations: association passes at most, the last one included (1: a single pass under
     the starting covariance). initial_sigma_attitude, initial_sigma_angle_bias
-    (rad), initial_sigma_range_bias (m): the covariance of the first pass for states without a
-    finite prior in the tables. iteration_plots: the passes, and the solves between them, use only
+    (rad), initial_sigma_range_bias (m) and, for the extended errors, initial_sigma_range_gain
+    (dimensionless), initial_sigma_time_bias (s), initial_sigma_position (m per east, north, up
+    axis): the covariance of the first pass for states without a finite prior in the tables. iteration_plots: the passes, and the solves between them, use only
     every k-th window, k such that these hold about this many plots; once the association stops
     changing there, one last pass covers all windows, with the sensors' tracks made again from the
     plots corrected by the estimate. The solves between passes stop at
@@ -90,6 +91,9 @@ class AssociationOptions:
     initial_sigma_attitude: float = float(np.radians(1.0))
     initial_sigma_angle_bias: float = float(np.radians(5.0))
     initial_sigma_range_bias: float = 500.0
+    initial_sigma_range_gain: float = 1.0e-3
+    initial_sigma_time_bias: float = 1.0
+    initial_sigma_position: float = 100.0
     iteration_plots: int = 20_000
     batch: BatchOptions = field(default_factory=BatchOptions)
 
@@ -101,6 +105,9 @@ class AssociationOptions:
                   "initial_sigma_attitude": self.initial_sigma_attitude > 0,
                   "initial_sigma_angle_bias": self.initial_sigma_angle_bias > 0,
                   "initial_sigma_range_bias": self.initial_sigma_range_bias > 0,
+                  "initial_sigma_range_gain": self.initial_sigma_range_gain > 0,
+                  "initial_sigma_time_bias": self.initial_sigma_time_bias > 0,
+                  "initial_sigma_position": self.initial_sigma_position > 0,
                   "iteration_plots": self.iteration_plots >= 1}
         bad = [k for k, ok in checks.items() if not ok]
         if bad:
@@ -127,7 +134,9 @@ def _initial_covariance(problem: FleetProblem, options: AssociationOptions) -> n
     layout = problem.layout
     default = {"heading_error": options.initial_sigma_attitude, "pitch_error": options.initial_sigma_attitude,
                "roll_error": options.initial_sigma_attitude, "range_bias": options.initial_sigma_range_bias,
-               "bearing_bias": options.initial_sigma_angle_bias, "elevation_bias": options.initial_sigma_angle_bias}
+               "bearing_bias": options.initial_sigma_angle_bias, "elevation_bias": options.initial_sigma_angle_bias,
+               "range_gain": options.initial_sigma_range_gain, "time_bias": options.initial_sigma_time_bias,
+               **{f"position_{a}": options.initial_sigma_position for a in ("east", "north", "up")}}
     prior = layout.prior_sigma
     sigma = np.where(np.isfinite(prior), prior, [default[q] for q in layout.quantities])
     return np.diag(sigma**2)
@@ -170,7 +179,7 @@ def _tracks(problem: FleetProblem, x: np.ndarray, options: AssociationOptions, a
     at = np.flatnonzero(sel)
     out = np.full(problem.n_plots, -1, dtype=np.int64)
     geom = plot_geometry(problem, x, at)
-    out[at] = sensor_tracks(problem.time[at], problem.sensor[at], geom, assigner,
+    out[at] = sensor_tracks(geom.time, problem.sensor[at], geom, assigner,
                             max_speed=options.max_speed, accel_sigma=options.accel_sigma,
                             gate_probability=options.gate_probability, max_missed=options.max_missed,
                             min_plots=options.min_track_plots)

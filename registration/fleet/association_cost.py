@@ -9,8 +9,16 @@ log-likelihood is ``0.5 (d2 + logdet)`` up to a constant.
   about ``r e^2 / 2`` horizontally, 400 m at 30 km and 10 deg): the residuals of the tracklet's
   first, middle and last plots against the group's line, in the sensor's own channels, through
   the generated ``fleet_residual`` (residual r, J = d r / d(p_ecef, att_err, bias)), covariance
-  ``A C_g A^T + R + D P D^T`` with A = J_p [I, tau I] and D = A G_g + J_x (the sensor's columns).
-  Channels not measured count neither in the distance nor in the determinant.
+  ``A C_g A^T + R + D P D^T`` with A = J_p [I, tau I, tau^2 I] and D = A G_g + J_x (the sensor's
+  columns). Channels not measured count neither in the distance nor in the determinant.
+
+A sensor's tracklets depend on its w states (w = 6: its platform's attitude errors and its
+biases; w = 11 with the extended errors: also its range gain, time bias and position error, the
+order of :func:`~registration.fleet.association_geometry.state_columns`). With the extended
+errors :func:`measurement_cost` uses ``fleet_residual_ext``, at the time each plot was seen
+(reported time minus the estimated time bias), with the platform's navigation and its rate then
+and the group curve's velocity there; its time-bias column then holds the target's and the
+platform's motion.
 """
 
 from __future__ import annotations
@@ -22,10 +30,6 @@ from registration.fleet.association_geometry import N_COEF, N_LINE
 from registration.fleet.problem import FleetProblem
 
 __all__ = ["group_covariances", "joint_covariance", "line_cost", "measurement_cost"]
-
-
-#: Size of the joint vector (group curve (a, b, c), the tracklet sensor's six states).
-N_JOINT = N_LINE + 6
 
 
 def _mahalanobis(d: np.ndarray, S: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -46,9 +50,9 @@ def group_covariances(cov: np.ndarray, G: np.ndarray, P: np.ndarray,
                       cols: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Per group curve (covariance ``cov`` (G, 9, 9), sensitivity ``G`` (G, 9, n)) under the states'
     covariance P (n, n), for the tracklets of one sensor whose platform's and own states are
-    ``cols`` (6,; -1: a channel the sensor does not measure): the curve's covariance with the
-    states' uncertainty ``cov + G P G^T`` (G, 9, 9), its covariance with the six states (G, 9, 6),
-    and the six states' covariance (6, 6) (0 in the rows and columns of index -1)."""
+    ``cols`` (w,; -1: a state the sensor does not have): the curve's covariance with the
+    states' uncertainty ``cov + G P G^T`` (G, 9, 9), its covariance with the w states (G, 9, w),
+    and the w states' covariance (w, w) (0 in the rows and columns of index -1)."""
     n = P.shape[0]
     GP = np.zeros((G.shape[0], N_LINE, n + 1))
     GP[:, :, :n] = G @ P
@@ -58,10 +62,11 @@ def group_covariances(cov: np.ndarray, G: np.ndarray, P: np.ndarray,
 
 
 def joint_covariance(groups: tuple[np.ndarray, np.ndarray, np.ndarray], g: np.ndarray) -> np.ndarray:
-    """(K, 15, 15) covariance of (group curve ``g`` (K,), the six states of the tracklets' sensor)
-    per pair, from :func:`group_covariances` ``groups``."""
+    """(K, 9 + w, 9 + w) covariance of (group curve ``g`` (K,), the w states of the tracklets'
+    sensor) per pair, from :func:`group_covariances` ``groups``."""
     curve, GP, P_s = groups
-    out = np.empty((g.size, N_JOINT, N_JOINT))
+    size = N_LINE + P_s.shape[0]
+    out = np.empty((g.size, size, size))
     out[:, :N_LINE, :N_LINE] = curve[g]
     cross = GP[g]
     out[:, :N_LINE, N_LINE:] = cross
@@ -71,9 +76,9 @@ def joint_covariance(groups: tuple[np.ndarray, np.ndarray, np.ndarray], g: np.nd
 
 
 def line_cost(tl, b: np.ndarray, G_b: np.ndarray, line: np.ndarray, joint: np.ndarray):
-    """(d2, logdet), each (K,), of K pairs: tracklets ``b`` (K,) with sensitivity ``G_b`` (K, 9, 6) to
-    their sensor's six states (their only nonzero columns), against group curves ``line`` (K, 9);
-    ``joint`` (K, 15, 15) from :func:`joint_covariance`. Covariance
+    """(d2, logdet), each (K,), of K pairs: tracklets ``b`` (K,) with sensitivity ``G_b`` (K, 9, w) to
+    their sensor's w states (their only nonzero columns), against group curves ``line`` (K, 9);
+    ``joint`` (K, 9 + w, 9 + w) from :func:`joint_covariance`. Covariance
     ``C_b + C_g + (G_b - G_g) P (G_b - G_g)^T``, written as ``C_b + W joint W^T`` with W = [I, -G_b]."""
     d = tl.line[b] - line
     W = np.concatenate([np.broadcast_to(np.eye(N_LINE), (b.size, N_LINE, N_LINE)), -G_b], axis=2)
@@ -84,9 +89,9 @@ def line_cost(tl, b: np.ndarray, G_b: np.ndarray, line: np.ndarray, joint: np.nd
 def measurement_cost(problem: FleetProblem, x: np.ndarray, tl, b: np.ndarray, cols: np.ndarray, line: np.ndarray,
                      joint: np.ndarray):
     """(d2, logdet), each (K,), of K pairs as :func:`line_cost`, in the channels of the tracklets'
-    sensor (module docstring; ``cols`` (6,) its platform's and its own state columns, -1 where
-    not measured), under the states ``x`` (n,). ``A C_g A^T + R + D P D^T`` is
-    written as ``W joint W^T + R`` with W = [A, J_x] (J_x: the sensor's six columns)."""
+    sensor (module docstring; ``cols`` (w,) its platform's and its own state columns, -1 where
+    it has none), under the states ``x`` (n,). ``A C_g A^T + R + D P D^T`` is written as
+    ``W joint W^T + R`` with W = [A, J_x] (J_x: the sensor's w columns)."""
     k_pairs = b.size
     plot = tl.rep[b].reshape(-1)
     tau = tl.rep_tau[b].reshape(-1)
@@ -95,12 +100,20 @@ def measurement_cost(problem: FleetProblem, x: np.ndarray, tl, b: np.ndarray, co
     p = (basis @ line[grp][..., None])[..., 0]
     xs = np.append(np.asarray(x, dtype=np.float64), 0.0)
     meas, mask = problem.meas[plot], problem.mask[plot]
-    att, bias = (np.tile(xs[c], (plot.size, 1)) for c in (cols[:3], cols[3:]))
+    att, bias = (np.tile(xs[c], (plot.size, 1)) for c in (cols[:3], cols[3:6]))
     lever = problem.sensor_lever[problem.sensor[plot]]
-    res, J = _codegen.get("fleet_residual")(p, *problem.nav[plot].T, att, bias, lever, *meas.T)[:2]
-    res, J = np.asarray(res).reshape(-1, 3), np.asarray(J).reshape(-1, 3, 9)
+    if cols.size == 6:
+        res, J = _codegen.get("fleet_residual")(p, *problem.nav[plot].T, att, bias, lever, *meas.T)[:2]
+    else:  # at the time seen: the group curve's velocity there (m/s), the platform's navigation and rate
+        rate_basis = np.concatenate([(k * tau ** max(k - 1, 0))[:, None, None] * np.eye(3) for k in range(N_COEF)],
+                                    axis=2) / tl.half_width
+        v = (rate_basis @ line[grp][..., None])[..., 0]
+        nav, rate = tl.rep_nav[b].reshape(-1, 6), tl.rep_rate[b].reshape(-1, 6)
+        res, J = _codegen.get("fleet_residual_ext")(p, v, *nav.T, rate, att, bias, xs[cols[6]], 0.0, xs[cols[8:11]],
+                                                    lever, *meas.T)[:2]
+    res, J = np.asarray(res).reshape(-1, 3), np.asarray(J).reshape(-1, 3, 3 + cols.size)
     res, J = np.where(mask, res, 0.0), np.where(mask[..., None], J, 0.0)
-    W = np.concatenate([J[:, :, :3] @ basis, J[:, :, 3:]], axis=2).reshape(k_pairs, 9, N_JOINT)
+    W = np.concatenate([J[:, :, :3] @ basis, J[:, :, 3:]], axis=2).reshape(k_pairs, 9, N_LINE + cols.size)
     sigma = np.nan_to_num(problem.sensor_sigma[problem.sensor[plot]], nan=1.0)
     S = W @ joint @ np.swapaxes(W, 1, 2) + np.eye(9) * (sigma**2).reshape(k_pairs, 9)[..., None]
     return _mahalanobis(res.reshape(k_pairs, 9), S)

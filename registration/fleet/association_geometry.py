@@ -9,6 +9,23 @@ placed as :mod:`registration.fleet.initial` places it (no range: :data:`ASSUMED_
 line of sight; no elevation: in the deck plane). Its position information is then
 ``J_p^T W J_p + I / UNCONSTRAINED_SIGMA_M^2`` (W = 1/sigma^2 on the measured channels): nearly no
 information along the unmeasured direction, so comparisons there are left to the other sensors.
+
+**Extended errors** (layout width 11: range gain, time bias, sensor position error east, north,
+up; :mod:`registration.fleet.layout`). Positions then come from ``fleet_plot2ecef_ext`` and the
+Jacobians from ``fleet_residual_ext`` (J = d residual / d(p_ecef, att_err, bias, gain, dt,
+pos_err), 3x14), and a plot of a sensor with a time bias ``dt`` belongs to the time it was seen,
+``t - dt`` (s; the reported time minus the estimated bias), with its platform's navigation at
+that time (:meth:`FleetProblem.navigation_at`). The tracks and tracklets use that time, on the
+common time axis of all sensors, so that the estimate lines the sensors' curves up.
+
+The time bias's column of ``dp_dx``, and of ``J`` here, is the platform's motion only
+(``fleet_residual_ext`` with the target velocity 0 and the navigation rates): a change of the
+estimate moves the navigation the plot is placed from (position and attitude), while the target
+the plot measured stays where it was. The target's own motion enters through the time stamp:
+the plot is re-stamped, which moves a tracklet along its own curve, and that term is the curve's
+derivative, added per tracklet from its fit (:mod:`registration.fleet.association_match`). Where
+a group's curve is compared with a sensor's own channels (:mod:`registration.fleet.association_cost`),
+both motions are in the generated column, the target's velocity coming from the group's curve.
 """
 
 from __future__ import annotations
@@ -23,7 +40,8 @@ from registration import _codegen
 from registration.fleet.initial import ASSUMED_RANGE_M
 from registration.fleet.problem import FleetProblem
 
-__all__ = ["N_COEF", "N_LINE", "UNCONSTRAINED_SIGMA_M", "PlotGeometry", "plot_geometry", "state_columns", "Assigner"]
+__all__ = ["N_COEF", "N_LINE", "UNCONSTRAINED_SIGMA_M", "PlotGeometry", "plot_geometry", "seen_navigation",
+           "state_columns", "time_biased", "Assigner"]
 
 #: Standard deviation (m) given to a plot position along a direction its sensor does not measure.
 UNCONSTRAINED_SIGMA_M = 1.0e5
@@ -37,10 +55,15 @@ FORBIDDEN = 1.0e12
 @dataclass(frozen=True)
 class PlotGeometry:
     """Per plot (N,): ``p_ecef`` (N, 3) m; ``info`` (N, 3, 3) 1/m^2 and ``cov`` (N, 3, 3) m^2 of the
-    position from the sensor noise; ``dp_dx`` (N, 3, 6) d p_ecef / d(att_err (3), bias (3)) of the
-    plot's platform and sensor; ``J`` (N, 3, 9) of ``fleet_residual`` at the position;
-    ``weight`` (N, 3) 1/sigma^2 of each channel (0 where not measured); ``plots`` (N,) the
-    problem's plot index of each row (increasing)."""
+    position from the sensor noise; ``dp_dx`` (N, 3, w) d p_ecef / d(the w states of
+    :func:`state_columns`: att_err (3), bias (3) and, when extended, range gain, time bias,
+    position error (3)) of the plot's platform and sensor (the time bias's column: the platform's
+    motion only, module docstring); ``J`` (N, 3, 3 + w) of ``fleet_residual`` or
+    ``fleet_residual_ext`` at the position; ``weight`` (N, 3) 1/sigma^2 of each channel (0 where
+    not measured); ``plots`` (N,) the problem's plot index of each row (increasing); ``time`` (N,)
+    s, the time the plot's target and platform were seen (the reported time minus the estimated
+    time bias); ``nav`` (N, 6) the platform's navigation then (rad, m) and ``rate`` (N, 6) its rate
+    (rad/s, m/s; 0 without time biases)."""
 
     p_ecef: np.ndarray
     info: np.ndarray
@@ -49,6 +72,9 @@ class PlotGeometry:
     J: np.ndarray
     weight: np.ndarray
     plots: np.ndarray
+    time: np.ndarray
+    nav: np.ndarray
+    rate: np.ndarray
 
     def rows(self, plots: np.ndarray) -> np.ndarray:
         """The rows of the problem's plots ``plots`` (each must be among :attr:`plots`)."""
@@ -56,26 +82,67 @@ class PlotGeometry:
 
 
 def state_columns(problem: FleetProblem, sel: np.ndarray | None = None) -> np.ndarray:
-    """(M, 6) state index of the attitude errors of the platform and the biases of the sensor of
-    plots ``sel`` (default all; -1 for a channel the sensor does not measure)."""
+    """(M, w) state index of the attitude errors of the platform and the biases of the sensor of
+    plots ``sel`` (default all) and, when the layout is extended (w = 11, else 6), the sensor's
+    range gain, time bias and east, north, up position errors (the order of the generated
+    functions' state inputs); -1 for a state the sensor does not have."""
     layout = problem.layout
     sensor = problem.sensor if sel is None else problem.sensor[sel]
-    return np.concatenate([layout.att_index[problem.sensor_platform[sensor]], layout.bias_index[sensor]], axis=1)
+    parts = [layout.att_index[problem.sensor_platform[sensor]], layout.bias_index[sensor]]
+    if layout.extended:
+        parts.append(layout.extended_index[sensor])
+    return np.concatenate(parts, axis=1)
+
+
+def time_biased(problem: FleetProblem) -> bool:
+    """True when some sensor of the problem has a time-bias state."""
+    return bool(problem.layout.extended and (problem.layout.time_bias_index >= 0).any())
+
+
+def seen_navigation(problem: FleetProblem, x: np.ndarray, sel: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(time (M,) s, nav (M, 6) rad/m, rate (M, 6) rad/s, m/s) of the problem's plots ``sel`` under
+    the states ``x`` (n,): the time each plot's target and platform were seen (reported time minus
+    the sensor's estimated time bias), the platform's navigation then and its rate (outside the
+    navigation's span, its nearest end). Without time biases: the reported time, the problem's
+    navigation and a rate of 0."""
+    if not time_biased(problem):
+        return problem.time[sel], problem.nav[sel], np.zeros((np.size(sel), 6))
+    xs = np.append(np.asarray(x, dtype=np.float64), 0.0)
+    t = problem.time[sel] - xs[problem.layout.time_bias_index[problem.sensor[sel]]]
+    nav, rate, _ = problem.navigation_at(t, sel)
+    return t, nav, rate
+
+
+def _positions(problem: FleetProblem, xs: np.ndarray, cols: np.ndarray, sel: np.ndarray, nav: np.ndarray,
+               rate: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(p_ecef (M, 3) m, J (M, 3, 3 + w)) of plots ``sel`` with states ``xs`` (n + 1,, 0 last)."""
+    att, bias = xs[cols[:, :3]], xs[cols[:, 3:6]]
+    mask, meas = problem.mask[sel], problem.meas[sel]
+    lever = problem.sensor_lever[problem.sensor[sel]]
+    r = np.where(mask[:, 0], meas[:, 0], ASSUMED_RANGE_M + bias[:, 0])
+    e = np.where(mask[:, 2], meas[:, 2], bias[:, 2])
+    if cols.shape[1] == 6:
+        p = np.asarray(_codegen.get("fleet_plot2ecef")(*nav.T, att, bias, lever, r, meas[:, 1], e)[0]).reshape(-1, 3)
+        J = _codegen.get("fleet_residual")(p, *nav.T, att, bias, lever, r, meas[:, 1], e)[1]
+        return p, np.asarray(J).reshape(-1, 3, 9)
+    gain, pos_err = xs[cols[:, 6]], xs[cols[:, 8:11]]
+    p = _codegen.get("fleet_plot2ecef_ext")(*nav.T, att, bias, gain, pos_err, lever, r, meas[:, 1], e)[0]
+    p = np.asarray(p).reshape(-1, 3)
+    # the target velocity 0: the time bias's column is the platform's motion (module docstring)
+    J = _codegen.get("fleet_residual_ext")(p, np.zeros(3), *nav.T, rate, att, bias, gain, 0.0, pos_err, lever, r,
+                                           meas[:, 1], e)[1]
+    return p, np.asarray(J).reshape(-1, 3, 14)
 
 
 def plot_geometry(problem: FleetProblem, x: np.ndarray, sel: np.ndarray | None = None) -> PlotGeometry:
     """The geometry of the problem's plots ``sel`` (increasing indices; default all) under the
-    states ``x`` (n,) rad/m."""
+    states ``x`` (n,) rad/m (and 1, s with the extended errors)."""
     sel = np.arange(problem.n_plots) if sel is None else np.asarray(sel)
     xs = np.append(np.asarray(x, dtype=np.float64), 0.0)  # index -1 (absent channel) reads 0
     cols = state_columns(problem, sel)
-    att, bias = xs[cols[:, :3]], xs[cols[:, 3:]]
-    mask, meas, nav = problem.mask[sel], problem.meas[sel], problem.nav[sel]
-    lever = problem.sensor_lever[problem.sensor[sel]]
-    r = np.where(mask[:, 0], meas[:, 0], ASSUMED_RANGE_M + bias[:, 0])
-    e = np.where(mask[:, 2], meas[:, 2], bias[:, 2])
-    p = np.asarray(_codegen.get("fleet_plot2ecef")(*nav.T, att, bias, lever, r, meas[:, 1], e)[0]).reshape(-1, 3)
-    J = np.asarray(_codegen.get("fleet_residual")(p, *nav.T, att, bias, lever, r, meas[:, 1], e)[1]).reshape(-1, 3, 9)
+    t, nav, rate = seen_navigation(problem, x, sel)
+    p, J = _positions(problem, xs, cols, sel, nav, rate)
+    mask = problem.mask[sel]
     sigma = np.nan_to_num(problem.sensor_sigma[problem.sensor[sel]], nan=np.inf)
     weight = np.where(mask, 1.0 / sigma**2, 0.0)
     Jp, Jx = J[:, :, :3], J[:, :, 3:]
@@ -83,7 +150,7 @@ def plot_geometry(problem: FleetProblem, x: np.ndarray, sel: np.ndarray | None =
     info = JtW @ Jp + np.eye(3) / UNCONSTRAINED_SIGMA_M**2
     cov = np.linalg.inv(info)
     dp_dx = -cov @ (JtW @ Jx)
-    return PlotGeometry(p, info, cov, dp_dx, J, weight, sel)
+    return PlotGeometry(p, info, cov, dp_dx, J, weight, sel, t, nav, rate)
 
 
 class Assigner:

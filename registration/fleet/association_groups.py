@@ -75,7 +75,7 @@ def _costs(problem: FleetProblem, x, tl, b: np.ndarray, gi: np.ndarray, curves, 
     line, cov, G = curves
     cols = state_columns(problem, tl.rep[b[:1], 0])[0]
     groups = group_covariances(cov, G, P, cols)
-    if full:  # the tracklets' sensitivity to their own six states, their only nonzero columns
+    if full:  # the tracklets' sensitivity to their sensor's w states, their only nonzero columns
         G_b = np.where(cols >= 0, tl.G[:, :, np.maximum(cols, 0)], 0.0)
     d2, logdet = np.empty(b.size), np.empty(b.size)
     for a in range(0, b.size, PAIR_CHUNK):

@@ -10,6 +10,16 @@ the tracklets across sensors, window by window, is :mod:`registration.fleet.asso
 
 Groups of consecutive windows are chained where they share sensor tracks (an assignment that
 maximises the shared tracks), and a chain is one target.
+
+Time: a plot's time here is the time its target was seen, the reported time minus its sensor's
+estimated time bias (:attr:`PlotGeometry.time`; the reported time when no sensor has one), so
+the windows and tau are on one time axis for all sensors. With a time bias ``dt`` a plot's
+sensitivity has two parts. Its position moves with the platform's motion (the plot geometry's
+column). Its time stamp ``t - dt`` moves too, by ``-d(dt)``: the tracklet's curve, fitted to
+samples all shifted by the same amount, is its own curve shifted in time, ``p(tau + d(dt) / h)``
+(h the half-width), so the curve's sensitivity to ``dt`` gains the curve's derivative,
+``(b, 2c, 0) / h`` in the coefficients ``(a, b, c)``: the target's own motion, which the tracklet
+carries and the single plot cannot.
 """
 
 from __future__ import annotations
@@ -22,14 +32,17 @@ from scipy.stats import chi2
 from registration.fleet.association_geometry import N_COEF, N_LINE, Assigner, PlotGeometry, state_columns
 from registration.fleet.problem import FleetProblem
 
-__all__ = ["Tracklets", "make_tracklets", "chain_groups"]
+__all__ = ["Tracklets", "make_tracklets", "chain_groups", "time_shift_sensitivity"]
 
 
 @dataclass(frozen=True)
 class Tracklets:
     """Per tracklet (T,): ``track`` id, ``window`` index, ``sensor`` index, ``line`` (T, 9) =
     (a, b, c) m, ``cov`` (T, 9, 9), ``G`` (T, 9, n) d line / d states; ``rep`` (T, 3): its first,
-    middle and last plot; ``of_plot`` (N,): the tracklet of each plot, -1 for none."""
+    middle and last plot, ``rep_tau`` (T, 3) their tau, ``rep_nav`` (T, 3, 6) and ``rep_rate``
+    (T, 3, 6) their platform's navigation (rad, m) and its rate (rad/s, m/s) at the time they were
+    seen; ``of_plot`` (N,): the tracklet of each plot, -1 for none; ``half_width`` (s) of the
+    windows (tau = (t - centre) / half_width)."""
 
     track: np.ndarray
     window: np.ndarray
@@ -40,6 +53,9 @@ class Tracklets:
     rep: np.ndarray
     rep_tau: np.ndarray
     of_plot: np.ndarray
+    rep_nav: np.ndarray
+    rep_rate: np.ndarray
+    half_width: float
 
 
 def _piece_starts(track: np.ndarray, window: np.ndarray) -> np.ndarray:
@@ -51,7 +67,8 @@ def _piece_starts(track: np.ndarray, window: np.ndarray) -> np.ndarray:
 
 def _fit_pieces(geom: PlotGeometry, order: np.ndarray, start: np.ndarray, tau: np.ndarray):
     """Information-weighted quadratic fit of each piece (plots ``order`` split at ``start``):
-    (coefficients (K, L), covariance (K, L, L), sensitivity sums (K, L, 6), fit chi-square (K,))."""
+    (coefficients (K, L), covariance (K, L, L), sensitivity (K, L, w) to the plots' w states
+    (the plot geometry's columns only), fit chi-square (K,))."""
     at = geom.rows(order)
     info = geom.info[at]
     power = tau[:, None] ** np.arange(2 * N_COEF - 1)[None, :]  # (M, 5): 1, tau, ..., tau^4
@@ -63,7 +80,7 @@ def _fit_pieces(geom: PlotGeometry, order: np.ndarray, start: np.ndarray, tau: n
     N = moments[:, a + b].reshape(-1, N_COEF, N_COEF, 3, 3).transpose(0, 1, 3, 2, 4).reshape(-1, N_LINE, N_LINE)
     p = geom.p_ecef[at]
     rhs = (basis[:, :, None] * (info @ p[..., None])[..., 0][:, None, :]).reshape(-1, N_LINE)
-    sens = (basis[:, :, None, None] * (info @ geom.dp_dx[at])[:, None]).reshape(-1, N_LINE, 6)
+    sens = (basis[:, :, None, None] * (info @ geom.dp_dx[at])[:, None]).reshape(-1, N_LINE, geom.dp_dx.shape[2])
     rhs, sens = (np.add.reduceat(v, start, axis=0) for v in (rhs, sens))
     cov = np.linalg.inv(N)
     line = (cov @ rhs[..., None])[..., 0]
@@ -87,7 +104,9 @@ def make_tracklets(problem: FleetProblem, geom: PlotGeometry, track: np.ndarray,
     all three channels are tested: the deck-plane positions of a 2-D radar's plots wobble with the
     roll whatever the estimate."""
     n = problem.layout.n
-    window = np.floor(problem.time / window_s).astype(np.int64)
+    seen = problem.time.copy()
+    seen[geom.plots] = geom.time  # the time each plot was seen (module docstring)
+    window = np.floor(seen / window_s).astype(np.int64)
     in_track = np.flatnonzero(track >= 0)
     order = in_track[np.lexsort((window[in_track], track[in_track]))]
     start = _piece_starts(track[order], window[order])
@@ -96,7 +115,7 @@ def make_tracklets(problem: FleetProblem, geom: PlotGeometry, track: np.ndarray,
     key_t, key_w = track[order], window[order]
     start = _piece_starts(key_t, key_w)
     count = np.diff(np.r_[start, order.size])
-    tau = (problem.time[order] - (key_w + 0.5) * window_s) / (0.5 * window_s)
+    tau = (seen[order] - (key_w + 0.5) * window_s) / (0.5 * window_s)
     line, cov, local, chi = _fit_pieces(geom, order, start, tau)
     values = np.add.reduceat(problem.mask[order].sum(axis=1), start)
     dof = values - N_LINE
@@ -106,17 +125,29 @@ def make_tracklets(problem: FleetProblem, geom: PlotGeometry, track: np.ndarray,
         keep &= ~full | (dof < 1) | (chi < chi2.ppf(gate_probability, np.maximum(dof, 1)))
     line, cov, local = line[keep], cov[keep], local[keep]
     cols = state_columns(problem, order[start[keep]])
+    if cols.shape[1] > 6:  # the time stamps move with the time bias: the curve's own motion
+        local[:, :, 7] += time_shift_sensitivity(line, 0.5 * window_s)
     G = np.zeros((int(keep.sum()), N_LINE, n + 1))
     rows = np.arange(cols.shape[0])
-    for k in range(6):
+    for k in range(cols.shape[1]):
         G[rows, :, cols[:, k]] += local[:, :, k]  # column -1 (absent channel) lands in the spare
     tracklet_of_piece = np.where(keep, np.cumsum(keep) - 1, -1)
     of_plot = np.full(problem.n_plots, -1, dtype=np.int64)
     of_plot[order] = np.repeat(tracklet_of_piece, count)
     first, last = start[keep], start[keep] + count[keep] - 1
     at = np.stack([first, (first + last) // 2, last], axis=1)
+    rep_rows = geom.rows(order[at])
     return Tracklets(key_t[first], key_w[first], problem.sensor[order[first]], line, cov, G[:, :, :n], order[at],
-                     tau[at], of_plot)
+                     tau[at], of_plot, geom.nav[rep_rows], geom.rate[rep_rows], 0.5 * window_s)
+
+
+def time_shift_sensitivity(line: np.ndarray, half_width: float) -> np.ndarray:
+    """(K, 9) d line / d(time bias) of quadratics ``line`` (K, 9) = (a, b, c) m whose samples are
+    stamped at the reported time minus the time bias: (b, 2c, 0) / ``half_width`` (m/s), the
+    curve's motion (module docstring)."""
+    out = np.zeros_like(line)
+    out[:, :6] = np.concatenate([line[:, 3:6], 2.0 * line[:, 6:9]], axis=1) / half_width
+    return out
 
 
 def chain_groups(tl: Tracklets, group: np.ndarray, assigner: Assigner) -> np.ndarray:

@@ -69,5 +69,5 @@ def solve_batch(problem: FleetProblem, options: BatchOptions | None = None, x0: 
         undetermined=undetermined, converged=fit_.converged, iterations=fit_.iterations,
         plot_target=_per_input_row(problem, np.array(problem.target_ids, dtype=str)[problem.target]),
         plot_sensor=_per_input_row(problem, np.array(problem.sensor_ids, dtype=str)[problem.sensor]),
-        cost_history=fit_.cost_history,
+        cost_history=fit_.cost_history, warnings=fit_.warnings,
     )

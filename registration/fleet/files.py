@@ -13,7 +13,10 @@ File columns (one row per item; an empty cell is "not given"):
   ``sigma_elevation_deg`` (empty: channel not measured); optional prior sigmas of the biases
   ``prior_range_bias_m``, ``prior_bearing_bias_deg``, ``prior_elevation_bias_deg`` (empty or
   ``inf``: no prior; 0: known to be zero, held fixed) and lever arm ``lever_x_m``, ``lever_y_m``,
-  ``lever_z_m`` (deck frame: starboard, bow, up; default 0);
+  ``lever_z_m`` (deck frame: starboard, bow, up; default 0); optional extended errors, each
+  modelled only when its column is there: ``prior_range_gain`` (dimensionless, at most 0.1),
+  ``prior_time_bias_s``, ``prior_position_m`` (one sigma for east, north and up), same meaning
+  (docs/fleet.md, "Sensor error model");
 * ``platforms`` (optional): ``platform``, ``prior_heading_deg``, ``prior_pitch_deg``,
   ``prior_roll_deg`` (same meaning as the bias priors);
 * ``reference`` (optional): ``time_s``, ``target`` and the known position as ``lat_deg``,
@@ -61,7 +64,10 @@ FILE_COLUMNS = {
                 ("prior_bearing_bias_deg", "prior_bearing", "deg", False, (0.0, math.inf)),
                 ("prior_elevation_bias_deg", "prior_elevation", "deg", False, (0.0, math.inf)),
                 ("lever_x_m", "lever_x", "m", False, (-1e4, 1e4)), ("lever_y_m", "lever_y", "m", False, (-1e4, 1e4)),
-                ("lever_z_m", "lever_z", "m", False, (-1e4, 1e4))),
+                ("lever_z_m", "lever_z", "m", False, (-1e4, 1e4)),
+                ("prior_range_gain", "prior_range_gain", "dimensionless", False, (0.0, 0.1)),
+                ("prior_time_bias_s", "prior_time_bias", "s", False, (0.0, math.inf)),
+                ("prior_position_m", "prior_position", "m", False, (0.0, math.inf))),
     "platforms": (("platform", "platform", "id", True, None),
                   ("prior_heading_deg", "prior_heading", "deg", False, (0.0, math.inf)),
                   ("prior_pitch_deg", "prior_pitch", "deg", False, (0.0, math.inf)),

@@ -1,8 +1,8 @@
 """Starting values of the batch solver: registration errors zero, each target window at the mean
 of the positions its plots give with zero errors.
 
-Each plot becomes an ECEF position through the generated ``fleet_plot2ecef`` with zero attitude
-errors and biases. A plot without range (passive angle sensor, bearing-only) is placed at
+Each plot becomes an ECEF position through :func:`registration.fleet.corrected.corrected_positions`
+with zero registration errors. A plot without range (passive angle sensor, bearing-only) is placed at
 :data:`ASSUMED_RANGE_M` along its line of sight, and one without elevation at elevation 0 (the
 deck plane). A window's constant coefficient is the mean over its plots that have a range (over
 all its plots if none has); the higher coefficients start at zero. The solver then refines the
@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration import _codegen
+from registration.fleet.corrected import corrected_positions
 from registration.fleet.normal import Design
 
 __all__ = ["ASSUMED_RANGE_M", "plot_positions", "initial_coefficients"]
@@ -24,24 +24,12 @@ ASSUMED_RANGE_M = 30_000.0
 
 def plot_positions(design: Design, x: np.ndarray | None = None) -> np.ndarray:
     """(rows, 3) ECEF position of each design row, corrected by states ``x`` (default zeros)."""
-    n = design.nav.shape[0]
     xs = np.zeros(design.n_state + 1) if x is None else np.append(x, 0.0)
     has = design.weight > 0
     r = np.where(has[:, 0], design.meas[:, 0], ASSUMED_RANGE_M)  # an absent channel's bias is 0
     e = np.where(has[:, 2], design.meas[:, 2], 0.0)
-    nav = design.nav
-    if design.extended:  # the position where the platform was when the plot was seen
-        state = design.state
-        if design.time_biased:
-            nav = design.seen_at(design.seen_time(xs[:-1]))[0]
-        p = _codegen.get("fleet_plot2ecef_ext")(
-            nav[:, 0], nav[:, 1], nav[:, 2], nav[:, 3], nav[:, 4], nav[:, 5], xs[state[:, :3]], xs[state[:, 3:6]],
-            xs[state[:, 6]], xs[state[:, 8:11]], design.lever, r, design.meas[:, 1], e)[0]
-        return p.reshape(n, 3)
-    p = _codegen.get("fleet_plot2ecef")(
-        nav[:, 0], nav[:, 1], nav[:, 2], nav[:, 3], nav[:, 4], nav[:, 5],
-        xs[design.att_state], xs[design.bias_state], design.lever, r, design.meas[:, 1], e)[0]
-    return p.reshape(n, 3)
+    nav = design.seen_at(design.seen_time(xs[:-1]))[0] if design.time_biased else design.nav
+    return corrected_positions(nav, design.state, xs, design.lever, np.stack([r, design.meas[:, 1], e], axis=1))
 
 
 def initial_coefficients(design: Design, x: np.ndarray | None = None) -> np.ndarray:

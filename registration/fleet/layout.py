@@ -23,7 +23,8 @@ import numpy as np
 
 from registration.fleet.tables import ATTITUDE_ERRORS, CHANNEL_UNITS, CHANNELS, EXTENDED_ERRORS
 
-__all__ = ["EXTENDED_LABELS", "EXTENDED_UNITS", "REFERENCE_SCALE", "StateLayout", "make_layout", "state_scale"]
+__all__ = ["EXTENDED_LABELS", "EXTENDED_UNITS", "FILE_UNITS", "REFERENCE_SCALE", "StateLayout", "make_layout",
+           "state_scale"]
 
 #: Scale of a state without prior: 1 deg for angles, 1 km for ranges and positions, 1e-3 (1000 ppm)
 #: for range gains, 1 s for time biases.
@@ -31,6 +32,10 @@ REFERENCE_SCALE = {"rad": float(np.radians(1.0)), "m": 1000.0, "1": 1.0e-3, "s":
 #: Units and label words of the extended errors, in EXTENDED_ERRORS order.
 EXTENDED_UNITS = ("1", "s", "m", "m", "m")
 EXTENDED_LABELS = ("range gain", "time bias", "east position error", "north position error", "up position error")
+#: Unit of each state unit in files (estimates.csv, history.csv) and on the console, with the factor
+#: from the SI value: (file unit, factor, console unit, factor).
+FILE_UNITS = {"rad": ("deg", float(np.degrees(1.0)), "deg", float(np.degrees(1.0))), "m": ("m", 1.0, "m", 1.0),
+              "1": ("1", 1.0, "ppm", 1.0e6), "s": ("s", 1.0, "s", 1.0)}
 
 
 def state_scale(layout) -> np.ndarray:

@@ -13,9 +13,14 @@ vertical axis, so only ``heading error + bearing bias`` of each sensor is identi
 direction ``(+1 on the heading error, -1 on each bearing bias)`` is tested directly and, when
 each state alone is observable, reported as such: unobservable below 0.01, "barely separated"
 (weak) below 10. Lever arms and the earth's curvature give a level platform's heading error a
-little information of its own, so the weak case is common. Every
-remaining weak or unobservable direction (orthogonal to the named ones) is named by its dominant
-states.
+little information of its own, so the weak case is common. A second structural direction is tested
+the same way when sensors have time biases: all time biases moving together (a clock common to the
+fleet), which only reference positions and the platforms' own motion fix. Every remaining weak or
+unobservable direction (orthogonal to the named ones) is named by its dominant states and, where
+they are the extended errors of one sensor, explained in the user's terms (:func:`explain`): a
+range gain against a range bias (ranges spanning too little), a time bias against position errors
+or angle biases (targets all moving the same way), position errors against range and bearing
+biases (targets in a narrow sector).
 """
 
 from __future__ import annotations
@@ -27,7 +32,42 @@ from registration.core.observability import (
 )
 from registration.fleet.layout import state_scale
 
-__all__ = ["fleet_observability"]
+__all__ = ["explain", "fleet_observability"]
+
+#: Why a weak or unobservable direction dominated by these states is hard to see.
+_GAIN_BIAS = ("range gain and range bias are barely told apart: the plots span too narrow a range of ranges (a gain "
+              "times the mean range looks like a bias); ranges farther apart separate them")
+_TIME = ("time bias is barely told apart from position errors or angle biases: the targets all move the same way, so "
+         "a clock offset looks like a shift along their track; targets crossing in other directions, a manoeuvre or a "
+         "reference separate them")
+_CLOCK = ("time biases move together (a clock common to these sensors): reference positions, or platforms that move "
+          "or roll, fix it")
+_SECTOR = ("position errors are barely told apart from range and bearing biases: the targets lie in a narrow sector, "
+           "where a shift of the sensor looks like range and bearing biases; targets at other bearings separate them")
+_SHIFT = ("position errors move together, so the whole picture shifts with them: a reference position, or a sensor "
+          "whose position is known (prior 0), fixes it")
+_ATTITUDE = {"heading_error", "pitch_error", "roll_error"}
+
+
+def explain(quantities: dict) -> str | None:
+    """A reason in the user's terms for a poorly determined direction whose dominant states are
+    ``quantities`` {state name: quantity} (``A1:range_gain`` -> ``range_gain``), when they include
+    extended errors; None otherwise."""
+    q = set(quantities.values())
+    sensors = list(dict.fromkeys(n.split(":", 1)[0] for n, k in quantities.items() if k not in _ATTITUDE))
+    who = f"sensor{'s' if len(sensors) > 1 else ''} {', '.join(sensors)}"
+    if "range_gain" in q and q <= {"range_gain", "range_bias"}:
+        return f"{who}: {_GAIN_BIAS}"
+    if q == {"time_bias"} and len(sensors) > 1:
+        return f"{who}: {_CLOCK}"
+    if "time_bias" in q:
+        return f"{who}: {_TIME}"
+    if len(q) == 1 and q.pop().startswith("position_") and len(sensors) > 1:
+        return f"{who}: {_SHIFT}"
+    if any(x.startswith("position_") for x in quantities.values()) and {"range_bias", "bearing_bias"} & set(quantities.values()):
+        return f"{who}: {_SECTOR}"
+    return None
+
 
 def _level_patterns(layout, free: np.ndarray, sensor_platform: np.ndarray, platform_ids, sensor_ids):
     """(platform id, sensor ids, own-unit direction over the free states) per platform with a free
@@ -60,6 +100,17 @@ def _level_text(layout, pid: str, sensors: list, weak: bool) -> str:
 
 
 def _name(v_scaled: np.ndarray, d: np.ndarray, names, labels, eigenvalue: float, unobservable: bool) -> Combination:
+    """A generic direction (prior-scaled coordinates) named by its dominant states, with the reason
+    of :func:`explain` in front where it has one."""
+    comb = _name_states(v_scaled, d, names, labels, eigenvalue, unobservable)
+    v = np.abs(v_scaled) / np.abs(v_scaled).max()
+    why = explain({names[i]: names[i].split(":", 1)[1] for i in np.flatnonzero(v >= 0.5)})
+    if why is None:
+        return comb
+    return Combination(comb.coefficients, comb.eigenvalue, f"{why} ({comb.text})", comb.identifiable_sum)
+
+
+def _name_states(v_scaled: np.ndarray, d: np.ndarray, names, labels, eigenvalue: float, unobservable: bool) -> Combination:
     """A generic direction (prior-scaled coordinates) named by its dominant states."""
     v = v_scaled / np.abs(v_scaled).max()
     idx = [i for i in np.argsort(-np.abs(v)) if abs(v[i]) >= 0.15]
@@ -76,21 +127,35 @@ def _name(v_scaled: np.ndarray, d: np.ndarray, names, labels, eigenvalue: float,
                            (names[i], names[j]) if kind == "sum" else None)
     terms = ", ".join(f"{labels[k]} ({own[k]:+.3g})" for k in idx)
     head = "the data do not see a joint change of" if unobservable else "poorly determined joint change of"
-    return Combination(coeffs, float(eigenvalue), f"{head} {terms} (relative sizes in rad and m)")
+    return Combination(coeffs, float(eigenvalue), f"{head} {terms} (relative sizes in the states' units)")
+
+
+def _common_clock(layout, free: np.ndarray):
+    """(texts, own-unit direction) of all free time biases moving together, when two or more."""
+    pos = {int(i): k for k, i in enumerate(free)}
+    idx = [pos[int(i)] for i in layout.time_bias_index if int(i) in pos]
+    if len(idx) < 2:
+        return []
+    v = np.zeros(free.size)
+    v[idx] = 1.0
+    what = ("the time biases of all sensors move together (a clock common to the fleet): only their differences are "
+            "determined; reference positions, or platforms that move, fix the common clock")
+    return [((what, "barely determined: " + what), v)]
 
 
 def _named_structural(null: np.ndarray, weak: np.ndarray, layout, free, patterns):
-    """The level-platform patterns that lie mostly in the unobservable (or weak) eigen-directions."""
+    """The structural patterns ((unobservable text, weak text), own-unit direction, scaled direction)
+    that lie mostly in the unobservable (or weak) eigen-directions."""
     named = []
-    for pid, sensors, v, vs in patterns:
+    for texts, v, vs in patterns:
         f_null = float(np.sum((null.T @ vs) ** 2))
         f_weak = float(np.sum((weak.T @ vs) ** 2))
         if f_null + f_weak <= 0.5:
             continue
         unobservable = f_null > 0.5
         coeffs = {layout.names[free[k]]: float(v[k]) for k in np.flatnonzero(v)}
-        pair = tuple(coeffs) if len(coeffs) == 2 else None
-        comb = Combination(coeffs, float(f_null), _level_text(layout, pid, sensors, not unobservable), pair)
+        pair = tuple(coeffs) if len(coeffs) == 2 and texts[2] else None
+        comb = Combination(coeffs, float(f_null), texts[0] if unobservable else texts[1], pair)
         named.append((unobservable, comb, vs))
     return named
 
@@ -148,8 +213,10 @@ def fleet_observability(information: np.ndarray, free: np.ndarray, layout, senso
     w, v = np.linalg.eigh(Js) if free.size else (np.zeros(0), np.zeros((0, 0)))
     null, weak = v[:, w < UNOBSERVABLE_BELOW], v[:, (w >= UNOBSERVABLE_BELOW) & (w < WEAK_BELOW)]
     report = ObservabilityReport(singular_values=np.clip(w, 0, None)[::-1])
-    patterns = [(pid, sensors, vec, vec / d / np.linalg.norm(vec / d))
+    patterns = [((_level_text(layout, pid, sensors, False), _level_text(layout, pid, sensors, True), True), vec)
                 for pid, sensors, vec in _level_patterns(layout, free, sensor_platform, platform_ids, sensor_ids)]
+    patterns += [((*texts, False), vec) for texts, vec in _common_clock(layout, free)]
+    patterns = [(texts, vec, vec / d / np.linalg.norm(vec / d)) for texts, vec in patterns]
     named = _named_structural(null, weak, layout, free, patterns)
     for is_unobs, comb, _ in named:
         (report.unobservable if is_unobs else report.weak).append(comb)

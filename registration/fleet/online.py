@@ -75,8 +75,9 @@ class OnlineOptions:
     window_s, degree: the target windows, as in the batch (:class:`~registration.fleet.solver.BatchOptions`);
         an epoch is one window of the absolute time grid. epoch_s: with ``window_s = 0``, the
         length (s) of an epoch of instants (0: one instant per epoch). q_angle (rad/sqrt(s)), q_range
-        (m/sqrt(s)): random-walk process noise of the states. max_iterations: of each epoch's
-        coefficient fit.
+        (m/sqrt(s); range biases and position errors), q_gain (1/sqrt(s); range gains), q_time
+        (s/sqrt(s); time biases): random-walk process noise of the states. max_iterations: of each
+        epoch's coefficient fit.
     """
 
     window_s: float = 20.0
@@ -84,11 +85,13 @@ class OnlineOptions:
     epoch_s: float = 0.0
     q_angle: float = 1e-6
     q_range: float = 0.01
+    q_gain: float = 1e-9
+    q_time: float = 1e-5
     max_iterations: int = 20
 
     def __post_init__(self):
         BatchOptions(window_s=self.window_s, degree=self.degree if self.window_s > 0 else 0)  # same checks
-        for name in ("epoch_s", "q_angle", "q_range"):
+        for name in ("epoch_s", "q_angle", "q_range", "q_gain", "q_time"):
             v = getattr(self, name)
             if not (np.isfinite(v) and v >= 0):
                 raise ValueError(f"{name}: expected a finite value >= 0, got {v}")
@@ -128,7 +131,8 @@ class FleetFilter:
                                   self.specs.prior, self.specs.extended_prior)
         self.x, self.P = _start(self.layout, prior)
         self.information = np.zeros((self.layout.n, self.layout.n))
-        self._q2 = np.array([self.options.q_angle if u == "rad" else self.options.q_range for u in self.layout.units]) ** 2
+        q = {"rad": self.options.q_angle, "m": self.options.q_range, "1": self.options.q_gain, "s": self.options.q_time}
+        self._q2 = np.array([q[u] for u in self.layout.units]) ** 2
         self._buffer = {k: [] for k in _BUFFER}
         self._n_read = 0
         self._closed_key: int | None = None

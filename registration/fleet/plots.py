@@ -2,7 +2,8 @@
 bars or the online estimates over time with their 2-sigma bands, a map of the plots before and
 after correction, and the histogram of normalised residuals.
 
-Angles are drawn in degrees and ranges in metres; positions as longitude/latitude in degrees.
+Angles are drawn in degrees, ranges and position errors in metres, range gains in ppm, time biases
+in seconds; positions as longitude/latitude in degrees.
 """
 
 from __future__ import annotations
@@ -11,9 +12,10 @@ from pathlib import Path
 
 import numpy as np
 
-from registration import _codegen
 from registration.core.plotting import pyplot
 from registration.core.frames import ecef2geodetic
+from registration.fleet.corrected import corrected_positions
+from registration.fleet.layout import FILE_UNITS
 from registration.fleet.problem import FleetProblem
 from registration.fleet.result import BatchResult
 
@@ -22,52 +24,56 @@ __all__ = ["corrected_plot_positions", "plot_estimates", "plot_history", "plot_m
 
 def corrected_plot_positions(problem: FleetProblem, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """ECEF positions (M, 3) m of the plots that have a range, corrected by the states ``x`` (n,)
-    (rad, m; zeros: as measured), and their indices into the problem's plots (M,). A plot without
-    elevation (2-D radar) is placed in its deck plane (elevation 0 after correction)."""
+    (rad, m, 1, s; zeros: as measured), and their indices into the problem's plots (M,). A plot
+    without elevation (2-D radar) is placed in its deck plane (elevation 0 after correction); with
+    a time bias the platform is taken where it was when the plot was seen."""
     layout = problem.layout
     sel = np.flatnonzero(problem.mask[:, 0])
-    xs = np.append(np.asarray(x, dtype=np.float64), 0.0)  # index -1 (absent channel) reads 0
-    att = xs[layout.att_index[problem.platform[sel]]]
-    bias = xs[layout.bias_index[problem.sensor[sel]]]
-    meas = problem.meas[sel]
-    e = np.where(problem.mask[sel, 2], meas[:, 2], bias[:, 2])
+    xs = np.append(np.asarray(x, dtype=np.float64), 0.0)  # the sink (absent state) reads 0
+    state = layout.sensor_states(problem.sensor[sel], problem.sensor_platform)
+    meas = problem.meas[sel].copy()
+    meas[:, 2] = np.where(problem.mask[sel, 2], meas[:, 2], xs[state[:, 5]])
     nav = problem.nav[sel]
-    p = _codegen.get("fleet_plot2ecef")(*nav.T, att, bias, problem.sensor_lever[problem.sensor[sel]],
-                                        meas[:, 0], meas[:, 1], e)[0]
-    return np.asarray(p).reshape(-1, 3), sel
+    if layout.extended and (layout.time_bias_index >= 0).any():
+        nav = problem.navigation_at(problem.time[sel] - xs[state[:, 7]], sel)[0]
+    p = corrected_positions(nav, state, xs, problem.sensor_lever[problem.sensor[sel]], meas)
+    return p, sel
 
 
-def _display(result: BatchResult) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Estimates and sigmas in degrees or metres, and which states are angles."""
-    angle = np.array([u == "rad" for u in result.layout.units])
-    k = np.where(angle, np.degrees(1.0), 1.0)
-    return result.estimate * k, result.sigma * k, angle
+def _display(layout, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``values`` (..., n) in display units (deg, m, ppm, s) and the display unit of each state."""
+    k = np.array([FILE_UNITS[u][3] for u in layout.units])
+    return values * k, np.array([FILE_UNITS[u][2] for u in layout.units])
 
 
 def plot_estimates(result: BatchResult, path, truth: dict | None = None) -> Path:
-    """Each state's final estimate with its 2-sigma (Cramér-Rao) bar; angles (deg) on the left
-    panel, range biases (m) on the right; ``truth`` {state name: value (rad, m)} drawn as crosses."""
+    """Each state's final estimate with its 2-sigma (Cramér-Rao) bar, one panel per unit (angles
+    in deg, range biases and positions in m, range gains in ppm, time biases in s); ``truth``
+    {state name: value (rad, m, 1, s)} drawn as crosses."""
     plt = pyplot()
-    est, sig, angle = _display(result)
+    est, unit = _display(result.layout, result.estimate)
+    sig, _ = _display(result.layout, result.sigma)
     names = np.array(result.layout.names)
-    fig, axes = plt.subplots(1, 2, figsize=(12, max(4.0, 0.32 * angle.sum() + 1.5)),
-                             gridspec_kw={"width_ratios": [max(int(angle.sum()), 1), max(int((~angle).sum()), 1)]})
-    for ax, sel, unit in ((axes[0], angle, "deg"), (axes[1], ~angle, "m")):
-        idx = np.flatnonzero(sel)
+    true = None if truth is None else _display(result.layout, np.array([truth[n] for n in names]))[0]
+    panels = [u for u in ("deg", "m", "ppm", "s") if (unit == u).any()]
+    counts = [int((unit == u).sum()) for u in panels]
+    fig, axes = plt.subplots(1, len(panels), figsize=(6 * len(panels), max(4.0, 0.32 * max(counts) + 1.5)),
+                             gridspec_kw={"width_ratios": counts}, squeeze=False)
+    for ax, u in zip(axes[0], panels):
+        idx = np.flatnonzero(unit == u)
         y = np.arange(idx.size)
         bar = np.where(np.isfinite(sig[idx]), 2 * sig[idx], 0.0)
         colours = ["tab:blue" if result.status[n] in ("identifiable", "fixed") else "tab:red" for n in names[idx]]
         ax.barh(y, est[idx], xerr=bar, color=colours, alpha=0.6, capsize=3, label="estimate ± 2σ")
-        if truth is not None:
-            k = np.degrees(1.0) if unit == "deg" else 1.0
-            ax.plot([truth[n] * k for n in names[idx]], y, "kx", label="truth")
+        if true is not None:
+            ax.plot(true[idx], y, "kx", label="truth")
         ax.set_yticks(y)
         ax.set_yticklabels(names[idx], fontsize=8)
         ax.invert_yaxis()
         ax.axvline(0, color="k", lw=0.5)
-        ax.set_xlabel(unit)
+        ax.set_xlabel(u)
         ax.grid(alpha=0.3, axis="x")
-    axes[0].legend(fontsize=8)
+    axes[0][0].legend(fontsize=8)
     fig.suptitle("Batch estimates with 2σ bars (red: weak or not identifiable)")
     fig.tight_layout()
     fig.savefig(path, dpi=100)
@@ -76,7 +82,7 @@ def plot_estimates(result: BatchResult, path, truth: dict | None = None) -> Path
 
 
 def plot_history(result, path, truth: dict | None = None) -> Path:
-    """The online filter's estimate of every free state over time (deg or m) with its 2-sigma band,
+    """The online filter's estimate of every free state over time (deg, m, ppm or s) with its 2-sigma band,
     one panel per state; ``truth`` {state name: value (rad, m)} drawn as a dashed line."""
     plt = pyplot()
     layout, h = result.layout, result.history
@@ -85,13 +91,13 @@ def plot_history(result, path, truth: dict | None = None) -> Path:
     rows = max(1, -(-free.size // cols))
     fig, axes = plt.subplots(rows, cols, figsize=(4 * cols, 2.4 * rows), sharex=True, squeeze=False)
     for ax, i in zip(axes.flat, free):
-        k = np.degrees(1.0) if layout.units[i] == "rad" else 1.0
+        _, _, unit, k = FILE_UNITS[layout.units[i]]
         est, sig = h.estimate[:, i] * k, h.sigma[:, i] * k
         ax.fill_between(h.time, est - 2 * sig, est + 2 * sig, color="tab:blue", alpha=0.25, lw=0)
         ax.plot(h.time, est, color="tab:blue", lw=1)
         if truth is not None:
             ax.axhline(truth[layout.names[i]] * k, color="k", ls="--", lw=0.8)
-        ax.set_title(f"{layout.names[i]} ({'deg' if k != 1.0 else 'm'})", fontsize=8)
+        ax.set_title(f"{layout.names[i]} ({unit})", fontsize=8)
         ax.tick_params(labelsize=7)
         ax.grid(alpha=0.3)
     for ax in list(axes.flat)[free.size:]:

@@ -9,7 +9,7 @@ import numpy as np
 from registration.core.consistency import ConsistencyReport
 from registration.core.observability import ObservabilityReport
 from registration.fleet.covariance import FusedTargets
-from registration.fleet.layout import StateLayout
+from registration.fleet.layout import FILE_UNITS, StateLayout
 
 __all__ = ["BatchResult", "ChiSquareCheck", "state_lines", "state_rows"]
 
@@ -71,11 +71,12 @@ def state_rows(layout: StateLayout, estimate: np.ndarray, sigma: np.ndarray, sta
 
 
 def state_lines(rows: list[dict]) -> list[str]:
-    """One printable line per row of :func:`state_rows` (angles in degrees, ranges in m)."""
+    """One printable line per row of :func:`state_rows` (angles in degrees, ranges and positions in
+    m, range gains in ppm, time biases in s)."""
     out = []
     for row in rows:
-        f, unit = (np.degrees, "deg") if row["unit"] == "rad" else (float, "m")
-        out.append(f"  {row['label']:<36s} {f(row['estimate']):+12.4f} +- {f(row['sigma']):.4f} {unit}  {row['status']}")
+        _, _, unit, k = FILE_UNITS[row["unit"]]
+        out.append(f"  {row['label']:<36s} {k * row['estimate']:+12.4f} +- {k * row['sigma']:.4f} {unit}  {row['status']}")
     return out
 
 
@@ -112,6 +113,7 @@ class BatchResult:
     plot_target: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=str))  # (input rows,)
     plot_sensor: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=str))  # (input rows,)
     cost_history: list = field(default_factory=list)
+    warnings: tuple = ()  # what the user should know about this estimate (e.g. a time bias near the window)
 
     def value(self, name: str) -> float:
         return float(self.estimate[self.layout.index(name)])
@@ -159,6 +161,7 @@ class BatchResult:
     def lines(self) -> list[str]:
         """A printable summary (angles in degrees)."""
         out = [f"converged: {self.converged} after {self.iterations} iterations", self.chi_square.text()]
+        out += [f"WARNING: {w}" for w in self.warnings]
         out += state_lines(self.rows())
         out += self.observability.lines()
         out += [f"  excluded: {e.text()}" for e in self.excluded]

@@ -28,7 +28,7 @@ from registration.fleet.problem import Exclusion, FleetProblem
 from registration.fleet.schur import damped_step, determined_directions, masked_blocks, reduce
 
 __all__ = ["BatchOptions", "Fit", "determined_design", "exclude_singular", "fit", "fit_windows", "levenberg_marquardt",
-           "singular_blocks"]
+           "outside_when_seen", "singular_blocks", "time_bias_warnings"]
 
 LAMBDA_START = 1e-3
 LAMBDA_MAX = 1e16
@@ -78,6 +78,7 @@ class Fit:
     cost_history: list
     evaluation: Evaluation
     normal: Normal
+    warnings: tuple = ()
 
 
 def levenberg_marquardt(design: Design, start: Evaluation, free: np.ndarray, options: BatchOptions,
@@ -184,19 +185,65 @@ def fit_windows(design: Design, start: Evaluation, normal: Normal, options: Batc
     return ev, normal
 
 
+#: Refits after setting aside plots that a time bias moves outside their navigation, at most.
+MAX_TIME_BIAS_REFITS = 3
+
+
+def outside_when_seen(design: Design, x: np.ndarray) -> np.ndarray:
+    """(N,) bool per plot of the design's problem: seen (reported time minus its sensor's time
+    bias under states ``x``) outside its platform's navigation time span."""
+    blk = design.blocks
+    out = np.zeros(blk.order.size, dtype=bool)
+    if design.time_biased:
+        out[blk.order] = design.seen_at(design.seen_time(x))[2][design.slot]
+    return out
+
+
+def _exclude_outside(problem: FleetProblem, outside: np.ndarray) -> FleetProblem:
+    """The problem without the plots ``outside`` (N,), one exclusion per target."""
+    exclusions = []
+    for k in np.unique(problem.target[outside]):
+        sel = outside & (problem.target == k)
+        t = problem.time[sel]
+        exclusions.append(Exclusion(problem.target_ids[k], "seen outside its platform's navigation once its sensor's "
+                                    "time bias is applied (reported time - time bias)", int(sel.sum()),
+                                    float(t.min()), float(t.max())))
+    return problem.drop_plots(outside, exclusions)
+
+
+def time_bias_warnings(layout, x: np.ndarray, options: BatchOptions) -> tuple[str, ...]:
+    """A warning per sensor whose time bias estimate exceeds half the window length: the windows'
+    polynomials then extrapolate far and the estimate is not to be trusted."""
+    out = []
+    for s in np.flatnonzero(layout.time_bias_index >= 0):
+        i = int(layout.time_bias_index[s])
+        if options.window_s > 0 and abs(x[i]) > 0.5 * options.window_s:
+            out.append(f"{layout.labels[i]} is {x[i]:+.3g} s, more than half the {options.window_s:g} s windows: "
+                       f"not to be trusted; register again with longer windows (window_s >= {4 * abs(x[i]):.3g} s)")
+    return tuple(out)
+
+
 def fit(problem: FleetProblem, options: BatchOptions | None = None, x0: np.ndarray | None = None) -> Fit:
     """Solve the batch problem (module docstring) from states ``x0`` (n,; rad, m; default zeros: a
-    warm start only saves iterations); windows of singular geometry are set aside."""
+    warm start only saves iterations); windows of singular geometry are set aside, and so are plots
+    that their sensor's estimated time bias moves outside their platform's navigation (then the
+    problem is solved again from the estimate)."""
     options = options or BatchOptions()
     x0 = np.zeros(problem.layout.n) if x0 is None else np.array(x0, dtype=np.float64)
     if x0.shape != (problem.layout.n,) or not np.isfinite(x0).all():
         raise ValueError(f"x0: expected {problem.layout.n} finite starting states, got shape {x0.shape}")
     x0[problem.layout.fixed] = 0.0
-    found = determined_design(problem, options, x0)
-    if found is None:
-        raise ValueError("no plots to register (every target was excluded: " + "; ".join(e.text() for e in problem.excluded) + ")")
-    problem, design, start, normal = found
-    ev, normal, _, it1, hist1 = levenberg_marquardt(design, start, np.zeros(0, dtype=np.int64), options,
-                                                    TARGETS_FIRST, normal)
-    ev, normal, converged, it2, hist2 = levenberg_marquardt(design, ev, problem.layout.free, options, 0.0, normal)
-    return Fit(problem, design, ev.x, ev.coef, converged, it1 + it2, hist1 + hist2[1:], ev, normal)
+    for attempt in range(MAX_TIME_BIAS_REFITS + 1):
+        found = determined_design(problem, options, x0)
+        if found is None:
+            raise ValueError("no plots to register (every target was excluded: " + "; ".join(e.text() for e in problem.excluded) + ")")
+        problem, design, start, normal = found
+        ev, normal, _, it1, hist1 = levenberg_marquardt(design, start, np.zeros(0, dtype=np.int64), options,
+                                                        TARGETS_FIRST, normal)
+        ev, normal, converged, it2, hist2 = levenberg_marquardt(design, ev, problem.layout.free, options, 0.0, normal)
+        outside = outside_when_seen(design, ev.x)
+        if not outside.any() or attempt == MAX_TIME_BIAS_REFITS:
+            break
+        problem, x0 = _exclude_outside(problem, outside), ev.x
+    return Fit(problem, design, ev.x, ev.coef, converged, it1 + it2, hist1 + hist2[1:], ev, normal,
+               time_bias_warnings(problem.layout, ev.x, options))

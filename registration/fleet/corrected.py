@@ -1,0 +1,38 @@
+"""Plot positions corrected by a registration estimate: the one place the runtime turns plots into
+ECEF positions (generated ``fleet_plot2ecef``, or ``fleet_plot2ecef_ext`` with the extended
+errors), shared by the solver's starting values, the association and the map of the plots.
+
+With a time bias ``dt`` the plot was seen at ``t - dt``: the caller passes the navigation of the
+platform at that time (:meth:`registration.fleet.problem.FleetProblem.navigation_at`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from registration import _codegen
+
+__all__ = ["corrected_positions"]
+
+
+def corrected_positions(nav: np.ndarray, state: np.ndarray, xs: np.ndarray, lever: np.ndarray,
+                        meas: np.ndarray) -> np.ndarray:
+    """(M, 3) ECEF positions (m) of plots corrected by the states.
+
+    ``nav`` (M, 6): navigation (lat, lon rad, alt m, heading, pitch, roll rad as reported) at the
+    time the plot was seen; ``state`` (M, 6 or 11): each plot's state indices
+    (:meth:`~registration.fleet.layout.StateLayout.sensor_states`, the sink last); ``xs`` (n + 1,):
+    the states (rad, m, 1, s) with 0 appended for the sink; ``lever`` (M, 3) m, deck frame;
+    ``meas`` (M, 3): range (m), bearing, elevation (rad), every channel filled (the caller places
+    a plot without range or elevation).
+    """
+    r, q, e = meas[:, 0], meas[:, 1], meas[:, 2]
+    if state.shape[1] > 6:
+        p = _codegen.get("fleet_plot2ecef_ext")(
+            nav[:, 0], nav[:, 1], nav[:, 2], nav[:, 3], nav[:, 4], nav[:, 5], xs[state[:, :3]], xs[state[:, 3:6]],
+            xs[state[:, 6]], xs[state[:, 8:11]], lever, r, q, e)[0]
+    else:
+        p = _codegen.get("fleet_plot2ecef")(
+            nav[:, 0], nav[:, 1], nav[:, 2], nav[:, 3], nav[:, 4], nav[:, 5], xs[state[:, :3]], xs[state[:, 3:6]],
+            lever, r, q, e)[0]
+    return np.asarray(p).reshape(-1, 3)
