@@ -38,6 +38,14 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     add_out(sim, "fleet-simulate", "the input tables, estimates.csv, summary.json and the PNG plots")
     add_no_plots(sim)
     sim.add_argument("--format", choices=("csv", "parquet"), default="csv", help="file format of the tables written")
+    errors = sim.add_argument_group("extended sensor errors (default: none, and not modelled)")
+    errors.add_argument("--range-gain-ppm", type=float, default=None, metavar="PPM",
+                        help="give every sensor with range a range gain of +-PPM (random signs), estimated without prior")
+    errors.add_argument("--time-bias-s", type=float, default=None, metavar="S",
+                        help="give every sensor a time bias (reported - true plot time) of +-S s, estimated without prior")
+    errors.add_argument("--position-error-m", type=float, default=None, metavar="M",
+                        help="give every sensor a position error (stated - true) of +-M m per east, north and up axis, "
+                             "estimated without prior")
     add_allow_inconsistent(sim)
     reg = sub.add_parser("register", help=REGISTER_HELP, description=textwrap.fill(REGISTER_HELP),
                          epilog=EXIT_CODES_EPILOG, formatter_class=HelpFormatter)
@@ -52,7 +60,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     files.add_argument("--sensors", type=Path, required=True, metavar="FILE",
                        help="sensor, platform, sigma_range_m, sigma_bearing_deg, sigma_elevation_deg; optional "
                             "prior_range_bias_m, prior_bearing_bias_deg, prior_elevation_bias_deg (0 = fixed), "
-                            "lever_x_m, lever_y_m, lever_z_m")
+                            "lever_x_m, lever_y_m, lever_z_m; optional extended errors, each modelled only when its "
+                            "column is there: prior_range_gain (dimensionless), prior_time_bias_s, prior_position_m "
+                            "(empty or inf: no prior)")
     files.add_argument("--platforms", type=Path, default=None, metavar="FILE",
                        help="platform, prior_heading_deg, prior_pitch_deg, prior_roll_deg (0 = fixed); "
                             "default: no priors")
@@ -148,8 +158,14 @@ def run_simulate(args: argparse.Namespace) -> int:
 
     if args.seed < 0:
         raise ValueError(f"--seed: expected an integer >= 0, got {args.seed}")
+    extended = {"range_gain": None if args.range_gain_ppm is None else args.range_gain_ppm * 1e-6,
+                "time_bias": args.time_bias_s, "position_error": args.position_error_m}
+    for option, value in (("--range-gain-ppm", args.range_gain_ppm), ("--time-bias-s", args.time_bias_s),
+                          ("--position-error-m", args.position_error_m)):
+        if value is not None and not np.isfinite(value):
+            raise ValueError(f"{option}: expected a finite number, got {value}")
     out = prepare_out(args.out)
-    s = fleet_scenario(args.seed)
+    s = fleet_scenario(args.seed, **extended)
     with staged_outputs(out, "registration fleet simulate", SIMULATE_OUTPUTS) as folder:
         with writing(folder.path):
             tables_written = write_fleet_tables(folder.path, s.plots, s.navigation, s.sensors, s.platforms,

@@ -33,7 +33,7 @@ from stonesoup.types.array import CovarianceMatrix, StateVector
 
 from registration import _codegen
 from registration.core.angles import wrap_angle
-from registration.fleet.tables import ATTITUDE_ERRORS, CHANNELS, read_table
+from registration.fleet.tables import ATTITUDE_ERRORS, CHANNELS, EXTENDED_ERRORS, read_table
 from registration.interop.convert import MODEL_CHANNELS, measured_plot, model_kind, model_pose, ss_covariance, ss_vector
 from registration.interop.world import LocalFrame
 
@@ -82,6 +82,11 @@ class RegistrationCorrector:
         missing = [n for n in att if n not in self.names]
         if missing:
             raise ValueError(f"sensor {sensor!r}: the registration result has no {missing} of its platform {platform!r}")
+        extended = [n for n in self.names if n.split(":", 1)[0] == sensor and n.split(":", 1)[1] in EXTENDED_ERRORS]
+        if extended:
+            raise ValueError(f"sensor {sensor!r}: the registration result models {extended}; the Stone Soup corrector "
+                             "applies attitude errors and biases only (range gain, time bias and position errors are "
+                             "not applied to detections yet): register this sensor without those columns")
         bias = [f"{sensor}:{c}_bias" for c in CHANNELS]
         for name, measured in zip(bias, MODEL_CHANNELS[kind]):
             if measured and name not in self.names:
