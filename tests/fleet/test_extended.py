@@ -174,6 +174,20 @@ def test_targets_all_flying_one_way_name_time_against_position_and_a_common_shif
     assert "time bias is barely told apart from position errors or angle biases" in text
 
 
+def test_still_level_ships_without_a_reference_name_the_common_clock():
+    """Ships that neither move nor roll and no reference: nothing fixes a clock common to all
+    sensors, and the report says so (the same fleet with rolling ships fixes it)."""
+    ships = {k: replace(v, speed=0.0) for k, v in DEFAULT_FLEET.ships.items()}
+    config = replace(DEFAULT_FLEET, ships=ships, reference_target=None)
+    result = solve_batch(fleet_scenario(1, duration_s=200.0, config=config, time_bias=0.3, ship_motion=False).problem())
+    texts = [c.text for c in result.observability.unobservable]
+    assert any("the time biases of all sensors move together (a clock common to the fleet)" in t for t in texts)
+    assert all(s == "not identifiable" for n, s in result.status.items() if n.endswith(":time_bias"))
+    rolling = solve_batch(fleet_scenario(1, duration_s=200.0, config=replace(DEFAULT_FLEET, reference_target=None),
+                                         time_bias=0.3).problem())
+    assert all(s == "identifiable" for n, s in rolling.status.items() if n.endswith(":time_bias"))
+
+
 # -- online, files, CLI ------------------------------------------------------------------------
 
 def test_online_filter_estimates_the_new_states_near_the_batch():
