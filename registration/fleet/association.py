@@ -26,6 +26,19 @@ association therefore works on tracklets, not on plots:
 3. **Registration** of the plots of confirmed groups. The rest are reported unassociated:
    clutter, short pieces, and targets that one sensor alone, or only 2-D sensors, saw.
 
+**Extended errors** (sensors-table columns ``prior_range_gain``, ``prior_time_bias``,
+``prior_position``): a sensor's plots then depend on 11 states instead of 6 (range gain, time
+bias and east, north, up position error besides the attitude errors and biases), the positions
+come from ``fleet_plot2ecef_ext`` and the Jacobians from ``fleet_residual_ext``. A plot of a
+sensor with a time bias is placed from its platform's navigation at the time it was seen (its
+reported time minus the estimated bias) and carries that time into the tracks and the tracklets,
+so that every sensor's curves are on one time axis (:mod:`registration.fleet.association_geometry`
+for the sensitivity to the time bias). In the first pass, under a zero estimate, a time bias on a
+rolling ship puts each plot where the deck pointed a moment earlier or later: the plots sway
+with the roll rate times the bias (up to 2.3 deg per second of bias under 4 deg of roll at 11 s),
+which breaks sensor tracks as an angle bias does; the passes that follow, and the tracks made
+again from the corrected plots in the last pass, recover them.
+
 Assumptions: quadratic motion over a window (20 s by default; the tracks themselves follow
 turns); a sensor reports each target at most once per scan; the starting covariance
 (``initial_sigma_*`` or the tables' finite priors) covers the true errors.
@@ -71,10 +84,11 @@ class AssociationOptions:
     the starting covariance). initial_sigma_attitude, initial_sigma_angle_bias
     (rad), initial_sigma_range_bias (m) and, for the extended errors, initial_sigma_range_gain
     (dimensionless), initial_sigma_time_bias (s), initial_sigma_position (m per east, north, up
-    axis): the covariance of the first pass for states without a finite prior in the tables. iteration_plots: the passes, and the solves between them, use only
-    every k-th window, k such that these hold about this many plots; once the association stops
-    changing there, one last pass covers all windows, with the sensors' tracks made again from the
-    plots corrected by the estimate. The solves between passes stop at
+    axis): the covariance of the first pass for states without a finite prior in the tables.
+    iteration_plots: the passes, and the solves between them, use only every k-th window, k such
+    that these hold about this many plots; once the association stops changing there, one last
+    pass covers all windows, with the sensors' tracks made again from the plots corrected by the
+    estimate. The solves between passes stop at
     :data:`INTERMEDIATE_TOLERANCE` or :data:`INTERMEDIATE_ITERATIONS`; the final solve uses all the
     associated plots and ``batch``'s settings. batch: the solver's options
     (its window_s is replaced by this window_s).

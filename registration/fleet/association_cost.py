@@ -109,8 +109,9 @@ def measurement_cost(problem: FleetProblem, x: np.ndarray, tl, b: np.ndarray, co
                                     axis=2) / tl.half_width
         v = (rate_basis @ line[grp][..., None])[..., 0]
         nav, rate = tl.rep_nav[b].reshape(-1, 6), tl.rep_rate[b].reshape(-1, 6)
-        res, J = _codegen.get("fleet_residual_ext")(p, v, *nav.T, rate, att, bias, xs[cols[6]], 0.0, xs[cols[8:11]],
-                                                    lever, *meas.T)[:2]
+        gain, pos_err = xs[cols[6]], xs[cols[8:11]]  # range gain, position error (ENU); the time bias is in t
+        res, J = _codegen.get("fleet_residual_ext")(p, v, *nav.T, rate, att, bias, gain, 0.0, pos_err, lever,
+                                                    *meas.T)[:2]
     res, J = np.asarray(res).reshape(-1, 3), np.asarray(J).reshape(-1, 3, 3 + cols.size)
     res, J = np.where(mask, res, 0.0), np.where(mask[..., None], J, 0.0)
     W = np.concatenate([J[:, :, :3] @ basis, J[:, :, 3:]], axis=2).reshape(k_pairs, 9, N_LINE + cols.size)

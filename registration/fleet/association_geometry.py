@@ -3,7 +3,8 @@ the position's information matrix from the sensor noise, and how the position mo
 registration states; and the global assignment (negative log-likelihood costs with a no-match
 cost) that the association stages share.
 
-Positions come from the generated ``fleet_plot2ecef`` and the Jacobians from the generated
+Positions come from the generated ``fleet_plot2ecef``
+(:func:`registration.fleet.corrected.corrected_positions`) and the Jacobians from the generated
 ``fleet_residual`` (J = d residual / d(p_ecef, att_err, bias)). A plot lacking a channel is
 placed as :mod:`registration.fleet.initial` places it (no range: :data:`ASSUMED_RANGE_M` along the
 line of sight; no elevation: in the deck plane). Its position information is then
@@ -37,17 +38,20 @@ import numpy as np
 from scipy.optimize import linear_sum_assignment
 
 from registration import _codegen
+from registration.fleet.corrected import corrected_positions
 from registration.fleet.initial import ASSUMED_RANGE_M
 from registration.fleet.problem import FleetProblem
 
-__all__ = ["N_COEF", "N_LINE", "UNCONSTRAINED_SIGMA_M", "PlotGeometry", "plot_geometry", "seen_navigation",
-           "state_columns", "time_biased", "Assigner"]
+__all__ = ["N_COEF", "N_LINE", "TIME_BIAS_SLOT", "UNCONSTRAINED_SIGMA_M", "PlotGeometry", "plot_geometry",
+           "seen_navigation", "state_columns", "time_biased", "Assigner"]
 
 #: Standard deviation (m) given to a plot position along a direction its sensor does not measure.
 UNCONSTRAINED_SIGMA_M = 1.0e5
 #: A tracklet's ECEF position is a quadratic in time: N_COEF coefficients per axis, N_LINE in all.
 N_COEF = 3
 N_LINE = 3 * N_COEF
+#: Slot of the time bias among a sensor's 11 states (:func:`state_columns` with the extended errors).
+TIME_BIAS_SLOT = 7
 #: Cost standing for "not allowed" in the assignment matrices.
 FORBIDDEN = 1.0e12
 
@@ -121,13 +125,11 @@ def _positions(problem: FleetProblem, xs: np.ndarray, cols: np.ndarray, sel: np.
     lever = problem.sensor_lever[problem.sensor[sel]]
     r = np.where(mask[:, 0], meas[:, 0], ASSUMED_RANGE_M + bias[:, 0])
     e = np.where(mask[:, 2], meas[:, 2], bias[:, 2])
+    p = corrected_positions(nav, cols, xs, lever, np.stack([r, meas[:, 1], e], axis=1))  # cols -1 reads xs[-1] = 0
     if cols.shape[1] == 6:
-        p = np.asarray(_codegen.get("fleet_plot2ecef")(*nav.T, att, bias, lever, r, meas[:, 1], e)[0]).reshape(-1, 3)
         J = _codegen.get("fleet_residual")(p, *nav.T, att, bias, lever, r, meas[:, 1], e)[1]
         return p, np.asarray(J).reshape(-1, 3, 9)
     gain, pos_err = xs[cols[:, 6]], xs[cols[:, 8:11]]
-    p = _codegen.get("fleet_plot2ecef_ext")(*nav.T, att, bias, gain, pos_err, lever, r, meas[:, 1], e)[0]
-    p = np.asarray(p).reshape(-1, 3)
     # the target velocity 0: the time bias's column is the platform's motion (module docstring)
     J = _codegen.get("fleet_residual_ext")(p, np.zeros(3), *nav.T, rate, att, bias, gain, 0.0, pos_err, lever, r,
                                            meas[:, 1], e)[1]

@@ -29,7 +29,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association_geometry import N_COEF, N_LINE, Assigner, PlotGeometry, state_columns
+from registration.fleet.association_geometry import (N_COEF, N_LINE, TIME_BIAS_SLOT, Assigner, PlotGeometry,
+                                                     state_columns)
 from registration.fleet.problem import FleetProblem
 
 __all__ = ["Tracklets", "make_tracklets", "chain_groups", "time_shift_sensitivity"]
@@ -125,8 +126,8 @@ def make_tracklets(problem: FleetProblem, geom: PlotGeometry, track: np.ndarray,
         keep &= ~full | (dof < 1) | (chi < chi2.ppf(gate_probability, np.maximum(dof, 1)))
     line, cov, local = line[keep], cov[keep], local[keep]
     cols = state_columns(problem, order[start[keep]])
-    if cols.shape[1] > 6:  # the time stamps move with the time bias: the curve's own motion
-        local[:, :, 7] += time_shift_sensitivity(line, 0.5 * window_s)
+    if cols.shape[1] > TIME_BIAS_SLOT:  # the time stamps move with the time bias: the curve's own motion
+        local[:, :, TIME_BIAS_SLOT] += time_shift_sensitivity(line, 0.5 * window_s)
     G = np.zeros((int(keep.sum()), N_LINE, n + 1))
     rows = np.arange(cols.shape[0])
     for k in range(cols.shape[1]):

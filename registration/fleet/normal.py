@@ -83,8 +83,8 @@ class Design:
 
     @property
     def time_biased(self) -> bool:
-        """True when some row's sensor has a time-bias state."""
-        return self.extended and bool((self.state[:, 7] < self.n_state).any())
+        """True when some row's sensor has a time bias that is estimated (not held at 0)."""
+        return self.seen_at is not None
 
     def seen_time(self, x: np.ndarray) -> np.ndarray:
         """(rows,) the time (s) each row's target and platform are seen at under states ``x`` (n,):
@@ -110,7 +110,8 @@ def make_design(problem: FleetProblem, blocks: Blocks) -> Design:
         prior_weight = np.where(np.isfinite(layout.prior_sigma) & (layout.prior_sigma > 0), 1.0 / layout.prior_sigma, 0.0)
     refs = problem.references
     seen_at = None
-    if layout.extended and (layout.time_bias_index[np.unique(sensor)] >= 0).any():
+    tb = layout.time_bias_index[np.unique(sensor)]
+    if layout.extended and (layout.prior_sigma[tb[tb >= 0]] > 0).any():
         if blocks.n_coef == 1:
             raise ValueError("a time bias needs target windows (window_s > 0): the targets' velocities come from the "
                              "windows' polynomials; give window_s > 0 or drop the prior_time_bias column")
