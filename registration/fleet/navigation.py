@@ -88,6 +88,20 @@ def navigation_at(tracks: dict, platform_ids, plot_platform: np.ndarray, plot_ti
     """
     out = np.empty((plot_time.shape[0], 6))
     outside_all = outside_navigation(tracks, platform_ids, plot_platform, plot_time)
+    for pid, sel, t, v in _moving_platforms(tracks, platform_ids, plot_platform, out):
+        outside = np.flatnonzero(outside_all[sel])
+        if outside.size:
+            i = int(sel[outside[0]])
+            raise ValueError(f"{describe_row(i)} lies outside the navigation of platform {str(pid)!r} "
+                             f"({t[0]:g} s to {t[-1]:g} s); {outside.size} plot(s) do")
+        for j in range(6):
+            out[sel, j] = np.interp(plot_time[sel], t, v[:, j])
+    return _wrapped(out)
+
+
+def _moving_platforms(tracks: dict, platform_ids, plot_platform: np.ndarray, out: np.ndarray):
+    """Per platform with plots: (id, its plots' indices, navigation times, values) where it has
+    several navigation rows; a fixed site's one row is written into ``out`` (N, 6) instead."""
     for p, pid in enumerate(platform_ids):
         sel = np.flatnonzero(plot_platform == p)
         if sel.size == 0:
@@ -96,18 +110,15 @@ def navigation_at(tracks: dict, platform_ids, plot_platform: np.ndarray, plot_ti
         if t.shape[0] == 1:
             out[sel] = v[0]
             continue
-        tp = plot_time[sel]
-        outside = np.flatnonzero(outside_all[sel])
-        if outside.size:
-            i = int(sel[outside[0]])
-            raise ValueError(f"{describe_row(i)} lies outside the navigation of platform {str(pid)!r} "
-                             f"({t[0]:g} s to {t[-1]:g} s); {outside.size} plot(s) do")
-        for j in range(6):
-            out[sel, j] = np.interp(tp, t, v[:, j])
+        yield pid, sel, t, v
+
+
+def _wrapped(nav: np.ndarray) -> np.ndarray:
+    """``nav`` (N, 6) with longitude and heading wrapped to (-pi, pi] in place."""
     for c in _UNWRAP:
         j = NAV_COLUMNS.index(c)
-        out[:, j] = wrap_angle(out[:, j])
-    return out
+        nav[:, j] = wrap_angle(nav[:, j])
+    return nav
 
 
 def navigation_rate_at(tracks: dict, platform_ids, plot_platform: np.ndarray, plot_time: np.ndarray
@@ -127,20 +138,10 @@ def navigation_rate_at(tracks: dict, platform_ids, plot_platform: np.ndarray, pl
     n = plot_time.shape[0]
     nav, rate = np.empty((n, 6)), np.zeros((n, 6))
     outside = outside_navigation(tracks, platform_ids, plot_platform, plot_time)
-    for p, pid in enumerate(platform_ids):
-        sel = np.flatnonzero(plot_platform == p)
-        if sel.size == 0:
-            continue
-        t, v = tracks[pid]
-        if t.shape[0] == 1:
-            nav[sel] = v[0]
-            continue
+    for _, sel, t, v in _moving_platforms(tracks, platform_ids, plot_platform, nav):
         nav[sel], rate[sel] = hermite_at(t, v, np.clip(plot_time[sel], t[0], t[-1]))
         rate[sel] = np.where(outside[sel, None], 0.0, rate[sel])
-    for c in _UNWRAP:
-        j = NAV_COLUMNS.index(c)
-        nav[:, j] = wrap_angle(nav[:, j])
-    return nav, rate, outside
+    return _wrapped(nav), rate, outside
 
 
 def catmull_rom_slopes(t: np.ndarray, v: np.ndarray) -> np.ndarray:
