@@ -73,6 +73,8 @@ class Blocks:
     ref_index: np.ndarray  # (R',) references used (index into problem.references)
     ref_block: np.ndarray  # (R',)
     ref_basis: np.ndarray  # (R', n_coef)
+    patterns: np.ndarray  # (K, w max_groups) the distinct rows of local_state
+    pattern_blocks: tuple  # (K,) the blocks of each pattern (index arrays)
 
     @property
     def n_blocks(self) -> int:
@@ -92,12 +94,22 @@ class Blocks:
         tau = (time - self.block_centre[block]) / self.block_half[block]
         return legendre_basis(tau, self.n_coef) * self.coef_mask[block]
 
-    def basis_rate_at(self, block: np.ndarray, time: np.ndarray) -> np.ndarray:
-        """(M, n_coef) masked time derivatives (1/s) of the basis at times ``time`` in blocks ``block``:
-        the velocity of a window is ``sum_k rate_k c_k``."""
-        half = self.block_half[block]
-        tau = (time - self.block_centre[block]) / half
-        return legendre_basis_rate(tau, self.n_coef) * self.coef_mask[block] / half[:, None]
+    def basis_and_rate_at(self, block: np.ndarray, time: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(basis, rate), each (M, n_coef) and masked: the basis values at times ``time`` (s) in
+        blocks ``block`` and their time derivatives (1/s; a window's velocity is ``sum_k rate_k
+        c_k``). Written out for P_0..P_3 (checked against numpy's Legendre series in the tests)."""
+        if self.n_coef != 4:
+            half = self.block_half[block]
+            tau = (time - self.block_centre[block]) / half
+            mask = self.coef_mask[block]
+            return legendre_basis(tau, self.n_coef) * mask, legendre_basis_rate(tau, self.n_coef) * mask / half[:, None]
+        inv_half = 1.0 / self.block_half[block]
+        tau = (time - self.block_centre[block]) * inv_half
+        t2 = tau * tau
+        mask = self.coef_mask[block]
+        basis = np.stack([np.ones_like(tau), tau, 1.5 * t2 - 0.5, (2.5 * t2 - 1.5) * tau], axis=1)
+        rate = np.stack([np.zeros_like(tau), inv_half, 3.0 * tau * inv_half, (7.5 * t2 - 1.5) * inv_half], axis=1)
+        return basis * mask, rate * mask
 
 
 def _window_keys(target, time, ref_target, ref_time, n_targets: int, window_s: float):
@@ -207,6 +219,9 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int) -> Blocks:
     ref_basis = legendre_basis(ref_tau, n_coef) * coef_mask[ref_block]
     chunk_size, chunk_slot, chunk_group_start = _chunks(group_start, order.size)
     group_block_start = np.flatnonzero(np.r_[True, np.diff(group_block) != 0])
+    patterns, inverse = np.unique(local_state, axis=0, return_inverse=True)
+    pattern_blocks = tuple(np.flatnonzero(inverse.reshape(-1) == k) for k in range(patterns.shape[0]))
     return Blocks(n_coef, order, block_sorted, basis, block_start, b_target, centre, half, coef_mask,
                   group_start, group_block, group_sensor, group_state, rank, local_state,
-                  group_block_start, chunk_size, chunk_slot, chunk_group_start, ref_index, ref_block, ref_basis)
+                  group_block_start, chunk_size, chunk_slot, chunk_group_start, ref_index, ref_block, ref_basis,
+                  patterns, pattern_blocks)

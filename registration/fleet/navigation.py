@@ -18,8 +18,8 @@ from registration.core.angles import wrap_angle
 from registration.core.validation import check_range
 from registration.fleet.tables import NAV_COLUMNS, Table
 
-__all__ = ["NAV_LIMITS", "catmull_rom_slopes", "hermite_at", "platform_navigation", "navigation_at",
-           "navigation_rate_at", "outside_navigation"]
+__all__ = ["NAV_LIMITS", "SeenNavigation", "catmull_rom_slopes", "hermite_cubics", "platform_navigation",
+           "navigation_at", "navigation_rate_at", "outside_navigation"]
 
 #: Accepted window (low, high, unit) of each navigation column.
 NAV_LIMITS = {
@@ -123,25 +123,9 @@ def _wrapped(nav: np.ndarray) -> np.ndarray:
 
 def navigation_rate_at(tracks: dict, platform_ids, plot_platform: np.ndarray, plot_time: np.ndarray
                        ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(nav (N, 6), rate (N, 6), outside (N,) bool) of each plot's platform at times ``plot_time`` (s).
-
-    Used where plots are seen at times corrected by a time bias (the platform is seen then too),
-    so the time is an estimated quantity: the navigation is interpolated by a C1 cubic Hermite
-    curve through the samples (Catmull-Rom slopes, the centred difference of the neighbouring
-    samples; one-sided at the ends), whose value and rate (rad/s, m/s) are continuous in the time.
-    Linear interpolation would kink the cost at every navigation sample and stall the solver
-    there; between samples the two differ by the interpolation error of the navigation rate (about
-    0.002 deg of roll at 10 Hz, module docstring). Angles are wrapped. A time outside the
-    platform's navigation span takes the nearest end's values (zero rate) and is flagged in
-    ``outside``; a fixed site has zero rate.
-    """
-    n = plot_time.shape[0]
-    nav, rate = np.empty((n, 6)), np.zeros((n, 6))
-    outside = outside_navigation(tracks, platform_ids, plot_platform, plot_time)
-    for _, sel, t, v in _moving_platforms(tracks, platform_ids, plot_platform, nav):
-        nav[sel], rate[sel] = hermite_at(t, v, np.clip(plot_time[sel], t[0], t[-1]))
-        rate[sel] = np.where(outside[sel, None], 0.0, rate[sel])
-    return _wrapped(nav), rate, outside
+    """(nav (N, 6), rate (N, 6), outside (N,) bool) of each plot's platform at times ``plot_time`` (s),
+    by :class:`SeenNavigation` (its docstring)."""
+    return SeenNavigation(tracks, platform_ids, plot_platform, plot_platform, plot_time)(plot_time)
 
 
 def catmull_rom_slopes(t: np.ndarray, v: np.ndarray) -> np.ndarray:
@@ -150,16 +134,70 @@ def catmull_rom_slopes(t: np.ndarray, v: np.ndarray) -> np.ndarray:
     return np.gradient(v, t, axis=0, edge_order=1) if t.size > 2 else np.repeat((v[1:] - v[:1]) / (t[1] - t[0]), 2, 0)
 
 
-def hermite_at(t: np.ndarray, v: np.ndarray, tq: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Value (M, m) and derivative (M, m) at times ``tq`` (M,; within [t[0], t[-1]]) of the cubic
-    Hermite curve through samples ``v`` (K, m) at times ``t`` with :func:`catmull_rom_slopes`."""
+def hermite_cubics(t: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """(K - 1, 4, m) coefficients of each segment's cubic in s = (t - t_k) / (t_{k+1} - t_k) of the
+    cubic Hermite curve through samples ``v`` (K, m) with :func:`catmull_rom_slopes`."""
+    h = np.diff(t)[:, None]
     m = catmull_rom_slopes(t, v)
-    k = np.clip(np.searchsorted(t, tq, side="right") - 1, 0, t.shape[0] - 2)
-    h = (t[k + 1] - t[k])[:, None]
-    s = ((tq - t[k])[:, None]) / h
-    s2, s3 = s * s, s * s * s
-    h00, h10, h01, h11 = 2 * s3 - 3 * s2 + 1, s3 - 2 * s2 + s, -2 * s3 + 3 * s2, s3 - s2
-    d00, d10, d01, d11 = 6 * s2 - 6 * s, 3 * s2 - 4 * s + 1, -6 * s2 + 6 * s, 3 * s2 - 2 * s
-    value = h00 * v[k] + h10 * h * m[k] + h01 * v[k + 1] + h11 * h * m[k + 1]
-    deriv = (d00 * v[k] + d01 * v[k + 1]) / h + d10 * m[k] + d11 * m[k + 1]
-    return value, deriv
+    v0, v1, m0, m1 = v[:-1], v[1:], h * m[:-1], h * m[1:]
+    return np.stack([v0, m0, -3 * v0 - 2 * m0 + 3 * v1 - m1, 2 * v0 + m0 - 2 * v1 + m1], axis=1)
+
+
+class SeenNavigation:
+    """The navigation of fixed rows (platform, sensor, reported time) at times that move with
+    the time-bias estimates: ``seen(time)`` -> (nav (rows, 6), rate (rows, 6), outside (rows,)).
+
+    The time is an estimated quantity here, so the navigation is interpolated by a C1 cubic
+    Hermite curve through the samples (Catmull-Rom slopes: the centred difference of the
+    neighbouring samples, one-sided at the ends), whose value and rate (rad/s, m/s) are continuous
+    in the time. Linear interpolation would kink the cost at every navigation sample and stall the
+    solver there; between samples the two differ by the interpolation error of the navigation
+    (about 0.002 deg of roll at 10 Hz, module docstring). The rows of one sensor at one reported
+    time are seen at one time under any estimate, so each distinct (sensor, reported time)
+    instant is interpolated once; each track's segment cubics are built once. Angles are wrapped.
+    A time outside the platform's navigation span takes the nearest end's values (zero rate) and
+    is flagged in ``outside``; a fixed site has zero rate.
+    """
+
+    def __init__(self, tracks: dict, platform_ids, row_platform: np.ndarray, row_sensor: np.ndarray,
+                 row_time: np.ndarray):
+        order = np.lexsort((row_time, row_sensor))
+        new = np.r_[True, (np.diff(row_sensor[order]) != 0) | (np.diff(row_time[order]) != 0)]
+        self.first = order[new]  # one row per instant
+        self.inverse = np.empty(order.size, dtype=np.int64)
+        self.inverse[order] = np.cumsum(new) - 1
+        platform = row_platform[self.first]
+        self.parts = []
+        for p, pid in enumerate(platform_ids):
+            sel = np.flatnonzero(platform == p)
+            if sel.size == 0:
+                continue
+            t, v = tracks[pid]
+            if t.shape[0] == 1:
+                self.parts.append((sel, None, v[0], None))
+            else:
+                self.parts.append((sel, t, hermite_cubics(t, v), 1.0 / np.diff(t)))
+
+    def __call__(self, time: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        tu = time[self.first]
+        n = tu.shape[0]
+        nav, rate, outside = np.empty((6, n)), np.zeros((n, 6)), np.zeros(n, dtype=bool)
+        for sel, t, cubic, inv_h in self.parts:
+            if t is None:  # a fixed site
+                nav[:, sel] = cubic[:, None]
+                continue
+            ts = tu[sel]
+            out = (ts < t[0]) | (ts > t[-1])
+            tp = np.clip(ts, t[0], t[-1])
+            k = np.clip(np.searchsorted(t, tp, side="right") - 1, 0, t.shape[0] - 2)
+            c = cubic[k]
+            s = ((tp - t[k]) * inv_h[k])[:, None]
+            nav[:, sel] = (c[:, 0] + s * (c[:, 1] + s * (c[:, 2] + s * c[:, 3]))).T
+            r = (c[:, 1] + s * (2.0 * c[:, 2] + 3.0 * s * c[:, 3])) * inv_h[k][:, None]
+            r[out] = 0.0
+            rate[sel], outside[sel] = r, out
+        for c in _UNWRAP:
+            j = NAV_COLUMNS.index(c)
+            nav[j] = wrap_angle(nav[j])
+        inv = self.inverse
+        return np.take(nav, inv, axis=1).T, rate[inv], outside[inv]  # nav columns contiguous for the C call

@@ -22,20 +22,24 @@ With the extended errors the rows come from ``fleet_rows_ext_<n_coef>``. A senso
 bias ``dt`` sees its target and its platform at ``t - dt``: each evaluation takes the window
 polynomial, its velocity (the polynomial's derivative) and the platform's navigation and its rate
 at that time (the navigation tracks interpolated again), so the residual is exact and the time
-bias's Jacobian column carries the target's and the platform's motion.
+bias's Jacobian column carries the target's and the platform's motion. A row seen outside its
+platform's navigation (near the navigation's ends) weighs 0 in that evaluation: the solver sets
+those plots aside (:func:`registration.fleet.solver.fit`).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from registration import _codegen
 from registration.fleet.blocks import Blocks
+from registration.fleet.navigation import SeenNavigation
 from registration.fleet.problem import FleetProblem
 
-__all__ = ["Design", "Evaluation", "Normal", "make_design", "evaluate", "normal_equations", "positions"]
+__all__ = ["Design", "Evaluation", "Normal", "chunk_positions", "make_design", "evaluate", "normal_equations",
+           "positions"]
 
 
 @dataclass(frozen=True)
@@ -65,7 +69,8 @@ class Design:
     prior_weight: np.ndarray  # (n,) 1 / prior sigma (0: no prior; fixed states are not free)
     scale: np.ndarray  # (n,) prior or reference sigma of each state (registration.fleet.layout.state_scale)
     time: np.ndarray  # (rows,) reported plot time (s)
-    seen_at: object = None  # with time biases: times (rows,) -> (nav, rate, outside) of each row's platform
+    seen_at: object = None  # with time biases: times (rows,) -> (nav, rate, outside); navigation.SeenNavigation
+    seen_cache: dict = field(default_factory=dict)  # the seen basis and navigation of the latest time biases
 
     @property
     def att_state(self) -> np.ndarray:
@@ -116,8 +121,7 @@ def make_design(problem: FleetProblem, blocks: Blocks) -> Design:
             raise ValueError("a time bias needs target windows (window_s > 0): the targets' velocities come from the "
                              "windows' polynomials; give window_s > 0 or drop the prior_time_bias column")
 
-        def seen_at(t, rows=o):
-            return problem.navigation_at(t, rows)
+        seen_at = SeenNavigation(problem.tracks, problem.platform_ids, problem.platform[o], sensor, problem.time[o])
     return Design(blocks, layout.n, blocks.chunk_slot, real, blocks.block[source], blocks.basis[source],
                   blocks.chunk_slot[blocks.block_start], problem.nav[o], problem.meas[o], weight,
                   problem.sensor_lever[sensor], state, refs.p_ecef[blocks.ref_index],
@@ -147,21 +151,47 @@ class Evaluation:
         return self.Z[:, :, -1]
 
 
+def chunk_positions(design: Design, basis: np.ndarray, coef: np.ndarray) -> np.ndarray:
+    """(rows, 3) ECEF sum_k basis[:, k] coef[block, k] (m), one (C x n_coef)(n_coef x 3) product per
+    chunk of C rows (a chunk lies in one block)."""
+    C = design.blocks.chunk_size
+    return np.matmul(basis.reshape(-1, C, basis.shape[1]), coef[design.block[::C]]).reshape(-1, 3)
+
+
+def _seen(design: Design, time_bias: np.ndarray) -> tuple:
+    """(basis, basis rate, nav, nav rate, set aside) of the rows seen at ``time - time_bias`` (rows,),
+    kept while the time biases stay the same (the targets-only phase and rejected trial steps).
+    ``set aside`` (rows,) bool: seen outside the platform's navigation, unless that would empty
+    the row's window (the solver then drops those plots and solves anew)."""
+    hit = design.seen_cache.get("key")
+    if hit is not None and np.array_equal(hit, time_bias):
+        return design.seen_cache["value"]
+    t_seen = design.time - time_bias
+    nav, rate, outside = design.seen_at(t_seen)
+    if outside.any():
+        left = np.add.reduceat((design.weight.any(axis=1) & ~outside).astype(np.int64), design.block_start)
+        outside = outside & (left > 0)[design.block]
+    value = (*design.blocks.basis_and_rate_at(design.block, t_seen), nav, rate, outside)
+    design.seen_cache.update(key=time_bias, value=value)
+    return value
+
+
 def _extended_rows(design: Design, xs: np.ndarray, coef: np.ndarray) -> np.ndarray:
-    """(rows, 3 n_coef + 12, 3) rows of the extended model at states ``xs`` (n + 1,, sink last)."""
+    """(rows, 3 n_coef + 12, 3) rows of the extended model at states ``xs`` (n + 1,, sink last); a row
+    seen outside its platform's navigation weighs 0 (module docstring)."""
     blk, state = design.blocks, design.state
-    basis, nav = design.basis, design.nav
+    basis, nav, weight = design.basis, design.nav, design.weight
     v, rate = np.zeros((basis.shape[0], 3)), np.zeros((basis.shape[0], 6))
     if design.time_biased:
-        t_seen = design.seen_time(xs[:-1])
-        basis = blk.basis_at(design.block, t_seen)
-        v = positions(blk.basis_rate_at(design.block, t_seen), design.block, coef)
-        nav, rate, _ = design.seen_at(t_seen)
-    p = positions(basis, design.block, coef)
+        basis, basis_rate, nav, rate, aside = _seen(design, xs[state[:, 7]])
+        v = chunk_positions(design, basis_rate, coef)
+        if aside.any():
+            weight = np.where(aside[:, None], 0.0, weight)
+    p = chunk_positions(design, basis, coef)
     return _codegen.get(f"fleet_rows_ext_{blk.n_coef}")(
         p, v, nav[:, 0], nav[:, 1], nav[:, 2], nav[:, 3], nav[:, 4], nav[:, 5], rate,
         xs[state[:, :3]], xs[state[:, 3:6]], xs[state[:, 6]], xs[state[:, 8:11]], design.lever,
-        design.meas[:, 0], design.meas[:, 1], design.meas[:, 2], design.weight,
+        design.meas[:, 0], design.meas[:, 1], design.meas[:, 2], weight,
         basis[:, 0] if blk.n_coef == 1 else basis)[0]
 
 

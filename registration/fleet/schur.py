@@ -70,14 +70,34 @@ def reduce(blk: Blocks, normal: Normal, lam: float = 0.0) -> Reduced:
     Y = np.matmul(V_inv, W)
     y = np.matmul(V_inv, normal.b_c[:, :, None])[:, :, 0]
     n1 = normal.U.shape[0]
-    WY = np.matmul(W.transpose(0, 2, 1), Y)  # (B, w g, w g)
-    idx = blk.local_state
+    if blk.width > 6:
+        WY, idx = _pattern_sums(blk, W, Y)
+    else:
+        WY = np.matmul(W.transpose(0, 2, 1), Y)  # (B, w g, w g)
+        idx = blk.local_state
     flat = (idx[:, :, None] * n1 + idx[:, None, :]).reshape(-1)
     S = normal.U - np.bincount(flat, WY.reshape(-1), n1 * n1).reshape(n1, n1)
     S[np.diag_indices(n1)] += lam * np.diag(normal.U)
     Wy = np.matmul(W.transpose(0, 2, 1), y[:, :, None])[:, :, 0]  # (B, w g)
-    r = normal.b_x - np.bincount(idx.reshape(-1), Wy.reshape(-1), n1)
+    r = normal.b_x - np.bincount(blk.local_state.reshape(-1), Wy.reshape(-1), n1)
     return Reduced(0.5 * (S + S.T), r, V_inv, Y, y)
+
+
+#: Above this many distinct patterns of states the blocks' products are scattered one by one.
+MAX_PATTERNS = 64
+
+
+def _pattern_sums(blk: Blocks, W: np.ndarray, Y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(sum over the blocks of each pattern of W_b^T Y_b (K, L, L), the patterns' state indices
+    (K, L)): the blocks whose groups hold the same states side by side (Blocks.patterns) summed by
+    one (L x B q)(B q x L) product each, so the scatter into the states is per pattern, not per
+    block. Used with the extended errors (w = 11), where the per-block scatter of (11 g)^2 entries
+    dominated; the three-error path keeps its per-block sums (and so its results, bit for bit)."""
+    L = W.shape[2]
+    if blk.patterns.shape[0] > MAX_PATTERNS:
+        return np.matmul(W.transpose(0, 2, 1), Y), blk.local_state
+    WY = np.stack([W[m].reshape(-1, L).T @ Y[m].reshape(-1, L) for m in blk.pattern_blocks])
+    return WY, blk.patterns
 
 
 def determined_directions(S: np.ndarray, scale: np.ndarray) -> np.ndarray:

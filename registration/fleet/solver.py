@@ -185,7 +185,7 @@ def fit_windows(design: Design, start: Evaluation, normal: Normal, options: Batc
     return ev, normal
 
 
-#: Refits after setting aside plots that a time bias moves outside their navigation, at most.
+#: Solves again after setting aside plots that a time bias moves outside their navigation, at most.
 MAX_TIME_BIAS_REFITS = 3
 
 
@@ -199,16 +199,15 @@ def outside_when_seen(design: Design, x: np.ndarray) -> np.ndarray:
     return out
 
 
-def _exclude_outside(problem: FleetProblem, outside: np.ndarray) -> FleetProblem:
-    """The problem without the plots ``outside`` (N,), one exclusion per target."""
-    exclusions = []
+def _outside_exclusions(problem: FleetProblem, outside: np.ndarray) -> tuple[Exclusion, ...]:
+    """One exclusion per target of the plots ``outside`` (N,)."""
+    out = []
     for k in np.unique(problem.target[outside]):
         sel = outside & (problem.target == k)
         t = problem.time[sel]
-        exclusions.append(Exclusion(problem.target_ids[k], "seen outside its platform's navigation once its sensor's "
-                                    "time bias is applied (reported time - time bias)", int(sel.sum()),
-                                    float(t.min()), float(t.max())))
-    return problem.drop_plots(outside, exclusions)
+        out.append(Exclusion(problem.target_ids[k], "seen outside its platform's navigation once its sensor's time "
+                             "bias is applied (reported time - time bias)", int(sel.sum()), float(t.min()), float(t.max())))
+    return tuple(out)
 
 
 def time_bias_warnings(layout, x: np.ndarray, options: BatchOptions) -> tuple[str, ...]:
@@ -223,11 +222,29 @@ def time_bias_warnings(layout, x: np.ndarray, options: BatchOptions) -> tuple[st
     return tuple(out)
 
 
+def _set_aside_outside(problem, design, ev, options):
+    """After a fit with time biases, the plots seen outside their navigation, which weighed 0 in
+    the evaluations (registration.fleet.normal), set aside for good: (problem with their
+    exclusions recorded, design with their weights 0), or None when that would leave a window
+    undetermined (then the caller drops the plots and solves anew)."""
+    outside = outside_when_seen(design, ev.x)
+    if not outside.any():
+        return problem, design
+    rows = np.zeros(design.weight.shape[0], dtype=bool)
+    rows[design.slot] = outside[design.blocks.order]
+    design = replace(design, weight=np.where(rows[:, None], 0.0, design.weight))
+    if np.any(np.add.reduceat(design.weight.any(axis=1).astype(np.int64), design.block_start) == 0):
+        return None
+    return replace(problem, excluded=problem.excluded + _outside_exclusions(problem, outside)), design
+
+
 def fit(problem: FleetProblem, options: BatchOptions | None = None, x0: np.ndarray | None = None) -> Fit:
     """Solve the batch problem (module docstring) from states ``x0`` (n,; rad, m; default zeros: a
     warm start only saves iterations); windows of singular geometry are set aside, and so are plots
-    that their sensor's estimated time bias moves outside their platform's navigation (then the
-    problem is solved again from the estimate)."""
+    that their sensor's estimated time bias moves outside their platform's navigation (they weigh
+    0 in every evaluation where they are; at the solution they stay in ``Fit.problem``, listed in
+    its exclusions, with no residual; if that would empty a window they are dropped and the
+    problem solved anew from the estimate)."""
     options = options or BatchOptions()
     x0 = np.zeros(problem.layout.n) if x0 is None else np.array(x0, dtype=np.float64)
     if x0.shape != (problem.layout.n,) or not np.isfinite(x0).all():
@@ -241,9 +258,12 @@ def fit(problem: FleetProblem, options: BatchOptions | None = None, x0: np.ndarr
         ev, normal, _, it1, hist1 = levenberg_marquardt(design, start, np.zeros(0, dtype=np.int64), options,
                                                         TARGETS_FIRST, normal)
         ev, normal, converged, it2, hist2 = levenberg_marquardt(design, ev, problem.layout.free, options, 0.0, normal)
-        outside = outside_when_seen(design, ev.x)
-        if not outside.any() or attempt == MAX_TIME_BIAS_REFITS:
+        aside = _set_aside_outside(problem, design, ev, options)
+        if aside is not None or attempt == MAX_TIME_BIAS_REFITS:
             break
-        problem, x0 = _exclude_outside(problem, outside), ev.x
+        outside = outside_when_seen(design, ev.x)  # a window would be left undetermined: drop and solve anew
+        problem, x0 = problem.drop_plots(outside, _outside_exclusions(problem, outside)), ev.x
+    if aside is not None:
+        problem, design = aside
     return Fit(problem, design, ev.x, ev.coef, converged, it1 + it2, hist1 + hist2[1:], ev, normal,
                time_bias_warnings(problem.layout, ev.x, options))

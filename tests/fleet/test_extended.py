@@ -217,3 +217,43 @@ def test_simulate_with_the_new_errors_writes_their_rows_and_units(tmp_path, caps
     assert set(pd.read_csv(out / "sensors.csv").columns) >= {"prior_range_gain", "prior_time_bias_s", "prior_position_m"}
     tb = est[est["state"] == "time_bias"]
     assert (np.abs(tb["estimate"] - tb["truth"]) < 4 * tb["sigma"]).all()
+
+
+# -- the fast paths against the libraries ------------------------------------------------------
+
+def test_seen_navigation_is_scipys_cubic_hermite_curve():
+    from scipy.interpolate import CubicHermiteSpline
+
+    from registration.fleet.navigation import catmull_rom_slopes, navigation_rate_at
+
+    rng = np.random.default_rng(5)
+    t = np.cumsum(rng.uniform(0.05, 0.2, 60))
+    v = rng.normal(size=(60, 6)) * 0.1  # small angles: the wrap of longitude and heading does not act
+    tq = rng.uniform(t[0] - 1.0, t[-1] + 1.0, 2000)
+    nav, rate, outside = navigation_rate_at({"P": (t, v)}, ["P"], np.zeros(tq.size, dtype=np.int64), tq)
+    curve = CubicHermiteSpline(t, v, catmull_rom_slopes(t, v), axis=0)
+    inside = (tq >= t[0]) & (tq <= t[-1])
+    np.testing.assert_array_equal(outside, ~inside)
+    np.testing.assert_allclose(nav, curve(np.clip(tq, t[0], t[-1])), rtol=0, atol=1e-13)
+    np.testing.assert_allclose(rate[inside], curve(tq[inside], 1), rtol=0, atol=1e-12)
+    assert not rate[~inside].any()
+
+
+def test_window_basis_and_its_rate_are_numpys_legendre_series():
+    from numpy.polynomial import legendre
+
+    sc = fleet_scenario(1, duration_s=60.0)
+    from registration.fleet.blocks import make_blocks
+
+    blk = make_blocks(sc.problem(), 20.0, 3)
+    rng = np.random.default_rng(6)
+    block = rng.integers(0, blk.n_blocks, 500)
+    time = blk.block_centre[block] + rng.uniform(-1.2, 1.2, 500) * blk.block_half[block]
+    basis, rate = blk.basis_and_rate_at(block, time)
+    tau = (time - blk.block_centre[block]) / blk.block_half[block]
+    for k in range(4):
+        c = np.eye(4)[k]
+        mask = blk.coef_mask[block, k]
+        np.testing.assert_allclose(basis[:, k], legendre.legval(tau, c) * mask, atol=1e-13)
+        np.testing.assert_allclose(rate[:, k], legendre.legval(tau, legendre.legder(c)) * mask / blk.block_half[block],
+                                   atol=1e-13)
