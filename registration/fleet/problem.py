@@ -72,9 +72,10 @@ class FleetProblem:
 
     def navigation_at(self, time: np.ndarray, plot: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(nav (M, 6), its rate (M, 6), outside (M,) bool) of the platforms of plots ``plot`` (M,;
-        default all) at times ``time`` (M,) s: the navigation interpolated as at build time, its
-        rate of change (rad/s, m/s) and whether a time lies outside the platform's navigation span
-        (the nearest end is used there). See :func:`registration.fleet.navigation.navigation_rate_at`."""
+        default all) at times ``time`` (M,) s, for plots seen at times corrected by a time bias:
+        the navigation on the C1 Hermite curve through its samples, its rate of change (rad/s, m/s)
+        and whether a time lies outside the platform's navigation span (the nearest end is used
+        there). See :class:`registration.fleet.navigation.SeenNavigation`."""
         plot = np.arange(self.n_plots) if plot is None else plot
         if self.tracks is None:
             raise ValueError("this problem was built without its navigation tracks")
