@@ -72,7 +72,8 @@ def index_of(values: np.ndarray, ids) -> np.ndarray:
 class SensorSpecs:
     """Sensors in table order: platform index (S,), measured channels (S, 3) bool, noise sigma
     (S, 3) m/rad (NaN where not measured), bias priors (S, 3), lever arm (S, 3) m (deck frame),
-    priors of the extended errors (S, 5) in EXTENDED_ERRORS order (NaN = not modelled)."""
+    priors of the extended errors (S, 5) in EXTENDED_ERRORS order (NaN = not modelled);
+    ``sigma_columns``: per channel, whether the table has its sigma column at all."""
 
     ids: tuple[str, ...]
     platform: np.ndarray
@@ -81,6 +82,7 @@ class SensorSpecs:
     prior: np.ndarray
     lever: np.ndarray
     extended_prior: np.ndarray
+    sigma_columns: tuple[bool, ...] = (True, True, True)
 
 
 def read_sensors(table: Table, platform_ids) -> SensorSpecs:
@@ -108,7 +110,7 @@ def read_sensors(table: Table, platform_ids) -> SensorSpecs:
     lever = np.stack([table.floats(f"lever_{a}", default=0.0) for a in "xyz"], axis=1)
     check_range("sensors.lever", lever, -1.0e4, 1.0e4, "m (deck frame)")
     return SensorSpecs(tuple(str(s) for s in ids), np.array([index[p] for p in plat], dtype=np.int64), ~np.isnan(sigma), sigma,
-                       prior, lever, _extended_priors(table, ids))
+                       prior, lever, _extended_priors(table, ids), tuple(table.has(f"sigma_{c}") for c in CHANNELS))
 
 
 def _extended_priors(table: Table, ids) -> np.ndarray:
@@ -171,22 +173,42 @@ def _channel_problem(values: np.ndarray, k: int, sensor_ids, sensor: np.ndarray)
     return RowProblem(code, name, bad, message)
 
 
+def _article(word: str) -> str:
+    return ("an " if word[:1] in "aeiou" else "a ") + word
+
+
+def _missing_sigma_columns(sensors: SensorSpecs, names: np.ndarray, mask: np.ndarray) -> None:
+    """A ValueError, the sensors table's, for a channel with plot values whose sigma column the
+    sensors table lacks altogether (no sensor measures it): not the plots' fault row by row."""
+    for k, c in enumerate(CHANNELS):
+        if not sensors.sigma_columns[k] and mask[:, k].any():
+            row = int(np.argmax(mask[:, k]))
+            which = [str(s) for s in np.unique(names[mask[:, k]])]
+            raise ValueError(f"sensors: no sigma_{c} column, but the plots have {c} values for sensor(s) {which} "
+                             f"({int(mask[:, k].sum())} plots; the first, plots row {row}): give the sensors' "
+                             f"sigma_{c}, or leave the plots' {c} empty (NaN)")
+
+
 def plot_problems(table: Table, sensors: SensorSpecs) -> list[RowProblem]:
     """The problems of the plots rows, in the order :func:`read_plots` checks them: time not
     finite, unknown sensor, a channel outside its window, a value in a channel the sensor does not
-    measure, no measured channel. A row may be hit by several; its first one is its reason."""
+    measure, no measured channel. A row may be hit by several; its first one is its reason.
+    ValueError (the sensors table's) when the plots have values of a channel whose sigma column
+    the sensors table lacks."""
     time = table.floats("time")
     names = table.ids("sensor")
     sensor = index_of(names, sensors.ids)
     known = sensor >= 0
     meas = np.stack([table.floats(c, default=np.nan) for c in CHANNELS], axis=1)
     mask = np.isfinite(meas)
+    _missing_sigma_columns(sensors, names, mask & known[:, None])
     extra = mask & ~sensors.channels[np.where(known, sensor, 0)] & known[:, None]
     first_extra = np.array(CHANNELS)[np.argmax(extra, axis=1)]
 
     def unmeasured(row: int) -> str:
         c = first_extra[row]
-        return f"sensor {str(names[row])!r} has a {c} value but does not measure {c} (no sigma_{c} in the sensors table)"
+        return (f"sensor {str(names[row])!r} has {_article(c)} value but does not measure {c} (its sigma_{c} in the "
+                f"sensors table is empty): give it there, or leave the plots' {c} of this sensor empty")
     return [
         RowProblem("non_finite", "time", ~np.isfinite(time), lambda r: f"time {time[r]} is not a finite number of seconds"),
         RowProblem("unknown_sensor", "sensor", ~known,

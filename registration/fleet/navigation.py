@@ -1,9 +1,11 @@
 """Platform navigation at the plot times: checks of the navigation table and interpolation.
 
-A platform with one navigation row is a fixed site: that row holds at every time. Otherwise the
-rows (strictly increasing times) are interpolated linearly to each plot time, longitude and
-heading unwrapped first and wrapped back to (-pi, pi] after. A plot outside its platform's
-navigation time span is an error: extrapolating a ship's attitude is not done.
+Rows of platforms that carry no sensor are ignored (:func:`unused_platforms` names them: a real
+navigation export carries every ship). A platform with one navigation row is a fixed site: that
+row holds at every time. Otherwise the rows (strictly increasing times) are interpolated linearly
+to each plot time, longitude and heading unwrapped first and wrapped back to (-pi, pi] after. A
+plot outside its platform's navigation time span is an error: extrapolating a ship's attitude is
+not done.
 
 Linear interpolation of a rolling ship's attitude errs by at most ``h^2 w^2 A / 8`` (step h s,
 roll amplitude A rad, angular frequency w rad/s): 0.002 deg for 5 deg at a 12 s period sampled at
@@ -19,7 +21,7 @@ from registration.core.validation import check_range
 from registration.fleet.tables import NAV_COLUMNS, Table
 
 __all__ = ["NAV_LIMITS", "SeenNavigation", "catmull_rom_slopes", "hermite_cubics", "platform_navigation",
-           "navigation_at", "navigation_rate_at", "outside_navigation"]
+           "unused_platforms", "navigation_at", "navigation_rate_at", "outside_navigation"]
 
 #: Accepted window (low, high, unit) of each navigation column.
 NAV_LIMITS = {
@@ -33,22 +35,31 @@ NAV_LIMITS = {
 _UNWRAP = ("lon", "heading")
 
 
-def platform_navigation(nav: Table, platform_ids) -> dict[str, tuple[np.ndarray, np.ndarray]]:
-    """Per platform id: (times (K,), values (K, 6) in NAV_COLUMNS order, angles unwrapped).
+def unused_platforms(nav: Table, platform_ids) -> list[str]:
+    """Notes naming the platforms of the navigation table that are not in ``platform_ids`` (they
+    carry no sensor): :func:`platform_navigation` ignores their rows."""
+    ids = nav.ids("platform")
+    unknown = ~np.isin(ids, list(platform_ids))
+    if not unknown.any():
+        return []
+    return [f"navigation: platform(s) {sorted(np.unique(ids[unknown]).tolist())} carry no sensor; their "
+            f"{int(unknown.sum())} rows are ignored (platforms used: {list(platform_ids)})"]
 
-    ValueError for a platform with no navigation, navigation of an unknown platform, values out
-    of range, or times that are not finite and strictly increasing.
+
+def platform_navigation(nav: Table, platform_ids) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Per platform id of ``platform_ids``: (times (K,), values (K, 6) in NAV_COLUMNS order, angles
+    unwrapped). Rows of other platforms are ignored (:func:`unused_platforms` names them).
+
+    ValueError for a platform with no navigation, values out of range, or times that are not
+    finite and strictly increasing.
     """
     ids = nav.ids("platform")
+    used = np.isin(ids, list(platform_ids))
     values = np.stack([nav.floats(c) for c in NAV_COLUMNS], axis=1)
     for j, c in enumerate(NAV_COLUMNS):
         lo, hi, unit = NAV_LIMITS[c]
-        check_range(f"navigation.{c}", values[:, j], lo, hi, unit, angle=unit.startswith("rad"))
+        check_range(f"navigation.{c}", np.where(used, values[:, j], 0.0), lo, hi, unit, angle=unit.startswith("rad"))
     time = nav.floats("time", default=np.nan)
-    unknown = np.flatnonzero(~np.isin(ids, list(platform_ids)))
-    if unknown.size:
-        row = int(unknown[0])
-        raise nav.error(row, f"platform {str(ids[row])!r} is not in the platforms/sensors tables (known: {list(platform_ids)})")
     out = {}
     for pid in platform_ids:
         rows = np.flatnonzero(ids == pid)

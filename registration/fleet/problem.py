@@ -18,7 +18,9 @@ from registration.fleet.inputs import (
     References, RowProblem, index_of, plot_problems, read_platforms, read_plots, read_references, read_sensors,
 )
 from registration.fleet.layout import StateLayout, make_layout
-from registration.fleet.navigation import navigation_at, navigation_rate_at, outside_navigation, platform_navigation
+from registration.fleet.navigation import (
+    navigation_at, navigation_rate_at, outside_navigation, platform_navigation, unused_platforms,
+)
 from registration.fleet.tables import read_table
 
 __all__ = ["Exclusion", "FleetProblem", "build_problem", "plot_row_problems"]
@@ -48,6 +50,8 @@ class FleetProblem:
     ``nav[i]`` (lat, lon rad, alt m, heading, pitch, roll rad as reported), and ``row[i]``, its row
     in the input plots table. Sensors: ``sensor_sigma`` (S, 3) noise sigma (NaN = not measured),
     ``sensor_lever`` (S, 3) m, deck frame. ``excluded``: targets set aside, with reasons.
+    ``notes``: what was ignored without an error (the navigation of platforms that carry no
+    sensor), one text each.
     """
 
     platform_ids: tuple[str, ...]
@@ -69,6 +73,7 @@ class FleetProblem:
     ref_target: np.ndarray  # (R,) index into target_ids
     excluded: tuple[Exclusion, ...] = field(default_factory=tuple)
     tracks: dict | None = None  # per platform id: navigation (times, values), for plots seen at other times
+    notes: tuple[str, ...] = ()  # what was ignored without an error, e.g. navigation of platforms without sensors
 
     def navigation_at(self, time: np.ndarray, plot: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(nav (M, 6), its rate (M, 6), outside (M,) bool) of the platforms of plots ``plot`` (M,;
@@ -111,6 +116,7 @@ class FleetProblem:
                f"{self.n_plots} plots used of {self.n_input_plots}, {len(self.references.time)} reference positions, "
                f"{self.layout.n} states ({self.layout.free.size} estimated)"]
         out += [f"  excluded: {e.text()}" for e in self.excluded]
+        out += [f"  note: {n}" for n in self.notes]
         return out
 
 
@@ -183,12 +189,16 @@ def build_problem(plots, sensors, navigation, platforms=None, references=None) -
     ValueError names the table, row and object for: a missing column, an unknown sensor,
     platform or reference target, a sensor with no measured channel, a negative or zero noise
     sigma, a negative prior, a value out of range (with a hint when degrees seem to have been
-    given for radians), a plot outside its platform's navigation time span.
+    given for radians), a plot outside its platform's navigation time span, an empty plots table,
+    plots with values in a channel whose sigma column the sensors table lacks. The navigation of
+    platforms that carry no sensor is ignored, and named in ``problem.notes``.
     """
     sensors_t = read_table("sensors", sensors, ("sensor", "platform"))
     platform_ids, platform_priors = read_platforms(platforms, sensors_t.ids("platform"))
     specs = read_sensors(sensors_t, platform_ids)
     plots_t = read_table("plots", plots, ("time", "sensor", "target"))
+    if plots_t.n_rows == 0:
+        raise ValueError("plots: the table has no rows, so there is nothing to register")
     cols = read_plots(plots_t, specs)
     refs = read_references(references, list(dict.fromkeys(cols.target)))
     excluded = _single_sensor_targets(cols, refs)
@@ -196,7 +206,8 @@ def build_problem(plots, sensors, navigation, platforms=None, references=None) -
     target_ids = _first_seen(cols.target[keep])
     sensor = cols.sensor[keep]
     time = cols.time[keep]
-    tracks = platform_navigation(read_table("navigation", navigation, ("platform",)), platform_ids)
+    nav_t = read_table("navigation", navigation, ("platform",))
+    tracks = platform_navigation(nav_t, platform_ids)
 
     def describe(i: int) -> str:
         return f"plots row {int(keep[i])} (sensor {str(specs.ids[sensor[i]])!r}, time {time[i]:g} s)"
@@ -211,5 +222,5 @@ def build_problem(plots, sensors, navigation, platforms=None, references=None) -
         time=time, sensor=sensor, target=index_of(cols.target[keep], target_ids),
         meas=cols.meas[keep], mask=cols.mask[keep], nav=nav, row=keep, n_input_plots=int(cols.time.shape[0]),
         references=refs, ref_target=index_of(refs.target, target_ids),
-        excluded=tuple(excluded), tracks=tracks,
+        excluded=tuple(excluded), tracks=tracks, notes=tuple(unused_platforms(nav_t, platform_ids)),
     )

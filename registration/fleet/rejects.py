@@ -14,7 +14,10 @@ empty, NaN or infinite number, ``out_of_range``, ``non_positive_range``, ...) an
 * ``unknown_target``: a reference position of a target that has no (accepted) plots;
 * ``no_channel``: a plot with no measured value (reported in column ``range_m``);
 * ``unmeasured_channel``: a value in a channel the sensor does not measure (no sigma for it);
-* ``outside_navigation``: a plot outside its platform's navigation time span.
+* ``outside_navigation``: a plot outside its platform's navigation time span;
+* ``short_row`` / ``long_row`` (from the recorded files' codes): a CSV line with fewer / more
+  fields than the header (a line cut short, a missing line break), reported in the first column
+  the line does not reach / in column ``*``.
 """
 
 from __future__ import annotations
@@ -94,28 +97,35 @@ class NoValidPlotsError(NoValidRowsError):
 
 class BadRows:
     """The bad rows of one file: ``skip`` True records the first problem of each row (the order of
-    the :meth:`add` calls decides which is first); False raises at the first problem added."""
+    the :meth:`add` calls decides which is first); False raises at the first problem added.
+    ``file_rows`` (n_rows,): the file row of each row checked, when some of the file's rows are
+    not checked (default: row i is file row i)."""
 
-    def __init__(self, file, n_rows: int, skip: bool):
+    def __init__(self, file, n_rows: int, skip: bool, file_rows: np.ndarray | None = None):
         self.file, self.n_rows, self.skip = str(file), int(n_rows), skip
+        self.file_rows = file_rows
         self.first: dict[int, tuple[str, str, str]] = {}  # row -> (column, code, reason)
 
     def add(self, column: str | Callable[[int], str], code: str | Callable[[int], str], bad: np.ndarray,
             reason: Callable[[int], str], rows: np.ndarray | None = None) -> None:
         """Rows flagged in ``bad`` (K,) have the problem ``reason(i)``; ``rows`` (K,) maps them to
-        file rows (default: the identity). ``column``, ``code``: one for all, or per flagged row i."""
+        the rows checked (default: the identity), which ``file_rows`` maps to file rows. ``column``,
+        ``code``: one for all, or per flagged row i."""
         hit = np.flatnonzero(bad)
         if hit.size == 0:
             return
         at = (lambda v, i: v if isinstance(v, str) else v(i))
-        file_row = (lambda i: int(i)) if rows is None else (lambda i: int(rows[i]))
+        row = (lambda i: int(i)) if rows is None else (lambda i: int(rows[i]))
         if not self.skip:
             i = int(hit[0])
-            raise ValueError(f"{self.file}: row {file_row(i)}, column {at(column, i)!r}: {reason(i)}")
+            raise ValueError(f"{self.file}: row {self._file_row(row(i))}, column {at(column, i)!r}: {reason(i)}")
         for i in hit:
-            r = file_row(i)
+            r = row(i)
             if r not in self.first:
                 self.first[r] = (at(column, int(i)), at(code, int(i)), reason(int(i)))
+
+    def _file_row(self, r: int) -> int:
+        return r if self.file_rows is None else int(self.file_rows[r])
 
     def ok(self) -> np.ndarray:
         """(n_rows,) bool: the rows with no problem recorded."""
@@ -124,4 +134,4 @@ class BadRows:
         return out
 
     def rejected(self) -> list[RejectedRow]:
-        return [RejectedRow(self.file, r, *self.first[r]) for r in sorted(self.first)]
+        return [RejectedRow(self.file, self._file_row(r), *self.first[r]) for r in sorted(self.first)]

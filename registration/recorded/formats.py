@@ -1,15 +1,17 @@
 """Reading and writing recorded tables: CSV and Parquet, units converted only here.
 
-The format follows the suffix: ``.csv`` or ``.parquet`` (``.pq``). CSV is read with pandas in
-chunks and Parquet by record batches, so a reader never holds more than one block of rows
-(:func:`iter_frames`); CSV outputs are written with pyarrow (shortest round-trip float text, so a
-value read back is bit-for-bit the value written). :func:`to_file_frame` and
+The format follows the suffix: ``.csv`` or ``.parquet`` (``.pq``). CSV is read in blocks of whole
+lines (:mod:`registration.recorded.csvrows`, which also counts each line's fields) and Parquet by
+record batches, so a reader never holds more than one block of rows (:func:`iter_frames`); CSV
+outputs are written with pyarrow (shortest round-trip float text, so a value read back is
+bit-for-bit the value written). :func:`to_file_frame` and
 :func:`from_file_frame` convert between the data contract (SI units, radians) and the file
 columns of :mod:`registration.recorded.columns` (degrees, metres).
 
 Errors: :class:`~registration.recorded.columns.FileFormatError` (a ``ValueError``) for a file that
-cannot be read as a table at all (unknown suffix, unreadable CSV line, not a Parquet file, ...);
-row-level problems are the business of :mod:`registration.recorded.rowcheck`.
+cannot be read as a table at all (unknown suffix, an empty file, an unterminated quote, not a
+Parquet file, ...); row-level problems are the business of :mod:`registration.recorded.rowcheck`,
+a CSV line with fewer or more fields than the header included (:mod:`registration.recorded.csvrows`).
 """
 
 from __future__ import annotations
@@ -21,6 +23,7 @@ from typing import Iterator, Mapping
 import numpy as np
 
 from registration.recorded.columns import SYNC_COLUMNS, SYNC_FIELDS, FileFormatError
+from registration.recorded.csvrows import SHAPE_COLUMN, read_csv_blocks
 from registration.recorded.rowcheck import check_frame, sync_layout
 
 __all__ = [
@@ -120,17 +123,19 @@ def read_table(path, *, validate: bool = True) -> dict:
 # --------------------------------------------------------------------------- streaming reader
 def read_columns(path) -> list[str]:
     """The column names of a CSV or Parquet file (without reading its rows)."""
+    import pandas as pd
+
     fmt = file_format(path)
     try:
         if fmt == "csv":
-            import pandas as pd
-
             return [str(c).strip() for c in pd.read_csv(path, nrows=0).columns]
         import pyarrow.parquet as pq
 
         return [str(n).strip() for n in pq.ParquetFile(str(path)).schema_arrow.names]
     except FileNotFoundError as exc:
         raise FileFormatError(f"{path}: no such file") from exc
+    except pd.errors.EmptyDataError as exc:
+        raise FileFormatError(f"{path}: the file is empty: no header line and no data rows") from exc
     except FileFormatError:
         raise
     except Exception as exc:  # pandas/pyarrow parse errors of many types
@@ -156,7 +161,10 @@ def iter_frames(path, columns, chunk_rows: int, start_row: int = 0) -> Iterator[
     missing column means). Blocks are aligned on absolute row numbers: the first block starts at
     ``start_row`` and every block boundary is ``start_row + i * chunk_rows``, so a run resumed at a
     block boundary sees the same blocks as an uninterrupted one. Memory: one block (plus pandas'
-    or pyarrow's own read buffer). Raises :class:`FileFormatError` when the file cannot be parsed.
+    or pyarrow's own read buffer). A CSV frame with a line of fewer or more fields than the
+    header also has the column :data:`~registration.recorded.csvrows.SHAPE_COLUMN` (per row None,
+    or its :class:`~registration.recorded.csvrows.RowShape`; NaN in rows of blocks joined to it).
+    Raises :class:`FileFormatError` when the file cannot be parsed.
     """
     import pandas as pd
 
@@ -167,9 +175,7 @@ def iter_frames(path, columns, chunk_rows: int, start_row: int = 0) -> Iterator[
     wanted = [c for c in columns if c in present]
     try:
         if fmt == "csv":
-            # every column is parsed (no usecols): with usecols pandas silently drops the extra fields
-            # of a malformed line instead of reporting it
-            source = _csv_frames(path, chunk_rows, wanted)
+            source = _csv_frames(path, wanted)
             base = 0
         else:
             import pyarrow.parquet as pq
@@ -200,22 +206,13 @@ def iter_frames(path, columns, chunk_rows: int, start_row: int = 0) -> Iterator[
         raise
 
 
-def _csv_frames(path, chunk_rows: int, wanted: list[str]) -> Iterator[object]:
-    """The wanted columns of a CSV file, chunk by chunk. A first data line with more fields than the
-    header (which pandas would truncate with only a warning) raises instead, like any other."""
-    import warnings
-
-    import pandas as pd
-
-    reader = pd.read_csv(path, chunksize=chunk_rows, index_col=False, skipinitialspace=True)
-    while True:
-        with warnings.catch_warnings():
-            warnings.simplefilter("error", pd.errors.ParserWarning)
-            try:
-                frame = next(reader)
-            except StopIteration:
-                return
-        yield frame[[c for c in frame.columns if str(c).strip() in wanted]]
+def _csv_frames(path, wanted: list[str]) -> Iterator[object]:
+    """The wanted columns of a CSV file, block by block, with the shape of each row
+    (:data:`~registration.recorded.csvrows.SHAPE_COLUMN`: a line with fewer or more fields than the
+    header is a bad row for :func:`~registration.recorded.rowcheck.check_frame`, not a row whose
+    missing cells read as empty or whose extra fields are dropped)."""
+    for frame in read_csv_blocks(path):
+        yield frame[[c for c in frame.columns if str(c).strip() in wanted or c == SHAPE_COLUMN]]
 
 
 def _rechunk(source, base: int, start_row: int, chunk_rows: int, path) -> Iterator[tuple[int, object]]:

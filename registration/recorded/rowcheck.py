@@ -8,6 +8,9 @@ each problem into a reason in the file's own units.
 
 Reasons (``code``: meaning):
 
+* ``short_row`` / ``long_row``: the row's CSV line has fewer / more fields than the header (a line
+  cut short by a recorder that stopped mid-write, a missing line break); checked first, so the
+  cells a short line lacks are never read as empty (:mod:`registration.recorded.csvrows`);
 * ``missing_column``: the file lacks a required column (every row gets this reason);
 * ``non_numeric``: the cell is not a number (text, a boolean, a date, ...);
 * ``non_finite``: the cell is empty, NaN or infinite;
@@ -18,10 +21,11 @@ Reasons (``code``: meaning):
 * ``filter_non_finite``: (set by the filter pass) the filter step for this row would have produced
   non-finite values, so the row was not used.
 
-A row with several problems gets the first one, in column order (time first); the timestamp order
-is checked only on rows that are otherwise valid, against the last accepted row. In ``stop`` mode
-the first bad row raises :class:`BadRowError` naming file, row, column and reason; in ``skip``
-mode the block comes back with the row flagged, and the caller writes it to ``rejected.csv``.
+A row with several problems gets the first one, in column order (time first), a short or long
+line before any; the timestamp order is checked only on rows that are otherwise valid, against
+the last accepted row. In ``stop`` mode the first bad row raises :class:`BadRowError` naming file,
+row, column and reason; in ``skip`` mode the block comes back with the row flagged, and the caller
+writes it to ``rejected.csv``.
 Rows are numbered from 0 (the first data row; a CSV header line is not a row).
 """
 
@@ -37,12 +41,13 @@ from registration.online.contract import (
     LIMITS, N_ROW, PROBLEM_NON_FINITE, PROBLEM_NON_POSITIVE, SENSOR_COLUMNS, SENSOR_ROW, SENSORS, cell_problems,
 )
 from registration.recorded.columns import NAV_KINDS, PLOT_KINDS, SYNC_FIELDS, TIME_FIELD, Field, sensor_fields
+from registration.recorded.csvrows import SHAPE_COLUMN
 
 __all__ = ["BadRowError", "Layout", "CheckedBlock", "Rejection", "check_frame", "sync_layout", "plot_layout", "nav_layout", "REASON_CODES"]
 
 REASON_CODES = (
     "missing_column", "non_numeric", "non_finite", "out_of_range", "non_positive_range",
-    "time_backwards", "time_duplicate", "filter_non_finite",
+    "time_backwards", "time_duplicate", "filter_non_finite", "short_row", "long_row",
 )
 _NON_NUMERIC, _MISSING = 10, 11  # file-level codes beside contract.cell_problems' 1..3
 
@@ -247,7 +252,9 @@ def check_frame(frame, layout: Layout, file: str, *, first_row: int, mode: str =
     tcode = codes[:, 0]
     tcode[(tcode == 0) & ~np.isfinite(t)] = PROBLEM_NON_FINITE
 
-    field_bad = codes.any(axis=1)
+    shapes = frame[SHAPE_COLUMN].to_numpy() if SHAPE_COLUMN in frame else np.full(k, None)
+    shaped = frame[SHAPE_COLUMN].notna().to_numpy() if SHAPE_COLUMN in frame else np.zeros(k, dtype=bool)
+    field_bad = codes.any(axis=1) | shaped
     # timestamp order among the rows that are otherwise valid (see module docstring)
     prev = np.full(k, -np.inf if last_time is None else last_time)
     cand = np.flatnonzero(~field_bad)
@@ -263,7 +270,9 @@ def check_frame(frame, layout: Layout, file: str, *, first_row: int, mode: str =
     rejections: list[Rejection] = []
     bad_rows = np.flatnonzero(~accepted)
     for i in bad_rows:
-        if field_bad[i]:
+        if shaped[i]:  # the line's fields do not match the header: its cells are not trusted
+            column, code, reason = shapes[i].column, shapes[i].code, shapes[i].reason()
+        elif field_bad[i]:
             j = int(np.argmax(codes[i] != 0))
             f = layout.fields[j]
             raw = frame[f.file_name].iloc[i] if f.file_name in frame else None

@@ -1,11 +1,13 @@
 """Fleet tables as CSV/Parquet files: round trip, unit conversion and the cell checks."""
 
+import re
+
 import numpy as np
 import pandas as pd
 import pytest
 
 from registration.core.frames import ecef2geodetic, geodetic2ecef
-from registration.fleet import fleet_scenario
+from registration.fleet import build_problem, fleet_scenario
 from registration.fleet.files import read_fleet_tables
 from registration.fleet.files_write import write_fleet_tables
 
@@ -245,3 +247,218 @@ def test_skip_mode_sets_aside_the_reference_of_a_target_left_without_plots(scena
     codes = {r.code for r in tables.rejected if r.file == str(paths["reference"])}
     assert codes == {"unknown_target"} and tables.rows()["reference"] == 0
     assert tables.problem().references.time.size == 0
+
+
+# --- a CSV line with fewer or more fields than the header is a bad row, not a row of empty cells ---
+
+def _lines(path):
+    return path.read_text().splitlines()
+
+
+def _put_lines(path, lines):
+    path.write_text("\n".join(lines) + "\n")
+
+
+def _cut(line: str, keep: int) -> str:
+    """The first ``keep`` fields of a CSV line (the files' ids are quoted but hold no comma)."""
+    return ",".join(line.split(",")[:keep])
+
+
+@pytest.mark.parametrize("where, edit, column, code, fields", [
+    ("last", lambda line: _cut(line, 5), "elevation_deg", "short_row", 5),  # a half-written last line
+    ("middle", lambda line: _cut(line, 4), "bearing_deg", "short_row", 4),
+    ("first", lambda line: line + ",7.5", "*", "long_row", 7),  # pandas would truncate it with a warning
+    ("middle", lambda line: line + ",7.5,8", "*", "long_row", 8),  # pandas would refuse the whole file
+])
+def test_a_line_with_another_number_of_fields_is_a_bad_row(scenario, tmp_path, where, edit, column, code, fields):
+    """Before: a line cut to 5 of 6 fields read as a plot without elevation ("not measured"), exit 0."""
+    paths = _write(scenario, tmp_path)
+    lines = _lines(paths["plots"])
+    row = {"first": 0, "middle": 60, "last": len(lines) - 2}[where]
+    lines[row + 1] = edit(lines[row + 1])
+    _put_lines(paths["plots"], lines)
+    with pytest.raises(ValueError, match=rf"plots.csv: row {row}, column '{re.escape(column)}': line {row + 2} has "
+                                         rf"{fields} fields, the header 6"):
+        _read(paths)
+    tables = read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row="skip")
+    assert [(r.row, r.column, r.code) for r in tables.rejected] == [(row, column, code)]
+    assert tables.rows()["plots"] == len(lines) - 2 and tables.rows_read()["plots"] == len(lines) - 1
+    del lines[row + 1]
+    _put_lines(paths["plots"], lines)
+    clean = _read(paths)
+    for key, v in clean.plots.items():  # nothing shifted, nothing read as empty: the file without the line
+        np.testing.assert_array_equal(tables.plots[key], v, err_msg=key)
+
+
+@pytest.mark.parametrize("mode", ["stop", "skip"])
+def test_a_cut_line_of_the_navigation_stops_in_both_modes(scenario, tmp_path, mode):
+    paths = _write(scenario, tmp_path)
+    lines = _lines(paths["navigation"])
+    lines[-1] = _cut(lines[-1], 6)
+    _put_lines(paths["navigation"], lines)
+    with pytest.raises(ValueError, match=rf"navigation.csv: row {len(lines) - 2}, column 'pitch_deg': line "
+                                         rf"{len(lines)} has 6 fields, the header 8"):
+        read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row=mode)
+
+
+def test_an_empty_plots_file_is_named(scenario, tmp_path):
+    """Before: "no plots to register (every target was excluded: )"."""
+    paths = _write(scenario, tmp_path)
+    paths["plots"].write_text(_lines(paths["plots"])[0] + "\n")
+    for mode in ("stop", "skip"):
+        with pytest.raises(ValueError, match=r"plots.csv: no data rows \(the file holds only a header\)"):
+            read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row=mode)
+    with pytest.raises(ValueError, match="plots: the table has no rows"):
+        build_problem({k: v[:0] for k, v in scenario.plots.items()}, scenario.sensors, scenario.navigation)
+
+
+# --- navigation of platforms that carry no sensor: ignored, with a note ---
+
+def _with_extra_ship(scenario):
+    """The scenario's navigation with a ship 'X' (a copy of A's rows) that carries no sensor."""
+    nav = scenario.navigation
+    extra = {k: np.asarray(v)[nav["platform"] == "A"] for k, v in nav.items()}
+    extra["platform"] = np.full(extra["platform"].size, "X")
+    return {k: np.concatenate([np.asarray(v), extra[k]]) for k, v in nav.items()}, int(extra["platform"].size)
+
+
+def test_navigation_of_a_platform_without_sensors_is_ignored_with_a_note(scenario, tmp_path):
+    """Before: navigation.csv: row R: platform 'X' is not in the platforms/sensors tables."""
+    s = scenario
+    nav, n_extra = _with_extra_ship(s)
+    paths = _write(scenario, tmp_path)
+    write_fleet_tables(tmp_path, s.plots, nav, s.sensors, s.platforms, s.references)
+    frame = _frame(paths["navigation"]).astype({"alt_m": object})
+    frame.loc[frame.index[frame["platform"] == "X"][3], "alt_m"] = "high"  # a bad cell in an ignored row
+    frame.to_csv(paths["navigation"], index=False)
+    tables = _read(paths)
+    assert len(tables.notes) == 1 and "navigation.csv: platform(s) ['X'] carry no sensor" in tables.notes[0]
+    assert f"their {n_extra} navigation rows are ignored" in tables.notes[0]
+    problem = tables.problem()
+    assert problem.notes == tuple(tables.notes)
+    (tmp_path / "without").mkdir()
+    without = _read(_write(scenario, tmp_path / "without")).problem()
+    np.testing.assert_array_equal(problem.nav, without.nav)
+    # the library tables too: a note, no error
+    direct = build_problem(s.plots, s.sensors, nav, s.platforms, s.references)
+    assert len(direct.notes) == 1 and "platform(s) ['X'] carry no sensor" in direct.notes[0]
+    assert "note: navigation: platform(s) ['X']" in "\n".join(direct.lines())
+
+
+def test_a_navigation_error_names_the_file_row_with_ignored_rows_before_it(scenario, tmp_path):
+    s = scenario
+    nav, n_extra = _with_extra_ship(s)
+    order = np.r_[np.arange(nav["time"].size - n_extra, nav["time"].size), np.arange(nav["time"].size - n_extra)]
+    nav = {k: v[order] for k, v in nav.items()}  # X's rows first
+    write_fleet_tables(tmp_path, s.plots, nav, s.sensors, s.platforms, s.references)
+    paths = {n: tmp_path / f"{n}.csv" for n in NAMES}
+    frame = _frame(paths["navigation"])
+    good = frame.copy()
+    frame = frame.astype({"lat_deg": object})
+    frame.loc[n_extra + 5, "lat_deg"] = "north"
+    frame.to_csv(paths["navigation"], index=False)
+    with pytest.raises(ValueError, match=rf"navigation.csv: row {n_extra + 5}, column 'lat_deg': 'north'"):
+        _read(paths)
+    good.loc[n_extra + 5, "time_s"] = good.loc[n_extra + 4, "time_s"]  # a check of build_problem's, in both modes
+    good.to_csv(paths["navigation"], index=False)
+    for mode in ("stop", "skip"):
+        with pytest.raises(ValueError, match=rf"navigation.csv: row {n_extra + 4}: time .* does not increase"):
+            read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row=mode).problem()
+
+
+# --- radians in the attitude columns, and angle sigmas that look like radians ---
+
+def _track(heading_deg, speed=8.0, course_deg=None, n=600, dt=1.0, pitch=None, roll=None):
+    """File columns of one platform sailing a course (deg; default: its heading) at ``speed`` m/s."""
+    t = np.arange(n) * dt
+    heading = np.broadcast_to(np.asarray(heading_deg, dtype=float), t.shape)
+    course = np.radians(heading if course_deg is None else np.broadcast_to(course_deg, t.shape))
+    step = speed * dt
+    north, east = np.cumsum(step * np.cos(course)), np.cumsum(step * np.sin(course))
+    lat = 36.0 + np.degrees(north / 6.371e6)
+    lon = 14.0 + np.degrees(east / (6.371e6 * np.cos(np.radians(36.0))))
+    zero = np.zeros(n)
+    return {"time_s": t, "lat_deg": lat, "lon_deg": lon, "heading_deg": np.array(heading),
+            "pitch_deg": zero if pitch is None else pitch, "roll_deg": zero if roll is None else roll}
+
+
+@pytest.mark.parametrize("columns, refused", [
+    (_track(60.0 + np.zeros(600)), False),  # degrees, a steady course
+    (_track(np.radians(60.0) + np.zeros(600), course_deg=60.0), True),  # radians of the same ship
+    (_track(np.radians(np.linspace(10, 300, 600)), course_deg=np.linspace(10, 300, 600)), True),  # radians, turning
+    (_track(2.0 + np.zeros(600)), False),  # degrees, heading north within +-2 pi: matches its track as degrees
+    (_track(np.radians(2.0) + np.zeros(600), course_deg=2.0), False),  # radians near north: undecidable, not refused
+    (_track(3.0 + np.zeros(600), course_deg=20.0), False),  # degrees with 17 deg of drift
+    (_track(np.zeros(600), speed=0.0), False),  # a site that does not move
+])
+def test_headings_in_radians_are_refused_only_when_the_track_says_so(columns, refused):
+    from registration.fleet.filechecks import attitude_check
+
+    platform = np.full(columns["time_s"].size, "A")
+    if refused:
+        with pytest.raises(ValueError, match=r"nav.csv: row \d+, column 'heading_deg': .* platform 'A' .*radians\?"):
+            attitude_check("nav.csv", columns, platform)
+    else:
+        assert attitude_check("nav.csv", columns, platform) == []
+
+
+def test_pitch_and_roll_that_look_like_radians_are_noted_not_refused():
+    from registration.fleet.filechecks import attitude_check
+
+    wave = np.sin(np.arange(600) / 8.0)
+    platform = np.full(600, "A")
+    assert attitude_check("nav.csv", _track(60.0, pitch=1.5 * wave, roll=4.0 * wave), platform) == []  # degrees
+    notes = attitude_check("nav.csv", _track(60.0, pitch=np.radians(1.5) * wave, roll=np.radians(4.0) * wave), platform)
+    assert len(notes) == 1 and "pitch_deg and roll_deg of platform 'A'" in notes[0] and "radians?" in notes[0]
+    assert attitude_check("nav.csv", _track(60.0), platform) == []  # level: zeros are not noted
+
+
+def test_a_navigation_file_with_attitude_in_radians_is_refused_up_front(scenario, tmp_path):
+    """Before: the run went on for seconds and ended in the consistency gate (exit 3)."""
+    paths = _write(scenario, tmp_path)
+    frame = _frame(paths["navigation"])
+    for column in ("heading_deg", "pitch_deg", "roll_deg"):
+        frame[column] = np.radians(frame[column])
+    frame.to_csv(paths["navigation"], index=False)
+    with pytest.raises(ValueError, match=r"navigation.csv: row \d+, column 'heading_deg': .*radians\? heading_deg, "
+                                         r"pitch_deg and roll_deg are in degrees"):
+        read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row="skip")
+
+
+def test_angle_sigmas_that_look_like_radians_are_noted(scenario, tmp_path):
+    paths = _write(scenario, tmp_path)
+    assert _read(paths).notes == []
+    sensors = _frame(paths["sensors"])
+    sensors["sigma_bearing_deg"] = np.radians(sensors["sigma_bearing_deg"])
+    sensors.to_csv(paths["sensors"], index=False)
+    notes = _read(paths).notes
+    assert len(notes) == 1 and "sensors.csv: sigma_bearing_deg below 0.02 deg for sensor(s) 'A-3D'" in notes[0]
+    assert "radians?" in notes[0]
+
+
+# --- a channel with plot values but no sigma column in the sensors file is the sensors file's problem ---
+
+@pytest.mark.parametrize("mode", ["stop", "skip"])
+def test_a_missing_sigma_column_is_blamed_on_the_sensors_file(scenario, tmp_path, mode):
+    """Before: plots.csv: row 0 ... has a elevation value but does not measure elevation."""
+    paths = _write(scenario, tmp_path)
+    _frame(paths["sensors"]).drop(columns="sigma_elevation_deg").to_csv(paths["sensors"], index=False)
+    with pytest.raises(ValueError, match=r"sensors.csv: no column 'sigma_elevation_deg', but .*plots.csv has elevation "
+                                         r"values .* for sensor\(s\) \['A-3D', 'A-ESM', 'B-3D', 'C-3D'\] .*give their "
+                                         r"sigma_elevation_deg, or leave the plots' elevation_deg cells empty"):
+        read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row=mode)
+    s = scenario
+    sensors = {k: v for k, v in s.sensors.items() if k != "sigma_elevation"}
+    with pytest.raises(ValueError, match=r"sensors: no sigma_elevation column, but the plots have elevation values"):
+        build_problem(s.plots, sensors, s.navigation, s.platforms, s.references)
+
+
+def test_a_value_in_an_unmeasured_channel_reads_in_good_english(scenario, tmp_path):
+    paths = _write(scenario, tmp_path)
+    plots = _frame(paths["plots"])
+    row = _first_row(plots, "C-2D")
+    plots.loc[row, "elevation_deg"] = 1.0
+    plots.to_csv(paths["plots"], index=False)
+    with pytest.raises(ValueError, match=rf"plots.csv: row {row}, column 'elevation_deg': sensor 'C-2D' has an "
+                                         r"elevation value but does not measure elevation \(its sigma_elevation"):
+        _read(paths)

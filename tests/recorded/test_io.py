@@ -131,14 +131,15 @@ def test_schema_prints_both_forms_with_units(capsys):
 
 
 @pytest.mark.parametrize("line", [1, 40])
-def test_a_csv_line_with_an_extra_field_is_refused_wherever_it_stands(tmp_path, line):
-    """pandas truncates an over-long *first* data line with only a warning (data lost silently);
-    the reader refuses it like an over-long line anywhere else."""
-    from registration.recorded import FileFormatError, read_table
+def test_a_csv_line_with_an_extra_field_is_a_bad_row_wherever_it_stands(tmp_path, line):
+    """pandas truncates an over-long *first* data line with only a warning (data lost silently) and
+    refuses one further down; the reader reports either as a bad row (``long_row``), with its line."""
+    from registration.recorded import BadRowError, read_table
 
     path = tmp_path / "extra.csv"
     lines = frame(60).to_csv(index=False).splitlines()
     lines[line] += ",1.0"
     path.write_text("\n".join(lines) + "\n")
-    with pytest.raises(FileFormatError, match="cannot be read as CSV"):
+    with pytest.raises(BadRowError, match=rf"row {line - 1}, column '\*': line {line + 1} has 20 fields, the header "
+                                          r"19: .* \[long_row\]"):
         read_table(path)

@@ -110,7 +110,7 @@ def test_every_bad_row_reason_in_skip_mode_accounts_for_every_row(tmp_path, suff
     for (row, col, _, code, text), r in zip(BAD, rej.itertuples()):
         assert (r.column, r.reason_code) == (col, code) and text in r.reason, r
         assert r.file == str(inp) and json.loads(r.values)["time_s"] is not None
-    assert {b[3] for b in BAD} == set(REASON_CODES) - {"missing_column", "filter_non_finite"}
+    assert {b[3] for b in BAD} == set(REASON_CODES) - {"missing_column", "filter_non_finite", "short_row", "long_row"}
     summary = json.loads((tmp_path / "reg" / "summary.json").read_text())
     assert summary["rows"]["read"] == n and summary["rows"]["accepted"] + summary["rows"]["rejected"] == n
     # the accepted rows give the same estimates as the API fed with exactly those rows
@@ -145,11 +145,61 @@ def test_missing_column_in_both_modes(tmp_path, capsys, mode):
         assert "no valid rows" in err
 
 
+def _cut_lines(path, edits) -> None:
+    """Apply ``edits`` {data row: function of the line's text} to a CSV file."""
+    lines = path.read_text().splitlines()
+    for row, edit in edits.items():
+        lines[row + 1] = edit(lines[row + 1])
+    path.write_text("\n".join(lines) + "\n")
+
+
+SHAPES = {  # data row: (edit, column, reason code, fields)
+    12: (lambda line: ",".join(line.split(",")[:5]), "a_pitch_deg", "short_row", 5),  # a half-written line
+    20: (lambda line: line + ",1.5", "*", "long_row", 20),  # pandas refused the whole file
+    59: (lambda line: ",".join(line.split(",")[:18]), "b_elevation_deg", "short_row", 18),  # the last, cut
+}
+
+
+def test_a_line_with_fewer_or_more_fields_than_the_header_is_a_bad_row(tmp_path, capsys):
+    """Before: the cut lines' missing cells read as empty (non_finite, or nothing when only extra
+    columns were cut) and a long line stopped the run in both modes as an unreadable file."""
+    inp = tmp_path / "in.csv"
+    frame(60).to_csv(inp, index=False)
+    _cut_lines(inp, {row: edit for row, (edit, *_) in SHAPES.items()})
+    assert _run(inp, "--out", tmp_path / "stop", *FAST) == 2
+    err = capsys.readouterr().err
+    assert f"{inp}: row 12, column 'a_pitch_deg': line 14 has 5 fields, the header 19" in err and "[short_row]" in err
+    assert _run(inp, "--out", tmp_path / "reg", "--on-bad-row", "skip", *FAST) == 0
+    rej = pd.read_csv(tmp_path / "reg" / "rejected.csv")
+    assert [(r.row, r.column, r.reason_code) for r in rej.itertuples()] == [(row, c, code) for row, (_, c, code, _) in SHAPES.items()]
+    for row, (_, _, _, fields) in SHAPES.items():
+        assert f"line {row + 2} has {fields} fields, the header 19" in rej.set_index("row").loc[row, "reason"]
+    est = pd.read_csv(tmp_path / "reg" / "estimates.csv")
+    api = register(from_file_frame(frame(60).drop(index=list(SHAPES)).reset_index(drop=True)), RegistrationConfig())
+    assert np.array_equal(file_estimates(est), in_file_units(api.estimates))
+
+
+def test_a_line_cut_in_a_column_the_run_does_not_read_is_still_a_bad_row(tmp_path, capsys):
+    """Before: a line missing only an extra column's field was registered as if whole."""
+    inp = tmp_path / "in.csv"
+    frame(30).assign(note="ok").to_csv(inp, index=False)
+    _cut_lines(inp, {29: lambda line: line.rsplit(",", 1)[0]})
+    assert _run(inp, "--out", tmp_path / "reg", *FAST) == 2
+    assert f"{inp}: row 29, column 'note': line 31 has 19 fields, the header 20" in capsys.readouterr().err
+
+
+def test_an_empty_file_is_named(tmp_path, capsys):
+    inp = tmp_path / "in.csv"
+    inp.write_bytes(b"")
+    assert _run(inp, "--out", tmp_path / "reg", *FAST) == 2
+    assert f"{inp}: the file is empty: no header line and no data rows" in capsys.readouterr().err
+
+
 def test_malformed_csv_and_unknown_suffix_give_clear_errors(tmp_path, capsys):
     inp = tmp_path / "in.csv"
     frame(10).to_csv(inp, index=False)
     with open(inp, "a") as f:
-        f.write("1,2,3," * 10 + "\n")
+        f.write('1,2,"3\n')  # a quote never closed: the rest of the file is one value
     assert _run(inp, "--out", tmp_path / "reg", *FAST) == 2
     assert "cannot be read as CSV" in capsys.readouterr().err
     other = tmp_path / "in.txt"

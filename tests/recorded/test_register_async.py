@@ -155,6 +155,22 @@ def test_skip_mode_sets_bad_rows_of_every_file_aside(tmp_path):
     assert files[str(paths[2])]["rejected"] == 1
 
 
+def test_a_cut_line_of_a_plot_or_navigation_file_is_a_bad_row(tmp_path, capsys):
+    """Before: the cut lines' missing cells read as empty, so the reason did not say what happened."""
+    _, paths, nav, (n_a, _) = write_async(tmp_path)
+    lines = paths[0].read_text().splitlines()
+    lines[-1] = ",".join(lines[-1].split(",")[:2])  # radar A's last plot, half written
+    paths[0].write_text("\n".join(lines) + "\n")
+    args = ["register", *map(str, paths[:2]), *nav, "--clock-offset-b", "0.3", *FAST]
+    assert main([*args, "--out", str(tmp_path / "stop")]) == 2
+    assert f"radar_a.csv: row {n_a - 1}, column 'bearing_deg': line {n_a + 1} has 2 fields, the header 4" in capsys.readouterr().err
+    out = tmp_path / "reg"
+    assert main([*args, "--on-bad-row", "skip", "--out", str(out)]) == 0
+    rej = pd.read_csv(out / "rejected.csv")
+    assert [(r.file.rsplit("/", 1)[-1], r.row, r.reason_code) for r in rej.itertuples()] == [("radar_a.csv", n_a - 1, "short_row")]
+    assert _summary(out)["pairing"]["files"][str(paths[0])]["rejected"] == 1
+
+
 def test_ambiguous_or_missing_navigation_is_refused(tmp_path, capsys):
     _, paths, nav, _ = write_async(tmp_path)
     assert main(["register", *map(str, paths[:2]), "--out", str(tmp_path / "reg"), *FAST]) == 2

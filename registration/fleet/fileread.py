@@ -1,0 +1,185 @@
+"""One fleet file read: its columns checked cell by cell in file units (degrees, metres, seconds)
+and converted to the columns of :mod:`registration.fleet.tables` (SI units, radians), with its bad
+rows (:class:`~registration.fleet.rejects.BadRows`) and what it notes. The files, their columns
+and the rules: :mod:`registration.fleet.files`; the whole-file checks:
+:mod:`registration.fleet.filechecks`. A CSV line with fewer or more fields than the header is a
+bad row (``short_row``, ``long_row``) before any of its cells is looked at.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from registration.fleet.filechecks import attitude_check, radians_check, sigma_notes
+from registration.fleet.rejects import BadRows
+
+__all__ = ["FILE_COLUMNS", "FileRead", "read_file"]
+
+#: Per table: (file column, table column, unit, required, (low, high) accepted in file units).
+#: unit "id" = an identifier; "deg" columns are converted to radians.
+FILE_COLUMNS = {
+    "plots": (("time_s", "time", "s", True, None), ("sensor", "sensor", "id", True, None),
+              ("target", "target", "id", False, None), ("range_m", "range", "m", False, (0.0, 1e8)),
+              ("bearing_deg", "bearing", "deg", False, (-360.0, 360.0)),
+              ("elevation_deg", "elevation", "deg", False, (-90.0, 90.0))),
+    "navigation": (("time_s", "time", "s", True, None), ("platform", "platform", "id", True, None),
+                   ("lat_deg", "lat", "deg", True, (-90.0, 90.0)), ("lon_deg", "lon", "deg", True, (-360.0, 360.0)),
+                   ("alt_m", "alt", "m", True, (-1.2e4, 1e6)), ("heading_deg", "heading", "deg", True, (-360.0, 360.0)),
+                   ("pitch_deg", "pitch", "deg", True, (-90.0, 90.0)), ("roll_deg", "roll", "deg", True, (-90.0, 90.0))),
+    "sensors": (("sensor", "sensor", "id", True, None), ("platform", "platform", "id", True, None),
+                ("sigma_range_m", "sigma_range", "m", False, (0.0, 1e6)),
+                ("sigma_bearing_deg", "sigma_bearing", "deg", False, (0.0, 20.0)),
+                ("sigma_elevation_deg", "sigma_elevation", "deg", False, (0.0, 20.0)),
+                ("prior_range_bias_m", "prior_range", "m", False, (0.0, math.inf)),
+                ("prior_bearing_bias_deg", "prior_bearing", "deg", False, (0.0, math.inf)),
+                ("prior_elevation_bias_deg", "prior_elevation", "deg", False, (0.0, math.inf)),
+                ("lever_x_m", "lever_x", "m", False, (-1e4, 1e4)), ("lever_y_m", "lever_y", "m", False, (-1e4, 1e4)),
+                ("lever_z_m", "lever_z", "m", False, (-1e4, 1e4)),
+                ("prior_range_gain", "prior_range_gain", "dimensionless", False, (0.0, 0.1)),
+                ("prior_time_bias_s", "prior_time_bias", "s", False, (0.0, math.inf)),
+                ("prior_position_m", "prior_position", "m", False, (0.0, math.inf))),
+    "platforms": (("platform", "platform", "id", True, None),
+                  ("prior_heading_deg", "prior_heading", "deg", False, (0.0, math.inf)),
+                  ("prior_pitch_deg", "prior_pitch", "deg", False, (0.0, math.inf)),
+                  ("prior_roll_deg", "prior_roll", "deg", False, (0.0, math.inf))),
+    "reference": (("time_s", "time", "s", True, None), ("target", "target", "id", True, None),
+                  ("lat_deg", "lat", "deg", False, (-90.0, 90.0)), ("lon_deg", "lon", "deg", False, (-360.0, 360.0)),
+                  ("alt_m", "alt", "m", False, (-1.2e4, 1e8)), ("x_m", "x", "m", False, (-1e8, 1e8)),
+                  ("y_m", "y", "m", False, (-1e8, 1e8)), ("z_m", "z", "m", False, (-1e8, 1e8)),
+                  ("sigma_m", "sigma", "m", False, (0.0, 1e6))),
+}
+#: Sigma columns whose value must be > 0 (a prior may be 0: fixed).
+_POSITIVE = {"range_m", "sigma_range_m", "sigma_bearing_deg", "sigma_elevation_deg", "sigma_m"}
+
+
+def _read_frame(path: Path):
+    """A CSV or Parquet file as a DataFrame, id columns as text; a CSV frame with a line of fewer or
+    more fields than the header also has the column SHAPE_COLUMN (:mod:`registration.recorded.csvrows`)."""
+    import pandas as pd
+
+    from registration.recorded.csvrows import read_csv_blocks
+    from registration.recorded.formats import file_format
+
+    fmt = file_format(path)
+    if not path.is_file():
+        raise ValueError(f"{path}: no such file")
+    try:
+        if fmt == "csv":
+            blocks = list(read_csv_blocks(path, dtype={"sensor": str, "platform": str, "target": str}))
+            frame = pd.concat(blocks, ignore_index=True) if len(blocks) > 1 else blocks[0]
+        else:
+            frame = pd.read_parquet(path)
+    except Exception as exc:  # pandas/pyarrow parse errors of many types
+        text = str(exc)
+        raise ValueError(text if text.startswith(f"{path}: ") else f"{path}: cannot read it as {fmt.upper()}: {exc}") from exc
+    frame.columns = [str(c).strip() for c in frame.columns]
+    return frame
+
+
+def _id_column(bad: BadRows, frame, column: str) -> np.ndarray:
+    values = frame[column]
+    bad.add(column, "empty_id", values.isna().to_numpy(), lambda r: "empty; every row needs an id")
+    return np.array([str(v).strip() for v in values], dtype=object).astype(str)
+
+
+def _number_column(bad: BadRows, frame, column: str, unit: str, required: bool, limits) -> np.ndarray:
+    """Numbers in file units; NaN for an empty optional cell. Problems name file, row, column, unit."""
+    import pandas as pd
+
+    raw = frame[column]
+    values = pd.to_numeric(raw, errors="coerce").to_numpy(dtype=np.float64)
+    given = raw.notna().to_numpy() & ~raw.astype(str).str.strip().isin(["", "nan", "NaN"]).to_numpy()
+    bad.add(column, "non_numeric", given & np.isnan(values), lambda r: f"{raw.iloc[r]!r} is not a number ({unit})")
+    if required:
+        bad.add(column, "non_finite", np.isnan(values), lambda r: f"empty or NaN; a number ({unit}) is required")
+    lo, hi = limits if limits is not None else (-math.inf, math.inf)
+    strict = column in _POSITIVE
+    finite_only = not (column.startswith("prior_") and hi == math.inf)
+    out = ((values <= lo) if strict else (values < lo)) | (values > hi) | (finite_only & np.isinf(values))
+    span = f"{'(' if strict else '['}{lo:g}, {hi:g}]"
+
+    def code(r: int) -> str:
+        if np.isinf(values[r]):
+            return "non_finite"
+        return "non_positive_range" if column == "range_m" and values[r] <= 0 else "out_of_range"
+    bad.add(column, code, out, lambda r: f"{values[r]:g} {unit} is outside {span} {unit}")
+    return values
+
+
+@dataclass
+class FileRead:
+    """One fleet file read: its ``table`` (SI units, radians), its ``bad`` rows, its ``numbers`` in file
+    units (NaN where bad), its ``columns``, ``notes``, and ``file_rows``, the file row of each table
+    row where rows were left out (navigation rows of platforms without sensors), else None."""
+
+    table: dict
+    bad: BadRows
+    numbers: dict
+    columns: list
+    notes: list
+    file_rows: np.ndarray | None = None
+
+
+def _used_platforms(frame, shapes, platforms: set, path: Path):
+    """The navigation rows of ``platforms`` (and those without an id, which are bad rows): (frame,
+    shapes, their file rows or None, notes naming the platforms left out)."""
+    ids = frame["platform"]
+    keep = ids.isna().to_numpy() | ids.astype(str).str.strip().isin(platforms).to_numpy()
+    if keep.all():
+        return frame, shapes, None, []
+    extra = sorted({str(v).strip() for v in ids[~keep].unique()})
+    rows = np.flatnonzero(keep)
+    note = (f"{path}: platform(s) {extra} carry no sensor; their {int((~keep).sum())} navigation rows are ignored "
+            f"(platforms used: {sorted(platforms)})")
+    return (frame.iloc[rows].reset_index(drop=True), None if shapes is None else shapes.iloc[rows].reset_index(drop=True),
+            rows, [note])
+
+
+def read_file(name: str, path: Path, skip: bool, platforms: set | None = None) -> FileRead:
+    """One file -> :class:`FileRead` (table columns of :mod:`registration.fleet.tables`); ``skip``
+    False: the first bad cell raises. ``platforms``: for the navigation, the platforms used."""
+    from registration.recorded.csvrows import SHAPE_COLUMN
+
+    frame = _read_frame(path)
+    shapes = frame.pop(SHAPE_COLUMN) if SHAPE_COLUMN in frame.columns else None
+    spec = FILE_COLUMNS[name]
+    missing = [c for c, _, _, req, _ in spec if req and c not in frame.columns]
+    if missing:
+        raise ValueError(f"{path}: missing column(s) {missing}; the {name} table has columns "
+                         f"{[c for c, *_ in spec]} (columns found: {list(frame.columns)})")
+    known = {c for c, *_ in spec}
+    unknown = [c for c in frame.columns if c not in known]
+    if unknown:
+        raise ValueError(f"{path}: unknown column(s) {unknown}; the {name} table has columns {sorted(known)}")
+    if len(frame) == 0:
+        raise ValueError(f"{path}: no data rows (the file holds only a header); the {name} file needs at least one row")
+    notes, file_rows = [], None
+    if platforms is not None:
+        frame, shapes, file_rows, notes = _used_platforms(frame, shapes, platforms, path)
+    bad = BadRows(path, len(frame), skip, file_rows)
+    if shapes is not None:  # first: the cells a short line lacks are not empty cells
+        shape = shapes.to_numpy()
+        bad.add(lambda r: shape[r].column, lambda r: shape[r].code, shapes.notna().to_numpy(), lambda r: shape[r].reason())
+    numbers, out = {}, {}
+    for column, key, unit, required, limits in spec:
+        if column not in frame.columns:
+            continue
+        if unit == "id":
+            out[key] = _id_column(bad, frame, column)
+            continue
+        numbers[column] = _number_column(bad, frame, column, unit, required, limits)
+        out[key] = np.radians(numbers[column]) if unit == "deg" else numbers[column]
+        if column.startswith("prior_"):
+            out[key] = np.where(np.isnan(out[key]), np.inf, out[key])  # empty: no prior
+    ok = bad.ok()
+    numbers = {c: np.where(ok, v, np.nan) for c, v in numbers.items()}
+    radians_check(path, numbers)
+    if name == "navigation":
+        notes += attitude_check(path, numbers, out["platform"])
+    elif name == "sensors":
+        notes += sigma_notes(path, numbers, out["sensor"])
+    return FileRead(out, bad, numbers, list(frame.columns), notes, file_rows)
