@@ -25,3 +25,12 @@ def test_casadi_and_sympy_are_pinned_exactly():
     deps = tomllib.loads((REPO / "pyproject.toml").read_text())["project"]["dependencies"]
     pins = {d.split("==")[0]: d for d in deps if "==" in d}
     assert "casadi" in pins and "sympy" in pins
+
+
+def test_the_mit_licence_is_there_and_goes_into_the_wheel():
+    """Before: pyproject.toml declared MIT but there was no LICENSE file to ship."""
+    project = tomllib.loads((REPO / "pyproject.toml").read_text())["project"]
+    assert project["license"] == "MIT" and project["license-files"] == ["LICENSE"]
+    text = (REPO / "LICENSE").read_text()
+    assert text.startswith("MIT License") and "Copyright (c) 2026 the sensor-registration authors" in text
+    assert "THE SOFTWARE IS PROVIDED \"AS IS\"" in text

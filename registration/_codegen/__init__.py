@@ -1,7 +1,7 @@
 """Access to the generated functions (``generated/``) for the runtime: hash-checked artifacts and
-what their manifest records (:mod:`.artifacts`), the compiled C backend (:mod:`.cbackend`), the
-serialized CasADi fallback (:mod:`.casadi_backend`) and the numpy callables on top
-(:mod:`.function`). Users call the capability subpackages, not this one."""
+what their manifest records (:mod:`.artifacts`), the compiled C backend (:mod:`.cbackend`, its
+one-time build in :mod:`.build`), the serialized CasADi fallback (:mod:`.casadi_backend`) and the
+numpy callables on top (:mod:`.function`). Users call the capability subpackages, not this one."""
 
 from registration._codegen.artifacts import ArtifactError, generated_dir, manifest, read_artifact, variants, wgs84
 from registration._codegen.cbackend import CFLAGS, compiler

@@ -4,8 +4,9 @@ call the generated functions through ctypes with numpy buffers passed by pointer
 The library holds every generated function plus the batch and scan drivers of ``_batch.c``. It
 is built once per source hash in a per-user cache (``$REGISTRATION_CACHE_DIR``, else
 ``$XDG_CACHE_HOME`` or ``~/.cache``, subfolder ``sensor-registration``), keyed by the sources,
-the driver, the compiler, the flags and the platform. Values cross the boundary in CasADi's
-layout: float64, column-major per point.
+the driver, the compiler, the flags and the platform; the build (:mod:`registration._codegen.build`)
+compiles the sources in parallel and says so on standard error. Values cross the boundary in
+CasADi's layout: float64, column-major per point.
 
 Builds (``$REGISTRATION_NATIVE``, see :func:`build_mode`): ``portable`` (:data:`CFLAGS`, the
 default), whose results equal the serialized CasADi functions to the backend tests' 1e-12; and
@@ -30,22 +31,22 @@ import platform
 import shutil
 import subprocess
 import sys
-import tempfile
 import warnings
-from concurrent.futures import ThreadPoolExecutor
 from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
 
 from registration._codegen.artifacts import ArtifactError, manifest, read_artifact
+from registration._codegen.build import build_library
 
 __all__ = [
     "BUILD_MODES", "CFLAGS", "DRIVER", "NATIVE_CFLAGS", "NATIVE_ENV", "NATIVE_RTOL", "CKernel", "PointCall", "build_mode",
     "cache_root", "cflags", "compiler", "library", "library_of", "native_target",
 ]
 
-#: Compiler flags of the portable shared library (each source is compiled with these minus ``-shared``).
+#: Compiler flags of the portable shared library (each source is compiled with these minus ``-shared``;
+#: the build itself, announced on standard error: :mod:`registration._codegen.build`).
 CFLAGS = ["-O2", "-fPIC", "-shared"]
 #: Flags of the opt-in builds for the local CPU, by build mode.
 NATIVE_CFLAGS = {
@@ -135,36 +136,6 @@ def cache_key(cc: str, sources: list[tuple[str, bytes]], flags: list[str] | None
     return key.hexdigest()[:24]
 
 
-def build_library(cc: str, sources: list[tuple[str, bytes]], lib_path: Path, flags: list[str] | None = None) -> None:
-    """Compile the driver and ``sources`` with ``flags`` (default :data:`CFLAGS`) in parallel, link
-    them into ``lib_path`` (published atomically: concurrent builders never see half a file);
-    ArtifactError on failure."""
-    lib_path.parent.mkdir(parents=True, exist_ok=True)
-    with tempfile.TemporaryDirectory(dir=lib_path.parent) as tmp:
-        tmp = Path(tmp)
-        paths = [str(DRIVER)]
-        for fname, data in sources:
-            (tmp / fname).write_bytes(data)
-            paths.append(str(tmp / fname))
-        objects = [str(tmp / f"{i}.o") for i in range(len(paths))]
-        flags = [f for f in (CFLAGS if flags is None else flags) if f != "-shared"]  # the same flags as in the cache key
-
-        def compile_one(src_obj):
-            src, obj = src_obj
-            return subprocess.run([cc, *flags, "-c", src, "-o", obj], capture_output=True, text=True)
-
-        with ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
-            results = list(pool.map(compile_one, zip(paths, objects)))
-        failed = [r for r in results if r.returncode != 0]
-        if failed:
-            raise ArtifactError(f"C compilation failed: {failed[0].stderr.strip()[:2000]}")
-        out = tmp / "lib.so"
-        proc = subprocess.run([cc, "-shared", "-o", str(out), *objects, "-lm"], capture_output=True, text=True)
-        if proc.returncode != 0:
-            raise ArtifactError(f"C link failed: {proc.stderr.strip()[:2000]}")
-        os.replace(out, lib_path)
-
-
 def library_of(names, mode: str = "portable") -> ctypes.CDLL:
     """A shared library of the generated functions ``names`` and the drivers, built with the flags
     of ``mode`` (built if not cached, loaded once per process); ArtifactError if impossible (no
@@ -185,7 +156,7 @@ def _library_of(names: tuple[str, ...], mode: str) -> ctypes.CDLL:
     sources = [(f"{n}.c", read_artifact(n, "c")) for n in names]
     lib_path = cache_root() / cache_key(cc, sources, flags, target) / LIBRARY_NAME
     if not lib_path.exists():
-        build_library(cc, sources, lib_path, flags)
+        build_library(cc, DRIVER, sources, lib_path, flags)
     lib = ctypes.CDLL(str(lib_path))
     lib.registration_batch.restype = ctypes.c_int
     lib.registration_scan.restype = ctypes.c_longlong

@@ -5,7 +5,8 @@ A command declares the file names it writes into ``--out`` (a frozenset) and wri
 ``OUT/partial-<pid>-<token>`` of its own (see :mod:`registration.recorded.outfolder`). When the
 block ends normally the earlier run's outputs in ``out`` (every one of ``names`` it left, e.g. the
 PNGs of a run with plots when this one has ``--no-plots``) are replaced by the new files; when it
-raises (or is interrupted), the run folder is removed and ``out`` is left exactly as it was.
+raises (or is interrupted), the run folder is removed and ``out`` is left exactly as it was (a new
+``out``, made for the run, is removed again with its new parents).
 Files in ``out`` outside ``names`` are never touched. ``folder.final(p)`` is where a file ``p`` of
 the run folder ends up, the path to print; an error writing a file of the run folder names that
 final path too (the run folder is gone by the time the message is read).
@@ -33,9 +34,10 @@ __all__ = ["staged_outputs"]
 def staged_outputs(out: Path, command: str, names: frozenset) -> Iterator["RunFolder"]:
     """A run folder inside ``out`` for ``command`` (e.g. ``"registration fuse"``) writing ``names``:
     its files replace the earlier run's outputs in ``out`` only when the block ends normally;
-    otherwise the folder is removed and ``out`` is unchanged. Leftovers of earlier runs that are
-    gone (``partial-*`` folders, an interrupted publication) are cleaned up first. A folder in
-    ``out`` named like one of the outputs (all files) is an error (CommandError), never replaced."""
+    otherwise the folder is removed and ``out`` is unchanged (or gone again, if the run made it).
+    Leftovers of earlier runs that are gone (``partial-*`` folders, an interrupted publication) are
+    cleaned up first. A folder in ``out`` named like one of the outputs (all files) is an error
+    (CommandError), never replaced."""
     from registration.recorded.outfolder import discard, new_run_folder, prepare_out, publish
 
     out = Path(out)

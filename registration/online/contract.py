@@ -10,6 +10,7 @@ checks rows with :func:`cell_problems`, so they apply the same rules.
 
 from __future__ import annotations
 
+import operator
 from typing import Mapping
 
 import numpy as np
@@ -166,6 +167,39 @@ def _file_columns_hint(data) -> str:
     return ""
 
 
+_ROW_CELLS = operator.itemgetter(*ROW_COLUMNS)
+#: The last pandas index seen by :func:`_plain_row` and the positions of the row columns in it.
+_SERIES_POSITIONS: tuple = (None, None)
+
+
+def _series_positions(index) -> np.ndarray:
+    """Positions of :data:`ROW_COLUMNS` in a pandas index (looked up once per index object:
+    the rows of ``DataFrame.iterrows()`` share theirs); KeyError if one is missing."""
+    global _SERIES_POSITIONS
+    seen, positions = _SERIES_POSITIONS
+    if seen is not index:
+        positions = index.get_indexer(ROW_COLUMNS)
+        if (positions < 0).any():
+            raise KeyError("missing column")
+        _SERIES_POSITIONS = (index, positions)
+    return positions
+
+
+def _plain_row(row) -> np.ndarray | None:
+    """The 18 values of a mapping row (dict or pandas Series) whose cells are single numbers, in
+    one conversion (the same float64 values as the cell-by-cell path); None for anything else,
+    which the cell-by-cell path then converts or names."""
+    try:
+        if hasattr(row, "to_numpy") and hasattr(row, "index"):  # a pandas Series: label lookups are slow
+            cells = row.to_numpy()[_series_positions(row.index)]
+        else:
+            cells = _ROW_CELLS(row)
+        values = np.array(cells, dtype=np.float64)
+    except Exception:  # noqa: BLE001 - any problem: the cell-by-cell path says what it is
+        return None
+    return values if values.shape == (N_ROW,) else None
+
+
 def row_from_mapping(row: Mapping | np.ndarray) -> np.ndarray:
     """One row as 18 float64 values: from a mapping with the contract columns or a sequence in row order."""
     if isinstance(row, (np.ndarray, list, tuple)):
@@ -173,6 +207,9 @@ def row_from_mapping(row: Mapping | np.ndarray) -> np.ndarray:
         if arr.shape != (N_ROW,):
             raise ValueError(f"row: expected {N_ROW} values in contract order (a_lat ... b_elevation), got shape {arr.shape}")
         return arr
+    values = _plain_row(row)
+    if values is not None:
+        return values
     missing = [c for c in ROW_COLUMNS if c not in row]
     if missing:
         raise ValueError(f"row: missing column(s) {missing}" + _file_columns_hint(row))

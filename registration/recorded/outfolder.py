@@ -9,10 +9,12 @@ these few renames OUT carries an ``INCOMPLETE`` file of its own listing the file
 so a kill at that moment leaves OUT marked, and the next run into OUT completes the move. Files
 in OUT that a run does not write are never moved or deleted.
 
-A failed or interrupted run without a checkpoint removes its folder: OUT is unchanged. A
-checkpointed run keeps it: the checkpoint records the folder's name, and rerunning the same
-command resumes inside it. A checkpoint written before runs had folders of their own (no name
-recorded) resumes in OUT itself, which is then marked ``INCOMPLETE`` until the run ends.
+A failed or interrupted run without a checkpoint removes its folder: OUT is unchanged, and an OUT
+that the run created (with its parents) is removed again, so a failed run aimed at a new folder
+leaves no empty one (:attr:`RunFolder.created`). A checkpointed run keeps its folder: the
+checkpoint records the folder's name, and rerunning the same command resumes inside it. A
+checkpoint written before runs had folders of their own (no name recorded) resumes in OUT
+itself, which is then marked ``INCOMPLETE`` until the run ends.
 Leftover folders of processes that are gone and cannot be resumed are removed by the next run.
 """
 
@@ -29,7 +31,7 @@ from pathlib import Path
 from registration.recorded.checkpoint import CheckpointError, fsync_dir, load_checkpoint
 
 __all__ = ["OUTPUT_NAMES", "MARKER", "OutputFolderError", "RunFolder", "prepare_out", "new_run_folder",
-           "mark_in_place", "publish", "discard", "records_folder"]
+           "mark_in_place", "publish", "discard", "records_folder", "make_folders", "remove_empty_folders"]
 
 #: What a run writes into OUT (a Parquet output is a folder of parts).
 OUTPUT_NAMES = frozenset({
@@ -57,12 +59,15 @@ def _is_output(name: str, names: frozenset = OUTPUT_NAMES) -> bool:
 @dataclass(frozen=True)
 class RunFolder:
     """Where a run writes (``path``) and where its outputs end up (``out``, the ``--out`` folder).
-    ``path == out`` for a checkpoint of an older version resumed in place."""
+    ``path == out`` for a checkpoint of an older version resumed in place. ``created``: the
+    folders this run made for ``out`` (``out`` first, then its new parents), removed again by
+    :func:`discard` when they are left empty."""
 
     out: Path
     path: Path
     command: str = "registration register"
     names: frozenset = OUTPUT_NAMES  # what the command writes into OUT (earlier ones are replaced)
+    created: tuple = ()
 
     @property
     def in_place(self) -> bool:
@@ -120,6 +125,24 @@ def _marker_fields(path: Path) -> dict:
     return dict(line.split(": ", 1) for line in lines if ": " in line and not line.startswith(" "))
 
 
+def make_folders(out: Path) -> tuple[Path, ...]:
+    """Create the folder ``out`` and its missing parents; the ones created, ``out`` first (OSError
+    if impossible)."""
+    missing = tuple(p for p in (out, *out.parents) if not p.exists())
+    out.mkdir(parents=True, exist_ok=True)
+    return missing
+
+
+def remove_empty_folders(folders) -> None:
+    """Remove each of ``folders`` (deepest first, as :func:`make_folders` lists them) while it is
+    empty; stop at the first that is not (or is gone, or cannot be removed)."""
+    for folder in folders:
+        try:
+            folder.rmdir()
+        except OSError:
+            return
+
+
 def records_folder(checkpoint, name: str) -> bool:
     """Whether the checkpoint file ``checkpoint`` records the run folder ``name`` (True when it
     cannot be read: it may still be needed)."""
@@ -132,15 +155,20 @@ def records_folder(checkpoint, name: str) -> bool:
 
 
 def prepare_out(out: Path, output_names: frozenset = OUTPUT_NAMES) -> None:
-    """Create ``out``; complete a publication that was interrupted; remove leftovers of runs that
-    are gone and cannot be resumed. Raises :class:`OutputFolderError` for an unusable ``out``.
-    ``output_names``: what the command writes into ``out``."""
+    """Check that ``out`` is a folder or can be created (a new one is created by
+    :func:`new_run_folder`, so a run that fails before leaves none); in an existing one, complete
+    a publication that was interrupted and remove leftovers of runs that are gone and cannot be
+    resumed. Raises :class:`OutputFolderError` for an unusable ``out``. ``output_names``: what
+    the command writes into ``out``."""
     if out.exists() and not out.is_dir():
         raise OutputFolderError(f"--out {out}: is a file, not a folder; give a folder (it is created if missing)")
     try:
-        out.mkdir(parents=True, exist_ok=True)
+        created = make_folders(out)
     except OSError as exc:
         raise OutputFolderError(f"--out {out}: cannot create the folder: {exc.strerror or exc}") from exc
+    if created:  # a new folder: nothing to complete or clean; the run creates it again
+        remove_empty_folders(created)
+        return
     _complete_publication(out, output_names)
     for d in sorted(out.glob(f"{_PARTIAL}*")) + sorted(out.glob(f"{_ASIDE}*")):
         pid = _pid_of(d.name)
@@ -175,17 +203,22 @@ def _complete_publication(out: Path, output_names: frozenset = OUTPUT_NAMES) -> 
 
 def new_run_folder(out: Path, checkpoint, command: str = "registration register",
                    output_names: frozenset = OUTPUT_NAMES) -> RunFolder:
-    """A new, empty run folder inside ``out`` with its ``INCOMPLETE`` marker, for ``command``
-    writing ``output_names``."""
+    """A new, empty run folder inside ``out`` (created if missing, with its parents) with its
+    ``INCOMPLETE`` marker, for ``command`` writing ``output_names``."""
+    created: tuple[Path, ...] = ()
     for _ in range(100):
         path = out / f"{_PARTIAL}{os.getpid()}-{secrets.token_hex(3)}"
         try:
+            made = make_folders(out)
+            created = created or made
             path.mkdir()
             break
-        except FileExistsError:
+        except (FileExistsError, FileNotFoundError):  # taken, or out removed meanwhile by a failed run: again
             continue
         except OSError as exc:
             raise OutputFolderError(f"--out {out}: cannot write in the folder: {exc.strerror or exc}") from exc
+    else:
+        raise OutputFolderError(f"--out {out}: cannot make a run folder in it")
     if checkpoint is None:
         how = (f"checkpoint: none\nWithout --checkpoint this run cannot be resumed; once process {os.getpid()} is gone "
                f"the folder can be deleted (the next run into {out} deletes it).\n")
@@ -195,11 +228,12 @@ def new_run_folder(out: Path, checkpoint, command: str = "registration register"
     _write_text(path / MARKER, f"This folder holds the unfinished outputs of a `{command}` run (process "
                                f"{os.getpid()}, started {time.strftime('%Y-%m-%d %H:%M:%S')}). They are moved into "
                                f"{out} when the run finishes; until then {out} keeps what it held before.\n" + how)
-    return RunFolder(out, path, command, frozenset(output_names))
+    return RunFolder(out, path, command, frozenset(output_names), created)
 
 
 def mark_in_place(folder: RunFolder, checkpoint) -> None:
     """Mark ``out`` itself incomplete while a checkpoint of an older version resumes in it."""
+    make_folders(folder.out)
     _write_text(folder.out / MARKER, "The outputs in this folder are those of an unfinished `registration register` run.\n"
                                      f"checkpoint: {Path(checkpoint).resolve()}\nTo resume, rerun the same command.\n")
 
@@ -243,6 +277,8 @@ def _move_in(out: Path, work: Path, names: list[str], output_names: frozenset = 
 
 
 def discard(folder: RunFolder) -> None:
-    """Remove a run folder that will never be published (never ``out`` itself)."""
+    """Remove a run folder that will never be published (never ``out`` itself), then ``out`` and
+    its parents if this run created them and they are empty."""
     if not folder.in_place:
         shutil.rmtree(folder.path, ignore_errors=True)
+        remove_empty_folders(folder.created)

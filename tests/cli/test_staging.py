@@ -17,7 +17,7 @@ CASES = {
     "montecarlo": (["montecarlo", "--runs", "2", "--steps", "20"], "registration.online.mcresult:MonteCarloResult.plot"),
     "montecarlo --sweep": (["montecarlo", "--runs", "2", "--steps", "20", "--sweep", "steps=20,21"],
                            "registration.online.sweep:plot_sweep"),
-    "fuse": (["fuse", "--trials", "20"], "registration.cli.fuse:_plot"),
+    "fuse": (["fuse", "--trials", "20"], "registration.fusion.plots:write_plots"),
     "landing": (["landing", "--runs", "2", "--start-range-m", "600", "--plot-bin-m", "250"],
                 "registration.cli.landing:write_plots"),
 }
@@ -105,3 +105,41 @@ def test_staged_outputs_publishes_only_on_success(tmp_path):
         (folder.path / "a.txt").write_text("3")
     assert sorted(p.name for p in out.iterdir()) == ["a.txt"] and (out / "a.txt").read_text() == "3"
     assert folder.final(folder.path / "a.txt") == out / "a.txt"
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_a_failed_run_aimed_at_a_new_out_leaves_no_folder(case, tmp_path, monkeypatch, capsys):
+    """Before: the command created --out (and its parents) first and left them empty."""
+    argv, target = CASES[case]
+    out = tmp_path / "new" / "out"
+    seen = []
+    _fail_after_writing(monkeypatch, target, seen)
+    assert main([*argv, "--out", str(out)]) == 2
+    assert seen and "No space left on device" in capsys.readouterr().err
+    assert not (tmp_path / "new").exists()
+
+
+def test_a_run_failing_before_its_outputs_leaves_no_folder(tmp_path, monkeypatch, capsys):
+    import registration.online
+
+    def failing(*args, **kwargs):
+        raise ValueError("the simulation failed")
+
+    monkeypatch.setattr(registration.online, "register", failing)
+    assert main(["simulate", "--out", str(tmp_path / "new" / "out")]) == 2
+    assert "the simulation failed" in capsys.readouterr().err
+    assert not (tmp_path / "new").exists()
+
+
+def test_an_interrupted_staging_removes_only_the_folders_it_made(tmp_path):
+    names = frozenset({"a.txt"})
+    for out, kept in ((tmp_path / "new" / "out", None), (tmp_path / "empty", tmp_path / "empty")):
+        if kept is not None:
+            kept.mkdir()  # the user's own empty folder: kept
+        with pytest.raises(KeyboardInterrupt):
+            with staged_outputs(out, "test", names) as folder:
+                (folder.path / "a.txt").write_text("2")
+                raise KeyboardInterrupt
+        assert out.exists() == (kept is not None) and not (tmp_path / "new").exists()
+        if kept is not None:
+            assert not any(kept.iterdir())

@@ -173,3 +173,63 @@ def test_a_copied_registrar_continues_like_the_original(scenario):
             np.testing.assert_array_equal(out[key], ref[key])
         np.testing.assert_array_equal(twin.info, reg.info)
 
+
+
+def _row_forms(scenario) -> dict:
+    """The scenario's rows as each form update() takes: the contract's array and the mappings users try first."""
+    import pandas as pd
+
+    data, k = scenario.data, len(scenario.data["time"])
+    frame = pd.DataFrame({c: np.asarray(data[c]) for c in DATA_COLUMNS})
+    return {
+        "array": list(_rows(scenario)),
+        "dict of floats": [{c: float(data[c][i]) for c in ROW_COLUMNS} for i in range(k)],
+        "dict of numpy scalars, time included": [{c: data[c][i] for c in DATA_COLUMNS} for i in range(k)],
+        "pandas Series": [r for _, r in frame.iterrows()],
+        "dict of one-element lists": [{c: [float(data[c][i])] for c in ROW_COLUMNS} for i in range(k)],
+        "dict of strings and ints": [{c: (repr(float(data[c][i])) if j % 2 else data[c][i]) for j, c in enumerate(ROW_COLUMNS)}
+                                     for i in range(k)],
+    }
+
+
+def test_every_row_form_gives_the_array_s_results_bit_for_bit(scenario):
+    forms = _row_forms(scenario)
+    reg = OnlineRegistrar()
+    ref = [reg.update(r) for r in forms.pop("array")]
+    for name, rows in forms.items():
+        reg = OnlineRegistrar()
+        for i, row in enumerate(rows):
+            out = reg.update(row)
+            for key in ref[i]:
+                np.testing.assert_array_equal(out[key], ref[i][key], err_msg=f"{name}, row {i}, {key}")
+
+
+def test_a_series_row_is_read_by_position_not_label_by_label(scenario, monkeypatch):
+    """Before: 18 label lookups per row (about 40 us of update()'s 45); now the positions of the
+    columns are looked up once per index and the values taken in one step."""
+    import pandas as pd
+
+    rows = _row_forms(scenario)["pandas Series"]
+    calls = []
+    real = pd.Series.__getitem__
+    monkeypatch.setattr(pd.Series, "__getitem__", lambda self, key: calls.append(key) or real(self, key))
+    reg = OnlineRegistrar()
+    for row in rows[:5]:
+        reg.update(row)
+    assert calls == []
+
+
+@pytest.mark.parametrize("edit, message", [
+    (lambda m: m.pop("b_roll"), r"row: missing column\(s\) \['b_roll'\]"),
+    (lambda m: m.__setitem__("a_range", "far"), r"row: column 'a_range': expected a number"),
+    (lambda m: m.__setitem__("a_lat", [0.1, 0.2]), r"row: column 'a_lat' holds 2 values"),
+    (lambda m: m.__setitem__("a_lat", 2.0), r"row 0, column 'a_lat': value 2.0 is outside"),
+])
+def test_a_bad_mapping_row_is_named_as_before(scenario, edit, message):
+    row = _row_forms(scenario)["dict of floats"][0]
+    edit(row)
+    with pytest.raises(ValueError, match=message):
+        OnlineRegistrar().update(row)
+    series = __import__("pandas").Series(row, dtype=object)
+    with pytest.raises(ValueError, match=message):
+        OnlineRegistrar().update(series)
