@@ -2,7 +2,9 @@
 
 A sub-command module defines ``HELP`` (one line), ``add_arguments(parser)`` and ``run(args) -> int``;
 optionally ``interrupt_hint(args) -> str | None``, the text Ctrl-C prints (e.g. how to resume).
-Errors, exit codes and the consistency gate: :mod:`registration.cli.errors`.
+Errors, exit codes and the consistency gate: :mod:`registration.cli.errors`; every message starts
+with the full command (``registration fleet register: error: ...``), and each command's ``--help``
+lists the exit codes it can give (:class:`CommandParser`).
 """
 
 from __future__ import annotations
@@ -13,7 +15,7 @@ import sys
 import textwrap
 
 from registration import __version__
-from registration.cli.errors import EXIT_CODES_EPILOG, run_guarded
+from registration.cli.errors import CODE_OPTIONS, EXIT_CODES_EPILOG, exit_codes_epilog, run_guarded
 from registration.cli.options import HelpFormatter
 
 #: sub-command name -> module of registration.cli (listed in the order shown in --help)
@@ -28,6 +30,33 @@ COMMANDS = {
 }
 
 
+class CommandParser(argparse.ArgumentParser):
+    """The parser of a sub-command (and of its own sub-commands, e.g. ``fleet register``): the
+    parsed arguments name the full command (``_prog``, e.g. ``registration fleet register``, the
+    prefix of every message), and ``--help`` lists only the exit codes the command can give."""
+
+    subcommands = None  # the action of add_subparsers(), if the command has sub-commands
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self.set_defaults(_prog=self.prog)  # a nested sub-command's default replaces its parent's
+
+    def add_subparsers(self, **kwargs):
+        self.subcommands = super().add_subparsers(**kwargs)
+        return self.subcommands
+
+    def optional_codes(self) -> set[int]:
+        """The exit codes of :data:`CODE_OPTIONS` this command, or one of its sub-commands, can give."""
+        if self.subcommands is not None:
+            return set().union(*(p.optional_codes() for p in self.subcommands.choices.values()))
+        return {code for code, dest in CODE_OPTIONS.items() if self.get_default(dest) is not None}
+
+    def format_help(self) -> str:
+        if self.epilog == EXIT_CODES_EPILOG:
+            self.epilog = exit_codes_epilog(set(CODE_OPTIONS) - self.optional_codes())
+        return super().format_help()
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="registration",
@@ -36,7 +65,7 @@ def build_parser() -> argparse.ArgumentParser:
         epilog=EXIT_CODES_EPILOG, formatter_class=HelpFormatter,
     )
     parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
-    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND", parser_class=CommandParser)
     for name, module in COMMANDS.items():
         try:
             mod = importlib.import_module(f"registration.cli.{module}")
@@ -57,7 +86,7 @@ def main(argv: list[str] | None = None) -> int:
         args = build_parser().parse_args(argv)
     except SystemExit as exc:  # --help, --version, or an option argparse rejected (its message is printed)
         return exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 2)
-    return run_guarded(f"registration {args.command}", args._run, args, args._hint)
+    return run_guarded(args._prog, args._run, args, args._hint)
 
 
 if __name__ == "__main__":

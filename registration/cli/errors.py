@@ -11,10 +11,14 @@ code  meaning
 1     ``register --validate-only``: some rows are bad (listed on standard output)
 2     bad input: an invalid option or value, an input that cannot be read, an output that cannot
       be written (the message names the option or the path)
-3     the run finished and wrote its outputs, but its normalised innovations grossly contradict
-      the model (the consistency gate; see :mod:`registration.core.consistency`);
+3     the run finished and wrote its outputs, but its normalised innovations (a fleet run: its
+      residuals) grossly contradict the model (the consistency gate; see
+      :mod:`registration.core.consistency`);
       ``--allow-inconsistent`` accepts such a run with exit code 0
-130   interrupted (Ctrl-C); --out keeps the last finished run's outputs
+4     internal numerical error: a computation failed in a way the checks did not foresee (for
+      example a matrix that cannot be inverted); not a fault of the input as such. Please report
+      it with the traceback that ``REGISTRATION_DEBUG=1`` shows
+130   interrupted (Ctrl-C); --out is left as it was (a new one is not left behind)
 141   standard output was closed early (e.g. piped into ``head``): the command stops quietly,
       like a program ended by SIGPIPE (128 + 13)
 ====  ==========================================================================================
@@ -31,16 +35,17 @@ from contextlib import contextmanager
 from pathlib import Path
 
 __all__ = [
-    "EXIT_OK", "EXIT_BAD_ROWS", "EXIT_BAD_INPUT", "EXIT_INCONSISTENT", "EXIT_INTERRUPTED", "EXIT_BROKEN_PIPE",
-    "DEBUG_ENV", "EXIT_CODES_EPILOG", "CommandError", "os_error_message", "writing", "prepare_out",
+    "EXIT_OK", "EXIT_BAD_ROWS", "EXIT_BAD_INPUT", "EXIT_INCONSISTENT", "EXIT_NUMERICAL", "EXIT_INTERRUPTED",
+    "EXIT_BROKEN_PIPE", "DEBUG_ENV", "EXIT_CODES_EPILOG", "CODE_OPTIONS", "exit_codes_epilog", "CommandError", "os_error_message", "writing", "prepare_out",
     "add_allow_inconsistent", "consistency_line", "consistency_gate", "interrupt_message",
-    "run_guarded",
+    "is_numerical", "numerical_message", "run_guarded",
 ]
 
 EXIT_OK = 0
 EXIT_BAD_ROWS = 1
 EXIT_BAD_INPUT = 2
 EXIT_INCONSISTENT = 3
+EXIT_NUMERICAL = 4
 EXIT_INTERRUPTED = 130
 EXIT_BROKEN_PIPE = 141
 
@@ -52,12 +57,30 @@ EXIT_CODES_EPILOG = f"""exit codes:
   {EXIT_OK:<4} success
   {EXIT_BAD_ROWS:<4} register --validate-only: some rows are bad
   {EXIT_BAD_INPUT:<4} bad input: an invalid option or value, an unreadable input, an unwritable output
-  {EXIT_INCONSISTENT:<4} the run's consistency check (normalised innovations, or residuals for a batch
-       solution) says the data grossly contradict the model (outputs written; --allow-inconsistent
+  {EXIT_INCONSISTENT:<4} the run's consistency check (normalised innovations, or residuals for a fleet
+       run) says the data grossly contradict the model (outputs written; --allow-inconsistent
        accepts the run)
+  {EXIT_NUMERICAL:<4} internal numerical error (e.g. a matrix that cannot be inverted): not bad input; please
+       report it with the traceback {DEBUG_ENV}=1 shows
   {EXIT_INTERRUPTED:<4} interrupted (Ctrl-C)
   {EXIT_BROKEN_PIPE:<4} standard output closed early (e.g. piped into head)
 {DEBUG_ENV}=1 in the environment shows the traceback behind an error message."""
+#: Exit codes only some commands can give, with the option (its argparse dest) of those that can.
+CODE_OPTIONS = {EXIT_BAD_ROWS: "validate_only", EXIT_INCONSISTENT: "allow_inconsistent"}
+
+
+def exit_codes_epilog(leave_out=()) -> str:
+    """:data:`EXIT_CODES_EPILOG` without the entries of the codes in ``leave_out`` (a command's own table)."""
+    lines, skip = [], False
+    for line in EXIT_CODES_EPILOG.splitlines():
+        code = line[2:].split(" ", 1)[0]
+        if line.startswith("  ") and code.isdigit():  # an entry; its continuation lines are indented further
+            skip = int(code) in leave_out
+        elif not line.startswith("   "):
+            skip = False
+        if not skip:
+            lines.append(line)
+    return "\n".join(lines)
 
 
 class CommandError(Exception):
@@ -95,13 +118,16 @@ def writing(path):
 
 
 def prepare_out(out) -> Path:
-    """Create the output folder ``out`` (and its parents) and check that a file can be written in it.
+    """Check that the output folder ``out`` can be created (with its parents) and written in.
 
-    Called before the work starts, so an unusable ``--out`` fails at once with exit code 2.
+    Called before the work starts, so an unusable ``--out`` fails at once with exit code 2. The
+    folders made for the check are removed again: the run creates ``out`` when it publishes its
+    outputs, so a run that fails aimed at a new folder leaves none behind.
     """
     out = Path(out)
     if out.exists() and not out.is_dir():
         raise CommandError(f"cannot use {out} as the output folder: it exists and is not a folder (--out)")
+    created = [p for p in (out, *out.parents) if not p.exists()]  # deepest first
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
@@ -111,6 +137,12 @@ def prepare_out(out) -> Path:
             pass
     except OSError as exc:
         raise CommandError(f"cannot write in the output folder {out}: {exc.strerror or exc} (--out)") from exc
+    finally:
+        for folder in created:
+            try:
+                folder.rmdir()
+            except OSError:
+                break
     return out
 
 
@@ -122,8 +154,13 @@ def add_allow_inconsistent(p: argparse.ArgumentParser) -> None:
 
 
 def consistency_line(report) -> str:
-    """The report line every command with a consistency gate prints on standard output."""
-    return f"consistency: {report.message()}"
+    """The report line every command with a consistency gate prints on standard output: the figures
+    and the verdict. A failed gate's likely causes are left to :func:`consistency_gate`, on
+    standard error, so they are printed once."""
+    text = report.message()
+    if not report.ok:
+        text = text.split("; the data do not fit the model")[0]
+    return f"consistency: {text}"
 
 
 def consistency_gate(prog: str, report, allow: bool) -> int:
@@ -135,7 +172,7 @@ def consistency_gate(prog: str, report, allow: bool) -> int:
     if report.ok:
         return EXIT_OK
     if allow:
-        print(f"{prog}: warning: inconsistent run accepted (--allow-inconsistent)", file=sys.stderr)
+        print(f"{prog}: warning: inconsistent run accepted (--allow-inconsistent): {report.message()}", file=sys.stderr)
         return EXIT_OK
     print(f"{prog}: error: {report.message()} Give --allow-inconsistent to accept the run "
           f"(exit code {EXIT_INCONSISTENT}).", file=sys.stderr)
@@ -143,13 +180,35 @@ def consistency_gate(prog: str, report, allow: bool) -> int:
 
 
 def interrupt_message(prog: str, args: argparse.Namespace | None) -> str:
-    """What Ctrl-C prints: where it stopped and, for a run with ``--checkpoint FILE``, how to resume."""
+    """What Ctrl-C prints: where it stopped and, for a run with ``--checkpoint FILE``, how to resume.
+
+    Called once the run has unwound, so ``--out`` holds what it held before the run (a new one
+    is gone again): the message says whether there were earlier outputs."""
     checkpoint = getattr(args, "checkpoint", None)
     if checkpoint:
         return f"{prog}: interrupted; rerun the same command to resume from its checkpoint {checkpoint}"
     out = getattr(args, "out", None)
-    where = f"; {out} keeps the outputs of the last finished run" if out else ""
-    return f"{prog}: interrupted{where}"
+    if not out:
+        return f"{prog}: interrupted"
+    if Path(out).is_dir() and any(Path(out).iterdir()):
+        return f"{prog}: interrupted; nothing was written: {out} keeps what it held before"
+    return f"{prog}: interrupted; nothing was written (no earlier outputs in {out})"
+
+
+def is_numerical(exc: BaseException) -> bool:
+    """True for a numerical failure (ArithmeticError, numpy's LinAlgError, which is a ValueError):
+    an internal error, reported with :data:`EXIT_NUMERICAL`, not as bad input."""
+    if isinstance(exc, ArithmeticError):
+        return True
+    np = sys.modules.get("numpy")
+    return np is not None and isinstance(exc, np.linalg.LinAlgError)
+
+
+def numerical_message(exc: BaseException) -> str:
+    """The one line of an internal numerical error: what failed, and how to report it."""
+    what = str(exc) or type(exc).__name__
+    return (f"internal numerical error ({type(exc).__name__}): {what}. This is not a fault of the input as such; "
+            f"please report it, with the traceback that {DEBUG_ENV}=1 shows (exit code {EXIT_NUMERICAL})")
 
 
 def _debug() -> bool:
@@ -195,5 +254,7 @@ def run_guarded(prog: str, run, args: argparse.Namespace, hint=None) -> int:
         return _fail(prog, str(exc), exc.code)
     except OSError as exc:
         return _fail(prog, os_error_message(exc), EXIT_BAD_INPUT)
-    except ValueError as exc:
+    except (ArithmeticError, ValueError) as exc:  # numpy's LinAlgError is a ValueError
+        if is_numerical(exc):
+            return _fail(prog, numerical_message(exc), EXIT_NUMERICAL)
         return _fail(prog, str(exc), EXIT_BAD_INPUT)

@@ -102,7 +102,7 @@ def _solve(tables, window_s: float, method: str):
     if method == "online":
         return problem, register_online(tables.plots, tables.sensors, tables.navigation, tables.platforms,
                                         tables.references, options=OnlineOptions(window_s=window_s))
-    return problem, solve_batch(problem, BatchOptions(window_s=window_s))
+    return problem, solve_batch(problem, BatchOptions(window_s=window_s), progress=True)  # a bar on a terminal only
 
 
 def _associate(tables, window_s: float, method: str):
@@ -117,7 +117,7 @@ def _associate(tables, window_s: float, method: str):
         raise ValueError(f"--window-s: plots without target ids are associated in windows; expected a length > 0 s, "
                          f"got {window_s}")
     association = associate_and_register(tables.plots, tables.sensors, tables.navigation, tables.platforms,
-                                         tables.references, AssociationOptions(window_s=window_s))
+                                         tables.references, AssociationOptions(window_s=window_s), progress=True)
     return association, association.problem, association.batch
 
 
@@ -212,6 +212,8 @@ def _read_tables(args: argparse.Namespace, out: Path):
         per_file = {f: ", ".join(f"{n} {code}" for code, n in g.groupby("reason_code").size().items())
                     for f, g in frame.groupby("file")}
         print(f"set aside {len(frame)} bad rows (in rejected.csv): " + "; ".join(f"{f}: {c}" for f, c in per_file.items()))
+    for note in tables.notes:  # ignored without an error, or suspicious without proof
+        print(f"note: {note}")
     return tables
 
 
@@ -245,7 +247,7 @@ def _register_into(path: Path, args: argparse.Namespace, tables):
               _run_line(result)]
     print_report(result, rows, header)
     inputs = {**_inputs(tables, problem, args.window_s), "method": args.method, "on_bad_row": args.on_bad_row,
-              "rows_read": tables.rows_read(), "rows_rejected": len(tables.rejected)}
+              "rows_read": tables.rows_read(), "rows_rejected": len(tables.rejected), "notes": list(tables.notes)}
     if association is not None:
         inputs["association"] = {"targets": association.n_targets, "plots_associated": association.n_associated,
                                  "plots_unassociated": int(association.unassociated_rows.size),

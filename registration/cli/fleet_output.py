@@ -1,6 +1,7 @@
 """What ``registration fleet simulate`` and ``fleet register`` print and write: the estimates per
 sensor and platform, the observability report, the consistency check and its gate (batch: the
-chi-square of the residuals; online: the normalised innovations), ``estimates.csv``,
+chi-square of the residuals; online: the same at the final estimate, with the normalised
+innovations as information), ``estimates.csv``,
 ``summary.json`` (online: also ``history.csv``, the estimates over time) and the plots."""
 
 from __future__ import annotations
@@ -12,9 +13,10 @@ import numpy as np
 
 from registration.cli.errors import consistency_gate, consistency_line, writing
 from registration.core.consistency import ConsistencyReport
+from registration.fleet.combinations import sigma_text
 from registration.fleet.layout import FILE_UNITS
 
-__all__ = ["chi_square_report", "estimate_rows", "print_report", "write_outputs", "gate"]
+__all__ = ["chi_square_report", "estimate_rows", "estimate_table", "print_report", "write_outputs", "gate"]
 
 
 def is_online(result) -> bool:
@@ -23,54 +25,93 @@ def is_online(result) -> bool:
 
 
 def chi_square_report(result) -> ConsistencyReport | None:
-    """The run's consistency report: batch, the chi-square check as the mean squared normalised
-    residual per degree of freedom (expected 1); online, the normalised innovations squared per
-    degree of freedom. The gate fails when it exceeds 10 times its expectation."""
-    return result.consistency if is_online(result) else result.chi_square.report
+    """The run's one consistency verdict, which the gate judges: batch, the chi-square check as the
+    mean squared normalised residual per degree of freedom (expected 1); online, the same of every
+    plot and reference position at the final estimate (``OnlineResult.verdict``; the normalised
+    innovations only where those residuals were not computed). The gate fails when it exceeds 10
+    times its expectation."""
+    return result.verdict if is_online(result) else result.chi_square.report
 
 
 def estimate_rows(result, truth: dict | None = None) -> list[dict]:
-    """One row per state in file units: object, state, unit (m, deg, 1 for a range gain, s for a
-    time bias), estimate, sigma, status (and truth when given); a state fixed by a zero prior has
-    sigma 0 and status ``fixed``."""
+    """One row per state, then one per sum the observability report names (``result.rows``), in
+    file units: object, state, unit (m, deg, 1 for a range gain, s for a time bias), estimate,
+    sigma (one standard deviation, σ), status (and truth when given). A state fixed by a zero prior
+    has sigma 0 and status ``fixed``; an undetermined sigma is None (an empty CSV cell, JSON null).
+    A sum's object and state join its parts' with ``+``: object ``A+A-3D``, state
+    ``heading_error+bearing_bias``, status ``identifiable combination``."""
     rows = []
     for r in result.rows(truth):
         unit, k, _, _ = FILE_UNITS[r["unit"]]
-        row = {"object": r["object"], "state": r["quantity"], "unit": unit,
-               "estimate": r["estimate"] * k, "sigma": r["sigma"] * k, "status": r["status"]}
+        row = {"object": r["object"], "state": r["quantity"], "unit": unit, "estimate": r["estimate"] * k,
+               "sigma": r["sigma"] * k if np.isfinite(r["sigma"]) else None, "status": r["status"]}
         if truth is not None:
             row["truth"] = r["truth"] * k
         rows.append(row)
     return rows
 
 
+def estimate_table(rows: list[dict]) -> list[str]:
+    """The console table of :func:`estimate_rows`: object, state, estimate, σ (one standard
+    deviation, or ``undetermined``), truth when known, unit, status; range gains in ppm."""
+    has_truth = bool(rows) and "truth" in rows[0]
+    wo = max([8, *(len(r["object"]) + 2 for r in rows)])
+    ws = max([16, *(len(r["state"]) + 2 for r in rows)])
+    out = [f"  {'object':<{wo}}{'state':<{ws}}{'estimate':>12}{'σ':>14}{'truth' if has_truth else '':>{10 if has_truth else 0}}"
+           "  unit  status"]
+    for r in rows:
+        k, unit = (1e6, "ppm") if r["unit"] == "1" else (1.0, r["unit"])
+        sigma = sigma_text(np.inf if r["sigma"] is None else k * r["sigma"], ".3g")
+        truth = f"{k * r['truth']:10.4g}" if has_truth else ""
+        out.append(f"  {r['object']:<{wo}}{r['state']:<{ws}}{k * r['estimate']:12.4g}{sigma:>14}{truth}  {unit:<4}  {r['status']}")
+    return out
+
+
 def print_report(result, rows: list[dict], header: list[str]) -> None:
-    """Header lines, the estimate table (estimate, 2 sigma, truth if known, unit, status; range gains
-    in ppm), the observability report and the chi-square/consistency lines."""
+    """Header lines, the estimate table (:func:`estimate_table`), the observability report and the
+    chi-square/consistency lines."""
     for line in header:
         print(line)
     for w in getattr(result, "warnings", ()):
         print(f"WARNING: {w}")
-    has_truth = bool(rows) and "truth" in rows[0]
-    print(f"\n  {'object':<8}{'state':<16}{'estimate':>12}{'± 2σ':>10}{'truth' if has_truth else '':>{10 if has_truth else 0}}  unit  status")
-    for r in rows:
-        k, unit = (1e6, "ppm") if r["unit"] == "1" else (1.0, r["unit"])
-        truth = f"{k * r['truth']:10.4g}" if has_truth else ""
-        print(f"  {r['object']:<8}{r['state']:<16}{k * r['estimate']:12.4g}{2 * k * r['sigma']:10.3g}{truth}  "
-              f"{unit:<4}  {r['status']}")
+    print()
+    for line in estimate_table(rows):
+        print(line)
     print("\nObservability:")
     for line in result.observability.lines():
         print(line)
     for e in result.excluded:
         print(f"  excluded: {e.text()}")
+    check = result.fit_check if is_online(result) else result.chi_square
     if is_online(result):
         print(f"\nonline: {result.history.time.size} epochs, {result.n_plots_used} of {result.n_plots_read} plots used")
-        if result.fit_check is not None:
-            print(f"residuals at the final estimate: {result.fit_check.text()}")
+        if check is not None and result.consistency is not None:  # information only: the verdict is the line below
+            print(result.innovation_text())
     else:
         print()  # the batch's chi-square check is the consistency line below
+    if check is not None and check.parts:
+        refs = "" if is_online(result) else (f" ({result.reference_target.size} of {result.references_given} reference "
+                                             "positions used)")
+        print(f"residual terms (mean square per value): {check.parts_text()}{refs}")
+        for line in _term_hints(check.parts):
+            print(line)
     report = chi_square_report(result)
     print(consistency_line(report) if report is not None else "consistency: no informative epoch to check")
+
+
+#: A term of the chi-square whose mean square per value exceeds this is pointed out by name.
+TERM_HINT_ABOVE = 10.0
+_TERM_CAUSES = {"plots": "the sensors' noise sigmas are stated too small, or the plots carry an unmodelled error",
+                "references": "the reference file's sigma_m is stated too small, or its positions or times do not "
+                              "match the plots' targets",
+                "priors": "the priors are too tight for the errors there are"}
+
+
+def _term_hints(parts: dict) -> list[str]:
+    """A line per term of the chi-square far above 1 (TERM_HINT_ABOVE), naming its likely cause."""
+    return [f"  the {name} term is {ss / n:.3g} per value (about 1 where the sigmas are right): "
+            f"{_TERM_CAUSES.get(name, 'check its sigmas')}"
+            for name, (ss, n) in parts.items() if n and ss / n > TERM_HINT_ABOVE]
 
 
 def _finite(v):
@@ -78,8 +119,31 @@ def _finite(v):
 
 
 def _check_json(check) -> dict:
+    parts = {k: {"sum_of_squares": ss, "values": n, "mean_square": ss / n if n else None}
+             for k, (ss, n) in check.parts.items()}
     return {"chi2": float(check.chi2), "dof": int(check.dof), "mean": _finite(float(check.mean)),
-            "interval_95": [_finite(float(v)) for v in check.interval], "consistent": bool(check.ok)}
+            "interval_95": [_finite(float(v)) for v in check.interval], "consistent": bool(check.ok), "parts": parts}
+
+
+def _references_json(result) -> dict:
+    """The reference positions' term of a batch result: how many were given and used, their mean
+    squared normalised residual (3 values per position), per reference target too."""
+    by_target = {k: {"mean_square": v[0], "values": v[1]} for k, v in result.residual_check("reference").items()}
+    n = int(result.reference_residuals.size)
+    return {"positions_given": int(result.references_given), "positions_used": int(result.reference_target.size),
+            "mean_square": float(np.mean(result.reference_residuals**2)) if n else None, "values": n,
+            "by_target": by_target}
+
+
+def _by_target_json(result) -> dict:
+    """Per target, its plots' mean squared normalised residual, and its reference positions' beside it."""
+    refs = result.residual_check("reference")
+    out = {}
+    for k, (ms, n) in result.residual_check("target").items():
+        out[k] = {"mean_square": ms, "values": n}
+        if k in refs:
+            out[k].update(reference_mean_square=refs[k][0], reference_values=refs[k][1])
+    return out
 
 
 def _summary(result, rows: list[dict], inputs: dict) -> dict:
@@ -89,6 +153,7 @@ def _summary(result, rows: list[dict], inputs: dict) -> dict:
         "estimates": [{k: (_finite(v) if isinstance(v, float) else v) for k, v in r.items()} for r in rows],
         "observability": result.observability.to_json(),
         "consistency": report.to_json() if report is not None else None,
+        "consistency_basis": (result.verdict_basis if is_online(result) else "residuals (chi-square) at the solution"),
         "excluded": [{"target": e.target, "reason": e.reason, "plots": e.n_plots, "t_start_s": e.t_start,
                       "t_end_s": e.t_end} for e in result.excluded],
         "warnings": list(getattr(result, "warnings", ())),
@@ -99,12 +164,15 @@ def _summary(result, rows: list[dict], inputs: dict) -> dict:
                          "plots_read": int(result.n_plots_read)}
         if result.fit_check is not None:
             out["residuals_at_final_estimate"] = _check_json(result.fit_check)
+        if result.consistency is not None:  # information, subordinate to the verdict
+            out["innovations"] = result.consistency.to_json()
         return out
     out.update({
         "converged": bool(result.converged), "iterations": int(result.iterations),
         "chi_square": _check_json(result.chi_square),
         "residuals_by_sensor": {k: {"mean_square": v[0], "values": v[1]} for k, v in result.residual_check("sensor").items()},
-        "residuals_by_target": {k: {"mean_square": v[0], "values": v[1]} for k, v in result.residual_check("target").items()},
+        "residuals_by_target": _by_target_json(result),
+        "residuals_of_references": _references_json(result),
     })
     return out
 

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import argparse
 import json
-from pathlib import Path
 
 import numpy as np
 
@@ -201,125 +200,6 @@ def format_table(ev: FusionEvaluation) -> str:
     return "\n".join(lines)
 
 
-# --------------------------------------------------------------------------- plots
-def _ellipse(mean: np.ndarray, cov: np.ndarray, k: float = 2.0, n: int = 200) -> np.ndarray:
-    """Points (n, 2) of the k-sigma ellipse {x : (x - mean)^T cov^-1 (x - mean) = k^2} (x-y block)."""
-    c = cov[:2, :2]
-    vals, vecs = np.linalg.eigh(c)
-    t = np.linspace(0.0, 2.0 * np.pi, n)
-    circle = np.stack([np.cos(t), np.sin(t)])
-    return (mean[:2, None] + k * vecs @ (np.sqrt(np.maximum(vals, 0.0))[:, None] * circle)).T
-
-
-def _pyplot():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
-
-
-def _projection_note(ev: FusionEvaluation) -> str:
-    return " (x-y projection; GDOPs over x, y, z)" if ev.scenario.dim == 3 else ""
-
-
-def _draw_geometry(ax, ev: FusionEvaluation) -> None:
-    """Sites A and B, the target and the lines of sight, in km (x-y plane)."""
-    sc, p_true, km = ev.scenario, ev.p_true_loc, 1e-3
-    a, b = np.asarray(sc.site_radar_loc, float), np.asarray(sc.site_second_loc, float)
-    ax.plot([a[0] * km, p_true[0] * km], [a[1] * km, p_true[1] * km], "k-", lw=1)
-    ax.plot([b[0] * km, p_true[0] * km], [b[1] * km, p_true[1] * km], "k--", lw=1)
-    ax.plot([a[0] * km, b[0] * km], [a[1] * km, b[1] * km], color="0.6", lw=1)
-    ax.plot(a[0] * km, a[1] * km, "ks", ms=8)
-    ax.plot(b[0] * km, b[1] * km, "k^", ms=8)
-    ax.plot(p_true[0] * km, p_true[1] * km, "r*", ms=12)
-    ax.annotate("A radar", (a[0] * km, a[1] * km), textcoords="offset points", xytext=(6, -14))
-    ax.annotate("B " + "+".join(sc.components), (b[0] * km, b[1] * km), textcoords="offset points", xytext=(6, -14))
-    ax.annotate("target C", (p_true[0] * km, p_true[1] * km), textcoords="offset points", xytext=(6, 6))
-    ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel("x (km), from A towards B" if not np.any(b[1:] - a[1:]) else "x (km)")
-    ax.margins(0.12)
-    ax.set_ylabel("y (km)")
-    ax.set_title(f"(a) geometry{_projection_note(ev)}")
-    ax.grid(alpha=0.3)
-
-
-def _draw_measurement_points(ax, ev: FusionEvaluation, m: int) -> None:
-    """The first ``m`` radar and pseudo-measurement points (errors in m) with 2-sigma ellipses."""
-    p_true, zero = ev.p_true_loc, np.zeros(ev.scenario.dim)
-    radar, pseudo = ev.points["radar"][:m], ev.points["pseudo_measurement"][:m]
-    ax.plot((radar[:, 0] - p_true[0]), (radar[:, 1] - p_true[1]), "k+", ms=4, alpha=0.6,
-            label=f"radar points C (GDOP {ev.row('radar')['monte_carlo_gdop_m']:.0f} m)")
-    ax.plot((pseudo[:, 0] - p_true[0]), (pseudo[:, 1] - p_true[1]), "x", color="0.55", ms=4, alpha=0.6,
-            label=f"pseudo-measurements H (GDOP {ev.row('pseudo_measurement')['monte_carlo_gdop_m']:.0f} m)")
-    e = _ellipse(zero, ev.analytic_cov["radar"])
-    ax.plot(e[:, 0], e[:, 1], "k-", lw=1.5, label="2σ ellipse of P (radar)")
-    e = _ellipse(zero, ev.analytic_cov["pseudo_measurement"])
-    ax.plot(e[:, 0], e[:, 1], "-", color="tab:orange", lw=1.5, label="2σ ellipse of R (paper's H covariance)")
-    e = _ellipse(zero, ev.analytic_cov["pseudo_measurement_consistent"])
-    ax.plot(e[:, 0], e[:, 1], "--", color="tab:blue", lw=1.5, label="2σ ellipse of H's actual covariance")
-    ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel("x error (m)")
-    ax.set_ylabel("y error (m)")
-    ax.set_title(f"(b) {m} radar and pseudo-measurement points{_projection_note(ev)}")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8, loc="upper left", framealpha=0.9)
-
-
-def _plot_measurements(plt, ev: FusionEvaluation, out: Path, m: int) -> Path:
-    """measurements.png, like the paper's Fig. 3 / 5: geometry, radar and pseudo-measurement points."""
-    fig, (ax0, ax1) = plt.subplots(1, 2, figsize=(13, 5.8), gridspec_kw={"width_ratios": [1, 1.25]})
-    _draw_geometry(ax0, ev)
-    _draw_measurement_points(ax1, ev, m)
-    fig.suptitle(ev.scenario.name)
-    fig.tight_layout()
-    path = out / "measurements.png"
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
-
-
-def _plot_fused(plt, ev: FusionEvaluation, out: Path, m: int) -> Path:
-    """fused.png, like the paper's Fig. 4 / 6: fused points of both fusers (errors in m), 2-sigma ellipses."""
-    p_true, zero = ev.p_true_loc, np.zeros(ev.scenario.dim)
-    paper, optimal = ev.points["paper"][:m], ev.points["optimal"][:m]
-    fig, ax = plt.subplots(figsize=(11.5, 7))
-    ax.plot(paper[:, 0] - p_true[0], paper[:, 1] - p_true[1], ".", color="k", ms=3, alpha=0.55,
-            label=f"paper method X (GDOP {ev.row('paper_actual')['monte_carlo_gdop_m']:.0f} m)")
-    ax.plot(optimal[:, 0] - p_true[0], optimal[:, 1] - p_true[1], ".", color="tab:green", ms=2, alpha=0.45,
-            label=f"optimal fuser (GDOP {ev.row('optimal')['monte_carlo_gdop_m']:.0f} m)")
-    for key, style, color, label in (
-        ("paper_claimed", "--", "tab:red", "2σ: paper's claimed covariance (eq. 13)"),
-        ("paper_actual", "-", "k", "2σ: paper method's consistent covariance"),
-        ("crlb", ":", "tab:green", "2σ: Cramér-Rao bound"),
-        ("radar", "-", "0.6", "2σ: radar alone"),
-    ):
-        e = _ellipse(zero, ev.analytic_cov[key])
-        ax.plot(e[:, 0], e[:, 1], style, color=color, lw=1.8, label=label)
-    lim = 3.2 * np.sqrt(np.max(np.linalg.eigvalsh(ev.analytic_cov["paper_actual"][:2, :2])))
-    ax.set_xlim(-lim, lim)
-    ax.set_ylim(-lim, lim)
-    ax.set_aspect("equal")
-    ax.set_xlabel("x error (m)")
-    ax.set_ylabel("y error (m)")
-    ax.set_title(f"{ev.scenario.name}\n{m} fused points{_projection_note(ev)} (radar ellipse clipped)")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=9, loc="center left", bbox_to_anchor=(1.02, 0.5))
-    fig.tight_layout()
-    path = out / "fused.png"
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
-
-
-def _plot(ev: FusionEvaluation, out: Path, max_points: int) -> list[Path]:
-    """Write measurements.png and fused.png into ``out``, at most ``max_points`` points per set."""
-    plt = _pyplot()
-    m = min(max_points, ev.trials)
-    return [_plot_measurements(plt, ev, out, m), _plot_fused(plt, ev, out, m)]
-
-
 # --------------------------------------------------------------------------- entry point
 def run(args) -> int:
     if args.trials < 2:
@@ -336,7 +216,9 @@ def run(args) -> int:
         with writing(written[0]):
             written[0].write_text(json.dumps(ev.to_json(), indent=2) + "\n")
         if not args.no_plots:
+            from registration.fusion.plots import write_plots
+
             with writing(folder.path):
-                written += _plot(ev, folder.path, args.max_plot_points)
+                written += write_plots(ev, folder.path, args.max_plot_points)
     print("wrote " + ", ".join(str(folder.final(p)) for p in written))
     return 0

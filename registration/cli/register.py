@@ -151,7 +151,7 @@ def _print_summary(summary: dict, estimate_lines, gate) -> None:
     for stat in ("max", "mean", "std"):
         for i, axis in enumerate("XYZ"):
             print(f"  {stat:>4} {axis}   {summary['before'][stat][i]:10.2f}  {summary['after'][stat][i]:10.2f}")
-    print("\nFinal estimates (deg or m) with 2σ:")
+    print("\nFinal estimates (deg or m) with σ (one standard deviation):")
     for line in estimate_lines(summary["estimates"]):
         print(line)
     obs = summary["observability"]

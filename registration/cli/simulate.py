@@ -107,13 +107,15 @@ def table1_lines(stats: dict, paper: dict, noise_free: dict | None = None) -> li
 
 
 def estimate_lines(rows: list[dict]) -> list[str]:
-    lines = [f"  {'state':<14}{'estimate':>12}{'± 2σ':>10}{'truth':>10}  unit  status"]
+    """The console table of the two-ship estimate rows (``registration.online.estimate_rows``):
+    state, estimate, σ (one standard deviation, as in summary.json), truth, unit (deg or m), status."""
+    lines = [f"  {'state':<14}{'estimate':>12}{'σ':>10}{'truth':>10}  unit  status"]
     for r in rows:
         k = np.degrees(1.0) if r["unit"] == "rad" else 1.0
         unit = "deg" if r["unit"] == "rad" else "m"
         truth = "" if r["truth"] is None else f"{r['truth'] * k:10.4g}"
         mark = "" if r["status"] in ("identifiable", "identifiable combination") else "   <- not a converged estimate"
-        lines.append(f"  {r['name']:<14}{r['estimate'] * k:12.4g}{2 * r['sigma'] * k:10.3g}{truth:>10}  {unit:<4}  {r['status']}{mark}")
+        lines.append(f"  {r['name']:<14}{r['estimate'] * k:12.4g}{r['sigma'] * k:10.3g}{truth:>10}  {unit:<4}  {r['status']}{mark}")
     return lines
 
 
@@ -149,7 +151,7 @@ def _print_report(args, scenario, result, stats, noise_free, rows) -> None:
     for line in table1_lines(stats, PAPER_TABLE1, noise_free):
         print(line)
     print()
-    print("Final estimates (deg or m) with 2σ, against the truth of the simulation:")
+    print("Final estimates (deg or m) with σ (one standard deviation), against the truth of the simulation:")
     for line in estimate_lines(rows):
         print(line)
     print()

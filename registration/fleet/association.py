@@ -59,7 +59,7 @@ from registration.fleet.association_result import AssociationResult
 from registration.fleet.association_tracks import sensor_tracks
 from registration.fleet.batch import solve_batch
 from registration.fleet.problem import FleetProblem, build_problem
-from registration.fleet.solver import BatchOptions
+from registration.fleet.solver import BatchOptions, progress_bar, progress_status
 from registration.fleet.tables import read_table
 
 __all__ = ["AssociationOptions", "AssociationResult", "associate_and_register"]
@@ -244,7 +244,7 @@ def _report(problem: FleetProblem, labels: np.ndarray, of_plot: np.ndarray) -> d
 
 
 def associate_and_register(plots, sensors, navigation, platforms=None, references=None,
-                           options: AssociationOptions | None = None) -> AssociationResult:
+                           options: AssociationOptions | None = None, *, progress: bool = False) -> AssociationResult:
     """Associate plots that carry no target ids across sensors and register the fleet with them.
 
     ``plots``, ``sensors``, ``navigation``, ``platforms``: the long-form tables of
@@ -254,6 +254,9 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
     for an empty plots table, plots of one sensor only, or any error of
     :func:`~registration.fleet.problem.build_problem` (unknown sensor, bad values; the message names
     the table and row). Returns an :class:`AssociationResult`; the method is in the module docstring.
+    ``progress``: a bar over the association passes, and one over each solve's iterations, on
+    standard error, shown only on a terminal and after about a second
+    (:func:`registration.fleet.solver.progress_bar`).
     """
     t0 = time.perf_counter()
     if references is not None:
@@ -267,29 +270,37 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
     assigner = Assigner()
     x, P = np.zeros(problem.layout.n), _initial_covariance(problem, options)
     subset = _window_subset(problem, options)
-    track, geom = _tracks(problem, x, options, assigner, subset)
-    labels, previous, changes, t_solve, converged, passes = None, None, [], 0.0, False, 0
-    for passes in range(1, options.max_iterations):  # the passes before the last, on the windows of ``subset``
-        labels, of_plot = _associate(problem, track, x, P, options, assigner, passes > 1, False, geom)
-        if previous is not None:
-            changes.append(int(np.count_nonzero(labels != previous)))
-            if changes[-1] == 0:
-                converged = True
-                break
-        previous = labels
+    with progress_bar(progress, "association passes", total=options.max_iterations, unit="pass") as bar:
+        progress_status(bar, "sensor tracks")
+        track, geom = _tracks(problem, x, options, assigner, subset)
+        labels, previous, changes, t_solve, converged, passes = None, None, [], 0.0, False, 0
+        for passes in range(1, options.max_iterations):  # the passes before the last, on the windows of ``subset``
+            progress_status(bar, f"pass {passes}: associating")
+            labels, of_plot = _associate(problem, track, x, P, options, assigner, passes > 1, False, geom)
+            if previous is not None:
+                changes.append(int(np.count_nonzero(labels != previous)))
+                if changes[-1] == 0:
+                    converged = True
+                    break
+            previous = labels
+            progress_status(bar, f"pass {passes}: registering")
+            t1 = time.perf_counter()
+            step = solve_batch(_labelled(problem, labels), between, x0=x, progress=progress)  # warm start
+            t_solve += time.perf_counter() - t1
+            x, P, geom = step.estimate, step.covariance, None
+            bar.update()
+        # the last pass: all windows, the sensors' tracks again from the plots corrected by the estimate
+        # (an angle bias in a rolling deck sways them)
+        progress_status(bar, "last pass: all windows")
+        if passes or not subset.all():
+            track, geom = _tracks(problem, x, options, assigner)
+        labels, of_plot = _associate(problem, track, x, P, options, assigner, passes > 0, True, geom)
+        final = _labelled(problem, labels)
+        progress_status(bar, "last pass: registering")
         t1 = time.perf_counter()
-        step = solve_batch(_labelled(problem, labels), between, x0=x)  # warm: from the last estimate
+        result = solve_batch(final, batch_options, x0=x, progress=progress)
         t_solve += time.perf_counter() - t1
-        x, P, geom = step.estimate, step.covariance, None
-    # the last pass: all windows, the sensors' tracks again from the plots corrected by the estimate
-    # (an angle bias in a rolling deck sways them)
-    if passes or not subset.all():
-        track, geom = _tracks(problem, x, options, assigner)
-    labels, of_plot = _associate(problem, track, x, P, options, assigner, passes > 0, True, geom)
-    final = _labelled(problem, labels)
-    t1 = time.perf_counter()
-    result = solve_batch(final, batch_options, x0=x)
-    t_solve += time.perf_counter() - t1
+        bar.update()
     n_rows = problem.n_input_plots
     row_labels = np.full(n_rows, "", dtype=object)
     row_labels[problem.row] = labels

@@ -13,7 +13,7 @@ import numpy as np
 from registration.fleet.covariance import fused_targets, solution_information, state_covariance
 from registration.fleet.observability import fleet_observability
 from registration.fleet.problem import FleetProblem
-from registration.fleet.residuals import residual_table
+from registration.fleet.residuals import chi_square_parts, reference_residuals, residual_table, unused_references
 from registration.fleet.result import BatchResult, ChiSquareCheck
 from registration.fleet.solver import BatchOptions, fit
 
@@ -28,21 +28,25 @@ def _per_input_row(problem: FleetProblem, values: np.ndarray) -> np.ndarray:
 
 
 def _chi_square(fit_, ev) -> ChiSquareCheck:
+    """The chi-square of the solution: plots, reference positions and priors, each term kept."""
     design, layout = fit_.design, fit_.problem.layout
-    n_values = int(np.count_nonzero(design.weight)) + 3 * design.ref_p.shape[0]
-    n_values += int(np.count_nonzero(design.prior_weight[layout.free]))
+    parts = chi_square_parts(design, ev, layout.free)
+    n_values = sum(n for _, n in parts.values())
     n_params = layout.free.size + 3 * int(design.blocks.coef_mask.sum())
-    return ChiSquareCheck(ev.cost, n_values - n_params)
+    return ChiSquareCheck(ev.cost, n_values - n_params, parts)
 
 
-def solve_batch(problem: FleetProblem, options: BatchOptions | None = None, x0: np.ndarray | None = None) -> BatchResult:
+def solve_batch(problem: FleetProblem, options: BatchOptions | None = None, x0: np.ndarray | None = None, *,
+                progress: bool = False) -> BatchResult:
     """Register a fleet: maximum-likelihood (or, with finite priors, maximum a posteriori)
     estimates of every platform's attitude errors and every sensor's biases, jointly with the
     target trajectories, from all plots at once. See docs/fleet.md for the model and the method.
     ``x0`` (n,; rad, m): starting states, for example an earlier estimate (default zeros); the
     solution is the same optimum to within the stopping tolerance, reached in fewer iterations.
+    ``progress``: a bar over the solver's iterations on standard error, shown only on a terminal
+    and after about a second (:func:`registration.fleet.solver.progress_bar`).
     """
-    fit_ = fit(problem, options or BatchOptions(), x0)
+    fit_ = fit(problem, options or BatchOptions(), x0, progress=progress)
     problem = fit_.problem
     layout = problem.layout
     free = layout.free
@@ -61,6 +65,8 @@ def solve_batch(problem: FleetProblem, options: BatchOptions | None = None, x0: 
     status.update(report.status)
     if undetermined.size:  # states leaning on a direction left out of the covariance
         sigma[free[np.linalg.norm(undetermined, axis=1) > 0.1]] = np.inf
+    ref_target, ref_residuals = reference_residuals(problem, fit_.design, sol.evaluation)
+    unused = unused_references(problem, fit_.design)
     return BatchResult(
         layout=layout, estimate=fit_.x.copy(), covariance=P, sigma=sigma, status=status,
         targets=fused_targets(fit_, sol.reduced, P_sink), residuals=residual_table(problem, fit_.design, sol.evaluation),
@@ -69,5 +75,7 @@ def solve_batch(problem: FleetProblem, options: BatchOptions | None = None, x0: 
         undetermined=undetermined, converged=fit_.converged, iterations=fit_.iterations,
         plot_target=_per_input_row(problem, np.array(problem.target_ids, dtype=str)[problem.target]),
         plot_sensor=_per_input_row(problem, np.array(problem.sensor_ids, dtype=str)[problem.sensor]),
-        cost_history=fit_.cost_history, warnings=fit_.warnings,
+        cost_history=fit_.cost_history, warnings=fit_.warnings + ((unused,) if unused else ()),
+        reference_target=ref_target, reference_residuals=ref_residuals,
+        references_given=int(problem.references.time.size),
     )

@@ -20,6 +20,7 @@ import numpy as np
 from registration.core.observability import UNOBSERVABLE_BELOW
 from registration.fleet.normal import positions
 from registration.fleet.schur import Reduced, reduce
+from registration.fleet.solver import NumericalError, singular_blocks
 
 __all__ = ["FusedTargets", "Solution", "solution_information", "state_covariance", "fused_targets"]
 
@@ -58,9 +59,17 @@ class Solution:
 
 
 def solution_information(fit) -> Solution:
-    """The information at the solution (from the fit's own residuals and normal equations)."""
+    """The information at the solution (from the fit's own residuals and normal equations).
+    :class:`~registration.fleet.solver.NumericalError` (an internal error, not bad input) if a
+    window's block cannot be inverted there, which the solver's checks at the solution exclude."""
     ev, normal = fit.evaluation, fit.normal
-    red = reduce(fit.design.blocks, normal, 0.0)
+    try:
+        red = reduce(fit.design.blocks, normal, 0.0)
+    except np.linalg.LinAlgError as exc:
+        bad = singular_blocks(fit.design, normal)
+        names = sorted({fit.problem.target_ids[t] for t in fit.design.blocks.block_target[bad]})
+        raise NumericalError(f"the information at the solution cannot be computed: {bad.size} target windows "
+                             f"(targets {', '.join(names) or 'unknown'}) are singular there ({exc})") from exc
     free = fit.problem.layout.free
     S = red.S[np.ix_(free, free)]
     prior = fit.design.prior_weight[free] ** 2

@@ -10,9 +10,12 @@ posterior sigma of ``1 / sqrt(s)`` in those units; classes and thresholds are th
 A known structural degeneracy is named first: on a platform that neither pitches nor rolls, the
 heading error and the bearing biases of its sensors rotate every line of sight about the same
 vertical axis, so only ``heading error + bearing bias`` of each sensor is identifiable. The
-direction ``(+1 on the heading error, -1 on each bearing bias)`` is tested directly and, when
-each state alone is observable, reported as such: unobservable below 0.01, "barely separated"
-(weak) below 10. Lever arms and the earth's curvature give a level platform's heading error a
+direction ``(+1 on the heading error, -1 on each bearing bias)`` is tested directly: when it lies
+mostly (more than half, in scaled units) in the unobservable and weak eigen-directions, it is
+reported by its own scaled information ``v^T J_s v`` (v the scaled unit vector), the number that
+the report's ``scaled_information`` carries: unobservable below 0.01, "barely separated" (weak)
+below 10, not named at or above 10. Its shares in the unobservable and weak eigen-directions are
+reported beside it (:class:`StructuralCombination`). Lever arms and the earth's curvature give a level platform's heading error a
 little information of its own, so the weak case is common. A second structural direction is tested
 the same way when sensors have time biases: all time biases moving together (a clock common to the
 fleet), which only reference positions and the platforms' own motion fix. Every remaining weak or
@@ -25,6 +28,8 @@ biases (targets in a narrow sector).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from registration.core.observability import (
@@ -32,7 +37,23 @@ from registration.core.observability import (
 )
 from registration.fleet.layout import state_scale
 
-__all__ = ["explain", "fleet_observability"]
+__all__ = ["StructuralCombination", "explain", "fleet_observability"]
+
+
+@dataclass
+class StructuralCombination(Combination):
+    """A named structural direction (a level platform's heading error against its bearing biases,
+    a clock common to the fleet). As for every :class:`Combination`, ``eigenvalue`` is its scaled
+    information ``v^T J_s v`` (v its unit vector in prior-scaled coordinates; dimensionless, the
+    number the thresholds 0.01 and 10 apply to). ``null_share`` and ``weak_share``: the shares of
+    ``|v|^2`` in the unobservable and in the weak eigen-directions (0..1)."""
+
+    null_share: float = 0.0
+    weak_share: float = 0.0
+
+    def to_json(self) -> dict:
+        return {**super().to_json(), "share_in_unobservable_directions": self.null_share,
+                "share_in_weak_directions": self.weak_share}
 
 #: Why a weak or unobservable direction dominated by these states is hard to see.
 _GAIN_BIAS = ("range gain and range bias are barely told apart: the plots span too narrow a range of ranges (a gain "
@@ -143,19 +164,22 @@ def _common_clock(layout, free: np.ndarray):
     return [((what, "barely determined: " + what), v)]
 
 
-def _named_structural(null: np.ndarray, weak: np.ndarray, layout, free, patterns):
-    """The structural patterns ((unobservable text, weak text), own-unit direction, scaled direction)
-    that lie mostly in the unobservable (or weak) eigen-directions."""
+def _named_structural(Js: np.ndarray, null: np.ndarray, weak: np.ndarray, layout, free, patterns):
+    """The structural patterns ((unobservable text, weak text), own-unit direction, scaled unit
+    direction vs) that lie mostly in the unobservable and weak eigen-directions of the scaled
+    information ``Js``, classed by their own scaled information ``vs^T Js vs``: unobservable below
+    UNOBSERVABLE_BELOW, weak below WEAK_BELOW (above it the pattern is observable and not named)."""
     named = []
     for texts, v, vs in patterns:
         f_null = float(np.sum((null.T @ vs) ** 2))
         f_weak = float(np.sum((weak.T @ vs) ** 2))
-        if f_null + f_weak <= 0.5:
+        info = float(vs @ Js @ vs)
+        if f_null + f_weak <= 0.5 or not info < WEAK_BELOW:
             continue
-        unobservable = f_null > 0.5
+        unobservable = info < UNOBSERVABLE_BELOW
         coeffs = {layout.names[free[k]]: float(v[k]) for k in np.flatnonzero(v)}
         pair = tuple(coeffs) if len(coeffs) == 2 and texts[2] else None
-        comb = Combination(coeffs, float(f_null), texts[0] if unobservable else texts[1], pair)
+        comb = StructuralCombination(coeffs, info, texts[0] if unobservable else texts[1], pair, f_null, f_weak)
         named.append((unobservable, comb, vs))
     return named
 
@@ -217,7 +241,7 @@ def fleet_observability(information: np.ndarray, free: np.ndarray, layout, senso
                 for pid, sensors, vec in _level_patterns(layout, free, sensor_platform, platform_ids, sensor_ids)]
     patterns += [((*texts, False), vec) for texts, vec in _common_clock(layout, free)]
     patterns = [(texts, vec, vec / d / np.linalg.norm(vec / d)) for texts, vec in patterns]
-    named = _named_structural(null, weak, layout, free, patterns)
+    named = _named_structural(Js, null, weak, layout, free, patterns)
     for is_unobs, comb, _ in named:
         (report.unobservable if is_unobs else report.weak).append(comb)
     for is_unobs, comb in _generic(Js, [vs for _, _, vs in named], d, names, labels):

@@ -8,6 +8,7 @@ import numpy as np
 
 from registration.core.consistency import ConsistencyReport
 from registration.core.observability import ObservabilityReport
+from registration.fleet.combinations import linear_combination, sigma_text, sum_rows
 from registration.fleet.covariance import FusedTargets
 from registration.fleet.layout import FILE_UNITS, StateLayout
 
@@ -22,11 +23,14 @@ class ChiSquareCheck:
 
     ``dof`` = measured values - estimated parameters (states and trajectory coefficients).
     ``mean`` = chi2 / dof is 1 for data that fit the model; :attr:`report` judges it as the package's
-    consistency check does (a mean over ``dof`` values of one degree of freedom each).
+    consistency check does (a mean over ``dof`` values of one degree of freedom each). ``parts``:
+    the terms of ``chi2``, {"plots" | "references" | "priors": (sum of squares, number of values)}
+    (dimensionless; empty if not known), shown by :meth:`parts_text`.
     """
 
     chi2: float
     dof: int
+    parts: dict = field(default_factory=dict, compare=False)
 
     @property
     def mean(self) -> float:
@@ -54,6 +58,16 @@ class ChiSquareCheck:
         return (f"mean squared normalised residual {self.mean:.4f} over {self.dof} degrees of freedom "
                 f"(95 % band [{lo:.4f}, {hi:.4f}]): {'consistent' if self.ok else 'OUTSIDE the band'}")
 
+    def parts_text(self) -> str:
+        """The terms of the sum, each as its mean square per value over its count (about 1 each where
+        the stated sigmas are right, a little less for the plots, whose windows absorb part of
+        them), e.g. ``plots 0.99 over 11000 values; references 9.1 over 900 values; priors 0.2 over
+        3 values``; ``references none`` when no reference position entered."""
+        terms = []
+        for name, (ss, n) in self.parts.items():
+            terms.append(f"{name} {ss / n:.4g} over {n} values" if n else f"{name} none")
+        return "; ".join(terms)
+
 
 def state_rows(layout: StateLayout, estimate: np.ndarray, sigma: np.ndarray, status: dict,
                truth: dict | None = None) -> list[dict]:
@@ -71,12 +85,14 @@ def state_rows(layout: StateLayout, estimate: np.ndarray, sigma: np.ndarray, sta
 
 
 def state_lines(rows: list[dict]) -> list[str]:
-    """One printable line per row of :func:`state_rows` (angles in degrees, ranges and positions in
-    m, range gains in ppm, time biases in s)."""
-    out = []
+    """One printable line per row of :func:`state_rows` or ``sum_rows``: label, estimate and its σ
+    (one standard deviation, or ``undetermined``) in display units (angles in degrees, ranges and
+    positions in m, range gains in ppm, time biases in s), status."""
+    out, width = [], max([36, *(len(row["label"]) for row in rows)])
     for row in rows:
         _, _, unit, k = FILE_UNITS[row["unit"]]
-        out.append(f"  {row['label']:<36s} {k * row['estimate']:+12.4f} +- {k * row['sigma']:.4f} {unit}  {row['status']}")
+        out.append(f"  {row['label']:<{width}s} {k * row['estimate']:+12.4f} {unit:<3}  σ {sigma_text(k * row['sigma']):<12}  "
+                   f"{row['status']}")
     return out
 
 
@@ -91,7 +107,10 @@ class BatchResult:
     ``identifiable``, ``weak`` or ``not identifiable``. ``residuals`` (rows of the input plots table, 3): normalised residuals
     (measured - predicted) / sigma of range, bearing, elevation; NaN where not measured or where
     the plot was excluded. ``information``: the free states' information from the data alone
-    (targets eliminated), in the order of ``free_names``.
+    (targets eliminated), in the order of ``free_names``. ``reference_residuals`` (R', 3): per
+    reference position used, ``(known - fitted position) / sigma`` per ECEF axis (sigma: the
+    reference's, m per axis), of target ``reference_target`` (R',); ``references_given``: the
+    reference positions of the problem's targets, used or not (a warning names those not used).
     """
 
     layout: StateLayout
@@ -114,6 +133,9 @@ class BatchResult:
     plot_sensor: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=str))  # (input rows,)
     cost_history: list = field(default_factory=list)
     warnings: tuple = ()  # what the user should know about this estimate (e.g. a time bias near the window)
+    reference_target: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=str))  # (R',)
+    reference_residuals: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))  # (R', 3)
+    references_given: int = 0
 
     def value(self, name: str) -> float:
         return float(self.estimate[self.layout.index(name)])
@@ -122,28 +144,27 @@ class BatchResult:
         return float(self.sigma[self.layout.index(name)])
 
     def combination(self, coefficients: dict) -> tuple[float, float]:
-        """Value and sigma of ``sum_i a_i x_i`` for ``coefficients`` {state name: a_i}, e.g.
-        ``{"A:heading_error": 1, "A1:bearing_bias": 1}``. The sigma is inf when the combination
+        """Value and sigma (1σ) of ``sum_i a_i x_i`` for ``coefficients`` {state name: a_i}, e.g.
+        ``{"A:heading_error": 1, "A1:bearing_bias": 1}`` (rad, m). The sigma is inf when the combination
         leans on a direction the data do not determine (more than 1 % of it, in scaled units)."""
-        a = np.zeros(self.layout.n)
-        for name, c in coefficients.items():
-            a[self.layout.index(name)] = float(c)
-        value = float(a @ self.estimate)
-        a_scaled = a[self.layout.free] * self.scale
-        lean = np.linalg.norm(self.undetermined.T @ a_scaled) if self.undetermined.size else 0.0
-        if lean > 0.01 * max(float(np.linalg.norm(a_scaled)), 1e-300):
-            return value, float("inf")
-        return value, float(np.sqrt(max(float(a @ self.covariance @ a), 0.0)))
+        return linear_combination(self.layout, self.estimate, self.covariance, coefficients, self.undetermined,
+                                  self.scale)
 
     def residual_check(self, by: str = "target") -> dict:
-        """Mean squared normalised residual per target (``by="target"``) or per sensor
-        (``by="sensor"``): {id: (mean, number of measured values)}. Where the model fits it is a
-        little below 1 (the fitted trajectory coefficients absorb part of the residuals: for a
-        target about ``1 - 3 x its coefficients / its values``); well above 1 points at that
-        target's track model (a window too long for its manoeuvres) or at that sensor's stated
-        noise or an unmodelled error."""
-        if by not in ("target", "sensor"):
-            raise ValueError(f"by: expected 'target' or 'sensor', got {by!r}")
+        """Mean squared normalised residual of the plots per target (``by="target"``) or per sensor
+        (``by="sensor"``), or of the reference positions used per reference target
+        (``by="reference"``, 3 values per position, one per ECEF axis): {id: (mean, number of
+        values)}. Where the model fits it is a little below 1 (the fitted trajectory coefficients
+        absorb part of the residuals: for a target about ``1 - 3 x its coefficients / its
+        values``); well above 1 points at that target's track model (a window too long for its
+        manoeuvres), at that sensor's stated noise or an unmodelled error, or at a reference sigma
+        (``sigma_m``) stated too small; far below 1 at a sigma stated too large."""
+        if by not in ("target", "sensor", "reference"):
+            raise ValueError(f"by: expected 'target', 'sensor' or 'reference', got {by!r}")
+        if by == "reference":
+            return {str(t): (float(np.mean(self.reference_residuals[self.reference_target == t] ** 2)),
+                             int(self.reference_residuals[self.reference_target == t].size))
+                    for t in dict.fromkeys(self.reference_target)}
         ids = self.plot_target if by == "target" else self.plot_sensor
         sq = np.nansum(self.residuals**2, axis=1)
         n = np.sum(np.isfinite(self.residuals), axis=1)
@@ -155,12 +176,16 @@ class BatchResult:
 
     def rows(self, truth: dict | None = None) -> list[dict]:
         """One dict per state: name, object (platform or sensor id), quantity, label, unit,
-        estimate, sigma, status (and truth when given)."""
-        return state_rows(self.layout, self.estimate, self.sigma, self.status, truth)
+        estimate, sigma (1σ), status (and truth when given); then one per sum the observability
+        report names (:func:`~registration.fleet.combinations.sum_rows`)."""
+        return state_rows(self.layout, self.estimate, self.sigma, self.status, truth) + sum_rows(self, truth)
 
     def lines(self) -> list[str]:
         """A printable summary (angles in degrees)."""
         out = [f"converged: {self.converged} after {self.iterations} iterations", self.chi_square.text()]
+        if self.chi_square.parts:
+            out.append(f"  its terms (mean square per value): {self.chi_square.parts_text()} "
+                       f"({self.reference_target.size} of {self.references_given} reference positions used)")
         out += [f"WARNING: {w}" for w in self.warnings]
         out += state_lines(self.rows())
         out += self.observability.lines()

@@ -27,8 +27,9 @@ from registration.fleet.normal import Design, Evaluation, Normal, evaluate, make
 from registration.fleet.problem import Exclusion, FleetProblem
 from registration.fleet.schur import damped_step, determined_directions, masked_blocks, reduce
 
-__all__ = ["BatchOptions", "Fit", "determined_design", "exclude_singular", "fit", "fit_windows", "levenberg_marquardt",
-           "outside_when_seen", "singular_blocks", "time_bias_warnings"]
+__all__ = ["BatchOptions", "Fit", "NumericalError", "determined_design", "exclude_singular", "fit", "fit_windows",
+           "levenberg_marquardt", "outside_when_seen", "progress_bar", "progress_status", "singular_blocks",
+           "time_bias_warnings"]
 
 LAMBDA_START = 1e-3
 LAMBDA_MAX = 1e16
@@ -36,6 +37,38 @@ LAMBDA_MAX = 1e16
 SINGULAR_BLOCK = 1e-10
 #: The first phase (targets alone) stops when a step would gain less than this share of the cost.
 TARGETS_FIRST = 1e-2
+#: A progress bar (``progress=True``) appears only after this many seconds, and only on a terminal.
+PROGRESS_DELAY_S = 1.0
+
+
+class NumericalError(ArithmeticError):
+    """A numerical failure the solver's checks did not foresee (for example a window's block that
+    cannot be inverted at the solution): an internal error, not bad input. The command line exits
+    with its own code for it (``registration.cli.errors.EXIT_NUMERICAL``)."""
+
+
+def progress_bar(enabled: bool, desc: str, total: int | None = None, unit: str = "it"):
+    """A tqdm bar on standard error for the long fleet work, or a silent stand-in: shown only with
+    ``enabled``, when standard error is a terminal, and once the work has run PROGRESS_DELAY_S
+    seconds (so tests, pipes and short runs print nothing). Closes with the block it opens."""
+    import sys
+
+    from tqdm import tqdm
+
+    try:
+        terminal = enabled and sys.stderr.isatty()
+    except (AttributeError, ValueError):
+        terminal = False
+    return tqdm(total=total, desc=desc, unit=unit, file=sys.stderr, disable=not terminal, leave=False,
+                delay=PROGRESS_DELAY_S, dynamic_ncols=True, mininterval=0.5)
+
+
+def progress_status(bar, text: str) -> None:
+    """Show ``text`` beside a :func:`progress_bar`: at once when the bar has been up for
+    PROGRESS_DELAY_S seconds, else with its first drawing (a refresh would draw it early)."""
+    bar.set_postfix_str(text, refresh=False)
+    if not bar.disable and bar.format_dict["elapsed"] >= PROGRESS_DELAY_S:
+        bar.refresh()
 
 
 @dataclass(frozen=True)
@@ -82,12 +115,13 @@ class Fit:
 
 
 def levenberg_marquardt(design: Design, start: Evaluation, free: np.ndarray, options: BatchOptions,
-                        relative: float = 0.0, normal: Normal | None = None):
+                        relative: float = 0.0, normal: Normal | None = None, bar=None):
     """Minimise the sum of squares over the free states and all coefficients from ``start``.
 
     Stops when the predicted reduction is below ``options.tolerance`` or ``relative`` times the
     sum of squares. Returns (evaluation and normal equations at the solution, converged,
     iterations, cost per accepted step). ``normal``: the normal equations at ``start`` if known.
+    ``bar``: a :func:`progress_bar`, advanced once per iteration (None: none).
     """
     ev = start
     scale = design.scale[free]
@@ -112,6 +146,9 @@ def levenberg_marquardt(design: Design, start: Evaluation, free: np.ndarray, opt
                 history.append(ev.cost)
                 break
             lam, nu = lam * nu, nu * 2.0
+        if bar is not None:
+            bar.set_postfix_str(f"sum of squares {ev.cost:.6g}", refresh=False)
+            bar.update()
         if converged or not accepted:
             break
     normal = normal if normal is not None else normal_equations(design, ev)
@@ -129,8 +166,12 @@ def singular_blocks(design: Design, normal: Normal) -> np.ndarray:
     return np.flatnonzero(~(w[:, 0] > SINGULAR_BLOCK * w[:, -1]))
 
 
-def exclude_singular(problem: FleetProblem, design: Design, bad: np.ndarray) -> FleetProblem:
-    """The problem without the plots of the windows ``bad`` (:func:`singular_blocks`), each recorded as an exclusion."""
+def exclude_singular(problem: FleetProblem, design: Design, bad: np.ndarray,
+                     outside: np.ndarray | None = None) -> FleetProblem:
+    """The problem without the plots of the windows ``bad`` (:func:`singular_blocks`), each recorded
+    as an exclusion. ``outside`` (N,) bool, given when the windows were found at the solution: the
+    plots seen outside their platform's navigation there (:func:`outside_when_seen`), which weighed
+    0; a window left undetermined by setting them aside says so."""
     blk = design.blocks
     drop = np.zeros(problem.n_plots, dtype=bool)
     exclusions = []
@@ -138,11 +179,18 @@ def exclude_singular(problem: FleetProblem, design: Design, bad: np.ndarray) -> 
         end = blk.block_start[b + 1] if b + 1 < blk.n_blocks else blk.order.size
         plots = blk.order[blk.block_start[b]:end]
         drop[plots] = True
-        sensors = sorted({problem.sensor_ids[s] for s in problem.sensor[plots]})
+        n_out = int(outside[plots].sum()) if outside is not None else 0
+        held = plots[~outside[plots]] if n_out else plots
+        sensors = sorted({problem.sensor_ids[s] for s in problem.sensor[held]})
+        why = f"its position is not determined by the plots of {', '.join(sensors) or 'no sensor'} in this window"
+        if n_out:
+            why = (f"{why}, once its {n_out} plots seen outside their platform's navigation (reported time - "
+                   "time bias) are set aside at the solution")
+        elif outside is not None:
+            why += " at the solution (its geometry at the estimate; it was determined at the start)"
         t = problem.time[plots]
-        exclusions.append(Exclusion(problem.target_ids[blk.block_target[b]],
-                                    f"singular geometry: its position is not determined by the plots of "
-                                    f"{', '.join(sensors)} in this window", int(plots.size), float(t.min()), float(t.max())))
+        exclusions.append(Exclusion(problem.target_ids[blk.block_target[b]], f"singular geometry: {why}",
+                                    int(plots.size), float(t.min()), float(t.max())))
     return problem.drop_plots(drop, exclusions)
 
 
@@ -185,8 +233,12 @@ def fit_windows(design: Design, start: Evaluation, normal: Normal, options: Batc
     return ev, normal
 
 
-#: Solves again after setting aside plots that a time bias moves outside their navigation, at most.
+#: Solves again after dropping plots that a time bias moves outside their navigation (where
+#: setting them aside would empty a window), at most.
 MAX_TIME_BIAS_REFITS = 3
+#: Solves again, from the estimate, after that or after setting aside windows found undetermined
+#: at the solution, at most (each such solve drops at least one window, so this bounds a rare chain).
+MAX_REFITS = 10
 
 
 def outside_when_seen(design: Design, x: np.ndarray) -> np.ndarray:
@@ -238,32 +290,59 @@ def _set_aside_outside(problem, design, ev, options):
     return replace(problem, excluded=problem.excluded + _outside_exclusions(problem, outside)), design
 
 
-def fit(problem: FleetProblem, options: BatchOptions | None = None, x0: np.ndarray | None = None) -> Fit:
+def _two_phases(design: Design, start: Evaluation, normal: Normal, free: np.ndarray, options: BatchOptions, bar):
+    """Levenberg-Marquardt on the target windows alone (states held), then on everything:
+    (evaluation, normal equations, converged, iterations, cost history)."""
+    ev, normal, _, it1, hist1 = levenberg_marquardt(design, start, np.zeros(0, dtype=np.int64), options,
+                                                    TARGETS_FIRST, normal, bar)
+    ev, normal, converged, it2, hist2 = levenberg_marquardt(design, ev, free, options, 0.0, normal, bar)
+    return ev, normal, converged, it1 + it2, hist1 + hist2[1:]
+
+
+def fit(problem: FleetProblem, options: BatchOptions | None = None, x0: np.ndarray | None = None, *,
+        progress: bool = False) -> Fit:
     """Solve the batch problem (module docstring) from states ``x0`` (n,; rad, m; default zeros: a
     warm start only saves iterations); windows of singular geometry are set aside, and so are plots
     that their sensor's estimated time bias moves outside their platform's navigation (they weigh
     0 in every evaluation where they are; at the solution they stay in ``Fit.problem``, listed in
     its exclusions, with no residual; if that would empty a window they are dropped and the
-    problem solved anew from the estimate)."""
+    problem solved anew from the estimate). A window whose position is determined at the start but
+    not at the solution (:func:`singular_blocks` there: its plots seen outside the navigation weigh
+    0, or its geometry at the estimate is degenerate) is set aside with its reason and the problem
+    solved anew from the estimate; :class:`NumericalError` if windows are still undetermined after
+    MAX_REFITS solves. ``progress``: a bar over the iterations on standard error
+    (:func:`progress_bar`)."""
     options = options or BatchOptions()
     x0 = np.zeros(problem.layout.n) if x0 is None else np.array(x0, dtype=np.float64)
     if x0.shape != (problem.layout.n,) or not np.isfinite(x0).all():
         raise ValueError(f"x0: expected {problem.layout.n} finite starting states, got shape {x0.shape}")
     x0[problem.layout.fixed] = 0.0
-    for attempt in range(MAX_TIME_BIAS_REFITS + 1):
-        found = determined_design(problem, options, x0)
-        if found is None:
-            raise ValueError("no plots to register (every target was excluded: " + "; ".join(e.text() for e in problem.excluded) + ")")
-        problem, design, start, normal = found
-        ev, normal, _, it1, hist1 = levenberg_marquardt(design, start, np.zeros(0, dtype=np.int64), options,
-                                                        TARGETS_FIRST, normal)
-        ev, normal, converged, it2, hist2 = levenberg_marquardt(design, ev, problem.layout.free, options, 0.0, normal)
-        aside = _set_aside_outside(problem, design, ev, options)
-        if aside is not None or attempt == MAX_TIME_BIAS_REFITS:
-            break
-        outside = outside_when_seen(design, ev.x)  # a window would be left undetermined: drop and solve anew
-        problem, x0 = problem.drop_plots(outside, _outside_exclusions(problem, outside)), ev.x
-    if aside is not None:
-        problem, design = aside
-    return Fit(problem, design, ev.x, ev.coef, converged, it1 + it2, hist1 + hist2[1:], ev, normal,
+    drops = 0
+    with progress_bar(progress, "fleet batch solve", unit="iteration") as bar:
+        for attempt in range(MAX_REFITS + 1):
+            found = determined_design(problem, options, x0)
+            if found is None:
+                raise ValueError("no plots to register (every target was excluded: "
+                                 + "; ".join(e.text() for e in problem.excluded) + ")")
+            problem, design, start, normal = found
+            ev, normal, converged, iterations, history = _two_phases(design, start, normal, problem.layout.free,
+                                                                     options, bar)
+            last = attempt == MAX_REFITS
+            aside = _set_aside_outside(problem, design, ev, options)
+            outside = outside_when_seen(design, ev.x)
+            if aside is None and drops < MAX_TIME_BIAS_REFITS and not last:  # a window would be left empty
+                problem, x0, drops = problem.drop_plots(outside, _outside_exclusions(problem, outside)), ev.x, drops + 1
+                continue
+            solved_problem, solved_design = aside if aside is not None else (problem, design)
+            bad = singular_blocks(solved_design, normal)  # at the solution, with the plots set aside weighing 0
+            if bad.size == 0:
+                problem, design = solved_problem, solved_design
+                break
+            if last:
+                raise NumericalError(f"{bad.size} target windows are still undetermined at the solution after "
+                                     f"{attempt} solves that set such windows aside (first: target "
+                                     f"{problem.target_ids[design.blocks.block_target[bad[0]]]}); the covariance "
+                                     "cannot be computed")
+            problem, x0 = exclude_singular(problem, design, bad, outside), ev.x
+    return Fit(problem, design, ev.x, ev.coef, converged, iterations, history, ev, normal,
                time_bias_warnings(problem.layout, ev.x, options))

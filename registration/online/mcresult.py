@@ -229,7 +229,7 @@ class MonteCarloResult:
         ax.plot(t, self.nis, color="tab:purple", lw=0.8, alpha=0.8, label="avg NIS (3 per run)")
         ax.axhspan(lo, hi, color="tab:purple", alpha=0.08, label=f"NIS 95% interval [{lo:.2f}, {hi:.2f}]")
         top = max(np.percentile(self.nis, 99), self.nees_dof + 1, *(np.percentile(self.nees, 99),) if self.nees is not None else ())
-        ax.set_ylim(0, 1.15 * top)
+        ax.set_ylim(0, 1.7 * top)  # the upper part for the legend, clear of the curves
         ax.set_title("consistency (identifiable part)", fontsize=11)
         ax.set_xlabel("time (s)")
         ax.grid(True, alpha=0.3)

@@ -17,9 +17,9 @@ from pathlib import Path
 import numpy as np
 
 from registration.core.frames import ecef2geodetic
-from registration.core.plotting import pyplot
+from registration.core.plotting import OKABE_ITO, pyplot
 from registration.online.contract import IS_ANGLE
-from registration.online.plots import plot_difference_series, plot_estimate_series
+from registration.online.plots import SHIP_COLOURS, plot_difference_series, plot_estimate_series
 from registration.recorded.columns import ESTIMATE_COLUMNS, POSITION_COLUMNS
 from registration.recorded.formats import iter_frames
 from registration.recorded.options import RunOptions
@@ -135,11 +135,11 @@ def _plot_tracks(tracks: dict, targets: dict, path: Path) -> Path:
     """Ships' tracks and the target as each radar places it after registration (lon/lat, deg)."""
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(7, 6))
-    for s, colour in (("a", "tab:blue"), ("b", "tab:orange")):
+    for s, colour in SHIP_COLOURS.items():
         lon, lat = tracks[f"{s}_lon_deg"], tracks[f"{s}_lat_deg"]
         ax.plot(lon, lat, color=colour, lw=3, label=f"ship {s.upper()}")
         ax.plot(lon[0], lat[0], "o", color=colour)
-    for s, colour in (("a", "tab:red"), ("b", "tab:purple")):
+    for s, colour in (("a", OKABE_ITO["reddish_purple"]), ("b", OKABE_ITO["black"])):
         lat, lon = targets[s]
         good = np.isfinite(lat) & np.isfinite(lon)
         if good.any():

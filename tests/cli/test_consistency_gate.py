@@ -38,13 +38,18 @@ def test_an_inconsistent_simulation_exits_3_with_the_causes(tmp_path, capsys, gr
     assert captured.err.startswith("registration simulate: error: mean NIS 45 ")
     assert all(cause in captured.err for cause in LIKELY_CAUSES) and "--allow-inconsistent" in captured.err
     assert "grossly inconsistent" in captured.out
+    # the long text (the causes) once: on standard error with the exit code, not also on the report line
+    assert all((captured.out + captured.err).count(cause) == 1 for cause in LIKELY_CAUSES)
+    assert "consistency: mean NIS 45 over 20 samples" in captured.out
     doc = json.loads((tmp_path / "summary.json").read_text())  # the outputs are written all the same
     assert doc["consistency"]["status"] == "grossly inconsistent"
 
 
 def test_allow_inconsistent_accepts_the_run(tmp_path, capsys, gross_simulation):
     assert main(["simulate", "--steps", "20", "--no-plots", "--allow-inconsistent", "--out", str(tmp_path)]) == 0
-    assert "inconsistent run accepted (--allow-inconsistent)" in capsys.readouterr().err
+    captured = capsys.readouterr()
+    assert "inconsistent run accepted (--allow-inconsistent)" in captured.err
+    assert all((captured.out + captured.err).count(cause) == 1 for cause in LIKELY_CAUSES)
 
 
 def test_montecarlo_gates_the_pooled_nis(tmp_path, capsys, monkeypatch):
@@ -55,5 +60,6 @@ def test_montecarlo_gates_the_pooled_nis(tmp_path, capsys, monkeypatch):
     assert doc["consistency"]["samples"] == 2 * 20 and "consistency: mean NIS" in out
     monkeypatch.setattr(montecarlo_cli, "pooled_consistency", lambda result: GROSS)
     assert main(argv) == EXIT_INCONSISTENT
-    assert "Likely causes" in capsys.readouterr().err
+    captured = capsys.readouterr()
+    assert "Likely causes" in captured.err and (captured.out + captured.err).count("Likely causes") == 1
     assert main([*argv, "--allow-inconsistent"]) == 0

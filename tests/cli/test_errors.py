@@ -121,9 +121,48 @@ def test_ctrl_c_says_where_it_stopped(tmp_path, capsys, monkeypatch):
         raise KeyboardInterrupt
 
     monkeypatch.setattr(registration.online, "register", interrupted)
-    out = tmp_path / "sim"
+    out = tmp_path / "new" / "sim"
     assert main(["simulate", "--out", str(out)]) == EXIT_INTERRUPTED
-    assert capsys.readouterr().err == f"\nregistration simulate: interrupted; {out} keeps the outputs of the last finished run\n"
+    assert capsys.readouterr().err == f"\nregistration simulate: interrupted; nothing was written (no earlier outputs in {out})\n"
+    assert not (tmp_path / "new").exists()  # before: an empty folder, "keeping the outputs of the last finished run"
+    out.mkdir(parents=True)
+    (out / "summary.json").write_text("{}")
+    assert main(["simulate", "--out", str(out)]) == EXIT_INTERRUPTED
+    assert capsys.readouterr().err == f"\nregistration simulate: interrupted; nothing was written: {out} keeps what it held before\n"
+    assert (out / "summary.json").read_text() == "{}"
+
+
+def test_every_message_names_the_full_command(tmp_path, capsys, monkeypatch):
+    """Before: `registration fleet: error: ...` beside `registration fleet register: error: ...` (the gate)."""
+    missing = [f"--{t}={tmp_path / t}.csv" for t in ("plots", "navigation", "sensors")]
+    assert main(["fleet", "register", *missing, "--out", str(tmp_path / "o")]) == EXIT_BAD_INPUT
+    assert capsys.readouterr().err.startswith("registration fleet register: error: ")
+    import registration.fleet
+
+    def interrupted(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(registration.fleet, "fleet_scenario", interrupted)
+    assert main(["fleet", "simulate", "--out", str(tmp_path / "o")]) == EXIT_INTERRUPTED
+    assert capsys.readouterr().err.startswith("\nregistration fleet simulate: interrupted")
+
+
+def _exit_codes(argv, capsys) -> set[int]:
+    assert main([*argv, "--help"]) == 0
+    table = capsys.readouterr().out.split("exit codes:\n")[1]
+    return {int(line.split()[0]) for line in table.splitlines() if line.startswith("  ") and line.split()[0].isdigit()}
+
+
+@pytest.mark.parametrize("argv, codes", [
+    ([], {0, 1, 2, 3, 130, 141}), (["register"], {0, 1, 2, 3, 130, 141}), (["simulate"], {0, 2, 3, 130, 141}),
+    (["montecarlo"], {0, 2, 3, 130, 141}), (["fleet"], {0, 2, 3, 130, 141}), (["fleet", "register"], {0, 2, 3, 130, 141}),
+    (["fleet", "simulate"], {0, 2, 3, 130, 141}), (["fuse"], {0, 2, 130, 141}), (["landing"], {0, 2, 130, 141}),
+    (["schema"], {0, 2, 130, 141}),
+])
+def test_each_help_lists_the_exit_codes_of_its_command(capsys, argv, codes):
+    """Before: every --help listed 1 (register --validate-only) and 3 (the consistency gate)."""
+    listed = _exit_codes(argv, capsys)
+    assert listed & {1, 3} == codes & {1, 3} and {0, 2, 130, 141} <= listed
 
 
 def test_ctrl_c_with_a_checkpoint_says_how_to_resume():
@@ -155,7 +194,8 @@ def test_a_real_sigint_exits_130_without_traceback(tmp_path):
     err = (seen + rest).decode()
     assert proc.returncode == EXIT_INTERRUPTED, err
     assert "Traceback" not in err and "KeyboardInterrupt" not in err
-    assert err.endswith("\nregistration landing: interrupted; land keeps the outputs of the last finished run\n")
+    assert err.endswith("\nregistration landing: interrupted; nothing was written (no earlier outputs in land)\n")
+    assert not (tmp_path / "land").exists()
 
 
 @pytest.mark.parametrize("command", [["schema"], ["schema", "--json"], ["simulate", "--steps", "20", "--no-plots"]])

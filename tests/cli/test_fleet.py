@@ -82,8 +82,8 @@ def _broken(simulated, tmp_path, name, edit):
     folder = tmp_path / "in"
     shutil.copytree(simulated, folder)
     frame = pd.read_csv(folder / f"{name}.csv", dtype={"sensor": str, "platform": str, "target": str})
-    edit(frame)
-    frame.to_csv(folder / f"{name}.csv", index=False)
+    edited = edit(frame)
+    (edited if isinstance(edited, pd.DataFrame) else frame).to_csv(folder / f"{name}.csv", index=False)
     return folder
 
 
@@ -99,7 +99,7 @@ def test_bad_tables_exit_2_naming_file_row_column(simulated, tmp_path, capsys, n
     folder = _broken(simulated, tmp_path, name, edit)
     assert main(_register_args(folder, tmp_path / "reg")) == 2
     err = capsys.readouterr().err
-    assert err.startswith("registration fleet: error:")
+    assert err.startswith("registration fleet register: error:")
     for word in words:
         assert word in err, (word, err)
 
@@ -123,7 +123,9 @@ def test_online_method_writes_the_history_and_ends_near_the_batch(simulated, tmp
     out = tmp_path / "online"
     assert main([*_register_args(simulated, out), "--method", "online"]) == 0
     text = capsys.readouterr().out
-    assert "online filter: 15 epochs" in text and "consistency: mean normalised innovation squared" in text
+    assert "online filter: 15 epochs" in text
+    assert "consistency: mean squared normalised residual per degree of freedom at the final estimate" in text
+    assert "normalised innovations (information on the filter's covariance, not the verdict)" in text
     online = pd.read_csv(out / "estimates.csv")
     batch = pd.read_csv(simulated / "estimates.csv")
     assert list(online.columns) == ESTIMATE_COLUMNS
@@ -136,7 +138,8 @@ def test_online_method_writes_the_history_and_ends_near_the_batch(simulated, tmp
     np.testing.assert_allclose(last["estimate"], online["estimate"][free].to_numpy(), rtol=1e-12)
     summary = json.loads((out / "summary.json").read_text())
     assert summary["method"] == "online" and summary["consistency"]["status"] == "consistent"
-    assert summary["residuals_at_final_estimate"]["consistent"]
+    assert summary["residuals_at_final_estimate"]["consistent"] and summary["innovations"]["status"] == "consistent"
+    assert summary["consistency"]["mean"] == pytest.approx(summary["residuals_at_final_estimate"]["mean"])
 
 
 def test_online_method_plots(simulated, tmp_path):
@@ -229,3 +232,63 @@ def test_registering_into_the_simulated_folder_keeps_its_tables(simulated, tmp_p
     for name in TABLES:
         assert (folder / f"{name}.csv").exists(), name
     assert not (folder / "estimates.png").exists()  # --no-plots: the simulate run's PNGs are replaced
+
+
+# --- the findings of a first user of `fleet register` ---
+
+def _cut_line(folder, name, row, keep):
+    """Keep the first ``keep`` fields of data row ``row`` (from 0; -1: the last) of FOLDER/NAME.csv."""
+    path = folder / f"{name}.csv"
+    lines = path.read_text().splitlines()
+    row = len(lines) - 2 if row < 0 else row
+    lines[row + 1] = ",".join(lines[row + 1].split(",")[:keep])
+    path.write_text("\n".join(lines) + "\n")
+    return row
+
+
+def test_a_truncated_plots_line_stops_or_is_set_aside(simulated, tmp_path, capsys):
+    """Before: a last line cut to 5 fields and a middle line cut to 4 gave exit 0 and "N plots used of N"."""
+    folder = _broken(simulated, tmp_path, "plots", lambda f: None)
+    last, middle = _cut_line(folder, "plots", -1, 5), _cut_line(folder, "plots", 40, 4)
+    assert main(_register_args(folder, tmp_path / "stop")) == 2
+    err = capsys.readouterr().err
+    assert f"plots.csv: row {middle}, column 'bearing_deg': line {middle + 2} has 4 fields, the header 6" in err, err
+    assert main(_register_args(folder, tmp_path / "skip", extra=["--on-bad-row", "skip"])) == 0
+    assert "set aside 2 bad rows (in rejected.csv)" in capsys.readouterr().out
+    rejected = pd.read_csv(tmp_path / "skip" / "rejected.csv")
+    assert list(zip(rejected["row"], rejected["column"], rejected["reason_code"])) == [
+        (middle, "bearing_deg", "short_row"), (last, "elevation_deg", "short_row")]
+    summary = json.loads((tmp_path / "skip" / "summary.json").read_text())
+    assert summary["inputs"]["plots_used"] == summary["inputs"]["plots_read"] - 2
+
+
+def test_navigation_of_every_ship_registers_with_a_note(simulated, tmp_path, capsys):
+    """Before: navigation.csv: row R: platform 'X' is not in the platforms/sensors tables (exit 2)."""
+    folder = tmp_path / "in"
+    shutil.copytree(simulated, folder)
+    nav = pd.read_csv(folder / "navigation.csv", dtype={"platform": str})
+    pd.concat([nav, nav[nav["platform"] == "A"].assign(platform="X")]).to_csv(folder / "navigation.csv", index=False)
+    assert main(_register_args(folder, tmp_path / "reg")) == 0
+    out = capsys.readouterr().out
+    assert "note: " in out and "navigation.csv: platform(s) ['X'] carry no sensor" in out
+    got = pd.read_csv(tmp_path / "reg" / "estimates.csv")
+    pd.testing.assert_frame_equal(got, pd.read_csv(simulated / "estimates.csv").drop(columns="truth"), check_exact=True)
+    summary = json.loads((tmp_path / "reg" / "summary.json").read_text())
+    assert any("['X'] carry no sensor" in n for n in summary["inputs"]["notes"])
+
+
+@pytest.mark.parametrize("name, edit, words", [
+    ("navigation", lambda f: [f.__setitem__(c, np.radians(f[c])) for c in ("heading_deg", "pitch_deg", "roll_deg")],
+     ["navigation.csv", "column 'heading_deg'", "radians?", "pitch_deg and roll_deg are in degrees"]),
+    ("sensors", lambda f: f.pop("sigma_elevation_deg"),
+     ["sensors.csv: no column 'sigma_elevation_deg'", "plots.csv has elevation values", "give their sigma_elevation_deg"]),
+    ("plots", lambda f: f.iloc[0:0], ["plots.csv: no data rows (the file holds only a header)"]),
+])
+def test_findings_exit_2_naming_the_file_at_fault(simulated, tmp_path, capsys, name, edit, words):
+    """Before: attitude in radians ended in the consistency gate (exit 3); a missing sensors column was
+    blamed on plots.csv row 0 ("a elevation"); an empty plots file said "every target was excluded: "."""
+    folder = _broken(simulated, tmp_path, name, edit)
+    assert main(_register_args(folder, tmp_path / "reg")) == 2
+    err = capsys.readouterr().err
+    for word in words:
+        assert word in err, (word, err)

@@ -62,3 +62,19 @@ def test_same_stems_and_workers_without_each_are_rejected(tables, tmp_path, caps
     assert "share the file stem 't1'" in capsys.readouterr().err
     assert main(["register", tables[0], "--workers", "2", "--out", str(tmp_path / "o")]) == 2
     assert "only with --each" in capsys.readouterr().err
+
+
+def test_a_file_failing_half_way_leaves_no_folder_of_its_own(tables, tmp_path, capsys):
+    """Before: its empty folder stayed (a run aimed at a new --out left it behind); a lone failing run too."""
+    lines = open(tables[0]).read().splitlines()
+    cells = lines[10].split(",")
+    cells[1] = "200"  # a latitude out of range, row 9: found while filtering, after the run folder was made
+    lines[10] = ",".join(cells)
+    bad = tmp_path / "bad.csv"
+    bad.write_text("\n".join(lines) + "\n")
+    assert main(["register", tables[1], str(bad), "--each", "--no-plots", "--no-progress", "--out", str(tmp_path / "o")]) == 2
+    assert "bad.csv: error:" in capsys.readouterr().out
+    assert sorted(p.name for p in (tmp_path / "o").iterdir()) == ["t2"]
+    assert main(["register", str(bad), "--no-plots", "--no-progress", "--out", str(tmp_path / "new" / "one")]) == 2
+    assert "row 9" in capsys.readouterr().err
+    assert not (tmp_path / "new").exists()

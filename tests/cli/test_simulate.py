@@ -2,9 +2,11 @@
 
 import json
 
+import numpy as np
 import pytest
 
 from registration.cli import main
+from tests.colours import colours_told_apart
 
 
 def test_simulate_writes_summary_and_plots(tmp_path, capsys):
@@ -37,3 +39,26 @@ def test_simulate_with_ship_motion_changes_the_report(tmp_path):
 def test_simulate_bad_options_give_a_clear_error(tmp_path, args, capsys):
     assert main(["simulate", "--no-plots", "--out", str(tmp_path), *args]) == 2
     assert "error" in capsys.readouterr().err
+
+
+def test_simulate_prints_the_sigma_it_writes(tmp_path, capsys):
+    """One sigma convention: the console's σ column is the 1σ of summary.json (it printed 2σ)."""
+    out = tmp_path / "sim"
+    assert main(["simulate", "--steps", "60", "--no-plots", "--out", str(out)]) == 0
+    text = capsys.readouterr().out
+    header = next(line for line in text.splitlines() if line.strip().startswith("state"))
+    assert "σ" in header and "2σ" not in header
+    for e in json.loads((out / "summary.json").read_text())["estimates"]:
+        k = np.degrees(1.0) if e["unit"] == "rad" else 1.0
+        line = next(line for line in text.splitlines() if line.startswith(f"  {e['name']} "))
+        assert f"{e['sigma'] * k:.3g}" in line.split()
+
+
+def test_differences_are_drawn_in_colours_told_apart_without_red_green_vision():
+    from registration.online.plots import difference_figure
+
+    t = np.arange(10.0)
+    fig = difference_figure(t, np.ones((10, 3)), np.zeros((10, 3)))
+    for ax in fig.axes:
+        colours = {line.get_label(): line.get_color() for line in ax.get_lines() if line.get_label() in ("before", "after")}
+        assert colours_told_apart(colours["before"], colours["after"]), colours

@@ -126,6 +126,7 @@ def test_wrong_noise_model_fails_the_innovation_check():
         sensors[c] = np.asarray(sensors[c]) / 5.0
     result = register_online(sc.plots, sensors, sc.navigation, sc.platforms, sc.references)
     assert not result.consistency.ok and result.consistency.mean > 10  # the gate: ~25 expected
+    assert not result.verdict.ok and result.verdict.mean > 10  # the verdict, at the final estimate: ~23
 
 
 def test_out_of_order_plots_are_refused_and_leave_the_filter_unchanged(fleet):
