@@ -84,7 +84,7 @@ def print_report(result, rows: list[dict], header: list[str]) -> None:
         print(f"  excluded: {e.text()}")
     check = result.fit_check if is_online(result) else result.chi_square
     if is_online(result):
-        print(f"\nonline: {result.history.time.size} epochs, {result.n_plots_used} of {result.n_plots_read} plots used")
+        print()  # the epochs and plots used are in the header (the run line)
         if check is not None and result.consistency is not None:  # information only: the verdict is the line below
             print(result.innovation_text())
     else:

@@ -163,6 +163,8 @@ def _labels(problem: FleetProblem, tl, group: np.ndarray, chain: np.ndarray, min
     that missed their group by chance (a 0.1 % gate) and grouped apart: a second target at the same
     place, which the batch solver fits only slowly."""
     n_groups = chain.size
+    if group.size == 0:  # no tracklet was formed (windows too short for a piece of track, say)
+        return np.full(problem.n_plots, "", dtype=str)
     sensors_in, full_in = np.zeros(n_groups, dtype=np.int64), np.zeros(n_groups, dtype=bool)
     pairs = np.unique(np.stack([group, tl.sensor]), axis=1) if group.size else np.zeros((2, 0), dtype=np.int64)
     np.add.at(sensors_in, pairs[0], 1)
@@ -211,8 +213,10 @@ def _labelled(problem: FleetProblem, labels: np.ndarray) -> FleetProblem:
     """The problem of the labelled plots, their labels as target ids."""
     keep = labels != ""
     if not keep.any():
-        raise ValueError("association: no plots could be associated across two sensors (see AssociationOptions: "
-                         "the gate and the initial sigmas)")
+        raise ValueError("association: no plots could be associated across two sensors; with windows of a few "
+                         "seconds a target's pieces of track are too short to match: give longer windows "
+                         "(--window-s, AssociationOptions.window_s; 20 s by default), or check the gate and the "
+                         "initial sigmas (AssociationOptions)")
     sub = problem.drop_plots(~keep, ())
     ids, index = np.unique(labels[keep], return_inverse=True)
     return replace(sub, target=index.astype(np.int64), target_ids=tuple(str(i) for i in ids))

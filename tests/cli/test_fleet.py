@@ -123,7 +123,7 @@ def test_online_method_writes_the_history_and_ends_near_the_batch(simulated, tmp
     out = tmp_path / "online"
     assert main([*_register_args(simulated, out), "--method", "online"]) == 0
     text = capsys.readouterr().out
-    assert "online filter: 15 epochs" in text
+    assert "online filter: 15 epochs" in text and text.count(" epochs, ") == 1  # said once
     assert "consistency: mean squared normalised residual per degree of freedom at the final estimate" in text
     assert "normalised innovations (information on the filter's covariance, not the verdict)" in text
     online = pd.read_csv(out / "estimates.csv")

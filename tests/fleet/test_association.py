@@ -158,3 +158,15 @@ def test_line_cost_through_the_joint_covariance_matches_the_direct_formula():
     d = tl.line - line_g[g]
     np.testing.assert_allclose(d2, np.einsum("ki,ki->k", d, np.linalg.solve(S, d[..., None])[..., 0]), rtol=1e-9)
     np.testing.assert_allclose(logdet, np.linalg.slogdet(S)[1], rtol=1e-9)
+
+
+@pytest.mark.parametrize("window_s", [1.0, 2.0])
+def test_windows_too_short_for_any_tracklet_give_a_clear_error(window_s):
+    """With windows of a second or two no tracklet forms: a ValueError that names the window
+    option (exit 2 on the command line), not an IndexError from an empty grouping."""
+    from registration.fleet import AssociationOptions, associate_and_register, fleet_scenario
+
+    sc = fleet_scenario(0, duration_s=120.0)
+    plots = {k: v for k, v in sc.plots.items() if k != "target"}
+    with pytest.raises(ValueError, match="give longer windows"):
+        associate_and_register(plots, sc.sensors, sc.navigation, sc.platforms, None, AssociationOptions(window_s=window_s))
