@@ -167,16 +167,22 @@ def _common_clock(layout, free: np.ndarray):
 def _named_structural(Js: np.ndarray, null: np.ndarray, weak: np.ndarray, layout, free, patterns):
     """The structural patterns ((unobservable text, weak text), own-unit direction, scaled unit
     direction vs) that lie mostly in the unobservable and weak eigen-directions of the scaled
-    information ``Js``, classed by their own scaled information ``vs^T Js vs``: unobservable below
-    UNOBSERVABLE_BELOW, weak below WEAK_BELOW (above it the pattern is observable and not named)."""
+    information ``Js``: unobservable when more than half of it lies in the unobservable ones (as
+    the states' status is judged, :func:`_status`), else weak. The information reported is that of
+    the pattern's part in the eigen-directions of its class (normalised), so it lies below that
+    class's threshold; the pattern's own ``vs^T Js vs`` can be larger where the data tilt the
+    degenerate direction slightly away from the pattern."""
     named = []
     for texts, v, vs in patterns:
         f_null = float(np.sum((null.T @ vs) ** 2))
         f_weak = float(np.sum((weak.T @ vs) ** 2))
-        info = float(vs @ Js @ vs)
-        if f_null + f_weak <= 0.5 or not info < WEAK_BELOW:
+        if f_null + f_weak <= 0.5:
             continue
-        unobservable = info < UNOBSERVABLE_BELOW
+        unobservable = f_null > 0.5
+        basis = null if unobservable else np.concatenate([null, weak], axis=1)
+        part = basis @ (basis.T @ vs)
+        part = part / np.linalg.norm(part)
+        info = float(part @ Js @ part)
         coeffs = {layout.names[free[k]]: float(v[k]) for k in np.flatnonzero(v)}
         pair = tuple(coeffs) if len(coeffs) == 2 and texts[2] else None
         comb = StructuralCombination(coeffs, info, texts[0] if unobservable else texts[1], pair, f_null, f_weak)
