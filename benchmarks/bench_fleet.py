@@ -10,7 +10,7 @@ Problem: the default fleet's three ships and shore site with eight sensors, each
 target once a second at its own time offset (80 000 plots over 1000 s; 3-D and 2-D radars and
 a passive angle sensor), ten targets (one reference), errors of 1 deg and 300 m, 20 s cubic
 target windows. Both solvers start from the same point (zero errors, the window means of the plot
-positions, i.e. after :mod:`registration.fleet.initial`) and minimise the same sum of squares of
+positions, i.e. after :mod:`registration.fleet.batch.initial`) and minimise the same sum of squares of
 whitened residuals (plots, reference positions; no priors): the residuals and the sparse Jacobian
 given to least_squares are the rows of the generated ``fleet_rows_4`` (the function the batch
 solver uses), over the free states and the active window coefficients. least_squares runs its
@@ -46,12 +46,12 @@ from scipy import sparse
 from scipy.optimize import least_squares
 
 from registration.fleet import BatchOptions, fleet_scenario, solve_batch
-from registration.fleet.blocks import make_blocks
-from registration.fleet.initial import initial_coefficients
-from registration.fleet.normal import evaluate, make_design
+from registration.fleet.batch.blocks import make_blocks
+from registration.fleet.batch.initial import initial_coefficients
+from registration.fleet.batch.normal import evaluate, make_design
 from registration.fleet.scenario import SHIPS, SITE, TARGETS, FleetConfig
 from registration.fleet.scenario_tracks import Circle, Line
-from registration.fleet.solver import fit
+from registration.fleet.batch.solver import fit
 
 SENSORS_8 = {
     "A-3D": ("A", (25.0, np.radians(0.15), np.radians(0.2)), 1.0, 0.0, (0.0, 20.0, 25.0)),

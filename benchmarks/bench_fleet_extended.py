@@ -33,7 +33,7 @@ processes, the 2 cores shared) hit every mode alike:
   ``excluded_plots`` and ``fit_attempts`` rows).
 
 Per mode: best and median wall time of :func:`solve_batch`, microseconds per plot, the fit alone
-(:func:`registration.fleet.solver.fit`), the fit attempts (``determined_design`` calls: 2 when
+(:func:`registration.fleet.batch.solver.fit`), the fit attempts (``determined_design`` calls: 2 when
 plots set aside for their time bias would have emptied a window and the problem was solved again), the Levenberg-Marquardt
 calls and iterations summed over every attempt (``BatchResult.iterations`` counts only the last
 attempt), and the number of calls and the time per call of ``evaluate``, ``normal_equations``

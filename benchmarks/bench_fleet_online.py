@@ -36,7 +36,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 from bench_fleet import CONFIG  # noqa: E402
 
 from registration.fleet import BatchOptions, FleetFilter, fleet_scenario, solve_batch  # noqa: E402
-from registration.fleet.online import OnlineOptions, register_online  # noqa: E402
+from registration.fleet.online.filter import OnlineOptions, register_online  # noqa: E402
 from registration.online import RegistrationConfig, register  # noqa: E402
 from registration.online.scenario import ShipMotion, paper_scenario  # noqa: E402
 

@@ -24,7 +24,7 @@ Channel subsets (2-D radar, passive angle sensor, bearing-only, range-only) use 
 the runtime weights the unmeasured channels by zero.
 
 ``fleet_rows_<n>`` composes ``fleet_residual`` in CasADi (no second copy of the model) into the
-rows the batch solver's normal equations are built from (registration/fleet/normal.py): with
+rows the batch solver's normal equations are built from (registration/fleet/batch/normal.py): with
 weights ``w = mask / sigma`` per channel and the values ``basis`` (n) of the target window's
 polynomial basis at the plot time, ``Z = [basis^T (x) diag(w) J_p | diag(w) J_x | w * residual]``
 (3 x (3 n + 7): target-coefficient columns, the 6 state columns, the whitened residual), emitted

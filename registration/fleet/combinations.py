@@ -6,7 +6,7 @@ be undetermined (sigma inf) while the sum, which is what correcting the bearings
 to a few thousandths of a degree. :func:`named_sums` reads those sums from the report,
 :func:`linear_combination` gives the value and sigma of any combination (shared by
 :class:`~registration.fleet.result.BatchResult` and
-:class:`~registration.fleet.online_result.OnlineResult`), and :func:`sum_rows` tabulates the sums
+:class:`~registration.fleet.online.result.OnlineResult`), and :func:`sum_rows` tabulates the sums
 as rows beside the states' rows.
 
 Sigmas are one standard deviation (σ), in the states' SI units (rad, m, 1, s). A sigma the data

@@ -5,7 +5,7 @@ long-form tables of :mod:`registration.fleet.tables` (SI units, radians); writte
 File columns (one row per item; an empty cell is "not given"):
 
 * ``plots``: ``time_s``, ``sensor``, ``target`` (optional: without it the plots are to be
-  associated, :mod:`registration.fleet.association`), ``range_m``, ``bearing_deg``, ``elevation_deg``
+  associated, :mod:`registration.fleet.association.associate`), ``range_m``, ``bearing_deg``, ``elevation_deg``
   (an empty cell: the sensor does not measure that channel);
 * ``navigation``: ``time_s``, ``platform``, ``lat_deg``, ``lon_deg``, ``alt_m``, ``heading_deg``,
   ``pitch_deg``, ``roll_deg`` as reported (one row for a fixed site);

@@ -9,7 +9,7 @@ import numpy as np
 from registration.core.consistency import ConsistencyReport
 from registration.core.observability import ObservabilityReport
 from registration.fleet.combinations import linear_combination, sigma_text, sum_rows
-from registration.fleet.covariance import FusedTargets
+from registration.fleet.batch.covariance import FusedTargets
 from registration.fleet.layout import FILE_UNITS, StateLayout
 
 __all__ = ["BatchResult", "ChiSquareCheck", "state_lines", "state_rows"]

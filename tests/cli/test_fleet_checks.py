@@ -11,7 +11,7 @@ import pytest
 import registration.fleet as fleet
 from registration.cli import main
 from registration.cli.errors import EXIT_BAD_INPUT, EXIT_INCONSISTENT, EXIT_NUMERICAL, run_guarded
-from registration.fleet.solver import NumericalError
+from registration.fleet.batch.solver import NumericalError
 
 TABLES = ("plots", "navigation", "sensors", "platforms", "reference")
 

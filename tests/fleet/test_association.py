@@ -1,5 +1,5 @@
 """Association of plots without target ids across asynchronous sensors, jointly with the
-registration (registration.fleet.association), on simulated data with known truth."""
+registration (registration.fleet.association.associate), on simulated data with known truth."""
 
 import numpy as np
 import pytest
@@ -132,7 +132,7 @@ def test_line_cost_through_the_joint_covariance_matches_the_direct_formula():
     written out over all n states."""
     from types import SimpleNamespace
 
-    from registration.fleet.association_cost import group_covariances, joint_covariance, line_cost
+    from registration.fleet.association.cost import group_covariances, joint_covariance, line_cost
 
     rng = np.random.default_rng(7)
     n, n_groups, k = 12, 4, 6

@@ -10,16 +10,16 @@ import io
 import numpy as np
 import pytest
 
-import registration.fleet.association as association
-import registration.fleet.covariance as covariance
-import registration.fleet.solver as solver
+import registration.fleet.association.associate as association
+import registration.fleet.batch.covariance as covariance
+import registration.fleet.batch.solver as solver
 from registration.fleet import (
     AssociationOptions, BatchOptions, associate_and_register, build_problem, fleet_scenario, solve_batch,
 )
 from registration.fleet.layout import state_scale
-from registration.fleet.online import register_online
-from registration.fleet.online_result import FINAL_RESIDUALS
-from registration.fleet.solver import NumericalError
+from registration.fleet.online.filter import register_online
+from registration.fleet.online.result import FINAL_RESIDUALS
+from registration.fleet.batch.solver import NumericalError
 
 
 def test_a_window_undetermined_at_the_solution_is_set_aside_with_its_reason(monkeypatch):

@@ -18,7 +18,7 @@ from registration import _codegen
 from registration.cli import main
 from registration.fleet import BatchOptions, build_problem, fleet_scenario, register_online, solve_batch
 from registration.fleet.scenario import DEFAULT_FLEET, Circle, Line
-from registration.fleet.solver import time_bias_warnings
+from registration.fleet.batch.solver import time_bias_warnings
 
 LAT, LON, ALT = np.radians(36.0), np.radians(14.5), 20.0
 Z3, Z6 = np.zeros(3), np.zeros(6)
@@ -243,7 +243,7 @@ def test_window_basis_and_its_rate_are_numpys_legendre_series():
     from numpy.polynomial import legendre
 
     sc = fleet_scenario(1, duration_s=60.0)
-    from registration.fleet.blocks import make_blocks
+    from registration.fleet.batch.blocks import make_blocks
 
     blk = make_blocks(sc.problem(), 20.0, 3)
     rng = np.random.default_rng(6)

@@ -1,4 +1,4 @@
-"""The result of :func:`~registration.fleet.association.associate_and_register`:
+"""The result of :func:`~registration.fleet.association.associate.associate_and_register`:
 :class:`AssociationResult`."""
 
 from __future__ import annotations

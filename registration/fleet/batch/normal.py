@@ -1,7 +1,7 @@
 """Whitened residuals and the Gauss-Newton normal equations of the batch problem, block by block.
 
 Unknowns: the registration states ``x`` (n) and the window coefficients ``c`` (B blocks of
-``n_coef x 3``, :mod:`registration.fleet.blocks`). Each plot's whitened residual and Jacobian
+``n_coef x 3``, :mod:`registration.fleet.batch.blocks`). Each plot's whitened residual and Jacobian
 rows come from the generated ``fleet_rows_<n_coef>`` (``fleet_residual`` weighted by
 ``mask / sigma``, so unmeasured channels weigh nothing, and multiplied out with the window's
 polynomial basis) in one batched call. With whitened residuals ``e`` and Jacobians ``A``
@@ -24,7 +24,7 @@ polynomial, its velocity (the polynomial's derivative) and the platform's naviga
 at that time (the navigation tracks interpolated again), so the residual is exact and the time
 bias's Jacobian column carries the target's and the platform's motion. A row seen outside its
 platform's navigation (near the navigation's ends) weighs 0 in that evaluation: the solver sets
-those plots aside (:func:`registration.fleet.solver.fit`).
+those plots aside (:func:`registration.fleet.batch.solver.fit`).
 """
 
 from __future__ import annotations
@@ -34,7 +34,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from registration import _codegen
-from registration.fleet.blocks import Blocks
+from registration.fleet.batch.blocks import Blocks
 from registration.fleet.navigation import SeenNavigation
 from registration.fleet.problem import FleetProblem
 

@@ -7,10 +7,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.fleet.normal import Design, Evaluation
+from registration.fleet.batch.normal import Design, Evaluation
 from registration.fleet.problem import FleetProblem
 from registration.fleet.result import ChiSquareCheck
-from registration.fleet.solver import BatchOptions, determined_design, fit_windows
+from registration.fleet.batch.solver import BatchOptions, determined_design, fit_windows
 
 __all__ = ["UNUSED_REFERENCES_WARN", "chi_square_parts", "reference_residuals", "residual_table", "residuals_at",
            "unused_references"]

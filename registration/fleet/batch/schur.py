@@ -23,8 +23,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from registration.core.observability import UNOBSERVABLE_BELOW
-from registration.fleet.blocks import Blocks
-from registration.fleet.normal import Normal
+from registration.fleet.batch.blocks import Blocks
+from registration.fleet.batch.normal import Normal
 
 __all__ = ["Reduced", "determined_directions", "local_coupling", "masked_blocks", "reduce", "solve_reduced", "damped_step"]
 

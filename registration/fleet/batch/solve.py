@@ -1,6 +1,6 @@
 """Batch maximum-likelihood registration of a fleet: :func:`solve_batch`.
 
-The solver (:mod:`registration.fleet.solver`) finds the estimate; this module evaluates what is
+The solver (:mod:`registration.fleet.batch.solver`) finds the estimate; this module evaluates what is
 known about it there: the states' covariance (the Cramér-Rao bound at the estimate, targets
 eliminated), the fused target positions with their covariance, the normalised residuals and
 their chi-square check, and the observability report.
@@ -10,12 +10,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.fleet.covariance import fused_targets, solution_information, state_covariance
+from registration.fleet.batch.covariance import fused_targets, solution_information, state_covariance
 from registration.fleet.observability import fleet_observability
 from registration.fleet.problem import FleetProblem
-from registration.fleet.residuals import chi_square_parts, reference_residuals, residual_table, unused_references
+from registration.fleet.batch.residuals import chi_square_parts, reference_residuals, residual_table, unused_references
 from registration.fleet.result import BatchResult, ChiSquareCheck
-from registration.fleet.solver import BatchOptions, fit
+from registration.fleet.batch.solver import BatchOptions, fit
 
 __all__ = ["solve_batch"]
 
@@ -44,7 +44,7 @@ def solve_batch(problem: FleetProblem, options: BatchOptions | None = None, x0: 
     ``x0`` (n,; rad, m): starting states, for example an earlier estimate (default zeros); the
     solution is the same optimum to within the stopping tolerance, reached in fewer iterations.
     ``progress``: a bar over the solver's iterations on standard error, shown only on a terminal
-    and after about a second (:func:`registration.fleet.solver.progress_bar`).
+    and after about a second (:func:`registration.fleet.batch.solver.progress_bar`).
     """
     fit_ = fit(problem, options or BatchOptions(), x0, progress=progress)
     problem = fit_.problem

@@ -1,20 +1,20 @@
 """What one epoch of plots tells the online fleet filter about the registration states.
 
-An *epoch* is the plots of the target windows that close together (:mod:`registration.fleet.online`).
+An *epoch* is the plots of the target windows that close together (:mod:`registration.fleet.online.filter`).
 Its information about the states is the batch problem's, restricted to those plots and taken at
 the filter's current estimate ``x-`` (docs/fleet.md, "Online filter"):
 
 1. each target window's trajectory coefficients are fitted to its plots with the states held at
-   ``x-`` (:func:`~registration.fleet.solver.fit_windows`: Gauss-Newton on the coefficients alone, window by window, from the
+   ``x-`` (:func:`~registration.fleet.batch.solver.fit_windows`: Gauss-Newton on the coefficients alone, window by window, from the
    window means of the plots corrected by ``x-``; Levenberg-Marquardt if a step fails to lower the
    sum of squares): the fitted plots, as the two-ship filter's ``fitted`` linearisation uses them;
 2. there the plots' whitened rows give the normal equations, and the windows are eliminated by the
-   Schur complement (:func:`registration.fleet.schur.reduce`): the states' information ``L`` and the
+   Schur complement (:func:`registration.fleet.batch.schur.reduce`): the states' information ``L`` and the
    gradient ``b`` of the epoch, so that ``L dx = b`` is the Gauss-Newton step from ``x-``.
 
 Windows that carry no registration information are set aside before that: a target seen by one
 sensor only in the epoch (and no reference position in it), and a window whose position its plots
-do not determine (:func:`registration.fleet.solver.determined_design`).
+do not determine (:func:`registration.fleet.batch.solver.determined_design`).
 """
 
 from __future__ import annotations
@@ -24,8 +24,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from registration.fleet.problem import FleetProblem
-from registration.fleet.schur import reduce
-from registration.fleet.solver import BatchOptions, determined_design, fit_windows
+from registration.fleet.batch.schur import reduce
+from registration.fleet.batch.solver import BatchOptions, determined_design, fit_windows
 
 __all__ = ["EpochInformation", "epoch_information", "informative_plots"]
 

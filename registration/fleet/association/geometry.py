@@ -6,7 +6,7 @@ cost) that the association stages share.
 Positions come from the generated ``fleet_plot2ecef``
 (:func:`registration.fleet.corrected.corrected_positions`) and the Jacobians from the generated
 ``fleet_residual`` (J = d residual / d(p_ecef, att_err, bias)). A plot lacking a channel is
-placed as :mod:`registration.fleet.initial` places it (no range: :data:`ASSUMED_RANGE_M` along the
+placed as :mod:`registration.fleet.batch.initial` places it (no range: :data:`ASSUMED_RANGE_M` along the
 line of sight; no elevation: in the deck plane). Its position information is then
 ``J_p^T W J_p + I / UNCONSTRAINED_SIGMA_M^2`` (W = 1/sigma^2 on the measured channels): nearly no
 information along the unmeasured direction, so comparisons there are left to the other sensors.
@@ -24,8 +24,8 @@ The time bias's column of ``dp_dx``, and of ``J`` here, is the platform's motion
 estimate moves the navigation the plot is placed from (position and attitude), while the target
 the plot measured stays where it was. The target's own motion enters through the time stamp:
 the plot is re-stamped, which moves a tracklet along its own curve, and that term is the curve's
-derivative, added per tracklet from its fit (:mod:`registration.fleet.association_match`). Where
-a group's curve is compared with a sensor's own channels (:mod:`registration.fleet.association_cost`),
+derivative, added per tracklet from its fit (:mod:`registration.fleet.association.match`). Where
+a group's curve is compared with a sensor's own channels (:mod:`registration.fleet.association.cost`),
 both motions are in the generated column, the target's velocity coming from the group's curve.
 """
 
@@ -39,7 +39,7 @@ from scipy.optimize import linear_sum_assignment
 
 from registration import _codegen
 from registration.fleet.corrected import corrected_positions
-from registration.fleet.initial import ASSUMED_RANGE_M
+from registration.fleet.batch.initial import ASSUMED_RANGE_M
 from registration.fleet.problem import FleetProblem
 
 __all__ = ["N_COEF", "N_LINE", "TIME_BIAS_SLOT", "UNCONSTRAINED_SIGMA_M", "PlotGeometry", "plot_geometry",

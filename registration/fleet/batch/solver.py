@@ -1,13 +1,13 @@
 """Batch maximum-likelihood registration of a fleet (:func:`solve_batch`).
 
 Jointly over every registration state (platform attitude errors, sensor biases) and every target
-window's trajectory coefficients (:mod:`registration.fleet.blocks`), the sum of squared whitened
+window's trajectory coefficients (:mod:`registration.fleet.batch.blocks`), the sum of squared whitened
 residuals of all plots, reference positions and priors is minimised by Levenberg-Marquardt
 (Marquardt's diagonal scaling, Nielsen's damping update) with the target blocks eliminated by the
-Schur complement (:mod:`registration.fleet.schur`). Two phases, both from the same code:
+Schur complement (:mod:`registration.fleet.batch.schur`). Two phases, both from the same code:
 
 1. the target windows alone, registration states held at zero, from the window means of the
-   plot positions (:mod:`registration.fleet.initial`): the targets move to where the
+   plot positions (:mod:`registration.fleet.batch.initial`): the targets move to where the
    unregistered sensors jointly put them (roughly: until a step gains less than 1 %);
 2. everything together.
 
@@ -21,11 +21,11 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from registration.fleet.blocks import make_blocks
-from registration.fleet.initial import initial_coefficients
-from registration.fleet.normal import Design, Evaluation, Normal, evaluate, make_design, normal_equations
+from registration.fleet.batch.blocks import make_blocks
+from registration.fleet.batch.initial import initial_coefficients
+from registration.fleet.batch.normal import Design, Evaluation, Normal, evaluate, make_design, normal_equations
 from registration.fleet.problem import Exclusion, FleetProblem
-from registration.fleet.schur import damped_step, determined_directions, masked_blocks, reduce
+from registration.fleet.batch.schur import damped_step, determined_directions, masked_blocks, reduce
 
 __all__ = ["BatchOptions", "Fit", "NumericalError", "determined_design", "exclude_singular", "fit", "fit_windows",
            "levenberg_marquardt", "outside_when_seen", "progress_bar", "progress_status", "singular_blocks",
@@ -276,7 +276,7 @@ def time_bias_warnings(layout, x: np.ndarray, options: BatchOptions) -> tuple[st
 
 def _set_aside_outside(problem, design, ev, options):
     """After a fit with time biases, the plots seen outside their navigation, which weighed 0 in
-    the evaluations (registration.fleet.normal), set aside for good: (problem with their
+    the evaluations (registration.fleet.batch.normal), set aside for good: (problem with their
     exclusions recorded, design with their weights 0), or None when that would leave a window
     undetermined (then the caller drops the plots and solves anew)."""
     outside = outside_when_seen(design, ev.x)

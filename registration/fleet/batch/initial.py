@@ -6,7 +6,7 @@ with zero registration errors. A plot without range (passive angle sensor, beari
 :data:`ASSUMED_RANGE_M` along its line of sight, and one without elevation at elevation 0 (the
 deck plane). A window's constant coefficient is the mean over its plots that have a range (over
 all its plots if none has); the higher coefficients start at zero. The solver then refines the
-windows alone before it frees the registration states (:mod:`registration.fleet.solver`).
+windows alone before it frees the registration states (:mod:`registration.fleet.batch.solver`).
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from registration.fleet.corrected import corrected_positions
-from registration.fleet.normal import Design
+from registration.fleet.batch.normal import Design
 
 __all__ = ["ASSUMED_RANGE_M", "plot_positions", "initial_coefficients"]
 

@@ -15,7 +15,7 @@ sensor biases; rad and m):
 * predict: the states are constant up to a random walk, ``P += diag(q^2) dt`` (``q`` in
   rad/sqrt(s) and m/sqrt(s), dt the time since the previous epoch);
 * the epoch's information ``L`` and gradient ``b`` at the current estimate
-  (:mod:`registration.fleet.online_epoch`: the target windows fitted with the states held, then
+  (:mod:`registration.fleet.online.epoch`: the target windows fitted with the states held, then
   eliminated by the Schur complement);
 * update in coordinates scaled by each state's prior (or reference) sigma: with ``L = V w V^T``
   over its determined directions (``w`` above 1e-12 of the largest), the measurement
@@ -36,16 +36,16 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from registration.core.consistency import ConsistencyReport
-from registration.fleet.blocks import SAME_INSTANT_S
+from registration.fleet.batch.blocks import SAME_INSTANT_S
 from registration.fleet.inputs import References, index_of, read_platforms, read_plots, read_references, read_sensors
 from registration.fleet.layout import make_layout
 from registration.fleet.navigation import navigation_at, platform_navigation
 from registration.fleet.observability import fleet_observability
-from registration.fleet.online_epoch import epoch_information
-from registration.fleet.online_result import OnlineHistory, OnlineResult
+from registration.fleet.online.epoch import epoch_information
+from registration.fleet.online.result import OnlineHistory, OnlineResult
 from registration.fleet.problem import Exclusion, FleetProblem, build_problem
-from registration.fleet.residuals import residuals_at
-from registration.fleet.solver import BatchOptions
+from registration.fleet.batch.residuals import residuals_at
+from registration.fleet.batch.solver import BatchOptions
 from registration.fleet.tables import read_table
 
 __all__ = ["DIFFUSE", "FleetFilter", "OnlineOptions", "information_update", "register_online"]
@@ -72,7 +72,7 @@ _BUFFER = ("time", "sensor", "target", "meas", "mask", "nav", "row")
 class OnlineOptions:
     """Settings of :class:`FleetFilter`.
 
-    window_s, degree: the target windows, as in the batch (:class:`~registration.fleet.solver.BatchOptions`);
+    window_s, degree: the target windows, as in the batch (:class:`~registration.fleet.batch.solver.BatchOptions`);
         an epoch is one window of the absolute time grid. epoch_s: with ``window_s = 0``, the
         length (s) of an epoch of instants (0: one instant per epoch). q_angle (rad/sqrt(s)), q_range
         (m/sqrt(s); range biases and position errors), q_gain (1/sqrt(s); range gains), q_time
@@ -324,7 +324,7 @@ def register_online(plots, sensors, navigation, platforms=None, references=None,
                     options: OnlineOptions | None = None, prior=None, residuals: bool = True) -> OnlineResult:
     """Run :class:`FleetFilter` over a whole plots table (sorted by time here) and return its result;
     with ``residuals``, also the normalised residuals of every plot at the final estimate
-    (:func:`registration.fleet.residuals.residuals_at`)."""
+    (:func:`registration.fleet.batch.residuals.residuals_at`)."""
     filt = FleetFilter(sensors, navigation, platforms, references, options=options, prior=prior)
     table = read_table("plots", plots, ("time", "sensor", "target"))
     order = np.argsort(table.floats("time"), kind="stable")

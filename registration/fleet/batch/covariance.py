@@ -18,9 +18,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from registration.core.observability import UNOBSERVABLE_BELOW
-from registration.fleet.normal import positions
-from registration.fleet.schur import Reduced, reduce
-from registration.fleet.solver import NumericalError, singular_blocks
+from registration.fleet.batch.normal import positions
+from registration.fleet.batch.schur import Reduced, reduce
+from registration.fleet.batch.solver import NumericalError, singular_blocks
 
 __all__ = ["FusedTargets", "Solution", "solution_information", "state_covariance", "fused_targets"]
 
@@ -60,7 +60,7 @@ class Solution:
 
 def solution_information(fit) -> Solution:
     """The information at the solution (from the fit's own residuals and normal equations).
-    :class:`~registration.fleet.solver.NumericalError` (an internal error, not bad input) if a
+    :class:`~registration.fleet.batch.solver.NumericalError` (an internal error, not bad input) if a
     window's block cannot be inverted there, which the solver's checks at the solution exclude."""
     ev, normal = fit.evaluation, fit.normal
     try:

@@ -55,8 +55,8 @@ class OnlineResult:
     and not its own misfit (:attr:`verdict`). ``excluded``: plots that carried no
     registration information, per target. ``residuals`` (input plot rows, 3) and ``fit_check``:
     the normalised residuals of every plot at the final estimate with the trajectories fitted, and
-    their chi-square check (:func:`registration.fleet.residuals.residuals_at`; None unless computed,
-    as :func:`~registration.fleet.online.register_online` does).
+    their chi-square check (:func:`registration.fleet.batch.residuals.residuals_at`; None unless computed,
+    as :func:`~registration.fleet.online.filter.register_online` does).
     """
 
     layout: StateLayout

@@ -4,18 +4,18 @@
 Which plot of one radar and which of another are the same aircraft is unknown while the biases
 are unknown, and the biases cannot be estimated until that is known. Both are found together
 by iterating: associate under the current estimate and its covariance, register the associated
-plots with :func:`~registration.fleet.batch.solve_batch`, and associate again under the new
+plots with :func:`~registration.fleet.batch.solve.solve_batch`, and associate again under the new
 estimate and covariance, until the association stops changing (at most ``max_iterations``
 passes).
 
 Sensors plot at their own times, so plots of different sensors never share an instant. The
 association therefore works on tracklets, not on plots:
 
-1. **Tracks per sensor** (:mod:`registration.fleet.association_tracks`). A sensor's errors are
+1. **Tracks per sensor** (:mod:`registration.fleet.association.tracks`). A sensor's errors are
    the same for all its plots, so its plots are linked over time without the registration, by
    constant-velocity Kalman tracks in ECEF with one global assignment per scan.
-2. **Tracklets across sensors, per window** (:mod:`registration.fleet.association_match`,
-   :mod:`~registration.fleet.association_groups`, :mod:`~registration.fleet.association_cost`).
+2. **Tracklets across sensors, per window** (:mod:`registration.fleet.association.match`,
+   :mod:`~registration.fleet.association.groups`, :mod:`~registration.fleet.association.cost`).
    Each track is cut into windows of ``window_s`` s, on a grid common to all sensors. Each piece
    is fitted by a quadratic in ECEF, with its covariance and its sensitivity to the registration
    states. In every window the sensors' pieces are grouped by global assignments whose cost is
@@ -32,7 +32,7 @@ bias and east, north, up position error besides the attitude errors and biases),
 come from ``fleet_plot2ecef_ext`` and the Jacobians from ``fleet_residual_ext``. A plot of a
 sensor with a time bias is placed from its platform's navigation at the time it was seen (its
 reported time minus the estimated bias) and carries that time into the tracks and the tracklets,
-so that every sensor's curves are on one time axis (:mod:`registration.fleet.association_geometry`
+so that every sensor's curves are on one time axis (:mod:`registration.fleet.association.geometry`
 for the sensitivity to the time bias). In the first pass, under a zero estimate, a time bias on a
 rolling ship puts each plot where the deck pointed a moment earlier or later: the plots sway
 with the roll rate times the bias (up to 2.3 deg per second of bias under 4 deg of roll at 11 s),
@@ -52,14 +52,14 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from registration.fleet.association_geometry import Assigner, PlotGeometry, plot_geometry
-from registration.fleet.association_groups import group_tracklets
-from registration.fleet.association_match import chain_groups, make_tracklets
-from registration.fleet.association_result import AssociationResult
-from registration.fleet.association_tracks import sensor_tracks
-from registration.fleet.batch import solve_batch
+from registration.fleet.association.geometry import Assigner, PlotGeometry, plot_geometry
+from registration.fleet.association.groups import group_tracklets
+from registration.fleet.association.match import chain_groups, make_tracklets
+from registration.fleet.association.result import AssociationResult
+from registration.fleet.association.tracks import sensor_tracks
+from registration.fleet.batch.solve import solve_batch
 from registration.fleet.problem import FleetProblem, build_problem
-from registration.fleet.solver import BatchOptions, progress_bar, progress_status
+from registration.fleet.batch.solver import BatchOptions, progress_bar, progress_status
 from registration.fleet.tables import read_table
 
 __all__ = ["AssociationOptions", "AssociationResult", "associate_and_register"]
@@ -260,7 +260,7 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
     the table and row). Returns an :class:`AssociationResult`; the method is in the module docstring.
     ``progress``: a bar over the association passes, and one over each solve's iterations, on
     standard error, shown only on a terminal and after about a second
-    (:func:`registration.fleet.solver.progress_bar`).
+    (:func:`registration.fleet.batch.solver.progress_bar`).
     """
     t0 = time.perf_counter()
     if references is not None:
