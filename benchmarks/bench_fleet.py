@@ -49,8 +49,8 @@ from registration.fleet import BatchOptions, fleet_scenario, solve_batch
 from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.initial import initial_coefficients
 from registration.fleet.batch.normal import evaluate, make_design
-from registration.fleet.scenario import SHIPS, SITE, TARGETS, FleetConfig
-from registration.fleet.scenario_tracks import Circle, Line
+from registration.fleet.simulation.scenario import SHIPS, SITE, TARGETS, FleetConfig
+from registration.fleet.simulation.tracks import Circle, Line
 from registration.fleet.batch.solver import fit
 
 SENSORS_8 = {

@@ -22,7 +22,7 @@ import numpy as np
 from tqdm import tqdm
 
 from registration.fleet import fleet_scenario, solve_batch
-from registration.fleet.scenario import CENTRE
+from registration.fleet.simulation.scenario import CENTRE
 from registration.interop.stonesoup import EPOCH, LocalFrame, RegisteredDetectionFeeder, tables_to_detections
 
 from stonesoup.dataassociator.neighbour import GNNWith2DAssignment

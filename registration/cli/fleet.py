@@ -2,7 +2,7 @@
 
 ``fleet simulate`` runs the built-in fleet (three ships, a shore site, six sensors, five targets)
 and writes its input tables as a working example; ``fleet register`` reads such tables (CSV or
-Parquet, degrees and metres; see :mod:`registration.fleet.files`) and registers them. Both print
+Parquet, degrees and metres; see :mod:`registration.fleet.tablefiles.read`) and registers them. Both print
 the estimates per sensor and platform, the observability report and the chi-square check, and
 write ``estimates.csv``, ``summary.json`` and the plots. See docs/fleet.md.
 """
@@ -198,7 +198,7 @@ def _write_rejected(out: Path, frame) -> Path:
 def _read_tables(args: argparse.Namespace, out: Path):
     """The tables, bad rows stopping the run or set aside (then counted on standard output)."""
     from registration.fleet import read_fleet_tables
-    from registration.fleet.rejects import NoValidPlotsError
+    from registration.fleet.tablefiles.rejects import NoValidPlotsError
 
     try:
         tables = read_fleet_tables(args.plots, args.navigation, args.sensors, args.platforms, args.reference,

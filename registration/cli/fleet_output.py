@@ -14,7 +14,7 @@ import numpy as np
 from registration.cli.errors import consistency_gate, consistency_line, writing
 from registration.core.consistency import ConsistencyReport
 from registration.fleet.combinations import sigma_text
-from registration.fleet.layout import FILE_UNITS
+from registration.fleet.data.layout import FILE_UNITS
 
 __all__ = ["chi_square_report", "estimate_rows", "estimate_table", "print_report", "write_outputs", "gate"]
 

@@ -2,11 +2,11 @@
 biases of any number of sensors on them (3-D and 2-D radars, passive angle sensors, bearing-only
 and range-only sensors), estimated jointly from long-form plot tables.
 
-Modules: ``tables`` (the input tables, their columns and units), ``problem`` (:class:`FleetProblem`,
-checked and built by :func:`build_problem`), ``layout`` (the state), ``result`` (:class:`BatchResult`),
-``observability``, ``scenario`` (:func:`fleet_scenario`), ``files`` (CSV/Parquet tables in degrees:
-:func:`read_fleet_tables`, :func:`write_fleet_tables`), ``plots`` (PNG figures of a result), and
-three subpackages: ``batch`` (target windows, normal equations, the Schur complement,
+Modules: ``result`` (:class:`BatchResult`), ``observability``, ``combinations``, ``corrected``,
+``plots`` (PNG figures of a result), and the subpackages ``data`` (the input tables, their checks,
+navigation, the state layout, :class:`FleetProblem` built by :func:`build_problem`),
+``tablefiles`` (CSV/Parquet tables in degrees: :func:`read_fleet_tables`, :func:`write_fleet_tables`),
+``simulation`` (:func:`fleet_scenario`), ``batch`` (target windows, normal equations, the Schur complement,
 Levenberg-Marquardt, covariance, residuals, :func:`solve_batch` in ``batch.solve``), ``online``
 (:class:`FleetFilter`, :func:`register_online`: the same model epoch by epoch as plots arrive) and
 ``association`` (:func:`associate_and_register`: plots without target ids associated across sensors
@@ -18,13 +18,13 @@ from registration.fleet.association.associate import AssociationOptions, Associa
 from registration.fleet.batch.solve import solve_batch
 from registration.fleet.association.clutter import AssociationScenario, association_scenario, association_scores
 from registration.fleet.batch.covariance import FusedTargets
-from registration.fleet.files import FleetTables, read_fleet_tables
-from registration.fleet.files_write import write_fleet_tables
+from registration.fleet.tablefiles.read import FleetTables, read_fleet_tables
+from registration.fleet.tablefiles.write import write_fleet_tables
 from registration.fleet.online.filter import FleetFilter, OnlineOptions, register_online
 from registration.fleet.online.result import OnlineHistory, OnlineResult
-from registration.fleet.problem import Exclusion, FleetProblem, build_problem
+from registration.fleet.data.problem import Exclusion, FleetProblem, build_problem
 from registration.fleet.result import BatchResult, ChiSquareCheck
-from registration.fleet.scenario import FleetScenario, fleet_scenario
+from registration.fleet.simulation.scenario import FleetScenario, fleet_scenario
 from registration.fleet.batch.solver import BatchOptions
 
 __all__ = ["BatchOptions", "BatchResult", "ChiSquareCheck", "Exclusion", "FleetFilter", "FleetProblem", "FleetScenario",

@@ -3,7 +3,7 @@ ECEF positions (generated ``fleet_plot2ecef``, or ``fleet_plot2ecef_ext`` with t
 errors), shared by the solver's starting values, the association and the map of the plots.
 
 With a time bias ``dt`` the plot was seen at ``t - dt``: the caller passes the navigation of the
-platform at that time (:meth:`registration.fleet.problem.FleetProblem.navigation_at`).
+platform at that time (:meth:`registration.fleet.data.problem.FleetProblem.navigation_at`).
 """
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ def corrected_positions(nav: np.ndarray, state: np.ndarray, xs: np.ndarray, leve
 
     ``nav`` (M, 6): navigation (lat, lon rad, alt m, heading, pitch, roll rad as reported) at the
     time the plot was seen; ``state`` (M, 6 or 11): each plot's state indices
-    (:meth:`~registration.fleet.layout.StateLayout.sensor_states`, the sink last); ``xs`` (n + 1,):
+    (:meth:`~registration.fleet.data.layout.StateLayout.sensor_states`, the sink last); ``xs`` (n + 1,):
     the states (rad, m, 1, s) with 0 appended for the sink; ``lever`` (M, 3) m, deck frame;
     ``meas`` (M, 3): range (m), bearing, elevation (rad), every channel filled (the caller places
     a plot without range or elevation).

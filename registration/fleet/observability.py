@@ -3,7 +3,7 @@
 Input: the information matrix of the free states with the target trajectories eliminated (the
 Schur complement of the data alone, at the solution). It is scaled, as in
 :mod:`registration.core.observability`, by each state's prior sigma, or by a reference size when
-the state has no prior (:data:`registration.fleet.layout.REFERENCE_SCALE`: 1 deg, 1 km), so an eigenvalue ``s`` means a
+the state has no prior (:data:`registration.fleet.data.layout.REFERENCE_SCALE`: 1 deg, 1 km), so an eigenvalue ``s`` means a
 posterior sigma of ``1 / sqrt(s)`` in those units; classes and thresholds are the core's
 (unobservable below 0.01, weak below 10).
 
@@ -35,7 +35,7 @@ import numpy as np
 from registration.core.observability import (
     UNOBSERVABLE_BELOW, WEAK_BELOW, Combination, ObservabilityReport,
 )
-from registration.fleet.layout import state_scale
+from registration.fleet.data.layout import state_scale
 
 __all__ = ["StructuralCombination", "explain", "fleet_observability"]
 

@@ -20,8 +20,8 @@ from registration.core.frames import ecef2geodetic
 from registration.core.plotting import OKABE_ITO, label_style, pyplot, save_figure
 from registration.fleet.combinations import SUM_STATUS
 from registration.fleet.corrected import corrected_positions
-from registration.fleet.layout import FILE_UNITS
-from registration.fleet.problem import FleetProblem
+from registration.fleet.data.layout import FILE_UNITS
+from registration.fleet.data.problem import FleetProblem
 from registration.fleet.result import BatchResult
 
 __all__ = ["corrected_plot_positions", "estimates_figure", "history_figure", "map_figure", "plot_estimates",

@@ -10,7 +10,7 @@ from registration.core.consistency import ConsistencyReport
 from registration.core.observability import ObservabilityReport
 from registration.fleet.combinations import linear_combination, sigma_text, sum_rows
 from registration.fleet.batch.covariance import FusedTargets
-from registration.fleet.layout import FILE_UNITS, StateLayout
+from registration.fleet.data.layout import FILE_UNITS, StateLayout
 
 __all__ = ["BatchResult", "ChiSquareCheck", "state_lines", "state_rows"]
 

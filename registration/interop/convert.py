@@ -29,8 +29,8 @@ from stonesoup.types.detection import Detection
 from stonesoup.types.state import State
 
 from registration.core.angles import wrap_angle
-from registration.fleet.navigation import navigation_at, platform_navigation
-from registration.fleet.tables import CHANNELS, read_table
+from registration.fleet.data.navigation import navigation_at, platform_navigation
+from registration.fleet.data.tables import CHANNELS, read_table
 from registration.interop.world import LocalFrame
 
 __all__ = ["EPOCH", "MODEL_CHANNELS", "POSITION_MAPPING", "STONESOUP_VERSION", "measurement_model", "model_kind", "model_pose",

@@ -17,7 +17,7 @@ import numpy as np
 from registration.interop.requires import STONESOUP_VERSION
 from stonesoup.types.detection import Clutter
 
-from registration.fleet.tables import CHANNELS, NAV_COLUMNS, read_table
+from registration.fleet.data.tables import CHANNELS, NAV_COLUMNS, read_table
 from registration.interop.convert import MODEL_CHANNELS, measured_plot, model_kind, model_pose
 from registration.interop.world import LocalFrame
 

@@ -33,7 +33,7 @@ from stonesoup.types.array import CovarianceMatrix, StateVector
 
 from registration import _codegen
 from registration.core.angles import wrap_angle
-from registration.fleet.tables import ATTITUDE_ERRORS, CHANNELS, EXTENDED_ERRORS, read_table
+from registration.fleet.data.tables import ATTITUDE_ERRORS, CHANNELS, EXTENDED_ERRORS, read_table
 from registration.interop.convert import MODEL_CHANNELS, measured_plot, model_kind, model_pose, ss_covariance, ss_vector
 from registration.interop.world import LocalFrame
 

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from registration.fleet import BatchOptions, fleet_scenario, solve_batch
-from registration.fleet.scenario import TARGETS, FleetConfig
+from registration.fleet.simulation.scenario import TARGETS, FleetConfig
 
 
 def _z(sc, result) -> np.ndarray:

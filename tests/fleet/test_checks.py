@@ -16,7 +16,7 @@ import registration.fleet.batch.solver as solver
 from registration.fleet import (
     AssociationOptions, BatchOptions, associate_and_register, build_problem, fleet_scenario, solve_batch,
 )
-from registration.fleet.layout import state_scale
+from registration.fleet.data.layout import state_scale
 from registration.fleet.online.filter import register_online
 from registration.fleet.online.result import FINAL_RESIDUALS
 from registration.fleet.batch.solver import NumericalError

@@ -17,7 +17,7 @@ import pytest
 from registration import _codegen
 from registration.cli import main
 from registration.fleet import BatchOptions, build_problem, fleet_scenario, register_online, solve_batch
-from registration.fleet.scenario import DEFAULT_FLEET, Circle, Line
+from registration.fleet.simulation.scenario import DEFAULT_FLEET, Circle, Line
 from registration.fleet.batch.solver import time_bias_warnings
 
 LAT, LON, ALT = np.radians(36.0), np.radians(14.5), 20.0
@@ -224,7 +224,7 @@ def test_simulate_with_the_new_errors_writes_their_rows_and_units(tmp_path, caps
 def test_seen_navigation_is_scipys_cubic_hermite_curve():
     from scipy.interpolate import CubicHermiteSpline
 
-    from registration.fleet.navigation import catmull_rom_slopes, navigation_rate_at
+    from registration.fleet.data.navigation import catmull_rom_slopes, navigation_rate_at
 
     rng = np.random.default_rng(5)
     t = np.cumsum(rng.uniform(0.05, 0.2, 60))

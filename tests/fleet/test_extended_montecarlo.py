@@ -83,8 +83,8 @@ from registration import _codegen
 from registration.core.angles import wrap_angle
 from registration.core.consistency import nees_interval
 from registration.fleet import fleet_scenario, solve_batch
-from registration.fleet.scenario import CENTRE, DEFAULT_FLEET, FleetConfig
-from registration.fleet.scenario_tracks import Circle, Line, ShipTrack
+from registration.fleet.simulation.scenario import CENTRE, DEFAULT_FLEET, FleetConfig
+from registration.fleet.simulation.tracks import Circle, Line, ShipTrack
 
 NEW_KINDS = ("range_gain", "time_bias", "position_east", "position_north", "position_up")
 EXTENDED_COLUMNS = ("prior_range_gain", "prior_time_bias", "prior_position")

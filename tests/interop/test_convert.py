@@ -19,7 +19,7 @@ from stonesoup.types.state import State
 
 from registration import _codegen
 from registration.fleet import build_problem, fleet_scenario, solve_batch
-from registration.fleet.scenario import CENTRE
+from registration.fleet.simulation.scenario import CENTRE
 from registration.interop.stonesoup import (
     EPOCH, LocalFrame, detections_to_tables, measured_plot, measurement_model, mounted_radar, tables_to_detections,
 )

@@ -10,7 +10,7 @@ from stonesoup.types.detection import Detection
 from stonesoup.types.state import State
 
 from registration.fleet import fleet_scenario, solve_batch
-from registration.fleet.scenario import CENTRE
+from registration.fleet.simulation.scenario import CENTRE
 from registration.interop.stonesoup import (
     EPOCH, LocalFrame, RegisteredDetectionFeeder, RegistrationCorrector, tables_to_detections,
 )

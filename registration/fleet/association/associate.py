@@ -58,9 +58,9 @@ from registration.fleet.association.match import chain_groups, make_tracklets
 from registration.fleet.association.result import AssociationResult
 from registration.fleet.association.tracks import sensor_tracks
 from registration.fleet.batch.solve import solve_batch
-from registration.fleet.problem import FleetProblem, build_problem
+from registration.fleet.data.problem import FleetProblem, build_problem
 from registration.fleet.batch.solver import BatchOptions, progress_bar, progress_status
-from registration.fleet.tables import read_table
+from registration.fleet.data.tables import read_table
 
 __all__ = ["AssociationOptions", "AssociationResult", "associate_and_register"]
 
@@ -252,11 +252,11 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
     """Associate plots that carry no target ids across sensors and register the fleet with them.
 
     ``plots``, ``sensors``, ``navigation``, ``platforms``: the long-form tables of
-    :mod:`registration.fleet.tables` (SI units, radians); ``plots`` needs ``time``, ``sensor`` and
+    :mod:`registration.fleet.data.tables` (SI units, radians); ``plots`` needs ``time``, ``sensor`` and
     the measured channels, and a ``target`` column, if present, is ignored. ``references`` is not
     supported yet (their targets have no link to the plots): passing one is an error. ValueError
     for an empty plots table, plots of one sensor only, or any error of
-    :func:`~registration.fleet.problem.build_problem` (unknown sensor, bad values; the message names
+    :func:`~registration.fleet.data.problem.build_problem` (unknown sensor, bad values; the message names
     the table and row). Returns an :class:`AssociationResult`; the method is in the module docstring.
     ``progress``: a bar over the association passes, and one over each solve's iterations, on
     standard error, shown only on a terminal and after about a second

@@ -1,7 +1,7 @@
 """Simulated plots without target ids, for the association (:func:`association_scenario`), and
 the scores of an association against the truth (:func:`association_scores`).
 
-The fleet is :mod:`registration.fleet.scenario`'s (three ships, one shore site) with its radars
+The fleet is :mod:`registration.fleet.simulation.scenario`'s (three ships, one shore site) with its radars
 (3-D and 2-D; the passive sensor is left out) and ``n_targets`` targets on straight lines and
 circles, optionally in crossing pairs (two straight tracks through the same point at the same
 time and height). A target more than :data:`MAX_ELEVATION_RAD` above a radar is not seen; each
@@ -16,8 +16,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.fleet.scenario import SENSORS, SHIPS, SITE, FleetConfig, FleetScenario, fleet_scenario
-from registration.fleet.scenario_tracks import Circle, Line
+from registration.fleet.simulation.scenario import SENSORS, SHIPS, SITE, FleetConfig, FleetScenario, fleet_scenario
+from registration.fleet.simulation.tracks import Circle, Line
 
 __all__ = ["CLUTTER_RANGE_M", "CLUTTER_ELEVATION_RAD", "MAX_ELEVATION_RAD", "RADARS", "AssociationScenario", "association_targets",
            "association_scenario", "association_scores"]
@@ -88,7 +88,7 @@ def association_scenario(n_targets: int = 5, *, crossing: bool = False, angle_bi
                          seed: int = 0, sensors: dict | None = None, **fleet) -> AssociationScenario:
     """The plots of ``n_targets`` targets with misses and clutter (module docstring); ``angle_bias``
     (rad) is the size of every angle bias (bearing and elevation), random signs; ``fleet``: other
-    :func:`~registration.fleet.scenario.fleet_scenario` arguments (range_bias, heading_error, ...)."""
+    :func:`~registration.fleet.simulation.scenario.fleet_scenario` arguments (range_bias, heading_error, ...)."""
     if n_targets < 1 or not 0 <= p_missed < 1 or clutter_per_scan < 0:
         raise ValueError(f"n_targets >= 1, p_missed in [0, 1), clutter_per_scan >= 0; got {n_targets}, {p_missed}, "
                          f"{clutter_per_scan}")

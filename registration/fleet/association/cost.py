@@ -27,7 +27,7 @@ import numpy as np
 
 from registration import _codegen
 from registration.fleet.association.geometry import N_COEF, N_LINE
-from registration.fleet.problem import FleetProblem
+from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["group_covariances", "joint_covariance", "line_cost", "measurement_cost"]
 

@@ -12,7 +12,7 @@ line of sight; no elevation: in the deck plane). Its position information is the
 information along the unmeasured direction, so comparisons there are left to the other sensors.
 
 **Extended errors** (layout width 11: range gain, time bias, sensor position error east, north,
-up; :mod:`registration.fleet.layout`). Positions then come from ``fleet_plot2ecef_ext`` and the
+up; :mod:`registration.fleet.data.layout`). Positions then come from ``fleet_plot2ecef_ext`` and the
 Jacobians from ``fleet_residual_ext`` (J = d residual / d(p_ecef, att_err, bias, gain, dt,
 pos_err), 3x14), and a plot of a sensor with a time bias ``dt`` belongs to the time it was seen,
 ``t - dt`` (s; the reported time minus the estimated bias), with its platform's navigation at
@@ -40,7 +40,7 @@ from scipy.optimize import linear_sum_assignment
 from registration import _codegen
 from registration.fleet.corrected import corrected_positions
 from registration.fleet.batch.initial import ASSUMED_RANGE_M
-from registration.fleet.problem import FleetProblem
+from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["N_COEF", "N_LINE", "TIME_BIAS_SLOT", "UNCONSTRAINED_SIGMA_M", "PlotGeometry", "plot_geometry",
            "seen_navigation", "state_columns", "time_biased", "Assigner"]

@@ -14,7 +14,7 @@ from scipy.stats import chi2
 
 from registration.fleet.association.cost import group_covariances, joint_covariance, line_cost, measurement_cost
 from registration.fleet.association.geometry import N_LINE, Assigner, state_columns
-from registration.fleet.problem import FleetProblem
+from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["group_tracklets"]
 

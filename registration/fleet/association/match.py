@@ -31,7 +31,7 @@ from scipy.stats import chi2
 
 from registration.fleet.association.geometry import (N_COEF, N_LINE, TIME_BIAS_SLOT, Assigner, PlotGeometry,
                                                      state_columns)
-from registration.fleet.problem import FleetProblem
+from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["Tracklets", "make_tracklets", "chain_groups", "time_shift_sensitivity"]
 

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.fleet.problem import FleetProblem
+from registration.fleet.data.problem import FleetProblem
 from registration.fleet.result import BatchResult
 
 __all__ = ["AssociationResult"]

@@ -14,7 +14,7 @@ Plots are ordered by (block, sensor); a *group* is the plots of one sensor in on
 coupling of a block with the registration states is held per group (a ``3 (d + 1) x w`` matrix
 over the sensor's ``w`` states: its platform's three attitude errors and its three biases, and
 with the extended errors its range gain, time bias and position errors, ``w = 11``;
-:meth:`~registration.fleet.layout.StateLayout.sensor_states`). For the Schur complement the
+:meth:`~registration.fleet.data.layout.StateLayout.sensor_states`). For the Schur complement the
 groups of a block are laid side by side (``group_rank``, ``local_state``), so each block's
 coupling is one dense ``3 (d + 1) x w g`` matrix (g = the most groups in any block).
 """
@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.polynomial import legendre
 
-from registration.fleet.problem import FleetProblem
+from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["Blocks", "make_blocks", "legendre_basis", "legendre_basis_rate"]
 

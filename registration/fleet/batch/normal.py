@@ -35,8 +35,8 @@ import numpy as np
 
 from registration import _codegen
 from registration.fleet.batch.blocks import Blocks
-from registration.fleet.navigation import SeenNavigation
-from registration.fleet.problem import FleetProblem
+from registration.fleet.data.navigation import SeenNavigation
+from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["Design", "Evaluation", "Normal", "chunk_positions", "make_design", "evaluate", "normal_equations",
            "positions"]
@@ -67,7 +67,7 @@ class Design:
     ref_p: np.ndarray  # (R', 3) ECEF m
     ref_weight: np.ndarray  # (R',) 1 / sigma
     prior_weight: np.ndarray  # (n,) 1 / prior sigma (0: no prior; fixed states are not free)
-    scale: np.ndarray  # (n,) prior or reference sigma of each state (registration.fleet.layout.state_scale)
+    scale: np.ndarray  # (n,) prior or reference sigma of each state (registration.fleet.data.layout.state_scale)
     time: np.ndarray  # (rows,) reported plot time (s)
     seen_at: object = None  # with time biases: times (rows,) -> (nav, rate, outside); navigation.SeenNavigation
     seen_cache: dict = field(default_factory=dict)  # the seen basis and navigation of the latest time biases

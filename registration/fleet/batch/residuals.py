@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from registration.fleet.batch.normal import Design, Evaluation
-from registration.fleet.problem import FleetProblem
+from registration.fleet.data.problem import FleetProblem
 from registration.fleet.result import ChiSquareCheck
 from registration.fleet.batch.solver import BatchOptions, determined_design, fit_windows
 

@@ -12,7 +12,7 @@ import numpy as np
 
 from registration.fleet.batch.covariance import fused_targets, solution_information, state_covariance
 from registration.fleet.observability import fleet_observability
-from registration.fleet.problem import FleetProblem
+from registration.fleet.data.problem import FleetProblem
 from registration.fleet.batch.residuals import chi_square_parts, reference_residuals, residual_table, unused_references
 from registration.fleet.result import BatchResult, ChiSquareCheck
 from registration.fleet.batch.solver import BatchOptions, fit

@@ -24,7 +24,7 @@ import numpy as np
 from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.initial import initial_coefficients
 from registration.fleet.batch.normal import Design, Evaluation, Normal, evaluate, make_design, normal_equations
-from registration.fleet.problem import Exclusion, FleetProblem
+from registration.fleet.data.problem import Exclusion, FleetProblem
 from registration.fleet.batch.schur import damped_step, determined_directions, masked_blocks, reduce
 
 __all__ = ["BatchOptions", "Fit", "NumericalError", "determined_design", "exclude_singular", "fit", "fit_windows",

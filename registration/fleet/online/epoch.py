@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.fleet.problem import FleetProblem
+from registration.fleet.data.problem import FleetProblem
 from registration.fleet.batch.schur import reduce
 from registration.fleet.batch.solver import BatchOptions, determined_design, fit_windows
 

@@ -37,16 +37,16 @@ import numpy as np
 
 from registration.core.consistency import ConsistencyReport
 from registration.fleet.batch.blocks import SAME_INSTANT_S
-from registration.fleet.inputs import References, index_of, read_platforms, read_plots, read_references, read_sensors
-from registration.fleet.layout import make_layout
-from registration.fleet.navigation import navigation_at, platform_navigation
+from registration.fleet.data.inputs import References, index_of, read_platforms, read_plots, read_references, read_sensors
+from registration.fleet.data.layout import make_layout
+from registration.fleet.data.navigation import navigation_at, platform_navigation
 from registration.fleet.observability import fleet_observability
 from registration.fleet.online.epoch import epoch_information
 from registration.fleet.online.result import OnlineHistory, OnlineResult
-from registration.fleet.problem import Exclusion, FleetProblem, build_problem
+from registration.fleet.data.problem import Exclusion, FleetProblem, build_problem
 from registration.fleet.batch.residuals import residuals_at
 from registration.fleet.batch.solver import BatchOptions
-from registration.fleet.tables import read_table
+from registration.fleet.data.tables import read_table
 
 __all__ = ["DIFFUSE", "FleetFilter", "OnlineOptions", "information_update", "register_online"]
 

@@ -12,8 +12,8 @@ import numpy as np
 from registration.core.consistency import ConsistencyReport
 from registration.core.observability import ObservabilityReport
 from registration.fleet.combinations import linear_combination, sum_rows
-from registration.fleet.layout import StateLayout
-from registration.fleet.problem import Exclusion
+from registration.fleet.data.layout import StateLayout
+from registration.fleet.data.problem import Exclusion
 from registration.fleet.result import ChiSquareCheck, state_lines, state_rows
 
 __all__ = ["FINAL_RESIDUALS", "OnlineHistory", "OnlineResult"]

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.fleet.tables import ATTITUDE_ERRORS, CHANNEL_UNITS, CHANNELS, EXTENDED_ERRORS
+from registration.fleet.data.tables import ATTITUDE_ERRORS, CHANNEL_UNITS, CHANNELS, EXTENDED_ERRORS
 
 __all__ = ["EXTENDED_LABELS", "EXTENDED_UNITS", "FILE_UNITS", "REFERENCE_SCALE", "StateLayout", "make_layout",
            "state_scale"]

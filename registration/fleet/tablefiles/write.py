@@ -1,6 +1,6 @@
-"""Fleet tables written as files: the long-form tables of :mod:`registration.fleet.tables` (SI
-units, radians) as CSV or Parquet in the file units of :mod:`registration.fleet.files` (degrees,
-metres, seconds), so that :func:`~registration.fleet.files.read_fleet_tables` reads them back."""
+"""Fleet tables written as files: the long-form tables of :mod:`registration.fleet.data.tables` (SI
+units, radians) as CSV or Parquet in the file units of :mod:`registration.fleet.tablefiles.read` (degrees,
+metres, seconds), so that :func:`~registration.fleet.tablefiles.read.read_fleet_tables` reads them back."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from registration.core.frames import ecef2geodetic
-from registration.fleet.files import FILE_COLUMNS
+from registration.fleet.tablefiles.read import FILE_COLUMNS
 
 __all__ = ["write_fleet_tables"]
 

@@ -18,7 +18,7 @@ import numpy as np
 
 from registration.core.angles import wrap_angle
 from registration.core.validation import check_range
-from registration.fleet.tables import NAV_COLUMNS, Table
+from registration.fleet.data.tables import NAV_COLUMNS, Table
 
 __all__ = ["NAV_LIMITS", "SeenNavigation", "catmull_rom_slopes", "hermite_cubics", "platform_navigation",
            "unused_platforms", "navigation_at", "navigation_rate_at", "outside_navigation"]

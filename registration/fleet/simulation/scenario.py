@@ -17,8 +17,8 @@ import numpy as np
 
 from registration import _codegen
 from registration.core.angles import wrap_angle
-from registration.fleet.problem import FleetProblem, build_problem
-from registration.fleet.scenario_tracks import Circle, Line, ShipTrack, enu2ecef_points
+from registration.fleet.data.problem import FleetProblem, build_problem
+from registration.fleet.simulation.tracks import Circle, Line, ShipTrack, enu2ecef_points
 
 __all__ = ["DEFAULT_FLEET", "FleetConfig", "FleetScenario", "fleet_scenario", "SHIPS", "SITE", "SENSORS", "TARGETS",
            "CENTRE"]
@@ -77,7 +77,7 @@ class FleetScenario:
     """The long-form input tables (dicts of numpy columns, SI units, radians) and the truth.
 
     ``truth_state``: state name -> true value (rad or m) in the names of
-    :mod:`registration.fleet.layout`; :meth:`target_ecef`: true ECEF positions (m).
+    :mod:`registration.fleet.data.layout`; :meth:`target_ecef`: true ECEF positions (m).
     """
 
     platforms: dict

@@ -1,9 +1,9 @@
 """A fleet registration problem: the checked description built from the long-form tables.
 
 :func:`build_problem` (also :meth:`FleetProblem.from_tables`) reads the tables of
-:mod:`registration.fleet.tables`, checks them (errors name the table, row and object),
+:mod:`registration.fleet.data.tables`, checks them (errors name the table, row and object),
 interpolates each platform's navigation to the plot times, lays out the registration state
-(:class:`~registration.fleet.layout.StateLayout`) and sets aside the targets that carry no
+(:class:`~registration.fleet.data.layout.StateLayout`) and sets aside the targets that carry no
 registration information: a target seen by one sensor only, and not a reference, fits that
 sensor's plots exactly whatever the errors are.
 """
@@ -14,14 +14,14 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from registration.fleet.inputs import (
+from registration.fleet.data.inputs import (
     References, RowProblem, index_of, plot_problems, read_platforms, read_plots, read_references, read_sensors,
 )
-from registration.fleet.layout import StateLayout, make_layout
-from registration.fleet.navigation import (
+from registration.fleet.data.layout import StateLayout, make_layout
+from registration.fleet.data.navigation import (
     navigation_at, navigation_rate_at, outside_navigation, platform_navigation, unused_platforms,
 )
-from registration.fleet.tables import read_table
+from registration.fleet.data.tables import read_table
 
 __all__ = ["Exclusion", "FleetProblem", "build_problem", "plot_row_problems"]
 
@@ -80,7 +80,7 @@ class FleetProblem:
         default all) at times ``time`` (M,) s, for plots seen at times corrected by a time bias:
         the navigation on the C1 Hermite curve through its samples, its rate of change (rad/s, m/s)
         and whether a time lies outside the platform's navigation span (the nearest end is used
-        there). See :class:`registration.fleet.navigation.SeenNavigation`."""
+        there). See :class:`registration.fleet.data.navigation.SeenNavigation`."""
         plot = np.arange(self.n_plots) if plot is None else plot
         if self.tracks is None:
             raise ValueError("this problem was built without its navigation tracks")
@@ -155,7 +155,7 @@ def _single_sensor_targets(plots, references) -> list[Exclusion]:
 
 def plot_row_problems(plots, sensors, navigation, platforms=None, reference_targets=()) -> list[RowProblem]:
     """The problems of the plots rows that :func:`build_problem` raises for, per row, in its order
-    (:func:`~registration.fleet.inputs.plot_problems`, then ``outside_navigation``: a plot outside
+    (:func:`~registration.fleet.data.inputs.plot_problems`, then ``outside_navigation``: a plot outside
     its platform's navigation time span, not counting the targets it sets aside as seen by one
     sensor, unless in ``reference_targets``). The other tables are checked as build_problem does
     (ValueError naming table, row and object)."""
@@ -184,7 +184,7 @@ def plot_row_problems(plots, sensors, navigation, platforms=None, reference_targ
 
 
 def build_problem(plots, sensors, navigation, platforms=None, references=None) -> FleetProblem:
-    """Check the long-form tables (see :mod:`registration.fleet.tables`) and build the problem.
+    """Check the long-form tables (see :mod:`registration.fleet.data.tables`) and build the problem.
 
     ValueError names the table, row and object for: a missing column, an unknown sensor,
     platform or reference target, a sensor with no measured channel, a negative or zero noise

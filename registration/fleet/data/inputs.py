@@ -1,5 +1,5 @@
 """Checks and conversion of the platforms, sensors, plots and references tables (see
-:mod:`registration.fleet.tables` for their columns and units). Every error names the table, the
+:mod:`registration.fleet.data.tables` for their columns and units). Every error names the table, the
 row and the object (platform, sensor or target id)."""
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ import numpy as np
 
 from registration.core.frames import geodetic2ecef
 from registration.core.validation import check_range, degree_hint
-from registration.fleet.tables import (
+from registration.fleet.data.tables import (
     ATTITUDE_ERRORS, CHANNELS, DEFAULT_REFERENCE_SIGMA, EXTENDED_PRIOR_COLUMNS, Table, read_table,
 )
 

@@ -1,8 +1,8 @@
 """One fleet file read: its columns checked cell by cell in file units (degrees, metres, seconds)
-and converted to the columns of :mod:`registration.fleet.tables` (SI units, radians), with its bad
-rows (:class:`~registration.fleet.rejects.BadRows`) and what it notes. The files, their columns
-and the rules: :mod:`registration.fleet.files`; the whole-file checks:
-:mod:`registration.fleet.filechecks`. A CSV line with fewer or more fields than the header is a
+and converted to the columns of :mod:`registration.fleet.data.tables` (SI units, radians), with its bad
+rows (:class:`~registration.fleet.tablefiles.rejects.BadRows`) and what it notes. The files, their columns
+and the rules: :mod:`registration.fleet.tablefiles.read`; the whole-file checks:
+:mod:`registration.fleet.tablefiles.checks`. A CSV line with fewer or more fields than the header is a
 bad row (``short_row``, ``long_row``) before any of its cells is looked at.
 """
 
@@ -14,8 +14,8 @@ from pathlib import Path
 
 import numpy as np
 
-from registration.fleet.filechecks import attitude_check, radians_check, sigma_notes
-from registration.fleet.rejects import BadRows
+from registration.fleet.tablefiles.checks import attitude_check, radians_check, sigma_notes
+from registration.fleet.tablefiles.rejects import BadRows
 
 __all__ = ["FILE_COLUMNS", "FileRead", "read_file"]
 
@@ -140,7 +140,7 @@ def _used_platforms(frame, shapes, platforms: set, path: Path):
 
 
 def read_file(name: str, path: Path, skip: bool, platforms: set | None = None) -> FileRead:
-    """One file -> :class:`FileRead` (table columns of :mod:`registration.fleet.tables`); ``skip``
+    """One file -> :class:`FileRead` (table columns of :mod:`registration.fleet.data.tables`); ``skip``
     False: the first bad cell raises. ``platforms``: for the navigation, the platforms used."""
     from registration.recorded.csvrows import SHAPE_COLUMN
 

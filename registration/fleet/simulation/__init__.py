@@ -1,0 +1,3 @@
+"""The simulated fleet: ships, sites, sensors and targets with their true errors, through the generated geometry (docs/fleet.md)."""
+
+__all__: list[str] = []
