@@ -125,7 +125,7 @@ def _write_associations(out: Path, tables, association) -> Path:
     """associations.csv: per plots-file row, its time, sensor and the target label found ('' = none)."""
     import pandas as pd
 
-    from registration.recorded.formats import write_frame
+    from registration.recorded.reading.formats import write_frame
 
     rows = tables.file_rows.get("plots", np.arange(association.labels.size))
     frame = pd.DataFrame({"row": rows, "time_s": tables.plots["time"], "sensor": tables.plots["sensor"],
@@ -187,7 +187,7 @@ def run_simulate(args: argparse.Namespace) -> int:
 
 
 def _write_rejected(out: Path, frame) -> Path:
-    from registration.recorded.formats import write_frame
+    from registration.recorded.reading.formats import write_frame
 
     path = out / "rejected.csv"
     with writing(path):

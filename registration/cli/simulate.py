@@ -123,7 +123,7 @@ def _check(args: argparse.Namespace) -> None:
     """Every option checked and the output places prepared before the simulation starts."""
     check_scenario_arguments(args)
     if args.export is not None:
-        from registration.recorded.formats import file_format
+        from registration.recorded.reading.formats import file_format
 
         try:
             file_format(args.export)
@@ -197,7 +197,7 @@ def _write(path: Path, args, scenario, config, result, stats, noise_free, rows) 
 
 def _export(scenario, path: Path) -> Path:
     """The simulated data as ``path`` (--export), written after the --out outputs are published."""
-    from registration.recorded.formats import write_table
+    from registration.recorded.reading.formats import write_table
 
     with writing(path):
         return write_table(scenario.data, path)

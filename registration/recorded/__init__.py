@@ -2,27 +2,29 @@
 column names, row checks with a reason for every bad row, pairing of asynchronous plots, and a
 streaming run that is checkpointed and resumes bit for bit.
 
-The run is a pipeline (:mod:`.runner`): :mod:`.plan` (with :mod:`.outfolder`) -> :mod:`.unitcheck`
--> :mod:`.paired` (with :mod:`.sources`, :mod:`.streams`, :mod:`.pairing`) -> :mod:`.filtering`
-(with :mod:`.runstate`, :mod:`.outputs`) -> :mod:`.report` and :mod:`.plots` -> publication in
-``--out`` (:mod:`.outfolder`). Below them: :mod:`.columns`, :mod:`.rowcheck`, :mod:`.formats`,
-:mod:`.writers`, :mod:`.checkpoint`, :mod:`.options`.
+The run is a pipeline (:mod:`.run.runner`): :mod:`.run.plan` (with :mod:`.output.outfolder`) ->
+:mod:`.reading.unitcheck` -> :mod:`.pairing.paired` (with :mod:`.reading.sources`,
+:mod:`.reading.streams`, :mod:`.pairing.pairs`) -> :mod:`.run.filtering` (with :mod:`.run.runstate`,
+:mod:`.output.outputs`) -> :mod:`.output.report` and :mod:`.output.plots` -> publication in ``--out``
+(:mod:`.output.outfolder`). Subpackages: ``reading`` (formats, row checks, field counts, unit
+checks, sources, streams), ``pairing``, ``run`` (plan, options, checkpoint, filtering, runner) and
+``output`` (outputs, report, plots, writers, the output folder).
 """
 
-from registration.recorded.checkpoint import CheckpointError, load_checkpoint, save_checkpoint
-from registration.recorded.columns import (
+from registration.recorded.run.checkpoint import CheckpointError, load_checkpoint, save_checkpoint
+from registration.recorded.reading.columns import (
     ESTIMATE_COLUMNS, NAV_FIELDS, PAIRED_COLUMNS, PLOT_FIELDS, POSITION_COLUMNS, REJECTED_COLUMNS, SYNC_COLUMNS, SYNC_FIELDS,
     UNPAIRED_COLUMNS, Field, FileFormatError,
 )
-from registration.recorded.formats import from_file_frame, iter_frames, read_columns, read_table, to_file_frame, write_table
-from registration.recorded.filtering import NoValidRowsError
-from registration.recorded.options import PairingOptions, RunOptions
-from registration.recorded.outfolder import OUTPUT_NAMES, OutputFolderError
-from registration.recorded.report import summary_consistency
-from registration.recorded.rowcheck import REASON_CODES, BadRowError, check_frame, sync_layout
-from registration.recorded.runner import run_register
-from registration.recorded.validate import validate_files
-from registration.recorded.writers import CsvAppender, PartsWriter
+from registration.recorded.reading.formats import from_file_frame, iter_frames, read_columns, read_table, to_file_frame, write_table
+from registration.recorded.run.filtering import NoValidRowsError
+from registration.recorded.run.options import PairingOptions, RunOptions
+from registration.recorded.output.outfolder import OUTPUT_NAMES, OutputFolderError
+from registration.recorded.output.report import summary_consistency
+from registration.recorded.reading.rowcheck import REASON_CODES, BadRowError, check_frame, sync_layout
+from registration.recorded.run.runner import run_register
+from registration.recorded.reading.validate import validate_files
+from registration.recorded.output.writers import CsvAppender, PartsWriter
 
 __all__ = [
     "run_register", "validate_files", "summary_consistency", "RunOptions", "PairingOptions",

@@ -71,7 +71,7 @@ def test_a_read_only_output_names_the_path(tmp_path, capsys, monkeypatch):
 
 
 def test_an_unwritable_export_names_the_path(tmp_path, capsys, monkeypatch):
-    import registration.recorded.formats as formats
+    import registration.recorded.reading.formats as formats
 
     def read_only(frame, path, fmt=None):
         raise OSError(errno.EROFS, os.strerror(errno.EROFS), str(path))

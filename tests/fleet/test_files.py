@@ -165,7 +165,7 @@ def spoiled(scenario, tmp_path):
 
 def test_skip_mode_sets_bad_rows_aside_with_their_reason(spoiled):
     from registration.fleet.tablefiles.rejects import FLEET_REASON_CODES
-    from registration.recorded.rowcheck import REASON_CODES
+    from registration.recorded.reading.rowcheck import REASON_CODES
 
     paths, _, want = spoiled
     first = min(want)

@@ -13,8 +13,8 @@ import pytest
 from registration.cli import main
 from registration.cli.errors import EXIT_BAD_INPUT, EXIT_INCONSISTENT
 from registration.recorded import SYNC_COLUMNS
-from registration.recorded.rowcheck import sync_layout
-from registration.recorded.unitcheck import MIN_VALUES, angle_unit_warnings
+from registration.recorded.reading.rowcheck import sync_layout
+from registration.recorded.reading.unitcheck import MIN_VALUES, angle_unit_warnings
 
 from ._register_data import frame
 

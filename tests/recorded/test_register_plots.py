@@ -6,11 +6,11 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-import registration.recorded.filtering as filtering
-import registration.recorded.plots as plots
-import registration.recorded.runner as runner
+import registration.recorded.run.filtering as filtering
+import registration.recorded.output.plots as plots
+import registration.recorded.run.runner as runner
 from registration.recorded import RunOptions, run_register
-from registration.recorded.plotseries import SERIES_FIELDS, PlotSeries, plot_step
+from registration.recorded.output.plotseries import SERIES_FIELDS, PlotSeries, plot_step
 
 from ._register_data import frame
 

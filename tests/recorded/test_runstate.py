@@ -7,8 +7,8 @@ import numpy as np
 from registration.online import OnlineRegistrar, RegistrationConfig
 from registration.online.contract import ROW_COLUMNS
 from registration.recorded import load_checkpoint, save_checkpoint
-from registration.recorded.rowcheck import Rejection
-from registration.recorded.runstate import PassPosition, RunState
+from registration.recorded.reading.rowcheck import Rejection
+from registration.recorded.run.runstate import PassPosition, RunState
 
 from ._register_data import scenario
 

@@ -58,11 +58,11 @@ _POSITIVE = {"range_m", "sigma_range_m", "sigma_bearing_deg", "sigma_elevation_d
 
 def _read_frame(path: Path):
     """A CSV or Parquet file as a DataFrame, id columns as text; a CSV frame with a line of fewer or
-    more fields than the header also has the column SHAPE_COLUMN (:mod:`registration.recorded.csvrows`)."""
+    more fields than the header also has the column SHAPE_COLUMN (:mod:`registration.recorded.reading.csvrows`)."""
     import pandas as pd
 
-    from registration.recorded.csvrows import read_csv_blocks
-    from registration.recorded.formats import file_format
+    from registration.recorded.reading.csvrows import read_csv_blocks
+    from registration.recorded.reading.formats import file_format
 
     fmt = file_format(path)
     if not path.is_file():
@@ -142,7 +142,7 @@ def _used_platforms(frame, shapes, platforms: set, path: Path):
 def read_file(name: str, path: Path, skip: bool, platforms: set | None = None) -> FileRead:
     """One file -> :class:`FileRead` (table columns of :mod:`registration.fleet.data.tables`); ``skip``
     False: the first bad cell raises. ``platforms``: for the navigation, the platforms used."""
-    from registration.recorded.csvrows import SHAPE_COLUMN
+    from registration.recorded.reading.csvrows import SHAPE_COLUMN
 
     frame = _read_frame(path)
     shapes = frame.pop(SHAPE_COLUMN) if SHAPE_COLUMN in frame.columns else None

@@ -6,7 +6,7 @@ collection of one file's bad rows in either mode of ``on_bad_row``.
 row. Rows are numbered from 0, the first data row (a CSV header line is not a row).
 
 Reason codes (:data:`FLEET_REASON_CODES`): those of the recorded files
-(:data:`registration.recorded.rowcheck.REASON_CODES`: ``non_numeric``, ``non_finite`` for an
+(:data:`registration.recorded.reading.rowcheck.REASON_CODES`: ``non_numeric``, ``non_finite`` for an
 empty, NaN or infinite number, ``out_of_range``, ``non_positive_range``, ...) and the fleet's own:
 
 * ``empty_id``: an empty sensor, target or platform id;
@@ -28,8 +28,8 @@ from typing import TYPE_CHECKING, Callable
 
 import numpy as np
 
-from registration.recorded.filtering import NoValidRowsError
-from registration.recorded.rowcheck import REASON_CODES
+from registration.recorded.run.filtering import NoValidRowsError
+from registration.recorded.reading.rowcheck import REASON_CODES
 
 if TYPE_CHECKING:
     import pandas

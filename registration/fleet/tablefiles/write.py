@@ -43,7 +43,7 @@ def write_fleet_tables(folder, plots, navigation, sensors, platforms=None, refer
     ``folder``: ``plots``, ``navigation``, ``sensors``, ``platforms`` (if given) and ``reference``
     (if given; ECEF positions are written as lat/lon/alt) with suffix ``.csv`` or ``.parquet``
     (``fmt``). CSV floats are written as their shortest round-trip text. Returns the paths."""
-    from registration.recorded.formats import write_frame
+    from registration.recorded.reading.formats import write_frame
 
     if fmt not in ("csv", "parquet"):
         raise ValueError(f"fmt: expected 'csv' or 'parquet', got {fmt!r}")

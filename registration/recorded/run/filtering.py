@@ -2,11 +2,11 @@
 matrix at the final estimate.
 
 Pass 1 reads the table in blocks of ``block_rows`` rows aligned on absolute row numbers,
-validates them (:mod:`registration.recorded.rowcheck`) and runs the accepted rows through
+validates them (:mod:`registration.recorded.reading.rowcheck`) and runs the accepted rows through
 :meth:`registration.online.filter.OnlineRegistrar.update_block`; per block it appends the
 estimates, the corrected ECEF positions and the rejected rows, and accumulates the statistics.
 Pass 2 (``observability="final"``) sums H^T R^-1 H at the final estimate over the same rows.
-The run state is checkpointed at block boundaries (:mod:`registration.recorded.runstate`).
+The run state is checkpointed at block boundaries (:mod:`registration.recorded.run.runstate`).
 """
 
 from __future__ import annotations
@@ -16,14 +16,14 @@ import numpy as np
 from registration.online.contract import correct_rows
 from registration.online.filter import OnlineRegistrar
 from registration.online.information import information_at_estimate, target_positions
-from registration.recorded.columns import SYNC_COLUMNS, FileFormatError
-from registration.recorded.formats import iter_frames
-from registration.recorded.options import RunOptions
-from registration.recorded.outputs import Outputs, estimate_frame, position_frame, rejected_rows
-from registration.recorded.plan import RunPlan, Table
-from registration.recorded.plotseries import PLOT_POINTS, PlotSeries
-from registration.recorded.rowcheck import BadRowError, CheckedBlock, Rejection, check_frame, sync_layout
-from registration.recorded.runstate import Checkpointer, RunState
+from registration.recorded.reading.columns import SYNC_COLUMNS, FileFormatError
+from registration.recorded.reading.formats import iter_frames
+from registration.recorded.run.options import RunOptions
+from registration.recorded.output.outputs import Outputs, estimate_frame, position_frame, rejected_rows
+from registration.recorded.run.plan import RunPlan, Table
+from registration.recorded.output.plotseries import PLOT_POINTS, PlotSeries
+from registration.recorded.reading.rowcheck import BadRowError, CheckedBlock, Rejection, check_frame, sync_layout
+from registration.recorded.run.runstate import Checkpointer, RunState
 
 __all__ = ["filter_table", "NoValidRowsError"]
 

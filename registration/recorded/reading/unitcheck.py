@@ -20,10 +20,10 @@ import math
 
 import numpy as np
 
-from registration.recorded.formats import iter_frames
-from registration.recorded.plan import RunPlan
-from registration.recorded.rowcheck import Layout, sync_layout
-from registration.recorded.sources import plan_sources
+from registration.recorded.reading.formats import iter_frames
+from registration.recorded.run.plan import RunPlan
+from registration.recorded.reading.rowcheck import Layout, sync_layout
+from registration.recorded.reading.sources import plan_sources
 
 __all__ = ["SAMPLE_ROWS", "MIN_VALUES", "angle_unit_warnings", "input_warnings"]
 

@@ -17,9 +17,9 @@ import numpy as np
 from registration.online.config import RegistrationConfig
 from registration.online.contract import N_STATE
 from registration.online.filter import OnlineRegistrar
-from registration.recorded.checkpoint import load_checkpoint, save_checkpoint
-from registration.recorded.outputs import DifferenceStats, Outputs
-from registration.recorded.plotseries import PlotSeries
+from registration.recorded.run.checkpoint import load_checkpoint, save_checkpoint
+from registration.recorded.output.outputs import DifferenceStats, Outputs
+from registration.recorded.output.plotseries import PlotSeries
 
 __all__ = ["PassPosition", "RunState", "Checkpointer", "mark_done", "PHASES"]
 

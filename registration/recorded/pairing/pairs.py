@@ -2,8 +2,8 @@
 
 Input: two per-sensor plot files, each with its own timestamps and rate, and each ship's
 navigation either in its plot file or in a navigation file at its own rate
-(:mod:`registration.recorded.sources`). Output: blocks of the synchronous table
-(:data:`registration.recorded.columns.PAIRED_COLUMNS`) that the registration filter reads like
+(:mod:`registration.recorded.reading.sources`). Output: blocks of the synchronous table
+(:data:`registration.recorded.reading.columns.PAIRED_COLUMNS`) that the registration filter reads like
 any other. Rules (documented in docs/register.md):
 
 * **Clocks.** Radar A's clock reads reference time + ``clock_offset_a`` (likewise B); a
@@ -35,11 +35,11 @@ import numpy as np
 
 from registration.core.alignment import REASON_EXTRAPOLATION
 from registration.online.contract import N_ROW, ROW_COLUMNS, SENSOR_ROW, SENSORS
-from registration.recorded.columns import NAV_KINDS, PLOT_KINDS
-from registration.recorded.formats import to_file_frame
-from registration.recorded.options import PairingOptions
-from registration.recorded.sources import Source
-from registration.recorded.streams import REASON_GAP, SampleStream
+from registration.recorded.reading.columns import NAV_KINDS, PLOT_KINDS
+from registration.recorded.reading.formats import to_file_frame
+from registration.recorded.run.options import PairingOptions
+from registration.recorded.reading.sources import Source
+from registration.recorded.reading.streams import REASON_GAP, SampleStream
 
 __all__ = ["PairedBlock", "Pairer"]
 

@@ -18,15 +18,15 @@ import os
 import shutil
 from pathlib import Path
 
-from registration.recorded.columns import PAIRED_COLUMNS, REJECTED_COLUMNS, SYNC_COLUMNS, UNPAIRED_COLUMNS
-from registration.recorded.formats import scan_file
-from registration.recorded.options import RunOptions
-from registration.recorded.outfolder import RunFolder
-from registration.recorded.outputs import rejected_rows
-from registration.recorded.pairing import Pairer
-from registration.recorded.plan import RunPlan, Table, fingerprint, table_rows
-from registration.recorded.sources import plan_sources
-from registration.recorded.writers import CsvAppender, ParquetFileWriter, write_json_atomic
+from registration.recorded.reading.columns import PAIRED_COLUMNS, REJECTED_COLUMNS, SYNC_COLUMNS, UNPAIRED_COLUMNS
+from registration.recorded.reading.formats import scan_file
+from registration.recorded.run.options import RunOptions
+from registration.recorded.output.outfolder import RunFolder
+from registration.recorded.output.outputs import rejected_rows
+from registration.recorded.pairing.pairs import Pairer
+from registration.recorded.run.plan import RunPlan, Table, fingerprint, table_rows
+from registration.recorded.reading.sources import plan_sources
+from registration.recorded.output.writers import CsvAppender, ParquetFileWriter, write_json_atomic
 
 __all__ = ["pair_inputs"]
 

@@ -1,17 +1,17 @@
 """Reading and writing recorded tables: CSV and Parquet, units converted only here.
 
 The format follows the suffix: ``.csv`` or ``.parquet`` (``.pq``). CSV is read in blocks of whole
-lines (:mod:`registration.recorded.csvrows`, which also counts each line's fields) and Parquet by
+lines (:mod:`registration.recorded.reading.csvrows`, which also counts each line's fields) and Parquet by
 record batches, so a reader never holds more than one block of rows (:func:`iter_frames`); CSV
 outputs are written with pyarrow (shortest round-trip float text, so a value read back is
 bit-for-bit the value written). :func:`to_file_frame` and
 :func:`from_file_frame` convert between the data contract (SI units, radians) and the file
-columns of :mod:`registration.recorded.columns` (degrees, metres).
+columns of :mod:`registration.recorded.reading.columns` (degrees, metres).
 
-Errors: :class:`~registration.recorded.columns.FileFormatError` (a ``ValueError``) for a file that
+Errors: :class:`~registration.recorded.reading.columns.FileFormatError` (a ``ValueError``) for a file that
 cannot be read as a table at all (unknown suffix, an empty file, an unterminated quote, not a
-Parquet file, ...); row-level problems are the business of :mod:`registration.recorded.rowcheck`,
-a CSV line with fewer or more fields than the header included (:mod:`registration.recorded.csvrows`).
+Parquet file, ...); row-level problems are the business of :mod:`registration.recorded.reading.rowcheck`,
+a CSV line with fewer or more fields than the header included (:mod:`registration.recorded.reading.csvrows`).
 """
 
 from __future__ import annotations
@@ -22,9 +22,9 @@ from typing import Iterator, Mapping
 
 import numpy as np
 
-from registration.recorded.columns import SYNC_COLUMNS, SYNC_FIELDS, FileFormatError
-from registration.recorded.csvrows import SHAPE_COLUMN, read_csv_blocks
-from registration.recorded.rowcheck import check_frame, sync_layout
+from registration.recorded.reading.columns import SYNC_COLUMNS, SYNC_FIELDS, FileFormatError
+from registration.recorded.reading.csvrows import SHAPE_COLUMN, read_csv_blocks
+from registration.recorded.reading.rowcheck import check_frame, sync_layout
 
 __all__ = [
     "file_format", "to_file_frame", "from_file_frame", "write_table", "write_frame", "read_table", "read_columns",
@@ -60,7 +60,7 @@ def to_file_frame(data: Mapping, fields=SYNC_FIELDS):
 def from_file_frame(frame, fields=SYNC_FIELDS) -> dict:
     """A DataFrame with unit-named columns -> data-contract dict of float64 arrays (SI, radians).
 
-    No checks beyond the presence of the columns; see :mod:`registration.recorded.rowcheck` for those.
+    No checks beyond the presence of the columns; see :mod:`registration.recorded.reading.rowcheck` for those.
     """
     missing = [f.file_name for f in fields if f.file_name not in frame]
     if missing:
@@ -162,8 +162,8 @@ def iter_frames(path, columns, chunk_rows: int, start_row: int = 0) -> Iterator[
     ``start_row`` and every block boundary is ``start_row + i * chunk_rows``, so a run resumed at a
     block boundary sees the same blocks as an uninterrupted one. Memory: one block (plus pandas'
     or pyarrow's own read buffer). A CSV frame with a line of fewer or more fields than the
-    header also has the column :data:`~registration.recorded.csvrows.SHAPE_COLUMN` (per row None,
-    or its :class:`~registration.recorded.csvrows.RowShape`; NaN in rows of blocks joined to it).
+    header also has the column :data:`~registration.recorded.reading.csvrows.SHAPE_COLUMN` (per row None,
+    or its :class:`~registration.recorded.reading.csvrows.RowShape`; NaN in rows of blocks joined to it).
     Raises :class:`FileFormatError` when the file cannot be parsed.
     """
     import pandas as pd
@@ -208,8 +208,8 @@ def iter_frames(path, columns, chunk_rows: int, start_row: int = 0) -> Iterator[
 
 def _csv_frames(path, wanted: list[str]) -> Iterator[object]:
     """The wanted columns of a CSV file, block by block, with the shape of each row
-    (:data:`~registration.recorded.csvrows.SHAPE_COLUMN`: a line with fewer or more fields than the
-    header is a bad row for :func:`~registration.recorded.rowcheck.check_frame`, not a row whose
+    (:data:`~registration.recorded.reading.csvrows.SHAPE_COLUMN`: a line with fewer or more fields than the
+    header is a bad row for :func:`~registration.recorded.reading.rowcheck.check_frame`, not a row whose
     missing cells read as empty or whose extra fields are dropped)."""
     for frame in read_csv_blocks(path):
         yield frame[[c for c in frame.columns if str(c).strip() in wanted or c == SHAPE_COLUMN]]

@@ -2,20 +2,20 @@
 
 Each stage is a module of its own and hands its result to the next:
 
-1. :func:`~registration.recorded.plan.plan_run`: check the inputs and ``--out``, fingerprint the
+1. :func:`~registration.recorded.run.plan.plan_run`: check the inputs and ``--out``, fingerprint the
    inputs, find the checkpoint to resume from, and choose the run's own folder inside ``--out``
-   (:mod:`registration.recorded.outfolder`);
-2. :func:`~registration.recorded.unitcheck.input_warnings`: angle columns that seem to hold
+   (:mod:`registration.recorded.output.outfolder`);
+2. :func:`~registration.recorded.reading.unitcheck.input_warnings`: angle columns that seem to hold
    radians (printed at once, listed in the summary);
-3. :func:`~registration.recorded.paired.pair_inputs` (two plot files only): the published
+3. :func:`~registration.recorded.pairing.paired.pair_inputs` (two plot files only): the published
    synchronous table ``paired.csv|parquet``;
-4. :func:`~registration.recorded.filtering.filter_table`: read, check and filter the table block
+4. :func:`~registration.recorded.run.filtering.filter_table`: read, check and filter the table block
    by block, writing estimates, positions and rejected rows, then the information matrix at the
    final estimate; checkpointed and resumable bit for bit;
-5. :func:`~registration.recorded.report.build_summary` (with the consistency gate's figures),
+5. :func:`~registration.recorded.output.report.build_summary` (with the consistency gate's figures),
    ``summary.json``, the plots (from the points kept while filtering,
-   :mod:`registration.recorded.plotseries`), the checkpoint marked ``done``;
-6. :func:`~registration.recorded.outfolder.publish`: the run's folder replaces the outputs of an
+   :mod:`registration.recorded.output.plotseries`), the checkpoint marked ``done``;
+6. :func:`~registration.recorded.output.outfolder.publish`: the run's folder replaces the outputs of an
    earlier run in ``--out``.
 
 A run that fails is not published, except when every row was rejected (``rejected.csv`` says
@@ -26,16 +26,16 @@ from __future__ import annotations
 
 import time
 
-from registration.recorded.filtering import NoValidRowsError, filter_table
-from registration.recorded.options import RunOptions
-from registration.recorded.outfolder import discard, publish, records_folder
-from registration.recorded.paired import pair_inputs
-from registration.recorded.plan import RunPlan, plan_run
-from registration.recorded.plots import series_from_outputs, write_plots
-from registration.recorded.report import build_summary
-from registration.recorded.runstate import mark_done
-from registration.recorded.unitcheck import input_warnings
-from registration.recorded.writers import write_json_atomic
+from registration.recorded.run.filtering import NoValidRowsError, filter_table
+from registration.recorded.run.options import RunOptions
+from registration.recorded.output.outfolder import discard, publish, records_folder
+from registration.recorded.pairing.paired import pair_inputs
+from registration.recorded.run.plan import RunPlan, plan_run
+from registration.recorded.output.plots import series_from_outputs, write_plots
+from registration.recorded.output.report import build_summary
+from registration.recorded.run.runstate import mark_done
+from registration.recorded.reading.unitcheck import input_warnings
+from registration.recorded.output.writers import write_json_atomic
 
 __all__ = ["run_register"]
 

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from registration.recorded.checkpoint import CheckpointError
+from registration.recorded.run.checkpoint import CheckpointError
 
 __all__ = ["CsvAppender", "PartsWriter", "ParquetFileWriter", "open_appender", "write_json_atomic"]
 
