@@ -46,9 +46,7 @@ def corrected_plot_positions(problem: FleetProblem, x: np.ndarray) -> tuple[np.n
     state = layout.sensor_states(problem.sensor[sel], problem.sensor_platform)
     meas = problem.meas[sel].copy()
     meas[:, 2] = np.where(problem.mask[sel, 2], meas[:, 2], xs[state[:, 5]])
-    nav = problem.nav[sel]
-    if layout.extended and (layout.time_bias_index >= 0).any():
-        nav = problem.navigation_at(problem.time[sel] - xs[state[:, 7]], sel)[0]
+    nav = problem.seen(x, sel)[1]
     p = corrected_positions(nav, state, xs, problem.sensor_lever[problem.sensor[sel]], meas)
     return p, sel
 

@@ -43,7 +43,7 @@ from registration.fleet.batch.initial import ASSUMED_RANGE_M
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["N_COEF", "N_LINE", "TIME_BIAS_SLOT", "UNCONSTRAINED_SIGMA_M", "PlotGeometry", "plot_geometry",
-           "seen_navigation", "state_columns", "time_biased", "Assigner"]
+           "state_columns", "Assigner"]
 
 #: Standard deviation (m) given to a plot position along a direction its sensor does not measure.
 UNCONSTRAINED_SIGMA_M = 1.0e5
@@ -90,31 +90,8 @@ def state_columns(problem: FleetProblem, sel: np.ndarray | None = None) -> np.nd
     plots ``sel`` (default all) and, when the layout is extended (w = 11, else 6), the sensor's
     range gain, time bias and east, north, up position errors (the order of the generated
     functions' state inputs); -1 for a state the sensor does not have."""
-    layout = problem.layout
     sensor = problem.sensor if sel is None else problem.sensor[sel]
-    parts = [layout.att_index[problem.sensor_platform[sensor]], layout.bias_index[sensor]]
-    if layout.extended:
-        parts.append(layout.extended_index[sensor])
-    return np.concatenate(parts, axis=1)
-
-
-def time_biased(problem: FleetProblem) -> bool:
-    """True when some sensor of the problem has a time-bias state."""
-    return bool(problem.layout.extended and (problem.layout.time_bias_index >= 0).any())
-
-
-def seen_navigation(problem: FleetProblem, x: np.ndarray, sel: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(time (M,) s, nav (M, 6) rad/m, rate (M, 6) rad/s, m/s) of the problem's plots ``sel`` under
-    the states ``x`` (n,): the time each plot's target and platform were seen (reported time minus
-    the sensor's estimated time bias), the platform's navigation then and its rate (outside the
-    navigation's span, its nearest end). Without time biases: the reported time, the problem's
-    navigation and a rate of 0."""
-    if not time_biased(problem):
-        return problem.time[sel], problem.nav[sel], np.zeros((np.size(sel), 6))
-    xs = np.append(np.asarray(x, dtype=np.float64), 0.0)
-    t = problem.time[sel] - xs[problem.layout.time_bias_index[problem.sensor[sel]]]
-    nav, rate, _ = problem.navigation_at(t, sel)
-    return t, nav, rate
+    return problem.layout.sensor_states(sensor, problem.sensor_platform, absent=-1)
 
 
 def _positions(problem: FleetProblem, xs: np.ndarray, cols: np.ndarray, sel: np.ndarray, nav: np.ndarray,
@@ -142,7 +119,7 @@ def plot_geometry(problem: FleetProblem, x: np.ndarray, sel: np.ndarray | None =
     sel = np.arange(problem.n_plots) if sel is None else np.asarray(sel)
     xs = np.append(np.asarray(x, dtype=np.float64), 0.0)  # index -1 (absent channel) reads 0
     cols = state_columns(problem, sel)
-    t, nav, rate = seen_navigation(problem, x, sel)
+    t, nav, rate = problem.seen(x, sel)
     p, J = _positions(problem, xs, cols, sel, nav, rate)
     mask = problem.mask[sel]
     sigma = np.nan_to_num(problem.sensor_sigma[problem.sensor[sel]], nan=np.inf)

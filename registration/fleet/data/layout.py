@@ -86,14 +86,19 @@ class StateLayout:
         """(S,) the state index of each sensor's time bias, -1 where not modelled."""
         return self.extended_index[:, 1]
 
-    def sensor_states(self, sensor: np.ndarray, sensor_platform: np.ndarray) -> np.ndarray:
+    @property
+    def time_biased(self) -> bool:
+        """True when any sensor has a time-bias state (estimated or fixed)."""
+        return bool((self.time_bias_index >= 0).any())
+
+    def sensor_states(self, sensor: np.ndarray, sensor_platform: np.ndarray, absent: int | None = None) -> np.ndarray:
         """(M, width) state indices of sensors ``sensor`` (M,) as the plot model takes them
-        (module docstring), ``n`` (the sink) where a state is absent."""
+        (module docstring); where a state is absent ``absent``, by default ``n`` (the sink)."""
         parts = [self.att_index[sensor_platform[sensor]], self.bias_index[sensor]]
         if self.extended:
             parts.append(self.extended_index[sensor])
         idx = np.concatenate(parts, axis=1)
-        return np.where(idx < 0, self.n, idx)
+        return np.where(idx < 0, self.n if absent is None else absent, idx)
 
     @property
     def free(self) -> np.ndarray:

@@ -86,6 +86,19 @@ class FleetProblem:
             raise ValueError("this problem was built without its navigation tracks")
         return navigation_rate_at(self.tracks, self.platform_ids, self.platform[plot], time)
 
+    def seen(self, x: np.ndarray, plot: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(time (M,) s, nav (M, 6) rad/m, rate (M, 6) rad/s, m/s) of plots ``plot`` (M,) under the
+        states ``x`` (n,; rad, m, 1, s): the time each plot's target and platform were seen (reported
+        time minus its sensor's time bias), the platform's navigation then and its rate
+        (:meth:`navigation_at`; outside the navigation's span, its nearest end). Without time
+        biases: the reported time, the navigation at it and a rate of 0."""
+        if not self.layout.time_biased:
+            return self.time[plot], self.nav[plot], np.zeros((np.size(plot), 6))
+        xs = np.append(np.asarray(x, dtype=np.float64), 0.0)
+        t = self.time[plot] - xs[self.layout.sensor_states(self.sensor[plot], self.sensor_platform)[:, 7]]
+        nav, rate, _ = self.navigation_at(t, plot)
+        return t, nav, rate
+
     @property
     def n_plots(self) -> int:
         return int(self.time.shape[0])
