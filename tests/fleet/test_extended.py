@@ -190,15 +190,29 @@ def test_still_level_ships_without_a_reference_name_the_common_clock():
 
 # -- online, files, CLI ------------------------------------------------------------------------
 
-def test_online_filter_estimates_the_new_states_near_the_batch():
-    """The same bound as the three-error filter's test (0.3 sigma of the batch) over 300 s; the
-    gap comes from linearising the first epochs far from the solution and shrinks with the data
-    (measured 0.55 sigma over 150 s, 0.23 over 300 s)."""
-    sc = fleet_scenario(7, duration_s=300.0, range_gain=4e-4, time_bias=0.25, position_error=15.0)
+def _other_fleet():
+    from tests.fleet.test_extended_montecarlo import OTHER_FLEET
+
+    return OTHER_FLEET
+
+
+@pytest.mark.parametrize("case", ["default fleet, 300 s", "another fleet, 600 s"])
+def test_online_filter_estimates_the_new_states_near_the_batch(case):
+    """The same bound as the three-error filter's test (0.3 sigma of the batch). The gap comes
+    from linearising the first epochs far from the solution and shrinks with the data: on the
+    default fleet 0.55 sigma over 150 s, 0.23 over 300 s; on another fleet (two other ships, a 3-D
+    shore radar, other targets, 1000 ppm / 0.5 s / 35 m; not tuned on) 0.48 over 300 s, 0.12 over
+    600 s (without the extended errors that fleet gives 0.04 over 300 s)."""
+    if case.startswith("default"):
+        sc = fleet_scenario(7, duration_s=300.0, range_gain=4e-4, time_bias=0.25, position_error=15.0)
+    else:
+        sc = fleet_scenario(9001, duration_s=600.0, config=_other_fleet(), range_gain=1e-3, time_bias=0.5,
+                            position_error=35.0)
     batch = solve_batch(sc.problem())
     online = register_online(sc.plots, sc.sensors, sc.navigation, sc.platforms, sc.references, residuals=False)
     assert online.layout.names == batch.layout.names
     free = batch.layout.free
+    free = free[np.isfinite(batch.sigma[free])]
     gap = np.abs(online.estimate - batch.estimate)[free] / batch.sigma[free]
     assert gap.max() < 0.3, dict(zip(np.array(batch.layout.names)[free], gap.round(2)))
     np.testing.assert_allclose(online.sigma[free], batch.sigma[free], rtol=0.05)
