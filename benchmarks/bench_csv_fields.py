@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Cost of counting each CSV line's fields (registration.recorded.reading.csvrows) against pandas' own read.
+"""Cost of counting each CSV line's fields (registration.io.files.csvrows) against pandas' own read.
 
 Run from a checkout (the package installed)::
 
@@ -13,7 +13,7 @@ alternation, best and median of ``--repeat`` runs of the process CPU time (less 
 wall time to other work on the machine):
 
 * ``pandas chunks``: ``pandas.read_csv(chunksize=20000)``, the reader before the field count;
-* ``blocks + field count``: :func:`registration.recorded.reading.csvrows.read_csv_blocks` (4 MiB blocks);
+* ``blocks + field count``: :func:`registration.io.files.csvrows.read_csv_blocks` (4 MiB blocks);
 * ``read + field count``: the file read in the same blocks and scanned, without pandas.
 """
 
@@ -27,8 +27,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from registration.recorded.reading.csvrows import BLOCK_BYTES, count_fields, read_csv_blocks
-from registration.recorded.reading.formats import write_frame
+from registration.io.files.csvrows import BLOCK_BYTES, count_fields, read_csv_blocks
+from registration.io.files.tablefile import write_frame
 
 
 def _files(folder: Path, rows: int) -> dict[str, Path]:

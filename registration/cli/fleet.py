@@ -2,7 +2,7 @@
 
 ``fleet simulate`` runs the built-in fleet (three ships, a shore site, six sensors, five targets)
 and writes its input tables as a working example; ``fleet register`` reads such tables (CSV or
-Parquet, degrees and metres; see :mod:`registration.fleet.tablefiles.read`) and registers them. Both print
+Parquet, degrees and metres; see :mod:`registration.io.fleet.read`) and registers them. Both print
 the estimates per sensor and platform, the observability report and the chi-square check, and
 write ``estimates.csv``, ``summary.json`` and the plots. See docs/fleet.md.
 """
@@ -49,15 +49,19 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     add_allow_inconsistent(sim)
     reg = sub.add_parser("register", help=REGISTER_HELP, description=textwrap.fill(REGISTER_HELP),
                          epilog=EXIT_CODES_EPILOG, formatter_class=HelpFormatter)
-    files = reg.add_argument_group("input tables (.csv or .parquet)")
-    files.add_argument("--plots", type=Path, required=True, metavar="FILE",
+    files = reg.add_argument_group("input tables (.csv or .parquet): --tables DIR, or --plots, --navigation and "
+                                   "--sensors (each overriding the folder's file)")
+    files.add_argument("--tables", type=Path, default=None, metavar="DIR",
+                       help="a folder holding the tables by their standard names (plots, navigation, sensors, "
+                            "platforms, reference; .csv or .parquet), as 'registration import' writes them")
+    files.add_argument("--plots", type=Path, default=None, metavar="FILE",
                        help="time_s, sensor, target, range_m, bearing_deg, elevation_deg (empty cell: not measured); without "
                             "the target column the plots are associated across sensors jointly with the registration "
                             "(associations.csv)")
-    files.add_argument("--navigation", type=Path, required=True, metavar="FILE",
+    files.add_argument("--navigation", type=Path, default=None, metavar="FILE",
                        help="time_s, platform, lat_deg, lon_deg, alt_m, heading_deg, pitch_deg, roll_deg "
                             "(one row for a fixed site)")
-    files.add_argument("--sensors", type=Path, required=True, metavar="FILE",
+    files.add_argument("--sensors", type=Path, default=None, metavar="FILE",
                        help="sensor, platform, sigma_range_m, sigma_bearing_deg, sigma_elevation_deg; optional "
                             "prior_range_bias_m, prior_bearing_bias_deg, prior_elevation_bias_deg (0 = fixed), "
                             "lever_x_m, lever_y_m, lever_z_m; optional extended errors, each modelled only when its "
@@ -125,7 +129,7 @@ def _write_associations(out: Path, tables, association) -> Path:
     """associations.csv: per plots-file row, its time, sensor and the target label found ('' = none)."""
     import pandas as pd
 
-    from registration.recorded.reading.formats import write_frame
+    from registration.io.files.tablefile import write_frame
 
     rows = tables.file_rows.get("plots", np.arange(association.labels.size))
     frame = pd.DataFrame({"row": rows, "time_s": tables.plots["time"], "sensor": tables.plots["sensor"],
@@ -154,7 +158,8 @@ def run_simulate(args: argparse.Namespace) -> int:
     """Simulate, write the tables, read them back and register what was written (so `fleet register`
     on these files gives the same numbers)."""
     from registration.cli.fleet_output import estimate_rows, gate, print_report, write_outputs
-    from registration.fleet import fleet_scenario, read_fleet_tables, write_fleet_tables
+    from registration.fleet import fleet_scenario
+    from registration.io import read_fleet_tables, write_fleet_tables
 
     if args.seed < 0:
         raise ValueError(f"--seed: expected an integer >= 0, got {args.seed}")
@@ -187,7 +192,7 @@ def run_simulate(args: argparse.Namespace) -> int:
 
 
 def _write_rejected(out: Path, frame) -> Path:
-    from registration.recorded.reading.formats import write_frame
+    from registration.io.files.tablefile import write_frame
 
     path = out / "rejected.csv"
     with writing(path):
@@ -195,14 +200,28 @@ def _write_rejected(out: Path, frame) -> Path:
     return path
 
 
+def _table_paths(args: argparse.Namespace) -> dict:
+    """The five tables' paths: from --tables DIR by their standard names, each overridden by its own option."""
+    from registration.io.fleet.folder import REQUIRED_TABLES, TABLE_NAMES, tables_in_folder
+
+    given = {name: getattr(args, name) for name in TABLE_NAMES}
+    if args.tables is not None:
+        return tables_in_folder(args.tables, given)
+    missing = [f"--{n}" for n in REQUIRED_TABLES if given[n] is None]
+    if missing:
+        raise ValueError(f"the arguments {', '.join(missing)} are required (or give --tables DIR, the folder of an import)")
+    return given
+
+
 def _read_tables(args: argparse.Namespace, out: Path):
     """The tables, bad rows stopping the run or set aside (then counted on standard output)."""
-    from registration.fleet import read_fleet_tables
-    from registration.fleet.tablefiles.rejects import NoValidPlotsError
+    from registration.io import read_fleet_tables
+    from registration.io.fleet.rejects import NoValidPlotsError
 
+    paths = _table_paths(args)
     try:
-        tables = read_fleet_tables(args.plots, args.navigation, args.sensors, args.platforms, args.reference,
-                                   on_bad_row=args.on_bad_row)
+        tables = read_fleet_tables(paths["plots"], paths["navigation"], paths["sensors"], paths["platforms"],
+                                   paths["reference"], on_bad_row=args.on_bad_row)
     except NoValidPlotsError as exc:
         with staged_outputs(out, "registration fleet register", REGISTER_OUTPUTS) as folder:
             _write_rejected(folder.path, exc.rejected_frame())  # the list of what was wrong is the output

@@ -202,7 +202,7 @@ def write_outputs(out: Path, problem, result, rows: list[dict], inputs: dict, *,
     map.png, residuals.png in ``out``."""
     import pandas as pd
 
-    from registration.recorded.reading.formats import write_frame
+    from registration.io.files.tablefile import write_frame
 
     online = is_online(result)
     frames = [("estimates.csv", pd.DataFrame(rows))] + ([("history.csv", _history_frame(result))] if online else [])

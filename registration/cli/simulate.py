@@ -123,7 +123,7 @@ def _check(args: argparse.Namespace) -> None:
     """Every option checked and the output places prepared before the simulation starts."""
     check_scenario_arguments(args)
     if args.export is not None:
-        from registration.recorded.reading.formats import file_format
+        from registration.io.files.tablefile import file_format
 
         try:
             file_format(args.export)

@@ -2,7 +2,7 @@
 
 A command declares the file names it writes into ``--out`` (a frozenset) and writes them inside
 ``with staged_outputs(out, command, names) as folder:`` into ``folder.path``, a run folder
-``OUT/partial-<pid>-<token>`` of its own (see :mod:`registration.recorded.output.outfolder`). When the
+``OUT/partial-<pid>-<token>`` of its own (see :mod:`registration.io.output.outfolder`). When the
 block ends normally the earlier run's outputs in ``out`` (every one of ``names`` it left, e.g. the
 PNGs of a run with plots when this one has ``--no-plots``) are replaced by the new files; when it
 raises (or is interrupted), the run folder is removed and ``out`` is left exactly as it was (a new
@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING
 from registration.cli.errors import CommandError
 
 if TYPE_CHECKING:  # imported when a command runs: `registration --help` does not load the recorded package
-    from registration.recorded.output.outfolder import RunFolder
+    from registration.io.output.outfolder import RunFolder
 
 __all__ = ["staged_outputs"]
 
@@ -38,7 +38,7 @@ def staged_outputs(out: Path, command: str, names: frozenset) -> Iterator["RunFo
     Leftovers of earlier runs that are gone (``partial-*`` folders, an interrupted publication) are
     cleaned up first. A folder in ``out`` named like one of the outputs (all files) is an error
     (CommandError), never replaced."""
-    from registration.recorded.output.outfolder import discard, new_run_folder, prepare_out, publish
+    from registration.io.output.outfolder import discard, new_run_folder, prepare_out, publish
 
     out = Path(out)
     for name in sorted(names):  # the outputs are files: a folder of that name is the user's, never replaced

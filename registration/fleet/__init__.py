@@ -5,21 +5,19 @@ and range-only sensors), estimated jointly from long-form plot tables.
 Modules: ``result`` (:class:`BatchResult`), ``observability``, ``combinations``, ``corrected``,
 ``plots`` (PNG figures of a result), and the subpackages ``data`` (the input tables, their checks,
 navigation, the state layout, :class:`FleetProblem` built by :func:`build_problem`),
-``tablefiles`` (CSV/Parquet tables in degrees: :func:`read_fleet_tables`, :func:`write_fleet_tables`),
 ``simulation`` (:func:`fleet_scenario`), ``batch`` (target windows, normal equations, the Schur complement,
 Levenberg-Marquardt, covariance, residuals, :func:`solve_batch` in ``batch.solve``), ``online``
 (:class:`FleetFilter`, :func:`register_online`: the same model epoch by epoch as plots arrive) and
 ``association`` (:func:`associate_and_register`: plots without target ids associated across sensors
-jointly with the registration, and the simulated clutter scenarios). See docs/fleet.md,
-docs/fleet-online.md, docs/association.md.
+jointly with the registration, and the simulated clutter scenarios). The table files (CSV/Parquet in
+degrees) are read and written by :mod:`registration.io.fleet`. See docs/fleet.md, docs/fleet-online.md,
+docs/association.md.
 """
 
 from registration.fleet.association.associate import AssociationOptions, AssociationResult, associate_and_register
 from registration.fleet.batch.solve import solve_batch
 from registration.fleet.association.clutter import AssociationScenario, association_scenario, association_scores
 from registration.fleet.batch.covariance import FusedTargets
-from registration.fleet.tablefiles.read import FleetTables, read_fleet_tables
-from registration.fleet.tablefiles.write import write_fleet_tables
 from registration.fleet.online.filter import FleetFilter, OnlineOptions, register_online
 from registration.fleet.online.result import OnlineHistory, OnlineResult
 from registration.fleet.data.problem import Exclusion, FleetProblem, build_problem
@@ -28,7 +26,7 @@ from registration.fleet.simulation.scenario import FleetScenario, fleet_scenario
 from registration.fleet.batch.solver import BatchOptions
 
 __all__ = ["BatchOptions", "BatchResult", "ChiSquareCheck", "Exclusion", "FleetFilter", "FleetProblem", "FleetScenario",
-           "FleetTables", "OnlineHistory", "OnlineOptions", "OnlineResult", "register_online",
-           "FusedTargets", "build_problem", "fleet_scenario", "read_fleet_tables", "solve_batch", "write_fleet_tables"]
+           "OnlineHistory", "OnlineOptions", "OnlineResult", "register_online",
+           "FusedTargets", "build_problem", "fleet_scenario", "solve_batch"]
 __all__ += ["AssociationOptions", "AssociationResult", "AssociationScenario", "associate_and_register",
             "association_scenario", "association_scores"]

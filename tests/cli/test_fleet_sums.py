@@ -12,7 +12,8 @@ import pandas as pd
 import pytest
 
 from registration.cli import main
-from registration.fleet import fleet_scenario, write_fleet_tables
+from registration.fleet import fleet_scenario
+from registration.io import write_fleet_tables
 
 TABLES = ("plots", "navigation", "sensors", "platforms", "reference")
 SUMS = {"A+A-3D", "A+A-ESM", "B+B-3D"}

@@ -1,4 +1,4 @@
-"""Each CSV line's fields counted from the raw bytes (registration.recorded.reading.csvrows): a short or long
+"""Each CSV line's fields counted from the raw bytes (registration.io.files.csvrows): a short or long
 line is flagged with its line number, every other row reads as pandas reads it, whatever the block
 size, the quoting, the line ends and the blank lines."""
 
@@ -15,7 +15,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from registration.recorded.reading.csvrows import SHAPE_COLUMN, RowShape, count_fields, read_csv_blocks
+from registration.io.files.csvrows import SHAPE_COLUMN, RowShape, count_fields, read_csv_blocks
 
 SETTINGS = settings(max_examples=int(__import__("os").environ.get("HYPOTHESIS_EXAMPLES", "60")), deadline=None,
                     suppress_health_check=[HealthCheck.too_slow])

@@ -16,10 +16,10 @@ import pandas as pd
 import pytest
 
 import registration.recorded.run.filtering as filtering
-import registration.recorded.output.outfolder as outfolder
+import registration.io.output.outfolder as outfolder
 from registration.cli import main
 from registration.recorded import OUTPUT_NAMES, RunOptions, load_checkpoint, run_register
-from registration.recorded.output.outfolder import MARKER, RunFolder, prepare_out, publish
+from registration.io.output.outfolder import MARKER, RunFolder, prepare_out, publish
 
 from ._register_data import frame
 from .test_register_async import write_async

@@ -16,7 +16,7 @@ import numpy as np
 from registration.online.contract import IS_ANGLE, STATE_NAMES
 from registration.recorded.reading.columns import ESTIMATE_COLUMNS, POSITION_COLUMNS, REJECTED_COLUMNS
 from registration.recorded.run.options import RunOptions
-from registration.recorded.output.outfolder import RunFolder
+from registration.io.output.outfolder import RunFolder
 from registration.recorded.output.writers import CsvAppender, open_appender
 
 __all__ = ["DifferenceStats", "Outputs", "output_paths", "estimate_frame", "position_frame", "rejected_rows"]

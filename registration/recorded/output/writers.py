@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from registration.recorded.run.checkpoint import CheckpointError
+from registration.io.output.checkpoint import CheckpointError
 
 __all__ = ["CsvAppender", "PartsWriter", "ParquetFileWriter", "open_appender", "write_json_atomic"]
 

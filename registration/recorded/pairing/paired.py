@@ -21,7 +21,7 @@ from pathlib import Path
 from registration.recorded.reading.columns import PAIRED_COLUMNS, REJECTED_COLUMNS, SYNC_COLUMNS, UNPAIRED_COLUMNS
 from registration.recorded.reading.formats import scan_file
 from registration.recorded.run.options import RunOptions
-from registration.recorded.output.outfolder import RunFolder
+from registration.io.output.outfolder import RunFolder
 from registration.recorded.output.outputs import rejected_rows
 from registration.recorded.pairing.pairs import Pairer
 from registration.recorded.run.plan import RunPlan, Table, fingerprint, table_rows

@@ -24,7 +24,7 @@ import numpy as np
 from registration.online.contract import DATA_COLUMNS, IS_ANGLE, SENSOR_COLUMNS, STATE_NAMES
 
 __all__ = [
-    "FileFormatError", "Field", "TIME_FIELD", "NAV_KINDS", "PLOT_KINDS", "sensor_fields", "SYNC_FIELDS", "SYNC_COLUMNS",
+    "Field", "TIME_FIELD", "NAV_KINDS", "PLOT_KINDS", "sensor_fields", "SYNC_FIELDS", "SYNC_COLUMNS",
     "PLOT_FIELDS", "NAV_FIELDS", "ESTIMATE_COLUMNS", "POSITION_COLUMNS", "REJECTED_COLUMNS", "UNPAIRED_COLUMNS",
     "PAIRED_COLUMNS",
 ]
@@ -45,10 +45,6 @@ _MEANING = {
 #: Column kinds of a ship's navigation and of a radar's plot.
 NAV_KINDS = SENSOR_COLUMNS[:6]
 PLOT_KINDS = SENSOR_COLUMNS[6:]
-
-
-class FileFormatError(ValueError):
-    """A file that cannot be read as a table (suffix, CSV syntax, Parquet structure)."""
 
 
 @dataclass(frozen=True)

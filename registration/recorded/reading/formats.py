@@ -1,7 +1,7 @@
 """Reading and writing recorded tables: CSV and Parquet, units converted only here.
 
 The format follows the suffix: ``.csv`` or ``.parquet`` (``.pq``). CSV is read in blocks of whole
-lines (:mod:`registration.recorded.reading.csvrows`, which also counts each line's fields) and Parquet by
+lines (:mod:`registration.io.files.csvrows`, which also counts each line's fields) and Parquet by
 record batches, so a reader never holds more than one block of rows (:func:`iter_frames`); CSV
 outputs are written with pyarrow (shortest round-trip float text, so a value read back is
 bit-for-bit the value written). :func:`to_file_frame` and
@@ -11,7 +11,7 @@ columns of :mod:`registration.recorded.reading.columns` (degrees, metres).
 Errors: :class:`~registration.recorded.reading.columns.FileFormatError` (a ``ValueError``) for a file that
 cannot be read as a table at all (unknown suffix, an empty file, an unterminated quote, not a
 Parquet file, ...); row-level problems are the business of :mod:`registration.recorded.reading.rowcheck`,
-a CSV line with fewer or more fields than the header included (:mod:`registration.recorded.reading.csvrows`).
+a CSV line with fewer or more fields than the header included (:mod:`registration.io.files.csvrows`).
 """
 
 from __future__ import annotations
@@ -22,24 +22,15 @@ from typing import Iterator, Mapping
 
 import numpy as np
 
-from registration.recorded.reading.columns import SYNC_COLUMNS, SYNC_FIELDS, FileFormatError
-from registration.recorded.reading.csvrows import SHAPE_COLUMN, read_csv_blocks
+from registration.io.files.tablefile import FileFormatError, file_format, write_frame
+from registration.recorded.reading.columns import SYNC_COLUMNS, SYNC_FIELDS
+from registration.io.files.csvrows import SHAPE_COLUMN, read_csv_blocks
 from registration.recorded.reading.rowcheck import check_frame, sync_layout
 
 __all__ = [
     "file_format", "to_file_frame", "from_file_frame", "write_table", "write_frame", "read_table", "read_columns",
     "count_rows", "iter_frames", "scan_file",
 ]
-
-
-def file_format(path) -> str:
-    """'csv' or 'parquet' from the file name's suffix."""
-    name = str(path).lower()
-    if name.endswith(".csv"):
-        return "csv"
-    if name.endswith((".parquet", ".pq")):
-        return "parquet"
-    raise FileFormatError(f"{path}: unknown file type; expected a .csv or .parquet file")
 
 
 # --------------------------------------------------------------------------- unit conversion
@@ -86,22 +77,6 @@ def write_table(data: Mapping, path) -> Path:
         path.parent.mkdir(parents=True, exist_ok=True)
     write_frame(frame, path, fmt)
     return path
-
-
-def write_frame(frame, path, fmt: str | None = None) -> None:
-    """Write a DataFrame as CSV (pyarrow: exact float text) or Parquet."""
-    import pyarrow as pa
-
-    fmt = fmt or file_format(path)
-    table = pa.Table.from_pandas(frame, preserve_index=False)
-    if fmt == "csv":
-        import pyarrow.csv as pacsv
-
-        pacsv.write_csv(table, str(path))
-    else:
-        import pyarrow.parquet as pq
-
-        pq.write_table(table, str(path))
 
 
 def read_table(path, *, validate: bool = True) -> dict:
@@ -162,8 +137,8 @@ def iter_frames(path, columns, chunk_rows: int, start_row: int = 0) -> Iterator[
     ``start_row`` and every block boundary is ``start_row + i * chunk_rows``, so a run resumed at a
     block boundary sees the same blocks as an uninterrupted one. Memory: one block (plus pandas'
     or pyarrow's own read buffer). A CSV frame with a line of fewer or more fields than the
-    header also has the column :data:`~registration.recorded.reading.csvrows.SHAPE_COLUMN` (per row None,
-    or its :class:`~registration.recorded.reading.csvrows.RowShape`; NaN in rows of blocks joined to it).
+    header also has the column :data:`~registration.io.files.csvrows.SHAPE_COLUMN` (per row None,
+    or its :class:`~registration.io.files.csvrows.RowShape`; NaN in rows of blocks joined to it).
     Raises :class:`FileFormatError` when the file cannot be parsed.
     """
     import pandas as pd
@@ -208,7 +183,7 @@ def iter_frames(path, columns, chunk_rows: int, start_row: int = 0) -> Iterator[
 
 def _csv_frames(path, wanted: list[str]) -> Iterator[object]:
     """The wanted columns of a CSV file, block by block, with the shape of each row
-    (:data:`~registration.recorded.reading.csvrows.SHAPE_COLUMN`: a line with fewer or more fields than the
+    (:data:`~registration.io.files.csvrows.SHAPE_COLUMN`: a line with fewer or more fields than the
     header is a bad row for :func:`~registration.recorded.reading.rowcheck.check_frame`, not a row whose
     missing cells read as empty or whose extra fields are dropped)."""
     for frame in read_csv_blocks(path):

@@ -10,7 +10,7 @@ Reasons (``code``: meaning):
 
 * ``short_row`` / ``long_row``: the row's CSV line has fewer / more fields than the header (a line
   cut short by a recorder that stopped mid-write, a missing line break); checked first, so the
-  cells a short line lacks are never read as empty (:mod:`registration.recorded.reading.csvrows`);
+  cells a short line lacks are never read as empty (:mod:`registration.io.files.csvrows`);
 * ``missing_column``: the file lacks a required column (every row gets this reason);
 * ``non_numeric``: the cell is not a number (text, a boolean, a date, ...);
 * ``non_finite``: the cell is empty, NaN or infinite;
@@ -41,14 +41,10 @@ from registration.online.contract import (
     LIMITS, N_ROW, PROBLEM_NON_FINITE, PROBLEM_NON_POSITIVE, SENSOR_COLUMNS, SENSOR_ROW, SENSORS, cell_problems,
 )
 from registration.recorded.reading.columns import NAV_KINDS, PLOT_KINDS, SYNC_FIELDS, TIME_FIELD, Field, sensor_fields
-from registration.recorded.reading.csvrows import SHAPE_COLUMN
+from registration.io.files.csvrows import SHAPE_COLUMN
 
-__all__ = ["BadRowError", "Layout", "CheckedBlock", "Rejection", "check_frame", "sync_layout", "plot_layout", "nav_layout", "REASON_CODES"]
+__all__ = ["BadRowError", "Layout", "CheckedBlock", "Rejection", "check_frame", "sync_layout", "plot_layout", "nav_layout"]
 
-REASON_CODES = (
-    "missing_column", "non_numeric", "non_finite", "out_of_range", "non_positive_range",
-    "time_backwards", "time_duplicate", "filter_non_finite", "short_row", "long_row",
-)
 _NON_NUMERIC, _MISSING = 10, 11  # file-level codes beside contract.cell_problems' 1..3
 
 

@@ -16,7 +16,8 @@ import numpy as np
 from registration.online.contract import correct_rows
 from registration.online.filter import OnlineRegistrar
 from registration.online.information import information_at_estimate, target_positions
-from registration.recorded.reading.columns import SYNC_COLUMNS, FileFormatError
+from registration.io.files.tablefile import FileFormatError, NoValidRowsError
+from registration.recorded.reading.columns import SYNC_COLUMNS
 from registration.recorded.reading.formats import iter_frames
 from registration.recorded.run.options import RunOptions
 from registration.recorded.output.outputs import Outputs, estimate_frame, position_frame, rejected_rows
@@ -25,11 +26,7 @@ from registration.recorded.output.plotseries import PLOT_POINTS, PlotSeries
 from registration.recorded.reading.rowcheck import BadRowError, CheckedBlock, Rejection, check_frame, sync_layout
 from registration.recorded.run.runstate import Checkpointer, RunState
 
-__all__ = ["filter_table", "NoValidRowsError"]
-
-
-class NoValidRowsError(ValueError):
-    """Pass 1 accepted no row: every row was rejected (listed in rejected.csv) or nothing was paired."""
+__all__ = ["filter_table"]
 
 
 _NON_FINITE_STEP = "the filter step for this row produced non-finite values (extreme geometry or values)"

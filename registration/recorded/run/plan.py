@@ -3,7 +3,7 @@
 :func:`plan_run` returns a :class:`RunPlan`: the form (one synchronous table, or two plot files
 of the asynchronous form), each input's sha256, the fingerprint (sha256 of the inputs' contents
 and of every option that changes the results), the folder the run writes into
-(:mod:`registration.recorded.output.outfolder`: a new one inside ``--out``, or the one the checkpoint
+(:mod:`registration.io.output.outfolder`: a new one inside ``--out``, or the one the checkpoint
 records) and, when ``options.checkpoint`` exists and was written for the same fingerprint, its
 payload or, for a finished run, its summary.
 """
@@ -15,11 +15,11 @@ import json
 from dataclasses import dataclass
 from pathlib import Path
 
-from registration.recorded.run.checkpoint import CheckpointError, load_checkpoint
-from registration.recorded.reading.columns import FileFormatError
-from registration.recorded.reading.formats import count_rows, file_format, iter_frames, read_columns, scan_file
+from registration.io.output.checkpoint import CheckpointError, load_checkpoint
+from registration.io.files.tablefile import FileFormatError, file_format
+from registration.recorded.reading.formats import count_rows, iter_frames, read_columns, scan_file
 from registration.recorded.run.options import PairingOptions, RunOptions
-from registration.recorded.output.outfolder import RunFolder, mark_in_place, new_run_folder, prepare_out, publish
+from registration.io.output.outfolder import RunFolder, mark_in_place, new_run_folder, prepare_out, publish
 
 __all__ = ["Table", "RunPlan", "plan_run", "fingerprint", "table_rows"]
 

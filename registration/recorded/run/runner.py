@@ -4,7 +4,7 @@ Each stage is a module of its own and hands its result to the next:
 
 1. :func:`~registration.recorded.run.plan.plan_run`: check the inputs and ``--out``, fingerprint the
    inputs, find the checkpoint to resume from, and choose the run's own folder inside ``--out``
-   (:mod:`registration.recorded.output.outfolder`);
+   (:mod:`registration.io.output.outfolder`);
 2. :func:`~registration.recorded.reading.unitcheck.input_warnings`: angle columns that seem to hold
    radians (printed at once, listed in the summary);
 3. :func:`~registration.recorded.pairing.paired.pair_inputs` (two plot files only): the published
@@ -15,7 +15,7 @@ Each stage is a module of its own and hands its result to the next:
 5. :func:`~registration.recorded.output.report.build_summary` (with the consistency gate's figures),
    ``summary.json``, the plots (from the points kept while filtering,
    :mod:`registration.recorded.output.plotseries`), the checkpoint marked ``done``;
-6. :func:`~registration.recorded.output.outfolder.publish`: the run's folder replaces the outputs of an
+6. :func:`~registration.io.output.outfolder.publish`: the run's folder replaces the outputs of an
    earlier run in ``--out``.
 
 A run that fails is not published, except when every row was rejected (``rejected.csv`` says
@@ -26,9 +26,10 @@ from __future__ import annotations
 
 import time
 
-from registration.recorded.run.filtering import NoValidRowsError, filter_table
+from registration.io.files.tablefile import NoValidRowsError
+from registration.recorded.run.filtering import filter_table
 from registration.recorded.run.options import RunOptions
-from registration.recorded.output.outfolder import discard, publish, records_folder
+from registration.io.output.outfolder import discard, publish, records_folder
 from registration.recorded.pairing.paired import pair_inputs
 from registration.recorded.run.plan import RunPlan, plan_run
 from registration.recorded.output.plots import series_from_outputs, write_plots

@@ -17,7 +17,7 @@ import numpy as np
 from registration.online.config import RegistrationConfig
 from registration.online.contract import N_STATE
 from registration.online.filter import OnlineRegistrar
-from registration.recorded.run.checkpoint import load_checkpoint, save_checkpoint
+from registration.io.output.checkpoint import load_checkpoint, save_checkpoint
 from registration.recorded.output.outputs import DifferenceStats, Outputs
 from registration.recorded.output.plotseries import PlotSeries
 

@@ -28,7 +28,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from registration.recorded.run.checkpoint import CheckpointError, fsync_dir, load_checkpoint
+from registration.io.output.checkpoint import CheckpointError, fsync_dir, load_checkpoint
 
 __all__ = ["OUTPUT_NAMES", "MARKER", "OutputFolderError", "RunFolder", "prepare_out", "new_run_folder",
            "mark_in_place", "publish", "discard", "records_folder", "make_folders", "remove_empty_folders"]

@@ -28,8 +28,7 @@ from typing import TYPE_CHECKING, Callable
 
 import numpy as np
 
-from registration.recorded.run.filtering import NoValidRowsError
-from registration.recorded.reading.rowcheck import REASON_CODES
+from registration.io.files.tablefile import REASON_CODES, NoValidRowsError
 
 if TYPE_CHECKING:
     import pandas

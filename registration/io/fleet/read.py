@@ -1,6 +1,6 @@
 """Fleet tables as files: CSV or Parquet in file units (degrees, metres, seconds), converted to the
 long-form tables of :mod:`registration.fleet.data.tables` (SI units, radians); written back by
-:mod:`registration.fleet.tablefiles.write`.
+:mod:`registration.io.fleet.write`.
 
 File columns (one row per item; an empty cell is "not given"):
 
@@ -24,13 +24,13 @@ File columns (one row per item; an empty cell is "not given"):
 
 Every cell problem raises a ValueError naming the file, the row (from 0, the first data row), the
 column and its unit; a CSV line with fewer or more fields than the header is a bad row too
-(``short_row``, ``long_row``; :mod:`registration.fleet.tablefiles.cells`). Rows keep their file order, so
+(``short_row``, ``long_row``; :mod:`registration.io.fleet.cells`). Rows keep their file order, so
 the row numbers of the errors of :func:`~registration.fleet.data.problem.build_problem` are file rows
 too (:meth:`FleetTables.problem` names the file in them). With ``on_bad_row="skip"`` the bad rows
 of the plots and reference files are set aside instead, each with a reason code
-(:mod:`registration.fleet.tablefiles.rejects`). Navigation rows of platforms that carry no sensor are left
+(:mod:`registration.io.fleet.rejects`). Navigation rows of platforms that carry no sensor are left
 out with a note (:attr:`FleetTables.notes`), as are findings that look like radians without
-proof (:mod:`registration.fleet.tablefiles.checks`).
+proof (:mod:`registration.io.fleet.checks`).
 """
 
 from __future__ import annotations
@@ -41,10 +41,10 @@ from pathlib import Path
 
 import numpy as np
 
-from registration.fleet.tablefiles.checks import MIN_UNIT_CHECK_VALUES, channel_columns_check
-from registration.fleet.tablefiles.cells import FILE_COLUMNS, read_file
+from registration.io.fleet.checks import MIN_UNIT_CHECK_VALUES, channel_columns_check
+from registration.io.fleet.cells import FILE_COLUMNS, read_file
 from registration.fleet.data.problem import FleetProblem, build_problem, plot_row_problems
-from registration.fleet.tablefiles.rejects import BadRows, NoValidPlotsError, RejectedRow, check_mode, rejected_frame
+from registration.io.fleet.rejects import BadRows, NoValidPlotsError, RejectedRow, check_mode, rejected_frame
 from registration.fleet.data.tables import DEFAULT_REFERENCE_SIGMA
 
 __all__ = ["FILE_COLUMNS", "FleetTables", "read_fleet_tables",
@@ -208,7 +208,7 @@ def read_fleet_tables(plots, navigation, sensors, platforms=None, reference=None
     target left with no plots too. The navigation, sensors and platforms files define the problem
     (the platforms, the sensors and what they measure), so their problems still raise, here rather
     than in :meth:`FleetTables.problem`, as do file-level problems (a missing or unknown column,
-    radians in a degree column). :class:`~registration.fleet.tablefiles.rejects.NoValidPlotsError` (a
+    radians in a degree column). :class:`~registration.io.fleet.rejects.NoValidPlotsError` (a
     ValueError carrying the rejected rows) when no plot row is left. ``FleetTables.notes``: the
     navigation rows left out (platforms without sensors) and what looks like radians without proof.
     """

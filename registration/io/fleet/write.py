@@ -1,6 +1,6 @@
 """Fleet tables written as files: the long-form tables of :mod:`registration.fleet.data.tables` (SI
-units, radians) as CSV or Parquet in the file units of :mod:`registration.fleet.tablefiles.read` (degrees,
-metres, seconds), so that :func:`~registration.fleet.tablefiles.read.read_fleet_tables` reads them back."""
+units, radians) as CSV or Parquet in the file units of :mod:`registration.io.fleet.read` (degrees,
+metres, seconds), so that :func:`~registration.io.fleet.read.read_fleet_tables` reads them back."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from registration.core.frames import ecef2geodetic
-from registration.fleet.tablefiles.read import FILE_COLUMNS
+from registration.io.fleet.read import FILE_COLUMNS
 
 __all__ = ["write_fleet_tables"]
 
@@ -43,7 +43,7 @@ def write_fleet_tables(folder, plots, navigation, sensors, platforms=None, refer
     ``folder``: ``plots``, ``navigation``, ``sensors``, ``platforms`` (if given) and ``reference``
     (if given; ECEF positions are written as lat/lon/alt) with suffix ``.csv`` or ``.parquet``
     (``fmt``). CSV floats are written as their shortest round-trip text. Returns the paths."""
-    from registration.recorded.reading.formats import write_frame
+    from registration.io.files.tablefile import write_frame
 
     if fmt not in ("csv", "parquet"):
         raise ValueError(f"fmt: expected 'csv' or 'parquet', got {fmt!r}")

@@ -1,8 +1,8 @@
 """One fleet file read: its columns checked cell by cell in file units (degrees, metres, seconds)
 and converted to the columns of :mod:`registration.fleet.data.tables` (SI units, radians), with its bad
-rows (:class:`~registration.fleet.tablefiles.rejects.BadRows`) and what it notes. The files, their columns
-and the rules: :mod:`registration.fleet.tablefiles.read`; the whole-file checks:
-:mod:`registration.fleet.tablefiles.checks`. A CSV line with fewer or more fields than the header is a
+rows (:class:`~registration.io.fleet.rejects.BadRows`) and what it notes. The files, their columns
+and the rules: :mod:`registration.io.fleet.read`; the whole-file checks:
+:mod:`registration.io.fleet.checks`. A CSV line with fewer or more fields than the header is a
 bad row (``short_row``, ``long_row``) before any of its cells is looked at.
 """
 
@@ -14,8 +14,8 @@ from pathlib import Path
 
 import numpy as np
 
-from registration.fleet.tablefiles.checks import attitude_check, radians_check, sigma_notes
-from registration.fleet.tablefiles.rejects import BadRows
+from registration.io.fleet.checks import attitude_check, radians_check, sigma_notes
+from registration.io.fleet.rejects import BadRows
 
 __all__ = ["FILE_COLUMNS", "FileRead", "read_file"]
 
@@ -58,11 +58,11 @@ _POSITIVE = {"range_m", "sigma_range_m", "sigma_bearing_deg", "sigma_elevation_d
 
 def _read_frame(path: Path):
     """A CSV or Parquet file as a DataFrame, id columns as text; a CSV frame with a line of fewer or
-    more fields than the header also has the column SHAPE_COLUMN (:mod:`registration.recorded.reading.csvrows`)."""
+    more fields than the header also has the column SHAPE_COLUMN (:mod:`registration.io.files.csvrows`)."""
     import pandas as pd
 
-    from registration.recorded.reading.csvrows import read_csv_blocks
-    from registration.recorded.reading.formats import file_format
+    from registration.io.files.csvrows import read_csv_blocks
+    from registration.io.files.tablefile import file_format
 
     fmt = file_format(path)
     if not path.is_file():
@@ -142,7 +142,7 @@ def _used_platforms(frame, shapes, platforms: set, path: Path):
 def read_file(name: str, path: Path, skip: bool, platforms: set | None = None) -> FileRead:
     """One file -> :class:`FileRead` (table columns of :mod:`registration.fleet.data.tables`); ``skip``
     False: the first bad cell raises. ``platforms``: for the navigation, the platforms used."""
-    from registration.recorded.reading.csvrows import SHAPE_COLUMN
+    from registration.io.files.csvrows import SHAPE_COLUMN
 
     frame = _read_frame(path)
     shapes = frame.pop(SHAPE_COLUMN) if SHAPE_COLUMN in frame.columns else None
