@@ -1,0 +1,201 @@
+"""``import_nmea``: an NMEA 0183 bridge log with AIS -> the fleet tables of one platform (docs/nmea.md).
+
+The tables are DataFrames in the fleet *file* columns (degrees, metres, seconds; docs/fleet.md,
+"The files"), ready to be written and read back by :func:`registration.fleet.read_fleet_tables`;
+``time_s`` counts from midnight UTC of the log's first day (or of ``date``) in all of them.
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Mapping, Sequence
+
+import numpy as np
+
+from registration.io.nmea.ais import read_ais
+from registration.io.nmea.attitude import PASHR_ANGLES, pashr_subtypes, read_headings, read_pashr
+from registration.io.nmea.clock import fit_clock
+from registration.io.nmea.errors import Rejections
+from registration.io.nmea.fixes import read_fixes
+from registration.io.nmea.lines import SentenceLog, read_log
+from registration.io.nmea.navigation import build_navigation
+from registration.io.nmea.reference import AisSigmas, read_references
+from registration.io.nmea.sensors import TALKER_COLUMN, check_sensors, platform_sensors, read_sensors, talker_map
+from registration.io.nmea.summary import ImportParts, build_summary
+from registration.io.nmea.ttm import read_ttm
+
+if TYPE_CHECKING:
+    import pandas as pd
+
+__all__ = ["NmeaImport", "import_nmea", "USED_TYPES", "PLATFORM_PRIOR_COLUMNS"]
+
+#: The sentence types the reader uses.
+USED_TYPES = ("GGA", "GNS", "RMC", "ZDA", "HDT", "THS", "PASHR", "TTM", "VDM", "VDO")
+#: The platforms file's prior columns (deg; empty: no prior, 0: held fixed).
+PLATFORM_PRIOR_COLUMNS = ("prior_heading_deg", "prior_pitch_deg", "prior_roll_deg")
+
+
+@dataclass
+class NmeaImport:
+    """The fleet tables of one platform from an NMEA log, as DataFrames in the fleet file columns:
+
+    * ``navigation``: ``time_s``, ``platform``, ``lat_deg``, ``lon_deg``, ``alt_m`` (above the
+      ellipsoid), ``heading_deg``, ``pitch_deg``, ``roll_deg`` (one row per attitude sample);
+    * ``plots``: ``time_s``, ``sensor``, ``track`` (the TTM target number, sensor-local),
+      ``range_m``, ``bearing_deg`` (deck bearing);
+    * ``sensors``: the input rows of the platform (``talker`` dropped);
+    * ``platforms``: one row, ``platform`` and the attitude priors (empty: free);
+    * ``reference``: ``time_s``, ``target`` (MMSI), ``lat_deg``, ``lon_deg``, ``alt_m``, ``sigma_m``;
+    * ``rejected``: the lines set aside: ``file``, ``line`` (from 1), ``code``, ``reason``;
+    * ``summary``: a JSON-able dict (docs/nmea.md, "The summary").
+    """
+
+    navigation: pd.DataFrame
+    plots: pd.DataFrame
+    sensors: pd.DataFrame
+    platforms: pd.DataFrame
+    reference: pd.DataFrame
+    rejected: pd.DataFrame
+    summary: dict = field(default_factory=dict)
+
+    @property
+    def tables(self) -> dict[str, pd.DataFrame]:
+        """The five fleet tables by file name (``plots``, ``navigation``, ``sensors``, ``platforms``,
+        ``reference``)."""
+        return {"plots": self.plots, "navigation": self.navigation, "sensors": self.sensors,
+                "platforms": self.platforms, "reference": self.reference}
+
+    def write(self, folder, fmt: str = "csv") -> dict[str, Path]:
+        """Write the tables with rows as ``<name>.csv`` (or ``.parquet``), ``rejected.csv`` and
+        ``import_summary.json`` into ``folder`` (created); a table without rows is not written (a fleet
+        file needs one). Returns name -> path."""
+        if fmt not in ("csv", "parquet"):
+            raise ValueError(f"fmt: expected 'csv' or 'parquet', got {fmt!r}")
+        folder = Path(folder)
+        folder.mkdir(parents=True, exist_ok=True)
+        out = {}
+        for name, frame in self.tables.items():
+            if len(frame):
+                out[name] = folder / f"{name}.{fmt}"
+                frame.to_csv(out[name], index=False) if fmt == "csv" else frame.to_parquet(out[name], index=False)
+        out["rejected"] = folder / "rejected.csv"
+        self.rejected.to_csv(out["rejected"], index=False)
+        out["summary"] = folder / "import_summary.json"
+        out["summary"].write_text(json.dumps(self.summary, indent=2) + "\n")
+        return out
+
+
+def _known_types() -> set:
+    import pynmea2
+
+    return set(pynmea2.TalkerSentence.sentence_types) | set(USED_TYPES)
+
+
+def _sort_types(log: SentenceLog, rejections: Rejections) -> dict:
+    """Sentences of types not used: unknown types set aside (``unknown_type``); types pynmea2 knows
+    counted (returned: type -> count; Ashtech's other $PASHR messages as ``PASHR (not attitude)``)."""
+    import pynmea2
+
+    known, makers = _known_types(), set(pynmea2.ProprietarySentence.sentence_types)
+    kinds, counts = np.unique(log.kind.astype(str), return_counts=True)
+    not_used = {}
+    for kind, n in zip(kinds, counts):
+        if kind in USED_TYPES:
+            continue
+        if kind in known or (kind.startswith("P") and kind[1:4] in makers):
+            not_used[kind] = int(n)
+            continue
+        i = log.where(kind)
+        rejections.add(log.file[i], log.line[i], "unknown_type", f"unknown sentence type {kind!r}")
+    other = pashr_subtypes(log)[1]
+    if other.size:
+        not_used["PASHR (not attitude)"] = int(other.size)
+    return not_used
+
+
+def _sensors_table(sensors: pd.DataFrame | str | Path, platform: str) -> pd.DataFrame:
+    if isinstance(sensors, (str, Path)):
+        table, source = read_sensors(sensors), str(sensors)
+    else:
+        source = getattr(sensors, "attrs", {}).get("source", "sensors")
+        table = check_sensors(sensors, source)
+    return platform_sensors(table, platform, source)
+
+
+def _platforms_table(platform: str, priors: Mapping[str, float] | None) -> pd.DataFrame:
+    import pandas as pd
+
+    priors = dict(priors or {})
+    unknown = sorted(set(priors) - set(PLATFORM_PRIOR_COLUMNS))
+    if unknown:
+        raise ValueError(f"platform_priors: unknown key(s) {unknown}; expected {list(PLATFORM_PRIOR_COLUMNS)} (deg)")
+    row = {"platform": [str(platform)]}
+    for column in PLATFORM_PRIOR_COLUMNS:
+        v = priors.get(column, math.nan)
+        if v is None:
+            v = math.nan
+        if not isinstance(v, (int, float)) or (not math.isnan(v) and v < 0):
+            raise ValueError(f"platform_priors[{column!r}]: expected a prior sigma >= 0 deg (or None, inf: free), "
+                             f"got {v!r}")
+        row[column] = [math.nan if math.isinf(v) else float(v)]
+    return pd.DataFrame(row)
+
+
+def _anchors(fixes: dict, dates, pashr) -> tuple[np.ndarray, np.ndarray]:
+    """(indices, times of day) of the sentences that time the log: fixes, dates and $PASHR."""
+    index = np.concatenate([fixes[k].index for k in ("GGA", "GNS", "RMC")] + [dates.index, pashr.index])
+    tod = np.concatenate([fixes[k].tod for k in ("GGA", "GNS", "RMC")] + [dates.tod, pashr.tod])
+    index, first = np.unique(index, return_index=True)
+    return index, tod[first]
+
+
+def import_nmea(paths: str | Path | Sequence[str | Path], platform: str, sensors: pd.DataFrame | str | Path,
+                date: dt.date | str | None = None, keep_acquiring: bool = False, progress: bool = False, *,
+                platform_priors: Mapping[str, float] | None = None, ais_sigmas: AisSigmas | None = None,
+                pashr_angles: str = "tait-bryan") -> NmeaImport:
+    """Import NMEA 0183 log files (with AIS) as the fleet tables of ``platform`` (docs/nmea.md).
+
+    ``paths``: a log file or a list of them, read in the order given (one log cut into files);
+    ``sensors``: the fleet sensors table as a DataFrame in file columns, or a path to its file,
+    plus an optional ``talker`` column saying which sensor a TTM talker is (with one sensor on the
+    platform and no talker, that sensor); ``date``: ``datetime.date`` or ``'YYYY-MM-DD'``, the UTC
+    date the log starts on when it has no ZDA or RMC, and the origin of ``time_s``;
+    ``keep_acquiring``: keep TTM targets in acquisition (status Q); ``progress``: a tqdm bar;
+    ``platform_priors``: the platform's attitude prior sigmas by platforms file column
+    (``prior_heading_deg``, ``prior_pitch_deg``, ``prior_roll_deg``; deg; missing or None: free);
+    ``ais_sigmas``: the AIS reference sigma model (:class:`AisSigmas`); ``pashr_angles``:
+    ``"tait-bryan"`` or ``"tss"``, the roll convention of ``$PASHR``.
+
+    Bad lines never raise: they are set aside in ``rejected`` with a reason. ValueError for bad
+    arguments and a bad sensors table (naming row, column, unit);
+    :class:`~registration.io.nmea.errors.NmeaImportError` (a ValueError) for a log without any
+    valid position or heading.
+    """
+    if pashr_angles not in PASHR_ANGLES:
+        raise ValueError(f"pashr_angles: expected one of {PASHR_ANGLES}, got {pashr_angles!r}")
+    platform = str(platform)
+    sensor_rows = _sensors_table(sensors, platform)
+    talkers, only = talker_map(sensor_rows)
+    platforms = _platforms_table(platform, platform_priors)
+    sigmas = ais_sigmas if ais_sigmas is not None else AisSigmas()
+    paths = [paths] if isinstance(paths, (str, Path)) else list(paths)
+    if not paths:
+        raise ValueError("paths: no log file given")
+    rejections = Rejections([str(Path(p)) for p in paths])
+    log = read_log(paths, rejections, progress)
+    not_used = _sort_types(log, rejections)
+    fixes, dates = read_fixes(log, rejections)
+    attitudes = {"PASHR": read_pashr(log, rejections, pashr_angles), "HDT": read_headings(log, "HDT", rejections),
+                 "THS": read_headings(log, "THS", rejections)}
+    clock = fit_clock(*_anchors(fixes, dates, attitudes["PASHR"]), dates, date, log.received)
+    nav = build_navigation(log, clock, fixes, attitudes, rejections)
+    plots = read_ttm(log, clock, nav, talkers, only, keep_acquiring, rejections)
+    messages = read_ais(log, rejections)
+    refs = read_references(log, messages, clock, nav.sea_level, sigmas, rejections)
+    summary = build_summary(ImportParts(log, clock, nav, plots, refs, rejections, not_used, len(messages)))
+    return NmeaImport(nav.frame(platform), plots.frame(), sensor_rows.drop(columns=[TALKER_COLUMN], errors="ignore"),
+                      platforms, refs.frame(), rejections.frame(), summary)
