@@ -27,6 +27,7 @@ COMMANDS = {
     "schema": "schema",
     "register": "register",
     "fleet": "fleet",
+    "import": "importing",
 }
 
 

@@ -1,0 +1,155 @@
+"""``registration import asterix|nmea``: a recording in a real format becomes the fleet tables.
+
+Each importer (:mod:`registration.io.asterix`, :mod:`registration.io.nmea`) turns its inputs into
+the fleet tables in their file form (degrees, metres; the columns of docs/fleet.md), a table of
+the records it set aside and a summary. This command writes them into ``--out`` by the standard
+names, so that ``registration fleet register --tables OUT`` registers them next:
+
+- ``plots``, ``navigation``, ``sensors``, ``platforms``, ``reference`` (``.csv`` or ``.parquet``,
+  ``--format``; a table the recording gave no row for is not written);
+- ``rejected.csv``: what was set aside and why (file, where in it, reason);
+- ``import_summary.json``: counts, time span, and what the format adds (scan periods, vessels).
+
+The folder is published whole: a failed or interrupted import leaves ``--out`` as it was.
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime as dt
+import json
+import sys
+import textwrap
+from pathlib import Path
+
+from registration.cli.errors import CommandError, EXIT_CODES_EPILOG, prepare_out, writing
+from registration.cli.options import HelpFormatter
+from registration.cli.staging import staged_outputs
+
+__all__ = ["HELP", "add_arguments", "run", "IMPORT_OUTPUTS"]
+
+HELP = "import a recording (ASTERIX, NMEA 0183 with AIS) as the fleet tables that 'fleet register --tables' reads"
+ASTERIX_HELP = ("ASTERIX radar plots (CAT048), service messages (CAT034) and ADS-B reports (CAT021) from raw "
+                "recordings or pcap/pcapng captures, gzip-compressed or not, into plots, navigation (one row per "
+                "site), sensors, platforms and reference tables")
+NMEA_HELP = ("an NMEA 0183 bridge log (GGA/RMC/GNS, ZDA, HDT/THS, $PASHR, TTM, !AIVDM) into the platform's "
+             "navigation, the ARPA radar's plots (with sensor-local track ids), the AIS vessels as the reference "
+             "table, and the sensors and platforms tables")
+
+TABLES = ("plots", "navigation", "sensors", "platforms", "reference")
+#: Every file an import may write into --out (both formats, so that a new run replaces the other's tables).
+IMPORT_OUTPUTS = frozenset({f"{t}.{s}" for t in TABLES for s in ("csv", "parquet")}
+                           | {"rejected.csv", "import_summary.json"})
+
+
+def _date(text: str) -> dt.date:
+    try:
+        return dt.date.fromisoformat(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a date YYYY-MM-DD (UTC), got {text!r}") from None
+
+
+def _prior(text: str) -> float:
+    if text.strip().lower() in ("free", "inf", ""):
+        return float("inf")
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a sigma in degrees >= 0 or 'free', got {text!r}") from None
+    if not value >= 0:
+        raise argparse.ArgumentTypeError(f"expected a sigma in degrees >= 0 or 'free', got {text!r}")
+    return value
+
+
+def _common(p: argparse.ArgumentParser) -> None:
+    p.add_argument("inputs", nargs="+", type=Path, metavar="INPUT", help="the recording's files, in time order")
+    p.add_argument("--out", type=Path, required=True, metavar="DIR",
+                   help="folder for the tables, rejected.csv and import_summary.json (created if missing)")
+    p.add_argument("--date", type=_date, default=None, metavar="YYYY-MM-DD",
+                   help="UTC date of the recording's first time of day (default: from the recording, else "
+                        "times count from its first midnight)")
+    p.add_argument("--format", choices=("csv", "parquet"), default="csv", help="file format of the tables")
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    from registration.cli import CommandParser  # the parser class that names the full command
+
+    sub = p.add_subparsers(dest="format_name", required=True, metavar="FORMAT", parser_class=CommandParser)
+    ast = sub.add_parser("asterix", help=ASTERIX_HELP, description=textwrap.fill(ASTERIX_HELP),
+                         epilog=EXIT_CODES_EPILOG, formatter_class=HelpFormatter)
+    _common(ast)
+    ast.add_argument("--sites", type=Path, required=True, metavar="FILE",
+                     help="sensor, sac, sic, lat_deg, lon_deg, alt_m, sigma_range_m, sigma_bearing_deg; optional "
+                          "prior columns of the sensors file and prior_heading_deg, prior_pitch_deg, prior_roll_deg "
+                          "(default 0: a surveyed site)")
+    nmea = sub.add_parser("nmea", help=NMEA_HELP, description=textwrap.fill(NMEA_HELP), epilog=EXIT_CODES_EPILOG,
+                          formatter_class=HelpFormatter)
+    _common(nmea)
+    nmea.add_argument("--platform", required=True, metavar="NAME", help="the own ship's platform name")
+    nmea.add_argument("--sensors", type=Path, required=True, metavar="FILE",
+                      help="the fleet sensors file of the own ship's sensors, with an optional talker column "
+                           "(e.g. RA) naming the TTM talker of each")
+    nmea.add_argument("--keep-acquiring", action="store_true", help="keep TTM rows of status Q (acquiring)")
+    for angle in ("heading", "pitch", "roll"):
+        nmea.add_argument(f"--prior-{angle}-deg", type=_prior, default=0.0, metavar="SIGMA",
+                          help=f"prior sigma of the own ship's {angle} error written to platforms.csv, deg; 0 "
+                               "(default) holds it at 0, 'free' estimates it without prior" +
+                               (" (alone with one radar it is not separable from the radar's bearing bias)"
+                                if angle == "heading" else ""))
+
+
+def _run_importer(args: argparse.Namespace):
+    """(tables: name -> DataFrame in file form, rejected DataFrame, summary dict) of the chosen format."""
+    progress = sys.stderr.isatty()  # a bar on a terminal only
+    if args.format_name == "asterix":
+        from registration.io.asterix import import_asterix, read_sites
+
+        sites = read_sites(args.sites)
+        result = import_asterix(args.inputs, sites, date=args.date, progress=progress)
+    else:
+        from registration.io.nmea import import_nmea, read_sensors
+
+        sensors = read_sensors(args.sensors)
+        priors = {f"prior_{a}_deg": getattr(args, f"prior_{a}_deg") for a in ("heading", "pitch", "roll")}
+        result = import_nmea(args.inputs, args.platform, sensors, date=args.date, keep_acquiring=args.keep_acquiring,
+                             progress=progress, platform_priors=priors)
+    return result.tables, result.rejected, result.summary
+
+
+def _write(folder: Path, tables: dict, rejected, summary: dict, fmt: str) -> list[Path]:
+    from registration.io.files.tablefile import write_frame
+
+    written = []
+    for name in TABLES:
+        frame = tables.get(name)
+        if frame is None or len(frame) == 0:
+            continue
+        path = folder / f"{name}.{fmt}"
+        with writing(path):
+            write_frame(frame, path, fmt)
+        written.append(path)
+    path = folder / "rejected.csv"
+    with writing(path):
+        write_frame(rejected, path, "csv")
+    written.append(path)
+    path = folder / "import_summary.json"
+    with writing(path):
+        path.write_text(json.dumps(summary, indent=2, default=str) + "\n")
+    written.append(path)
+    return written
+
+
+def run(args: argparse.Namespace) -> int:
+    """Import, print the counts, write the folder whole; exit 2 when the input is no recording at all."""
+    for path in args.inputs:
+        if not path.is_file():
+            raise CommandError(f"{path}: no such file")
+    out = prepare_out(args.out)
+    tables, rejected, summary = _run_importer(args)
+    counts = ", ".join(f"{len(tables[n])} {n} rows" for n in TABLES if tables.get(n) is not None)
+    print(f"imported {counts}; set aside {len(rejected)} records (rejected.csv)")
+    with staged_outputs(out, f"registration import {args.format_name}", IMPORT_OUTPUTS) as folder:
+        written = _write(folder.path, tables, rejected, summary, args.format)
+    print("wrote " + ", ".join(str(folder.final(p)) for p in written))
+    print(f"next: registration fleet register --tables {out} --out DIR")
+    return 0
