@@ -1,0 +1,27 @@
+"""ASTERIX recordings in, fleet tables out (docs/asterix.md).
+
+:func:`import_asterix` reads raw ASTERIX recordings (data blocks end to end) and pcap/pcapng
+captures of UDP datagrams, gzip-compressed or not, told apart by their content. CAT048 target
+reports become plots, CAT021 ADS-B reports reference positions, CAT034 service messages give each
+radar's scan period and a clock check; SITES (:func:`read_sites`) maps SAC/SIC to sensors and
+gives the sites' positions and noise. Bad input inside a file is set aside with its file, byte
+offset and reason, never raised; a file that is not ASTERIX or a capture raises
+:class:`AsterixImportError`.
+
+Modules: containers (``capture``: file, gzip, format; ``pcap``: packets; ``netstack``: UDP
+datagrams; ``blocks``: data blocks), records (``uap``: the UAP of each edition; ``walker``: the
+vectorised record walk; ``scalar``: the one-record reference walk and its explanations;
+``fields``), fields per category (``decode48``, ``decode34``, ``decode21``), rules and rows
+(``plots48``, ``adsb21``, ``verdicts``, ``timeofday``, ``service``, ``assemble``), tables
+(``sites``, ``tables``, ``summary``), the entry points (``reader``: one file decoded;
+``importer``: the import), ``errors``.
+"""
+
+from registration.io.asterix.errors import REASONS, AsterixImportError
+from registration.io.asterix.importer import AsterixImport, import_asterix
+from registration.io.asterix.reader import DecodedFile, decode_file
+from registration.io.asterix.sites import check_sites, read_sites
+from registration.io.asterix.uap import DEFAULT_EDITIONS, SUPPORTED_EDITIONS
+
+__all__ = ["AsterixImport", "AsterixImportError", "DEFAULT_EDITIONS", "DecodedFile", "REASONS", "SUPPORTED_EDITIONS",
+           "check_sites", "decode_file", "import_asterix", "read_sites"]

@@ -1,0 +1,111 @@
+"""The data blocks of a file: in each segment (a raw recording whole, or one UDP payload) the data
+blocks end to end, each a category octet, a 16-bit length counting the 3-octet header, and
+records.
+
+A header whose length is below 3 or runs past its segment is set aside (``bad_block_length``,
+``truncated_block``). In a UDP datagram the rest of the datagram goes with it. In a raw recording
+the reader looks for the next offset where a data block of a category already seen (or a known
+category) starts and is followed by another such block or by the end of the file; the bytes up to
+it are set aside with the header's reason, which names the offset resumed at. If there is none,
+the rest of the file is set aside: a recording cut off in its last block loses that block only.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Collection
+
+import numpy as np
+
+from registration.io.asterix.capture import ASTERIX_CATEGORIES, Capture
+from registration.io.asterix.errors import Rejections
+
+__all__ = ["Blocks", "find_blocks"]
+
+#: Octets searched at a time when resynchronising a raw recording.
+_WINDOW = 1 << 20
+
+
+@dataclass
+class Blocks:
+    """Per data block (N,), in file order: ``start`` (offset of its header), ``end`` (one past its
+    last octet), ``category``, ``segment`` (index into the capture's segments)."""
+
+    start: np.ndarray
+    end: np.ndarray
+    category: np.ndarray
+    segment: np.ndarray
+
+
+def _header(mv: memoryview, p: int) -> tuple[int, int]:
+    return mv[p], (mv[p + 1] << 8) | mv[p + 2]
+
+
+def _plausible(mv: memoryview, q: int, n: int, cats: Collection[int]) -> bool:
+    """A block of a category in ``cats`` at q, inside the file, followed by the end or by another."""
+    cat, length = _header(mv, q)
+    if cat not in cats or length < 3 or q + length > n:
+        return False
+    r = q + length
+    if r == n:
+        return True
+    if r + 3 > n:
+        return False
+    cat2, length2 = _header(mv, r)
+    return cat2 in cats and length2 >= 3 and r + length2 <= n
+
+
+def _resync(buf: np.ndarray, mv: memoryview, p: int, n: int, cats: Collection[int]) -> int | None:
+    """The first offset after p where a plausible data block starts, or None."""
+    lookup = np.zeros(256, dtype=bool)
+    lookup[list(cats)] = True
+    for lo in range(p + 1, n - 2, _WINDOW):
+        hi = min(lo + _WINDOW, n - 2)
+        for q in np.flatnonzero(lookup[buf[lo:hi]]) + lo:
+            if _plausible(mv, int(q), n, cats):
+                return int(q)
+    return None
+
+
+def _segment_blocks(mv: memoryview, buf: np.ndarray, s: int, e: int, raw: bool, seen: set, out: list, bad: list) -> None:
+    """Append (start, end, category) of the blocks in [s, e) to ``out``; problems to ``bad`` as
+    (offset, code, reason)."""
+    p = s
+    while p < e:
+        if p + 3 > e:
+            bad.append((p, "truncated_block", f"{e - p} bytes left at the end of the {'file' if raw else 'datagram'}, "
+                                              "too few for a data block header"))
+            return
+        cat, length = _header(mv, p)
+        if 3 <= length <= e - p:
+            out.append((p, p + length, cat))
+            seen.add(cat)
+            p += length
+            continue
+        code = "bad_block_length" if length < 3 else "truncated_block"
+        what = (f"data block of category {cat} with length {length} (below the 3-byte header)" if length < 3 else
+                f"data block of category {cat} declares {length} bytes, {e - p} left in the "
+                f"{'file' if raw else 'datagram'}")
+        q = _resync(buf, mv, p, e, seen or ASTERIX_CATEGORIES) if raw else None
+        if q is None:
+            bad.append((p, code, f"{what}; the remaining {e - p} bytes are skipped"))
+            return
+        bad.append((p, code, f"{what}; {q - p} bytes skipped to the next valid data block at offset {q}"))
+        p = q
+
+
+def find_blocks(cap: Capture, rejections: Rejections) -> Blocks:
+    """The data blocks of ``cap``; bad headers are set aside in ``rejections``."""
+    mv = memoryview(cap.buf)
+    seg = cap.segments
+    raw = cap.kind == "raw"
+    rows, seg_of, seen = [], [], set()
+    for k in range(seg.start.size):
+        out, bad = [], []
+        _segment_blocks(mv, cap.buf, int(seg.start[k]), int(seg.end[k]), raw, seen, out, bad)
+        rows += out
+        seg_of += [k] * len(out)
+        for offset, code, reason in bad:
+            rejections.add(cap.path, offset, int(seg.packet[k]), 0, code, reason)
+    a = np.array(rows, dtype=np.int64).reshape(-1, 3)
+    return Blocks(a[:, 0], a[:, 1], a[:, 2], np.array(seg_of, dtype=np.int64))

@@ -1,0 +1,124 @@
+"""One input file read and recognised by its content, not its name: gzip (1f 8b, decompressed
+first, a truncated or corrupt stream keeping what came out), pcap, pcapng, or a raw ASTERIX
+recording (data blocks end to end: category, 16-bit length counting the 3-octet header, records).
+
+A file that is none of these raises :class:`~registration.io.asterix.errors.AsterixImportError`
+naming the file. A raw recording is recognised when its first data block is complete, of a known
+ASTERIX category, and the file is not text; a cut-off tail or corrupt stretches later in the file
+are set aside by :mod:`registration.io.asterix.blocks`, not refused.
+"""
+
+from __future__ import annotations
+
+import zlib
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Iterable
+
+import numpy as np
+
+from registration.io.asterix.errors import AsterixImportError, Rejections
+from registration.io.asterix.fields import PAD
+from registration.io.asterix.netstack import Segments, udp_segments
+from registration.io.asterix.pcap import PCAP_MAGICS, PCAPNG_MAGIC, pcap_packets, pcapng_packets
+
+__all__ = ["Capture", "read_capture", "ASTERIX_CATEGORIES"]
+
+#: Categories assigned by EUROCONTROL (the ASTERIX category list), used to recognise a raw file.
+ASTERIX_CATEGORIES = frozenset((1, 2, 3, 4, 7, 8, 9, 10, 11, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 30, 31, 32,
+                                34, 48, 62, 63, 65, 150, 151, 152, 205, 238, 240, 247, 252))
+
+
+@dataclass
+class Capture:
+    """A file read: ``buf`` its (decompressed) octets followed by zero padding, ``size`` the number of
+    octets without padding, ``kind`` 'raw', 'pcap' or 'pcapng', ``segments`` the stretches of
+    ``buf`` holding ASTERIX data blocks (the whole file, or each UDP payload), ``counts`` of packets
+    (captures) and ``notes`` about the file."""
+
+    path: str
+    buf: np.ndarray
+    size: int
+    kind: str
+    gzip: bool
+    segments: Segments
+    counts: dict = field(default_factory=dict)
+    notes: list = field(default_factory=list)
+
+
+def _gunzip(raw: bytes, path: str, notes: list) -> bytes:
+    """All members of a gzip stream decompressed, fed 1 MiB at a time so that a truncated or corrupt
+    stream keeps what came out before the fault."""
+    out, pos, step = [], 0, 1 << 20
+    while raw[pos:pos + 2] == b"\x1f\x8b":
+        d = zlib.decompressobj(wbits=31)
+        try:
+            while not d.eof and pos < len(raw):
+                out.append(d.decompress(raw[pos:pos + step]))
+                pos = min(pos + step, len(raw))
+        except zlib.error as exc:
+            notes.append(f"{path}: the gzip stream is corrupt after {sum(map(len, out))} decompressed bytes ({exc}); "
+                         "the rest of the file is lost")
+            break
+        if not d.eof:
+            out.append(d.flush())
+            notes.append(f"{path}: the gzip stream is truncated after {sum(map(len, out))} decompressed bytes; "
+                         "what came before is imported")
+            break
+        pos -= len(d.unused_data)
+    data = b"".join(out)
+    if not data:
+        raise AsterixImportError(f"{path}: a gzip file that decompresses to nothing (corrupt or empty)")
+    return data
+
+
+def _looks_like_text(data: bytes) -> bool:
+    head = data[:512]
+    return all(32 <= c < 127 or c in (9, 10, 13) for c in head)
+
+
+def _raw_check(data: bytes, path: str) -> None:
+    """Raise unless ``data`` starts with a complete data block of a known category (and is not text)."""
+    n = len(data)
+    if n < 3:
+        raise AsterixImportError(f"{path}: {n} bytes, too short for an ASTERIX data block or a capture")
+    cat, length = data[0], int.from_bytes(data[1:3], "big")
+    what = "neither a pcap/pcapng capture nor an ASTERIX recording"
+    if _looks_like_text(data):
+        raise AsterixImportError(f"{path}: a text file, {what}")
+    if cat not in ASTERIX_CATEGORIES:
+        raise AsterixImportError(f"{path}: {what} (the first byte, {cat}, is no ASTERIX category)")
+    if length < 3 or length > n:
+        raise AsterixImportError(f"{path}: {what} (the first data block, category {cat}, declares {length} bytes; "
+                                 f"the file has {n})")
+
+
+def read_capture(path: str | Path, rejections: Rejections, ports: Iterable[int] | None = None) -> Capture:
+    """Read ``path`` and find its data blocks' segments; packets cut short are set aside in
+    ``rejections``. ``ports``: UDP destination ports to keep (None: all)."""
+    name = str(path)
+    try:
+        raw = Path(path).read_bytes()
+    except OSError as exc:
+        raise AsterixImportError(f"{name}: cannot read the file: {exc.strerror or exc}") from exc
+    notes: list = []
+    zipped = raw[:2] == b"\x1f\x8b"
+    data = _gunzip(raw, name, notes) if zipped else raw
+    del raw
+    if not data:
+        raise AsterixImportError(f"{name}: an empty file, neither a pcap/pcapng capture nor an ASTERIX recording")
+    buf = np.zeros(len(data) + PAD, dtype=np.uint8)
+    buf[:len(data)] = np.frombuffer(data, dtype=np.uint8)
+    magic = bytes(data[:4])
+    counts: dict = {}
+    if magic in PCAP_MAGICS or magic == PCAPNG_MAGIC:
+        kind = "pcap" if magic in PCAP_MAGICS else "pcapng"
+        packets = (pcap_packets if kind == "pcap" else pcapng_packets)(data, name, rejections)
+        segments, counts = udp_segments(buf, packets, ports)
+        if packets.number.size and np.isfinite(packets.time).any():
+            counts["first_packet_time"] = float(np.nanmin(packets.time))
+    else:
+        _raw_check(data, name)
+        kind = "raw"
+        segments = Segments(np.array([0]), np.array([len(data)]), np.array([0]), np.array([np.nan]))
+    return Capture(name, buf, len(data), kind, zipped, segments, counts, notes)

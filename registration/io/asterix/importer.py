@@ -1,0 +1,200 @@
+"""``import_asterix``: ASTERIX recordings and captures -> the fleet tables in file form (degrees
+and metres), the records set aside, and a summary (docs/asterix.md)."""
+
+from __future__ import annotations
+
+import datetime as dt
+from collections import Counter
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Iterable, Mapping, Sequence
+
+import numpy as np
+
+from registration.io.asterix.assemble import FileRows, SiteLookup, assemble_file
+from registration.io.asterix.errors import Rejections
+from registration.io.asterix.reader import decode_file
+from registration.io.asterix.sites import check_sites, read_sites
+from registration.io.asterix.summary import file_summary, sensor_summary, sources_not_in_sites, time_summary
+from registration.io.asterix.tables import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
+from registration.io.asterix.timeofday import Unwrapper, capture_day
+from registration.io.asterix.uap import check_editions
+
+if TYPE_CHECKING:
+    import pandas as pd
+
+__all__ = ["AsterixImport", "import_asterix", "REFERENCE_TARGETS"]
+
+#: Which ADS-B targets go into the reference table: those named by a plot, or all.
+REFERENCE_TARGETS = ("plotted", "all")
+
+
+@dataclass
+class AsterixImport:
+    """What :func:`import_asterix` gives: the fleet tables as DataFrames in their file form
+    (docs/fleet.md: ``plots``, ``navigation``, ``sensors``, ``platforms``, ``reference``), the
+    records set aside (``rejected``: ``file``, ``offset``, ``packet``, ``category``,
+    ``reason_code``, ``reason``) and the ``summary`` (a JSON-able dict)."""
+
+    plots: pd.DataFrame
+    navigation: pd.DataFrame
+    sensors: pd.DataFrame
+    platforms: pd.DataFrame
+    reference: pd.DataFrame
+    rejected: pd.DataFrame
+    summary: dict
+
+    @property
+    def tables(self) -> dict:
+        """File name stem -> DataFrame of the five fleet tables."""
+        return {"plots": self.plots, "navigation": self.navigation, "sensors": self.sensors,
+                "platforms": self.platforms, "reference": self.reference}
+
+
+class _Progress:
+    """A tqdm bar over the files' sizes on disk, advanced by the octets of the blocks walked, scaled
+    by on-disk over decompressed size (gzip files), or nothing."""
+
+    def __init__(self, paths: list, enabled: bool) -> None:
+        self.bar, self.on_disk, self.scale, self.done = None, 0, 1.0, 0
+        if enabled:
+            from tqdm.auto import tqdm
+
+            total = sum(Path(p).stat().st_size for p in paths if Path(p).is_file())
+            self.bar = tqdm(total=total, unit="B", unit_scale=True, desc="ASTERIX")
+
+    def start(self, path: str | Path) -> None:
+        self.on_disk = Path(path).stat().st_size if Path(path).is_file() else 0
+
+    def file_size(self, octets: int) -> None:
+        self.scale = self.on_disk / max(octets, 1)
+
+    def update(self, octets: int) -> None:
+        if self.bar is not None:
+            self.bar.update(octets * self.scale)
+
+    def finish_file(self) -> None:
+        if self.bar is not None:
+            self.done += self.on_disk
+            self.bar.n = self.done
+            self.bar.refresh()
+
+    def close(self) -> None:
+        if self.bar is not None:
+            self.bar.close()
+
+
+def _as_date(date: dt.date | str | None) -> dt.date | None:
+    if date is None or isinstance(date, dt.date):
+        return date.date() if isinstance(date, dt.datetime) else date
+    try:
+        return dt.date.fromisoformat(str(date))
+    except ValueError:
+        raise ValueError(f"date: {date!r} is not a date; give a datetime.date or 'YYYY-MM-DD'") from None
+
+
+def _concat(parts: list, columns: tuple) -> dict:
+    return {c: np.concatenate([p[c] for p in parts if p]) if any(parts) else np.zeros(0) for c in columns}
+
+
+def _frame(columns: dict, order_by: str = "time_s") -> pd.DataFrame:
+    import pandas as pd
+
+    frame = pd.DataFrame(columns)
+    if len(frame):
+        frame = frame.sort_values(order_by, kind="stable").reset_index(drop=True)
+    return frame
+
+
+def _reference(rows: list, plot_targets: set, which: str) -> tuple[dict, dict]:
+    ref = _concat([r.reference for r in rows], REFERENCE_COLUMNS)
+    targets = ref["target"].astype(str) if ref["target"].size else np.zeros(0, dtype=str)
+    plotted = np.isin(targets, list(plot_targets)) if targets.size else np.zeros(0, dtype=bool)
+    info = {"reports": int(targets.size), "targets": int(np.unique(targets).size),
+            "targets_without_plots": int(np.unique(targets[~plotted]).size),
+            "reports_of_targets_without_plots": int((~plotted).sum()),
+            "kept": which}
+    if which == "plotted":
+        ref = {c: v[plotted] for c, v in ref.items()}
+    return ref, info
+
+
+def import_asterix(paths: str | Path | Sequence[str | Path], sites: pd.DataFrame | str | Path,
+                   date: dt.date | str | None = None, progress: bool = False, *,
+                   editions: Mapping[int, str] | None = None, ports: Iterable[int] | None = None,
+                   reference_targets: str = "plotted") -> AsterixImport:
+    """Import ASTERIX recordings (raw data blocks, pcap, pcapng; gzip or not; told apart by content).
+
+    ``paths``: one path or a list, read in order as one stream (time of day carried across files).
+    ``sites``: the SITES table (DataFrame, or a path read with
+    :func:`~registration.io.asterix.sites.read_sites`). ``date``: the UTC day (datetime.date or
+    'YYYY-MM-DD') that ``time_s`` counts from; None: the first capture's packet date, else the
+    recording's first day (the summary says which). ``progress``: a tqdm bar. ``editions``:
+    category -> edition (default the latest of each, e.g. ``{21: "0.26"}`` for an old ADS-B
+    feed). ``ports``: UDP destination ports to read from captures (None: all).
+    ``reference_targets``: 'plotted' (default) keeps the ADS-B reports of targets that some plot
+    names (the fleet reader refuses reference targets without plots), 'all' keeps all.
+
+    Raises :class:`~registration.io.asterix.errors.AsterixImportError` (a ValueError) naming the
+    file for a file that is neither ASTERIX nor a capture, ValueError for bad arguments or SITES;
+    anything bad inside a file is set aside in ``rejected``.
+    """
+    paths = [paths] if isinstance(paths, (str, Path)) else list(paths)
+    if not paths:
+        raise ValueError("paths: no file given")
+    if reference_targets not in REFERENCE_TARGETS:
+        raise ValueError(f"reference_targets: {reference_targets!r}; expected one of {REFERENCE_TARGETS}")
+    sites = read_sites(sites) if isinstance(sites, (str, Path)) else check_sites(sites, "sites")
+    editions = check_editions(editions)
+    date = _as_date(date)
+    rejections, bar = Rejections(), _Progress(paths, progress)
+    decoded = []
+    try:
+        for path in paths:
+            bar.start(path)
+            decoded.append(decode_file(path, editions, rejections, ports, bar if bar.bar is not None else None))
+            decoded[-1].capture.buf = np.zeros(0, dtype=np.uint8)  # fields decoded: the file's bytes can go
+            bar.finish_file()
+    finally:
+        bar.close()
+    return _build(decoded, sites, date, editions, rejections, reference_targets)
+
+
+def _build(decoded: list, sites: pd.DataFrame, date: dt.date | None, editions: dict, rejections: Rejections,
+           which: str) -> AsterixImport:
+    first_capture = next((d.capture.counts["first_packet_time"] for d in decoded
+                          if "first_packet_time" in d.capture.counts), None)
+    source = "argument" if date is not None else "capture" if first_capture is not None else "recording"
+    reference_day = date if date is not None else capture_day(first_capture) if first_capture is not None else None
+    unwrapper = Unwrapper(reference_day)
+    names = sites["sensor"].astype(str).to_numpy()
+    lookup = SiteLookup(sites["sac"].to_numpy(), sites["sic"].to_numpy())
+    rows: list[FileRows] = [assemble_file(d, unwrapper, lookup, names, editions, rejections) for d in decoded]
+    plots = _concat([r.plots for r in rows], (*PLOT_COLUMNS, "kind", "capture_lag_s"))
+    service = _concat([r.service for r in rows], ("sensor", "msg_type", "time_s", "azimuth_deg", "rotation_s"))
+    reference, ref_info = _reference(rows, set(plots["target"].astype(str)) - {""} if plots["target"].size else set(),
+                                     which)
+    decoded_counts = {}
+    for r in rows:
+        for cat, counts in r.decoded.items():
+            decoded_counts[cat] = decoded_counts.get(cat, 0) + counts
+    times = np.concatenate([r.times for r in rows]) if rows else np.zeros(0)
+    span = times[np.isfinite(times)]
+    tables = site_tables(sites, float(span.min()) if span.size else 0.0)
+    unknown, adsb = sum((r.unknown for r in rows), Counter()), sum((r.adsb_sources for r in rows), Counter())
+    ref_info["sources"] = [{"sac": s, "sic": i, "reports": n} for (s, i), n in sorted(adsb.items())]
+    summary = {
+        "files": [file_summary(d, d.blocks_by_category) for d in decoded],
+        "editions": {f"{c:03d}": e for c, e in sorted(editions.items())},
+        "time": time_summary(reference_day, source, times, unwrapper.placed_by_capture),
+        "plots": {"total": int(plots["time_s"].size), "mode_s": int((plots["kind"] == "mode_s").sum()),
+                  "mode_a": int((plots["kind"] == "mode_a").sum()), "without_id": int((plots["kind"] == "none").sum())},
+        "sensors": sensor_summary(sites, plots, service, decoded_counts),
+        "sac_sic_not_in_sites": sources_not_in_sites(unknown),
+        "reference": ref_info,
+        "rejected": {"total": rejections.count(), "by_reason": rejections.by_code()},
+    }
+    plot_frame = _frame({c: plots[c] for c in PLOT_COLUMNS})
+    plot_frame["target"] = plot_frame["target"].astype(str)
+    return AsterixImport(plot_frame, tables["navigation"], tables["sensors"], tables["platforms"],
+                         _frame(reference), rejections.frame(), summary)

@@ -1,0 +1,132 @@
+"""One file decoded: its data blocks found (:mod:`registration.io.asterix.blocks`), the records of
+CAT048, CAT034 and CAT021 walked (:mod:`registration.io.asterix.walker`) in the editions chosen
+and their fields read (``decode048``, ``decode034``, ``decode021``). Blocks of other categories
+and records that cannot be walked are set aside with their file offsets.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Iterable, Mapping
+
+import numpy as np
+
+from registration.io.asterix.decode21 import decode021, wanted as wanted021
+from registration.io.asterix.decode34 import WANTED as WANTED034, decode034
+from registration.io.asterix.decode48 import WANTED as WANTED048, decode048
+from registration.io.asterix.blocks import Blocks, find_blocks
+from registration.io.asterix.capture import Capture, read_capture
+from registration.io.asterix.errors import Rejections
+from registration.io.asterix.scalar import explain_record
+from registration.io.asterix.uap import check_editions, uap_for
+from registration.io.asterix.walker import Records, walk_records
+
+__all__ = ["CategoryRecords", "DecodedFile", "decode_file", "CHUNK_BYTES"]
+
+#: Data blocks are walked in chunks of about this many octets (progress and memory).
+CHUNK_BYTES = 8 << 20
+
+
+@dataclass
+class CategoryRecords:
+    """The records of one category in one file, (R,) each: ``fields`` (raw fields of the
+    category's decoder), ``offset`` (of the record's FSPEC in the file), ``packet`` (number from 1,
+    0 for a raw file) and ``capture_time`` (UTC s since 1970, NaN for a raw file)."""
+
+    fields: dict
+    offset: np.ndarray
+    packet: np.ndarray
+    capture_time: np.ndarray
+
+    @property
+    def size(self) -> int:
+        return int(self.offset.size)
+
+
+@dataclass
+class DecodedFile:
+    """A file decoded: the capture read (``capture``), per category (48, 34, 21) its records, the
+    data blocks per category seen (all categories, decoded or not)."""
+
+    capture: Capture
+    records: dict
+    blocks_by_category: dict = field(default_factory=dict)
+
+
+def _decode(cat: int, edition: str, buf: np.ndarray, rec: Records) -> dict:
+    if cat == 48:
+        return decode048(buf, rec)
+    if cat == 34:
+        return decode034(buf, rec)
+    return decode021(buf, rec, edition)
+
+
+def _wanted(cat: int, edition: str) -> tuple:
+    return {48: WANTED048, 34: WANTED034}.get(cat) or wanted021(edition)
+
+
+def _chunks(sizes: np.ndarray) -> list[slice]:
+    """Consecutive slices of blocks of about :data:`CHUNK_BYTES` octets each."""
+    edges = np.searchsorted(np.cumsum(sizes), np.arange(CHUNK_BYTES, sizes.sum() + CHUNK_BYTES, CHUNK_BYTES))
+    bounds = np.unique(np.concatenate([[0], np.minimum(edges + 1, sizes.size)]))
+    return [slice(int(a), int(b)) for a, b in zip(bounds[:-1], bounds[1:])]
+
+
+def _walk_category(cap: Capture, blocks: Blocks, sel: np.ndarray, cat: int, edition: str, rejections: Rejections,
+                   progress: Any) -> CategoryRecords:
+    uap = uap_for(cat, edition)
+    wanted = _wanted(cat, edition)
+    parts = []
+    mv = memoryview(cap.buf)
+    for chunk in _chunks(blocks.end[sel] - blocks.start[sel]):
+        idx = sel[chunk]
+        rec = walk_records(cap.buf, blocks.start[idx], blocks.end[idx], uap, wanted)
+        for start, b in zip(rec.bad_start.tolist(), rec.bad_block.tolist()):
+            code, reason = explain_record(mv, start, int(blocks.end[idx[b]]), uap)
+            rest = int(blocks.end[idx[b]]) - start
+            seg = int(blocks.segment[idx[b]])
+            rejections.add(cap.path, start, int(cap.segments.packet[seg]), cat, code,
+                           f"CAT{cat:03d} record (edition {edition}): {reason}; the rest of the data block "
+                           f"({rest} bytes) is skipped")
+        seg = blocks.segment[idx[rec.block]]
+        parts.append((_decode(cat, edition, cap.buf, rec), rec.start, cap.segments.packet[seg], cap.segments.time[seg]))
+        if progress is not None:
+            progress.update(int((blocks.end[idx] - blocks.start[idx]).sum()))
+    fields = {k: np.concatenate([p[0][k] for p in parts]) for k in parts[0][0]} if parts else {}
+    cat_ = (lambda i: np.concatenate([p[i] for p in parts])) if parts else (lambda i: np.zeros(0))
+    return CategoryRecords(fields, cat_(1).astype(np.int64), cat_(2).astype(np.int64), cat_(3).astype(np.float64))
+
+
+def decode_file(path: str | Path, editions: Mapping[int, str] | None = None, rejections: Rejections | None = None,
+                ports: Iterable[int] | None = None, progress: Any = None) -> DecodedFile:
+    """Decode the CAT048, CAT034 and CAT021 records of one file (raw, pcap or pcapng, gzip or not).
+
+    ``editions``: category -> edition (default :data:`~registration.io.asterix.uap.DEFAULT_EDITIONS`);
+    ``rejections``: where what is set aside goes (a new one if None); ``ports``: UDP destination
+    ports to keep from a capture (None: all); ``progress``: an object whose ``update(octets)`` is
+    called with the octets of the blocks walked (a tqdm bar, say) and, if it has one,
+    ``file_size(octets)`` with the file's (decompressed) size once read. Raises
+    :class:`~registration.io.asterix.errors.AsterixImportError` for a file that is neither ASTERIX
+    nor a capture; anything bad inside is set aside.
+    """
+    editions = check_editions(editions)
+    rejections = Rejections() if rejections is None else rejections
+    cap = read_capture(path, rejections, ports)
+    if progress is not None and hasattr(progress, "file_size"):
+        progress.file_size(cap.size)
+    blocks = find_blocks(cap, rejections)
+    cats, counts = np.unique(blocks.category, return_counts=True)
+    records = {}
+    for cat in (48, 34, 21):
+        sel = np.flatnonzero(blocks.category == cat)
+        records[cat] = _walk_category(cap, blocks, sel, cat, editions[cat], rejections, progress)
+    other = np.flatnonzero(~np.isin(blocks.category, (48, 34, 21)))
+    if other.size:
+        rejections.add(cap.path, blocks.start[other], cap.segments.packet[blocks.segment[other]], blocks.category[other],
+                       "unknown_category", np.array([f"data block of category {c} ({e - s} bytes), not decoded"
+                                                     for c, s, e in zip(blocks.category[other], blocks.start[other],
+                                                                        blocks.end[other])], dtype=object))
+        if progress is not None:
+            progress.update(int((blocks.end[other] - blocks.start[other]).sum()))
+    return DecodedFile(cap, records, {int(c): int(n) for c, n in zip(cats, counts)})

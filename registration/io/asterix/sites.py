@@ -1,0 +1,149 @@
+"""SITES.csv: which radar each SAC/SIC is, where it stands and how noisy it is.
+
+One row per sensor, columns (units in the names, degrees and metres as in the fleet files):
+
+| column | meaning | accepted |
+|---|---|---|
+| ``sensor`` | the sensor's id in the fleet tables (also its platform's) | text, unique, not empty |
+| ``sac``, ``sic`` | the System Area and Identification Codes of its ASTERIX data source (I048/010, I034/010) | integers 0-255, the pair unique |
+| ``lat_deg``, ``lon_deg`` | WGS-84 latitude, longitude of the antenna | [-90, 90], [-360, 360] deg |
+| ``alt_m`` | antenna height above the WGS-84 ellipsoid (not above mean sea level) | [-12000, 1e6] m |
+| ``sigma_range_m``, ``sigma_bearing_deg`` | plot noise, one sigma | > 0 m; (0, 20] deg |
+
+Optional (empty cell: no prior; ``inf``: no prior; 0: held fixed), passed on to the fleet
+sensors file: ``prior_range_bias_m``, ``prior_bearing_bias_deg``, ``prior_range_gain`` (at most
+0.1), ``prior_time_bias_s``, ``prior_position_m``; to the platforms file: ``prior_heading_deg``,
+``prior_pitch_deg``, ``prior_roll_deg`` (default 0: a surveyed site's attitude is held fixed).
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+if TYPE_CHECKING:
+    import pandas as pd
+
+__all__ = ["SITE_COLUMNS", "SENSOR_PRIORS", "PLATFORM_PRIORS", "read_sites", "check_sites"]
+
+#: Column -> (unit, low, high, low excluded, required).
+SITE_COLUMNS = {
+    "sensor": ("id", None, None, False, True),
+    "sac": ("integer", 0, 255, False, True),
+    "sic": ("integer", 0, 255, False, True),
+    "lat_deg": ("deg", -90.0, 90.0, False, True),
+    "lon_deg": ("deg", -360.0, 360.0, False, True),
+    "alt_m": ("m", -12000.0, 1e6, False, True),
+    "sigma_range_m": ("m", 0.0, 1e6, True, True),
+    "sigma_bearing_deg": ("deg", 0.0, 20.0, True, True),
+    "prior_range_bias_m": ("m", 0.0, math.inf, False, False),
+    "prior_bearing_bias_deg": ("deg", 0.0, math.inf, False, False),
+    "prior_range_gain": ("dimensionless", 0.0, 0.1, False, False),
+    "prior_time_bias_s": ("s", 0.0, math.inf, False, False),
+    "prior_position_m": ("m", 0.0, math.inf, False, False),
+    "prior_heading_deg": ("deg", 0.0, math.inf, False, False),
+    "prior_pitch_deg": ("deg", 0.0, math.inf, False, False),
+    "prior_roll_deg": ("deg", 0.0, math.inf, False, False),
+}
+#: Prior columns passed on to the fleet sensors file.
+SENSOR_PRIORS = ("prior_range_bias_m", "prior_bearing_bias_deg", "prior_range_gain", "prior_time_bias_s",
+                 "prior_position_m")
+#: Prior columns of the fleet platforms file (0 when SITES does not give them).
+PLATFORM_PRIORS = ("prior_heading_deg", "prior_pitch_deg", "prior_roll_deg")
+
+
+def read_sites(path: str | Path) -> pd.DataFrame:
+    """Read and check SITES.csv (see the module docstring) into a DataFrame: ``sensor`` text,
+    ``sac``, ``sic`` integers, the other columns floats (NaN: empty optional cell). ValueError
+    naming the file, the row (from 0, the first data row), the column and its unit."""
+    import pandas as pd
+
+    path = Path(path)
+    try:
+        with open(path, newline="", encoding="utf-8-sig") as f:
+            lines = [row for row in csv.reader(f)]
+    except (OSError, UnicodeDecodeError, csv.Error) as exc:
+        raise ValueError(f"{path}: cannot read it as CSV: {exc}") from exc
+    lines = [row for row in lines if any(cell.strip() for cell in row)]
+    if not lines:
+        raise ValueError(f"{path}: an empty file; expected a header and one row per sensor "
+                         f"({', '.join(c for c, v in SITE_COLUMNS.items() if v[4])})")
+    header = [c.strip() for c in lines[0]]
+    for r, row in enumerate(lines[1:]):
+        if len(row) != len(header):
+            raise ValueError(f"{path}: row {r}: {len(row)} fields, the header {len(header)} "
+                             f"({'cut short' if len(row) < len(header) else 'an extra field'}?)")
+    frame = pd.DataFrame([[c.strip() for c in row] for row in lines[1:]], columns=header, dtype=object)
+    return check_sites(frame, str(path))
+
+
+def _number(source: str, r: int, column: str, cell: object) -> float:
+    unit, low, high, strict, required = SITE_COLUMNS[column]
+    text = "" if cell is None or (isinstance(cell, float) and math.isnan(cell)) else str(cell).strip()
+    where = f"{source}: row {r}, column {column!r}"
+    if text == "":
+        if required:
+            raise ValueError(f"{where}: empty; a number ({unit}) is required")
+        return math.nan
+    try:
+        value = float(text)
+    except ValueError:
+        raise ValueError(f"{where}: {text!r} is not a number ({unit})") from None
+    if unit == "integer":
+        if not value.is_integer() or not low <= value <= high:
+            raise ValueError(f"{where}: {text!r} is not an integer in [0, 255]")
+        return value
+    if math.isnan(value) or (math.isinf(value) and high != math.inf):
+        raise ValueError(f"{where}: {text!r} is not a finite number ({unit})")
+    if value < low or value > high or (strict and value == low):
+        span = f"{'(' if strict else '['}{low:g}, {high:g}]"
+        raise ValueError(f"{where}: {value:g} {unit} is outside {span} {unit}")
+    return value
+
+
+def check_sites(frame: pd.DataFrame, source: str = "sites") -> pd.DataFrame:
+    """Check a SITES table (a DataFrame with the columns of the module docstring, cells as text or
+    numbers) and return it typed: ``sensor`` str, ``sac``, ``sic`` int, the others float. ValueError
+    naming ``source``, the row (from 0), the column and its unit."""
+    import pandas as pd
+
+    columns = [str(c).strip() for c in frame.columns]
+    unknown = [c for c in columns if c not in SITE_COLUMNS]
+    if unknown:
+        raise ValueError(f"{source}: unknown column(s) {unknown}; the columns are {list(SITE_COLUMNS)}")
+    missing = [c for c, v in SITE_COLUMNS.items() if v[4] and c not in columns]
+    if missing:
+        raise ValueError(f"{source}: missing column(s) {missing} (required: "
+                         f"{[c for c, v in SITE_COLUMNS.items() if v[4]]})")
+    if len(frame) == 0:
+        raise ValueError(f"{source}: no data rows (the file holds only a header)")
+    frame = frame.set_axis(columns, axis=1)
+    out = {}
+    for column in columns:
+        cells = frame[column].tolist()
+        if column == "sensor":
+            names = ["" if c is None or (isinstance(c, float) and math.isnan(c)) else str(c).strip() for c in cells]
+            for r, name in enumerate(names):
+                if not name:
+                    raise ValueError(f"{source}: row {r}, column 'sensor': empty; every site needs a sensor id")
+            out[column] = names
+        else:
+            out[column] = [_number(source, r, column, c) for r, c in enumerate(cells)]
+    _unique(source, out["sensor"], "sensor", "sensor")
+    _unique(source, [f"{int(a)}/{int(b)}" for a, b in zip(out["sac"], out["sic"])], "sic", "SAC/SIC")
+    typed = pd.DataFrame({c: np.asarray(v, dtype=np.int64 if c in ("sac", "sic") else None) for c, v in out.items()})
+    typed["sensor"] = typed["sensor"].astype(str)
+    return typed
+
+
+def _unique(source: str, values: list, column: str, what: str) -> None:
+    seen = {}
+    for r, v in enumerate(values):
+        if v in seen:
+            raise ValueError(f"{source}: row {r}, column {column!r}: {what} {v} is also in row {seen[v]}; "
+                             "each must be unique")
+        seen[v] = r

@@ -1,0 +1,1 @@
+"""Tests of the ASTERIX reader (registration.io.asterix); fixtures encoded with libasterix."""
