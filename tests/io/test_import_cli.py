@@ -1,0 +1,109 @@
+"""`registration import asterix|nmea`: the folder an import writes, its identity across forms of one
+recording, bad input (exit 2, --out as it was), and the chain into `fleet register --tables`."""
+
+from __future__ import annotations
+
+import json
+
+import pandas as pd
+import pytest
+
+from registration.cli import main
+
+TABLES = ("plots", "navigation", "sensors", "platforms", "reference")
+
+
+@pytest.fixture(scope="module")
+def asterix_files(tmp_path_factory):
+    pytest.importorskip("asterix")  # libasterix encodes the recording (the test extra)
+    from tests.io.asterix.scenario import sites_frame, standard_recording
+
+    folder = tmp_path_factory.mktemp("asterix")
+    files = dict(standard_recording().write(folder))
+    sites = folder / "sites.csv"
+    sites_frame().to_csv(sites, index=False)
+    return files, sites
+
+
+@pytest.fixture(scope="module")
+def bridge_log(tmp_path_factory):
+    from tests.io.nmea.bridgelog import simulate_bridge_log
+
+    folder = tmp_path_factory.mktemp("nmea")
+    log = simulate_bridge_log()
+    return log, log.write(folder / "bridge.log"), log.write_sensors(folder / "sensors.csv")
+
+
+def test_raw_and_pcap_import_to_identical_folders(asterix_files, tmp_path, capsys):
+    files, sites = asterix_files
+    for form in ("raw", "pcap", "pcapng"):
+        assert main(["import", "asterix", str(files[form]), "--sites", str(sites), "--out", str(tmp_path / form)]) == 0
+    assert "next: registration fleet register --tables" in capsys.readouterr().out
+    for name in TABLES:
+        raw = (tmp_path / "raw" / f"{name}.csv").read_bytes()
+        assert raw == (tmp_path / "pcap" / f"{name}.csv").read_bytes() == (tmp_path / "pcapng" / f"{name}.csv").read_bytes()
+    summary = json.loads((tmp_path / "raw" / "import_summary.json").read_text())
+    assert summary  # a JSON object
+    rejected = pd.read_csv(tmp_path / "pcap" / "rejected.csv")
+    assert len(rejected) > 0 and {"file", "reason"} <= set(rejected.columns)
+
+
+def test_parquet_format_and_a_rerun_replaces_the_other_format(asterix_files, tmp_path):
+    files, sites = asterix_files
+    out = tmp_path / "imp"
+    assert main(["import", "asterix", str(files["raw"]), "--sites", str(sites), "--out", str(out)]) == 0
+    assert main(["import", "asterix", str(files["raw"]), "--sites", str(sites), "--out", str(out),
+                 "--format", "parquet"]) == 0
+    assert not list(out.glob("*.csv")) or {p.name for p in out.glob("*.csv")} == {"rejected.csv"}
+    plots = pd.read_parquet(out / "plots.parquet")
+    assert len(plots) > 0 and {"time_s", "sensor", "range_m", "bearing_deg"} <= set(plots.columns)
+
+
+def test_a_file_that_is_no_recording_exits_2_and_leaves_out_as_it_was(asterix_files, tmp_path, capsys):
+    files, sites = asterix_files
+    out = tmp_path / "imp"
+    assert main(["import", "asterix", str(files["raw"]), "--sites", str(sites), "--out", str(out)]) == 0
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    capsys.readouterr()
+    assert main(["import", "asterix", str(sites), "--sites", str(sites), "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("registration import asterix: error:") and str(sites) in err and err.count("\n") == 1
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+    assert main(["import", "asterix", str(tmp_path / "missing.ast"), "--sites", str(sites), "--out", str(out)]) == 2
+
+
+def test_nmea_import_chains_into_fleet_register(bridge_log, tmp_path):
+    log, path, sensors = bridge_log
+    out = tmp_path / "imp"
+    assert main(["import", "nmea", str(path), "--platform", "OWN", "--sensors", str(sensors), "--out", str(out)]) == 0
+    assert {f"{t}.csv" for t in TABLES} <= {p.name for p in out.iterdir()}
+    platforms = pd.read_csv(out / "platforms.csv")
+    assert (platforms[["prior_heading_deg", "prior_pitch_deg", "prior_roll_deg"]] == 0).all(axis=None)
+    assert main(["import", "nmea", str(path), "--platform", "OWN", "--sensors", str(sensors), "--out",
+                 str(tmp_path / "free"), "--prior-heading-deg", "free"]) == 0
+    assert pd.read_csv(tmp_path / "free" / "platforms.csv")["prior_heading_deg"].isna().all()
+    # until plots with sensor-local tracks are associated, tie the tracks to their vessels by the truth
+    plots = pd.read_csv(out / "plots.csv", dtype={"track": str})
+    plots = plots[plots["track"].isin(log.track_mmsi)]
+    plots = plots.assign(target=plots["track"].map(log.track_mmsi)).drop(columns="track")
+    plots.to_csv(tmp_path / "plots_ids.csv", index=False)
+    reg = tmp_path / "reg"
+    assert main(["fleet", "register", "--tables", str(out), "--plots", str(tmp_path / "plots_ids.csv"), "--out", str(reg),
+                 "--no-plots"]) == 0
+    est = pd.read_csv(reg / "estimates.csv").set_index(["object", "state"])
+    truth = log.errors
+    for state, scale in (("range_bias", 1.0), ("bearing_bias", 57.29577951308232), ("time_bias", 1.0)):
+        row = est.loc[("RADAR", state)]
+        assert abs(row["estimate"] - truth[f"RADAR:{state}"] * scale) < 3.5 * row["sigma"], state
+
+
+def test_nmea_log_without_heading_exits_2(bridge_log, tmp_path, capsys):
+    log, path, sensors = bridge_log
+    lines = [ln for ln in path.read_text().splitlines() if not ln.startswith(("$PASHR", "$HEHDT", "$GPHDT", "$HETHS"))]
+    bad = tmp_path / "noheading.log"
+    bad.write_text("\n".join(lines) + "\n")
+    assert main(["import", "nmea", str(bad), "--platform", "OWN", "--sensors", str(sensors),
+                 "--out", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err
+    assert "heading" in err and err.count("\n") == 1
+    assert not (tmp_path / "o").exists() or not any((tmp_path / "o").iterdir())
