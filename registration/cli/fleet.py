@@ -38,6 +38,11 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     add_out(sim, "fleet-simulate", "the input tables, estimates.csv, summary.json and the PNG plots")
     add_no_plots(sim)
     sim.add_argument("--format", choices=("csv", "parquet"), default="csv", help="file format of the tables written")
+    sim.add_argument("--duration-s", type=float, default=300.0, metavar="S",
+                     help="length of the simulated recording, s (targets leaving a sensor's coverage are not plotted)")
+    sim.add_argument("--targets", type=int, default=None, metavar="N",
+                     help="N random targets circling in the area, the first a reference target (default: the built-in "
+                          "five)")
     errors = sim.add_argument_group("extended sensor errors (default: none, and not modelled)")
     errors.add_argument("--range-gain-ppm", type=float, default=None, metavar="PPM",
                         help="give every sensor with range a range gain of +-PPM (random signs), estimated without prior")
@@ -158,7 +163,11 @@ def run_simulate(args: argparse.Namespace) -> int:
     """Simulate, write the tables, read them back and register what was written (so `fleet register`
     on these files gives the same numbers)."""
     from registration.cli.fleet_output import estimate_rows, gate, print_report, write_outputs
+    from dataclasses import replace
+
     from registration.fleet import fleet_scenario
+    from registration.fleet.simulation.scenario import DEFAULT_FLEET
+    from registration.fleet.simulation.tracks import random_targets
     from registration.io import read_fleet_tables, write_fleet_tables
 
     if args.seed < 0:
@@ -169,8 +178,14 @@ def run_simulate(args: argparse.Namespace) -> int:
                           ("--position-error-m", args.position_error_m)):
         if value is not None and not np.isfinite(value):
             raise ValueError(f"{option}: expected a finite number, got {value}")
+    if not (10.0 < args.duration_s < float("inf")):
+        raise ValueError(f"--duration-s: expected a length > 10 s, got {args.duration_s}")
+    if args.targets is not None and args.targets < 1:
+        raise ValueError(f"--targets: expected a number of targets >= 1, got {args.targets}")
+    config = DEFAULT_FLEET if args.targets is None else replace(
+        DEFAULT_FLEET, targets=random_targets(args.targets, args.seed), reference_target="T1")
     out = prepare_out(args.out)
-    s = fleet_scenario(args.seed, **extended)
+    s = fleet_scenario(args.seed, duration_s=args.duration_s, config=config, **extended)
     with staged_outputs(out, "registration fleet simulate", SIMULATE_OUTPUTS) as folder:
         with writing(folder.path):
             tables_written = write_fleet_tables(folder.path, s.plots, s.navigation, s.sensors, s.platforms,

@@ -18,6 +18,8 @@ import numpy as np
 from registration import _codegen
 from registration.core.angles import wrap_angle
 from registration.fleet.data.problem import FleetProblem, build_problem
+from registration.core.frames import ecef2geodetic
+from registration.fleet.simulation.coverage import coverage_for, visible
 from registration.fleet.simulation.tracks import Circle, Line, ShipTrack, enu2ecef_points
 
 __all__ = ["DEFAULT_FLEET", "FleetConfig", "FleetScenario", "fleet_scenario", "SHIPS", "SITE", "SENSORS", "TARGETS",
@@ -196,9 +198,18 @@ def _sensor_plots(config: FleetConfig, sid: str, duration_s: float, truth: dict,
     measured = plot + noise_scale * rng.normal(size=plot.shape) * np.nan_to_num(sigma)
     measured[:, ~np.isfinite(sigma)] = np.nan
     measured[:, 1] = wrap_angle(measured[:, 1])
-    return {"time": np.tile(times, n_t), "sensor": np.full(times.size * n_t, sid),
-            "target": np.repeat(np.array(list(config.targets)), times.size),
-            "range": measured[:, 0], "bearing": measured[:, 1], "elevation": measured[:, 2]}
+    seen_plots = _in_coverage(sid, sigma, p, nav, lever)
+    return {"time": np.tile(times, n_t)[seen_plots], "sensor": np.full(times.size * n_t, sid)[seen_plots],
+            "target": np.repeat(np.array(list(config.targets)), times.size)[seen_plots],
+            "range": measured[seen_plots, 0], "bearing": measured[seen_plots, 1], "elevation": measured[seen_plots, 2]}
+
+
+def _in_coverage(sid: str, sigma: np.ndarray, p_ecef: np.ndarray, nav: np.ndarray, lever: np.ndarray) -> np.ndarray:
+    """Which plots the sensor reports (:mod:`registration.fleet.simulation.coverage`): judged at the
+    true geometry, without biases (the true navigation ``nav``, target ECEF ``p_ecef``)."""
+    true_plot = _codegen.get("fleet_residual")(p_ecef, *nav.T, np.zeros(3), np.zeros(3), lever, 0.0, 0.0, 0.0)[2]
+    h_target = ecef2geodetic(p_ecef)[2] if p_ecef.size else np.zeros(0)
+    return visible(coverage_for(sigma), true_plot[:, 0], true_plot[:, 2], nav[:, 2] + lever[2], h_target)
 
 
 def _tables(config: FleetConfig, noise_scale: float, extended: dict) -> tuple[dict, dict]:

@@ -12,7 +12,7 @@ from registration import _codegen
 from registration.core.angles import wrap_angle
 from registration.core.motion import ShipMotion
 
-__all__ = ["ShipTrack", "Circle", "Line", "enu2ecef_points"]
+__all__ = ["ShipTrack", "Circle", "Line", "enu2ecef_points", "random_targets"]
 
 
 def enu2ecef_points(centre, p_enu: np.ndarray) -> np.ndarray:
@@ -97,3 +97,17 @@ class Line:
     def enu(self, t: np.ndarray) -> np.ndarray:
         return np.stack([self.east + self.speed * t * np.sin(self.course), self.north + self.speed * t * np.cos(self.course),
                          np.full(np.shape(t), self.z)], axis=-1)
+
+
+def random_targets(n: int, seed: int = 0, *, half_width: float = 40e3) -> dict:
+    """``n`` targets ``T1`` ... ``Tn`` circling inside the square of ``half_width`` m about the centre,
+    so that they stay in the sensors' coverage for any duration: centres uniform in the square,
+    radii 3-20 km, speeds 100-250 m/s, altitudes 1-10 km (ENU up), start angles uniform."""
+    if not (isinstance(n, (int, np.integer)) and n >= 1):
+        raise ValueError(f"n: expected a number of targets >= 1, got {n!r}")
+    rng = np.random.default_rng(seed)
+    east, north = rng.uniform(-half_width, half_width, (2, n))
+    radius, speed = rng.uniform(3e3, 20e3, n), rng.uniform(100.0, 250.0, n)
+    z, phase = rng.uniform(1e3, 10e3, n), rng.uniform(0.0, 2.0 * np.pi, n)
+    return {f"T{k + 1}": Circle(float(east[k]), float(north[k]), float(radius[k]), float(speed[k]), float(z[k]),
+                                float(phase[k])) for k in range(n)}
