@@ -28,7 +28,7 @@ from numpy.polynomial import legendre
 
 from registration.fleet.data.problem import FleetProblem
 
-__all__ = ["Blocks", "make_blocks", "legendre_basis", "legendre_basis_rate"]
+__all__ = ["Blocks", "make_blocks", "legendre_basis", "legendre_basis_rate", "target_spans", "window_grid", "window_of"]
 
 #: Two reference/plot times closer than this (s) are the same instant (window_s = 0).
 SAME_INSTANT_S = 1e-6
@@ -112,21 +112,39 @@ class Blocks:
         return basis * mask, rate * mask
 
 
-def _window_keys(target, time, ref_target, ref_time, n_targets: int, window_s: float):
-    """Window key of each plot and reference (-1: reference outside its target's plot span), and
-    per target the first time t0 (s), window length (s) and first key."""
+def target_spans(target: np.ndarray, time: np.ndarray, n_targets: int) -> tuple[np.ndarray, np.ndarray]:
+    """(first, last) plot time (s) of each of ``n_targets`` targets (inf, -inf for a target without plots)."""
     t0 = np.full(n_targets, np.inf)
     t1 = np.full(n_targets, -np.inf)
     np.minimum.at(t0, target, time)
     np.maximum.at(t1, target, time)
+    return t0, t1
+
+
+def window_grid(t0: np.ndarray, t1: np.ndarray, window_s: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Per target with plots from ``t0`` to ``t1`` (s): (number of windows, window length (s), first
+    window key): the span cut into equal windows of at most ``window_s`` s."""
     span = t1 - t0
     count = np.maximum(1, np.ceil(span / window_s - 1e-9)).astype(np.int64)
     length = np.where(span > 0, span / count, 1.0)
     offset = np.concatenate([[0], np.cumsum(count)[:-1]])
+    return count, length, offset
+
+
+def window_of(t0: np.ndarray, count: np.ndarray, length: np.ndarray, target: np.ndarray, time: np.ndarray) -> np.ndarray:
+    """(M,) index of the window (0 .. count - 1 of its target) that time ``time`` (s) of target ``target`` falls in."""
+    return np.clip(np.floor((time - t0[target]) / length[target]), 0, count[target] - 1).astype(np.int64)
+
+
+def _window_keys(target, time, ref_target, ref_time, n_targets: int, window_s: float, span=None):
+    """Window key of each plot and reference (-1: reference outside its target's plot span), and
+    per target the first time t0 (s), window length (s) and first key. ``span``: (t0, t1) per
+    target if given (the whole archive's, for a partition of it), else those of these plots."""
+    t0, t1 = target_spans(target, time, n_targets) if span is None else span
+    count, length, offset = window_grid(t0, t1, window_s)
 
     def keys(tg, t):
-        w = np.clip(np.floor((t - t0[tg]) / length[tg]), 0, count[tg] - 1).astype(np.int64)
-        return offset[tg] + w
+        return offset[tg] + window_of(t0, count, length, tg, t)
 
     inside = (ref_time >= t0[ref_target] - SAME_INSTANT_S) & (ref_time <= t1[ref_target] + SAME_INSTANT_S)
     return keys(target, time), np.where(inside, keys(ref_target, ref_time), -1), t0, length, offset
@@ -143,7 +161,7 @@ def _instant_keys(target, time, ref_target, ref_time):
     return key[: time.size], key[time.size:]
 
 
-def _block_geometry(problem: FleetProblem, window_s: float, degree: int):
+def _block_geometry(problem: FleetProblem, window_s: float, degree: int, span=None):
     """Block of each plot and reference (-1: none), and per block: target, centre, half-width, degree."""
     target, time = problem.target, problem.time
     ref_target, ref_time = problem.ref_target, problem.references.time
@@ -151,7 +169,7 @@ def _block_geometry(problem: FleetProblem, window_s: float, degree: int):
         key, ref_key = _instant_keys(target, time, ref_target, ref_time)
     else:
         key, ref_key, t0, length, offset = _window_keys(target, time, ref_target, ref_time,
-                                                        len(problem.target_ids), window_s)
+                                                        len(problem.target_ids), window_s, span)
     uniq, block = np.unique(key, return_inverse=True)
     pos = np.clip(np.searchsorted(uniq, ref_key), 0, uniq.size - 1)
     ref_block = np.where(uniq[pos] == ref_key, pos, -1)
@@ -196,9 +214,12 @@ def _chunks(group_start: np.ndarray, n: int):
     return size, slot, chunk_group_start
 
 
-def make_blocks(problem: FleetProblem, window_s: float, degree: int) -> Blocks:
-    """The block structure of ``problem`` for windows of ``window_s`` s and polynomials of ``degree``."""
-    block, ref_block, b_target, centre, half, b_degree = _block_geometry(problem, window_s, degree)
+def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) -> Blocks:
+    """The block structure of ``problem`` for windows of ``window_s`` s and polynomials of ``degree``.
+    ``span``: (first, last) time (s) per target of ``problem.target_ids`` to cut the windows from
+    (default: the problem's own plots; a partition of an archive gives the archive's, so that its
+    windows are the archive's)."""
+    block, ref_block, b_target, centre, half, b_degree = _block_geometry(problem, window_s, degree, span)
     n_blocks = centre.size
     order = np.lexsort((problem.sensor, block))
     block_sorted, sensor_sorted = block[order], problem.sensor[order]

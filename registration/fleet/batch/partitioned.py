@@ -1,0 +1,244 @@
+"""Batch registration of an archive partition by partition: :func:`solve_batch_partitioned`
+(docs/archive.md).
+
+The normal equations are sums over target windows, and every window lies in one partition
+(:mod:`registration.fleet.batch.partitions`), so each Levenberg-Marquardt trial is two passes over
+the partitions (:mod:`registration.fleet.batch.passes`): *map* each partition's Schur-reduced
+contribution ``S_p``, ``r_p``, its share ``U_p``, ``b_x,p`` of the states' block and its sum of
+squares at the current estimate; *reduce* them by adding in partition order (so the result does not
+depend on where each partition ran); solve the damped reduced system on the free states as
+:func:`registration.fleet.batch.schur.damped_step` does; then map each partition's
+back-substitution ``dc_b = V_b^-1 (b_b - W_b dx)`` with its trial sum of squares. The
+Levenberg-Marquardt control, the two phases (windows alone, then everything) and the stopping rule
+are those of :func:`registration.fleet.batch.solver.levenberg_marquardt`, so the estimate is
+``solve_batch``'s to rounding. Memory holds one partition at a time (plus the windows'
+coefficients, 3 (d + 1) floats per window) unless partitions are cached.
+
+What differs from ``solve_batch``: a window found undetermined at the start is set aside in its
+partition with the archive's windows kept (``solve_batch`` cuts the target's windows anew, which
+changes them only when the window is the first or last of its target: a warning says so); a window
+undetermined at the solution, or plots that a time bias moves outside the navigation where setting
+them aside would empty a window, raise NumericalError (``solve_batch`` solves again).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from registration.core.parallel import map_chunks
+from registration.fleet.batch.blocks import window_grid
+from registration.fleet.batch.covariance import state_covariance
+from registration.fleet.batch.partitions import DEFAULT_NAV_MARGIN_S, ArchivePlan, TablesSource, make_plan
+from registration.fleet.batch.passes import PartitionTask, archive_layout, final_pass, reduce_pass, setup_pass, step_pass
+from registration.fleet.batch.schur import determined_directions, solve_reduced
+from registration.fleet.batch.solver import (LAMBDA_MAX, LAMBDA_START, TARGETS_FIRST, BatchOptions, NumericalError,
+                                             progress_bar, time_bias_warnings)
+from registration.fleet.data.layout import StateLayout
+from registration.fleet.result import ChiSquareCheck
+
+__all__ = ["PartitionedResult", "run_pass", "solve_batch_partitioned"]
+
+
+def _call(item):
+    func, task, args = item
+    return func(task, *args)
+
+
+def run_pass(func, tasks: list, args: list, client=None) -> list:
+    """``[func(task, *a) for task, a in zip(tasks, args)]`` in this process or on ``client``'s workers,
+    in partition order."""
+    return map_chunks(_call, [(func, t, a) for t, a in zip(tasks, args)], client)
+
+
+@dataclass
+class PartitionedResult:
+    """The estimate of :func:`solve_batch_partitioned` (units and names of ``layout``: rad, m, 1, s).
+
+    ``estimate`` (n,), ``covariance`` (n, n), ``sigma`` (n,; inf: not determined), ``information``
+    (free, free) with priors, ``coefficients``: per partition the windows' coefficients (B_p,
+    n_coef, 3) ECEF m (None: no plot), in the partition's block order.
+    """
+
+    layout: StateLayout
+    estimate: np.ndarray
+    covariance: np.ndarray
+    sigma: np.ndarray
+    information: np.ndarray
+    information_data: np.ndarray
+    undetermined: np.ndarray
+    converged: bool
+    iterations: int
+    cost_history: list
+    chi_square: ChiSquareCheck
+    coefficients: list
+    excluded: tuple
+    warnings: tuple
+    n_plots: int
+    plan: ArchivePlan
+
+    @property
+    def free_names(self) -> tuple[str, ...]:
+        return tuple(self.layout.names[i] for i in self.layout.free)
+
+
+class _Passes:
+    """The passes of one solve: the tasks, the client, the coefficients and the prior terms."""
+
+    def __init__(self, tasks, client, layout: StateLayout, coefs: list):
+        self.tasks, self.client, self.coefs = tasks, client, coefs
+        with np.errstate(divide="ignore"):
+            p = layout.prior_sigma
+            self.pw2 = np.append(np.where(np.isfinite(p) & (p > 0), 1.0 / p**2, 0.0), 0.0)
+
+    def reduce(self, x: np.ndarray, lams: tuple) -> dict:
+        parts = run_pass(reduce_pass, self.tasks, [(x, c, lams) for c in self.coefs], self.client)
+        U = sum(p["U"] for p in parts) + np.diag(self.pw2)
+        xs = np.append(x, 0.0)
+        b_x = sum(p["b_x"] for p in parts) - self.pw2 * xs
+        prior = float(np.sum(self.pw2 * xs * xs))
+        S = {lam: U + sum(p["S"][i] for p in parts) for i, lam in enumerate(lams)}
+        r = {lam: b_x - sum(p["b_x"] - p["r"][i] for p in parts) for i, lam in enumerate(lams)}
+        return {"cost": sum(p["cost"] for p in parts) + prior, "U": U, "b_x": b_x, "S": S, "r": r, "parts": parts}
+
+    def step(self, x: np.ndarray, point: dict, lam: float, free: np.ndarray, scale, determined) -> tuple:
+        """(dx (n,), dcoefs, predicted reduction, trial cost) of the damped step ``lam`` at ``point``."""
+        if lam not in point["S"]:
+            more = self.reduce(x, (lam,))
+            point["S"][lam], point["r"][lam] = more["S"][lam], more["r"][lam]
+        U = point["U"]
+        S = point["S"][lam] + lam * np.diag(np.diag(U))
+        S = 0.5 * (S + S.T)
+        n = x.size
+        dx = np.zeros(n + 1)
+        dx[free] = solve_reduced(S[np.ix_(free, free)], point["r"][lam][free], scale, determined)
+        parts = run_pass(step_pass, self.tasks, [(x, c, dx, lam) for c in self.coefs], self.client)
+        b_dot = float(dx[free] @ point["b_x"][free]) + sum(p["b_dot"] for p in parts)
+        damp = lam * (float(np.sum(np.diag(U)[free] * dx[free] ** 2)) + sum(p["damp"] for p in parts))
+        xs = np.append(x + dx[:n], 0.0)
+        cost = sum(p["cost"] for p in parts) + float(np.sum(self.pw2 * xs * xs))
+        return dx[:n], [p["dc"] for p in parts], b_dot + damp, cost
+
+
+def _levenberg_marquardt(passes: _Passes, x: np.ndarray, free: np.ndarray, scale: np.ndarray, options: BatchOptions,
+                         relative: float, bar=None):
+    """:func:`registration.fleet.batch.solver.levenberg_marquardt` over the partitions: (x, converged,
+    iterations, cost history); the coefficients are updated in ``passes.coefs``."""
+    lam, nu = LAMBDA_START, 2.0
+    point = passes.reduce(x, (0.0, lam))
+    determined = determined_directions(0.5 * (point["S"][0.0] + point["S"][0.0].T)[np.ix_(free, free)], scale)
+    history, converged, it = [point["cost"]], False, 0
+    for it in range(1, options.max_iterations + 1):
+        accepted = False
+        while lam < LAMBDA_MAX:
+            dx, dcs, pred, cost = passes.step(x, point, lam, free, scale, determined)
+            if pred < max(options.tolerance, relative * point["cost"]) and lam <= 1.0:
+                converged = True
+                break
+            rho = (point["cost"] - cost) / pred if pred > 0 else -1.0
+            if np.isfinite(cost) and rho > 0:
+                lam *= max(1.0 / 3.0, 1.0 - (2.0 * rho - 1.0) ** 3)
+                nu, x, accepted = 2.0, x + dx, True
+                passes.coefs = [c + d for c, d in zip(passes.coefs, dcs)]
+                history.append(cost)
+                break
+            lam, nu = lam * nu, nu * 2.0
+        if bar is not None:
+            bar.update()
+        if converged or not accepted:
+            break
+        point = passes.reduce(x, (lam,))
+    return x, converged, it, history
+
+
+def _setup(plan: ArchivePlan, source, options: BatchOptions, x0: np.ndarray, client, cache: int) -> tuple:
+    """The tasks of the partitions with plots, their starting coefficients, exclusions and warnings."""
+    empty = np.zeros((0, 2), dtype=np.int64)
+    tasks = [PartitionTask(source, plan, k, options, empty, cache) for k in range(plan.n_partitions)]
+    found = run_pass(setup_pass, tasks, [(x0,)] * len(tasks), client)
+    kept = [(PartitionTask(source, plan, t.index, options, f["dropped"], cache), f) for t, f in zip(tasks, found)
+            if f is not None and f["coef"] is not None]
+    exclusions = tuple(e for f in found if f is not None for e in f["exclusions"])
+    count = window_grid(plan.t0, plan.t1, plan.window_s)[0]
+    edge = [d for f in found if f is not None for d in f["dropped"] if d[1] in (0, count[d[0]] - 1)]
+    warnings = (f"{len(edge)} undetermined windows set aside at the ends of their targets' spans (first: target "
+                f"{plan.target_ids[edge[0][0]]}); solve_batch would cut those targets' windows anew, so its "
+                "estimate may differ slightly",) if edge else ()
+    if not kept:
+        raise ValueError("no plots to register (every window was set aside)")
+    return [t for t, _ in kept], [f["coef"] for _, f in kept], sum(f["plots"] for _, f in kept), exclusions, warnings
+
+
+def _final(passes: _Passes, x: np.ndarray, layout: StateLayout, options: BatchOptions, plan: ArchivePlan) -> tuple:
+    """(information with priors (free, free), chi-square check, exclusions) at the solution;
+    NumericalError where solve_batch would set windows aside and solve again (module docstring)."""
+    parts = run_pass(final_pass, passes.tasks, [(x, c) for c in passes.coefs], passes.client)
+    singular, empty = sum(p["singular"] for p in parts), sum(p["empty"] for p in parts)
+    if singular or empty:
+        raise NumericalError(f"{singular} target windows are undetermined at the solution and {empty} would be left "
+                             "without plots by the plots a time bias moves outside the navigation; the partitioned "
+                             "solver does not solve again without them: register in memory (solve_batch)")
+    free = layout.free
+    U = sum(p["U"] for p in parts) + np.diag(passes.pw2)
+    S = U + sum(p["S"][0] for p in parts)
+    information = 0.5 * (S + S.T)[np.ix_(free, free)]
+    xs = np.append(x, 0.0)
+    prior = (xs * np.sqrt(passes.pw2))[free]
+    chi_parts = {key: (sum(p["parts"][key][0] for p in parts), sum(p["parts"][key][1] for p in parts))
+                 for key in ("plots", "references")}
+    chi_parts["priors"] = (float(np.sum(prior * prior)), int(np.count_nonzero(passes.pw2[free])))
+    n_values = sum(n for _, n in chi_parts.values())
+    n_params = free.size + 3 * sum(p["n_coef"] for p in parts)
+    cost = sum(p["cost"] for p in parts) + float(np.sum(passes.pw2 * xs * xs))
+    tb = layout.time_bias_index[layout.time_bias_index >= 0]
+    if tb.size and np.max(np.abs(x[tb])) > plan.nav_margin_s:
+        raise ValueError(f"a time bias of {np.max(np.abs(x[tb])):.3g} s exceeds the navigation margin of "
+                         f"{plan.nav_margin_s:g} s read around each partition: register again with a larger margin")
+    return information, ChiSquareCheck(cost, n_values - n_params, chi_parts), tuple(
+        e for p in parts for e in p["exclusions"])
+
+
+def solve_batch_partitioned(source, options: BatchOptions | None = None, x0: np.ndarray | None = None, *,
+                            partitions: int | None = None, partition_s: float | None = None, client=None,
+                            cache: int | None = None, nav_margin_s: float = DEFAULT_NAV_MARGIN_S,
+                            progress: bool = False) -> PartitionedResult:
+    """:func:`registration.fleet.batch.solve.solve_batch`'s estimate and covariance of the states from an
+    archive read partition by partition (module docstring).
+
+    ``source``: :class:`~registration.fleet.batch.partitions.TablesSource` or
+    :class:`~registration.fleet.batch.archive.ParquetSource`; ``partitions`` equal time ranges or
+    ranges of ``partition_s`` seconds (default one); ``client``: a ``dask.distributed.Client`` to
+    map the partitions on (None: this process); ``cache``: partitions whose design each process
+    keeps (default: all for tables in memory without a client, else none); ``nav_margin_s``: the
+    navigation read around each partition (s), the largest time bias followed exactly; ``x0``
+    (n,; rad, m): starting states.
+    """
+    options = options or BatchOptions()
+    plan = make_plan(source, options.window_s, partitions=partitions, partition_s=partition_s,
+                     nav_margin_s=nav_margin_s)
+    layout = archive_layout(source)
+    x = np.zeros(layout.n) if x0 is None else np.array(x0, dtype=np.float64)
+    if x.shape != (layout.n,) or not np.isfinite(x).all():
+        raise ValueError(f"x0: expected {layout.n} finite starting states, got shape {x.shape}")
+    x[layout.fixed] = 0.0
+    if cache is None:
+        cache = plan.n_partitions if isinstance(source, TablesSource) and client is None else 0
+    tasks, coefs, n_plots, exclusions, warnings = _setup(plan, source, options, x, client, cache)
+    passes = _Passes(tasks, client, layout, coefs)
+    free = layout.free
+    with progress_bar(progress, "fleet partitioned solve", unit="iteration") as bar:
+        x, _, it1, h1 = _levenberg_marquardt(passes, x, np.zeros(0, dtype=np.int64), np.zeros(0), options,
+                                             TARGETS_FIRST, bar)
+        x, converged, it2, h2 = _levenberg_marquardt(passes, x, free, layout.scale[free], options, 0.0, bar)
+    information, chi2, outside = _final(passes, x, layout, options, plan)
+    P_free, undetermined = state_covariance(information, layout.scale[free])
+    P = np.zeros((layout.n, layout.n))
+    P[np.ix_(free, free)] = P_free
+    sigma = np.sqrt(np.clip(np.diag(P), 0, None))
+    if undetermined.size:
+        sigma[free[np.linalg.norm(undetermined, axis=1) > 0.1]] = np.inf
+    return PartitionedResult(layout, x, P, sigma, information, information - np.diag(passes.pw2[free]), undetermined,
+                             converged, it1 + it2, h1 + h2[1:], chi2, passes.coefs,
+                             plan.excluded + exclusions + outside, warnings + time_bias_warnings(layout, x, options),
+                             n_plots, plan)
