@@ -88,6 +88,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     add_out(reg, "fleet-register", "estimates.csv, summary.json and the PNG plots")
     add_no_plots(reg)
     add_allow_inconsistent(reg)
+    from registration.cli.fleet_archive import add_archive_arguments
+
+    add_archive_arguments(reg)
 
 
 def _add_method(p: argparse.ArgumentParser) -> None:
@@ -258,6 +261,10 @@ def run_register(args: argparse.Namespace) -> int:
 
     if not (args.window_s >= 0 and args.window_s < float("inf")):
         raise ValueError(f"--window-s: expected a length >= 0 s, got {args.window_s}")
+    from registration.cli.fleet_archive import archive_requested, run_archive
+
+    if archive_requested(args):
+        return run_archive(args)
     out = prepare_out(args.out)
     tables = _read_tables(args, out)
     with staged_outputs(out, "registration fleet register", REGISTER_OUTPUTS) as folder:

@@ -1,0 +1,55 @@
+"""The archive pieces of ``fleet register`` (registration.cli.fleet_archive): --partition-s runs the
+partitioned solver on a Parquet folder and writes estimates.csv and summary.json; an archive whose
+file cannot be read leaves --out as it was; --workers alone is refused."""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+import numpy as np
+import pytest
+
+from registration.cli.fleet_archive import add_archive_arguments, archive_requested, run_archive
+from registration.fleet import fleet_scenario
+from registration.io import write_fleet_tables
+
+
+def parse(argv):
+    p = argparse.ArgumentParser()
+    p.add_argument("--tables")
+    p.add_argument("--out")
+    p.add_argument("--window-s", type=float, default=20.0)
+    add_archive_arguments(p)
+    return p.parse_args(argv)
+
+
+def test_archive_run_writes_estimates_and_leaves_out_on_error(tmp_path):
+    sc = fleet_scenario(0)
+    tables = tmp_path / "tables"
+    tables.mkdir()
+    write_fleet_tables(tables, sc.plots, sc.navigation, sc.sensors, sc.platforms, sc.references, fmt="parquet")
+    out = tmp_path / "out"
+    args = parse(["--tables", str(tables), "--out", str(out), "--partition-s", "100"])
+    assert archive_requested(args)
+    assert run_archive(args) == 0
+    lines = (out / "estimates.csv").read_text().splitlines()
+    assert lines[0] == "state,unit,estimate,sigma"
+    est = {r.split(",")[0]: float(r.split(",")[2]) for r in lines[1:]}
+    truth = sc.truth_state
+    # the heading errors are estimated to within a few hundredths of a degree
+    assert abs(est["A:heading_error"] - np.degrees(truth["A:heading_error"])) < 0.05
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["partitions"] == 3 and summary["converged"]
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    (tables / "navigation.parquet").write_bytes(b"not parquet")
+    with pytest.raises(ValueError) as err:
+        run_archive(args)
+    assert "navigation.parquet" in str(err.value) and "\n" not in str(err.value)
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+
+
+def test_workers_without_partitions_is_refused():
+    with pytest.raises(ValueError, match="--partition-s"):
+        archive_requested(parse(["--workers", "2"]))
+    assert not archive_requested(parse([]))
