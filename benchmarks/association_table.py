@@ -6,6 +6,15 @@ Run from a checkout::
 
     python3 benchmarks/association_table.py                  # 3 runs per row, 300 s each
     python3 benchmarks/association_table.py --runs 1 --duration 120
+    python3 benchmarks/association_table.py --table robust   # the fleets of the robust association
+
+``--table robust`` runs the fleets of :mod:`registration.fleet.association.fleets` instead (the
+issue's rolling fleet with a passive sensor, with and without 5 % clutter, another sensor mix, the
+extended errors, a bridge log with AIS, an ATC recording with Mode S, Mode A and primary plots), one
+row per fleet and draw, against the registration of all real plots with their true ids (the AIS
+vessels' plots for the bridge log): wrong joins (labels that are not the plot's target), clutter
+associated, real plots unassociated, the largest |estimate - truth| / sigma over the identifiable
+states and sums, the largest sigma ratio to the ids run, the chi-square mean against its 99.9 % band.
 
 Each row is one simulated case of :func:`registration.fleet.association_scenario` (the default
 fleet's five radars: three 3-D, two 2-D, all asynchronous), run ``--runs`` times with different
@@ -33,6 +42,72 @@ import time
 import numpy as np
 
 from registration.fleet import associate_and_register, association_scenario, association_scores, build_problem, solve_batch
+from registration.fleet.association.fleets import atc_fleet, registration_scores, rolling_fleet, vessel_fleet
+
+#: The robust table's fleets: name -> function of the seed returning (simulation, references, ids run plots).
+MIX = {"A-ESM": ("A", (np.nan, np.radians(0.25), np.radians(0.3)), 1.0, 0.1, (1.0, 4.0, 25.0)),
+       "A-2D": ("A", (30.0, np.radians(0.2), np.nan), 2.5, 0.77, (0.0, 12.0, 20.0)),
+       "B-3D": ("B", (25.0, np.radians(0.15), np.radians(0.2)), 2.0, 1.21, (0.0, 10.0, 22.0)),
+       "S-3D": ("S", (30.0, np.radians(0.1), np.radians(0.15)), 4.0, 2.33, (0.0, 0.0, 10.0)),
+       "S-2D": ("S", (40.0, np.radians(0.1), np.nan), 5.0, 3.46, (0.0, 0.0, 12.0))}
+
+
+def _fleet(name: str, seed: int):
+    """(simulation, references, plots of the ids run) of one robust-table fleet."""
+    if name == "issue":
+        sim, refs = rolling_fleet(seed, duration_s=600.0), None
+    elif name == "issue, 5 % clutter":
+        sim, refs = rolling_fleet(seed, duration_s=600.0, clutter_share=0.05), None
+    elif name == "other mix, 5 % clutter":
+        sim, refs = rolling_fleet(seed, duration_s=300.0, n_aircraft=8, sensors=MIX, clutter_share=0.05,
+                                  angle_bias=np.radians(3.0)), None
+    elif name == "issue, time bias + gain, 5 % clutter":
+        sim, refs = rolling_fleet(seed, duration_s=300.0, clutter_share=0.05, time_bias=0.3, range_gain=3e-4), None
+    elif name == "bridge log (ARPA + AIS)":
+        sim, refs = vessel_fleet(seed, duration_s=600.0)
+        keep = np.isin(sim.true_target, np.unique(refs["target"]))
+        ids = {k: v[keep] for k, v in sim.plots.items() if k != "track"}
+        return sim, refs, dict(ids, target=sim.true_target[keep])
+    else:  # ATC
+        sim, refs = atc_fleet(seed)
+    real = sim.true_target != ""
+    return sim, refs, dict({k: v[real] for k, v in sim.plots.items() if k not in ("track", "target")},
+                           target=sim.true_target[real])
+
+
+ROBUST = ("issue", "issue, 5 % clutter", "other mix, 5 % clutter", "issue, time bias + gain, 5 % clutter",
+          "bridge log (ARPA + AIS)", "ATC (Mode S, Mode A, primary)")
+
+
+def robust_row(name: str, seed: int) -> str:
+    sim, refs, ids = _fleet(name, seed)
+    sc = sim.scenario
+    t0 = time.perf_counter()
+    base = solve_batch(build_problem(ids, sc.sensors, sc.navigation, sc.platforms, refs))
+    t_ids = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    result = associate_and_register(sim.plots, sc.sensors, sc.navigation, sc.platforms, refs)
+    t_assoc = time.perf_counter() - t0
+    real, lab = sim.true_target != "", result.labels != ""
+    # each label stands for the true target of most of its plots (ids given and references by name too)
+    wrong = int(round(association_scores(result.labels, sim.true_target)["error_rate"] * real.sum()))
+    reg = registration_scores(result.batch, base, sc.truth_state)
+    return (f"| {name} | {seed} | {int(real.sum())} ({int((~real).sum())}) | {wrong} | {int((lab & ~real).sum())} | "
+            f"{100 * np.mean(~lab[real]):.1f} % | {result.n_targets} | {reg['vs_truth']:.2f} | {reg['sigma_ratio']:.3f} | "
+            f"{reg['chi2_mean']:.4f} [{reg['chi2_band'][0]:.3f}, {reg['chi2_band'][1]:.3f}] | "
+            f"{'yes' if result.converged else 'no'} | {t_assoc:.1f} / {t_ids:.1f} |")
+
+
+def robust_table(seeds) -> list[str]:
+    lines = ["| fleet | seed | real plots (clutter) | wrong joins | clutter in | unassoc. | targets | "
+             "max \\|est − truth\\|/σ | σ ratio vs ids | χ² mean [99.9 % band] | converged | time (s): assoc. / ids |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    print("\n".join(lines), flush=True)
+    for name in ROBUST:
+        for seed in seeds:
+            lines.append(robust_row(name, seed))
+            print(lines[-1], flush=True)
+    return lines
 
 #: Rows: targets, crossing pairs, angle bias (deg), share of missed detections, clutter plots per scan.
 CASES = [
@@ -86,7 +161,13 @@ def main(argv=None) -> list[str]:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--runs", type=int, default=3, help="runs per row (random draws)")
     parser.add_argument("--duration", type=float, default=300.0, help="seconds of data per run")
+    parser.add_argument("--table", choices=("scenario", "robust"), default="scenario",
+                        help="scenario: the association_scenario rows; robust: the fleets of the robust association")
+    parser.add_argument("--seeds", type=int, nargs="*", default=[101, 102],
+                        help="draws of each robust-table fleet")
     args = parser.parse_args(argv)
+    if args.table == "robust":
+        return robust_table(args.seeds)
     lines = [f"{args.runs} runs of {args.duration:g} s per row; mean (worst run)", "",
              "| targets | crossing | angle bias (deg) | missed | clutter / scan | plots (clutter) | error | unassoc. | "
              "clutter in | labels / target | passes | bias vs ids (σ) | bias vs truth (σ) | time (s): assoc. / ids |",

@@ -60,9 +60,10 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                        help="a folder holding the tables by their standard names (plots, navigation, sensors, "
                             "platforms, reference; .csv or .parquet), as 'registration import' writes them")
     files.add_argument("--plots", type=Path, default=None, metavar="FILE",
-                       help="time_s, sensor, target, range_m, bearing_deg, elevation_deg (empty cell: not measured); without "
-                            "the target column the plots are associated across sensors jointly with the registration "
-                            "(associations.csv)")
+                       help="time_s, sensor, target and/or track, range_m, bearing_deg, elevation_deg (empty cell: not "
+                            "measured); plots without a target id (no column, or empty cells) are associated to the "
+                            "targets with ids, the reference targets and each other, jointly with the registration; "
+                            "track: a sensor-local track id (associations.csv)")
     files.add_argument("--navigation", type=Path, default=None, metavar="FILE",
                        help="time_s, platform, lat_deg, lon_deg, alt_m, heading_deg, pitch_deg, roll_deg "
                             "(one row for a fixed site)")
@@ -96,7 +97,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 def _add_method(p: argparse.ArgumentParser) -> None:
     p.add_argument("--method", choices=("batch", "online"), default="batch",
                    help="batch: maximum likelihood over all plots at once; online: the filter, one update per "
-                        "window of plots, with the estimates over time in history.csv (docs/fleet-online.md); plots without a target column need batch")
+                        "window of plots, with the estimates over time in history.csv (docs/fleet-online.md); plots without "
+                        "target ids are first associated by the batch, then filtered with the labels it gave")
 
 
 def _inputs(tables, problem, window_s: float) -> dict:
@@ -118,34 +120,19 @@ def _solve(tables, window_s: float, method: str):
 
 
 def _associate(tables, window_s: float, method: str):
-    """Plots without target ids: (association, problem, batch result) of
-    :func:`registration.fleet.associate_and_register`."""
-    from registration.fleet import AssociationOptions, associate_and_register
+    """Plots without target ids (some or all rows): (association, problem, result) of
+    :func:`registration.fleet.associate_and_register`; with --method online, the online filter on
+    its labels (:mod:`registration.cli.fleet_association`)."""
+    from registration.cli.fleet_association import associate
 
-    if method == "online":
-        raise ValueError("--method online: the plots file has no target column; plots without target ids are "
-                         "associated jointly with the batch registration (omit --method or give target ids)")
-    if window_s <= 0:
-        raise ValueError(f"--window-s: plots without target ids are associated in windows; expected a length > 0 s, "
-                         f"got {window_s}")
-    association = associate_and_register(tables.plots, tables.sensors, tables.navigation, tables.platforms,
-                                         tables.references, AssociationOptions(window_s=window_s), progress=True)
-    return association, association.problem, association.batch
+    return associate(tables, window_s, method)
 
 
 def _write_associations(out: Path, tables, association) -> Path:
-    """associations.csv: per plots-file row, its time, sensor and the target label found ('' = none)."""
-    import pandas as pd
+    """associations.csv (:func:`registration.cli.fleet_association.write_associations`)."""
+    from registration.cli.fleet_association import write_associations
 
-    from registration.io.files.tablefile import write_frame
-
-    rows = tables.file_rows.get("plots", np.arange(association.labels.size))
-    frame = pd.DataFrame({"row": rows, "time_s": tables.plots["time"], "sensor": tables.plots["sensor"],
-                          "target": association.labels})
-    path = out / "associations.csv"
-    with writing(path):
-        write_frame(frame, path, "csv")
-    return path
+    return write_associations(out, tables, association)
 
 
 def _run_line(result) -> str:
@@ -275,25 +262,24 @@ def run_register(args: argparse.Namespace) -> int:
 
 def _register_into(path: Path, args: argparse.Namespace, tables):
     """Register the tables, print the report and write the outputs into ``path``: (result, files)."""
+    from registration.cli.fleet_association import association_summary, online_note
     from registration.cli.fleet_output import estimate_rows, print_report, write_outputs
+    from registration.io.fleet.read import needs_association
 
     association = None
-    if "target" in tables.plots:
+    if not needs_association(tables.plots):
         problem, result = _solve(tables, args.window_s, args.method)
     else:
         association, problem, result = _associate(tables, args.window_s, args.method)
     rows = estimate_rows(result)
     header = ["Fleet tables " + ", ".join(str(p) for p in tables.paths.values()) + ":", problem.lines()[0],
               *([] if association is None else association.lines()[:-len(association.batch.lines())]),
-              _run_line(result)]
+              *([] if association is None else online_note(args.method)), _run_line(result)]
     print_report(result, rows, header)
     inputs = {**_inputs(tables, problem, args.window_s), "method": args.method, "on_bad_row": args.on_bad_row,
               "rows_read": tables.rows_read(), "rows_rejected": len(tables.rejected), "notes": list(tables.notes)}
     if association is not None:
-        inputs["association"] = {"targets": association.n_targets, "plots_associated": association.n_associated,
-                                 "plots_unassociated": int(association.unassociated_rows.size),
-                                 "unassociated_by_sensor": {k: int(v) for k, v in association.unassociated_by_sensor.items()},
-                                 "passes": association.iterations, "converged": bool(association.converged)}
+        inputs["association"] = association_summary(association, args.method)
     written = write_outputs(path, problem, result, rows, inputs, plots=not args.no_plots)
     if args.on_bad_row == "skip":
         written.append(_write_rejected(path, tables.rejected_frame()))

@@ -186,7 +186,10 @@ def test_plots_without_target_ids_are_associated(simulated, tmp_path, capsys):
     assert main([a for a in _register_args(folder, out) if "reference" not in a]) == 0
     assert "association:" in capsys.readouterr().out
     found = pd.read_csv(out / "associations.csv", dtype={"target": str, "sensor": str}, keep_default_na=False)
-    assert list(found.columns) == ["row", "time_s", "sensor", "target"] and len(found) == len(truth)
+    # behaviour changed with the robust association: the join's distance and the reason a plot was left out
+    assert list(found.columns) == ["row", "time_s", "sensor", "target", "join", "reason"] and len(found) == len(truth)
+    assert ((found["join"] == "") | (found["target"] != "")).all()
+    assert ((found["target"] != "") | (found["reason"] != "")).all()
     labelled = found["target"] != ""
     assert labelled.mean() > 0.98
     # each label found is (almost) one true target: majority share over the labelled plots
@@ -201,11 +204,15 @@ def test_plots_without_target_ids_are_associated(simulated, tmp_path, capsys):
     assert summary["inputs"]["association"]["converged"]
 
 
-def test_plots_without_target_ids_need_the_batch(simulated, tmp_path, capsys):
+def test_plots_without_target_ids_run_online_on_the_associations_labels(simulated, tmp_path, capsys):
+    """Behaviour changed with the robust association: --method online no longer refuses plots without
+    target ids; the batch associates them first (it says so) and the filter runs on its labels."""
     folder = _broken(simulated, tmp_path, "plots", lambda f: f.pop("target"))
     args = [a for a in _register_args(folder, tmp_path / "o") if "reference" not in a]
-    assert main([*args, "--method", "online"]) == 2
-    assert "no target column" in capsys.readouterr().err
+    assert main([*args, "--method", "online"]) == 0
+    out = capsys.readouterr().out
+    assert "the association is a batch method" in out and "online filter:" in out
+    assert (tmp_path / "o" / "history.csv").exists() and (tmp_path / "o" / "associations.csv").exists()
 
 
 def test_a_run_replaces_the_earlier_runs_outputs_whole(simulated, tmp_path, capsys):

@@ -36,7 +36,9 @@ def test_a_window_undetermined_at_the_solution_is_set_aside_with_its_reason(monk
         return solved[-1]
 
     monkeypatch.setattr(association, "solve_batch", spy)
-    sc = fleet_scenario(5, time_bias=2.0)
+    # seed 5 provoked the case with the association before the robust joins; their solves differ, and
+    # seed 14 provokes it with them (the check under test is the solver's, not the association's)
+    sc = fleet_scenario(14, time_bias=2.0)
     plots = {k: v for k, v in sc.plots.items() if k != "target"}
     result = associate_and_register(plots, sc.sensors, sc.navigation, sc.platforms, None,
                                     AssociationOptions(window_s=10.0, max_iterations=2))

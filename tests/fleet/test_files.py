@@ -135,7 +135,7 @@ def _spoil_plots(plots):
         20: ("sensor", "Z-9", "unknown_sensor"),
         30: ("range_m", -5.0, "non_positive_range"),
         44: ("time_s", np.nan, "non_finite"),
-        47: ("target", np.nan, "empty_id"),
+        47: ("sensor", np.nan, "empty_id"),  # an empty target cell is no id now (associated), a sensor's is bad
         c2d: ("elevation_deg", 1.0, "unmeasured_channel"),
         a3d: ("time_s", 75.0, "outside_navigation"),
     }

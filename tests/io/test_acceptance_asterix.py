@@ -1,8 +1,8 @@
 """Acceptance of `registration import asterix` with `registration fleet register --tables`, through
 the commands: a simulated air-traffic scenario (three radars with range bias, range gain, azimuth
 bias and clock offset; ADS-B for most aircraft; Mode A/C-only and primary-only plots) encoded by
-libasterix as a raw recording and a pcap; both forms must give identical tables, and every error
-must come back within 3.5 sigma. Seeds other than those the reader was developed on (0-3)."""
+libasterix as a raw recording and a pcap; both forms must give identical tables, and, with the
+plots without ids associated, every error must come back within 3.5 sigma. Seeds other than those the reader was developed on (0-3)."""
 
 from __future__ import annotations
 
@@ -38,11 +38,11 @@ def test_import_and_register_recover_every_error(seed, tmp_path):
     plots = pd.read_csv(tmp_path / "pcap" / "plots.csv", dtype={"target": str}, keep_default_na=False)
     kinds = plots["target"].str[0].where(plots["target"] != "", "")
     assert (plots["target"] == "").any() and (kinds == "A").any()  # primary-only and Mode A/C-only plots are there
-    # plots without an id wait for the association of mixed ids; those with one register
-    plots[plots["target"] != ""].to_csv(tmp_path / "plots_ids.csv", index=False)
-    reg = tmp_path / "reg"
-    assert main(["fleet", "register", "--tables", str(tmp_path / "pcap"), "--plots", str(tmp_path / "plots_ids.csv"),
-                 "--out", str(reg), "--no-plots"]) == 0
+    reg = tmp_path / "reg"  # plots without ids are associated to the targets with ids (mixed ids)
+    assert main(["fleet", "register", "--tables", str(tmp_path / "pcap"), "--out", str(reg), "--no-plots"]) == 0
+    assoc = pd.read_csv(reg / "associations.csv", dtype={"target": str}, keep_default_na=False)
+    given = plots["target"].to_numpy()
+    assert (assoc["target"].to_numpy()[given != ""] == given[given != ""]).all()  # ids given are kept
     est = pd.read_csv(reg / "estimates.csv").set_index(["object", "state"])
     z = {}
     for key, value in truth.truth.items():

@@ -82,19 +82,19 @@ def test_nmea_import_chains_into_fleet_register(bridge_log, tmp_path):
     assert main(["import", "nmea", str(path), "--platform", "OWN", "--sensors", str(sensors), "--out",
                  str(tmp_path / "free"), "--prior-heading-deg", "free"]) == 0
     assert pd.read_csv(tmp_path / "free" / "platforms.csv")["prior_heading_deg"].isna().all()
-    # until plots with sensor-local tracks are associated, tie the tracks to their vessels by the truth
-    plots = pd.read_csv(out / "plots.csv", dtype={"track": str})
-    plots = plots[plots["track"].isin(log.track_mmsi)]
-    plots = plots.assign(target=plots["track"].map(log.track_mmsi)).drop(columns="track")
-    plots.to_csv(tmp_path / "plots_ids.csv", index=False)
-    reg = tmp_path / "reg"
-    assert main(["fleet", "register", "--tables", str(out), "--plots", str(tmp_path / "plots_ids.csv"), "--out", str(reg),
-                 "--no-plots"]) == 0
+    reg = tmp_path / "reg"  # the ARPA's sensor-local tracks are associated to the AIS vessels
+    assert main(["fleet", "register", "--tables", str(out), "--out", str(reg), "--no-plots"]) == 0
     est = pd.read_csv(reg / "estimates.csv").set_index(["object", "state"])
     truth = log.errors
     for state, scale in (("range_bias", 1.0), ("bearing_bias", 57.29577951308232), ("time_bias", 1.0)):
         row = est.loc[("RADAR", state)]
         assert abs(row["estimate"] - truth[f"RADAR:{state}"] * scale) < 3.5 * row["sigma"], state
+    assoc = pd.read_csv(reg / "associations.csv", dtype={"track": str, "target": str}, keep_default_na=False)
+    joined = assoc[assoc["target"] != ""]
+    assert set(joined["target"]) <= set(log.track_mmsi.values())
+    assert (joined["track"].map(log.track_mmsi) == joined["target"]).all()  # every join is the track's own vessel
+    without_ais = assoc[~assoc["track"].isin(log.track_mmsi)]
+    assert len(without_ais) > 0 and (without_ais["target"] == "").all()
 
 
 def test_nmea_log_without_heading_exits_2(bridge_log, tmp_path, capsys):

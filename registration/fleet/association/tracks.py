@@ -22,7 +22,7 @@ from scipy.stats import chi2
 
 from registration.fleet.association.geometry import Assigner, PlotGeometry
 
-__all__ = ["sensor_tracks"]
+__all__ = ["sensor_tracks", "track_breaks"]
 
 
 def _scan_steps(time: np.ndarray, sensor: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
@@ -211,3 +211,52 @@ def sensor_tracks(time: np.ndarray, sensor: np.ndarray, geom: PlotGeometry, assi
     ids, counts = np.unique(track, return_counts=True)
     track[np.isin(track, ids[counts < min_plots])] = -1
     return track
+
+
+def track_breaks(time: np.ndarray, track: np.ndarray, geom: PlotGeometry, *, max_speed: float, accel_sigma: float,
+                 probability: float) -> tuple[np.ndarray, np.ndarray]:
+    """Where given tracks jump: each track (``track`` (M,) key per plot, ``time`` (M,) s, the plots'
+    geometry ``geom`` rows in the same order) is followed by the constant-velocity filter of
+    :func:`sensor_tracks`, and a plot outside the ``1 - probability`` gate (chi-square, 3 degrees
+    of freedom) of the prediction starts a new piece, the filter starting again there. Returns
+    ((M,) bool: the plot starts a new piece after a jump, (M,) its squared distance, 0 elsewhere).
+    The tracks advance together, the k-th plot of every track in one step."""
+    gate = float(chi2.ppf(1.0 - probability, 3))
+    order = np.lexsort((time, track))
+    key = track[order]
+    first = np.r_[True, key[1:] != key[:-1]]
+    start = np.flatnonzero(first)
+    k = np.arange(order.size) - np.repeat(start, np.diff(np.r_[start, order.size]))
+    n_tracks = start.size
+    x, P, t_last = np.zeros((n_tracks, 6)), np.zeros((n_tracks, 6, 6)), np.zeros(n_tracks)
+    which = np.cumsum(first) - 1
+    breaks, dist = np.zeros(order.size, dtype=bool), np.zeros(order.size)
+    by_step = np.argsort(k, kind="stable")
+    bounds = np.flatnonzero(np.r_[True, np.diff(k[by_step]) != 0, True])
+    for a, b in zip(bounds[:-1], bounds[1:]):
+        at = by_step[a:b]  # positions in ``order`` of the k-th plot of each track that has one
+        tr, plot = which[at], order[at]
+        p, cov = geom.p_ecef[plot], geom.cov[plot]
+        restart = np.ones(at.size, dtype=bool) if k[at[0]] == 0 else np.zeros(at.size, dtype=bool)
+        if k[at[0]] > 0:
+            xp, Pp = _predict(x[tr], P[tr], time[plot] - t_last[tr], accel_sigma)
+            L = _cholesky3(Pp[:, :3, :3] + cov)
+            y = _forward3(L, p - xp[:, :3])
+            d2 = np.einsum("ki,ki->k", y, y)
+            restart = d2 > gate
+            breaks[at[restart]], dist[at] = True, d2
+            ok = ~restart
+            Kt = _solve3(tuple(v[ok] for v in L), Pp[ok][:, :3, :])
+            K = np.swapaxes(Kt, 1, 2)
+            x[tr[ok]] = xp[ok] + (K @ (p[ok] - xp[ok, :3])[..., None])[..., 0]
+            Pn = Pp[ok] - K @ Pp[ok][:, :3, :]
+            P[tr[ok]] = 0.5 * (Pn + np.swapaxes(Pn, 1, 2))
+        fresh = tr[restart]
+        x[fresh] = np.concatenate([p[restart], np.zeros((fresh.size, 3))], axis=1)
+        P[fresh] = 0.0
+        P[fresh, :3, :3] = cov[restart]
+        P[fresh, 3:, 3:] = max_speed**2 * np.eye(3)
+        t_last[tr] = time[plot]
+    out_b, out_d = np.zeros(order.size, dtype=bool), np.zeros(order.size)
+    out_b[order], out_d[order] = breaks, dist
+    return out_b, out_d

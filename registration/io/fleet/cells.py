@@ -17,13 +17,14 @@ import numpy as np
 from registration.io.fleet.checks import attitude_check, radians_check, sigma_notes
 from registration.io.fleet.rejects import BadRows
 
-__all__ = ["FILE_COLUMNS", "FileRead", "read_file"]
+__all__ = ["FILE_COLUMNS", "OPTIONAL_IDS", "FileRead", "read_file"]
 
 #: Per table: (file column, table column, unit, required, (low, high) accepted in file units).
 #: unit "id" = an identifier; "deg" columns are converted to radians.
 FILE_COLUMNS = {
     "plots": (("time_s", "time", "s", True, None), ("sensor", "sensor", "id", True, None),
-              ("target", "target", "id", False, None), ("range_m", "range", "m", False, (0.0, 1e8)),
+              ("target", "target", "id", False, None), ("track", "track", "id", False, None),
+              ("range_m", "range", "m", False, (0.0, 1e8)),
               ("bearing_deg", "bearing", "deg", False, (-360.0, 360.0)),
               ("elevation_deg", "elevation", "deg", False, (-90.0, 90.0))),
     "navigation": (("time_s", "time", "s", True, None), ("platform", "platform", "id", True, None),
@@ -52,6 +53,9 @@ FILE_COLUMNS = {
                   ("y_m", "y", "m", False, (-1e8, 1e8)), ("z_m", "z", "m", False, (-1e8, 1e8)),
                   ("sigma_m", "sigma", "m", False, (0.0, 1e6))),
 }
+#: Id columns of a table whose empty cells mean "no id" (not an error): a plot without a target id is
+#: associated (registration.fleet.association), one without a track id is tracked by the association.
+OPTIONAL_IDS = {"plots": ("target", "track")}
 #: Sigma columns whose value must be > 0 (a prior may be 0: fixed).
 _POSITIVE = {"range_m", "sigma_range_m", "sigma_bearing_deg", "sigma_elevation_deg", "sigma_m"}
 
@@ -69,7 +73,7 @@ def _read_frame(path: Path):
         raise ValueError(f"{path}: no such file")
     try:
         if fmt == "csv":
-            blocks = list(read_csv_blocks(path, dtype={"sensor": str, "platform": str, "target": str}))
+            blocks = list(read_csv_blocks(path, dtype={"sensor": str, "platform": str, "target": str, "track": str}))
             frame = pd.concat(blocks, ignore_index=True) if len(blocks) > 1 else blocks[0]
         else:
             frame = pd.read_parquet(path)
@@ -80,10 +84,14 @@ def _read_frame(path: Path):
     return frame
 
 
-def _id_column(bad: BadRows, frame, column: str) -> np.ndarray:
+def _id_column(bad: BadRows, frame, column: str, required: bool = True) -> np.ndarray:
+    """An id column as text; an empty cell is a bad row (``empty_id``) when ``required``, else ''."""
     values = frame[column]
-    bad.add(column, "empty_id", values.isna().to_numpy(), lambda r: "empty; every row needs an id")
-    return np.array([str(v).strip() for v in values], dtype=object).astype(str)
+    missing = values.isna().to_numpy()
+    if required:
+        bad.add(column, "empty_id", missing, lambda r: "empty; every row needs an id")
+    text = np.array([str(v).strip() for v in values], dtype=object).astype(str)
+    return np.where(missing, "", text) if text.size else text
 
 
 def _number_column(bad: BadRows, frame, column: str, unit: str, required: bool, limits) -> np.ndarray:
@@ -169,7 +177,7 @@ def read_file(name: str, path: Path, skip: bool, platforms: set | None = None) -
         if column not in frame.columns:
             continue
         if unit == "id":
-            out[key] = _id_column(bad, frame, column)
+            out[key] = _id_column(bad, frame, column, column not in OPTIONAL_IDS.get(name, ()))
             continue
         numbers[column] = _number_column(bad, frame, column, unit, required, limits)
         out[key] = np.radians(numbers[column]) if unit == "deg" else numbers[column]

@@ -4,9 +4,11 @@ long-form tables of :mod:`registration.fleet.data.tables` (SI units, radians); w
 
 File columns (one row per item; an empty cell is "not given"):
 
-* ``plots``: ``time_s``, ``sensor``, ``target`` (optional: without it the plots are to be
-  associated, :mod:`registration.fleet.association.associate`), ``range_m``, ``bearing_deg``, ``elevation_deg``
-  (an empty cell: the sensor does not measure that channel);
+* ``plots``: ``time_s``, ``sensor``, ``target`` (optional; an empty cell is "no id": the plots
+  without one are associated, :mod:`registration.fleet.association.associate`), ``track``
+  (optional: a sensor-local track id, such as an ARPA radar's target number; an empty cell is
+  none), ``range_m``, ``bearing_deg``, ``elevation_deg`` (an empty cell: the sensor does not measure
+  that channel);
 * ``navigation``: ``time_s``, ``platform``, ``lat_deg``, ``lon_deg``, ``alt_m``, ``heading_deg``,
   ``pitch_deg``, ``roll_deg`` as reported (one row for a fixed site);
 * ``sensors``: ``sensor``, ``platform``, ``sigma_range_m``, ``sigma_bearing_deg``,
@@ -47,8 +49,19 @@ from registration.fleet.data.problem import FleetProblem, build_problem, plot_ro
 from registration.io.fleet.rejects import BadRows, NoValidPlotsError, RejectedRow, check_mode, rejected_frame
 from registration.fleet.data.tables import DEFAULT_REFERENCE_SIGMA
 
-__all__ = ["FILE_COLUMNS", "FleetTables", "read_fleet_tables",
+__all__ = ["FILE_COLUMNS", "FleetTables", "read_fleet_tables", "needs_association",
            "MIN_UNIT_CHECK_VALUES"]
+
+#: The one target id the file checks put plots without a target id under (they are never set aside).
+UNLABELLED = "\x1f(no id)"
+
+
+def needs_association(plots: dict) -> bool:
+    """True when some plots carry no target id (no ``target`` column, or empty cells in it): the plots
+    are then associated with targets (:func:`registration.fleet.associate_and_register`), and the
+    references are anchors for them rather than targets of the plots' ids."""
+    return "target" not in plots or bool(np.any(np.asarray(plots["target"]) == ""))
+
 
 #: Table name -> the library table name used in build_problem's errors.
 _LIBRARY_NAME = {"plots": "plots", "navigation": "navigation", "sensors": "sensors", "platforms": "platforms",
@@ -157,10 +170,16 @@ def _skip_plot_rows(tables: dict, paths: dict, bad: BadRows, file_rows: dict) ->
     if rows.size == 0:
         return bad.ok()
     ref = tables.get("reference")
-    ref_targets = ref["target"] if ref is not None else ()
+    ref_targets = list(ref["target"]) if ref is not None else []
+    plots = _take(tables["plots"], rows)
+    if needs_association(plots):
+        # the association uses every plot (none is set aside as its target's only sensor's): all are
+        # checked as one target that is never set aside
+        plots["target"] = np.full(rows.size, UNLABELLED)
+        ref_targets.append(UNLABELLED)
     try:
-        problems = plot_row_problems(_take(tables["plots"], rows), tables["sensors"], tables["navigation"],
-                                     tables.get("platforms"), ref_targets)
+        problems = plot_row_problems(plots, tables["sensors"], tables["navigation"], tables.get("platforms"),
+                                     ref_targets)
     except ValueError as exc:
         raise _file_error(exc, paths, file_rows) from exc
     for p in problems:
@@ -179,10 +198,12 @@ def _skip_rows(tables: dict, paths: dict, bads: dict, file_rows: dict) -> FleetT
     file_rows = {**file_rows, "plots": np.flatnonzero(keep)}
     ref = tables.get("reference")
     if ref is not None:
-        targets = set(tables["plots"].get("target", ()))
-        bads["reference"].add("target", "unknown_target", bads["reference"].ok() & ~np.isin(ref["target"], list(targets)),
-                              lambda r: f"reference target {str(ref['target'][r])!r} has no plots kept "
-                                        f"(targets: {sorted(targets)})")
+        if not needs_association(tables["plots"]):  # else the references are anchors for the association
+            targets = set(tables["plots"].get("target", ()))
+            bads["reference"].add("target", "unknown_target",
+                                  bads["reference"].ok() & ~np.isin(ref["target"], list(targets)),
+                                  lambda r: f"reference target {str(ref['target'][r])!r} has no plots kept "
+                                            f"(targets: {sorted(targets)})")
         file_rows["reference"] = np.flatnonzero(bads["reference"].ok())
         tables["reference"] = _take(ref, file_rows["reference"])
     rejected = [r for b in bads.values() for r in b.rejected()]

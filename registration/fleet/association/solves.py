@@ -1,0 +1,105 @@
+"""The registrations the association makes on its way (:class:`Registrar`): the labelled plots and
+the references of their targets, solved by :func:`~registration.fleet.batch.solve.solve_batch` from
+the latest estimate, and the covariance the next tests use.
+
+A state the labelled plots do not determine yet (a passive sensor's biases before any of its
+tracks is joined, say) has no finite sigma in the batch's covariance, which leaves such directions
+out (a pseudo-inverse). The tests need its uncertainty, not zero: along the directions left out,
+the covariance gets the starting covariance ``P0`` (the tables' priors or the options' starting
+sigmas) projected on them (:func:`usable_covariance`).
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import replace
+
+import numpy as np
+
+from registration.fleet.association.inputs import labelled_problem
+from registration.fleet.association.options import AssociationOptions
+from registration.fleet.batch.solve import solve_batch
+from registration.fleet.data.inputs import References
+from registration.fleet.data.problem import FleetProblem
+
+__all__ = ["INTERMEDIATE_TOLERANCE", "INTERMEDIATE_ITERATIONS", "Registrar", "usable_covariance"]
+
+#: Stopping tolerance (chi-square units) of the solves between association passes: their estimate
+#: only sets the next gates, so a remaining change of about sqrt(0.01) = 0.1 sigma is enough.
+INTERMEDIATE_TOLERANCE = 1e-2
+#: Iterations per phase of those solves at most (a window that only 2-D radars determine can make
+#: Levenberg-Marquardt crawl along its poorly determined height).
+INTERMEDIATE_ITERATIONS = 25
+
+
+def usable_covariance(result, P0: np.ndarray) -> np.ndarray:
+    """(n, n) the batch covariance with ``P0`` on the directions it leaves out (module docstring)."""
+    P = np.array(result.covariance, dtype=np.float64)
+    U = result.undetermined
+    if U.size == 0:
+        return P
+    free = result.layout.free
+    scale = result.scale
+    p0 = np.diag(P0)[free] / scale**2  # the starting variances in scaled coordinates
+    A = scale[:, None] * U
+    P[np.ix_(free, free)] += A @ (U.T @ (p0[:, None] * U)) @ A.T
+    return 0.5 * (P + P.T)
+
+
+class Registrar:
+    """Solves of the labelled plots of ``problem`` (all plots, one placeholder target) with the
+    references ``refs`` by ``solver`` (:func:`solve_batch` or a stand-in with its signature); ``x``,
+    ``P`` the latest estimate and usable covariance (start: 0, ``P0``),
+    ``problem_solved`` and ``result`` the latest solve (None before any), ``seconds`` in the solver."""
+
+    def __init__(self, problem: FleetProblem, refs: References, P0: np.ndarray, options: AssociationOptions,
+                 progress: bool = False, solver=solve_batch):
+        self.problem, self.refs, self.P0, self.solver = problem, refs, P0, solver
+        self.final_options = replace(options.batch, window_s=options.window_s)
+        self.between = replace(self.final_options, tolerance=max(self.final_options.tolerance, INTERMEDIATE_TOLERANCE),
+                               max_iterations=min(self.final_options.max_iterations, INTERMEDIATE_ITERATIONS))
+        self.margin_s = options.window_s
+        self.progress = progress
+        self.x, self.P = np.zeros(problem.layout.n), P0.copy()
+        self.problem_solved, self.result, self.seconds, self.solves = None, None, 0.0, 0
+
+    def solve(self, labels: np.ndarray, subset: np.ndarray | None = None, final: bool = False):
+        """Register the plots labelled in ``labels`` (N,; only those in ``subset`` (N,) bool if given)
+        from the latest estimate; ``final``: the caller's batch options (else the looser ones of the
+        solves between passes). Returns the result, or None (estimate unchanged) when no target is
+        seen by two sensors or is a reference."""
+        lab = labels if subset is None else np.where(subset, labels, "")
+        if not (lab != "").any():
+            return None
+        try:
+            problem = labelled_problem(self.problem, lab, self.refs, self.margin_s)
+        except ValueError:
+            return None
+        t0 = time.perf_counter()
+        try:
+            result = self.solver(problem, self.final_options if final else self.between, x0=self._start(problem),
+                                 progress=self.progress)
+        except ValueError:  # every window set aside: nothing to register yet
+            return None
+        finally:
+            self.seconds += time.perf_counter() - t0
+        self.solves += 1
+        self.x, self.P = result.estimate.copy(), usable_covariance(result, self.P0)
+        self.problem_solved, self.result = problem, result
+        return result
+
+    def _start(self, problem: FleetProblem) -> np.ndarray:
+        """The warm start: the latest estimate, with 0 for the states of the sensors (and platforms)
+        without plots in ``problem`` (a state the data do not determine stays where the solve starts;
+        one taught by a join that was dropped since must not)."""
+        layout = problem.layout
+        seen = layout.sensor_states(np.unique(problem.sensor), problem.sensor_platform)
+        x0 = np.zeros(layout.n)
+        keep = np.unique(seen[seen < layout.n])
+        x0[keep] = self.x[keep]
+        return x0
+
+    def register(self, labels: np.ndarray, subset: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """:meth:`solve` between passes; (estimate, covariance)."""
+        self.solve(labels, subset)
+        return self.x, self.P
