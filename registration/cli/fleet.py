@@ -77,8 +77,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                        help="platform, prior_heading_deg, prior_pitch_deg, prior_roll_deg (0 = fixed); "
                             "default: no priors")
     files.add_argument("--reference", type=Path, default=None, metavar="FILE",
-                       help="time_s, target, lat_deg, lon_deg, alt_m (or x_m, y_m, z_m), optional sigma_m: "
-                            "known target positions; default: none")
+                       help="time_s, target, lat_deg, lon_deg, alt_m (or x_m, y_m, z_m), optional sigma_m "
+                            "(m per axis; horizontal with sigma_up_m) and sigma_up_m (m, vertical): known target "
+                            "positions; default: none")
     reg.add_argument("--window-s", type=float, default=20.0, metavar="S",
                      help="length of the windows each target track is cut into, s (0: one per instant); the "
                           "online filter updates once per window")

@@ -102,8 +102,8 @@ def print_report(result, rows: list[dict], header: list[str]) -> None:
 #: A term of the chi-square whose mean square per value exceeds this is pointed out by name.
 TERM_HINT_ABOVE = 10.0
 _TERM_CAUSES = {"plots": "the sensors' noise sigmas are stated too small, or the plots carry an unmodelled error",
-                "references": "the reference file's sigma_m is stated too small, or its positions or times do not "
-                              "match the plots' targets",
+                "references": "the reference file's sigma_m is stated too small (or its vertical sigma_up_m), or its "
+                              "positions or times do not match the plots' targets",
                 "priors": "the priors are too tight for the errors there are"}
 
 

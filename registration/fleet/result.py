@@ -109,7 +109,9 @@ class BatchResult:
     the plot was excluded. ``information``: the free states' information from the data alone
     (targets eliminated), in the order of ``free_names``. ``reference_residuals`` (R', 3): per
     reference position used, ``(known - fitted position) / sigma`` per ECEF axis (sigma: the
-    reference's, m per axis), of target ``reference_target`` (R',); ``references_given``: the
+    reference's, m per axis), or, for the references of a run where some reference has a vertical
+    sigma (``sigma_up`` not equal to ``sigma``), the east, north and up components of that
+    difference over ``sigma``, ``sigma``, ``sigma_up``; of target ``reference_target`` (R',); ``references_given``: the
     reference positions of the problem's targets, used or not (a warning names those not used).
     """
 
@@ -153,7 +155,7 @@ class BatchResult:
     def residual_check(self, by: str = "target") -> dict:
         """Mean squared normalised residual of the plots per target (``by="target"``) or per sensor
         (``by="sensor"``), or of the reference positions used per reference target
-        (``by="reference"``, 3 values per position, one per ECEF axis): {id: (mean, number of
+        (``by="reference"``, 3 values per position, one per ECEF axis, or east, north, up): {id: (mean, number of
         values)}. Where the model fits it is a little below 1 (the fitted trajectory coefficients
         absorb part of the residuals: for a target about ``1 - 3 x its coefficients / its
         values``); well above 1 points at that target's track model (a window too long for its

@@ -15,7 +15,12 @@ in their block form:
 * ``b_c`` (B, q) and ``b_x`` (n + 1,).
 
 A reference position ``y`` (sigma s) of a target adds the residual ``(y - p(t)) / s``; the prior
-of state i adds ``(0 - x_i) / sigma_i``. All sums over plots are segment sums over the
+of state i adds ``(0 - x_i) / sigma_i``. A reference whose vertical sigma ``s_up`` differs from its
+horizontal one is whitened in its local frame instead: ``e = L (y - p(t))`` with
+``L = diag(1/s, 1/s, 1/s_up) R_enu_ecef(lat, lon of y)`` (:func:`reference_whitening`), so its
+three residuals are east, north and up; its terms are ``V += sum basis_k basis_m L^T L`` and
+``b_c += basis_k L^T e``. While every reference used has ``s_up == s`` the scalar weight ``1/s``
+is used as before (the same numbers, bit for bit). All sums over plots are segment sums over the
 (block, sensor) order: no Python loop over plots.
 
 With the extended errors the rows come from ``fleet_rows_ext_<n_coef>``. A sensor with a time
@@ -34,12 +39,13 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from registration import _codegen
+from registration.core.frames import ecef2geodetic, enu2ecef_rotation
 from registration.fleet.batch.blocks import Blocks
 from registration.fleet.data.navigation import SeenNavigation
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["Design", "Evaluation", "Normal", "chunk_positions", "make_design", "evaluate", "normal_equations",
-           "positions"]
+           "positions", "reference_whitening"]
 
 
 @dataclass(frozen=True)
@@ -65,12 +71,13 @@ class Design:
     lever: np.ndarray  # (rows, 3)
     state: np.ndarray  # (rows, w) state indices of each row's sensor (layout.sensor_states; n = none)
     ref_p: np.ndarray  # (R', 3) ECEF m
-    ref_weight: np.ndarray  # (R',) 1 / sigma
+    ref_weight: np.ndarray  # (R',) 1 / sigma (1/m)
     prior_weight: np.ndarray  # (n,) 1 / prior sigma (0: no prior; fixed states are not free)
     scale: np.ndarray  # (n,) prior or reference sigma of each state (registration.fleet.data.layout.state_scale)
     time: np.ndarray  # (rows,) reported plot time (s)
     seen_at: object = None  # with time biases: times (rows,) -> (nav, rate, outside); navigation.SeenNavigation
     seen_cache: dict = field(default_factory=dict)  # the seen basis and navigation of the latest time biases
+    ref_whiten: np.ndarray | None = None  # (R', 3, 3) 1/m: L of reference_whitening; None: every sigma_up == sigma
 
     @property
     def att_state(self) -> np.ndarray:
@@ -99,6 +106,20 @@ class Design:
         return self.time - np.append(x, 0.0)[self.state[:, 7]]
 
 
+def reference_whitening(p_ecef: np.ndarray, sigma: np.ndarray, sigma_up: np.ndarray) -> np.ndarray:
+    """(R, 3, 3) whitening matrices ``L = diag(1/sigma, 1/sigma, 1/sigma_up) R_enu_ecef`` (1/m) of
+    reference positions ``p_ecef`` (R, 3) ECEF m with horizontal sigma ``sigma`` (R,) m (east and
+    north) and vertical sigma ``sigma_up`` (R,) m (along the local geodetic up at the position):
+    ``L (y - p)`` is the east, north, up residual of an ECEF difference, each over its sigma."""
+    p = np.asarray(p_ecef, dtype=np.float64).reshape(-1, 3)
+    if p.shape[0] == 0:
+        return np.zeros((0, 3, 3))
+    lat, lon, _ = ecef2geodetic(p)
+    R_enu_ecef = enu2ecef_rotation(lat, lon).transpose(0, 2, 1)
+    inverse = 1.0 / np.stack([sigma, sigma, sigma_up], axis=1)
+    return inverse[:, :, None] * R_enu_ecef
+
+
 def make_design(problem: FleetProblem, blocks: Blocks) -> Design:
     n_rows = blocks.n_chunks * blocks.chunk_size
     source = np.full(n_rows, -1, dtype=np.int64)
@@ -122,10 +143,13 @@ def make_design(problem: FleetProblem, blocks: Blocks) -> Design:
                              "windows' polynomials; give window_s > 0 or drop the prior_time_bias column")
 
         seen_at = SeenNavigation(problem.tracks, problem.platform_ids, problem.platform[o], sensor, problem.time[o])
+    used = blocks.ref_index
+    sigma, sigma_up = refs.sigma[used], refs.sigma_up[used]
+    whiten = None if np.array_equal(sigma, sigma_up) else reference_whitening(refs.p_ecef[used], sigma, sigma_up)
     return Design(blocks, layout.n, blocks.chunk_slot, real, blocks.block[source], blocks.basis[source],
                   blocks.chunk_slot[blocks.block_start], problem.nav[o], problem.meas[o], weight,
-                  problem.sensor_lever[sensor], state, refs.p_ecef[blocks.ref_index],
-                  1.0 / refs.sigma[blocks.ref_index], prior_weight, layout.scale, problem.time[o], seen_at)
+                  problem.sensor_lever[sensor], state, refs.p_ecef[used],
+                  1.0 / sigma, prior_weight, layout.scale, problem.time[o], seen_at, ref_whiten=whiten)
 
 
 def positions(basis: np.ndarray, block: np.ndarray, coef: np.ndarray) -> np.ndarray:
@@ -137,7 +161,8 @@ def positions(basis: np.ndarray, block: np.ndarray, coef: np.ndarray) -> np.ndar
 class Evaluation:
     """At (x, coef): the whitened rows ``Z`` (rows, 3, q + w + 1) = [A_c | A_x | e] of every plot (A_c:
     Jacobian w.r.t. its window's coefficients, A_x: w.r.t. its w states, e: whitened residual),
-    the whitened reference residuals (R', 3) and the total sum of squares."""
+    the whitened reference residuals ``e_ref`` (R', 3) (per ECEF axis; east, north, up with
+    ``Design.ref_whiten``) and the total sum of squares."""
 
     x: np.ndarray
     coef: np.ndarray
@@ -213,7 +238,10 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
             design.basis[:, 0] if blk.n_coef == 1 else design.basis)[0]
     Z = rows_t.swapaxes(1, 2)  # each plot's 3 rows, contiguous
     e = Z[:, :, -1]
-    e_ref = (design.ref_p - positions(blk.ref_basis, blk.ref_block, coef)) * design.ref_weight[:, None]
+    if design.ref_whiten is None:
+        e_ref = (design.ref_p - positions(blk.ref_basis, blk.ref_block, coef)) * design.ref_weight[:, None]
+    else:
+        e_ref = np.einsum("rij,rj->ri", design.ref_whiten, design.ref_p - positions(blk.ref_basis, blk.ref_block, coef))
     prior = x * design.prior_weight
     cost = float(np.sum(e * e) + np.sum(e_ref * e_ref) + np.sum(prior * prior))
     return Evaluation(x, coef, Z, e_ref, cost)
@@ -230,11 +258,24 @@ class Normal:
     b_x: np.ndarray  # (n + 1,)
 
 
-def _reference_terms(blk: Blocks, ev: Evaluation, ref_weight: np.ndarray, V: np.ndarray, b_c: np.ndarray) -> None:
-    """Add the reference positions' terms to V (B, K, 3, K, 3) and b_c (B, K, 3) in place."""
+def _reference_terms(blk: Blocks, ev: Evaluation, ref_weight: np.ndarray, V: np.ndarray, b_c: np.ndarray,
+                     whiten: np.ndarray | None = None) -> None:
+    """Add the reference positions' terms to V (B, K, 3, K, 3) and b_c (B, K, 3) in place: with the
+    scalar weights ``ref_weight`` (R',), or with the whitening matrices ``whiten`` (R', 3, 3)."""
     if blk.ref_block.size == 0:
         return
     K, B = blk.n_coef, blk.n_blocks
+    if whiten is not None:
+        gram = np.einsum("rai,raj->rij", whiten, whiten).reshape(-1, 9)  # L^T L
+        grad = np.einsum("rai,ra->ri", whiten, ev.e_ref)  # L^T e
+        at3 = (blk.ref_block[:, None] * 3 + np.arange(3)).reshape(-1)
+        at9 = (blk.ref_block[:, None] * 9 + np.arange(9)).reshape(-1)
+        for k in range(K):
+            b_c[:, k, :] += np.bincount(at3, (blk.ref_basis[:, k, None] * grad).reshape(-1), 3 * B).reshape(B, 3)
+            for m in range(K):
+                w = (blk.ref_basis[:, k] * blk.ref_basis[:, m])[:, None] * gram
+                V[:, k, :, m, :] += np.bincount(at9, w.reshape(-1), 9 * B).reshape(B, 3, 3)
+        return
     w2 = ref_weight**2
     for k in range(K):
         for a in range(3):
@@ -265,7 +306,7 @@ def normal_equations(design: Design, ev: Evaluation) -> Normal:
     V = np.add.reduceat(G[:, :q, :q], blk.group_block_start, axis=0)
     b_c = -np.add.reduceat(G[:, :q, -1], blk.group_block_start, axis=0)
     V5, b_c3 = V.reshape(-1, K, 3, K, 3), b_c.reshape(-1, K, 3)
-    _reference_terms(blk, ev, design.ref_weight, V5, b_c3)
+    _reference_terms(blk, ev, design.ref_weight, V5, b_c3, design.ref_whiten)
     idx = blk.group_state
     flat = (idx[:, :, None] * n1 + idx[:, None, :]).reshape(-1)
     U = np.bincount(flat, G[:, q:q + w, q:q + w].reshape(-1), n1 * n1).reshape(n1, n1)

@@ -28,7 +28,7 @@ from registration.fleet.batch.normal import evaluate, make_design, normal_equati
 from registration.fleet.batch.residuals import chi_square_parts
 from registration.fleet.batch.schur import reduce
 from registration.fleet.batch.solver import BatchOptions, outside_when_seen, singular_blocks
-from registration.fleet.data.inputs import References, index_of, read_platforms, read_plots, read_references, read_sensors
+from registration.fleet.data.inputs import index_of, read_platforms, read_plots, read_references, read_sensors
 from registration.fleet.data.layout import StateLayout, make_layout
 from registration.fleet.data.navigation import navigation_at, platform_navigation
 from registration.fleet.data.problem import Exclusion, FleetProblem
@@ -96,7 +96,7 @@ def partition_problem(task: PartitionTask) -> FleetProblem | None:
     ref_target = index_of(refs.target, plan.target_ids)
     ref_keep = ref_target >= 0
     ref_keep[ref_keep] = partition_of(plan, ref_target[ref_keep], refs.time[ref_keep]) == k
-    refs = References(refs.target[ref_keep], refs.time[ref_keep], refs.p_ecef[ref_keep], refs.sigma[ref_keep])
+    refs = refs.subset(ref_keep)
     nav_t = read_table(src.name("navigation"), _read(src, "navigation", src.read_navigation, plan.nav_ranges[k]),
                        ("platform",))
     tracks = platform_navigation(nav_t, platform_ids)

@@ -19,7 +19,8 @@ __all__ = ["UNUSED_REFERENCES_WARN", "chi_square_parts", "reference_residuals", 
 def chi_square_parts(design: Design, ev: Evaluation, free: np.ndarray | None = None) -> dict:
     """The terms of the sum of squares ``ev.cost``: {"plots": (sum of squared normalised residuals,
     number of measured values), "references": (the same over the reference positions used, 3 values
-    each: (known - fitted position) / sigma per ECEF axis, sigma the reference file's ``sigma_m``),
+    each: (known - fitted position) / sigma per ECEF axis, sigma the reference file's ``sigma_m``;
+    with a vertical sigma, east, north, up over ``sigma_m``, ``sigma_m``, ``sigma_up_m``),
     "priors": (the same over the priors of the states ``free`` (indices), if given)}."""
     e = np.where(design.weight > 0, ev.e, 0.0)
     parts = {"plots": (float(np.sum(e * e)), int(np.count_nonzero(design.weight))),
@@ -32,7 +33,10 @@ def chi_square_parts(design: Design, ev: Evaluation, free: np.ndarray | None = N
 
 def reference_residuals(problem: FleetProblem, design: Design, ev: Evaluation) -> tuple[np.ndarray, np.ndarray]:
     """(target ids (R',), normalised residuals (R', 3)): per reference position used, ``(known -
-    fitted position) / sigma`` per ECEF axis (dimensionless; sigma in m per axis)."""
+    fitted position) / sigma`` per ECEF axis (dimensionless; sigma in m per axis). When some
+    reference used has ``sigma_up`` not equal to its ``sigma`` (:attr:`Design.ref_whiten`), the three
+    values of every reference are instead the whitened east, north and up components, ``L (known -
+    fitted)`` with ``L = diag(1/sigma, 1/sigma, 1/sigma_up) R_enu_ecef`` at the known position."""
     refs = problem.references
     return refs.target[design.blocks.ref_index].astype(str), np.array(ev.e_ref, dtype=float)
 

@@ -234,16 +234,30 @@ def read_plots(table: Table, sensors: SensorSpecs) -> PlotColumns:
 
 @dataclass(frozen=True)
 class References:
-    """Known target positions: target id (R,), time (R,) s, p_ecef (R, 3) m, sigma (R,) m per axis."""
+    """Known target positions: target id (R,), time (R,) s, p_ecef (R, 3) m, sigma (R,) m and
+    sigma_up (R,) m. ``sigma`` is the standard deviation of each ECEF axis when ``sigma_up`` equals
+    it (the default: None gives a copy of ``sigma``); otherwise ``sigma`` is the horizontal one
+    (east and north) and ``sigma_up`` the one along the local geodetic up at the position."""
 
     target: np.ndarray
     time: np.ndarray
     p_ecef: np.ndarray
     sigma: np.ndarray
+    sigma_up: np.ndarray | None = None
+
+    def __post_init__(self) -> None:
+        if self.sigma_up is None:
+            object.__setattr__(self, "sigma_up", np.array(self.sigma, dtype=np.float64, copy=True))
 
     @staticmethod
     def empty() -> "References":
-        return References(np.array([], dtype=object), np.zeros(0), np.zeros((0, 3)), np.zeros(0))
+        return References(np.array([], dtype=object), np.zeros(0), np.zeros((0, 3)), np.zeros(0), np.zeros(0))
+
+    def subset(self, which: np.ndarray) -> "References":
+        """The references selected by ``which``: an (R,) bool mask or an array of indices (in the
+        order given), every field taken alike."""
+        return References(self.target[which], self.time[which], self.p_ecef[which], self.sigma[which],
+                          self.sigma_up[which])
 
 
 def read_references(references, target_ids) -> References:
@@ -269,4 +283,11 @@ def read_references(references, target_ids) -> References:
         r = int(bad[0])
         raise table.error(r, f"reference of target {str(target[r])!r}: time {time[r]} s and sigma {sigma[r]} m must be "
                              "finite and sigma > 0 (the accuracy of the known position)")
-    return References(target, time, p.reshape(-1, 3), sigma)
+    sigma_up = table.floats("sigma_up", default=np.nan)
+    sigma_up = np.where(np.isnan(sigma_up), sigma, sigma_up)  # not given: the same as sigma
+    bad = np.flatnonzero(~((sigma_up > 0) & np.isfinite(sigma_up)))
+    if bad.size:
+        r = int(bad[0])
+        raise table.error(r, f"reference of target {str(target[r])!r}: sigma_up {sigma_up[r]} m must be finite and > 0 "
+                             "(the accuracy of the known position along the local up; NaN: the same as sigma)")
+    return References(target, time, p.reshape(-1, 3), sigma, sigma_up)

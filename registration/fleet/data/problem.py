@@ -228,7 +228,7 @@ def build_problem(plots, sensors, navigation, platforms=None, references=None) -
     nav = navigation_at(tracks, platform_ids, specs.platform[sensor], time, describe)
     layout = make_layout(platform_ids, platform_priors, specs.ids, specs.channels, specs.prior, specs.extended_prior)
     ref_keep = np.isin(refs.target, target_ids)
-    refs = References(refs.target[ref_keep], refs.time[ref_keep], refs.p_ecef[ref_keep], refs.sigma[ref_keep])
+    refs = refs.subset(ref_keep)
     return FleetProblem(
         platform_ids=tuple(platform_ids), sensor_ids=specs.ids, target_ids=target_ids,
         sensor_platform=specs.platform, sensor_sigma=specs.sigma, sensor_lever=specs.lever, layout=layout,

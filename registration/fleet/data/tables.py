@@ -22,7 +22,9 @@ Every table is long form, one row per item; SI units and radians (docs/conventio
   NaN (or a missing column) = not measured.
 * ``references`` (optional): ``target``, ``time`` (s) and the known position either as ECEF
   ``x``, ``y``, ``z`` (m) or geodetic ``lat``, ``lon`` (rad), ``alt`` (m); ``sigma`` (m, standard
-  deviation per axis of the known position, default :data:`DEFAULT_REFERENCE_SIGMA`).
+  deviation per axis of the known position, default :data:`DEFAULT_REFERENCE_SIGMA`); optional
+  ``sigma_up`` (m, standard deviation along the local geodetic up at the position; missing or NaN:
+  equal to ``sigma``, which then is the horizontal one, east and north).
 """
 
 from __future__ import annotations

@@ -37,7 +37,7 @@ import numpy as np
 
 from registration.core.consistency import ConsistencyReport
 from registration.fleet.batch.blocks import SAME_INSTANT_S
-from registration.fleet.data.inputs import References, index_of, read_platforms, read_plots, read_references, read_sensors
+from registration.fleet.data.inputs import index_of, read_platforms, read_plots, read_references, read_sensors
 from registration.fleet.data.layout import make_layout
 from registration.fleet.data.navigation import navigation_at, platform_navigation
 from registration.fleet.observability import fleet_observability
@@ -220,7 +220,7 @@ class FleetFilter:
         refs = self.references
         t0, t1 = plots["time"].min() - SAME_INSTANT_S, plots["time"].max() + SAME_INSTANT_S
         sel = np.isin(refs.target, target_ids) & (refs.time >= t0) & (refs.time <= t1)  # this epoch's only
-        refs = References(refs.target[sel], refs.time[sel], refs.p_ecef[sel], refs.sigma[sel])
+        refs = refs.subset(sel)
         return FleetProblem(
             platform_ids=tuple(self.platform_ids), sensor_ids=self.specs.ids, target_ids=target_ids,
             sensor_platform=self.specs.platform, sensor_sigma=self.specs.sigma, sensor_lever=self.specs.lever,

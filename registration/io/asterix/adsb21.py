@@ -1,12 +1,13 @@
 """CAT021 ADS-B reports -> the fleet reference file (``time_s``, ``target``, ``lat_deg``,
-``lon_deg``, ``alt_m``, ``sigma_m``).
+``lon_deg``, ``alt_m``, ``sigma_m``, ``sigma_up_m``).
 
 * target: I021/080 target address as 6 uppercase hex digits, as the CAT048 plots' I048/220.
 * time: I021/071 (time of applicability for position), else I021/073 (time of message reception
   for position), else I021/077 (time of report transmission); I021/030 in editions 0.2x.
 * position: I021/131 (high resolution), else I021/130, WGS-84; ``alt_m``: I021/140 geometric height
   x 6.25 ft x 0.3048 m/ft, above the WGS-84 ellipsoid.
-* ``sigma_m``: one sigma per axis, from the position quality (:func:`adsb_sigma_m`).
+* ``sigma_m``, ``sigma_up_m``: the horizontal sigma (per axis, east and north) and the vertical
+  one, from the position quality (:func:`adsb_sigma_m`).
 * set aside, first reason first: no address, no time item, time of 24 h or more, TST, SIM, RAB
   (editions 2.x: I021/040; 0.2x: I021/040 too), no position, a position out of range, no
   quality (no I021/090 or no NACp in it; NACp 12-15 reserved), NACp below 7 (NUCp below 6),
@@ -14,10 +15,9 @@
 
 The EPU (estimated position uncertainty, NACp) is a 95 % bound on the horizontal position
 error. For a circular Gaussian of sigma s per axis the radius holding 95 % is
-s sqrt(-2 ln 0.05) = 2.4477 s, so s = EPU / 2.4477. The reference takes one sigma for all three
-axes; the vertical sigma is the 95 % bound of GVA (I021/090, 1: 150 m, 2: 45 m) over 1.96 when
-given, else twice the horizontal one (GNSS vertical errors run about twice the horizontal per
-axis); ``sigma_m`` is the larger of the two, so it bounds both (docs/asterix.md).
+s sqrt(-2 ln 0.05) = 2.4477 s, so ``sigma_m`` = EPU / 2.4477. The vertical sigma ``sigma_up_m`` is
+the 95 % bound of GVA (I021/090, 1: 150 m, 2: 45 m) over 1.96 when given, else twice the
+horizontal one (GNSS vertical errors run about twice the horizontal per axis) (docs/asterix.md).
 """
 
 from __future__ import annotations
@@ -45,15 +45,15 @@ CIRCULAR_95 = math.sqrt(-2.0 * math.log(0.05))
 _GAUSS_95 = 1.959964
 
 
-def adsb_sigma_m(epu_m: np.ndarray, gva: np.ndarray) -> np.ndarray:
-    """One sigma per axis (m) of ADS-B positions of horizontal 95 % bound ``epu_m`` and GVA ``gva``
-    (0 or 3: not stated): max(EPU / 2.4477, vertical sigma) with vertical sigma GVA bound / 1.96,
-    else 2 EPU / 2.4477."""
+def adsb_sigma_m(epu_m: np.ndarray, gva: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(horizontal sigma per axis, east and north; vertical sigma, along the local up), both m, of
+    ADS-B positions of horizontal 95 % bound ``epu_m`` (m) and GVA ``gva`` (0 or 3: not stated):
+    EPU / 2.4477, and GVA bound / 1.96, else 2 EPU / 2.4477."""
     horizontal = np.asarray(epu_m, dtype=float) / CIRCULAR_95
     gva = np.asarray(gva)
     vertical = np.where(gva == 1, GVA_BOUND_M[1] / _GAUSS_95,
                         np.where(gva == 2, GVA_BOUND_M[2] / _GAUSS_95, 2.0 * horizontal))
-    return np.maximum(horizontal, vertical)
+    return horizontal, vertical
 
 
 def _lookup(table: dict, values: np.ndarray) -> np.ndarray:
@@ -93,6 +93,6 @@ def reference_verdicts(f: dict, old_edition: bool) -> tuple[Verdicts, np.ndarray
 
 def reference_columns(f: dict, time_s: np.ndarray, epu_m: np.ndarray) -> dict:
     """The reference file columns of records (all; select the kept ones after)."""
+    horizontal, vertical = adsb_sigma_m(epu_m, np.where(f["has_gva"], f["gva"], 0))
     return {"time_s": time_s, "target": format_ids(f["address"], "%06X"), "lat_deg": f["lat_deg"], "lon_deg": f["lon_deg"],
-            "alt_m": f["height"] * (HEIGHT_LSB_FT * FOOT_M),
-            "sigma_m": adsb_sigma_m(epu_m, np.where(f["has_gva"], f["gva"], 0))}
+            "alt_m": f["height"] * (HEIGHT_LSB_FT * FOOT_M), "sigma_m": horizontal, "sigma_up_m": vertical}

@@ -27,7 +27,7 @@ __all__ = ["PLOT_COLUMNS", "REFERENCE_COLUMNS", "site_tables"]
 #: Columns of the plots file written (no elevation_deg: not measured).
 PLOT_COLUMNS = ("time_s", "sensor", "target", "range_m", "bearing_deg")
 #: Columns of the reference file.
-REFERENCE_COLUMNS = ("time_s", "target", "lat_deg", "lon_deg", "alt_m", "sigma_m")
+REFERENCE_COLUMNS = ("time_s", "target", "lat_deg", "lon_deg", "alt_m", "sigma_m", "sigma_up_m")
 
 
 def site_tables(sites: pd.DataFrame, time_s: float) -> dict:

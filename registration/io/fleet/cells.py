@@ -51,13 +51,13 @@ FILE_COLUMNS = {
                   ("lat_deg", "lat", "deg", False, (-90.0, 90.0)), ("lon_deg", "lon", "deg", False, (-360.0, 360.0)),
                   ("alt_m", "alt", "m", False, (-1.2e4, 1e8)), ("x_m", "x", "m", False, (-1e8, 1e8)),
                   ("y_m", "y", "m", False, (-1e8, 1e8)), ("z_m", "z", "m", False, (-1e8, 1e8)),
-                  ("sigma_m", "sigma", "m", False, (0.0, 1e6))),
+                  ("sigma_m", "sigma", "m", False, (0.0, 1e6)), ("sigma_up_m", "sigma_up", "m", False, (0.0, 1e6))),
 }
 #: Id columns of a table whose empty cells mean "no id" (not an error): a plot without a target id is
 #: associated (registration.fleet.association), one without a track id is tracked by the association.
 OPTIONAL_IDS = {"plots": ("target", "track")}
 #: Sigma columns whose value must be > 0 (a prior may be 0: fixed).
-_POSITIVE = {"range_m", "sigma_range_m", "sigma_bearing_deg", "sigma_elevation_deg", "sigma_m"}
+_POSITIVE = {"range_m", "sigma_range_m", "sigma_bearing_deg", "sigma_elevation_deg", "sigma_m", "sigma_up_m"}
 
 
 def _read_frame(path: Path):

@@ -22,7 +22,9 @@ File columns (one row per item; an empty cell is "not given"):
 * ``platforms`` (optional): ``platform``, ``prior_heading_deg``, ``prior_pitch_deg``,
   ``prior_roll_deg`` (same meaning as the bias priors);
 * ``reference`` (optional): ``time_s``, ``target`` and the known position as ``lat_deg``,
-  ``lon_deg``, ``alt_m`` or as ECEF ``x_m``, ``y_m``, ``z_m``; optional ``sigma_m`` (per axis).
+  ``lon_deg``, ``alt_m`` or as ECEF ``x_m``, ``y_m``, ``z_m``; optional ``sigma_m`` (m per axis,
+  default 1 m; the horizontal sigma when ``sigma_up_m`` is given) and ``sigma_up_m`` (m, along the
+  local up at the position; an empty cell or no column: the same as ``sigma_m``).
 
 Every cell problem raises a ValueError naming the file, the row (from 0, the first data row), the
 column and its unit; a CSV line with fewer or more fields than the header is a bad row too

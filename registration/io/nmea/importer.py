@@ -49,7 +49,8 @@ class NmeaImport:
       ``range_m``, ``bearing_deg`` (deck bearing);
     * ``sensors``: the input rows of the platform (``talker`` dropped);
     * ``platforms``: one row, ``platform`` and the attitude priors (empty: free);
-    * ``reference``: ``time_s``, ``target`` (MMSI), ``lat_deg``, ``lon_deg``, ``alt_m``, ``sigma_m``;
+    * ``reference``: ``time_s``, ``target`` (MMSI), ``lat_deg``, ``lon_deg``, ``alt_m``, ``sigma_m``
+      (horizontal), ``sigma_up_m`` (vertical);
     * ``rejected``: the lines set aside: ``file``, ``line`` (from 1), ``code``, ``reason``;
     * ``summary``: a JSON-able dict (docs/nmea.md, "The summary").
     """

@@ -12,7 +12,8 @@
   adding their quantisation (185.2 m / sqrt(12) in latitude), and the time sigma that of a time
   given to the whole second (1 s / sqrt(12)) or, without a second, the latency.
 * **Height**: AIS has none; the reference is at mean sea level, whose ellipsoid height is the
-  own ship's geoid separation (GGA).
+  own ship's geoid separation (GGA), with the vertical sigma ``sigma_up`` of
+  :attr:`AisSigmas.height_m` (10 m: the unknown height above the sea of the point the radar sees).
 """
 
 from __future__ import annotations
@@ -53,7 +54,10 @@ class AisSigmas:
     ``time_resolution_s`` (1 s): the UTC second of the report, a uniform error of sigma
     ``time_resolution_s / sqrt(12)``; ``latency_s`` (2 s): the time sigma when the report has no
     second and its reception time stands for it; ``unknown_speed_mps`` (15 m/s, 29 knots): the
-    speed used when the report has none.
+    speed used when the report has none; ``height_m`` (10 m): the vertical sigma of every AIS
+    position, placed at mean sea level: the point the radar sees (the echo centre of the hull and
+    superstructure) and the GNSS antenna lie metres to tens of metres above the sea, and the tide
+    and the geoid's change from the own ship's position add a metre or two.
     """
 
     high_accuracy_m: float = 5.0
@@ -62,18 +66,21 @@ class AisSigmas:
     time_resolution_s: float = 1.0
     latency_s: float = 2.0
     unknown_speed_mps: float = 15.0
+    height_m: float = 10.0
 
     def __post_init__(self) -> None:
         for f in fields(self):
             v = getattr(self, f.name)
             if not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
                 raise ValueError(f"AisSigmas.{f.name}: expected a finite number >= 0, got {v!r}")
+        if not self.height_m > 0:
+            raise ValueError(f"AisSigmas.height_m: expected a vertical sigma > 0 m, got {self.height_m!r}")
 
 
 @dataclass
 class References:
     """AIS reference positions (K,): ``time`` s, ``target`` (MMSI text), ``lat``, ``lon`` rad, ``alt``
-    m, ``sigma`` m per axis; ``vessels``: MMSI -> what the log says of it (name, call sign, class,
+    m, ``sigma`` m per horizontal axis (east, north), ``sigma_up`` m along the local up; ``vessels``: MMSI -> what the log says of it (name, call sign, class,
     positions); ``own``: the own ship's MMSIs and its ``!AIVDO`` messages per type."""
 
     time: np.ndarray
@@ -82,15 +89,18 @@ class References:
     lon: np.ndarray
     alt: np.ndarray
     sigma: np.ndarray
+    sigma_up: np.ndarray
     vessels: dict
     own: dict
 
     def frame(self) -> pd.DataFrame:
-        """The reference file table: ``time_s``, ``target``, ``lat_deg``, ``lon_deg``, ``alt_m``, ``sigma_m``."""
+        """The reference file table: ``time_s``, ``target``, ``lat_deg``, ``lon_deg``, ``alt_m``, ``sigma_m``,
+        ``sigma_up_m``."""
         import pandas as pd
 
         return pd.DataFrame({"time_s": self.time, "target": self.target, "lat_deg": np.degrees(self.lat),
-                             "lon_deg": np.degrees(self.lon), "alt_m": self.alt, "sigma_m": self.sigma})
+                             "lon_deg": np.degrees(self.lon), "alt_m": self.alt, "sigma_m": self.sigma,
+                             "sigma_up_m": self.sigma_up})
 
 
 def _vessel(vessels: dict, mmsi: str) -> dict:
@@ -201,4 +211,5 @@ def read_references(log: SentenceLog, messages: list[AisMessage], clock: Clock, 
     for k in keep:
         vessels[mmsi[k]]["positions"] += 1
     return References(time[keep], mmsi[keep], np.radians(lat[keep]), np.radians(lon[keep]),
-                      np.full(keep.size, float(sea_level)), sigma[keep], vessels, own)
+                      np.full(keep.size, float(sea_level)), sigma[keep], np.full(keep.size, float(sigmas.height_m)),
+                      vessels, own)

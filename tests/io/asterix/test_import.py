@@ -85,8 +85,12 @@ def test_reference_sigma_comes_from_nacp_and_gva(imported):
     ref = imported["raw"].reference
     assert set(ref["target"]) == {"4CA1F3", "3C6DD2"}  # DDDDDD is never plotted
     sigma = ref.groupby("target")["sigma_m"].unique()
-    assert sigma["4CA1F3"] == pytest.approx(45.0 / 1.959964)  # NACp 10 (EPU 10 m), GVA 2 (45 m): vertical larger
-    assert sigma["3C6DD2"] == pytest.approx(2 * 92.6 / math.sqrt(-2 * math.log(0.05)))  # NACp 8, no GVA
+    sigma_up = ref.groupby("target")["sigma_up_m"].unique()
+    circular_95 = math.sqrt(-2 * math.log(0.05))
+    assert sigma["4CA1F3"] == pytest.approx(10.0 / circular_95)  # NACp 10: EPU 10 m
+    assert sigma_up["4CA1F3"] == pytest.approx(45.0 / 1.959964)  # GVA 2: 45 m at 95 %
+    assert sigma["3C6DD2"] == pytest.approx(92.6 / circular_95)  # NACp 8: EPU 0.05 NM
+    assert sigma_up["3C6DD2"] == pytest.approx(2 * 92.6 / circular_95)  # no GVA: twice the horizontal
     first = ref[ref["target"] == "4CA1F3"].iloc[0]
     assert first["alt_m"] == pytest.approx(1600 * 6.25 * 0.3048)
     assert first["lat_deg"] == pytest.approx(45.1, abs=2e-7) and first["time_s"] == pytest.approx(T0, abs=1 / 128)
@@ -161,6 +165,7 @@ def test_the_fleet_reader_accepts_the_tables(imported, tmp_path):
     np.testing.assert_allclose(fleet.plots["range"], tables["plots"]["range_m"], rtol=1e-15)
     assert set(fleet.references["target"]) == {"4CA1F3", "3C6DD2"}
     np.testing.assert_allclose(fleet.references["lat"], np.radians(tables["reference"]["lat_deg"]), rtol=1e-15)
+    np.testing.assert_array_equal(fleet.references["sigma_up"], tables["reference"]["sigma_up_m"])
     assert np.all(fleet.platforms["prior_heading"] == 0)
     problem = fleet.problem()
     assert problem.n_plots == len(tables["plots"])

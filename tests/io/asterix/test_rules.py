@@ -57,10 +57,13 @@ def test_nacp_rules_and_sigma():
     assert list(v.code) == ["no_quality", "low_nacp", "", "", "", "", "", "no_quality"]
     np.testing.assert_allclose(epu[2:7], [185.2, 92.6, 30.0, 10.0, 3.0])
     assert "NACp 12 is reserved" in v.reason[7]
-    sigma = adsb_sigma_m(epu[2:7], np.zeros(5))
-    np.testing.assert_allclose(sigma, 2 * np.array([185.2, 92.6, 30.0, 10.0, 3.0]) / CIRCULAR_95)
+    horizontal, vertical = adsb_sigma_m(epu[2:7], np.zeros(5))
+    np.testing.assert_allclose(horizontal, np.array([185.2, 92.6, 30.0, 10.0, 3.0]) / CIRCULAR_95)
+    np.testing.assert_allclose(vertical, 2 * horizontal)  # no GVA: twice the horizontal sigma
     assert CIRCULAR_95 == pytest.approx(2.4477, abs=1e-4)
-    np.testing.assert_allclose(adsb_sigma_m([3.0, 3.0, 185.2], [2, 1, 2]), [45 / 1.959964, 150 / 1.959964, 185.2 / CIRCULAR_95])
+    horizontal, vertical = adsb_sigma_m([3.0, 3.0, 185.2], [2, 1, 2])
+    np.testing.assert_allclose(horizontal, np.array([3.0, 3.0, 185.2]) / CIRCULAR_95)
+    np.testing.assert_allclose(vertical, [45 / 1.959964, 150 / 1.959964, 45 / 1.959964])  # GVA 2: 45 m, 1: 150 m
 
 
 def test_nucp_rules_of_editions_0_2x():

@@ -182,5 +182,6 @@ def test_cat021_of_other_editions(tmp_path, edition):
     np.testing.assert_allclose(ref["lat_deg"], [-33.5, -32.5], atol=lsb)
     np.testing.assert_allclose(ref["time_s"], [11.0, 12.0])
     epu = [3.0, 10.0] if old else [10.0, 92.6]  # NUCp 9, 8: 3 m, 10 m; NACp 10, 8: 10 m, 0.05 NM
-    np.testing.assert_allclose(ref["sigma_m"], 2 * np.array(epu) / 2.4477, rtol=1e-4)
+    np.testing.assert_allclose(ref["sigma_m"], np.array(epu) / 2.4477, rtol=1e-4)
+    np.testing.assert_allclose(ref["sigma_up_m"], 2 * np.array(epu) / 2.4477, rtol=1e-4)  # no GVA in these editions
     assert result.rejected.groupby("reason_code").size().to_dict() == {"low_nacp": 1, "simulated": 1}

@@ -49,7 +49,7 @@ def test_plots_are_the_measured_ranges_deck_bearings_and_radar_times(bridge):
 def test_reference_positions_times_and_sigmas(bridge):
     log, _, result = bridge
     ref, rep = result.reference, log.reports
-    assert list(ref.columns) == ["time_s", "target", "lat_deg", "lon_deg", "alt_m", "sigma_m"]
+    assert list(ref.columns) == ["time_s", "target", "lat_deg", "lon_deg", "alt_m", "sigma_m", "sigma_up_m"]
     assert len(ref) == len(rep) and OWN_MMSI not in set(ref.target)
     r = ref.sort_values(["target", "time_s"], kind="stable").reset_index(drop=True)
     t = rep.assign(target=rep.mmsi.astype(str)).sort_values(["target", "time_true"], kind="stable").reset_index(drop=True)
@@ -68,6 +68,7 @@ def test_reference_positions_times_and_sigmas(bridge):
     pos = np.where(t.accuracy, 5.0, 10.0)
     expected = np.where(timed, np.hypot(pos, v / np.sqrt(12.0)), np.hypot(pos, v * 2.0))
     assert np.allclose(r.sigma_m, expected, rtol=0.02)  # speed over ground to 0.1 knot
+    assert (r.sigma_up_m == 10.0).all()  # at sea level, whatever height the radar sees: AisSigmas.height_m
 
 
 def test_sensors_platforms_and_summary(bridge):
