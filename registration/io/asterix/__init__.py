@@ -8,20 +8,19 @@ gives the sites' positions and noise. Bad input inside a file is set aside with 
 offset and reason, never raised; a file that is not ASTERIX or a capture raises
 :class:`AsterixImportError`.
 
-Modules: containers (``capture``: file, gzip, format; ``pcap``: packets; ``netstack``: UDP
-datagrams; ``blocks``: data blocks), records (``uap``: the UAP of each edition; ``walker``: the
-vectorised record walk; ``scalar``: the one-record reference walk and its explanations;
-``fields``), fields per category (``decode48``, ``decode34``, ``decode21``), rules and rows
-(``plots48``, ``adsb21``, ``verdicts``, ``timeofday``, ``service``, ``assemble``), tables
-(``sites``, ``tables``, ``summary``), the entry points (``reader``: one file decoded;
-``importer``: the import), ``errors``.
+Subpackages: ``capture`` (``capture``: file, gzip, format; ``pcap``: packets; ``netstack``: UDP
+datagrams; ``blocks``: data blocks), ``decode`` (``uap``: the UAP of each edition; ``walker``: the
+vectorised record walk; ``scalar``: the one-record reference walk; ``fields``; the items per
+category in ``decode48``, ``decode34``, ``decode21``; ``reader``: one file decoded) and ``tables``
+(``plots48``, ``adsb21``, ``verdicts``, ``timeofday``, ``service``, ``assemble``, ``sites``,
+``tables``, ``summary``); beside them ``importer`` (the import) and ``errors``.
 """
 
 from registration.io.asterix.errors import REASONS, AsterixImportError
 from registration.io.asterix.importer import AsterixImport, import_asterix
-from registration.io.asterix.reader import DecodedFile, decode_file
-from registration.io.asterix.sites import check_sites, read_sites
-from registration.io.asterix.uap import DEFAULT_EDITIONS, SUPPORTED_EDITIONS
+from registration.io.asterix.decode.reader import DecodedFile, decode_file
+from registration.io.asterix.tables.sites import check_sites, read_sites
+from registration.io.asterix.decode.uap import DEFAULT_EDITIONS, SUPPORTED_EDITIONS
 
 __all__ = ["AsterixImport", "AsterixImportError", "DEFAULT_EDITIONS", "DecodedFile", "REASONS", "SUPPORTED_EDITIONS",
            "check_sites", "decode_file", "import_asterix", "read_sites"]

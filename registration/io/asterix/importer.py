@@ -11,14 +11,14 @@ from typing import TYPE_CHECKING, Iterable, Mapping, Sequence
 
 import numpy as np
 
-from registration.io.asterix.assemble import FileRows, SiteLookup, assemble_file
+from registration.io.asterix.tables.assemble import FileRows, SiteLookup, assemble_file
 from registration.io.asterix.errors import Rejections
-from registration.io.asterix.reader import decode_file
-from registration.io.asterix.sites import check_sites, read_sites
-from registration.io.asterix.summary import file_summary, sensor_summary, sources_not_in_sites, time_summary
-from registration.io.asterix.tables import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
-from registration.io.asterix.timeofday import Unwrapper, capture_day
-from registration.io.asterix.uap import check_editions
+from registration.io.asterix.decode.reader import decode_file
+from registration.io.asterix.tables.sites import check_sites, read_sites
+from registration.io.asterix.tables.summary import file_summary, sensor_summary, sources_not_in_sites, time_summary
+from registration.io.asterix.tables.tables import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
+from registration.io.asterix.tables.timeofday import Unwrapper, capture_day
+from registration.io.asterix.decode.uap import check_editions
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -127,7 +127,7 @@ def import_asterix(paths: str | Path | Sequence[str | Path], sites: pd.DataFrame
 
     ``paths``: one path or a list, read in order as one stream (time of day carried across files).
     ``sites``: the SITES table (DataFrame, or a path read with
-    :func:`~registration.io.asterix.sites.read_sites`). ``date``: the UTC day (datetime.date or
+    :func:`~registration.io.asterix.tables.sites.read_sites`). ``date``: the UTC day (datetime.date or
     'YYYY-MM-DD') that ``time_s`` counts from; None: the first capture's packet date, else the
     recording's first day (the summary says which). ``progress``: a tqdm bar. ``editions``:
     category -> edition (default the latest of each, e.g. ``{21: "0.26"}`` for an old ADS-B

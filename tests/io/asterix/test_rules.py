@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from registration.io.asterix import read_sites
-from registration.io.asterix.adsb21 import CIRCULAR_95, adsb_sigma_m, reference_verdicts
-from registration.io.asterix.plots48 import target_ids
+from registration.io.asterix.tables.adsb21 import CIRCULAR_95, adsb_sigma_m, reference_verdicts
+from registration.io.asterix.tables.plots48 import target_ids
 
 
 def _fields048(**columns) -> dict:

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from registration.io.asterix import import_asterix
-from registration.io.asterix.timeofday import Unwrapper, midnight_utc
+from registration.io.asterix.tables.timeofday import Unwrapper, midnight_utc
 from tests.io.asterix.encode import cat021_record, cat048_record, encode_recording
 from tests.io.asterix.scenario import DATE, sites_frame
 

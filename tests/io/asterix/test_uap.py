@@ -1,11 +1,11 @@
-"""The reader's UAP tables (registration/io/asterix/uap.py) against libasterix's, generated from
+"""The reader's UAP tables (registration/io/asterix/decode/uap.py) against libasterix's, generated from
 the asterix-specs definitions: every FRN's item and layout, for every supported edition."""
 
 from __future__ import annotations
 
 import pytest
 
-from registration.io.asterix.uap import (DEFAULT_EDITIONS, SUPPORTED_EDITIONS, Compound, Explicit, Extended, Fixed,
+from registration.io.asterix.decode.uap import (DEFAULT_EDITIONS, SUPPORTED_EDITIONS, Compound, Explicit, Extended, Fixed,
                                          Repetitive, RepetitiveFx, check_editions, uap_for)
 from tests.io.asterix.encode import spec
 

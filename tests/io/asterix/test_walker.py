@@ -7,10 +7,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from registration.io.asterix.fields import PAD
-from registration.io.asterix.scalar import RecordProblem, walk_one
-from registration.io.asterix.uap import SUPPORTED_EDITIONS, uap_for
-from registration.io.asterix.walker import walk_records
+from registration.io.asterix.decode.fields import PAD
+from registration.io.asterix.decode.scalar import RecordProblem, walk_one
+from registration.io.asterix.decode.uap import SUPPORTED_EDITIONS, uap_for
+from registration.io.asterix.decode.walker import walk_records
 from tests.io.asterix.libasterix_help import parse_blocks, random_blocks
 
 EDITIONS = [(cat, e) for cat, editions in SUPPORTED_EDITIONS.items() for e in editions]
@@ -145,7 +145,8 @@ def test_decoded_fields_match_libasterix(files):
 
 def test_chunks_do_not_change_the_result(files, monkeypatch):
     """Blocks walked a few hundred bytes at a time give the records of one walk."""
-    from registration.io.asterix import decode_file, reader
+    from registration.io.asterix import decode_file
+    from registration.io.asterix.decode import reader
 
     whole = decode_file(files["pcapng"])
     monkeypatch.setattr(reader, "CHUNK_BYTES", 300)

@@ -1,6 +1,6 @@
 """The packets of a pcap or pcapng capture: where each packet's captured bytes lie in the file, how
 many were captured, the capture time and the link type. The UDP datagrams in them are found by
-:mod:`registration.io.asterix.netstack`.
+:mod:`registration.io.asterix.capture.netstack`.
 
 pcap (libpcap, tcpdump): a 24-octet file header (magic a1b2c3d4 for microsecond or a1b23c4d for
 nanosecond time stamps, in either byte order; the link type), then per packet a 16-octet record

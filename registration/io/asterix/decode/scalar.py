@@ -1,5 +1,5 @@
 """One record walked octet by octet in plain Python: the reference the vectorised walk
-(:mod:`registration.io.asterix.walker`) is tested against, and the explanation, in words, of a
+(:mod:`registration.io.asterix.decode.walker`) is tested against, and the explanation, in words, of a
 record the vectorised walk found bad (which item, what is wrong, where).
 """
 
@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from registration.io.asterix.uap import Compound, Explicit, Extended, Fixed, Repetitive, RepetitiveFx, Uap
+from registration.io.asterix.decode.uap import Compound, Explicit, Extended, Fixed, Repetitive, RepetitiveFx, Uap
 
 __all__ = ["RecordProblem", "walk_one", "explain_record"]
 

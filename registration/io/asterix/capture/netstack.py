@@ -1,7 +1,7 @@
 """The UDP datagrams of captured packets, found over all packets at once (numpy): link layer
 (Ethernet with up to two VLAN tags, Linux cooked SLL and SLL2, BSD loopback, raw IP), IPv4 or
 IPv6, UDP. The payload of each datagram is one segment of the file, read as ASTERIX data blocks
-by :mod:`registration.io.asterix.blocks`.
+by :mod:`registration.io.asterix.capture.blocks`.
 
 Skipped and counted, never set aside record by record: packets that are not IP, IP packets that
 are not UDP (IPv6 with extension headers included), IPv4 fragments (reassembly is not done),
@@ -17,8 +17,8 @@ from typing import Iterable
 
 import numpy as np
 
-from registration.io.asterix.fields import u8, u16, u32
-from registration.io.asterix.pcap import Packets
+from registration.io.asterix.decode.fields import u8, u16, u32
+from registration.io.asterix.capture.pcap import Packets
 
 __all__ = ["LINKTYPES", "Segments", "udp_segments"]
 

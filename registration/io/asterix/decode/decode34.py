@@ -1,6 +1,6 @@
 """CAT034 (monoradar service messages) fields, read from the walked records all at once: raw
 integers as transmitted, with their LSBs here. The scan period and the clock check built on them
-are in :mod:`registration.io.asterix.service`.
+are in :mod:`registration.io.asterix.tables.service`.
 
 | item | field | LSB |
 |---|---|---|
@@ -15,8 +15,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.io.asterix.fields import u8, u16, u24
-from registration.io.asterix.walker import Records
+from registration.io.asterix.decode.fields import u8, u16, u24
+from registration.io.asterix.decode.walker import Records
 
 __all__ = ["WANTED", "NORTH_MARKER", "SECTOR_CROSSING", "SECTOR_LSB_DEG", "decode034"]
 

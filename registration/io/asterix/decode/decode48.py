@@ -1,6 +1,6 @@
 """CAT048 (monoradar target reports) fields, read from the walked records all at once. Raw
 integers as transmitted, with their LSBs here; the physical values and the plot rules are in
-:mod:`registration.io.asterix.plots48`.
+:mod:`registration.io.asterix.tables.plots48`.
 
 | item | field | LSB |
 |---|---|---|
@@ -17,8 +17,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.io.asterix.fields import u8, u16, u24
-from registration.io.asterix.walker import Records
+from registration.io.asterix.decode.fields import u8, u16, u24
+from registration.io.asterix.decode.walker import Records
 
 __all__ = ["WANTED", "TOD_LSB_S", "RHO_LSB_NM", "THETA_LSB_DEG", "decode048"]
 

@@ -10,9 +10,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from registration.io.asterix.decode34 import NORTH_MARKER
-from registration.io.asterix.reader import DecodedFile
-from registration.io.asterix.service import antenna_track, clock_check, scan_period
+from registration.io.asterix.decode.decode34 import NORTH_MARKER
+from registration.io.asterix.decode.reader import DecodedFile
+from registration.io.asterix.tables.service import antenna_track, clock_check, scan_period
 
 if TYPE_CHECKING:
     import pandas as pd

@@ -1,11 +1,11 @@
 """The records of many data blocks of one category walked at once (numpy): FSPEC, then each item
-present in FRN order, its length from the UAP (:mod:`registration.io.asterix.uap`): the offsets
+present in FRN order, its length from the UAP (:mod:`registration.io.asterix.decode.uap`): the offsets
 of the items the caller wants are kept, the others skipped.
 
 The records of a data block follow each other, so a block's second record is found only once its
 first is walked. The walk therefore advances all blocks together, one record of each per step
 (a "wavefront"): a recording of N records in B blocks of at most M records takes M steps over
-about N/M lanes each. A record found bad (:func:`registration.io.asterix.scalar.explain_record`
+about N/M lanes each. A record found bad (:func:`registration.io.asterix.decode.scalar.explain_record`
 says why) ends the walk of its block: the records after it cannot be found.
 """
 
@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.io.asterix.uap import Compound, Explicit, Extended, Fixed, Repetitive, RepetitiveFx, Uap
+from registration.io.asterix.decode.uap import Compound, Explicit, Extended, Fixed, Repetitive, RepetitiveFx, Uap
 
 __all__ = ["Records", "walk_records", "MAX_REPETITIONS"]
 

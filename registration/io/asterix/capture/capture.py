@@ -5,7 +5,7 @@ recording (data blocks end to end: category, 16-bit length counting the 3-octet 
 A file that is none of these raises :class:`~registration.io.asterix.errors.AsterixImportError`
 naming the file. A raw recording is recognised when its first data block is complete, of a known
 ASTERIX category, and the file is not text; a cut-off tail or corrupt stretches later in the file
-are set aside by :mod:`registration.io.asterix.blocks`, not refused.
+are set aside by :mod:`registration.io.asterix.capture.blocks`, not refused.
 """
 
 from __future__ import annotations
@@ -18,9 +18,9 @@ from typing import Iterable
 import numpy as np
 
 from registration.io.asterix.errors import AsterixImportError, Rejections
-from registration.io.asterix.fields import PAD
-from registration.io.asterix.netstack import Segments, udp_segments
-from registration.io.asterix.pcap import PCAP_MAGICS, PCAPNG_MAGIC, pcap_packets, pcapng_packets
+from registration.io.asterix.decode.fields import PAD
+from registration.io.asterix.capture.netstack import Segments, udp_segments
+from registration.io.asterix.capture.pcap import PCAP_MAGICS, PCAPNG_MAGIC, pcap_packets, pcapng_packets
 
 __all__ = ["Capture", "read_capture", "ASTERIX_CATEGORIES"]
 

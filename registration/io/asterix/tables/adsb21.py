@@ -26,9 +26,9 @@ import math
 
 import numpy as np
 
-from registration.io.asterix.decode21 import FOOT_M, HEIGHT_LSB_FT
-from registration.io.asterix.plots48 import format_ids
-from registration.io.asterix.verdicts import Verdicts
+from registration.io.asterix.decode.decode21 import FOOT_M, HEIGHT_LSB_FT
+from registration.io.asterix.tables.plots48 import format_ids
+from registration.io.asterix.tables.verdicts import Verdicts
 
 __all__ = ["NACP_EPU_M", "NUCP_EPU_M", "GVA_BOUND_M", "CIRCULAR_95", "adsb_sigma_m", "reference_verdicts",
            "reference_columns"]

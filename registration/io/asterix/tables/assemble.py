@@ -9,13 +9,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from registration.io.asterix.adsb21 import reference_columns, reference_verdicts
-from registration.io.asterix.decode34 import NORTH_MARKER, SECTOR_LSB_DEG
+from registration.io.asterix.tables.adsb21 import reference_columns, reference_verdicts
+from registration.io.asterix.decode.decode34 import NORTH_MARKER, SECTOR_LSB_DEG
 from registration.io.asterix.errors import Rejections
-from registration.io.asterix.plots48 import plot_columns, plot_verdicts, unknown_source_texts
-from registration.io.asterix.reader import DecodedFile
-from registration.io.asterix.timeofday import Unwrapper, midnight_utc
-from registration.io.asterix.verdicts import Verdicts
+from registration.io.asterix.tables.plots48 import plot_columns, plot_verdicts, unknown_source_texts
+from registration.io.asterix.decode.reader import DecodedFile
+from registration.io.asterix.tables.timeofday import Unwrapper, midnight_utc
+from registration.io.asterix.tables.verdicts import Verdicts
 
 __all__ = ["FileRows", "SiteLookup", "assemble_file"]
 

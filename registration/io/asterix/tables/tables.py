@@ -5,7 +5,7 @@ its attitude held fixed unless SITES gives attitude priors.
 * ``navigation``: ``time_s``, ``platform``, ``lat_deg``, ``lon_deg``, ``alt_m``, ``heading_deg``,
   ``pitch_deg``, ``roll_deg``: one row per site (a fixed site), at any time of the span;
 * ``sensors``: ``sensor``, ``platform``, ``sigma_range_m``, ``sigma_bearing_deg`` (no elevation
-  channel) and the prior columns SITES gives (:data:`~registration.io.asterix.sites.SENSOR_PRIORS`);
+  channel) and the prior columns SITES gives (:data:`~registration.io.asterix.tables.sites.SENSOR_PRIORS`);
 * ``platforms``: ``platform``, ``prior_heading_deg``, ``prior_pitch_deg``, ``prior_roll_deg``
   (SITES' values, an empty cell meaning no prior as in the fleet files; without the column 0:
   held fixed).
@@ -20,7 +20,7 @@ import numpy as np
 if TYPE_CHECKING:
     import pandas as pd
 
-from registration.io.asterix.sites import PLATFORM_PRIORS, SENSOR_PRIORS
+from registration.io.asterix.tables.sites import PLATFORM_PRIORS, SENSOR_PRIORS
 
 __all__ = ["PLOT_COLUMNS", "REFERENCE_COLUMNS", "site_tables"]
 
@@ -32,7 +32,7 @@ REFERENCE_COLUMNS = ("time_s", "target", "lat_deg", "lon_deg", "alt_m", "sigma_m
 
 def site_tables(sites: pd.DataFrame, time_s: float) -> dict:
     """``navigation``, ``sensors`` and ``platforms`` DataFrames of the checked SITES table
-    (:func:`~registration.io.asterix.sites.check_sites`); ``time_s`` the navigation rows' time."""
+    (:func:`~registration.io.asterix.tables.sites.check_sites`); ``time_s`` the navigation rows' time."""
     import pandas as pd
 
     n = len(sites)

@@ -17,7 +17,7 @@ from typing import Collection
 
 import numpy as np
 
-from registration.io.asterix.capture import ASTERIX_CATEGORIES, Capture
+from registration.io.asterix.capture.capture import ASTERIX_CATEGORIES, Capture
 from registration.io.asterix.errors import Rejections
 
 __all__ = ["Blocks", "find_blocks"]

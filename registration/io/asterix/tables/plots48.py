@@ -2,7 +2,7 @@
 ``range_m``, ``bearing_deg``; no elevation: a surveillance radar does not measure it).
 
 * sensor: I048/010 SAC/SIC looked up in SITES; not there: set aside (``unknown_sac_sic``).
-* time: I048/140 placed on the time axis (:mod:`registration.io.asterix.timeofday`).
+* time: I048/140 placed on the time axis (:mod:`registration.io.asterix.tables.timeofday`).
 * range: I048/040 RHO (1/256 NM, slant range) x 1852 m/NM (exact); bearing: THETA (360/2^16 deg,
   clockwise from north, 0 <= bearing < 360).
 * target: the I048/220 aircraft address as 6 uppercase hex digits ("4CA1F3"); else a valid
@@ -18,8 +18,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.io.asterix.decode48 import RHO_LSB_NM, THETA_LSB_DEG
-from registration.io.asterix.verdicts import Verdicts
+from registration.io.asterix.decode.decode48 import RHO_LSB_NM, THETA_LSB_DEG
+from registration.io.asterix.tables.verdicts import Verdicts
 
 __all__ = ["NM_M", "SHARED_MODE_A", "format_ids", "unknown_source_texts", "target_ids", "plot_verdicts", "plot_columns"]
 
@@ -51,7 +51,7 @@ def unknown_source_texts(sac: np.ndarray, sic: np.ndarray, mask: np.ndarray) -> 
 
 def target_ids(f: dict) -> tuple[np.ndarray, np.ndarray]:
     """(target id per record, kind per record: 'mode_s', 'mode_a' or 'none') from the fields of
-    :func:`~registration.io.asterix.decode48.decode048`."""
+    :func:`~registration.io.asterix.decode.decode48.decode048`."""
     n = f["address"].size
     ids = np.full(n, "", dtype=object)
     kind = np.full(n, "none", dtype=object)

@@ -10,7 +10,7 @@ the plots' time stamps against the antenna position.
   messages around it. The check reports the median of (plot time - time the antenna pointed at
   the plot's azimuth, linearly between the messages) and how many plots lie outside their sector.
   Both clocks are the radar's own: a clock offset common to its CAT034 and CAT048 time stamps
-  does not show here (it does show against the capture times, :mod:`registration.io.asterix.summary`),
+  does not show here (it does show against the capture times, :mod:`registration.io.asterix.tables.summary`),
   an azimuth bias shows as bias / 360 x period.
 """
 

@@ -1,5 +1,5 @@
-"""One file decoded: its data blocks found (:mod:`registration.io.asterix.blocks`), the records of
-CAT048, CAT034 and CAT021 walked (:mod:`registration.io.asterix.walker`) in the editions chosen
+"""One file decoded: its data blocks found (:mod:`registration.io.asterix.capture.blocks`), the records of
+CAT048, CAT034 and CAT021 walked (:mod:`registration.io.asterix.decode.walker`) in the editions chosen
 and their fields read (``decode048``, ``decode034``, ``decode021``). Blocks of other categories
 and records that cannot be walked are set aside with their file offsets.
 """
@@ -12,15 +12,15 @@ from typing import Any, Iterable, Mapping
 
 import numpy as np
 
-from registration.io.asterix.decode21 import decode021, wanted as wanted021
-from registration.io.asterix.decode34 import WANTED as WANTED034, decode034
-from registration.io.asterix.decode48 import WANTED as WANTED048, decode048
-from registration.io.asterix.blocks import Blocks, find_blocks
-from registration.io.asterix.capture import Capture, read_capture
+from registration.io.asterix.decode.decode21 import decode021, wanted as wanted021
+from registration.io.asterix.decode.decode34 import WANTED as WANTED034, decode034
+from registration.io.asterix.decode.decode48 import WANTED as WANTED048, decode048
+from registration.io.asterix.capture.blocks import Blocks, find_blocks
+from registration.io.asterix.capture.capture import Capture, read_capture
 from registration.io.asterix.errors import Rejections
-from registration.io.asterix.scalar import explain_record
-from registration.io.asterix.uap import check_editions, uap_for
-from registration.io.asterix.walker import Records, walk_records
+from registration.io.asterix.decode.scalar import explain_record
+from registration.io.asterix.decode.uap import check_editions, uap_for
+from registration.io.asterix.decode.walker import Records, walk_records
 
 __all__ = ["CategoryRecords", "DecodedFile", "decode_file", "CHUNK_BYTES"]
 
@@ -102,7 +102,7 @@ def decode_file(path: str | Path, editions: Mapping[int, str] | None = None, rej
                 ports: Iterable[int] | None = None, progress: Any = None) -> DecodedFile:
     """Decode the CAT048, CAT034 and CAT021 records of one file (raw, pcap or pcapng, gzip or not).
 
-    ``editions``: category -> edition (default :data:`~registration.io.asterix.uap.DEFAULT_EDITIONS`);
+    ``editions``: category -> edition (default :data:`~registration.io.asterix.decode.uap.DEFAULT_EDITIONS`);
     ``rejections``: where what is set aside goes (a new one if None); ``ports``: UDP destination
     ports to keep from a capture (None: all); ``progress``: an object whose ``update(octets)`` is
     called with the octets of the blocks walked (a tqdm bar, say) and, if it has one,
