@@ -8,7 +8,7 @@ Run from a checkout::
     python3 benchmarks/association_table.py --runs 1 --duration 120
     python3 benchmarks/association_table.py --table robust   # the fleets of the robust association
 
-``--table robust`` runs the fleets of :mod:`registration.fleet.association.fleets` instead (the
+``--table robust`` runs the fleets of :mod:`registration.fleet.association.simulated.fleets` instead (the
 issue's rolling fleet with a passive sensor, with and without 5 % clutter, another sensor mix, the
 extended errors, a bridge log with AIS, an ATC recording with Mode S, Mode A and primary plots), one
 row per fleet and draw, against the registration of all real plots with their true ids (the AIS
@@ -42,7 +42,7 @@ import time
 import numpy as np
 
 from registration.fleet import associate_and_register, association_scenario, association_scores, build_problem, solve_batch
-from registration.fleet.association.fleets import atc_fleet, registration_scores, rolling_fleet, vessel_fleet
+from registration.fleet.association.simulated.fleets import atc_fleet, registration_scores, rolling_fleet, vessel_fleet
 
 #: The robust table's fleets: name -> function of the seed returning (simulation, references, ids run plots).
 MIX = {"A-ESM": ("A", (np.nan, np.radians(0.25), np.radians(0.3)), 1.0, 0.1, (1.0, 4.0, 25.0)),

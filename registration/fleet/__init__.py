@@ -16,7 +16,7 @@ docs/association.md.
 
 from registration.fleet.association.associate import AssociationOptions, AssociationResult, associate_and_register
 from registration.fleet.batch.solve import solve_batch
-from registration.fleet.association.clutter import AssociationScenario, association_scenario, association_scores
+from registration.fleet.association.simulated.clutter import AssociationScenario, association_scenario, association_scores
 from registration.fleet.batch.covariance import FusedTargets
 from registration.fleet.online.filter import FleetFilter, OnlineOptions, register_online
 from registration.fleet.online.result import OnlineHistory, OnlineResult

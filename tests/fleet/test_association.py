@@ -135,7 +135,7 @@ def test_line_cost_through_the_joint_covariance_matches_the_direct_formula():
     written out over all n states."""
     from types import SimpleNamespace
 
-    from registration.fleet.association.cost import group_covariances, joint_covariance, line_cost
+    from registration.fleet.association.grouping.cost import group_covariances, joint_covariance, line_cost
 
     rng = np.random.default_rng(7)
     n, n_groups, k = 12, 4, 6

@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from registration.fleet import associate_and_register, build_problem, solve_batch
-from registration.fleet.association.fleets import atc_fleet, registration_scores, rolling_fleet, vessel_fleet
+from registration.fleet.association.simulated.fleets import atc_fleet, registration_scores, rolling_fleet, vessel_fleet
 
 
 def _wrong(labels, truth) -> int:
@@ -108,7 +108,7 @@ def test_2d_radars_register_like_the_true_ids(atc):
 
 
 def test_reference_id_carries_over_to_plots_without_ids():
-    from registration.fleet.association.fleets import reference_table
+    from registration.fleet.association.simulated.fleets import reference_table
 
     sim = rolling_fleet(34, duration_s=300.0, clutter_share=0.05)
     sc = sim.scenario

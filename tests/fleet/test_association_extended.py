@@ -16,9 +16,9 @@ import pytest
 
 from registration.fleet import (associate_and_register, association_scenario, association_scores, build_problem,
                                 solve_batch)
-from registration.fleet.association.cost import group_covariances, joint_covariance, line_cost
-from registration.fleet.association.geometry import TIME_BIAS_SLOT, plot_geometry, state_columns
-from registration.fleet.association.match import make_tracklets, time_shift_sensitivity
+from registration.fleet.association.grouping.cost import group_covariances, joint_covariance, line_cost
+from registration.fleet.association.grouping.geometry import TIME_BIAS_SLOT, plot_geometry, state_columns
+from registration.fleet.association.grouping.match import make_tracklets, time_shift_sensitivity
 
 DURATION_S = 120.0
 EXTENDED = dict(range_gain=5e-4, time_bias=0.3, position_error=20.0)

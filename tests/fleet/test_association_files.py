@@ -10,7 +10,7 @@ import pandas as pd
 import pytest
 
 from registration.cli import main
-from registration.fleet.association.fleets import vessel_fleet
+from registration.fleet.association.simulated.fleets import vessel_fleet
 from registration.io import read_fleet_tables, write_fleet_tables
 from registration.io.fleet.read import needs_association
 

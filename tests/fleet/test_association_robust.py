@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from registration.fleet import associate_and_register, association_scores, build_problem, solve_batch
-from registration.fleet.association.fleets import registration_scores, rolling_fleet
+from registration.fleet.association.simulated.fleets import registration_scores, rolling_fleet
 
 
 def _with_ids(sim, references=None):

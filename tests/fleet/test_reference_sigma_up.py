@@ -21,7 +21,7 @@ import pytest
 
 from registration.core.frames import ecef2geodetic
 from registration.fleet import build_problem, fleet_scenario, solve_batch
-from registration.fleet.association.curves import anchor_curves
+from registration.fleet.association.joining.curves import anchor_curves
 from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.initial import initial_coefficients
 from registration.fleet.batch.normal import evaluate, make_design, normal_equations

@@ -27,20 +27,20 @@ import time
 
 import numpy as np
 
-from registration.fleet.association.confirm import confirm_targets
-from registration.fleet.association.curves import anchor_curves
-from registration.fleet.association.geometry import Assigner
+from registration.fleet.association.grouping.confirm import confirm_targets
+from registration.fleet.association.joining.curves import anchor_curves
+from registration.fleet.association.grouping.geometry import Assigner
 from registration.fleet.association.inputs import (all_plots_problem, anchor_references, initial_covariance,
                                                    plot_ids)
-from registration.fleet.association.checks import JoinState, outlier_stage
-from registration.fleet.association.joins import DEFER_SHARE, join_units
+from registration.fleet.association.joining.checks import JoinState, outlier_stage
+from registration.fleet.association.joining.joins import DEFER_SHARE, join_units
 from registration.fleet.association.references import name_by_references
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.report import plot_report, track_notes
 from registration.fleet.association.result import AssociationResult
-from registration.fleet.association.singles import join_single_plots
+from registration.fleet.association.joining.singles import join_single_plots
 from registration.fleet.association.solves import Registrar
-from registration.fleet.association.units import make_units
+from registration.fleet.association.joining.units import make_units
 from registration.fleet.batch.solve import solve_batch
 from registration.fleet.batch.solver import progress_bar, progress_status
 

@@ -151,5 +151,5 @@ def _references_of(problem: FleetProblem, refs: References, margin_s: float) -> 
     k = np.array([lookup.get(str(t), -1) for t in refs.target], dtype=np.int64)
     inside = k >= 0
     inside[inside] = (refs.time[inside] >= t0[k[inside]] - margin_s) & (refs.time[inside] <= t1[k[inside]] + margin_s)
-    kept = References(refs.target[inside], refs.time[inside], refs.p_ecef[inside], refs.sigma[inside])
+    kept = refs.subset(inside)
     return {"references": kept, "ref_target": k[inside]}

@@ -6,13 +6,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.fleet.association.attach import candidate_plots, pair_tests
-from registration.fleet.association.curves import anchor_curves
-from registration.fleet.association.checks import JoinState
-from registration.fleet.association.joins import choose_joins
+from registration.fleet.association.joining.attach import candidate_plots, pair_tests
+from registration.fleet.association.joining.curves import anchor_curves
+from registration.fleet.association.joining.checks import JoinState
+from registration.fleet.association.joining.joins import choose_joins
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.solves import Registrar
-from registration.fleet.association.units import Units
+from registration.fleet.association.joining.units import Units
 
 __all__ = ["name_by_references"]
 

@@ -6,9 +6,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.fleet.association.checks import JoinState
+from registration.fleet.association.joining.checks import JoinState
 from registration.fleet.association.result import CLUTTER_REASONS, REASONS
-from registration.fleet.association.units import Units
+from registration.fleet.association.joining.units import Units
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["plot_report", "track_notes"]

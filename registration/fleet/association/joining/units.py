@@ -1,12 +1,12 @@
 """The tracks the association joins to targets ("units"): per sensor, the plots without a target
 id grouped into tracks, given by the plots' ``track`` column (a sensor-local id: an ARPA radar's
 target number, a tracker's track number) or made by the per-sensor tracker
-(:func:`~registration.fleet.association.tracks.sensor_tracks`).
+(:func:`~registration.fleet.association.grouping.tracks.sensor_tracks`).
 
 Plots with the same (sensor, track) are one object; ids of different sensors are unrelated. A
 track is split where its plots are more than ``track_gap_s`` apart (an id reused for another object
 after a gap) and, for a given track, where a plot lies outside the gate of the track's prediction
-(a constant-velocity filter in ECEF, :func:`~registration.fleet.association.tracks.track_breaks`:
+(a constant-velocity filter in ECEF, :func:`~registration.fleet.association.grouping.tracks.track_breaks`:
 an id that jumps to another object). Each split of a given track is noted. Pieces of fewer than
 ``min_track_plots`` plots are not joined (too short to be tested; reported as such).
 """
@@ -17,9 +17,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.fleet.association.geometry import Assigner, plot_geometry
+from registration.fleet.association.grouping.geometry import Assigner, plot_geometry
 from registration.fleet.association.options import AssociationOptions
-from registration.fleet.association.tracks import sensor_tracks, track_breaks
+from registration.fleet.association.grouping.tracks import sensor_tracks, track_breaks
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["Units", "make_units", "split_units", "unit_conflicts"]

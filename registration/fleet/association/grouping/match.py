@@ -4,9 +4,9 @@ A tracklet is one sensor track's plots in one window of ``window_s`` seconds (th
 common grid, the same for every sensor). Its plots, corrected by the estimate ``x``, are fitted by
 a quadratic in time in ECEF, ``p(t) = a + b tau + c tau^2`` (tau = (t - centre) / half-width;
 a straight line would miss a 3 km turn at 160 m/s by 100 m over 20 s), weighted by each plot's
-position information (:mod:`registration.fleet.association.geometry`); the fit gives the curve's
+position information (:mod:`registration.fleet.association.grouping.geometry`); the fit gives the curve's
 covariance C and its sensitivity G = d(a, b, c) / dx to the registration states. The grouping of
-the tracklets across sensors, window by window, is :mod:`registration.fleet.association.groups`.
+the tracklets across sensors, window by window, is :mod:`registration.fleet.association.grouping.groups`.
 
 Groups of consecutive windows are chained where they share sensor tracks (an assignment that
 maximises the shared tracks), and a chain is one target.
@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association.geometry import (N_COEF, N_LINE, TIME_BIAS_SLOT, Assigner, PlotGeometry,
+from registration.fleet.association.grouping.geometry import (N_COEF, N_LINE, TIME_BIAS_SLOT, Assigner, PlotGeometry,
                                                      state_columns)
 from registration.fleet.data.problem import FleetProblem
 

@@ -1,4 +1,4 @@
-"""Costs of pairing tracklets with groups (:mod:`registration.fleet.association.match`): the
+"""Costs of pairing tracklets with groups (:mod:`registration.fleet.association.grouping.match`): the
 squared Mahalanobis distance and the log-determinant of its covariance, so that the negative
 log-likelihood is ``0.5 (d2 + logdet)`` up to a constant.
 
@@ -14,7 +14,7 @@ log-likelihood is ``0.5 (d2 + logdet)`` up to a constant.
 
 A sensor's tracklets depend on its w states (w = 6: its platform's attitude errors and its
 biases; w = 11 with the extended errors: also its range gain, time bias and position error, the
-order of :func:`~registration.fleet.association.geometry.state_columns`). With the extended
+order of :func:`~registration.fleet.association.grouping.geometry.state_columns`). With the extended
 errors :func:`measurement_cost` uses ``fleet_residual_ext``, at the time each plot was seen
 (reported time minus the estimated time bias), with the platform's navigation and its rate then
 and the group curve's velocity there; its time-bias column then holds the target's and the
@@ -26,7 +26,7 @@ from __future__ import annotations
 import numpy as np
 
 from registration import _codegen
-from registration.fleet.association.geometry import N_COEF, N_LINE
+from registration.fleet.association.grouping.geometry import N_COEF, N_LINE
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["group_covariances", "joint_covariance", "line_cost", "measurement_cost"]

@@ -4,7 +4,7 @@ carry its Mode S address, scattered too thinly to form tracks; the leftovers of 
 split).
 
 By then the sensor's errors are known from its joined tracks, so one plot is tested alone against
-every anchor whose span holds it (:func:`~registration.fleet.association.attach.pair_tests` with one
+every anchor whose span holds it (:func:`~registration.fleet.association.joining.attach.pair_tests` with one
 plot), under the estimate and its covariance. It is joined when it passes its gate and its
 chi-square tail probability is at least ``ambiguity_ratio`` times that of any other target, and
 when its sensor has no other plot of that target in the same scan. Sensors without any registered
@@ -16,8 +16,8 @@ from __future__ import annotations
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association.attach import evaluate, pair_tests
-from registration.fleet.association.curves import Curves
+from registration.fleet.association.joining.attach import evaluate, pair_tests
+from registration.fleet.association.joining.curves import Curves
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.solves import Registrar
 

@@ -1,7 +1,7 @@
-"""The groups of tracklets (:mod:`registration.fleet.association.match`): in every window at once,
+"""The groups of tracklets (:mod:`registration.fleet.association.grouping.match`): in every window at once,
 sensor after sensor (those measuring the most channels first), each sensor's tracklets are
 assigned to the window's groups by one global assignment per window, with the costs of
-:mod:`registration.fleet.association.cost`; a tracklet outside every gate opens a group.
+:mod:`registration.fleet.association.grouping.cost`; a tracklet outside every gate opens a group.
 
 A group's curve is the information-weighted fusion of its members that measure the most channels
 (a 2-D radar joining a group a 3-D radar opened does not move it: its plots have no height).
@@ -12,8 +12,8 @@ from __future__ import annotations
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association.cost import group_covariances, joint_covariance, line_cost, measurement_cost
-from registration.fleet.association.geometry import N_LINE, Assigner, state_columns
+from registration.fleet.association.grouping.cost import group_covariances, joint_covariance, line_cost, measurement_cost
+from registration.fleet.association.grouping.geometry import N_LINE, Assigner, state_columns
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["group_tracklets"]

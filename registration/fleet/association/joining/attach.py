@@ -25,8 +25,8 @@ import numpy as np
 from scipy.stats import chi2
 
 from registration import _codegen
-from registration.fleet.association.curves import Curves
-from registration.fleet.association.geometry import state_columns
+from registration.fleet.association.joining.curves import Curves
+from registration.fleet.association.grouping.geometry import state_columns
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["Pairs", "candidate_plots", "pair_tests", "evaluate", "kalman_update", "verify_plots"]

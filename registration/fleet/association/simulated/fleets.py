@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.fleet.association.clutter import CLUTTER_ELEVATION_RAD, CLUTTER_RANGE_M, AssociationScenario
+from registration.fleet.association.simulated.clutter import CLUTTER_ELEVATION_RAD, CLUTTER_RANGE_M, AssociationScenario
 from registration.fleet.simulation.scenario import FleetConfig, fleet_scenario
 from registration.fleet.simulation.tracks import Circle, Line, ShipTrack
 

@@ -182,5 +182,6 @@ def anchor_curves(problem: FleetProblem | None, x: np.ndarray, refs: References,
     keep = k >= 0
     order_r = np.lexsort((refs.time[keep], k[keep]))
     return Curves(names + tuple(extra), len(names), blk, order, coef, V_inv, Y, local,
-                  k[keep][order_r], refs.time[keep][order_r], refs.p_ecef[keep][order_r], refs.sigma[keep][order_r],
+                  k[keep][order_r], refs.time[keep][order_r], refs.p_ecef[keep][order_r],
+                  np.maximum(refs.sigma, refs.sigma_up)[keep][order_r],
                   float(gap_s), float(accel_sigma))

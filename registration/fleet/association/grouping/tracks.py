@@ -3,7 +3,7 @@
 A sensor's biases and its platform's attitude errors are the same for every plot it makes, so
 linking one sensor's plots over time does not need the registration: it is done once, at the
 starting estimate. Each sensor's plots are grouped in scans (plots at the same time) and each scan
-is assigned to the sensor's open tracks by :class:`~registration.fleet.association.geometry.Assigner`
+is assigned to the sensor's open tracks by :class:`~registration.fleet.association.grouping.geometry.Assigner`
 (cost: negative log-likelihood of the plot given the track's prediction; gate at the
 ``gate_probability`` quantile of chi-square with 3 degrees of freedom; a plot left over opens a
 track). A track is a constant-velocity Kalman filter on the plot positions (process noise: white
@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association.geometry import Assigner, PlotGeometry
+from registration.fleet.association.grouping.geometry import Assigner, PlotGeometry
 
 __all__ = ["sensor_tracks", "track_breaks"]
 

@@ -1,6 +1,6 @@
 """The checks of the joins under the registration (:func:`drop_failing`, :func:`failing_joins`) and
 the final outlier stage (:func:`outlier_stage`); the labels a registration takes
-(:func:`registered_labels`). See :mod:`registration.fleet.association.joins` for the joins."""
+(:func:`registered_labels`). See :mod:`registration.fleet.association.joining.joins` for the joins."""
 
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ from scipy.stats import chi2
 
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.solves import Registrar
-from registration.fleet.association.units import Units
+from registration.fleet.association.joining.units import Units
 
 __all__ = ["MAX_DROP_ROUNDS", "MAX_OUTLIER_SHARE", "JoinState", "drop_failing", "failing_joins", "outlier_stage",
            "registered_labels"]

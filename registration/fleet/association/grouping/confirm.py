@@ -19,11 +19,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from registration.fleet.association.geometry import Assigner, PlotGeometry, plot_geometry
-from registration.fleet.association.groups import group_tracklets
-from registration.fleet.association.match import chain_groups, make_tracklets
+from registration.fleet.association.grouping.geometry import Assigner, PlotGeometry, plot_geometry
+from registration.fleet.association.grouping.groups import group_tracklets
+from registration.fleet.association.grouping.match import chain_groups, make_tracklets
 from registration.fleet.association.options import AssociationOptions
-from registration.fleet.association.units import make_units
+from registration.fleet.association.joining.units import make_units
 from registration.fleet.data.problem import FleetProblem
 from registration.fleet.batch.solver import progress_status
 

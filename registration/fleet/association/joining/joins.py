@@ -12,12 +12,12 @@ A pass tests every track not yet joined against every anchor whose span it overl
   yet takes one join per round, the most certain, before its other tracks are judged.
 
 The joins are registered (:class:`~registration.fleet.association.solves.Registrar`), and each join's
-residuals under the new estimate are tested (:func:`~registration.fleet.association.checks.failing_joins`): a join whose squared
+residuals under the new estimate are tested (:func:`~registration.fleet.association.joining.checks.failing_joins`): a join whose squared
 normalised residuals exceed the chi-square ``1 - drop_probability`` quantile is dropped, the worst
 of each sensor first (one wrong join can make good ones fail), the registration made again, until
 none fails. A dropped pair is not taken again. Passes repeat until nothing changes. Then the
 final stage leaves out single associated plots whose residuals exceed the ``1 -
-outlier_probability`` quantile (:func:`~registration.fleet.association.checks.outlier_stage`) and the last registration uses the accepted
+outlier_probability`` quantile (:func:`~registration.fleet.association.joining.checks.outlier_stage`) and the last registration uses the accepted
 plots only.
 """
 
@@ -26,16 +26,16 @@ from __future__ import annotations
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association.attach import (Pairs, candidate_plots, evaluate, kalman_update, pair_tests,
+from registration.fleet.association.joining.attach import (Pairs, candidate_plots, evaluate, kalman_update, pair_tests,
                                                    verify_plots)
-from registration.fleet.association.checks import (MAX_OUTLIER_SHARE, JoinState, drop_failing,
+from registration.fleet.association.joining.checks import (MAX_OUTLIER_SHARE, JoinState, drop_failing,
                                                    registered_labels)
-from registration.fleet.association.confirm import new_names
-from registration.fleet.association.curves import anchor_curves
+from registration.fleet.association.grouping.confirm import new_names
+from registration.fleet.association.joining.curves import anchor_curves
 from registration.fleet.association.inputs import labelled_problem
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.solves import Registrar
-from registration.fleet.association.units import Units, split_units, unit_conflicts
+from registration.fleet.association.joining.units import Units, split_units, unit_conflicts
 from registration.fleet.batch.solver import progress_status
 
 __all__ = ["DEFER_SHARE", "choose_joins", "join_units"]
@@ -55,7 +55,7 @@ MAX_SPLIT_DEPTH = 6
 def _margins(pairs: Pairs, cand: np.ndarray, lp: np.ndarray, conflicts: np.ndarray, log_ratio: float):
     """(positions in ``cand`` of each unit's best candidate, their margin): the log tail-probability
     ratio to the unit's next candidate and to the candidates for the same target of the units that
-    conflict with it (:func:`~registration.fleet.association.units.unit_conflicts`) and have that
+    conflict with it (:func:`~registration.fleet.association.joining.units.unit_conflicts`) and have that
     target among their own best (within ``log_ratio`` of their best)."""
     unit, target = pairs.unit[cand], pairs.target[cand]
     best = np.flatnonzero(np.r_[True, unit[1:] != unit[:-1]])
@@ -147,7 +147,7 @@ def choose_joins(pairs: Pairs, names: tuple, P: np.ndarray, state: JoinState, un
 def _label_verified(reg: Registrar, curves, state: JoinState, units: Units, taken: list, covered: dict,
                     dx: np.ndarray, Pk: np.ndarray, options: AssociationOptions) -> int:
     """Label the plots of the joins ``taken`` that pass the per-plot gate under the states after them
-    (:func:`~registration.fleet.association.attach.verify_plots`); a join with more than
+    (:func:`~registration.fleet.association.joining.attach.verify_plots`); a join with more than
     MAX_OUTLIER_SHARE of its plots failing is not taken (a track that swapped targets): it is marked
     failed, and split later. Returns the units labelled."""
     if not taken:
@@ -178,7 +178,7 @@ def _label_verified(reg: Registrar, curves, state: JoinState, units: Units, take
 
 
 def _split(units: Units, state: JoinState, problem, options: AssociationOptions):
-    """Split in halves (:func:`~registration.fleet.association.units.split_units`) the units not
+    """Split in halves (:func:`~registration.fleet.association.joining.units.split_units`) the units not
     joined that failed, matched no target or stayed ambiguous, and have at least twice
     ``min_join_plots`` plots over at least two windows: (units, number split). The halves of a
     track that holds two objects can each join theirs (the report notes a given track whose pieces

@@ -1,0 +1,2 @@
+"""Targets confirmed among the position-fixing sensors: tracks per sensor (tracks), tracklets matched
+across sensors per window (match, groups, cost), plot geometry (geometry), confirmation (confirm)."""

@@ -1,0 +1,1 @@
+"""Simulated plots without target ids (clutter) and the test fleets (fleets)."""
