@@ -68,6 +68,7 @@ def main(argv=None) -> dict:
     out["assignment_share"] = result.assignment_share
     out["registration_share"] = result.seconds_registration / result.seconds_total
     out["passes"] = result.iterations
+    out["join_passes"] = result.join_passes
     out["converged"] = result.converged
     out["ratio_over_baseline"] = out["association_and_registration_s"] / out["baseline_true_ids_s"]
     out.update(association_scores(result.labels, sim.true_target))

@@ -114,7 +114,8 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
         labels = np.where(base != "", base, state.label).astype(str)
         progress_status(bar, "single plots")
         curves = anchor_curves(reg.problem_solved, reg.x, refs, reg.between, gap_s=options.reference_gap_s,
-                               accel_sigma=options.reference_accel_sigma)
+                               accel_sigma=options.reference_accel_sigma,
+                               fit=reg.labelled_fit() if reg.thinned else None)
         single = join_single_plots(reg, curves, labels, (labels == "") & ~state.outlier, options)
         if (single != "").any():
             labels = np.where(single != "", single, labels).astype(str)

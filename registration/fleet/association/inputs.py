@@ -98,11 +98,16 @@ def initial_covariance(problem: FleetProblem, options: AssociationOptions) -> np
     return np.diag(sigma**2)
 
 
-def _first_seen(labels: np.ndarray, row: np.ndarray) -> tuple[str, ...]:
+def _first_seen(labels: np.ndarray, row: np.ndarray) -> tuple[tuple[str, ...], np.ndarray]:
+    """(the distinct labels in order of first row, each label's index into them)."""
     order = np.argsort(row, kind="stable")
-    seen = labels[order]
-    unique, first = np.unique(seen, return_index=True)
-    return tuple(str(u) for u in unique[np.argsort(first)])
+    unique, first, inverse = np.unique(labels.astype(str)[order], return_index=True, return_inverse=True)
+    rank = np.argsort(first)
+    position = np.empty(rank.size, dtype=np.int64)
+    position[rank] = np.arange(rank.size)
+    index = np.empty(labels.size, dtype=np.int64)
+    index[order] = position[inverse.reshape(-1)]
+    return tuple(str(u) for u in unique[rank]), index
 
 
 def labelled_problem(problem: FleetProblem, labels: np.ndarray, refs: References,
@@ -116,13 +121,11 @@ def labelled_problem(problem: FleetProblem, labels: np.ndarray, refs: References
     keep = labels != ""
     sub = problem.drop_plots(~keep, ())
     lab = labels[keep]
-    names = _first_seen(lab, sub.row) if lab.size else ()
-    index = {t: k for k, t in enumerate(names)}
-    target = np.array([index[t] for t in lab], dtype=np.int64) if lab.size else np.zeros(0, dtype=np.int64)
+    names, target = _first_seen(lab, sub.row) if lab.size else ((), np.zeros(0, dtype=np.int64))
     ref_names = set(refs.target.astype(str))
-    n_sensors = np.zeros(len(names), dtype=np.int64)
-    pairs = np.unique(np.stack([target, sub.sensor]), axis=1) if lab.size else np.zeros((2, 0), dtype=np.int64)
-    np.add.at(n_sensors, pairs[0], 1)
+    n_sensors_all = max(len(problem.sensor_ids), 1)
+    pairs = np.unique(target * n_sensors_all + sub.sensor) // n_sensors_all  # the target of each (target, sensor)
+    n_sensors = np.bincount(pairs, minlength=len(names))
     lone = [] if keep_lone else [k for k in np.flatnonzero(n_sensors == 1) if names[k] not in ref_names]
     exclusions = []
     for k in lone:

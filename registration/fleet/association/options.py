@@ -40,8 +40,9 @@ class AssociationOptions:
     associated plot whose residuals exceed the ``1 - outlier_probability`` quantile is left out.
     reference_gap_s (s): reference positions further apart are not interpolated between;
     reference_accel_sigma (m/s^2): the acceleration allowed between two reference positions.
-    max_join_passes: attach-register-check passes at most. batch: the solver's options (its
-    window_s is replaced by this window_s).
+    max_join_passes: attach-register-check passes that change the joins at most, from the start and
+    again after each split of tracks and after the provisional targets. batch: the solver's options
+    (its window_s is replaced by this window_s).
     """
 
     window_s: float = 20.0

@@ -7,6 +7,12 @@ tracks is joined, say) has no finite sigma in the batch's covariance, which leav
 out (a pseudo-inverse). The tests need its uncertainty, not zero: along the directions left out,
 the covariance gets the starting covariance ``P0`` (the tables' priors or the options' starting
 sigmas) projected on them (:func:`usable_covariance`).
+
+At scale, a solve between passes registers every k-th plot of each target and sensor (its first
+and last kept), about SOLVE_PLOTS plots (:func:`thin_labels`): its estimate only sets the next
+gates, and its covariance is that of the plots it used. The checks still see every labelled plot:
+their residuals come from the targets' windows fitted to all of them under that estimate
+(:meth:`Registrar.plot_residuals`). The final registration uses every accepted plot.
 """
 
 from __future__ import annotations
@@ -16,13 +22,15 @@ from dataclasses import replace
 
 import numpy as np
 
+from registration.fleet.association.joining.curves import fit_windows
 from registration.fleet.association.inputs import labelled_problem
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.batch.solve import solve_batch
 from registration.fleet.data.inputs import References
 from registration.fleet.data.problem import FleetProblem
 
-__all__ = ["INTERMEDIATE_TOLERANCE", "INTERMEDIATE_ITERATIONS", "Registrar", "usable_covariance"]
+__all__ = ["INTERMEDIATE_TOLERANCE", "INTERMEDIATE_ITERATIONS", "SOLVE_PLOTS", "Registrar", "thin_labels",
+           "usable_covariance"]
 
 #: Stopping tolerance (chi-square units) of the solves between association passes: their estimate
 #: only sets the next gates, so a remaining change of about sqrt(0.01) = 0.1 sigma is enough.
@@ -30,6 +38,29 @@ INTERMEDIATE_TOLERANCE = 1e-2
 #: Iterations per phase of those solves at most (a window that only 2-D radars determine can make
 #: Levenberg-Marquardt crawl along its poorly determined height).
 INTERMEDIATE_ITERATIONS = 25
+#: Labelled plots above which a solve between passes registers a subsample (module docstring); the
+#: fleets of the tests have fewer, the 10-radar benchmark up to 180 000.
+SOLVE_PLOTS = 40_000
+
+
+def thin_labels(labels: np.ndarray, problem: FleetProblem, cap: int = SOLVE_PLOTS) -> np.ndarray:
+    """(N,) ``labels`` with every k-th plot of each (label, sensor) in time order kept, and its first
+    and last (the targets keep their spans, so their windows), k = ceil(labelled / cap); the others
+    ''. The labels themselves when no more than ``cap`` plots are labelled."""
+    at = np.flatnonzero(labels != "")
+    k = -(-at.size // cap)
+    if k <= 1:
+        return labels
+    _, group = np.unique(np.asarray(labels[at], dtype=str), return_inverse=True)
+    group = group.reshape(-1) * len(problem.sensor_ids) + problem.sensor[at]
+    order = np.lexsort((problem.time[at], group))
+    g = group[order]
+    first = np.r_[True, g[1:] != g[:-1]]
+    last = np.r_[g[1:] != g[:-1], True]
+    rank = np.arange(g.size) - np.maximum.accumulate(np.where(first, np.arange(g.size), 0))
+    out = np.array(labels, dtype=object)
+    out[at[order[~((rank % k == 0) | last)]]] = ""
+    return out
 
 
 def usable_covariance(result, P0: np.ndarray) -> np.ndarray:
@@ -62,6 +93,7 @@ class Registrar:
         self.progress = progress
         self.x, self.P = np.zeros(problem.layout.n), P0.copy()
         self.problem_solved, self.result, self.seconds, self.solves = None, None, 0.0, 0
+        self.labels, self.thinned, self._fit, self._last_fit = None, False, None, None
 
     def solve(self, labels: np.ndarray, subset: np.ndarray | None = None, final: bool = False):
         """Register the plots labelled in ``labels`` (N,; only those in ``subset`` (N,) bool if given)
@@ -71,8 +103,9 @@ class Registrar:
         lab = labels if subset is None else np.where(subset, labels, "")
         if not (lab != "").any():
             return None
+        few = lab if final else thin_labels(lab, self.problem, SOLVE_PLOTS)
         try:
-            problem = labelled_problem(self.problem, lab, self.refs, self.margin_s)
+            problem = labelled_problem(self.problem, few, self.refs, self.margin_s)
         except ValueError:
             return None
         t0 = time.perf_counter()
@@ -86,7 +119,27 @@ class Registrar:
         self.solves += 1
         self.x, self.P = result.estimate.copy(), usable_covariance(result, self.P0)
         self.problem_solved, self.result = problem, result
+        self.labels, self.thinned, self._fit = np.array(lab, dtype=object), few is not lab, None
         return result
+
+    def labelled_fit(self):
+        """The windows of the last solve's targets fitted to all their plots (the problem the solve
+        would have had without its subsample) under its estimate
+        (:func:`~registration.fleet.association.joining.curves.fit_windows`; computed once per solve, started
+        from the windows of the last such fit)."""
+        if self._fit is None:
+            self._fit = fit_windows(labelled_problem(self.problem, self.labels, self.refs, self.margin_s), self.x,
+                                    self.between, self._last_fit)
+            self._last_fit = self._fit
+        return self._fit
+
+    def plot_residuals(self) -> np.ndarray:
+        """(N, 3) normalised residuals of the plots under the last solve (NaN where not measured, not
+        registered or set aside); after a solve of a subsample, of every labelled plot
+        (:meth:`labelled_fit`)."""
+        if not self.thinned:
+            return self.result.residuals[self.problem.row]
+        return self.labelled_fit().residual_table(self.problem.n_input_plots)[self.problem.row]
 
     def _start(self, problem: FleetProblem) -> np.ndarray:
         """The warm start: the latest estimate, with 0 for the states of the sensors (and platforms)

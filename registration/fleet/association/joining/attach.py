@@ -29,10 +29,18 @@ from registration.fleet.association.joining.curves import Curves
 from registration.fleet.association.grouping.geometry import state_columns
 from registration.fleet.data.problem import FleetProblem
 
-__all__ = ["Pairs", "candidate_plots", "pair_tests", "evaluate", "kalman_update", "verify_plots"]
+__all__ = ["Pairs", "candidate_plots", "pair_tests", "evaluate", "pair_statistics", "kalman_update", "verify_plots"]
 
-#: Pairs whose tests are formed in one batch (bounds the memory: about 60 kB per pair).
+#: Pairs of ``test_plots`` (20) plots whose tests are formed in one batch (bounds the memory: about
+#: 60 kB per pair); pairs of fewer plots are batched by more, for about the same memory, up to
+#: MAX_PAIR_CHUNK (one plot: the single plots' tests; three: the prescreen).
 PAIR_CHUNK = 256
+MAX_PAIR_CHUNK = 8192
+
+
+def _chunk(k: int) -> int:
+    """Pairs per batch for pairs of ``k`` plots."""
+    return int(min(MAX_PAIR_CHUNK, max(PAIR_CHUNK, PAIR_CHUNK * 400 // max(k * k, 1))))
 
 
 @dataclass(frozen=True)
@@ -134,7 +142,7 @@ def _chunk_tests(problem: FleetProblem, x: np.ndarray, curves: Curves, unit, tar
     res, J = np.where(mask, res, 0.0), np.where(mask[..., None], J, 0.0)
     Jp, Jx = J[:, :, :3], J[:, :, 3:]
     JA = Jp @ A
-    D = np.zeros((m, 3, n + 1))
+    D = np.zeros((m, 3, n + 1))  # J_x - J_p dp/dc Y (the window's Y over all the states, curves.Y_states)
     rows = np.arange(m)
     cols = np.where(cols < 0, n, cols)
     for i in range(cols.shape[1]):
@@ -143,11 +151,7 @@ def _chunk_tests(problem: FleetProblem, x: np.ndarray, curves: Curves, unit, tar
     G = np.zeros((m, 3, q))
     if batch.any():
         b = block[batch]
-        JAY = JA[batch] @ curves.Y[b]
-        local = curves.local[b]
-        rb = np.flatnonzero(batch)
-        for i in range(local.shape[1]):
-            D[rb, :, local[:, i]] -= JAY[:, :, i]
+        D[batch] -= JA[batch] @ curves.Y_states[b]
         G[batch] = JA[batch] @ curves.V_inv[b]
     sigma = np.nan_to_num(problem.sensor_sigma[problem.sensor[flat]], nan=1.0)
     same = (block.reshape(c, k)[:, :, None] == block.reshape(c, k)[:, None, :]) & batch.reshape(c, k)[:, :, None]
@@ -167,8 +171,9 @@ def pair_tests(problem: FleetProblem, x: np.ndarray, curves: Curves, unit: np.nd
                plots: np.ndarray) -> Pairs:
     """The tests of the pairs (``unit`` (C,), ``target`` (C,), their ``plots`` (C, k), -1 padding) under
     the estimate ``x`` (n,): residuals, their Jacobian D and ``R + A C A^T`` (module docstring)."""
-    parts = [_chunk_tests(problem, x, curves, unit[a:a + PAIR_CHUNK], target[a:a + PAIR_CHUNK],
-                          plots[a:a + PAIR_CHUNK]) for a in range(0, unit.size, PAIR_CHUNK)]
+    c = _chunk(plots.shape[1])
+    parts = [_chunk_tests(problem, x, curves, unit[a:a + c], target[a:a + c], plots[a:a + c])
+             for a in range(0, unit.size, c)]
     if not parts:
         n, k = problem.layout.n, plots.shape[1]
         z = np.zeros(0, dtype=np.int64)
@@ -176,6 +181,19 @@ def pair_tests(problem: FleetProblem, x: np.ndarray, curves: Curves, unit: np.nd
                      np.zeros((0, 3 * k), dtype=bool))
     return Pairs(*(np.concatenate([getattr(p, f) for p in parts]) for f in
                    ("unit", "target", "r", "D", "Sc", "dof", "plots", "mask")))
+
+
+def pair_statistics(problem: FleetProblem, x: np.ndarray, curves: Curves, unit: np.ndarray, target: np.ndarray,
+                    plots: np.ndarray, dx: np.ndarray, P: np.ndarray, **options) -> tuple[np.ndarray, np.ndarray]:
+    """(d2 (C,), values compared (C,)) of the pairs: :func:`pair_tests` and :func:`evaluate` (with its
+    ``options``) one batch at a time, the tests not kept (the single plots' many pairs)."""
+    c = _chunk(plots.shape[1])
+    d2, dof = np.zeros(unit.size), np.zeros(unit.size, dtype=np.int64)
+    for a in range(0, unit.size, c):
+        s = slice(a, a + c)
+        pairs = _chunk_tests(problem, x, curves, unit[s], target[s], plots[s])
+        d2[s], _, _, dof[s] = evaluate(pairs, dx, P, **options)
+    return d2, dof
 
 
 def _masked(r: np.ndarray, D: np.ndarray, Sc: np.ndarray, keep: np.ndarray):
@@ -226,8 +244,9 @@ def evaluate(pairs: Pairs, dx: np.ndarray, P: np.ndarray, *, outlier_limit: np.n
     d2, logdet = np.zeros(C), np.zeros(C)
     keep_all = (pairs.plots >= 0) if keep is None else (keep & (pairs.plots >= 0))
     channels = pairs.mask.reshape(C, k, 3).sum(axis=2)  # measured channels per plot (0 for padding)
-    for a in range(0, C, PAIR_CHUNK):
-        s = slice(a, a + PAIR_CHUNK)
+    chunk = _chunk(k)
+    for a in range(0, C, chunk):
+        s = slice(a, a + chunk)
         D0 = pairs.D[s]
         r0 = pairs.r[s] + D0 @ dx
         keep = keep_all[s].copy()
@@ -275,6 +294,5 @@ def verify_plots(problem: FleetProblem, x: np.ndarray, curves: Curves, unit: np.
     took) are found before they are registered."""
     if plots.size == 0:
         return np.zeros(0, dtype=bool)
-    pairs = pair_tests(problem, x, curves, unit, target, plots[:, None])
-    d2, _, _, dof = evaluate(pairs, dx, P)
+    d2, dof = pair_statistics(problem, x, curves, unit, target, plots[:, None], dx, P)
     return (dof > 0) & (d2 < chi2.ppf(1.0 - probability, np.maximum(dof, 1)))

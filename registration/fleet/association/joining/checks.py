@@ -71,9 +71,13 @@ class JoinState:
 
 def registered_labels(base: np.ndarray, state: JoinState, prov: np.ndarray) -> np.ndarray:
     """(N,) the labels to register: ``base``, the joins, and the provisional targets some track joined."""
-    lab = np.where(base != "", base, state.label)
-    active = (prov != "") & np.isin(prov, [t for t in set(state.target) if t]) & (lab == "")
-    return np.where(active, prov, lab)
+    lab = np.where(base != "", base, state.label).astype(object)
+    at = np.flatnonzero((prov != "") & (lab == ""))
+    if at.size:
+        joined = {t for t in state.target.tolist() if t}
+        at = at[np.array([t in joined for t in prov[at].tolist()], dtype=bool)]
+        lab[at] = prov[at]
+    return lab
 
 
 def failing_joins(reg: Registrar, state: JoinState, units: Units, options: AssociationOptions):
@@ -83,12 +87,12 @@ def failing_joins(reg: Registrar, state: JoinState, units: Units, options: Assoc
     outlier_probability`` quantile. A join fails when more than :data:`MAX_OUTLIER_SHARE` of its plots
     are such outliers (a wrong join, a track that swapped targets) or when its other plots' sum
     exceeds the ``1 - drop_probability`` quantile (a few stray plots a tracker took do not fail it)."""
-    problem, result = reg.problem, reg.result
+    problem = reg.problem
     plots = np.flatnonzero(state.label != "")
     outliers = np.zeros(problem.n_plots, dtype=bool)
-    if result is None or plots.size == 0:
+    if reg.result is None or plots.size == 0:
         return np.zeros(0, dtype=np.int64), np.zeros(0), outliers
-    e = result.residuals[problem.row[plots]]
+    e = reg.plot_residuals()[plots]
     ss, cnt = np.nansum(e * e, axis=1), np.isfinite(e).sum(axis=1)
     out = (cnt > 0) & (ss > chi2.ppf(1.0 - options.outlier_probability, np.maximum(cnt, 1)))
     u = units.of_plot[plots]
@@ -137,7 +141,7 @@ def outlier_stage(reg: Registrar, labels: np.ndarray, given: np.ndarray, options
     out = np.zeros(labels.size, dtype=bool)
     if reg.result is None:
         return out
-    e = reg.result.residuals[reg.problem.row]
+    e = reg.plot_residuals()
     cnt = np.isfinite(e).sum(axis=1)
     ss = np.nansum(e * e, axis=1)
     limit = chi2.ppf(1.0 - options.outlier_probability, np.maximum(cnt, 1))

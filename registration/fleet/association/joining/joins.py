@@ -23,15 +23,17 @@ plots only.
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association.joining.attach import (Pairs, candidate_plots, evaluate, kalman_update, pair_tests,
-                                                   verify_plots)
+from registration.fleet.association.joining.attach import (Pairs, candidate_plots, evaluate, kalman_update, pair_statistics,
+                                                   pair_tests, verify_plots)
 from registration.fleet.association.joining.checks import (MAX_OUTLIER_SHARE, JoinState, drop_failing,
                                                    registered_labels)
 from registration.fleet.association.grouping.confirm import new_names
-from registration.fleet.association.joining.curves import anchor_curves
+from registration.fleet.association.joining.curves import anchor_curves, fit_windows, join_fits
 from registration.fleet.association.inputs import labelled_problem
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.solves import Registrar
@@ -214,29 +216,54 @@ def _prescreen(reg: Registrar, curves, unit: np.ndarray, target: np.ndarray, plo
     n = (plots >= 0).sum(axis=1)
     rows = np.arange(unit.size)
     three = np.stack([plots[:, 0], plots[rows, (n - 1) // 2], plots[rows, n - 1]], axis=1)
-    pairs = pair_tests(reg.problem, reg.x, curves, unit, target, three)
-    d2, _, _, dof = evaluate(pairs, np.zeros(reg.x.size), reg.P,
-                             outlier_limit=_outlier_limits(options.outlier_probability), max_trim=1)
+    d2, dof = pair_statistics(reg.problem, reg.x, curves, unit, target, three, np.zeros(reg.x.size), reg.P,
+                              outlier_limit=_outlier_limits(options.outlier_probability), max_trim=1)
     return (dof > 0) & (d2 < FAR_OFF * chi2.ppf(options.gate_probability, np.maximum(dof, 1)))
 
 
 def _curves(reg: Registrar, labels: np.ndarray, prov: np.ndarray, options: AssociationOptions, cache: dict):
     """The anchors' curves: the registered targets, the provisional ones and the references (the same
-    as the last ones while neither the labels nor the estimate changed, ``cache``)."""
+    as the last ones while neither the estimate nor the provisional targets changed, ``cache``: joins
+    since the last solve barely move a curve)."""
     lab = np.where((prov != "") & (labels == ""), prov, labels)
-    key = (reg.solves, tuple(np.unique(prov[prov != ""])))  # joins since the last solve barely move a curve
+    key = (reg.solves, tuple(np.unique(prov[prov != ""])))
     if cache.get("key") == key:
         return cache["curves"]
-    cache["key"], cache["curves"] = key, _fresh_curves(reg, lab, options)
+    fit = _fit(reg, lab, cache)
+    cache["key"], cache["curves"] = key, anchor_curves(None, reg.x, reg.refs, reg.between, fit=fit,
+                                                       gap_s=options.reference_gap_s,
+                                                       accel_sigma=options.reference_accel_sigma)
     return cache["curves"]
 
 
-def _fresh_curves(reg: Registrar, lab: np.ndarray, options: AssociationOptions):
+def _fit(reg: Registrar, lab: np.ndarray, cache: dict):
+    """The windows of the targets labelled in ``lab`` (N,) fitted under the latest estimate. Under the
+    same estimate as the last fit, the targets whose plots did not change keep their windows (with the
+    states held, each target's windows are fitted to its own plots) and only the others are fitted
+    (the provisional targets, say). After a solve of a subsample, its targets' windows fitted to all
+    their plots (for the checks) are such a last fit."""
+    last, last_lab, missing = None, None, set()
+    if cache.get("fit") is not None and cache.get("solves") == reg.solves:
+        last, last_lab = cache["fit"], cache["lab"]
+    elif reg.thinned:
+        last, last_lab = reg.labelled_fit(), reg.labels
+        missing = set(lab.tolist()) - set(last.names) - {""}  # targets it sets aside: seen by one sensor only
+    if last is not None:
+        changed = lab != last_lab
+        names = (set(lab[changed].tolist()) | set(last_lab[changed].tolist()) | missing) - {""}
+        redo = np.where(np.isin(lab, list(names)), lab, "") if names else np.full(lab.size, "", dtype=object)
+        fit = join_fits(last.without(names), _fit_windows(reg, redo))
+    else:
+        fit = _fit_windows(reg, lab)
+    cache["fit"], cache["lab"], cache["solves"] = fit, lab.copy(), reg.solves
+    return fit
+
+
+def _fit_windows(reg: Registrar, lab: np.ndarray):
     problem = None
     if (lab != "").any():
         problem = labelled_problem(reg.problem, lab, reg.refs, reg.margin_s, keep_lone=True)
-    return anchor_curves(problem, reg.x, reg.refs, reg.between, gap_s=options.reference_gap_s,
-                         accel_sigma=options.reference_accel_sigma)
+    return fit_windows(problem, reg.x, reg.between)
 
 
 def join_units(reg: Registrar, units: Units, base: np.ndarray, options: AssociationOptions, bar,
@@ -247,8 +274,10 @@ def join_units(reg: Registrar, units: Units, base: np.ndarray, options: Associat
     whose join failed, are split in halves (up to MAX_SPLIT_DEPTH times) and their halves tested.
     Once nothing changes, the tracks of position-fixing sensors that joined no anchor become
     provisional targets that the other sensors' tracks may join (a target one 3-D radar sees with
-    2-D radars or passive sensors); those no track joined are dropped again. Returns (state, units
-    (with the splits), passes, converged)."""
+    2-D radars or passive sensors); those no track joined are dropped again. The passes that change
+    the joins are counted from the start, again after each split and after the provisional targets:
+    ``max_join_passes`` of them at most each time. Returns (state, units (with the splits), passes,
+    converged: a pass changed nothing before the limit, with no split or provisional target left)."""
     problem = reg.problem
     state = state or JoinState.empty(units.n, problem.n_plots)
     conflicts = unit_conflicts(units, problem)
@@ -259,7 +288,8 @@ def join_units(reg: Registrar, units: Units, base: np.ndarray, options: Associat
     if state.label.any():
         reg.solve(registered_labels(base, state, prov))
         drop_failing(reg, state, units, base, prov, options)
-    for passes in range(1, options.max_join_passes + MAX_SPLIT_DEPTH + 2):
+    changing = 0  # passes that changed the joins since the start, the last split or the provisional targets
+    for passes in itertools.count(1):
         progress_status(bar, f"join pass {passes}: testing tracks against targets")
         labels = registered_labels(base, state, prov)
         curves = _curves(reg, labels, prov, options, cache)
@@ -285,12 +315,16 @@ def join_units(reg: Registrar, units: Units, base: np.ndarray, options: Associat
                 deferred = True
         bar.update()
         if taken or dropped:
-            continue
+            changing += 1
+            if changing < options.max_join_passes:
+                continue
+            break  # still changing at the limit: not converged
+        changing = 0
         if splits < MAX_SPLIT_DEPTH:
             units, n_split = _split(units, state, problem, options)
             if n_split:
                 splits += 1
-                conflicts = unit_conflicts(units, problem)
+                conflicts = unit_conflicts(units, problem, conflicts)
                 continue
         if sources is None:
             prov, sources = _provisional(units, state, problem, labels, options)

@@ -4,8 +4,8 @@ carry its Mode S address, scattered too thinly to form tracks; the leftovers of 
 split).
 
 By then the sensor's errors are known from its joined tracks, so one plot is tested alone against
-every anchor whose span holds it (:func:`~registration.fleet.association.joining.attach.pair_tests` with one
-plot), under the estimate and its covariance. It is joined when it passes its gate and its
+every anchor whose span holds it (:func:`~registration.fleet.association.joining.attach.pair_statistics`
+with one plot), under the estimate and its covariance. It is joined when it passes its gate and its
 chi-square tail probability is at least ``ambiguity_ratio`` times that of any other target, and
 when its sensor has no other plot of that target in the same scan. Sensors without any registered
 plot yet are left out (their errors are still unknown).
@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association.joining.attach import evaluate, pair_tests
+from registration.fleet.association.joining.attach import pair_statistics
 from registration.fleet.association.joining.curves import Curves
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.solves import Registrar
@@ -58,8 +58,7 @@ def join_single_plots(reg: Registrar, curves: Curves, labels: np.ndarray, free: 
     plot, target = _candidates(reg, curves, free)
     if plot.size == 0:
         return out
-    pairs = pair_tests(problem, reg.x, curves, plot, target, plot[:, None])
-    d2, _, _, dof = evaluate(pairs, np.zeros(reg.x.size), reg.P)
+    d2, dof = pair_statistics(problem, reg.x, curves, plot, target, plot[:, None], np.zeros(reg.x.size), reg.P)
     ok = (dof > 0) & (d2 < chi2.ppf(options.gate_probability, np.maximum(dof, 1)))
     lp = np.where(ok, chi2.logsf(d2, np.maximum(dof, 1)), -np.inf)
     order = np.lexsort((-lp, plot))

@@ -173,27 +173,42 @@ def _collect(problem, at, key, names, time, given, clutter, notes, options) -> U
 def _shared_scans(units: Units, problem: FleetProblem, sensor: int) -> np.ndarray:
     """(K, 2) pairs of units of ``sensor`` that have plots at the same time (one scan) at least twice."""
     plots = np.flatnonzero((units.of_plot >= 0) & (problem.sensor == sensor))
-    pairs = np.unique(np.stack([problem.time[plots], units.of_plot[plots]], axis=1), axis=0)
-    t, u = pairs[:, 0], pairs[:, 1].astype(np.int64)
+    t, u = problem.time[plots], units.of_plot[plots]
+    order = np.lexsort((u, t))
+    t, u = t[order], u[order]
+    first = np.r_[True, (t[1:] != t[:-1]) | (u[1:] != u[:-1])]  # each (time, unit) once
+    t, u = t[first], u[first]
     found = []
-    for d in range(1, 1 + int(np.max(np.unique(t, return_counts=True)[1], initial=1))):
+    for d in range(1, t.size):
         same = t[d:] == t[:-d]
         if not same.any():
             break
         found.append(np.stack([u[:-d][same], u[d:][same]], axis=1))
     if not found:
         return np.zeros((0, 2), dtype=np.int64)
-    both, count = np.unique(np.sort(np.concatenate(found), axis=1), axis=0, return_counts=True)
-    return both[count >= 2]
+    pairs = np.sort(np.concatenate(found), axis=1)
+    code, count = np.unique(pairs[:, 0] * np.int64(units.n) + pairs[:, 1], return_counts=True)
+    code = code[count >= 2]
+    return np.stack([code // units.n, code % units.n], axis=1)
 
 
-def unit_conflicts(units: Units, problem: FleetProblem) -> np.ndarray:
+def unit_conflicts(units: Units, problem: FleetProblem, previous: np.ndarray | None = None) -> np.ndarray:
     """(U, U) bool: units that cannot be the same target. A sensor reports a target once a scan, so
     two units of one sensor with plots in the same scan (the same time) twice or more are two
     targets. For a sensor whose plots all have different times (per-plot times), units whose spans
-    overlap by more than three of its typical plot intervals are taken for two targets."""
+    overlap by more than three of its typical plot intervals are taken for two targets.
+    ``previous``: the conflicts of the units before some were split (:func:`split_units` appends the
+    halves): only the sensors with new units are looked at again (units of different sensors never
+    conflict)."""
     out = np.zeros((units.n, units.n), dtype=bool)
-    for s in np.unique(units.sensor):
+    sensors = np.unique(units.sensor)
+    if previous is not None:
+        old = previous.shape[0]
+        out[:old, :old] = previous
+        sensors = np.unique(units.sensor[old:])
+    for s in sensors:
+        mine = np.flatnonzero(units.sensor == s)
+        out[np.ix_(mine, mine)] = False
         t = problem.time[problem.sensor == s]
         unique = np.unique(t)
         if unique.size < 0.8 * t.size:  # scans of several plots
@@ -201,7 +216,6 @@ def unit_conflicts(units: Units, problem: FleetProblem) -> np.ndarray:
             out[pairs[:, 0], pairs[:, 1]] = out[pairs[:, 1], pairs[:, 0]] = True
             continue
         interval = float(np.median(np.diff(unique))) if unique.size > 1 else 0.0
-        mine = np.flatnonzero(units.sensor == s)
         overlap = np.minimum(units.t1[mine][:, None], units.t1[mine][None, :]) - \
             np.maximum(units.t0[mine][:, None], units.t0[mine][None, :])
         out[np.ix_(mine, mine)] = overlap > 3.0 * interval
