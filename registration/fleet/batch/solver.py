@@ -194,17 +194,20 @@ def exclude_singular(problem: FleetProblem, design: Design, bad: np.ndarray,
     return problem.drop_plots(drop, exclusions)
 
 
-def determined_design(problem: FleetProblem, options: BatchOptions, x0: np.ndarray, priors: bool = True):
+def determined_design(problem: FleetProblem, options: BatchOptions, x0: np.ndarray, priors: bool = True,
+                      coefficients=None):
     """``(problem, design, start, normal)``: the design of ``problem`` with the windows whose position
     their plots do not determine set aside (:func:`singular_blocks`, :func:`exclude_singular`, again
     until none is left), its evaluation at states ``x0`` (n,) with the window means of the plots
     corrected by ``x0`` and the normal equations there; None when no plot is left. Without
-    ``priors`` the states' priors are left out of the sums (a filter carries them itself)."""
+    ``priors`` the states' priors are left out of the sums (a filter carries them itself).
+    ``coefficients(problem, design, x0)``: other starting window coefficients (default: the means)."""
     while problem.n_plots:
         design = make_design(problem, make_blocks(problem, options.window_s, options.degree))
         if not priors:
             design = replace(design, prior_weight=np.zeros_like(design.prior_weight))
-        start = evaluate(design, x0, initial_coefficients(design, x0))
+        coef = initial_coefficients(design, x0) if coefficients is None else coefficients(problem, design, x0)
+        start = evaluate(design, x0, coef)
         normal = normal_equations(design, start)
         bad = singular_blocks(design, normal)
         if bad.size == 0:

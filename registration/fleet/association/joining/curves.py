@@ -27,11 +27,11 @@ from functools import cached_property
 
 import numpy as np
 
-from registration.fleet.batch.blocks import Blocks, make_blocks
+from registration.fleet.batch.blocks import Blocks
 from registration.fleet.batch.initial import initial_coefficients
-from registration.fleet.batch.normal import evaluate, make_design, normal_equations
+from registration.fleet.batch.normal import evaluate, normal_equations
 from registration.fleet.batch.schur import masked_blocks, reduce
-from registration.fleet.batch.solver import BatchOptions, determined_design, exclude_singular, singular_blocks
+from registration.fleet.batch.solver import BatchOptions, determined_design, singular_blocks
 from registration.fleet.data.inputs import References
 from registration.fleet.data.problem import FleetProblem
 
@@ -273,15 +273,8 @@ def _start_coefficients(design, names: tuple, x: np.ndarray, prior: WindowFit) -
 
 def _warm_design(problem: FleetProblem, options: BatchOptions, x: np.ndarray, prior: WindowFit):
     """:func:`~registration.fleet.batch.solver.determined_design` started from :func:`_start_coefficients`."""
-    while problem.n_plots:
-        design = make_design(problem, make_blocks(problem, options.window_s, options.degree))
-        start = evaluate(design, x, _start_coefficients(design, tuple(str(t) for t in problem.target_ids), x, prior))
-        normal = normal_equations(design, start)
-        bad = singular_blocks(design, normal)
-        if bad.size == 0:
-            return problem, design, start, normal
-        problem = exclude_singular(problem, design, bad)
-    return None
+    return determined_design(problem, options, x, coefficients=lambda p, design, x0: _start_coefficients(
+        design, tuple(str(t) for t in p.target_ids), x0, prior))
 
 
 def fit_windows(problem: FleetProblem | None, x: np.ndarray, options: BatchOptions,
