@@ -107,3 +107,30 @@ def test_nmea_log_without_heading_exits_2(bridge_log, tmp_path, capsys):
     err = capsys.readouterr().err
     assert "heading" in err and err.count("\n") == 1
     assert not (tmp_path / "o").exists() or not any((tmp_path / "o").iterdir())
+
+
+def test_nmea_chain_on_a_log_it_was_not_developed_on(tmp_path):
+    """Another draw and another log: seed 7, true bearings, distances in km, a logger's unix-time
+    prefix instead of tag blocks, other bias signs and sizes, 12 vessels of which 9 on AIS."""
+    import dataclasses
+
+    import numpy as np
+
+    from tests.io.nmea.bridgelog import simulate_bridge_log
+    from tests.io.nmea.truth import BridgeLogConfig
+
+    config = dataclasses.replace(BridgeLogConfig(), seed=7, bearing_reference="T", distance_unit="K",
+                                 reception_stamp="prefix-unix", n_vessels=12, n_ais=9, range_bias_m=-35.0,
+                                 bearing_bias_rad=float(np.radians(-1.2)), clock_offset_s=-0.5)
+    log = simulate_bridge_log(config)
+    path, sensors = log.write(tmp_path / "b.log"), log.write_sensors(tmp_path / "s.csv")
+    out, reg = tmp_path / "imp", tmp_path / "reg"
+    assert main(["import", "nmea", str(path), "--platform", "OWN", "--sensors", str(sensors), "--out", str(out)]) == 0
+    assert main(["fleet", "register", "--tables", str(out), "--out", str(reg), "--no-plots"]) == 0
+    est = pd.read_csv(reg / "estimates.csv").set_index(["object", "state"])
+    for state, scale in (("range_bias", 1.0), ("bearing_bias", 57.29577951308232), ("time_bias", 1.0)):
+        row = est.loc[("RADAR", state)]
+        assert abs(row["estimate"] - log.errors[f"RADAR:{state}"] * scale) < 3.5 * row["sigma"], state
+    assoc = pd.read_csv(reg / "associations.csv", dtype={"track": str, "target": str}, keep_default_na=False)
+    joined = assoc[assoc["target"] != ""]
+    assert len(joined) > 0 and (joined["track"].map(log.track_mmsi) == joined["target"]).all()
