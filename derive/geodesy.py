@@ -8,7 +8,7 @@ Latitude B, longitude L in radians, height H above the ellipsoid in metres.
 import sympy as sp
 
 from .constants import WGS84_A, WGS84_B, WGS84_E2
-from .spec import FunctionSpec, Port
+from .spec import FunctionSpec, JacobianDecl, Port, jacobian
 
 lat, lon, alt = sp.symbols("lat lon alt", real=True)
 
@@ -114,6 +114,21 @@ def specs() -> list[FunctionSpec]:
             inputs=(Port("p_ecef", sp.Matrix([px, py, pz]), "m"),),
             outputs=(Port("geodetic", ecef2geodetic_expr(px, py, pz), "rad, rad, m"),),
             domain={"p_ecef": [(-7.4e6, 7.4e6)] * 3},
+        )
+    )
+    alt_surface = sp.Symbol("alt_surface", real=True)
+    p_ecef = sp.Matrix([px, py, pz])
+    residual = sp.Matrix([alt_surface - ecef2geodetic_expr(px, py, pz)[2]])
+    out.append(
+        FunctionSpec(
+            name="surface_residual",
+            doc=("Height residual of a target on a surface of known height (a ship on the sea): residual = "
+                 "alt_surface (m above WGS-84) - the geodetic height of p_ecef (m, the inverse of eq. (1)), and "
+                 "J = d residual / d p_ecef (1x3; minus the geodetic up at the point)."),
+            inputs=(Port("p_ecef", p_ecef, "m"), Port("alt_surface", alt_surface, "m")),
+            outputs=(Port("residual", residual, "m"), Port("J", jacobian(residual, p_ecef), "1")),
+            jacobians=(JacobianDecl("J", "residual", ("p_ecef",)),),
+            domain={"p_ecef": [(-7.4e6, 7.4e6)] * 3, "alt_surface": (-100.0, 100.0)},
         )
     )
     out.append(

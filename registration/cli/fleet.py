@@ -58,7 +58,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                                    "--sensors (each overriding the folder's file)")
     files.add_argument("--tables", type=Path, default=None, metavar="DIR",
                        help="a folder holding the tables by their standard names (plots, navigation, sensors, "
-                            "platforms, reference; .csv or .parquet), as 'registration import' writes them")
+                            "platforms, reference, targets; .csv or .parquet), as 'registration import' writes them")
     files.add_argument("--plots", type=Path, default=None, metavar="FILE",
                        help="time_s, sensor, target and/or track, range_m, bearing_deg, elevation_deg (empty cell: not "
                             "measured); plots without a target id (no column, or empty cells) are associated to the "
@@ -80,6 +80,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                        help="time_s, target, lat_deg, lon_deg, alt_m (or x_m, y_m, z_m), optional sigma_m "
                             "(m per axis; horizontal with sigma_up_m) and sigma_up_m (m, vertical): known target "
                             "positions; default: none")
+    files.add_argument("--targets", type=Path, default=None, metavar="FILE",
+                       help="target, optional name, surface_alt_m (m above WGS-84) and sigma_surface_m: targets that "
+                            "move on a surface of known height, such as ships on the sea; default: none")
     reg.add_argument("--window-s", type=float, default=20.0, metavar="S",
                      help="length of the windows each target track is cut into, s (0: one per instant); the "
                           "online filter updates once per window")
@@ -116,7 +119,8 @@ def _solve(tables, window_s: float, method: str):
     problem = tables.problem()
     if method == "online":
         return problem, register_online(tables.plots, tables.sensors, tables.navigation, tables.platforms,
-                                        tables.references, options=OnlineOptions(window_s=window_s))
+                                        tables.references, options=OnlineOptions(window_s=window_s),
+                                        targets=tables.targets)
     return problem, solve_batch(problem, BatchOptions(window_s=window_s), progress=True)  # a bar on a terminal only
 
 
@@ -207,7 +211,7 @@ def _write_rejected(out: Path, frame) -> Path:
 
 
 def _table_paths(args: argparse.Namespace) -> dict:
-    """The five tables' paths: from --tables DIR by their standard names, each overridden by its own option."""
+    """The tables' paths: from --tables DIR by their standard names, each overridden by its own option."""
     from registration.io.fleet.folder import REQUIRED_TABLES, TABLE_NAMES, tables_in_folder
 
     given = {name: getattr(args, name) for name in TABLE_NAMES}
@@ -227,7 +231,7 @@ def _read_tables(args: argparse.Namespace, out: Path):
     paths = _table_paths(args)
     try:
         tables = read_fleet_tables(paths["plots"], paths["navigation"], paths["sensors"], paths["platforms"],
-                                   paths["reference"], on_bad_row=args.on_bad_row)
+                                   paths["reference"], targets=paths["targets"], on_bad_row=args.on_bad_row)
     except NoValidPlotsError as exc:
         with staged_outputs(out, "registration fleet register", REGISTER_OUTPUTS) as folder:
             _write_rejected(folder.path, exc.rejected_frame())  # the list of what was wrong is the output

@@ -42,12 +42,13 @@ def associate(tables, window_s: float, method: str):
         raise ValueError(f"--window-s: plots without target ids are associated in windows; expected a length > 0 s, "
                          f"got {window_s}")
     association = associate_and_register(tables.plots, tables.sensors, tables.navigation, tables.platforms,
-                                         tables.references, AssociationOptions(window_s=window_s), progress=True)
+                                         tables.references, AssociationOptions(window_s=window_s), progress=True,
+                                         targets=tables.targets)
     if method != "online":
         return association, association.problem, association.batch
     plots, refs = _labelled_tables(tables, association)
     result = register_online(plots, tables.sensors, tables.navigation, tables.platforms, refs,
-                             options=OnlineOptions(window_s=window_s))
+                             options=OnlineOptions(window_s=window_s), targets=tables.targets)
     return association, association.problem, result
 
 

@@ -127,11 +127,12 @@ def _check_json(check) -> dict:
 
 def _references_json(result) -> dict:
     """The reference positions' term of a batch result: how many were given and used, their mean
-    squared normalised residual (3 values per position), per reference target too."""
-    by_target = {k: {"mean_square": v[0], "values": v[1]} for k, v in result.residual_check("reference").items()}
-    n = int(result.reference_residuals.size)
+    squared normalised residual (3 values per position, 2 without a height), per reference target too."""
+    by_target = {k: {"mean_square": _finite(v[0]), "values": v[1]} for k, v in result.residual_check("reference").items()}
+    e = result.reference_residuals[np.isfinite(result.reference_residuals)]
+    n = int(e.size)
     return {"positions_given": int(result.references_given), "positions_used": int(result.reference_target.size),
-            "mean_square": float(np.mean(result.reference_residuals**2)) if n else None, "values": n,
+            "mean_square": float(np.mean(e**2)) if n else None, "values": n,
             "by_target": by_target}
 
 

@@ -36,7 +36,7 @@ NMEA_HELP = ("an NMEA 0183 bridge log (GGA/RMC/GNS, ZDA, HDT/THS, $PASHR, TTM, !
              "navigation, the ARPA radar's plots (with sensor-local track ids), the AIS vessels as the reference "
              "table, and the sensors and platforms tables")
 
-TABLES = ("plots", "navigation", "sensors", "platforms", "reference")
+TABLES = ("plots", "navigation", "sensors", "platforms", "reference", "targets")
 #: Every file an import may write into --out (both formats, so that a new run replaces the other's tables).
 IMPORT_OUTPUTS = frozenset({f"{t}.{s}" for t in TABLES for s in ("csv", "parquet")}
                            | {"rejected.csv", "import_summary.json"})

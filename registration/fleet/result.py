@@ -164,9 +164,12 @@ class BatchResult:
         if by not in ("target", "sensor", "reference"):
             raise ValueError(f"by: expected 'target', 'sensor' or 'reference', got {by!r}")
         if by == "reference":
-            return {str(t): (float(np.mean(self.reference_residuals[self.reference_target == t] ** 2)),
-                             int(self.reference_residuals[self.reference_target == t].size))
-                    for t in dict.fromkeys(self.reference_target)}
+            out = {}
+            for t in dict.fromkeys(self.reference_target):
+                e = self.reference_residuals[self.reference_target == t]
+                e = e[np.isfinite(e)]  # a reference without a height has no up value
+                out[str(t)] = (float(np.mean(e**2)) if e.size else float("nan"), int(e.size))
+            return out
         ids = self.plot_target if by == "target" else self.plot_sensor
         sq = np.nansum(self.residuals**2, axis=1)
         n = np.sum(np.isfinite(self.residuals), axis=1)

@@ -74,7 +74,7 @@ def _check_windows(problem, options: AssociationOptions) -> None:
 
 def associate_and_register(plots, sensors, navigation, platforms=None, references=None,
                            options: AssociationOptions | None = None, *, progress: bool = False,
-                           joins: dict | None = None) -> AssociationResult:
+                           joins: dict | None = None, targets=None) -> AssociationResult:
     """Associate the plots without target ids with targets, and register the fleet with them.
 
     ``plots``, ``sensors``, ``navigation``, ``platforms``, ``references``: the long-form tables of
@@ -84,7 +84,9 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
     with the same sensor and track are one object; ids of different sensors are unrelated). A
     reference target's id may equal a plot id (the same target) or be the id of a target no plot
     names (its plots are associated to it). ``joins``: for tests, joins to start from, {(sensor id,
-    track id): target}; a wrong one is dropped by the checks. ValueError for an empty plots table,
+    track id): target}; a wrong one is dropped by the checks. ``targets``: the optional targets table
+    (targets on a surface of known height, by the ids the association gives: the plots' and the
+    references'). ValueError for an empty plots table,
     any error of :func:`~registration.fleet.data.problem.build_problem` (unknown sensor, bad values;
     the message names the table and row), and when nothing can be associated. ``progress``: bars on
     standard error on a terminal. Returns an :class:`AssociationResult`; the method is in the
@@ -93,7 +95,7 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
     t0 = time.perf_counter()
     options = options or AssociationOptions()
     ids = plot_ids(plots)
-    problem = all_plots_problem(plots, sensors, navigation, platforms)
+    problem = all_plots_problem(plots, sensors, navigation, platforms, targets)
     given, track_id = ids.target[problem.row], ids.track[problem.row]
     _check_windows(problem, options)
     refs = anchor_references(references)
@@ -115,7 +117,7 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
         progress_status(bar, "single plots")
         curves = anchor_curves(reg.problem_solved, reg.x, refs, reg.between, gap_s=options.reference_gap_s,
                                accel_sigma=options.reference_accel_sigma,
-                               fit=reg.labelled_fit() if reg.thinned else None)
+                               fit=reg.labelled_fit() if reg.thinned else None, surface=problem.surface)
         single = join_single_plots(reg, curves, labels, (labels == "") & ~state.outlier, options)
         if (single != "").any():
             labels = np.where(single != "", single, labels).astype(str)

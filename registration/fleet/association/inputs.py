@@ -63,9 +63,10 @@ def plot_ids(plots) -> PlotIds:
     return PlotIds(target, track, table.has("target"), table.has("track"))
 
 
-def all_plots_problem(plots, sensors, navigation, platforms) -> FleetProblem:
+def all_plots_problem(plots, sensors, navigation, platforms, targets=None) -> FleetProblem:
     """The checked problem of every plot, all under one placeholder target (the ``target`` and
-    ``track`` columns are not used here): the plots' geometry, navigation and state layout.
+    ``track`` columns are not used here): the plots' geometry, navigation and state layout, and the
+    surface targets of ``targets`` by id (the problems of the labelled plots find theirs there).
     ValueError for an empty table and every error of :func:`build_problem`."""
     table = read_table("plots", plots, ("time", "sensor"))
     if table.n_rows == 0:
@@ -76,7 +77,7 @@ def all_plots_problem(plots, sensors, navigation, platforms) -> FleetProblem:
     # aside a target seen by one sensor only, unless it is a reference); it is removed at once
     t0 = float(np.nanmin(table.floats("time")))
     dummy = {"target": [PLACEHOLDER], "time": [t0], "x": [0.0], "y": [0.0], "z": [6.4e6]}
-    problem = build_problem(columns, sensors, navigation, platforms, dummy)
+    problem = build_problem(columns, sensors, navigation, platforms, dummy, targets)
     return replace(problem, references=References.empty(), ref_target=np.zeros(0, dtype=np.int64))
 
 

@@ -38,7 +38,7 @@ def name_by_references(reg: Registrar, labels: np.ndarray, given: np.ndarray, op
     conflicts = (np.minimum(t1[:, None], t1[None, :]) - np.maximum(t0[:, None], t0[None, :])) > 0
     np.fill_diagonal(conflicts, False)
     curves = anchor_curves(None, reg.x, reg.refs, reg.between, gap_s=options.reference_gap_s,
-                           accel_sigma=options.reference_accel_sigma)
+                           accel_sigma=options.reference_accel_sigma, surface=reg.problem.surface)
     u, j, plots, _ = candidate_plots(reg.problem, reg.x, unit, np.arange(names.size), curves, k=options.test_plots,
                                      min_plots=options.min_join_plots)
     pairs = pair_tests(reg.problem, reg.x, curves, u, j, plots)

@@ -30,6 +30,15 @@ at that time (the navigation tracks interpolated again), so the residual is exac
 bias's Jacobian column carries the target's and the platform's motion. A row seen outside its
 platform's navigation (near the navigation's ends) weighs 0 in that evaluation: the solver sets
 those plots aside (:func:`registration.fleet.batch.solver.fit`).
+
+A *surface target* (a ship on the sea: the targets table's ``surface_alt``, ``sigma_surface``)
+adds to each of its windows the height constraints ``e = (alt_surface - alt(p(t_k))) / s`` at the
+window's ``K`` Gauss-Legendre nodes ``t_k`` (K its used coefficients), from the generated
+``surface_residual`` (the height and its Jacobian, minus the geodetic up, derived from the inverse
+of the geodetic position): as many values as the height coefficients they determine, so a window
+whose height the plots do not fix (a 2-D radar's, or references without a height) is determined
+without counting the known surface as measurements. Their terms are those of a reference with
+whitening ``L = -J / s`` (:class:`SurfaceRows`).
 """
 
 from __future__ import annotations
@@ -37,6 +46,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+from numpy.polynomial import legendre
 
 from registration import _codegen
 from registration.core.frames import ecef2geodetic, enu2ecef_rotation
@@ -44,8 +54,49 @@ from registration.fleet.batch.blocks import Blocks
 from registration.fleet.data.navigation import SeenNavigation
 from registration.fleet.data.problem import FleetProblem
 
-__all__ = ["Design", "Evaluation", "Normal", "chunk_positions", "make_design", "evaluate", "normal_equations",
-           "positions", "reference_whitening"]
+__all__ = ["Design", "Evaluation", "Normal", "SurfaceRows", "chunk_positions", "make_design", "evaluate",
+           "normal_equations", "positions", "reference_whitening", "surface_rows"]
+
+
+@dataclass(frozen=True)
+class SurfaceRows:
+    """The height constraints of the surface targets' windows (module docstring): per constraint
+    its block (S,), the masked basis values at its node (S, n_coef), the surface height ``alt``
+    (S,) m above WGS-84 and ``weight`` (S,) 1 / sigma (1/m)."""
+
+    block: np.ndarray
+    basis: np.ndarray
+    alt: np.ndarray
+    weight: np.ndarray
+
+    @property
+    def size(self) -> int:
+        return int(self.block.size)
+
+
+def surface_rows(problem: FleetProblem, blocks: Blocks) -> SurfaceRows | None:
+    """The :class:`SurfaceRows` of the windows of ``problem``'s surface targets: each window's ``K``
+    Gauss-Legendre nodes (K = its used coefficients); None when no window is a surface target's."""
+    surface = problem.surface_of_targets()
+    if surface is None:
+        return None
+    alt, sigma = surface
+    on = np.flatnonzero(np.isfinite(alt[blocks.block_target]))
+    if on.size == 0:
+        return None
+    used = blocks.coef_mask[on].sum(axis=1)
+    block, tau = [], []
+    for k in np.unique(used):
+        which = on[used == k]
+        nodes = legendre.leggauss(int(k))[0]
+        block.append(np.repeat(which, k))
+        tau.append(np.tile(nodes, which.size))
+    block, tau = np.concatenate(block), np.concatenate(tau)
+    order = np.argsort(block, kind="stable")
+    block, tau = block[order], tau[order]
+    time = blocks.block_centre[block] + tau * blocks.block_half[block]
+    target = blocks.block_target[block]
+    return SurfaceRows(block, blocks.basis_at(block, time), alt[target], 1.0 / sigma[target])
 
 
 @dataclass(frozen=True)
@@ -78,6 +129,15 @@ class Design:
     seen_at: object = None  # with time biases: times (rows,) -> (nav, rate, outside); navigation.SeenNavigation
     seen_cache: dict = field(default_factory=dict)  # the seen basis and navigation of the latest time biases
     ref_whiten: np.ndarray | None = None  # (R', 3, 3) 1/m: L of reference_whitening; None: every sigma_up == sigma
+    surface: SurfaceRows | None = None  # the surface targets' height constraints; None: no surface target
+
+    @property
+    def n_reference_values(self) -> int:
+        """The reference values the design uses: 3 per reference position, 2 for one without a
+        height (``sigma_up`` inf)."""
+        if self.ref_whiten is None:
+            return 3 * int(self.ref_p.shape[0])
+        return int(np.count_nonzero(np.any(self.ref_whiten != 0.0, axis=2)))
 
     @property
     def att_state(self) -> np.ndarray:
@@ -149,7 +209,8 @@ def make_design(problem: FleetProblem, blocks: Blocks) -> Design:
     return Design(blocks, layout.n, blocks.chunk_slot, real, blocks.block[source], blocks.basis[source],
                   blocks.chunk_slot[blocks.block_start], problem.nav[o], problem.meas[o], weight,
                   problem.sensor_lever[sensor], state, refs.p_ecef[used],
-                  1.0 / sigma, prior_weight, layout.scale, problem.time[o], seen_at, ref_whiten=whiten)
+                  1.0 / sigma, prior_weight, layout.scale, problem.time[o], seen_at, ref_whiten=whiten,
+                  surface=surface_rows(problem, blocks))
 
 
 def positions(basis: np.ndarray, block: np.ndarray, coef: np.ndarray) -> np.ndarray:
@@ -162,13 +223,16 @@ class Evaluation:
     """At (x, coef): the whitened rows ``Z`` (rows, 3, q + w + 1) = [A_c | A_x | e] of every plot (A_c:
     Jacobian w.r.t. its window's coefficients, A_x: w.r.t. its w states, e: whitened residual),
     the whitened reference residuals ``e_ref`` (R', 3) (per ECEF axis; east, north, up with
-    ``Design.ref_whiten``) and the total sum of squares."""
+    ``Design.ref_whiten``), the total sum of squares and, with surface targets, the whitened
+    height residuals ``e_surface`` (S,) and their whitening rows ``surface_whiten`` (S, 1, 3) 1/m."""
 
     x: np.ndarray
     coef: np.ndarray
     Z: np.ndarray
     e_ref: np.ndarray
-    cost: float  # sum of squares of every whitened residual, references and priors included
+    cost: float  # sum of squares of every whitened residual, references, surface heights and priors included
+    e_surface: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    surface_whiten: np.ndarray = field(default_factory=lambda: np.zeros((0, 1, 3)))
 
     @property
     def e(self) -> np.ndarray:
@@ -244,7 +308,13 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
         e_ref = np.einsum("rij,rj->ri", design.ref_whiten, design.ref_p - positions(blk.ref_basis, blk.ref_block, coef))
     prior = x * design.prior_weight
     cost = float(np.sum(e * e) + np.sum(e_ref * e_ref) + np.sum(prior * prior))
-    return Evaluation(x, coef, Z, e_ref, cost)
+    surf = design.surface
+    if surf is None:
+        return Evaluation(x, coef, Z, e_ref, cost)
+    residual, J = _codegen.get("surface_residual")(positions(surf.basis, surf.block, coef), surf.alt)
+    e_surface = residual * surf.weight
+    return Evaluation(x, coef, Z, e_ref, cost + float(np.sum(e_surface * e_surface)), e_surface,
+                      -J * surf.weight[:, None, None])
 
 
 @dataclass
@@ -258,6 +328,24 @@ class Normal:
     b_x: np.ndarray  # (n + 1,)
 
 
+def _whitened_terms(block: np.ndarray, basis: np.ndarray, whiten: np.ndarray, e: np.ndarray, V: np.ndarray,
+                    b_c: np.ndarray) -> None:
+    """Add to V (B, K, 3, K, 3) and b_c (B, K, 3) in place the terms of residuals ``e`` (R, a) =
+    ``L (y - p(t))`` (up to a constant) of positions in blocks ``block`` (R,) with basis values
+    ``basis`` (R, K) and whitening rows ``whiten`` (R, a, 3): ``V += basis_k basis_m L^T L``,
+    ``b_c += basis_k L^T e``."""
+    K, B = V.shape[1], V.shape[0]
+    gram = np.einsum("rai,raj->rij", whiten, whiten).reshape(-1, 9)  # L^T L
+    grad = np.einsum("rai,ra->ri", whiten, e)  # L^T e
+    at3 = (block[:, None] * 3 + np.arange(3)).reshape(-1)
+    at9 = (block[:, None] * 9 + np.arange(9)).reshape(-1)
+    for k in range(K):
+        b_c[:, k, :] += np.bincount(at3, (basis[:, k, None] * grad).reshape(-1), 3 * B).reshape(B, 3)
+        for m in range(K):
+            w = (basis[:, k] * basis[:, m])[:, None] * gram
+            V[:, k, :, m, :] += np.bincount(at9, w.reshape(-1), 9 * B).reshape(B, 3, 3)
+
+
 def _reference_terms(blk: Blocks, ev: Evaluation, ref_weight: np.ndarray, V: np.ndarray, b_c: np.ndarray,
                      whiten: np.ndarray | None = None) -> None:
     """Add the reference positions' terms to V (B, K, 3, K, 3) and b_c (B, K, 3) in place: with the
@@ -266,15 +354,7 @@ def _reference_terms(blk: Blocks, ev: Evaluation, ref_weight: np.ndarray, V: np.
         return
     K, B = blk.n_coef, blk.n_blocks
     if whiten is not None:
-        gram = np.einsum("rai,raj->rij", whiten, whiten).reshape(-1, 9)  # L^T L
-        grad = np.einsum("rai,ra->ri", whiten, ev.e_ref)  # L^T e
-        at3 = (blk.ref_block[:, None] * 3 + np.arange(3)).reshape(-1)
-        at9 = (blk.ref_block[:, None] * 9 + np.arange(9)).reshape(-1)
-        for k in range(K):
-            b_c[:, k, :] += np.bincount(at3, (blk.ref_basis[:, k, None] * grad).reshape(-1), 3 * B).reshape(B, 3)
-            for m in range(K):
-                w = (blk.ref_basis[:, k] * blk.ref_basis[:, m])[:, None] * gram
-                V[:, k, :, m, :] += np.bincount(at9, w.reshape(-1), 9 * B).reshape(B, 3, 3)
+        _whitened_terms(blk.ref_block, blk.ref_basis, whiten, ev.e_ref, V, b_c)
         return
     w2 = ref_weight**2
     for k in range(K):
@@ -307,6 +387,8 @@ def normal_equations(design: Design, ev: Evaluation) -> Normal:
     b_c = -np.add.reduceat(G[:, :q, -1], blk.group_block_start, axis=0)
     V5, b_c3 = V.reshape(-1, K, 3, K, 3), b_c.reshape(-1, K, 3)
     _reference_terms(blk, ev, design.ref_weight, V5, b_c3, design.ref_whiten)
+    if design.surface is not None:
+        _whitened_terms(design.surface.block, design.surface.basis, ev.surface_whiten, ev.e_surface[:, None], V5, b_c3)
     idx = blk.group_state
     flat = (idx[:, :, None] * n1 + idx[:, None, :]).reshape(-1)
     U = np.bincount(flat, G[:, q:q + w, q:q + w].reshape(-1), n1 * n1).reshape(n1, n1)

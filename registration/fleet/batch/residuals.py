@@ -20,11 +20,15 @@ def chi_square_parts(design: Design, ev: Evaluation, free: np.ndarray | None = N
     """The terms of the sum of squares ``ev.cost``: {"plots": (sum of squared normalised residuals,
     number of measured values), "references": (the same over the reference positions used, 3 values
     each: (known - fitted position) / sigma per ECEF axis, sigma the reference file's ``sigma_m``;
-    with a vertical sigma, east, north, up over ``sigma_m``, ``sigma_m``, ``sigma_up_m``),
-    "priors": (the same over the priors of the states ``free`` (indices), if given)}."""
+    with a vertical sigma, east, north, up over ``sigma_m``, ``sigma_m``, ``sigma_up_m``; 2 values for a
+    reference without a height), with surface targets "surface": (the same over the windows' height
+    constraints, one value each), "priors": (the same over the priors of the states ``free``
+    (indices), if given)}."""
     e = np.where(design.weight > 0, ev.e, 0.0)
     parts = {"plots": (float(np.sum(e * e)), int(np.count_nonzero(design.weight))),
-             "references": (float(np.sum(ev.e_ref * ev.e_ref)), int(ev.e_ref.size))}
+             "references": (float(np.sum(ev.e_ref * ev.e_ref)), design.n_reference_values)}
+    if design.surface is not None:
+        parts["surface"] = (float(np.sum(ev.e_surface * ev.e_surface)), design.surface.size)
     if free is not None:
         prior = (ev.x * design.prior_weight)[free]
         parts["priors"] = (float(np.sum(prior * prior)), int(np.count_nonzero(design.prior_weight[free])))
@@ -36,9 +40,13 @@ def reference_residuals(problem: FleetProblem, design: Design, ev: Evaluation) -
     fitted position) / sigma`` per ECEF axis (dimensionless; sigma in m per axis). When some
     reference used has ``sigma_up`` not equal to its ``sigma`` (:attr:`Design.ref_whiten`), the three
     values of every reference are instead the whitened east, north and up components, ``L (known -
-    fitted)`` with ``L = diag(1/sigma, 1/sigma, 1/sigma_up) R_enu_ecef`` at the known position."""
+    fitted)`` with ``L = diag(1/sigma, 1/sigma, 1/sigma_up) R_enu_ecef`` at the known position (the up
+    value NaN for a reference without a height)."""
     refs = problem.references
-    return refs.target[design.blocks.ref_index].astype(str), np.array(ev.e_ref, dtype=float)
+    e = np.array(ev.e_ref, dtype=float)
+    if design.ref_whiten is not None:
+        e[~np.any(design.ref_whiten != 0.0, axis=2)] = np.nan  # a reference without a height has no up value
+    return refs.target[design.blocks.ref_index].astype(str), e
 
 
 #: Reference positions left unused are warned about from this share of a target's positions on
@@ -88,6 +96,6 @@ def residuals_at(problem: FleetProblem, x: np.ndarray, options: BatchOptions | N
         raise ValueError("no plots to evaluate (every window was set aside)")
     problem, design, start, normal = found
     ev, _ = fit_windows(design, start, normal, options)
-    n_values = int(np.count_nonzero(design.weight)) + 3 * design.ref_p.shape[0]
-    dof = n_values - 3 * int(design.blocks.coef_mask.sum())
-    return residual_table(problem, design, ev), ChiSquareCheck(ev.cost, dof, chi_square_parts(design, ev)), problem
+    parts = chi_square_parts(design, ev)
+    dof = sum(n for _, n in parts.values()) - 3 * int(design.blocks.coef_mask.sum())
+    return residual_table(problem, design, ev), ChiSquareCheck(ev.cost, dof, parts), problem

@@ -17,7 +17,13 @@ from registration.fleet.batch.residuals import chi_square_parts, reference_resid
 from registration.fleet.result import BatchResult, ChiSquareCheck
 from registration.fleet.batch.solver import BatchOptions, fit
 
-__all__ = ["solve_batch"]
+__all__ = ["HEIGHT_WARNING", "solve_batch"]
+
+#: The warning for targets whose height only slant ranges measure (FleetProblem.targets_without_height).
+HEIGHT_WARNING = ("{} targets have no measured height ({}): no plot with an elevation, no reference with a height and "
+                  "no surface; their heights are determined only weakly by the slant ranges and trade off against the "
+                  "range biases, so those may be wrong by more than their sigma. Give the surface they move on (the "
+                  "targets table's surface_alt_m, sigma_surface_m; ships: mean sea level) or references with heights")
 
 
 def _per_input_row(problem: FleetProblem, values: np.ndarray) -> np.ndarray:
@@ -67,6 +73,8 @@ def solve_batch(problem: FleetProblem, options: BatchOptions | None = None, x0: 
         sigma[free[np.linalg.norm(undetermined, axis=1) > 0.1]] = np.inf
     ref_target, ref_residuals = reference_residuals(problem, fit_.design, sol.evaluation)
     unused = unused_references(problem, fit_.design)
+    flat = problem.targets_without_height()
+    height = (HEIGHT_WARNING.format(len(flat), ", ".join(flat[:5]) + (", ..." if len(flat) > 5 else "")),) if flat else ()
     return BatchResult(
         layout=layout, estimate=fit_.x.copy(), covariance=P, sigma=sigma, status=status,
         targets=fused_targets(fit_, sol.reduced, P_sink), residuals=residual_table(problem, fit_.design, sol.evaluation),
@@ -75,7 +83,7 @@ def solve_batch(problem: FleetProblem, options: BatchOptions | None = None, x0: 
         undetermined=undetermined, converged=fit_.converged, iterations=fit_.iterations,
         plot_target=_per_input_row(problem, np.array(problem.target_ids, dtype=str)[problem.target]),
         plot_sensor=_per_input_row(problem, np.array(problem.sensor_ids, dtype=str)[problem.sensor]),
-        cost_history=fit_.cost_history, warnings=fit_.warnings + ((unused,) if unused else ()),
+        cost_history=fit_.cost_history, warnings=fit_.warnings + ((unused,) if unused else ()) + height,
         reference_target=ref_target, reference_residuals=ref_residuals,
         references_given=int(problem.references.time.size),
     )

@@ -16,7 +16,7 @@ from registration.fleet.data.tables import (
 )
 
 __all__ = ["index_of", "SensorSpecs", "PlotColumns", "References", "RowProblem", "plot_problems", "read_platforms",
-           "read_sensors", "read_plots", "read_references"]
+           "read_sensors", "read_plots", "read_references", "read_surface", "SurfaceTargets"]
 
 #: The accepted window of each measured channel (low, high, unit).
 CHANNEL_LIMITS = {
@@ -285,9 +285,60 @@ def read_references(references, target_ids) -> References:
                              "finite and sigma > 0 (the accuracy of the known position)")
     sigma_up = table.floats("sigma_up", default=np.nan)
     sigma_up = np.where(np.isnan(sigma_up), sigma, sigma_up)  # not given: the same as sigma
-    bad = np.flatnonzero(~((sigma_up > 0) & np.isfinite(sigma_up)))
+    bad = np.flatnonzero(~(sigma_up > 0))
     if bad.size:
         r = int(bad[0])
-        raise table.error(r, f"reference of target {str(target[r])!r}: sigma_up {sigma_up[r]} m must be finite and > 0 "
-                             "(the accuracy of the known position along the local up; NaN: the same as sigma)")
+        raise table.error(r, f"reference of target {str(target[r])!r}: sigma_up {sigma_up[r]} m must be > 0 "
+                             "(the accuracy of the known position along the local up; NaN: the same as sigma; "
+                             "inf: no height known)")
     return References(target, time, p.reshape(-1, 3), sigma, sigma_up)
+
+
+
+@dataclass(frozen=True)
+class SurfaceTargets:
+    """Targets that move on a surface of known height, such as ships on the sea: ``target`` ids
+    (K,), ``alt`` (K,) m above the WGS-84 ellipsoid and its standard deviation ``sigma`` (K,) m
+    (what the targets table's ``surface_alt`` and ``sigma_surface`` give)."""
+
+    target: np.ndarray
+    alt: np.ndarray
+    sigma: np.ndarray
+
+    def of(self, target_ids) -> tuple[np.ndarray, np.ndarray]:
+        """(alt, sigma), each (T,) m, of the targets ``target_ids``; NaN where not on a surface."""
+        row = index_of(np.asarray(target_ids, dtype=str), list(self.target))
+        listed = row >= 0
+        at = np.where(listed, row, 0)
+        if self.target.size == 0:
+            return np.full(row.size, np.nan), np.full(row.size, np.nan)
+        return np.where(listed, self.alt[at], np.nan), np.where(listed, self.sigma[at], np.nan)
+
+
+def read_surface(targets) -> SurfaceTargets | None:
+    """The surface targets of the optional ``targets`` table (None: no table, or no row gives a
+    ``surface_alt``). A target listed twice, a height further than 10 km from the ellipsoid, or a
+    surface height without a finite ``sigma_surface`` > 0 is an error naming the row."""
+    if targets is None:
+        return None
+    table = read_table("targets", targets, ("target",))
+    ids = table.ids("target")
+    alt = table.floats("surface_alt", default=np.nan)
+    sigma = table.floats("sigma_surface", default=np.nan)
+    seen: dict = {}
+    for row, t in enumerate(ids):
+        if t in seen:
+            raise table.error(row, f"target {str(t)!r} is listed again (first in row {seen[t]})")
+        seen[t] = row
+        if np.isnan(alt[row]):
+            continue
+        if not (np.isfinite(alt[row]) and -1.0e4 <= alt[row] <= 1.0e4):
+            raise table.error(row, f"target {str(t)!r}: surface_alt {alt[row]} m must lie within 10 km of the "
+                                   "WGS-84 ellipsoid (the height of the surface the target moves on)")
+        if not (np.isfinite(sigma[row]) and sigma[row] > 0):
+            raise table.error(row, f"target {str(t)!r}: sigma_surface {sigma[row]} m must be finite and > 0 "
+                                   "(the standard deviation of the target's height about surface_alt)")
+    on = np.isfinite(alt)
+    if not on.any():
+        return None
+    return SurfaceTargets(ids[on], alt[on], sigma[on])

@@ -15,7 +15,8 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from registration.fleet.data.inputs import (
-    References, RowProblem, index_of, plot_problems, read_platforms, read_plots, read_references, read_sensors,
+    References, RowProblem, SurfaceTargets, index_of, plot_problems, read_platforms, read_plots, read_references,
+    read_sensors, read_surface,
 )
 from registration.fleet.data.layout import StateLayout, make_layout
 from registration.fleet.data.navigation import (
@@ -51,7 +52,8 @@ class FleetProblem:
     in the input plots table. Sensors: ``sensor_sigma`` (S, 3) noise sigma (NaN = not measured),
     ``sensor_lever`` (S, 3) m, deck frame. ``excluded``: targets set aside, with reasons.
     ``notes``: what was ignored without an error (the navigation of platforms that carry no
-    sensor), one text each.
+    sensor), one text each. ``surface``: the targets that move on a surface of known height, by id
+    (None: none does; :meth:`surface_of_targets` gives them per target).
     """
 
     platform_ids: tuple[str, ...]
@@ -74,6 +76,7 @@ class FleetProblem:
     excluded: tuple[Exclusion, ...] = field(default_factory=tuple)
     tracks: dict | None = None  # per platform id: navigation (times, values), for plots seen at other times
     notes: tuple[str, ...] = ()  # what was ignored without an error, e.g. navigation of platforms without sensors
+    surface: SurfaceTargets | None = None  # targets on a surface of known height, by id
 
     def navigation_at(self, time: np.ndarray, plot: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(nav (M, 6), its rate (M, 6), outside (M,) bool) of the platforms of plots ``plot`` (M,;
@@ -99,6 +102,28 @@ class FleetProblem:
         nav, rate, _ = self.navigation_at(t, plot)
         return t, nav, rate
 
+    def surface_of_targets(self) -> tuple[np.ndarray, np.ndarray] | None:
+        """(alt (T,) m above WGS-84, sigma (T,) m) of the surface each of ``target_ids`` moves on
+        (NaN: not a surface target), or None when no target of the problem is on a surface."""
+        if self.surface is None:
+            return None
+        alt, sigma = self.surface.of(self.target_ids)
+        return (alt, sigma) if np.isfinite(alt).any() else None
+
+    def targets_without_height(self) -> tuple[str, ...]:
+        """The targets whose height nothing but slant ranges measures: no plot of theirs has an
+        elevation, no reference position of theirs a height (``sigma_up`` inf) and they are not on a
+        surface. Their height is then determined only weakly (to second order in the ranges), and it
+        trades off against the range biases."""
+        measured = np.zeros(len(self.target_ids), dtype=bool)
+        measured[self.target[self.mask[:, 2]]] = True
+        refs = self.references
+        measured[self.ref_target[np.isfinite(refs.sigma_up)]] = True
+        surface = self.surface_of_targets()
+        if surface is not None:
+            measured |= np.isfinite(surface[0])
+        return tuple(t for t, m in zip(self.target_ids, measured) if not m)
+
     @property
     def n_plots(self) -> int:
         return int(self.time.shape[0])
@@ -113,9 +138,9 @@ class FleetProblem:
         return np.where(self.mask, self.sensor_sigma[self.sensor], np.nan)
 
     @classmethod
-    def from_tables(cls, plots, sensors, navigation, platforms=None, references=None) -> "FleetProblem":
+    def from_tables(cls, plots, sensors, navigation, platforms=None, references=None, targets=None) -> "FleetProblem":
         """See :func:`build_problem`."""
-        return build_problem(plots, sensors, navigation, platforms, references)
+        return build_problem(plots, sensors, navigation, platforms, references, targets)
 
     def drop_plots(self, drop: np.ndarray, exclusions) -> "FleetProblem":
         """The problem without the plots flagged in ``drop`` (N,), with ``exclusions`` recorded."""
@@ -196,8 +221,9 @@ def plot_row_problems(plots, sensors, navigation, platforms=None, reference_targ
     return problems + [RowProblem("outside_navigation", "time", outside, message)]
 
 
-def build_problem(plots, sensors, navigation, platforms=None, references=None) -> FleetProblem:
+def build_problem(plots, sensors, navigation, platforms=None, references=None, targets=None) -> FleetProblem:
     """Check the long-form tables (see :mod:`registration.fleet.data.tables`) and build the problem.
+    ``targets``: the optional targets table (the surface targets move on, docs/fleet.md).
 
     ValueError names the table, row and object for: a missing column, an unknown sensor,
     platform or reference target, a sensor with no measured channel, a negative or zero noise
@@ -236,4 +262,5 @@ def build_problem(plots, sensors, navigation, platforms=None, references=None) -
         meas=cols.meas[keep], mask=cols.mask[keep], nav=nav, row=keep, n_input_plots=int(cols.time.shape[0]),
         references=refs, ref_target=index_of(refs.target, target_ids),
         excluded=tuple(excluded), tracks=tracks, notes=tuple(unused_platforms(nav_t, platform_ids)),
+        surface=read_surface(targets),
     )

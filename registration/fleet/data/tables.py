@@ -24,7 +24,12 @@ Every table is long form, one row per item; SI units and radians (docs/conventio
   ``x``, ``y``, ``z`` (m) or geodetic ``lat``, ``lon`` (rad), ``alt`` (m); ``sigma`` (m, standard
   deviation per axis of the known position, default :data:`DEFAULT_REFERENCE_SIGMA`); optional
   ``sigma_up`` (m, standard deviation along the local geodetic up at the position; missing or NaN:
-  equal to ``sigma``, which then is the horizontal one, east and north).
+  equal to ``sigma``, which then is the horizontal one, east and north; ``inf``: the reference gives
+  no height, only the horizontal position).
+* ``targets`` (optional): ``target`` id; ``surface_alt`` (m above the WGS-84 ellipsoid) and
+  ``sigma_surface`` (m): the target moves on a surface of that height, such as a ship on the sea
+  (empty: not a surface target); optional ``name`` (free text, for reports). Targets without plots
+  are ignored.
 """
 
 from __future__ import annotations

@@ -37,7 +37,8 @@ import numpy as np
 
 from registration.core.consistency import ConsistencyReport
 from registration.fleet.batch.blocks import SAME_INSTANT_S
-from registration.fleet.data.inputs import index_of, read_platforms, read_plots, read_references, read_sensors
+from registration.fleet.data.inputs import (index_of, read_platforms, read_plots, read_references, read_sensors,
+                                            read_surface)
 from registration.fleet.data.layout import make_layout
 from registration.fleet.data.navigation import navigation_at, platform_navigation
 from registration.fleet.observability import fleet_observability
@@ -112,14 +113,14 @@ class OnlineOptions:
 class FleetFilter:
     """Online registration of a fleet (module docstring).
 
-    ``sensors``, ``navigation``, ``platforms``, ``references``: the tables of
+    ``sensors``, ``navigation``, ``platforms``, ``references``, ``targets``: the tables of
     :func:`registration.fleet.build_problem` (SI units, radians), given once; plots arrive with
     :meth:`update`. ``prior``: a batch result (or anything with ``layout``, ``estimate`` and
     ``covariance`` over the same states) to start from.
     """
 
     def __init__(self, sensors, navigation, platforms=None, references=None, *,
-                 options: OnlineOptions | None = None, prior=None):
+                 options: OnlineOptions | None = None, prior=None, targets=None):
         self.options = options or OnlineOptions()
         sensors_t = read_table("sensors", sensors, ("sensor", "platform"))
         self.platform_ids, platform_priors = read_platforms(platforms, sensors_t.ids("platform"))
@@ -127,6 +128,7 @@ class FleetFilter:
         self.tracks = platform_navigation(read_table("navigation", navigation, ("platform",)), self.platform_ids)
         ref_ids = [] if references is None else list(dict.fromkeys(read_table("references", references).ids("target")))
         self.references = read_references(references, ref_ids)
+        self.surface = read_surface(targets)
         self.layout = make_layout(self.platform_ids, platform_priors, self.specs.ids, self.specs.channels,
                                   self.specs.prior, self.specs.extended_prior)
         self.x, self.P = _start(self.layout, prior)
@@ -227,7 +229,7 @@ class FleetFilter:
             layout=self.layout, time=plots["time"], sensor=plots["sensor"],
             target=index_of(plots["target"], target_ids), meas=plots["meas"], mask=plots["mask"], nav=plots["nav"],
             row=plots["row"], n_input_plots=self._n_read, references=refs,
-            ref_target=index_of(refs.target, target_ids), tracks=self.tracks)
+            ref_target=index_of(refs.target, target_ids), tracks=self.tracks, surface=self.surface)
 
     # -- output ----------------------------------------------------------------------------------
     @property
@@ -321,18 +323,19 @@ def _start(layout, prior) -> tuple[np.ndarray, np.ndarray]:
 
 
 def register_online(plots, sensors, navigation, platforms=None, references=None, *,
-                    options: OnlineOptions | None = None, prior=None, residuals: bool = True) -> OnlineResult:
+                    options: OnlineOptions | None = None, prior=None, residuals: bool = True,
+                    targets=None) -> OnlineResult:
     """Run :class:`FleetFilter` over a whole plots table (sorted by time here) and return its result;
     with ``residuals``, also the normalised residuals of every plot at the final estimate
     (:func:`registration.fleet.batch.residuals.residuals_at`)."""
-    filt = FleetFilter(sensors, navigation, platforms, references, options=options, prior=prior)
+    filt = FleetFilter(sensors, navigation, platforms, references, options=options, prior=prior, targets=targets)
     table = read_table("plots", plots, ("time", "sensor", "target"))
     order = np.argsort(table.floats("time"), kind="stable")
     filt.update({k: v[order] for k, v in table.columns.items()})
     filt.flush()
     result = filt.result()
     if residuals and result.n_plots_used:
-        problem = build_problem(plots, sensors, navigation, platforms, references)
+        problem = build_problem(plots, sensors, navigation, platforms, references, targets)
         table, check, _ = residuals_at(problem, result.estimate, filt.options.batch())
         result = replace(result, residuals=table, fit_check=check)
     return result

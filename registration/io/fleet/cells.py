@@ -51,13 +51,20 @@ FILE_COLUMNS = {
                   ("lat_deg", "lat", "deg", False, (-90.0, 90.0)), ("lon_deg", "lon", "deg", False, (-360.0, 360.0)),
                   ("alt_m", "alt", "m", False, (-1.2e4, 1e8)), ("x_m", "x", "m", False, (-1e8, 1e8)),
                   ("y_m", "y", "m", False, (-1e8, 1e8)), ("z_m", "z", "m", False, (-1e8, 1e8)),
-                  ("sigma_m", "sigma", "m", False, (0.0, 1e6)), ("sigma_up_m", "sigma_up", "m", False, (0.0, 1e6))),
+                  ("sigma_m", "sigma", "m", False, (0.0, 1e6)), ("sigma_up_m", "sigma_up", "m", False, (0.0, math.inf))),
+    "targets": (("target", "target", "id", True, None), ("name", "name", "id", False, None),
+                ("surface_alt_m", "surface_alt", "m", False, (-1e4, 1e4)),
+                ("sigma_surface_m", "sigma_surface", "m", False, (0.0, 1e6))),
 }
 #: Id columns of a table whose empty cells mean "no id" (not an error): a plot without a target id is
 #: associated (registration.fleet.association), one without a track id is tracked by the association.
-OPTIONAL_IDS = {"plots": ("target", "track")}
+OPTIONAL_IDS = {"plots": ("target", "track"), "targets": ("name",)}
 #: Sigma columns whose value must be > 0 (a prior may be 0: fixed).
-_POSITIVE = {"range_m", "sigma_range_m", "sigma_bearing_deg", "sigma_elevation_deg", "sigma_m", "sigma_up_m"}
+_POSITIVE = {"range_m", "sigma_range_m", "sigma_bearing_deg", "sigma_elevation_deg", "sigma_m", "sigma_up_m",
+             "sigma_surface_m"}
+#: Columns where inf is a meaning rather than an error (besides the priors' "no prior"): a reference
+#: without a height.
+_INF_ALLOWED = {"sigma_up_m"}
 
 
 def _read_frame(path: Path):
@@ -106,7 +113,7 @@ def _number_column(bad: BadRows, frame, column: str, unit: str, required: bool, 
         bad.add(column, "non_finite", np.isnan(values), lambda r: f"empty or NaN; a number ({unit}) is required")
     lo, hi = limits if limits is not None else (-math.inf, math.inf)
     strict = column in _POSITIVE
-    finite_only = not (column.startswith("prior_") and hi == math.inf)
+    finite_only = not ((column.startswith("prior_") or column in _INF_ALLOWED) and hi == math.inf)
     out = ((values <= lo) if strict else (values < lo)) | (values > hi) | (finite_only & np.isinf(values))
     span = f"{'(' if strict else '['}{lo:g}, {hi:g}]"
 

@@ -1,5 +1,5 @@
 """A folder of fleet tables by their standard names: ``plots``, ``navigation``, ``sensors``,
-``platforms`` and ``reference``, each as ``.csv``, ``.parquet`` or ``.pq``.
+``platforms``, ``reference`` and ``targets``, each as ``.csv``, ``.parquet`` or ``.pq``.
 
 This is what ``registration import asterix|nmea --out DIR`` writes and what
 ``registration fleet register --tables DIR`` reads, so that an import and a registration chain in
@@ -13,7 +13,7 @@ from pathlib import Path
 __all__ = ["TABLE_NAMES", "REQUIRED_TABLES", "SUFFIXES", "tables_in_folder"]
 
 #: The standard table names, in the order of ``read_fleet_tables``' arguments.
-TABLE_NAMES = ("plots", "navigation", "sensors", "platforms", "reference")
+TABLE_NAMES = ("plots", "navigation", "sensors", "platforms", "reference", "targets")
 #: The tables a registration cannot do without.
 REQUIRED_TABLES = ("plots", "navigation", "sensors")
 #: The file suffixes looked for, in this order.

@@ -67,7 +67,7 @@ def needs_association(plots: dict) -> bool:
 
 #: Table name -> the library table name used in build_problem's errors.
 _LIBRARY_NAME = {"plots": "plots", "navigation": "navigation", "sensors": "sensors", "platforms": "platforms",
-                 "reference": "references"}
+                 "reference": "references", "targets": "targets"}
 #: Table column -> file column, of the plots and reference files (the columns rows are set aside for).
 _FILE_COLUMN = {key: column for name in ("plots", "reference") for column, key, *_ in FILE_COLUMNS[name]}
 
@@ -93,6 +93,7 @@ class FleetTables:
     rejected: list[RejectedRow] = field(default_factory=list)
     file_rows: dict = field(default_factory=dict)
     notes: list[str] = field(default_factory=list)
+    targets: dict | None = None
 
     def problem(self) -> FleetProblem:
         """:func:`build_problem` on the tables; its errors name the file the row is in. With rows
@@ -100,7 +101,8 @@ class FleetTables:
         data rows (kept and set aside), so per-row outputs line up with the file. The reader's
         ``notes`` come first in ``problem.notes``."""
         try:
-            problem = build_problem(self.plots, self.sensors, self.navigation, self.platforms, self.references)
+            problem = build_problem(self.plots, self.sensors, self.navigation, self.platforms, self.references,
+                                    self.targets)
         except ValueError as exc:
             raise _file_error(exc, self.paths, self.file_rows) from exc
         problem = replace(problem, notes=(*self.notes, *problem.notes))
@@ -128,7 +130,7 @@ class FleetTables:
 
     def _tables(self) -> dict:
         tables = {"plots": self.plots, "navigation": self.navigation, "sensors": self.sensors,
-                  "platforms": self.platforms, "reference": self.references}
+                  "platforms": self.platforms, "reference": self.references, "targets": self.targets}
         return {k: v for k, v in tables.items() if v is not None}
 
 
@@ -213,7 +215,7 @@ def _skip_rows(tables: dict, paths: dict, bads: dict, file_rows: dict) -> FleetT
                        tables.get("reference"), paths, rejected, file_rows)
 
 
-def read_fleet_tables(plots, navigation, sensors, platforms=None, reference=None, *,
+def read_fleet_tables(plots, navigation, sensors, platforms=None, reference=None, *, targets=None,
                       on_bad_row: str = "stop") -> FleetTables:
     """Read the fleet files (paths; ``.csv`` or ``.parquet``) into :class:`FleetTables` (SI, radians).
 
@@ -231,16 +233,19 @@ def read_fleet_tables(plots, navigation, sensors, platforms=None, reference=None
     target left with no plots too. The navigation, sensors and platforms files define the problem
     (the platforms, the sensors and what they measure), so their problems still raise, here rather
     than in :meth:`FleetTables.problem`, as do file-level problems (a missing or unknown column,
-    radians in a degree column). :class:`~registration.io.fleet.rejects.NoValidPlotsError` (a
+    radians in a degree column); so do the optional ``targets`` file's (``target``, ``name``,
+    ``surface_alt_m``, ``sigma_surface_m``: targets on a surface of known height).
+    :class:`~registration.io.fleet.rejects.NoValidPlotsError` (a
     ValueError carrying the rejected rows) when no plot row is left. ``FleetTables.notes``: the
     navigation rows left out (platforms without sensors) and what looks like radians without proof.
     """
     if check_mode(on_bad_row) == "stop":
-        return _first_bad_row_stops(plots, navigation, sensors, platforms, reference)
+        return _first_bad_row_stops(plots, navigation, sensors, platforms, reference, targets)
     paths = {k: Path(v) for k, v in (("plots", plots), ("navigation", navigation), ("sensors", sensors),
-                                     ("platforms", platforms), ("reference", reference)) if v is not None}
+                                     ("platforms", platforms), ("reference", reference), ("targets", targets))
+             if v is not None}
     files = {}
-    for name in ("plots", "sensors", "platforms", "navigation", "reference"):  # navigation: of the platforms used
+    for name in ("plots", "sensors", "platforms", "navigation", "reference", "targets"):  # navigation: of the platforms used
         if name in paths:
             used = {str(p) for f in (files.get("sensors"), files.get("platforms")) if f for p in f.table["platform"]}
             files[name] = read_file(name, paths[name], name in ("plots", "reference"),
@@ -263,14 +268,15 @@ def read_fleet_tables(plots, navigation, sensors, platforms=None, reference=None
     left_out = {k: f.file_rows for k, f in files.items() if f.file_rows is not None}  # navigation of unused platforms
     out = _skip_rows(tables, paths, bads, left_out)
     out.notes = [n for f in files.values() for n in f.notes]
+    out.targets = tables.get("targets")
     return out
 
 
-def _first_bad_row_stops(plots, navigation, sensors, platforms, reference) -> FleetTables:
+def _first_bad_row_stops(plots, navigation, sensors, platforms, reference, targets=None) -> FleetTables:
     """Stop mode: every row is checked as in skip mode, then the first bad row of the plots file (else
     of the reference file) raises, so the error names the earliest row whatever column is wrong."""
     try:
-        tables = read_fleet_tables(plots, navigation, sensors, platforms, reference, on_bad_row="skip")
+        tables = read_fleet_tables(plots, navigation, sensors, platforms, reference, targets=targets, on_bad_row="skip")
     except NoValidPlotsError as exc:
         rejected = exc.rejected
     else:

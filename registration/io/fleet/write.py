@@ -38,10 +38,10 @@ def _file_frame(name: str, table):
 
 
 def write_fleet_tables(folder, plots, navigation, sensors, platforms=None, references=None,
-                       fmt: str = "csv") -> list[Path]:
+                       fmt: str = "csv", targets=None) -> list[Path]:
     """Write the tables (SI units, radians; as :func:`build_problem` takes them) as files in
     ``folder``: ``plots``, ``navigation``, ``sensors``, ``platforms`` (if given) and ``reference``
-    (if given; ECEF positions are written as lat/lon/alt) with suffix ``.csv`` or ``.parquet``
+    (if given; ECEF positions are written as lat/lon/alt) and ``targets`` (if given) with suffix ``.csv`` or ``.parquet``
     (``fmt``). CSV floats are written as their shortest round-trip text. Returns the paths."""
     from registration.io.files.tablefile import write_frame
 
@@ -50,7 +50,7 @@ def write_fleet_tables(folder, plots, navigation, sensors, platforms=None, refer
     folder = Path(folder)
     written = []
     for name, table in (("plots", plots), ("navigation", navigation), ("sensors", sensors),
-                        ("platforms", platforms), ("reference", references)):
+                        ("platforms", platforms), ("reference", references), ("targets", targets)):
         if table is None:
             continue
         path = folder / f"{name}.{fmt}"

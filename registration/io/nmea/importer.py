@@ -49,8 +49,10 @@ class NmeaImport:
       ``range_m``, ``bearing_deg`` (deck bearing);
     * ``sensors``: the input rows of the platform (``talker`` dropped);
     * ``platforms``: one row, ``platform`` and the attitude priors (empty: free);
-    * ``reference``: ``time_s``, ``target`` (MMSI), ``lat_deg``, ``lon_deg``, ``alt_m``, ``sigma_m``
-      (horizontal), ``sigma_up_m`` (vertical);
+    * ``reference``: ``time_s``, ``target`` (MMSI), ``lat_deg``, ``lon_deg``, ``alt_m`` (mean sea
+      level), ``sigma_m`` (horizontal), ``sigma_up_m`` (inf: no height);
+    * ``targets``: the AIS vessels as surface targets: ``target`` (MMSI), ``name``, ``surface_alt_m``
+      (mean sea level above the ellipsoid), ``sigma_surface_m``;
     * ``rejected``: the lines set aside: ``file``, ``line`` (from 1), ``code``, ``reason``;
     * ``summary``: a JSON-able dict (docs/nmea.md, "The summary").
     """
@@ -62,13 +64,17 @@ class NmeaImport:
     reference: pd.DataFrame
     rejected: pd.DataFrame
     summary: dict = field(default_factory=dict)
+    targets: pd.DataFrame | None = None
 
     @property
     def tables(self) -> dict[str, pd.DataFrame]:
-        """The five fleet tables by file name (``plots``, ``navigation``, ``sensors``, ``platforms``,
-        ``reference``)."""
-        return {"plots": self.plots, "navigation": self.navigation, "sensors": self.sensors,
-                "platforms": self.platforms, "reference": self.reference}
+        """The fleet tables by file name (``plots``, ``navigation``, ``sensors``, ``platforms``,
+        ``reference``, ``targets``)."""
+        out = {"plots": self.plots, "navigation": self.navigation, "sensors": self.sensors,
+               "platforms": self.platforms, "reference": self.reference}
+        if self.targets is not None:
+            out["targets"] = self.targets
+        return out
 
     def write(self, folder, fmt: str = "csv") -> dict[str, Path]:
         """Write the tables with rows as ``<name>.csv`` (or ``.parquet``), ``rejected.csv`` and
@@ -199,4 +205,4 @@ def import_nmea(paths: str | Path | Sequence[str | Path], platform: str, sensors
     refs = read_references(log, messages, clock, nav.sea_level, sigmas, rejections)
     summary = build_summary(ImportParts(log, clock, nav, plots, refs, rejections, not_used, len(messages)))
     return NmeaImport(nav.frame(platform), plots.frame(), sensor_rows.drop(columns=[TALKER_COLUMN], errors="ignore"),
-                      platforms, refs.frame(), rejections.frame(), summary)
+                      platforms, refs.frame(), rejections.frame(), summary, refs.targets_frame())

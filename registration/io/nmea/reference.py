@@ -11,9 +11,12 @@
   the position-accuracy flag (1: better than 10 m, 0: worse), message 27's positions in 1/10 minute
   adding their quantisation (185.2 m / sqrt(12) in latitude), and the time sigma that of a time
   given to the whole second (1 s / sqrt(12)) or, without a second, the latency.
-* **Height**: AIS has none; the reference is at mean sea level, whose ellipsoid height is the
-  own ship's geoid separation (GGA), with the vertical sigma ``sigma_up`` of
-  :attr:`AisSigmas.height_m` (10 m: the unknown height above the sea of the point the radar sees).
+* **Height**: AIS has none, so a reference gives only the horizontal position (``sigma_up`` inf;
+  ``alt`` is mean sea level, for display). The vessels are surface targets instead
+  (:meth:`References.targets_frame`): they move on mean sea level, whose ellipsoid height is the
+  own ship's geoid separation (GGA), with the sigma :attr:`AisSigmas.height_m` (10 m: the unknown
+  height above the sea of the point the radar sees). A surface is one constraint per trajectory
+  coefficient, not a measured value per report.
 """
 
 from __future__ import annotations
@@ -54,8 +57,8 @@ class AisSigmas:
     ``time_resolution_s`` (1 s): the UTC second of the report, a uniform error of sigma
     ``time_resolution_s / sqrt(12)``; ``latency_s`` (2 s): the time sigma when the report has no
     second and its reception time stands for it; ``unknown_speed_mps`` (15 m/s, 29 knots): the
-    speed used when the report has none; ``height_m`` (10 m): the vertical sigma of every AIS
-    position, placed at mean sea level: the point the radar sees (the echo centre of the hull and
+    speed used when the report has none; ``height_m`` (10 m): the sigma of an AIS vessel's height
+    about mean sea level, the surface it moves on: the point the radar sees (the echo centre of the hull and
     superstructure) and the GNSS antenna lie metres to tens of metres above the sea, and the tide
     and the geoid's change from the own ship's position add a metre or two.
     """
@@ -80,8 +83,11 @@ class AisSigmas:
 @dataclass
 class References:
     """AIS reference positions (K,): ``time`` s, ``target`` (MMSI text), ``lat``, ``lon`` rad, ``alt``
-    m, ``sigma`` m per horizontal axis (east, north), ``sigma_up`` m along the local up; ``vessels``: MMSI -> what the log says of it (name, call sign, class,
-    positions); ``own``: the own ship's MMSIs and its ``!AIVDO`` messages per type."""
+    m (mean sea level), ``sigma`` m per horizontal axis (east, north), ``sigma_up`` m along the local up
+    (inf: AIS gives no height); ``vessels``: MMSI -> what the log says of it (name, call sign, class,
+    positions); ``own``: the own ship's MMSIs and its ``!AIVDO`` messages per type; ``sea_level``: the
+    ellipsoid height (m) of mean sea level; ``surface_sigma``: the sigma (m) of a vessel's height
+    about it."""
 
     time: np.ndarray
     target: np.ndarray
@@ -92,6 +98,8 @@ class References:
     sigma_up: np.ndarray
     vessels: dict
     own: dict
+    sea_level: float = 0.0
+    surface_sigma: float = 10.0
 
     def frame(self) -> pd.DataFrame:
         """The reference file table: ``time_s``, ``target``, ``lat_deg``, ``lon_deg``, ``alt_m``, ``sigma_m``,
@@ -101,6 +109,17 @@ class References:
         return pd.DataFrame({"time_s": self.time, "target": self.target, "lat_deg": np.degrees(self.lat),
                              "lon_deg": np.degrees(self.lon), "alt_m": self.alt, "sigma_m": self.sigma,
                              "sigma_up_m": self.sigma_up})
+
+    def targets_frame(self) -> pd.DataFrame:
+        """The targets file table of the vessels with reference positions: ``target`` (MMSI), ``name``
+        (from messages 5, 19, 24; empty if none), ``surface_alt_m`` (mean sea level above the
+        ellipsoid), ``sigma_surface_m``."""
+        import pandas as pd
+
+        mmsi = [m for m, v in self.vessels.items() if v["positions"] > 0]
+        return pd.DataFrame({"target": mmsi, "name": [self.vessels[m]["name"] or "" for m in mmsi],
+                             "surface_alt_m": np.full(len(mmsi), float(self.sea_level)),
+                             "sigma_surface_m": np.full(len(mmsi), float(self.surface_sigma))})
 
 
 def _vessel(vessels: dict, mmsi: str) -> dict:
@@ -211,5 +230,5 @@ def read_references(log: SentenceLog, messages: list[AisMessage], clock: Clock, 
     for k in keep:
         vessels[mmsi[k]]["positions"] += 1
     return References(time[keep], mmsi[keep], np.radians(lat[keep]), np.radians(lon[keep]),
-                      np.full(keep.size, float(sea_level)), sigma[keep], np.full(keep.size, float(sigmas.height_m)),
-                      vessels, own)
+                      np.full(keep.size, float(sea_level)), sigma[keep], np.full(keep.size, np.inf),
+                      vessels, own, float(sea_level), float(sigmas.height_m))

@@ -47,12 +47,15 @@ def test_message_27_class_b_and_accuracy_sigmas(tmp_path):
     expected = [math.hypot(math.hypot(10.0, 185.2 / math.sqrt(12)), 12 * KNOT * 2.0),
                 math.hypot(10.0, 15.0 / math.sqrt(12)), 5.0]  # speed not available: 15 m/s assumed
     assert ref.sigma_m.tolist() == pytest.approx(expected)
-    assert ref.sigma_up_m.tolist() == [10.0] * 3  # the vertical sigma takes no speed or time term
+    assert ref.sigma_up_m.tolist() == [math.inf] * 3  # AIS gives no height
+    targets = result.targets.set_index("target")  # the vessels move on the sea: surface targets
+    assert targets.sigma_surface_m.tolist() == [10.0] * 3 and (targets.surface_alt_m == ref.alt_m.iloc[0]).all()
+    assert targets.loc["244000003", "name"] == "NINETEEN"
     vessels = {v["mmsi"]: v for v in result.summary["ais"]["vessels"]}
     assert vessels["244000003"]["name"] == "NINETEEN" and vessels["244000001"]["class"] == "long range"
     custom = import_lines(tmp_path, lines, ais_sigmas=AisSigmas(high_accuracy_m=1.0, latency_s=0.0, height_m=4.0))
     assert custom.reference.sigma_m.iloc[2] == pytest.approx(1.0)
-    assert custom.reference.sigma_up_m.tolist() == [4.0] * 3
+    assert custom.targets.sigma_surface_m.tolist() == [4.0] * 3
     for bad in (float("nan"), 0.0):
         with pytest.raises(ValueError, match="AisSigmas.height_m"):
             AisSigmas(height_m=bad)

@@ -68,7 +68,10 @@ def test_reference_positions_times_and_sigmas(bridge):
     pos = np.where(t.accuracy, 5.0, 10.0)
     expected = np.where(timed, np.hypot(pos, v / np.sqrt(12.0)), np.hypot(pos, v * 2.0))
     assert np.allclose(r.sigma_m, expected, rtol=0.02)  # speed over ground to 0.1 knot
-    assert (r.sigma_up_m == 10.0).all()  # at sea level, whatever height the radar sees: AisSigmas.height_m
+    assert np.isinf(r.sigma_up_m).all()  # AIS gives no height: the vessels are surface targets instead
+    surface = result.targets.set_index("target")
+    assert set(surface.index) == set(r.target) and np.allclose(surface.surface_alt_m, 42.0)
+    assert (surface.sigma_surface_m == 10.0).all()  # whatever height the radar sees: AisSigmas.height_m
 
 
 def test_sensors_platforms_and_summary(bridge):

@@ -31,14 +31,16 @@ def _write(result, log, folder):
 def test_written_tables_read_back(bridge, tmp_path):
     log, _, result = bridge
     written = _write(result, log, tmp_path)
-    assert set(written) == {"plots", "navigation", "sensors", "platforms", "reference", "rejected", "summary"}
+    assert set(written) == {"plots", "navigation", "sensors", "platforms", "reference", "targets", "rejected",
+                            "summary"}
     tables = read_fleet_tables(written["plots"], written["navigation"], written["sensors"], written["platforms"],
-                               written["reference"])
+                               written["reference"], targets=written["targets"])
     assert tables.notes == [] and tables.rejected == []
     assert len(tables.plots["time"]) == len(result.plots) and len(tables.references["time"]) == len(result.reference)
     assert np.allclose(tables.navigation["roll"], np.radians(result.navigation.roll_deg))
     assert np.allclose(tables.plots["bearing"], np.radians(result.plots.bearing_deg))
     assert json.loads(written["summary"].read_text()) == json.loads(json.dumps(result.summary))
+    assert np.isinf(tables.references["sigma_up"]).all() and len(tables.targets["target"]) == len(result.targets)
     assert pd.read_csv(written["rejected"]).shape == (len(result.rejected), 4)
 
 
@@ -47,7 +49,7 @@ def test_registration_recovers_the_radar_errors(bridge, tmp_path):
     result = import_nmea(path, PLATFORM, log.sensors, platform_priors={"prior_heading_deg": 0.0})
     written = _write(result, log, tmp_path)
     tables = read_fleet_tables(written["plots"], written["navigation"], written["sensors"], written["platforms"],
-                               written["reference"])
+                               written["reference"], targets=written["targets"])
     fit = solve_batch(tables.problem())
     c = log.config
     for state, truth in (("RADAR:range_bias", c.range_bias_m), ("RADAR:bearing_bias", c.bearing_bias_rad),

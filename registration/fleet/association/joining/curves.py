@@ -13,8 +13,9 @@ their uncertainty.
   the reference positions interpolated linearly in time between two positions at most
   ``reference_gap_s`` apart, with the variance ``(1 - w)^2 s_a^2 + w^2 s_b^2 + (a (t - t_a)
   (t_b - t) / 2)^2`` per axis (``s``: the positions' sigmas, ``a``: ``reference_accel_sigma``,
-  the bound of the linear interpolation's error under that acceleration); independent of the
-  states.
+  the bound of the linear interpolation's error under that acceleration; ``s`` the larger of the
+  horizontal and vertical sigma; a reference without a height takes as its vertical sigma its
+  target's surface sigma, or :data:`NO_HEIGHT_SIGMA_M` off a surface); independent of the states.
 
 Windows are located by the plots' reported times (as the batch cuts them) and evaluated at the
 time each plot was seen (reported time minus its sensor's estimated time bias).
@@ -32,10 +33,14 @@ from registration.fleet.batch.initial import initial_coefficients
 from registration.fleet.batch.normal import evaluate, normal_equations
 from registration.fleet.batch.schur import masked_blocks, reduce
 from registration.fleet.batch.solver import BatchOptions, determined_design, singular_blocks
-from registration.fleet.data.inputs import References
+from registration.fleet.data.inputs import References, SurfaceTargets
 from registration.fleet.data.problem import FleetProblem
 
-__all__ = ["Curves", "Prediction", "WindowFit", "anchor_curves", "fit_windows", "join_fits"]
+__all__ = ["Curves", "NO_HEIGHT_SIGMA_M", "Prediction", "WindowFit", "anchor_curves", "fit_windows", "join_fits"]
+
+#: The vertical sigma (m) a reference position without a height predicts with when its target is not
+#: on a surface of known height.
+NO_HEIGHT_SIGMA_M = 1000.0
 
 #: Gauss-Newton steps on the target windows at most when their curves are fitted with the states held.
 WINDOW_ITERATIONS = 10
@@ -312,10 +317,12 @@ def fit_windows(problem: FleetProblem | None, x: np.ndarray, options: BatchOptio
 
 
 def anchor_curves(problem: FleetProblem | None, x: np.ndarray, refs: References, options: BatchOptions, *,
-                  gap_s: float, accel_sigma: float, fit: WindowFit | None = None) -> Curves:
+                  gap_s: float, accel_sigma: float, fit: WindowFit | None = None,
+                  surface: SurfaceTargets | None = None) -> Curves:
     """The anchors: the targets of ``problem`` (the registered labelled plots; None: none) under the
     estimate ``x``, then the reference targets of ``refs`` that are not among them. ``fit``: their
-    windows already fitted (:func:`fit_windows`; then ``problem`` is not used)."""
+    windows already fitted (:func:`fit_windows`; then ``problem`` is not used). ``surface``: the
+    targets on a surface (the vertical sigma of their references without a height)."""
     fit = fit if fit is not None else fit_windows(problem, x, options)
     names, blk, coef, V_inv, Y, local = fit.names, fit.windows, fit.coef, fit.V_inv, fit.Y, fit.local
     order = np.lexsort((blk.block_centre, blk.block_target))
@@ -327,7 +334,11 @@ def anchor_curves(problem: FleetProblem | None, x: np.ndarray, refs: References,
     k = np.array([index.get(t, -1) for t in rt], dtype=np.int64)
     keep = k >= 0
     order_r = np.lexsort((refs.time[keep], k[keep]))
+    sigma_up = refs.sigma_up
+    if not np.isfinite(sigma_up).all():
+        on = surface.of(rt)[1] if surface is not None else np.full(rt.size, np.nan)
+        sigma_up = np.where(np.isfinite(sigma_up), sigma_up, np.where(np.isfinite(on), on, NO_HEIGHT_SIGMA_M))
     return Curves(names + tuple(extra), len(names), blk, order, coef, V_inv, Y, local,
                   k[keep][order_r], refs.time[keep][order_r], refs.p_ecef[keep][order_r],
-                  np.maximum(refs.sigma, refs.sigma_up)[keep][order_r],
+                  np.maximum(refs.sigma, sigma_up)[keep][order_r],
                   float(gap_s), float(accel_sigma), fit)

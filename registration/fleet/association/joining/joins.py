@@ -232,7 +232,8 @@ def _curves(reg: Registrar, labels: np.ndarray, prov: np.ndarray, options: Assoc
     fit = _fit(reg, lab, cache)
     cache["key"], cache["curves"] = key, anchor_curves(None, reg.x, reg.refs, reg.between, fit=fit,
                                                        gap_s=options.reference_gap_s,
-                                                       accel_sigma=options.reference_accel_sigma)
+                                                       accel_sigma=options.reference_accel_sigma,
+                                                       surface=reg.problem.surface)
     return cache["curves"]
 
 
