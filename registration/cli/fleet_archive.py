@@ -1,31 +1,44 @@
 """``registration fleet register`` on an archive too large for memory: the partitioned batch solver
 (:func:`registration.fleet.batch.partitioned.solve_batch_partitioned`, docs/archive.md) on a
-folder of Parquet tables, in this process or on Dask workers.
+folder of Parquet tables, or of CSV files converted block by block into a temporary Parquet folder
+(:mod:`registration.io.fleet.csvarchive`), in this process or on Dask workers.
 
 Options (:func:`add_archive_arguments`): ``--partition-s S`` (the archive is read and solved in
 partitions of S seconds of target windows; this switches the archive path on), ``--workers N`` (a
 local Dask cluster of N worker processes), ``--scheduler ADDRESS`` (a running dask.distributed
 scheduler). The estimates equal the in-process run's for any number of workers. Outputs, replacing
-an earlier run's in ``--out`` only once all are written (a partition that cannot be read leaves
-``--out`` as it was, with a one-line error naming the file): ``estimates.csv`` (state, unit in file
-units, estimate, sigma) and ``summary.json`` (the partitions, iterations, chi-square, exclusions).
+an earlier run's in ``--out`` only once all are written (a partition that cannot be read, or a bad
+CSV row, leaves ``--out`` as it was, with a one-line error naming the file): ``estimates.csv``
+(state, unit in file units, estimate, sigma), ``fused_targets/`` (Parquet parts, one per
+partition, written by the workers, or with ``--scheduler`` returned to this process and written
+here), ``residuals.csv`` (per sensor and channel: count, mean, RMS of the whitened residuals),
+``summary.json`` (the partitions, iterations, chi-square, exclusions, residual checks) and the PNGs
+of :mod:`registration.cli.fleet_archive_output` (docs/archive.md, "Outputs of an archive run").
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import tempfile
 from pathlib import Path
 
-__all__ = ["ARCHIVE_OUTPUTS", "add_archive_arguments", "archive_requested", "run_archive"]
+from registration.cli.errors import writing
+from registration.cli.fleet_archive_output import PNG_OUTPUTS
 
-#: The files an archive run writes into --out.
-ARCHIVE_OUTPUTS = frozenset({"estimates.csv", "summary.json"})
+__all__ = ["ARCHIVE_FOLDERS", "ARCHIVE_OUTPUTS", "FUSED_FOLDER", "add_archive_arguments", "archive_requested",
+           "run_archive"]
+
+#: The folder of the fused targets' Parquet parts.
+FUSED_FOLDER = "fused_targets"
+#: The files an archive run writes into --out (the PNGs unless --no-plots), and its folders.
+ARCHIVE_OUTPUTS = frozenset({"estimates.csv", "residuals.csv", "summary.json", *PNG_OUTPUTS})
+ARCHIVE_FOLDERS = frozenset({FUSED_FOLDER})
 
 
 def add_archive_arguments(p: argparse.ArgumentParser) -> None:
     """The archive options, in their own group of ``p`` (the ``fleet register`` parser)."""
-    g = p.add_argument_group("archives too large for memory (Parquet tables in --tables DIR)")
+    g = p.add_argument_group("archives too large for memory (Parquet or CSV tables in --tables DIR)")
     g.add_argument("--partition-s", type=float, default=None, metavar="S",
                    help="solve partition by partition, S seconds of target windows each (memory bounded by a "
                         "partition; default: not partitioned, the whole archive in memory)")
@@ -66,29 +79,92 @@ def _summary(result, args: argparse.Namespace) -> dict:
             "workers": args.workers, "scheduler": args.scheduler}
 
 
-def run_archive(args: argparse.Namespace) -> int:
-    """Register the Parquet archive ``--tables DIR`` partition by partition and write the outputs."""
-    from registration.cli.errors import prepare_out
+def _write_parts(parts: Path, tables: list) -> None:
+    from registration.fleet.batch.outputs import write_part
+
+    for k, table in enumerate(tables):
+        with writing(parts):
+            write_part(parts, k, table)
+
+
+def _write_outputs(folder: Path, args: argparse.Namespace, result, outputs, written_by: str) -> None:
+    from registration.cli.fleet_archive_output import residual_lines, residual_summary, write_figures
+    from registration.fleet.batch.outputs import FUSED_COLUMNS
+
+    summary = {**_summary(result, args), **residual_summary(outputs),
+               "fused_targets": {"folder": f"{FUSED_FOLDER}/", "parts": outputs.n_parts, "rows": outputs.fused_rows,
+                                 "columns": list(FUSED_COLUMNS), "written_by": written_by},
+               "figures_sample": {"plots": int(outputs.sample["time"].size), "every": outputs.sample_every}}
+    for name, text in (("estimates.csv", "\n".join(_estimate_lines(result))),
+                       ("residuals.csv", "\n".join(residual_lines(outputs))),
+                       ("summary.json", json.dumps(summary, indent=2, allow_nan=False))):
+        with writing(folder / name):
+            (folder / name).write_text(text + "\n")
+    if not getattr(args, "no_plots", False):
+        write_figures(folder, outputs, result)
+
+
+def _solve_and_write(args: argparse.Namespace, out: Path, source) -> tuple:
     from registration.cli.staging import staged_outputs
     from registration.core.parallel import dask_client
     from registration.fleet import BatchOptions
-    from registration.fleet.batch.archive import ParquetSource
+    from registration.fleet.batch.outputs import archive_outputs
     from registration.fleet.batch.partitioned import solve_batch_partitioned
+
+    options = BatchOptions(window_s=args.window_s)
+    with dask_client(args.scheduler, args.workers) as client:
+        result = solve_batch_partitioned(source, options, partition_s=args.partition_s, client=client, progress=True)
+        with staged_outputs(out, "registration fleet register", ARCHIVE_OUTPUTS, folders=ARCHIVE_FOLDERS) as folder:
+            parts = folder.path / FUSED_FOLDER
+            with writing(parts):
+                parts.mkdir()
+            remote = bool(args.scheduler)  # a remote cluster may not see this disk: its workers return the parts
+            outputs = archive_outputs(result, source, options, parts=None if remote else parts, client=client)
+            if remote:
+                _write_parts(parts, outputs.tables)
+            _write_outputs(folder.path, args, result, outputs, "client" if remote else "workers")
+    return result, outputs
+
+
+def _run(args: argparse.Namespace, out: Path, tables: Path) -> tuple:
+    """Solve and write, the archive read as Parquet, or from CSV files converted first (module docstring)."""
+    from registration.fleet.batch.archive import ParquetSource
     from registration.io.fleet.cells import FILE_COLUMNS
+    from registration.io.fleet.csvarchive import csv_tables, parquet_from_csv
+
+    if not csv_tables(tables):
+        return _solve_and_write(args, out, ParquetSource(tables, FILE_COLUMNS))
+    with tempfile.TemporaryDirectory(prefix="registration-csv-archive-") as temp:
+        notes = parquet_from_csv(tables, Path(temp))
+        for note in notes:
+            print(f"note: {note}")
+        return _solve_and_write(args, out, ParquetSource(Path(temp), FILE_COLUMNS))
+
+
+def run_archive(args: argparse.Namespace) -> int:
+    """Register the archive ``--tables DIR`` partition by partition and write the outputs (module docstring)."""
+    from registration.cli.errors import prepare_out
 
     if args.tables is None:
-        raise ValueError("--partition-s: give the archive as --tables DIR (Parquet files or folders of them)")
+        raise ValueError("--partition-s: give the archive as --tables DIR (Parquet or CSV files, or folders of "
+                         "Parquet files)")
+    if getattr(args, "on_bad_row", "stop") != "stop":
+        raise ValueError("--on-bad-row skip: not with --partition-s (an archive stops at its first bad row); "
+                         "register in memory to set bad rows aside")
+    if getattr(args, "method", "batch") != "batch":
+        raise ValueError("--method online: not with --partition-s (the archive path is the batch solve)")
+    surface = getattr(args, "targets", None) or next(
+        (p for p in sorted(Path(args.tables).glob("targets.*")) if p.suffix in (".csv", ".parquet", ".pq")), None)
+    if surface is not None:
+        raise ValueError(f"{surface}: surface targets are not taken by --partition-s yet (the archive path would "
+                         "solve without them); register in memory, or move the targets file aside")
     out = prepare_out(args.out)
-    source = ParquetSource(Path(args.tables), FILE_COLUMNS)
-    with dask_client(args.scheduler, args.workers) as client:
-        result = solve_batch_partitioned(source, BatchOptions(window_s=args.window_s), partition_s=args.partition_s,
-                                         client=client, progress=True)
-    with staged_outputs(out, "registration fleet register", ARCHIVE_OUTPUTS) as folder:
-        (folder.path / "estimates.csv").write_text("\n".join(_estimate_lines(result)) + "\n")
-        (folder.path / "summary.json").write_text(json.dumps(_summary(result, args), indent=2) + "\n")
+    result, outputs = _run(args, out, Path(args.tables))
     print(f"{result.n_plots} plots in {result.plan.n_partitions} partitions, {result.iterations} iterations, "
           f"chi-square/dof {result.chi_square.mean:.3f}")
+    print(f"fused targets: {outputs.fused_rows} rows in {outputs.n_parts} Parquet parts")
     for w in result.warnings:
         print(f"warning: {w}")
-    print("wrote " + ", ".join(str(out / n) for n in sorted(ARCHIVE_OUTPUTS)))
+    names = sorted(ARCHIVE_OUTPUTS - (set() if not getattr(args, "no_plots", False) else set(PNG_OUTPUTS)))
+    print("wrote " + ", ".join(str(out / n) for n in [*names, FUSED_FOLDER + "/"]))
     return 0

@@ -31,22 +31,24 @@ __all__ = ["staged_outputs"]
 
 
 @contextlib.contextmanager
-def staged_outputs(out: Path, command: str, names: frozenset) -> Iterator["RunFolder"]:
+def staged_outputs(out: Path, command: str, names: frozenset, *, folders: frozenset = frozenset()
+                   ) -> Iterator["RunFolder"]:
     """A run folder inside ``out`` for ``command`` (e.g. ``"registration fuse"``) writing ``names``:
     its files replace the earlier run's outputs in ``out`` only when the block ends normally;
     otherwise the folder is removed and ``out`` is unchanged (or gone again, if the run made it).
     Leftovers of earlier runs that are gone (``partial-*`` folders, an interrupted publication) are
     cleaned up first. A folder in ``out`` named like one of the outputs (all files) is an error
-    (CommandError), never replaced."""
+    (CommandError), never replaced; ``folders``: outputs that are folders (e.g. Parquet parts), each
+    replaced whole like a file."""
     from registration.io.output.outfolder import discard, new_run_folder, prepare_out, publish
 
     out = Path(out)
-    for name in sorted(names):  # the outputs are files: a folder of that name is the user's, never replaced
+    for name in sorted(set(names) - set(folders)):  # a folder named like a file output is the user's: never replaced
         if (out / name).is_dir():
             raise CommandError(f"cannot write {out / name}: Is a directory (not an output of {command}; move it, "
                                "or give another --out)")
-    prepare_out(out, frozenset(names))
-    folder = new_run_folder(out, None, command, frozenset(names))
+    prepare_out(out, frozenset(names) | frozenset(folders))
+    folder = new_run_folder(out, None, command, frozenset(names) | frozenset(folders))
     try:
         yield folder
     except CommandError as exc:

@@ -41,15 +41,29 @@ def test_archive_run_writes_estimates_and_leaves_out_on_error(tmp_path):
     assert abs(est["A:heading_error"] - np.degrees(truth["A:heading_error"])) < 0.05
     summary = json.loads((out / "summary.json").read_text())
     assert summary["partitions"] == 3 and summary["converged"]
-    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    before = {p.relative_to(out): p.read_bytes() for p in out.rglob("*") if p.is_file()}
     (tables / "navigation.parquet").write_bytes(b"not parquet")
     with pytest.raises(ValueError) as err:
         run_archive(args)
     assert "navigation.parquet" in str(err.value) and "\n" not in str(err.value)
-    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+    assert {p.relative_to(out): p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
 
 
 def test_workers_without_partitions_is_refused():
     with pytest.raises(ValueError, match="--partition-s"):
         archive_requested(parse(["--workers", "2"]))
     assert not archive_requested(parse([]))
+
+
+def test_an_archive_with_surface_targets_is_refused_not_solved_without_them(tmp_path):
+    """The partitioned solver does not take the targets table yet: a folder holding one is refused,
+    naming the file, rather than registered as if its targets had no surface."""
+    sc = fleet_scenario(0)
+    tables = tmp_path / "tables"
+    tables.mkdir()
+    write_fleet_tables(tables, sc.plots, sc.navigation, sc.sensors, sc.platforms, sc.references, fmt="parquet",
+                       targets={"target": ["T2"], "surface_alt": [0.0], "sigma_surface": [5.0]})
+    out = tmp_path / "out"
+    with pytest.raises(ValueError, match=r"targets\.parquet: surface targets are not taken by --partition-s"):
+        run_archive(parse(["--tables", str(tables), "--out", str(out), "--partition-s", "100"]))
+    assert not out.exists() or not any(out.iterdir())

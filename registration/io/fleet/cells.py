@@ -17,7 +17,7 @@ import numpy as np
 from registration.io.fleet.checks import attitude_check, radians_check, sigma_notes
 from registration.io.fleet.rejects import BadRows
 
-__all__ = ["FILE_COLUMNS", "OPTIONAL_IDS", "FileRead", "read_file"]
+__all__ = ["FILE_COLUMNS", "OPTIONAL_IDS", "FileRead", "check_frame", "read_file"]
 
 #: Per table: (file column, table column, unit, required, (low, high) accepted in file units).
 #: unit "id" = an identifier; "deg" columns are converted to radians.
@@ -157,9 +157,18 @@ def _used_platforms(frame, shapes, platforms: set, path: Path):
 def read_file(name: str, path: Path, skip: bool, platforms: set | None = None) -> FileRead:
     """One file -> :class:`FileRead` (table columns of :mod:`registration.fleet.data.tables`); ``skip``
     False: the first bad cell raises. ``platforms``: for the navigation, the platforms used."""
+    return check_frame(name, path, _read_frame(path), skip, platforms)
+
+
+def check_frame(name: str, path: Path, frame, skip: bool, platforms: set | None = None, first_row: int = 0,
+                whole_file: bool = True) -> FileRead:
+    """:func:`read_file` on rows already read: ``frame`` (a DataFrame of :func:`_read_frame`'s kind, or
+    a block of :func:`~registration.io.files.csvrows.read_csv_blocks`) holds the file's data rows
+    from ``first_row`` on, and the errors and bad rows name file rows. ``whole_file`` False: the
+    checks that need the whole file (radians in degree columns, attitudes, sigma notes) are left to
+    the caller, and an empty block is not an error."""
     from registration.io.files.csvrows import SHAPE_COLUMN
 
-    frame = _read_frame(path)
     shapes = frame.pop(SHAPE_COLUMN) if SHAPE_COLUMN in frame.columns else None
     spec = FILE_COLUMNS[name]
     missing = [c for c, _, _, req, _ in spec if req and c not in frame.columns]
@@ -170,11 +179,13 @@ def read_file(name: str, path: Path, skip: bool, platforms: set | None = None) -
     unknown = [c for c in frame.columns if c not in known]
     if unknown:
         raise ValueError(f"{path}: unknown column(s) {unknown}; the {name} table has columns {sorted(known)}")
-    if len(frame) == 0:
+    if len(frame) == 0 and whole_file:
         raise ValueError(f"{path}: no data rows (the file holds only a header); the {name} file needs at least one row")
     notes, file_rows = [], None
     if platforms is not None:
         frame, shapes, file_rows, notes = _used_platforms(frame, shapes, platforms, path)
+    if first_row:
+        file_rows = first_row + (np.arange(len(frame)) if file_rows is None else file_rows)
     bad = BadRows(path, len(frame), skip, file_rows)
     if shapes is not None:  # first: the cells a short line lacks are not empty cells
         shape = shapes.to_numpy()
@@ -192,9 +203,10 @@ def read_file(name: str, path: Path, skip: bool, platforms: set | None = None) -
             out[key] = np.where(np.isnan(out[key]), np.inf, out[key])  # empty: no prior
     ok = bad.ok()
     numbers = {c: np.where(ok, v, np.nan) for c, v in numbers.items()}
-    radians_check(path, numbers)
-    if name == "navigation":
-        notes += attitude_check(path, numbers, out["platform"])
-    elif name == "sensors":
-        notes += sigma_notes(path, numbers, out["sensor"])
+    if whole_file:
+        radians_check(path, numbers)
+        if name == "navigation":
+            notes += attitude_check(path, numbers, out["platform"])
+        elif name == "sensors":
+            notes += sigma_notes(path, numbers, out["sensor"])
     return FileRead(out, bad, numbers, list(frame.columns), notes, file_rows)

@@ -1,0 +1,281 @@
+"""The outputs of a partitioned solve (:mod:`registration.fleet.batch.partitioned`, docs/archive.md),
+made by one more pass over the partitions at the solution: :func:`archive_outputs`.
+
+Each partition, with the states ``x``, its windows' coefficients and the states' covariance ``P``,
+evaluates (a pure function, :func:`output_pass`, run by ``run_pass`` here or on Dask workers):
+
+* its **fused targets**, as :func:`registration.fleet.batch.covariance.fused_targets` makes them for
+  ``solve_batch``: per measured instant of each target (time corrected by any time bias) the
+  fitted position (ECEF m), its covariance (m^2; coefficients' ``V_b^-1 + Y_b P Y_b^T``) and the
+  plots at that instant, sorted by target then time. They are written as one Parquet file per
+  partition, ``part-00000.parquet``, ... (columns :data:`FUSED_COLUMNS`) into a folder, written
+  under a temporary name and renamed, so a task run again after a lost worker writes the same file;
+  or (``parts=None``) returned, for the caller to write (a remote cluster without a shared disk).
+* the **sums of its whitened residuals** ``(measured - predicted) / sigma``: per sensor and channel
+  (range, bearing, elevation) their count, sum and sum of squares; per target and per reference
+  target their sum of squares and count; a histogram of each channel (clipped to +-HIST_LIMIT);
+  the chi-square parts of :func:`~registration.fleet.batch.residuals.chi_square_parts` (plots seen
+  outside their navigation under a time bias left out, as the solver's final pass does).
+* a **sample** of its plots for figures: every ``every``-th plot of the partition (in file order),
+  with its time, sensor, target, residuals and (with a range) its position as measured and as
+  corrected (latitude, longitude, rad).
+
+The caller adds the sums in partition order, so the outputs do not depend on where the partitions
+ran or on the number of workers.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, replace
+from types import SimpleNamespace
+
+import numpy as np
+
+from registration.core.frames import ecef2geodetic
+from registration.fleet.batch.blocks import make_blocks
+from registration.fleet.batch.covariance import fused_targets
+from registration.fleet.batch.normal import evaluate, make_design, normal_equations
+from registration.fleet.batch.partitioned import run_pass
+from registration.fleet.batch.partitions import partition_of, window_index
+from registration.fleet.batch.passes import PartitionTask, partition_problem, setup_pass
+from registration.fleet.batch.residuals import chi_square_parts
+from registration.fleet.batch.schur import reduce
+from registration.fleet.batch.solver import outside_when_seen
+from registration.fleet.corrected import corrected_positions
+
+__all__ = ["CHANNELS", "FUSED_COLUMNS", "HIST_BINS", "HIST_LIMIT", "SAMPLE_PLOTS", "ArchiveOutputs", "archive_outputs",
+           "output_pass", "part_name", "write_part"]
+
+#: The channels of a plot, in the order of the residuals' columns.
+CHANNELS = ("range", "bearing", "elevation")
+#: The columns of a fused targets part file.
+FUSED_COLUMNS = ("target", "time_s", "x_m", "y_m", "z_m", "cov_xx_m2", "cov_xy_m2", "cov_xz_m2", "cov_yy_m2",
+                 "cov_yz_m2", "cov_zz_m2", "n_plots")
+#: The most plots the figures' sample holds.
+SAMPLE_PLOTS = 20_000
+#: The residual histogram: HIST_BINS bins over [-HIST_LIMIT, HIST_LIMIT] (values clipped to it).
+HIST_BINS, HIST_LIMIT = 60, 6.0
+_COV = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))
+
+
+def part_name(k: int) -> str:
+    """The file name of the ``k``-th part (the partitions with plots, counted in order)."""
+    return f"part-{k:05d}.parquet"
+
+
+def write_part(folder, k: int, table: dict) -> None:
+    """Write ``table`` (FUSED_COLUMNS) as part ``k`` of ``folder``: a temporary file renamed, so a
+    part written twice (a task run again) is whole either time."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    path = os.path.join(str(folder), part_name(k))
+    tmp = f"{path}.{os.getpid()}.tmp"
+    pq.write_table(pa.table({c: table[c] for c in FUSED_COLUMNS}), tmp)
+    os.replace(tmp, path)
+
+
+def _fused_table(problem, design, x: np.ndarray, coef: np.ndarray, normal, P_sink: np.ndarray) -> dict:
+    normal0 = replace(normal, U=np.zeros_like(normal.U))
+    red = reduce(design.blocks, normal0, 0.0)
+    fused = fused_targets(SimpleNamespace(design=design, problem=problem, x=x, coef=coef), red, P_sink)
+    table = {"target": fused.target.astype(str), "time_s": fused.time}
+    for j, axis in enumerate("xyz"):
+        table[f"{axis}_m"] = fused.p_ecef[:, j]
+    for (a, b), name in zip(_COV, FUSED_COLUMNS[5:11]):
+        table[name] = fused.covariance[:, a, b]
+    table["n_plots"] = fused.n_plots.astype(np.int64)
+    return table
+
+
+def _sums(problem, design, ev, residual: np.ndarray) -> dict:
+    """The residual sums of the partition (module docstring); ``residual`` (N, 3) per problem plot,
+    NaN where not measured or left out."""
+    S = len(problem.sensor_ids)
+    given = np.isfinite(residual)
+    r0 = np.where(given, residual, 0.0)
+    count = np.zeros((S, 3), dtype=np.int64)
+    total, squares = np.zeros((S, 3)), np.zeros((S, 3))
+    for c in range(3):
+        count[:, c] = np.bincount(problem.sensor, given[:, c], minlength=S).astype(np.int64)
+        total[:, c] = np.bincount(problem.sensor, r0[:, c], minlength=S)
+        squares[:, c] = np.bincount(problem.sensor, r0[:, c] ** 2, minlength=S)
+    targets, inv = np.unique(problem.target, return_inverse=True)
+    by_target = (targets, np.bincount(inv, np.sum(r0**2, axis=1)), np.bincount(inv, np.sum(given, axis=1)))
+    refs = problem.references.target[design.blocks.ref_index].astype(str)
+    ref_ids, ref_inv = np.unique(refs, return_inverse=True)
+    e_ref = np.asarray(ev.e_ref, dtype=np.float64).reshape(-1, 3)
+    by_reference = (ref_ids, np.bincount(ref_inv, np.sum(e_ref**2, axis=1), minlength=ref_ids.size),
+                    np.full(ref_ids.size, 3) * np.bincount(ref_inv, minlength=ref_ids.size))
+    hist = np.stack([np.histogram(np.clip(residual[given[:, c], c], -HIST_LIMIT, HIST_LIMIT), HIST_BINS,
+                                  (-HIST_LIMIT, HIST_LIMIT))[0] for c in range(3)])
+    return {"count": count, "sum": total, "squares": squares, "by_target": by_target, "by_reference": by_reference,
+            "hist": hist.astype(np.int64)}
+
+
+def _sample(problem, x: np.ndarray, residual: np.ndarray, every: int) -> dict:
+    """Every ``every``-th plot of the partition: time (s, reported), sensor, target (indices), residual
+    (3,), and lat/lon (rad) as measured and corrected (NaN without a range)."""
+    pick = np.arange(0, problem.n_plots, max(1, int(every)))
+    out = {"time": problem.time[pick], "sensor": problem.sensor[pick], "target": problem.target[pick],
+           "residual": residual[pick]}
+    has_range = problem.mask[pick, 0]
+    sel = pick[has_range]
+    layout = problem.layout
+    state = layout.sensor_states(problem.sensor[sel], problem.sensor_platform)
+    meas = problem.meas[sel].copy()
+    for name, states in (("measured", np.zeros(layout.n)), ("corrected", np.asarray(x, dtype=np.float64))):
+        xs = np.append(states, 0.0)
+        m = meas.copy()
+        m[:, 2] = np.where(problem.mask[sel, 2], m[:, 2], xs[state[:, 5]])
+        nav = problem.seen(states, sel)[1]
+        lat, lon, _ = ecef2geodetic(corrected_positions(nav, state, xs, problem.sensor_lever[problem.sensor[sel]], m))
+        out[f"{name}_lat"] = np.full(pick.size, np.nan)
+        out[f"{name}_lon"] = np.full(pick.size, np.nan)
+        out[f"{name}_lat"][has_range], out[f"{name}_lon"][has_range] = lat, lon
+    return out
+
+
+def output_pass(task: PartitionTask, x: np.ndarray, coef: np.ndarray, P_sink: np.ndarray, part: int, parts,
+                every: int) -> dict:
+    """The outputs of one partition at the solution (module docstring): {sums, parts (chi-square
+    parts), rows (fused rows), sample, fused (the table, when ``parts`` is None)}; part ``part``
+    written into the folder ``parts``. ``P_sink`` (n + 1, n + 1): the states' covariance, the
+    sink's row and column zero."""
+    problem = partition_problem(task)
+    if problem is None:
+        raise ValueError(f"partition {task.index} holds no plot at the solution but has coefficients")
+    options = task.options
+    design = make_design(problem, make_blocks(problem, options.window_s, options.degree, task.plan.span))
+    if design.blocks.n_blocks != coef.shape[0]:
+        raise ValueError(f"partition {task.index}: {design.blocks.n_blocks} windows, but {coef.shape[0]} "
+                         "windows' coefficients: the partitions are not the solve's")
+    ev = evaluate(design, x, coef)
+    normal = normal_equations(design, ev)
+    outside = outside_when_seen(design, x)
+    rows = np.zeros(design.weight.shape[0], dtype=bool)
+    rows[design.slot] = outside[design.blocks.order]
+    weight = np.where(rows[:, None], 0.0, design.weight)
+    residual = np.full((problem.n_plots, 3), np.nan)
+    residual[design.blocks.order] = np.where(weight > 0, ev.e, np.nan)[design.slot]
+    table = _fused_table(problem, design, x, coef, normal, P_sink)
+    out = {"sums": _sums(problem, design, ev, residual), "parts": chi_square_parts(replace(design, weight=weight), ev),
+           "rows": int(table["time_s"].size), "sample": _sample(problem, x, residual, every),
+           "sensor_ids": tuple(problem.sensor_ids)}
+    if parts is None:
+        out["fused"] = table
+    else:
+        write_part(parts, part, table)
+    return out
+
+
+@dataclass
+class ArchiveOutputs:
+    """The outputs of :func:`archive_outputs`, summed over the partitions in partition order.
+
+    ``sensor_ids``; ``count`` (S, 3) values per sensor and channel (:data:`CHANNELS`), ``mean`` and
+    ``rms`` (S, 3) of their whitened residuals (NaN without values), ``squares`` (S, 3) their sums of
+    squares; ``by_target`` and ``by_reference`` {id: (sum of squares, values)}; ``hist`` (3,
+    HIST_BINS) counts per channel over [-HIST_LIMIT, HIST_LIMIT]; ``parts`` the chi-square parts
+    {"plots", "references": (sum of squares, values)}; ``fused_rows`` rows of fused targets in
+    ``n_parts`` parts; ``sample`` the figures' plots (module docstring), at most ``sample_max``;
+    ``tables`` the fused tables when they were returned rather than written (else None).
+    """
+
+    sensor_ids: tuple
+    count: np.ndarray
+    mean: np.ndarray
+    rms: np.ndarray
+    squares: np.ndarray
+    by_target: dict
+    by_reference: dict
+    hist: np.ndarray
+    parts: dict
+    fused_rows: int
+    n_parts: int
+    sample: dict
+    sample_every: int
+    tables: list | None
+
+
+def _kept_tasks(result, source, options, x0, client) -> tuple[list, list]:
+    """The partitions of the solve, as its tasks, with their coefficients. ``result.tasks`` when the
+    result carries them; else rebuilt: the windows set aside at the start from the result's
+    exclusions (singular geometry), or, when some partition was left without plots, found again by
+    the setup pass at ``x0``."""
+    plan = result.plan
+    if getattr(result, "tasks", None) is not None:
+        return list(result.tasks), list(result.coefficients)
+    candidates = [k for k in range(plan.n_partitions) if np.isfinite(plan.plot_ranges[k, 0])]
+    empty = np.zeros((0, 2), dtype=np.int64)
+    if len(candidates) != len(result.coefficients):
+        tasks = [PartitionTask(source, plan, k, options, empty, 0) for k in candidates]
+        found = run_pass(setup_pass, tasks, [(x0,)] * len(tasks), client)
+        tasks = [replace(t, dropped=f["dropped"]) for t, f in zip(tasks, found) if f is not None and f["coef"] is not None]
+        return tasks, list(result.coefficients)
+    dropped = {k: [] for k in candidates}
+    index = {g: i for i, g in enumerate(plan.target_ids)}
+    for e in result.excluded:
+        if e.reason.startswith("singular geometry") and e.target in index:
+            g, t = np.array([index[e.target]]), np.array([e.t_start])
+            dropped[int(partition_of(plan, g, t)[0])].append((int(g[0]), int(window_index(plan, g, t)[0][0])))
+    tasks = [PartitionTask(source, plan, k, options, np.array(dropped[k], dtype=np.int64).reshape(-1, 2), 0)
+             for k in candidates]
+    return tasks, list(result.coefficients)
+
+
+def _add(total: dict, ids, ss, n) -> None:
+    for key, a, b in zip(np.asarray(ids).tolist(), np.asarray(ss).tolist(), np.asarray(n).tolist()):
+        s0, n0 = total.get(key, (0.0, 0))
+        total[key] = (s0 + float(a), n0 + int(b))
+
+
+def _reduce(found: list, target_ids: tuple, sample_max: int, every: int, tables) -> ArchiveOutputs:
+    sensor_ids = found[0]["sensor_ids"]
+    S = len(sensor_ids)
+    count, total, squares = np.zeros((S, 3), dtype=np.int64), np.zeros((S, 3)), np.zeros((S, 3))
+    hist = np.zeros((3, HIST_BINS), dtype=np.int64)
+    by_target, by_reference, parts = {}, {}, {"plots": (0.0, 0), "references": (0.0, 0)}
+    for f in found:  # in partition order
+        s = f["sums"]
+        count += s["count"]
+        total += s["sum"]
+        squares += s["squares"]
+        hist += s["hist"]
+        g, ss, n = s["by_target"]
+        _add(by_target, np.asarray(target_ids)[g], ss, n)
+        _add(by_reference, *s["by_reference"])
+        for key in parts:
+            parts[key] = (parts[key][0] + f["parts"][key][0], parts[key][1] + f["parts"][key][1])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        mean, rms = total / count, np.sqrt(squares / count)
+    sample = {k: np.concatenate([f["sample"][k] for f in found])[:sample_max] for k in found[0]["sample"]}
+    order = sorted(by_target, key=list(target_ids).index)
+    return ArchiveOutputs(sensor_ids, count, mean, rms, squares, {k: by_target[k] for k in order}, by_reference,
+                          hist, parts, sum(f["rows"] for f in found), len(found), sample, every, tables)
+
+
+def archive_outputs(result, source, options, *, parts=None, client=None, x0: np.ndarray | None = None,
+                    sample_max: int = SAMPLE_PLOTS) -> ArchiveOutputs:
+    """The outputs of the partitioned solve ``result`` of ``source`` with ``options`` (module
+    docstring), by one pass over its partitions (in this process or on ``client``'s workers): the
+    fused targets written as parts into the folder ``parts`` (None: returned in ``.tables``),
+    the residual sums and a sample of at most ``sample_max`` plots, every k-th of each partition
+    with k = ceil(plots / (sample_max - partitions)). ``x0``: the solve's starting states, if not
+    zeros (needed only to find the windows set aside again when a partition had no plot)."""
+    layout = result.layout
+    x0 = np.zeros(layout.n) if x0 is None else np.asarray(x0, dtype=np.float64)
+    tasks, coefs = _kept_tasks(result, source, options, x0, client)
+    if len(tasks) != len(coefs):
+        raise ValueError(f"{len(tasks)} partitions with plots but {len(coefs)} with coefficients: the partitions "
+                         "are not the solve's")
+    room = max(1, int(sample_max) - len(tasks))
+    every = max(1, -(-int(result.n_plots) // room))
+    P_sink = np.zeros((layout.n + 1, layout.n + 1))
+    P_sink[:layout.n, :layout.n] = result.covariance
+    folder = None if parts is None else str(parts)
+    args = [(result.estimate, c, P_sink, j, folder, every) for j, c in enumerate(coefs)]
+    found = run_pass(output_pass, tasks, args, client)
+    tables = None if parts is not None else [f.pop("fused") for f in found]
+    return _reduce(found, result.plan.target_ids, int(sample_max), every, tables)
