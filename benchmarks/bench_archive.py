@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Memory and time of the partitioned batch solver on Parquet archives against the in-memory
-``solve_batch``, each run in its own subprocess (peak resident memory: ``ru_maxrss`` of that process).
+``solve_batch``, each run in its own subprocess (peak resident memory: ``VmHWM`` of that process,
+see ``peak_mib``).
 
 Run from a checkout::
 
@@ -13,7 +14,10 @@ ten random targets circling in the area (``random_targets``, they stay in covera
 seconds as the plots need, navigation at ``--nav-hz`` (80 Hz: 3 * 10^6 navigation rows for 10^6
 plots). The tables are written with ``write_fleet_tables`` as Parquet, then the plots and the
 navigation rewritten sorted by time (navigation: by platform, then time) in row groups of
-ROW_GROUP rows, as an archive would be laid out.
+ROW_GROUP rows, as an archive would be laid out. Sizes above TILE (10^6) repeat the 10^6 archive
+in time (``tile``: the ships sail out of the area after about 40 000 s, so a longer simulation
+would thin out), each copy's targets named anew. ``--archives DIR`` keeps the prepared archives
+(``DIR/archive-<size>``) for later runs.
 
 Runs (each a fresh process):
 
@@ -21,8 +25,11 @@ Runs (each a fresh process):
   ``--batch-max``);
 * ``cached``: ``solve_batch_partitioned`` on the Parquet folder, every partition's design kept in
   memory (the speed path when the archive fits);
-* ``bounded``: the same with no partition kept (memory bounded by a partition: each pass reads
-  and builds every partition again).
+* ``bounded``: the same with no partition kept in memory (memory bounded by a partition): the
+  setup pass writes each partition's design to a temporary folder on local disk (the spill cache,
+  ``registration.fleet.batch.spill``) and the later passes read it from there;
+* ``reread`` (only when asked with ``--modes``): no cache at all, each pass reads and builds every
+  partition from the Parquet files again (the bounded mode before the spill cache).
 
 Printed per run: wall time of the solve (s; reading included), peak RSS (MiB), iterations, and
 the largest relative difference of the estimates and sigmas from the ``batch`` run of the same
@@ -45,12 +52,22 @@ from pathlib import Path
 import numpy as np
 
 ROW_GROUP = 100_000
+#: Larger archives are this one repeated in time (tile).
+TILE = 1_000_000
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent))  # the checkout's registration, also in the measured subprocesses
 
 
 def prepare(folder: Path, plots: int, nav_hz: float) -> dict:
-    """Simulate about ``plots`` plots and write them as a Parquet archive in ``folder``."""
+    """Simulate about ``plots`` plots and write them as a Parquet archive in ``folder`` (above TILE
+    plots: the TILE-plot archive repeated in time, see :func:`tile`)."""
     import pyarrow.parquet as pq
+
+    if plots > TILE:
+        base = folder / "tile"
+        base.mkdir(parents=True, exist_ok=True)
+        info = prepare(base, TILE, nav_hz)
+        return tile(base, folder, max(1, round(plots / info["plots"])), nav_hz)
 
     sys.path.insert(0, str(HERE))
     from bench_fleet import CONFIG
@@ -72,6 +89,65 @@ def prepare(folder: Path, plots: int, nav_hz: float) -> dict:
     return {"plots": int(sc.plots["time"].size), "navigation_rows": int(sc.navigation["time"].size)}
 
 
+def tile(base: Path, folder: Path, copies: int, nav_hz: float) -> dict:
+    """Write ``copies`` copies of the archive ``base`` one after the other in time into ``folder``
+    (copy k: times + k (end of the ships' navigation + one sample), targets renamed ``<id>_k``;
+    a fixed site's one navigation row kept once), then remove ``base``. The simulated ships sail out
+    of the targets' area after about 40 000 s, so a longer simulation would not keep the plot rate
+    (10 h at 80 plots/s): the copies keep it, with the same geometry and noise in every copy."""
+    import shutil
+
+    import pyarrow as pa
+    import pyarrow.compute as pc
+    import pyarrow.parquet as pq
+
+    nav = pq.read_table(base / "navigation.parquet")
+    shift = float(pc.max(nav["time_s"]).as_py()) + 1.0 / nav_hz
+    counts = {"plots": 0, "navigation_rows": 0}
+
+    def shifted(table, k: int):
+        table = table.set_column(table.schema.get_field_index("time_s"), "time_s",
+                                 pc.add(table["time_s"], pa.scalar(k * shift)))
+        if "target" in table.schema.names:
+            table = table.set_column(table.schema.get_field_index("target"), "target",
+                                     pc.binary_join_element_wise(table["target"].cast(pa.string()), f"_{k}", ""))
+        return table
+
+    for name in ("plots", "reference"):
+        table = pq.read_table(base / f"{name}.parquet")
+        with pq.ParquetWriter(folder / f"{name}.parquet", shifted(table, 0).schema) as writer:
+            for k in range(copies):
+                writer.write_table(shifted(table, k), row_group_size=ROW_GROUP)
+                counts["plots"] += table.num_rows if name == "plots" else 0
+    with pq.ParquetWriter(folder / "navigation.parquet", nav.schema) as writer:
+        for platform in sorted(set(nav["platform"].to_pylist())):
+            rows = nav.filter(pc.equal(nav["platform"], platform))
+            for k in range(copies if rows.num_rows > 1 else 1):
+                writer.write_table(shifted(rows, k), row_group_size=ROW_GROUP)
+                counts["navigation_rows"] += rows.num_rows
+    for name in ("sensors", "platforms"):
+        shutil.copy(base / f"{name}.parquet", folder / f"{name}.parquet")
+    shutil.rmtree(base)
+    return counts
+
+
+def peak_mib() -> float:
+    """This process's peak resident memory (MiB): ``VmHWM`` of /proc/self/status where there is one.
+
+    ``ru_maxrss`` alone is not this process's: Linux carries the parent's peak over the fork and
+    exec of a subprocess, so a child started by a parent that simulated a large archive reported
+    the parent's peak (the 1098 MiB of the first 10^6 measurement). VmHWM belongs to the new process
+    image only; where it is missing ``ru_maxrss`` is used."""
+    try:
+        with open("/proc/self/status") as f:
+            for line in f:
+                if line.startswith("VmHWM:"):
+                    return int(line.split()[1]) / 1024
+    except OSError:
+        pass
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+
+
 def run(mode: str, folder: Path, partition_s: float, out: Path) -> None:
     """One measured run (in this process): writes its figures and estimate to ``out``."""
     from registration.fleet.batch.archive import ParquetSource
@@ -91,9 +167,10 @@ def run(mode: str, folder: Path, partition_s: float, out: Path) -> None:
     else:
         solve_seconds = None
         source = ParquetSource(folder, FILE_COLUMNS)
-        result = solve_batch_partitioned(source, partition_s=partition_s, cache=10**6 if mode == "cached" else 0)
+        result = solve_batch_partitioned(source, partition_s=partition_s, cache=10**6 if mode == "cached" else 0,
+                                         spill=False if mode == "reread" else None)
     seconds = time.perf_counter() - t
-    rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    rss = peak_mib()
     np.savez(out.with_suffix(".npz"), estimate=result.estimate, sigma=result.sigma)
     out.write_text(json.dumps({"seconds": seconds, "peak_mib": rss, "iterations": int(result.iterations),
                                "solve_seconds": solve_seconds}))
@@ -120,6 +197,10 @@ def main(argv=None) -> dict:
     parser.add_argument("--nav-hz", type=float, default=80.0, help="ship navigation rate for sizes above 80 000")
     parser.add_argument("--partition-s", type=float, default=200.0, help="partition length, s")
     parser.add_argument("--batch-max", type=int, default=400_000, help="largest size also run in memory")
+    parser.add_argument("--archives", help="keep the prepared archives in this folder (archive-<size>/) and reuse "
+                        "them in later runs (default: a temporary folder, removed)")
+    parser.add_argument("--modes", nargs="+", choices=("batch", "cached", "bounded", "reread"),
+                        help="runs to make (default: batch, cached, bounded; bounded only above --batch-max)")
     parser.add_argument("--json", help="write the figures to this file")
     parser.add_argument("--run", help=argparse.SUPPRESS)
     parser.add_argument("--folder", help=argparse.SUPPRESS)
@@ -132,10 +213,17 @@ def main(argv=None) -> dict:
     with tempfile.TemporaryDirectory() as tmp:
         work = Path(tmp)
         for size in args.sizes:
-            folder = work / f"archive-{size}"
-            folder.mkdir()
-            info = prepare(folder, size, args.nav_hz)
+            folder = (Path(args.archives) if args.archives else work) / f"archive-{size}"
+            info_file = folder / "info.json"
+            if info_file.exists():
+                info = json.loads(info_file.read_text())
+            else:
+                folder.mkdir(parents=True, exist_ok=True)
+                info = prepare(folder, size, args.nav_hz)
+                info_file.write_text(json.dumps(info))
             modes = ["batch", "cached", "bounded"] if size <= args.batch_max else ["bounded"]
+            if args.modes:
+                modes = [m for m in ("batch", "cached", "bounded", "reread") if m in args.modes]
             runs = {m: measure(m, folder, args.partition_s, work) for m in modes}
             base = runs.get("batch")
             print(f"{info['plots']} plots, {info['navigation_rows']} navigation rows, load {os.getloadavg()[0]:.1f}")

@@ -71,7 +71,7 @@ def test_a_file_that_breaks_mid_run_is_named(archive, monkeypatch):
 
     monkeypatch.setattr(source, "read_plots", read_then_break)
     with pytest.raises(ValueError) as err:
-        solve_batch_partitioned(source, partitions=3, cache=0)
+        solve_batch_partitioned(source, partitions=3, cache=0, spill=False)  # spill: no file read after setup
     text = str(err.value)
     assert str(victim) in text and "\n" not in text
     with pytest.raises(ValueError, match="no plots table"):

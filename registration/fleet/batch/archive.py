@@ -5,12 +5,15 @@ for memory (docs/archive.md).
 The folder holds ``plots``, ``navigation`` and (optional) ``reference`` each as one Parquet file
 (``plots.parquet``) or a folder of them (``plots/``, a dataset: the files together are the
 table, in any order), and ``sensors`` and (optional) ``platforms`` as Parquet or CSV files
-(small: read whole). A partition's plots, references and navigation are read with a filter on
-``time_s`` (and ``platform``), so pyarrow reads only the row groups whose statistics overlap the
-partition: memory is bounded by the partition when the files' row groups follow time (write the
-plots sorted by time, in row groups of 10^5 rows or so). Plots of one target window may lie in
-several files in any order: a partition reads them from every file, so the answer is the same.
-Navigation rows are sorted by time per platform after reading.
+(small: read whole). A partition's plots, references and navigation are read row group by row
+group: only the groups whose statistics on ``time_s`` (and ``platform``) overlap the partition,
+then filtered; the groups of the latest partition are kept (per process, while the file is
+unchanged) for the next one, which mostly reads the same. Memory is bounded by the partition when
+the files' row groups follow time (write the plots sorted by time, in row groups of 10^5 rows or
+so). The first passes get text columns as ``pandas.Categorical`` (no Python string per row).
+Plots of one target window may lie in several files in any order: a partition reads them from
+every file, so the answer is the same. Navigation rows are sorted by time per platform after
+reading.
 
 Columns are converted from file units by ``file_columns`` (per table: (file column, table column,
 unit, ...) tuples, unit "deg" converted to radians: the fleet files' columns,
@@ -21,6 +24,7 @@ ValueError naming it.
 
 from __future__ import annotations
 
+import os
 import uuid
 from pathlib import Path
 
@@ -34,6 +38,27 @@ LAZY_TABLES = ("plots", "navigation", "reference")
 
 def _one_line(exc: Exception) -> str:
     return " ".join(str(exc).split()) or type(exc).__name__
+
+
+def _identity(path: str) -> tuple:
+    """(size, modification time) of a file: a file rewritten in the middle of a run is read again."""
+    try:
+        st = os.stat(path)
+    except OSError:
+        return None
+    return st.st_size, st.st_mtime_ns
+
+
+def _array(column):
+    """A pyarrow array as numpy, or text without nulls as a pandas.Categorical."""
+    import pandas as pd
+    import pyarrow as pa
+
+    if (pa.types.is_string(column.type) or pa.types.is_large_string(column.type)) and column.null_count == 0:
+        encoded = column.dictionary_encode()
+        return pd.Categorical.from_codes(encoded.indices.to_numpy(zero_copy_only=False),
+                                         encoded.dictionary.to_pylist())
+    return column.to_numpy(zero_copy_only=False)
 
 
 class ParquetSource:
@@ -53,7 +78,7 @@ class ParquetSource:
         self.token = uuid.uuid4().hex
 
     def __getstate__(self):
-        return {k: v for k, v in self.__dict__.items() if k != "_datasets"}
+        return {k: v for k, v in self.__dict__.items() if k not in ("_datasets", "_groups", "_stats")}
 
     def _find(self, name: str) -> Path | None:
         for candidate in (self.folder / f"{name}.parquet", self.folder / name, self.folder / f"{name}.csv"):
@@ -109,22 +134,10 @@ class ParquetSource:
                 raise ValueError(f"{self.paths[name]}: cannot be read ({_one_line(exc)})") from exc
         return cache[name]
 
-    def _read(self, name: str, columns=None, expression=None) -> dict:
-        """The rows of table ``name`` matching ``expression``, file columns; a file that fails is named."""
-        data = self._dataset(name)
-        cols = None if columns is None else [c for c in columns if c in data.schema.names]
-        try:
-            table = data.to_table(columns=cols, filter=expression, batch_readahead=1, fragment_readahead=1)
-        except Exception:  # find the file that fails and name it
-            for fragment in data.get_fragments():
-                try:
-                    fragment.to_table(columns=cols, filter=expression, schema=data.schema)
-                except Exception as exc:
-                    raise ValueError(f"{fragment.path}: cannot be read ({_one_line(exc)})") from exc
-            raise
-        return {c: table.column(c).to_numpy(zero_copy_only=False) for c in table.column_names}
-
     def _batches(self, name: str, columns):
+        """Batches of ``columns`` (table names) as dicts of arrays; text columns without nulls as
+        ``pandas.Categorical`` (no Python string per row: the first passes over 10^7 rows would
+        otherwise leave their memory fragmented)."""
         if self.paths[name] is None:
             return
         data = self._dataset(name)
@@ -133,7 +146,7 @@ class ParquetSource:
             try:
                 for batch in fragment.to_batches(columns=files, batch_size=self.batch_rows, schema=data.schema,
                                                  batch_readahead=1, fragment_readahead=1):
-                    yield self._convert(name, {c: batch.column(c).to_numpy(zero_copy_only=False) for c in files})
+                    yield self._convert(name, {c: _array(batch.column(c)) for c in files})
             except Exception as exc:  # pyarrow errors of many kinds
                 raise ValueError(f"{fragment.path}: cannot be read ({_one_line(exc)})") from exc
 
@@ -146,11 +159,66 @@ class ParquetSource:
     def reference_batches(self, columns):
         return self._batches("reference", columns)
 
+    def _row_groups(self, name: str) -> list:
+        """[(fragment, [(row group id, statistics)])] of table ``name``, kept per process while no file
+        of the table changes (size and modification time)."""
+        stats = self.__dict__.setdefault("_stats", {})
+        found = stats.get(name)
+        if found is not None and all(_identity(f.path) == ident for f, _, ident in found):
+            return found  # (_identity of a removed file is None: read the table again)
+        self.__dict__.get("_datasets", {}).pop(name, None)
+        self.__dict__.get("_groups", {}).pop(name, None)
+        out = []
+        for fragment in self._dataset(name).get_fragments():
+            try:
+                ident = _identity(fragment.path)
+                fragment.ensure_complete_metadata()
+                out.append((fragment, [(g.id, g.statistics) for g in fragment.row_groups], ident))
+            except Exception as exc:  # pyarrow and OS errors of many kinds
+                raise ValueError(f"{fragment.path}: cannot be read ({_one_line(exc)})") from exc
+        stats[name] = out
+        return out
+
+    def _read_groups(self, name: str, overlaps, expression) -> dict:
+        """The rows of table ``name`` matching ``expression``, file columns, read row group by row group:
+        the groups whose statistics ``overlaps(stats)`` accepts (stats: file column -> {min, max}; None
+        when the file has none). The groups read by the latest call per table are kept, so the next
+        partition, which mostly reads the same groups, decodes only its new ones."""
+        import pyarrow as pa
+
+        fragments = self._row_groups(name)  # first: a changed file drops the groups kept
+        data = self._dataset(name)
+        kept = self.__dict__.setdefault("_groups", {}).get(name, {})
+        used, tables = {}, []
+        for fragment, groups, _ in fragments:
+            for gid, stats in groups:
+                if not overlaps(stats or {}):
+                    continue
+                key = (fragment.path, gid)
+                table = kept.get(key)
+                if table is None:
+                    try:
+                        table = fragment.subset(row_group_ids=[gid]).to_table(schema=data.schema, use_threads=False)
+                    except Exception as exc:  # pyarrow errors of many kinds
+                        raise ValueError(f"{fragment.path}: cannot be read ({_one_line(exc)})") from exc
+                used[key] = table
+                tables.append(table)
+        self._groups[name] = used
+        table = pa.concat_tables(tables) if tables else data.schema.empty_table()
+        table = table.filter(expression)
+        return {c: table.column(c).to_numpy(zero_copy_only=False) for c in table.column_names}
+
     def _time_range(self, name: str, lo: float, hi: float) -> dict:
         import pyarrow.dataset as ds
 
-        t = ds.field(self._file_column(name, "time"))
-        return self._convert(name, self._read(name, None, (t >= float(lo)) & (t <= float(hi))))
+        col = self._file_column(name, "time")
+        t = ds.field(col)
+
+        def overlaps(stats) -> bool:
+            s = stats.get(col)
+            return s is None or s["min"] is None or (s["max"] >= lo and s["min"] <= hi)
+
+        return self._convert(name, self._read_groups(name, overlaps, (t >= float(lo)) & (t <= float(hi))))
 
     def read_plots(self, lo: float, hi: float) -> dict:
         return self._time_range("plots", lo, hi)
@@ -161,13 +229,21 @@ class ParquetSource:
     def read_navigation(self, ranges: dict) -> dict:
         import pyarrow.dataset as ds
 
-        t, p = ds.field(self._file_column("navigation", "time")), ds.field(self._file_column("navigation", "platform"))
+        t_col, p_col = self._file_column("navigation", "time"), self._file_column("navigation", "platform")
+        t, p = ds.field(t_col), ds.field(p_col)
         expression = None
         for pid, (a, b) in ranges.items():
             term = (p == pid) & (t >= float(a)) & (t <= float(b))
             expression = term if expression is None else expression | term
         if expression is None:
             expression = t < -np.inf
-        out = self._convert("navigation", self._read("navigation", None, expression))
+
+        def overlaps(stats) -> bool:
+            ts, ps = stats.get(t_col), stats.get(p_col)
+            return any((ts is None or ts["min"] is None or (ts["max"] >= a and ts["min"] <= b))
+                       and (ps is None or not isinstance(ps["min"], str) or ps["min"] <= str(pid) <= ps["max"])
+                       for pid, (a, b) in ranges.items())
+
+        out = self._convert("navigation", self._read_groups("navigation", overlaps, expression))
         order = np.lexsort((np.asarray(out["time"], dtype=np.float64), np.asarray(out["platform"]).astype(str)))
         return {k: np.asarray(v)[order] for k, v in out.items()}

@@ -12,7 +12,9 @@ back-substitution ``dc_b = V_b^-1 (b_b - W_b dx)`` with its trial sum of squares
 Levenberg-Marquardt control, the two phases (windows alone, then everything) and the stopping rule
 are those of :func:`registration.fleet.batch.solver.levenberg_marquardt`, so the estimate is
 ``solve_batch``'s to rounding. Memory holds one partition at a time (plus the windows'
-coefficients, 3 (d + 1) floats per window) unless partitions are cached.
+coefficients, 3 (d + 1) floats per window) unless partitions are cached in memory; by default
+for files, each partition's design is read and built once, in the setup pass, and kept on local
+disk for the later passes (:mod:`registration.fleet.batch.spill`).
 
 What differs from ``solve_batch``: a window found undetermined at the start is set aside in its
 partition with the archive's windows kept (``solve_batch`` cuts the target's windows anew, which
@@ -33,6 +35,7 @@ from registration.fleet.batch.covariance import state_covariance
 from registration.fleet.batch.partitions import DEFAULT_NAV_MARGIN_S, ArchivePlan, TablesSource, make_plan
 from registration.fleet.batch.passes import PartitionTask, archive_layout, final_pass, reduce_pass, setup_pass, step_pass
 from registration.fleet.batch.schur import determined_directions, solve_reduced
+from registration.fleet.batch.spill import make_folder, remove_folder
 from registration.fleet.batch.solver import (LAMBDA_MAX, LAMBDA_START, TARGETS_FIRST, BatchOptions, NumericalError,
                                              progress_bar, time_bias_warnings)
 from registration.fleet.data.layout import StateLayout
@@ -152,13 +155,14 @@ def _levenberg_marquardt(passes: _Passes, x: np.ndarray, free: np.ndarray, scale
     return x, converged, it, history
 
 
-def _setup(plan: ArchivePlan, source, options: BatchOptions, x0: np.ndarray, client, cache: int) -> tuple:
+def _setup(plan: ArchivePlan, source, options: BatchOptions, x0: np.ndarray, client, cache: int,
+           spill: str | None) -> tuple:
     """The tasks of the partitions with plots, their starting coefficients, exclusions and warnings."""
     empty = np.zeros((0, 2), dtype=np.int64)
-    tasks = [PartitionTask(source, plan, k, options, empty, cache) for k in range(plan.n_partitions)]
+    tasks = [PartitionTask(source, plan, k, options, empty, cache, spill) for k in range(plan.n_partitions)]
     found = run_pass(setup_pass, tasks, [(x0,)] * len(tasks), client)
-    kept = [(PartitionTask(source, plan, t.index, options, f["dropped"], cache), f) for t, f in zip(tasks, found)
-            if f is not None and f["coef"] is not None]
+    kept = [(PartitionTask(source, plan, t.index, options, f["dropped"], cache, spill), f)
+            for t, f in zip(tasks, found) if f is not None and f["coef"] is not None]
     exclusions = tuple(e for f in found if f is not None for e in f["exclusions"])
     count = window_grid(plan.t0, plan.t1, plan.window_s)[0]
     edge = [d for f in found if f is not None for d in f["dropped"] if d[1] in (0, count[d[0]] - 1)]
@@ -199,10 +203,20 @@ def _final(passes: _Passes, x: np.ndarray, layout: StateLayout, options: BatchOp
         e for p in parts for e in p["exclusions"])
 
 
+def _remove_spill(folder: str, client) -> None:
+    """Remove the spill folder here and, with a client, on every worker (they may be on other machines)."""
+    remove_folder(folder)
+    if client is not None:
+        try:
+            client.run(remove_folder, folder)
+        except Exception:  # a worker gone or a closed client: its temp folder is its own to clean
+            pass
+
+
 def solve_batch_partitioned(source, options: BatchOptions | None = None, x0: np.ndarray | None = None, *,
                             partitions: int | None = None, partition_s: float | None = None, client=None,
-                            cache: int | None = None, nav_margin_s: float = DEFAULT_NAV_MARGIN_S,
-                            progress: bool = False) -> PartitionedResult:
+                            cache: int | None = None, spill: bool | None = None, spill_dir: str | None = None,
+                            nav_margin_s: float = DEFAULT_NAV_MARGIN_S, progress: bool = False) -> PartitionedResult:
     """:func:`registration.fleet.batch.solve.solve_batch`'s estimate and covariance of the states from an
     archive read partition by partition (module docstring).
 
@@ -210,7 +224,11 @@ def solve_batch_partitioned(source, options: BatchOptions | None = None, x0: np.
     :class:`~registration.fleet.batch.archive.ParquetSource`; ``partitions`` equal time ranges or
     ranges of ``partition_s`` seconds (default one); ``client``: a ``dask.distributed.Client`` to
     map the partitions on (None: this process); ``cache``: partitions whose design each process
-    keeps (default: all for tables in memory without a client, else none); ``nav_margin_s``: the
+    keeps (default: all for tables in memory without a client, else none); ``spill``: keep every
+    partition's design (and its normal equations at the latest point) in a temporary folder on local
+    disk after the setup pass, so the later passes read neither the archive nor build the partition
+    again (default: on for files when not every partition is kept in memory; the folder is made in
+    ``spill_dir``, default the system's temp folder, and removed at the end); ``nav_margin_s``: the
     navigation read around each partition (s), the largest time bias followed exactly; ``x0``
     (n,; rad, m): starting states.
     """
@@ -224,14 +242,21 @@ def solve_batch_partitioned(source, options: BatchOptions | None = None, x0: np.
     x[layout.fixed] = 0.0
     if cache is None:
         cache = plan.n_partitions if isinstance(source, TablesSource) and client is None else 0
-    tasks, coefs, n_plots, exclusions, warnings = _setup(plan, source, options, x, client, cache)
-    passes = _Passes(tasks, client, layout, coefs)
-    free = layout.free
-    with progress_bar(progress, "fleet partitioned solve", unit="iteration") as bar:
-        x, _, it1, h1 = _levenberg_marquardt(passes, x, np.zeros(0, dtype=np.int64), np.zeros(0), options,
-                                             TARGETS_FIRST, bar)
-        x, converged, it2, h2 = _levenberg_marquardt(passes, x, free, layout.scale[free], options, 0.0, bar)
-    information, chi2, outside = _final(passes, x, layout, options, plan)
+    if spill is None:
+        spill = cache < plan.n_partitions and not isinstance(source, TablesSource)
+    folder = make_folder(spill_dir) if spill else None
+    try:
+        tasks, coefs, n_plots, exclusions, warnings = _setup(plan, source, options, x, client, cache, folder)
+        passes = _Passes(tasks, client, layout, coefs)
+        free = layout.free
+        with progress_bar(progress, "fleet partitioned solve", unit="iteration") as bar:
+            x, _, it1, h1 = _levenberg_marquardt(passes, x, np.zeros(0, dtype=np.int64), np.zeros(0), options,
+                                                 TARGETS_FIRST, bar)
+            x, converged, it2, h2 = _levenberg_marquardt(passes, x, free, layout.scale[free], options, 0.0, bar)
+        information, chi2, outside = _final(passes, x, layout, options, plan)
+    finally:
+        if folder is not None:
+            _remove_spill(folder, client)
     P_free, undetermined = state_covariance(information, layout.scale[free])
     P = np.zeros((layout.n, layout.n))
     P[np.ix_(free, free)] = P_free

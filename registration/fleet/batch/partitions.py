@@ -18,11 +18,12 @@ the whole table.
 
 A *source* gives the tables: :class:`TablesSource` (in memory, SI units) or
 :class:`registration.fleet.batch.archive.ParquetSource` (files read lazily). Its methods:
-``plot_batches(columns)``, ``navigation_batches(columns)``, ``reference_batches(columns)`` (iterators
-of column dicts), ``read_plots(lo, hi)``, ``read_navigation(ranges)``, ``read_references(lo, hi)``
-(rows with ``lo <= time <= hi``; ranges: platform -> (first, last) time), ``sensors``,
-``platforms`` (small tables), ``token`` (a string naming the data, for caches) and ``name(table)``
-(what errors call the table: its file).
+``plot_batches(columns)``, ``navigation_batches(columns)``, ``reference_batches(columns)``
+(iterators of column dicts: numpy arrays, ids also as ``pandas.Categorical``),
+``read_plots(lo, hi)``, ``read_navigation(ranges)``, ``read_references(lo, hi)`` (rows with
+``lo <= time <= hi``; ranges: platform -> (first, last) time), ``sensors``, ``platforms`` (small
+tables), ``token`` (a string naming the data, for caches) and ``name(table)`` (what errors call
+the table: its file).
 """
 
 from __future__ import annotations
@@ -158,6 +159,21 @@ def partition_of(plan: ArchivePlan, target: np.ndarray, time: np.ndarray) -> np.
     return np.searchsorted(plan.cuts, window_index(plan, target, time)[1], side="right")
 
 
+def _codes(values) -> tuple[np.ndarray, list[str]]:
+    """(code of each value (M,), the values' ids as strings in order of first appearance)."""
+    import pandas as pd
+
+    if not isinstance(values, pd.Categorical):
+        values = np.asarray(values)
+    codes, unique = pd.factorize(values, use_na_sentinel=False)
+    names = [str(u) for u in unique]
+    ids = list(dict.fromkeys(names))
+    if len(ids) != len(names):  # values that differ but read the same as text (1 and "1")
+        pos = {g: i for i, g in enumerate(ids)}
+        codes = np.array([pos[g] for g in names], dtype=np.int64)[codes]
+    return np.asarray(codes, dtype=np.int64), ids
+
+
 def _first_pass(source) -> tuple:
     """Per target in order of first appearance: (ids, first time, last time, plots, sensors seen),
     and the number of plots; ValueError naming the plots file for a time that is not finite."""
@@ -168,20 +184,18 @@ def _first_pass(source) -> tuple:
         if not np.isfinite(t).all():
             row = n + int(np.flatnonzero(~np.isfinite(t))[0])
             raise ValueError(f"{source.name('plots')}: plot row {row}: time {t[row - n]} s is not finite")
-        target = np.asarray(batch["target"]).astype(str)
-        u, first, inv = np.unique(target, return_index=True, return_inverse=True)
-        lo, hi = np.full(u.size, np.inf), np.full(u.size, -np.inf)
+        inv, u = _codes(batch["target"])
+        lo, hi = np.full(len(u), np.inf), np.full(len(u), -np.inf)
         np.minimum.at(lo, inv, t)
         np.maximum.at(hi, inv, t)
-        for k in np.argsort(first):
-            g = str(u[k])
+        counts = np.bincount(inv, minlength=len(u))
+        for k, g in enumerate(u):
             order.setdefault(g, len(order))
             t_min[g], t_max[g] = min(t_min.get(g, np.inf), lo[k]), max(t_max.get(g, -np.inf), hi[k])
-        counts = np.bincount(inv, minlength=u.size)
-        for k in range(u.size):
-            count[str(u[k])] = count.get(str(u[k]), 0) + int(counts[k])
-        sensor = np.asarray(batch["sensor"]).astype(str)
-        pairs |= set(zip(*np.unique(np.stack([target, sensor]), axis=1).tolist()))
+            count[g] = count.get(g, 0) + int(counts[k])
+        sensor, s_ids = _codes(batch["sensor"])
+        both = np.unique(inv * len(s_ids) + sensor)
+        pairs |= {(u[c // len(s_ids)], s_ids[c % len(s_ids)]) for c in both.tolist()}
         n += t.size
     if n == 0:
         raise ValueError(f"{source.name('plots')}: the table has no rows, so there is nothing to register")
@@ -195,7 +209,7 @@ def _first_pass(source) -> tuple:
 def _reference_targets(source) -> set:
     out = set()
     for batch in source.reference_batches(("target",)) or ():
-        out |= set(np.unique(np.asarray(batch["target"]).astype(str)).tolist())
+        out |= set(_codes(batch["target"])[1])
     return out
 
 
@@ -220,22 +234,49 @@ def _cuts(t0: np.ndarray, t1: np.ndarray, window_s: float, partitions: int | Non
 
 
 def _navigation_ranges(source, platforms: list[str], plot_ranges: np.ndarray, margin: float) -> tuple:
-    """Per partition: platform -> (first, last) navigation time (s) to read (module docstring)."""
-    times = {p: [] for p in platforms}
+    """Per partition: platform -> (first, last) navigation time (s) to read (module docstring).
+
+    Per platform, the sample NAV_EXTRA_SAMPLES before the last one at or before ``start - margin``
+    (the first sample if there are fewer) and as many after the first one at or after ``end +
+    margin`` (the last if fewer): found in one pass over the navigation's batches, keeping per
+    partition the NAV_EXTRA_SAMPLES + 1 nearest times on each side, so memory does not grow with
+    the navigation."""
+    m = NAV_EXTRA_SAMPLES + 1
+    live = np.isfinite(plot_ranges[:, 0])
+    a = plot_ranges[live, 0] - margin  # (K,)
+    b = plot_ranges[live, 1] + margin
+    lows = {p: np.full((a.size, m), -np.inf) for p in platforms}  # the m largest times <= a, ascending
+    highs = {p: np.full((b.size, m), np.inf) for p in platforms}  # the m smallest times >= b, ascending
+    first = {p: np.inf for p in platforms}
+    last = {p: -np.inf for p in platforms}
     for batch in source.navigation_batches(("platform", "time")):
-        pid = np.asarray(batch["platform"]).astype(str)
-        t = np.asarray(batch["time"], dtype=np.float64)
-        for p in platforms:
-            times[p].append(t[pid == p])
-    sorted_t = {p: np.sort(np.concatenate(v)) for p, v in times.items() if v and sum(a.size for a in v)}
-    out = []
-    for lo, hi in plot_ranges:
+        code, ids = _codes(batch["platform"])
+        t_all = np.asarray(batch["time"], dtype=np.float64)
+        for c, p in enumerate(ids):
+            if p not in lows:
+                continue
+            t = np.sort(t_all[code == c])
+            if t.size == 0:
+                continue
+            first[p], last[p] = min(first[p], t[0]), max(last[p], t[-1])
+            i = np.searchsorted(t, a, side="right")  # t[i - m .. i - 1]: the batch's m largest <= a
+            j = np.searchsorted(t, b, side="left")  # t[j .. j + m - 1]: its m smallest >= b
+            k = np.arange(m)
+            lo_idx, hi_idx = i[:, None] - m + k, j[:, None] + k
+            lo = np.where(lo_idx >= 0, t[np.clip(lo_idx, 0, t.size - 1)], -np.inf)
+            hi = np.where(hi_idx < t.size, t[np.clip(hi_idx, 0, t.size - 1)], np.inf)
+            lows[p] = np.sort(np.concatenate([lows[p], lo], axis=1), axis=1)[:, -m:]
+            highs[p] = np.sort(np.concatenate([highs[p], hi], axis=1), axis=1)[:, :m]
+    out, at = [], 0
+    for ok in live:
         ranges = {}
-        if np.isfinite(lo):
-            for p, t in sorted_t.items():
-                i = max(0, int(np.searchsorted(t, lo - margin, side="right")) - 1 - NAV_EXTRA_SAMPLES)
-                j = min(t.size - 1, int(np.searchsorted(t, hi + margin, side="left")) + NAV_EXTRA_SAMPLES)
-                ranges[p] = (float(t[i]), float(t[j]))
+        if ok:
+            for p in platforms:
+                if not np.isfinite(first[p]):
+                    continue
+                lo, hi = lows[p][at, 0], highs[p][at, -1]
+                ranges[p] = (float(lo if np.isfinite(lo) else first[p]), float(hi if np.isfinite(hi) else last[p]))
+            at += 1
         out.append(ranges)
     return tuple(out)
 

@@ -4,10 +4,20 @@ per pass its sums at the current estimate.
 
 Each function takes one :class:`PartitionTask` and the current states and coefficients and
 returns plain arrays; it is pure (its result depends on its arguments only), so a pass can run in
-this process or on Dask workers, and a lost worker's task run again gives the same result. The
-partition's problem, design and latest evaluations are kept in a per-process cache of
-``task.cache`` partitions (0: none, every pass reads and builds the partition again), which saves
-time and changes no result.
+this process or on Dask workers, and a lost worker's task run again gives the same result. Two
+caches save time and change no result:
+
+* in memory, per process, the design and latest evaluations of ``task.cache`` partitions (0: none);
+* on local disk, in the folder ``task.spill`` (None: none; :mod:`registration.fleet.batch.spill`),
+  every partition's design and its normal equations (with their latest reduction) at the current
+  point and at the latest trial step: the setup pass writes the design, the reduce and step passes
+  the points, and the later passes read them instead of reading the archive, building the
+  partition and evaluating a point again. A file that is missing (say on another worker's
+  machine) is built again and written.
+
+Without either, every pass reads and builds its partition again. The setup pass hands its
+partition's design and its normal equations at the starting point to both caches, so the first
+reduce pass evaluates nothing again.
 
 A partition's design carries no priors (their terms are added once, by the caller). With ``U``,
 ``b_x`` its plots' share of the states' block and right-hand side, the Schur-reduced contribution
@@ -26,6 +36,7 @@ from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.initial import initial_coefficients
 from registration.fleet.batch.normal import evaluate, make_design, normal_equations
 from registration.fleet.batch.residuals import chi_square_parts
+from registration.fleet.batch import spill as _spill
 from registration.fleet.batch.schur import reduce
 from registration.fleet.batch.solver import BatchOptions, outside_when_seen, singular_blocks
 from registration.fleet.data.inputs import index_of, read_platforms, read_plots, read_references, read_sensors
@@ -41,7 +52,8 @@ __all__ = ["PartitionTask", "archive_layout", "final_pass", "partition_problem",
 @dataclass(frozen=True)
 class PartitionTask:
     """Partition ``index`` of ``plan`` read from ``source``, windows ``dropped`` ((K, 2) target index
-    and window index) set aside; ``cache``: partitions whose design this process keeps."""
+    and window index) set aside; ``cache``: partitions whose design this process keeps in memory;
+    ``spill``: folder of the disk cache (None: none; module docstring)."""
 
     source: object
     plan: ArchivePlan
@@ -49,10 +61,16 @@ class PartitionTask:
     options: BatchOptions
     dropped: np.ndarray
     cache: int = 0
+    spill: str | None = None
 
     @property
     def key(self) -> tuple:
         return (self.plan.token, self.index, self.dropped.tobytes(), self.options)
+
+    @property
+    def spill_name(self) -> str:
+        """The name of this partition's design file in the spill folder."""
+        return f"p{self.index}-{_spill.digest(*self.key)}"
 
 
 _CACHE: OrderedDict = OrderedDict()
@@ -123,38 +141,104 @@ def archive_layout(source) -> StateLayout:
 
 
 def _design(task: PartitionTask, problem: FleetProblem):
+    """The partition's design without priors; navigation and measurements column-major, as the
+    generated functions take them column by column (the same numbers, without a copy per evaluation)."""
     design = make_design(problem, make_blocks(problem, task.options.window_s, task.options.degree, task.plan.span))
-    return replace(design, prior_weight=np.zeros_like(design.prior_weight))
+    return replace(design, prior_weight=np.zeros_like(design.prior_weight), nav=np.asfortranarray(design.nav),
+                   meas=np.asfortranarray(design.meas))
+
+
+@dataclass(frozen=True)
+class _Plots:
+    """What the passes need of a partition's problem once its design is built (problem order)."""
+
+    target: np.ndarray  # (N,) index into target_ids
+    time: np.ndarray  # (N,) reported time, s
+    target_ids: tuple
+
+
+def _new_entry(problem: FleetProblem, design) -> dict:
+    return {"problem": _Plots(problem.target, problem.time, problem.target_ids), "design": design, "points": {}}
+
+
+def _keep(task: PartitionTask, entry: dict) -> None:
+    """Keep ``entry`` in this process's cache when the task asks for it."""
+    if task.cache > 0:
+        _CACHE[task.key] = entry
+        _CACHE.move_to_end(task.key)
+        while len(_CACHE) > task.cache:
+            _CACHE.popitem(last=False)
+
+
+def _spill_entry(task: PartitionTask, entry: dict) -> None:
+    """Write the entry's design to the disk cache (without the evaluations it has cached)."""
+    design = replace(entry["design"], seen_cache={})
+    _spill.save(task.spill, task.spill_name, {"problem": entry["problem"], "design": design})
 
 
 def _entry(task: PartitionTask) -> dict | None:
-    """The partition's {problem, design, points} from the cache, or built (and cached if asked)."""
+    """The partition's {problem (_Plots), design, points} from the caches, or built (and cached as asked)."""
     hit = _CACHE.get(task.key)
     if hit is not None:
         _CACHE.move_to_end(task.key)
         return hit
-    problem = partition_problem(task)
-    entry = None if problem is None else {"problem": problem, "design": _design(task, problem), "points": {}}
-    if task.cache > 0:
-        _CACHE[task.key] = entry
-        while len(_CACHE) > task.cache:
-            _CACHE.popitem(last=False)
+    entry = None
+    if task.spill is not None:
+        found = _spill.load(task.spill, task.spill_name)
+        if found is not None:
+            entry = {**found, "points": {}}
+    if entry is None:
+        problem = partition_problem(task)
+        if problem is not None:
+            entry = _new_entry(problem, _design(task, problem))
+            if task.spill is not None:
+                _spill_entry(task, entry)
+    _keep(task, entry)
     return entry
 
 
-def _point(entry: dict, x: np.ndarray, coef: np.ndarray, with_normal: bool = True) -> dict:
-    """{ev, normal, reduced: {lam: Reduced}} at (x, coef); the latest two points are kept."""
+#: The spill files of a partition's points: the current point (reduce pass) and the latest trial
+#: (step pass), which is the next current point when the step is accepted.
+_SLOTS = ("point", "trial")
+
+
+def _point_digest(x: np.ndarray, coef: np.ndarray) -> str:
+    return _spill.digest(x.tobytes(), coef.tobytes(), str(coef.shape))
+
+
+def _point(task: PartitionTask, entry: dict, x: np.ndarray, coef: np.ndarray, with_normal: bool = True,
+           with_ev: bool = False) -> dict:
+    """{ev, cost, normal, reduced: {lam: Reduced}} at (x, coef), computed as asked (the latest two
+    points are kept in the entry; the normal equations and cost of the latest one on disk too)."""
     key = (x.tobytes(), coef.tobytes())
     points = entry["points"]
     pt = points.get(key)
     if pt is None:
-        pt = {"ev": evaluate(entry["design"], x, coef), "normal": None, "reduced": {}}
+        pt = {"ev": None, "cost": None, "normal": None, "reduced": {}}
         points[key] = pt
         while len(points) > 2:
             points.pop(next(iter(points)))
+    design = entry["design"]
+    if with_normal and pt["normal"] is None and task.spill is not None and not with_ev:
+        digest = _point_digest(x, coef)
+        for slot in _SLOTS:
+            found = _spill.load(task.spill, f"{task.spill_name}-{slot}", digest)
+            if found is not None:
+                pt["normal"], pt["cost"], pt["reduced"] = found["normal"], found["cost"], found["reduced"]
+                break
+    if pt["ev"] is None and (with_ev or pt["cost"] is None or (with_normal and pt["normal"] is None)):
+        pt["ev"] = evaluate(design, x, coef)
+        pt["cost"] = pt["ev"].cost
     if with_normal and pt["normal"] is None:
-        pt["normal"] = normal_equations(entry["design"], pt["ev"])
+        pt["normal"] = normal_equations(design, pt["ev"])
     return pt
+
+
+def _spill_point(task: PartitionTask, x: np.ndarray, coef: np.ndarray, pt: dict, slot: str = "point") -> None:
+    """Write a point's normal equations, cost and latest reduction to the disk cache (if the task has one)."""
+    if task.spill is not None:
+        _spill.save(task.spill, f"{task.spill_name}-{slot}", {"normal": pt["normal"], "cost": pt["cost"],
+                                                              "reduced": pt["reduced"]}, _point_digest(x, coef))
 
 
 def _reduced(entry: dict, pt: dict, lam: float):
@@ -169,21 +253,31 @@ def _reduced(entry: dict, pt: dict, lam: float):
 def setup_pass(task: PartitionTask, x0: np.ndarray) -> dict | None:
     """The windows whose position their plots do not determine (as determined_design finds them,
     with the archive's windows) and the starting coefficients at states ``x0`` (n,): {dropped
-    ((K, 2) target and window index), exclusions, coef (B, n_coef, 3), plots}; None: no plot."""
+    ((K, 2) target and window index), exclusions, coef (B, n_coef, 3), plots}; None: no plot.
+    The partition's design and its normal equations at the start go to the task's caches."""
     dropped = [task.dropped]
     exclusions = []
     while True:
-        task_k = replace(task, dropped=np.concatenate(dropped), cache=0)
+        task_k = replace(task, dropped=np.concatenate(dropped))
         problem = partition_problem(task_k)
         if problem is None:
             return None if not exclusions else {"dropped": task_k.dropped, "exclusions": exclusions,
                                                 "coef": None, "plots": 0}
         design = _design(task_k, problem)
-        normal = normal_equations(design, evaluate(design, x0, initial_coefficients(design, x0)))
+        coef = initial_coefficients(design, x0)
+        ev = evaluate(design, x0, coef)
+        normal = normal_equations(design, ev)
         bad = singular_blocks(design, normal)
         if bad.size == 0:
-            return {"dropped": task_k.dropped, "exclusions": exclusions, "coef": initial_coefficients(design, x0),
-                    "plots": problem.n_plots}
+            if task.cache > 0 or task.spill is not None:
+                entry = _new_entry(problem, design)
+                if task.spill is not None:
+                    _spill_entry(task_k, entry)
+                pt = {"ev": ev, "cost": ev.cost, "normal": normal, "reduced": {}}
+                entry["points"][(x0.tobytes(), coef.tobytes())] = pt
+                _spill_point(task_k, x0, coef, pt)
+                _keep(task_k, entry)
+            return {"dropped": task_k.dropped, "exclusions": exclusions, "coef": coef, "plots": problem.n_plots}
         blk = design.blocks
         first = blk.order[blk.block_start[bad]]
         w = window_index(task.plan, problem.target[first], problem.time[first])[0]
@@ -200,17 +294,28 @@ def setup_pass(task: PartitionTask, x0: np.ndarray) -> dict | None:
 def reduce_pass(task: PartitionTask, x: np.ndarray, coef: np.ndarray, lams: tuple) -> dict:
     """At (x, coef): {cost (plots and references), U (n+1, n+1), b_x (n+1,), S: [S_p per lam], r: [r_p per lam]}."""
     entry = _entry(task)
-    pt = _point(entry, x, coef)
+    pt = _point(task, entry, x, coef)
+    known = set(pt["reduced"])
+    out = _reduce_terms(entry, pt, lams)
+    if set(pt["reduced"]) != known:
+        _spill_point(task, x, coef, pt)
+    return out
+
+
+def _reduce_terms(entry: dict, pt: dict, lams: tuple) -> dict:
+    """The reduce pass's result: copies, so that the caller, who keeps every partition's, does not
+    keep alive the buffer of a whole spill file the arrays may view."""
     normal = pt["normal"]
     reds = [_reduced(entry, pt, lam) for lam in lams]
-    return {"cost": pt["ev"].cost, "U": normal.U, "b_x": normal.b_x, "S": [r.S for r in reds], "r": [r.r for r in reds]}
+    return {"cost": pt["cost"], "U": normal.U.copy(), "b_x": normal.b_x.copy(), "S": [r.S.copy() for r in reds],
+            "r": [r.r.copy() for r in reds]}
 
 
 def step_pass(task: PartitionTask, x: np.ndarray, coef: np.ndarray, dx: np.ndarray, lam: float) -> dict:
     """The damped step's coefficients for states step ``dx`` (n + 1,; sink last) and the trial:
     {dc (B, n_coef, 3), b_dot (sum dc . b_c), damp (sum diag(V) dc^2), cost (at x + dx, coef + dc)}."""
     entry = _entry(task)
-    pt = _point(entry, x, coef)
+    pt = _point(task, entry, x, coef)
     blk, normal = entry["design"].blocks, pt["normal"]
     red = _reduced(entry, pt, lam)
     dc = red.y - np.matmul(red.Y, dx[blk.local_state][:, :, None])[:, :, 0]
@@ -218,9 +323,13 @@ def step_pass(task: PartitionTask, x: np.ndarray, coef: np.ndarray, dx: np.ndarr
     q = dc.shape[1]
     diag_V = normal.V[:, np.arange(q), np.arange(q)]
     dc3 = dc.reshape(blk.n_blocks, blk.n_coef, 3)
-    trial = _point(entry, x + dx[:-1], coef + dc3, with_normal=False)
+    # with the disk cache, the trial's normal equations are kept there: an accepted step's next
+    # reduce pass then reads them instead of evaluating the trial point again
+    x_trial, coef_trial = x + dx[:-1], coef + dc3
+    trial = _point(task, entry, x_trial, coef_trial, with_normal=task.spill is not None)
+    _spill_point(task, x_trial, coef_trial, trial, "trial")
     return {"dc": dc3, "b_dot": float(np.sum(dc * normal.b_c)), "damp": float(np.sum(diag_V * dc**2)),
-            "cost": trial["ev"].cost}
+            "cost": trial["cost"]}
 
 
 def final_pass(task: PartitionTask, x: np.ndarray, coef: np.ndarray) -> dict:
@@ -228,9 +337,9 @@ def final_pass(task: PartitionTask, x: np.ndarray, coef: np.ndarray) -> dict:
     used), singular (windows undetermined there), outside (plots seen outside their navigation),
     exclusions (of those plots), empty (windows those would empty)}."""
     entry = _entry(task)
-    out = reduce_pass(task, x, coef, (0.0,))
     problem, design = entry["problem"], entry["design"]
-    pt = _point(entry, x, coef)
+    pt = _point(task, entry, x, coef, with_ev=True)
+    out = _reduce_terms(entry, pt, (0.0,))
     outside = outside_when_seen(design, x)
     rows = np.zeros(design.weight.shape[0], dtype=bool)
     rows[design.slot] = outside[design.blocks.order]
