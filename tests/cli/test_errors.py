@@ -172,9 +172,16 @@ def test_ctrl_c_with_a_checkpoint_says_how_to_resume():
     assert "resume" not in interrupt_message("registration register", argparse.Namespace(checkpoint=None, out=Path("r")))
 
 
+def _default_sigint() -> None:
+    """In the child before exec: SIGINT back to its default, so that Python installs its handler even
+    when the test run itself ignores SIGINT (a suite started in the background by a non-interactive
+    shell inherits SIG_IGN, and the command would then never see the signal)."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def test_a_real_sigint_exits_130_without_traceback(tmp_path):
     proc = cli("landing", "--runs", "100000", "--no-plots", "--out", "land", cwd=tmp_path,
-               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, preexec_fn=_default_sigint)
     seen, deadline = b"", time.monotonic() + 120
     try:
         while b"batch/s" not in seen and time.monotonic() < deadline:  # the progress bar has moved
