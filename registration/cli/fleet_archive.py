@@ -143,7 +143,7 @@ def _run(args: argparse.Namespace, out: Path, tables: Path) -> tuple:
 
 def run_archive(args: argparse.Namespace) -> int:
     """Register the archive ``--tables DIR`` partition by partition and write the outputs (module docstring)."""
-    from registration.cli.errors import prepare_out
+    from registration.cli.errors import consistency_gate, consistency_line, prepare_out
 
     if args.tables is None:
         raise ValueError("--partition-s: give the archive as --tables DIR (Parquet or CSV files, or folders of "
@@ -153,11 +153,9 @@ def run_archive(args: argparse.Namespace) -> int:
                          "register in memory to set bad rows aside")
     if getattr(args, "method", "batch") != "batch":
         raise ValueError("--method online: not with --partition-s (the archive path is the batch solve)")
-    surface = getattr(args, "targets", None) or next(
-        (p for p in sorted(Path(args.tables).glob("targets.*")) if p.suffix in (".csv", ".parquet", ".pq")), None)
-    if surface is not None:
-        raise ValueError(f"{surface}: surface targets are not taken by --partition-s yet (the archive path would "
-                         "solve without them); register in memory, or move the targets file aside")
+    if getattr(args, "targets", None) is not None:
+        raise ValueError("--targets: with --partition-s the surface targets are the --tables folder's targets file "
+                         "(targets.parquet or targets.csv)")
     out = prepare_out(args.out)
     result, outputs = _run(args, out, Path(args.tables))
     print(f"{result.n_plots} plots in {result.plan.n_partitions} partitions, {result.iterations} iterations, "
@@ -167,4 +165,6 @@ def run_archive(args: argparse.Namespace) -> int:
         print(f"warning: {w}")
     names = sorted(ARCHIVE_OUTPUTS - (set() if not getattr(args, "no_plots", False) else set(PNG_OUTPUTS)))
     print("wrote " + ", ".join(str(out / n) for n in [*names, FUSED_FOLDER + "/"]))
-    return 0
+    report = result.chi_square.report  # the gate of the in-memory run: exit 3 when the data contradict the model
+    print(consistency_line(report))
+    return consistency_gate("registration fleet register", report, getattr(args, "allow_inconsistent", False))

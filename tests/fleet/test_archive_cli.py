@@ -55,15 +55,19 @@ def test_workers_without_partitions_is_refused():
     assert not archive_requested(parse([]))
 
 
-def test_an_archive_with_surface_targets_is_refused_not_solved_without_them(tmp_path):
-    """The partitioned solver does not take the targets table yet: a folder holding one is refused,
-    naming the file, rather than registered as if its targets had no surface."""
+def test_an_archive_whose_data_contradict_the_model_says_so_with_exit_3(tmp_path, capsys):
+    """An aircraft declared a surface target at sea level (targets file): the archive run takes the
+    surface, the data contradict it, and the run says so as the in-memory run does (exit 3 after
+    writing its outputs; 0 with --allow-inconsistent)."""
     sc = fleet_scenario(0)
     tables = tmp_path / "tables"
     tables.mkdir()
     write_fleet_tables(tables, sc.plots, sc.navigation, sc.sensors, sc.platforms, sc.references, fmt="parquet",
                        targets={"target": ["T2"], "surface_alt": [0.0], "sigma_surface": [5.0]})
     out = tmp_path / "out"
-    with pytest.raises(ValueError, match=r"targets\.parquet: surface targets are not taken by --partition-s"):
-        run_archive(parse(["--tables", str(tables), "--out", str(out), "--partition-s", "100"]))
-    assert not out.exists() or not any(out.iterdir())
+    args = parse(["--tables", str(tables), "--out", str(out), "--partition-s", "100"])
+    assert run_archive(args) == 3
+    assert (out / "estimates.csv").is_file()
+    assert "grossly inconsistent" in capsys.readouterr().out
+    args.allow_inconsistent = True
+    assert run_archive(args) == 0

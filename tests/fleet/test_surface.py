@@ -8,7 +8,9 @@ table's ``surface_alt``, ``sigma_surface``), and references without a height (``
 * a reference without a height counts 2 values, a surface constraint 1;
 * on a bridge log (ARPA range and bearing only, AIS without heights): with the surface the solve
   converges in a few iterations and recovers the radar's errors; without it the run warns that
-  the heights are not measured.
+  the heights are not measured;
+* the partitioned archive solver takes the surface too (tables in memory, and a Parquet folder
+  through the command): the same estimate as solve_batch.
 """
 
 from __future__ import annotations
@@ -178,3 +180,46 @@ def test_with_the_surface_the_radar_errors_come_back_and_without_it_a_warning(br
     text = [w for w in without.warnings if "no measured height" in w]
     assert len(text) == 1 and "surface_alt_m" in text[0]
     assert text[0].startswith(HEIGHT_WARNING.split("{}")[0])
+
+
+# the archive path ----------------------------------------------------------------------------------
+def test_the_partitioned_solver_takes_the_surface(bridge):
+    from registration.fleet.batch.partitioned import solve_batch_partitioned
+    from registration.fleet.batch.partitions import TablesSource
+    from tests.fleet.test_archive import assert_same
+
+    log, written = bridge
+    tables = _labelled(log, written)
+    batch = solve_batch(tables.problem())
+    source = TablesSource(tables.plots, tables.sensors, tables.navigation, tables.platforms, tables.references,
+                          targets=tables.targets)
+    for partitions in (1, 3):
+        part = solve_batch_partitioned(source, partitions=partitions)
+        assert_same(part, batch)
+        assert part.chi_square.parts["surface"][1] == batch.chi_square.parts["surface"][1]
+
+
+def test_an_archive_folder_with_a_targets_file_registers_with_the_surface(bridge, tmp_path):
+    import pandas as pd
+
+    from registration.cli import main
+
+    log, written = bridge
+    tables = _labelled(log, written)
+    folder = tmp_path / "archive"
+    folder.mkdir()
+    for name in ("navigation", "sensors", "platforms", "reference", "targets"):
+        frame = pd.read_csv(written[name], dtype={"target": str, "sensor": str, "platform": str, "name": str})
+        frame.to_parquet(folder / f"{name}.parquet", index=False)
+    plots = pd.read_csv(written["plots"], dtype={"track": str, "sensor": str})
+    plots["target"] = [log.track_mmsi.get(t, f"T{t}") for t in plots.pop("track")]
+    plots.to_parquet(folder / "plots.parquet", index=False)
+    out = tmp_path / "out"
+    assert main(["fleet", "register", "--tables", str(folder), "--partition-s", "200", "--out", str(out),
+                 "--no-plots"]) == 0
+    est = pd.read_csv(out / "estimates.csv").set_index("state")
+    batch = solve_batch(tables.problem())
+    for name in ("RADAR:range_bias", "RADAR:time_bias"):
+        assert est.loc[name, "estimate"] == pytest.approx(batch.value(name), rel=1e-9)
+    summary = __import__("json").loads((out / "summary.json").read_text())
+    assert "surface" in summary["chi_square"]["parts"]

@@ -4,8 +4,8 @@ for memory (docs/archive.md).
 
 The folder holds ``plots``, ``navigation`` and (optional) ``reference`` each as one Parquet file
 (``plots.parquet``) or a folder of them (``plots/``, a dataset: the files together are the
-table, in any order), and ``sensors`` and (optional) ``platforms`` as Parquet or CSV files
-(small: read whole). A partition's plots, references and navigation are read row group by row
+table, in any order), and ``sensors``, (optional) ``platforms`` and (optional) ``targets`` (the
+surface targets) as Parquet or CSV files (small: read whole). A partition's plots, references and navigation are read row group by row
 group: only the groups whose statistics on ``time_s`` (and ``platform``) overlap the partition,
 then filtered; the groups of the latest partition are kept (per process, while the file is
 unchanged) for the next one, which mostly reads the same. Memory is bounded by the partition when
@@ -69,12 +69,14 @@ class ParquetSource:
         self.folder = Path(folder)
         self.file_columns = file_columns
         self.batch_rows = int(batch_rows)
-        self.paths = {name: self._find(name) for name in ("plots", "navigation", "sensors", "platforms", "reference")}
+        self.paths = {name: self._find(name)
+                      for name in ("plots", "navigation", "sensors", "platforms", "reference", "targets")}
         for name in ("plots", "navigation", "sensors"):
             if self.paths[name] is None:
                 raise ValueError(f"{self.folder}: no {name} table ({name}.parquet or a folder {name}/ of Parquet files)")
         self.sensors = self._whole("sensors")
         self.platforms = self._whole("platforms") if self.paths["platforms"] is not None else None
+        self.targets = self._whole("targets") if self.paths["targets"] is not None else None
         self.token = uuid.uuid4().hex
 
     def __getstate__(self):
@@ -118,7 +120,8 @@ class ParquetSource:
 
         path = self.paths[name]
         try:
-            frame = pd.read_csv(path) if path.suffix == ".csv" else pd.read_parquet(path)
+            ids = {c: str for c in ("sensor", "platform", "target", "name")}  # ids stay text ("007" is not 7)
+            frame = pd.read_csv(path, dtype=ids) if path.suffix == ".csv" else pd.read_parquet(path)
         except Exception as exc:  # pandas/pyarrow errors of many kinds
             raise ValueError(f"{path}: cannot be read ({_one_line(exc)})") from exc
         return self._convert(name, {str(c): frame[c].to_numpy() for c in frame.columns})

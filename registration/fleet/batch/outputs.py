@@ -178,7 +178,7 @@ class ArchiveOutputs:
     ``rms`` (S, 3) of their whitened residuals (NaN without values), ``squares`` (S, 3) their sums of
     squares; ``by_target`` and ``by_reference`` {id: (sum of squares, values)}; ``hist`` (3,
     HIST_BINS) counts per channel over [-HIST_LIMIT, HIST_LIMIT]; ``parts`` the chi-square parts
-    {"plots", "references": (sum of squares, values)}; ``fused_rows`` rows of fused targets in
+    {"plots", "references", with surface targets "surface": (sum of squares, values)}; ``fused_rows`` rows of fused targets in
     ``n_parts`` parts; ``sample`` the figures' plots (module docstring), at most ``sample_max``;
     ``tables`` the fused tables when they were returned rather than written (else None).
     """
@@ -236,7 +236,8 @@ def _reduce(found: list, target_ids: tuple, sample_max: int, every: int, tables)
     S = len(sensor_ids)
     count, total, squares = np.zeros((S, 3), dtype=np.int64), np.zeros((S, 3)), np.zeros((S, 3))
     hist = np.zeros((3, HIST_BINS), dtype=np.int64)
-    by_target, by_reference, parts = {}, {}, {"plots": (0.0, 0), "references": (0.0, 0)}
+    by_target, by_reference = {}, {}
+    parts = {key: (0.0, 0) for f in found for key in f["parts"]}  # plots, references and, with a surface, surface
     for f in found:  # in partition order
         s = f["sums"]
         count += s["count"]
@@ -246,8 +247,8 @@ def _reduce(found: list, target_ids: tuple, sample_max: int, every: int, tables)
         g, ss, n = s["by_target"]
         _add(by_target, np.asarray(target_ids)[g], ss, n)
         _add(by_reference, *s["by_reference"])
-        for key in parts:
-            parts[key] = (parts[key][0] + f["parts"][key][0], parts[key][1] + f["parts"][key][1])
+        for key, (ss, n) in f["parts"].items():
+            parts[key] = (parts[key][0] + ss, parts[key][1] + n)
     with np.errstate(invalid="ignore", divide="ignore"):
         mean, rms = total / count, np.sqrt(squares / count)
     sample = {k: np.concatenate([f["sample"][k] for f in found])[:sample_max] for k in found[0]["sample"]}

@@ -189,8 +189,9 @@ def _final(passes: _Passes, x: np.ndarray, layout: StateLayout, options: BatchOp
     information = 0.5 * (S + S.T)[np.ix_(free, free)]
     xs = np.append(x, 0.0)
     prior = (xs * np.sqrt(passes.pw2))[free]
-    chi_parts = {key: (sum(p["parts"][key][0] for p in parts), sum(p["parts"][key][1] for p in parts))
-                 for key in ("plots", "references")}
+    keys = dict.fromkeys(key for p in parts for key in p["parts"])  # plots, references and, with a surface, surface
+    chi_parts = {key: (sum(p["parts"].get(key, (0.0, 0))[0] for p in parts),
+                       sum(p["parts"].get(key, (0.0, 0))[1] for p in parts)) for key in keys}
     chi_parts["priors"] = (float(np.sum(prior * prior)), int(np.count_nonzero(passes.pw2[free])))
     n_values = sum(n for _, n in chi_parts.values())
     n_params = free.size + 3 * sum(p["n_coef"] for p in parts)

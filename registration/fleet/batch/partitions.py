@@ -67,9 +67,11 @@ class TablesSource:
     """The fleet tables in memory (:mod:`registration.fleet.data.tables`: SI units, radians) as a
     partition source (module docstring); ``batch_rows``: rows per batch of the first passes."""
 
-    def __init__(self, plots, sensors, navigation, platforms=None, references=None, batch_rows: int = 1_000_000):
+    def __init__(self, plots, sensors, navigation, platforms=None, references=None, batch_rows: int = 1_000_000,
+                 targets=None):
         self.plots, self.navigation = _columns(plots), _columns(navigation)
         self.sensors, self.platforms, self.references = _columns(sensors), _columns(platforms), _columns(references)
+        self.targets = _columns(targets)  # the surface targets (read whole: a row per target)
         self.batch_rows = int(batch_rows)
         self.token = uuid.uuid4().hex
 

@@ -39,7 +39,8 @@ from registration.fleet.batch.residuals import chi_square_parts
 from registration.fleet.batch import spill as _spill
 from registration.fleet.batch.schur import reduce
 from registration.fleet.batch.solver import BatchOptions, outside_when_seen, singular_blocks
-from registration.fleet.data.inputs import index_of, read_platforms, read_plots, read_references, read_sensors
+from registration.fleet.data.inputs import (index_of, read_platforms, read_plots, read_references, read_sensors,
+                                            read_surface)
 from registration.fleet.data.layout import StateLayout, make_layout
 from registration.fleet.data.navigation import navigation_at, platform_navigation
 from registration.fleet.data.problem import Exclusion, FleetProblem
@@ -129,7 +130,7 @@ def partition_problem(task: PartitionTask) -> FleetProblem | None:
         sensor_platform=specs.platform, sensor_sigma=specs.sigma, sensor_lever=specs.lever, layout=layout,
         time=time, sensor=sensor, target=target[keep], meas=cols.meas[keep], mask=cols.mask[keep], nav=nav, row=keep,
         n_input_plots=int(cols.time.shape[0]), references=refs, ref_target=index_of(refs.target, plan.target_ids),
-        tracks=tracks)
+        tracks=tracks, surface=read_surface(getattr(src, "targets", None)))
 
 
 def archive_layout(source) -> StateLayout:

@@ -7,7 +7,7 @@ The plots, navigation and reference CSV files are read in blocks of whole lines
 cell by cell as the ordinary reader checks a whole file (:func:`registration.io.fleet.cells.check_frame`:
 the same errors naming the file, the file row, the column and its unit; the first bad row of a
 file stops the run, as ``--on-bad-row stop`` does) and written as one row group of
-``<table>.parquet`` in file units. Memory is bounded by a block. The sensors and platforms files
+``<table>.parquet`` in file units. Memory is bounded by a block. The sensors, platforms and targets files
 (small) are read whole by the ordinary reader and copied. Tables given as Parquet are linked.
 
 The checks that need a whole file are made on what the blocks leave: the radians-in-degree-columns
@@ -195,9 +195,10 @@ def parquet_from_csv(folder, temp, block_bytes: int | None = None) -> list[str]:
         if path is not None and path.suffix != ".csv":
             os.symlink(path.resolve(), temp / f"{name}.parquet")
     sensors = read_file("sensors", paths["sensors"], False) if paths["sensors"].suffix == ".csv" else None
-    if paths["platforms"] is not None and paths["platforms"].suffix == ".csv":
-        read_file("platforms", paths["platforms"], False)
-    for name in ("sensors", "platforms"):
+    for name in ("platforms", "targets"):  # checked here: their errors name the file's row
+        if paths[name] is not None and paths[name].suffix == ".csv":
+            read_file(name, paths[name], False)
+    for name in ("sensors", "platforms", "targets"):
         if paths[name] is not None and paths[name].suffix == ".csv":
             shutil.copyfile(paths[name], temp / f"{name}.csv")
     context = {"sensors": set() if sensors is None else set(sensors.table["sensor"].tolist()),
