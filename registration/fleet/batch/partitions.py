@@ -225,7 +225,7 @@ def _cuts(t0: np.ndarray, t1: np.ndarray, window_s: float, partitions: int | Non
     lo, hi = float(starts.min()), float(starts.max())
     if partition_s is not None:
         if not partition_s > 0:
-            raise ValueError(f"partition_s: expected a partition length > 0 s, got {partition_s}")
+            raise ValueError(f"--partition-s (partition_s): expected a partition length > 0 s, got {partition_s}")
         cuts = lo + partition_s * np.arange(1, max(1, int(np.ceil((hi - lo) / partition_s)) + 1))
     else:
         p = 1 if partitions is None else int(partitions)

@@ -172,7 +172,8 @@ def build_navigation(log: SentenceLog, clock: Clock, fixes: dict[str, Fixes], at
     inside = _bracketed(tp, ta, MAX_POSITION_GAP_S)
     i = a.index[~inside]
     rejections.add(log.file[i], log.line[i], "outside_positions",
-                   f"no position fix within {MAX_POSITION_GAP_S:g} s on both sides of this attitude sample")
+                   f"this attitude sample lacks a position fix within {MAX_POSITION_GAP_S:g} s before it or within "
+                   f"{MAX_POSITION_GAP_S:g} s after it (both are needed to interpolate the position)")
     if not inside.any():
         raise NmeaImportError(f"no attitude sample ({attitude_source}, {ta.size} valid) lies within the position fixes "
                               f"({position_source}, {tp.size} valid) to interpolate them: "
