@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import tempfile
 from pathlib import Path
 
@@ -41,7 +42,8 @@ def add_archive_arguments(p: argparse.ArgumentParser) -> None:
     g = p.add_argument_group("archives too large for memory (Parquet or CSV tables in --tables DIR)")
     g.add_argument("--partition-s", type=float, default=None, metavar="S",
                    help="solve partition by partition, S seconds of target windows each (memory bounded by a "
-                        "partition; default: not partitioned, the whole archive in memory)")
+                        "partition; default: not partitioned, the whole archive in memory); the plots need their "
+                        "target ids (plots without ids are associated in memory)")
     g.add_argument("--workers", type=int, default=None, metavar="N",
                    help="map the partitions on a local Dask cluster of N worker processes (with --partition-s)")
     g.add_argument("--scheduler", default=None, metavar="ADDRESS",
@@ -58,19 +60,14 @@ def archive_requested(args: argparse.Namespace) -> bool:
     return True
 
 
-def _estimate_lines(result) -> list[str]:
-    from registration.fleet.data.layout import FILE_UNITS
-
-    lines = ["state,unit,estimate,sigma"]
-    for i, name in enumerate(result.layout.names):
-        unit, factor, _, _ = FILE_UNITS[result.layout.units[i]]
-        lines.append(f"{name},{unit},{float(result.estimate[i] * factor)!r},{float(result.sigma[i] * factor)!r}")
-    return lines
-
-
 def _summary(result, args: argparse.Namespace) -> dict:
+    from registration.cli.fleet_output import estimate_rows
+
     chi = result.chi_square
-    return {"tables": str(args.tables), "window_s": args.window_s, "partition_s": args.partition_s,
+    rows = [{k: (v if not isinstance(v, float) or math.isfinite(v) else None) for k, v in r.items()}
+            for r in estimate_rows(result)]
+    return {"estimates": rows, "observability": result.observability.to_json(),
+            "tables": str(args.tables), "window_s": args.window_s, "partition_s": args.partition_s,
             "partitions": result.plan.n_partitions, "plots_used": result.n_plots,
             "plots_read": result.plan.n_input_plots, "converged": result.converged, "iterations": result.iterations,
             "chi_square": {"chi2": chi.chi2, "dof": chi.dof, "mean": chi.mean,
@@ -95,8 +92,14 @@ def _write_outputs(folder: Path, args: argparse.Namespace, result, outputs, writ
                "fused_targets": {"folder": f"{FUSED_FOLDER}/", "parts": outputs.n_parts, "rows": outputs.fused_rows,
                                  "columns": list(FUSED_COLUMNS), "written_by": written_by},
                "figures_sample": {"plots": int(outputs.sample["time"].size), "every": outputs.sample_every}}
-    for name, text in (("estimates.csv", "\n".join(_estimate_lines(result))),
-                       ("residuals.csv", "\n".join(residual_lines(outputs))),
+    import pandas as pd
+
+    from registration.cli.fleet_output import estimate_rows
+    from registration.io.files.tablefile import write_frame
+
+    with writing(folder / "estimates.csv"):  # the in-memory run's layout: object, state, unit, estimate, sigma, status
+        write_frame(pd.DataFrame(estimate_rows(result)), folder / "estimates.csv", "csv")
+    for name, text in (("residuals.csv", "\n".join(residual_lines(outputs))),
                        ("summary.json", json.dumps(summary, indent=2, allow_nan=False))):
         with writing(folder / name):
             (folder / name).write_text(text + "\n")
@@ -122,7 +125,8 @@ def _solve_and_write(args: argparse.Namespace, out: Path, source) -> tuple:
             outputs = archive_outputs(result, source, options, parts=None if remote else parts, client=client)
             if remote:
                 _write_parts(parts, outputs.tables)
-            _write_outputs(folder.path, args, result, outputs, "client" if remote else "workers")
+            _write_outputs(folder.path, args, result, outputs,
+                           "client" if remote else ("workers" if client is not None else "this process"))
     return result, outputs
 
 
@@ -163,6 +167,15 @@ def run_archive(args: argparse.Namespace) -> int:
     print(f"fused targets: {outputs.fused_rows} rows in {outputs.n_parts} Parquet parts")
     for w in result.warnings:
         print(f"warning: {w}")
+    from registration.cli.fleet_output import estimate_rows, estimate_table
+
+    print()
+    for line in estimate_table(estimate_rows(result)):
+        print(line)
+    print("\nObservability:")
+    for line in result.observability.lines():
+        print(line)
+    print()
     names = sorted(ARCHIVE_OUTPUTS - (set() if not getattr(args, "no_plots", False) else set(PNG_OUTPUTS)))
     print("wrote " + ", ".join(str(out / n) for n in [*names, FUSED_FOLDER + "/"]))
     report = result.chi_square.report  # the gate of the in-memory run: exit 3 when the data contradict the model

@@ -33,12 +33,15 @@ def test_archive_run_writes_estimates_and_leaves_out_on_error(tmp_path):
     args = parse(["--tables", str(tables), "--out", str(out), "--partition-s", "100"])
     assert archive_requested(args)
     assert run_archive(args) == 0
-    lines = (out / "estimates.csv").read_text().splitlines()
-    assert lines[0] == "state,unit,estimate,sigma"
-    est = {r.split(",")[0]: float(r.split(",")[2]) for r in lines[1:]}
+    import pandas as pd
+
+    frame = pd.read_csv(out / "estimates.csv")
+    assert list(frame.columns) == ["object", "state", "unit", "estimate", "sigma", "status"]  # the in-memory layout
+    est = frame.set_index(["object", "state"])
     truth = sc.truth_state
     # the heading errors are estimated to within a few hundredths of a degree
-    assert abs(est["A:heading_error"] - np.degrees(truth["A:heading_error"])) < 0.05
+    assert abs(est.loc[("A", "heading_error"), "estimate"] - np.degrees(truth["A:heading_error"])) < 0.05
+    assert est.loc[("A", "heading_error"), "status"] == "identifiable" and est.loc[("A", "heading_error"), "unit"] == "deg"
     summary = json.loads((out / "summary.json").read_text())
     assert summary["partitions"] == 3 and summary["converged"]
     before = {p.relative_to(out): p.read_bytes() for p in out.rglob("*") if p.is_file()}

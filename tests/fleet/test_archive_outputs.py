@@ -122,7 +122,7 @@ def test_csv_folder_gives_the_parquet_run_and_the_outputs(folders, tmp_path):
     assert {p.name for p in out.iterdir()} == {"estimates.csv", "residuals.csv", "summary.json", "residuals.png",
                                                "residuals_time.png", "map.png", "fused_targets"}
     summary = json.loads((out / "summary.json").read_text())
-    assert summary["fused_targets"]["parts"] == 3 and summary["fused_targets"]["written_by"] == "workers"
+    assert summary["fused_targets"]["parts"] == 3 and summary["fused_targets"]["written_by"] == "this process"
     assert set(summary["residuals_by_sensor"]) == {"A-3D", "A-ESM", "B-3D", "C-3D", "C-2D", "S-2D"}
     assert summary["residuals_of_references"]["values"] == summary["chi_square"]["parts"]["references"][1]
     # a second run replaces the folder of parts whole (2 partitions now), and the PNGs stay unless rewritten

@@ -217,9 +217,9 @@ def test_an_archive_folder_with_a_targets_file_registers_with_the_surface(bridge
     out = tmp_path / "out"
     assert main(["fleet", "register", "--tables", str(folder), "--partition-s", "200", "--out", str(out),
                  "--no-plots"]) == 0
-    est = pd.read_csv(out / "estimates.csv").set_index("state")
+    est = pd.read_csv(out / "estimates.csv").set_index(["object", "state"])
     batch = solve_batch(tables.problem())
-    for name in ("RADAR:range_bias", "RADAR:time_bias"):
-        assert est.loc[name, "estimate"] == pytest.approx(batch.value(name), rel=1e-9)
+    for name in ("range_bias", "time_bias"):  # m, s: file units are SI here
+        assert est.loc[("RADAR", name), "estimate"] == pytest.approx(batch.value(f"RADAR:{name}"), rel=1e-9)
     summary = __import__("json").loads((out / "summary.json").read_text())
     assert "surface" in summary["chi_square"]["parts"]

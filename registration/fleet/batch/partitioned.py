@@ -25,21 +25,24 @@ them aside would empty a window, raise NumericalError (``solve_batch`` solves ag
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
+from registration.core.observability import ObservabilityReport
 from registration.core.parallel import map_chunks
 from registration.fleet.batch.blocks import window_grid
 from registration.fleet.batch.covariance import state_covariance
 from registration.fleet.batch.partitions import DEFAULT_NAV_MARGIN_S, ArchivePlan, TablesSource, make_plan
-from registration.fleet.batch.passes import PartitionTask, archive_layout, final_pass, reduce_pass, setup_pass, step_pass
+from registration.fleet.batch.passes import PartitionTask, archive_sensors, final_pass, reduce_pass, setup_pass, step_pass
 from registration.fleet.batch.schur import determined_directions, solve_reduced
 from registration.fleet.batch.spill import make_folder, remove_folder
 from registration.fleet.batch.solver import (LAMBDA_MAX, LAMBDA_START, TARGETS_FIRST, BatchOptions, NumericalError,
                                              progress_bar, time_bias_warnings)
+from registration.fleet.combinations import linear_combination, sum_rows
 from registration.fleet.data.layout import StateLayout
-from registration.fleet.result import ChiSquareCheck
+from registration.fleet.observability import fleet_observability
+from registration.fleet.result import ChiSquareCheck, state_rows
 
 __all__ = ["PartitionedResult", "run_pass", "solve_batch_partitioned"]
 
@@ -80,6 +83,19 @@ class PartitionedResult:
     warnings: tuple
     n_plots: int
     plan: ArchivePlan
+    observability: ObservabilityReport | None = None
+    status: dict = field(default_factory=dict)
+    scale: np.ndarray | None = None
+
+    def combination(self, coefficients: dict) -> tuple[float, float]:
+        """Value and sigma (1σ) of ``sum_i a_i x_i`` (as :meth:`registration.fleet.result.BatchResult.combination`)."""
+        return linear_combination(self.layout, self.estimate, self.covariance, coefficients, self.undetermined,
+                                  self.scale)
+
+    def rows(self, truth: dict | None = None) -> list[dict]:
+        """One dict per state, then one per sum the observability report names (as
+        :meth:`registration.fleet.result.BatchResult.rows`)."""
+        return state_rows(self.layout, self.estimate, self.sigma, self.status, truth) + sum_rows(self, truth)
 
     @property
     def free_names(self) -> tuple[str, ...]:
@@ -236,7 +252,7 @@ def solve_batch_partitioned(source, options: BatchOptions | None = None, x0: np.
     options = options or BatchOptions()
     plan = make_plan(source, options.window_s, partitions=partitions, partition_s=partition_s,
                      nav_margin_s=nav_margin_s)
-    layout = archive_layout(source)
+    layout, platform_ids, sensor_ids, sensor_platform = archive_sensors(source)
     x = np.zeros(layout.n) if x0 is None else np.array(x0, dtype=np.float64)
     if x.shape != (layout.n,) or not np.isfinite(x).all():
         raise ValueError(f"x0: expected {layout.n} finite starting states, got shape {x.shape}")
@@ -264,7 +280,11 @@ def solve_batch_partitioned(source, options: BatchOptions | None = None, x0: np.
     sigma = np.sqrt(np.clip(np.diag(P), 0, None))
     if undetermined.size:
         sigma[free[np.linalg.norm(undetermined, axis=1) > 0.1]] = np.inf
-    return PartitionedResult(layout, x, P, sigma, information, information - np.diag(passes.pw2[free]), undetermined,
+    information_data = information - np.diag(passes.pw2[free])
+    report = fleet_observability(information_data, free, layout, sensor_platform, platform_ids, sensor_ids)
+    status = {layout.names[i]: "fixed" for i in layout.fixed}
+    status.update(report.status)
+    return PartitionedResult(layout, x, P, sigma, information, information_data, undetermined,
                              converged, it1 + it2, h1 + h2[1:], chi2, passes.coefs,
                              plan.excluded + exclusions + outside, warnings + time_bias_warnings(layout, x, options),
-                             n_plots, plan)
+                             n_plots, plan, report, status, layout.scale[free])

@@ -135,10 +135,17 @@ def partition_problem(task: PartitionTask) -> FleetProblem | None:
 
 def archive_layout(source) -> StateLayout:
     """The state layout of a source's sensors and platforms tables (as build_problem lays it out)."""
+    return archive_sensors(source)[0]
+
+
+def archive_sensors(source) -> tuple:
+    """(layout, platform ids, sensor ids, each sensor's platform index) of a source's sensors and
+    platforms tables, as build_problem reads them."""
     sensors_t = read_table("sensors", source.sensors, ("sensor", "platform"))
     platform_ids, platform_priors = read_platforms(source.platforms, sensors_t.ids("platform"))
     specs = read_sensors(sensors_t, platform_ids)
-    return make_layout(platform_ids, platform_priors, specs.ids, specs.channels, specs.prior, specs.extended_prior)
+    layout = make_layout(platform_ids, platform_priors, specs.ids, specs.channels, specs.prior, specs.extended_prior)
+    return layout, tuple(platform_ids), tuple(specs.ids), specs.platform
 
 
 def _design(task: PartitionTask, problem: FleetProblem):
