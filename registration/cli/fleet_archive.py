@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import tempfile
 from pathlib import Path
 
@@ -61,12 +60,10 @@ def archive_requested(args: argparse.Namespace) -> bool:
 
 
 def _summary(result, args: argparse.Namespace) -> dict:
-    from registration.cli.fleet_output import estimate_rows
+    from registration.cli.fleet_output import estimate_rows, estimates_json
 
     chi = result.chi_square
-    rows = [{k: (v if not isinstance(v, float) or math.isfinite(v) else None) for k, v in r.items()}
-            for r in estimate_rows(result)]
-    return {"estimates": rows, "observability": result.observability.to_json(),
+    return {"estimates": estimates_json(estimate_rows(result)), "observability": result.observability.to_json(),
             "tables": str(args.tables), "window_s": args.window_s, "partition_s": args.partition_s,
             "partitions": result.plan.n_partitions, "plots_used": result.n_plots,
             "plots_read": result.plan.n_input_plots, "converged": result.converged, "iterations": result.iterations,

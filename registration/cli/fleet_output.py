@@ -118,6 +118,12 @@ def _finite(v):
     return v if np.isfinite(v) else None
 
 
+def estimates_json(rows: list[dict]) -> list[dict]:
+    """The rows of :func:`estimate_rows` for summary.json: non-finite numbers (an undetermined
+    sigma) as null."""
+    return [{k: (_finite(v) if isinstance(v, float) else v) for k, v in r.items()} for r in rows]
+
+
 def _check_json(check) -> dict:
     parts = {k: {"sum_of_squares": ss, "values": n, "mean_square": ss / n if n else None}
              for k, (ss, n) in check.parts.items()}
@@ -151,7 +157,7 @@ def _summary(result, rows: list[dict], inputs: dict) -> dict:
     report = chi_square_report(result)
     out = {
         "method": "online" if is_online(result) else "batch",
-        "estimates": [{k: (_finite(v) if isinstance(v, float) else v) for k, v in r.items()} for r in rows],
+        "estimates": estimates_json(rows),
         "observability": result.observability.to_json(),
         "consistency": report.to_json() if report is not None else None,
         "consistency_basis": (result.verdict_basis if is_online(result) else "residuals (chi-square) at the solution"),

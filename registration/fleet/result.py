@@ -12,7 +12,7 @@ from registration.fleet.combinations import linear_combination, sigma_text, sum_
 from registration.fleet.batch.covariance import FusedTargets
 from registration.fleet.data.layout import FILE_UNITS, StateLayout
 
-__all__ = ["BatchResult", "ChiSquareCheck", "state_lines", "state_rows"]
+__all__ = ["BatchResult", "ChiSquareCheck", "StateEstimates", "state_lines", "state_rows"]
 
 _QUANTITY = "squared normalised residual per degree of freedom"
 
@@ -96,8 +96,33 @@ def state_lines(rows: list[dict]) -> list[str]:
     return out
 
 
+class StateEstimates:
+    """What a batch estimate gives per state and per combination of states, for a result with
+    ``layout``, ``estimate``, ``covariance``, ``sigma``, ``status``, ``observability``,
+    ``undetermined`` and ``scale`` (:class:`BatchResult` and the partitioned solver's result)."""
+
+    def value(self, name: str) -> float:
+        return float(self.estimate[self.layout.index(name)])
+
+    def sigma_of(self, name: str) -> float:
+        return float(self.sigma[self.layout.index(name)])
+
+    def combination(self, coefficients: dict) -> tuple[float, float]:
+        """Value and sigma (1σ) of ``sum_i a_i x_i`` for ``coefficients`` {state name: a_i}, e.g.
+        ``{"A:heading_error": 1, "A1:bearing_bias": 1}`` (rad, m). The sigma is inf when the combination
+        leans on a direction the data do not determine (more than 1 % of it, in scaled units)."""
+        return linear_combination(self.layout, self.estimate, self.covariance, coefficients, self.undetermined,
+                                  self.scale)
+
+    def rows(self, truth: dict | None = None) -> list[dict]:
+        """One dict per state: name, object (platform or sensor id), quantity, label, unit,
+        estimate, sigma (1σ), status (and truth when given); then one per sum the observability
+        report names (:func:`~registration.fleet.combinations.sum_rows`)."""
+        return state_rows(self.layout, self.estimate, self.sigma, self.status, truth) + sum_rows(self, truth)
+
+
 @dataclass
-class BatchResult:
+class BatchResult(StateEstimates):
     """Estimates, their covariance, fused targets, residuals and observability.
 
     ``estimate`` (n,) and ``covariance`` (n, n) in the order of ``layout.names`` (rad, m); fixed
@@ -139,19 +164,6 @@ class BatchResult:
     reference_residuals: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))  # (R', 3)
     references_given: int = 0
 
-    def value(self, name: str) -> float:
-        return float(self.estimate[self.layout.index(name)])
-
-    def sigma_of(self, name: str) -> float:
-        return float(self.sigma[self.layout.index(name)])
-
-    def combination(self, coefficients: dict) -> tuple[float, float]:
-        """Value and sigma (1σ) of ``sum_i a_i x_i`` for ``coefficients`` {state name: a_i}, e.g.
-        ``{"A:heading_error": 1, "A1:bearing_bias": 1}`` (rad, m). The sigma is inf when the combination
-        leans on a direction the data do not determine (more than 1 % of it, in scaled units)."""
-        return linear_combination(self.layout, self.estimate, self.covariance, coefficients, self.undetermined,
-                                  self.scale)
-
     def residual_check(self, by: str = "target") -> dict:
         """Mean squared normalised residual of the plots per target (``by="target"``) or per sensor
         (``by="sensor"``), or of the reference positions used per reference target
@@ -178,12 +190,6 @@ class BatchResult:
             sel = (ids == key) & (n > 0)
             out[str(key)] = (float(sq[sel].sum() / n[sel].sum()), int(n[sel].sum()))
         return out
-
-    def rows(self, truth: dict | None = None) -> list[dict]:
-        """One dict per state: name, object (platform or sensor id), quantity, label, unit,
-        estimate, sigma (1σ), status (and truth when given); then one per sum the observability
-        report names (:func:`~registration.fleet.combinations.sum_rows`)."""
-        return state_rows(self.layout, self.estimate, self.sigma, self.status, truth) + sum_rows(self, truth)
 
     def lines(self) -> list[str]:
         """A printable summary (angles in degrees)."""

@@ -197,6 +197,7 @@ def test_the_partitioned_solver_takes_the_surface(bridge):
         part = solve_batch_partitioned(source, partitions=partitions)
         assert_same(part, batch)
         assert part.chi_square.parts["surface"][1] == batch.chi_square.parts["surface"][1]
+        assert [(r["name"], r["status"]) for r in part.rows()] == [(r["name"], r["status"]) for r in batch.rows()]
 
 
 def test_an_archive_folder_with_a_targets_file_registers_with_the_surface(bridge, tmp_path):

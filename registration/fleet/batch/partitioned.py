@@ -39,10 +39,9 @@ from registration.fleet.batch.schur import determined_directions, solve_reduced
 from registration.fleet.batch.spill import make_folder, remove_folder
 from registration.fleet.batch.solver import (LAMBDA_MAX, LAMBDA_START, TARGETS_FIRST, BatchOptions, NumericalError,
                                              progress_bar, time_bias_warnings)
-from registration.fleet.combinations import linear_combination, sum_rows
 from registration.fleet.data.layout import StateLayout
 from registration.fleet.observability import fleet_observability
-from registration.fleet.result import ChiSquareCheck, state_rows
+from registration.fleet.result import ChiSquareCheck, StateEstimates
 
 __all__ = ["PartitionedResult", "run_pass", "solve_batch_partitioned"]
 
@@ -59,7 +58,7 @@ def run_pass(func, tasks: list, args: list, client=None) -> list:
 
 
 @dataclass
-class PartitionedResult:
+class PartitionedResult(StateEstimates):
     """The estimate of :func:`solve_batch_partitioned` (units and names of ``layout``: rad, m, 1, s).
 
     ``estimate`` (n,), ``covariance`` (n, n), ``sigma`` (n,; inf: not determined), ``information``
@@ -86,16 +85,6 @@ class PartitionedResult:
     observability: ObservabilityReport | None = None
     status: dict = field(default_factory=dict)
     scale: np.ndarray | None = None
-
-    def combination(self, coefficients: dict) -> tuple[float, float]:
-        """Value and sigma (1σ) of ``sum_i a_i x_i`` (as :meth:`registration.fleet.result.BatchResult.combination`)."""
-        return linear_combination(self.layout, self.estimate, self.covariance, coefficients, self.undetermined,
-                                  self.scale)
-
-    def rows(self, truth: dict | None = None) -> list[dict]:
-        """One dict per state, then one per sum the observability report names (as
-        :meth:`registration.fleet.result.BatchResult.rows`)."""
-        return state_rows(self.layout, self.estimate, self.sigma, self.status, truth) + sum_rows(self, truth)
 
     @property
     def free_names(self) -> tuple[str, ...]:

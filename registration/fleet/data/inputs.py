@@ -309,9 +309,7 @@ class SurfaceTargets:
         """(alt, sigma), each (T,) m, of the targets ``target_ids``; NaN where not on a surface."""
         row = index_of(np.asarray(target_ids, dtype=str), list(self.target))
         listed = row >= 0
-        at = np.where(listed, row, 0)
-        if self.target.size == 0:
-            return np.full(row.size, np.nan), np.full(row.size, np.nan)
+        at = np.where(listed, row, 0)  # read_surface makes none without a target
         return np.where(listed, self.alt[at], np.nan), np.where(listed, self.sigma[at], np.nan)
 
 
