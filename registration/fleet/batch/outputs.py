@@ -37,8 +37,7 @@ from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.covariance import fused_targets
 from registration.fleet.batch.normal import evaluate, make_design, normal_equations
 from registration.fleet.batch.partitioned import run_pass
-from registration.fleet.batch.partitions import partition_of, window_index
-from registration.fleet.batch.passes import PartitionTask, partition_problem, setup_pass
+from registration.fleet.batch.passes import PartitionTask, partition_problem
 from registration.fleet.batch.residuals import chi_square_parts
 from registration.fleet.batch.schur import reduce
 from registration.fleet.batch.solver import outside_when_seen
@@ -199,32 +198,6 @@ class ArchiveOutputs:
     tables: list | None
 
 
-def _kept_tasks(result, source, options, x0, client) -> tuple[list, list]:
-    """The partitions of the solve, as its tasks, with their coefficients. ``result.tasks`` when the
-    result carries them; else rebuilt: the windows set aside at the start from the result's
-    exclusions (singular geometry), or, when some partition was left without plots, found again by
-    the setup pass at ``x0``."""
-    plan = result.plan
-    if getattr(result, "tasks", None) is not None:
-        return list(result.tasks), list(result.coefficients)
-    candidates = [k for k in range(plan.n_partitions) if np.isfinite(plan.plot_ranges[k, 0])]
-    empty = np.zeros((0, 2), dtype=np.int64)
-    if len(candidates) != len(result.coefficients):
-        tasks = [PartitionTask(source, plan, k, options, empty, 0) for k in candidates]
-        found = run_pass(setup_pass, tasks, [(x0,)] * len(tasks), client)
-        tasks = [replace(t, dropped=f["dropped"]) for t, f in zip(tasks, found) if f is not None and f["coef"] is not None]
-        return tasks, list(result.coefficients)
-    dropped = {k: [] for k in candidates}
-    index = {g: i for i, g in enumerate(plan.target_ids)}
-    for e in result.excluded:
-        if e.reason.startswith("singular geometry") and e.target in index:
-            g, t = np.array([index[e.target]]), np.array([e.t_start])
-            dropped[int(partition_of(plan, g, t)[0])].append((int(g[0]), int(window_index(plan, g, t)[0][0])))
-    tasks = [PartitionTask(source, plan, k, options, np.array(dropped[k], dtype=np.int64).reshape(-1, 2), 0)
-             for k in candidates]
-    return tasks, list(result.coefficients)
-
-
 def _add(total: dict, ids, ss, n) -> None:
     for key, a, b in zip(np.asarray(ids).tolist(), np.asarray(ss).tolist(), np.asarray(n).tolist()):
         s0, n0 = total.get(key, (0.0, 0))
@@ -257,17 +230,17 @@ def _reduce(found: list, target_ids: tuple, sample_max: int, every: int, tables)
                           hist, parts, sum(f["rows"] for f in found), len(found), sample, every, tables)
 
 
-def archive_outputs(result, source, options, *, parts=None, client=None, x0: np.ndarray | None = None,
+def archive_outputs(result, source, options, *, parts=None, client=None,
                     sample_max: int = SAMPLE_PLOTS) -> ArchiveOutputs:
     """The outputs of the partitioned solve ``result`` of ``source`` with ``options`` (module
     docstring), by one pass over its partitions (in this process or on ``client``'s workers): the
     fused targets written as parts into the folder ``parts`` (None: returned in ``.tables``),
     the residual sums and a sample of at most ``sample_max`` plots, every k-th of each partition
-    with k = ceil(plots / (sample_max - partitions)). ``x0``: the solve's starting states, if not
-    zeros (needed only to find the windows set aside again when a partition had no plot)."""
+    with k = ceil(plots / (sample_max - partitions)). The partitions are the solve's
+    (``result.tasks``, with the windows it set aside), read from ``source``."""
     layout = result.layout
-    x0 = np.zeros(layout.n) if x0 is None else np.asarray(x0, dtype=np.float64)
-    tasks, coefs = _kept_tasks(result, source, options, x0, client)
+    tasks = [replace(t, source=source, options=options) for t in result.tasks]
+    coefs = list(result.coefficients)
     if len(tasks) != len(coefs):
         raise ValueError(f"{len(tasks)} partitions with plots but {len(coefs)} with coefficients: the partitions "
                          "are not the solve's")

@@ -25,7 +25,7 @@ them aside would empty a window, raise NumericalError (``solve_batch`` solves ag
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -85,6 +85,7 @@ class PartitionedResult(StateEstimates):
     observability: ObservabilityReport | None = None
     status: dict = field(default_factory=dict)
     scale: np.ndarray | None = None
+    tasks: tuple = ()  # the partitions solved, in the order of ``coefficients`` (without the spill folder, gone)
 
     @property
     def free_names(self) -> tuple[str, ...]:
@@ -276,4 +277,5 @@ def solve_batch_partitioned(source, options: BatchOptions | None = None, x0: np.
     return PartitionedResult(layout, x, P, sigma, information, information_data, undetermined,
                              converged, it1 + it2, h1 + h2[1:], chi2, passes.coefs,
                              plan.excluded + exclusions + outside, warnings + time_bias_warnings(layout, x, options),
-                             n_plots, plan, report, status, layout.scale[free])
+                             n_plots, plan, report, status, layout.scale[free],
+                             tuple(replace(t, spill=None) for t in passes.tasks))
