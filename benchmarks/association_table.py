@@ -41,15 +41,28 @@ import time
 
 import numpy as np
 
-from registration.fleet import associate_and_register, association_scenario, association_scores, build_problem, solve_batch
-from registration.fleet.association.simulated.fleets import atc_fleet, registration_scores, rolling_fleet, vessel_fleet
+from registration.fleet import (
+    associate_and_register,
+    association_scenario,
+    association_scores,
+    build_problem,
+    solve_batch,
+)
+from registration.fleet.association.simulated.fleets import (
+    atc_fleet,
+    registration_scores,
+    rolling_fleet,
+    vessel_fleet,
+)
 
 #: The robust table's fleets: name -> function of the seed returning (simulation, references, ids run plots).
-MIX = {"A-ESM": ("A", (np.nan, np.radians(0.25), np.radians(0.3)), 1.0, 0.1, (1.0, 4.0, 25.0)),
-       "A-2D": ("A", (30.0, np.radians(0.2), np.nan), 2.5, 0.77, (0.0, 12.0, 20.0)),
-       "B-3D": ("B", (25.0, np.radians(0.15), np.radians(0.2)), 2.0, 1.21, (0.0, 10.0, 22.0)),
-       "S-3D": ("S", (30.0, np.radians(0.1), np.radians(0.15)), 4.0, 2.33, (0.0, 0.0, 10.0)),
-       "S-2D": ("S", (40.0, np.radians(0.1), np.nan), 5.0, 3.46, (0.0, 0.0, 12.0))}
+MIX = {
+    "A-ESM": ("A", (np.nan, np.radians(0.25), np.radians(0.3)), 1.0, 0.1, (1.0, 4.0, 25.0)),
+    "A-2D": ("A", (30.0, np.radians(0.2), np.nan), 2.5, 0.77, (0.0, 12.0, 20.0)),
+    "B-3D": ("B", (25.0, np.radians(0.15), np.radians(0.2)), 2.0, 1.21, (0.0, 10.0, 22.0)),
+    "S-3D": ("S", (30.0, np.radians(0.1), np.radians(0.15)), 4.0, 2.33, (0.0, 0.0, 10.0)),
+    "S-2D": ("S", (40.0, np.radians(0.1), np.nan), 5.0, 3.46, (0.0, 0.0, 12.0)),
+}
 
 
 def _fleet(name: str, seed: int):
@@ -59,10 +72,22 @@ def _fleet(name: str, seed: int):
     elif name == "issue, 5 % clutter":
         sim, refs = rolling_fleet(seed, duration_s=600.0, clutter_share=0.05), None
     elif name == "other mix, 5 % clutter":
-        sim, refs = rolling_fleet(seed, duration_s=300.0, n_aircraft=8, sensors=MIX, clutter_share=0.05,
-                                  angle_bias=np.radians(3.0)), None
+        sim, refs = (
+            rolling_fleet(
+                seed,
+                duration_s=300.0,
+                n_aircraft=8,
+                sensors=MIX,
+                clutter_share=0.05,
+                angle_bias=np.radians(3.0),
+            ),
+            None,
+        )
     elif name == "issue, time bias + gain, 5 % clutter":
-        sim, refs = rolling_fleet(seed, duration_s=300.0, clutter_share=0.05, time_bias=0.3, range_gain=3e-4), None
+        sim, refs = (
+            rolling_fleet(seed, duration_s=300.0, clutter_share=0.05, time_bias=0.3, range_gain=3e-4),
+            None,
+        )
     elif name == "bridge log (ARPA + AIS)":
         sim, refs = vessel_fleet(seed, duration_s=600.0)
         keep = np.isin(sim.true_target, np.unique(refs["target"]))
@@ -71,12 +96,24 @@ def _fleet(name: str, seed: int):
     else:  # ATC
         sim, refs = atc_fleet(seed)
     real = sim.true_target != ""
-    return sim, refs, dict({k: v[real] for k, v in sim.plots.items() if k not in ("track", "target")},
-                           target=sim.true_target[real])
+    return (
+        sim,
+        refs,
+        dict(
+            {k: v[real] for k, v in sim.plots.items() if k not in ("track", "target")},
+            target=sim.true_target[real],
+        ),
+    )
 
 
-ROBUST = ("issue", "issue, 5 % clutter", "other mix, 5 % clutter", "issue, time bias + gain, 5 % clutter",
-          "bridge log (ARPA + AIS)", "ATC (Mode S, Mode A, primary)")
+ROBUST = (
+    "issue",
+    "issue, 5 % clutter",
+    "other mix, 5 % clutter",
+    "issue, time bias + gain, 5 % clutter",
+    "bridge log (ARPA + AIS)",
+    "ATC (Mode S, Mode A, primary)",
+)
 
 
 def robust_row(name: str, seed: int) -> str:
@@ -92,22 +129,27 @@ def robust_row(name: str, seed: int) -> str:
     # each label stands for the true target of most of its plots (ids given and references by name too)
     wrong = int(round(association_scores(result.labels, sim.true_target)["error_rate"] * real.sum()))
     reg = registration_scores(result.batch, base, sc.truth_state)
-    return (f"| {name} | {seed} | {int(real.sum())} ({int((~real).sum())}) | {wrong} | {int((lab & ~real).sum())} | "
-            f"{100 * np.mean(~lab[real]):.1f} % | {result.n_targets} | {reg['vs_truth']:.2f} | {reg['sigma_ratio']:.3f} | "
-            f"{reg['chi2_mean']:.4f} [{reg['chi2_band'][0]:.3f}, {reg['chi2_band'][1]:.3f}] | "
-            f"{'yes' if result.converged else 'no'} | {t_assoc:.1f} / {t_ids:.1f} |")
+    return (
+        f"| {name} | {seed} | {int(real.sum())} ({int((~real).sum())}) | {wrong} | {int((lab & ~real).sum())} | "
+        f"{100 * np.mean(~lab[real]):.1f} % | {result.n_targets} | {reg['vs_truth']:.2f} | {reg['sigma_ratio']:.3f} | "
+        f"{reg['chi2_mean']:.4f} [{reg['chi2_band'][0]:.3f}, {reg['chi2_band'][1]:.3f}] | "
+        f"{'yes' if result.converged else 'no'} | {t_assoc:.1f} / {t_ids:.1f} |"
+    )
 
 
 def robust_table(seeds) -> list[str]:
-    lines = ["| fleet | seed | real plots (clutter) | wrong joins | clutter in | unassoc. | targets | "
-             "max \\|est − truth\\|/σ | σ ratio vs ids | χ² mean [99.9 % band] | converged | time (s): assoc. / ids |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    lines = [
+        "| fleet | seed | real plots (clutter) | wrong joins | clutter in | unassoc. | targets | "
+        "max \\|est − truth\\|/σ | σ ratio vs ids | χ² mean [99.9 % band] | converged | time (s): assoc. / ids |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|",
+    ]
     print("\n".join(lines), flush=True)
     for name in ROBUST:
         for seed in seeds:
             lines.append(robust_row(name, seed))
             print(lines[-1], flush=True)
     return lines
+
 
 #: Rows: targets, crossing pairs, angle bias (deg), share of missed detections, clutter plots per scan.
 CASES = [
@@ -124,11 +166,25 @@ CASES = [
 ]
 
 
-def run_case(n_targets: int, crossing: bool, bias_deg: float, p_missed: float, clutter: float, seed: int,
-             duration_s: float) -> dict:
+def run_case(
+    n_targets: int,
+    crossing: bool,
+    bias_deg: float,
+    p_missed: float,
+    clutter: float,
+    seed: int,
+    duration_s: float,
+) -> dict:
     """One run: the scores, the estimates against the true-id registration and the truth, the times."""
-    sim = association_scenario(n_targets, crossing=crossing, angle_bias=np.radians(bias_deg), p_missed=p_missed,
-                               clutter_per_scan=clutter, duration_s=duration_s, seed=seed)
+    sim = association_scenario(
+        n_targets,
+        crossing=crossing,
+        angle_bias=np.radians(bias_deg),
+        p_missed=p_missed,
+        clutter_per_scan=clutter,
+        duration_s=duration_s,
+        seed=seed,
+    )
     sc = sim.scenario
     t0 = time.perf_counter()
     base = solve_batch(build_problem(sim.labelled_plots, sc.sensors, sc.navigation, sc.platforms))
@@ -137,11 +193,17 @@ def run_case(n_targets: int, crossing: bool, bias_deg: float, p_missed: float, c
     free = base.layout.free
     truth = sc.truth_vector(base.layout)
     est = result.batch.estimate
-    return {**association_scores(result.labels, sim.true_target), "passes": result.iterations,
-            "converged": result.converged, "seconds": result.seconds_total, "seconds_ids": t_ids,
-            "vs_ids": float(np.max(np.abs(est - base.estimate)[free] / base.sigma[free])),
-            "vs_truth": float(np.max(np.abs(est - truth)[free] / result.batch.sigma[free])),
-            "plots": int(sim.plots["time"].size), "clutter": int(np.count_nonzero(sim.true_target == ""))}
+    return {
+        **association_scores(result.labels, sim.true_target),
+        "passes": result.iterations,
+        "converged": result.converged,
+        "seconds": result.seconds_total,
+        "seconds_ids": t_ids,
+        "vs_ids": float(np.max(np.abs(est - base.estimate)[free] / base.sigma[free])),
+        "vs_truth": float(np.max(np.abs(est - truth)[free] / result.batch.sigma[free])),
+        "plots": int(sim.plots["time"].size),
+        "clutter": int(np.count_nonzero(sim.true_target == "")),
+    }
 
 
 def _row(case, runs: list[dict]) -> str:
@@ -149,29 +211,39 @@ def _row(case, runs: list[dict]) -> str:
     mean = {k: float(np.mean([r[k] for r in runs])) for k in runs[0] if k != "converged"}
     worst = {k: float(np.max([r[k] for r in runs])) for k in runs[0] if k != "converged"}
     conv = "" if all(r["converged"] for r in runs) else " (not all converged)"
-    return (f"| {n} | {'yes' if crossing else 'no'} | {bias:g} | {100 * missed:g} % | {clutter:g} | "
-            f"{mean['plots']:.0f} ({mean['clutter']:.0f}) | {100 * mean['error_rate']:.2f} % ({100 * worst['error_rate']:.2f} %) | "
-            f"{100 * mean['unassociated_rate']:.1f} % ({100 * worst['unassociated_rate']:.1f} %) | "
-            f"{100 * mean['clutter_associated']:.2f} % | {mean['labels_per_target']:.2f} | {mean['passes']:.1f}{conv} | "
-            f"{mean['vs_ids']:.2f} ({worst['vs_ids']:.2f}) | {mean['vs_truth']:.2f} ({worst['vs_truth']:.2f}) | "
-            f"{mean['seconds']:.1f} / {mean['seconds_ids']:.1f} |")
+    return (
+        f"| {n} | {'yes' if crossing else 'no'} | {bias:g} | {100 * missed:g} % | {clutter:g} | "
+        f"{mean['plots']:.0f} ({mean['clutter']:.0f}) | {100 * mean['error_rate']:.2f} % ({100 * worst['error_rate']:.2f} %) | "
+        f"{100 * mean['unassociated_rate']:.1f} % ({100 * worst['unassociated_rate']:.1f} %) | "
+        f"{100 * mean['clutter_associated']:.2f} % | {mean['labels_per_target']:.2f} | {mean['passes']:.1f}{conv} | "
+        f"{mean['vs_ids']:.2f} ({worst['vs_ids']:.2f}) | {mean['vs_truth']:.2f} ({worst['vs_truth']:.2f}) | "
+        f"{mean['seconds']:.1f} / {mean['seconds_ids']:.1f} |"
+    )
 
 
 def main(argv=None) -> list[str]:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--runs", type=int, default=3, help="runs per row (random draws)")
     parser.add_argument("--duration", type=float, default=300.0, help="seconds of data per run")
-    parser.add_argument("--table", choices=("scenario", "robust"), default="scenario",
-                        help="scenario: the association_scenario rows; robust: the fleets of the robust association")
-    parser.add_argument("--seeds", type=int, nargs="*", default=[101, 102],
-                        help="draws of each robust-table fleet")
+    parser.add_argument(
+        "--table",
+        choices=("scenario", "robust"),
+        default="scenario",
+        help="scenario: the association_scenario rows; robust: the fleets of the robust association",
+    )
+    parser.add_argument(
+        "--seeds", type=int, nargs="*", default=[101, 102], help="draws of each robust-table fleet"
+    )
     args = parser.parse_args(argv)
     if args.table == "robust":
         return robust_table(args.seeds)
-    lines = [f"{args.runs} runs of {args.duration:g} s per row; mean (worst run)", "",
-             "| targets | crossing | angle bias (deg) | missed | clutter / scan | plots (clutter) | error | unassoc. | "
-             "clutter in | labels / target | passes | bias vs ids (σ) | bias vs truth (σ) | time (s): assoc. / ids |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    lines = [
+        f"{args.runs} runs of {args.duration:g} s per row; mean (worst run)",
+        "",
+        "| targets | crossing | angle bias (deg) | missed | clutter / scan | plots (clutter) | error | unassoc. | "
+        "clutter in | labels / target | passes | bias vs ids (σ) | bias vs truth (σ) | time (s): assoc. / ids |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+    ]
     print("\n".join(lines), flush=True)
     for case in CASES:
         runs = [run_case(*case, seed=seed, duration_s=args.duration) for seed in range(args.runs)]

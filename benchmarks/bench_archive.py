@@ -81,9 +81,13 @@ def prepare(folder: Path, plots: int, nav_hz: float) -> dict:
     else:
         config = replace(CONFIG, targets=random_targets(10, 7), reference_target="T1")
         sc = fleet_scenario(3, duration_s=plots / 80.0, config=config, nav_rate_hz=nav_hz)
-    write_fleet_tables(folder, sc.plots, sc.navigation, sc.sensors, sc.platforms, sc.references, fmt="parquet")
-    for name, keys in (("plots", [("time_s", "ascending")]),
-                       ("navigation", [("platform", "ascending"), ("time_s", "ascending")])):
+    write_fleet_tables(
+        folder, sc.plots, sc.navigation, sc.sensors, sc.platforms, sc.references, fmt="parquet"
+    )
+    for name, keys in (
+        ("plots", [("time_s", "ascending")]),
+        ("navigation", [("platform", "ascending"), ("time_s", "ascending")]),
+    ):
         table = pq.read_table(folder / f"{name}.parquet").sort_by(keys)
         pq.write_table(table, folder / f"{name}.parquet", row_group_size=ROW_GROUP)
     return {"plots": int(sc.plots["time"].size), "navigation_rows": int(sc.navigation["time"].size)}
@@ -106,11 +110,15 @@ def tile(base: Path, folder: Path, copies: int, nav_hz: float) -> dict:
     counts = {"plots": 0, "navigation_rows": 0}
 
     def shifted(table, k: int):
-        table = table.set_column(table.schema.get_field_index("time_s"), "time_s",
-                                 pc.add(table["time_s"], pa.scalar(k * shift)))
+        table = table.set_column(
+            table.schema.get_field_index("time_s"), "time_s", pc.add(table["time_s"], pa.scalar(k * shift))
+        )
         if "target" in table.schema.names:
-            table = table.set_column(table.schema.get_field_index("target"), "target",
-                                     pc.binary_join_element_wise(table["target"].cast(pa.string()), f"_{k}", ""))
+            table = table.set_column(
+                table.schema.get_field_index("target"),
+                "target",
+                pc.binary_join_element_wise(table["target"].cast(pa.string()), f"_{k}", ""),
+            )
         return table
 
     for name in ("plots", "reference"):
@@ -167,19 +175,44 @@ def run(mode: str, folder: Path, partition_s: float, out: Path) -> None:
     else:
         solve_seconds = None
         source = ParquetSource(folder, FILE_COLUMNS)
-        result = solve_batch_partitioned(source, partition_s=partition_s, cache=10**6 if mode == "cached" else 0,
-                                         spill=False if mode == "reread" else None)
+        result = solve_batch_partitioned(
+            source,
+            partition_s=partition_s,
+            cache=10**6 if mode == "cached" else 0,
+            spill=False if mode == "reread" else None,
+        )
     seconds = time.perf_counter() - t
     rss = peak_mib()
     np.savez(out.with_suffix(".npz"), estimate=result.estimate, sigma=result.sigma)
-    out.write_text(json.dumps({"seconds": seconds, "peak_mib": rss, "iterations": int(result.iterations),
-                               "solve_seconds": solve_seconds}))
+    out.write_text(
+        json.dumps(
+            {
+                "seconds": seconds,
+                "peak_mib": rss,
+                "iterations": int(result.iterations),
+                "solve_seconds": solve_seconds,
+            }
+        )
+    )
 
 
 def measure(mode: str, folder: Path, partition_s: float, work: Path) -> dict:
     out = work / f"{mode}-{folder.name}.json"
-    subprocess.run([sys.executable, __file__, "--run", mode, "--folder", str(folder), "--partition-s",
-                    str(partition_s), "--out", str(out)], check=True)
+    subprocess.run(
+        [
+            sys.executable,
+            __file__,
+            "--run",
+            mode,
+            "--folder",
+            str(folder),
+            "--partition-s",
+            str(partition_s),
+            "--out",
+            str(out),
+        ],
+        check=True,
+    )
     figures = json.loads(out.read_text())
     with np.load(out.with_suffix(".npz")) as data:
         figures["estimate"], figures["sigma"] = data["estimate"], data["sigma"]
@@ -194,13 +227,22 @@ def relative(a: np.ndarray, b: np.ndarray) -> float:
 def main(argv=None) -> dict:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--sizes", type=int, nargs="+", default=[80_000, 1_000_000], help="plots per problem")
-    parser.add_argument("--nav-hz", type=float, default=80.0, help="ship navigation rate for sizes above 80 000")
+    parser.add_argument(
+        "--nav-hz", type=float, default=80.0, help="ship navigation rate for sizes above 80 000"
+    )
     parser.add_argument("--partition-s", type=float, default=200.0, help="partition length, s")
     parser.add_argument("--batch-max", type=int, default=400_000, help="largest size also run in memory")
-    parser.add_argument("--archives", help="keep the prepared archives in this folder (archive-<size>/) and reuse "
-                        "them in later runs (default: a temporary folder, removed)")
-    parser.add_argument("--modes", nargs="+", choices=("batch", "cached", "bounded", "reread"),
-                        help="runs to make (default: batch, cached, bounded; bounded only above --batch-max)")
+    parser.add_argument(
+        "--archives",
+        help="keep the prepared archives in this folder (archive-<size>/) and reuse "
+        "them in later runs (default: a temporary folder, removed)",
+    )
+    parser.add_argument(
+        "--modes",
+        nargs="+",
+        choices=("batch", "cached", "bounded", "reread"),
+        help="runs to make (default: batch, cached, bounded; bounded only above --batch-max)",
+    )
     parser.add_argument("--json", help="write the figures to this file")
     parser.add_argument("--run", help=argparse.SUPPRESS)
     parser.add_argument("--folder", help=argparse.SUPPRESS)
@@ -226,7 +268,9 @@ def main(argv=None) -> dict:
                 modes = [m for m in ("batch", "cached", "bounded", "reread") if m in args.modes]
             runs = {m: measure(m, folder, args.partition_s, work) for m in modes}
             base = runs.get("batch")
-            print(f"{info['plots']} plots, {info['navigation_rows']} navigation rows, load {os.getloadavg()[0]:.1f}")
+            print(
+                f"{info['plots']} plots, {info['navigation_rows']} navigation rows, load {os.getloadavg()[0]:.1f}"
+            )
             for m, r in runs.items():
                 line = f"  {m:8s} {r['seconds']:8.2f} s {r['peak_mib']:8.0f} MiB peak  {r['iterations']} iterations"
                 if r.get("solve_seconds") is not None:
@@ -237,11 +281,17 @@ def main(argv=None) -> dict:
                     r["time_ratio"] = r["seconds"] / base["seconds"]
                     r["memory_ratio"] = r["peak_mib"] / base["peak_mib"]
                     r["solve_ratio"] = r["seconds"] / base["solve_seconds"]
-                    line += (f"  x{r['time_ratio']:.2f} time (x{r['solve_ratio']:.2f} of solve_batch alone), x{r['memory_ratio']:.2f} memory of batch; estimates "
-                             f"{r['estimate_rel']:.1e}, sigmas {r['sigma_rel']:.1e} relative")
+                    line += (
+                        f"  x{r['time_ratio']:.2f} time (x{r['solve_ratio']:.2f} of solve_batch alone), x{r['memory_ratio']:.2f} memory of batch; estimates "
+                        f"{r['estimate_rel']:.1e}, sigmas {r['sigma_rel']:.1e} relative"
+                    )
                 print(line, flush=True)
-            report["sizes"][size] = {**info, **{m: {k: v for k, v in r.items() if k not in ("estimate", "sigma")}
-                                                for m, r in runs.items()}}
+            report["sizes"][size] = {
+                **info,
+                **{
+                    m: {k: v for k, v in r.items() if k not in ("estimate", "sigma")} for m, r in runs.items()
+                },
+            }
     if args.json:
         Path(args.json).write_text(json.dumps(report, indent=2))
     return report

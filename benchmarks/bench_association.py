@@ -28,7 +28,13 @@ import time
 
 import numpy as np
 
-from registration.fleet import associate_and_register, association_scenario, association_scores, build_problem, solve_batch
+from registration.fleet import (
+    associate_and_register,
+    association_scenario,
+    association_scores,
+    build_problem,
+    solve_batch,
+)
 
 #: Ten radars: platform, noise sigma (range m, bearing rad, elevation rad; NaN = not measured),
 #: period (s), time offset (s), lever arm (m, deck frame).
@@ -53,11 +59,22 @@ def main(argv=None) -> dict:
     parser.add_argument("--json", help="write the figures to this file")
     args = parser.parse_args(argv)
 
-    sim = association_scenario(args.targets, crossing=True, angle_bias=np.radians(2.0), p_missed=0.1,
-                               clutter_per_scan=1.0, duration_s=args.duration, seed=5, sensors=SENSORS_10)
+    sim = association_scenario(
+        args.targets,
+        crossing=True,
+        angle_bias=np.radians(2.0),
+        p_missed=0.1,
+        clutter_per_scan=1.0,
+        duration_s=args.duration,
+        seed=5,
+        sensors=SENSORS_10,
+    )
     sc = sim.scenario
-    out = {"plots": int(sim.plots["time"].size), "real_plots": int(np.count_nonzero(sim.true_target != "")),
-           "load_average_before": os.getloadavg()}
+    out = {
+        "plots": int(sim.plots["time"].size),
+        "real_plots": int(np.count_nonzero(sim.true_target != "")),
+        "load_average_before": os.getloadavg(),
+    }
     t0 = time.perf_counter()
     base = solve_batch(build_problem(sim.labelled_plots, sc.sensors, sc.navigation, sc.platforms))
     out["baseline_true_ids_s"] = time.perf_counter() - t0

@@ -39,14 +39,24 @@ def _records(n: int, rng) -> list:
     spec = gen.Cat_048_1_32
     out = []
     for k in range(n):
-        items = {"010": (("SAC", 1), ("SIC", 2)), "140": int(36000 * 128 + k * 13), "020": (0b1010000,),
-                 "040": (("RHO", int(rng.integers(1, 60000))), ("THETA", int(rng.integers(0, 65536)))),
-                 "070": (("V", 0), ("G", 0), ("L", 0), 0, ("MODE3A", int(rng.integers(0, 4096)))),
-                 "090": 0x0123, "130": {"SRL": 3, "SAM": 200, "APD": 7}, "220": int(rng.integers(0, 2**24)),
-                 "240": 0x123456789ABC, "250": [0x1122334455667788], "161": k % 4096, "042": 0x01020304,
-                 "200": 0x0A0B0C0D, "170": (0x40,)}
+        items = {
+            "010": (("SAC", 1), ("SIC", 2)),
+            "140": int(36000 * 128 + k * 13),
+            "020": (0b1010000,),
+            "040": (("RHO", int(rng.integers(1, 60000))), ("THETA", int(rng.integers(0, 65536)))),
+            "070": (("V", 0), ("G", 0), ("L", 0), 0, ("MODE3A", int(rng.integers(0, 4096)))),
+            "090": 0x0123,
+            "130": {"SRL": 3, "SAM": 200, "APD": 7},
+            "220": int(rng.integers(0, 2**24)),
+            "240": 0x123456789ABC,
+            "250": [0x1122334455667788],
+            "161": k % 4096,
+            "042": 0x01020304,
+            "200": 0x0A0B0C0D,
+            "170": (0x40,),
+        }
         out.append(spec.cv_record.create(items))
-    return [spec.create(out[i:i + PER_BLOCK]).unparse().to_bytes() for i in range(0, n, PER_BLOCK)]
+    return [spec.create(out[i : i + PER_BLOCK]).unparse().to_bytes() for i in range(0, n, PER_BLOCK)]
 
 
 def _pcap(blocks: list) -> bytes:
@@ -54,9 +64,13 @@ def _pcap(blocks: list) -> bytes:
     head = bytes(12) + b"\x08\x00"
     for k, block in enumerate(blocks):
         udp = struct.pack("!HHHH", 40000, 8600, 8 + len(block), 0) + block
-        ip = struct.pack("!BBHHHBBH4s4s", 0x45, 0, 20 + len(udp), k & 0xFFFF, 0x4000, 64, 17, 0, bytes(4), bytes(4))
+        ip = struct.pack(
+            "!BBHHHBBH4s4s", 0x45, 0, 20 + len(udp), k & 0xFFFF, 0x4000, 64, 17, 0, bytes(4), bytes(4)
+        )
         frame = head + ip + udp
-        out.append(struct.pack("<IIII", 1714557600 + k // 100, (k % 100) * 10000, len(frame), len(frame)) + frame)
+        out.append(
+            struct.pack("<IIII", 1714557600 + k // 100, (k % 100) * 10000, len(frame), len(frame)) + frame
+        )
     return b"".join(out)
 
 
@@ -70,8 +84,8 @@ def _best(fn, repeat: int) -> float:
 
 
 def _libasterix_rate(blocks: list, n_records: int) -> float:
-    from asterix.base import Bits, RawDatablock
     import asterix.generated as gen
+    from asterix.base import Bits, RawDatablock
 
     data = b"".join(blocks[: max(1, n_records // PER_BLOCK)])
     start = time.perf_counter()
@@ -91,14 +105,26 @@ def main() -> None:
     distinct = _records(2000, rng)
     blocks = (distinct * (args.records // 2000 + 1))[: args.records // PER_BLOCK]
     n = len(blocks) * PER_BLOCK
-    sites = pd.DataFrame({"sensor": ["R1"], "sac": [1], "sic": [2], "lat_deg": [45.0], "lon_deg": [5.0],
-                          "alt_m": [100.0], "sigma_range_m": [30.0], "sigma_bearing_deg": [0.1]})
+    sites = pd.DataFrame(
+        {
+            "sensor": ["R1"],
+            "sac": [1],
+            "sic": [2],
+            "lat_deg": [45.0],
+            "lon_deg": [5.0],
+            "alt_m": [100.0],
+            "sigma_range_m": [30.0],
+            "sigma_bearing_deg": [0.1],
+        }
+    )
     with tempfile.TemporaryDirectory() as folder:
         raw, pcap = Path(folder) / "plots.ast", Path(folder) / "plots.pcap"
         raw.write_bytes(b"".join(blocks))
         pcap.write_bytes(_pcap(blocks))
-        print(f"{n} CAT048 records, {len(blocks)} data blocks: raw {raw.stat().st_size / 1e6:.1f} MB, "
-              f"pcap {pcap.stat().st_size / 1e6:.1f} MB")
+        print(
+            f"{n} CAT048 records, {len(blocks)} data blocks: raw {raw.stat().st_size / 1e6:.1f} MB, "
+            f"pcap {pcap.stat().st_size / 1e6:.1f} MB"
+        )
         lib = _libasterix_rate(blocks, args.lib_records)
         best = {}
         for name, path in (("raw", raw), ("pcap", pcap)):
@@ -109,6 +135,7 @@ def main() -> None:
         print(f"libasterix           {lib:12,.0f} records/s ({args.lib_records} records)")
         for what in ("decode_file", "import_asterix"):
             print(f"ratio {what} (raw) / libasterix: {n / best['raw', what] / lib:,.0f}")
+
 
 if __name__ == "__main__":
     main()

@@ -33,10 +33,16 @@ from registration.io.files.tablefile import write_frame
 
 def _files(folder: Path, rows: int) -> dict[str, Path]:
     rng = np.random.default_rng(0)
-    plots = pd.DataFrame({"time_s": np.arange(rows) * 0.25, "sensor": rng.choice(["A-3D", "B-3D", "C-2D"], rows),
-                          "target": rng.choice([f"T{k}" for k in range(1, 6)], rows),
-                          "range_m": rng.uniform(1e3, 1e5, rows), "bearing_deg": rng.uniform(-180, 180, rows),
-                          "elevation_deg": np.where(rng.random(rows) < 0.3, np.nan, rng.uniform(-5, 30, rows))})
+    plots = pd.DataFrame(
+        {
+            "time_s": np.arange(rows) * 0.25,
+            "sensor": rng.choice(["A-3D", "B-3D", "C-2D"], rows),
+            "target": rng.choice([f"T{k}" for k in range(1, 6)], rows),
+            "range_m": rng.uniform(1e3, 1e5, rows),
+            "bearing_deg": rng.uniform(-180, 180, rows),
+            "elevation_deg": np.where(rng.random(rows) < 0.3, np.nan, rng.uniform(-5, 30, rows)),
+        }
+    )
     table = pd.DataFrame({f"c{k}": rng.normal(size=rows) * 10 ** (k % 5) for k in range(18)})
     table.insert(0, "time_s", np.arange(rows) * 1.0)
     out = {"plots (quoted ids)": folder / "plots.csv", "recorded table (numbers)": folder / "table.csv"}
@@ -54,8 +60,9 @@ def _count_only(path: Path) -> int:
 
 
 CASES = {
-    "pandas chunks": lambda p: sum(len(f) for f in pd.read_csv(p, chunksize=20000, index_col=False,
-                                                               skipinitialspace=True)),
+    "pandas chunks": lambda p: sum(
+        len(f) for f in pd.read_csv(p, chunksize=20000, index_col=False, skipinitialspace=True)
+    ),
     "blocks + field count": lambda p: sum(len(f) for f in read_csv_blocks(p)),
     "read + field count": _count_only,
 }
@@ -76,8 +83,10 @@ def main() -> None:
                     cpu[case].append(time.process_time() - t)
             size = path.stat().st_size / 2**20
             for case, v in cpu.items():
-                print(f"{name}, {args.rows} rows, {size:.0f} MiB: {case}: CPU best {min(v):.3f} s, "
-                      f"median {np.median(v):.3f} s")
+                print(
+                    f"{name}, {args.rows} rows, {size:.0f} MiB: {case}: CPU best {min(v):.3f} s, "
+                    f"median {np.median(v):.3f} s"
+                )
 
 
 if __name__ == "__main__":

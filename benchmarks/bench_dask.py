@@ -33,7 +33,10 @@ def main() -> None:
             res = run_montecarlo_chunked(a.runs, 0, client=client, **kw)
             times[f"{workers} worker(s), compute"] = time.perf_counter() - started
         times[f"{workers} worker(s), with cluster start/stop"] = time.perf_counter() - t0
-        same = all(np.array_equal(getattr(ref, k), getattr(res, k)) for k in ("rmse", "crlb_sigma", "filter_sigma", "nees", "nis"))
+        same = all(
+            np.array_equal(getattr(ref, k), getattr(res, k))
+            for k in ("rmse", "crlb_sigma", "filter_sigma", "nees", "nis")
+        )
         assert same, f"{workers} workers: statistics differ from the in-process run"
     print(f"Monte Carlo: {a.runs} runs x {a.steps} steps, chunks of {a.chunk_runs} runs")
     base = times["in-process"]

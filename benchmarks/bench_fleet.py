@@ -49,9 +49,9 @@ from registration.fleet import BatchOptions, fleet_scenario, solve_batch
 from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.initial import initial_coefficients
 from registration.fleet.batch.normal import evaluate, make_design
+from registration.fleet.batch.solver import fit
 from registration.fleet.simulation.scenario import SHIPS, SITE, TARGETS, FleetConfig
 from registration.fleet.simulation.tracks import Circle, Line
-from registration.fleet.batch.solver import fit
 
 SENSORS_8 = {
     "A-3D": ("A", (25.0, np.radians(0.15), np.radians(0.2)), 1.0, 0.0, (0.0, 20.0, 25.0)),
@@ -63,10 +63,14 @@ SENSORS_8 = {
     "S-2D": ("S", (30.0, np.radians(0.1), np.nan), 1.0, 0.47, (0.0, 0.0, 10.0)),
     "S-3D": ("S", (30.0, np.radians(0.1), np.radians(0.1)), 1.0, 0.93, (0.0, 5.0, 12.0)),
 }
-TARGETS_10 = {**TARGETS,
-              "T6": Line(40e3, -40e3, np.radians(300.0), 200.0, 6000.0), "T7": Circle(-25e3, 5e3, 6e3, 120.0, 2000.0, 1.0),
-              "T8": Line(-50e3, -10e3, np.radians(80.0), 15.0, 5.0), "T9": Circle(30e3, 30e3, 12e3, 230.0, 9000.0, 5.0),
-              "T10": Line(0.0, -45e3, np.radians(10.0), 250.0, 10000.0)}
+TARGETS_10 = {
+    **TARGETS,
+    "T6": Line(40e3, -40e3, np.radians(300.0), 200.0, 6000.0),
+    "T7": Circle(-25e3, 5e3, 6e3, 120.0, 2000.0, 1.0),
+    "T8": Line(-50e3, -10e3, np.radians(80.0), 15.0, 5.0),
+    "T9": Circle(30e3, 30e3, 12e3, 230.0, 9000.0, 5.0),
+    "T10": Line(0.0, -45e3, np.radians(10.0), 250.0, 10000.0),
+}
 CONFIG = FleetConfig(SHIPS, SITE, SENSORS_8, TARGETS_10, "T1")
 #: Both solvers reached the same optimum when their states differ by less than this many batch
 #: sigmas and their sums of squares by less than this (chi-square units).
@@ -87,16 +91,18 @@ def scipy_problem(design, free):
     state_col = np.full(design.n_state + 1, -1)
     state_col[free] = np.arange(free.size)
     coef_cols = col_of_coef[(design.block[plot_of_row, None] * q + np.arange(q)[None, :])]  # (R, q)
-    state_cols = state_col[np.concatenate([design.att_state, design.bias_state], axis=1)[plot_of_row]]  # (R, 6)
+    state_cols = state_col[
+        np.concatenate([design.att_state, design.bias_state], axis=1)[plot_of_row]
+    ]  # (R, 6)
     n_ref = design.ref_p.shape[0]
     ref_cols = col_of_coef[blk.ref_block[:, None] * q + np.arange(q)[None, :]]  # (R', q)
     n_cols = free.size + active.size
 
     def unpack(theta):
         x = np.zeros(design.n_state)
-        x[free] = theta[:free.size]
+        x[free] = theta[: free.size]
         c = np.zeros(blk.n_blocks * q)
-        c[active] = theta[free.size:]
+        c[active] = theta[free.size :]
         return x, c.reshape(blk.n_blocks, blk.n_coef, 3)
 
     cache = {}
@@ -109,13 +115,15 @@ def scipy_problem(design, free):
     def jacobian(theta):
         ev = cache["ev"] if np.array_equal(cache.get("theta"), theta) else evaluate(design, *unpack(theta))
         Z = ev.Z.reshape(-1, ev.Z.shape[2])[rows]  # (R, q + 7)
-        values = [Z[:, :q], Z[:, q:q + 6]]
+        values = [Z[:, :q], Z[:, q : q + 6]]
         cols = [coef_cols, state_cols]
         r_idx = [np.repeat(np.arange(rows.size), q), np.repeat(np.arange(rows.size), 6)]
         # reference residuals (y - p) w: d/dc = -basis w (per axis)
         ref_rows = rows.size + np.arange(3 * n_ref).reshape(n_ref, 3)
         for a in range(3):
-            vals = -(blk.ref_basis[:, :, None] * design.ref_weight[:, None, None] * np.eye(3)[a][None, None, :]).reshape(n_ref, q)
+            vals = -(
+                blk.ref_basis[:, :, None] * design.ref_weight[:, None, None] * np.eye(3)[a][None, None, :]
+            ).reshape(n_ref, q)
             values.append(vals)
             cols.append(ref_cols)
             r_idx.append(np.repeat(ref_rows[:, a], q))
@@ -130,7 +138,9 @@ def scipy_problem(design, free):
 
 def main(argv=None) -> dict:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--duration", type=float, default=1000.0, help="seconds of data (1 Hz per sensor and target)")
+    parser.add_argument(
+        "--duration", type=float, default=1000.0, help="seconds of data (1 Hz per sensor and target)"
+    )
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--json", help="write the figures to this file")
     args = parser.parse_args(argv)
@@ -141,29 +151,67 @@ def main(argv=None) -> dict:
     solve_batch(problem, options)  # warm-up: compiled library, scipy.stats import
     t_batch = min(_timed(lambda: solve_batch(problem, options))[1] for _ in range(args.repeats))
     result, _ = _timed(lambda: solve_batch(problem, options))
-    fitted, t_fit = min((_timed(lambda: fit(problem, options)) for _ in range(args.repeats)), key=lambda r: r[1])
+    fitted, t_fit = min(
+        (_timed(lambda: fit(problem, options)) for _ in range(args.repeats)), key=lambda r: r[1]
+    )
 
     design = make_design(problem, make_blocks(problem, options.window_s, options.degree))
     free = problem.layout.free
     residuals, jacobian, unpack = scipy_problem(design, free)
-    theta0 = np.concatenate([np.zeros(free.size), initial_coefficients(design).reshape(-1)[
-        np.flatnonzero(np.repeat(design.blocks.coef_mask, 3, axis=1).reshape(-1))]])
+    theta0 = np.concatenate(
+        [
+            np.zeros(free.size),
+            initial_coefficients(design).reshape(-1)[
+                np.flatnonzero(np.repeat(design.blocks.coef_mask, 3, axis=1).reshape(-1))
+            ],
+        ]
+    )
     cost_batch = float(fitted.evaluation.cost)
-    out = {"plots": problem.n_plots, "states": int(free.size), "windows": design.blocks.n_blocks,
-           "load_average_before": os.getloadavg(), "OPENBLAS_NUM_THREADS": os.environ.get("OPENBLAS_NUM_THREADS"),
-           "solve_batch_s": t_batch, "solver_only_s": t_fit, "batch_iterations": fitted.iterations,
-           "cost_batch": cost_batch, "least_squares": []}
+    out = {
+        "plots": problem.n_plots,
+        "states": int(free.size),
+        "windows": design.blocks.n_blocks,
+        "load_average_before": os.getloadavg(),
+        "OPENBLAS_NUM_THREADS": os.environ.get("OPENBLAS_NUM_THREADS"),
+        "solve_batch_s": t_batch,
+        "solver_only_s": t_fit,
+        "batch_iterations": fitted.iterations,
+        "cost_batch": cost_batch,
+        "least_squares": [],
+    }
     for tol, lsmr_tol in ((1e-8, None), (1e-8, 1e-10), (1e-10, 1e-10)):
         tr_options = {} if lsmr_tol is None else {"atol": lsmr_tol, "btol": lsmr_tol}
-        ls, t_ls = _timed(lambda: least_squares(residuals, theta0, jac=jacobian, method="trf", tr_solver="lsmr",
-                                                x_scale="jac", ftol=tol, xtol=tol, gtol=tol, tr_options=tr_options,
-                                                max_nfev=MAX_NFEV))
+        ls, t_ls = _timed(
+            lambda: least_squares(
+                residuals,
+                theta0,
+                jac=jacobian,
+                method="trf",
+                tr_solver="lsmr",
+                x_scale="jac",
+                ftol=tol,
+                xtol=tol,
+                gtol=tol,
+                tr_options=tr_options,
+                max_nfev=MAX_NFEV,
+            )
+        )
         x_ls, _ = unpack(ls.x)
-        attempt = {"tolerance": tol, "lsmr_tolerance": lsmr_tol, "seconds": t_ls, "nfev": int(ls.nfev),
-                   "status": int(ls.status), "cost": float(2 * ls.cost),
-                   "max_state_difference_in_sigma": float(np.abs((x_ls - result.estimate)[free] / result.sigma[free]).max())}
-        attempt["same_optimum"] = bool(attempt["max_state_difference_in_sigma"] < SAME_OPTIMUM_SIGMA
-                                       and abs(attempt["cost"] - cost_batch) < SAME_OPTIMUM_COST)
+        attempt = {
+            "tolerance": tol,
+            "lsmr_tolerance": lsmr_tol,
+            "seconds": t_ls,
+            "nfev": int(ls.nfev),
+            "status": int(ls.status),
+            "cost": float(2 * ls.cost),
+            "max_state_difference_in_sigma": float(
+                np.abs((x_ls - result.estimate)[free] / result.sigma[free]).max()
+            ),
+        }
+        attempt["same_optimum"] = bool(
+            attempt["max_state_difference_in_sigma"] < SAME_OPTIMUM_SIGMA
+            and abs(attempt["cost"] - cost_batch) < SAME_OPTIMUM_COST
+        )
         out["least_squares"].append(attempt)
         print("least_squares", attempt, flush=True)
         if attempt["same_optimum"]:

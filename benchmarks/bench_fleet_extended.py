@@ -93,9 +93,12 @@ PER_CALL = ("evaluate", "normal_equations", "reduce")
 
 def problems(duration_s: float, model_only: bool, inner: bool = True) -> dict:
     """The problems of the modes (module docstring), by name."""
-    out = {"base": fleet_scenario(SEED, duration_s=duration_s, config=CONFIG).problem(),
-           "gain+time": fleet_scenario(SEED, duration_s=duration_s, config=CONFIG, range_gain=RANGE_GAIN,
-                                       time_bias=TIME_BIAS_S).problem()}
+    out = {
+        "base": fleet_scenario(SEED, duration_s=duration_s, config=CONFIG).problem(),
+        "gain+time": fleet_scenario(
+            SEED, duration_s=duration_s, config=CONFIG, range_gain=RANGE_GAIN, time_bias=TIME_BIAS_S
+        ).problem(),
+    }
     if inner:  # the gain+time problem without its plots within INNER_MARGIN_S of the navigation's ends
         prob = out["gain+time"]
         edge = (prob.time < INNER_MARGIN_S) | (prob.time > duration_s - INNER_MARGIN_S)
@@ -126,6 +129,7 @@ class Counter:
             if name == "levenberg_marquardt" and isinstance(value, tuple) and len(value) > 3:
                 self.lm_iterations += int(value[3])  # (ev, normal, converged, iterations, history)
             return value
+
         wrapper.__wrapped__ = fn
         return wrapper
 
@@ -158,10 +162,17 @@ def run_once(problem, options) -> dict:
         t0, c0 = time.perf_counter(), time.process_time()
         result = solve_batch(problem, options)
         seconds, cpu = time.perf_counter() - t0, time.process_time() - c0
-    return {"seconds": seconds, "cpu_seconds": cpu, "calls": counter.calls, "call_seconds": counter.seconds,
-            "lm_iterations": counter.lm_iterations, "reported_iterations": int(result.iterations),
-            "converged": bool(result.converged), "states": int(result.layout.n),
-            "excluded_plots": int(sum(e.n_plots for e in result.excluded))}
+    return {
+        "seconds": seconds,
+        "cpu_seconds": cpu,
+        "calls": counter.calls,
+        "call_seconds": counter.seconds,
+        "lm_iterations": counter.lm_iterations,
+        "reported_iterations": int(result.iterations),
+        "converged": bool(result.converged),
+        "states": int(result.layout.n),
+        "excluded_plots": int(sum(e.n_plots for e in result.excluded)),
+    }
 
 
 def peak_memory(problem, options) -> float:
@@ -191,12 +202,22 @@ def summarise(name: str, runs: list, n_plots: int) -> dict:
     """Best-of and median figures of one mode's runs (the first run's counts: they do not vary)."""
     t = [r["seconds"] for r in runs]
     best = min(runs, key=lambda r: r["seconds"])
-    out = {"mode": name, "plots": n_plots, "states": best["states"], "best_s": min(t), "median_s": statistics.median(t),
-           "all_s": t, "us_per_plot_best": 1e6 * min(t) / n_plots, "lm_calls": best["calls"]["levenberg_marquardt"],
-           "fit_attempts": best["calls"]["determined_design"], "lm_iterations": best["lm_iterations"],
-           "reported_iterations": best["reported_iterations"], "converged": best["converged"],
-           "excluded_plots": best["excluded_plots"],
-           "fit_best_s": min(r["call_seconds"]["fit"] for r in runs)}
+    out = {
+        "mode": name,
+        "plots": n_plots,
+        "states": best["states"],
+        "best_s": min(t),
+        "median_s": statistics.median(t),
+        "all_s": t,
+        "us_per_plot_best": 1e6 * min(t) / n_plots,
+        "lm_calls": best["calls"]["levenberg_marquardt"],
+        "fit_attempts": best["calls"]["determined_design"],
+        "lm_iterations": best["lm_iterations"],
+        "reported_iterations": best["reported_iterations"],
+        "converged": best["converged"],
+        "excluded_plots": best["excluded_plots"],
+        "fit_best_s": min(r["call_seconds"]["fit"] for r in runs),
+    }
     out["cpu_best_s"] = min(r["cpu_seconds"] for r in runs)
     out["outside_fit_best_s"] = min(r["seconds"] - r["call_seconds"]["fit"] for r in runs)
     out["best_s_per_lm_iteration"] = out["best_s"] / max(out["lm_iterations"], 1)
@@ -222,10 +243,14 @@ def print_table(rows: list) -> None:
 def ratios(rows: dict, mode: str, base: str = "base") -> dict:
     """mode over base: wall time (best, median), per LM iteration, per call and call counts."""
     a, b = rows[mode], rows[base]
-    out = {"best": a["best_s"] / b["best_s"], "median": a["median_s"] / b["median_s"], "cpu_best": a["cpu_best_s"] / b["cpu_best_s"],
-           "fit_best": a["fit_best_s"] / b["fit_best_s"],
-           "lm_iterations": a["lm_iterations"] / max(b["lm_iterations"], 1),
-           "per_lm_iteration": a["best_s_per_lm_iteration"] / b["best_s_per_lm_iteration"]}
+    out = {
+        "best": a["best_s"] / b["best_s"],
+        "median": a["median_s"] / b["median_s"],
+        "cpu_best": a["cpu_best_s"] / b["cpu_best_s"],
+        "fit_best": a["fit_best_s"] / b["fit_best_s"],
+        "lm_iterations": a["lm_iterations"] / max(b["lm_iterations"], 1),
+        "per_lm_iteration": a["best_s_per_lm_iteration"] / b["best_s_per_lm_iteration"],
+    }
     for fn in PER_CALL:
         out[f"{fn}_per_call"] = a[f"{fn}_ms_per_call"] / b[f"{fn}_ms_per_call"]
         out[f"{fn}_calls"] = a[f"{fn}_calls"] / max(b[f"{fn}_calls"], 1)
@@ -236,7 +261,9 @@ def ratios(rows: dict, mode: str, base: str = "base") -> dict:
 
 def main(argv=None) -> dict:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--duration", type=float, default=1000.0, help="seconds of data (1 Hz per sensor and target)")
+    parser.add_argument(
+        "--duration", type=float, default=1000.0, help="seconds of data (1 Hz per sensor and target)"
+    )
     parser.add_argument("--repeats", type=int, default=5, help="timed solves per mode (alternating)")
     parser.add_argument("--no-model-only", action="store_true", help="leave out the model-only mode")
     parser.add_argument("--no-inner", action="store_true", help="leave out the gain+time-inner mode")
@@ -249,9 +276,12 @@ def main(argv=None) -> dict:
     options = BatchOptions()
     probs = problems(args.duration, not args.no_model_only, not args.no_inner)
     names = list(probs)
-    print(f"registration {getattr(registration, '__version__', '?')}, numpy {np.__version__}, "
-          f"OPENBLAS_NUM_THREADS={os.environ.get('OPENBLAS_NUM_THREADS')}, cpus {os.cpu_count()}, "
-          f"load average before {os.getloadavg()}", flush=True)
+    print(
+        f"registration {getattr(registration, '__version__', '?')}, numpy {np.__version__}, "
+        f"OPENBLAS_NUM_THREADS={os.environ.get('OPENBLAS_NUM_THREADS')}, cpus {os.cpu_count()}, "
+        f"load average before {os.getloadavg()}",
+        flush=True,
+    )
     for name in names:  # warm-up: compiled library, lazy imports, allocator
         solve_batch(probs[name], options)
     runs = {name: [] for name in names}
@@ -260,23 +290,32 @@ def main(argv=None) -> dict:
         for name in order:
             r = run_once(probs[name], options)
             runs[name].append(r)
-            print(f"repeat {k + 1} {name:15s} {r['seconds']:7.3f} s (cpu {r['cpu_seconds']:6.3f} s)  LM calls {r['calls']['levenberg_marquardt']} "
-                  f"iterations {r['lm_iterations']}  evaluate {r['calls']['evaluate']}  "
-                  f"normal {r['calls']['normal_equations']}  reduce {r['calls']['reduce']}", flush=True)
+            print(
+                f"repeat {k + 1} {name:15s} {r['seconds']:7.3f} s (cpu {r['cpu_seconds']:6.3f} s)  LM calls {r['calls']['levenberg_marquardt']} "
+                f"iterations {r['lm_iterations']}  evaluate {r['calls']['evaluate']}  "
+                f"normal {r['calls']['normal_equations']}  reduce {r['calls']['reduce']}",
+                flush=True,
+            )
     rows = {name: summarise(name, runs[name], probs[name].n_plots) for name in names}
     if not args.no_memory:
         for name in names:
             rows[name]["peak_memory_mb"] = peak_memory(probs[name], options)
     print_table(list(rows.values()))
-    out = {"load_average_after": os.getloadavg(), "limit": LIMIT, "modes": rows,
-           "ratios": {name: ratios(rows, name) for name in names if name != "base"}}
+    out = {
+        "load_average_after": os.getloadavg(),
+        "limit": LIMIT,
+        "modes": rows,
+        "ratios": {name: ratios(rows, name) for name in names if name != "base"},
+    }
     for name, rat in out["ratios"].items():
         print(f"\nratios {name} / base:")
         for k, v in rat.items():
             print(f"  {k:28s} {v:7.3f}")
     ratio = out["ratios"]["gain+time"]["best"]
-    print(f"\nrequirement: gain+time / base = {ratio:.3f} (best of {args.repeats}; median "
-          f"{out['ratios']['gain+time']['median']:.3f}), limit {LIMIT}: {'met' if ratio <= LIMIT else 'NOT met'}")
+    print(
+        f"\nrequirement: gain+time / base = {ratio:.3f} (best of {args.repeats}; median "
+        f"{out['ratios']['gain+time']['median']:.3f}), limit {LIMIT}: {'met' if ratio <= LIMIT else 'NOT met'}"
+    )
     print(f"load average after {out['load_average_after']}")
     if args.profile:
         for name in names:

@@ -78,13 +78,19 @@ def _two_ship(repeats: int) -> dict:
     n_plots = 2 * len(sc.data["time"])
     _, t_reg = _best(lambda: register(sc.data, config), repeats)
     _, t_fleet = _best(lambda: register_online(**tables, options=options, residuals=False), repeats)
-    return {"plots": n_plots, "register_us_per_plot": 1e6 * t_reg / n_plots,
-            "fleet_online_us_per_plot": 1e6 * t_fleet / n_plots, "ratio_fleet_over_register": t_fleet / t_reg}
+    return {
+        "plots": n_plots,
+        "register_us_per_plot": 1e6 * t_reg / n_plots,
+        "fleet_online_us_per_plot": 1e6 * t_fleet / n_plots,
+        "ratio_fleet_over_register": t_fleet / t_reg,
+    }
 
 
 def main(argv=None) -> dict:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--duration", type=float, default=1000.0, help="seconds of data (1 Hz per sensor and target)")
+    parser.add_argument(
+        "--duration", type=float, default=1000.0, help="seconds of data (1 Hz per sensor and target)"
+    )
     parser.add_argument("--repeats", type=int, default=3)
     args = parser.parse_args(argv)
 
@@ -99,15 +105,18 @@ def main(argv=None) -> dict:
     batch, t_batch = _best(lambda: solve_batch(sc.problem(), BatchOptions()), args.repeats)
     free = batch.layout.free
     out = {
-        "plots": n, "epochs": int(whole.result().history.time.size), "linearisations": whole.n_linearisations,
+        "plots": n,
+        "epochs": int(whole.result().history.time.size),
+        "linearisations": whole.n_linearisations,
         "load_average_before": load_before,
         "streaming_1s_chunks_us_per_plot": 1e6 * t_stream / n,
         "whole_table_us_per_plot": 1e6 * t_whole / n,
         "solve_batch_us_per_plot": 1e6 * t_batch / n,
         "ratio_online_over_batch": t_whole / t_batch,
         "streamed_equals_whole_bit_for_bit": bool(np.array_equal(streamed.estimate, whole.estimate)),
-        "max_difference_from_batch_in_batch_sigma": float(np.abs((whole.estimate - batch.estimate)[free]
-                                                                 / batch.sigma[free]).max()),
+        "max_difference_from_batch_in_batch_sigma": float(
+            np.abs((whole.estimate - batch.estimate)[free] / batch.sigma[free]).max()
+        ),
         "two_ship_paper_scenario": _two_ship(args.repeats),
         "load_average_after": os.getloadavg(),
     }

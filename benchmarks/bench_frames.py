@@ -56,10 +56,15 @@ def make_inputs(n: int, seed: int) -> dict[str, np.ndarray]:
     rng = np.random.default_rng(seed)
     # uniform on the sphere in latitude (arcsin of a uniform), uniform longitude in [-pi, pi)
     return {
-        "lat": np.arcsin(rng.uniform(-1.0, 1.0, n)), "lon": rng.uniform(-np.pi, np.pi, n),
-        "alt": rng.uniform(-500.0, 1.0e5, n), "heading": rng.uniform(0.0, 2 * np.pi, n),
-        "pitch": rng.uniform(-0.2, 0.2, n), "roll": rng.uniform(-0.4, 0.4, n),
-        "r": rng.uniform(500.0, 3.0e5, n), "q": rng.uniform(-np.pi, np.pi, n), "e": rng.uniform(-0.1, 0.6, n),
+        "lat": np.arcsin(rng.uniform(-1.0, 1.0, n)),
+        "lon": rng.uniform(-np.pi, np.pi, n),
+        "alt": rng.uniform(-500.0, 1.0e5, n),
+        "heading": rng.uniform(0.0, 2 * np.pi, n),
+        "pitch": rng.uniform(-0.2, 0.2, n),
+        "roll": rng.uniform(-0.4, 0.4, n),
+        "r": rng.uniform(500.0, 3.0e5, n),
+        "q": rng.uniform(-np.pi, np.pi, n),
+        "e": rng.uniform(-0.1, 0.6, n),
     }
 
 
@@ -69,10 +74,12 @@ PLOT_NAMES = ["lat", "lon", "alt", "heading", "pitch", "roll", "r", "q", "e"]
 
 def timed(fn):
     """A contender timed with perf_counter: returns a callable giving (seconds, output)."""
+
     def run():
         t0 = time.perf_counter()
         out = fn()
         return time.perf_counter() - t0, out
+
     return run
 
 
@@ -170,14 +177,21 @@ class PlainC:
         src = tmp / f"{name}.c"
         src.write_bytes(_codegen.read_artifact(name, "c"))  # the shipped source, hash-checked
         code = HARNESS
-        for key, value in (("@SOURCE@", src.name), ("@FUNC@", name), ("@N_IN@", len(inputs)),
-                           ("@N_OUT_EL@", self.width), ("@SZ_W@", meta["work"]["sz_w"]),
-                           ("@SZ_IW@", meta["work"]["sz_iw"])):
+        for key, value in (
+            ("@SOURCE@", src.name),
+            ("@FUNC@", name),
+            ("@N_IN@", len(inputs)),
+            ("@N_OUT_EL@", self.width),
+            ("@SZ_W@", meta["work"]["sz_w"]),
+            ("@SZ_IW@", meta["work"]["sz_iw"]),
+        ):
             code = code.replace(key, str(value))
         harness = tmp / f"harness_{name}.c"
         harness.write_text(code)
         self.exe = tmp / f"harness_{name}"
-        flags = [f for f in _codegen.CFLAGS if f not in ("-shared", "-fPIC")]  # the runtime's, for an executable
+        flags = [
+            f for f in _codegen.CFLAGS if f not in ("-shared", "-fPIC")
+        ]  # the runtime's, for an executable
         cmd = [cc, *flags, "-o", str(self.exe), str(harness), "-lm"]
         proc = subprocess.run(cmd, capture_output=True, text=True, cwd=tmp)
         if proc.returncode != 0:
@@ -192,7 +206,9 @@ class PlainC:
         def run():
             proc = subprocess.run(
                 [str(self.exe), str(self.n), str(repeat), str(self.in_bin), str(self.out_bin), mode],
-                capture_output=True, text=True)
+                capture_output=True,
+                text=True,
+            )
             if proc.returncode != 0:
                 raise RuntimeError(f"harness failed: {proc.stderr.strip()}")
             ns = float(proc.stdout.strip())
@@ -220,8 +236,15 @@ def max_abs_diff(a, b) -> float:
 
 
 def row(label: str, seconds: float, n: int, diff: float | None, note: str = "") -> dict:
-    return {"method": label, "n": n, "seconds": seconds, "points_per_s": n / seconds,
-            "ns_per_point": seconds / n * 1e9, "max_abs_diff_m": diff, "note": note}
+    return {
+        "method": label,
+        "n": n,
+        "seconds": seconds,
+        "points_per_s": n / seconds,
+        "ns_per_point": seconds / n * 1e9,
+        "max_abs_diff_m": diff,
+        "note": note,
+    }
 
 
 def print_table(title: str, rows: list[dict], ref_label: str) -> None:
@@ -233,8 +256,10 @@ def print_table(title: str, rows: list[dict], ref_label: str) -> None:
     print("  " + "-" * (len(head) - 2))
     for r in rows:
         diff = "-" if r["max_abs_diff_m"] is None else f"{r['max_abs_diff_m']:.1e}"
-        print(f"  {r['method']:<46} {r['n']:>9} {r['seconds'] * 1e3:>10.2f} {r['ns_per_point']:>9.1f} "
-              f"{r['points_per_s']:>12.3e} {r['points_per_s'] / ref['points_per_s']:>8.2f} {diff:>11}")
+        print(
+            f"  {r['method']:<46} {r['n']:>9} {r['seconds'] * 1e3:>10.2f} {r['ns_per_point']:>9.1f} "
+            f"{r['points_per_s']:>12.3e} {r['points_per_s'] / ref['points_per_s']:>8.2f} {diff:>11}"
+        )
 
 
 PJ, PC = "pyproj Transformer 4979->4978 (radians)", "plain C loop, direct call (inlinable)"
@@ -249,11 +274,20 @@ def machine_info() -> dict:
     import pyproj
 
     return {
-        "platform": platform.platform(), "machine": platform.machine(), "processor": platform.processor() or "?",
-        "cpu_count": os.cpu_count(), "python": platform.python_version(), "numpy": np.__version__,
-        "casadi": casadi.__version__, "pymap3d": pymap3d.__version__, "pyproj": pyproj.__version__,
-        "proj": pyproj.proj_version_str, "registration": getattr(registration, "__version__", "?"),
-        "backend": _codegen.backend(), "compiler": _codegen.compiler(), "cflags": " ".join(_codegen.CFLAGS),
+        "platform": platform.platform(),
+        "machine": platform.machine(),
+        "processor": platform.processor() or "?",
+        "cpu_count": os.cpu_count(),
+        "python": platform.python_version(),
+        "numpy": np.__version__,
+        "casadi": casadi.__version__,
+        "pymap3d": pymap3d.__version__,
+        "pyproj": pyproj.__version__,
+        "proj": pyproj.proj_version_str,
+        "registration": getattr(registration, "__version__", "?"),
+        "backend": _codegen.backend(),
+        "compiler": _codegen.compiler(),
+        "cflags": " ".join(_codegen.CFLAGS),
     }
 
 
@@ -266,8 +300,11 @@ def bench_geodetic(geo: list[np.ndarray], harness: dict, rep: int) -> list[dict]
     raw_g = _codegen.get("geodetic2ecef")
     tr = pyproj.Transformer.from_crs("EPSG:4979", "EPSG:4978")
     c1 = {
-        OURS_G: timed(lambda: frames.geodetic2ecef(*geo)), RAW_G: timed(lambda: raw_g(*geo)[0]),
-        "pymap3d.geodetic2ecef (deg=False)": timed(lambda: np.stack(pymap3d.geodetic2ecef(*geo, deg=False), -1)),
+        OURS_G: timed(lambda: frames.geodetic2ecef(*geo)),
+        RAW_G: timed(lambda: raw_g(*geo)[0]),
+        "pymap3d.geodetic2ecef (deg=False)": timed(
+            lambda: np.stack(pymap3d.geodetic2ecef(*geo, deg=False), -1)
+        ),
         PJ: timed(lambda: np.stack(tr.transform(*geo, radians=True), -1)),
     }
     if "geodetic2ecef" in harness:
@@ -291,18 +328,34 @@ def bench_plot(plot: list[np.ndarray], harness: dict, rep: int) -> tuple[list[di
     return [row(k, t, n, max_abs_diff(out, ours_p)) for k, (t, out) in res2.items()], ours_p
 
 
-def bench_casadi_paths(plot: list[np.ndarray], ours_p: np.ndarray, casadi_repeat: int, dm_n: int) -> list[dict]:
+def bench_casadi_paths(
+    plot: list[np.ndarray], ours_p: np.ndarray, casadi_repeat: int, dm_n: int
+) -> list[dict]:
     """Section 2, CasADi paths: the serialized backend (Function.map) and item-by-item casadi.DM."""
     n = plot[0].shape[0]
     cas = _codegen.GeneratedFunction("plot2ecef_standard", force_backend="casadi")
     first, _ = timed(lambda: cas(*plot)[0])()
     res = measure({"c": timed(lambda: cas(*plot)[0])}, casadi_repeat)["c"]
-    rows = [row("CasADi serialized, Function.map (backend)", res[0], n, max_abs_diff(res[1], ours_p),
-                f"first call incl. map construction {first:.2f} s; best of {casadi_repeat}")]
+    rows = [
+        row(
+            "CasADi serialized, Function.map (backend)",
+            res[0],
+            n,
+            max_abs_diff(res[1], ours_p),
+            f"first call incl. map construction {first:.2f} s; best of {casadi_repeat}",
+        )
+    ]
     m = min(dm_n, n)
     t, out = timed(lambda: casadi_item_by_item("plot2ecef_standard", [a[:m] for a in plot]))()
-    rows.append(row("casadi.DM item by item, one call per point", t, m, max_abs_diff(out, ours_p[:m]),
-                    f"{m} points only, one pass"))
+    rows.append(
+        row(
+            "casadi.DM item by item, one call per point",
+            t,
+            m,
+            max_abs_diff(out, ours_p[:m]),
+            f"{m} points only, one pass",
+        )
+    )
     return rows
 
 
@@ -315,14 +368,22 @@ def bench_per_call(plot: list[np.ndarray], rep: int, calls: int = 2000) -> list[
         def loop():
             for _ in range(calls):
                 fn()
+
         return timed(loop)
 
-    res3 = measure({f"{OURS_P}, N=1": per_call(lambda: frames.plot2ecef(*one)),
-                    f"{RAW_P}, N=1": per_call(lambda: raw_p(*one))}, rep)
+    res3 = measure(
+        {
+            f"{OURS_P}, N=1": per_call(lambda: frames.plot2ecef(*one)),
+            f"{RAW_P}, N=1": per_call(lambda: raw_p(*one)),
+        },
+        rep,
+    )
     return [{"method": k, "calls": calls, "us_per_call": t / calls * 1e6} for k, (t, _) in res3.items()]
 
 
-def print_report(n: int, rows1: list[dict], rows2: list[dict], rows3: list[dict], harness_cmd: str | None) -> None:
+def print_report(
+    n: int, rows1: list[dict], rows2: list[dict], rows3: list[dict], harness_cmd: str | None
+) -> None:
     print_table(f"1. geodetic2ecef, {n} random points over the globe (h -500 m .. 100 km)", rows1, PJ)
     ref2 = PC if harness_cmd else RAW_P
     print_table(f"2. radar plot -> target ECEF (plot2ecef_standard), {n} plots", rows2, ref2)
@@ -364,8 +425,10 @@ def main(argv=None) -> int:
     n, rep = args.n, args.repeat
     machine = machine_info()
     print("machine: " + ", ".join(f"{k}={v}" for k, v in machine.items()))
-    print(f"N = {n}, best of {rep} interleaved rounds (perf_counter; the C harness times itself with "
-          "clock_gettime), one untimed warm-up each")
+    print(
+        f"N = {n}, best of {rep} interleaved rounds (perf_counter; the C harness times itself with "
+        "clock_gettime), one untimed warm-up each"
+    )
 
     data = make_inputs(n, args.seed)
     geo = [data[k] for k in GEO_NAMES]
@@ -389,9 +452,22 @@ def main(argv=None) -> int:
     aims = report_aims(rows1, rows2)
 
     if args.json:
-        Path(args.json).write_text(json.dumps(
-            {"machine": machine, "n": n, "repeat": rep, "seed": args.seed,
-             "geodetic2ecef": rows1, "plot2ecef": rows2, "per_call": rows3, "aims": aims}, indent=2) + "\n")
+        Path(args.json).write_text(
+            json.dumps(
+                {
+                    "machine": machine,
+                    "n": n,
+                    "repeat": rep,
+                    "seed": args.seed,
+                    "geodetic2ecef": rows1,
+                    "plot2ecef": rows2,
+                    "per_call": rows3,
+                    "aims": aims,
+                },
+                indent=2,
+            )
+            + "\n"
+        )
         print(f"\nwrote {args.json}")
     return 0
 

@@ -95,8 +95,9 @@ def plain_numpy_paper(za: np.ndarray, zb: np.ndarray):
     ja = np.array([[ca, -r * sa], [sa, r * ca]])
     dxa = np.einsum("ikn,kjn->ijn", m, ja)
     dxb = np.einsum("ikn,kn->in", wh, np.array([-rb * sb * w, rb * cb * w]))
-    cons = (np.einsum("ikn,jkn,k->ijn", dxa, dxa, np.array([sr2, sa2]))
-            + np.einsum("in,jn->ijn", dxb, dxb) * sb2)
+    cons = (
+        np.einsum("ikn,jkn,k->ijn", dxa, dxa, np.array([sr2, sa2])) + np.einsum("in,jn->ijn", dxb, dxb) * sb2
+    )
     return X, P_claimed, np.moveaxis(cons, -1, 0)
 
 
@@ -131,7 +132,10 @@ def plain_numpy_optimal(za: np.ndarray, zb: np.ndarray, tol_m: float = 1e-6, max
     H = np.array([[x / r, y / r], [-y / r2, x / r2], [-y / rb2, (x - l) / rb2]])
     A = np.einsum("kin,k,kjn->nij", H, w, H)
     det = A[:, 0, 0] * A[:, 1, 1] - A[:, 0, 1] ** 2
-    cov = np.stack([np.stack([A[:, 1, 1], -A[:, 0, 1]], -1), np.stack([-A[:, 0, 1], A[:, 0, 0]], -1)], -2) / det[:, None, None]
+    cov = (
+        np.stack([np.stack([A[:, 1, 1], -A[:, 0, 1]], -1), np.stack([-A[:, 0, 1], A[:, 0, 0]], -1)], -2)
+        / det[:, None, None]
+    )
     return np.stack([x, y], axis=1), cov
 
 
@@ -165,10 +169,14 @@ def main(argv=None) -> int:
     do = np.abs(opt.p_loc - p_plain).max()
     dco = np.abs(opt.P - cov_plain).max() / np.abs(cov_plain).max()
     ok = dx < 1e-6 and dpc < 1e-9 and dpk < 1e-9 and do < 1e-4 and dco < 1e-6  # GN stops at steps < 1e-6 m
-    print(f"machine: {os.cpu_count()} CPUs, numpy {np.__version__}, generated-code backend: {_codegen.backend()}")
+    print(
+        f"machine: {os.cpu_count()} CPUs, numpy {np.__version__}, generated-code backend: {_codegen.backend()}"
+    )
     print(f"{n} radar+bearing pairs (paper scenario 1), median (min) of {args.repeats} runs")
-    print(f"agreement library vs plain NumPy: fused point {dx:.2e} m, claimed cov {dpc:.1e} rel, "
-          f"consistent cov {dpk:.1e} rel, ML point {do:.1e} m, ML cov {dco:.1e} rel -> {'OK' if ok else 'MISMATCH'}")
+    print(
+        f"agreement library vs plain NumPy: fused point {dx:.2e} m, claimed cov {dpc:.1e} rel, "
+        f"consistent cov {dpk:.1e} rel, ML point {do:.1e} m, ML cov {dco:.1e} rel -> {'OK' if ok else 'MISMATCH'}"
+    )
 
     rows = [
         ("paper method: registration.fusion.fuse_paper", lib_paper),
@@ -185,11 +193,15 @@ def main(argv=None) -> int:
             times[label].append(time.perf_counter() - t)
     med = {label: statistics.median(v) for label, v in times.items()}
     for label, _ in rows:
-        print(f"  {label:48s} {med[label]:7.3f} s (min {min(times[label]):.3f})  {n / med[label] / 1e6:6.2f} M pairs/s")
+        print(
+            f"  {label:48s} {med[label]:7.3f} s (min {min(times[label]):.3f})  {n / med[label] / 1e6:6.2f} M pairs/s"
+        )
     ratio_paper = statistics.median(a / b for a, b in zip(times[rows[0][0]], times[rows[1][0]]))
     ratio_opt = statistics.median(a / b for a, b in zip(times[rows[2][0]], times[rows[3][0]]))
-    print(f"time ratio library / plain NumPy (median of per-repeat ratios): paper method {ratio_paper:.2f}, "
-          f"optimal fuser {ratio_opt:.2f}")
+    print(
+        f"time ratio library / plain NumPy (median of per-repeat ratios): paper method {ratio_paper:.2f}, "
+        f"optimal fuser {ratio_opt:.2f}"
+    )
     return 0 if ok else 1
 
 

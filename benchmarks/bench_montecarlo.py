@@ -75,13 +75,27 @@ def legacy_paper_scenario(seed: int, n_steps: int = 300, dt: float = 1.0) -> Sce
     """The previous ``paper_scenario`` with its defaults (level ships, standard T), one seed."""
     rng = np.random.default_rng(seed)
     t = np.arange(n_steps) * dt
-    deg = np.where(t < 60, 240.0, np.where(t < 150, 240.0 + 2.0 * (t - 60), np.where(t < 210, 420.0, 420.0 - 2.0 * (t - 210))))
+    deg = np.where(
+        t < 60,
+        240.0,
+        np.where(t < 150, 240.0 + 2.0 * (t - 60), np.where(t < 210, 420.0, 420.0 - 2.0 * (t - 210))),
+    )
     M, N = _codegen.get("radii_of_curvature")(np.radians(20.0))[0][0]
     tgt_alt = np.linspace(2000.0, 4000.0, n_steps)
-    tgt_lat, tgt_lon = legacy_dead_reckon(np.radians(20.0) + 45_000.0 / (M + 2000.0), np.radians(115.25), tgt_alt,
-                                          np.radians(np.mod(deg, 360.0)), 200.0 * np.ones(n_steps), dt)
+    tgt_lat, tgt_lon = legacy_dead_reckon(
+        np.radians(20.0) + 45_000.0 / (M + 2000.0),
+        np.radians(115.25),
+        tgt_alt,
+        np.radians(np.mod(deg, 360.0)),
+        200.0 * np.ones(n_steps),
+        dt,
+    )
     p_target = _codegen.get("geodetic2ecef")(tgt_lat, tgt_lon, tgt_alt)[0]
-    err = {"heading": np.radians(0.1), "level": np.radians(0.03), "bias": [1000.0, np.radians(0.5), np.radians(0.5)]}
+    err = {
+        "heading": np.radians(0.1),
+        "level": np.radians(0.03),
+        "bias": [1000.0, np.radians(0.5), np.radians(0.5)],
+    }
     sigmas = np.array([50.0, np.radians(0.5), np.radians(0.5)])
     data, truth = {"time": t}, {}
     for p, ship in SHIPS.items():
@@ -90,13 +104,28 @@ def legacy_paper_scenario(seed: int, n_steps: int = 300, dt: float = 1.0) -> Sce
         lat, lon = legacy_dead_reckon(ship["lat0"], ship["lon0"], alt, heading, ship["speed"] * ones, dt)
         plot = _codegen.get("ecef2plot_standard")(p_target, lat, lon, alt, heading, level, level)[0]
         measured = plot + err["bias"] + rng.normal(size=(n_steps, 3)) * sigmas
-        data.update({f"{p}_lat": lat, f"{p}_lon": lon, f"{p}_alt": alt, f"{p}_heading": wrap_angle(heading + err["heading"]),
-                     f"{p}_pitch": level + err["level"], f"{p}_roll": level + err["level"], f"{p}_range": measured[:, 0],
-                     f"{p}_bearing": wrap_angle(measured[:, 1]), f"{p}_elevation": measured[:, 2]})
+        data.update(
+            {
+                f"{p}_lat": lat,
+                f"{p}_lon": lon,
+                f"{p}_alt": alt,
+                f"{p}_heading": wrap_angle(heading + err["heading"]),
+                f"{p}_pitch": level + err["level"],
+                f"{p}_roll": level + err["level"],
+                f"{p}_range": measured[:, 0],
+                f"{p}_bearing": wrap_angle(measured[:, 1]),
+                f"{p}_elevation": measured[:, 2],
+            }
+        )
         truth.update({f"{p}_heading": heading, f"{p}_pitch": level, f"{p}_roll": level, f"{p}_plot": plot})
     truth_state = np.array([err["heading"], err["level"], err["level"], *err["bias"]] * 2)
-    return Scenario(data=data, truth_state=truth_state, truth=truth, sigma0=np.tile(sigmas, 2),
-                    description={"seed": seed, "t_variant": "standard"})
+    return Scenario(
+        data=data,
+        truth_state=truth_state,
+        truth=truth,
+        sigma0=np.tile(sigmas, 2),
+        description={"seed": seed, "t_variant": "standard"},
+    )
 
 
 def legacy_collect_runs(runs: int, seed0: int, config: RegistrationConfig) -> dict:
@@ -107,8 +136,14 @@ def legacy_collect_runs(runs: int, seed0: int, config: RegistrationConfig) -> di
         res = register(sc.data, config)
         if r == 0:
             k = len(res.time)
-            out.update(time=res.time, description={}, err=np.empty((runs, k, N_STATE)),
-                       P=np.empty((runs, k, N_STATE, N_STATE)), nis=np.empty((runs, k)), crlb=np.zeros((k, N_STATE, N_STATE)))
+            out.update(
+                time=res.time,
+                description={},
+                err=np.empty((runs, k, N_STATE)),
+                P=np.empty((runs, k, N_STATE, N_STATE)),
+                nis=np.empty((runs, k)),
+                crlb=np.zeros((k, N_STATE, N_STATE)),
+            )
         out["err"][r] = res.estimates - sc.truth_state
         out["P"][r] = res.covariances
         out["nis"][r] = res.nis
@@ -142,7 +177,9 @@ def compare(old, new) -> dict:
     for name in ("rmse", "mean_error", "filter_sigma", "filter_two_sigma_mean", "crlb_sigma", "nees", "nis"):
         a, b = getattr(old, name), getattr(new, name)
         out[name] = float(np.max(np.abs(a - b) / np.maximum(np.abs(a), 1e-300)))
-    out["counts_equal"] = old.status_counts == new.status_counts and old.combination_counts == new.combination_counts
+    out["counts_equal"] = (
+        old.status_counts == new.status_counts and old.combination_counts == new.combination_counts
+    )
     out["quantities_equal"] = [q.name for q in old.quantities] == [q.name for q in new.quantities]
     return out
 
@@ -192,16 +229,30 @@ def stages(runs: int, seed0: int, config) -> dict:
 # --------------------------------------------------------------------------- main
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--runs", type=int, default=1000, help="runs of the batch and of the end-to-end command (default 1000)")
-    ap.add_argument("--legacy-runs", type=int, default=100, help="runs of the run-by-run baseline (default 100; it is slow)")
-    ap.add_argument("--repeat", type=int, default=3, help="timed rounds per contender; the best is kept (default 3)")
+    ap.add_argument(
+        "--runs",
+        type=int,
+        default=1000,
+        help="runs of the batch and of the end-to-end command (default 1000)",
+    )
+    ap.add_argument(
+        "--legacy-runs",
+        type=int,
+        default=100,
+        help="runs of the run-by-run baseline (default 100; it is slow)",
+    )
+    ap.add_argument(
+        "--repeat", type=int, default=3, help="timed rounds per contender; the best is kept (default 3)"
+    )
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--json", type=str, default=None, help="also write the figures to this JSON file")
     args = ap.parse_args(argv)
     config = RegistrationConfig()
     n_legacy, n_runs, seed = args.legacy_runs, args.runs, args.seed
-    print(f"backend {_codegen.backend()}, numpy {np.__version__}, {os.cpu_count()} CPUs; paper scenario, 300 rows per run; "
-          f"best of {args.repeat} rounds")
+    print(
+        f"backend {_codegen.backend()}, numpy {np.__version__}, {os.cpu_count()} CPUs; paper scenario, 300 rows per run; "
+        f"best of {args.repeat} rounds"
+    )
 
     old = summarise_runs(legacy_collect_runs(n_legacy, seed, config), seed)
     new = run_montecarlo(n_legacy, seed, config)
@@ -212,7 +263,9 @@ def main(argv=None) -> int:
 
     data_small, data_big = rows_data(n_legacy, seed), rows_data(n_runs, seed)
     contenders = {
-        f"run by run (before), {n_legacy} runs": lambda: summarise_runs(legacy_collect_runs(n_legacy, seed, config), seed),
+        f"run by run (before), {n_legacy} runs": lambda: summarise_runs(
+            legacy_collect_runs(n_legacy, seed, config), seed
+        ),
         f"batch run_montecarlo, {n_legacy} runs": lambda: run_montecarlo(n_legacy, seed, config),
         f"register(), {n_legacy * 300} rows": lambda: register(data_small, config),
         f"batch run_montecarlo, {n_runs} runs": lambda: run_montecarlo(n_runs, seed, config),
@@ -226,16 +279,32 @@ def main(argv=None) -> int:
     legacy_ratio = best[labels[0]] / best[labels[1]]
     small_ratio, big_ratio = best[labels[1]] / best[labels[2]], best[labels[3]] / best[labels[4]]
     print(f"\n  batch vs run by run, {n_legacy} runs: {legacy_ratio:.1f}x faster")
-    print(f"  batch / register() over the same rows: {n_legacy} runs {small_ratio:.2f}x, {n_runs} runs {big_ratio:.2f}x")
+    print(
+        f"  batch / register() over the same rows: {n_legacy} runs {small_ratio:.2f}x, {n_runs} runs {big_ratio:.2f}x"
+    )
 
     with tempfile.TemporaryDirectory() as tmp:
-        cli = [sys.executable, "-m", "registration", "montecarlo", "--runs", str(n_runs), "--no-plot", "--out", tmp]
+        cli = [
+            sys.executable,
+            "-m",
+            "registration",
+            "montecarlo",
+            "--runs",
+            str(n_runs),
+            "--no-plot",
+            "--out",
+            tmp,
+        ]
         cli_s = command_seconds(cli, args.repeat)
         start_s = command_seconds([sys.executable, "-c", "pass"], args.repeat)
     cli_ratio = cli_s / best[labels[4]]
-    print(f"\nend to end: `registration montecarlo --runs {n_runs} --no-plot` {cli_s:.2f} s (python -c pass: {start_s:.2f} s)")
-    print(f"  = {cli_ratio:.2f}x one register() call over the same {n_runs * 300} rows; aim <= {AIM_RATIO:.0f}x: "
-          f"{'met' if cli_ratio <= AIM_RATIO else 'NOT met'}")
+    print(
+        f"\nend to end: `registration montecarlo --runs {n_runs} --no-plot` {cli_s:.2f} s (python -c pass: {start_s:.2f} s)"
+    )
+    print(
+        f"  = {cli_ratio:.2f}x one register() call over the same {n_runs * 300} rows; aim <= {AIM_RATIO:.0f}x: "
+        f"{'met' if cli_ratio <= AIM_RATIO else 'NOT met'}"
+    )
 
     parts = stages(n_runs, seed, config)
     print(f"\nstages of the batch, {n_runs} runs (one pass):")
@@ -243,9 +312,17 @@ def main(argv=None) -> int:
         print(f"  {k:<70}{v:8.3f} s")
 
     if args.json:
-        payload = {"seconds": best, "batch_vs_run_by_run": legacy_ratio, "batch_over_register": {str(n_legacy): small_ratio,
-                   str(n_runs): big_ratio}, "cli_seconds": cli_s, "python_start_seconds": start_s, "cli_over_register": cli_ratio,
-                   "aim_ratio": AIM_RATIO, "stages_seconds": parts, "max_relative_difference": diff}
+        payload = {
+            "seconds": best,
+            "batch_vs_run_by_run": legacy_ratio,
+            "batch_over_register": {str(n_legacy): small_ratio, str(n_runs): big_ratio},
+            "cli_seconds": cli_s,
+            "python_start_seconds": start_s,
+            "cli_over_register": cli_ratio,
+            "aim_ratio": AIM_RATIO,
+            "stages_seconds": parts,
+            "max_relative_difference": diff,
+        }
         with open(args.json, "w") as fh:
             json.dump(payload, fh, indent=1)
         print(f"\nwrote {args.json}")

@@ -45,7 +45,7 @@ def _baseline(path: Path) -> int:
         for line in f:
             line = line.strip()
             if line.startswith("\\"):
-                line = line[line.find("\\", 1) + 1:]
+                line = line[line.find("\\", 1) + 1 :]
             try:
                 pynmea2.parse(line, check=True)
                 ok += 1
@@ -60,15 +60,18 @@ def main() -> None:
     ap.add_argument("--repeat", type=int, default=3, help="runs of each case, alternated (default 3)")
     ap.add_argument("--progress", action="store_true", help="show the import's progress bar")
     args = ap.parse_args()
-    config = BridgeLogConfig(seed=1, duration_s=args.duration_s, n_vessels=20, n_ais=16, scan_period_s=1.0,
-                             extra_sentences=True)
+    config = BridgeLogConfig(
+        seed=1, duration_s=args.duration_s, n_vessels=20, n_ais=16, scan_period_s=1.0, extra_sentences=True
+    )
     t = time.perf_counter()
     log = simulate_bridge_log(config)
     with tempfile.TemporaryDirectory() as folder:
         path = log.write(Path(folder) / "bridge.nmea")
         n = len(log.lines)
-        print(f"log: {n} lines, {path.stat().st_size / 1e6:.1f} MB, {args.duration_s:g} s "
-              f"(generated in {time.perf_counter() - t:.1f} s)")
+        print(
+            f"log: {n} lines, {path.stat().st_size / 1e6:.1f} MB, {args.duration_s:g} s "
+            f"(generated in {time.perf_counter() - t:.1f} s)"
+        )
         times = {"import_nmea": [], "pynmea2.parse baseline": []}
         result = None
         for _ in range(args.repeat):
@@ -78,14 +81,20 @@ def main() -> None:
             t = time.perf_counter()
             _baseline(path)
             times["pynmea2.parse baseline"].append(time.perf_counter() - t)
-    print(f"imported: {len(result.navigation)} navigation rows, {len(result.plots)} plots, "
-          f"{len(result.reference)} reference positions, {len(result.rejected)} lines set aside")
+    print(
+        f"imported: {len(result.navigation)} navigation rows, {len(result.plots)} plots, "
+        f"{len(result.reference)} reference positions, {len(result.rejected)} lines set aside"
+    )
     for name, ts in times.items():
         best = min(ts)
-        print(f"  {name:24s} best {best:6.2f} s  median {statistics.median(ts):6.2f} s  {n / best:9.0f} lines/s")
+        print(
+            f"  {name:24s} best {best:6.2f} s  median {statistics.median(ts):6.2f} s  {n / best:9.0f} lines/s"
+        )
     ratio = min(times["import_nmea"]) / min(times["pynmea2.parse baseline"])
-    print(f"import / baseline: {ratio:.2f} (aim: the hour in at most 10 s: "
-          f"{'met' if min(times['import_nmea']) <= 10.0 * args.duration_s / 3600.0 else 'NOT met'})")
+    print(
+        f"import / baseline: {ratio:.2f} (aim: the hour in at most 10 s: "
+        f"{'met' if min(times['import_nmea']) <= 10.0 * args.duration_s / 3600.0 else 'NOT met'})"
+    )
 
 
 if __name__ == "__main__":

@@ -40,16 +40,15 @@ import sys
 import time
 
 import numpy as np
+from online_baseline import NumpyFilter  # noqa: E402 (a script beside this one)
 
 import registration
 from registration import _codegen
 from registration._codegen import cbackend
 from registration.online import OnlineRegistrar, RegistrationConfig, register
+from registration.online.contract import DATA_COLUMNS, N_STATE
 from registration.online.filter import ROW_HIGH, ROW_LOW, STEP_CARRY
 from registration.online.scenario import paper_scenario
-from registration.online.contract import DATA_COLUMNS, N_STATE
-
-from online_baseline import NumpyFilter  # noqa: E402 (a script beside this one)
 
 AIM_US_PER_STEP = 5.0
 AIM_RATIO = 20.0
@@ -74,6 +73,7 @@ def rows_of(data: dict) -> np.ndarray:
 def compare(reference, other) -> dict:
     """Largest relative difference per output: per state, relative to the largest |value| of that
     state's series (for P: of its diagonal), so tiny cross terms do not inflate the figure."""
+
     def rel(a, b, scale):
         return float(np.max(np.abs(a - b) / scale))
 
@@ -113,21 +113,35 @@ def streaming(config, rows):
         for i in range(len(rows)):
             reg.update(rows[i])
         return reg
+
     return go
 
 
 def stepper_only(config, rows):
     """The compiled stepper update() calls, alone (made as update() makes it): one ctypes call per row."""
+
     def go():
-        st = _codegen.get(config.step_name).stepper(STEP_CARRY, "row", low=ROW_LOW, high=ROW_HIGH,
-                                                      finite=("x_new", "P_new"), deliver=("x_new", "P_new", "nu", "S", "nis"))
+        st = _codegen.get(config.step_name).stepper(
+            STEP_CARRY,
+            "row",
+            low=ROW_LOW,
+            high=ROW_HIGH,
+            finite=("x_new", "P_new"),
+            deliver=("x_new", "P_new", "nu", "S", "nis"),
+        )
         start = OnlineRegistrar(config)
-        for name, value in (("x", start.x), ("P", start.P), ("info", start.info), ("Q", start.process_noise()),
-                            ("sigma0", np.array(config.sigma0))):
+        for name, value in (
+            ("x", start.x),
+            ("P", start.P),
+            ("info", start.info),
+            ("Q", start.process_noise()),
+            ("sigma0", np.array(config.sigma0)),
+        ):
             st.set(name, value)
         step = st.step
         for i in range(len(rows)):
             step(rows[i])
+
     return go
 
 
@@ -136,13 +150,17 @@ def scan_only(config, rows):
     step = _codegen.get(config.step_name)
     inputs = {
         "x": np.zeros(N_STATE) if config.x0 is None else np.array(config.x0),
-        "P": np.diag(np.square(config.prior_sigma)), "info": np.zeros((N_STATE, N_STATE)),
-        "Q": np.diag(np.square(config.q_sigma)), "row": rows, "sigma0": np.array(config.sigma0),
+        "P": np.diag(np.square(config.prior_sigma)),
+        "info": np.zeros((N_STATE, N_STATE)),
+        "Q": np.diag(np.square(config.q_sigma)),
+        "row": rows,
+        "sigma0": np.array(config.sigma0),
     }
     carry = {"x": "x_new", "P": "P_new", "info": "info_new"}  # the step's mapaccum convention
 
     def go():
         return step.scan(len(rows), carry, inputs, keep_last=("info_new",))
+
     return go
 
 
@@ -162,11 +180,16 @@ def profile_breakdown(fn, calls: int, per: int, top: int = 8) -> list[tuple[str,
     total = sum(v[2] for v in stats.values())  # total own time
     rows = []
     for (file, line, name), (_, _, _, cum, _) in stats.items():
-        if "registration" in file or "numpy" in file or name.startswith("<built-in") or name.startswith("<method"):
+        if (
+            "registration" in file
+            or "numpy" in file
+            or name.startswith("<built-in")
+            or name.startswith("<method")
+        ):
             short = f"{file.split('/')[-1]}:{name}" if not file.startswith("~") else name
             rows.append((short, cum / (calls * per) * 1e6))
     rows.sort(key=lambda t: -t[1])
-    return [("total (profiled)", total / (calls * per) * 1e6)] + rows[1:top + 1]
+    return [("total (profiled)", total / (calls * per) * 1e6)] + rows[1 : top + 1]
 
 
 # --------------------------------------------------------------------------- main
@@ -189,8 +212,10 @@ def bench_size(n_rows: int, seed: int, rounds: int, stream_rows: int, config) ->
         d = compare(ref, base.run(rows, vec))
         diffs[label] = d
         if max(d.values()) > TOLERANCE:
-            raise SystemExit(f"{config.linearization}, {label}: differs from register() by {d} (relative) > {TOLERANCE}: "
-                             "not the same filter")
+            raise SystemExit(
+                f"{config.linearization}, {label}: differs from register() by {d} (relative) > {TOLERANCE}: "
+                "not the same filter"
+            )
 
     contenders = {BATCH: lambda: register(data, config), SCAN: scan_only(config, rows)}
     for label, vec in flavours.items():
@@ -201,10 +226,18 @@ def bench_size(n_rows: int, seed: int, rounds: int, stream_rows: int, config) ->
     # the baselines' last run (the check) is their warm-up: at 10^5 rows a per-row run takes seconds
     best, times = measure(contenders, rounds, warm=frozenset([BATCH, *flavours]))
     per = {k: (n_stream if k in (UPDATE, STEPPER) else n_rows) / 1e6 for k in best}
-    spread = {k: [float(np.min(t)) / per[k], float(np.median(t)) / per[k], float(np.max(t)) / per[k]] for k, t in times.items()}
-    return {"rows": n_rows, "stream_rows": n_stream, "seconds": best, "us_per_step": {k: v / per[k] for k, v in best.items()},
-            "us_per_step_best_median_worst": spread,
-            "max_relative_difference_vs_register": diffs}
+    spread = {
+        k: [float(np.min(t)) / per[k], float(np.median(t)) / per[k], float(np.max(t)) / per[k]]
+        for k, t in times.items()
+    }
+    return {
+        "rows": n_rows,
+        "stream_rows": n_stream,
+        "seconds": best,
+        "us_per_step": {k: v / per[k] for k, v in best.items()},
+        "us_per_step_best_median_worst": spread,
+        "max_relative_difference_vs_register": diffs,
+    }
 
 
 def aims_of(results: dict, long_n: int, linearization: str) -> dict:
@@ -241,22 +274,33 @@ def aims_of(results: dict, long_n: int, linearization: str) -> dict:
 
 def print_aims(aims: dict, long_n: int, linearization: str) -> None:
     yes = {True: "met", False: "NOT met"}
-    why = ("model vectorised up front" if linearization == "paper" else
-           "per-row model: the fitted linearisation point depends on the state, so no NumPy code can evaluate the model up front")
+    why = (
+        "model vectorised up front"
+        if linearization == "paper"
+        else "per-row model: the fitted linearisation point depends on the state, so no NumPy code can evaluate the model up front"
+    )
     print(f"Aims, linearization {linearization}:")
-    print(f"  <= {AIM_US_PER_STEP} us/step amortised, batch register(): {long_n} rows {aims['batch_us_per_step_long']:.2f} us "
-          f"({yes[aims['met_us_per_step_long']]}); 300 rows {aims['batch_us_per_step_300']:.2f} us "
-          f"({yes[aims['met_us_per_step_300']]})")
+    print(
+        f"  <= {AIM_US_PER_STEP} us/step amortised, batch register(): {long_n} rows {aims['batch_us_per_step_long']:.2f} us "
+        f"({yes[aims['met_us_per_step_long']]}); 300 rows {aims['batch_us_per_step_300']:.2f} us "
+        f"({yes[aims['met_us_per_step_300']]})"
+    )
     print(f"  >= {AIM_RATIO:.0f}x the strongest NumPy baseline ({why}):")
-    print(f"     register(): {long_n} rows {aims['ratio_vs_strongest_numpy_long']:.1f}x ({yes[aims['met_ratio_long']]}); "
-          f"300 rows {aims['ratio_vs_strongest_numpy_300']:.1f}x ({yes[aims['met_ratio_300']]}); "
-          f"the compiled scan alone {aims['scan_ratio_vs_strongest_numpy_long']:.1f}x")
+    print(
+        f"     register(): {long_n} rows {aims['ratio_vs_strongest_numpy_long']:.1f}x ({yes[aims['met_ratio_long']]}); "
+        f"300 rows {aims['ratio_vs_strongest_numpy_300']:.1f}x ({yes[aims['met_ratio_300']]}); "
+        f"the compiled scan alone {aims['scan_ratio_vs_strongest_numpy_long']:.1f}x"
+    )
     if linearization == "paper":
-        print(f"     against the per-row NumPy filter: register() {aims['ratio_vs_per_row_numpy_long']:.1f}x, "
-              f"the compiled scan alone {aims['scan_ratio_vs_per_row_numpy_long']:.1f}x")
-    print(f"  <= {AIM_US_PER_STEP} us/row for update(): {aims['update_us_per_step_long']:.2f} us "
-          f"({yes[aims['met_update_us_per_step_long']]}), {aims['update_over_scan_long']:.2f}x the compiled scan's step; "
-          f"Python around the compiled stepper {aims['update_python_us_per_step_long']:.2f} us")
+        print(
+            f"     against the per-row NumPy filter: register() {aims['ratio_vs_per_row_numpy_long']:.1f}x, "
+            f"the compiled scan alone {aims['scan_ratio_vs_per_row_numpy_long']:.1f}x"
+        )
+    print(
+        f"  <= {AIM_US_PER_STEP} us/row for update(): {aims['update_us_per_step_long']:.2f} us "
+        f"({yes[aims['met_update_us_per_step_long']]}), {aims['update_over_scan_long']:.2f}x the compiled scan's step; "
+        f"Python around the compiled stepper {aims['update_python_us_per_step_long']:.2f} us"
+    )
 
 
 def machine_line() -> str:
@@ -266,42 +310,59 @@ def machine_line() -> str:
             cpu = next((ln.split(":", 1)[1].strip() for ln in fh if ln.startswith("model name")), cpu)
     except OSError:
         pass
-    return (f"registration {registration.__version__}, backend {_codegen.backend()} ({cbackend.build_mode()} build), "
-            f"numpy {np.__version__}, "
-            f"python {platform.python_version()}, {platform.machine()} {cpu}, {os.cpu_count()} CPUs").replace("  ", " ")
+    return (
+        f"registration {registration.__version__}, backend {_codegen.backend()} ({cbackend.build_mode()} build), "
+        f"numpy {np.__version__}, "
+        f"python {platform.python_version()}, {platform.machine()} {cpu}, {os.cpu_count()} CPUs"
+    ).replace("  ", " ")
 
 
 def run_configs(configs: dict, default: str, args) -> dict:
     """Every contender at 300 rows and at the long run, per configuration, with the aims."""
     per_config = {}
     for lin, config in configs.items():
-        print(f"\n=== linearization {lin}{' (the default)' if lin == default else ''}: {config.step_name} ===\n")
+        print(
+            f"\n=== linearization {lin}{' (the default)' if lin == default else ''}: {config.step_name} ===\n"
+        )
         results = {}
         for n in (300, args.long):
             r = results[str(n)] = bench_size(n, args.seed, args.repeat, args.stream_rows, config)
             us = r["us_per_step"]
-            print(f"{n} rows (NumPy baselines equal register() to "
-                  f"{max(max(d.values()) for d in r['max_relative_difference_vs_register'].values()):.1e} relative)")
-            print(f"  {'contender':<40}{'us/step':>10}{'time / register()':>19}{'time / scan':>13}"
-                  f"{'median, worst of ' + str(args.repeat):>24}")
+            print(
+                f"{n} rows (NumPy baselines equal register() to "
+                f"{max(max(d.values()) for d in r['max_relative_difference_vs_register'].values()):.1e} relative)"
+            )
+            print(
+                f"  {'contender':<40}{'us/step':>10}{'time / register()':>19}{'time / scan':>13}"
+                f"{'median, worst of ' + str(args.repeat):>24}"
+            )
             for label, v in us.items():
                 _, med, worst = r["us_per_step_best_median_worst"][label]
-                print(f"  {label:<40}{v:10.2f}{v / us[BATCH]:18.1f}x{v / us[SCAN]:12.1f}x{med:14.2f}{worst:10.2f}")
+                print(
+                    f"  {label:<40}{v:10.2f}{v / us[BATCH]:18.1f}x{v / us[SCAN]:12.1f}x{med:14.2f}{worst:10.2f}"
+                )
             print()
         aims = aims_of(results, args.long, lin)
         print_aims(aims, args.long, lin)
         per_config[lin] = {"config": config.to_json(), "results": results, "aims": aims}
     lp, lf = (per_config[k]["results"][str(args.long)]["us_per_step"] for k in ("paper", "fitted"))
-    print(f"\nfitted / paper cost, {args.long} rows: register() {lf[BATCH] / lp[BATCH]:.2f}x, compiled scan "
-          f"{lf[SCAN] / lp[SCAN]:.2f}x, per-row NumPy {lf[PER_ROW] / lp[PER_ROW]:.2f}x\n")
+    print(
+        f"\nfitted / paper cost, {args.long} rows: register() {lf[BATCH] / lp[BATCH]:.2f}x, compiled scan "
+        f"{lf[SCAN] / lp[SCAN]:.2f}x, per-row NumPy {lf[PER_ROW] / lp[PER_ROW]:.2f}x\n"
+    )
     pair = _codegen.get("pseudo_measurement_standard").casadi.n_instructions()
     for lin, cfg in configs.items():
         n_ins = _codegen.get(cfg.step_name).casadi.n_instructions()
         scan_us = per_config[lin]["results"][str(args.long)]["us_per_step"][SCAN]
-        part = (f"the pseudo-measurement ({pair}) once" if lin == "paper" else
-                f"the pseudo-measurement ({pair}) twice, before common subexpressions, plus the MAP plots")
-        print(f"{cfg.step_name}: {n_ins} CasADi instructions per step ({part}; the Kalman algebra the rest), "
-              f"{scan_us:.2f} us per step in the scan: {n_ins / scan_us / 1e3:.1f} G instructions/s.")
+        part = (
+            f"the pseudo-measurement ({pair}) once"
+            if lin == "paper"
+            else f"the pseudo-measurement ({pair}) twice, before common subexpressions, plus the MAP plots"
+        )
+        print(
+            f"{cfg.step_name}: {n_ins} CasADi instructions per step ({part}; the Kalman algebra the rest), "
+            f"{scan_us:.2f} us per step in the scan: {n_ins / scan_us / 1e3:.1f} G instructions/s."
+        )
     return per_config
 
 
@@ -310,10 +371,16 @@ def profiles(config, data_long: dict, seed: int) -> dict:
     data300 = scenario_data(300, seed)
     out = {
         "register_profile_us_per_row_300": profile_breakdown(lambda: register(data300, config), 20, 300),
-        "register_profile_us_per_row_long": profile_breakdown(lambda: register(data_long, config), 1, len(data_long["time"])),
+        "register_profile_us_per_row_long": profile_breakdown(
+            lambda: register(data_long, config), 1, len(data_long["time"])
+        ),
         "update_profile_us_per_row_300": profile_breakdown(streaming(config, rows_of(data300)), 3, 300),
     }
-    titles = ("register() on 300 rows", f"register() on {len(data_long['time'])} rows", "OnlineRegistrar.update() on 300 rows")
+    titles = (
+        "register() on 300 rows",
+        f"register() on {len(data_long['time'])} rows",
+        "OnlineRegistrar.update() on 300 rows",
+    )
     print(f"\nProfile of the default configuration ({config.linearization}):")
     for title, rows in zip(titles, out.values()):
         print(f"{title}, by callee (cProfile, cumulative us per row):")
@@ -324,21 +391,36 @@ def profiles(config, data_long: dict, seed: int) -> dict:
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--long", type=int, default=100_000, help="rows of the long run (tiled scenario; default 10^5)")
-    ap.add_argument("--stream-rows", type=int, default=20_000,
-                    help="rows fed to OnlineRegistrar.update() in the long run (default 2*10^4)")
-    ap.add_argument("--repeat", type=int, default=3, help="timed rounds per contender; the best is kept (default 3)")
+    ap.add_argument(
+        "--long", type=int, default=100_000, help="rows of the long run (tiled scenario; default 10^5)"
+    )
+    ap.add_argument(
+        "--stream-rows",
+        type=int,
+        default=20_000,
+        help="rows fed to OnlineRegistrar.update() in the long run (default 2*10^4)",
+    )
+    ap.add_argument(
+        "--repeat", type=int, default=3, help="timed rounds per contender; the best is kept (default 3)"
+    )
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--json", type=str, default=None, help="also write the figures to this JSON file")
-    ap.add_argument("--flags", action="store_true",
-                    help="also time each configuration's generated step in a plain C loop built with the loader's "
-                         "flags and with -O3 -march=native")
+    ap.add_argument(
+        "--flags",
+        action="store_true",
+        help="also time each configuration's generated step in a plain C loop built with the loader's "
+        "flags and with -O3 -march=native",
+    )
     args = ap.parse_args(argv)
     default = RegistrationConfig().linearization
-    configs = {lin: RegistrationConfig(linearization=lin) for lin in ("paper", "fitted")}  # standard T, fixed Q
+    configs = {
+        lin: RegistrationConfig(linearization=lin) for lin in ("paper", "fitted")
+    }  # standard T, fixed Q
     print(machine_line())
-    print(f"configurations: {', '.join(f'{lin} ({c.step_name})' for lin, c in configs.items())}; "
-          f"default RegistrationConfig(): {default}; q_mode fixed; best of {args.repeat} rounds")
+    print(
+        f"configurations: {', '.join(f'{lin} ({c.step_name})' for lin, c in configs.items())}; "
+        f"default RegistrationConfig(): {default}; q_mode fixed; best of {args.repeat} rounds"
+    )
     data_long = scenario_data(args.long, args.seed)
     per_config = run_configs(configs, default, args)
     profile = profiles(configs[default], data_long, args.seed)
@@ -346,17 +428,36 @@ def main(argv=None) -> int:
         from online_flags import flags_experiment
 
         for lin, cfg in configs.items():
-            flags = flags_experiment(cfg, rows_of(data_long), register(data_long, cfg).estimates[-1, 3], args.repeat)
+            flags = flags_experiment(
+                cfg, rows_of(data_long), register(data_long, cfg).estimates[-1, 3], args.repeat
+            )
             per_config[lin]["plain_c_us_per_step"] = flags
-            print(f"\n{cfg.step_name} in a plain C loop ({args.long} rows, results checked against register()):")
+            print(
+                f"\n{cfg.step_name} in a plain C loop ({args.long} rows, results checked against register()):"
+            )
             for k, v in flags.items():
                 print(f"  {k:<52}{'build failed' if v is None else f'{v:10.2f}'}")
     if args.json:
-        machine = {"line": machine_line(), "python": platform.python_version(), "machine": platform.machine(),
-                   "numpy": np.__version__, "backend": _codegen.backend(), "platform": platform.platform()}
+        machine = {
+            "line": machine_line(),
+            "python": platform.python_version(),
+            "machine": platform.machine(),
+            "numpy": np.__version__,
+            "backend": _codegen.backend(),
+            "platform": platform.platform(),
+        }
         with open(args.json, "w") as fh:
-            json.dump({"machine": machine, "default_linearization": default, "configs": per_config,
-                       "profile_config": default, **profile}, fh, indent=1)
+            json.dump(
+                {
+                    "machine": machine,
+                    "default_linearization": default,
+                    "configs": per_config,
+                    "profile_config": default,
+                    **profile,
+                },
+                fh,
+                indent=1,
+            )
         print(f"\nwrote {args.json}")
     return 0
 

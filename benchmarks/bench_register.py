@@ -79,6 +79,7 @@ peak = status("VmHWM")
 print(json.dumps({"rows": rows, "seconds": dt, "baseline_mib": base, "peak_mib": peak}))
 """
 
+
 def make_inputs(n_rows: int, folder: Path) -> dict:
     """CSV and Parquet files of n_rows tiled scenario rows, written piece by piece."""
     import numpy as np
@@ -86,8 +87,8 @@ def make_inputs(n_rows: int, folder: Path) -> dict:
     import pyarrow.csv as pacsv
     import pyarrow.parquet as pq
 
-    from registration.recorded import to_file_frame
     from registration.online.scenario import paper_scenario
+    from registration.recorded import to_file_frame
 
     base = to_file_frame(paper_scenario(n_steps=300, seed=0).data)
     piece_copies = 334  # ~100,000 rows per piece
@@ -120,8 +121,12 @@ def make_inputs(n_rows: int, folder: Path) -> dict:
 
 def measure(mode: str, path: Path, out: Path, extra: dict) -> dict:
     env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
-    proc = subprocess.run([sys.executable, "-c", WORKER, mode, str(path), str(out), json.dumps(extra)],
-                          capture_output=True, text=True, env=env)
+    proc = subprocess.run(
+        [sys.executable, "-c", WORKER, mode, str(path), str(out), json.dumps(extra)],
+        capture_output=True,
+        text=True,
+        env=env,
+    )
     if proc.returncode != 0:
         raise RuntimeError(proc.stderr[-3000:])
     return json.loads(proc.stdout.strip().splitlines()[-1])
@@ -138,16 +143,27 @@ CASES = {
 
 
 def _label(fmt: str, extra: dict) -> str:
-    return (f"stream {fmt} in -> {extra['out_format']} out" + (", checkpoint every 1e5" if extra.get("checkpoint") else "")
-            + (", one pass (observability=filter)" if extra.get("observability") == "filter" else "")
-            + (", with plots" if extra.get("plots") else ""))
+    return (
+        f"stream {fmt} in -> {extra['out_format']} out"
+        + (", checkpoint every 1e5" if extra.get("checkpoint") else "")
+        + (", one pass (observability=filter)" if extra.get("observability") == "filter" else "")
+        + (", with plots" if extra.get("plots") else "")
+    )
 
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--rows", type=int, nargs="+", default=[100_000, 1_000_000], help="input sizes, rows")
-    ap.add_argument("--cases", nargs="+", choices=list(CASES), default=list(CASES), help="which runs to measure (default: all)")
-    ap.add_argument("--api-max-rows", type=int, default=300_000, help="largest size also run through the in-memory API")
+    ap.add_argument(
+        "--cases",
+        nargs="+",
+        choices=list(CASES),
+        default=list(CASES),
+        help="which runs to measure (default: all)",
+    )
+    ap.add_argument(
+        "--api-max-rows", type=int, default=300_000, help="largest size also run through the in-memory API"
+    )
     ap.add_argument("--json", type=Path, default=None, help="also write the results to this JSON file")
     args = ap.parse_args(argv)
     results = []
@@ -157,7 +173,10 @@ def main(argv=None) -> int:
             t = time.perf_counter()
             paths = make_inputs(n, tmp)
             sizes = {k: p.stat().st_size / 2**20 for k, p in paths.items()}
-            print(f"# {n} rows: CSV {sizes['csv']:.0f} MiB, Parquet {sizes['parquet']:.0f} MiB (written in {time.perf_counter() - t:.1f} s)", flush=True)
+            print(
+                f"# {n} rows: CSV {sizes['csv']:.0f} MiB, Parquet {sizes['parquet']:.0f} MiB (written in {time.perf_counter() - t:.1f} s)",
+                flush=True,
+            )
             cases = [("stream", *CASES[name]) for name in args.cases]
             if n <= args.api_max_rows:
                 cases.append(("api", "csv", {}))
@@ -170,8 +189,11 @@ def main(argv=None) -> int:
                 label = "API register (in memory)" if mode == "api" else _label(fmt, extra)
                 r.update({"case": label, "input_mib": sizes[fmt]})
                 results.append(r)
-                print(f"{n:>9} rows  {label:<58} {r['rows'] / r['seconds']:>9.0f} rows/s  {r['seconds']:7.2f} s  "
-                      f"peak RSS {r['peak_mib']:7.0f} MiB ({r['peak_mib'] - r['baseline_mib']:6.0f} above baseline)", flush=True)
+                print(
+                    f"{n:>9} rows  {label:<58} {r['rows'] / r['seconds']:>9.0f} rows/s  {r['seconds']:7.2f} s  "
+                    f"peak RSS {r['peak_mib']:7.0f} MiB ({r['peak_mib'] - r['baseline_mib']:6.0f} above baseline)",
+                    flush=True,
+                )
     if args.json:
         args.json.write_text(json.dumps(results, indent=2) + "\n")
     return 0

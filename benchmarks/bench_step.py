@@ -53,8 +53,14 @@ def tiled_rows(n: int, seed: int) -> np.ndarray:
 
 
 def inputs_of(config: RegistrationConfig, rows: np.ndarray) -> dict:
-    return {"x": np.zeros(N_STATE), "P": np.diag(np.square(config.prior_sigma)), "info": np.zeros((N_STATE, N_STATE)),
-            "Q": np.diag(np.square(config.q_sigma)), "row": rows, "sigma0": np.array(config.sigma0)}
+    return {
+        "x": np.zeros(N_STATE),
+        "P": np.diag(np.square(config.prior_sigma)),
+        "info": np.zeros((N_STATE, N_STATE)),
+        "Q": np.diag(np.square(config.q_sigma)),
+        "row": rows,
+        "sigma0": np.array(config.sigma0),
+    }
 
 
 def run(config: RegistrationConfig, rows: np.ndarray, keep_all: bool = False) -> dict:
@@ -85,19 +91,22 @@ def kernel_run(config: RegistrationConfig, rows: np.ndarray, lib) -> dict:
         a = np.asarray(inputs_of(config, rows)[name], dtype=np.float64)
         core = () if (r, c) == (1, 1) else ((r,) if c == 1 else (r, c))
         prepared.append((a, a.shape != core, core))
-    outs = cbackend.CKernel(fn.name, work, lib).scan(prepared, len(rows), len(STEP_CARRY), [True] * len(fn.output_names),
-                                                     fn.output_shapes)
-    return {name: buf.reshape(c, r).T if c > 1 else buf.reshape(-1)
-            for name, buf, (r, c) in zip(fn.output_names, outs, fn.output_shapes)}
+    outs = cbackend.CKernel(fn.name, work, lib).scan(
+        prepared, len(rows), len(STEP_CARRY), [True] * len(fn.output_names), fn.output_shapes
+    )
+    return {
+        name: buf.reshape(c, r).T if c > 1 else buf.reshape(-1)
+        for name, buf, (r, c) in zip(fn.output_names, outs, fn.output_shapes)
+    }
 
 
 def time_builds(configs: dict, rows: np.ndarray, libs: dict, rounds: int) -> dict:
     """Best us per step over ``rounds`` interleaved rounds after one warm-up, per (label, build)."""
     best = {(label, mode): float("inf") for label in configs for mode in libs}
-    for (label, mode) in best:
+    for label, mode in best:
         kernel_run(configs[label], rows, libs[mode])
     for _ in range(rounds):
-        for (label, mode) in best:
+        for label, mode in best:
             t0 = time.perf_counter()
             kernel_run(configs[label], rows, libs[mode])
             best[label, mode] = min(best[label, mode], (time.perf_counter() - t0) / len(rows) * 1e6)
@@ -107,7 +116,9 @@ def time_builds(configs: dict, rows: np.ndarray, libs: dict, rounds: int) -> dic
 def sigma_difference(ref: dict, other: dict) -> float:
     """Largest difference of the last step's x (in its sigmas) and P (in sqrt(P_ii P_jj))."""
     sx = np.sqrt(np.diag(ref["P_new"]))
-    return max(float(np.max(np.abs(other["x_new"] - ref["x_new"]) / sx)), p_difference(ref["P_new"], other["P_new"]))
+    return max(
+        float(np.max(np.abs(other["x_new"] - ref["x_new"]) / sx)), p_difference(ref["P_new"], other["P_new"])
+    )
 
 
 def native_table(rows: np.ndarray, rounds: int) -> None:
@@ -119,10 +130,14 @@ def native_table(rows: np.ndarray, rounds: int) -> None:
     names = sorted(_codegen.manifest()["functions"])
     t0 = time.perf_counter()
     libs = {mode: cbackend.library_of(names, mode) for mode in cbackend.BUILD_MODES}
-    print(f"\nbuilds for this CPU ({time.perf_counter() - t0:.1f} s to build or load): "
-          + "; ".join(f"{m} {' '.join(cbackend.cflags(m))}" for m in cbackend.BUILD_MODES))
-    print(f"{'linearisation':14s} {'update':8s} {'portable us':>12s} {'native us':>10s} {'ratio':>6s} {'exact us':>9s} "
-          f"{'ratio':>6s} {'native d/sigma':>15s} {'exact d':>8s}")
+    print(
+        f"\nbuilds for this CPU ({time.perf_counter() - t0:.1f} s to build or load): "
+        + "; ".join(f"{m} {' '.join(cbackend.cflags(m))}" for m in cbackend.BUILD_MODES)
+    )
+    print(
+        f"{'linearisation':14s} {'update':8s} {'portable us':>12s} {'native us':>10s} {'ratio':>6s} {'exact us':>9s} "
+        f"{'ratio':>6s} {'native d/sigma':>15s} {'exact d':>8s}"
+    )
     for lin in _codegen.variants("linearization"):
         cfgs = {u: RegistrationConfig(linearization=lin, covariance_update=u) for u in UPDATES}
         us = time_builds(cfgs, rows, libs, rounds)
@@ -132,10 +147,14 @@ def native_table(rows: np.ndarray, rounds: int) -> None:
             exact = kernel_run(cfg, rows, libs["native-exact"])
             same = all(np.array_equal(exact[k], ref[k]) for k in ref)
             p, n, e = us[u, "portable"], us[u, "native"], us[u, "native-exact"]
-            print(f"{lin:14s} {u:8s} {p:12.3f} {n:10.3f} {p / n:6.2f} {e:9.3f} {p / e:6.2f} {d_native:15.1e} "
-                  f"{'0 (same)' if same else 'DIFFERS':>8s}")
-    print(f"native d/sigma: the last step's largest difference from the portable build after {len(rows)} steps "
-          f"(the stated per-step tolerance is {cbackend.NATIVE_RTOL:g}; over a run, differences may accumulate)")
+            print(
+                f"{lin:14s} {u:8s} {p:12.3f} {n:10.3f} {p / n:6.2f} {e:9.3f} {p / e:6.2f} {d_native:15.1e} "
+                f"{'0 (same)' if same else 'DIFFERS':>8s}"
+            )
+    print(
+        f"native d/sigma: the last step's largest difference from the portable build after {len(rows)} steps "
+        f"(the stated per-step tolerance is {cbackend.NATIVE_RTOL:g}; over a run, differences may accumulate)"
+    )
 
 
 def p_difference(a: np.ndarray, b: np.ndarray) -> float:
@@ -157,7 +176,9 @@ def positive_definite_all(P: np.ndarray) -> tuple[bool, float]:
 
 def ill_config(update: str) -> RegistrationConfig:
     prior = (1e-9, 1e-9, 1e-9, 1e4, 1e-9, 1e-9) * 2
-    return RegistrationConfig(linearization="fitted", prior_sigma=prior, q_sigma=(0.0,) * N_STATE, covariance_update=update)
+    return RegistrationConfig(
+        linearization="fitted", prior_sigma=prior, q_sigma=(0.0,) * N_STATE, covariance_update=update
+    )
 
 
 def ill_run(update: str, rows: np.ndarray, chunk: int = 100_000) -> tuple[bool, float, float]:
@@ -168,7 +189,7 @@ def ill_run(update: str, rows: np.ndarray, chunk: int = 100_000) -> tuple[bool, 
     inputs = inputs_of(cfg, rows[:0])
     ok, cond, t0 = True, float("nan"), time.perf_counter()
     for start in range(0, len(rows), chunk):
-        inputs["row"] = rows[start:start + chunk]
+        inputs["row"] = rows[start : start + chunk]
         out = fn.scan(len(inputs["row"]), STEP_CARRY, inputs, keep_last=("info_new",))
         good, cond = positive_definite_all(out["P_new"])
         ok &= good
@@ -187,21 +208,29 @@ def main(argv=None) -> int:
     ap.add_argument("--no-native", action="store_true", help="skip the builds for the local CPU")
     args = ap.parse_args(argv)
     rows = tiled_rows(args.steps, args.seed)
-    print(f"{platform.machine()} {platform.processor() or ''} flags {' '.join(_codegen.CFLAGS)}; {args.steps} steps")
-    print(f"{'linearisation':14s} {'joseph us':>10s} {'carlson us':>11s} {'ratio':>6s} {'aim<=1us':>9s} {'max dP (final)':>15s}")
+    print(
+        f"{platform.machine()} {platform.processor() or ''} flags {' '.join(_codegen.CFLAGS)}; {args.steps} steps"
+    )
+    print(
+        f"{'linearisation':14s} {'joseph us':>10s} {'carlson us':>11s} {'ratio':>6s} {'aim<=1us':>9s} {'max dP (final)':>15s}"
+    )
     for lin in _codegen.variants("linearization"):
         cfgs = {u: RegistrationConfig(linearization=lin, covariance_update=u) for u in UPDATES}
         us = time_steps(cfgs, rows, args.repeat)
         dP = p_difference(run(cfgs["joseph"], rows)["P_new"], run(cfgs["carlson"], rows)["P_new"])
-        print(f"{lin:14s} {us['joseph']:10.3f} {us['carlson']:11.3f} {us['joseph'] / us['carlson']:6.2f} "
-              f"{'met' if us['carlson'] <= AIM_US else 'NOT met':>9s} {dP:15.2e}")
+        print(
+            f"{lin:14s} {us['joseph']:10.3f} {us['carlson']:11.3f} {us['joseph'] / us['carlson']:6.2f} "
+            f"{'met' if us['carlson'] <= AIM_US else 'NOT met':>9s} {dP:15.2e}"
+        )
     if not args.no_native:
         native_table(rows, args.repeat)
     if args.ill:
         for update in UPDATES:
             ok, cond, sec = ill_run(update, rows)
-            print(f"ill-conditioned {update}: {args.steps} steps in {sec:.2f} s, "
-                  f"every P finite with a Cholesky factor: {ok}; final cond(P) {cond:.2e}")
+            print(
+                f"ill-conditioned {update}: {args.steps} steps in {sec:.2f} s, "
+                f"every P finite with a Cholesky factor: {ok}; final cond(P) {cond:.2e}"
+            )
     return 0
 
 

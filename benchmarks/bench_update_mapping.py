@@ -100,12 +100,18 @@ def main(argv=None) -> int:
     forms = row_forms(args.rows, args.seed)
     check_identical(config, forms)
     best = measure(config, forms, args.repeat)
-    print(f"OnlineRegistrar.update(), {args.rows} rows, linearization {config.linearization}, best of {args.repeat} "
-          "interleaved rounds; every form's results equal the array's bit for bit")
+    print(
+        f"OnlineRegistrar.update(), {args.rows} rows, linearization {config.linearization}, best of {args.repeat} "
+        "interleaved rounds; every form's results equal the array's bit for bit"
+    )
     print(f"  {'row form':<24}{'us/row':>9}{'/ array':>10}")
     for name, sec in best.items():
         ratio = sec / best[BASELINE]
-        mark = "" if name == BASELINE else ("  (aim <= 2x: met)" if ratio <= AIM_RATIO else "  (aim <= 2x: NOT met)")
+        mark = (
+            ""
+            if name == BASELINE
+            else ("  (aim <= 2x: met)" if ratio <= AIM_RATIO else "  (aim <= 2x: NOT met)")
+        )
         print(f"  {name:<24}{sec * 1e6:9.2f}{ratio:9.2f}x{mark}")
     return 0
 

@@ -36,8 +36,20 @@ class NumpyFilter:
 
     def model_rows(self, rows: np.ndarray):
         """Z (K, 3), H (K, 3, 12), M (K, 3, 6) for all rows in one vectorised call."""
-        out = dict(zip(self.model.output_names, self.model(
-            rows[:, 0:3], rows[:, 3:6], rows[:, 6:9], rows[:, 9:12], rows[:, 12:15], rows[:, 15:18], self.sigma0)))
+        out = dict(
+            zip(
+                self.model.output_names,
+                self.model(
+                    rows[:, 0:3],
+                    rows[:, 3:6],
+                    rows[:, 6:9],
+                    rows[:, 9:12],
+                    rows[:, 12:15],
+                    rows[:, 15:18],
+                    self.sigma0,
+                ),
+            )
+        )
         return out["Z"], out["H"], out["M"]
 
     def fitted_row(self, x: np.ndarray, P_pred: np.ndarray, row: np.ndarray, pair):
@@ -45,12 +57,12 @@ class NumpyFilter:
 
         ``pair`` is a single-point caller of the generated pseudo-measurement. Same point as
         derive/kalman.py ``_fitted_linearisation``, written here."""
-        c = row.copy()                                   # corrected row
+        c = row.copy()  # corrected row
         c[3:9] -= x[0:6]
         c[12:18] -= x[6:12]
         Z, H, M, R, _, _ = pair(c[0:3], c[3:6], c[6:9], c[9:12], c[12:15], c[15:18], self.sigma0)
         S = H @ P_pred @ H.T + R
-        v = (self.R0 @ M.T) @ np.linalg.solve(0.5 * (S + S.T), Z)   # MAP noise of the plots
+        v = (self.R0 @ M.T) @ np.linalg.solve(0.5 * (S + S.T), Z)  # MAP noise of the plots
         t_a, t_b = c[6:9] - v[0:3], c[15:18] - v[3:6]
         Z, H, M, R, _, _ = pair(c[0:3], c[3:6], t_a, c[9:12], c[12:15], t_b, self.sigma0)
         return Z + M @ v, H, R
@@ -76,7 +88,9 @@ class NumpyFilter:
                 if vectorised:
                     Z, H, M = Zs[i], Hs[i], Ms[i]
                 else:
-                    Z, H, M, _, _, _ = pair(row[0:3], row[3:6], row[6:9], row[9:12], row[12:15], row[15:18], sigma0)
+                    Z, H, M, _, _, _ = pair(
+                        row[0:3], row[3:6], row[6:9], row[9:12], row[12:15], row[15:18], sigma0
+                    )
                 R = M @ R0 @ M.T
                 nu = Z - H @ x
             HP = H @ P_pred

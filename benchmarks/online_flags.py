@@ -67,18 +67,32 @@ def flags_experiment(config, rows: np.ndarray, reference_last: np.ndarray, repea
         (tmp / "harness.c").write_text(code)
         x0 = np.zeros(N_STATE) if config.x0 is None else np.array(config.x0)
         # matrices in column-major order (CasADi's), all symmetric here anyway
-        blob = np.concatenate([rows.ravel(), x0, np.diag(np.square(config.prior_sigma)).ravel(),
-                               np.zeros(N_STATE * N_STATE), np.diag(np.square(config.q_sigma)).ravel(), np.array(config.sigma0)])
+        blob = np.concatenate(
+            [
+                rows.ravel(),
+                x0,
+                np.diag(np.square(config.prior_sigma)).ravel(),
+                np.zeros(N_STATE * N_STATE),
+                np.diag(np.square(config.q_sigma)).ravel(),
+                np.array(config.sigma0),
+            ]
+        )
         blob.astype("<f8").tofile(tmp / "in.bin")
         loader_flags = [f for f in _codegen.CFLAGS if f not in ("-shared", "-fPIC")]
-        for label, flags in (("plain C, loader flags " + " ".join(loader_flags), loader_flags),
-                             ("plain C, -O3 -march=native", ["-O3", "-march=native"])):
+        for label, flags in (
+            ("plain C, loader flags " + " ".join(loader_flags), loader_flags),
+            ("plain C, -O3 -march=native", ["-O3", "-march=native"]),
+        ):
             exe = tmp / ("h" + str(len(out)))
-            proc = subprocess.run([cc, *flags, "-o", str(exe), str(tmp / "harness.c"), "-lm"], capture_output=True, text=True)
+            proc = subprocess.run(
+                [cc, *flags, "-o", str(exe), str(tmp / "harness.c"), "-lm"], capture_output=True, text=True
+            )
             if proc.returncode != 0:
                 out[label] = None
                 continue
-            res = subprocess.run([str(exe), str(len(rows)), str(repeat), str(tmp / "in.bin")], capture_output=True, text=True)
+            res = subprocess.run(
+                [str(exe), str(len(rows)), str(repeat), str(tmp / "in.bin")], capture_output=True, text=True
+            )
             us, last = (float(v) for v in res.stdout.split())
             if not np.isclose(last, reference_last, rtol=1e-9):
                 raise SystemExit(f"{label}: last dr_a estimate {last} != register()'s {reference_last}")

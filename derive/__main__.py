@@ -33,8 +33,12 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     parser = argparse.ArgumentParser(prog="python -m derive", description=__doc__)
     parser.add_argument("--check", action="store_true", help="regenerate into a temporary folder and compare")
     parser.add_argument("--out", type=Path, default=GENERATED_DIR, help="output folder (default: generated/)")
-    parser.add_argument("--fresh", type=Path, metavar="DIR",
-                        help="with --check: write the fresh generation to DIR and keep it (to inspect differences)")
+    parser.add_argument(
+        "--fresh",
+        type=Path,
+        metavar="DIR",
+        help="with --check: write the fresh generation to DIR and keep it (to inspect differences)",
+    )
     args = parser.parse_args(argv)
     if args.fresh is not None and not args.check:
         parser.error("--fresh only goes with --check")

@@ -109,7 +109,11 @@ def specs() -> list[FunctionSpec]:
                 "Gamma = dPhi/d(r, q, e) (3x3), eq. (11), by symbolic differentiation."
             ),
             inputs=MEAS_INPUTS,
-            outputs=(Port("u_enu", Phi, "m"), Port("Psi", Psi, "m/rad, m/m"), Port("Gamma", Gamma, "m/m, m/rad")),
+            outputs=(
+                Port("u_enu", Phi, "m"),
+                Port("Psi", Psi, "m/rad, m/m"),
+                Port("Gamma", Gamma, "m/m, m/rad"),
+            ),
             jacobians=(
                 JacobianDecl("Psi", "u_enu", ("heading", "pitch", "roll", "r", "q", "e")),
                 JacobianDecl("Gamma", "u_enu", ("r", "q", "e")),

@@ -16,9 +16,4 @@ WGS84_B = WGS84_A * (1 - WGS84_F)
 #: first eccentricity squared e^2 = f (2 - f)
 WGS84_E2 = WGS84_F * (2 - WGS84_F)
 
-CONSTANTS = {
-    "wgs84_a_m": WGS84_A,
-    "wgs84_b_m": WGS84_B,
-    "wgs84_f": WGS84_F,
-    "wgs84_e2": WGS84_E2,
-}
+CONSTANTS = {"wgs84_a_m": WGS84_A, "wgs84_b_m": WGS84_B, "wgs84_f": WGS84_F, "wgs84_e2": WGS84_E2}

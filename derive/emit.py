@@ -90,7 +90,7 @@ class SympyToCasadi:
                     return 1 / b
                 if n == -2:
                     return 1 / (b * b)
-                return b ** n if n > 0 else 1 / (b ** (-n))
+                return b**n if n > 0 else 1 / (b ** (-n))
             if ex == sp.Rational(1, 2):
                 return ca.sqrt(b)
             if ex == sp.Rational(-1, 2):
@@ -266,5 +266,7 @@ def compare_dirs(expected: Path, actual: Path) -> list[str]:
         if old.get("derive_sources_sha256") != new.get("derive_sources_sha256"):
             problems.append("  the derive/ sources changed since generated/ was written")
         if old.get("tool_versions") != new.get("tool_versions"):
-            problems.append(f"  tool versions: generated with {old.get('tool_versions')}, now {new.get('tool_versions')}")
+            problems.append(
+                f"  tool versions: generated with {old.get('tool_versions')}, now {new.get('tool_versions')}"
+            )
     return problems

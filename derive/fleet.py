@@ -64,7 +64,9 @@ def sensor_offset_expr(p_ecef, nav, att, lever_deck, pos_err_enu=None) -> sp.Mat
     return p_shifted
 
 
-def predicted_plot_expr(p_ecef, nav, att_reported, att_err, bias, lever_deck, gain=None, pos_err_enu=None) -> sp.Matrix:
+def predicted_plot_expr(
+    p_ecef, nav, att_reported, att_err, bias, lever_deck, gain=None, pos_err_enu=None
+) -> sp.Matrix:
     """Plot [r m, q rad, e rad] the sensor reports for a target at p_ecef: true plot + bias (q unwrapped).
 
     ``gain`` (dimensionless, optional): the range is ``(1 + gain)`` times the true slant range
@@ -82,7 +84,9 @@ def predicted_plot_expr(p_ecef, nav, att_reported, att_err, bias, lever_deck, ga
     return sp.Matrix([slant, plot[1], plot[2]]) + sp.Matrix(bias)
 
 
-def corrected_plot2ecef_expr(nav, att_reported, att_err, bias, lever_deck, meas, gain=None, pos_err_enu=None) -> sp.Matrix:
+def corrected_plot2ecef_expr(
+    nav, att_reported, att_err, bias, lever_deck, meas, gain=None, pos_err_enu=None
+) -> sp.Matrix:
     """Target ECEF (m) from a plot corrected by the biases (and range gain) and an attitude
     corrected by its errors, seen from the true sensor position (the inverse of predicted_plot_expr)."""
     att = [att_reported[i] - att_err[i] for i in range(3)]
@@ -118,8 +122,12 @@ FLEET_DOMAIN = {
 
 def _nav_ports(lat, lon, alt, heading, pitch, roll) -> tuple:
     return (
-        Port("lat", lat, "rad"), Port("lon", lon, "rad"), Port("alt", alt, "m"),
-        Port("heading", heading, "rad"), Port("pitch", pitch, "rad"), Port("roll", roll, "rad"),
+        Port("lat", lat, "rad"),
+        Port("lon", lon, "rad"),
+        Port("alt", alt, "m"),
+        Port("heading", heading, "rad"),
+        Port("pitch", pitch, "rad"),
+        Port("roll", roll, "rad"),
     )
 
 
@@ -150,9 +158,14 @@ def specs() -> list[FunctionSpec]:
             "(true plot + bias, bearing wrapped)."
         ),
         inputs=(
-            Port("p_ecef", p_ecef, "m"), *nav_ports,
-            Port("att_err", att_err, "rad"), Port("bias", bias, "m, rad, rad"), Port("lever_deck", lever, "m"),
-            Port("r", r, "m"), Port("q", q, "rad"), Port("e", e, "rad"),
+            Port("p_ecef", p_ecef, "m"),
+            *nav_ports,
+            Port("att_err", att_err, "rad"),
+            Port("bias", bias, "m, rad, rad"),
+            Port("lever_deck", lever, "m"),
+            Port("r", r, "m"),
+            Port("q", q, "rad"),
+            Port("e", e, "rad"),
         ),
         outputs=(
             Port("residual", residual, "m, rad, rad"),
@@ -173,14 +186,22 @@ def specs() -> list[FunctionSpec]:
         ),
         inputs=(
             *nav_ports,
-            Port("att_err", att_err, "rad"), Port("bias", bias, "m, rad, rad"), Port("lever_deck", lever, "m"),
-            Port("r", r, "m"), Port("q", q, "rad"), Port("e", e, "rad"),
+            Port("att_err", att_err, "rad"),
+            Port("bias", bias, "m, rad, rad"),
+            Port("lever_deck", lever, "m"),
+            Port("r", r, "m"),
+            Port("q", q, "rad"),
+            Port("e", e, "rad"),
         ),
         outputs=(Port("p_ecef", p_target, "m"),),
         domain=FLEET_DOMAIN,
     )
-    return [residual_spec, plot2ecef_spec, *[_rows_spec(residual_spec, n) for n in ROW_BASIS_SIZES],
-            *extended_specs()]
+    return [
+        residual_spec,
+        plot2ecef_spec,
+        *[_rows_spec(residual_spec, n) for n in ROW_BASIS_SIZES],
+        *extended_specs(),
+    ]
 
 
 def _rows_spec(residual_spec: FunctionSpec, n_basis: int, extended: bool = False) -> CasadiSpec:
@@ -189,7 +210,9 @@ def _rows_spec(residual_spec: FunctionSpec, n_basis: int, extended: bool = False
     ports = [p for p in residual_spec.inputs if p.name != "dt"]
     scalar = {p.name for p in ports if p.shape == (1, 1)}
     inputs = tuple(CasadiPort(p.name, p.shape, p.unit) for p in ports) + (
-        CasadiPort("weight", (3, 1), "1/m, 1/rad, 1/rad"), CasadiPort("basis", (n_basis, 1), "1"))
+        CasadiPort("weight", (3, 1), "1/m, 1/rad, 1/rad"),
+        CasadiPort("basis", (n_basis, 1), "1"),
+    )
     n_state = 11 if extended else 6
     m = 3 * n_basis + n_state + 1
     name = f"fleet_rows_ext_{n_basis}" if extended else f"fleet_rows_{n_basis}"
@@ -207,12 +230,20 @@ def _rows_spec(residual_spec: FunctionSpec, n_basis: int, extended: bool = False
         res, J, _ = residual(*call)
         w, basis = args[-2], args[-1]
         A = ca.diag(w) @ J
-        Z = ca.horzcat(*[basis[k] * A[:, 0:3] for k in range(n_basis)], A[:, 3:3 + n_state], w * res)
+        Z = ca.horzcat(*[basis[k] * A[:, 0:3] for k in range(n_basis)], A[:, 3 : 3 + n_state], w * res)
         return ca.Function(name, args, [Z.T], [p.name for p in inputs], ["rows_t"], {"cse": True})
 
-    domain = {**FLEET_DOMAIN, "weight": [(0.0, 0.1), (0.0, 3000.0), (0.0, 3000.0)], "basis": [(-1.0, 1.0)] * n_basis}
-    state_doc = ("J_x over the 11 states (attitude errors, biases, range gain, time bias, position errors; the "
-                 "time bias's column is d residual / d dt at dt = 0)" if extended else "J_x over the 6 states")
+    domain = {
+        **FLEET_DOMAIN,
+        "weight": [(0.0, 0.1), (0.0, 3000.0), (0.0, 3000.0)],
+        "basis": [(-1.0, 1.0)] * n_basis,
+    }
+    state_doc = (
+        "J_x over the 11 states (attitude errors, biases, range gain, time bias, position errors; the "
+        "time bias's column is d residual / d dt at dt = 0)"
+        if extended
+        else "J_x over the 6 states"
+    )
     return CasadiSpec(
         name=name,
         doc=(
@@ -259,7 +290,11 @@ def extended_specs() -> list:
     J = jacobian(difference, p_ecef, att_err, bias, gain, dt, pos_err)
     plot = sp.Matrix([predicted[0], _wrap(predicted[1]), predicted[2]])
     nav_ports = _nav_ports(*nav6)
-    error_ports = (Port("att_err", att_err, "rad"), Port("bias", bias, "m, rad, rad"), Port("gain", gain, "1"))
+    error_ports = (
+        Port("att_err", att_err, "rad"),
+        Port("bias", bias, "m, rad, rad"),
+        Port("gain", gain, "1"),
+    )
     residual_spec = FunctionSpec(
         name="fleet_residual_ext",
         doc=(
@@ -272,10 +307,17 @@ def extended_specs() -> list:
             "the predicted plot."
         ),
         inputs=(
-            Port("p_ecef", p_ecef, "m"), Port("v_ecef", v_ecef, "m/s"), *nav_ports,
-            Port("nav_rate", rate, "rad/s, rad/s, m/s, rad/s, rad/s, rad/s"), *error_ports, Port("dt", dt, "s"),
-            Port("pos_err", pos_err, "m"), Port("lever_deck", lever, "m"),
-            Port("r", r, "m"), Port("q", q, "rad"), Port("e", e, "rad"),
+            Port("p_ecef", p_ecef, "m"),
+            Port("v_ecef", v_ecef, "m/s"),
+            *nav_ports,
+            Port("nav_rate", rate, "rad/s, rad/s, m/s, rad/s, rad/s, rad/s"),
+            *error_ports,
+            Port("dt", dt, "s"),
+            Port("pos_err", pos_err, "m"),
+            Port("lever_deck", lever, "m"),
+            Port("r", r, "m"),
+            Port("q", q, "rad"),
+            Port("e", e, "rad"),
         ),
         outputs=(
             Port("residual", residual, "m, rad, rad"),
@@ -294,9 +336,20 @@ def extended_specs() -> list:
             "sensor position error pos_err (m, ENU, stated - true), lever_deck (m), measured r (m), q, e (rad). "
             "The inverse of fleet_residual_ext's predicted plot at dt = 0."
         ),
-        inputs=(*nav_ports, *error_ports, Port("pos_err", pos_err, "m"), Port("lever_deck", lever, "m"),
-                Port("r", r, "m"), Port("q", q, "rad"), Port("e", e, "rad")),
+        inputs=(
+            *nav_ports,
+            *error_ports,
+            Port("pos_err", pos_err, "m"),
+            Port("lever_deck", lever, "m"),
+            Port("r", r, "m"),
+            Port("q", q, "rad"),
+            Port("e", e, "rad"),
+        ),
         outputs=(Port("p_ecef", p_target, "m"),),
         domain=FLEET_DOMAIN,
     )
-    return [residual_spec, plot2ecef_spec, *[_rows_spec(residual_spec, n, extended=True) for n in ROW_BASIS_SIZES]]
+    return [
+        residual_spec,
+        plot2ecef_spec,
+        *[_rows_spec(residual_spec, n, extended=True) for n in ROW_BASIS_SIZES],
+    ]

@@ -28,13 +28,7 @@ def geodetic2ecef_expr(B, L, H) -> sp.Matrix:
 def enu2ecef_standard_expr(B, L) -> sp.Matrix:
     """R_ecef_enu: the orthonormal rotation taking ENU components to ECEF components."""
     sB, cB, sL, cL = sp.sin(B), sp.cos(B), sp.sin(L), sp.cos(L)
-    return sp.Matrix(
-        [
-            [-sL, -sB * cL, cB * cL],
-            [cL, -sB * sL, cB * sL],
-            [0, cB, sB],
-        ]
-    )
+    return sp.Matrix([[-sL, -sB * cL, cB * cL], [cL, -sB * sL, cB * sL], [0, cB, sB]])
 
 
 def enu2ecef_paper_expr(B, L) -> sp.Matrix:
@@ -48,11 +42,7 @@ def enu2ecef_paper_expr(B, L) -> sp.Matrix:
     d1 = sp.sqrt(1 - (a4 - b4) / a4 * cB**2)
     d2 = sp.sqrt(1 + (a4 - b4) / b4 * sB**2)
     return sp.Matrix(
-        [
-            [-sL, -sB * cL / d1, cB * cL / d2],
-            [cL, -sB * sL / d1, cB * sL / d2],
-            [0, cB / d2, sB / d1],
-        ]
+        [[-sL, -sB * cL / d1, cB * cL / d2], [cL, -sB * sL / d1, cB * sL / d2], [0, cB / d2, sB / d1]]
     )
 
 
@@ -67,6 +57,7 @@ def radii_of_curvature_expr(B) -> sp.Matrix:
     """
     w2 = 1 - WGS84_E2 * sp.sin(B) ** 2
     return sp.Matrix([WGS84_A * (1 - WGS84_E2) / w2 ** sp.Rational(3, 2), WGS84_A / sp.sqrt(w2)])
+
 
 def ecef2geodetic_expr(x, y, z, iterations: int = 2) -> sp.Matrix:
     """[lat, lon, alt] (rad, rad, m) of an ECEF point (m), the inverse of eq. (1).
@@ -93,7 +84,11 @@ def ecef2geodetic_expr(x, y, z, iterations: int = 2) -> sp.Matrix:
     return sp.Matrix([sp.atan2(Y, X), sp.atan2(y, x), alt_expr])
 
 
-GEO_DOMAIN = {"lat": (-1.5707963267948966, 1.5707963267948966), "lon": (-3.141592653589793, 3.141592653589793), "alt": (-500.0, 1.0e5)}
+GEO_DOMAIN = {
+    "lat": (-1.5707963267948966, 1.5707963267948966),
+    "lon": (-3.141592653589793, 3.141592653589793),
+    "alt": (-500.0, 1.0e5),
+}
 
 
 def specs() -> list[FunctionSpec]:
@@ -122,9 +117,11 @@ def specs() -> list[FunctionSpec]:
     out.append(
         FunctionSpec(
             name="surface_residual",
-            doc=("Height residual of a target on a surface of known height (a ship on the sea): residual = "
-                 "alt_surface (m above WGS-84) - the geodetic height of p_ecef (m, the inverse of eq. (1)), and "
-                 "J = d residual / d p_ecef (1x3; minus the geodetic up at the point)."),
+            doc=(
+                "Height residual of a target on a surface of known height (a ship on the sea): residual = "
+                "alt_surface (m above WGS-84) - the geodetic height of p_ecef (m, the inverse of eq. (1)), and "
+                "J = d residual / d p_ecef (1x3; minus the geodetic up at the point)."
+            ),
             inputs=(Port("p_ecef", p_ecef, "m"), Port("alt_surface", alt_surface, "m")),
             outputs=(Port("residual", residual, "m"), Port("J", jacobian(residual, p_ecef), "1")),
             jacobians=(JacobianDecl("J", "residual", ("p_ecef",)),),

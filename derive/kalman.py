@@ -34,8 +34,9 @@ The first three inputs are carried from the first three outputs of the previous 
 
 import casadi as ca
 
-from .pseudo_measurement import PAIR_DOMAIN, specs as pair_specs
 from .emit import to_casadi_function
+from .pseudo_measurement import PAIR_DOMAIN
+from .pseudo_measurement import specs as pair_specs
 from .spec import CasadiPort, CasadiSpec
 
 LINEARIZATIONS = ("paper", "relinearized", "fitted")
@@ -235,7 +236,11 @@ def _domain():
     row = row + row
     eye = [(1.0, 1.0) if i == j else (0.0, 0.0) for j in range(N_STATE) for i in range(N_STATE)]
     return {
-        "x": [(-0.01, 0.01)] * 3 + [(-1000.0, 1000.0)] + [(-0.01, 0.01)] * 5 + [(-1000.0, 1000.0)] + [(-0.01, 0.01)] * 2,
+        "x": [(-0.01, 0.01)] * 3
+        + [(-1000.0, 1000.0)]
+        + [(-0.01, 0.01)] * 5
+        + [(-1000.0, 1000.0)]
+        + [(-0.01, 0.01)] * 2,
         "P": eye,
         "info": eye,
         "Q": [(0.0, 0.0)] * (N_STATE * N_STATE),
@@ -267,8 +272,12 @@ def _build_information(variant: str):
         _, H, _, R, _, _ = _pair_at(pair, _corrected(row, x), sigma0)
         info_new = _add_information(info, H, R)
         return ca.Function(
-            f"information_step_{variant}", [info, x, row, sigma0], [info_new],
-            [p.name for p in INFO_INPUTS], [p.name for p in INFO_OUTPUTS], {"cse": True},
+            f"information_step_{variant}",
+            [info, x, row, sigma0],
+            [info_new],
+            [p.name for p in INFO_INPUTS],
+            [p.name for p in INFO_OUTPUTS],
+            {"cse": True},
         )
 
     return build
@@ -288,7 +297,12 @@ def specs() -> list[CasadiSpec]:
                 inputs=INFO_INPUTS,
                 outputs=INFO_OUTPUTS,
                 builder=_build_information(variant),
-                domain={"info": domain["info"], "x": domain["x"], "row": domain["row"], "sigma0": domain["sigma0"]},
+                domain={
+                    "info": domain["info"],
+                    "x": domain["x"],
+                    "row": domain["row"],
+                    "sigma0": domain["sigma0"],
+                },
             )
         )
     for update in COVARIANCE_UPDATES:
@@ -300,7 +314,8 @@ def specs() -> list[CasadiSpec]:
                         name=f"kalman_step_{lin}_{variant}{suffix}",
                         doc=(
                             f"One registration Kalman step (eqs. 18-23), linearisation '{lin}', T variant '{variant}'"
-                            + ("" if update == "joseph" else f", covariance update '{update}'") + ". "
+                            + ("" if update == "joseph" else f", covariance update '{update}'")
+                            + ". "
                             "Inputs x, P, info carried from outputs x_new, P_new, info_new of the previous step."
                         ),
                         inputs=INPUTS,

@@ -136,7 +136,11 @@ def specs() -> list[FunctionSpec]:
     R_ctd_cam = camera_to_ctd_rotation_expr(att, phic)
     w_ctd = R_ctd_cam * unit_cam
     angles_ctd = cartesian2polar3_expr(*w_ctd)[1:, :]
-    J_cam = polar_jacobian_at(w_ctd)[1:, :] * R_ctd_cam * cartesian_jacobian_at([sp.Integer(1), ang_c[0], ang_c[1]])[:, 1:]
+    J_cam = (
+        polar_jacobian_at(w_ctd)[1:, :]
+        * R_ctd_cam
+        * cartesian_jacobian_at([sp.Integer(1), ang_c[0], ang_c[1]])[:, 1:]
+    )
 
     # camera-centred polar -> touchdown frame (rebuild after fusion)
     p_td_c = polar2cartesian3_expr(*pol_c) + M * d_c
@@ -164,7 +168,12 @@ def specs() -> list[FunctionSpec]:
                 "Eq. (7): radar polar [r m, a rad, b rad] in deck axes -> target p_td (m) in the touchdown "
                 "frame, with u_deck (m), A = du_deck/dpolar, M = R_td_deck and J = dp_td/dpolar = M A."
             ),
-            inputs=(Port("polar_rdr", pol_r, "m, rad, rad"), att_port, phic_port, Port("d_radar_deck", d_r, "m")),
+            inputs=(
+                Port("polar_rdr", pol_r, "m, rad, rad"),
+                att_port,
+                phic_port,
+                Port("d_radar_deck", d_r, "m"),
+            ),
             outputs=(
                 Port("p_td", p_td_r, "m"),
                 Port("u_deck", u_deck, "m"),
@@ -228,7 +237,12 @@ def specs() -> list[FunctionSpec]:
                 "Polar [r m, a rad, b rad] about the camera in td axes -> p_td (m), and J = dp_td/dpolar "
                 "(rebuilds the fused position, eq. 12)."
             ),
-            inputs=(Port("polar_ctd", pol_c, "m, rad, rad"), att_port, phic_port, Port("d_camera_deck", d_c, "m")),
+            inputs=(
+                Port("polar_ctd", pol_c, "m, rad, rad"),
+                att_port,
+                phic_port,
+                Port("d_camera_deck", d_c, "m"),
+            ),
             outputs=(Port("p_td", p_td_c, "m"), Port("J", J_ctd, "1, m/rad")),
             jacobians=(JacobianDecl("J", "p_td", ("polar_ctd",)),),
             domain={

@@ -34,7 +34,11 @@ def ecef2plot_expr(p_ecef, nav, att, variant: str) -> sp.Matrix:
     u_enu = T.T * (sp.Matrix(p_ecef) - geodetic2ecef_expr(*nav))
     u = deck2enu_rotation_expr(*att).T * u_enu
     return sp.Matrix(
-        [sp.sqrt(u[0] ** 2 + u[1] ** 2 + u[2] ** 2), sp.atan2(u[0], u[1]), sp.atan2(u[2], sp.sqrt(u[0] ** 2 + u[1] ** 2))]
+        [
+            sp.sqrt(u[0] ** 2 + u[1] ** 2 + u[2] ** 2),
+            sp.atan2(u[0], u[1]),
+            sp.atan2(u[2], sp.sqrt(u[0] ** 2 + u[1] ** 2)),
+        ]
     )
 
 
@@ -67,9 +71,15 @@ def specs() -> list[FunctionSpec]:
                 inputs=tuple(
                     Port(n, s, u)
                     for n, s, u in [
-                        ("lat", lat, "rad"), ("lon", lon, "rad"), ("alt", alt, "m"),
-                        ("heading", heading, "rad"), ("pitch", pitch, "rad"), ("roll", roll, "rad"),
-                        ("r", r, "m"), ("q", q, "rad"), ("e", e, "rad"),
+                        ("lat", lat, "rad"),
+                        ("lon", lon, "rad"),
+                        ("alt", alt, "m"),
+                        ("heading", heading, "rad"),
+                        ("pitch", pitch, "rad"),
+                        ("roll", roll, "rad"),
+                        ("r", r, "m"),
+                        ("q", q, "rad"),
+                        ("e", e, "rad"),
                     ]
                 ),
                 outputs=(Port("p_ecef", X, "m"),),
@@ -87,16 +97,34 @@ def specs() -> list[FunctionSpec]:
                 ),
                 inputs=(
                     Port("p_ecef", sp.Matrix([x, y, z]), "m"),
-                    Port("lat", lat, "rad"), Port("lon", lon, "rad"), Port("alt", alt, "m"),
-                    Port("heading", heading, "rad"), Port("pitch", pitch, "rad"), Port("roll", roll, "rad"),
+                    Port("lat", lat, "rad"),
+                    Port("lon", lon, "rad"),
+                    Port("alt", alt, "m"),
+                    Port("heading", heading, "rad"),
+                    Port("pitch", pitch, "rad"),
+                    Port("roll", roll, "rad"),
                 ),
-                outputs=(Port("plot", ecef2plot_expr([x, y, z], [lat, lon, alt], [heading, pitch, roll], variant), "m, rad, rad"),),
+                outputs=(
+                    Port(
+                        "plot",
+                        ecef2plot_expr([x, y, z], [lat, lon, alt], [heading, pitch, roll], variant),
+                        "m, rad, rad",
+                    ),
+                ),
                 domain={**GEO_DOMAIN, **MEAS_DOMAIN, "p_ecef": [(-7.0e6, 7.0e6)] * 3},
             )
         )
 
-    nav_a, att_a, meas_a = _vec("a", ["lat", "lon", "alt"]), _vec("a", ["C", "phi", "theta"]), _vec("a", ["r", "q", "e"])
-    nav_b, att_b, meas_b = _vec("b", ["lat", "lon", "alt"]), _vec("b", ["C", "phi", "theta"]), _vec("b", ["r", "q", "e"])
+    nav_a, att_a, meas_a = (
+        _vec("a", ["lat", "lon", "alt"]),
+        _vec("a", ["C", "phi", "theta"]),
+        _vec("a", ["r", "q", "e"]),
+    )
+    nav_b, att_b, meas_b = (
+        _vec("b", ["lat", "lon", "alt"]),
+        _vec("b", ["C", "phi", "theta"]),
+        _vec("b", ["r", "q", "e"]),
+    )
     sigma0 = sp.Matrix(sp.symbols("s_ra s_qa s_ea s_rb s_qb s_eb", positive=True))
     for variant in T_VARIANTS:
         X_a = plot2ecef_expr(list(nav_a), list(att_a), list(meas_a), variant)
@@ -115,13 +143,21 @@ def specs() -> list[FunctionSpec]:
                     "H (3x12), M (3x6), R = M R0 M^T (m^2), and X_A, X_B (ECEF m)."
                 ),
                 inputs=(
-                    Port("nav_a", nav_a, "rad, rad, m"), Port("att_a", att_a, "rad"), Port("meas_a", meas_a, "m, rad, rad"),
-                    Port("nav_b", nav_b, "rad, rad, m"), Port("att_b", att_b, "rad"), Port("meas_b", meas_b, "m, rad, rad"),
+                    Port("nav_a", nav_a, "rad, rad, m"),
+                    Port("att_a", att_a, "rad"),
+                    Port("meas_a", meas_a, "m, rad, rad"),
+                    Port("nav_b", nav_b, "rad, rad, m"),
+                    Port("att_b", att_b, "rad"),
+                    Port("meas_b", meas_b, "m, rad, rad"),
                     Port("sigma0", sigma0, "m, rad, rad, m, rad, rad"),
                 ),
                 outputs=(
-                    Port("Z", Z, "m"), Port("H", H, "m/rad, m/m"), Port("M", M, "m/m, m/rad"),
-                    Port("R", R, "m^2"), Port("p_a_ecef", X_a, "m"), Port("p_b_ecef", X_b, "m"),
+                    Port("Z", Z, "m"),
+                    Port("H", H, "m/rad, m/m"),
+                    Port("M", M, "m/m, m/rad"),
+                    Port("R", R, "m^2"),
+                    Port("p_a_ecef", X_a, "m"),
+                    Port("p_b_ecef", X_b, "m"),
                 ),
                 jacobians=(
                     JacobianDecl("H", "Z", ("att_a", "meas_a", "att_b", "meas_b")),

@@ -33,13 +33,24 @@ def main(argv=None) -> dict:
     online, batch = [], []
     for seed in range(100, 100 + args.runs):
         sc = fleet_scenario(seed, duration_s=args.duration)
-        online.append(nees(sc, register_online(sc.plots, sc.sensors, sc.navigation, sc.platforms, sc.references,
-                                               residuals=False)))
+        online.append(
+            nees(
+                sc,
+                register_online(
+                    sc.plots, sc.sensors, sc.navigation, sc.platforms, sc.references, residuals=False
+                ),
+            )
+        )
         batch.append(nees(sc, solve_batch(sc.problem())))
     dof = int(sc.problem().layout.free.size)
     lo, hi = nees_interval(args.runs, dof)
-    out = {"runs": args.runs, "states": dof, "online": float(np.mean(online)), "batch": float(np.mean(batch)),
-           "band": (lo, hi)}
+    out = {
+        "runs": args.runs,
+        "states": dof,
+        "online": float(np.mean(online)),
+        "batch": float(np.mean(batch)),
+        "band": (lo, hi),
+    }
     print(f"| estimator | mean NEES over {args.runs} runs ({dof} states) | 95 % band |")
     print("|---|---:|---|")
     for name in ("online", "batch"):

@@ -19,10 +19,12 @@ MIN_DELTA_E = 20.0
 
 _SIMULATIONS = {
     "normal": np.eye(3),
-    "protanopia": np.array([[0.152286, 1.052583, -0.204868], [0.114503, 0.786281, 0.099216],
-                            [-0.003882, -0.048116, 1.051998]]),
-    "deuteranopia": np.array([[0.367322, 0.860646, -0.227968], [0.280085, 0.672501, 0.047413],
-                              [-0.011820, 0.042940, 0.968881]]),
+    "protanopia": np.array(
+        [[0.152286, 1.052583, -0.204868], [0.114503, 0.786281, 0.099216], [-0.003882, -0.048116, 1.051998]]
+    ),
+    "deuteranopia": np.array(
+        [[0.367322, 0.860646, -0.227968], [0.280085, 0.672501, 0.047413], [-0.011820, 0.042940, 0.968881]]
+    ),
 }
 _XYZ = np.array([[0.4124, 0.3576, 0.1805], [0.2126, 0.7152, 0.0722], [0.0193, 0.1192, 0.9505]])
 _WHITE = _XYZ @ np.ones(3)
@@ -61,9 +63,16 @@ def figure_colours_told_apart(fig) -> list[tuple[str, str]]:
     red-green colour blindness could confuse ([] when all are told apart)."""
     bad = []
     for ax in fig.axes:
-        colours = {line.get_label(): line.get_color() for line in ax.get_lines()
-                   if not line.get_label().startswith("_") and chromatic(line.get_color())}
+        colours = {
+            line.get_label(): line.get_color()
+            for line in ax.get_lines()
+            if not line.get_label().startswith("_") and chromatic(line.get_color())
+        }
         names = sorted(colours)
-        bad += [(a, b) for i, a in enumerate(names) for b in names[i + 1:]
-                if to_rgb(colours[a]) != to_rgb(colours[b]) and not colours_told_apart(colours[a], colours[b])]
+        bad += [
+            (a, b)
+            for i, a in enumerate(names)
+            for b in names[i + 1 :]
+            if to_rgb(colours[a]) != to_rgb(colours[b]) and not colours_told_apart(colours[a], colours[b])
+        ]
     return bad

@@ -75,7 +75,7 @@ def test_no_import_cycle():
         state[m] = 1
         for t in sorted(graph[m]):
             if state.get(t) == 1:
-                cycle = stack[stack.index(t):] + [t]
+                cycle = stack[stack.index(t) :] + [t]
                 if not all(x == t or x.startswith(t + ".") or t.startswith(x + ".") for x in cycle):
                     cycles.append(" -> ".join(cycle))
             elif t not in state:
@@ -89,9 +89,12 @@ def test_no_import_cycle():
 
 
 def test_no_private_name_imported_across_modules():
-    bad = [f"{m}:{line} imports {target}.{what}"
-           for m, path in MODULES.items() for target, what, line in _imports(m, path)
-           if what and what.startswith("_") and not what.startswith("__") and target != m]
+    bad = [
+        f"{m}:{line} imports {target}.{what}"
+        for m, path in MODULES.items()
+        for target, what, line in _imports(m, path)
+        if what and what.startswith("_") and not what.startswith("__") and target != m
+    ]
     assert not bad, bad
 
 
@@ -102,28 +105,40 @@ def test_no_library_module_imports_the_cli():
 
 
 def test_modules_and_functions_are_small():
-    long_modules = [f"{p.relative_to(PACKAGE.parent)}: {n} lines" for p in MODULES.values()
-                    if (n := p.read_text().count("\n")) > MAX_MODULE_LINES]
+    long_modules = [
+        f"{p.relative_to(PACKAGE.parent)}: {n} lines"
+        for p in MODULES.values()
+        if (n := p.read_text().count("\n")) > MAX_MODULE_LINES
+    ]
     long_functions = []
     for p in MODULES.values():
         for node in ast.walk(ast.parse(p.read_text())):
             if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
                 n = node.end_lineno - node.lineno + 1
                 if n > MAX_FUNCTION_LINES:
-                    long_functions.append(f"{p.relative_to(PACKAGE.parent)}:{node.lineno} {node.name}: {n} lines")
+                    long_functions.append(
+                        f"{p.relative_to(PACKAGE.parent)}:{node.lineno} {node.name}: {n} lines"
+                    )
     assert not long_modules and not long_functions, long_modules + long_functions
 
 
-@pytest.mark.parametrize("source, problem", [
-    ("from registration.online.filter import _CARRY\n", "private"),
-    ("from registration.cli import main\n", "cli"),
-])
+@pytest.mark.parametrize(
+    "source, problem",
+    [
+        ("from registration.online.filter import _CARRY\n", "private"),
+        ("from registration.cli import main\n", "cli"),
+    ],
+)
 def test_the_checks_catch_a_planted_violation(tmp_path, monkeypatch, source, problem):
     planted = tmp_path / "registration" / "core" / "planted.py"
     planted.parent.mkdir(parents=True)
     planted.write_text(source)
     monkeypatch.setitem(MODULES, "registration.core.planted", planted)
-    check = test_no_private_name_imported_across_modules if problem == "private" else test_no_library_module_imports_the_cli
+    check = (
+        test_no_private_name_imported_across_modules
+        if problem == "private"
+        else test_no_library_module_imports_the_cli
+    )
     with pytest.raises(AssertionError):
         check()
 

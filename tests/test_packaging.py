@@ -33,4 +33,4 @@ def test_the_mit_licence_is_there_and_goes_into_the_wheel():
     assert project["license"] == "MIT" and project["license-files"] == ["LICENSE"]
     text = (REPO / "LICENSE").read_text()
     assert text.startswith("MIT License") and "Copyright (c) 2026 the sensor-registration authors" in text
-    assert "THE SOFTWARE IS PROVIDED \"AS IS\"" in text
+    assert 'THE SOFTWARE IS PROVIDED "AS IS"' in text

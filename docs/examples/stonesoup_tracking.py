@@ -15,16 +15,10 @@ Run: ``python docs/examples/stonesoup_tracking.py [out.png]`` (default ``out/sto
 from __future__ import annotations
 
 import datetime
-from pathlib import Path
 from itertools import groupby
+from pathlib import Path
 
 import numpy as np
-from tqdm import tqdm
-
-from registration.fleet import fleet_scenario, solve_batch
-from registration.fleet.simulation.scenario import CENTRE
-from registration.interop.stonesoup import EPOCH, LocalFrame, RegisteredDetectionFeeder, tables_to_detections
-
 from stonesoup.dataassociator.neighbour import GNNWith2DAssignment
 from stonesoup.deleter.time import UpdateTimeDeleter
 from stonesoup.hypothesiser.distance import DistanceHypothesiser
@@ -37,6 +31,11 @@ from stonesoup.tracker.simple import MultiTargetTracker
 from stonesoup.types.groundtruth import GroundTruthPath, GroundTruthState
 from stonesoup.types.state import GaussianState
 from stonesoup.updater.kalman import ExtendedKalmanUpdater
+from tqdm import tqdm
+
+from registration.fleet import fleet_scenario, solve_batch
+from registration.fleet.simulation.scenario import CENTRE
+from registration.interop.stonesoup import EPOCH, LocalFrame, RegisteredDetectionFeeder, tables_to_detections
 
 #: The sensors tracked (the 3-D radars; the registration uses every sensor's plots).
 TRACKED = ("A-3D", "B-3D", "C-3D")
@@ -56,8 +55,10 @@ def truths(scenario, times: list) -> set:
     for tid, track in scenario.config.targets.items():
         p = track.enu(seconds)
         v = np.gradient(p, seconds, axis=0)
-        states = [GroundTruthState([p[k, 0], v[k, 0], p[k, 1], v[k, 1], p[k, 2], v[k, 2]], timestamp=t)
-                  for k, t in enumerate(times)]
+        states = [
+            GroundTruthState([p[k, 0], v[k, 0], p[k, 1], v[k, 1], p[k, 2], v[k, 2]], timestamp=t)
+            for k, t in enumerate(times)
+        ]
         paths.add(GroundTruthPath(states, id=tid))
     return paths
 
@@ -72,11 +73,14 @@ def tracker(detector) -> MultiTargetTracker:
     deleter = UpdateTimeDeleter(datetime.timedelta(seconds=8))
     prior = GaussianState(np.zeros(6), np.diag([0.0, 300.0, 0.0, 300.0, 0.0, 50.0]) ** 2)
     initiator = MultiMeasurementInitiator(prior, deleter, associator, updater, min_points=2)
-    return MultiTargetTracker(initiator=initiator, deleter=deleter, detector=detector, data_associator=associator,
-                              updater=updater)
+    return MultiTargetTracker(
+        initiator=initiator, deleter=deleter, detector=detector, data_associator=associator, updater=updater
+    )
 
 
-def run(detector, truth: set, desc: str = "tracking", scans_total: int | None = None) -> tuple[list, np.ndarray, int]:
+def run(
+    detector, truth: set, desc: str = "tracking", scans_total: int | None = None
+) -> tuple[list, np.ndarray, int]:
     """Track ``detector``'s scans (a progress bar ``desc`` over ``scans_total`` of them); the times
     and OSPA distance (m) at each scan time, and the number of tracks."""
     tracks = set()
@@ -86,11 +90,16 @@ def run(detector, truth: set, desc: str = "tracking", scans_total: int | None = 
     states, ids = OSPAMetric.extract_states(tracks, True)
     truth_states, truth_ids = OSPAMetric.extract_states(truth, True)
     result = metric.compute_over_time(states, ids, truth_states, truth_ids)
-    return [m.timestamp for m in result.value], np.array([m.value for m in result.value], dtype=float), len(tracks)
+    return (
+        [m.timestamp for m in result.value],
+        np.array([m.value for m in result.value], dtype=float),
+        len(tracks),
+    )
 
 
 def plot(times_raw, ospa_raw, times_reg, ospa_reg, png: str) -> None:
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
@@ -119,10 +128,18 @@ def main(png: str | None = "out/stonesoup/ospa.png", seed: int = 0, duration_s: 
     corrected = RegisteredDetectionFeeder(reader=raw, result=result, sensors=scenario.sensors, frame=frame)
     t_raw, ospa_raw, n_raw = run(raw, truth, "tracking raw detections", len(raw))
     t_reg, ospa_reg, n_reg = run(corrected, truth, "tracking registered detections", len(raw))
-    metrics = {"raw": float(np.mean(ospa_raw)), "registered": float(np.mean(ospa_reg)), "tracks_raw": n_raw,
-               "tracks_registered": n_reg, "targets": len(truth), "png": png}
-    print(f"mean OSPA over {len(raw)} scans: raw {metrics['raw']:.1f} m ({n_raw} tracks), "
-          f"registered {metrics['registered']:.1f} m ({n_reg} tracks); {len(truth)} targets")
+    metrics = {
+        "raw": float(np.mean(ospa_raw)),
+        "registered": float(np.mean(ospa_reg)),
+        "tracks_raw": n_raw,
+        "tracks_registered": n_reg,
+        "targets": len(truth),
+        "png": png,
+    }
+    print(
+        f"mean OSPA over {len(raw)} scans: raw {metrics['raw']:.1f} m ({n_raw} tracks), "
+        f"registered {metrics['registered']:.1f} m ({n_reg} tracks); {len(truth)} targets"
+    )
     if png:
         Path(png).parent.mkdir(parents=True, exist_ok=True)
         plot(t_raw, ospa_raw, t_reg, ospa_reg, png)

@@ -34,13 +34,19 @@ from pathlib import Path
 import numpy as np
 import scipy.io
 
-DATA = Path(os.environ.get("PEER4_DATA", Path(__file__).resolve().parents[3] / "shared" / "external" / "peer4-radar"))
+DATA = Path(
+    os.environ.get("PEER4_DATA", Path(__file__).resolve().parents[3] / "shared" / "external" / "peer4-radar")
+)
 SENSORS = ("S1", "S2", "S3", "S4")
 ANGLE_ONLY = "S4"
 #: The true biases of the README (same in every run), in the peer's convention: azimuth and
 #: elevation in degrees, range in metres.
-TRUE_BIASES_PEER = {"S1": (5.0, 5.0, 3000.0), "S2": (-5.0, -5.0, -3000.0), "S3": (5.0, 5.0, 3000.0),
-                    "S4": (-5.0, -5.0, -3000.0)}
+TRUE_BIASES_PEER = {
+    "S1": (5.0, 5.0, 3000.0),
+    "S2": (-5.0, -5.0, -3000.0),
+    "S3": (5.0, 5.0, 3000.0),
+    "S4": (-5.0, -5.0, -3000.0),
+}
 TRUTH_STEP_S = 0.01
 
 
@@ -75,12 +81,16 @@ def load_run(run: int) -> dict:
         samples = _samples(mat, k)
         first = samples[0]
         if np.any(np.asarray(first.Sensor_Attitude) != 0):
-            raise ValueError(f"{run_path(run)}: sensor {k + 1} has a non-zero attitude; the conversion assumes ENU")
+            raise ValueError(
+                f"{run_path(run)}: sensor {k + 1} has a non-zero attitude; the conversion assumes ENU"
+            )
         n = len(samples)
         plots["time"].append(np.array([s.Time_Meas for s in samples], dtype=float))
         plots["sensor"] += [sid] * n
         plots["target"] += [f"target-{int(s.Tar_Num)}" for s in samples]
-        plots["range"].append(np.full(n, np.nan) if sid == ANGLE_ONLY else np.array([s.Tar_R for s in samples]))
+        plots["range"].append(
+            np.full(n, np.nan) if sid == ANGLE_ONLY else np.array([s.Tar_R for s in samples])
+        )
         plots["bearing"].append(np.pi / 2 - np.array([s.Tar_Theta for s in samples]))
         plots["elevation"].append(np.array([s.Tar_Phi for s in samples]))
         sensors["sensor"].append(sid)
@@ -88,17 +98,31 @@ def load_run(run: int) -> dict:
         sensors["sigma_range"].append(np.nan if sid == ANGLE_ONLY else float(first.Range_Error))
         sensors["sigma_bearing"].append(float(first.Theta_Error))
         sensors["sigma_elevation"].append(float(first.Phi_Error))
-        for key, value in (("platform", f"{sid}-site"), ("time", 0.0), ("lat", first.Sensor_B), ("lon", first.Sensor_L),
-                           ("alt", first.Sensor_H), ("heading", 0.0), ("pitch", 0.0), ("roll", 0.0)):
+        for key, value in (
+            ("platform", f"{sid}-site"),
+            ("time", 0.0),
+            ("lat", first.Sensor_B),
+            ("lon", first.Sensor_L),
+            ("alt", first.Sensor_H),
+            ("heading", 0.0),
+            ("pitch", 0.0),
+            ("roll", 0.0),
+        ):
             navigation[key].append(value)
-    plots = {k: (np.concatenate(v) if k in ("time", "range", "bearing", "elevation") else np.array(v))
-             for k, v in plots.items()}
+    plots = {
+        k: (np.concatenate(v) if k in ("time", "range", "bearing", "elevation") else np.array(v))
+        for k, v in plots.items()
+    }
     plots["bearing"] = np.angle(np.exp(1j * plots["bearing"]))  # to (-pi, pi]
     platforms = {"platform": np.array(navigation["platform"])}
     for what in ("heading", "pitch", "roll"):
         platforms[f"prior_{what}"] = np.zeros(len(SENSORS))
-    return {"plots": plots, "sensors": {k: np.array(v) for k, v in sensors.items()},
-            "navigation": {k: np.array(v) for k, v in navigation.items()}, "platforms": platforms}
+    return {
+        "plots": plots,
+        "sensors": {k: np.array(v) for k, v in sensors.items()},
+        "navigation": {k: np.array(v) for k, v in navigation.items()},
+        "platforms": platforms,
+    }
 
 
 def truth_track() -> tuple[np.ndarray, np.ndarray]:

@@ -47,8 +47,15 @@ def plot_positions(tables: dict, sensor: str, biases=(0.0, 0.0, 0.0)) -> tuple[n
     sel = p["sensor"] == sensor
     k = list(nav["platform"]).index(f"{sensor}-site")
     site = [nav[c][k] for c in ("lat", "lon", "alt", "heading", "pitch", "roll")]
-    pos = _codegen.get("fleet_plot2ecef")(*site, np.zeros(3), np.asarray(biases, dtype=float), np.zeros(3),
-                                          p["range"][sel], p["bearing"][sel], p["elevation"][sel])[0]
+    pos = _codegen.get("fleet_plot2ecef")(
+        *site,
+        np.zeros(3),
+        np.asarray(biases, dtype=float),
+        np.zeros(3),
+        p["range"][sel],
+        p["bearing"][sel],
+        p["elevation"][sel],
+    )[0]
     return p["time"][sel], pos
 
 
@@ -60,13 +67,22 @@ def _biases_of(result, sensor: str) -> tuple[float, float, float]:
 def disagreement(tables: dict, result=None) -> dict:
     """RMS pairwise distance (m) between the ranging sensors' simultaneous positions, and each
     sensor's RMS distance to the truth; corrected by ``result`` when given."""
-    pos = {s: plot_positions(tables, s, _biases_of(result, s) if result else (0.0, 0.0, 0.0)) for s in RANGING}
+    pos = {
+        s: plot_positions(tables, s, _biases_of(result, s) if result else (0.0, 0.0, 0.0)) for s in RANGING
+    }
     t0 = pos[RANGING[0]][0]
     assert all(np.array_equal(pos[s][0], t0) for s in RANGING)
-    pairs = [np.linalg.norm(pos[a][1] - pos[b][1], axis=1) for i, a in enumerate(RANGING) for b in RANGING[i + 1:]]
+    pairs = [
+        np.linalg.norm(pos[a][1] - pos[b][1], axis=1) for i, a in enumerate(RANGING) for b in RANGING[i + 1 :]
+    ]
     truth = truth_at(t0)
-    return {"pairs_rms_m": float(np.sqrt(np.mean(np.concatenate(pairs) ** 2))),
-            **{f"{s}_to_truth_rms_m": float(np.sqrt(np.mean(np.sum((pos[s][1] - truth) ** 2, axis=1)))) for s in RANGING}}
+    return {
+        "pairs_rms_m": float(np.sqrt(np.mean(np.concatenate(pairs) ** 2))),
+        **{
+            f"{s}_to_truth_rms_m": float(np.sqrt(np.mean(np.sum((pos[s][1] - truth) ** 2, axis=1))))
+            for s in RANGING
+        },
+    }
 
 
 def angle_only_error(tables: dict, result=None) -> float:
@@ -77,7 +93,9 @@ def angle_only_error(tables: dict, result=None) -> float:
     site = [nav[c][k] for c in ("lat", "lon", "alt", "heading", "pitch", "roll")]
     b = np.array(_biases_of(result, ANGLE_ONLY) if result else (0.0, 0.0, 0.0))
     truth = truth_at(p["time"][sel])
-    true_plot = _codegen.get("fleet_residual")(truth, *site, np.zeros(3), np.zeros(3), np.zeros(3), 0.0, 0.0, 0.0)[2]
+    true_plot = _codegen.get("fleet_residual")(
+        truth, *site, np.zeros(3), np.zeros(3), np.zeros(3), 0.0, 0.0, 0.0
+    )[2]
     dq = np.angle(np.exp(1j * (p["bearing"][sel] - b[1] - true_plot[:, 1])))
     de = p["elevation"][sel] - b[2] - true_plot[:, 2]
     return float(np.sqrt(np.mean(dq**2 * np.cos(true_plot[:, 2]) ** 2 + de**2)))
@@ -91,10 +109,16 @@ def register_run(run: int, window_s: float = 0.0) -> dict:
     err = np.array([result.estimate[i] - truth[result.layout.names[i]] for i in free])
     nees = float(err @ np.linalg.solve(result.covariance[np.ix_(free, free)], err))
     return {
-        "run": run, "converged": result.converged, "iterations": result.iterations,
-        "chi_square_mean": result.chi_square.mean, "chi_square_band": list(result.chi_square.interval),
-        "estimates": {result.layout.names[i]: [float(result.estimate[i]), float(result.sigma[i])] for i in free},
-        "nees": nees, "n_states": int(free.size),
+        "run": run,
+        "converged": result.converged,
+        "iterations": result.iterations,
+        "chi_square_mean": result.chi_square.mean,
+        "chi_square_band": list(result.chi_square.interval),
+        "estimates": {
+            result.layout.names[i]: [float(result.estimate[i]), float(result.sigma[i])] for i in free
+        },
+        "nees": nees,
+        "n_states": int(free.size),
         "unobservable": [c.text for c in result.observability.unobservable],
         "weak": [c.text for c in result.observability.weak],
         "before": {**disagreement(tables), "S4_angle_rms_rad": angle_only_error(tables)},
@@ -112,20 +136,31 @@ def _peer_units(name: str, value: float) -> float:
 def summary_lines(runs: list[dict]) -> list[str]:
     truth = true_state()
     names = list(runs[0]["estimates"])
-    out = ["| bias | truth | mean estimate (10 runs) | RMS error | mean sigma | RMS error / mean sigma |", "|---|---|---|---|---|---|"]
+    out = [
+        "| bias | truth | mean estimate (10 runs) | RMS error | mean sigma | RMS error / mean sigma |",
+        "|---|---|---|---|---|---|",
+    ]
     for n in names:
-        label = n.replace("bearing_bias", "azimuth bias").replace("elevation_bias", "elevation bias").replace("range_bias", "range bias")
+        label = (
+            n.replace("bearing_bias", "azimuth bias")
+            .replace("elevation_bias", "elevation bias")
+            .replace("range_bias", "range bias")
+        )
         unit = "m" if n.endswith("range_bias") else "deg"
         est = np.array([_peer_units(n, r["estimates"][n][0]) for r in runs])
         sig = np.array([abs(_peer_units(n, r["estimates"][n][1])) for r in runs])
         tr = _peer_units(n, truth[n])
         rms = float(np.sqrt(np.mean((est - tr) ** 2)))
-        out.append(f"| {label.replace(':', ' ')} ({unit}) | {tr:+.1f} | {est.mean():+.4f} | {rms:.4f} | {sig.mean():.4f} | {rms / sig.mean():.2f} |")
+        out.append(
+            f"| {label.replace(':', ' ')} ({unit}) | {tr:+.1f} | {est.mean():+.4f} | {rms:.4f} | {sig.mean():.4f} | {rms / sig.mean():.2f} |"
+        )
     nees = np.array([r["nees"] for r in runs])
     lo, hi = nees_interval(len(runs), runs[0]["n_states"])
     out.append("")
-    out.append(f"NEES per run: {', '.join(f'{v:.1f}' for v in nees)}; mean {nees.mean():.2f} for {runs[0]['n_states']} "
-               f"states, 95 % interval for the mean of {len(runs)} runs [{lo:.2f}, {hi:.2f}]")
+    out.append(
+        f"NEES per run: {', '.join(f'{v:.1f}' for v in nees)}; mean {nees.mean():.2f} for {runs[0]['n_states']} "
+        f"states, 95 % interval for the mean of {len(runs)} runs [{lo:.2f}, {hi:.2f}]"
+    )
     keys = ["pairs_rms_m", *[f"{s}_to_truth_rms_m" for s in RANGING], "S4_angle_rms_rad"]
     for key in keys:
         b = np.mean([r["before"][key] for r in runs])
@@ -134,9 +169,12 @@ def summary_lines(runs: list[dict]) -> list[str]:
             out.append(f"{key}: before {np.degrees(b):.3f} deg, after {np.degrees(a):.3f} deg")
         else:
             out.append(f"{key}: before {b:.1f} m, after {a:.1f} m")
-    out.append(f"chi-square (mean squared normalised residual) per run: "
-               + ", ".join(f"{r['chi_square_mean']:.3f}" for r in runs) + f" (band {runs[0]['chi_square_band'][0]:.3f}"
-               f" to {runs[0]['chi_square_band'][1]:.3f})")
+    out.append(
+        "chi-square (mean squared normalised residual) per run: "
+        + ", ".join(f"{r['chi_square_mean']:.3f}" for r in runs)
+        + f" (band {runs[0]['chi_square_band'][0]:.3f}"
+        f" to {runs[0]['chi_square_band'][1]:.3f})"
+    )
     out.append(f"site offsets WGS-84 vs the files' ellipsoid (m): {np.round(site_offsets(), 4).tolist()}")
     return out
 
@@ -144,8 +182,12 @@ def summary_lines(runs: list[dict]) -> list[str]:
 def main(argv=None) -> list[dict]:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--runs", type=int, nargs="*", default=list(range(1, 11)))
-    parser.add_argument("--window-s", type=float, default=0.0,
-                        help="target windows (s); 0 (default) = a position per instant, the synchronous data allow it")
+    parser.add_argument(
+        "--window-s",
+        type=float,
+        default=0.0,
+        help="target windows (s); 0 (default) = a position per instant, the synchronous data allow it",
+    )
     parser.add_argument("--json", help="write every run's figures to this file")
     args = parser.parse_args(argv)
     runs = [register_run(k, args.window_s) for k in args.runs]

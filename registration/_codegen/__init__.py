@@ -3,12 +3,30 @@ what their manifest records (:mod:`.artifacts`), the compiled C backend (:mod:`.
 one-time build in :mod:`.build`), the serialized CasADi fallback (:mod:`.casadi_backend`) and the
 numpy callables on top (:mod:`.function`). Users call the capability subpackages, not this one."""
 
-from registration._codegen.artifacts import ArtifactError, generated_dir, manifest, read_artifact, variants, wgs84
+from registration._codegen.artifacts import (
+    ArtifactError,
+    generated_dir,
+    manifest,
+    read_artifact,
+    variants,
+    wgs84,
+)
 from registration._codegen.cbackend import CFLAGS, compiler
 from registration._codegen.function import BoundCall, GeneratedFunction, backend, get
 from registration._codegen.stepper import StepCode
 
 __all__ = [
-    "CFLAGS", "ArtifactError", "BoundCall", "GeneratedFunction", "backend", "compiler", "generated_dir", "get",
-    "manifest", "read_artifact", "StepCode", "variants", "wgs84",
+    "CFLAGS",
+    "ArtifactError",
+    "BoundCall",
+    "GeneratedFunction",
+    "backend",
+    "compiler",
+    "generated_dir",
+    "get",
+    "manifest",
+    "read_artifact",
+    "StepCode",
+    "variants",
+    "wgs84",
 ]

@@ -25,8 +25,10 @@ from registration._codegen.artifacts import ArtifactError
 __all__ = ["BUILD_MESSAGE", "build_library", "build_workers"]
 
 #: Printed on standard error before a build ({folder}: the cache folder it goes into).
-BUILD_MESSAGE = ("registration: compiling the generated C code once (10 s to a minute, by machine; later runs load it "
-                 "from {folder})...")
+BUILD_MESSAGE = (
+    "registration: compiling the generated C code once (10 s to a minute, by machine; later runs load it "
+    "from {folder})..."
+)
 
 
 def build_workers() -> int:
@@ -45,22 +47,32 @@ def _progress(total_bytes: int, files: int):
         terminal = sys.stderr.isatty()
     except (AttributeError, ValueError):
         terminal = False
-    return tqdm(total=total_bytes, file=sys.stderr, disable=not terminal, leave=False, unit="B", unit_scale=True,
-                desc=f"compiling 0/{files} files",
-                bar_format="{desc}: {percentage:3.0f}%|{bar}| [{elapsed}<{remaining}]")
+    return tqdm(
+        total=total_bytes,
+        file=sys.stderr,
+        disable=not terminal,
+        leave=False,
+        unit="B",
+        unit_scale=True,
+        desc=f"compiling 0/{files} files",
+        bar_format="{desc}: {percentage:3.0f}%|{bar}| [{elapsed}<{remaining}]",
+    )
 
 
 def _compile_all(cc: str, flags: list[str], jobs: list[tuple[Path, Path, int]]) -> list:
     """Compile each ``(source, object, size in bytes)`` job, largest first, in parallel, with the
     progress bar; the failed compiler runs (CompletedProcess), empty if none failed."""
+
     def compile_one(job):
         src, obj, _size = job
         return subprocess.run([cc, *flags, "-c", str(src), "-o", str(obj)], capture_output=True, text=True)
 
     jobs = sorted(jobs, key=lambda job: -job[2])
     failed = []
-    with _progress(sum(size for *_rest, size in jobs), len(jobs)) as bar, \
-            ThreadPoolExecutor(max_workers=build_workers()) as pool:
+    with (
+        _progress(sum(size for *_rest, size in jobs), len(jobs)) as bar,
+        ThreadPoolExecutor(max_workers=build_workers()) as pool,
+    ):
         futures = {pool.submit(compile_one, job): job for job in jobs}
         for done, future in enumerate(as_completed(futures), start=1):
             proc = future.result()
@@ -71,7 +83,9 @@ def _compile_all(cc: str, flags: list[str], jobs: list[tuple[Path, Path, int]]) 
     return failed
 
 
-def build_library(cc: str, driver: Path, sources: list[tuple[str, bytes]], lib_path: Path, flags: list[str]) -> None:
+def build_library(
+    cc: str, driver: Path, sources: list[tuple[str, bytes]], lib_path: Path, flags: list[str]
+) -> None:
     """Compile ``driver`` and ``sources`` ((file name, bytes) pairs) with ``flags`` (``-shared``
     is left for the link), link them into ``lib_path`` (published atomically: concurrent builders
     never see half a file); ArtifactError on failure. Says so on standard error before and after."""
@@ -90,9 +104,14 @@ def build_library(cc: str, driver: Path, sources: list[tuple[str, bytes]], lib_p
             raise ArtifactError(f"C compilation failed: {failed[0].stderr.strip()[:2000]}")
         out = tmp / "lib.so"
         objects = [str(obj) for _src, obj, _size in jobs]  # link order: the driver, then the sources as given
-        proc = subprocess.run([cc, "-shared", "-o", str(out), *objects, "-lm"], capture_output=True, text=True)
+        proc = subprocess.run(
+            [cc, "-shared", "-o", str(out), *objects, "-lm"], capture_output=True, text=True
+        )
         if proc.returncode != 0:
             raise ArtifactError(f"C link failed: {proc.stderr.strip()[:2000]}")
         os.replace(out, lib_path)
-    print(f"registration: compiled in {time.perf_counter() - started:.0f} s into {lib_path.parent}", file=sys.stderr,
-          flush=True)
+    print(
+        f"registration: compiled in {time.perf_counter() - started:.0f} s into {lib_path.parent}",
+        file=sys.stderr,
+        flush=True,
+    )

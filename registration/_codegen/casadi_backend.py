@@ -36,7 +36,10 @@ def _by_point(res, n: int, output_shapes):
     import casadi as ca
 
     res = res if isinstance(res, (list, tuple)) else [res]
-    return [np.asarray(ca.DM(dm).full()).reshape(r, n, c).transpose(1, 0, 2) for dm, (r, c) in zip(res, output_shapes)]
+    return [
+        np.asarray(ca.DM(dm).full()).reshape(r, n, c).transpose(1, 0, 2)
+        for dm, (r, c) in zip(res, output_shapes)
+    ]
 
 
 class CasadiKernel:
@@ -56,7 +59,9 @@ class CasadiKernel:
     def call(self, prepared, n: int, output_shapes) -> tuple:
         """Evaluate at ``n`` points; outputs shaped (n,), (n, r) or (n, r, c)."""
         if n not in self._maps:
-            self._maps = {n: self.function().map(n, "serial")}  # keep one: big maps are cheap to rebuild, costly to hoard
+            self._maps = {
+                n: self.function().map(n, "serial")
+            }  # keep one: big maps are cheap to rebuild, costly to hoard
         arrs = _by_point(self._maps[n](*_to_dm(prepared, n)), n, output_shapes)
         return tuple(
             arr.reshape(n) if (r, c) == (1, 1) else (arr.reshape(n, r) if c == 1 else arr)

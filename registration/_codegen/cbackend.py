@@ -41,8 +41,21 @@ from registration._codegen.artifacts import ArtifactError, manifest, read_artifa
 from registration._codegen.build import build_library
 
 __all__ = [
-    "BUILD_MODES", "CFLAGS", "DRIVER", "NATIVE_CFLAGS", "NATIVE_ENV", "NATIVE_RTOL", "CKernel", "PointCall", "build_mode",
-    "cache_root", "cflags", "compiler", "library", "library_of", "native_target",
+    "BUILD_MODES",
+    "CFLAGS",
+    "DRIVER",
+    "NATIVE_CFLAGS",
+    "NATIVE_ENV",
+    "NATIVE_RTOL",
+    "CKernel",
+    "PointCall",
+    "build_mode",
+    "cache_root",
+    "cflags",
+    "compiler",
+    "library",
+    "library_of",
+    "native_target",
 ]
 
 #: Compiler flags of the portable shared library (each source is compiled with these minus ``-shared``;
@@ -55,8 +68,18 @@ NATIVE_CFLAGS = {
 }
 #: Build modes, and the values of ``$REGISTRATION_NATIVE`` that select them.
 BUILD_MODES = ("portable", "native", "native-exact")
-_MODE_OF_ENV = {"": "portable", "0": "portable", "false": "portable", "no": "portable", "off": "portable",
-                "1": "native", "true": "native", "yes": "native", "on": "native", "exact": "native-exact"}
+_MODE_OF_ENV = {
+    "": "portable",
+    "0": "portable",
+    "false": "portable",
+    "no": "portable",
+    "off": "portable",
+    "1": "native",
+    "true": "native",
+    "yes": "native",
+    "on": "native",
+    "exact": "native-exact",
+}
 #: Stated tolerance of the ``native`` build against the portable one for the Kalman step, per
 #: step at the same inputs, on the filter's own statistical scale: each estimate within
 #: ``NATIVE_RTOL`` of its standard deviation (sqrt of the diagonal of the new P), each entry of
@@ -85,7 +108,9 @@ def build_mode() -> str:
     value = os.environ.get(NATIVE_ENV, "")
     mode = _MODE_OF_ENV.get(value.strip().lower())
     if mode is None:
-        raise ValueError(f"{NATIVE_ENV} must be 0, 1 or exact (0/1 also as false/true, no/yes, off/on), got {value!r}")
+        raise ValueError(
+            f"{NATIVE_ENV} must be 0, 1 or exact (0/1 also as false/true, no/yes, off/on), got {value!r}"
+        )
     return mode
 
 
@@ -101,8 +126,12 @@ def native_target(cc: str) -> str | None:
     """What ``-march=native`` means for ``cc`` on this machine (the options the compiler driver
     expands it to, paths left out), or None if ``cc`` does not accept ``-march=native``."""
     try:
-        proc = subprocess.run([cc, "-march=native", "-###", "-x", "c", "-c", os.devnull, "-o", os.devnull],
-                              capture_output=True, text=True, timeout=60)
+        proc = subprocess.run(
+            [cc, "-march=native", "-###", "-x", "c", "-c", os.devnull, "-o", os.devnull],
+            capture_output=True,
+            text=True,
+            timeout=60,
+        )
     except (OSError, subprocess.SubprocessError):
         return None
     if proc.returncode != 0:
@@ -123,14 +152,18 @@ def compiler() -> str | None:
     return os.environ.get("CC") or shutil.which("cc") or shutil.which("gcc") or shutil.which("clang")
 
 
-def cache_key(cc: str, sources: list[tuple[str, bytes]], flags: list[str] | None = None, target: str = "") -> str:
+def cache_key(
+    cc: str, sources: list[tuple[str, bytes]], flags: list[str] | None = None, target: str = ""
+) -> str:
     """Key of the library built by ``cc`` with ``flags`` (default :data:`CFLAGS`) from ``sources``
     ((file name, bytes) pairs) and the driver; ``target`` what ``-march=native`` means, if used."""
     key = hashlib.sha256()
     for fname, data in sources:
         key.update(fname.encode() + data)
     key.update(DRIVER.read_bytes())
-    key.update(" ".join([cc, *(CFLAGS if flags is None else flags), platform.machine(), sys.platform]).encode())
+    key.update(
+        " ".join([cc, *(CFLAGS if flags is None else flags), platform.machine(), sys.platform]).encode()
+    )
     if target:
         key.update(target.encode())
     return key.hexdigest()[:24]
@@ -176,7 +209,9 @@ def library() -> ctypes.CDLL:
         try:
             return library_of(names, mode)
         except ArtifactError as exc:
-            warnings.warn(f"{NATIVE_ENV}: no {mode} build ({exc}); using the portable one", RuntimeWarning, stacklevel=2)
+            warnings.warn(
+                f"{NATIVE_ENV}: no {mode} build ({exc}); using the portable one", RuntimeWarning, stacklevel=2
+            )
     return library_of(names)
 
 
@@ -221,23 +256,33 @@ class CKernel:
         """Fresh work space for one evaluation (arg, res, iw, w): calls never share it, so
         threads may evaluate the same function at once."""
         work = self.work
-        return ((ctypes.c_void_p * max(work["sz_arg"], 1))(), (ctypes.c_void_p * max(work["sz_res"], 1))(),
-                np.zeros(max(work["sz_iw"], 1), dtype=np.int64), np.zeros(max(work["sz_w"], 1), dtype=np.float64))
+        return (
+            (ctypes.c_void_p * max(work["sz_arg"], 1))(),
+            (ctypes.c_void_p * max(work["sz_res"], 1))(),
+            np.zeros(max(work["sz_iw"], 1), dtype=np.int64),
+            np.zeros(max(work["sz_w"], 1), dtype=np.float64),
+        )
 
     def call(self, prepared, n: int, output_shapes) -> list[np.ndarray]:
         """Evaluate at ``n`` points (unbatched inputs broadcast with stride 0)."""
         arrays = _column_major(prepared)  # kept alive until the call returns
         in_ptr = (ctypes.c_void_p * len(prepared))(*[a.ctypes.data for a in arrays])
         in_stride = (ctypes.c_longlong * len(prepared))(
-            *[math.prod(core) if batched else 0 for _a, batched, core in prepared])
+            *[math.prod(core) if batched else 0 for _a, batched, core in prepared]
+        )
         outs = [np.empty((n, r * c), dtype=np.float64) for r, c in output_shapes]
         out_ptr = (ctypes.c_void_p * len(outs))(*[b.ctypes.data for b in outs])
         out_stride = (ctypes.c_longlong * len(outs))(*[r * c for r, c in output_shapes])
         work = self.work_buffers()  # referenced until the call returns
         flag = self._batch(
-            self._fptr, ctypes.c_longlong(n),
-            len(prepared), in_ptr, in_stride,
-            len(outs), out_ptr, out_stride,
+            self._fptr,
+            ctypes.c_longlong(n),
+            len(prepared),
+            in_ptr,
+            in_stride,
+            len(outs),
+            out_ptr,
+            out_stride,
             *_work_args(work),
         )
         if flag:
@@ -254,24 +299,37 @@ class CKernel:
         in_stride = (ctypes.c_longlong * n_in)(*[s if b else 0 for s, (_a, b, _c) in zip(sizes, prepared)])
         in_size = (ctypes.c_longlong * n_in)(*sizes)
         carry_from = (ctypes.c_int * n_in)(*[j if j < k else -1 for j in range(n_in)])
-        outs = [np.empty((1 if last else n, r * c), dtype=np.float64)
-                for last, (r, c) in zip(last_only, output_shapes)]
+        outs = [
+            np.empty((1 if last else n, r * c), dtype=np.float64)
+            for last, (r, c) in zip(last_only, output_shapes)
+        ]
         out_ptr = (ctypes.c_void_p * n_out)(*[b.ctypes.data for b in outs])
         out_stride = (ctypes.c_longlong * n_out)(
-            *[0 if last else r * c for last, (r, c) in zip(last_only, output_shapes)])
+            *[0 if last else r * c for last, (r, c) in zip(last_only, output_shapes)]
+        )
         scratch = np.empty(max(1, sum(sizes[:k])), dtype=np.float64)
         work = self.work_buffers()
         failed = self._scan(
-            self._fptr, ctypes.c_longlong(n),
-            n_in, in_ptr, in_stride, carry_from, in_size,
-            n_out, out_ptr, out_stride,
-            *_work_args(work), _pointer(scratch),
+            self._fptr,
+            ctypes.c_longlong(n),
+            n_in,
+            in_ptr,
+            in_stride,
+            carry_from,
+            in_size,
+            n_out,
+            out_ptr,
+            out_stride,
+            *_work_args(work),
+            _pointer(scratch),
         )
         if failed:
             raise RuntimeError(f"generated function {self.name} failed at step {failed - 1}")
         return outs
 
-    def scan_runs(self, inputs, runs: int, n: int, k: int, last_only: list[bool], output_shapes) -> list[np.ndarray]:
+    def scan_runs(
+        self, inputs, runs: int, n: int, k: int, last_only: list[bool], output_shapes
+    ) -> list[np.ndarray]:
         """``runs`` independent scans of ``n`` steps in one compiled call (see :meth:`scan`).
 
         ``inputs``: per input ``(array, run stride, step stride, size)``: a contiguous float64
@@ -292,11 +350,23 @@ class CKernel:
         scratch = np.empty(max(1, sum(in_size[:k])), dtype=np.float64)
         work = self.work_buffers()
         failed = self._scan_runs(
-            self._fptr, ctypes.c_longlong(runs), ctypes.c_longlong(n),
-            n_in, in_ptr, in_run, in_step, carry_from, in_size,
-            n_out, out_ptr, out_run, out_step,
-            (ctypes.c_void_p * n_in)(), (ctypes.c_void_p * n_out)(),
-            *_work_args(work), _pointer(scratch),
+            self._fptr,
+            ctypes.c_longlong(runs),
+            ctypes.c_longlong(n),
+            n_in,
+            in_ptr,
+            in_run,
+            in_step,
+            carry_from,
+            in_size,
+            n_out,
+            out_ptr,
+            out_run,
+            out_step,
+            (ctypes.c_void_p * n_in)(),
+            (ctypes.c_void_p * n_out)(),
+            *_work_args(work),
+            _pointer(scratch),
         )
         if failed:
             run, step = divmod(int(failed) - 1, n)
@@ -326,7 +396,9 @@ class PointCall:
         in_stride = (ctypes.c_longlong * n_in)(*([0] * n_in))
         out_ptr = (ctypes.c_void_p * n_out)(*[a.ctypes.data for a in self._out])
         out_stride = (ctypes.c_longlong * n_out)(*([0] * n_out))
-        self._call = functools.partial(call, n_in, in_ptr, in_stride, n_out, out_ptr, out_stride, arg, res, iw, w)
+        self._call = functools.partial(
+            call, n_in, in_ptr, in_stride, n_out, out_ptr, out_stride, arg, res, iw, w
+        )
 
     def __call__(self, *inputs) -> tuple:
         for buf, (r, c), value in zip(self._in, self._input_shapes, inputs):

@@ -108,7 +108,9 @@ class GeneratedFunction:
 
     def _prepare(self, args):
         if len(args) != len(self.input_names):
-            raise TypeError(f"{self.name} takes {len(self.input_names)} inputs {self.input_names}, got {len(args)}")
+            raise TypeError(
+                f"{self.name} takes {len(self.input_names)} inputs {self.input_names}, got {len(args)}"
+            )
         prepared, n = [], None
         for name, shape, arg in zip(self.input_names, self.input_shapes, args):
             a = np.asarray(arg, dtype=np.float64)
@@ -124,7 +126,9 @@ class GeneratedFunction:
                         f"{self.name}: input {name!r} has {a.shape[0]} points but an earlier input has {n}"
                     )
             else:
-                raise ValueError(f"{self.name}: input {name!r} must have shape {core} or (N, *{core}), got {a.shape}")
+                raise ValueError(
+                    f"{self.name}: input {name!r} must have shape {core} or (N, *{core}), got {a.shape}"
+                )
             prepared.append((a, batched, core))
         return prepared, (1 if n is None else n)
 
@@ -143,8 +147,16 @@ class GeneratedFunction:
         """The compiled single-point caller with preallocated buffers; None on the CasADi backend."""
         return None if self._c is None else self._c.point_caller(self.input_shapes, self.output_shapes)
 
-    def stepper(self, carry: dict[str, str], feed: str, *, low=None, high=None, finite: tuple[str, ...] = (),
-                deliver: tuple[str, ...] = ()) -> CStepper | PyStepper:
+    def stepper(
+        self,
+        carry: dict[str, str],
+        feed: str,
+        *,
+        low=None,
+        high=None,
+        finite: tuple[str, ...] = (),
+        deliver: tuple[str, ...] = (),
+    ) -> CStepper | PyStepper:
         """Single steps with a carried state kept in persistent buffers (a streaming filter).
 
         ``carry`` as in :meth:`scan`; ``feed`` the input written at every step; ``low``/``high``
@@ -170,7 +182,9 @@ class GeneratedFunction:
         names_in, names_out = self.input_names, self.output_names
         k = len(carry)
         if list(carry) != names_in[:k] or list(carry.values()) != names_out[:k]:
-            raise ValueError(f"{self.name}: carried inputs must be the first {k} inputs paired with the first outputs")
+            raise ValueError(
+                f"{self.name}: carried inputs must be the first {k} inputs paired with the first outputs"
+            )
         args = []
         for name in names_in:
             if name not in inputs:
@@ -194,8 +208,9 @@ class GeneratedFunction:
             result[name] = arr[0] if name in keep_last else arr
         return result
 
-
-    def scan_runs(self, runs: int, n: int, carry: dict[str, str], inputs: dict, keep_last: tuple[str, ...] = ()) -> dict:
+    def scan_runs(
+        self, runs: int, n: int, carry: dict[str, str], inputs: dict, keep_last: tuple[str, ...] = ()
+    ) -> dict:
         """``runs`` independent scans of ``n`` steps each (e.g. Monte Carlo runs), as :meth:`scan`.
 
         Each input is given at its core shape (the same in every run and step), with one leading
@@ -208,13 +223,17 @@ class GeneratedFunction:
         names_in, names_out = self.input_names, self.output_names
         k = len(carry)
         if list(carry) != names_in[:k] or list(carry.values()) != names_out[:k]:
-            raise ValueError(f"{self.name}: carried inputs must be the first {k} inputs paired with the first outputs")
+            raise ValueError(
+                f"{self.name}: carried inputs must be the first {k} inputs paired with the first outputs"
+            )
         if runs < 1 or n < 1:
             raise ValueError(f"{self.name}: need at least one run and one step, got runs={runs}, n={n}")
         lead = [self._runs_input(name, inputs, runs, n, name in carry) for name in names_in]
         last = [name in keep_last for name in names_out]
         if self._c is not None:
-            outs = self._c.scan_runs([_strided(a, core) for a, core in lead], runs, n, k, last, self.output_shapes)
+            outs = self._c.scan_runs(
+                [_strided(a, core) for a, core in lead], runs, n, k, last, self.output_shapes
+            )
         else:
             outs = [np.stack(o) for o in zip(*(self._casadi_run(lead, r, n, k) for r in range(runs)))]
             outs = [o[:, -1:] if flag else o for o, flag in zip(outs, last)]
@@ -233,9 +252,9 @@ class GeneratedFunction:
         shape = self.input_shapes[self.input_names.index(name)]
         core = () if shape == (1, 1) else ((shape[0],) if shape[1] == 1 else shape)
         a = np.asarray(inputs[name], dtype=np.float64)
-        lead = a.shape[:a.ndim - len(core)]
+        lead = a.shape[: a.ndim - len(core)]
         allowed = [(), (runs,)] + ([] if carried else [(runs, n)])
-        if a.shape[len(lead):] != core or lead not in allowed:
+        if a.shape[len(lead) :] != core or lead not in allowed:
             kinds = " or ".join(str((*lo, *core)) for lo in allowed)
             raise ValueError(f"{self.name}: input {name!r} must have shape {kinds}, got {a.shape}")
         lead = lead + (1,) * (2 - len(lead))

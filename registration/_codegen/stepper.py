@@ -43,14 +43,30 @@ class _StepperStruct(ctypes.Structure):
     """Mirror of ``registration_stepper`` in ``_batch.c``."""
 
     _fields_ = [
-        ("f", ctypes.c_void_p), ("n_in", ctypes.c_int), ("n_out", ctypes.c_int), ("n_carry", ctypes.c_int),
-        ("check_in", ctypes.c_int), ("n_finite", ctypes.c_int),
-        ("in_ptr", ctypes.c_void_p), ("out_ptr", ctypes.c_void_p), ("in_size", ctypes.c_void_p),
-        ("out_size", ctypes.c_void_p), ("low", ctypes.c_void_p), ("high", ctypes.c_void_p),
-        ("finite_out", ctypes.c_void_p), ("arg", ctypes.c_void_p), ("res", ctypes.c_void_p),
-        ("iw", ctypes.c_void_p), ("w", ctypes.c_void_p),
-        ("n_deliver", ctypes.c_int), ("deliver_out", ctypes.c_void_p), ("deliver_ptr", ctypes.c_void_p),
-        ("ring_out", ctypes.c_int), ("ring_len", ctypes.c_int), ("ring", ctypes.c_void_p), ("ring_count", ctypes.c_longlong),
+        ("f", ctypes.c_void_p),
+        ("n_in", ctypes.c_int),
+        ("n_out", ctypes.c_int),
+        ("n_carry", ctypes.c_int),
+        ("check_in", ctypes.c_int),
+        ("n_finite", ctypes.c_int),
+        ("in_ptr", ctypes.c_void_p),
+        ("out_ptr", ctypes.c_void_p),
+        ("in_size", ctypes.c_void_p),
+        ("out_size", ctypes.c_void_p),
+        ("low", ctypes.c_void_p),
+        ("high", ctypes.c_void_p),
+        ("finite_out", ctypes.c_void_p),
+        ("arg", ctypes.c_void_p),
+        ("res", ctypes.c_void_p),
+        ("iw", ctypes.c_void_p),
+        ("w", ctypes.c_void_p),
+        ("n_deliver", ctypes.c_int),
+        ("deliver_out", ctypes.c_void_p),
+        ("deliver_ptr", ctypes.c_void_p),
+        ("ring_out", ctypes.c_int),
+        ("ring_len", ctypes.c_int),
+        ("ring", ctypes.c_void_p),
+        ("ring_count", ctypes.c_longlong),
     ]
 
 
@@ -112,22 +128,30 @@ class _Layout:
         self.in_shapes, self.out_shapes = list(fn.input_shapes), list(fn.output_shapes)
         k = len(carry)
         if list(carry) != self.inputs[:k] or list(carry.values()) != self.outputs[:k]:
-            raise ValueError(f"{fn.name}: carried inputs must be the first {k} inputs paired with the first outputs")
+            raise ValueError(
+                f"{fn.name}: carried inputs must be the first {k} inputs paired with the first outputs"
+            )
         if self.in_shapes[:k] != self.out_shapes[:k]:
-            raise ValueError(f"{fn.name}: a carried input and its output differ in shape "
-                             f"({self.in_shapes[:k]} vs {self.out_shapes[:k]})")
+            raise ValueError(
+                f"{fn.name}: a carried input and its output differ in shape "
+                f"({self.in_shapes[:k]} vs {self.out_shapes[:k]})"
+            )
         if feed not in self.inputs[k:]:
             raise ValueError(f"{fn.name}: the fed input must be a non-carried input, got {feed!r}")
         self.n_carry, self.feed = k, self.inputs.index(feed)
         size = self.in_shapes[self.feed][0] * self.in_shapes[self.feed][1]
         self.low = None if low is None else np.broadcast_to(np.asarray(low, dtype=np.float64), (size,)).copy()
-        self.high = None if high is None else np.broadcast_to(np.asarray(high, dtype=np.float64), (size,)).copy()
+        self.high = (
+            None if high is None else np.broadcast_to(np.asarray(high, dtype=np.float64), (size,)).copy()
+        )
         if (self.low is None) != (self.high is None):
             raise ValueError("give both low and high bounds, or neither")
         self.finite = [self.outputs.index(n) for n in finite]
         #: the keys of results() as a dict (``deliver`` a mapping key -> output name), or None for a tuple
         self.keys = tuple(deliver) if isinstance(deliver, dict) else None
-        self.deliver = [self.outputs.index(n) for n in (deliver.values() if isinstance(deliver, dict) else deliver)]
+        self.deliver = [
+            self.outputs.index(n) for n in (deliver.values() if isinstance(deliver, dict) else deliver)
+        ]
 
 
 class CStepper:
@@ -145,13 +169,17 @@ class CStepper:
     steps (copied by the compiled step into a ring), ``kept()`` returns them, ``set_kept`` loads them.
     """
 
-    def __init__(self, fn, kernel, library, carry: dict, feed: str, low=None, high=None, finite=(), deliver=()):
+    def __init__(
+        self, fn, kernel, library, carry: dict, feed: str, low=None, high=None, finite=(), deliver=()
+    ):
         lay = self._layout = _Layout(fn, carry, feed, low, high, finite, deliver)
         self._in = [np.zeros(r * c) for r, c in lay.in_shapes]
         sizes = [r * c for r, c in lay.out_shapes]
         self._out = [np.zeros(size) for size in sizes]
-        views = [self._out[j] if lay.out_shapes[j][1] == 1 else self._out[j].reshape(lay.out_shapes[j][::-1]).T
-                 for j in lay.deliver]  # matrices are column-major
+        views = [
+            self._out[j] if lay.out_shapes[j][1] == 1 else self._out[j].reshape(lay.out_shapes[j][::-1]).T
+            for j in lay.deliver
+        ]  # matrices are column-major
         #: results() -> the delivered outputs of the last successful step, as new arrays (floats for scalars)
         self.results = _results_function(views, lay.keys)
         self._feed = self._in[lay.feed]
@@ -162,17 +190,28 @@ class CStepper:
             "in_size": (ctypes.c_longlong * len(self._in))(*[a.size for a in self._in]),
             "out_size": (ctypes.c_longlong * len(sizes))(*sizes),
             "finite_out": (ctypes.c_int * max(1, len(lay.finite)))(*lay.finite),
-            "arg": (ctypes.c_void_p * max(work["sz_arg"], 1))(), "res": (ctypes.c_void_p * max(work["sz_res"], 1))(),
-            "iw": np.zeros(max(work["sz_iw"], 1), dtype=np.int64), "w": np.zeros(max(work["sz_w"], 1)),
-            "low": lay.low if lay.low is not None else np.zeros(1), "high": lay.high if lay.high is not None else np.zeros(1),
+            "arg": (ctypes.c_void_p * max(work["sz_arg"], 1))(),
+            "res": (ctypes.c_void_p * max(work["sz_res"], 1))(),
+            "iw": np.zeros(max(work["sz_iw"], 1), dtype=np.int64),
+            "w": np.zeros(max(work["sz_w"], 1)),
+            "low": lay.low if lay.low is not None else np.zeros(1),
+            "high": lay.high if lay.high is not None else np.zeros(1),
             "deliver_out": (ctypes.c_int * max(1, len(lay.deliver)))(*lay.deliver),
             "deliver_ptr": (ctypes.c_void_p * max(1, len(lay.deliver)))(),
         }
-        addr = {k: (v.ctypes.data if isinstance(v, np.ndarray) else ctypes.addressof(v)) for k, v in keep.items()}
+        addr = {
+            k: (v.ctypes.data if isinstance(v, np.ndarray) else ctypes.addressof(v)) for k, v in keep.items()
+        }
         self._struct = _StepperStruct(
-            f=ctypes.cast(getattr(library, fn.name), ctypes.c_void_p).value, n_in=len(self._in), n_out=len(self._out),
-            n_carry=lay.n_carry, check_in=lay.feed if lay.low is not None else -1, n_finite=len(lay.finite),
-            n_deliver=len(lay.deliver), ring_out=-1, **addr,
+            f=ctypes.cast(getattr(library, fn.name), ctypes.c_void_p).value,
+            n_in=len(self._in),
+            n_out=len(self._out),
+            n_carry=lay.n_carry,
+            check_in=lay.feed if lay.low is not None else -1,
+            n_finite=len(lay.finite),
+            n_deliver=len(lay.deliver),
+            ring_out=-1,
+            **addr,
         )
         self._ring: np.ndarray | None = None
         call = functools.partial(library.registration_step, ctypes.byref(self._struct))
@@ -189,6 +228,7 @@ class CStepper:
                 return call()
             finally:
                 struct.check_in = saved
+
         return unchecked
 
     def set(self, name: str, value) -> None:
@@ -217,7 +257,7 @@ class CStepper:
         if self._ring is None:
             raise ValueError("nothing is kept: call keep() first")
         values = _kept_values(values, self._ring.shape)
-        self._ring[:len(values)] = values
+        self._ring[: len(values)] = values
         self._struct.ring_count = len(values)
 
     def get(self, name: str):
@@ -241,7 +281,9 @@ def _kept_values(values, shape: tuple[int, int]) -> np.ndarray:
     """``values`` as an (m, size) float64 array with m <= the ring's length; ValueError otherwise."""
     a = np.asarray(values, dtype=np.float64)
     if a.ndim != 2 or a.shape[1] != shape[1] or len(a) > shape[0]:
-        raise ValueError(f"set_kept(): expected at most {shape[0]} values of size {shape[1]}, got shape {a.shape}")
+        raise ValueError(
+            f"set_kept(): expected at most {shape[0]} values of size {shape[1]}, got shape {a.shape}"
+        )
     return a
 
 
@@ -266,9 +308,14 @@ class _Blocks:
         arrays = []
         for m, (r, c) in enumerate(self._shapes):
             self._ptr[m] = base + block.itemsize * self._offsets[m]
-            part = block[self._offsets[m]:self._offsets[m + 1]]
-            arrays.append(part if (r, c) == (1, 1) else part.reshape(BLOCK_ROWS, r) if c == 1
-                          else part.reshape(BLOCK_ROWS, c, r).swapaxes(1, 2))
+            part = block[self._offsets[m] : self._offsets[m + 1]]
+            arrays.append(
+                part
+                if (r, c) == (1, 1)
+                else part.reshape(BLOCK_ROWS, r)
+                if c == 1
+                else part.reshape(BLOCK_ROWS, c, r).swapaxes(1, 2)
+            )
         return tuple(arrays)
 
 
@@ -373,8 +420,10 @@ class PyStepper:
         return OK
 
     def results(self) -> tuple | dict:
-        out = tuple(float(self._last[j]) if np.ndim(self._last[j]) == 0 else np.array(self._last[j])
-                    for j in self._layout.deliver)
+        out = tuple(
+            float(self._last[j]) if np.ndim(self._last[j]) == 0 else np.array(self._last[j])
+            for j in self._layout.deliver
+        )
         return out if self._layout.keys is None else dict(zip(self._layout.keys, out))
 
     def advance(self, value) -> tuple | dict | int:

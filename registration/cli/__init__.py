@@ -61,9 +61,12 @@ class CommandParser(argparse.ArgumentParser):
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="registration",
-        description=textwrap.fill("Register and fuse radar measurements across moving ships "
-                                  "(SI units inside; options in degrees end in _deg)."),
-        epilog=EXIT_CODES_EPILOG, formatter_class=HelpFormatter,
+        description=textwrap.fill(
+            "Register and fuse radar measurements across moving ships "
+            "(SI units inside; options in degrees end in _deg)."
+        ),
+        epilog=EXIT_CODES_EPILOG,
+        formatter_class=HelpFormatter,
     )
     parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND", parser_class=CommandParser)
@@ -74,8 +77,13 @@ def build_parser() -> argparse.ArgumentParser:
             if exc.name == f"registration.cli.{module}":
                 continue  # capability not built yet
             raise
-        p = sub.add_parser(name, help=mod.HELP, description=textwrap.fill(mod.HELP), epilog=EXIT_CODES_EPILOG,
-                           formatter_class=HelpFormatter)
+        p = sub.add_parser(
+            name,
+            help=mod.HELP,
+            description=textwrap.fill(mod.HELP),
+            epilog=EXIT_CODES_EPILOG,
+            formatter_class=HelpFormatter,
+        )
         mod.add_arguments(p)
         p.set_defaults(_run=mod.run, _hint=getattr(mod, "interrupt_hint", None))
     return parser

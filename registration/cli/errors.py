@@ -35,10 +35,28 @@ from contextlib import contextmanager
 from pathlib import Path
 
 __all__ = [
-    "EXIT_OK", "EXIT_BAD_ROWS", "EXIT_BAD_INPUT", "EXIT_INCONSISTENT", "EXIT_NUMERICAL", "EXIT_INTERRUPTED",
-    "EXIT_BROKEN_PIPE", "DEBUG_ENV", "EXIT_CODES_EPILOG", "CODE_OPTIONS", "exit_codes_epilog", "CommandError", "os_error_message", "writing", "prepare_out",
-    "add_allow_inconsistent", "consistency_line", "consistency_gate", "interrupt_message",
-    "is_numerical", "numerical_message", "run_guarded",
+    "EXIT_OK",
+    "EXIT_BAD_ROWS",
+    "EXIT_BAD_INPUT",
+    "EXIT_INCONSISTENT",
+    "EXIT_NUMERICAL",
+    "EXIT_INTERRUPTED",
+    "EXIT_BROKEN_PIPE",
+    "DEBUG_ENV",
+    "EXIT_CODES_EPILOG",
+    "CODE_OPTIONS",
+    "exit_codes_epilog",
+    "CommandError",
+    "os_error_message",
+    "writing",
+    "prepare_out",
+    "add_allow_inconsistent",
+    "consistency_line",
+    "consistency_gate",
+    "interrupt_message",
+    "is_numerical",
+    "numerical_message",
+    "run_guarded",
 ]
 
 EXIT_OK = 0
@@ -148,9 +166,12 @@ def prepare_out(out) -> Path:
 
 def add_allow_inconsistent(p: argparse.ArgumentParser) -> None:
     """The ``--allow-inconsistent`` flag of every command that runs the consistency gate."""
-    p.add_argument("--allow-inconsistent", action="store_true",
-                   help="exit 0 even when the normalised innovations grossly contradict the model "
-                        f"(otherwise exit code {EXIT_INCONSISTENT} after writing the outputs)")
+    p.add_argument(
+        "--allow-inconsistent",
+        action="store_true",
+        help="exit 0 even when the normalised innovations grossly contradict the model "
+        f"(otherwise exit code {EXIT_INCONSISTENT} after writing the outputs)",
+    )
 
 
 def consistency_line(report) -> str:
@@ -172,10 +193,16 @@ def consistency_gate(prog: str, report, allow: bool) -> int:
     if report.ok:
         return EXIT_OK
     if allow:
-        print(f"{prog}: warning: inconsistent run accepted (--allow-inconsistent): {report.message()}", file=sys.stderr)
+        print(
+            f"{prog}: warning: inconsistent run accepted (--allow-inconsistent): {report.message()}",
+            file=sys.stderr,
+        )
         return EXIT_OK
-    print(f"{prog}: error: {report.message()} Give --allow-inconsistent to accept the run "
-          f"(exit code {EXIT_INCONSISTENT}).", file=sys.stderr)
+    print(
+        f"{prog}: error: {report.message()} Give --allow-inconsistent to accept the run "
+        f"(exit code {EXIT_INCONSISTENT}).",
+        file=sys.stderr,
+    )
     return EXIT_INCONSISTENT
 
 
@@ -207,8 +234,10 @@ def is_numerical(exc: BaseException) -> bool:
 def numerical_message(exc: BaseException) -> str:
     """The one line of an internal numerical error: what failed, and how to report it."""
     what = str(exc) or type(exc).__name__
-    return (f"internal numerical error ({type(exc).__name__}): {what}. This is not a fault of the input as such; "
-            f"please report it, with the traceback that {DEBUG_ENV}=1 shows (exit code {EXIT_NUMERICAL})")
+    return (
+        f"internal numerical error ({type(exc).__name__}): {what}. This is not a fault of the input as such; "
+        f"please report it, with the traceback that {DEBUG_ENV}=1 shows (exit code {EXIT_NUMERICAL})"
+    )
 
 
 def _debug() -> bool:

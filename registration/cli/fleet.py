@@ -19,77 +19,165 @@ from registration.cli.errors import EXIT_CODES_EPILOG, add_allow_inconsistent, p
 from registration.cli.options import HelpFormatter, add_no_plots, add_out, add_seed
 from registration.cli.staging import staged_outputs
 
-HELP = ("registration of a fleet, in one batch or online: simulate the built-in fleet, or register fleet tables read "
-        "from files")
+HELP = (
+    "registration of a fleet, in one batch or online: simulate the built-in fleet, or register fleet tables read "
+    "from files"
+)
 
-SIMULATE_HELP = ("simulate the built-in fleet (3 ships, a shore site, 6 sensors, 5 targets), register it (in one "
-                 "batch, or online with --method online), and write its input tables as a working example for "
-                 "`fleet register`")
-REGISTER_HELP = ("register a fleet from plots, navigation and sensors tables (CSV or Parquet, degrees and metres; "
-                 "see docs/fleet.md)")
+SIMULATE_HELP = (
+    "simulate the built-in fleet (3 ships, a shore site, 6 sensors, 5 targets), register it (in one "
+    "batch, or online with --method online), and write its input tables as a working example for "
+    "`fleet register`"
+)
+REGISTER_HELP = (
+    "register a fleet from plots, navigation and sensors tables (CSV or Parquet, degrees and metres; "
+    "see docs/fleet.md)"
+)
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     sub = p.add_subparsers(dest="action", required=True, metavar="ACTION")
-    sim = sub.add_parser("simulate", help=SIMULATE_HELP, description=textwrap.fill(SIMULATE_HELP),
-                         epilog=EXIT_CODES_EPILOG, formatter_class=HelpFormatter)
+    sim = sub.add_parser(
+        "simulate",
+        help=SIMULATE_HELP,
+        description=textwrap.fill(SIMULATE_HELP),
+        epilog=EXIT_CODES_EPILOG,
+        formatter_class=HelpFormatter,
+    )
     add_seed(sim, 0)
     _add_method(sim)
     add_out(sim, "fleet-simulate", "the input tables, estimates.csv, summary.json and the PNG plots")
     add_no_plots(sim)
-    sim.add_argument("--format", choices=("csv", "parquet"), default="csv", help="file format of the tables written")
-    sim.add_argument("--duration-s", type=float, default=300.0, metavar="S",
-                     help="length of the simulated recording, s (targets leaving a sensor's coverage are not plotted)")
-    sim.add_argument("--targets", type=int, default=None, metavar="N",
-                     help="N random targets circling in the area, the first a reference target (default: the built-in "
-                          "five)")
+    sim.add_argument(
+        "--format", choices=("csv", "parquet"), default="csv", help="file format of the tables written"
+    )
+    sim.add_argument(
+        "--duration-s",
+        type=float,
+        default=300.0,
+        metavar="S",
+        help="length of the simulated recording, s (targets leaving a sensor's coverage are not plotted)",
+    )
+    sim.add_argument(
+        "--targets",
+        type=int,
+        default=None,
+        metavar="N",
+        help="N random targets circling in the area, the first a reference target (default: the built-in "
+        "five)",
+    )
     errors = sim.add_argument_group("extended sensor errors (default: none, and not modelled)")
-    errors.add_argument("--range-gain-ppm", type=float, default=None, metavar="PPM",
-                        help="give every sensor with range a range gain of +-PPM (random signs), estimated without prior")
-    errors.add_argument("--time-bias-s", type=float, default=None, metavar="S",
-                        help="give every sensor a time bias (reported - true plot time) of +-S s, estimated without prior")
-    errors.add_argument("--position-error-m", type=float, default=None, metavar="M",
-                        help="give every sensor a position error (stated - true) of +-M m per east, north and up axis, "
-                             "estimated without prior")
+    errors.add_argument(
+        "--range-gain-ppm",
+        type=float,
+        default=None,
+        metavar="PPM",
+        help="give every sensor with range a range gain of +-PPM (random signs), estimated without prior",
+    )
+    errors.add_argument(
+        "--time-bias-s",
+        type=float,
+        default=None,
+        metavar="S",
+        help="give every sensor a time bias (reported - true plot time) of +-S s, estimated without prior",
+    )
+    errors.add_argument(
+        "--position-error-m",
+        type=float,
+        default=None,
+        metavar="M",
+        help="give every sensor a position error (stated - true) of +-M m per east, north and up axis, "
+        "estimated without prior",
+    )
     add_allow_inconsistent(sim)
-    reg = sub.add_parser("register", help=REGISTER_HELP, description=textwrap.fill(REGISTER_HELP),
-                         epilog=EXIT_CODES_EPILOG, formatter_class=HelpFormatter)
-    files = reg.add_argument_group("input tables (.csv or .parquet): --tables DIR, or --plots, --navigation and "
-                                   "--sensors (each overriding the folder's file)")
-    files.add_argument("--tables", type=Path, default=None, metavar="DIR",
-                       help="a folder holding the tables by their standard names (plots, navigation, sensors, "
-                            "platforms, reference, targets; .csv or .parquet), as 'registration import' writes them")
-    files.add_argument("--plots", type=Path, default=None, metavar="FILE",
-                       help="time_s, sensor, target and/or track, range_m, bearing_deg, elevation_deg (empty cell: not "
-                            "measured); plots without a target id (no column, or empty cells) are associated to the "
-                            "targets with ids, the reference targets and each other, jointly with the registration; "
-                            "track: a sensor-local track id (associations.csv)")
-    files.add_argument("--navigation", type=Path, default=None, metavar="FILE",
-                       help="time_s, platform, lat_deg, lon_deg, alt_m, heading_deg, pitch_deg, roll_deg "
-                            "(one row for a fixed site)")
-    files.add_argument("--sensors", type=Path, default=None, metavar="FILE",
-                       help="sensor, platform, sigma_range_m, sigma_bearing_deg, sigma_elevation_deg; optional "
-                            "prior_range_bias_m, prior_bearing_bias_deg, prior_elevation_bias_deg (0 = fixed), "
-                            "lever_x_m, lever_y_m, lever_z_m; optional extended errors, each modelled only when its "
-                            "column is there: prior_range_gain (dimensionless), prior_time_bias_s, prior_position_m "
-                            "(empty or inf: no prior)")
-    files.add_argument("--platforms", type=Path, default=None, metavar="FILE",
-                       help="platform, prior_heading_deg, prior_pitch_deg, prior_roll_deg (0 = fixed); "
-                            "default: no priors")
-    files.add_argument("--reference", type=Path, default=None, metavar="FILE",
-                       help="time_s, target, lat_deg, lon_deg, alt_m (or x_m, y_m, z_m), optional sigma_m "
-                            "(m per axis; horizontal with sigma_up_m) and sigma_up_m (m, vertical): known target "
-                            "positions; default: none")
-    files.add_argument("--targets", type=Path, default=None, metavar="FILE",
-                       help="target, optional name, surface_alt_m (m above WGS-84) and sigma_surface_m: targets that "
-                            "move on a surface of known height, such as ships on the sea; default: none")
-    reg.add_argument("--window-s", type=float, default=20.0, metavar="S",
-                     help="length of the windows each target track is cut into, s (0: one per instant); the "
-                          "online filter updates once per window")
+    reg = sub.add_parser(
+        "register",
+        help=REGISTER_HELP,
+        description=textwrap.fill(REGISTER_HELP),
+        epilog=EXIT_CODES_EPILOG,
+        formatter_class=HelpFormatter,
+    )
+    files = reg.add_argument_group(
+        "input tables (.csv or .parquet): --tables DIR, or --plots, --navigation and "
+        "--sensors (each overriding the folder's file)"
+    )
+    files.add_argument(
+        "--tables",
+        type=Path,
+        default=None,
+        metavar="DIR",
+        help="a folder holding the tables by their standard names (plots, navigation, sensors, "
+        "platforms, reference, targets; .csv or .parquet), as 'registration import' writes them",
+    )
+    files.add_argument(
+        "--plots",
+        type=Path,
+        default=None,
+        metavar="FILE",
+        help="time_s, sensor, target and/or track, range_m, bearing_deg, elevation_deg (empty cell: not "
+        "measured); plots without a target id (no column, or empty cells) are associated to the "
+        "targets with ids, the reference targets and each other, jointly with the registration; "
+        "track: a sensor-local track id (associations.csv)",
+    )
+    files.add_argument(
+        "--navigation",
+        type=Path,
+        default=None,
+        metavar="FILE",
+        help="time_s, platform, lat_deg, lon_deg, alt_m, heading_deg, pitch_deg, roll_deg "
+        "(one row for a fixed site)",
+    )
+    files.add_argument(
+        "--sensors",
+        type=Path,
+        default=None,
+        metavar="FILE",
+        help="sensor, platform, sigma_range_m, sigma_bearing_deg, sigma_elevation_deg; optional "
+        "prior_range_bias_m, prior_bearing_bias_deg, prior_elevation_bias_deg (0 = fixed), "
+        "lever_x_m, lever_y_m, lever_z_m; optional extended errors, each modelled only when its "
+        "column is there: prior_range_gain (dimensionless), prior_time_bias_s, prior_position_m "
+        "(empty or inf: no prior)",
+    )
+    files.add_argument(
+        "--platforms",
+        type=Path,
+        default=None,
+        metavar="FILE",
+        help="platform, prior_heading_deg, prior_pitch_deg, prior_roll_deg (0 = fixed); default: no priors",
+    )
+    files.add_argument(
+        "--reference",
+        type=Path,
+        default=None,
+        metavar="FILE",
+        help="time_s, target, lat_deg, lon_deg, alt_m (or x_m, y_m, z_m), optional sigma_m "
+        "(m per axis; horizontal with sigma_up_m) and sigma_up_m (m, vertical): known target "
+        "positions; default: none",
+    )
+    files.add_argument(
+        "--targets",
+        type=Path,
+        default=None,
+        metavar="FILE",
+        help="target, optional name, surface_alt_m (m above WGS-84) and sigma_surface_m: targets that "
+        "move on a surface of known height, such as ships on the sea; default: none",
+    )
+    reg.add_argument(
+        "--window-s",
+        type=float,
+        default=20.0,
+        metavar="S",
+        help="length of the windows each target track is cut into, s (0: one per instant); the "
+        "online filter updates once per window",
+    )
     _add_method(reg)
-    reg.add_argument("--on-bad-row", choices=["stop", "skip"], default="stop",
-                     help="stop at the first bad row of the plots (then the reference) file, or skip: set bad rows aside in "
-                          "rejected.csv (file, row, column, reason_code, reason) and register the rest")
+    reg.add_argument(
+        "--on-bad-row",
+        choices=["stop", "skip"],
+        default="stop",
+        help="stop at the first bad row of the plots (then the reference) file, or skip: set bad rows aside in "
+        "rejected.csv (file, row, column, reason_code, reason) and register the rest",
+    )
     add_out(reg, "fleet-register", "estimates.csv, summary.json and the PNG plots")
     add_no_plots(reg)
     add_allow_inconsistent(reg)
@@ -99,17 +187,27 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def _add_method(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--method", choices=("batch", "online"), default="batch",
-                   help="batch: maximum likelihood over all plots at once; online: the filter, one update per "
-                        "window of plots, with the estimates over time in history.csv (docs/fleet-online.md); plots without "
-                        "target ids are first associated by the batch, then filtered with the labels it gave")
+    p.add_argument(
+        "--method",
+        choices=("batch", "online"),
+        default="batch",
+        help="batch: maximum likelihood over all plots at once; online: the filter, one update per "
+        "window of plots, with the estimates over time in history.csv (docs/fleet-online.md); plots without "
+        "target ids are first associated by the batch, then filtered with the labels it gave",
+    )
 
 
 def _inputs(tables, problem, window_s: float) -> dict:
-    return {"files": {k: str(v) for k, v in tables.paths.items()}, "rows": tables.rows(), "window_s": window_s,
-            "platforms": list(problem.platform_ids), "sensors": list(problem.sensor_ids),
-            "targets": list(problem.target_ids), "plots_used": problem.n_plots,
-            "plots_read": problem.n_input_plots}
+    return {
+        "files": {k: str(v) for k, v in tables.paths.items()},
+        "rows": tables.rows(),
+        "window_s": window_s,
+        "platforms": list(problem.platform_ids),
+        "sensors": list(problem.sensor_ids),
+        "targets": list(problem.target_ids),
+        "plots_used": problem.n_plots,
+        "plots_read": problem.n_input_plots,
+    }
 
 
 def _solve(tables, window_s: float, method: str):
@@ -118,10 +216,18 @@ def _solve(tables, window_s: float, method: str):
 
     problem = tables.problem()
     if method == "online":
-        return problem, register_online(tables.plots, tables.sensors, tables.navigation, tables.platforms,
-                                        tables.references, options=OnlineOptions(window_s=window_s),
-                                        targets=tables.targets)
-    return problem, solve_batch(problem, BatchOptions(window_s=window_s), progress=True)  # a bar on a terminal only
+        return problem, register_online(
+            tables.plots,
+            tables.sensors,
+            tables.navigation,
+            tables.platforms,
+            tables.references,
+            options=OnlineOptions(window_s=window_s),
+            targets=tables.targets,
+        )
+    return problem, solve_batch(
+        problem, BatchOptions(window_s=window_s), progress=True
+    )  # a bar on a terminal only
 
 
 def _associate(tables, window_s: float, method: str):
@@ -147,19 +253,32 @@ def _run_line(result) -> str:
 
 
 #: What `fleet register` writes into --out (the outputs of an earlier run there are replaced whole).
-REGISTER_OUTPUTS = frozenset({"estimates.csv", "history.csv", "summary.json", "associations.csv", "rejected.csv",
-                              "estimates.png", "map.png", "residuals.png"})
+REGISTER_OUTPUTS = frozenset(
+    {
+        "estimates.csv",
+        "history.csv",
+        "summary.json",
+        "associations.csv",
+        "rejected.csv",
+        "estimates.png",
+        "map.png",
+        "residuals.png",
+    }
+)
 #: `fleet simulate` writes its input tables too.
-SIMULATE_OUTPUTS = REGISTER_OUTPUTS | {f"{t}.{f}" for t in ("plots", "navigation", "sensors", "platforms", "reference")
-                                      for f in ("csv", "parquet")}
+SIMULATE_OUTPUTS = REGISTER_OUTPUTS | {
+    f"{t}.{f}"
+    for t in ("plots", "navigation", "sensors", "platforms", "reference")
+    for f in ("csv", "parquet")
+}
 
 
 def run_simulate(args: argparse.Namespace) -> int:
     """Simulate, write the tables, read them back and register what was written (so `fleet register`
     on these files gives the same numbers)."""
-    from registration.cli.fleet_output import estimate_rows, gate, print_report, write_outputs
     from dataclasses import replace
 
+    from registration.cli.fleet_output import estimate_rows, gate, print_report, write_outputs
     from registration.fleet import fleet_scenario
     from registration.fleet.simulation.scenario import DEFAULT_FLEET
     from registration.fleet.simulation.tracks import random_targets
@@ -167,27 +286,42 @@ def run_simulate(args: argparse.Namespace) -> int:
 
     if args.seed < 0:
         raise ValueError(f"--seed: expected an integer >= 0, got {args.seed}")
-    extended = {"range_gain": None if args.range_gain_ppm is None else args.range_gain_ppm * 1e-6,
-                "time_bias": args.time_bias_s, "position_error": args.position_error_m}
-    for option, value in (("--range-gain-ppm", args.range_gain_ppm), ("--time-bias-s", args.time_bias_s),
-                          ("--position-error-m", args.position_error_m)):
+    extended = {
+        "range_gain": None if args.range_gain_ppm is None else args.range_gain_ppm * 1e-6,
+        "time_bias": args.time_bias_s,
+        "position_error": args.position_error_m,
+    }
+    for option, value in (
+        ("--range-gain-ppm", args.range_gain_ppm),
+        ("--time-bias-s", args.time_bias_s),
+        ("--position-error-m", args.position_error_m),
+    ):
         if value is not None and not np.isfinite(value):
             raise ValueError(f"{option}: expected a finite number, got {value}")
     if not (10.0 < args.duration_s < float("inf")):
         raise ValueError(f"--duration-s: expected a length > 10 s, got {args.duration_s}")
     if args.targets is not None and args.targets < 1:
         raise ValueError(f"--targets: expected a number of targets >= 1, got {args.targets}")
-    config = DEFAULT_FLEET if args.targets is None else replace(
-        DEFAULT_FLEET, targets=random_targets(args.targets, args.seed), reference_target="T1")
+    config = (
+        DEFAULT_FLEET
+        if args.targets is None
+        else replace(DEFAULT_FLEET, targets=random_targets(args.targets, args.seed), reference_target="T1")
+    )
     out = prepare_out(args.out)
     s = fleet_scenario(args.seed, duration_s=args.duration_s, config=config, **extended)
     with staged_outputs(out, "registration fleet simulate", SIMULATE_OUTPUTS) as folder:
         with writing(folder.path):
-            tables_written = write_fleet_tables(folder.path, s.plots, s.navigation, s.sensors, s.platforms,
-                                                s.references, args.format)
+            tables_written = write_fleet_tables(
+                folder.path, s.plots, s.navigation, s.sensors, s.platforms, s.references, args.format
+            )
         names = {p.stem: p for p in tables_written}
-        tables = read_fleet_tables(names["plots"], names["navigation"], names["sensors"], names.get("platforms"),
-                                   names.get("reference"))
+        tables = read_fleet_tables(
+            names["plots"],
+            names["navigation"],
+            names["sensors"],
+            names.get("platforms"),
+            names.get("reference"),
+        )
         tables.paths = {k: folder.final(v) for k, v in tables.paths.items()}  # where they will be
         problem, result = _solve(tables, 20.0, args.method)
         rows = estimate_rows(result, s.truth_state)
@@ -195,8 +329,9 @@ def run_simulate(args: argparse.Namespace) -> int:
         print_report(result, rows, header)
         scenario = {k: (float(v) if not isinstance(v, (bool, str)) else v) for k, v in s.description.items()}
         inputs = {**_inputs(tables, problem, 20.0), "method": args.method, "scenario": scenario}
-        written = write_outputs(folder.path, problem, result, rows, inputs, plots=not args.no_plots,
-                                truth=s.truth_state)
+        written = write_outputs(
+            folder.path, problem, result, rows, inputs, plots=not args.no_plots, truth=s.truth_state
+        )
     print("\nwrote " + ", ".join(str(folder.final(p)) for p in [*tables_written, *written]))
     return gate("registration fleet simulate", result, args.allow_inconsistent)
 
@@ -219,7 +354,9 @@ def _table_paths(args: argparse.Namespace) -> dict:
         return tables_in_folder(args.tables, given)
     missing = [f"--{n}" for n in REQUIRED_TABLES if given[n] is None]
     if missing:
-        raise ValueError(f"the arguments {', '.join(missing)} are required (or give --tables DIR, the folder of an import)")
+        raise ValueError(
+            f"the arguments {', '.join(missing)} are required (or give --tables DIR, the folder of an import)"
+        )
     return given
 
 
@@ -230,17 +367,29 @@ def _read_tables(args: argparse.Namespace, out: Path):
 
     paths = _table_paths(args)
     try:
-        tables = read_fleet_tables(paths["plots"], paths["navigation"], paths["sensors"], paths["platforms"],
-                                   paths["reference"], targets=paths["targets"], on_bad_row=args.on_bad_row)
+        tables = read_fleet_tables(
+            paths["plots"],
+            paths["navigation"],
+            paths["sensors"],
+            paths["platforms"],
+            paths["reference"],
+            targets=paths["targets"],
+            on_bad_row=args.on_bad_row,
+        )
     except NoValidPlotsError as exc:
         with staged_outputs(out, "registration fleet register", REGISTER_OUTPUTS) as folder:
             _write_rejected(folder.path, exc.rejected_frame())  # the list of what was wrong is the output
         raise
     if tables.rejected:
         frame = tables.rejected_frame()
-        per_file = {f: ", ".join(f"{n} {code}" for code, n in g.groupby("reason_code").size().items())
-                    for f, g in frame.groupby("file")}
-        print(f"set aside {len(frame)} bad rows (in rejected.csv): " + "; ".join(f"{f}: {c}" for f, c in per_file.items()))
+        per_file = {
+            f: ", ".join(f"{n} {code}" for code, n in g.groupby("reason_code").size().items())
+            for f, g in frame.groupby("file")
+        }
+        print(
+            f"set aside {len(frame)} bad rows (in rejected.csv): "
+            + "; ".join(f"{f}: {c}" for f, c in per_file.items())
+        )
     for note in tables.notes:  # ignored without an error, or suspicious without proof
         print(f"note: {note}")
     return tables
@@ -277,12 +426,22 @@ def _register_into(path: Path, args: argparse.Namespace, tables):
     else:
         association, problem, result = _associate(tables, args.window_s, args.method)
     rows = estimate_rows(result)
-    header = ["Fleet tables " + ", ".join(str(p) for p in tables.paths.values()) + ":", problem.lines()[0],
-              *([] if association is None else association.lines()[:-len(association.batch.lines())]),
-              *([] if association is None else online_note(args.method)), _run_line(result)]
+    header = [
+        "Fleet tables " + ", ".join(str(p) for p in tables.paths.values()) + ":",
+        problem.lines()[0],
+        *([] if association is None else association.lines()[: -len(association.batch.lines())]),
+        *([] if association is None else online_note(args.method)),
+        _run_line(result),
+    ]
     print_report(result, rows, header)
-    inputs = {**_inputs(tables, problem, args.window_s), "method": args.method, "on_bad_row": args.on_bad_row,
-              "rows_read": tables.rows_read(), "rows_rejected": len(tables.rejected), "notes": list(tables.notes)}
+    inputs = {
+        **_inputs(tables, problem, args.window_s),
+        "method": args.method,
+        "on_bad_row": args.on_bad_row,
+        "rows_read": tables.rows_read(),
+        "rows_rejected": len(tables.rejected),
+        "notes": list(tables.notes),
+    }
     if association is not None:
         inputs["association"] = association_summary(association, args.method)
     written = write_outputs(path, problem, result, rows, inputs, plots=not args.no_plots)

@@ -26,8 +26,14 @@ from pathlib import Path
 from registration.cli.errors import writing
 from registration.cli.fleet_archive_output import PNG_OUTPUTS
 
-__all__ = ["ARCHIVE_FOLDERS", "ARCHIVE_OUTPUTS", "FUSED_FOLDER", "add_archive_arguments", "archive_requested",
-           "run_archive"]
+__all__ = [
+    "ARCHIVE_FOLDERS",
+    "ARCHIVE_OUTPUTS",
+    "FUSED_FOLDER",
+    "add_archive_arguments",
+    "archive_requested",
+    "run_archive",
+]
 
 #: The folder of the fused targets' Parquet parts.
 FUSED_FOLDER = "fused_targets"
@@ -39,22 +45,38 @@ ARCHIVE_FOLDERS = frozenset({FUSED_FOLDER})
 def add_archive_arguments(p: argparse.ArgumentParser) -> None:
     """The archive options, in their own group of ``p`` (the ``fleet register`` parser)."""
     g = p.add_argument_group("archives too large for memory (Parquet or CSV tables in --tables DIR)")
-    g.add_argument("--partition-s", type=float, default=None, metavar="S",
-                   help="solve partition by partition, S seconds of target windows each (memory bounded by a "
-                        "partition; default: not partitioned, the whole archive in memory); the plots need their "
-                        "target ids (plots without ids are associated in memory)")
-    g.add_argument("--workers", type=int, default=None, metavar="N",
-                   help="map the partitions on a local Dask cluster of N worker processes (with --partition-s)")
-    g.add_argument("--scheduler", default=None, metavar="ADDRESS",
-                   help="map the partitions on the dask.distributed scheduler at ADDRESS, e.g. tcp://host:8786 "
-                        "(with --partition-s)")
+    g.add_argument(
+        "--partition-s",
+        type=float,
+        default=None,
+        metavar="S",
+        help="solve partition by partition, S seconds of target windows each (memory bounded by a "
+        "partition; default: not partitioned, the whole archive in memory); the plots need their "
+        "target ids (plots without ids are associated in memory)",
+    )
+    g.add_argument(
+        "--workers",
+        type=int,
+        default=None,
+        metavar="N",
+        help="map the partitions on a local Dask cluster of N worker processes (with --partition-s)",
+    )
+    g.add_argument(
+        "--scheduler",
+        default=None,
+        metavar="ADDRESS",
+        help="map the partitions on the dask.distributed scheduler at ADDRESS, e.g. tcp://host:8786 "
+        "(with --partition-s)",
+    )
 
 
 def archive_requested(args: argparse.Namespace) -> bool:
     """True when the options ask for the archive path (ValueError for --workers/--scheduler alone)."""
     if getattr(args, "partition_s", None) is None:
         if getattr(args, "workers", None) is not None or getattr(args, "scheduler", None):
-            raise ValueError("--workers and --scheduler map the partitions of an archive: give --partition-s S too")
+            raise ValueError(
+                "--workers and --scheduler map the partitions of an archive: give --partition-s S too"
+            )
         return False
     return True
 
@@ -63,14 +85,28 @@ def _summary(result, args: argparse.Namespace) -> dict:
     from registration.cli.fleet_output import estimate_rows, estimates_json
 
     chi = result.chi_square
-    return {"estimates": estimates_json(estimate_rows(result)), "observability": result.observability.to_json(),
-            "tables": str(args.tables), "window_s": args.window_s, "partition_s": args.partition_s,
-            "partitions": result.plan.n_partitions, "plots_used": result.n_plots,
-            "plots_read": result.plan.n_input_plots, "converged": result.converged, "iterations": result.iterations,
-            "chi_square": {"chi2": chi.chi2, "dof": chi.dof, "mean": chi.mean,
-                           "parts": {k: list(v) for k, v in chi.parts.items()}},
-            "excluded": [e.text() for e in result.excluded], "warnings": list(result.warnings),
-            "workers": args.workers, "scheduler": args.scheduler}
+    return {
+        "estimates": estimates_json(estimate_rows(result)),
+        "observability": result.observability.to_json(),
+        "tables": str(args.tables),
+        "window_s": args.window_s,
+        "partition_s": args.partition_s,
+        "partitions": result.plan.n_partitions,
+        "plots_used": result.n_plots,
+        "plots_read": result.plan.n_input_plots,
+        "converged": result.converged,
+        "iterations": result.iterations,
+        "chi_square": {
+            "chi2": chi.chi2,
+            "dof": chi.dof,
+            "mean": chi.mean,
+            "parts": {k: list(v) for k, v in chi.parts.items()},
+        },
+        "excluded": [e.text() for e in result.excluded],
+        "warnings": list(result.warnings),
+        "workers": args.workers,
+        "scheduler": args.scheduler,
+    }
 
 
 def _write_parts(parts: Path, tables: list) -> None:
@@ -85,19 +121,31 @@ def _write_outputs(folder: Path, args: argparse.Namespace, result, outputs, writ
     from registration.cli.fleet_archive_output import residual_lines, residual_summary, write_figures
     from registration.fleet.batch.outputs import FUSED_COLUMNS
 
-    summary = {**_summary(result, args), **residual_summary(outputs),
-               "fused_targets": {"folder": f"{FUSED_FOLDER}/", "parts": outputs.n_parts, "rows": outputs.fused_rows,
-                                 "columns": list(FUSED_COLUMNS), "written_by": written_by},
-               "figures_sample": {"plots": int(outputs.sample["time"].size), "every": outputs.sample_every}}
+    summary = {
+        **_summary(result, args),
+        **residual_summary(outputs),
+        "fused_targets": {
+            "folder": f"{FUSED_FOLDER}/",
+            "parts": outputs.n_parts,
+            "rows": outputs.fused_rows,
+            "columns": list(FUSED_COLUMNS),
+            "written_by": written_by,
+        },
+        "figures_sample": {"plots": int(outputs.sample["time"].size), "every": outputs.sample_every},
+    }
     import pandas as pd
 
     from registration.cli.fleet_output import estimate_rows
     from registration.io.files.tablefile import write_frame
 
-    with writing(folder / "estimates.csv"):  # the in-memory run's layout: object, state, unit, estimate, sigma, status
+    with writing(
+        folder / "estimates.csv"
+    ):  # the in-memory run's layout: object, state, unit, estimate, sigma, status
         write_frame(pd.DataFrame(estimate_rows(result)), folder / "estimates.csv", "csv")
-    for name, text in (("residuals.csv", "\n".join(residual_lines(outputs))),
-                       ("summary.json", json.dumps(summary, indent=2, allow_nan=False))):
+    for name, text in (
+        ("residuals.csv", "\n".join(residual_lines(outputs))),
+        ("summary.json", json.dumps(summary, indent=2, allow_nan=False)),
+    ):
         with writing(folder / name):
             (folder / name).write_text(text + "\n")
     if not getattr(args, "no_plots", False):
@@ -113,17 +161,28 @@ def _solve_and_write(args: argparse.Namespace, out: Path, source) -> tuple:
 
     options = BatchOptions(window_s=args.window_s)
     with dask_client(args.scheduler, args.workers) as client:
-        result = solve_batch_partitioned(source, options, partition_s=args.partition_s, client=client, progress=True)
-        with staged_outputs(out, "registration fleet register", ARCHIVE_OUTPUTS, folders=ARCHIVE_FOLDERS) as folder:
+        result = solve_batch_partitioned(
+            source, options, partition_s=args.partition_s, client=client, progress=True
+        )
+        with staged_outputs(
+            out, "registration fleet register", ARCHIVE_OUTPUTS, folders=ARCHIVE_FOLDERS
+        ) as folder:
             parts = folder.path / FUSED_FOLDER
             with writing(parts):
                 parts.mkdir()
-            remote = bool(args.scheduler)  # a remote cluster may not see this disk: its workers return the parts
+            remote = bool(
+                args.scheduler
+            )  # a remote cluster may not see this disk: its workers return the parts
             outputs = archive_outputs(result, source, options, parts=None if remote else parts, client=client)
             if remote:
                 _write_parts(parts, outputs.tables)
-            _write_outputs(folder.path, args, result, outputs,
-                           "client" if remote else ("workers" if client is not None else "this process"))
+            _write_outputs(
+                folder.path,
+                args,
+                result,
+                outputs,
+                "client" if remote else ("workers" if client is not None else "this process"),
+            )
     return result, outputs
 
 
@@ -147,20 +206,28 @@ def run_archive(args: argparse.Namespace) -> int:
     from registration.cli.errors import consistency_gate, consistency_line, prepare_out
 
     if args.tables is None:
-        raise ValueError("--partition-s: give the archive as --tables DIR (Parquet or CSV files, or folders of "
-                         "Parquet files)")
+        raise ValueError(
+            "--partition-s: give the archive as --tables DIR (Parquet or CSV files, or folders of "
+            "Parquet files)"
+        )
     if getattr(args, "on_bad_row", "stop") != "stop":
-        raise ValueError("--on-bad-row skip: not with --partition-s (an archive stops at its first bad row); "
-                         "register in memory to set bad rows aside")
+        raise ValueError(
+            "--on-bad-row skip: not with --partition-s (an archive stops at its first bad row); "
+            "register in memory to set bad rows aside"
+        )
     if getattr(args, "method", "batch") != "batch":
         raise ValueError("--method online: not with --partition-s (the archive path is the batch solve)")
     if getattr(args, "targets", None) is not None:
-        raise ValueError("--targets: with --partition-s the surface targets are the --tables folder's targets file "
-                         "(targets.parquet or targets.csv)")
+        raise ValueError(
+            "--targets: with --partition-s the surface targets are the --tables folder's targets file "
+            "(targets.parquet or targets.csv)"
+        )
     out = prepare_out(args.out)
     result, outputs = _run(args, out, Path(args.tables))
-    print(f"{result.n_plots} plots in {result.plan.n_partitions} partitions, {result.iterations} iterations, "
-          f"chi-square/dof {result.chi_square.mean:.3f}")
+    print(
+        f"{result.n_plots} plots in {result.plan.n_partitions} partitions, {result.iterations} iterations, "
+        f"chi-square/dof {result.chi_square.mean:.3f}"
+    )
     print(f"fused targets: {outputs.fused_rows} rows in {outputs.n_parts} Parquet parts")
     for w in result.warnings:
         print(f"warning: {w}")
@@ -175,6 +242,8 @@ def run_archive(args: argparse.Namespace) -> int:
     print()
     names = sorted(ARCHIVE_OUTPUTS - (set() if not getattr(args, "no_plots", False) else set(PNG_OUTPUTS)))
     print("wrote " + ", ".join(str(out / n) for n in [*names, FUSED_FOLDER + "/"]))
-    report = result.chi_square.report  # the gate of the in-memory run: exit 3 when the data contradict the model
+    report = (
+        result.chi_square.report
+    )  # the gate of the in-memory run: exit 3 when the data contradict the model
     print(consistency_line(report))
     return consistency_gate("registration fleet register", report, getattr(args, "allow_inconsistent", False))

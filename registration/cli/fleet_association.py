@@ -16,8 +16,10 @@ __all__ = ["ASSOCIATION_COLUMNS", "associate", "association_summary", "online_no
 #: Columns of associations.csv (``track`` only when the plots file has one).
 ASSOCIATION_COLUMNS = ("row", "time_s", "sensor", "track", "target", "join", "reason")
 #: Printed when --method online runs on the association's labels.
-ONLINE_NOTE = ("--method online: the association is a batch method (it registers while it joins plots to targets), "
-               "so the batch associated the plots first; the online filter then ran on the targets it gave")
+ONLINE_NOTE = (
+    "--method online: the association is a batch method (it registers while it joins plots to targets), "
+    "so the batch associated the plots first; the online filter then ran on the targets it gave"
+)
 
 
 def _labelled_tables(tables, association) -> tuple[dict, dict | None]:
@@ -39,16 +41,32 @@ def associate(tables, window_s: float, method: str):
     from registration.fleet import AssociationOptions, OnlineOptions, associate_and_register, register_online
 
     if window_s <= 0:
-        raise ValueError(f"--window-s: plots without target ids are associated in windows; expected a length > 0 s, "
-                         f"got {window_s}")
-    association = associate_and_register(tables.plots, tables.sensors, tables.navigation, tables.platforms,
-                                         tables.references, AssociationOptions(window_s=window_s), progress=True,
-                                         targets=tables.targets)
+        raise ValueError(
+            f"--window-s: plots without target ids are associated in windows; expected a length > 0 s, "
+            f"got {window_s}"
+        )
+    association = associate_and_register(
+        tables.plots,
+        tables.sensors,
+        tables.navigation,
+        tables.platforms,
+        tables.references,
+        AssociationOptions(window_s=window_s),
+        progress=True,
+        targets=tables.targets,
+    )
     if method != "online":
         return association, association.problem, association.batch
     plots, refs = _labelled_tables(tables, association)
-    result = register_online(plots, tables.sensors, tables.navigation, tables.platforms, refs,
-                             options=OnlineOptions(window_s=window_s), targets=tables.targets)
+    result = register_online(
+        plots,
+        tables.sensors,
+        tables.navigation,
+        tables.platforms,
+        refs,
+        options=OnlineOptions(window_s=window_s),
+        targets=tables.targets,
+    )
     return association, association.problem, result
 
 
@@ -59,13 +77,18 @@ def online_note(method: str) -> list[str]:
 
 def association_summary(association, method: str) -> dict:
     """The association's part of summary.json: counts, per sensor, notes, passes."""
-    out = {"targets": association.n_targets, "plots_associated": association.n_associated,
-           "plots_with_ids_given": int(association.given.sum()),
-           "plots_unassociated": int(association.unassociated_rows.size),
-           "unassociated_by_sensor": {k: int(v) for k, v in association.unassociated_by_sensor.items()},
-           "by_sensor": association.by_sensor, "notes": list(association.notes),
-           "passes": association.iterations, "join_passes": association.join_passes,
-           "converged": bool(association.converged)}
+    out = {
+        "targets": association.n_targets,
+        "plots_associated": association.n_associated,
+        "plots_with_ids_given": int(association.given.sum()),
+        "plots_unassociated": int(association.unassociated_rows.size),
+        "unassociated_by_sensor": {k: int(v) for k, v in association.unassociated_by_sensor.items()},
+        "by_sensor": association.by_sensor,
+        "notes": list(association.notes),
+        "passes": association.iterations,
+        "join_passes": association.join_passes,
+        "converged": bool(association.converged),
+    }
     if method == "online":
         out["online"] = ONLINE_NOTE
     return out

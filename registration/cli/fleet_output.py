@@ -43,8 +43,14 @@ def estimate_rows(result, truth: dict | None = None) -> list[dict]:
     rows = []
     for r in result.rows(truth):
         unit, k, _, _ = FILE_UNITS[r["unit"]]
-        row = {"object": r["object"], "state": r["quantity"], "unit": unit, "estimate": r["estimate"] * k,
-               "sigma": r["sigma"] * k if np.isfinite(r["sigma"]) else None, "status": r["status"]}
+        row = {
+            "object": r["object"],
+            "state": r["quantity"],
+            "unit": unit,
+            "estimate": r["estimate"] * k,
+            "sigma": r["sigma"] * k if np.isfinite(r["sigma"]) else None,
+            "status": r["status"],
+        }
         if truth is not None:
             row["truth"] = r["truth"] * k
         rows.append(row)
@@ -57,13 +63,17 @@ def estimate_table(rows: list[dict]) -> list[str]:
     has_truth = bool(rows) and "truth" in rows[0]
     wo = max([8, *(len(r["object"]) + 2 for r in rows)])
     ws = max([16, *(len(r["state"]) + 2 for r in rows)])
-    out = [f"  {'object':<{wo}}{'state':<{ws}}{'estimate':>12}{'σ':>14}{'truth' if has_truth else '':>{10 if has_truth else 0}}"
-           "  unit  status"]
+    out = [
+        f"  {'object':<{wo}}{'state':<{ws}}{'estimate':>12}{'σ':>14}{'truth' if has_truth else '':>{10 if has_truth else 0}}"
+        "  unit  status"
+    ]
     for r in rows:
         k, unit = (1e6, "ppm") if r["unit"] == "1" else (1.0, r["unit"])
         sigma = sigma_text(np.inf if r["sigma"] is None else k * r["sigma"], ".3g")
         truth = f"{k * r['truth']:10.4g}" if has_truth else ""
-        out.append(f"  {r['object']:<{wo}}{r['state']:<{ws}}{k * r['estimate']:12.4g}{sigma:>14}{truth}  {unit:<4}  {r['status']}")
+        out.append(
+            f"  {r['object']:<{wo}}{r['state']:<{ws}}{k * r['estimate']:12.4g}{sigma:>14}{truth}  {unit:<4}  {r['status']}"
+        )
     return out
 
 
@@ -85,13 +95,18 @@ def print_report(result, rows: list[dict], header: list[str]) -> None:
     check = result.fit_check if is_online(result) else result.chi_square
     if is_online(result):
         print()  # the epochs and plots used are in the header (the run line)
-        if check is not None and result.consistency is not None:  # information only: the verdict is the line below
+        if (
+            check is not None and result.consistency is not None
+        ):  # information only: the verdict is the line below
             print(result.innovation_text())
     else:
         print()  # the batch's chi-square check is the consistency line below
     if check is not None and check.parts:
-        refs = "" if is_online(result) else (f" ({result.reference_target.size} of {result.references_given} reference "
-                                             "positions used)")
+        refs = (
+            ""
+            if is_online(result)
+            else (f" ({result.reference_target.size} of {result.references_given} reference positions used)")
+        )
         print(f"residual terms (mean square per value): {check.parts_text()}{refs}")
         for line in _term_hints(check.parts):
             print(line)
@@ -101,17 +116,22 @@ def print_report(result, rows: list[dict], header: list[str]) -> None:
 
 #: A term of the chi-square whose mean square per value exceeds this is pointed out by name.
 TERM_HINT_ABOVE = 10.0
-_TERM_CAUSES = {"plots": "the sensors' noise sigmas are stated too small, or the plots carry an unmodelled error",
-                "references": "the reference file's sigma_m is stated too small (or its vertical sigma_up_m), or its "
-                              "positions or times do not match the plots' targets",
-                "priors": "the priors are too tight for the errors there are"}
+_TERM_CAUSES = {
+    "plots": "the sensors' noise sigmas are stated too small, or the plots carry an unmodelled error",
+    "references": "the reference file's sigma_m is stated too small (or its vertical sigma_up_m), or its "
+    "positions or times do not match the plots' targets",
+    "priors": "the priors are too tight for the errors there are",
+}
 
 
 def _term_hints(parts: dict) -> list[str]:
     """A line per term of the chi-square far above 1 (TERM_HINT_ABOVE), naming its likely cause."""
-    return [f"  the {name} term is {ss / n:.3g} per value (about 1 where the sigmas are right): "
-            f"{_TERM_CAUSES.get(name, 'check its sigmas')}"
-            for name, (ss, n) in parts.items() if n and ss / n > TERM_HINT_ABOVE]
+    return [
+        f"  the {name} term is {ss / n:.3g} per value (about 1 where the sigmas are right): "
+        f"{_TERM_CAUSES.get(name, 'check its sigmas')}"
+        for name, (ss, n) in parts.items()
+        if n and ss / n > TERM_HINT_ABOVE
+    ]
 
 
 def _finite(v):
@@ -125,21 +145,36 @@ def estimates_json(rows: list[dict]) -> list[dict]:
 
 
 def _check_json(check) -> dict:
-    parts = {k: {"sum_of_squares": ss, "values": n, "mean_square": ss / n if n else None}
-             for k, (ss, n) in check.parts.items()}
-    return {"chi2": float(check.chi2), "dof": int(check.dof), "mean": _finite(float(check.mean)),
-            "interval_95": [_finite(float(v)) for v in check.interval], "consistent": bool(check.ok), "parts": parts}
+    parts = {
+        k: {"sum_of_squares": ss, "values": n, "mean_square": ss / n if n else None}
+        for k, (ss, n) in check.parts.items()
+    }
+    return {
+        "chi2": float(check.chi2),
+        "dof": int(check.dof),
+        "mean": _finite(float(check.mean)),
+        "interval_95": [_finite(float(v)) for v in check.interval],
+        "consistent": bool(check.ok),
+        "parts": parts,
+    }
 
 
 def _references_json(result) -> dict:
     """The reference positions' term of a batch result: how many were given and used, their mean
     squared normalised residual (3 values per position, 2 without a height), per reference target too."""
-    by_target = {k: {"mean_square": _finite(v[0]), "values": v[1]} for k, v in result.residual_check("reference").items()}
+    by_target = {
+        k: {"mean_square": _finite(v[0]), "values": v[1]}
+        for k, v in result.residual_check("reference").items()
+    }
     e = result.reference_residuals[np.isfinite(result.reference_residuals)]
     n = int(e.size)
-    return {"positions_given": int(result.references_given), "positions_used": int(result.reference_target.size),
-            "mean_square": float(np.mean(e**2)) if n else None, "values": n,
-            "by_target": by_target}
+    return {
+        "positions_given": int(result.references_given),
+        "positions_used": int(result.reference_target.size),
+        "mean_square": float(np.mean(e**2)) if n else None,
+        "values": n,
+        "by_target": by_target,
+    }
 
 
 def _by_target_json(result) -> dict:
@@ -160,27 +195,45 @@ def _summary(result, rows: list[dict], inputs: dict) -> dict:
         "estimates": estimates_json(rows),
         "observability": result.observability.to_json(),
         "consistency": report.to_json() if report is not None else None,
-        "consistency_basis": (result.verdict_basis if is_online(result) else "residuals (chi-square) at the solution"),
-        "excluded": [{"target": e.target, "reason": e.reason, "plots": e.n_plots, "t_start_s": e.t_start,
-                      "t_end_s": e.t_end} for e in result.excluded],
+        "consistency_basis": (
+            result.verdict_basis if is_online(result) else "residuals (chi-square) at the solution"
+        ),
+        "excluded": [
+            {
+                "target": e.target,
+                "reason": e.reason,
+                "plots": e.n_plots,
+                "t_start_s": e.t_start,
+                "t_end_s": e.t_end,
+            }
+            for e in result.excluded
+        ],
         "warnings": list(getattr(result, "warnings", ())),
         "inputs": inputs,
     }
     if is_online(result):
-        out["online"] = {"epochs": int(result.history.time.size), "plots_used": int(result.n_plots_used),
-                         "plots_read": int(result.n_plots_read)}
+        out["online"] = {
+            "epochs": int(result.history.time.size),
+            "plots_used": int(result.n_plots_used),
+            "plots_read": int(result.n_plots_read),
+        }
         if result.fit_check is not None:
             out["residuals_at_final_estimate"] = _check_json(result.fit_check)
         if result.consistency is not None:  # information, subordinate to the verdict
             out["innovations"] = result.consistency.to_json()
         return out
-    out.update({
-        "converged": bool(result.converged), "iterations": int(result.iterations),
-        "chi_square": _check_json(result.chi_square),
-        "residuals_by_sensor": {k: {"mean_square": v[0], "values": v[1]} for k, v in result.residual_check("sensor").items()},
-        "residuals_by_target": _by_target_json(result),
-        "residuals_of_references": _references_json(result),
-    })
+    out.update(
+        {
+            "converged": bool(result.converged),
+            "iterations": int(result.iterations),
+            "chi_square": _check_json(result.chi_square),
+            "residuals_by_sensor": {
+                k: {"mean_square": v[0], "values": v[1]} for k, v in result.residual_check("sensor").items()
+            },
+            "residuals_by_target": _by_target_json(result),
+            "residuals_of_references": _references_json(result),
+        }
+    )
     return out
 
 
@@ -193,18 +246,21 @@ def _history_frame(result):
     free = layout.free
     k = np.array([FILE_UNITS[layout.units[i]][1] for i in free])
     n_t = h.time.size
-    return pd.DataFrame({
-        "time_s": np.repeat(h.time, free.size),
-        "object": np.tile(np.array(layout.objects)[free], n_t),
-        "state": np.tile(np.array(layout.quantities)[free], n_t),
-        "unit": np.tile(np.array([FILE_UNITS[layout.units[i]][0] for i in free]), n_t),
-        "estimate": (h.estimate[:, free] * k).reshape(-1),
-        "sigma": (h.sigma[:, free] * k).reshape(-1),
-    })
+    return pd.DataFrame(
+        {
+            "time_s": np.repeat(h.time, free.size),
+            "object": np.tile(np.array(layout.objects)[free], n_t),
+            "state": np.tile(np.array(layout.quantities)[free], n_t),
+            "unit": np.tile(np.array([FILE_UNITS[layout.units[i]][0] for i in free]), n_t),
+            "estimate": (h.estimate[:, free] * k).reshape(-1),
+            "sigma": (h.sigma[:, free] * k).reshape(-1),
+        }
+    )
 
 
-def write_outputs(out: Path, problem, result, rows: list[dict], inputs: dict, *, plots: bool,
-                  truth: dict | None = None) -> list[Path]:
+def write_outputs(
+    out: Path, problem, result, rows: list[dict], inputs: dict, *, plots: bool, truth: dict | None = None
+) -> list[Path]:
     """estimates.csv, summary.json, history.csv (online) and (with ``plots``) estimates.png,
     map.png, residuals.png in ``out``."""
     import pandas as pd
@@ -212,7 +268,9 @@ def write_outputs(out: Path, problem, result, rows: list[dict], inputs: dict, *,
     from registration.io.files.tablefile import write_frame
 
     online = is_online(result)
-    frames = [("estimates.csv", pd.DataFrame(rows))] + ([("history.csv", _history_frame(result))] if online else [])
+    frames = [("estimates.csv", pd.DataFrame(rows))] + (
+        [("history.csv", _history_frame(result))] if online else []
+    )
     written = []
     for name, frame in frames:
         with writing(out / name):
@@ -231,8 +289,10 @@ def _plots(out: Path, problem, result, truth) -> list[Path]:
     from registration.fleet.plots import plot_estimates, plot_history, plot_map, plot_residuals
 
     online = is_online(result)
-    draws = [("estimates.png", lambda p: (plot_history if online else plot_estimates)(result, p, truth)),
-             ("map.png", lambda p: plot_map(problem, result, p))]
+    draws = [
+        ("estimates.png", lambda p: (plot_history if online else plot_estimates)(result, p, truth)),
+        ("map.png", lambda p: plot_map(problem, result, p)),
+    ]
     if result.residuals is not None:
         title = ("at the final online estimate: " + result.fit_check.text()) if online else None
         draws.append(("residuals.png", lambda p: plot_residuals(result, p, title)))

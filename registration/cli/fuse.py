@@ -31,59 +31,136 @@ HELP = "fuse a radar with a remote bearing-only or range-only sensor (paper scen
 
 def _per_scenario(value) -> str:
     """``default: scenario 1 X, scenario 2 Y`` for a parameter ``value(scenario)`` (number or text) of the paper's scenarios."""
+
     def text(v) -> str:
         return v if isinstance(v, str) else f"{v:g}"
+
     return "default: " + ", ".join(f"scenario {n} {text(value(paper_scenario(n)))}" for n in (1, 2))
 
 
 def _second_sigma(component: str, scale: float):
     """The second sensor's standard deviation of ``component`` times ``scale``, or 'not measured'."""
+
     def value(sc):
         sig = dict(zip(sc.components, sc.sigma_second))
         return float(sig[component]) * scale if component in sig else "not measured"
+
     return value
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--scenario", type=int, choices=(1, 2), default=1,
-                        help="the paper's scenario: 1 radar + passive bearing sensor, 2 radar + laser range finder; "
-                             "the options below override its parameters")
-    parser.add_argument("--trials", type=int, default=1000, metavar="N",
-                        help="Monte Carlo measurement pairs (the paper's count; at least 2)")
+    parser.add_argument(
+        "--scenario",
+        type=int,
+        choices=(1, 2),
+        default=1,
+        help="the paper's scenario: 1 radar + passive bearing sensor, 2 radar + laser range finder; "
+        "the options below override its parameters",
+    )
+    parser.add_argument(
+        "--trials",
+        type=int,
+        default=1000,
+        metavar="N",
+        help="Monte Carlo measurement pairs (the paper's count; at least 2)",
+    )
     add_seed(parser, 0, "random seed of the measurement noise")
     add_out(parser, "fuse", "summary.json, measurements.png and fused.png")
     add_no_plots(parser)
-    parser.add_argument("--max-plot-points", type=int, default=2000, metavar="N", help="points drawn per set in the plots")
+    parser.add_argument(
+        "--max-plot-points", type=int, default=2000, metavar="N", help="points drawn per set in the plots"
+    )
     g = parser.add_argument_group("geometry (radar A at the origin, azimuth counter-clockwise from +x)")
-    g.add_argument("--baseline-m", type=float, default=None, metavar="M",
-                   help="second site B at (L, 0[, 0]) metres; " + _per_scenario(lambda sc: sc.site_second_loc[0]))
-    g.add_argument("--site-second-m", type=float, nargs="+", default=None, metavar="XYZ",
-                   help="second site B anywhere: X Y [Z] metres (Z only in 3-D); default: on the x axis (--baseline-m)")
-    g.add_argument("--target-range-m", type=float, default=None, metavar="M",
-                   help="true target range from the radar, m; " + _per_scenario(lambda sc: sc.target_polar[0]))
-    g.add_argument("--target-azimuth-deg", type=float, default=None, metavar="DEG",
-                   help="true target azimuth from the radar, deg; "
-                        + _per_scenario(lambda sc: np.degrees(sc.target_polar[1])))
-    g.add_argument("--target-elevation-deg", type=float, default=None, metavar="DEG",
-                   help="true target elevation from the radar, deg; giving it makes the problem 3-D; default: 2-D")
+    g.add_argument(
+        "--baseline-m",
+        type=float,
+        default=None,
+        metavar="M",
+        help="second site B at (L, 0[, 0]) metres; " + _per_scenario(lambda sc: sc.site_second_loc[0]),
+    )
+    g.add_argument(
+        "--site-second-m",
+        type=float,
+        nargs="+",
+        default=None,
+        metavar="XYZ",
+        help="second site B anywhere: X Y [Z] metres (Z only in 3-D); default: on the x axis (--baseline-m)",
+    )
+    g.add_argument(
+        "--target-range-m",
+        type=float,
+        default=None,
+        metavar="M",
+        help="true target range from the radar, m; " + _per_scenario(lambda sc: sc.target_polar[0]),
+    )
+    g.add_argument(
+        "--target-azimuth-deg",
+        type=float,
+        default=None,
+        metavar="DEG",
+        help="true target azimuth from the radar, deg; "
+        + _per_scenario(lambda sc: np.degrees(sc.target_polar[1])),
+    )
+    g.add_argument(
+        "--target-elevation-deg",
+        type=float,
+        default=None,
+        metavar="DEG",
+        help="true target elevation from the radar, deg; giving it makes the problem 3-D; default: 2-D",
+    )
     s = parser.add_argument_group("sensors")
-    s.add_argument("--sigma-range-m", type=float, default=None, metavar="M",
-                   help="radar range standard deviation, m; " + _per_scenario(lambda sc: sc.sigma_radar[0]))
-    s.add_argument("--sigma-azimuth-mrad", type=float, default=None, metavar="MRAD",
-                   help="radar azimuth standard deviation, mrad; " + _per_scenario(lambda sc: sc.sigma_radar[1] * 1e3))
-    s.add_argument("--sigma-elevation-mrad", type=float, default=None, metavar="MRAD",
-                   help="radar elevation standard deviation, mrad (3-D only); default: the azimuth's")
-    s.add_argument("--second", type=str, default=None, metavar="COMPONENTS",
-                   help="components the second sensor measures, comma separated: range, azimuth (bearing), "
-                        "elevation (3-D); " + _per_scenario(lambda sc: ",".join(sc.components)))
-    s.add_argument("--sigma-second-range-m", type=float, default=None, metavar="M",
-                   help="second sensor range standard deviation, m; " + _per_scenario(_second_sigma("range", 1.0)))
-    s.add_argument("--sigma-second-azimuth-mrad", type=float, default=None, metavar="MRAD",
-                   help="second sensor azimuth standard deviation, mrad; "
-                        + _per_scenario(_second_sigma("azimuth", 1e3)))
-    s.add_argument("--sigma-second-elevation-mrad", type=float, default=None, metavar="MRAD",
-                   help="second sensor elevation standard deviation, mrad (3-D); default: none, the paper's scenarios "
-                        "are 2-D (required when --second includes elevation)")
+    s.add_argument(
+        "--sigma-range-m",
+        type=float,
+        default=None,
+        metavar="M",
+        help="radar range standard deviation, m; " + _per_scenario(lambda sc: sc.sigma_radar[0]),
+    )
+    s.add_argument(
+        "--sigma-azimuth-mrad",
+        type=float,
+        default=None,
+        metavar="MRAD",
+        help="radar azimuth standard deviation, mrad; " + _per_scenario(lambda sc: sc.sigma_radar[1] * 1e3),
+    )
+    s.add_argument(
+        "--sigma-elevation-mrad",
+        type=float,
+        default=None,
+        metavar="MRAD",
+        help="radar elevation standard deviation, mrad (3-D only); default: the azimuth's",
+    )
+    s.add_argument(
+        "--second",
+        type=str,
+        default=None,
+        metavar="COMPONENTS",
+        help="components the second sensor measures, comma separated: range, azimuth (bearing), "
+        "elevation (3-D); " + _per_scenario(lambda sc: ",".join(sc.components)),
+    )
+    s.add_argument(
+        "--sigma-second-range-m",
+        type=float,
+        default=None,
+        metavar="M",
+        help="second sensor range standard deviation, m; " + _per_scenario(_second_sigma("range", 1.0)),
+    )
+    s.add_argument(
+        "--sigma-second-azimuth-mrad",
+        type=float,
+        default=None,
+        metavar="MRAD",
+        help="second sensor azimuth standard deviation, mrad; "
+        + _per_scenario(_second_sigma("azimuth", 1e3)),
+    )
+    s.add_argument(
+        "--sigma-second-elevation-mrad",
+        type=float,
+        default=None,
+        metavar="MRAD",
+        help="second sensor elevation standard deviation, mrad (3-D); default: none, the paper's scenarios "
+        "are 2-D (required when --second includes elevation)",
+    )
 
 
 # --------------------------------------------------------------------------- scenario from options
@@ -120,7 +197,9 @@ def _scenario_from_args(args):
         site = [args.baseline_m] + [0.0] * (dim - 1)
     if args.site_second_m is not None:
         if len(args.site_second_m) != dim:
-            raise ValueError(f"--site-second-m: expected {dim} coordinates (m) for a {dim}-D problem, got {len(args.site_second_m)}")
+            raise ValueError(
+                f"--site-second-m: expected {dim} coordinates (m) for a {dim}-D problem, got {len(args.site_second_m)}"
+            )
         site = list(args.site_second_m)
     if args.baseline_m is not None or args.site_second_m is not None or dim != base.dim:
         changes["site_second_loc"] = np.array(site, dtype=float)
@@ -142,12 +221,16 @@ def _scenario_from_args(args):
     given = {
         "range": args.sigma_second_range_m,
         "azimuth": None if args.sigma_second_azimuth_mrad is None else args.sigma_second_azimuth_mrad * 1e-3,
-        "elevation": None if args.sigma_second_elevation_mrad is None else args.sigma_second_elevation_mrad * 1e-3,
+        "elevation": None
+        if args.sigma_second_elevation_mrad is None
+        else args.sigma_second_elevation_mrad * 1e-3,
     }
     base_sig = dict(zip(base.components, base.sigma_second))
     try:
-        comps = tuple(base.components) if args.second is None else tuple(
-            COMPONENTS[dim][i] for i in parse_components(args.second, dim)
+        comps = (
+            tuple(base.components)
+            if args.second is None
+            else tuple(COMPONENTS[dim][i] for i in parse_components(args.second, dim))
         )
     except ValueError as exc:
         raise ValueError(f"--second: {exc}") from exc
@@ -162,7 +245,9 @@ def _scenario_from_args(args):
             raise ValueError(f"--sigma-second-{c}-{unit}: needed because the second sensor measures {c}")
     for c, v in given.items():
         if v is not None and c not in comps:
-            raise ValueError(f"--sigma-second-{c}-{'m' if c == 'range' else 'mrad'}: the second sensor does not measure {c} (see --second)")
+            raise ValueError(
+                f"--sigma-second-{c}-{'m' if c == 'range' else 'mrad'}: the second sensor does not measure {c} (see --second)"
+            )
     if args.second is not None or any(v is not None for v in given.values()):
         changes["components"] = comps
         changes["sigma_second"] = np.array(sig_b, dtype=float)
@@ -184,15 +269,19 @@ def format_table(ev: FusionEvaluation) -> str:
         mc = r["monte_carlo_gdop_m"]
         mc_s = "-" if mc is None else f"{mc:.1f} +- {se[r['name']]:.1f}"
         paper_s = ev.scenario.paper_printed.get(r["name"]) or _fmt(r["paper_gdop_m"])
-        lines.append(f"{ROW_LABELS[r['name']]:38s} {_fmt(r['analytic_gdop_m']):>10s} {mc_s:>18s} {paper_s:>8s}")
+        lines.append(
+            f"{ROW_LABELS[r['name']]:38s} {_fmt(r['analytic_gdop_m']):>10s} {mc_s:>18s} {paper_s:>8s}"
+        )
     d = ev.details
     lines.append("")
     lines.append(
         f"improvement over radar (Monte Carlo): paper method x{d['improvement_over_radar']['paper_actual']:.2f}, "
         f"optimal x{d['improvement_over_radar']['optimal']:.2f}; CRLB/paper-method GDOP = {d['efficiency_paper_vs_crlb']:.3f}"
     )
-    lines.append(f"claimed covariance below the CRLB: {'YES' if ev.claimed_below_crlb else 'no'}"
-                 f" (in {100 * ev.claimed_below_crlb_fraction:.0f}% of the trials)")
+    lines.append(
+        f"claimed covariance below the CRLB: {'YES' if ev.claimed_below_crlb else 'no'}"
+        f" (in {100 * ev.claimed_below_crlb_fraction:.0f}% of the trials)"
+    )
     for w in ev.warnings:
         lines.append(f"warning: {w}")
     for n in ev.scenario.notes:

@@ -22,24 +22,29 @@ import sys
 import textwrap
 from pathlib import Path
 
-from registration.cli.errors import CommandError, EXIT_CODES_EPILOG, prepare_out, writing
+from registration.cli.errors import EXIT_CODES_EPILOG, CommandError, prepare_out, writing
 from registration.cli.options import HelpFormatter
 from registration.cli.staging import staged_outputs
 
 __all__ = ["HELP", "add_arguments", "run", "IMPORT_OUTPUTS"]
 
 HELP = "import a recording (ASTERIX, NMEA 0183 with AIS) as the fleet tables that 'fleet register --tables' reads"
-ASTERIX_HELP = ("ASTERIX radar plots (CAT048), service messages (CAT034) and ADS-B reports (CAT021) from raw "
-                "recordings or pcap/pcapng captures, gzip-compressed or not, into plots, navigation (one row per "
-                "site), sensors, platforms and reference tables")
-NMEA_HELP = ("an NMEA 0183 bridge log (GGA/RMC/GNS, ZDA, HDT/THS, $PASHR, TTM, !AIVDM) into the platform's "
-             "navigation, the ARPA radar's plots (with sensor-local track ids), the AIS vessels as the reference "
-             "table, and the sensors and platforms tables")
+ASTERIX_HELP = (
+    "ASTERIX radar plots (CAT048), service messages (CAT034) and ADS-B reports (CAT021) from raw "
+    "recordings or pcap/pcapng captures, gzip-compressed or not, into plots, navigation (one row per "
+    "site), sensors, platforms and reference tables"
+)
+NMEA_HELP = (
+    "an NMEA 0183 bridge log (GGA/RMC/GNS, ZDA, HDT/THS, $PASHR, TTM, !AIVDM) into the platform's "
+    "navigation, the ARPA radar's plots (with sensor-local track ids), the AIS vessels as the reference "
+    "table, and the sensors and platforms tables"
+)
 
 TABLES = ("plots", "navigation", "sensors", "platforms", "reference", "targets")
 #: Every file an import may write into --out (both formats, so that a new run replaces the other's tables).
-IMPORT_OUTPUTS = frozenset({f"{t}.{s}" for t in TABLES for s in ("csv", "parquet")}
-                           | {"rejected.csv", "import_summary.json"})
+IMPORT_OUTPUTS = frozenset(
+    {f"{t}.{s}" for t in TABLES for s in ("csv", "parquet")} | {"rejected.csv", "import_summary.json"}
+)
 
 
 def _date(text: str) -> dt.date:
@@ -55,19 +60,33 @@ def _prior(text: str) -> float:
     try:
         value = float(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a sigma in degrees >= 0 or 'free', got {text!r}") from None
+        raise argparse.ArgumentTypeError(
+            f"expected a sigma in degrees >= 0 or 'free', got {text!r}"
+        ) from None
     if not value >= 0:
         raise argparse.ArgumentTypeError(f"expected a sigma in degrees >= 0 or 'free', got {text!r}")
     return value
 
 
 def _common(p: argparse.ArgumentParser) -> None:
-    p.add_argument("inputs", nargs="+", type=Path, metavar="INPUT", help="the recording's files, in time order")
-    p.add_argument("--out", type=Path, required=True, metavar="DIR",
-                   help="folder for the tables, rejected.csv and import_summary.json (created if missing)")
-    p.add_argument("--date", type=_date, default=None, metavar="YYYY-MM-DD",
-                   help="UTC date of the recording's first time of day (default: from the recording, else "
-                        "times count from its first midnight)")
+    p.add_argument(
+        "inputs", nargs="+", type=Path, metavar="INPUT", help="the recording's files, in time order"
+    )
+    p.add_argument(
+        "--out",
+        type=Path,
+        required=True,
+        metavar="DIR",
+        help="folder for the tables, rejected.csv and import_summary.json (created if missing)",
+    )
+    p.add_argument(
+        "--date",
+        type=_date,
+        default=None,
+        metavar="YYYY-MM-DD",
+        help="UTC date of the recording's first time of day (default: from the recording, else "
+        "times count from its first midnight)",
+    )
     p.add_argument("--format", choices=("csv", "parquet"), default="csv", help="file format of the tables")
 
 
@@ -75,27 +94,55 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     from registration.cli import CommandParser  # the parser class that names the full command
 
     sub = p.add_subparsers(dest="format_name", required=True, metavar="FORMAT", parser_class=CommandParser)
-    ast = sub.add_parser("asterix", help=ASTERIX_HELP, description=textwrap.fill(ASTERIX_HELP),
-                         epilog=EXIT_CODES_EPILOG, formatter_class=HelpFormatter)
+    ast = sub.add_parser(
+        "asterix",
+        help=ASTERIX_HELP,
+        description=textwrap.fill(ASTERIX_HELP),
+        epilog=EXIT_CODES_EPILOG,
+        formatter_class=HelpFormatter,
+    )
     _common(ast)
-    ast.add_argument("--sites", type=Path, required=True, metavar="FILE",
-                     help="sensor, sac, sic, lat_deg, lon_deg, alt_m, sigma_range_m, sigma_bearing_deg; optional "
-                          "prior columns of the sensors file and prior_heading_deg, prior_pitch_deg, prior_roll_deg "
-                          "(default 0: a surveyed site)")
-    nmea = sub.add_parser("nmea", help=NMEA_HELP, description=textwrap.fill(NMEA_HELP), epilog=EXIT_CODES_EPILOG,
-                          formatter_class=HelpFormatter)
+    ast.add_argument(
+        "--sites",
+        type=Path,
+        required=True,
+        metavar="FILE",
+        help="sensor, sac, sic, lat_deg, lon_deg, alt_m, sigma_range_m, sigma_bearing_deg; optional "
+        "prior columns of the sensors file and prior_heading_deg, prior_pitch_deg, prior_roll_deg "
+        "(default 0: a surveyed site)",
+    )
+    nmea = sub.add_parser(
+        "nmea",
+        help=NMEA_HELP,
+        description=textwrap.fill(NMEA_HELP),
+        epilog=EXIT_CODES_EPILOG,
+        formatter_class=HelpFormatter,
+    )
     _common(nmea)
     nmea.add_argument("--platform", required=True, metavar="NAME", help="the own ship's platform name")
-    nmea.add_argument("--sensors", type=Path, required=True, metavar="FILE",
-                      help="the fleet sensors file of the own ship's sensors, with an optional talker column "
-                           "(e.g. RA) naming the TTM talker of each")
+    nmea.add_argument(
+        "--sensors",
+        type=Path,
+        required=True,
+        metavar="FILE",
+        help="the fleet sensors file of the own ship's sensors, with an optional talker column "
+        "(e.g. RA) naming the TTM talker of each",
+    )
     nmea.add_argument("--keep-acquiring", action="store_true", help="keep TTM rows of status Q (acquiring)")
     for angle in ("heading", "pitch", "roll"):
-        nmea.add_argument(f"--prior-{angle}-deg", type=_prior, default=0.0, metavar="SIGMA",
-                          help=f"prior sigma of the own ship's {angle} error written to platforms.csv, deg; 0 "
-                               "(default) holds it at 0, 'free' estimates it without prior" +
-                               (" (alone with one radar it is not separable from the radar's bearing bias)"
-                                if angle == "heading" else ""))
+        nmea.add_argument(
+            f"--prior-{angle}-deg",
+            type=_prior,
+            default=0.0,
+            metavar="SIGMA",
+            help=f"prior sigma of the own ship's {angle} error written to platforms.csv, deg; 0 "
+            "(default) holds it at 0, 'free' estimates it without prior"
+            + (
+                " (alone with one radar it is not separable from the radar's bearing bias)"
+                if angle == "heading"
+                else ""
+            ),
+        )
 
 
 def _run_importer(args: argparse.Namespace):
@@ -111,8 +158,15 @@ def _run_importer(args: argparse.Namespace):
 
         sensors = read_sensors(args.sensors)
         priors = {f"prior_{a}_deg": getattr(args, f"prior_{a}_deg") for a in ("heading", "pitch", "roll")}
-        result = import_nmea(args.inputs, args.platform, sensors, date=args.date, keep_acquiring=args.keep_acquiring,
-                             progress=progress, platform_priors=priors)
+        result = import_nmea(
+            args.inputs,
+            args.platform,
+            sensors,
+            date=args.date,
+            keep_acquiring=args.keep_acquiring,
+            progress=progress,
+            platform_priors=priors,
+        )
     return result.tables, result.rejected, result.summary
 
 

@@ -24,10 +24,16 @@ from pathlib import Path
 
 import numpy as np
 
-from registration.cli.errors import add_allow_inconsistent, consistency_gate, consistency_line, prepare_out, writing
-from registration.cli.options import add_dask, add_no_plots, check_dask, add_out, add_seed
-from registration.cli.staging import staged_outputs
+from registration.cli.errors import (
+    add_allow_inconsistent,
+    consistency_gate,
+    consistency_line,
+    prepare_out,
+    writing,
+)
+from registration.cli.options import add_dask, add_no_plots, add_out, add_seed, check_dask
 from registration.cli.simulate import add_scenario_arguments, check_scenario_arguments, parse_motion
+from registration.cli.staging import staged_outputs
 from registration.online.distributed import DEFAULT_CHUNK_RUNS
 
 #: --sweep NAME -> the type of its values (the scenario options of the same name)
@@ -35,30 +41,51 @@ SWEEPABLE = {"angle-sigma-deg": float, "range-sigma-m": float, "steps": int}
 
 #: What `registration montecarlo` writes into --out, with or without --sweep: a run replaces every
 #: one of these an earlier run left (a sweep replaces montecarlo.json too), so --out holds one run.
-MONTECARLO_OUTPUTS = frozenset({"montecarlo.json", "montecarlo.png", "sweep.csv", "sweep.parquet", "sweep.png"})
+MONTECARLO_OUTPUTS = frozenset(
+    {"montecarlo.json", "montecarlo.png", "sweep.csv", "sweep.parquet", "sweep.png"}
+)
 
 HELP = "Monte Carlo over seeds: RMSE of the identifiable estimates vs the filter's 2σ and the Cramér-Rao bound, and NEES"
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--runs", type=int, default=100, metavar="N", help="number of Monte Carlo runs (at least 2)")
+    p.add_argument(
+        "--runs", type=int, default=100, metavar="N", help="number of Monte Carlo runs (at least 2)"
+    )
     add_seed(p, 0, "first random seed; run i uses seed + i")
     add_scenario_arguments(p)
-    p.add_argument("--include-weak", action="store_true",
-                   help="also show states that are only weakly observable (flagged; never part of the NEES)")
-    p.add_argument("--sum", action="append", default=[], metavar="NAME+NAME",
-                   help="also show a sum of two states, e.g. dC_a+dq_a (deg or m; flagged unless identifiable; "
-                        "repeatable); default: none")
+    p.add_argument(
+        "--include-weak",
+        action="store_true",
+        help="also show states that are only weakly observable (flagged; never part of the NEES)",
+    )
+    p.add_argument(
+        "--sum",
+        action="append",
+        default=[],
+        metavar="NAME+NAME",
+        help="also show a sum of two states, e.g. dC_a+dq_a (deg or m; flagged unless identifiable; "
+        "repeatable); default: none",
+    )
     add_out(p, "montecarlo", "montecarlo.json and montecarlo.png (with --sweep: sweep.csv and sweep.png)")
     add_no_plots(p, old_spelling="--no-plot")
     add_allow_inconsistent(p)
-    p.add_argument("--sweep", default=None, metavar="NAME=V1,V2,...",
-                   help="run the Monte Carlo at each value of one scenario option, NAME one of "
-                        f"{', '.join(SWEEPABLE)} (values in the unit the name states); default: no sweep")
+    p.add_argument(
+        "--sweep",
+        default=None,
+        metavar="NAME=V1,V2,...",
+        help="run the Monte Carlo at each value of one scenario option, NAME one of "
+        f"{', '.join(SWEEPABLE)} (values in the unit the name states); default: no sweep",
+    )
     p.add_argument("--format", choices=["csv", "parquet"], default="csv", help="format of the --sweep table")
     add_dask(p, "chunks of seeds")
-    p.add_argument("--chunk-runs", type=int, default=DEFAULT_CHUNK_RUNS, metavar="N",
-                   help="runs (consecutive seeds) per chunk of work; the results do not depend on it")
+    p.add_argument(
+        "--chunk-runs",
+        type=int,
+        default=DEFAULT_CHUNK_RUNS,
+        metavar="N",
+        help="runs (consecutive seeds) per chunk of work; the results do not depend on it",
+    )
 
 
 def parse_sweep(text: str) -> tuple[str, list]:
@@ -66,12 +93,16 @@ def parse_sweep(text: str) -> tuple[str, list]:
     name, sep, values = str(text).partition("=")
     name = name.strip().removeprefix("--")
     if not sep or name not in SWEEPABLE:
-        raise ValueError(f"--sweep: expected NAME=V1,V2,... with NAME one of {', '.join(SWEEPABLE)}, got {text!r}")
+        raise ValueError(
+            f"--sweep: expected NAME=V1,V2,... with NAME one of {', '.join(SWEEPABLE)}, got {text!r}"
+        )
     kind = SWEEPABLE[name]
     try:
         parsed = [kind(v) for v in values.split(",") if v.strip()]
     except ValueError as exc:
-        raise ValueError(f"--sweep: {name}: expected {kind.__name__} values separated by commas, got {values!r}") from exc
+        raise ValueError(
+            f"--sweep: {name}: expected {kind.__name__} values separated by commas, got {values!r}"
+        ) from exc
     if not parsed or len(set(parsed)) != len(parsed):
         raise ValueError(f"--sweep: {name}: expected distinct values separated by commas, got {values!r}")
     return name, parsed
@@ -100,11 +131,18 @@ def build_job(args: argparse.Namespace):
         raise ValueError(f"--sum: {exc}") from exc
     angle = float(np.radians(args.angle_sigma_deg))
     config = RegistrationConfig(
-        sigma0=(args.range_sigma_m, angle, angle) * 2, q_mode=args.q_mode,
-        linearization=args.linearization, t_variant=args.t_variant,
+        sigma0=(args.range_sigma_m, angle, angle) * 2,
+        q_mode=args.q_mode,
+        linearization=args.linearization,
+        t_variant=args.t_variant,
     )
-    scenario = dict(angle_sigma=angle, range_sigma=args.range_sigma_m, n_steps=args.steps,
-                    ship_motion=parse_motion(args.ship_motion), t_variant="standard")
+    scenario = dict(
+        angle_sigma=angle,
+        range_sigma=args.range_sigma_m,
+        n_steps=args.steps,
+        ship_motion=parse_motion(args.ship_motion),
+        t_variant="standard",
+    )
     return MonteCarloJob(args.runs, args.seed, config, args.include_weak, sums, scenario)
 
 
@@ -141,7 +179,9 @@ def run(args: argparse.Namespace) -> int:
     print(consistency_line(consistency))
     summary = result.to_json()
     summary["consistency"] = consistency.to_json()
-    summary["command"] = {k: (str(v) if isinstance(v, Path) else v) for k, v in vars(args).items() if not k.startswith("_")}
+    summary["command"] = {
+        k: (str(v) if isinstance(v, Path) else v) for k, v in vars(args).items() if not k.startswith("_")
+    }
     with staged_outputs(out, "registration montecarlo", MONTECARLO_OUTPUTS) as folder:
         written = [folder.path / "montecarlo.json"]
         with writing(written[0]):
@@ -168,8 +208,11 @@ def _write_sweep(args: argparse.Namespace, out: Path, name: str, values: list, r
             written.append(folder.path / "sweep.png")
     with_nees = table.drop_duplicates("value")[["value", "nees", "nees_low", "nees_high"]]
     print(f"Monte Carlo sweep over {name}: {len(values)} points x {args.runs} runs")
-    print(table[["value", "quantity", "unit", "rmse", "filter_sigma", "crlb_sigma", "mean_error"]].to_string(
-        index=False, float_format=lambda x: f"{x:.4g}"))
+    print(
+        table[["value", "quantity", "unit", "rmse", "filter_sigma", "crlb_sigma", "mean_error"]].to_string(
+            index=False, float_format=lambda x: f"{x:.4g}"
+        )
+    )
     print(with_nees.to_string(index=False, float_format=lambda x: f"{x:.4g}"))
     reports = [pooled_consistency(r) for r in results]
     for v, rep in zip(values, reports):

@@ -24,23 +24,38 @@ class HelpFormatter(argparse.RawDescriptionHelpFormatter, argparse.ArgumentDefau
     def _get_help_string(self, action: argparse.Action) -> str:
         text = action.help or ""
         default = action.default
-        if (not action.option_strings or default is None or isinstance(default, bool) or (isinstance(default, list) and not default)
-                or default is argparse.SUPPRESS or "default" in text.lower()):
+        if (
+            not action.option_strings
+            or default is None
+            or isinstance(default, bool)
+            or (isinstance(default, list) and not default)
+            or default is argparse.SUPPRESS
+            or "default" in text.lower()
+        ):
             return text
-        return text + (" (default: %(default).6g)" if isinstance(default, float) else " (default: %(default)s)")
+        return text + (
+            " (default: %(default).6g)" if isinstance(default, float) else " (default: %(default)s)"
+        )
 
 
 def add_out(p: argparse.ArgumentParser, command: str, what: str = "summary.json and the PNG plots") -> None:
     """``--out DIR``, default ``out/<command>``; the folder is created."""
-    p.add_argument("--out", type=Path, default=OUT_ROOT / command, metavar="DIR",
-                   help=f"output folder for {what} (created if missing)")
+    p.add_argument(
+        "--out",
+        type=Path,
+        default=OUT_ROOT / command,
+        metavar="DIR",
+        help=f"output folder for {what} (created if missing)",
+    )
 
 
 class _DeprecatedFlag(argparse.Action):
     """A hidden old spelling of a flag: sets the same destination and warns once on standard error."""
 
     def __init__(self, option_strings, dest, new: str, **kwargs):
-        super().__init__(option_strings, dest, nargs=0, default=argparse.SUPPRESS, help=argparse.SUPPRESS, **kwargs)
+        super().__init__(
+            option_strings, dest, nargs=0, default=argparse.SUPPRESS, help=argparse.SUPPRESS, **kwargs
+        )
         self.new = new
 
     def __call__(self, parser, namespace, values, option_string=None):
@@ -55,7 +70,9 @@ def add_no_plots(p: argparse.ArgumentParser, old_spelling: str | None = None) ->
         p.add_argument(old_spelling, dest="no_plots", action=_DeprecatedFlag, new="--no-plots")
 
 
-def add_seed(p: argparse.ArgumentParser, default: int, what: str = "random seed of the measurement noise") -> None:
+def add_seed(
+    p: argparse.ArgumentParser, default: int, what: str = "random seed of the measurement noise"
+) -> None:
     """``--seed N`` (an integer)."""
     p.add_argument("--seed", type=int, default=default, metavar="N", help=what)
 
@@ -63,12 +80,21 @@ def add_seed(p: argparse.ArgumentParser, default: int, what: str = "random seed 
 def add_dask(p: argparse.ArgumentParser, chunks: str) -> None:
     """``--scheduler ADDRESS`` and ``--workers N``: run the ``chunks`` on a dask cluster (optional extra)."""
     g = p.add_argument_group('parallel and distributed runs (needs dask: pip install "dask[distributed]")')
-    g.add_argument("--scheduler", default=None, metavar="ADDRESS",
-                   help=f"run the {chunks} on the dask.distributed scheduler at ADDRESS, e.g. tcp://host:8786 "
-                        "(default: in this process)")
-    g.add_argument("--workers", type=int, default=None, metavar="N",
-                   help=f"run the {chunks} on a local dask cluster of N worker processes, one thread each "
-                        "(default: in this process)")
+    g.add_argument(
+        "--scheduler",
+        default=None,
+        metavar="ADDRESS",
+        help=f"run the {chunks} on the dask.distributed scheduler at ADDRESS, e.g. tcp://host:8786 "
+        "(default: in this process)",
+    )
+    g.add_argument(
+        "--workers",
+        type=int,
+        default=None,
+        metavar="N",
+        help=f"run the {chunks} on a local dask cluster of N worker processes, one thread each "
+        "(default: in this process)",
+    )
 
 
 def check_dask(args: argparse.Namespace) -> None:

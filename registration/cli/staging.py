@@ -31,8 +31,9 @@ __all__ = ["staged_outputs"]
 
 
 @contextlib.contextmanager
-def staged_outputs(out: Path, command: str, names: frozenset, *, folders: frozenset = frozenset()
-                   ) -> Iterator["RunFolder"]:
+def staged_outputs(
+    out: Path, command: str, names: frozenset, *, folders: frozenset = frozenset()
+) -> Iterator["RunFolder"]:
     """A run folder inside ``out`` for ``command`` (e.g. ``"registration fuse"``) writing ``names``:
     its files replace the earlier run's outputs in ``out`` only when the block ends normally;
     otherwise the folder is removed and ``out`` is unchanged (or gone again, if the run made it).
@@ -43,10 +44,14 @@ def staged_outputs(out: Path, command: str, names: frozenset, *, folders: frozen
     from registration.io.output.outfolder import discard, new_run_folder, prepare_out, publish
 
     out = Path(out)
-    for name in sorted(set(names) - set(folders)):  # a folder named like a file output is the user's: never replaced
+    for name in sorted(
+        set(names) - set(folders)
+    ):  # a folder named like a file output is the user's: never replaced
         if (out / name).is_dir():
-            raise CommandError(f"cannot write {out / name}: Is a directory (not an output of {command}; move it, "
-                               "or give another --out)")
+            raise CommandError(
+                f"cannot write {out / name}: Is a directory (not an output of {command}; move it, "
+                "or give another --out)"
+            )
     prepare_out(out, frozenset(names) | frozenset(folders))
     folder = new_run_folder(out, None, command, frozenset(names) | frozenset(folders))
     try:

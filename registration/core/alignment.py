@@ -35,7 +35,14 @@ from numpy.polynomial import legendre
 from registration.core.angles import wrap_angle
 from registration.core.validation import as_float_array
 
-__all__ = ["AlignedSamples", "align", "REASON_OK", "REASON_TOO_FEW", "REASON_EXTRAPOLATION", "REASON_ILL_CONDITIONED"]
+__all__ = [
+    "AlignedSamples",
+    "align",
+    "REASON_OK",
+    "REASON_TOO_FEW",
+    "REASON_EXTRAPOLATION",
+    "REASON_ILL_CONDITIONED",
+]
 
 REASON_OK = ""
 REASON_TOO_FEW = "too few samples"
@@ -91,7 +98,9 @@ def _check_sample_times(t: np.ndarray) -> None:
     d = np.diff(t)
     if (d == 0).any():
         i = int(np.argmax(d == 0))
-        raise ValueError(f"t: duplicate timestamp {float(t[i])!r} s at indices {i} and {i + 1}; timestamps must be strictly increasing")
+        raise ValueError(
+            f"t: duplicate timestamp {float(t[i])!r} s at indices {i} and {i + 1}; timestamps must be strictly increasing"
+        )
     if (d < 0).any():
         i = int(np.argmax(d < 0))
         raise ValueError(
@@ -128,7 +137,9 @@ def _check_samples(t, y) -> tuple[np.ndarray, np.ndarray]:
     bad = ~np.isfinite(y2)
     if bad.any():
         i, k = (int(v) for v in np.argwhere(bad)[0])
-        raise ValueError(f"y: non-finite sample {float(y2[i, k])} at index {i}, column {k} (t = {float(t[i])!r} s); remove or fill it before aligning")
+        raise ValueError(
+            f"y: non-finite sample {float(y2[i, k])} at index {i}, column {k} (t = {float(t[i])!r} s); remove or fill it before aligning"
+        )
     return t, y2
 
 
@@ -151,7 +162,9 @@ def _check_options(
     if half_window_s is not None and not (np.isfinite(half_window_s) and half_window_s > 0):
         raise ValueError(f"half_window_s: expected a finite number > 0 s, got {half_window_s!r}")
     if n_nearest is not None and (not isinstance(n_nearest, (int, np.integer)) or n_nearest < degree + 1):
-        raise ValueError(f"n_nearest: expected an integer >= degree + 1 = {degree + 1} samples, got {n_nearest!r}")
+        raise ValueError(
+            f"n_nearest: expected an integer >= degree + 1 = {degree + 1} samples, got {n_nearest!r}"
+        )
     if not (np.isfinite(max_extrapolation_s) and max_extrapolation_s >= 0):
         raise ValueError(f"max_extrapolation_s: expected a finite number >= 0 s, got {max_extrapolation_s!r}")
     if not np.isfinite(clock_offset_s):
@@ -213,7 +226,13 @@ def _fit_windows(
 
 
 def _fit_instants(
-    t_ref: np.ndarray, y2: np.ndarray, tau: np.ndarray, lo: np.ndarray, n: np.ndarray, degree: int, reason: np.ndarray,
+    t_ref: np.ndarray,
+    y2: np.ndarray,
+    tau: np.ndarray,
+    lo: np.ndarray,
+    n: np.ndarray,
+    degree: int,
+    reason: np.ndarray,
     chunk: int,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Fitted values (M, K) and variance factors (M,) at every instant not yet refused in
@@ -232,7 +251,12 @@ def _fit_instants(
 
 
 def _refuse_first_invalid(
-    tau: np.ndarray, valid: np.ndarray, reason: np.ndarray, n: np.ndarray, ext: np.ndarray, degree: int,
+    tau: np.ndarray,
+    valid: np.ndarray,
+    reason: np.ndarray,
+    n: np.ndarray,
+    ext: np.ndarray,
+    degree: int,
     max_extrapolation_s: float,
 ) -> None:
     i = int(np.argmax(~valid))

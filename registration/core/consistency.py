@@ -37,7 +37,9 @@ def nees_interval(runs: int, dof: int, level: float = 0.95) -> tuple[float, floa
         raise ValueError(f"nees_interval: need runs >= 1 and dof >= 1, got runs={runs}, dof={dof}")
     alpha = 1.0 - level
     n = runs * dof
-    return float(2.0 * gammaincinv(n / 2, alpha / 2) / runs), float(2.0 * gammaincinv(n / 2, 1 - alpha / 2) / runs)
+    return float(2.0 * gammaincinv(n / 2, alpha / 2) / runs), float(
+        2.0 * gammaincinv(n / 2, 1 - alpha / 2) / runs
+    )
 
 
 @dataclass(frozen=True)
@@ -71,10 +73,12 @@ class ConsistencyReport:
     def message(self) -> str:
         """One paragraph: the figures, and for a failed gate the likely causes."""
         lo, hi = self.interval
-        text = (f"mean {self.quantity} {self.mean:.4g} over {self.samples} samples, expected {self.dof} "
-                f"(95 % band for independent samples [{lo:.3g}, {hi:.3g}]): {self.status}")
+        text = (
+            f"mean {self.quantity} {self.mean:.4g} over {self.samples} samples, expected {self.dof} "
+            f"(95 % band for independent samples [{lo:.3g}, {hi:.3g}]): {self.status}"
+        )
         if not self.ok:
-            text += ("; the data do not fit the model. Likely causes: " + "; ".join(LIKELY_CAUSES) + ".")
+            text += "; the data do not fit the model. Likely causes: " + "; ".join(LIKELY_CAUSES) + "."
         return text
 
     @classmethod
@@ -85,9 +89,16 @@ class ConsistencyReport:
         return cls(quantity, int(samples), int(dof), float(mean), nees_interval(int(samples), int(dof)))
 
     def to_json(self) -> dict:
-        return {"quantity": self.quantity, "samples": self.samples, "dof": self.dof, "mean": self.mean,
-                "interval_95": list(self.interval), "ratio": self.ratio, "status": self.status,
-                "gross_factor": GROSS_FACTOR}
+        return {
+            "quantity": self.quantity,
+            "samples": self.samples,
+            "dof": self.dof,
+            "mean": self.mean,
+            "interval_95": list(self.interval),
+            "ratio": self.ratio,
+            "status": self.status,
+            "gross_factor": GROSS_FACTOR,
+        }
 
 
 def check_consistency(values, dof: int, quantity: str = "NIS") -> ConsistencyReport:

@@ -15,11 +15,26 @@ import numpy as np
 
 from registration import _codegen
 from registration.core.validation import (
-    as_float_array, broadcast_1d, check_altitude, check_angle, check_finite, check_latitude, check_positive, check_range,
+    as_float_array,
+    broadcast_1d,
+    check_altitude,
+    check_angle,
+    check_finite,
+    check_latitude,
+    check_positive,
+    check_range,
 )
 
-__all__ = ["geodetic2ecef", "ecef2geodetic", "enu2ecef_rotation", "deck2enu", "deck2enu_jacobians", "deck2enu_rotation",
-           "enu2deck_attitude", "plot2ecef"]
+__all__ = [
+    "geodetic2ecef",
+    "ecef2geodetic",
+    "enu2ecef_rotation",
+    "deck2enu",
+    "deck2enu_jacobians",
+    "deck2enu_rotation",
+    "enu2deck_attitude",
+    "plot2ecef",
+]
 
 #: ENU->ECEF rotation variants that derive/ emitted: the standard one and the paper's eq. (4).
 T_VARIANTS = _codegen.variants("t_variant")
@@ -47,7 +62,11 @@ def _measurement(r, q, e):
 
 
 def _attitude(heading, pitch, roll):
-    h, p, rl = as_float_array("heading", heading), as_float_array("pitch", pitch), as_float_array("roll", roll)
+    h, p, rl = (
+        as_float_array("heading", heading),
+        as_float_array("pitch", pitch),
+        as_float_array("roll", roll),
+    )
     check_angle("heading", h)
     check_range("pitch", p, -np.pi / 2, np.pi / 2, "rad", angle=True)
     check_range("roll", rl, -np.pi / 2, np.pi / 2, "rad", angle=True)
@@ -83,7 +102,9 @@ def ecef2geodetic(p_ecef) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     check_finite("p_ecef", p, "m")
     close = np.einsum("ij,ij->i", p, p) < 1e10
     if close.any():
-        raise ValueError(f"p_ecef: point {int(np.argmax(close))} lies within 100 km of the earth's centre; expected ECEF metres")
+        raise ValueError(
+            f"p_ecef: point {int(np.argmax(close))} lies within 100 km of the earth's centre; expected ECEF metres"
+        )
     geo = _codegen.get("ecef2geodetic")(p)[0].reshape(-1, 3)
     return geo[:, 0], geo[:, 1], geo[:, 2]
 
@@ -137,7 +158,9 @@ def deck2enu_jacobians(r, q, e, heading, pitch, roll) -> tuple[np.ndarray, np.nd
     Units: metres per radian for angle columns, dimensionless for the range column. Eq. (11).
     """
     v = {**_measurement(r, q, e), **_attitude(heading, pitch, roll)}
-    _, psi, gamma = _codegen.get("deck2enu_jacobians")(*_ordered(v, ["r", "q", "e", "heading", "pitch", "roll"]))
+    _, psi, gamma = _codegen.get("deck2enu_jacobians")(
+        *_ordered(v, ["r", "q", "e", "heading", "pitch", "roll"])
+    )
     return psi, gamma
 
 

@@ -25,7 +25,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["Combination", "ObservabilityReport", "observability_report", "UNOBSERVABLE_BELOW", "WEAK_BELOW", "PAIR_RELATIVE"]
+__all__ = [
+    "Combination",
+    "ObservabilityReport",
+    "observability_report",
+    "UNOBSERVABLE_BELOW",
+    "WEAK_BELOW",
+    "PAIR_RELATIVE",
+]
 
 UNOBSERVABLE_BELOW = 1e-2
 WEAK_BELOW = 10.0
@@ -44,7 +51,11 @@ class Combination:
     identifiable_sum: tuple[str, str] | None = None  # (x_i, x_j) when only x_i + x_j is seen
 
     def to_json(self) -> dict:
-        return {"coefficients": self.coefficients, "scaled_information": self.eigenvalue, "description": self.text}
+        return {
+            "coefficients": self.coefficients,
+            "scaled_information": self.eigenvalue,
+            "description": self.text,
+        }
 
 
 @dataclass
@@ -64,13 +75,18 @@ class ObservabilityReport:
             "unobservable": [c.text for c in self.unobservable],
             "weak": [c.text for c in self.weak],
             "status": dict(self.status),
-            "details": {"unobservable": [c.to_json() for c in self.unobservable], "weak": [c.to_json() for c in self.weak]},
+            "details": {
+                "unobservable": [c.to_json() for c in self.unobservable],
+                "weak": [c.to_json() for c in self.weak],
+            },
             "thresholds": {"unobservable_below": UNOBSERVABLE_BELOW, "weak_below": WEAK_BELOW},
         }
 
     def lines(self) -> list[str]:
-        out = ["singular values of the prior-scaled information matrix: "
-               + " ".join(f"{s:.3g}" for s in self.singular_values)]
+        out = [
+            "singular values of the prior-scaled information matrix: "
+            + " ".join(f"{s:.3g}" for s in self.singular_values)
+        ]
         for c in self.unobservable:
             out.append(f"  UNOBSERVABLE: {c.text}")
         for c in self.weak:
@@ -80,12 +96,16 @@ class ObservabilityReport:
         return out
 
 
-def _name_direction(v_scaled: np.ndarray, d: np.ndarray, units, names, labels, eigenvalue: float) -> Combination:
+def _name_direction(
+    v_scaled: np.ndarray, d: np.ndarray, units, names, labels, eigenvalue: float
+) -> Combination:
     """Name a direction given in prior-scaled (dimensionless) coordinates."""
     v = v_scaled / np.abs(v_scaled).max()
     idx = [i for i in np.argsort(-np.abs(v)) if abs(v[i]) >= 0.15]
     coeffs = {names[i]: round(float(v[i]), 3) for i in idx}
-    terms = " ".join(f"{'+' if v[i] >= 0 else '-'} {abs(v[i]):.2f} {names[i]}/sigma" for i in idx).lstrip("+ ")
+    terms = " ".join(f"{'+' if v[i] >= 0 else '-'} {abs(v[i]):.2f} {names[i]}/sigma" for i in idx).lstrip(
+        "+ "
+    )
     pair = None
     text = f"combination {terms} (prior-scaled)"
     if len(idx) == 2 and units[idx[0]] == units[idx[1]]:
@@ -102,7 +122,9 @@ def _name_direction(v_scaled: np.ndarray, d: np.ndarray, units, names, labels, e
     return Combination(coeffs, float(eigenvalue), text, pair)
 
 
-def _pair_directions(scaled: np.ndarray, d: np.ndarray, units, names, labels) -> list[tuple[Combination, np.ndarray]]:
+def _pair_directions(
+    scaled: np.ndarray, d: np.ndarray, units, names, labels
+) -> list[tuple[Combination, np.ndarray]]:
     """Same-unit pairs of which only the sum enters the measurements.
 
     For states i, j in the same unit, only x_i + x_j is seen when the own-unit direction
@@ -138,7 +160,9 @@ def _pair_directions(scaled: np.ndarray, d: np.ndarray, units, names, labels) ->
     return found
 
 
-def observability_report(information: np.ndarray, prior_sigma: np.ndarray, names, labels, units=None) -> ObservabilityReport:
+def observability_report(
+    information: np.ndarray, prior_sigma: np.ndarray, names, labels, units=None
+) -> ObservabilityReport:
     """Classify state directions from the accumulated information ``sum H^T R^-1 H`` (12x12).
 
     ``units`` (one string per state) lets same-unit pairs be recognised (e.g. heading error and

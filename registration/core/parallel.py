@@ -15,8 +15,10 @@ import sys
 __all__ = ["DASK_MISSING", "chunk_ranges", "dask_client", "map_chunks", "require_distributed"]
 
 #: What a missing dask installation is reported as.
-DASK_MISSING = ('dask.distributed is not installed: pip install "dask[distributed]" (from a checkout of this '
-                'package: pip install ".[dask]") to use --scheduler or --workers')
+DASK_MISSING = (
+    'dask.distributed is not installed: pip install "dask[distributed]" (from a checkout of this '
+    'package: pip install ".[dask]") to use --scheduler or --workers'
+)
 
 
 def require_distributed():
@@ -45,7 +47,9 @@ def dask_client(scheduler: str | None = None, workers: int | None = None):
     None. The local cluster is closed when the block ends.
     """
     if scheduler and workers is not None:
-        raise ValueError("--scheduler and --workers: give one or the other (--workers starts a cluster on this machine)")
+        raise ValueError(
+            "--scheduler and --workers: give one or the other (--workers starts a cluster on this machine)"
+        )
     if workers is not None and int(workers) < 1:
         raise ValueError(f"--workers: expected at least 1 worker, got {workers}")
     if not scheduler and workers is None:
@@ -56,8 +60,12 @@ def dask_client(scheduler: str | None = None, workers: int | None = None):
         with distributed.Client(scheduler) as client:
             yield client
         return
-    with distributed.LocalCluster(n_workers=int(workers), threads_per_worker=1, processes=True,
-                                  dashboard_address=":0") as cluster, distributed.Client(cluster) as client:
+    with (
+        distributed.LocalCluster(
+            n_workers=int(workers), threads_per_worker=1, processes=True, dashboard_address=":0"
+        ) as cluster,
+        distributed.Client(cluster) as client,
+    ):
         yield client
 
 

@@ -14,11 +14,21 @@ from pathlib import Path
 __all__ = ["LABEL_COLOURS", "LABEL_MARKERS", "OKABE_ITO", "label_style", "pyplot", "save_figure"]
 
 #: The Okabe-Ito palette by name (hex sRGB).
-OKABE_ITO = {"black": "#000000", "orange": "#E69F00", "sky_blue": "#56B4E9", "bluish_green": "#009E73",
-             "yellow": "#F0E442", "blue": "#0072B2", "vermillion": "#D55E00", "reddish_purple": "#CC79A7"}
+OKABE_ITO = {
+    "black": "#000000",
+    "orange": "#E69F00",
+    "sky_blue": "#56B4E9",
+    "bluish_green": "#009E73",
+    "yellow": "#F0E442",
+    "blue": "#0072B2",
+    "vermillion": "#D55E00",
+    "reddish_purple": "#CC79A7",
+}
 #: Colours cycled over the labels of a figure (yellow is too faint on white for small markers).
-LABEL_COLOURS = tuple(OKABE_ITO[k] for k in ("blue", "orange", "bluish_green", "vermillion", "reddish_purple",
-                                              "sky_blue", "black"))
+LABEL_COLOURS = tuple(
+    OKABE_ITO[k]
+    for k in ("blue", "orange", "bluish_green", "vermillion", "reddish_purple", "sky_blue", "black")
+)
 #: Markers cycled over the labels of a figure; 8 markers against 7 colours: 56 distinct pairs.
 LABEL_MARKERS = ("o", "s", "^", "D", "v", "P", "X", "*")
 

@@ -4,8 +4,21 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["as_float_array", "check_finite", "check_range", "check_positive", "check_latitude", "check_angle",
-           "check_altitude", "broadcast_1d", "degree_hint", "DEGREE_HINT", "HALF_PI", "LATITUDE_SLACK", "ALTITUDE_LIMITS_M"]
+__all__ = [
+    "as_float_array",
+    "check_finite",
+    "check_range",
+    "check_positive",
+    "check_latitude",
+    "check_angle",
+    "check_altitude",
+    "broadcast_1d",
+    "degree_hint",
+    "DEGREE_HINT",
+    "HALF_PI",
+    "LATITUDE_SLACK",
+    "ALTITUDE_LIMITS_M",
+]
 
 HALF_PI = np.pi / 2
 #: Latitudes up to this much beyond +-pi/2 (rad) are accepted and clipped: float32 pi/2 rounds
@@ -26,7 +39,10 @@ def as_float_array(name: str, value) -> np.ndarray:
             arr = arr.astype(np.float64)
         except (TypeError, ValueError):
             arr = None
-        if arr is not None and not any(v is None or isinstance(v, (bool, np.bool_, str)) for v in np.ravel(np.asarray(value, dtype=object))):
+        if arr is not None and not any(
+            v is None or isinstance(v, (bool, np.bool_, str))
+            for v in np.ravel(np.asarray(value, dtype=object))
+        ):
             return arr
     if value is None or isinstance(value, (str, bytes, bool, np.bool_)):
         what = repr(value)
@@ -61,7 +77,9 @@ def degree_hint(arr: np.ndarray, limit: float) -> str:
     return DEGREE_HINT if limit < peak <= 360.0 else ""
 
 
-def check_range(name: str, arr: np.ndarray, low: float, high: float, unit: str, *, angle: bool = False) -> None:
+def check_range(
+    name: str, arr: np.ndarray, low: float, high: float, unit: str, *, angle: bool = False
+) -> None:
     """Raise if any value lies outside [low, high]; hint when radians were expected and degrees came."""
     if arr.size and np.min(arr) >= low and np.max(arr) <= high:  # fast path (NaN/inf fail it)
         return
@@ -85,7 +103,14 @@ def check_positive(name: str, arr: np.ndarray, unit: str) -> None:
 
 def check_latitude(name: str, arr: np.ndarray) -> np.ndarray:
     """Latitudes in rad within [-pi/2, pi/2] (float32 rounding tolerated); returns them clipped to it."""
-    check_range(name, arr, -HALF_PI - LATITUDE_SLACK, HALF_PI + LATITUDE_SLACK, "rad (latitude, [-pi/2, pi/2])", angle=True)
+    check_range(
+        name,
+        arr,
+        -HALF_PI - LATITUDE_SLACK,
+        HALF_PI + LATITUDE_SLACK,
+        "rad (latitude, [-pi/2, pi/2])",
+        angle=True,
+    )
     if arr.size and np.max(np.abs(arr)) > HALF_PI:
         return np.clip(arr, -HALF_PI, HALF_PI)
     return arr

@@ -14,19 +14,47 @@ degrees) are read and written by :mod:`registration.io.fleet`. See docs/fleet.md
 docs/association.md.
 """
 
-from registration.fleet.association.associate import AssociationOptions, AssociationResult, associate_and_register
-from registration.fleet.batch.solve import solve_batch
-from registration.fleet.association.simulated.clutter import AssociationScenario, association_scenario, association_scores
+from registration.fleet.association.associate import (
+    AssociationOptions,
+    AssociationResult,
+    associate_and_register,
+)
+from registration.fleet.association.simulated.clutter import (
+    AssociationScenario,
+    association_scenario,
+    association_scores,
+)
 from registration.fleet.batch.covariance import FusedTargets
+from registration.fleet.batch.solve import solve_batch
+from registration.fleet.batch.solver import BatchOptions
+from registration.fleet.data.problem import Exclusion, FleetProblem, build_problem
 from registration.fleet.online.filter import FleetFilter, OnlineOptions, register_online
 from registration.fleet.online.result import OnlineHistory, OnlineResult
-from registration.fleet.data.problem import Exclusion, FleetProblem, build_problem
 from registration.fleet.result import BatchResult, ChiSquareCheck
 from registration.fleet.simulation.scenario import FleetScenario, fleet_scenario
-from registration.fleet.batch.solver import BatchOptions
 
-__all__ = ["BatchOptions", "BatchResult", "ChiSquareCheck", "Exclusion", "FleetFilter", "FleetProblem", "FleetScenario",
-           "OnlineHistory", "OnlineOptions", "OnlineResult", "register_online",
-           "FusedTargets", "build_problem", "fleet_scenario", "solve_batch"]
-__all__ += ["AssociationOptions", "AssociationResult", "AssociationScenario", "associate_and_register",
-            "association_scenario", "association_scores"]
+__all__ = [
+    "BatchOptions",
+    "BatchResult",
+    "ChiSquareCheck",
+    "Exclusion",
+    "FleetFilter",
+    "FleetProblem",
+    "FleetScenario",
+    "OnlineHistory",
+    "OnlineOptions",
+    "OnlineResult",
+    "register_online",
+    "FusedTargets",
+    "build_problem",
+    "fleet_scenario",
+    "solve_batch",
+]
+__all__ += [
+    "AssociationOptions",
+    "AssociationResult",
+    "AssociationScenario",
+    "associate_and_register",
+    "association_scenario",
+    "association_scores",
+]

@@ -35,8 +35,14 @@ def sigma_text(sigma: float, spec: str = ".4g") -> str:
     return format(sigma, spec) if np.isfinite(sigma) else UNDETERMINED
 
 
-def linear_combination(layout, estimate: np.ndarray, covariance: np.ndarray, coefficients: dict,
-                       undetermined: np.ndarray | None = None, scale: np.ndarray | None = None) -> tuple[float, float]:
+def linear_combination(
+    layout,
+    estimate: np.ndarray,
+    covariance: np.ndarray,
+    coefficients: dict,
+    undetermined: np.ndarray | None = None,
+    scale: np.ndarray | None = None,
+) -> tuple[float, float]:
     """Value and sigma of ``sum_i a_i x_i`` for ``coefficients`` {state name: a_i}, in the states'
     units (rad, m, 1, s; a sum of angles in rad). ``estimate`` (n,) and ``covariance`` (n, n) in
     the order of ``layout.names``. With ``undetermined`` (n_free, k), the directions left out of
@@ -71,7 +77,7 @@ def named_sums(report: ObservabilityReport) -> list[tuple[str, str]]:
     sensor's bearing bias. In the report's order, each pair once."""
     out = []
     for comb in report.unobservable + report.weak:
-        for pair in ([comb.identifiable_sum] if comb.identifiable_sum else _pairs(comb.coefficients)):
+        for pair in [comb.identifiable_sum] if comb.identifiable_sum else _pairs(comb.coefficients):
             if pair not in out:
                 out.append(pair)
     return out
@@ -90,10 +96,16 @@ def sum_rows(result, truth: dict | None = None) -> list[dict]:
         if layout.units[i] != layout.units[j]:
             continue
         value, sigma = result.combination({a: 1.0, b: 1.0})
-        row = {"name": f"{a} + {b}", "object": f"{layout.objects[i]}+{layout.objects[j]}",
-               "quantity": f"{layout.quantities[i]}+{layout.quantities[j]}",
-               "label": f"{layout.labels[i]} + {layout.labels[j]}", "unit": layout.units[i],
-               "estimate": value, "sigma": sigma, "status": SUM_STATUS if np.isfinite(sigma) else "not identifiable"}
+        row = {
+            "name": f"{a} + {b}",
+            "object": f"{layout.objects[i]}+{layout.objects[j]}",
+            "quantity": f"{layout.quantities[i]}+{layout.quantities[j]}",
+            "label": f"{layout.labels[i]} + {layout.labels[j]}",
+            "unit": layout.units[i],
+            "estimate": value,
+            "sigma": sigma,
+            "status": SUM_STATUS if np.isfinite(sigma) else "not identifiable",
+        }
         if truth is not None:
             row["truth"] = float(truth[a] + truth[b])
         rows.append(row)

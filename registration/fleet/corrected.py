@@ -15,8 +15,9 @@ from registration import _codegen
 __all__ = ["corrected_positions"]
 
 
-def corrected_positions(nav: np.ndarray, state: np.ndarray, xs: np.ndarray, lever: np.ndarray,
-                        meas: np.ndarray) -> np.ndarray:
+def corrected_positions(
+    nav: np.ndarray, state: np.ndarray, xs: np.ndarray, lever: np.ndarray, meas: np.ndarray
+) -> np.ndarray:
     """(M, 3) ECEF positions (m) of plots corrected by the states.
 
     ``nav`` (M, 6): navigation (lat, lon rad, alt m, heading, pitch, roll rad as reported) at the
@@ -29,10 +30,34 @@ def corrected_positions(nav: np.ndarray, state: np.ndarray, xs: np.ndarray, leve
     r, q, e = meas[:, 0], meas[:, 1], meas[:, 2]
     if state.shape[1] > 6:
         p = _codegen.get("fleet_plot2ecef_ext")(
-            nav[:, 0], nav[:, 1], nav[:, 2], nav[:, 3], nav[:, 4], nav[:, 5], xs[state[:, :3]], xs[state[:, 3:6]],
-            xs[state[:, 6]], xs[state[:, 8:11]], lever, r, q, e)[0]
+            nav[:, 0],
+            nav[:, 1],
+            nav[:, 2],
+            nav[:, 3],
+            nav[:, 4],
+            nav[:, 5],
+            xs[state[:, :3]],
+            xs[state[:, 3:6]],
+            xs[state[:, 6]],
+            xs[state[:, 8:11]],
+            lever,
+            r,
+            q,
+            e,
+        )[0]
     else:
         p = _codegen.get("fleet_plot2ecef")(
-            nav[:, 0], nav[:, 1], nav[:, 2], nav[:, 3], nav[:, 4], nav[:, 5], xs[state[:, :3]], xs[state[:, 3:6]],
-            lever, r, q, e)[0]
+            nav[:, 0],
+            nav[:, 1],
+            nav[:, 2],
+            nav[:, 3],
+            nav[:, 4],
+            nav[:, 5],
+            xs[state[:, :3]],
+            xs[state[:, 3:6]],
+            lever,
+            r,
+            q,
+            e,
+        )[0]
     return np.asarray(p).reshape(-1, 3)

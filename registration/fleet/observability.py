@@ -32,9 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.core.observability import (
-    UNOBSERVABLE_BELOW, WEAK_BELOW, Combination, ObservabilityReport,
-)
+from registration.core.observability import UNOBSERVABLE_BELOW, WEAK_BELOW, Combination, ObservabilityReport
 from registration.fleet.data.layout import state_scale
 
 __all__ = ["StructuralCombination", "explain", "fleet_observability"]
@@ -52,21 +50,35 @@ class StructuralCombination(Combination):
     weak_share: float = 0.0
 
     def to_json(self) -> dict:
-        return {**super().to_json(), "share_in_unobservable_directions": self.null_share,
-                "share_in_weak_directions": self.weak_share}
+        return {
+            **super().to_json(),
+            "share_in_unobservable_directions": self.null_share,
+            "share_in_weak_directions": self.weak_share,
+        }
+
 
 #: Why a weak or unobservable direction dominated by these states is hard to see.
-_GAIN_BIAS = ("range gain and range bias are barely told apart: the plots span too narrow a range of ranges (a gain "
-              "times the mean range looks like a bias); ranges farther apart separate them")
-_TIME = ("time bias is barely told apart from position errors or angle biases: the targets all move the same way, so "
-         "a clock offset looks like a shift along their track; targets crossing in other directions, a manoeuvre or a "
-         "reference separate them")
-_CLOCK = ("time biases move together (a clock common to these sensors): reference positions, or platforms that move "
-          "or roll, fix it")
-_SECTOR = ("position errors are barely told apart from range and bearing biases: the targets lie in a narrow sector, "
-           "where a shift of the sensor looks like range and bearing biases; targets at other bearings separate them")
-_SHIFT = ("position errors move together, so the whole picture shifts with them: a reference position, or a sensor "
-          "whose position is known (prior 0), fixes it")
+_GAIN_BIAS = (
+    "range gain and range bias are barely told apart: the plots span too narrow a range of ranges (a gain "
+    "times the mean range looks like a bias); ranges farther apart separate them"
+)
+_TIME = (
+    "time bias is barely told apart from position errors or angle biases: the targets all move the same way, so "
+    "a clock offset looks like a shift along their track; targets crossing in other directions, a manoeuvre or a "
+    "reference separate them"
+)
+_CLOCK = (
+    "time biases move together (a clock common to these sensors): reference positions, or platforms that move "
+    "or roll, fix it"
+)
+_SECTOR = (
+    "position errors are barely told apart from range and bearing biases: the targets lie in a narrow sector, "
+    "where a shift of the sensor looks like range and bearing biases; targets at other bearings separate them"
+)
+_SHIFT = (
+    "position errors move together, so the whole picture shifts with them: a reference position, or a sensor "
+    "whose position is known (prior 0), fixes it"
+)
 _ATTITUDE = {"heading_error", "pitch_error", "roll_error"}
 
 
@@ -85,7 +97,9 @@ def explain(quantities: dict) -> str | None:
         return f"{who}: {_TIME}"
     if len(q) == 1 and q.pop().startswith("position_") and len(sensors) > 1:
         return f"{who}: {_SHIFT}"
-    if any(x.startswith("position_") for x in quantities.values()) and {"range_bias", "bearing_bias"} & set(quantities.values()):
+    if any(x.startswith("position_") for x in quantities.values()) and {"range_bias", "bearing_bias"} & set(
+        quantities.values()
+    ):
         return f"{who}: {_SECTOR}"
     return None
 
@@ -111,16 +125,24 @@ def _level_patterns(layout, free: np.ndarray, sensor_platform: np.ndarray, platf
 def _level_text(layout, pid: str, sensors: list, weak: bool) -> str:
     h = f"{pid}:heading_error"
     if weak:
-        return (f"heading error of platform {pid} and the bearing biases of {', '.join(sensors)} are barely separated; "
-                "better determined are the sums " + ", ".join(f"{h} + {s}:bearing_bias" for s in sensors))
+        return (
+            f"heading error of platform {pid} and the bearing biases of {', '.join(sensors)} are barely separated; "
+            "better determined are the sums " + ", ".join(f"{h} + {s}:bearing_bias" for s in sensors)
+        )
     if len(sensors) == 1:
-        return (f"heading error of platform {pid} and bearing bias of sensor {sensors[0]} enter only as their sum "
-                f"{h} + {sensors[0]}:bearing_bias")
-    return (f"heading error of platform {pid} and the bearing biases of its sensors {', '.join(sensors)} enter only "
-            "as the sums " + ", ".join(f"{h} + {s}:bearing_bias" for s in sensors))
+        return (
+            f"heading error of platform {pid} and bearing bias of sensor {sensors[0]} enter only as their sum "
+            f"{h} + {sensors[0]}:bearing_bias"
+        )
+    return (
+        f"heading error of platform {pid} and the bearing biases of its sensors {', '.join(sensors)} enter only "
+        "as the sums " + ", ".join(f"{h} + {s}:bearing_bias" for s in sensors)
+    )
 
 
-def _name(v_scaled: np.ndarray, d: np.ndarray, names, labels, eigenvalue: float, unobservable: bool) -> Combination:
+def _name(
+    v_scaled: np.ndarray, d: np.ndarray, names, labels, eigenvalue: float, unobservable: bool
+) -> Combination:
     """A generic direction (prior-scaled coordinates) named by its dominant states, with the reason
     of :func:`explain` in front where it has one."""
     comb = _name_states(v_scaled, d, names, labels, eigenvalue, unobservable)
@@ -131,7 +153,9 @@ def _name(v_scaled: np.ndarray, d: np.ndarray, names, labels, eigenvalue: float,
     return Combination(comb.coefficients, comb.eigenvalue, f"{why} ({comb.text})", comb.identifiable_sum)
 
 
-def _name_states(v_scaled: np.ndarray, d: np.ndarray, names, labels, eigenvalue: float, unobservable: bool) -> Combination:
+def _name_states(
+    v_scaled: np.ndarray, d: np.ndarray, names, labels, eigenvalue: float, unobservable: bool
+) -> Combination:
     """A generic direction (prior-scaled coordinates) named by its dominant states."""
     v = v_scaled / np.abs(v_scaled).max()
     idx = [i for i in np.argsort(-np.abs(v)) if abs(v[i]) >= 0.15]
@@ -143,9 +167,12 @@ def _name_states(v_scaled: np.ndarray, d: np.ndarray, names, labels, eigenvalue:
     if len(idx) == 2 and abs(abs(own[j]) - 1.0) < 0.05:
         kind, sign = ("difference", "-") if own[j] > 0 else ("sum", "+")
         verb = "enter only as their" if unobservable else "are separated mainly through their"
-        return Combination(coeffs, float(eigenvalue), f"{labels[i]} and {labels[j]} {verb} {kind} "
-                                                      f"{names[i]} {sign} {names[j]}",
-                           (names[i], names[j]) if kind == "sum" else None)
+        return Combination(
+            coeffs,
+            float(eigenvalue),
+            f"{labels[i]} and {labels[j]} {verb} {kind} {names[i]} {sign} {names[j]}",
+            (names[i], names[j]) if kind == "sum" else None,
+        )
     terms = ", ".join(f"{labels[k]} ({own[k]:+.3g})" for k in idx)
     head = "the data do not see a joint change of" if unobservable else "poorly determined joint change of"
     return Combination(coeffs, float(eigenvalue), f"{head} {terms} (relative sizes in the states' units)")
@@ -159,8 +186,10 @@ def _common_clock(layout, free: np.ndarray):
         return []
     v = np.zeros(free.size)
     v[idx] = 1.0
-    what = ("the time biases of all sensors move together (a clock common to the fleet): only their differences are "
-            "determined; reference positions, or platforms that move, fix the common clock")
+    what = (
+        "the time biases of all sensors move together (a clock common to the fleet): only their differences are "
+        "determined; reference positions, or platforms that move, fix the common clock"
+    )
     return [((what, "barely determined: " + what), v)]
 
 
@@ -185,7 +214,9 @@ def _named_structural(Js: np.ndarray, null: np.ndarray, weak: np.ndarray, layout
         info = float(part @ Js @ part)
         coeffs = {layout.names[free[k]]: float(v[k]) for k in np.flatnonzero(v)}
         pair = tuple(coeffs) if len(coeffs) == 2 and texts[2] else None
-        comb = StructuralCombination(coeffs, info, texts[0] if unobservable else texts[1], pair, f_null, f_weak)
+        comb = StructuralCombination(
+            coeffs, info, texts[0] if unobservable else texts[1], pair, f_null, f_weak
+        )
         named.append((unobservable, comb, vs))
     return named
 
@@ -195,8 +226,14 @@ def _status(names, null: np.ndarray, weak: np.ndarray) -> dict:
     than 0.3 in the weak ones, or more than 0.1 unobservable) or identifiable."""
     p_null = np.linalg.norm(null, axis=1) if null.size else np.zeros(len(names))
     p_weak = np.linalg.norm(weak, axis=1) if weak.size else np.zeros(len(names))
-    return {name: "not identifiable" if p_null[i] > 0.3 else "weak" if (p_weak[i] > 0.3 or p_null[i] > 0.1)
-            else "identifiable" for i, name in enumerate(names)}
+    return {
+        name: "not identifiable"
+        if p_null[i] > 0.3
+        else "weak"
+        if (p_weak[i] > 0.3 or p_null[i] > 0.1)
+        else "identifiable"
+        for i, name in enumerate(names)
+    }
 
 
 def _generic(Js, named_vectors: list, d, names, labels) -> list[tuple[bool, Combination]]:
@@ -212,7 +249,10 @@ def _generic(Js, named_vectors: list, d, names, labels) -> list[tuple[bool, Comb
     eigval, eigvec = np.linalg.eigh(basis.T @ Js @ basis)
     vectors = basis @ eigvec
     null = eigval < UNOBSERVABLE_BELOW
-    out = [(True, _name(u, d, names, labels, float(u @ Js @ u / (u @ u)), True)) for u in _simple_basis(vectors[:, null]).T]
+    out = [
+        (True, _name(u, d, names, labels, float(u @ Js @ u / (u @ u)), True))
+        for u in _simple_basis(vectors[:, null]).T
+    ]
     for s_val, u in zip(eigval, vectors.T):
         if UNOBSERVABLE_BELOW <= s_val < WEAK_BELOW:
             out.append((False, _name(u, d, names, labels, s_val, False)))
@@ -232,8 +272,9 @@ def _simple_basis(N: np.ndarray) -> np.ndarray:
     return N @ np.linalg.inv(N[pivots, :])
 
 
-def fleet_observability(information: np.ndarray, free: np.ndarray, layout, sensor_platform, platform_ids,
-                        sensor_ids) -> ObservabilityReport:
+def fleet_observability(
+    information: np.ndarray, free: np.ndarray, layout, sensor_platform, platform_ids, sensor_ids
+) -> ObservabilityReport:
     """Classify the free states' directions from their information (n_free x n_free, data only)."""
     names = [layout.names[i] for i in free]
     labels = [layout.labels[i] for i in free]
@@ -243,8 +284,10 @@ def fleet_observability(information: np.ndarray, free: np.ndarray, layout, senso
     w, v = np.linalg.eigh(Js) if free.size else (np.zeros(0), np.zeros((0, 0)))
     null, weak = v[:, w < UNOBSERVABLE_BELOW], v[:, (w >= UNOBSERVABLE_BELOW) & (w < WEAK_BELOW)]
     report = ObservabilityReport(singular_values=np.clip(w, 0, None)[::-1])
-    patterns = [((_level_text(layout, pid, sensors, False), _level_text(layout, pid, sensors, True), True), vec)
-                for pid, sensors, vec in _level_patterns(layout, free, sensor_platform, platform_ids, sensor_ids)]
+    patterns = [
+        ((_level_text(layout, pid, sensors, False), _level_text(layout, pid, sensors, True), True), vec)
+        for pid, sensors, vec in _level_patterns(layout, free, sensor_platform, platform_ids, sensor_ids)
+    ]
     patterns += [((*texts, False), vec) for texts, vec in _common_clock(layout, free)]
     patterns = [(texts, vec, vec / d / np.linalg.norm(vec / d)) for texts, vec in patterns]
     named = _named_structural(Js, null, weak, layout, free, patterns)

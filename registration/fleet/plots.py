@@ -24,13 +24,24 @@ from registration.fleet.data.layout import FILE_UNITS
 from registration.fleet.data.problem import FleetProblem
 from registration.fleet.result import BatchResult
 
-__all__ = ["corrected_plot_positions", "estimates_figure", "history_figure", "map_figure", "plot_estimates",
-           "plot_history", "plot_map", "plot_residuals", "residuals_figure"]
+__all__ = [
+    "corrected_plot_positions",
+    "estimates_figure",
+    "history_figure",
+    "map_figure",
+    "plot_estimates",
+    "plot_history",
+    "plot_map",
+    "plot_residuals",
+    "residuals_figure",
+]
 
 #: How a row of the estimates figure is drawn: (legend label, bar colour) per kind.
-_KINDS = {"determined": ("identifiable or fixed, ± 2σ", OKABE_ITO["blue"]),
-          "poor": ("weak or not identifiable, ± 2σ", OKABE_ITO["vermillion"]),
-          "sum": ("sum the data determine, ± 2σ", OKABE_ITO["bluish_green"])}
+_KINDS = {
+    "determined": ("identifiable or fixed, ± 2σ", OKABE_ITO["blue"]),
+    "poor": ("weak or not identifiable, ± 2σ", OKABE_ITO["vermillion"]),
+    "sum": ("sum the data determine, ± 2σ", OKABE_ITO["bluish_green"]),
+}
 _UNDETERMINED_LABEL = "undetermined (σ = ∞: no bar)"
 _UNDETERMINED_STYLE = {"color": "0.88", "edgecolor": "0.35", "hatch": "///"}
 
@@ -91,8 +102,14 @@ def _legend_handles(rows: list[dict]) -> list:
     kinds = {_kind(r) for r in rows}
     handles = [Patch(color=c, alpha=0.7, label=label) for kind, (label, c) in _KINDS.items() if kind in kinds]
     if "undetermined" in kinds:
-        handles.append(Patch(facecolor=_UNDETERMINED_STYLE["color"], edgecolor=_UNDETERMINED_STYLE["edgecolor"],
-                             hatch=_UNDETERMINED_STYLE["hatch"], label=_UNDETERMINED_LABEL))
+        handles.append(
+            Patch(
+                facecolor=_UNDETERMINED_STYLE["color"],
+                edgecolor=_UNDETERMINED_STYLE["edgecolor"],
+                hatch=_UNDETERMINED_STYLE["hatch"],
+                label=_UNDETERMINED_LABEL,
+            )
+        )
     if "truth" in rows[0]:
         handles.append(Line2D([], [], color="k", marker="x", ls="none", label="truth"))
     return handles
@@ -109,8 +126,14 @@ def estimates_figure(result: BatchResult, truth: dict | None = None):
     unit = np.array([FILE_UNITS[r["unit"]][2] for r in rows])
     panels = [u for u in ("deg", "m", "ppm", "s") if (unit == u).any()]
     counts = [int((unit == u).sum()) for u in panels]
-    fig, axes = plt.subplots(1, len(panels), figsize=(6 * len(panels) + 2, max(4.5, 0.3 * max(counts) + 2.5)),
-                             gridspec_kw={"width_ratios": counts}, squeeze=False, layout="constrained")
+    fig, axes = plt.subplots(
+        1,
+        len(panels),
+        figsize=(6 * len(panels) + 2, max(4.5, 0.3 * max(counts) + 2.5)),
+        gridspec_kw={"width_ratios": counts},
+        squeeze=False,
+        layout="constrained",
+    )
     for ax, u in zip(axes[0], panels):
         _draw_rows(ax, [r for r, on in zip(rows, unit == u) if on])
         ax.set_xlabel(u)
@@ -134,8 +157,9 @@ def history_figure(result, truth: dict | None = None):
     free = layout.free
     cols = 4
     rows = max(1, -(-free.size // cols))
-    fig, axes = plt.subplots(rows, cols, figsize=(4 * cols, 2.4 * rows + 0.6), sharex=True, squeeze=False,
-                             layout="constrained")
+    fig, axes = plt.subplots(
+        rows, cols, figsize=(4 * cols, 2.4 * rows + 0.6), sharex=True, squeeze=False, layout="constrained"
+    )
     for ax, i in zip(axes.flat, free):
         _, _, unit, k = FILE_UNITS[layout.units[i]]
         est, sig = h.estimate[:, i] * k, h.sigma[:, i] * k
@@ -146,7 +170,7 @@ def history_figure(result, truth: dict | None = None):
         ax.set_title(f"{layout.names[i]} ({unit})", fontsize=8)
         ax.tick_params(labelsize=7)
         ax.grid(alpha=0.3)
-    for ax in list(axes.flat)[free.size:]:
+    for ax in list(axes.flat)[free.size :]:
         ax.set_visible(False)
     for c in range(cols):
         shown = [ax for ax in axes[:, c] if ax.get_visible()]
@@ -169,23 +193,39 @@ def map_figure(problem: FleetProblem, result: BatchResult):
     (:func:`registration.core.plotting.label_style`)."""
     plt = pyplot()
     fig, axes = plt.subplots(1, 2, figsize=(14, 6), sharex=True, sharey=True, layout="constrained")
-    for ax, x, title in ((axes[0], np.zeros(problem.layout.n), "as measured"),
-                         (axes[1], result.estimate, "corrected by the estimates")):
+    for ax, x, title in (
+        (axes[0], np.zeros(problem.layout.n), "as measured"),
+        (axes[1], result.estimate, "corrected by the estimates"),
+    ):
         p, sel = corrected_plot_positions(problem, x)
         lat, lon, _ = ecef2geodetic(p)
         target = problem.target[sel]
         for k, tid in enumerate(problem.target_ids):
             on = target == k
             colour, marker = label_style(k)
-            ax.plot(np.degrees(lon[on]), np.degrees(lat[on]), ls="none", marker=marker, ms=2, mew=0, color=colour,
-                    label=str(tid))
+            ax.plot(
+                np.degrees(lon[on]),
+                np.degrees(lat[on]),
+                ls="none",
+                marker=marker,
+                ms=2,
+                mew=0,
+                color=colour,
+                label=str(tid),
+            )
         ax.set_title(f"plots {title}")
         ax.set_xlabel("longitude (deg E)")
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("latitude (deg N)")
     n = len(problem.target_ids)
-    axes[1].legend(title="target", markerscale=4, fontsize=8, ncol=max(1, -(-n // 20)), loc="center left",
-                   bbox_to_anchor=(1.02, 0.5))
+    axes[1].legend(
+        title="target",
+        markerscale=4,
+        fontsize=8,
+        ncol=max(1, -(-n // 20)),
+        loc="center left",
+        bbox_to_anchor=(1.02, 0.5),
+    )
     return fig
 
 
@@ -204,9 +244,17 @@ def residuals_figure(result: BatchResult, title: str | None = None):
         r = result.residuals[:, k]
         r = r[np.isfinite(r)]
         if r.size:
-            ax.hist(np.clip(r, -6, 6), bins=60, range=(-6, 6), density=True, histtype="step", lw=1.2,
-                    color=label_style(k)[0], label=f"{channel} ({r.size})")
-    ax.plot(grid, np.exp(-grid**2 / 2) / np.sqrt(2 * np.pi), "k--", lw=1, label="N(0, 1)")
+            ax.hist(
+                np.clip(r, -6, 6),
+                bins=60,
+                range=(-6, 6),
+                density=True,
+                histtype="step",
+                lw=1.2,
+                color=label_style(k)[0],
+                label=f"{channel} ({r.size})",
+            )
+    ax.plot(grid, np.exp(-(grid**2) / 2) / np.sqrt(2 * np.pi), "k--", lw=1, label="N(0, 1)")
     ax.set_xlabel("normalised residual (measured - predicted) / σ, clipped to ±6")
     ax.set_ylabel("density")
     text = title if title is not None else result.chi_square.text()

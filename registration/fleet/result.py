@@ -8,8 +8,8 @@ import numpy as np
 
 from registration.core.consistency import ConsistencyReport
 from registration.core.observability import ObservabilityReport
-from registration.fleet.combinations import linear_combination, sigma_text, sum_rows
 from registration.fleet.batch.covariance import FusedTargets
+from registration.fleet.combinations import linear_combination, sigma_text, sum_rows
 from registration.fleet.data.layout import FILE_UNITS, StateLayout
 
 __all__ = ["BatchResult", "ChiSquareCheck", "StateEstimates", "state_lines", "state_rows"]
@@ -55,8 +55,10 @@ class ChiSquareCheck:
 
     def text(self) -> str:
         lo, hi = self.interval
-        return (f"mean squared normalised residual {self.mean:.4f} over {self.dof} degrees of freedom "
-                f"(95 % band [{lo:.4f}, {hi:.4f}]): {'consistent' if self.ok else 'OUTSIDE the band'}")
+        return (
+            f"mean squared normalised residual {self.mean:.4f} over {self.dof} degrees of freedom "
+            f"(95 % band [{lo:.4f}, {hi:.4f}]): {'consistent' if self.ok else 'OUTSIDE the band'}"
+        )
 
     def parts_text(self) -> str:
         """The terms of the sum, each as its mean square per value over its count (about 1 each where
@@ -69,15 +71,23 @@ class ChiSquareCheck:
         return "; ".join(terms)
 
 
-def state_rows(layout: StateLayout, estimate: np.ndarray, sigma: np.ndarray, status: dict,
-               truth: dict | None = None) -> list[dict]:
+def state_rows(
+    layout: StateLayout, estimate: np.ndarray, sigma: np.ndarray, status: dict, truth: dict | None = None
+) -> list[dict]:
     """One dict per state of ``layout``: name, object (platform or sensor id), quantity, label,
     unit, estimate, sigma (rad, m), status (and truth when given, {name: value})."""
     out = []
     for i, name in enumerate(layout.names):
-        row = {"name": name, "object": layout.objects[i], "quantity": layout.quantities[i],
-               "label": layout.labels[i], "unit": layout.units[i],
-               "estimate": float(estimate[i]), "sigma": float(sigma[i]), "status": status[name]}
+        row = {
+            "name": name,
+            "object": layout.objects[i],
+            "quantity": layout.quantities[i],
+            "label": layout.labels[i],
+            "unit": layout.units[i],
+            "estimate": float(estimate[i]),
+            "sigma": float(sigma[i]),
+            "status": status[name],
+        }
         if truth is not None:
             row["truth"] = float(truth[name])
         out.append(row)
@@ -91,8 +101,10 @@ def state_lines(rows: list[dict]) -> list[str]:
     out, width = [], max([36, *(len(row["label"]) for row in rows)])
     for row in rows:
         _, _, unit, k = FILE_UNITS[row["unit"]]
-        out.append(f"  {row['label']:<{width}s} {k * row['estimate']:+12.4f} {unit:<3}  σ {sigma_text(k * row['sigma']):<12}  "
-                   f"{row['status']}")
+        out.append(
+            f"  {row['label']:<{width}s} {k * row['estimate']:+12.4f} {unit:<3}  σ {sigma_text(k * row['sigma']):<12}  "
+            f"{row['status']}"
+        )
     return out
 
 
@@ -111,8 +123,9 @@ class StateEstimates:
         """Value and sigma (1σ) of ``sum_i a_i x_i`` for ``coefficients`` {state name: a_i}, e.g.
         ``{"A:heading_error": 1, "A1:bearing_bias": 1}`` (rad, m). The sigma is inf when the combination
         leans on a direction the data do not determine (more than 1 % of it, in scaled units)."""
-        return linear_combination(self.layout, self.estimate, self.covariance, coefficients, self.undetermined,
-                                  self.scale)
+        return linear_combination(
+            self.layout, self.estimate, self.covariance, coefficients, self.undetermined, self.scale
+        )
 
     def rows(self, truth: dict | None = None) -> list[dict]:
         """One dict per state: name, object (platform or sensor id), quantity, label, unit,
@@ -195,8 +208,10 @@ class BatchResult(StateEstimates):
         """A printable summary (angles in degrees)."""
         out = [f"converged: {self.converged} after {self.iterations} iterations", self.chi_square.text()]
         if self.chi_square.parts:
-            out.append(f"  its terms (mean square per value): {self.chi_square.parts_text()} "
-                       f"({self.reference_target.size} of {self.references_given} reference positions used)")
+            out.append(
+                f"  its terms (mean square per value): {self.chi_square.parts_text()} "
+                f"({self.reference_target.size} of {self.references_given} reference positions used)"
+            )
         out += [f"WARNING: {w}" for w in self.warnings]
         out += state_lines(self.rows())
         out += self.observability.lines()

@@ -12,5 +12,17 @@ from registration.fusion.optimal import OptimalResult, crlb, fisher_information,
 from registration.fusion.paper import FusionResult, fuse_paper, radar_point
 from registration.fusion.polar import COMPONENTS, parse_components
 
-__all__ = ["COMPONENTS", "FusionResult", "OptimalResult", "crlb", "fisher_information", "fuse_optimal", "fuse_paper",
-           "gdop", "gdop_from_samples", "parse_components", "radar_point", "wrap_angle"]
+__all__ = [
+    "COMPONENTS",
+    "FusionResult",
+    "OptimalResult",
+    "crlb",
+    "fisher_information",
+    "fuse_optimal",
+    "fuse_paper",
+    "gdop",
+    "gdop_from_samples",
+    "parse_components",
+    "radar_point",
+    "wrap_angle",
+]

@@ -130,7 +130,9 @@ def _rows(sc: FusionScenario, analytic_cov: dict, mc_g: dict) -> list[dict]:
     return rows
 
 
-def _warnings(below: bool, claimed: np.ndarray, bound: np.ndarray, opt: OptimalResult, trials: int) -> list[str]:
+def _warnings(
+    below: bool, claimed: np.ndarray, bound: np.ndarray, opt: OptimalResult, trials: int
+) -> list[str]:
     """Warnings for a claimed covariance below the CRLB and for trials the optimal fuser left unconverged."""
     g_claim, g_bound = float(gdop(claimed)), float(gdop(bound))
     warnings = []
@@ -142,7 +144,9 @@ def _warnings(below: bool, claimed: np.ndarray, bound: np.ndarray, opt: OptimalR
             "was built from"
         )
     if not opt.converged.all():
-        warnings.append(f"the optimal fuser did not converge in {int((~opt.converged).sum())} of {trials} trials")
+        warnings.append(
+            f"the optimal fuser did not converge in {int((~opt.converged).sum())} of {trials} trials"
+        )
     return warnings
 
 
@@ -181,7 +185,9 @@ def evaluate(sc: FusionScenario, trials: int = 1000, seed: int = 0) -> FusionEva
     z_a, z_b = simulate(sc, trials, np.random.default_rng(seed))
     p_true = true_position(sc)
     ana, ana_opt = _fusers(sc, *true_measurements(sc))
-    bound = crlb(p_true, sc.sigma_radar, sc.sigma_second, sc.components, sc.site_second_loc, sc.site_radar_loc)[0]
+    bound = crlb(
+        p_true, sc.sigma_radar, sc.sigma_second, sc.components, sc.site_second_loc, sc.site_radar_loc
+    )[0]
     mc, opt = _fusers(sc, z_a, z_b)
 
     analytic_cov = {
@@ -193,7 +199,12 @@ def evaluate(sc: FusionScenario, trials: int = 1000, seed: int = 0) -> FusionEva
         "optimal": ana_opt.P[0],
         "crlb": bound,
     }
-    points = {"radar": mc.p_radar_loc, "pseudo_measurement": mc.p_pseudo_loc, "paper": mc.p_fused_loc, "optimal": opt.p_loc}
+    points = {
+        "radar": mc.p_radar_loc,
+        "pseudo_measurement": mc.p_pseudo_loc,
+        "paper": mc.p_fused_loc,
+        "optimal": opt.p_loc,
+    }
     mc_g = {
         "radar": _mc_gdop(mc.p_radar_loc),
         "pseudo_measurement": _mc_gdop(mc.p_pseudo_loc),

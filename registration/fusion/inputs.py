@@ -49,7 +49,9 @@ def check_polar(name: str, z: np.ndarray, names: tuple[str, ...]) -> None:
         if comp == "range":
             check_positive(field, col, "m")
         elif comp == "azimuth":
-            check_range(field, col, -2 * np.pi, 2 * np.pi, "rad (azimuth, counter-clockwise from +x)", angle=True)
+            check_range(
+                field, col, -2 * np.pi, 2 * np.pi, "rad (azimuth, counter-clockwise from +x)", angle=True
+            )
         else:
             check_range(field, col, -np.pi / 2, np.pi / 2, "rad (elevation above the x-y plane)", angle=True)
 
@@ -85,7 +87,9 @@ def site_position(name: str, value, dim: int) -> np.ndarray:
     """A finite (dim,) site position in metres, frame loc."""
     s = as_float_array(name, value)
     if s.shape != (dim,):
-        raise ValueError(f"{name}: expected a position of shape ({dim},) in metres (frame loc), got {s.shape}")
+        raise ValueError(
+            f"{name}: expected a position of shape ({dim},) in metres (frame loc), got {s.shape}"
+        )
     check_finite(name, s, "m")
     return s
 
@@ -131,7 +135,9 @@ class PairInputs(NamedTuple):
     n: int
 
 
-def pair_inputs(z_radar, sigma_radar, z_second, sigma_second, components, site_second_loc, site_radar_loc) -> PairInputs:
+def pair_inputs(
+    z_radar, sigma_radar, z_second, sigma_second, components, site_second_loc, site_radar_loc
+) -> PairInputs:
     """Check the arguments shared by :func:`~registration.fusion.fuse_paper` and
     :func:`~registration.fusion.fuse_optimal` and broadcast them to a common number of rows."""
     z_a, s_a, site_a, dim = radar_inputs(z_radar, sigma_radar, site_radar_loc)
@@ -184,4 +190,9 @@ def in_blocks(block, n: int, result_type):
     parts = [block(slice(i, i + BLOCK), i) for i in range(0, n, BLOCK)]
     if len(parts) == 1:
         return parts[0]
-    return result_type(**{f.name: np.concatenate([getattr(p, f.name) for p in parts]) for f in dataclasses.fields(result_type)})
+    return result_type(
+        **{
+            f.name: np.concatenate([getattr(p, f.name) for p in parts])
+            for f in dataclasses.fields(result_type)
+        }
+    )

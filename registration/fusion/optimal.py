@@ -16,7 +16,15 @@ from registration.core import linalg as la
 from registration.core.angles import wrap_angle
 from registration.core.validation import check_finite
 from registration.fusion.inputs import (
-    SITE_TOL, broadcast_rows, check_off_site, common_rows, in_blocks, pair_inputs, point_rows, radar_site, sigma_rows,
+    SITE_TOL,
+    broadcast_rows,
+    check_off_site,
+    common_rows,
+    in_blocks,
+    pair_inputs,
+    point_rows,
+    radar_site,
+    sigma_rows,
     site_position,
 )
 from registration.fusion.polar import COMPONENTS, cartesian2polar, parse_components, polar2cartesian
@@ -61,7 +69,9 @@ class OptimalResult:
     converged: np.ndarray
 
 
-def fisher_information(p_loc, sigma_radar, sigma_second, components, site_second_loc, site_radar_loc=None) -> np.ndarray:
+def fisher_information(
+    p_loc, sigma_radar, sigma_second, components, site_second_loc, site_radar_loc=None
+) -> np.ndarray:
     """Fisher information (N, d, d) in 1/m^2 of the raw measurements about the position ``p_loc`` (d,) or (N, d) m."""
     p, dim = point_rows("p_loc", p_loc, "in metres with d = 2 or 3")
     check_finite("p_loc", p, "m")
@@ -87,7 +97,9 @@ def crlb(p_loc, sigma_radar, sigma_second, components, site_second_loc, site_rad
     components, all with independent Gaussian noise: no unbiased fuser of these raw measurements
     can have a smaller covariance.
     """
-    info = la.soa(fisher_information(p_loc, sigma_radar, sigma_second, components, site_second_loc, site_radar_loc))
+    info = la.soa(
+        fisher_information(p_loc, sigma_radar, sigma_second, components, site_second_loc, site_radar_loc)
+    )
     return la.aos(la.sym(la.inv(info)))
 
 
@@ -120,12 +132,16 @@ def fuse_optimal(
     s_all = np.concatenate([x.sigma_radar, x.sigma_second], axis=1)
 
     def block(rows: slice, offset: int) -> OptimalResult:
-        return _fuse_optimal_block(z_all[rows], s_all[rows], x.idx, x.site_radar, x.site_second, max_iterations, tol_m, offset)
+        return _fuse_optimal_block(
+            z_all[rows], s_all[rows], x.idx, x.site_radar, x.site_second, max_iterations, tol_m, offset
+        )
 
     return in_blocks(block, x.n, OptimalResult)
 
 
-def _fuse_optimal_block(z_all, s_all, idx, site_a, site_b, max_iterations: int, tol_m: float, offset: int) -> OptimalResult:
+def _fuse_optimal_block(
+    z_all, s_all, idx, site_a, site_b, max_iterations: int, tol_m: float, offset: int
+) -> OptimalResult:
     """Gauss-Newton on validated (n, d+k) measurements and sigmas; ``offset`` numbers rows in errors."""
     n, dim = z_all.shape[0], site_a.size
     z = la.soa(z_all)  # (d+k, n)
@@ -144,7 +160,9 @@ def _fuse_optimal_block(z_all, s_all, idx, site_a, site_b, max_iterations: int, 
             near = np.sqrt(np.sum((points - site[:, None]) ** 2, axis=0)) <= SITE_TOL * scale[rows]
             if near.any():
                 i = offset + int(rows[np.argmax(near)])
-                raise ValueError(f"{name}: the Gauss-Newton iterate for row {i} reached the sensor's site; degenerate geometry")
+                raise ValueError(
+                    f"{name}: the Gauss-Newton iterate for row {i} reached the sensor's site; degenerate geometry"
+                )
         h, H = _model(points, site_a, site_b, idx)
         r = _residual(z[:, rows], h, angle_rows)
         return r, H, np.sum(r * r * inv_var[:, rows], axis=0)

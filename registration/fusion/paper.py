@@ -14,7 +14,14 @@ import numpy as np
 
 from registration.core import linalg as la
 from registration.core.angles import wrap_angle
-from registration.fusion.inputs import broadcast_rows, check_off_site, common_rows, in_blocks, pair_inputs, radar_inputs
+from registration.fusion.inputs import (
+    broadcast_rows,
+    check_off_site,
+    common_rows,
+    in_blocks,
+    pair_inputs,
+    radar_inputs,
+)
 from registration.fusion.polar import cartesian2polar, polar2cartesian
 
 __all__ = ["FusionResult", "radar_point", "fuse_paper"]
@@ -64,13 +71,7 @@ class FusionResult:
 
 
 def fuse_paper(
-    z_radar,
-    sigma_radar,
-    z_second,
-    sigma_second,
-    components,
-    site_second_loc,
-    site_radar_loc=None,
+    z_radar, sigma_radar, z_second, sigma_second, components, site_second_loc, site_radar_loc=None
 ) -> FusionResult:
     """The paper's dissimilar-dimension fusion, steps (1)-(5), vectorised over N pairs.
 
@@ -100,8 +101,16 @@ def fuse_paper(
     x = pair_inputs(z_radar, sigma_radar, z_second, sigma_second, components, site_second_loc, site_radar_loc)
 
     def block(rows: slice, offset: int) -> FusionResult:
-        return _fuse_paper_block(x.z_radar[rows], x.sigma_radar[rows], x.z_second[rows], x.sigma_second[rows],
-                                 x.idx, x.site_radar, x.site_second, offset)
+        return _fuse_paper_block(
+            x.z_radar[rows],
+            x.sigma_radar[rows],
+            x.z_second[rows],
+            x.sigma_second[rows],
+            x.idx,
+            x.site_radar,
+            x.site_second,
+            offset,
+        )
 
     return in_blocks(block, x.n, FusionResult)
 
@@ -119,7 +128,9 @@ def _fuse_components(polar_b, var_b_prime, z_b, var_b, idx, offset: int):
     var_f[idx] = var_b_prime[idx] * var_b / (var_b_prime[idx] + var_b)
     if (polar_f[0] <= 0).any():
         i = int(np.argwhere(polar_f[0] <= 0)[0][0])
-        raise ValueError(f"z_second: the fused range at row {offset + i} is not positive ({polar_f[0, i]:.3g} m)")
+        raise ValueError(
+            f"z_second: the fused range at row {offset + i} is not positive ({polar_f[0, i]:.3g} m)"
+        )
     return w, polar_f, var_f
 
 

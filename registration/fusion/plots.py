@@ -55,9 +55,12 @@ def _draw_geometry(ax, ev: FusionEvaluation) -> None:
     ax.plot(b[0] * km, b[1] * km, "k^", ms=8)
     ax.plot(p_true[0] * km, p_true[1] * km, "*", color=OKABE_ITO["vermillion"], ms=12)
     ax.annotate("A radar", (a[0] * km, a[1] * km), textcoords="offset points", xytext=(6, -14))
-    ax.annotate("B " + "+".join(sc.components), (b[0] * km, b[1] * km), textcoords="offset points", xytext=(6, -14))
-    ax.annotate("target C", (p_true[0] * km, p_true[1] * km), textcoords="offset points", xytext=(0, 10),
-                ha="center")
+    ax.annotate(
+        "B " + "+".join(sc.components), (b[0] * km, b[1] * km), textcoords="offset points", xytext=(6, -14)
+    )
+    ax.annotate(
+        "target C", (p_true[0] * km, p_true[1] * km), textcoords="offset points", xytext=(0, 10), ha="center"
+    )
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("x (km), from A towards B" if not np.any(b[1:] - a[1:]) else "x (km)")
     ax.margins(0.15)  # room for the labels below the sites and beside the target
@@ -71,15 +74,28 @@ def _draw_measurement_points(ax, ev: FusionEvaluation, m: int) -> None:
     legend below the axes, clear of the points."""
     p_true, zero = ev.p_true_loc, np.zeros(ev.scenario.dim)
     radar, pseudo = ev.points["radar"][:m], ev.points["pseudo_measurement"][:m]
-    ax.plot((radar[:, 0] - p_true[0]), (radar[:, 1] - p_true[1]), "k+", ms=4, alpha=0.6,
-            label=f"radar points C (GDOP {ev.row('radar')['monte_carlo_gdop_m']:.0f} m)")
-    ax.plot((pseudo[:, 0] - p_true[0]), (pseudo[:, 1] - p_true[1]), "x", color="0.55", ms=4, alpha=0.6,
-            label=f"pseudo-measurements H (GDOP {ev.row('pseudo_measurement')['monte_carlo_gdop_m']:.0f} m)")
-    for key, style, colour, label in (("radar", "-", OKABE_ITO["black"], "2σ ellipse of P (radar)"),
-                                      ("pseudo_measurement", "-", OKABE_ITO["orange"],
-                                       "2σ ellipse of R (paper's H covariance)"),
-                                      ("pseudo_measurement_consistent", "--", OKABE_ITO["blue"],
-                                       "2σ ellipse of H's actual covariance")):
+    ax.plot(
+        (radar[:, 0] - p_true[0]),
+        (radar[:, 1] - p_true[1]),
+        "k+",
+        ms=4,
+        alpha=0.6,
+        label=f"radar points C (GDOP {ev.row('radar')['monte_carlo_gdop_m']:.0f} m)",
+    )
+    ax.plot(
+        (pseudo[:, 0] - p_true[0]),
+        (pseudo[:, 1] - p_true[1]),
+        "x",
+        color="0.55",
+        ms=4,
+        alpha=0.6,
+        label=f"pseudo-measurements H (GDOP {ev.row('pseudo_measurement')['monte_carlo_gdop_m']:.0f} m)",
+    )
+    for key, style, colour, label in (
+        ("radar", "-", OKABE_ITO["black"], "2σ ellipse of P (radar)"),
+        ("pseudo_measurement", "-", OKABE_ITO["orange"], "2σ ellipse of R (paper's H covariance)"),
+        ("pseudo_measurement_consistent", "--", OKABE_ITO["blue"], "2σ ellipse of H's actual covariance"),
+    ):
         e = ellipse_points(zero, ev.analytic_cov[key])
         ax.plot(e[:, 0], e[:, 1], style, color=colour, lw=1.5, label=label)
     ax.set_aspect("equal", adjustable="datalim")
@@ -93,8 +109,9 @@ def _draw_measurement_points(ax, ev: FusionEvaluation, m: int) -> None:
 def measurements_figure(ev: FusionEvaluation, m: int):
     """measurements.png: geometry (left) and the first ``m`` radar and pseudo-measurement points (right)."""
     plt = pyplot()
-    fig, (ax0, ax1) = plt.subplots(1, 2, figsize=(13, 6.4), gridspec_kw={"width_ratios": [1, 1.25]},
-                                   layout="constrained")
+    fig, (ax0, ax1) = plt.subplots(
+        1, 2, figsize=(13, 6.4), gridspec_kw={"width_ratios": [1, 1.25]}, layout="constrained"
+    )
     _draw_geometry(ax0, ev)
     _draw_measurement_points(ax1, ev, m)
     fig.suptitle(ev.scenario.name)
@@ -107,10 +124,24 @@ def fused_figure(ev: FusionEvaluation, m: int):
     p_true, zero = ev.p_true_loc, np.zeros(ev.scenario.dim)
     paper, optimal = ev.points["paper"][:m], ev.points["optimal"][:m]
     fig, ax = plt.subplots(figsize=(11.5, 7), layout="constrained")
-    ax.plot(paper[:, 0] - p_true[0], paper[:, 1] - p_true[1], ".", color="k", ms=3, alpha=0.55,
-            label=f"paper method X (GDOP {ev.row('paper_actual')['monte_carlo_gdop_m']:.0f} m)")
-    ax.plot(optimal[:, 0] - p_true[0], optimal[:, 1] - p_true[1], ".", color=OPTIMAL_COLOUR, ms=2, alpha=0.6,
-            label=f"optimal fuser (GDOP {ev.row('optimal')['monte_carlo_gdop_m']:.0f} m)")
+    ax.plot(
+        paper[:, 0] - p_true[0],
+        paper[:, 1] - p_true[1],
+        ".",
+        color="k",
+        ms=3,
+        alpha=0.55,
+        label=f"paper method X (GDOP {ev.row('paper_actual')['monte_carlo_gdop_m']:.0f} m)",
+    )
+    ax.plot(
+        optimal[:, 0] - p_true[0],
+        optimal[:, 1] - p_true[1],
+        ".",
+        color=OPTIMAL_COLOUR,
+        ms=2,
+        alpha=0.6,
+        label=f"optimal fuser (GDOP {ev.row('optimal')['monte_carlo_gdop_m']:.0f} m)",
+    )
     for key, style, colour, label in FUSED_ELLIPSES:
         e = ellipse_points(zero, ev.analytic_cov[key])
         ax.plot(e[:, 0], e[:, 1], style, color=colour, lw=1.8, label=label)
@@ -129,5 +160,7 @@ def fused_figure(ev: FusionEvaluation, m: int):
 def write_plots(ev: FusionEvaluation, out: Path, max_points: int) -> list[Path]:
     """Write measurements.png and fused.png into ``out``, at most ``max_points`` points per set."""
     m = min(max_points, ev.trials)
-    return [save_figure(measurements_figure(ev, m), out / "measurements.png", 110),
-            save_figure(fused_figure(ev, m), out / "fused.png", 110)]
+    return [
+        save_figure(measurements_figure(ev, m), out / "measurements.png", 110),
+        save_figure(fused_figure(ev, m), out / "fused.png", 110),
+    ]

@@ -58,14 +58,20 @@ class FusionScenario:
         tp = as_float_array("target_polar", self.target_polar)
         d = tp.shape[0] if tp.ndim == 1 else -1
         if d not in COMPONENTS:
-            raise ValueError(f"target_polar: expected [range m, azimuth rad(, elevation rad)], got shape {tp.shape}")
+            raise ValueError(
+                f"target_polar: expected [range m, azimuth rad(, elevation rad)], got shape {tp.shape}"
+            )
         for name in ("site_radar_loc", "site_second_loc"):
             s = as_float_array(name, getattr(self, name))
             if s.shape != (d,):
-                raise ValueError(f"{name}: expected ({d},) metres to match a {d}-D target, got shape {s.shape}")
+                raise ValueError(
+                    f"{name}: expected ({d},) metres to match a {d}-D target, got shape {s.shape}"
+                )
         sr = as_float_array("sigma_radar", self.sigma_radar)
         if sr.shape != (d,):
-            raise ValueError(f"sigma_radar: expected ({d},) standard deviations [m, rad(, rad)], got shape {sr.shape}")
+            raise ValueError(
+                f"sigma_radar: expected ({d},) standard deviations [m, rad(, rad)], got shape {sr.shape}"
+            )
         check_positive("sigma_radar", sr, "(standard deviations in m and rad)")
         idx = parse_components(self.components, d)
         ss = as_float_array("sigma_second", self.sigma_second)
@@ -98,22 +104,30 @@ class _PaperSetup:
 _PAPER = {
     1: _PaperSetup(
         name="scenario 1: radar + passive bearing sensor",
-        baseline_m=80e3, target_range_m=100e3, target_azimuth_deg=15.0, sigma_radar=(100.0, 7e-3),
-        component="azimuth", sigma_second=4e-3,
+        baseline_m=80e3,
+        target_range_m=100e3,
+        target_azimuth_deg=15.0,
+        sigma_radar=(100.0, 7e-3),
+        component="azimuth",
+        sigma_second=4e-3,
         paper_gdop_m={"radar": 707.1, "paper_actual": 221.5},
         paper_printed={},
         note="paper: radar GDOP 707.1 m (= sqrt(100^2 + 700^2), the analytic value), fused 221.5 m "
-             "from 1000 simulated pairs",
+        "from 1000 simulated pairs",
     ),
     2: _PaperSetup(
         name="scenario 2: radar + laser range finder",
-        baseline_m=40e3, target_range_m=80e3, target_azimuth_deg=45.0, sigma_radar=(60.0, 5e-3),
-        component="range", sigma_second=10.0,
+        baseline_m=40e3,
+        target_range_m=80e3,
+        target_azimuth_deg=45.0,
+        sigma_radar=(60.0, 5e-3),
+        component="range",
+        sigma_second=10.0,
         paper_gdop_m={"radar": 395.1, "paper_actual": None},
         paper_printed={"paper_actual": "?19.5"},
         note="paper: radar GDOP 395.1 m from 1000 simulated pairs (the analytic value is "
-             "sqrt(60^2 + 400^2) = 404.5 m); fused value printed as '?19.5 m' with the first "
-             "digit illegible, described as 'more than 3x better'",
+        "sqrt(60^2 + 400^2) = 404.5 m); fused value printed as '?19.5 m' with the first "
+        "digit illegible, described as 'more than 3x better'",
     ),
 }
 
@@ -187,5 +201,7 @@ def describe(sc: FusionScenario) -> dict:
         out["target_elevation_deg"] = float(np.degrees(sc.target_polar[2]))
         out["sigma_radar"]["elevation_mrad"] = float(sc.sigma_radar[2] * 1e3)
     for name, s in zip(names, np.asarray(sc.sigma_second, dtype=float)):
-        out["sigma_second"][f"{name}_m" if name == "range" else f"{name}_mrad"] = float(s if name == "range" else s * 1e3)
+        out["sigma_second"][f"{name}_m" if name == "range" else f"{name}_mrad"] = float(
+            s if name == "range" else s * 1e3
+        )
     return out

@@ -18,8 +18,6 @@ from __future__ import annotations
 import datetime
 
 import numpy as np
-
-from registration.interop.requires import STONESOUP_VERSION
 from stonesoup.models.measurement.nonlinear import CartesianToBearingRange, CartesianToElevationBearingRange
 from stonesoup.platform import FixedPlatform
 from stonesoup.sensor.radar import RadarElevationBearingRange
@@ -31,15 +29,31 @@ from stonesoup.types.state import State
 from registration.core.angles import wrap_angle
 from registration.fleet.data.navigation import navigation_at, platform_navigation
 from registration.fleet.data.tables import CHANNELS, read_table
+from registration.interop.requires import STONESOUP_VERSION
 from registration.interop.world import LocalFrame
 
-__all__ = ["EPOCH", "MODEL_CHANNELS", "POSITION_MAPPING", "STONESOUP_VERSION", "measurement_model", "model_kind", "model_pose",
-           "measured_plot", "ss_covariance", "ss_vector", "tables_to_detections", "mounted_radar"]
+__all__ = [
+    "EPOCH",
+    "MODEL_CHANNELS",
+    "POSITION_MAPPING",
+    "STONESOUP_VERSION",
+    "measurement_model",
+    "model_kind",
+    "model_pose",
+    "measured_plot",
+    "ss_covariance",
+    "ss_vector",
+    "tables_to_detections",
+    "mounted_radar",
+]
 
 #: Default time origin of the tables (seconds since this instant, naive UTC).
 EPOCH = datetime.datetime(2000, 1, 1)
 #: Channels (range, bearing, elevation) that each supported model measures.
-MODEL_CHANNELS = {CartesianToElevationBearingRange: (True, True, True), CartesianToBearingRange: (True, True, False)}
+MODEL_CHANNELS = {
+    CartesianToElevationBearingRange: (True, True, True),
+    CartesianToBearingRange: (True, True, False),
+}
 #: Position indices of Stone Soup's constant-velocity state (x, vx, y, vy, z, vz).
 POSITION_MAPPING = (0, 2, 4)
 
@@ -49,8 +63,10 @@ def model_kind(model, sensor) -> type:
     for kind in MODEL_CHANNELS:
         if type(model) is kind:
             return kind
-    raise ValueError(f"sensor {sensor!r}: measurement model {type(model).__name__} is not supported "
-                     f"(supported: {', '.join(k.__name__ for k in MODEL_CHANNELS)})")
+    raise ValueError(
+        f"sensor {sensor!r}: measurement model {type(model).__name__} is not supported "
+        f"(supported: {', '.join(k.__name__ for k in MODEL_CHANNELS)})"
+    )
 
 
 def model_pose(model, sensor) -> tuple[np.ndarray, np.ndarray]:
@@ -59,14 +75,18 @@ def model_pose(model, sensor) -> tuple[np.ndarray, np.ndarray]:
     all-zero pose that Stone Soup fills in when the sensor has no platform position and orientation."""
     t, o = model.translation_offset, model.rotation_offset
     if t is None or o is None:
-        raise ValueError(f"sensor {sensor!r}: its {type(model).__name__} has no translation_offset/rotation_offset "
-                         "(the platform lacks position or orientation)")
+        raise ValueError(
+            f"sensor {sensor!r}: its {type(model).__name__} has no translation_offset/rotation_offset "
+            "(the platform lacks position or orientation)"
+        )
     t, o = np.asarray(t, dtype=float).ravel(), np.asarray(o, dtype=float).ravel()
     if not (np.any(t) or np.any(o)):
-        raise ValueError(f"sensor {sensor!r}: its {type(model).__name__} has the default pose (position 0, orientation "
-                         "0), which Stone Soup gives a sensor whose platform lacks position and orientation")
+        raise ValueError(
+            f"sensor {sensor!r}: its {type(model).__name__} has the default pose (position 0, orientation "
+            "0), which Stone Soup gives a sensor whose platform lacks position and orientation"
+        )
     p = np.zeros(3)
-    p[:min(3, t.size)] = t[:3]
+    p[: min(3, t.size)] = t[:3]
     return p, o[:3]
 
 
@@ -80,7 +100,11 @@ def ss_vector(kind: type, plot) -> StateVector:
 
 def ss_covariance(kind: type, cov_plot: np.ndarray) -> np.ndarray:
     """A (3, 3) covariance in plot order (range, bearing, elevation) in Stone Soup's measurement order."""
-    rows = [[0, 0, 1], [0, -1, 0], [1, 0, 0]] if kind is CartesianToElevationBearingRange else [[0, -1, 0], [1, 0, 0]]
+    rows = (
+        [[0, 0, 1], [0, -1, 0], [1, 0, 0]]
+        if kind is CartesianToElevationBearingRange
+        else [[0, -1, 0], [1, 0, 0]]
+    )
     M = np.array(rows, dtype=float)
     return M @ cov_plot @ M.T
 
@@ -94,8 +118,16 @@ def measured_plot(detection, sensor) -> np.ndarray:
     return np.array([z[1], float(wrap_angle(-z[0])), np.nan])
 
 
-def measurement_model(frame: LocalFrame, navigation, lever_deck, sigma, sensor="sensor", *,
-                      mapping=POSITION_MAPPING, ndim_state: int = 6):
+def measurement_model(
+    frame: LocalFrame,
+    navigation,
+    lever_deck,
+    sigma,
+    sensor="sensor",
+    *,
+    mapping=POSITION_MAPPING,
+    ndim_state: int = 6,
+):
     """The Stone Soup model of a sensor at one navigation row (lat, lon, alt, heading, pitch, roll;
     rad, m) with lever arm ``lever_deck`` (m) and noise ``sigma`` = (range m, bearing rad,
     elevation rad; NaN = not measured). ValueError naming the sensor for other channel sets."""
@@ -104,13 +136,20 @@ def measurement_model(frame: LocalFrame, navigation, lever_deck, sigma, sensor="
     kind = next((k for k, c in MODEL_CHANNELS.items() if c == channels), None)
     if kind is None:
         measured = [c for c, m in zip(CHANNELS, channels) if m]
-        raise ValueError(f"sensor {sensor!r} measures {measured}: Stone Soup models exist here for range+bearing "
-                         "(CartesianToBearingRange) and range+bearing+elevation (CartesianToElevationBearingRange) only")
+        raise ValueError(
+            f"sensor {sensor!r} measures {measured}: Stone Soup models exist here for range+bearing "
+            "(CartesianToBearingRange) and range+bearing+elevation (CartesianToElevationBearingRange) only"
+        )
     p_world, orientation = frame.sensor_pose(navigation, lever_deck)
     cov = np.diag(np.nan_to_num(sigma) ** 2)
-    mapping = tuple(mapping)[:3 if kind is CartesianToElevationBearingRange else 2]
-    return kind(ndim_state=ndim_state, mapping=mapping, noise_covar=CovarianceMatrix(ss_covariance(kind, cov)),
-                translation_offset=StateVector(p_world[0]), rotation_offset=StateVector(orientation[0]))
+    mapping = tuple(mapping)[: 3 if kind is CartesianToElevationBearingRange else 2]
+    return kind(
+        ndim_state=ndim_state,
+        mapping=mapping,
+        noise_covar=CovarianceMatrix(ss_covariance(kind, cov)),
+        translation_offset=StateVector(p_world[0]),
+        rotation_offset=StateVector(orientation[0]),
+    )
 
 
 def mounted_radar(frame: LocalFrame, navigation, lever_deck, sigma, *, ndim_state: int = 6):
@@ -125,17 +164,32 @@ def mounted_radar(frame: LocalFrame, navigation, lever_deck, sigma, *, ndim_stat
     state = np.zeros(ndim_state)
     state[list(POSITION_MAPPING)] = p_nav[0]
     sigma = np.asarray(sigma, dtype=float)
-    cov = ss_covariance(CartesianToElevationBearingRange, np.diag(sigma ** 2))
-    radar = RadarElevationBearingRange(ndim_state=ndim_state, position_mapping=POSITION_MAPPING,
-                                       noise_covar=CovarianceMatrix(cov),
-                                       mounting_offset=StateVector(p_sensor[0] - p_nav[0]))
-    platform = FixedPlatform(states=[State(StateVector(state))], position_mapping=POSITION_MAPPING,
-                             orientation=StateVector(orientation[0]), sensors=[radar])
+    cov = ss_covariance(CartesianToElevationBearingRange, np.diag(sigma**2))
+    radar = RadarElevationBearingRange(
+        ndim_state=ndim_state,
+        position_mapping=POSITION_MAPPING,
+        noise_covar=CovarianceMatrix(cov),
+        mounting_offset=StateVector(p_sensor[0] - p_nav[0]),
+    )
+    platform = FixedPlatform(
+        states=[State(StateVector(state))],
+        position_mapping=POSITION_MAPPING,
+        orientation=StateVector(orientation[0]),
+        sensors=[radar],
+    )
     return platform, radar
 
 
-def tables_to_detections(plots, sensors, navigation, frame: LocalFrame, epoch: datetime.datetime = EPOCH, *,
-                         mapping=POSITION_MAPPING, ndim_state: int = 6) -> list:
+def tables_to_detections(
+    plots,
+    sensors,
+    navigation,
+    frame: LocalFrame,
+    epoch: datetime.datetime = EPOCH,
+    *,
+    mapping=POSITION_MAPPING,
+    ndim_state: int = 6,
+) -> list:
     """Stone Soup ``Detection`` objects (time order) of a plots table, each with the measurement
     model of its sensor at the plot time (navigation interpolated as in :mod:`registration.fleet`).
 
@@ -161,13 +215,26 @@ def tables_to_detections(plots, sensors, navigation, frame: LocalFrame, epoch: d
     out = []
     for i in np.argsort(time, kind="stable"):
         s = s_index[i]
-        model = measurement_model(frame, nav[i], lever[s], sigma[s], sensor_ids[s], mapping=mapping,
-                                  ndim_state=ndim_state)
+        model = measurement_model(
+            frame, nav[i], lever[s], sigma[s], sensor_ids[s], mapping=mapping, ndim_state=ndim_state
+        )
         wanted = np.array(MODEL_CHANNELS[type(model)])
         if not np.isfinite(values[i, wanted]).all():
-            raise pt.error(int(i), f"sensor {sensor_ids[s]!r}: a {type(model).__name__} detection needs "
-                                   f"{[c for c, w in zip(CHANNELS, wanted) if w]}, got {values[i].tolist()}")
-        out.append(Detection(ss_vector(type(model), values[i]), timestamp=epoch + datetime.timedelta(seconds=float(time[i])),
-                             measurement_model=model,
-                             metadata={"sensor": sensor_ids[s], "target": str(targets[i]), "platform": platform_of[sensor_ids[s]]}))
+            raise pt.error(
+                int(i),
+                f"sensor {sensor_ids[s]!r}: a {type(model).__name__} detection needs "
+                f"{[c for c, w in zip(CHANNELS, wanted) if w]}, got {values[i].tolist()}",
+            )
+        out.append(
+            Detection(
+                ss_vector(type(model), values[i]),
+                timestamp=epoch + datetime.timedelta(seconds=float(time[i])),
+                measurement_model=model,
+                metadata={
+                    "sensor": sensor_ids[s],
+                    "target": str(targets[i]),
+                    "platform": platform_of[sensor_ids[s]],
+                },
+            )
+        )
     return out

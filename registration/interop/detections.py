@@ -13,12 +13,11 @@ import datetime
 from typing import Iterable
 
 import numpy as np
-
-from registration.interop.requires import STONESOUP_VERSION
 from stonesoup.types.detection import Clutter
 
 from registration.fleet.data.tables import CHANNELS, NAV_COLUMNS, read_table
 from registration.interop.convert import MODEL_CHANNELS, measured_plot, model_kind, model_pose
+from registration.interop.requires import STONESOUP_VERSION
 from registration.interop.world import LocalFrame
 
 __all__ = ["STONESOUP_VERSION", "detections_to_tables"]
@@ -43,13 +42,17 @@ def _collect(detections: Iterable, sensor_key: str, target_key: str) -> list:
             continue
         sensor = det.metadata.get(sensor_key)
         if sensor is None:
-            raise ValueError(f"detection {k} at {det.timestamp}: no metadata[{sensor_key!r}] naming its sensor")
+            raise ValueError(
+                f"detection {k} at {det.timestamp}: no metadata[{sensor_key!r}] naming its sensor"
+            )
         model_kind(det.measurement_model, sensor)
         model_pose(det.measurement_model, sensor)
         target = _target_of(det, target_key)
         if target is None:
-            raise ValueError(f"sensor {sensor!r}: detection {k} at {det.timestamp} has no target id "
-                             f"(metadata[{target_key!r}] or a ground-truth path)")
+            raise ValueError(
+                f"sensor {sensor!r}: detection {k} at {det.timestamp} has no target id "
+                f"(metadata[{target_key!r}] or a ground-truth path)"
+            )
         rows.append((str(sensor), str(target), det))
     if not rows:
         raise ValueError("detections: nothing to convert (no detections, or clutter only)")
@@ -67,8 +70,14 @@ def _sensor_info(sensors, wanted: list) -> dict:
     missing = [s for s in wanted if s not in ids]
     if missing:
         raise ValueError(f"sensors: detections of sensor(s) {missing}, but the sensors table lists {ids}")
-    return {s: (str(platforms[ids.index(s)]), lever[ids.index(s)], {c: v[ids.index(s)] for c, v in priors.items()})
-            for s in wanted}
+    return {
+        s: (
+            str(platforms[ids.index(s)]),
+            lever[ids.index(s)],
+            {c: v[ids.index(s)] for c, v in priors.items()},
+        )
+        for s in wanted
+    }
 
 
 def _sensors_table(rows: list, info: dict) -> dict:
@@ -86,8 +95,10 @@ def _sensors_table(rows: list, info: dict) -> dict:
         if sensor not in sigma:
             sigma[sensor], kinds[sensor] = s, kind
         elif kinds[sensor] is not kind or not np.allclose(sigma[sensor], s, rtol=1e-9, equal_nan=True):
-            raise ValueError(f"sensor {sensor!r}: its detections carry different models or noise "
-                             f"({kinds[sensor].__name__} {sigma[sensor].tolist()} vs {kind.__name__} {s.tolist()})")
+            raise ValueError(
+                f"sensor {sensor!r}: its detections carry different models or noise "
+                f"({kinds[sensor].__name__} {sigma[sensor].tolist()} vs {kind.__name__} {s.tolist()})"
+            )
     ids = list(sigma)
     out = {"sensor": np.array(ids), "platform": np.array([info[s][0] for s in ids])}
     for k, c in enumerate(CHANNELS):
@@ -109,17 +120,30 @@ def _navigation_table(platform: np.ndarray, time: np.ndarray, nav: np.ndarray, s
             diff = np.abs(nav[i] - nav[j])
             diff[3] = abs(float((nav[i, 3] - nav[j, 3] + np.pi) % (2 * np.pi) - np.pi))
             if diff[:2].max() > SAME_NAV_POSITION or diff[2] > SAME_NAV_M or diff[3:].max() > SAME_NAV_ANGLE:
-                raise ValueError(f"platform {platform[i]!r} at {time[i]} s: sensors {sensor[j]!r} and {sensor[i]!r} "
-                                 f"imply different navigation (lever arms or orientations disagree): "
-                                 f"{nav[j].tolist()} vs {nav[i].tolist()}")
+                raise ValueError(
+                    f"platform {platform[i]!r} at {time[i]} s: sensors {sensor[j]!r} and {sensor[i]!r} "
+                    f"imply different navigation (lever arms or orientations disagree): "
+                    f"{nav[j].tolist()} vs {nav[i].tolist()}"
+                )
             continue
         keep.append(i)
     keep = np.array(keep, dtype=int)
-    return {"platform": platform[keep], "time": time[keep], **{c: nav[keep, k] for k, c in enumerate(NAV_COLUMNS)}}
+    return {
+        "platform": platform[keep],
+        "time": time[keep],
+        **{c: nav[keep, k] for k, c in enumerate(NAV_COLUMNS)},
+    }
 
 
-def detections_to_tables(detections: Iterable, frame: LocalFrame, sensors=None, epoch: datetime.datetime | None = None,
-                         *, sensor_key: str = "sensor", target_key: str = "target") -> dict:
+def detections_to_tables(
+    detections: Iterable,
+    frame: LocalFrame,
+    sensors=None,
+    epoch: datetime.datetime | None = None,
+    *,
+    sensor_key: str = "sensor",
+    target_key: str = "target",
+) -> dict:
     """The ``plots``, ``sensors`` and ``navigation`` tables (dicts of numpy columns, SI units,
     radians) of Stone Soup detections, and the ``epoch`` their times count from (default: the
     earliest detection).
@@ -141,7 +165,15 @@ def detections_to_tables(detections: Iterable, frame: LocalFrame, sensors=None, 
     lever = np.stack([info[s][1] for s in sensor])
     nav = frame.navigation(np.stack([p for p, _ in poses]), np.stack([o for _, o in poses]), lever)
     platform = np.array([info[s][0] for s in sensor])
-    plots = {"time": time, "sensor": sensor, "target": np.array([r[1] for r in rows]),
-             **{c: plot[:, k] for k, c in enumerate(CHANNELS)}}
-    return {"plots": plots, "sensors": _sensors_table(rows, info),
-            "navigation": _navigation_table(platform, time, nav, sensor), "epoch": epoch}
+    plots = {
+        "time": time,
+        "sensor": sensor,
+        "target": np.array([r[1] for r in rows]),
+        **{c: plot[:, k] for k, c in enumerate(CHANNELS)},
+    }
+    return {
+        "plots": plots,
+        "sensors": _sensors_table(rows, info),
+        "navigation": _navigation_table(platform, time, nav, sensor),
+        "epoch": epoch,
+    }

@@ -24,8 +24,6 @@ from __future__ import annotations
 import copy
 
 import numpy as np
-
-from registration.interop.requires import STONESOUP_VERSION
 from stonesoup.base import Property
 from stonesoup.buffered_generator import BufferedGenerator
 from stonesoup.feeder.base import DetectionFeeder
@@ -34,7 +32,15 @@ from stonesoup.types.array import CovarianceMatrix, StateVector
 from registration import _codegen
 from registration.core.angles import wrap_angle
 from registration.fleet.data.tables import ATTITUDE_ERRORS, CHANNELS, EXTENDED_ERRORS, read_table
-from registration.interop.convert import MODEL_CHANNELS, measured_plot, model_kind, model_pose, ss_covariance, ss_vector
+from registration.interop.convert import (
+    MODEL_CHANNELS,
+    measured_plot,
+    model_kind,
+    model_pose,
+    ss_covariance,
+    ss_vector,
+)
+from registration.interop.requires import STONESOUP_VERSION
 from registration.interop.world import LocalFrame
 
 __all__ = ["STONESOUP_VERSION", "RegistrationCorrector", "RegisteredDetectionFeeder"]
@@ -49,11 +55,20 @@ class RegistrationCorrector:
     field naming the sensor; ``registration_noise``: add ``J P J^T`` to the noise.
     """
 
-    def __init__(self, result, sensors, frame: LocalFrame, *, sensor_key: str = "sensor",
-                 registration_noise: bool = True):
+    def __init__(
+        self,
+        result,
+        sensors,
+        frame: LocalFrame,
+        *,
+        sensor_key: str = "sensor",
+        registration_noise: bool = True,
+    ):
         st = read_table("sensors", sensors, ("sensor", "platform"))
         lever = np.stack([st.floats(f"lever_{a}", default=0.0) for a in "xyz"], axis=1)
-        self._sensors = {s: (str(p), lever[k]) for k, (s, p) in enumerate(zip(st.ids("sensor"), st.ids("platform")))}
+        self._sensors = {
+            s: (str(p), lever[k]) for k, (s, p) in enumerate(zip(st.ids("sensor"), st.ids("platform")))
+        }
         self.result = result
         self.names = list(result.layout.names)
         self.refresh()
@@ -66,8 +81,10 @@ class RegistrationCorrector:
         estimate = np.asarray(self.result.estimate, dtype=float)
         covariance = np.asarray(self.result.covariance, dtype=float)
         if estimate.shape != (len(self.names),) or covariance.shape != (len(self.names),) * 2:
-            raise ValueError(f"result: estimate {estimate.shape} and covariance {covariance.shape} do not "
-                             f"match the layout's {len(self.names)} states")
+            raise ValueError(
+                f"result: estimate {estimate.shape} and covariance {covariance.shape} do not "
+                f"match the layout's {len(self.names)} states"
+            )
         self.estimate, self.covariance = estimate, covariance
 
     def states(self, sensor: str, kind: type) -> list:
@@ -75,23 +92,33 @@ class RegistrationCorrector:
         if sensor not in self._sensors:
             raise ValueError(f"sensor {sensor!r}: not in the sensors table (known: {sorted(self._sensors)})")
         if not any(n.startswith(f"{sensor}:") for n in self.names):
-            raise ValueError(f"sensor {sensor!r}: the registration result has no state of this sensor "
-                             f"(its states: {self.names})")
+            raise ValueError(
+                f"sensor {sensor!r}: the registration result has no state of this sensor "
+                f"(its states: {self.names})"
+            )
         platform = self._sensors[sensor][0]
         att = [f"{platform}:{a}_error" for a in ATTITUDE_ERRORS]
         missing = [n for n in att if n not in self.names]
         if missing:
-            raise ValueError(f"sensor {sensor!r}: the registration result has no {missing} of its platform {platform!r}")
-        extended = [n for n in self.names if n.split(":", 1)[0] == sensor and n.split(":", 1)[1] in EXTENDED_ERRORS]
+            raise ValueError(
+                f"sensor {sensor!r}: the registration result has no {missing} of its platform {platform!r}"
+            )
+        extended = [
+            n for n in self.names if n.split(":", 1)[0] == sensor and n.split(":", 1)[1] in EXTENDED_ERRORS
+        ]
         if extended:
-            raise ValueError(f"sensor {sensor!r}: the registration result models {extended}; the Stone Soup corrector "
-                             "applies attitude errors and biases only (range gain, time bias and position errors are "
-                             "not applied to detections yet): register this sensor without those columns")
+            raise ValueError(
+                f"sensor {sensor!r}: the registration result models {extended}; the Stone Soup corrector "
+                "applies attitude errors and biases only (range gain, time bias and position errors are "
+                "not applied to detections yet): register this sensor without those columns"
+            )
         bias = [f"{sensor}:{c}_bias" for c in CHANNELS]
         for name, measured in zip(bias, MODEL_CHANNELS[kind]):
             if measured and name not in self.names:
-                raise ValueError(f"sensor {sensor!r}: its {kind.__name__} measures the channel of {name!r}, "
-                                 "which the registration result does not hold")
+                raise ValueError(
+                    f"sensor {sensor!r}: its {kind.__name__} measures the channel of {name!r}, "
+                    "which the registration result does not hold"
+                )
         return [self.names.index(n) if n in self.names else None for n in att + bias]
 
     def _values(self, index: list) -> tuple[np.ndarray, np.ndarray]:
@@ -105,7 +132,9 @@ class RegistrationCorrector:
         """A copy of ``detection`` with the corrected measurement vector and measurement model."""
         sensor = detection.metadata.get(self.sensor_key)
         if sensor is None:
-            raise ValueError(f"detection at {detection.timestamp}: no metadata[{self.sensor_key!r}] naming its sensor")
+            raise ValueError(
+                f"detection at {detection.timestamp}: no metadata[{self.sensor_key!r}] naming its sensor"
+            )
         sensor = str(sensor)
         model = detection.measurement_model
         kind = model_kind(model, sensor)
@@ -126,8 +155,13 @@ class RegistrationCorrector:
         noise = np.asarray(model.covar(), dtype=float)
         if self.registration_noise:
             noise = noise + self._registration_noise(kind, sensor, index, nav, x, P, lever, measured)
-        new_model = kind(ndim_state=model.ndim_state, mapping=model.mapping, noise_covar=CovarianceMatrix(noise),
-                         translation_offset=StateVector(p_world[0][:size]), rotation_offset=StateVector(orientation[0]))
+        new_model = kind(
+            ndim_state=model.ndim_state,
+            mapping=model.mapping,
+            noise_covar=CovarianceMatrix(noise),
+            translation_offset=StateVector(p_world[0][:size]),
+            rotation_offset=StateVector(orientation[0]),
+        )
         out = copy.copy(detection)
         out.state_vector = ss_vector(kind, corrected)
         out.measurement_model = new_model
@@ -137,8 +171,10 @@ class RegistrationCorrector:
     def _registration_noise(self, kind, sensor, index, nav, x, P, lever, measured) -> np.ndarray:
         bad = [self.names[i] for k, i in enumerate(index) if i is not None and not np.isfinite(P[k]).all()]
         if bad:
-            raise ValueError(f"sensor {sensor!r}: the registration covariance of {bad} is not finite (the data do not "
-                             "determine them); pass registration_noise=False to correct without it")
+            raise ValueError(
+                f"sensor {sensor!r}: the registration covariance of {bad} is not finite (the data do not "
+                "determine them); pass registration_noise=False to correct without it"
+            )
         args = (*nav, x[:3], x[3:], lever, *measured)
         p_ecef = _codegen.get("fleet_plot2ecef")(*args)[0]
         J = _codegen.get("fleet_residual")(p_ecef, *args)[1][0][:, 3:9]
@@ -151,16 +187,25 @@ class RegisteredDetectionFeeder(DetectionFeeder):
     The result is read again before every scan, so a live online filter can be passed and updated
     while the tracker runs."""
 
-    result: object = Property(doc="Registration result: ``layout.names``, ``estimate`` (n,), ``covariance`` (n, n)")
+    result: object = Property(
+        doc="Registration result: ``layout.names``, ``estimate`` (n,), ``covariance`` (n, n)"
+    )
     sensors: object = Property(doc="Sensors table: sensor -> platform and lever arm (m, deck frame)")
     frame: LocalFrame = Property(doc="Stone Soup's world frame (registration.interop.world.LocalFrame)")
     sensor_key: str = Property(default="sensor", doc="Detection metadata field naming the sensor")
-    registration_noise: bool = Property(default=True, doc="Add the registration uncertainty J P J^T to the noise")
+    registration_noise: bool = Property(
+        default=True, doc="Add the registration uncertainty J P J^T to the noise"
+    )
 
     @BufferedGenerator.generator_method
     def data_gen(self):
-        corrector = RegistrationCorrector(self.result, self.sensors, self.frame, sensor_key=self.sensor_key,
-                                          registration_noise=self.registration_noise)
+        corrector = RegistrationCorrector(
+            self.result,
+            self.sensors,
+            self.frame,
+            sensor_key=self.sensor_key,
+            registration_noise=self.registration_noise,
+        )
         for time, detections in self.reader:
             corrector.refresh()  # a live result may have moved since the last scan
             yield time, {corrector.correct(detection) for detection in detections}

@@ -12,8 +12,10 @@ INSTALL_HINT = 'pip install stonesoup (from a checkout of this package: pip inst
 try:
     import stonesoup
 except ImportError as exc:  # pragma: no cover - exercised by a test that hides the package
-    raise ImportError("registration.interop.stonesoup needs Stone Soup (the 'stonesoup' package, version 1.9 or "
-                      f"later), which is not installed: {INSTALL_HINT}") from exc
+    raise ImportError(
+        "registration.interop.stonesoup needs Stone Soup (the 'stonesoup' package, version 1.9 or "
+        f"later), which is not installed: {INSTALL_HINT}"
+    ) from exc
 
 #: The installed Stone Soup version.
 STONESOUP_VERSION: str = getattr(stonesoup, "__version__", "unknown")

@@ -12,14 +12,34 @@ is minus the deck bearing; measurement vectors are (elevation, bearing, range) o
 
 from __future__ import annotations
 
-from registration.interop.requires import INSTALL_HINT, STONESOUP_VERSION
 from registration.interop.convert import (
-    EPOCH, MODEL_CHANNELS, POSITION_MAPPING, measured_plot, measurement_model, mounted_radar, tables_to_detections,
+    EPOCH,
+    MODEL_CHANNELS,
+    POSITION_MAPPING,
+    measured_plot,
+    measurement_model,
+    mounted_radar,
+    tables_to_detections,
 )
 from registration.interop.detections import detections_to_tables
 from registration.interop.feeder import RegisteredDetectionFeeder, RegistrationCorrector
+from registration.interop.requires import INSTALL_HINT, STONESOUP_VERSION
 from registration.interop.world import DECK2BODY, LocalFrame, orientation_rotation
 
-__all__ = ["DECK2BODY", "EPOCH", "INSTALL_HINT", "MODEL_CHANNELS", "POSITION_MAPPING", "STONESOUP_VERSION", "LocalFrame",
-           "RegisteredDetectionFeeder", "RegistrationCorrector", "detections_to_tables", "measured_plot",
-           "measurement_model", "mounted_radar", "orientation_rotation", "tables_to_detections"]
+__all__ = [
+    "DECK2BODY",
+    "EPOCH",
+    "INSTALL_HINT",
+    "MODEL_CHANNELS",
+    "POSITION_MAPPING",
+    "STONESOUP_VERSION",
+    "LocalFrame",
+    "RegisteredDetectionFeeder",
+    "RegistrationCorrector",
+    "detections_to_tables",
+    "measured_plot",
+    "measurement_model",
+    "mounted_radar",
+    "orientation_rotation",
+    "tables_to_detections",
+]

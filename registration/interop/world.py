@@ -24,7 +24,13 @@ from __future__ import annotations
 import numpy as np
 
 from registration.core.angles import wrap_angle
-from registration.core.frames import deck2enu_rotation, ecef2geodetic, enu2deck_attitude, enu2ecef_rotation, geodetic2ecef
+from registration.core.frames import (
+    deck2enu_rotation,
+    ecef2geodetic,
+    enu2deck_attitude,
+    enu2ecef_rotation,
+    geodetic2ecef,
+)
 from registration.core.validation import as_float_array
 
 __all__ = ["DECK2BODY", "LocalFrame", "orientation_rotation"]
@@ -119,9 +125,13 @@ class LocalFrame:
         rows (N, 6) = (lat, lon, alt, heading, pitch, roll) (rad, m) and its lever arm (deck, m)."""
         nav = _rows("navigation", navigation, 6)
         lever = _rows("lever_deck", lever_deck, 3)
-        R_ecef_deck = enu2ecef_rotation(nav[:, 0], nav[:, 1]) @ deck2enu_rotation(nav[:, 3], nav[:, 4], nav[:, 5])
+        R_ecef_deck = enu2ecef_rotation(nav[:, 0], nav[:, 1]) @ deck2enu_rotation(
+            nav[:, 3], nav[:, 4], nav[:, 5]
+        )
         p_ecef = geodetic2ecef(nav[:, 0], nav[:, 1], nav[:, 2]) + np.einsum("nij,nj->ni", R_ecef_deck, lever)
-        return self.ecef2world(p_ecef), self.orientation(nav[:, 0], nav[:, 1], nav[:, 3], nav[:, 4], nav[:, 5])
+        return self.ecef2world(p_ecef), self.orientation(
+            nav[:, 0], nav[:, 1], nav[:, 3], nav[:, 4], nav[:, 5]
+        )
 
     def navigation(self, p_world, orientation, lever_deck=(0.0, 0.0, 0.0)) -> np.ndarray:
         """The inverse of :meth:`sensor_pose`: navigation rows (N, 6) of sensors at world positions

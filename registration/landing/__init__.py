@@ -14,18 +14,56 @@ from registration.landing.geometry import LandingGeometry, deck_to_touchdown_rot
 from registration.landing.montecarlo import MonteCarloResult, default_bin_edges, monte_carlo, regroup
 from registration.landing.pipeline import LandingConfig, LandingResult, fusion_instants, process
 from registration.landing.scenario import (
-    Approach, CameraModel, LandingScenario, RadarModel, ShipMotion, default_geometry, default_scenario, with_overrides,
+    Approach,
+    CameraModel,
+    LandingScenario,
+    RadarModel,
+    ShipMotion,
+    default_geometry,
+    default_scenario,
+    with_overrides,
 )
 from registration.landing.simulation import LandingSimulation, run_once, simulate
-from registration.landing.transfer import CameraTransfer, RadarTransfer, transfer_camera, transfer_radar, variance_ratios
+from registration.landing.transfer import (
+    CameraTransfer,
+    RadarTransfer,
+    transfer_camera,
+    transfer_radar,
+    variance_ratios,
+)
 
 __all__ = [
     # fusion pipeline
-    "FUSION_METHODS", "CameraTransfer", "LandingConfig", "LandingGeometry", "LandingResult", "PositionEstimate",
-    "RadarTransfer", "combine", "deck_to_touchdown_rotation", "fusion_instants", "process", "radar_only",
-    "radar_to_touchdown", "transfer_camera", "transfer_radar", "variance_ratios",
+    "FUSION_METHODS",
+    "CameraTransfer",
+    "LandingConfig",
+    "LandingGeometry",
+    "LandingResult",
+    "PositionEstimate",
+    "RadarTransfer",
+    "combine",
+    "deck_to_touchdown_rotation",
+    "fusion_instants",
+    "process",
+    "radar_only",
+    "radar_to_touchdown",
+    "transfer_camera",
+    "transfer_radar",
+    "variance_ratios",
     # simulated approach and Monte Carlo
-    "Approach", "CameraModel", "LandingScenario", "LandingSimulation", "MonteCarloResult", "RadarModel", "ShipMotion",
-    "default_bin_edges", "default_geometry", "default_scenario", "monte_carlo", "regroup", "run_once", "simulate",
+    "Approach",
+    "CameraModel",
+    "LandingScenario",
+    "LandingSimulation",
+    "MonteCarloResult",
+    "RadarModel",
+    "ShipMotion",
+    "default_bin_edges",
+    "default_geometry",
+    "default_scenario",
+    "monte_carlo",
+    "regroup",
+    "run_once",
+    "simulate",
     "with_overrides",
 ]

@@ -103,11 +103,7 @@ def _weighted_angles(
 
 
 def combine(
-    radar: RadarTransfer,
-    camera: CameraTransfer,
-    attitude,
-    geometry: LandingGeometry,
-    method: str = "paper",
+    radar: RadarTransfer, camera: CameraTransfer, attitude, geometry: LandingGeometry, method: str = "paper"
 ) -> PositionEstimate:
     """Combine the transferred radar point with the transferred camera angles (eq. 12).
 
@@ -132,7 +128,9 @@ def combine(
     z_c, P_c = camera.angles_ctd, camera.P_ctd
     n = x_r.shape[0]
     if z_c.shape[0] != n:
-        raise ValueError(f"camera: has {z_c.shape[0]} instants but radar has {n}; align them to the same instants first")
+        raise ValueError(
+            f"camera: has {z_c.shape[0]} instants but radar has {n}; align them to the same instants first"
+        )
     att = as_attitude(attitude)
     innov = wrap_angle(z_c - x_r[:, 1:])  # camera minus radar angles, (N, 2)
     if method == "information":
@@ -141,4 +139,6 @@ def combine(
         x, P, w = _weighted_angles(method, x_r, P_r, innov, P_c)
     x[:, 1] = wrap_angle(x[:, 1])
     p_td, J = _codegen.get("landing_ctd2td")(x, att, geometry.angled_deck_rad, geometry.d_camera_deck_m)
-    return PositionEstimate(method=method, polar_ctd=x, P_polar=P, p_td=p_td, P_td=propagate_covariance(J, P), weights=w)
+    return PositionEstimate(
+        method=method, polar_ctd=x, P_polar=P, p_td=p_td, P_td=propagate_covariance(J, P), weights=w
+    )

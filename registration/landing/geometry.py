@@ -81,5 +81,7 @@ def radar_to_touchdown(polar_rdr, attitude, geometry: LandingGeometry) -> tuple[
     pol = as_polar("polar_rdr", polar_rdr, 3)
     att = as_attitude(attitude)
     common_count(polar_rdr=pol, attitude=att)
-    p_td, _, _, _, J = _codegen.get("landing_radar2td")(pol, att, geometry.angled_deck_rad, geometry.d_radar_deck_m)
+    p_td, _, _, _, J = _codegen.get("landing_radar2td")(
+        pol, att, geometry.angled_deck_rad, geometry.d_radar_deck_m
+    )
     return p_td, J

@@ -25,7 +25,9 @@ def as_attitude(attitude) -> np.ndarray:
     if att.ndim == 1:
         att = att.reshape(1, 3) if att.shape == (3,) else att
     if att.ndim != 2 or att.shape[1] != 3:
-        raise ValueError(f"attitude: expected shape (3,) or (N, 3) [yaw, pitch, roll] in rad, got {att.shape}")
+        raise ValueError(
+            f"attitude: expected shape (3,) or (N, 3) [yaw, pitch, roll] in rad, got {att.shape}"
+        )
     check_range("attitude", att, -np.pi / 2, np.pi / 2, "rad ([yaw deviation, pitch, roll])", angle=True)
     return att
 
@@ -57,12 +59,16 @@ def as_covariance(name: str, value, n: int, width: int) -> np.ndarray:
     if P.shape == (width, width):
         P = np.broadcast_to(P, (n, width, width))
     if P.shape != (n, width, width):
-        raise ValueError(f"{name}: expected shape ({width}, {width}) or ({n}, {width}, {width}), got {P.shape}")
+        raise ValueError(
+            f"{name}: expected shape ({width}, {width}) or ({n}, {width}, {width}), got {P.shape}"
+        )
     check_finite(name, P, "m^2 / rad^2")
     diag = np.diagonal(P, axis1=1, axis2=2)
     if (diag <= 0).any():
         i = tuple(int(v) for v in np.argwhere(diag <= 0)[0])
-        raise ValueError(f"{name}: variance at (point, component) {i} must be > 0 (units m^2 for range, rad^2 for angles)")
+        raise ValueError(
+            f"{name}: variance at (point, component) {i} must be > 0 (units m^2 for range, rad^2 for angles)"
+        )
     return np.asarray(P, dtype=np.float64)
 
 

@@ -179,9 +179,18 @@ def monte_carlo(
             example = _example(res, truth, methods)
     att = scenario.attitude(truth.t)
     return MonteCarloResult(
-        bin_edges_m=edges, methods=methods, sse=sse, count=truth.onehot.sum(axis=0), nees_sum=nees_sum,
-        polar_sse=polar_sse, t=truth.t, range_m=truth.range_m, example=example,
-        ratios=_noise_free_ratios(scenario, truth.t, att), attitude=att, runs=runs,
+        bin_edges_m=edges,
+        methods=methods,
+        sse=sse,
+        count=truth.onehot.sum(axis=0),
+        nees_sum=nees_sum,
+        polar_sse=polar_sse,
+        t=truth.t,
+        range_m=truth.range_m,
+        example=example,
+        ratios=_noise_free_ratios(scenario, truth.t, att),
+        attitude=att,
+        runs=runs,
     )
 
 

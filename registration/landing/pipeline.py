@@ -76,8 +76,14 @@ class LandingResult:
 
 def fusion_instants(t_radar: np.ndarray, t_camera: np.ndarray, config: LandingConfig) -> np.ndarray:
     """A uniform grid (s, reference clock) at ``fusion_rate_hz`` inside both sensors' coverage."""
-    lo = max(t_radar[0] - config.radar_clock_offset_s, t_camera[0] - config.camera_clock_offset_s) + config.half_window_s
-    hi = min(t_radar[-1] - config.radar_clock_offset_s, t_camera[-1] - config.camera_clock_offset_s) - config.half_window_s
+    lo = (
+        max(t_radar[0] - config.radar_clock_offset_s, t_camera[0] - config.camera_clock_offset_s)
+        + config.half_window_s
+    )
+    hi = (
+        min(t_radar[-1] - config.radar_clock_offset_s, t_camera[-1] - config.camera_clock_offset_s)
+        - config.half_window_s
+    )
     if hi <= lo:
         raise ValueError(
             f"sensor data overlap too short: [{lo:.3f}, {hi:.3f}] s after removing half_window_s = {config.half_window_s} s at each end"
@@ -92,7 +98,9 @@ def _runs_first(name: str, value, width: int, n_t: int) -> np.ndarray:
     if arr.ndim == 2:
         arr = arr[None]
     if arr.ndim != 3 or arr.shape[1:] != (n_t, width):
-        raise ValueError(f"{name}: expected shape ({n_t}, {width}) or (R, {n_t}, {width}) to match its timestamps, got {arr.shape}")
+        raise ValueError(
+            f"{name}: expected shape ({n_t}, {width}) or (R, {n_t}, {width}) to match its timestamps, got {arr.shape}"
+        )
     return arr
 
 
@@ -109,14 +117,21 @@ def _check_tracks(t_radar, polar_rdr, sigma_rdr, t_camera, angles_cam, sigma_cam
     s_r = as_float_array("sigma_rdr", sigma_rdr)
     s_c = as_float_array("sigma_cam", sigma_cam)
     if s_r.shape != (3,) or s_c.shape != (2,):
-        raise ValueError(f"sigma_rdr: expected 3 values [m, rad, rad], sigma_cam 2 values [rad, rad]; got {s_r.shape}, {s_c.shape}")
+        raise ValueError(
+            f"sigma_rdr: expected 3 values [m, rad, rad], sigma_cam 2 values [rad, rad]; got {s_r.shape}, {s_c.shape}"
+        )
     check_positive("sigma_rdr", s_r, "[m, rad, rad]")
     check_positive("sigma_cam", s_c, "[rad, rad]")
     return t_r, pol, s_r, t_c, ang, s_c
 
 
 def _align_runs(
-    what: str, t: np.ndarray, runs_y: np.ndarray, tau: np.ndarray, clock_offset_s: float, angle_column: int,
+    what: str,
+    t: np.ndarray,
+    runs_y: np.ndarray,
+    tau: np.ndarray,
+    clock_offset_s: float,
+    angle_column: int,
     config: LandingConfig,
 ) -> AlignedSamples:
     """Align R runs (R, n, k) sharing one clock at ``tau``, the runs as extra columns (one fit per
@@ -125,9 +140,15 @@ def _align_runs(
     runs, n, k = runs_y.shape
     try:
         return align(
-            t, runs_y.transpose(1, 0, 2).reshape(n, runs * k), tau,
-            degree=config.degree, half_window_s=config.half_window_s, max_extrapolation_s=config.max_extrapolation_s,
-            clock_offset_s=clock_offset_s, angle_columns=list(range(angle_column, runs * k, k)), strict=False,
+            t,
+            runs_y.transpose(1, 0, 2).reshape(n, runs * k),
+            tau,
+            degree=config.degree,
+            half_window_s=config.half_window_s,
+            max_extrapolation_s=config.max_extrapolation_s,
+            clock_offset_s=clock_offset_s,
+            angle_columns=list(range(angle_column, runs * k, k)),
+            strict=False,
         )
     except ValueError as exc:
         raise ValueError(f"{what}: {exc}") from exc
@@ -170,16 +191,34 @@ def process(
     ``variance_factor`` (white noise), so the weights account for how many samples each sensor
     contributed. Instants that either sensor cannot evaluate are dropped (see ``t``).
     """
-    t_r, pol, s_r, t_c, ang, s_c = _check_tracks(t_radar, polar_rdr, sigma_rdr, t_camera, angles_cam, sigma_cam)
+    t_r, pol, s_r, t_c, ang, s_c = _check_tracks(
+        t_radar, polar_rdr, sigma_rdr, t_camera, angles_cam, sigma_cam
+    )
     runs = pol.shape[0]
     tau = fusion_instants(t_r, t_c, config) if t_fusion is None else as_float_array("t_fusion", t_fusion)
-    ra = _align_runs("radar track (t = t_radar, y = polar_rdr as columns [r, a, b] per run)",
-                     t_r, pol, tau, config.radar_clock_offset_s, 1, config)
-    ca = _align_runs("camera track (t = t_camera, y = angles_cam as columns [a, b] per run)",
-                     t_c, ang, tau, config.camera_clock_offset_s, 0, config)
+    ra = _align_runs(
+        "radar track (t = t_radar, y = polar_rdr as columns [r, a, b] per run)",
+        t_r,
+        pol,
+        tau,
+        config.radar_clock_offset_s,
+        1,
+        config,
+    )
+    ca = _align_runs(
+        "camera track (t = t_camera, y = angles_cam as columns [a, b] per run)",
+        t_c,
+        ang,
+        tau,
+        config.camera_clock_offset_s,
+        0,
+        config,
+    )
     ok = ra.valid & ca.valid
     if not ok.any():
-        raise ValueError("no fusion instant can be evaluated by both sensors; check the timestamps and window")
+        raise ValueError(
+            "no fusion instant can be evaluated by both sensors; check the timestamps and window"
+        )
     tau = tau[ok]
     att_m = as_attitude(attitude_fn(tau))
     if att_m.shape != (tau.size, 3):
@@ -190,9 +229,18 @@ def process(
     radar = transfer_radar(_run_major(ra.y[ok], runs, 3), P_r, att, geometry)
     camera = transfer_camera(_run_major(ca.y[ok], runs, 2), P_c, att, geometry)
     estimates = {
-        method: radar_only(radar, att, geometry) if method == "radar" else combine(radar, camera, att, geometry, method)
+        method: radar_only(radar, att, geometry)
+        if method == "radar"
+        else combine(radar, camera, att, geometry, method)
         for method in config.methods
     }
     return LandingResult(
-        t=tau, attitude=att_m, runs=runs, radar_aligned=ra, camera_aligned=ca, radar=radar, camera=camera, estimates=estimates
+        t=tau,
+        attitude=att_m,
+        runs=runs,
+        radar_aligned=ra,
+        camera_aligned=ca,
+        radar=radar,
+        camera=camera,
+        estimates=estimates,
     )

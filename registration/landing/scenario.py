@@ -46,7 +46,9 @@ class ShipMotion:
         for name in ("yaw_amplitude_rad", "pitch_amplitude_rad", "roll_amplitude_rad"):
             v = getattr(self, name)
             if not 0 <= v < np.pi / 4:
-                raise ValueError(f"{name}: expected 0 <= amplitude < pi/4 rad, got {v!r} (degrees passed as radians?)")
+                raise ValueError(
+                    f"{name}: expected 0 <= amplitude < pi/4 rad, got {v!r} (degrees passed as radians?)"
+                )
         if not self.speed_mps >= 0:
             raise ValueError(f"speed_mps: expected >= 0 m/s, got {self.speed_mps!r}")
 
@@ -116,17 +118,23 @@ class Approach:
         if not 0 <= self.glide_slope_rad < np.radians(30):
             raise ValueError(f"glide_slope_rad: expected [0, 0.52) rad, got {self.glide_slope_rad!r}")
         if not self.start_range_m > self.end_range_m >= 0:
-            raise ValueError(f"start_range_m > end_range_m >= 0 (m) required, got {self.start_range_m!r}, {self.end_range_m!r}")
+            raise ValueError(
+                f"start_range_m > end_range_m >= 0 (m) required, got {self.start_range_m!r}, {self.end_range_m!r}"
+            )
         if not self.ground_speed_mps > 0:
             raise ValueError(f"ground_speed_mps: expected > 0 m/s, got {self.ground_speed_mps!r}")
 
 
-def default_geometry(angled_deck_rad: float = float(np.radians(9.0)), camera_ahead_m: float = 25.0) -> LandingGeometry:
+def default_geometry(
+    angled_deck_rad: float = float(np.radians(9.0)), camera_ahead_m: float = 25.0
+) -> LandingGeometry:
     """The default deck layout (deck frame, m from the motion centre): touchdown point
     (-8, -105, 20), radar (38, -40, 35), camera ``camera_ahead_m`` forward of the touchdown point
     on the angled-deck centreline."""
     l_td = np.array([-8.0, -105.0, 20.0])
-    R_td_deck0 = deck_to_touchdown_rotation(np.zeros(3), LandingGeometry(angled_deck_rad, l_td, l_td, l_td))[0]
+    R_td_deck0 = deck_to_touchdown_rotation(np.zeros(3), LandingGeometry(angled_deck_rad, l_td, l_td, l_td))[
+        0
+    ]
     forward_deck = R_td_deck0.T @ np.array([-1.0, 0.0, 0.0])  # -x_td: forward along the angled deck
     return LandingGeometry(
         angled_deck_rad=angled_deck_rad,
@@ -192,7 +200,9 @@ class LandingScenario:
     def _moved(self, function: str, position, t, lever_arm_m: np.ndarray) -> np.ndarray:
         """The generated ``function`` applied to ``position(t)`` with the attitude at true times t (s)."""
         t = np.atleast_1d(np.asarray(t, dtype=float))
-        return _codegen.get(function)(position(t), self.attitude(t), self.geometry.angled_deck_rad, lever_arm_m)[0]
+        return _codegen.get(function)(
+            position(t), self.attitude(t), self.geometry.angled_deck_rad, lever_arm_m
+        )[0]
 
     def truth_td(self, t) -> np.ndarray:
         """Aircraft position (N, 3), m, in the touchdown frame (which moves with the deck)."""
@@ -212,7 +222,9 @@ class LandingScenario:
 
     def config(self, **overrides) -> LandingConfig:
         """A processing configuration that knows this scenario's clock offsets (calibrated clocks)."""
-        base = dict(radar_clock_offset_s=self.radar.clock_offset_s, camera_clock_offset_s=self.camera.clock_offset_s)
+        base = dict(
+            radar_clock_offset_s=self.radar.clock_offset_s, camera_clock_offset_s=self.camera.clock_offset_s
+        )
         base.update(overrides)
         return LandingConfig(**base)
 

@@ -40,7 +40,9 @@ def _sample_times(rate_hz: float, first_s: float, duration_s: float) -> np.ndarr
     return first_s + np.arange(n) / rate_hz
 
 
-def simulate(scenario: LandingScenario, runs: int = 1, rng: np.random.Generator | int | None = 0) -> LandingSimulation:
+def simulate(
+    scenario: LandingScenario, runs: int = 1, rng: np.random.Generator | int | None = 0
+) -> LandingSimulation:
     """Simulate ``runs`` independent noise realisations of the scenario's approach."""
     if not (isinstance(runs, (int, np.integer)) and runs >= 1):
         raise ValueError(f"runs: expected an integer >= 1, got {runs!r}")
@@ -67,6 +69,13 @@ def run_once(sim: LandingSimulation, config: LandingConfig) -> LandingResult:
     """Process one simulation (all its runs) with ``config``."""
     sc = sim.scenario
     return process(
-        sim.t_radar, sim.polar_rdr, sc.radar.sigma, sim.t_camera, sim.angles_cam, sc.camera.sigma,
-        sc.attitude, sc.geometry, config,
+        sim.t_radar,
+        sim.polar_rdr,
+        sc.radar.sigma,
+        sim.t_camera,
+        sim.angles_cam,
+        sc.camera.sigma,
+        sc.attitude,
+        sc.geometry,
+        config,
     )

@@ -76,7 +76,14 @@ def transfer_radar(polar_rdr, P_rdr, attitude, geometry: LandingGeometry) -> Rad
     _, B = _codegen.get("landing_td2ctd")(p_td, att, phic, d_c)
     polar_ctd, BMA = _codegen.get("landing_radar2ctd")(pol, att, phic, d_r, d_c)
     return RadarTransfer(
-        polar_rdr=pol, polar_ctd=polar_ctd, P_ctd=propagate_covariance(BMA, P), P_rdr=P, A=A, M=M, B=B, BMA=BMA,
+        polar_rdr=pol,
+        polar_ctd=polar_ctd,
+        P_ctd=propagate_covariance(BMA, P),
+        P_rdr=P,
+        A=A,
+        M=M,
+        B=B,
+        BMA=BMA,
         p_td=p_td,
     )
 

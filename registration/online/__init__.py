@@ -8,10 +8,27 @@ Cramér-Rao bound. Modules: ``contract`` (state, row layout, limits, checks), ``
 """
 
 from registration.online.batch import register
-from registration.online.config import DEFAULT_LINEARIZATION, LINEARIZATIONS, Q_MODES, T_VARIANTS, RegistrationConfig
+from registration.online.config import (
+    DEFAULT_LINEARIZATION,
+    LINEARIZATIONS,
+    Q_MODES,
+    T_VARIANTS,
+    RegistrationConfig,
+)
 from registration.online.contract import validate_data
 from registration.online.filter import OnlineRegistrar
 from registration.online.result import RegistrationResult, difference_statistics, estimate_rows
 
-__all__ = ["DEFAULT_LINEARIZATION", "LINEARIZATIONS", "Q_MODES", "T_VARIANTS", "OnlineRegistrar", "RegistrationConfig",
-           "RegistrationResult", "difference_statistics", "estimate_rows", "register", "validate_data"]
+__all__ = [
+    "DEFAULT_LINEARIZATION",
+    "LINEARIZATIONS",
+    "Q_MODES",
+    "T_VARIANTS",
+    "OnlineRegistrar",
+    "RegistrationConfig",
+    "RegistrationResult",
+    "difference_statistics",
+    "estimate_rows",
+    "register",
+    "validate_data",
+]

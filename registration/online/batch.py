@@ -29,12 +29,14 @@ def _run_filter(registrar: OnlineRegistrar, time: np.ndarray, rows: np.ndarray, 
     parts = []
     with tqdm(total=k, desc="registering", unit="row") as bar:
         for s in range(0, k, _PROGRESS_BLOCK):
-            parts.append(registrar.update_block(rows[s:s + _PROGRESS_BLOCK], time[s:s + _PROGRESS_BLOCK]))
+            parts.append(registrar.update_block(rows[s : s + _PROGRESS_BLOCK], time[s : s + _PROGRESS_BLOCK]))
             bar.update(parts[-1]["n"])
     return {key: np.concatenate([p[key] for p in parts]) for key in ("x", "P", "nu", "S", "nis")}
 
 
-def register(data: Mapping, config: RegistrationConfig | None = None, *, progress: bool = False) -> RegistrationResult:
+def register(
+    data: Mapping, config: RegistrationConfig | None = None, *, progress: bool = False
+) -> RegistrationResult:
     """Run the registration filter over a whole data set (batch).
 
     ``data``: dict of arrays or pandas DataFrame following the data contract (``time`` in s and
@@ -50,11 +52,22 @@ def register(data: Mapping, config: RegistrationConfig | None = None, *, progres
     raw_a, raw_b = target_positions(rows, config.t_variant)
     corrected_a, corrected_b = target_positions(correct_rows(rows, estimates), config.t_variant)
     info_final, _ = information_at_estimate(rows, estimates[-1], config.sigma0, config.t_variant)
-    report = observability_report(info_final, np.array(config.prior_sigma), STATE_NAMES, STATE_LABELS, STATE_UNITS)
+    report = observability_report(
+        info_final, np.array(config.prior_sigma), STATE_NAMES, STATE_LABELS, STATE_UNITS
+    )
     return RegistrationResult(
-        config=config, time=time, estimates=estimates, covariances=out["P"], innovations=out["nu"],
-        innovation_covariances=out["S"], nis=out["nis"], information=registrar.info, information_at_estimate=info_final,
-        raw_difference_ecef=raw_a - raw_b, corrected_difference_ecef=corrected_a - corrected_b,
-        corrected_a_ecef=corrected_a, corrected_b_ecef=corrected_b,
+        config=config,
+        time=time,
+        estimates=estimates,
+        covariances=out["P"],
+        innovations=out["nu"],
+        innovation_covariances=out["S"],
+        nis=out["nis"],
+        information=registrar.info,
+        information_at_estimate=info_final,
+        raw_difference_ecef=raw_a - raw_b,
+        corrected_difference_ecef=corrected_a - corrected_b,
+        corrected_a_ecef=corrected_a,
+        corrected_b_ecef=corrected_b,
         observability=report,
     )

@@ -13,7 +13,14 @@ import numpy as np
 from registration import _codegen
 from registration.online.contract import N_STATE
 
-__all__ = ["RegistrationConfig", "COVARIANCE_UPDATES", "LINEARIZATIONS", "DEFAULT_LINEARIZATION", "Q_MODES", "T_VARIANTS"]
+__all__ = [
+    "RegistrationConfig",
+    "COVARIANCE_UPDATES",
+    "LINEARIZATIONS",
+    "DEFAULT_LINEARIZATION",
+    "Q_MODES",
+    "T_VARIANTS",
+]
 
 LINEARIZATIONS = _codegen.variants("linearization")
 DEFAULT_LINEARIZATION = "fitted"
@@ -55,7 +62,14 @@ class RegistrationConfig:
     """
 
     sigma0: tuple = (50.0, np.radians(0.5), np.radians(0.5), 50.0, np.radians(0.5), np.radians(0.5))
-    prior_sigma: tuple = (np.radians(0.5), np.radians(0.2), np.radians(0.2), 2000.0, np.radians(1.0), np.radians(1.0)) * 2
+    prior_sigma: tuple = (
+        np.radians(0.5),
+        np.radians(0.2),
+        np.radians(0.2),
+        2000.0,
+        np.radians(1.0),
+        np.radians(1.0),
+    ) * 2
     x0: tuple | None = None
     q_mode: str = "fixed"
     q_sigma: tuple = (1e-6, 1e-6, 1e-6, 0.01, 1e-6, 1e-6) * 2
@@ -68,7 +82,9 @@ class RegistrationConfig:
         self.sigma0 = _sigmas("sigma0", self.sigma0, 6, zero_ok=False, what="[m, rad, rad, m, rad, rad]")
         if max(self.sigma0[i] for i in (1, 2, 4, 5)) > 0.35:
             raise ValueError("sigma0: angle sigmas above 20 deg; pass radians, not degrees")
-        self.prior_sigma = _sigmas("prior_sigma", self.prior_sigma, N_STATE, zero_ok=False, what="rad or m, STATE_NAMES order")
+        self.prior_sigma = _sigmas(
+            "prior_sigma", self.prior_sigma, N_STATE, zero_ok=False, what="rad or m, STATE_NAMES order"
+        )
         self.q_sigma = _sigmas("q_sigma", self.q_sigma, N_STATE, zero_ok=True, what="rad or m per step")
         if self.x0 is not None:
             self.x0 = tuple(float(v) for v in self.x0)

@@ -19,23 +19,58 @@ from registration.core.angles import wrap_angle
 from registration.core.validation import ALTITUDE_LIMITS_M, degree_hint
 
 __all__ = [
-    "STATE_NAMES", "STATE_LABELS", "STATE_UNITS", "IS_ANGLE", "N_STATE", "SENSORS", "SENSOR_COLUMNS", "DATA_COLUMNS",
-    "ROW_COLUMNS", "N_ROW", "SENSOR_ROW", "SENSOR_STATE", "NAV", "ATTITUDE", "PLOT", "LIMITS",
-    "PROBLEM_OK", "PROBLEM_NON_FINITE", "PROBLEM_OUT_OF_RANGE", "PROBLEM_NON_POSITIVE",
-    "cell_problems", "check_rows", "check_times", "row_error", "validate_data", "row_from_mapping", "correct_rows",
-    "to_display", "display_unit",
+    "STATE_NAMES",
+    "STATE_LABELS",
+    "STATE_UNITS",
+    "IS_ANGLE",
+    "N_STATE",
+    "SENSORS",
+    "SENSOR_COLUMNS",
+    "DATA_COLUMNS",
+    "ROW_COLUMNS",
+    "N_ROW",
+    "SENSOR_ROW",
+    "SENSOR_STATE",
+    "NAV",
+    "ATTITUDE",
+    "PLOT",
+    "LIMITS",
+    "PROBLEM_OK",
+    "PROBLEM_NON_FINITE",
+    "PROBLEM_OUT_OF_RANGE",
+    "PROBLEM_NON_POSITIVE",
+    "cell_problems",
+    "check_rows",
+    "check_times",
+    "row_error",
+    "validate_data",
+    "row_from_mapping",
+    "correct_rows",
+    "to_display",
+    "display_unit",
 ]
 
 #: The radars of a row, in order, and the prefixes of their columns.
 SENSORS = ("a", "b")
 #: State order: per sensor, attitude errors then radar biases.
 STATE_NAMES = (
-    "dC_a", "dphi_a", "dtheta_a", "dr_a", "dq_a", "de_a",
-    "dC_b", "dphi_b", "dtheta_b", "dr_b", "dq_b", "de_b",
+    "dC_a",
+    "dphi_a",
+    "dtheta_a",
+    "dr_a",
+    "dq_a",
+    "de_a",
+    "dC_b",
+    "dphi_b",
+    "dtheta_b",
+    "dr_b",
+    "dq_b",
+    "de_b",
 )
 N_STATE = len(STATE_NAMES)
 STATE_LABELS = tuple(
-    f"{lab} {s.upper()}" for s in SENSORS
+    f"{lab} {s.upper()}"
+    for s in SENSORS
     for lab in ("heading error", "pitch error", "roll error", "range bias", "bearing bias", "elevation bias")
 )
 #: True where the state is an angle (radians); the others are ranges (metres).
@@ -84,7 +119,9 @@ def cell_problems(block: np.ndarray) -> np.ndarray:
     with np.errstate(invalid="ignore"):
         out_of_range = (block < _LOW) | (block > _HIGH)
         non_positive = _IS_RANGE & (block <= 0)
-    codes = np.where(non_positive, PROBLEM_NON_POSITIVE, np.where(out_of_range, PROBLEM_OUT_OF_RANGE, PROBLEM_OK)).astype(np.int8)
+    codes = np.where(
+        non_positive, PROBLEM_NON_POSITIVE, np.where(out_of_range, PROBLEM_OUT_OF_RANGE, PROBLEM_OK)
+    ).astype(np.int8)
     codes[~np.isfinite(block)] = PROBLEM_NON_FINITE
     return codes
 
@@ -121,8 +158,12 @@ def check_times(times: np.ndarray, first_row: int = 0, previous: float | None = 
     prev = np.concatenate([[-np.inf if previous is None else previous], times[:-1]])
     if (times <= prev).any():
         r = int(np.argmax(times <= prev))
-        raise row_error(first_row + r, "time", float(times[r]),
-                        f"does not increase (previous: {prev[r]!r}); timestamps must be strictly increasing")
+        raise row_error(
+            first_row + r,
+            "time",
+            float(times[r]),
+            f"does not increase (previous: {prev[r]!r}); timestamps must be strictly increasing",
+        )
 
 
 def validate_data(data: Mapping) -> tuple[np.ndarray, np.ndarray]:
@@ -134,8 +175,10 @@ def validate_data(data: Mapping) -> tuple[np.ndarray, np.ndarray]:
     """
     missing = [c for c in DATA_COLUMNS if c not in data]
     if missing:
-        raise ValueError(f"missing column(s) {missing}; expected {list(DATA_COLUMNS)} (SI units, radians)"
-                         + _file_columns_hint(data))
+        raise ValueError(
+            f"missing column(s) {missing}; expected {list(DATA_COLUMNS)} (SI units, radians)"
+            + _file_columns_hint(data)
+        )
     cols = []
     for name in DATA_COLUMNS:
         try:
@@ -143,12 +186,16 @@ def validate_data(data: Mapping) -> tuple[np.ndarray, np.ndarray]:
         except (TypeError, ValueError) as exc:
             raise ValueError(f"column {name!r}: expected numbers ({exc})") from exc
         if cols[-1].ndim != 1:
-            raise ValueError(f"column {name!r}: expected a 1-D array with one value per row, got "
-                             + ("a single value" if cols[-1].ndim == 0 else f"shape {cols[-1].shape}"))
+            raise ValueError(
+                f"column {name!r}: expected a 1-D array with one value per row, got "
+                + ("a single value" if cols[-1].ndim == 0 else f"shape {cols[-1].shape}")
+            )
     k = cols[0].shape
     for name, col in zip(DATA_COLUMNS, cols):
         if col.shape != k:
-            raise ValueError(f"column {name!r}: {col.shape[0]} values, but 'time' has {k[0]}; one value per row")
+            raise ValueError(
+                f"column {name!r}: {col.shape[0]} values, but 'time' has {k[0]}; one value per row"
+            )
     if k[0] == 0:
         raise ValueError("data has no rows")
     time = cols[0]
@@ -162,8 +209,10 @@ def _file_columns_hint(data) -> str:
     """A pointer to the file reader when ``data`` carries file column names (``*_deg``, ``*_m``, ``time_s``)."""
     names = [str(c) for c in (data.columns if hasattr(data, "columns") else data)]
     if any(n.endswith(("_deg", "_m")) or n == "time_s" for n in names):
-        return ("; these are the file columns (degrees, metres): read the file with "
-                "registration.recorded.read_table(path), which converts them to this contract")
+        return (
+            "; these are the file columns (degrees, metres): read the file with "
+            "registration.recorded.read_table(path), which converts them to this contract"
+        )
     return ""
 
 
@@ -205,7 +254,9 @@ def row_from_mapping(row: Mapping | np.ndarray) -> np.ndarray:
     if isinstance(row, (np.ndarray, list, tuple)):
         arr = np.asarray(row, dtype=np.float64)
         if arr.shape != (N_ROW,):
-            raise ValueError(f"row: expected {N_ROW} values in contract order (a_lat ... b_elevation), got shape {arr.shape}")
+            raise ValueError(
+                f"row: expected {N_ROW} values in contract order (a_lat ... b_elevation), got shape {arr.shape}"
+            )
         return arr
     values = _plain_row(row)
     if values is not None:
@@ -220,7 +271,9 @@ def row_from_mapping(row: Mapping | np.ndarray) -> np.ndarray:
         except (TypeError, ValueError) as exc:
             raise ValueError(f"row: column {c!r}: expected a number ({exc})") from exc
         if cell.size != 1:
-            raise ValueError(f"row: column {c!r} holds {cell.size} values; update() takes one row (use update_block for several)")
+            raise ValueError(
+                f"row: column {c!r} holds {cell.size} values; update() takes one row (use update_block for several)"
+            )
         values[j] = cell[0]
     return values
 
@@ -230,7 +283,7 @@ def correct_rows(rows: np.ndarray, estimates: np.ndarray) -> np.ndarray:
     out = np.array(rows, dtype=np.float64)
     for s in SENSORS:
         cols = out[:, SENSOR_ROW[s]]
-        cols[:, ATTITUDE.start:] -= estimates[:, SENSOR_STATE[s]]
+        cols[:, ATTITUDE.start :] -= estimates[:, SENSOR_STATE[s]]
         cols[:, 7] = wrap_angle(cols[:, 7])
     return out
 

@@ -19,8 +19,15 @@ from registration.online.config import RegistrationConfig
 from registration.online.mcresult import MonteCarloResult
 from registration.online.montecarlo import collect_runs, parse_sum, summarise_runs
 
-__all__ = ["DEFAULT_CHUNK_RUNS", "ChunkTask", "MonteCarloJob", "collect_chunk", "merge_runs", "run_montecarlo_chunked",
-           "run_montecarlo_jobs"]
+__all__ = [
+    "DEFAULT_CHUNK_RUNS",
+    "ChunkTask",
+    "MonteCarloJob",
+    "collect_chunk",
+    "merge_runs",
+    "run_montecarlo_chunked",
+    "run_montecarlo_jobs",
+]
 
 #: Runs per chunk by default: large enough that one chunk's compiled batch dominates its overhead.
 DEFAULT_CHUNK_RUNS = 100
@@ -88,17 +95,25 @@ class MonteCarloJob:
             raise ValueError(f"runs: need at least 2 Monte Carlo runs, got {self.runs}")
         if "seed" in self.scenario_kwargs:
             raise ValueError("pass the first seed as seed0, not in the scenario arguments")
-        return [ChunkTask(a, b, self.config, dict(self.scenario_kwargs))
-                for a, b in chunk_ranges(int(self.runs), chunk_runs, int(self.seed0))]
+        return [
+            ChunkTask(a, b, self.config, dict(self.scenario_kwargs))
+            for a, b in chunk_ranges(int(self.runs), chunk_runs, int(self.seed0))
+        ]
 
     def summarise(self, parts: list[dict]) -> MonteCarloResult:
         sums = [parse_sum(s) if isinstance(s, str) else parse_sum("+".join(s)) for s in self.extra_sums]
-        return summarise_runs(merge_runs(parts), int(self.seed0), include_weak=self.include_weak, sums_requested=sums,
-                              scenario_kwargs=dict(self.scenario_kwargs))
+        return summarise_runs(
+            merge_runs(parts),
+            int(self.seed0),
+            include_weak=self.include_weak,
+            sums_requested=sums,
+            scenario_kwargs=dict(self.scenario_kwargs),
+        )
 
 
-def run_montecarlo_jobs(jobs: list[MonteCarloJob], client=None, *, chunk_runs: int = DEFAULT_CHUNK_RUNS,
-                        progress: bool = False) -> list[MonteCarloResult]:
+def run_montecarlo_jobs(
+    jobs: list[MonteCarloJob], client=None, *, chunk_runs: int = DEFAULT_CHUNK_RUNS, progress: bool = False
+) -> list[MonteCarloResult]:
     """Every job's :class:`MonteCarloResult`, all their chunks submitted as one batch.
 
     ``client``: a ``dask.distributed.Client`` or None (this process); ``chunk_runs``: seeds per
@@ -109,14 +124,23 @@ def run_montecarlo_jobs(jobs: list[MonteCarloJob], client=None, *, chunk_runs: i
     results = map_chunks(collect_chunk, flat, client, progress=progress, desc="Monte Carlo")
     out, i = [], 0
     for job, tasks in zip(jobs, per_job):
-        out.append(job.summarise(results[i:i + len(tasks)]))
+        out.append(job.summarise(results[i : i + len(tasks)]))
         i += len(tasks)
     return out
 
 
-def run_montecarlo_chunked(runs: int = 100, seed0: int = 0, config: RegistrationConfig | None = None, *, client=None,
-                           chunk_runs: int = DEFAULT_CHUNK_RUNS, include_weak: bool = False, extra_sums=(),
-                           progress: bool = False, **scenario_kwargs) -> MonteCarloResult:
+def run_montecarlo_chunked(
+    runs: int = 100,
+    seed0: int = 0,
+    config: RegistrationConfig | None = None,
+    *,
+    client=None,
+    chunk_runs: int = DEFAULT_CHUNK_RUNS,
+    include_weak: bool = False,
+    extra_sums=(),
+    progress: bool = False,
+    **scenario_kwargs,
+) -> MonteCarloResult:
     """:func:`run_montecarlo` in chunks of ``chunk_runs`` seeds, on ``client``'s workers or in this process."""
     job = MonteCarloJob(runs, seed0, config, include_weak, tuple(extra_sums), scenario_kwargs)
     return run_montecarlo_jobs([job], client, chunk_runs=chunk_runs, progress=progress)[0]

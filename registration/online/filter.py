@@ -13,7 +13,17 @@ from registration import _codegen
 from registration.core.observability import ObservabilityReport, observability_report
 from registration.online.config import RegistrationConfig
 from registration.online.contract import (
-    LIMITS, N_ROW, N_STATE, SENSOR_COLUMNS, SENSORS, STATE_LABELS, STATE_NAMES, STATE_UNITS, check_rows, check_times, row_error,
+    LIMITS,
+    N_ROW,
+    N_STATE,
+    SENSOR_COLUMNS,
+    SENSORS,
+    STATE_LABELS,
+    STATE_NAMES,
+    STATE_UNITS,
+    check_rows,
+    check_times,
+    row_error,
     row_from_mapping,
 )
 
@@ -36,8 +46,14 @@ ROW_HIGH = np.array([np.finfo(np.float64).max if k == "range" else LIMITS[k][1] 
 
 
 def _empty_block() -> dict:
-    return {"x": np.empty((0, N_STATE)), "P": np.empty((0, N_STATE, N_STATE)), "nu": np.empty((0, 3)),
-            "S": np.empty((0, 3, 3)), "nis": np.empty(0), "n": 0}
+    return {
+        "x": np.empty((0, N_STATE)),
+        "P": np.empty((0, N_STATE, N_STATE)),
+        "nu": np.empty((0, 3)),
+        "S": np.empty((0, 3, 3)),
+        "nis": np.empty(0),
+        "n": 0,
+    }
 
 
 def _frozen(a) -> np.ndarray:
@@ -81,7 +97,8 @@ class OnlineRegistrar:
         # The state as read-only arrays; None after update(), when it lives in the stepper's buffers.
         self._held: dict | None = {
             "x": _frozen(self.config.x0 if self.config.x0 is not None else np.zeros(N_STATE)),
-            "P": _frozen(np.diag(np.square(self.config.prior_sigma))), "info": _frozen(np.zeros((N_STATE, N_STATE))),
+            "P": _frozen(np.diag(np.square(self.config.prior_sigma))),
+            "info": _frozen(np.zeros((N_STATE, N_STATE))),
             "window": _frozen(np.empty((0, N_STATE))),  # the last q_window estimates, oldest first
         }
         self._q_window = int(self.config.q_window)
@@ -98,7 +115,9 @@ class OnlineRegistrar:
             held = self._held = {}
         value = held.get(name)
         if value is None:
-            value = held[name] = _frozen(self._stepper.kept() if name == "window" else self._stepper.get(name))
+            value = held[name] = _frozen(
+                self._stepper.kept() if name == "window" else self._stepper.get(name)
+            )
         return value
 
     def _set_state(self, name: str, value) -> None:
@@ -114,8 +133,12 @@ class OnlineRegistrar:
     def __getstate__(self) -> dict:
         """For pickle and copy: the state as arrays, without the compiled functions (found again on load)."""
         state = dict(self.__dict__)
-        state.update(_held={k: self._state(k) for k in ("x", "P", "info", "window")}, _stepper=None, _advance=None,
-                     _step=None)
+        state.update(
+            _held={k: self._state(k) for k in ("x", "P", "info", "window")},
+            _stepper=None,
+            _advance=None,
+            _step=None,
+        )
         return state
 
     def __setstate__(self, state: dict) -> None:
@@ -123,9 +146,14 @@ class OnlineRegistrar:
         self._step = _codegen.get(self.config.step_name)
 
     x = property(lambda self: self._state("x"), lambda self, v: self._set_state("x", v), doc="(12,) estimate")
-    P = property(lambda self: self._state("P"), lambda self, v: self._set_state("P", v), doc="(12, 12) covariance")
-    info = property(lambda self: self._state("info"), lambda self, v: self._set_state("info", v),
-                    doc="(12, 12) information accumulated at the filter's linearisation points")
+    P = property(
+        lambda self: self._state("P"), lambda self, v: self._set_state("P", v), doc="(12, 12) covariance"
+    )
+    info = property(
+        lambda self: self._state("info"),
+        lambda self, v: self._set_state("info", v),
+        doc="(12, 12) information accumulated at the filter's linearisation points",
+    )
 
     def process_noise(self) -> np.ndarray:
         """Q for the next step: fixed, or eqs. (21)-(22) (sample covariance of the last N estimates)."""
@@ -139,10 +167,16 @@ class OnlineRegistrar:
 
     def _make_stepper(self):
         """The compiled stepper, loaded with the state; returns its ``advance``."""
-        stepper = self._step.stepper(STEP_CARRY, "row", low=ROW_LOW, high=ROW_HIGH, finite=("x_new", "P_new"),
-                                     deliver=_DELIVER)
-        for name, value in (("x", self.x), ("P", self.P), ("info", self.info), ("Q", self._q_fixed),
-                            ("sigma0", self._sigma0)):
+        stepper = self._step.stepper(
+            STEP_CARRY, "row", low=ROW_LOW, high=ROW_HIGH, finite=("x_new", "P_new"), deliver=_DELIVER
+        )
+        for name, value in (
+            ("x", self.x),
+            ("P", self.P),
+            ("info", self.info),
+            ("Q", self._q_fixed),
+            ("sigma0", self._sigma0),
+        ):
             stepper.set(name, value)
         stepper.keep("x_new", self._q_window)  # the window of estimates, kept by the compiled step
         stepper.set_kept(self._state("window"))
@@ -193,12 +227,16 @@ class OnlineRegistrar:
             check_rows(values[None, :], first_row=n)  # raises, naming the row and column
             code = stepper.step(values, check=False)
         if code == _FAILED:
-            raise RuntimeError(f"row {n}: the generated step {self.config.step_name} returned an error; state left unchanged")
+            raise RuntimeError(
+                f"row {n}: the generated step {self.config.step_name} returned an error; state left unchanged"
+            )
         if code != _OK:
             raise RuntimeError(f"row {n}: the filter step produced non-finite values; state left unchanged")
         return stepper.results()
 
-    def update_block(self, rows: np.ndarray, times: np.ndarray | None = None, *, partial: bool = False) -> dict:
+    def update_block(
+        self, rows: np.ndarray, times: np.ndarray | None = None, *, partial: bool = False
+    ) -> dict:
         """Process a (K, 18) block of rows; the same arithmetic as K calls of :meth:`update`.
 
         Returns ``x (K, 12)``, ``P (K, 12, 12)``, ``nu (K, 3)``, ``S (K, 3, 3)``, ``nis (K,)`` and
@@ -225,7 +263,14 @@ class OnlineRegistrar:
     def _scan_block(self, rows: np.ndarray, times, partial: bool) -> dict:
         """Fixed Q: one compiled loop; only the last information matrix is kept unless a row fails."""
         k = len(rows)
-        inputs = {"x": self.x, "P": self.P, "info": self.info, "Q": self._q_fixed, "row": rows, "sigma0": self._sigma0}
+        inputs = {
+            "x": self.x,
+            "P": self.P,
+            "info": self.info,
+            "Q": self._q_fixed,
+            "row": rows,
+            "sigma0": self._sigma0,
+        }
         out = self._step.scan(k, STEP_CARRY, inputs, keep_last=("info_new",))
         x, P = out["x_new"], out["P_new"]
         ok = np.isfinite(x).all(axis=1) & np.isfinite(P).all(axis=(1, 2))
@@ -237,9 +282,11 @@ class OnlineRegistrar:
             n = int(np.argmax(~ok))
             info = out["info_new"][n - 1] if n else self.info
             if not partial:
-                raise RuntimeError(f"row {self.n_updates + n}: the filter step produced non-finite values; state left unchanged")
+                raise RuntimeError(
+                    f"row {self.n_updates + n}: the filter step produced non-finite values; state left unchanged"
+                )
         if n:
-            window = np.concatenate([self._state("window"), x[:n]])[-self._q_window:]
+            window = np.concatenate([self._state("window"), x[:n]])[-self._q_window :]
             self.x, self.P, self.info = x[n - 1].copy(), P[n - 1].copy(), np.array(info)
             self._set_state("window", window)
             self.n_updates += n
@@ -251,8 +298,13 @@ class OnlineRegistrar:
         """Adaptive Q: Q depends on the previous estimates, so the rows go one compiled step at a time."""
         k = len(rows)
         saved = self.state_dict()
-        res = {"x": np.empty((k, N_STATE)), "P": np.empty((k, N_STATE, N_STATE)), "nu": np.empty((k, 3)),
-               "S": np.empty((k, 3, 3)), "nis": np.empty(k)}
+        res = {
+            "x": np.empty((k, N_STATE)),
+            "P": np.empty((k, N_STATE, N_STATE)),
+            "nu": np.empty((k, 3)),
+            "S": np.empty((k, 3, 3)),
+            "nis": np.empty(k),
+        }
         n = k
         for i in range(k):
             try:
@@ -270,9 +322,12 @@ class OnlineRegistrar:
     def state_dict(self) -> dict:
         """Everything that determines the next steps (plain numpy arrays and numbers; copies)."""
         return {
-            "x": self.x.copy(), "P": self.P.copy(), "info": self.info.copy(),
+            "x": self.x.copy(),
+            "P": self.P.copy(),
+            "info": self.info.copy(),
             "window": self._state("window").copy(),
-            "n_updates": int(self.n_updates), "last_time": self.last_time,
+            "n_updates": int(self.n_updates),
+            "last_time": self.last_time,
         }
 
     def load_state_dict(self, state: dict) -> None:
@@ -284,8 +339,15 @@ class OnlineRegistrar:
         if x.shape != (N_STATE,) or P.shape != (N_STATE, N_STATE) or info.shape != (N_STATE, N_STATE):
             raise ValueError("state: x must be (12,), P and info (12, 12)")
         if len(window) > self._q_window:
-            raise ValueError(f"state: window holds {len(window)} estimates, more than q_window = {self._q_window}")
-        if not (np.isfinite(x).all() and np.isfinite(P).all() and np.isfinite(info).all() and np.isfinite(window).all()):
+            raise ValueError(
+                f"state: window holds {len(window)} estimates, more than q_window = {self._q_window}"
+            )
+        if not (
+            np.isfinite(x).all()
+            and np.isfinite(P).all()
+            and np.isfinite(info).all()
+            and np.isfinite(window).all()
+        ):
             raise ValueError("state: non-finite values")
         self.x, self.P, self.info = x, P, info
         self._set_state("window", window)
@@ -301,4 +363,6 @@ class OnlineRegistrar:
 
     def observability(self) -> ObservabilityReport:
         """From the information accumulated at the filter's own linearisation points (streaming)."""
-        return observability_report(self.info, np.array(self.config.prior_sigma), STATE_NAMES, STATE_LABELS, STATE_UNITS)
+        return observability_report(
+            self.info, np.array(self.config.prior_sigma), STATE_NAMES, STATE_LABELS, STATE_UNITS
+        )

@@ -11,7 +11,13 @@ import numpy as np
 from registration import _codegen
 from registration.online.contract import N_STATE, PLOT, SENSOR_ROW, correct_rows
 
-__all__ = ["information_matrix", "information_skipping_bad_rows", "information_at_estimate", "target_positions", "pair_model"]
+__all__ = [
+    "information_matrix",
+    "information_skipping_bad_rows",
+    "information_at_estimate",
+    "target_positions",
+    "pair_model",
+]
 
 
 def information_matrix(H: np.ndarray, R: np.ndarray) -> np.ndarray:
@@ -46,7 +52,7 @@ def information_skipping_bad_rows(H: np.ndarray, R: np.ndarray) -> tuple[np.ndar
     J, used = np.zeros((N_STATE, N_STATE)), 0
     for k in range(len(H)):
         try:
-            Jk = information_matrix(H[k:k + 1], R[k:k + 1])
+            Jk = information_matrix(H[k : k + 1], R[k : k + 1])
         except np.linalg.LinAlgError:
             continue
         if _usable(Jk) and np.isfinite(J + Jk).all():
@@ -58,11 +64,21 @@ def pair_model(rows: np.ndarray, sigma0, t_variant: str) -> dict:
     """The generated pair model at rows (K, 18): Z, H, M, R ... by output name (SI units)."""
     fn = _codegen.get(f"pseudo_measurement_{t_variant}")
     a, b = rows[:, SENSOR_ROW["a"]], rows[:, SENSOR_ROW["b"]]
-    args = [a[:, 0:3], a[:, 3:6], a[:, PLOT], b[:, 0:3], b[:, 3:6], b[:, PLOT], np.asarray(sigma0, dtype=float)]
+    args = [
+        a[:, 0:3],
+        a[:, 3:6],
+        a[:, PLOT],
+        b[:, 0:3],
+        b[:, 3:6],
+        b[:, PLOT],
+        np.asarray(sigma0, dtype=float),
+    ]
     return dict(zip(fn.output_names, fn(*args)))
 
 
-def information_at_estimate(rows: np.ndarray, x: np.ndarray, sigma0, t_variant: str) -> tuple[np.ndarray, int]:
+def information_at_estimate(
+    rows: np.ndarray, x: np.ndarray, sigma0, t_variant: str
+) -> tuple[np.ndarray, int]:
     """sum_k H_k^T R_k^-1 H_k with H, R at the rows (K, 18) corrected by one estimate x (12,).
 
     One compiled loop of the generated ``information_step``. If any row makes the sum
@@ -72,9 +88,17 @@ def information_at_estimate(rows: np.ndarray, x: np.ndarray, sigma0, t_variant: 
     if len(rows) == 0:
         return np.zeros((N_STATE, N_STATE)), 0
     step = _codegen.get(f"information_step_{t_variant}")
-    out = step.scan(len(rows), {"info": "info_new"},
-                    {"info": np.zeros((N_STATE, N_STATE)), "x": np.asarray(x, dtype=float), "row": rows,
-                     "sigma0": np.asarray(sigma0, dtype=float)}, keep_last=("info_new",))
+    out = step.scan(
+        len(rows),
+        {"info": "info_new"},
+        {
+            "info": np.zeros((N_STATE, N_STATE)),
+            "x": np.asarray(x, dtype=float),
+            "row": rows,
+            "sigma0": np.asarray(sigma0, dtype=float),
+        },
+        keep_last=("info_new",),
+    )
     J = out["info_new"]
     if _usable(J):
         return J, len(rows)

@@ -101,21 +101,32 @@ class MonteCarloResult:
     def nis_summary(self) -> dict:
         lo, hi = self.nis_interval
         inside = (self.nis >= lo) & (self.nis <= hi)
-        return {"dof_per_run": 3, "chi2_dof": 3 * self.runs, "interval_95": [lo, hi], "time_mean": float(np.mean(self.nis)),
-                "fraction_of_steps_inside": float(np.mean(inside))}
+        return {
+            "dof_per_run": 3,
+            "chi2_dof": 3 * self.runs,
+            "interval_95": [lo, hi],
+            "time_mean": float(np.mean(self.nis)),
+            "fraction_of_steps_inside": float(np.mean(inside)),
+        }
 
     def final_rows(self) -> list[dict]:
         """Per quantity at the last step: RMSE, filter sigma, 2 sigma, sqrt(CRLB), bias (SI units)."""
         rows = []
         for j, q in enumerate(self.quantities):
-            rows.append({
-                "name": q.name, "kind": q.kind, "unit_si": "rad" if q.angle else "m",
-                "rmse": float(self.rmse[-1, j]), "filter_sigma": float(self.filter_sigma[-1, j]),
-                "filter_two_sigma_mean": float(self.filter_two_sigma_mean[-1, j]),
-                "crlb_sigma": float(self.crlb_sigma[-1, j]), "mean_error": float(self.mean_error[-1, j]),
-                "rmse_over_crlb": float(self.rmse[-1, j] / self.crlb_sigma[-1, j]),
-                "rmse_over_filter_sigma": float(self.rmse[-1, j] / self.filter_sigma[-1, j]),
-            })
+            rows.append(
+                {
+                    "name": q.name,
+                    "kind": q.kind,
+                    "unit_si": "rad" if q.angle else "m",
+                    "rmse": float(self.rmse[-1, j]),
+                    "filter_sigma": float(self.filter_sigma[-1, j]),
+                    "filter_two_sigma_mean": float(self.filter_two_sigma_mean[-1, j]),
+                    "crlb_sigma": float(self.crlb_sigma[-1, j]),
+                    "mean_error": float(self.mean_error[-1, j]),
+                    "rmse_over_crlb": float(self.rmse[-1, j] / self.crlb_sigma[-1, j]),
+                    "rmse_over_filter_sigma": float(self.rmse[-1, j] / self.filter_sigma[-1, j]),
+                }
+            )
         return rows
 
     def table(self) -> str:
@@ -166,23 +177,35 @@ class MonteCarloResult:
     def to_json(self) -> dict:
         series = []
         for j, q in enumerate(self.quantities):
-            series.append({
-                "name": q.name, "kind": q.kind, "unit": "rad" if q.angle else "m",
-                "direction": {STATE_NAMES[i]: float(q.direction[i]) for i in np.flatnonzero(q.direction)},
-                "rmse": self.rmse[:, j].tolist(), "mean_error": self.mean_error[:, j].tolist(),
-                "filter_sigma": self.filter_sigma[:, j].tolist(),
-                "filter_two_sigma_mean": self.filter_two_sigma_mean[:, j].tolist(),
-                "crlb_sigma": self.crlb_sigma[:, j].tolist(),
-            })
+            series.append(
+                {
+                    "name": q.name,
+                    "kind": q.kind,
+                    "unit": "rad" if q.angle else "m",
+                    "direction": {STATE_NAMES[i]: float(q.direction[i]) for i in np.flatnonzero(q.direction)},
+                    "rmse": self.rmse[:, j].tolist(),
+                    "mean_error": self.mean_error[:, j].tolist(),
+                    "filter_sigma": self.filter_sigma[:, j].tolist(),
+                    "filter_two_sigma_mean": self.filter_two_sigma_mean[:, j].tolist(),
+                    "crlb_sigma": self.crlb_sigma[:, j].tolist(),
+                }
+            )
         return {
-            "runs": self.runs, "seeds": [self.seed0, self.seed0 + self.runs - 1],
+            "runs": self.runs,
+            "seeds": [self.seed0, self.seed0 + self.runs - 1],
             "units": "SI (rad, m)",
-            "config": self.config.to_json(), "scenario": self.scenario, "scenario_kwargs": self.scenario_kwargs,
+            "config": self.config.to_json(),
+            "scenario": self.scenario,
+            "scenario_kwargs": self.scenario_kwargs,
             "final": self.final_rows(),
             "nees": None if self.nees is None else {**self.nees_summary(), "series": self.nees.tolist()},
             "nis": {**self.nis_summary(), "series": self.nis.tolist()},
-            "observability": {"status_counts": self.status_counts, "identifiable_combination_counts": self.combination_counts,
-                              "excluded": self.excluded, "rule": "reported when identifiable in every run"},
+            "observability": {
+                "status_counts": self.status_counts,
+                "identifiable_combination_counts": self.combination_counts,
+                "excluded": self.excluded,
+                "rule": "reported when identifiable in every run",
+            },
             "time": self.time.tolist(),
             "series": series,
         }
@@ -199,16 +222,31 @@ class MonteCarloResult:
         n_panels = len(self.quantities) + 1
         ncols = min(3, n_panels)
         nrows = int(np.ceil(n_panels / ncols))
-        fig, axes = plt.subplots(nrows, ncols, figsize=(5.2 * ncols, 3.9 * nrows), squeeze=False, layout="constrained")
+        fig, axes = plt.subplots(
+            nrows, ncols, figsize=(5.2 * ncols, 3.9 * nrows), squeeze=False, layout="constrained"
+        )
         axes = axes.ravel()
         t = self.time
         for ax, q, j in zip(axes, self.quantities, range(len(self.quantities))):
             k = q.scale
             ax.semilogy(t, self.rmse[:, j] * k, color="k", lw=1.8, label=f"RMSE ({self.runs} runs)")
-            ax.semilogy(t, self.filter_sigma[:, j] * k, color="tab:blue", lw=1.5, ls="--", label="filter σ (rms)")
-            ax.semilogy(t, self.filter_two_sigma_mean[:, j] * k, color="tab:blue", lw=1.0, ls=":", label="filter 2σ (mean)")
-            ax.semilogy(t, self.crlb_sigma[:, j] * k, color="tab:red", lw=1.5, ls="-.", label="√CRLB (with prior)")
-            ax.semilogy(t, np.abs(self.mean_error[:, j]) * k, color="0.55", lw=0.9, label="|mean error| (bias)")
+            ax.semilogy(
+                t, self.filter_sigma[:, j] * k, color="tab:blue", lw=1.5, ls="--", label="filter σ (rms)"
+            )
+            ax.semilogy(
+                t,
+                self.filter_two_sigma_mean[:, j] * k,
+                color="tab:blue",
+                lw=1.0,
+                ls=":",
+                label="filter 2σ (mean)",
+            )
+            ax.semilogy(
+                t, self.crlb_sigma[:, j] * k, color="tab:red", lw=1.5, ls="-.", label="√CRLB (with prior)"
+            )
+            ax.semilogy(
+                t, np.abs(self.mean_error[:, j]) * k, color="0.55", lw=0.9, label="|mean error| (bias)"
+            )
             lows = np.concatenate([self.rmse[:, j], self.filter_sigma[:, j], self.crlb_sigma[:, j]]) * k
             highs = np.concatenate([self.rmse[:, j], self.filter_two_sigma_mean[:, j]]) * k
             ax.set_ylim(0.5 * np.min(lows[lows > 0]), 1.3 * np.max(highs))  # the bias line may dip to zero
@@ -228,7 +266,11 @@ class MonteCarloResult:
         lo, hi = self.nis_interval
         ax.plot(t, self.nis, color="tab:purple", lw=0.8, alpha=0.8, label="avg NIS (3 per run)")
         ax.axhspan(lo, hi, color="tab:purple", alpha=0.08, label=f"NIS 95% interval [{lo:.2f}, {hi:.2f}]")
-        top = max(np.percentile(self.nis, 99), self.nees_dof + 1, *(np.percentile(self.nees, 99),) if self.nees is not None else ())
+        top = max(
+            np.percentile(self.nis, 99),
+            self.nees_dof + 1,
+            *(np.percentile(self.nees, 99),) if self.nees is not None else (),
+        )
         ax.set_ylim(0, 1.7 * top)  # the upper part for the legend, clear of the curves
         ax.set_title("consistency (identifiable part)", fontsize=11)
         ax.set_xlabel("time (s)")

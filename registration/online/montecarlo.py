@@ -15,15 +15,31 @@ import numpy as np
 from registration.core.consistency import nees_interval
 from registration.core.observability import observability_report
 from registration.online.config import RegistrationConfig
-from registration.online.contract import IS_ANGLE, N_STATE, STATE_LABELS, STATE_NAMES, STATE_UNITS, check_times
+from registration.online.contract import (
+    IS_ANGLE,
+    N_STATE,
+    STATE_LABELS,
+    STATE_NAMES,
+    STATE_UNITS,
+    check_times,
+)
 from registration.online.crlb import crlb_from_information, crlb_information, nees_series, quadratic_forms
 from registration.online.mcresult import MonteCarloResult, Quantity
 from registration.online.result import identifiable_combinations
 from registration.online.runs import check_run_rows, filter_runs, information_at_estimates
 from registration.online.scenario import paper_scenarios
 
-__all__ = ["Quantity", "MonteCarloResult", "run_montecarlo", "collect_runs", "summarise_runs", "crlb_information",
-           "nees_interval", "nees_series", "parse_sum"]
+__all__ = [
+    "Quantity",
+    "MonteCarloResult",
+    "run_montecarlo",
+    "collect_runs",
+    "summarise_runs",
+    "crlb_information",
+    "nees_interval",
+    "nees_series",
+    "parse_sum",
+]
 
 
 def parse_sum(text: str) -> tuple[str, str]:
@@ -39,9 +55,9 @@ def parse_sum(text: str) -> tuple[str, str]:
     return tuple(STATE_NAMES[k] for k in sorted((i, j)))
 
 
-
-
-def _observability_counts(J: np.ndarray, x: np.ndarray, P: np.ndarray, prior_sigma, progress: bool) -> tuple[dict, dict]:
+def _observability_counts(
+    J: np.ndarray, x: np.ndarray, P: np.ndarray, prior_sigma, progress: bool
+) -> tuple[dict, dict]:
     """Per run, the observability report of its information at its final estimate J[r]: how many
     runs give each state each status, and how many list each identifiable sum (runs in order)."""
     status_counts: dict = {n: {} for n in STATE_NAMES}
@@ -63,7 +79,9 @@ def _observability_counts(J: np.ndarray, x: np.ndarray, P: np.ndarray, prior_sig
     return status_counts, combo_counts
 
 
-def collect_runs(runs: int, seed0: int, config: RegistrationConfig | None, progress: bool, scenario_kwargs: dict) -> dict:
+def collect_runs(
+    runs: int, seed0: int, config: RegistrationConfig | None, progress: bool, scenario_kwargs: dict
+) -> dict:
     """Simulate and register every seed's run: what :func:`summarise_runs` needs.
 
     Keys: ``time`` (K,) s; ``description`` of the scenario (without the seed); ``err`` (R, K, 12)
@@ -83,11 +101,22 @@ def collect_runs(runs: int, seed0: int, config: RegistrationConfig | None, progr
     J = information_at_estimates(sims.rows, x_final, cfg.sigma0, cfg.t_variant)
     time, description, truth_state = np.array(sims.time), dict(sims.description), sims.truth_state
     del sims  # the rows are no longer needed
-    status_counts, combo_counts = _observability_counts(J, x_final, out["P"][:, -1], cfg.prior_sigma, progress)
+    status_counts, combo_counts = _observability_counts(
+        J, x_final, out["P"][:, -1], cfg.prior_sigma, progress
+    )
     err = out["x"]
     err -= truth_state  # estimate - truth, in place (the estimates are not needed any more)
-    return {"time": time, "description": description, "err": err, "P": out["P"], "nis": out["nis"], "crlb": crlb,
-            "config": cfg, "status_counts": status_counts, "combo_counts": combo_counts}
+    return {
+        "time": time,
+        "description": description,
+        "err": err,
+        "P": out["P"],
+        "nis": out["nis"],
+        "crlb": crlb,
+        "config": cfg,
+        "status_counts": status_counts,
+        "combo_counts": combo_counts,
+    }
 
 
 def _direction(names) -> np.ndarray:
@@ -108,14 +137,25 @@ def _select_quantities(runs, status_counts, combo_counts, include_weak, sums_req
             quantities.append(Quantity(name, _direction([name]), "weak", bool(IS_ANGLE[i])))
         else:
             excluded[name] = ", ".join(f"{s}: {c}" for s, c in sorted(counts.items()))
-    for (a, b), count in sorted(combo_counts.items(), key=lambda t: (STATE_NAMES.index(t[0][0]), STATE_NAMES.index(t[0][1]))):
+    for (a, b), count in sorted(
+        combo_counts.items(), key=lambda t: (STATE_NAMES.index(t[0][0]), STATE_NAMES.index(t[0][1]))
+    ):
         if count == runs:
-            quantities.append(Quantity(f"{a} + {b}", _direction([a, b]), "identifiable combination", bool(IS_ANGLE[STATE_NAMES.index(a)])))
+            quantities.append(
+                Quantity(
+                    f"{a} + {b}",
+                    _direction([a, b]),
+                    "identifiable combination",
+                    bool(IS_ANGLE[STATE_NAMES.index(a)]),
+                )
+            )
     have = {q.name for q in quantities}
     for a, b in sums_requested:
         name = f"{a} + {b}"
         if name not in have:
-            quantities.append(Quantity(name, _direction([a, b]), "requested sum", bool(IS_ANGLE[STATE_NAMES.index(a)])))
+            quantities.append(
+                Quantity(name, _direction([a, b]), "requested sum", bool(IS_ANGLE[STATE_NAMES.index(a)]))
+            )
             have.add(name)
     return quantities, excluded
 
@@ -146,17 +186,29 @@ def run_montecarlo(
         raise ValueError("pass the first seed as seed0, not in the scenario arguments")
     sums_requested = [parse_sum(s) if isinstance(s, str) else parse_sum("+".join(s)) for s in extra_sums]
     runs_data = collect_runs(runs, seed0, config, progress, scenario_kwargs)
-    return summarise_runs(runs_data, seed0, include_weak=include_weak, sums_requested=sums_requested,
-                          scenario_kwargs=scenario_kwargs)
+    return summarise_runs(
+        runs_data,
+        seed0,
+        include_weak=include_weak,
+        sums_requested=sums_requested,
+        scenario_kwargs=scenario_kwargs,
+    )
 
 
-def summarise_runs(runs_data: dict, seed0: int, *, include_weak: bool = False, sums_requested=(),
-                   scenario_kwargs: dict | None = None) -> MonteCarloResult:
+def summarise_runs(
+    runs_data: dict,
+    seed0: int,
+    *,
+    include_weak: bool = False,
+    sums_requested=(),
+    scenario_kwargs: dict | None = None,
+) -> MonteCarloResult:
     """The statistics of :func:`collect_runs`'s output (``sums_requested``: (name, name) pairs)."""
     runs = len(runs_data["err"])
     scenario_kwargs = scenario_kwargs or {}
-    quantities, excluded = _select_quantities(runs, runs_data["status_counts"], runs_data["combo_counts"],
-                                              include_weak, sums_requested)
+    quantities, excluded = _select_quantities(
+        runs, runs_data["status_counts"], runs_data["combo_counts"], include_weak, sums_requested
+    )
     err, P, crlb = runs_data["err"], runs_data["P"], runs_data["crlb"]
     m = len(quantities)
     T = np.array([q.direction for q in quantities]).reshape(m, N_STATE)
@@ -173,14 +225,26 @@ def summarise_runs(runs_data: dict, seed0: int, *, include_weak: bool = False, s
     combo_counts = runs_data["combo_counts"]
     description.pop("seed", None)
     return MonteCarloResult(
-        runs=runs, seed0=seed0, config=runs_data["config"], scenario=description,
-        scenario_kwargs={k: (v.__dict__ if hasattr(v, "__dict__") else v) for k, v in scenario_kwargs.items()},
-        time=runs_data["time"], quantities=quantities, rmse=np.sqrt(np.mean(e_q**2, axis=0)),
-        mean_error=np.mean(e_q, axis=0), filter_sigma=np.sqrt(np.mean(var_q, axis=0)),
+        runs=runs,
+        seed0=seed0,
+        config=runs_data["config"],
+        scenario=description,
+        scenario_kwargs={
+            k: (v.__dict__ if hasattr(v, "__dict__") else v) for k, v in scenario_kwargs.items()
+        },
+        time=runs_data["time"],
+        quantities=quantities,
+        rmse=np.sqrt(np.mean(e_q**2, axis=0)),
+        mean_error=np.mean(e_q, axis=0),
+        filter_sigma=np.sqrt(np.mean(var_q, axis=0)),
         filter_two_sigma_mean=np.mean(2.0 * np.sqrt(np.clip(var_q, 0.0, None)), axis=0),
         crlb_sigma=np.sqrt(np.clip(np.einsum("qi,kij,qj->kq", T, crlb, T), 0.0, None)),
-        nees=nees, nees_dof=m_nees, nees_interval=interval,
-        nis=runs_data["nis"].mean(axis=0), nis_interval=nees_interval(runs, 3),
-        status_counts=runs_data["status_counts"], combination_counts={f"{a} + {b}": c for (a, b), c in combo_counts.items()},
+        nees=nees,
+        nees_dof=m_nees,
+        nees_interval=interval,
+        nis=runs_data["nis"].mean(axis=0),
+        nis_interval=nees_interval(runs, 3),
+        status_counts=runs_data["status_counts"],
+        combination_counts={f"{a} + {b}": c for (a, b), c in combo_counts.items()},
         excluded=excluded,
     )

@@ -11,9 +11,8 @@ from pathlib import Path
 import numpy as np
 
 from registration.core.plotting import OKABE_ITO, pyplot, save_figure
-from registration.online.result import RegistrationResult
 from registration.online.contract import IS_ANGLE, STATE_LABELS, STATE_NAMES, display_unit, to_display
-
+from registration.online.result import RegistrationResult
 
 #: Colours of ship A and ship B, and of the target.
 SHIP_COLOURS = {"a": OKABE_ITO["blue"], "b": OKABE_ITO["orange"]}
@@ -52,7 +51,9 @@ def tracks_figure(data: dict, truth: dict | None):
 
 def plot_differences(result: RegistrationResult, path: Path) -> Path:
     """X_A - X_B per ECEF axis before and after registration (Fig. 2c and 4c)."""
-    return plot_difference_series(result.time, result.raw_difference_ecef, result.corrected_difference_ecef, path)
+    return plot_difference_series(
+        result.time, result.raw_difference_ecef, result.corrected_difference_ecef, path
+    )
 
 
 def plot_difference_series(time: np.ndarray, raw: np.ndarray, corrected: np.ndarray, path: Path) -> Path:
@@ -81,27 +82,46 @@ def difference_figure(time: np.ndarray, raw: np.ndarray, corrected: np.ndarray):
 def plot_estimates(result: RegistrationResult, truth_state: np.ndarray | None, path: Path) -> Path:
     """Every state's estimate against time with a ±2σ band and the true value (Fig. 3), as ``path`` (PNG)."""
     sigma = np.sqrt(np.einsum("kii->ki", result.covariances))
-    return plot_estimate_series(result.time, result.estimates, sigma, result.observability.status, truth_state, path)
+    return plot_estimate_series(
+        result.time, result.estimates, sigma, result.observability.status, truth_state, path
+    )
 
 
-def plot_estimate_series(time: np.ndarray, estimates: np.ndarray, sigma: np.ndarray, status: dict,
-                         truth_state: np.ndarray | None, path: Path) -> Path:
+def plot_estimate_series(
+    time: np.ndarray,
+    estimates: np.ndarray,
+    sigma: np.ndarray,
+    status: dict,
+    truth_state: np.ndarray | None,
+    path: Path,
+) -> Path:
     """Estimates (K, 12) with a ±2 ``sigma`` (K, 12) band against time (K,) in s, SI units and
     radians (drawn in degrees or metres), as ``path`` (PNG); ``status``: state name -> observability status."""
     plt = pyplot()
-    fig, axes = plt.subplots(6, 2, figsize=(11, 15), sharex=True, layout="constrained")  # left: ship/radar A, right: B
+    fig, axes = plt.subplots(
+        6, 2, figsize=(11, 15), sharex=True, layout="constrained"
+    )  # left: ship/radar A, right: B
     est = to_display(estimates)
     sig = np.where(IS_ANGLE, np.degrees(sigma), sigma)
     for i, ax in enumerate(axes.T.ravel()):
-        ax.fill_between(time, est[:, i] - 2 * sig[:, i], est[:, i] + 2 * sig[:, i], color=OKABE_ITO["blue"], alpha=0.2,
-                        label="± 2σ")
+        ax.fill_between(
+            time,
+            est[:, i] - 2 * sig[:, i],
+            est[:, i] + 2 * sig[:, i],
+            color=OKABE_ITO["blue"],
+            alpha=0.2,
+            label="± 2σ",
+        )
         ax.plot(time, est[:, i], color=OKABE_ITO["blue"], lw=1, label="estimate")
         if truth_state is not None:
             ax.axhline(to_display(truth_state)[i], color="k", ls="--", lw=1, label="truth")
         name = STATE_NAMES[i]
         flag = status.get(name, "")
-        ax.set_title(f"{STATE_LABELS[i]} ({display_unit(i)})" + ("" if flag == "identifiable" else f"\n[{flag}]"),
-                     fontsize=9, color="k" if flag == "identifiable" else OKABE_ITO["vermillion"])
+        ax.set_title(
+            f"{STATE_LABELS[i]} ({display_unit(i)})" + ("" if flag == "identifiable" else f"\n[{flag}]"),
+            fontsize=9,
+            color="k" if flag == "identifiable" else OKABE_ITO["vermillion"],
+        )
         ax.grid(alpha=0.3)
         lo = np.percentile(est[:, i] - 2 * sig[:, i], 5)
         hi = np.percentile(est[:, i] + 2 * sig[:, i], 95)
@@ -113,6 +133,8 @@ def plot_estimate_series(time: np.ndarray, estimates: np.ndarray, sigma: np.ndar
     axes[0, 0].legend(fontsize=7, loc="upper right")
     for ax in axes[-1]:
         ax.set_xlabel("time (s)")
-    fig.suptitle("Registration error estimates with ± 2σ bands, ship A (left) and B (right)\n"
-                 "titles in orange: not identifiable or weak in this scenario")
+    fig.suptitle(
+        "Registration error estimates with ± 2σ bands, ship A (left) and B (right)\n"
+        "titles in orange: not identifiable or weak in this scenario"
+    )
     return save_figure(fig, path)

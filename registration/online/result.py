@@ -34,7 +34,14 @@ def identifiable_combinations(x: np.ndarray, P: np.ndarray, report: Observabilit
     for a, b in report.identifiable_sums:
         i, j = STATE_NAMES.index(a), STATE_NAMES.index(b)
         var = P[i, i] + P[j, j] + 2 * P[i, j]
-        out.append({"name": f"{a} + {b}", "indices": [i, j], "estimate": float(x[i] + x[j]), "sigma": float(np.sqrt(max(var, 0.0)))})
+        out.append(
+            {
+                "name": f"{a} + {b}",
+                "indices": [i, j],
+                "estimate": float(x[i] + x[j]),
+                "sigma": float(np.sqrt(max(var, 0.0))),
+            }
+        )
     return out
 
 
@@ -43,18 +50,28 @@ def estimate_rows(x: np.ndarray, P: np.ndarray, report: ObservabilityReport, tru
     rows = []
     sigma = np.sqrt(np.diag(P))
     for i, name in enumerate(STATE_NAMES):
-        rows.append({
-            "name": name, "unit": "rad" if IS_ANGLE[i] else "m", "estimate": float(x[i]),
-            "sigma": float(sigma[i]), "truth": None if truth_state is None else float(truth_state[i]),
-            "status": report.status[name],
-        })
+        rows.append(
+            {
+                "name": name,
+                "unit": "rad" if IS_ANGLE[i] else "m",
+                "estimate": float(x[i]),
+                "sigma": float(sigma[i]),
+                "truth": None if truth_state is None else float(truth_state[i]),
+                "status": report.status[name],
+            }
+        )
     for comb in identifiable_combinations(x, P, report):
         i, j = comb["indices"]
-        rows.append({
-            "name": comb["name"], "unit": "rad" if IS_ANGLE[i] else "m", "estimate": comb["estimate"], "sigma": comb["sigma"],
-            "truth": None if truth_state is None else float(truth_state[i] + truth_state[j]),
-            "status": "identifiable combination",
-        })
+        rows.append(
+            {
+                "name": comb["name"],
+                "unit": "rad" if IS_ANGLE[i] else "m",
+                "estimate": comb["estimate"],
+                "sigma": comb["sigma"],
+                "truth": None if truth_state is None else float(truth_state[i] + truth_state[j]),
+                "status": "identifiable combination",
+            }
+        )
     return rows
 
 
@@ -69,8 +86,12 @@ class RegistrationResult:
     innovations: np.ndarray  # (K, 3) m
     innovation_covariances: np.ndarray  # (K, 3, 3) m^2
     nis: np.ndarray  # (K,)
-    information: np.ndarray  # (12, 12) sum H^T R^-1 H as the filter accumulated it (at its linearisation points)
-    information_at_estimate: np.ndarray  # (12, 12) the same sum re-evaluated at the final estimate (observability)
+    information: (
+        np.ndarray
+    )  # (12, 12) sum H^T R^-1 H as the filter accumulated it (at its linearisation points)
+    information_at_estimate: (
+        np.ndarray
+    )  # (12, 12) the same sum re-evaluated at the final estimate (observability)
     raw_difference_ecef: np.ndarray  # (K, 3) m, X_A - X_B from the measured values
     corrected_difference_ecef: np.ndarray  # (K, 3) m, X_A - X_B corrected with the estimate after each row
     corrected_a_ecef: np.ndarray  # (K, 3) m, corrected target position from radar A
@@ -88,7 +109,10 @@ class RegistrationResult:
 
     def statistics(self) -> dict:
         """The before/after statistics of the ECEF differences (metres), as in the paper's Table 1."""
-        return {"before": difference_statistics(self.raw_difference_ecef), "after": difference_statistics(self.corrected_difference_ecef)}
+        return {
+            "before": difference_statistics(self.raw_difference_ecef),
+            "after": difference_statistics(self.corrected_difference_ecef),
+        }
 
     @property
     def consistency(self) -> ConsistencyReport:
@@ -108,5 +132,7 @@ class RegistrationResult:
         for status in self.observability.status.values():
             counts[status] = counts.get(status, 0) + 1
         states = ", ".join(f"{n} {s}" for s, n in sorted(counts.items()))
-        return (f"RegistrationResult({len(self.time)} rows, linearization={self.config.linearization!r}, "
-                f"t_variant={self.config.t_variant!r}, states: {states}, mean NIS {float(np.mean(self.nis)):.3g})")
+        return (
+            f"RegistrationResult({len(self.time)} rows, linearization={self.config.linearization!r}, "
+            f"t_variant={self.config.t_variant!r}, states: {states}, mean NIS {float(np.mean(self.nis)):.3g})"
+        )

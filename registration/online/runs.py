@@ -47,11 +47,21 @@ def filter_runs(config: RegistrationConfig, rows: np.ndarray) -> dict:
         outs = [_one_run(config, rows, r) for r in range(runs)]
         return {key: np.stack([o[key] for o in outs]) for key in ("x", "P", "nis", "info")}
     start = OnlineRegistrar(config)
-    inputs = {"x": start.x, "P": start.P, "info": start.info, "Q": start.process_noise(), "row": rows,
-              "sigma0": np.array(config.sigma0)}
-    out = _codegen.get(config.step_name).scan_runs(runs, k, STEP_CARRY, inputs, keep_last=("info_new", "nu", "S"))
+    inputs = {
+        "x": start.x,
+        "P": start.P,
+        "info": start.info,
+        "Q": start.process_noise(),
+        "row": rows,
+        "sigma0": np.array(config.sigma0),
+    }
+    out = _codegen.get(config.step_name).scan_runs(
+        runs, k, STEP_CARRY, inputs, keep_last=("info_new", "nu", "S")
+    )
     x, P, info = out["x_new"], out["P_new"], out["info_new"]
-    with np.errstate(over="ignore", invalid="ignore"):  # a sum is finite when every term is (or it overflowed)
+    with np.errstate(
+        over="ignore", invalid="ignore"
+    ):  # a sum is finite when every term is (or it overflowed)
         total = x.sum(axis=(1, 2)) + P.sum(axis=(1, 2, 3)) + info.sum(axis=(1, 2))
     for r in np.flatnonzero(~np.isfinite(total)):
         if not (np.isfinite(x[r]).all() and np.isfinite(P[r]).all() and np.isfinite(info[r]).all()):
@@ -77,9 +87,18 @@ def information_at_estimates(rows: np.ndarray, x: np.ndarray, sigma0, t_variant:
     runs, k = rows.shape[:2]
     step = _codegen.get(f"information_step_{t_variant}")
     sigma0 = np.asarray(sigma0, dtype=float)
-    J = step.scan_runs(runs, k, {"info": "info_new"},
-                       {"info": np.zeros((N_STATE, N_STATE)), "x": np.asarray(x, dtype=float), "row": rows,
-                        "sigma0": sigma0}, keep_last=("info_new",))["info_new"]
+    J = step.scan_runs(
+        runs,
+        k,
+        {"info": "info_new"},
+        {
+            "info": np.zeros((N_STATE, N_STATE)),
+            "x": np.asarray(x, dtype=float),
+            "row": rows,
+            "sigma0": sigma0,
+        },
+        keep_last=("info_new",),
+    )["info_new"]
     with np.errstate(invalid="ignore"):
         suspicious = ~(np.abs(J) < _SUSPICIOUS_INFORMATION).all(axis=(1, 2))
     for r in np.flatnonzero(suspicious):

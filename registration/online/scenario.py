@@ -15,13 +15,25 @@ import numpy as np
 from registration import _codegen
 from registration.core.angles import wrap_angle
 from registration.core.motion import ShipMotion
-from registration.online.contract import N_ROW, N_STATE, ROW_COLUMNS, SENSOR_COLUMNS, SENSOR_ROW, SENSORS, STATE_NAMES
+from registration.online.contract import (
+    N_ROW,
+    N_STATE,
+    ROW_COLUMNS,
+    SENSOR_COLUMNS,
+    SENSOR_ROW,
+    SENSORS,
+    STATE_NAMES,
+)
 
 __all__ = ["ShipMotion", "Scenario", "ScenarioRuns", "paper_scenario", "paper_scenarios", "PAPER_TABLE1"]
 
 #: Table 1 of Wang et al. 2011 (metres): X_A - X_B per ECEF axis before and after registration.
 PAPER_TABLE1 = {
-    "before": {"max": [1515.85, 519.10, 463.77], "mean": [1303.56, 454.90, 338.27], "std": [185.47, 41.66, 68.14]},
+    "before": {
+        "max": [1515.85, 519.10, 463.77],
+        "mean": [1303.56, 454.90, 338.27],
+        "std": [185.47, 41.66, 68.14],
+    },
     "after": {"max": [82.04, 47.31, 109.05], "mean": [17.15, -0.32, 18.10], "std": [35.22, 23.84, 56.50]},
 }
 
@@ -65,7 +77,8 @@ def _target_course(t: np.ndarray) -> np.ndarray:
     """Target course (rad): 240 deg for 60 s, right turn at 2 deg/s for 90 s (to 60 deg), straight
     for 60 s, left turn at 2 deg/s for 90 s (back to 240 deg)."""
     deg = np.where(
-        t < 60, 240.0,
+        t < 60,
+        240.0,
         np.where(t < 150, 240.0 + 2.0 * (t - 60), np.where(t < 210, 420.0, 420.0 - 2.0 * (t - 210))),
     )
     return np.radians(np.mod(deg, 360.0))
@@ -103,9 +116,14 @@ def _ship_truth(prefix, ship, t, dt, p_target_ecef, *, ship_motion, antenna_heig
         pitch, roll = ship_motion.angles(t, ship["phase"])
     plot = _codegen.get(f"ecef2plot_{t_variant}")(p_target_ecef, lat, lon, alt, heading, pitch, roll)[0]
     return {
-        f"{prefix}_lat": lat, f"{prefix}_lon": lon, f"{prefix}_alt": alt,
-        f"{prefix}_heading": heading, f"{prefix}_pitch": pitch, f"{prefix}_roll": roll,
-        f"{prefix}_plot": plot, f"{prefix}_p_ecef": _codegen.get("geodetic2ecef")(lat, lon, alt)[0],
+        f"{prefix}_lat": lat,
+        f"{prefix}_lon": lon,
+        f"{prefix}_alt": alt,
+        f"{prefix}_heading": heading,
+        f"{prefix}_pitch": pitch,
+        f"{prefix}_roll": roll,
+        f"{prefix}_plot": plot,
+        f"{prefix}_p_ecef": _codegen.get("geodetic2ecef")(lat, lon, alt)[0],
     }
 
 
@@ -116,10 +134,26 @@ def _geometry(n_steps: int, dt: float, ship_motion, antenna_height: float, t_var
     t = np.arange(n_steps) * dt
     tgt_lat, tgt_lon, tgt_alt = _paper_target(t, dt)
     p_target_ecef = _codegen.get("geodetic2ecef")(tgt_lat, tgt_lon, tgt_alt)[0]
-    geo = {"time": t, "p_target_ecef": p_target_ecef, "target_lat": tgt_lat, "target_lon": tgt_lon, "target_alt": tgt_alt}
+    geo = {
+        "time": t,
+        "p_target_ecef": p_target_ecef,
+        "target_lat": tgt_lat,
+        "target_lon": tgt_lon,
+        "target_alt": tgt_alt,
+    }
     for prefix, ship in _PAPER_SHIPS.items():
-        geo.update(_ship_truth(prefix, ship, t, dt, p_target_ecef, ship_motion=ship_motion,
-                               antenna_height=antenna_height, t_variant=t_variant))
+        geo.update(
+            _ship_truth(
+                prefix,
+                ship,
+                t,
+                dt,
+                p_target_ecef,
+                ship_motion=ship_motion,
+                antenna_height=antenna_height,
+                t_variant=t_variant,
+            )
+        )
     for a in geo.values():
         a.flags.writeable = False
     return geo
@@ -138,7 +172,11 @@ def _measured_rows(geo: dict, errors: dict, sigmas: np.ndarray, noise: dict) -> 
         rows[:, :, col["heading"]] = wrap_angle(geo[f"{prefix}_heading"] + errors["heading"])
         rows[:, :, col["pitch"]] = geo[f"{prefix}_pitch"] + errors["pitch"]
         rows[:, :, col["roll"]] = geo[f"{prefix}_roll"] + errors["roll"]
-        measured = geo[f"{prefix}_plot"] + [errors["range"], errors["bearing"], errors["elevation"]] + noise[prefix] * sigmas
+        measured = (
+            geo[f"{prefix}_plot"]
+            + [errors["range"], errors["bearing"], errors["elevation"]]
+            + noise[prefix] * sigmas
+        )
         rows[:, :, col["range"]] = measured[..., 0]
         rows[:, :, col["bearing"]] = wrap_angle(measured[..., 1])
         rows[:, :, col["elevation"]] = measured[..., 2]
@@ -166,8 +204,13 @@ class ScenarioRuns:
         """Run ``i`` as a :class:`Scenario` (its own copies of every array)."""
         data = {"time": np.array(self.time)}
         data.update({c: self.rows[i, :, j].copy() for j, c in enumerate(ROW_COLUMNS)})
-        return Scenario(data=data, truth_state=self.truth_state.copy(), truth={k: np.array(v) for k, v in self.truth.items()},
-                        sigma0=self.sigma0.copy(), description={"seed": self.seeds[i], **self.description})
+        return Scenario(
+            data=data,
+            truth_state=self.truth_state.copy(),
+            truth={k: np.array(v) for k, v in self.truth.items()},
+            sigma0=self.sigma0.copy(),
+            description={"seed": self.seeds[i], **self.description},
+        )
 
 
 def _check_arguments(n_steps, dt, angles: dict) -> None:
@@ -200,18 +243,32 @@ def paper_scenarios(
     Run ``i`` holds bit for bit the rows of ``paper_scenario(seeds[i], ...)``. The tracks and the
     true plots are computed once per configuration (and cached); per seed only the noise is drawn.
     """
-    _check_arguments(n_steps, dt, {"angle_sigma": angle_sigma, "angle_bias": angle_bias,
-                                   "heading_error": heading_error, "level_error": level_error})
+    _check_arguments(
+        n_steps,
+        dt,
+        {
+            "angle_sigma": angle_sigma,
+            "angle_bias": angle_bias,
+            "heading_error": heading_error,
+            "level_error": level_error,
+        },
+    )
     seeds = tuple(seeds)
     try:
         geo = _geometry(n_steps, dt, ship_motion, antenna_height, t_variant)
     except TypeError:  # an unhashable ship motion: not cached
         geo = _geometry.__wrapped__(n_steps, dt, ship_motion, antenna_height, t_variant)
     errors = {
-        "heading": heading_error, "pitch": level_error, "roll": level_error,
-        "range": range_bias, "bearing": angle_bias, "elevation": angle_bias,
+        "heading": heading_error,
+        "pitch": level_error,
+        "roll": level_error,
+        "range": range_bias,
+        "bearing": angle_bias,
+        "elevation": angle_bias,
     }
-    truth_state = np.array([errors[k] for k in ("heading", "pitch", "roll", "range", "bearing", "elevation")] * 2)
+    truth_state = np.array(
+        [errors[k] for k in ("heading", "pitch", "roll", "range", "bearing", "elevation")] * 2
+    )
     assert truth_state.shape == (N_STATE,)
     sigmas = np.array([range_sigma, angle_sigma, angle_sigma])
     noise = {p: np.empty((len(seeds), n_steps, 3)) for p in SENSORS}
@@ -223,12 +280,23 @@ def paper_scenarios(
     for p in SENSORS:
         truth.update({f"{p}_{k}": geo[f"{p}_{k}"] for k in ("heading", "pitch", "roll", "plot", "p_ecef")})
     description = {
-        "n_steps": n_steps, "dt_s": dt, "angle_sigma_rad": angle_sigma, "range_sigma_m": range_sigma,
-        "ship_motion": None if ship_motion is None else ship_motion.__dict__, "t_variant": t_variant,
+        "n_steps": n_steps,
+        "dt_s": dt,
+        "angle_sigma_rad": angle_sigma,
+        "range_sigma_m": range_sigma,
+        "ship_motion": None if ship_motion is None else ship_motion.__dict__,
+        "t_variant": t_variant,
         "truth": dict(zip(STATE_NAMES, truth_state.tolist())),
     }
-    return ScenarioRuns(seeds=seeds, time=geo["time"], rows=_measured_rows(geo, errors, sigmas, noise),
-                        truth_state=truth_state, truth=truth, sigma0=np.tile(sigmas, 2), description=description)
+    return ScenarioRuns(
+        seeds=seeds,
+        time=geo["time"],
+        rows=_measured_rows(geo, errors, sigmas, noise),
+        truth_state=truth_state,
+        truth=truth,
+        sigma0=np.tile(sigmas, 2),
+        description=description,
+    )
 
 
 def paper_scenario(seed: int = 0, **kwargs) -> Scenario:

@@ -15,8 +15,21 @@ from registration.online.mcresult import MonteCarloResult
 __all__ = ["SWEEP_COLUMNS", "sweep_table", "write_sweep_table", "plot_sweep"]
 
 #: The columns of :func:`sweep_table`, in order.
-SWEEP_COLUMNS = ("parameter", "value", "quantity", "kind", "unit", "runs", "rmse", "filter_sigma", "crlb_sigma",
-                 "mean_error", "nees", "nees_low", "nees_high")
+SWEEP_COLUMNS = (
+    "parameter",
+    "value",
+    "quantity",
+    "kind",
+    "unit",
+    "runs",
+    "rmse",
+    "filter_sigma",
+    "crlb_sigma",
+    "mean_error",
+    "nees",
+    "nees_low",
+    "nees_high",
+)
 
 
 def sweep_table(parameter: str, values, results: list[MonteCarloResult]):
@@ -34,9 +47,23 @@ def sweep_table(parameter: str, values, results: list[MonteCarloResult]):
             (lo, hi), nees = res.nees_interval, float(res.nees[-1])
         for j, q in enumerate(res.quantities):
             s = q.scale
-            rows.append((parameter, value, q.name, q.kind, q.unit, res.runs, s * res.rmse[-1, j],
-                         s * res.filter_sigma[-1, j], s * res.crlb_sigma[-1, j], s * res.mean_error[-1, j],
-                         nees, lo, hi))
+            rows.append(
+                (
+                    parameter,
+                    value,
+                    q.name,
+                    q.kind,
+                    q.unit,
+                    res.runs,
+                    s * res.rmse[-1, j],
+                    s * res.filter_sigma[-1, j],
+                    s * res.crlb_sigma[-1, j],
+                    s * res.mean_error[-1, j],
+                    nees,
+                    lo,
+                    hi,
+                )
+            )
     return pd.DataFrame(rows, columns=list(SWEEP_COLUMNS))
 
 
@@ -74,7 +101,7 @@ def plot_sweep(table, path) -> None:
         ax.set_xlabel(parameter)
         ax.set_ylabel(f"final value, {t['unit'].iloc[0]}")
         ax.grid(True, alpha=0.3)
-    for ax in list(axes.flat)[len(names):]:
+    for ax in list(axes.flat)[len(names) :]:
         ax.set_visible(False)
     axes.flat[0].legend(fontsize=8)
     fig.suptitle(f"Monte Carlo sweep over {parameter}: final RMSE and sqrt(CRLB)")

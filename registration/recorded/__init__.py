@@ -11,26 +11,69 @@ checks, sources, streams), ``pairing``, ``run`` (plan, options, checkpoint, filt
 ``output`` (outputs, report, plots, writers, the output folder).
 """
 
-from registration.io.output.checkpoint import CheckpointError, load_checkpoint, save_checkpoint
-from registration.recorded.reading.columns import (
-    ESTIMATE_COLUMNS, NAV_FIELDS, PAIRED_COLUMNS, PLOT_FIELDS, POSITION_COLUMNS, REJECTED_COLUMNS, SYNC_COLUMNS, SYNC_FIELDS,
-    UNPAIRED_COLUMNS, Field,
-)
-from registration.recorded.reading.formats import from_file_frame, iter_frames, read_columns, read_table, to_file_frame, write_table
 from registration.io.files.tablefile import REASON_CODES, FileFormatError, NoValidRowsError
-from registration.recorded.run.options import PairingOptions, RunOptions
+from registration.io.output.checkpoint import CheckpointError, load_checkpoint, save_checkpoint
 from registration.io.output.outfolder import OUTPUT_NAMES, OutputFolderError
 from registration.recorded.output.report import summary_consistency
-from registration.recorded.reading.rowcheck import BadRowError, check_frame, sync_layout
-from registration.recorded.run.runner import run_register
-from registration.recorded.reading.validate import validate_files
 from registration.recorded.output.writers import CsvAppender, PartsWriter
+from registration.recorded.reading.columns import (
+    ESTIMATE_COLUMNS,
+    NAV_FIELDS,
+    PAIRED_COLUMNS,
+    PLOT_FIELDS,
+    POSITION_COLUMNS,
+    REJECTED_COLUMNS,
+    SYNC_COLUMNS,
+    SYNC_FIELDS,
+    UNPAIRED_COLUMNS,
+    Field,
+)
+from registration.recorded.reading.formats import (
+    from_file_frame,
+    iter_frames,
+    read_columns,
+    read_table,
+    to_file_frame,
+    write_table,
+)
+from registration.recorded.reading.rowcheck import BadRowError, check_frame, sync_layout
+from registration.recorded.reading.validate import validate_files
+from registration.recorded.run.options import PairingOptions, RunOptions
+from registration.recorded.run.runner import run_register
 
 __all__ = [
-    "run_register", "validate_files", "summary_consistency", "RunOptions", "PairingOptions",
-    "FileFormatError", "BadRowError", "CheckpointError", "OutputFolderError", "NoValidRowsError", "OUTPUT_NAMES",
-    "read_table", "write_table", "to_file_frame", "from_file_frame", "iter_frames", "read_columns",
-    "check_frame", "sync_layout", "REASON_CODES", "CsvAppender", "PartsWriter", "load_checkpoint", "save_checkpoint",
-    "Field", "SYNC_FIELDS", "SYNC_COLUMNS", "PLOT_FIELDS", "NAV_FIELDS",
-    "ESTIMATE_COLUMNS", "POSITION_COLUMNS", "REJECTED_COLUMNS", "UNPAIRED_COLUMNS", "PAIRED_COLUMNS",
+    "run_register",
+    "validate_files",
+    "summary_consistency",
+    "RunOptions",
+    "PairingOptions",
+    "FileFormatError",
+    "BadRowError",
+    "CheckpointError",
+    "OutputFolderError",
+    "NoValidRowsError",
+    "OUTPUT_NAMES",
+    "read_table",
+    "write_table",
+    "to_file_frame",
+    "from_file_frame",
+    "iter_frames",
+    "read_columns",
+    "check_frame",
+    "sync_layout",
+    "REASON_CODES",
+    "CsvAppender",
+    "PartsWriter",
+    "load_checkpoint",
+    "save_checkpoint",
+    "Field",
+    "SYNC_FIELDS",
+    "SYNC_COLUMNS",
+    "PLOT_FIELDS",
+    "NAV_FIELDS",
+    "ESTIMATE_COLUMNS",
+    "POSITION_COLUMNS",
+    "REJECTED_COLUMNS",
+    "UNPAIRED_COLUMNS",
+    "PAIRED_COLUMNS",
 ]

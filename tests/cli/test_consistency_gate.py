@@ -22,7 +22,12 @@ def test_simulate_reports_consistency_and_writes_it(tmp_path, capsys):
     line = next(t for t in text.splitlines() if t.startswith("consistency: "))
     assert "mean NIS" in line and "over 40 samples" in line and line.endswith(": consistent")
     doc = json.loads((tmp_path / "summary.json").read_text())["consistency"]
-    assert doc["quantity"] == "NIS" and doc["samples"] == 40 and doc["dof"] == 3 and doc["status"] == "consistent"
+    assert (
+        doc["quantity"] == "NIS"
+        and doc["samples"] == 40
+        and doc["dof"] == 3
+        and doc["status"] == "consistent"
+    )
     assert doc["mean"] == pytest.approx(json.loads((tmp_path / "summary.json").read_text())["mean_nis"])
 
 
@@ -46,7 +51,9 @@ def test_an_inconsistent_simulation_exits_3_with_the_causes(tmp_path, capsys, gr
 
 
 def test_allow_inconsistent_accepts_the_run(tmp_path, capsys, gross_simulation):
-    assert main(["simulate", "--steps", "20", "--no-plots", "--allow-inconsistent", "--out", str(tmp_path)]) == 0
+    assert (
+        main(["simulate", "--steps", "20", "--no-plots", "--allow-inconsistent", "--out", str(tmp_path)]) == 0
+    )
     captured = capsys.readouterr()
     assert "inconsistent run accepted (--allow-inconsistent)" in captured.err
     assert all((captured.out + captured.err).count(cause) == 1 for cause in LIKELY_CAUSES)

@@ -17,7 +17,12 @@ import pytest
 
 from registration.cli import main
 from registration.cli.errors import (
-    DEBUG_ENV, EXIT_BAD_INPUT, EXIT_BROKEN_PIPE, EXIT_INCONSISTENT, EXIT_INTERRUPTED, interrupt_message,
+    DEBUG_ENV,
+    EXIT_BAD_INPUT,
+    EXIT_BROKEN_PIPE,
+    EXIT_INCONSISTENT,
+    EXIT_INTERRUPTED,
+    interrupt_message,
 )
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -33,10 +38,15 @@ def test_the_exit_codes_are_the_documented_ones():
     assert (EXIT_BAD_INPUT, EXIT_INCONSISTENT, EXIT_INTERRUPTED, EXIT_BROKEN_PIPE) == (2, 3, 130, 141)
 
 
-@pytest.mark.parametrize("command", [
-    ["simulate", "--steps", "20", "--no-plots"], ["montecarlo", "--runs", "2", "--steps", "20", "--no-plots"],
-    ["fuse", "--trials", "10", "--no-plots"], ["landing", "--runs", "2", "--no-plots"],
-])
+@pytest.mark.parametrize(
+    "command",
+    [
+        ["simulate", "--steps", "20", "--no-plots"],
+        ["montecarlo", "--runs", "2", "--steps", "20", "--no-plots"],
+        ["fuse", "--trials", "10", "--no-plots"],
+        ["landing", "--runs", "2", "--no-plots"],
+    ],
+)
 def test_out_naming_an_existing_file_is_one_line(tmp_path, capsys, command):
     """Before: FileExistsError with a traceback from mkdir."""
     afile = tmp_path / "afile"
@@ -60,6 +70,7 @@ def test_an_unusable_out_fails_before_the_work(tmp_path, capsys, monkeypatch):
 
 def test_a_read_only_output_names_the_path(tmp_path, capsys, monkeypatch):
     """Before: OSError [Errno 30] with a traceback (running as root, read-only is simulated)."""
+
     def read_only(self, *args, **kwargs):
         raise OSError(errno.EROFS, os.strerror(errno.EROFS), str(self))
 
@@ -67,7 +78,9 @@ def test_a_read_only_output_names_the_path(tmp_path, capsys, monkeypatch):
     out = tmp_path / "ro"
     assert main(["simulate", "--steps", "20", "--no-plots", "--out", str(out)]) == EXIT_BAD_INPUT
     err = capsys.readouterr().err
-    assert err == f"registration simulate: error: cannot write {out / 'summary.json'}: Read-only file system\n"
+    assert (
+        err == f"registration simulate: error: cannot write {out / 'summary.json'}: Read-only file system\n"
+    )
 
 
 def test_an_unwritable_export_names_the_path(tmp_path, capsys, monkeypatch):
@@ -78,8 +91,16 @@ def test_an_unwritable_export_names_the_path(tmp_path, capsys, monkeypatch):
 
     monkeypatch.setattr(formats, "write_frame", read_only)
     export = tmp_path / "data.csv"
-    assert main(["simulate", "--steps", "20", "--no-plots", "--out", str(tmp_path / "o"), "--export", str(export)]) == 2
-    assert capsys.readouterr().err == f"registration simulate: error: cannot write {export}: Read-only file system\n"
+    assert (
+        main(
+            ["simulate", "--steps", "20", "--no-plots", "--out", str(tmp_path / "o"), "--export", str(export)]
+        )
+        == 2
+    )
+    assert (
+        capsys.readouterr().err
+        == f"registration simulate: error: cannot write {export}: Read-only file system\n"
+    )
 
 
 def test_any_os_error_names_its_path(tmp_path, capsys, monkeypatch):
@@ -123,12 +144,20 @@ def test_ctrl_c_says_where_it_stopped(tmp_path, capsys, monkeypatch):
     monkeypatch.setattr(registration.online, "register", interrupted)
     out = tmp_path / "new" / "sim"
     assert main(["simulate", "--out", str(out)]) == EXIT_INTERRUPTED
-    assert capsys.readouterr().err == f"\nregistration simulate: interrupted; nothing was written (no earlier outputs in {out})\n"
-    assert not (tmp_path / "new").exists()  # before: an empty folder, "keeping the outputs of the last finished run"
+    assert (
+        capsys.readouterr().err
+        == f"\nregistration simulate: interrupted; nothing was written (no earlier outputs in {out})\n"
+    )
+    assert not (
+        tmp_path / "new"
+    ).exists()  # before: an empty folder, "keeping the outputs of the last finished run"
     out.mkdir(parents=True)
     (out / "summary.json").write_text("{}")
     assert main(["simulate", "--out", str(out)]) == EXIT_INTERRUPTED
-    assert capsys.readouterr().err == f"\nregistration simulate: interrupted; nothing was written: {out} keeps what it held before\n"
+    assert (
+        capsys.readouterr().err
+        == f"\nregistration simulate: interrupted; nothing was written: {out} keeps what it held before\n"
+    )
     assert (out / "summary.json").read_text() == "{}"
 
 
@@ -150,15 +179,28 @@ def test_every_message_names_the_full_command(tmp_path, capsys, monkeypatch):
 def _exit_codes(argv, capsys) -> set[int]:
     assert main([*argv, "--help"]) == 0
     table = capsys.readouterr().out.split("exit codes:\n")[1]
-    return {int(line.split()[0]) for line in table.splitlines() if line.startswith("  ") and line.split()[0].isdigit()}
+    return {
+        int(line.split()[0])
+        for line in table.splitlines()
+        if line.startswith("  ") and line.split()[0].isdigit()
+    }
 
 
-@pytest.mark.parametrize("argv, codes", [
-    ([], {0, 1, 2, 3, 130, 141}), (["register"], {0, 1, 2, 3, 130, 141}), (["simulate"], {0, 2, 3, 130, 141}),
-    (["montecarlo"], {0, 2, 3, 130, 141}), (["fleet"], {0, 2, 3, 130, 141}), (["fleet", "register"], {0, 2, 3, 130, 141}),
-    (["fleet", "simulate"], {0, 2, 3, 130, 141}), (["fuse"], {0, 2, 130, 141}), (["landing"], {0, 2, 130, 141}),
-    (["schema"], {0, 2, 130, 141}),
-])
+@pytest.mark.parametrize(
+    "argv, codes",
+    [
+        ([], {0, 1, 2, 3, 130, 141}),
+        (["register"], {0, 1, 2, 3, 130, 141}),
+        (["simulate"], {0, 2, 3, 130, 141}),
+        (["montecarlo"], {0, 2, 3, 130, 141}),
+        (["fleet"], {0, 2, 3, 130, 141}),
+        (["fleet", "register"], {0, 2, 3, 130, 141}),
+        (["fleet", "simulate"], {0, 2, 3, 130, 141}),
+        (["fuse"], {0, 2, 130, 141}),
+        (["landing"], {0, 2, 130, 141}),
+        (["schema"], {0, 2, 130, 141}),
+    ],
+)
 def test_each_help_lists_the_exit_codes_of_its_command(capsys, argv, codes):
     """Before: every --help listed 1 (register --validate-only) and 3 (the consistency gate)."""
     listed = _exit_codes(argv, capsys)
@@ -168,8 +210,13 @@ def test_each_help_lists_the_exit_codes_of_its_command(capsys, argv, codes):
 def test_ctrl_c_with_a_checkpoint_says_how_to_resume():
     args = argparse.Namespace(checkpoint=Path("run.ckpt"), out=Path("reg"))
     text = interrupt_message("registration register", args)
-    assert text == "registration register: interrupted; rerun the same command to resume from its checkpoint run.ckpt"
-    assert "resume" not in interrupt_message("registration register", argparse.Namespace(checkpoint=None, out=Path("r")))
+    assert (
+        text
+        == "registration register: interrupted; rerun the same command to resume from its checkpoint run.ckpt"
+    )
+    assert "resume" not in interrupt_message(
+        "registration register", argparse.Namespace(checkpoint=None, out=Path("r"))
+    )
 
 
 def _default_sigint() -> None:
@@ -180,8 +227,18 @@ def _default_sigint() -> None:
 
 
 def test_a_real_sigint_exits_130_without_traceback(tmp_path):
-    proc = cli("landing", "--runs", "100000", "--no-plots", "--out", "land", cwd=tmp_path,
-               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, preexec_fn=_default_sigint)
+    proc = cli(
+        "landing",
+        "--runs",
+        "100000",
+        "--no-plots",
+        "--out",
+        "land",
+        cwd=tmp_path,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        preexec_fn=_default_sigint,
+    )
     seen, deadline = b"", time.monotonic() + 120
     try:
         while b"batch/s" not in seen and time.monotonic() < deadline:  # the progress bar has moved
@@ -201,11 +258,15 @@ def test_a_real_sigint_exits_130_without_traceback(tmp_path):
     err = (seen + rest).decode()
     assert proc.returncode == EXIT_INTERRUPTED, err
     assert "Traceback" not in err and "KeyboardInterrupt" not in err
-    assert err.endswith("\nregistration landing: interrupted; nothing was written (no earlier outputs in land)\n")
+    assert err.endswith(
+        "\nregistration landing: interrupted; nothing was written (no earlier outputs in land)\n"
+    )
     assert not (tmp_path / "land").exists()
 
 
-@pytest.mark.parametrize("command", [["schema"], ["schema", "--json"], ["simulate", "--steps", "20", "--no-plots"]])
+@pytest.mark.parametrize(
+    "command", [["schema"], ["schema", "--json"], ["simulate", "--steps", "20", "--no-plots"]]
+)
 def test_a_closed_pipe_stops_quietly(tmp_path, command):
     """Before: BrokenPipeError tracebacks (e.g. `registration schema | head -1`)."""
     read_end, write_end = os.pipe()

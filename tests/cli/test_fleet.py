@@ -34,7 +34,14 @@ def test_simulate_writes_tables_and_outputs(simulated):
         assert (simulated / png).stat().st_size > 10_000
     est = pd.read_csv(simulated / "estimates.csv")
     assert list(est.columns) == [*ESTIMATE_COLUMNS, "truth"]
-    assert set(est["state"]) == {"range_bias", "bearing_bias", "elevation_bias", "heading_error", "pitch_error", "roll_error"}
+    assert set(est["state"]) == {
+        "range_bias",
+        "bearing_bias",
+        "elevation_bias",
+        "heading_error",
+        "pitch_error",
+        "roll_error",
+    }
     assert set(est["unit"]) == {"m", "deg"}
     free = est[est["status"] != "fixed"]
     assert (np.abs(free["estimate"] - free["truth"]) < 4 * free["sigma"]).all()
@@ -46,7 +53,12 @@ def test_simulate_writes_tables_and_outputs(simulated):
 def test_a_zero_prior_is_listed_fixed_with_sigma_0(simulated):
     est = pd.read_csv(simulated / "estimates.csv")
     site = est[est["object"] == "S"]
-    assert len(site) == 3 and (site["status"] == "fixed").all() and (site["sigma"] == 0).all() and (site["estimate"] == 0).all()
+    assert (
+        len(site) == 3
+        and (site["status"] == "fixed").all()
+        and (site["sigma"] == 0).all()
+        and (site["estimate"] == 0).all()
+    )
 
 
 def test_register_reproduces_simulate_bit_for_bit(simulated, tmp_path, capsys):
@@ -59,11 +71,15 @@ def test_register_reproduces_simulate_bit_for_bit(simulated, tmp_path, capsys):
 
 
 def test_parquet_tables_register_to_the_same_estimates(simulated, tmp_path):
-    assert main(["fleet", "simulate", "--format", "parquet", "--no-plots", "--out", str(tmp_path / "sim")]) == 0
+    assert (
+        main(["fleet", "simulate", "--format", "parquet", "--no-plots", "--out", str(tmp_path / "sim")]) == 0
+    )
     assert (tmp_path / "sim" / "plots.parquet").exists() and not (tmp_path / "sim" / "plots.csv").exists()
     assert main(_register_args(tmp_path / "sim", tmp_path / "reg", "parquet")) == 0
     got = pd.read_csv(tmp_path / "reg" / "estimates.csv")
-    pd.testing.assert_frame_equal(got, pd.read_csv(simulated / "estimates.csv").drop(columns="truth"), check_exact=True)
+    pd.testing.assert_frame_equal(
+        got, pd.read_csv(simulated / "estimates.csv").drop(columns="truth"), check_exact=True
+    )
 
 
 def test_a_zero_bias_prior_in_the_sensors_file_fixes_that_bias(simulated, tmp_path):
@@ -87,14 +103,27 @@ def _broken(simulated, tmp_path, name, edit):
     return folder
 
 
-@pytest.mark.parametrize("name, edit, words", [
-    ("plots", lambda f: f.__setitem__("bearing_deg", np.radians(f["bearing_deg"])), ["plots.csv", "row", "'bearing_deg'", "radians?"]),
-    ("sensors", lambda f: f.pop("platform"), ["sensors.csv", "missing column", "platform"]),
-    ("plots", lambda f: f.__setitem__("sensor", np.where(f.index == 11, "X1", f["sensor"])),
-     ["plots.csv", "row 11", "'sensor'", "unknown sensor 'X1'"]),
-    ("navigation", lambda f: f.__setitem__("time_s", f["time_s"] * 0.5),
-     ["plots.csv", "row", "outside", "navigation"]),
-])
+@pytest.mark.parametrize(
+    "name, edit, words",
+    [
+        (
+            "plots",
+            lambda f: f.__setitem__("bearing_deg", np.radians(f["bearing_deg"])),
+            ["plots.csv", "row", "'bearing_deg'", "radians?"],
+        ),
+        ("sensors", lambda f: f.pop("platform"), ["sensors.csv", "missing column", "platform"]),
+        (
+            "plots",
+            lambda f: f.__setitem__("sensor", np.where(f.index == 11, "X1", f["sensor"])),
+            ["plots.csv", "row 11", "'sensor'", "unknown sensor 'X1'"],
+        ),
+        (
+            "navigation",
+            lambda f: f.__setitem__("time_s", f["time_s"] * 0.5),
+            ["plots.csv", "row", "outside", "navigation"],
+        ),
+    ],
+)
 def test_bad_tables_exit_2_naming_file_row_column(simulated, tmp_path, capsys, name, edit, words):
     folder = _broken(simulated, tmp_path, name, edit)
     assert main(_register_args(folder, tmp_path / "reg")) == 2
@@ -105,7 +134,12 @@ def test_bad_tables_exit_2_naming_file_row_column(simulated, tmp_path, capsys, n
 
 
 def test_gross_misfit_exits_3_after_writing_unless_allowed(simulated, tmp_path, capsys):
-    folder = _broken(simulated, tmp_path, "sensors", lambda f: f.__setitem__("sigma_bearing_deg", f["sigma_bearing_deg"] / 10))
+    folder = _broken(
+        simulated,
+        tmp_path,
+        "sensors",
+        lambda f: f.__setitem__("sigma_bearing_deg", f["sigma_bearing_deg"] / 10),
+    )
     assert main(_register_args(folder, tmp_path / "reg")) == 3
     err = capsys.readouterr().err
     assert "grossly inconsistent" in err and "Likely causes" in err and "--allow-inconsistent" in err
@@ -138,7 +172,10 @@ def test_online_method_writes_the_history_and_ends_near_the_batch(simulated, tmp
     np.testing.assert_allclose(last["estimate"], online["estimate"][free].to_numpy(), rtol=1e-12)
     summary = json.loads((out / "summary.json").read_text())
     assert summary["method"] == "online" and summary["consistency"]["status"] == "consistent"
-    assert summary["residuals_at_final_estimate"]["consistent"] and summary["innovations"]["status"] == "consistent"
+    assert (
+        summary["residuals_at_final_estimate"]["consistent"]
+        and summary["innovations"]["status"] == "consistent"
+    )
     assert summary["consistency"]["mean"] == pytest.approx(summary["residuals_at_final_estimate"]["mean"])
 
 
@@ -187,7 +224,9 @@ def test_plots_without_target_ids_are_associated(simulated, tmp_path, capsys):
     assert "association:" in capsys.readouterr().out
     found = pd.read_csv(out / "associations.csv", dtype={"target": str, "sensor": str}, keep_default_na=False)
     # behaviour changed with the robust association: the join's distance and the reason a plot was left out
-    assert list(found.columns) == ["row", "time_s", "sensor", "target", "join", "reason"] and len(found) == len(truth)
+    assert list(found.columns) == ["row", "time_s", "sensor", "target", "join", "reason"] and len(
+        found
+    ) == len(truth)
     assert ((found["join"] == "") | (found["target"] != "")).all()
     assert ((found["target"] != "") | (found["reason"] != "")).all()
     labelled = found["target"] != ""
@@ -243,6 +282,7 @@ def test_registering_into_the_simulated_folder_keeps_its_tables(simulated, tmp_p
 
 # --- the findings of a first user of `fleet register` ---
 
+
 def _cut_line(folder, name, row, keep):
     """Keep the first ``keep`` fields of data row ``row`` (from 0; -1: the last) of FOLDER/NAME.csv."""
     path = folder / f"{name}.csv"
@@ -259,12 +299,16 @@ def test_a_truncated_plots_line_stops_or_is_set_aside(simulated, tmp_path, capsy
     last, middle = _cut_line(folder, "plots", -1, 5), _cut_line(folder, "plots", 40, 4)
     assert main(_register_args(folder, tmp_path / "stop")) == 2
     err = capsys.readouterr().err
-    assert f"plots.csv: row {middle}, column 'bearing_deg': line {middle + 2} has 4 fields, the header 6" in err, err
+    assert (
+        f"plots.csv: row {middle}, column 'bearing_deg': line {middle + 2} has 4 fields, the header 6" in err
+    ), err
     assert main(_register_args(folder, tmp_path / "skip", extra=["--on-bad-row", "skip"])) == 0
     assert "set aside 2 bad rows (in rejected.csv)" in capsys.readouterr().out
     rejected = pd.read_csv(tmp_path / "skip" / "rejected.csv")
     assert list(zip(rejected["row"], rejected["column"], rejected["reason_code"])) == [
-        (middle, "bearing_deg", "short_row"), (last, "elevation_deg", "short_row")]
+        (middle, "bearing_deg", "short_row"),
+        (last, "elevation_deg", "short_row"),
+    ]
     summary = json.loads((tmp_path / "skip" / "summary.json").read_text())
     assert summary["inputs"]["plots_used"] == summary["inputs"]["plots_read"] - 2
 
@@ -274,23 +318,40 @@ def test_navigation_of_every_ship_registers_with_a_note(simulated, tmp_path, cap
     folder = tmp_path / "in"
     shutil.copytree(simulated, folder)
     nav = pd.read_csv(folder / "navigation.csv", dtype={"platform": str})
-    pd.concat([nav, nav[nav["platform"] == "A"].assign(platform="X")]).to_csv(folder / "navigation.csv", index=False)
+    pd.concat([nav, nav[nav["platform"] == "A"].assign(platform="X")]).to_csv(
+        folder / "navigation.csv", index=False
+    )
     assert main(_register_args(folder, tmp_path / "reg")) == 0
     out = capsys.readouterr().out
     assert "note: " in out and "navigation.csv: platform(s) ['X'] carry no sensor" in out
     got = pd.read_csv(tmp_path / "reg" / "estimates.csv")
-    pd.testing.assert_frame_equal(got, pd.read_csv(simulated / "estimates.csv").drop(columns="truth"), check_exact=True)
+    pd.testing.assert_frame_equal(
+        got, pd.read_csv(simulated / "estimates.csv").drop(columns="truth"), check_exact=True
+    )
     summary = json.loads((tmp_path / "reg" / "summary.json").read_text())
     assert any("['X'] carry no sensor" in n for n in summary["inputs"]["notes"])
 
 
-@pytest.mark.parametrize("name, edit, words", [
-    ("navigation", lambda f: [f.__setitem__(c, np.radians(f[c])) for c in ("heading_deg", "pitch_deg", "roll_deg")],
-     ["navigation.csv", "column 'heading_deg'", "radians?", "pitch_deg and roll_deg are in degrees"]),
-    ("sensors", lambda f: f.pop("sigma_elevation_deg"),
-     ["sensors.csv: no column 'sigma_elevation_deg'", "plots.csv has elevation values", "give their sigma_elevation_deg"]),
-    ("plots", lambda f: f.iloc[0:0], ["plots.csv: no data rows (the file holds only a header)"]),
-])
+@pytest.mark.parametrize(
+    "name, edit, words",
+    [
+        (
+            "navigation",
+            lambda f: [f.__setitem__(c, np.radians(f[c])) for c in ("heading_deg", "pitch_deg", "roll_deg")],
+            ["navigation.csv", "column 'heading_deg'", "radians?", "pitch_deg and roll_deg are in degrees"],
+        ),
+        (
+            "sensors",
+            lambda f: f.pop("sigma_elevation_deg"),
+            [
+                "sensors.csv: no column 'sigma_elevation_deg'",
+                "plots.csv has elevation values",
+                "give their sigma_elevation_deg",
+            ],
+        ),
+        ("plots", lambda f: f.iloc[0:0], ["plots.csv: no data rows (the file holds only a header)"]),
+    ],
+)
 def test_findings_exit_2_naming_the_file_at_fault(simulated, tmp_path, capsys, name, edit, words):
     """Before: attitude in radians ended in the consistency gate (exit 3); a missing sensors column was
     blamed on plots.csv row 0 ("a elevation"); an empty plots file said "every target was excluded: "."""

@@ -45,11 +45,18 @@ def test_the_exit_codes_include_the_internal_numerical_error(capsys):
     assert "  4    internal numerical error" in capsys.readouterr().out
 
 
-@pytest.mark.parametrize("error", [np.linalg.LinAlgError("Singular matrix"), NumericalError("windows singular"),
-                                   ZeroDivisionError("float division by zero")])
+@pytest.mark.parametrize(
+    "error",
+    [
+        np.linalg.LinAlgError("Singular matrix"),
+        NumericalError("windows singular"),
+        ZeroDivisionError("float division by zero"),
+    ],
+)
 def test_a_numerical_failure_exits_4_as_an_internal_error(simulated, tmp_path, capsys, monkeypatch, error):
     """Before: `registration fleet: error: Singular matrix`, exit 2, as if the files were bad
     (numpy's LinAlgError is a ValueError)."""
+
     def fail(*args, **kwargs):
         raise error
 
@@ -78,7 +85,9 @@ def test_the_reference_term_is_printed_and_written(simulated, tmp_path, capsys):
     assert refs["positions_given"] == 300 and refs["positions_used"] == 299 and refs["values"] == 3 * 299
     assert 0.6 < refs["mean_square"] < 1.3 and set(refs["by_target"]) == {"T1"}
     t1 = summary["residuals_by_target"]["T1"]
-    assert t1["reference_values"] == 3 * 299 and t1["reference_mean_square"] == pytest.approx(refs["mean_square"])
+    assert t1["reference_values"] == 3 * 299 and t1["reference_mean_square"] == pytest.approx(
+        refs["mean_square"]
+    )
     assert "reference_values" not in summary["residuals_by_target"]["T2"]
     parts = summary["chi_square"]["parts"]
     assert parts["references"]["values"] == 3 * 299
@@ -104,7 +113,11 @@ def test_the_online_run_gives_one_verdict_and_gates_on_it(simulated, tmp_path, c
     assert main(_register_args(folder, tmp_path / "reg", ["--method", "online"])) == EXIT_INCONSISTENT
     captured = capsys.readouterr()
     verdicts = [t for t in captured.out.splitlines() if t.startswith("consistency:")]
-    assert len(verdicts) == 1 and "at the final estimate" in verdicts[0] and "grossly inconsistent" in verdicts[0]
+    assert (
+        len(verdicts) == 1
+        and "at the final estimate" in verdicts[0]
+        and "grossly inconsistent" in verdicts[0]
+    )
     info = [t for t in captured.out.splitlines() if t.startswith("normalised innovations")]
     assert len(info) == 1 and "not the verdict" in info[0] and "consistent" not in info[0]
     assert not any("OUTSIDE the band" in t for t in captured.out.splitlines())

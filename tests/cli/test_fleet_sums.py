@@ -44,7 +44,9 @@ def batch(tables, tmp_path_factory):
 
 
 def _table_line(text, obj, state):
-    return next(line for line in text.splitlines() if re.match(rf"\s+{re.escape(obj)}\s+{re.escape(state)}\s", line))
+    return next(
+        line for line in text.splitlines() if re.match(rf"\s+{re.escape(obj)}\s+{re.escape(state)}\s", line)
+    )
 
 
 def test_sums_are_printed_and_written_with_their_sigma(batch):
@@ -58,7 +60,10 @@ def test_sums_are_printed_and_written_with_their_sigma(batch):
         row = sums.loc[obj]
         assert row["state"] == "heading_error+bearing_bias" and row["unit"] == "deg"
         assert 0 < row["sigma"] < 0.05
-        total = parts.loc[(platform, "heading_error"), "estimate"] + parts.loc[(sensor, "bearing_bias"), "estimate"]
+        total = (
+            parts.loc[(platform, "heading_error"), "estimate"]
+            + parts.loc[(sensor, "bearing_bias"), "estimate"]
+        )
         assert np.isclose(row["estimate"], total, rtol=0, atol=1e-9)
         line = _table_line(text, obj, "heading_error+bearing_bias")
         assert "identifiable combination" in line and f"{row['sigma']:.3g}" in line
@@ -66,7 +71,9 @@ def test_sums_are_printed_and_written_with_their_sigma(batch):
     written = {(e["object"], e["state"]): e for e in summary["estimates"]}
     for obj in SUMS:
         e = written[(obj, "heading_error+bearing_bias")]
-        assert e["status"] == "identifiable combination" and e["sigma"] == pytest.approx(sums.loc[obj, "sigma"], rel=1e-12)
+        assert e["status"] == "identifiable combination" and e["sigma"] == pytest.approx(
+            sums.loc[obj, "sigma"], rel=1e-12
+        )
 
 
 def test_one_sigma_convention_on_console_csv_and_json(batch):

@@ -18,7 +18,10 @@ def simulated(tmp_path_factory):
 
 
 def test_tables_folder_registers_as_the_explicit_files(simulated, tmp_path):
-    assert main(["fleet", "register", "--tables", str(simulated), "--out", str(tmp_path / "a"), "--no-plots"]) == 0
+    assert (
+        main(["fleet", "register", "--tables", str(simulated), "--out", str(tmp_path / "a"), "--no-plots"])
+        == 0
+    )
     got = pd.read_csv(tmp_path / "a" / "estimates.csv")
     want = pd.read_csv(simulated / "estimates.csv").drop(columns="truth")
     pd.testing.assert_frame_equal(got, want, check_exact=True)
@@ -29,8 +32,20 @@ def test_an_explicit_table_overrides_the_folder(simulated, tmp_path):
     plots.iloc[: len(plots) // 2].to_csv(tmp_path / "half.csv", index=False)
     paths = tables_in_folder(simulated, {"plots": tmp_path / "half.csv"})
     assert paths["plots"] == tmp_path / "half.csv" and paths["sensors"] == simulated / "sensors.csv"
-    assert main(["fleet", "register", "--tables", str(simulated), "--plots", str(tmp_path / "half.csv"),
-                 "--out", str(tmp_path / "b"), "--no-plots", "--allow-inconsistent"]) in (0, 3)
+    assert main(
+        [
+            "fleet",
+            "register",
+            "--tables",
+            str(simulated),
+            "--plots",
+            str(tmp_path / "half.csv"),
+            "--out",
+            str(tmp_path / "b"),
+            "--no-plots",
+            "--allow-inconsistent",
+        ]
+    ) in (0, 3)
     used = json.loads((tmp_path / "b" / "summary.json").read_text())["inputs"]["plots_used"]
     full = json.loads((simulated / "summary.json").read_text())["inputs"]["plots_used"]
     assert used <= len(plots) // 2 < full

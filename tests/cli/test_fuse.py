@@ -44,7 +44,9 @@ def test_scenario2_reproduces_the_papers_radar_figure_and_3x_claim():
     radar = ev.row("radar")
     assert radar["analytic_gdop_m"] == pytest.approx(np.hypot(60.0, 80e3 * 5e-3), rel=1e-12)
     # the paper's radar figure is a 1000-pair Monte Carlo figure (SE ~ 9 m around 404.5 m)
-    assert abs(radar["paper_gdop_m"] - radar["analytic_gdop_m"]) < 3 * gaussian_gdop_se(ev.analytic_cov["radar"], 1000)
+    assert abs(radar["paper_gdop_m"] - radar["analytic_gdop_m"]) < 3 * gaussian_gdop_se(
+        ev.analytic_cov["radar"], 1000
+    )
     # the fused figure is illegible in the source: unknown (null), its printed text kept but not a number
     assert ev.row("paper_actual")["paper_gdop_m"] is None
     assert next(r for r in ev.to_json()["rows"] if r["name"] == "paper_actual")["paper_gdop_m"] is None
@@ -79,14 +81,18 @@ def random_scenarios(count: int, seed: int):
         d = int(rng.choice([2, 3]))
         names = F.COMPONENTS[d]
         comps = tuple(rng.choice(names, int(rng.integers(1, d + 1)), replace=False))
-        target = [rng.uniform(5e3, 150e3), rng.uniform(-np.pi, np.pi)] + ([rng.uniform(-0.3, 0.8)] if d == 3 else [])
+        target = [rng.uniform(5e3, 150e3), rng.uniform(-np.pi, np.pi)] + (
+            [rng.uniform(-0.3, 0.8)] if d == 3 else []
+        )
         site = np.zeros(d) if rng.random() < 0.2 else rng.uniform(-100e3, 100e3, d)
         if d == 3:
             site[2] = rng.uniform(0.0, 100.0)
         sr = np.array([rng.uniform(5, 200)] + list(rng.uniform(1e-3, 1e-2, d - 1)))
         ss = np.array([rng.uniform(1, 200) if c == "range" else rng.uniform(3e-4, 2e-2) for c in comps])
         try:
-            out.append(FusionScenario("random", np.zeros(d), site, np.array(target), sr, comps, ss).validated())
+            out.append(
+                FusionScenario("random", np.zeros(d), site, np.array(target), sr, comps, ss).validated()
+            )
         except ValueError:
             continue  # a target drawn onto a site: skip
     return out
@@ -113,8 +119,13 @@ def test_claimed_information_is_the_fisher_information_plus_the_radar_counted_ag
     for sc in random_scenarios(20, seed=8):
         za, zb = true_measurements(sc)
         res = F.fuse_paper(za, sc.sigma_radar, zb, sc.sigma_second, sc.components, sc.site_second_loc)
-        fisher = F.fisher_information(F.radar_point(za, sc.sigma_radar)[0], sc.sigma_radar, sc.sigma_second,
-                                      sc.components, sc.site_second_loc)[0]
+        fisher = F.fisher_information(
+            F.radar_point(za, sc.sigma_radar)[0],
+            sc.sigma_radar,
+            sc.sigma_second,
+            sc.components,
+            sc.site_second_loc,
+        )[0]
         _, G = cartesian2polar(res.p_radar_loc - sc.site_second_loc)
         extra = G[0].T @ np.diag(1.0 / res.var_radar_at_second[0]) @ G[0]
         claimed_info = np.linalg.inv(res.P_claimed[0])
@@ -158,7 +169,9 @@ def test_cli_paper_rows_are_computed_and_the_papers_figures_sit_where_the_monte_
     summary = json.loads((out / "summary.json").read_text())
     assert printed_rows(text) == expected_rows(summary)
     sc, rows, se = summary["scenario"], {r["name"]: r for r in summary["rows"]}, summary["monte_carlo_se_m"]
-    closed_form = np.hypot(sc["sigma_radar"]["range_m"], sc["target_range_m"] * sc["sigma_radar"]["azimuth_mrad"] * 1e-3)
+    closed_form = np.hypot(
+        sc["sigma_radar"]["range_m"], sc["target_range_m"] * sc["sigma_radar"]["azimuth_mrad"] * 1e-3
+    )
     assert rows["radar"]["analytic_gdop_m"] == pytest.approx(closed_form, rel=1e-12)
     assert abs(rows["radar"]["paper_gdop_m"] - closed_form) <= 0.05  # the paper printed the analytic value
     assert summary["trials"] == 1000
@@ -186,7 +199,14 @@ def test_cli_scenario1_writes_table_summary_and_plots(tmp_path, capsys):
     out = tmp_path / "s1"
     assert main(["fuse", "--scenario", "1", "--trials", "400", "--seed", "3", "--out", str(out)]) == 0
     text = capsys.readouterr().out
-    for label in ("radar alone", "pseudo-measurement", "as claimed", "as it performs", "optimal fuser", "Cramer-Rao"):
+    for label in (
+        "radar alone",
+        "pseudo-measurement",
+        "as claimed",
+        "as it performs",
+        "optimal fuser",
+        "Cramer-Rao",
+    ):
         assert label in text
     assert "claimed covariance below the CRLB: YES" in text
     summary = json.loads((out / "summary.json").read_text())
@@ -211,9 +231,31 @@ def test_cli_is_reproducible_with_a_seed(tmp_path):
 
 def test_cli_custom_geometry_3d(tmp_path, capsys):
     out = tmp_path / "c"
-    rc = main(["fuse", "--scenario", "1", "--trials", "300", "--target-range-m", "60000", "--target-azimuth-deg", "30",
-               "--target-elevation-deg", "10", "--site-second-m", "30000", "-20000", "50",
-               "--second", "azimuth,elevation", "--sigma-second-elevation-mrad", "2", "--out", str(out)])
+    rc = main(
+        [
+            "fuse",
+            "--scenario",
+            "1",
+            "--trials",
+            "300",
+            "--target-range-m",
+            "60000",
+            "--target-azimuth-deg",
+            "30",
+            "--target-elevation-deg",
+            "10",
+            "--site-second-m",
+            "30000",
+            "-20000",
+            "50",
+            "--second",
+            "azimuth,elevation",
+            "--sigma-second-elevation-mrad",
+            "2",
+            "--out",
+            str(out),
+        ]
+    )
     assert rc == 0
     summary = json.loads((out / "summary.json").read_text())
     assert summary["scenario"]["dim"] == 3
@@ -239,7 +281,10 @@ def test_cli_same_site_laser(tmp_path):
         (["--baseline-m", "5", "--site-second-m", "1", "2"], "not both"),
         (["--sigma-second-range-m", "10"], "does not measure range"),
         (["--trials", "1"], "--trials"),
-        (["--target-range-m", "80000", "--target-azimuth-deg", "0", "--baseline-m", "80000"], "at the sensor's site"),
+        (
+            ["--target-range-m", "80000", "--target-azimuth-deg", "0", "--baseline-m", "80000"],
+            "at the sensor's site",
+        ),
     ],
 )
 def test_cli_bad_input_exits_2_with_a_clear_message(argv, message, capsys):

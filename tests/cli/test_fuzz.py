@@ -41,41 +41,86 @@ def choice(*values):
 
 
 SCENARIO = {
-    "--angle-sigma-deg": number(0.01, 25), "--range-sigma-m": number(0.1, 500), "--steps": COUNT,
-    "--ship-motion": st.sampled_from(["2,8,5,12", "1,1,1,1", "0,5,0,5", "45,8,5,12", "2,0,5,12", "2,8,5", "a,b,c,d", "",
-                                      "nan,8,5,12", "2,inf,5,12"]),
-    "--linearization": choice("paper", "relinearized", "fitted"), "--q-mode": choice("fixed", "adaptive"),
-    "--t-variant": choice("standard", "paper"), "--seed": COUNT,
+    "--angle-sigma-deg": number(0.01, 25),
+    "--range-sigma-m": number(0.1, 500),
+    "--steps": COUNT,
+    "--ship-motion": st.sampled_from(
+        [
+            "2,8,5,12",
+            "1,1,1,1",
+            "0,5,0,5",
+            "45,8,5,12",
+            "2,0,5,12",
+            "2,8,5",
+            "a,b,c,d",
+            "",
+            "nan,8,5,12",
+            "2,inf,5,12",
+        ]
+    ),
+    "--linearization": choice("paper", "relinearized", "fitted"),
+    "--q-mode": choice("fixed", "adaptive"),
+    "--t-variant": choice("standard", "paper"),
+    "--seed": COUNT,
 }
 OPTIONS = {
     "simulate": {**SCENARIO, "--allow-inconsistent": None},
-    "montecarlo": {**SCENARIO, "--runs": COUNT, "--include-weak": None, "--allow-inconsistent": None,
-                   "--sum": st.sampled_from(["dC_a+dq_a", "de_a+de_b", "dC_a", "x+y", "dC_a+dC_a", ""])},
+    "montecarlo": {
+        **SCENARIO,
+        "--runs": COUNT,
+        "--include-weak": None,
+        "--allow-inconsistent": None,
+        "--sum": st.sampled_from(["dC_a+dq_a", "de_a+de_b", "dC_a", "x+y", "dC_a+dC_a", ""]),
+    },
     "fuse": {
-        "--scenario": st.sampled_from(["1", "2", "3", "x"]), "--trials": COUNT, "--seed": COUNT,
-        "--max-plot-points": COUNT, "--baseline-m": number(-1e5, 1e5), "--target-range-m": number(-1e3, 2e5),
-        "--target-azimuth-deg": number(-400, 400), "--target-elevation-deg": number(-95, 95),
-        "--sigma-range-m": number(-10, 500), "--sigma-azimuth-mrad": number(-1, 20),
-        "--sigma-elevation-mrad": number(-1, 20), "--second": st.sampled_from(["range", "azimuth", "bearing",
-                                                                               "elevation", "range,azimuth", "x", ""]),
-        "--sigma-second-range-m": number(-1, 50), "--sigma-second-azimuth-mrad": number(-1, 20),
+        "--scenario": st.sampled_from(["1", "2", "3", "x"]),
+        "--trials": COUNT,
+        "--seed": COUNT,
+        "--max-plot-points": COUNT,
+        "--baseline-m": number(-1e5, 1e5),
+        "--target-range-m": number(-1e3, 2e5),
+        "--target-azimuth-deg": number(-400, 400),
+        "--target-elevation-deg": number(-95, 95),
+        "--sigma-range-m": number(-10, 500),
+        "--sigma-azimuth-mrad": number(-1, 20),
+        "--sigma-elevation-mrad": number(-1, 20),
+        "--second": st.sampled_from(["range", "azimuth", "bearing", "elevation", "range,azimuth", "x", ""]),
+        "--sigma-second-range-m": number(-1, 50),
+        "--sigma-second-azimuth-mrad": number(-1, 20),
         "--sigma-second-elevation-mrad": number(-1, 20),
     },
     "landing": {
-        "--runs": COUNT, "--seed": COUNT, "--bin-m": number(50, 2000), "--plot-bin-m": number(50, 1000),
-        "--fusion-rate-hz": number(1, 30), "--degree": COUNT, "--half-window-s": number(0.05, 1),
-        "--ignore-clock-offsets": None, "--glide-slope-deg": number(-5, 20), "--ground-speed-mps": number(20, 100),
-        "--start-range-m": number(100, 3000), "--end-range-m": number(-100, 500), "--ship-speed-mps": number(-5, 30),
-        "--angled-deck-deg": number(-20, 20), "--yaw-deg": number(-1, 10), "--pitch-period-s": number(-1, 20),
-        "--radar-rate-hz": number(1, 40), "--radar-sigma-range-m": number(-1, 10),
-        "--camera-rate-hz": number(1, 40), "--camera-clock-offset-ms": number(-50, 50),
+        "--runs": COUNT,
+        "--seed": COUNT,
+        "--bin-m": number(50, 2000),
+        "--plot-bin-m": number(50, 1000),
+        "--fusion-rate-hz": number(1, 30),
+        "--degree": COUNT,
+        "--half-window-s": number(0.05, 1),
+        "--ignore-clock-offsets": None,
+        "--glide-slope-deg": number(-5, 20),
+        "--ground-speed-mps": number(20, 100),
+        "--start-range-m": number(100, 3000),
+        "--end-range-m": number(-100, 500),
+        "--ship-speed-mps": number(-5, 30),
+        "--angled-deck-deg": number(-20, 20),
+        "--yaw-deg": number(-1, 10),
+        "--pitch-period-s": number(-1, 20),
+        "--radar-rate-hz": number(1, 40),
+        "--radar-sigma-range-m": number(-1, 10),
+        "--camera-rate-hz": number(1, 40),
+        "--camera-clock-offset-ms": number(-50, 50),
     },
     "schema": {"--json": None},
 }
 #: always added, so that every example is quick
-FAST = {"simulate": ["--no-plots", "--steps", "12"], "montecarlo": ["--no-plots", "--runs", "2", "--steps", "12"],
-        "fuse": ["--no-plots", "--trials", "20"], "landing": ["--no-plots", "--runs", "2", "--start-range-m", "400"],
-        "schema": []}
+FAST = {
+    "simulate": ["--no-plots", "--steps", "12"],
+    "montecarlo": ["--no-plots", "--runs", "2", "--steps", "12"],
+    "fuse": ["--no-plots", "--trials", "20"],
+    "landing": ["--no-plots", "--runs", "2", "--start-range-m", "400"],
+    "schema": [],
+}
 
 
 @st.composite
@@ -93,7 +138,10 @@ def command_lines(draw, name: str):
     if out is not None and name != "schema":
         argv += ["--out", out]
     if name == "simulate" and draw(st.booleans()):
-        argv += ["--export", f"{out or 'out/simulate'}/" + draw(st.sampled_from(["d.csv", "d.parquet", "d.xlsx", "d"]))]
+        argv += [
+            "--export",
+            f"{out or 'out/simulate'}/" + draw(st.sampled_from(["d.csv", "d.parquet", "d.xlsx", "d"])),
+        ]
     return argv
 
 
@@ -135,6 +183,7 @@ def check(argv: list[str], code: int, err: str, allowed=(0, 2, 3)) -> None:
 @pytest.mark.parametrize("name", sorted(OPTIONS))
 def test_random_options(name):
     """Random options; sometimes a file already sits where the output folder (or its parent) goes."""
+
     @FUZZ
     @given(command_lines(name), st.sampled_from([{}, {}, {"o": b"a file"}, {"out": b"a file"}]))
     def fuzz(argv, files):
@@ -145,13 +194,29 @@ def test_random_options(name):
 
 
 # --------------------------------------------------------------------------- register: random input files
-CELL = st.one_of(st.floats(-400, 400, allow_nan=False).map(lambda v: f"{v:.4f}"), st.integers(0, 2_000_000).map(str),
-                 st.sampled_from(["", "nan", "inf", "x", "1e400", '"', "0"]))
-REGISTER_OPTIONS = st.lists(st.sampled_from([
-    ["--on-bad-row", "skip"], ["--on-bad-row", "stop"], ["--validate-only"], ["--format", "parquet"],
-    ["--chunk-rows", "3"], ["--chunk-rows", "0"], ["--sigma", "50,0.5,0.5"], ["--sigma", "-1,0,0"],
-    ["--q-mode", "adaptive"], ["--observability", "filter"], ["--allow-inconsistent"],
-]), max_size=3)
+CELL = st.one_of(
+    st.floats(-400, 400, allow_nan=False).map(lambda v: f"{v:.4f}"),
+    st.integers(0, 2_000_000).map(str),
+    st.sampled_from(["", "nan", "inf", "x", "1e400", '"', "0"]),
+)
+REGISTER_OPTIONS = st.lists(
+    st.sampled_from(
+        [
+            ["--on-bad-row", "skip"],
+            ["--on-bad-row", "stop"],
+            ["--validate-only"],
+            ["--format", "parquet"],
+            ["--chunk-rows", "3"],
+            ["--chunk-rows", "0"],
+            ["--sigma", "50,0.5,0.5"],
+            ["--sigma", "-1,0,0"],
+            ["--q-mode", "adaptive"],
+            ["--observability", "filter"],
+            ["--allow-inconsistent"],
+        ]
+    ),
+    max_size=3,
+)
 
 
 @functools.lru_cache(maxsize=1)
@@ -179,7 +244,9 @@ def mutated_tables(draw) -> bytes:
             rows[draw(st.integers(1, len(rows) - 1))][col] = draw(CELL)
         elif op == "scale":  # e.g. radians in a _deg column, km in an _m column
             k = draw(st.sampled_from([180 / 3.141592653589793, 3.141592653589793 / 180, -1.0, 1e3, 1e-3]))
-            rows = [rows[0]] + [[f"{float(v) * k:.9g}" if j == col else v for j, v in enumerate(r)] for r in rows[1:]]
+            rows = [rows[0]] + [
+                [f"{float(v) * k:.9g}" if j == col else v for j, v in enumerate(r)] for r in rows[1:]
+            ]
         elif op == "drop":
             rows = [[v for j, v in enumerate(r) if j != col] for r in rows]
         elif op == "swap":
@@ -198,7 +265,9 @@ def mutated_tables(draw) -> bytes:
 @st.composite
 def random_tables(draw) -> bytes:
     """A CSV with some of the synchronous columns (any order, maybe extra ones) and a few rows of odd cells."""
-    columns = draw(st.lists(st.sampled_from(list(SYNC_COLUMNS) + ["extra", "time_s"]), max_size=len(SYNC_COLUMNS) + 2))
+    columns = draw(
+        st.lists(st.sampled_from(list(SYNC_COLUMNS) + ["extra", "time_s"]), max_size=len(SYNC_COLUMNS) + 2)
+    )
     rows = draw(st.lists(st.lists(CELL, min_size=len(columns), max_size=len(columns)), max_size=6))
     lines = [",".join(columns)] + [",".join(r) for r in rows]
     return ("\n".join(lines) + draw(st.sampled_from(["", "\n", "\n,,\n"]))).encode()
@@ -209,7 +278,11 @@ def register_argv(options, name: str) -> list[str]:
 
 
 @FUZZ
-@given(data=st.binary(max_size=300), name=st.sampled_from(["in.csv", "in.parquet", "in.txt"]), options=REGISTER_OPTIONS)
+@given(
+    data=st.binary(max_size=300),
+    name=st.sampled_from(["in.csv", "in.parquet", "in.txt"]),
+    options=REGISTER_OPTIONS,
+)
 def test_register_random_bytes(data, name, options):
     argv = register_argv(options, name)
     code, err = run_isolated(argv, {name: data})

@@ -14,25 +14,59 @@ def tables(tmp_path_factory):
     paths = []
     for seed in (1, 2, 3):
         path = d / f"t{seed}.csv"
-        assert main(["simulate", "--steps", "30", "--seed", str(seed), "--no-plots", "--out", str(d / f"sim{seed}"),
-                     "--export", str(path)]) == 0
+        assert (
+            main(
+                [
+                    "simulate",
+                    "--steps",
+                    "30",
+                    "--seed",
+                    str(seed),
+                    "--no-plots",
+                    "--out",
+                    str(d / f"sim{seed}"),
+                    "--export",
+                    str(path),
+                ]
+            )
+            == 0
+        )
         paths.append(str(path))
     return paths
 
 
 def test_each_file_is_registered_into_its_own_folder(tables, tmp_path, capsys):
-    assert main(["register", *tables, "--each", "--no-plots", "--no-progress", "--out", str(tmp_path / "a")]) == 0
+    assert (
+        main(["register", *tables, "--each", "--no-plots", "--no-progress", "--out", str(tmp_path / "a")])
+        == 0
+    )
     assert sorted(p.name for p in (tmp_path / "a").iterdir()) == ["t1", "t2", "t3"]
     assert "3 of 3 files registered" in capsys.readouterr().out
     # the same as registering the file alone
     assert main(["register", tables[1], "--no-plots", "--no-progress", "--out", str(tmp_path / "one")]) == 0
-    assert (tmp_path / "one" / "estimates.csv").read_bytes() == (tmp_path / "a" / "t2" / "estimates.csv").read_bytes()
+    assert (tmp_path / "one" / "estimates.csv").read_bytes() == (
+        tmp_path / "a" / "t2" / "estimates.csv"
+    ).read_bytes()
 
 
 def test_workers_write_the_same_files(tables, tmp_path):
     pytest.importorskip("dask.distributed")
     for name, extra in (("a", []), ("b", ["--workers", "2"])):
-        assert main(["register", *tables, "--each", "--no-plots", "--no-progress", "--out", str(tmp_path / name), *extra]) == 0
+        assert (
+            main(
+                [
+                    "register",
+                    *tables,
+                    "--each",
+                    "--no-plots",
+                    "--no-progress",
+                    "--out",
+                    str(tmp_path / name),
+                    *extra,
+                ]
+            )
+            == 0
+        )
     for stem in ("t1", "t2", "t3"):
         for f in ("estimates.csv", "positions.csv"):
             assert (tmp_path / "a" / stem / f).read_bytes() == (tmp_path / "b" / stem / f).read_bytes()
@@ -41,16 +75,33 @@ def test_workers_write_the_same_files(tables, tmp_path):
 def test_a_bad_file_fails_alone(tables, tmp_path, capsys):
     bad = tmp_path / "bad.csv"
     bad.write_text("not,a,table\n1,2,3\n")
-    assert main(["register", tables[0], str(bad), "--each", "--no-plots", "--no-progress", "--out", str(tmp_path / "o")]) == 2
+    assert (
+        main(
+            [
+                "register",
+                tables[0],
+                str(bad),
+                "--each",
+                "--no-plots",
+                "--no-progress",
+                "--out",
+                str(tmp_path / "o"),
+            ]
+        )
+        == 2
+    )
     out = capsys.readouterr().out
     assert "bad.csv: error:" in out and "1 of 2 files registered" in out
     assert (tmp_path / "o" / "t1" / "estimates.csv").exists()
 
 
-@pytest.mark.parametrize("extra, message", [
-    (["--checkpoint", "c.json"], "--checkpoint and --nav do not apply"),
-    (["--workers", "0"], "--workers: expected at least 1"),
-])
+@pytest.mark.parametrize(
+    "extra, message",
+    [
+        (["--checkpoint", "c.json"], "--checkpoint and --nav do not apply"),
+        (["--workers", "0"], "--workers: expected at least 1"),
+    ],
+)
 def test_bad_each_options_fail_before_any_work(tables, tmp_path, capsys, extra, message):
     assert main(["register", *tables, "--each", *extra, "--out", str(tmp_path / "o")]) == 2
     assert message in capsys.readouterr().err
@@ -72,9 +123,26 @@ def test_a_file_failing_half_way_leaves_no_folder_of_its_own(tables, tmp_path, c
     lines[10] = ",".join(cells)
     bad = tmp_path / "bad.csv"
     bad.write_text("\n".join(lines) + "\n")
-    assert main(["register", tables[1], str(bad), "--each", "--no-plots", "--no-progress", "--out", str(tmp_path / "o")]) == 2
+    assert (
+        main(
+            [
+                "register",
+                tables[1],
+                str(bad),
+                "--each",
+                "--no-plots",
+                "--no-progress",
+                "--out",
+                str(tmp_path / "o"),
+            ]
+        )
+        == 2
+    )
     assert "bad.csv: error:" in capsys.readouterr().out
     assert sorted(p.name for p in (tmp_path / "o").iterdir()) == ["t2"]
-    assert main(["register", str(bad), "--no-plots", "--no-progress", "--out", str(tmp_path / "new" / "one")]) == 2
+    assert (
+        main(["register", str(bad), "--no-plots", "--no-progress", "--out", str(tmp_path / "new" / "one")])
+        == 2
+    )
     assert "row 9" in capsys.readouterr().err
     assert not (tmp_path / "new").exists()

@@ -19,10 +19,27 @@ def test_simulate_writes_summary_and_plots(tmp_path, capsys):
         assert set(summary[key]) == {"max", "mean", "std"}
         assert all(len(summary[key][s]) == 3 for s in ("max", "mean", "std"))
     names = [e["name"] for e in summary["estimates"]]
-    assert names[:12] == ["dC_a", "dphi_a", "dtheta_a", "dr_a", "dq_a", "de_a", "dC_b", "dphi_b", "dtheta_b", "dr_b", "dq_b", "de_b"]
+    assert names[:12] == [
+        "dC_a",
+        "dphi_a",
+        "dtheta_a",
+        "dr_a",
+        "dq_a",
+        "de_a",
+        "dC_b",
+        "dphi_b",
+        "dtheta_b",
+        "dr_b",
+        "dq_b",
+        "de_b",
+    ]
     assert all({"name", "estimate", "sigma", "truth"} <= set(e) for e in summary["estimates"])
     obs = summary["observability"]
-    assert len(obs["singular_values"]) == 12 and isinstance(obs["unobservable"], list) and isinstance(obs["weak"], list)
+    assert (
+        len(obs["singular_values"]) == 12
+        and isinstance(obs["unobservable"], list)
+        and isinstance(obs["weak"], list)
+    )
     assert any("dC_a + dq_a" in t for t in obs["unobservable"])
     for png in ("tracks.png", "differences.png", "estimates.png"):
         assert (out / png).stat().st_size > 10_000
@@ -60,5 +77,9 @@ def test_differences_are_drawn_in_colours_told_apart_without_red_green_vision():
     t = np.arange(10.0)
     fig = difference_figure(t, np.ones((10, 3)), np.zeros((10, 3)))
     for ax in fig.axes:
-        colours = {line.get_label(): line.get_color() for line in ax.get_lines() if line.get_label() in ("before", "after")}
+        colours = {
+            line.get_label(): line.get_color()
+            for line in ax.get_lines()
+            if line.get_label() in ("before", "after")
+        }
         assert colours_told_apart(colours["before"], colours["after"]), colours

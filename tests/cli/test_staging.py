@@ -14,12 +14,19 @@ from registration.cli.staging import staged_outputs
 # some of the run's files are in its run folder
 CASES = {
     "simulate": (["simulate", "--steps", "20"], "registration.online.plots:plot_estimates"),
-    "montecarlo": (["montecarlo", "--runs", "2", "--steps", "20"], "registration.online.mcresult:MonteCarloResult.plot"),
-    "montecarlo --sweep": (["montecarlo", "--runs", "2", "--steps", "20", "--sweep", "steps=20,21"],
-                           "registration.online.sweep:plot_sweep"),
+    "montecarlo": (
+        ["montecarlo", "--runs", "2", "--steps", "20"],
+        "registration.online.mcresult:MonteCarloResult.plot",
+    ),
+    "montecarlo --sweep": (
+        ["montecarlo", "--runs", "2", "--steps", "20", "--sweep", "steps=20,21"],
+        "registration.online.sweep:plot_sweep",
+    ),
     "fuse": (["fuse", "--trials", "20"], "registration.fusion.plots:write_plots"),
-    "landing": (["landing", "--runs", "2", "--start-range-m", "600", "--plot-bin-m", "250"],
-                "registration.cli.landing:write_plots"),
+    "landing": (
+        ["landing", "--runs", "2", "--start-range-m", "600", "--plot-bin-m", "250"],
+        "registration.cli.landing:write_plots",
+    ),
 }
 
 
@@ -55,12 +62,16 @@ def test_a_run_replaces_the_earlier_runs_outputs_whole(case, tmp_path, monkeypat
     first = _contents(out)
     assert any(n.endswith(".png") for n in first) and "notes.txt" in first
     table = next(n for n in first if n.endswith((".json", ".csv")))
-    assert "partial-" not in printed and str(out / table) in printed  # where the file is, not where it was written
+    assert (
+        "partial-" not in printed and str(out / table) in printed
+    )  # where the file is, not where it was written
 
     seen = []
     with monkeypatch.context() as patch:
         _fail_after_writing(patch, target, seen)
-        assert main([*argv, "--seed", "7", "--out", str(out)]) == 2  # another seed: other bytes, were they written
+        assert (
+            main([*argv, "--seed", "7", "--out", str(out)]) == 2
+        )  # another seed: other bytes, were they written
     assert seen, "the run should fail inside its staging, after writing"
     assert "No space left on device" in capsys.readouterr().err
     assert _contents(out) == first  # byte for byte, no partial-* folder, no marker

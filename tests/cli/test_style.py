@@ -28,15 +28,24 @@ def subparsers() -> dict[str, argparse.ArgumentParser]:
 
 
 def options(name: str) -> list[argparse.Action]:
-    return [a for a in subparsers()[name]._actions if a.option_strings and a.help != argparse.SUPPRESS
-            and not isinstance(a, argparse._HelpAction)]
+    return [
+        a
+        for a in subparsers()[name]._actions
+        if a.option_strings and a.help != argparse.SUPPRESS and not isinstance(a, argparse._HelpAction)
+    ]
 
 
 def test_python_dash_m_registration_runs_the_cli(tmp_path):
     """Before: 'registration' is a package and cannot be directly executed."""
     env = {**os.environ, "PYTHONPATH": str(ROOT)}
-    done = subprocess.run([sys.executable, "-m", "registration", "--version"], cwd=tmp_path, env=env,
-                          capture_output=True, text=True, timeout=60)
+    done = subprocess.run(
+        [sys.executable, "-m", "registration", "--version"],
+        cwd=tmp_path,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
     assert done.returncode == 0 and done.stdout == f"registration {registration.__version__}\n"
 
 
@@ -53,7 +62,9 @@ def test_help_ends_with_the_exit_codes(capsys):
         text = capsys.readouterr().out
         for code in ("0 ", "2 ", "130", "141"):
             assert re.search(rf"^  {code}", text, re.M), (argv, code)
-        assert bool(re.search(r"^  3 ", text, re.M)) == gate and ("--allow-inconsistent" in text) == gate, argv
+        assert bool(re.search(r"^  3 ", text, re.M)) == gate and ("--allow-inconsistent" in text) == gate, (
+            argv
+        )
         assert "REGISTRATION_DEBUG=1" in text
 
 
@@ -66,10 +77,13 @@ def test_out_has_a_stated_default_under_out(name, capsys):
     assert f"(default: out/{name})" in " ".join(capsys.readouterr().out.split())
 
 
-@pytest.mark.parametrize("name, argv, files", [
-    ("fuse", ["--trials", "10", "--no-plots"], ["summary.json"]),
-    ("landing", ["--runs", "2", "--start-range-m", "600", "--no-plots"], ["summary.json"]),
-])
+@pytest.mark.parametrize(
+    "name, argv, files",
+    [
+        ("fuse", ["--trials", "10", "--no-plots"], ["summary.json"]),
+        ("landing", ["--runs", "2", "--start-range-m", "600", "--no-plots"], ["summary.json"]),
+    ],
+)
 def test_fuse_and_landing_write_by_default(tmp_path, monkeypatch, capsys, name, argv, files):
     monkeypatch.chdir(tmp_path)
     assert main([name, *argv]) == 0
@@ -136,11 +150,19 @@ def test_simulate_rejects_an_export_type_before_simulating(tmp_path, capsys, mon
     assert not (tmp_path / "o").exists()
 
 
-@pytest.mark.parametrize("argv", [
-    ["simulate", "--steps", "1"], ["simulate", "--seed", "-1"], ["simulate", "--ship-motion", "90,8,5,12"],
-    ["simulate", "--range-sigma-m", "inf"], ["montecarlo", "--steps", "0"], ["fuse", "--seed", "-3"],
-    ["landing", "--radar-rate-hz", "inf"], ["landing", "--start-range-m", "nan"],
-])
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["simulate", "--steps", "1"],
+        ["simulate", "--seed", "-1"],
+        ["simulate", "--ship-motion", "90,8,5,12"],
+        ["simulate", "--range-sigma-m", "inf"],
+        ["montecarlo", "--steps", "0"],
+        ["fuse", "--seed", "-3"],
+        ["landing", "--radar-rate-hz", "inf"],
+        ["landing", "--start-range-m", "nan"],
+    ],
+)
 def test_bad_values_are_rejected_before_the_work(tmp_path, capsys, argv):
     assert main([*argv, "--out", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err

@@ -37,8 +37,12 @@ def test_wgs84_is_derive_s_constants():
     from derive.constants import WGS84_A, WGS84_B, WGS84_E2, WGS84_F
 
     w = _codegen.wgs84()
-    assert w == {"wgs84_a_m": float(WGS84_A), "wgs84_b_m": float(WGS84_B),
-                 "wgs84_f": float(WGS84_F), "wgs84_e2": float(WGS84_E2)}
+    assert w == {
+        "wgs84_a_m": float(WGS84_A),
+        "wgs84_b_m": float(WGS84_B),
+        "wgs84_f": float(WGS84_F),
+        "wgs84_e2": float(WGS84_E2),
+    }
     assert w["wgs84_a_m"] == 6378137.0
     assert w["wgs84_f"] == float(1 / sp.Rational("298.257223563"))
     w["wgs84_a_m"] = 0.0

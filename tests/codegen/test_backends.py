@@ -13,7 +13,6 @@ import pytest
 import sympy as sp
 
 from registration import _codegen
-
 from tests.conftest import all_specs, sample_inputs
 
 SCALE_FROM = {"Z": ("p_a_ecef", "p_b_ecef")}

@@ -14,8 +14,10 @@ import pytest
 from registration import _codegen
 from registration._codegen import build, cbackend
 
-SOURCES = [("tiny.c", b"double tiny(double x) { return 2.0 * x; }\n"),
-           ("larger.c", b"/* padding */\n" * 200 + b"double larger(double x) { return x + 1.0; }\n")]
+SOURCES = [
+    ("tiny.c", b"double tiny(double x) { return 2.0 * x; }\n"),
+    ("larger.c", b"/* padding */\n" * 200 + b"double larger(double x) { return x + 1.0; }\n"),
+]
 
 
 class Terminal(io.StringIO):
@@ -45,7 +47,9 @@ def test_the_build_says_so_before_and_after_without_a_bar_in_logs(cc, tmp_path, 
     lines = log.getvalue().splitlines()
     assert lines[0] == build.BUILD_MESSAGE.format(folder=tmp_path / "cache")
     assert lines[0].startswith("registration: compiling the generated C code once")
-    assert len(lines) == 2 and lines[1].startswith("registration: compiled in ") and "\r" not in log.getvalue()
+    assert (
+        len(lines) == 2 and lines[1].startswith("registration: compiled in ") and "\r" not in log.getvalue()
+    )
     loaded = ctypes.CDLL(str(lib))  # linked: every source's function is there
     for name, expected in (("tiny", 3.0), ("larger", 2.5)):
         f = getattr(loaded, name)
@@ -59,7 +63,9 @@ def test_a_terminal_gets_a_progress_bar_over_the_files(cc, tmp_path, monkeypatch
     text = terminal.getvalue()
     assert text.startswith("registration: compiling the generated C code once")
     assert "\rcompiling 0/3 files:   0%|" in text  # drawn at once (later updates are throttled to 0.1 s)
-    assert text.splitlines()[-1].split("\r")[-1].startswith("registration: compiled in ")  # the bar cleared first
+    assert (
+        text.splitlines()[-1].split("\r")[-1].startswith("registration: compiled in ")
+    )  # the bar cleared first
 
 
 def test_sources_are_compiled_one_by_one_largest_first_then_linked(cc, tmp_path, monkeypatch):

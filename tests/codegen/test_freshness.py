@@ -37,16 +37,25 @@ def _derive_env(root: Path) -> dict:
 
 
 def _run_derive(args, cwd):
-    return subprocess.run([sys.executable, "-m", "derive", *args], cwd=cwd, capture_output=True, text=True,
-                          env=_derive_env(cwd))
+    return subprocess.run(
+        [sys.executable, "-m", "derive", *args], cwd=cwd, capture_output=True, text=True, env=_derive_env(cwd)
+    )
 
 
 def _emit_modules(jobs: list[tuple[Path, str, Path]]) -> None:
     """Emit the specs of one derive module per job (derive root, module, output folder), in parallel
     subprocesses under the hash seed ``python -m derive`` uses."""
-    procs = [subprocess.Popen([sys.executable, "-c", EMIT_ONE_MODULE, module, str(out)], cwd=root,
-                              env=_derive_env(root), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-             for root, module, out in jobs]
+    procs = [
+        subprocess.Popen(
+            [sys.executable, "-c", EMIT_ONE_MODULE, module, str(out)],
+            cwd=root,
+            env=_derive_env(root),
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+        )
+        for root, module, out in jobs
+    ]
     for proc in procs:
         _, err = proc.communicate()
         assert proc.returncode == 0, err
@@ -100,7 +109,8 @@ def test_regeneration_is_deterministic(fresh_check):
     assert files == sorted(p.name for p in (REPO / "generated").iterdir() if p.is_file())
     for f in files:
         assert (fresh / f).read_bytes() == (REPO / "generated" / f).read_bytes(), (
-            f"{f}: two generations differ (derive/ changed without `{REGEN}`, or emission is not deterministic)")
+            f"{f}: two generations differ (derive/ changed without `{REGEN}`, or emission is not deterministic)"
+        )
 
 
 def test_changed_derive_source_makes_check_fail_naming_the_command(tmp_path, capsys):

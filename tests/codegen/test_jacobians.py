@@ -26,8 +26,8 @@ import numpy as np
 import pytest
 
 from registration import _codegen
-
 from tests.conftest import all_specs, sample_inputs
+
 from ._edges import with_edges
 
 N_POINTS = 1200

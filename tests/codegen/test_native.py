@@ -22,7 +22,10 @@ from registration.online.scenario import paper_scenario
 STEPS = ("kalman_step_fitted_standard", "kalman_step_fitted_standard_carlson")
 UPDATE = {"kalman_step_fitted_standard": "joseph", "kalman_step_fitted_standard_carlson": "carlson"}
 #: prior sigmas: the default, and one with sigmas from 1e-12 rad to 1e5 m and no process noise (cond(P) ~ 1e37)
-PRIORS = {"default": {}, "ill": {"prior_sigma": (1e-12, 1e-3, 1e-12, 1e5, 1e-12, 1e-3) * 2, "q_sigma": (0.0,) * N_STATE}}
+PRIORS = {
+    "default": {},
+    "ill": {"prior_sigma": (1e-12, 1e-3, 1e-12, 1e5, 1e-12, 1e-3) * 2, "q_sigma": (0.0,) * N_STATE},
+}
 N = 300
 
 
@@ -44,9 +47,16 @@ def _points(name: str, prior: dict, rows: np.ndarray) -> tuple[list, object]:
     fn = _codegen.get(name)
     cfg = RegistrationConfig(linearization="fitted", covariance_update=UPDATE[name], **prior)
     assert cfg.step_name == name
-    start = {"x": np.zeros(N_STATE), "P": np.diag(np.square(cfg.prior_sigma)), "info": np.zeros((N_STATE, N_STATE))}
-    run = fn.scan(len(rows), STEP_CARRY, {**start, "Q": np.diag(np.square(cfg.q_sigma)), "row": rows,
-                                          "sigma0": np.array(cfg.sigma0)})
+    start = {
+        "x": np.zeros(N_STATE),
+        "P": np.diag(np.square(cfg.prior_sigma)),
+        "info": np.zeros((N_STATE, N_STATE)),
+    }
+    run = fn.scan(
+        len(rows),
+        STEP_CARRY,
+        {**start, "Q": np.diag(np.square(cfg.q_sigma)), "row": rows, "sigma0": np.array(cfg.sigma0)},
+    )
     carried = [np.concatenate([start[k][None], run[v][:-1]]) for k, v in STEP_CARRY.items()]
     args = [*carried, np.diag(np.square(cfg.q_sigma)), rows, np.array(cfg.sigma0)]
     prepared = []
@@ -62,12 +72,15 @@ def _evaluate(name: str, prepared: list, fn, lib) -> dict:
     outs = cbackend.CKernel(name, work, lib).call(prepared, len(prepared[4][0]), fn.output_shapes)
     shaped = {}
     for out_name, buf, (r, c) in zip(fn.output_names, outs, fn.output_shapes):
-        shaped[out_name] = buf.reshape(-1) if (r, c) == (1, 1) else (buf if c == 1 else buf.reshape(-1, c, r).swapaxes(1, 2))
+        shaped[out_name] = (
+            buf.reshape(-1) if (r, c) == (1, 1) else (buf if c == 1 else buf.reshape(-1, c, r).swapaxes(1, 2))
+        )
     return shaped
 
 
 def _statistical_difference(ref: dict, other: dict) -> dict:
     """Largest |other - ref| per output on the filter's own scale (see cbackend.NATIVE_RTOL)."""
+
     def matrix(a, b):
         d = np.sqrt(np.abs(np.einsum("kii->ki", a)))
         return float(np.max(np.abs(a - b) / np.maximum(d[:, :, None] * d[:, None, :], np.finfo(float).tiny)))
@@ -76,8 +89,10 @@ def _statistical_difference(ref: dict, other: dict) -> dict:
     snu = np.sqrt(np.einsum("kii->ki", ref["S"]))
     return {
         "x_new": float(np.max(np.abs(other["x_new"] - ref["x_new"]) / sx)),
-        "P_new": matrix(ref["P_new"], other["P_new"]), "info_new": matrix(ref["info_new"], other["info_new"]),
-        "S": matrix(ref["S"], other["S"]), "nu": float(np.max(np.abs(other["nu"] - ref["nu"]) / snu)),
+        "P_new": matrix(ref["P_new"], other["P_new"]),
+        "info_new": matrix(ref["info_new"], other["info_new"]),
+        "S": matrix(ref["S"], other["S"]),
+        "nu": float(np.max(np.abs(other["nu"] - ref["nu"]) / snu)),
         "nis": float(np.max(np.abs(other["nis"] - ref["nis"]) / np.maximum(1.0, ref["nis"]))),
     }
 
@@ -112,13 +127,25 @@ def test_native_exact_build_equals_the_portable_one_bit_for_bit(name, rows, port
 def test_the_tolerance_check_sees_a_difference_of_its_own_size(rows, portable):
     prepared, fn = _points(STEPS[0], PRIORS["ill"], rows)
     ref = _evaluate(STEPS[0], prepared, fn, portable)
-    moved = dict(ref, x_new=ref["x_new"] + 2 * cbackend.NATIVE_RTOL * np.sqrt(np.einsum("kii->ki", ref["P_new"])))
+    moved = dict(
+        ref, x_new=ref["x_new"] + 2 * cbackend.NATIVE_RTOL * np.sqrt(np.einsum("kii->ki", ref["P_new"]))
+    )
     assert _statistical_difference(ref, ref) == dict.fromkeys(ref, 0.0)
     assert _statistical_difference(ref, moved)["x_new"] > cbackend.NATIVE_RTOL
 
 
-@pytest.mark.parametrize("value, mode", [(None, "portable"), ("", "portable"), ("0", "portable"), ("off", "portable"),
-                                         ("1", "native"), ("True", "native"), ("exact", "native-exact")])
+@pytest.mark.parametrize(
+    "value, mode",
+    [
+        (None, "portable"),
+        ("", "portable"),
+        ("0", "portable"),
+        ("off", "portable"),
+        ("1", "native"),
+        ("True", "native"),
+        ("exact", "native-exact"),
+    ],
+)
 def test_the_environment_variable_selects_the_build(monkeypatch, value, mode):
     if value is None:
         monkeypatch.delenv(cbackend.NATIVE_ENV, raising=False)
@@ -137,11 +164,19 @@ def test_a_bad_environment_value_or_mode_is_refused(monkeypatch):
 
 def test_each_build_has_its_own_cache_key():
     sources = [("f.c", b"int f(void) { return 0; }")]
-    keys = {mode: cbackend.cache_key("cc", sources, cbackend.cflags(mode), "" if mode == "portable" else "-march=x")
-            for mode in cbackend.BUILD_MODES}
+    keys = {
+        mode: cbackend.cache_key(
+            "cc", sources, cbackend.cflags(mode), "" if mode == "portable" else "-march=x"
+        )
+        for mode in cbackend.BUILD_MODES
+    }
     assert len(set(keys.values())) == len(keys)
-    assert keys["portable"] == cbackend.cache_key("cc", sources)  # the portable key is the one the loader always used
-    assert cbackend.cache_key("cc", sources, cbackend.cflags("native"), "-march=y") != keys["native"]  # another CPU
+    assert keys["portable"] == cbackend.cache_key(
+        "cc", sources
+    )  # the portable key is the one the loader always used
+    assert (
+        cbackend.cache_key("cc", sources, cbackend.cflags("native"), "-march=y") != keys["native"]
+    )  # another CPU
 
 
 def test_a_compiler_without_march_native_gives_no_native_library(monkeypatch):

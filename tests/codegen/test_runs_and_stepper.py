@@ -28,16 +28,26 @@ def rows():
     from registration.online.contract import DATA_COLUMNS
     from registration.online.scenario import paper_scenario
 
-    return np.stack([np.stack([paper_scenario(s, n_steps=N).data[c] for c in DATA_COLUMNS[1:]], axis=1)
-                     for s in range(RUNS)])
+    return np.stack(
+        [
+            np.stack([paper_scenario(s, n_steps=N).data[c] for c in DATA_COLUMNS[1:]], axis=1)
+            for s in range(RUNS)
+        ]
+    )
 
 
 def _inputs(rows):
     from registration.online import RegistrationConfig
 
     cfg = RegistrationConfig()
-    return {"x": np.zeros(12), "P": np.diag(np.square(cfg.prior_sigma)), "info": np.zeros((12, 12)),
-            "Q": np.diag(np.square(cfg.q_sigma)), "row": rows, "sigma0": np.array(cfg.sigma0)}
+    return {
+        "x": np.zeros(12),
+        "P": np.diag(np.square(cfg.prior_sigma)),
+        "info": np.zeros((12, 12)),
+        "Q": np.diag(np.square(cfg.q_sigma)),
+        "row": rows,
+        "sigma0": np.array(cfg.sigma0),
+    }
 
 
 @pytest.mark.parametrize("backend", _backends())
@@ -47,7 +57,11 @@ def test_scan_runs_equals_one_scan_per_run(rows, backend):
     x0 = np.arange(RUNS * 12, dtype=float).reshape(RUNS, 12) * 1e-4  # a per-run initial state
     out = fn.scan_runs(RUNS, N, CARRY, {**inputs, "x": x0}, keep_last=("info_new", "S"))
     assert out["x_new"].shape == (RUNS, N, 12) and out["P_new"].shape == (RUNS, N, 12, 12)
-    assert out["info_new"].shape == (RUNS, 12, 12) and out["S"].shape == (RUNS, 3, 3) and out["nis"].shape == (RUNS, N)
+    assert (
+        out["info_new"].shape == (RUNS, 12, 12)
+        and out["S"].shape == (RUNS, 3, 3)
+        and out["nis"].shape == (RUNS, N)
+    )
     for r in range(RUNS):
         one = fn.scan(N, CARRY, {**inputs, "x": x0[r], "row": rows[r]}, keep_last=("info_new", "S"))
         for name, value in one.items():
@@ -60,11 +74,20 @@ def test_scan_runs_takes_a_per_run_constant_input(rows, backend):
     fn = GeneratedFunction("information_step_standard", force_backend=backend)
     x = np.linspace(-1e-3, 1e-3, RUNS * 12).reshape(RUNS, 12)
     sigma0 = np.array([50.0, 0.01, 0.01] * 2)
-    out = fn.scan_runs(RUNS, N, {"info": "info_new"}, {"info": np.zeros((12, 12)), "x": x, "row": rows, "sigma0": sigma0},
-                       keep_last=("info_new",))
+    out = fn.scan_runs(
+        RUNS,
+        N,
+        {"info": "info_new"},
+        {"info": np.zeros((12, 12)), "x": x, "row": rows, "sigma0": sigma0},
+        keep_last=("info_new",),
+    )
     for r in range(RUNS):
-        one = fn.scan(N, {"info": "info_new"}, {"info": np.zeros((12, 12)), "x": x[r], "row": rows[r], "sigma0": sigma0},
-                      keep_last=("info_new",))
+        one = fn.scan(
+            N,
+            {"info": "info_new"},
+            {"info": np.zeros((12, 12)), "x": x[r], "row": rows[r], "sigma0": sigma0},
+            keep_last=("info_new",),
+        )
         np.testing.assert_array_equal(out["info_new"][r], one["info_new"])
 
 
@@ -74,7 +97,9 @@ def test_scan_runs_rejects_inputs_of_the_wrong_shape(rows):
     with pytest.raises(ValueError, match="'row' must have shape"):
         fn.scan_runs(RUNS, N, CARRY, {**inputs, "row": rows[0]})  # (N, 18) is ambiguous: refused
     with pytest.raises(ValueError, match="'x' must have shape"):
-        fn.scan_runs(RUNS, N, CARRY, {**inputs, "x": np.zeros((RUNS, N, 12))})  # a carried input has no step axis
+        fn.scan_runs(
+            RUNS, N, CARRY, {**inputs, "x": np.zeros((RUNS, N, 12))}
+        )  # a carried input has no step axis
     with pytest.raises(ValueError, match="missing input 'sigma0'"):
         fn.scan_runs(RUNS, N, CARRY, {k: v for k, v in inputs.items() if k != "sigma0"})
     with pytest.raises(ValueError, match="carried inputs must be the first"):
@@ -82,7 +107,9 @@ def test_scan_runs_rejects_inputs_of_the_wrong_shape(rows):
 
 
 def _stepper(fn, inputs, low=None, high=None):
-    st = fn.stepper(CARRY, "row", low=low, high=high, finite=("x_new", "P_new"), deliver=("x_new", "P_new", "nis"))
+    st = fn.stepper(
+        CARRY, "row", low=low, high=high, finite=("x_new", "P_new"), deliver=("x_new", "P_new", "nis")
+    )
     for name in ("x", "P", "info", "Q", "sigma0"):
         st.set(name, inputs[name])
     return st
@@ -115,8 +142,12 @@ def test_stepper_refuses_out_of_bounds_and_non_finite_steps_without_touching_the
     st = _stepper(fn, inputs, low, high)
     assert st.step(rows[0, 0]) == StepCode.OK
     state = {name: st.get(name) for name in ("x", "P", "info")}
-    for bad, code in ((np.nan, StepCode.OUT_OF_BOUNDS), (0.5, StepCode.OUT_OF_BOUNDS), (np.inf, StepCode.OUT_OF_BOUNDS),
-                      (1e300, StepCode.NON_FINITE)):
+    for bad, code in (
+        (np.nan, StepCode.OUT_OF_BOUNDS),
+        (0.5, StepCode.OUT_OF_BOUNDS),
+        (np.inf, StepCode.OUT_OF_BOUNDS),
+        (1e300, StepCode.NON_FINITE),
+    ):
         row = rows[0, 1].copy()
         row[6] = bad
         assert st.step(row) == code, bad
@@ -142,7 +173,9 @@ def test_stepper_reads_an_asymmetric_matrix_input_in_its_own_orientation():
     rng = np.random.default_rng(0)
     inputs = _inputs(np.zeros((1, 18)))
     Q = np.diag(np.square(np.full(12, 1e-3))) + 1e-7 * rng.normal(size=(12, 12))
-    row = np.array([0.35, 2.0, 20.0, 2.6, 0.0, 0.0, 5e4, 0.3, 0.03, 0.35, 2.01, 20.0, 5.8, 0.0, 0.0, 5e4, -0.2, 0.03])
+    row = np.array(
+        [0.35, 2.0, 20.0, 2.6, 0.0, 0.0, 5e4, 0.3, 0.03, 0.35, 2.01, 20.0, 5.8, 0.0, 0.0, 5e4, -0.2, 0.03]
+    )
     ref = fn(inputs["x"], inputs["P"], inputs["info"], Q, row, inputs["sigma0"])
     st = _stepper(fn, {**inputs, "Q": Q})
     assert st.step(row) == StepCode.OK
@@ -150,7 +183,6 @@ def test_stepper_reads_an_asymmetric_matrix_input_in_its_own_orientation():
     np.testing.assert_array_equal(x, ref[0][0])
     np.testing.assert_array_equal(P, ref[1][0])
     np.testing.assert_array_equal(st.get("Q"), Q)
-
 
 
 @pytest.mark.parametrize("backend", _backends())
@@ -162,13 +194,19 @@ def test_advance_gives_the_scan_s_results_as_the_caller_s_arrays_across_blocks(r
 
     fn = GeneratedFunction(STEP, force_backend=backend)
     stream = rows.reshape(-1, 18)
-    stream = np.concatenate([stream] * (-(-2 * BLOCK_ROWS // len(stream)) + 1))[:2 * BLOCK_ROWS + 7]
+    stream = np.concatenate([stream] * (-(-2 * BLOCK_ROWS // len(stream)) + 1))[: 2 * BLOCK_ROWS + 7]
     inputs = _inputs(stream)
     ref = fn.scan(len(stream), CARRY, inputs)
     low, high = np.full(18, -1e6), np.full(18, 1e6)
     low[[6, 15]], high[[6, 15]] = 1.0, 1e305
-    st = fn.stepper(CARRY, "row", low=low, high=high, finite=("x_new", "P_new"),
-                    deliver={"x": "x_new", "P": "P_new", "nis": "nis"})
+    st = fn.stepper(
+        CARRY,
+        "row",
+        low=low,
+        high=high,
+        finite=("x_new", "P_new"),
+        deliver={"x": "x_new", "P": "P_new", "nis": "nis"},
+    )
     for name in ("x", "P", "info", "Q", "sigma0"):
         st.set(name, inputs[name])
     outs = []
@@ -210,7 +248,7 @@ def test_the_stepper_keeps_the_last_values_of_an_output(rows, backend):
         bad = row.copy()
         bad[6] = np.nan
         assert st.step(bad) == StepCode.OUT_OF_BOUNDS
-        np.testing.assert_array_equal(st.kept(), ref[max(0, i - 6):i + 1])
+        np.testing.assert_array_equal(st.kept(), ref[max(0, i - 6) : i + 1])
     st.set_kept(ref[:3])
     np.testing.assert_array_equal(st.kept(), ref[:3])
     st.step(stream[0])

@@ -28,7 +28,9 @@ def test_a_sigma_in_the_wrong_unit_fails_the_gate_and_the_right_one_passes():
     right = register(scenario.data, RegistrationConfig(sigma0=tuple(scenario.sigma0)))
     assert right.consistency.ok and right.consistency.status == "consistent"
     # 0.5 deg of noise, told 0.5 mrad... as a user who typed radians into a degree option would
-    wrong_sigma = tuple(v if i % 3 == 0 else np.radians(np.radians(0.5)) * 10 for i, v in enumerate(scenario.sigma0))
+    wrong_sigma = tuple(
+        v if i % 3 == 0 else np.radians(np.radians(0.5)) * 10 for i, v in enumerate(scenario.sigma0)
+    )
     wrong = register(scenario.data, RegistrationConfig(sigma0=wrong_sigma))
     assert not wrong.consistency.ok, wrong.consistency.message()
     assert wrong.consistency.to_json()["status"] == "grossly inconsistent"
@@ -50,4 +52,3 @@ def test_a_streamed_mean_is_judged_against_the_chi_square_quantiles():
     assert not ConsistencyReport.from_mean(dof * GROSS_FACTOR * 1.01, n, dof).ok
     with pytest.raises(ValueError, match="no samples"):
         ConsistencyReport.from_mean(3.0, 0, dof)
-

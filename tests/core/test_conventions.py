@@ -51,7 +51,9 @@ def test_rotation_composition_matches_phi():
     h, p, rl = rng.uniform(-np.pi, np.pi, 50), rng.uniform(-0.3, 0.3, 50), rng.uniform(-0.3, 0.3, 50)
     u_deck = np.stack([r * np.sin(q) * np.cos(e), r * np.cos(q) * np.cos(e), r * np.sin(e)], axis=1)
     R_enu_deck = frames.deck2enu_rotation(h, p, rl)
-    assert np.einsum("nij,nj->ni", R_enu_deck, u_deck) == pytest.approx(frames.deck2enu(r, q, e, h, p, rl), abs=1e-8)
+    assert np.einsum("nij,nj->ni", R_enu_deck, u_deck) == pytest.approx(
+        frames.deck2enu(r, q, e, h, p, rl), abs=1e-8
+    )
 
 
 def test_jacobian_shapes_and_level_ship_degeneracy():

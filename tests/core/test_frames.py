@@ -22,6 +22,8 @@ def test_enu2deck_attitude_inverts_deck2enu_rotation():
     d = got - want
     d[:, [0, 2]] = np.angle(np.exp(1j * d[:, [0, 2]]))  # the same angle across +-pi
     assert np.abs(d[6:]).max() < 1e-12
-    assert np.abs(d[:6, 1]).max() < 1e-9 and np.abs(d[:3]).max() < 1e-12  # near +-pi/2 pitch, asin loses digits
+    assert (
+        np.abs(d[:6, 1]).max() < 1e-9 and np.abs(d[:3]).max() < 1e-12
+    )  # near +-pi/2 pitch, asin loses digits
     with pytest.raises(ValueError, match="R_enu_deck"):
         enu2deck_attitude(np.zeros((3, 4)))

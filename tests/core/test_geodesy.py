@@ -105,7 +105,9 @@ def test_paper_rotation_is_standard_at_tilted_latitude():
     standard_at_psi = frames.enu2ecef_rotation(psi, lon)
     assert np.abs(paper - standard_at_psi).max() < 1e-14
     # ... and it differs from the standard rotation at B: ~0.13 deg tilt at 20 deg N
-    tilt = np.arccos(np.clip(np.einsum("ni,ni->n", paper[:, :, 2], frames.enu2ecef_rotation(lat, lon)[:, :, 2]), -1, 1))
+    tilt = np.arccos(
+        np.clip(np.einsum("ni,ni->n", paper[:, :, 2], frames.enu2ecef_rotation(lat, lon)[:, :, 2]), -1, 1)
+    )
     at20 = np.argmin(np.abs(lat - np.radians(20)))
     assert tilt.max() > 1e-3
     assert np.degrees(tilt[at20]) == pytest.approx(np.degrees(abs(psi[at20] - lat[at20])), abs=1e-9)

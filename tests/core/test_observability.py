@@ -6,8 +6,8 @@ import numpy as np
 
 from registration.core.observability import observability_report
 from registration.online import RegistrationConfig, register
-from registration.online.scenario import paper_scenario
 from registration.online.contract import STATE_LABELS, STATE_NAMES, STATE_UNITS
+from registration.online.scenario import paper_scenario
 
 PRIOR = np.array(RegistrationConfig().prior_sigma)
 
@@ -45,7 +45,9 @@ def test_pairs_named_when_the_null_space_is_slightly_tilted():
     a_tilted = (a + tilt_a) / np.linalg.norm(a + tilt_a)
     b_tilted = (b + tilt_b) / np.linalg.norm(b + tilt_b)
     assert 1e4 * (1 - (a @ a_tilted) ** 2) > 0.01  # information along the exact pair: above the threshold
-    rep = _report([(a_tilted + b_tilted) / np.sqrt(2), (a_tilted - b_tilted) / np.sqrt(2)])  # and mixed between ships
+    rep = _report(
+        [(a_tilted + b_tilted) / np.sqrt(2), (a_tilted - b_tilted) / np.sqrt(2)]
+    )  # and mixed between ships
     assert sorted(rep.identifiable_sums) == [("dC_a", "dq_a"), ("dC_b", "dq_b")]
 
 

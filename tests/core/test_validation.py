@@ -52,7 +52,10 @@ def test_length_one_array_broadcasts_like_a_scalar():
     assert np.allclose(out[0], frames.geodetic2ecef(0.1, 0.1, 0.0)[0])
 
 
-@pytest.mark.parametrize("value, shown", [(None, "None"), (True, "True"), ("0.5", "'0.5'"), ([0.1, None], "a list holding non-numbers")])
+@pytest.mark.parametrize(
+    "value, shown",
+    [(None, "None"), (True, "True"), ("0.5", "'0.5'"), ([0.1, None], "a list holding non-numbers")],
+)
 def test_none_booleans_and_strings_are_not_numbers(value, shown):
     with pytest.raises(ValueError, match=f"lat: expected numbers, got {shown}"):
         frames.geodetic2ecef(value, 0.0, 0.0)
@@ -62,7 +65,9 @@ def test_float32_poles_are_accepted_and_clipped():
     for pole in (np.float32(np.pi / 2), np.float32(-np.pi / 2)):
         assert abs(float(pole)) > np.pi / 2  # float32 rounding leaves the float64 range
         p = frames.geodetic2ecef(pole, np.float32(0.3), np.float32(0.0))
-        np.testing.assert_allclose(p, frames.geodetic2ecef(float(np.sign(pole)) * np.pi / 2, 0.3, 0.0), atol=1e-6)
+        np.testing.assert_allclose(
+            p, frames.geodetic2ecef(float(np.sign(pole)) * np.pi / 2, 0.3, 0.0), atol=1e-6
+        )
     with pytest.raises(ValueError, match="lat: value"):
         frames.geodetic2ecef(np.pi / 2 + 1e-6, 0.0, 0.0)
 

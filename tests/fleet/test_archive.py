@@ -40,8 +40,9 @@ def test_partitioned_equals_solve_batch(seed, extended):
     for partitions in (1, 2, 3, 7):
         part = solve_batch_partitioned(src, partitions=partitions)
         assert part.plan.n_partitions == partitions
-        assert part.n_plots == batch.residuals.shape[0] - sum(e.n_plots for e in batch.excluded
-                                                                if e.reason.startswith("seen by one"))
+        assert part.n_plots == batch.residuals.shape[0] - sum(
+            e.n_plots for e in batch.excluded if e.reason.startswith("seen by one")
+        )
         assert_same(part, batch)
 
 
@@ -50,8 +51,10 @@ def test_every_plot_is_in_one_partition_and_windows_whole():
     src = source_of(sc)
     options = BatchOptions()
     plan = make_plan(src, options.window_s, partitions=7)
-    problems = [partition_problem(PartitionTask(src, plan, k, options, np.zeros((0, 2), dtype=np.int64)))
-                for k in range(plan.n_partitions)]
+    problems = [
+        partition_problem(PartitionTask(src, plan, k, options, np.zeros((0, 2), dtype=np.int64)))
+        for k in range(plan.n_partitions)
+    ]
     rows = np.concatenate([p.row for p in problems if p is not None])
     time = np.concatenate([p.time for p in problems if p is not None])
     assert rows.size == sc.problem().n_plots

@@ -28,7 +28,9 @@ def test_archive_run_writes_estimates_and_leaves_out_on_error(tmp_path):
     sc = fleet_scenario(0)
     tables = tmp_path / "tables"
     tables.mkdir()
-    write_fleet_tables(tables, sc.plots, sc.navigation, sc.sensors, sc.platforms, sc.references, fmt="parquet")
+    write_fleet_tables(
+        tables, sc.plots, sc.navigation, sc.sensors, sc.platforms, sc.references, fmt="parquet"
+    )
     out = tmp_path / "out"
     args = parse(["--tables", str(tables), "--out", str(out), "--partition-s", "100"])
     assert archive_requested(args)
@@ -36,12 +38,22 @@ def test_archive_run_writes_estimates_and_leaves_out_on_error(tmp_path):
     import pandas as pd
 
     frame = pd.read_csv(out / "estimates.csv")
-    assert list(frame.columns) == ["object", "state", "unit", "estimate", "sigma", "status"]  # the in-memory layout
+    assert list(frame.columns) == [
+        "object",
+        "state",
+        "unit",
+        "estimate",
+        "sigma",
+        "status",
+    ]  # the in-memory layout
     est = frame.set_index(["object", "state"])
     truth = sc.truth_state
     # the heading errors are estimated to within a few hundredths of a degree
     assert abs(est.loc[("A", "heading_error"), "estimate"] - np.degrees(truth["A:heading_error"])) < 0.05
-    assert est.loc[("A", "heading_error"), "status"] == "identifiable" and est.loc[("A", "heading_error"), "unit"] == "deg"
+    assert (
+        est.loc[("A", "heading_error"), "status"] == "identifiable"
+        and est.loc[("A", "heading_error"), "unit"] == "deg"
+    )
     summary = json.loads((out / "summary.json").read_text())
     assert summary["partitions"] == 3 and summary["converged"]
     before = {p.relative_to(out): p.read_bytes() for p in out.rglob("*") if p.is_file()}
@@ -65,8 +77,16 @@ def test_an_archive_whose_data_contradict_the_model_says_so_with_exit_3(tmp_path
     sc = fleet_scenario(0)
     tables = tmp_path / "tables"
     tables.mkdir()
-    write_fleet_tables(tables, sc.plots, sc.navigation, sc.sensors, sc.platforms, sc.references, fmt="parquet",
-                       targets={"target": ["T2"], "surface_alt": [0.0], "sigma_surface": [5.0]})
+    write_fleet_tables(
+        tables,
+        sc.plots,
+        sc.navigation,
+        sc.sensors,
+        sc.platforms,
+        sc.references,
+        fmt="parquet",
+        targets={"target": ["T2"], "surface_alt": [0.0], "sigma_surface": [5.0]},
+    )
     out = tmp_path / "out"
     args = parse(["--tables", str(tables), "--out", str(out), "--partition-s", "100"])
     assert run_archive(args) == 3

@@ -15,7 +15,6 @@ from registration.fleet.batch.partitioned import solve_batch_partitioned
 from registration.fleet.batch.partitions import TablesSource
 from registration.io import read_fleet_tables, write_fleet_tables
 from registration.io.fleet.cells import FILE_COLUMNS
-
 from tests.fleet.test_archive import EXTENDED, assert_same
 
 
@@ -27,7 +26,9 @@ def archive(tmp_path_factory):
 
     sc = fleet_scenario(1, **EXTENDED)
     folder = tmp_path_factory.mktemp("archive")
-    write_fleet_tables(folder, sc.plots, sc.navigation, sc.sensors, sc.platforms, sc.references, fmt="parquet")
+    write_fleet_tables(
+        folder, sc.plots, sc.navigation, sc.sensors, sc.platforms, sc.references, fmt="parquet"
+    )
     names = ("plots", "navigation", "sensors", "platforms", "reference")
     tables = read_fleet_tables(*(folder / f"{n}.parquet" for n in names))
     batch = solve_batch(tables.problem())

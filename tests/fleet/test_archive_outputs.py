@@ -17,7 +17,6 @@ from registration.fleet.batch.outputs import FUSED_COLUMNS, archive_outputs
 from registration.fleet.batch.partitioned import solve_batch_partitioned
 from registration.io import read_fleet_tables, write_fleet_tables
 from registration.io.fleet.csvarchive import parquet_from_csv
-
 from tests.fleet.test_archive import EXTENDED, source_of
 
 NAMES = ("plots", "navigation", "sensors", "platforms", "reference")
@@ -76,7 +75,9 @@ def test_fused_targets_and_residuals_equal_solve_batch(solved, tmp_path):
     parts.mkdir()
     written = archive_outputs(part, src, BatchOptions(), parts=parts)
     assert written.tables is None
-    assert sorted(p.name for p in parts.iterdir()) == [f"part-{k:05d}.parquet" for k in range(written.n_parts)]
+    assert sorted(p.name for p in parts.iterdir()) == [
+        f"part-{k:05d}.parquet" for k in range(written.n_parts)
+    ]
     back = ds.dataset(str(parts)).to_table().to_pandas()
     assert back.equals(_frame(out.tables))
 
@@ -119,15 +120,28 @@ def test_csv_folder_gives_the_parquet_run_and_the_outputs(folders, tmp_path):
     assert (outs["csv"] / "estimates.csv").read_bytes() == (outs["parquet"] / "estimates.csv").read_bytes()
     assert (outs["csv"] / "residuals.csv").read_bytes() == (outs["parquet"] / "residuals.csv").read_bytes()
     out = outs["csv"]
-    assert {p.name for p in out.iterdir()} == {"estimates.csv", "residuals.csv", "summary.json", "residuals.png",
-                                               "residuals_time.png", "map.png", "fused_targets"}
+    assert {p.name for p in out.iterdir()} == {
+        "estimates.csv",
+        "residuals.csv",
+        "summary.json",
+        "residuals.png",
+        "residuals_time.png",
+        "map.png",
+        "fused_targets",
+    }
     summary = json.loads((out / "summary.json").read_text())
     assert summary["fused_targets"]["parts"] == 3 and summary["fused_targets"]["written_by"] == "this process"
     assert set(summary["residuals_by_sensor"]) == {"A-3D", "A-ESM", "B-3D", "C-3D", "C-2D", "S-2D"}
     assert summary["residuals_of_references"]["values"] == summary["chi_square"]["parts"]["references"][1]
     # a second run replaces the folder of parts whole (2 partitions now), and the PNGs stay unless rewritten
-    assert run_archive(parse(["--tables", str(csv), "--out", str(out), "--partition-s", "150", "--no-plots"])) == 0
-    assert sorted(p.name for p in (out / "fused_targets").iterdir()) == ["part-00000.parquet", "part-00001.parquet"]
+    assert (
+        run_archive(parse(["--tables", str(csv), "--out", str(out), "--partition-s", "150", "--no-plots"]))
+        == 0
+    )
+    assert sorted(p.name for p in (out / "fused_targets").iterdir()) == [
+        "part-00000.parquet",
+        "part-00001.parquet",
+    ]
 
 
 def test_csv_converted_in_small_blocks_is_the_same_archive(folders, tmp_path):
@@ -144,8 +158,9 @@ def test_csv_converted_in_small_blocks_is_the_same_archive(folders, tmp_path):
     assert pq.ParquetFile(small / "plots.parquet").num_row_groups > 10
 
 
-@pytest.mark.parametrize("column, value", [("range_m", "12x"), ("bearing_deg", "400"), ("sensor", "nobody"),
-                                           ("time_s", "")])
+@pytest.mark.parametrize(
+    "column, value", [("range_m", "12x"), ("bearing_deg", "400"), ("sensor", "nobody"), ("time_s", "")]
+)
 def test_a_bad_csv_row_is_named_as_the_ordinary_reader_names_it(folders, tmp_path, column, value):
     import pandas as pd
 
@@ -171,4 +186,6 @@ def test_a_bad_csv_row_is_named_as_the_ordinary_reader_names_it(folders, tmp_pat
     (out / "estimates.csv").write_text("earlier\n")
     with pytest.raises(ValueError):
         run_archive(parse(["--tables", str(bad), "--out", str(out), "--partition-s", "100"]))
-    assert [p.name for p in out.iterdir()] == ["estimates.csv"] and (out / "estimates.csv").read_text() == "earlier\n"
+    assert [p.name for p in out.iterdir()] == ["estimates.csv"] and (
+        out / "estimates.csv"
+    ).read_text() == "earlier\n"

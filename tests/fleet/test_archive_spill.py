@@ -13,7 +13,6 @@ from registration.core.parallel import dask_client
 from registration.fleet import fleet_scenario
 from registration.fleet.batch import spill
 from registration.fleet.batch.partitioned import solve_batch_partitioned
-
 from tests.fleet.test_archive import EXTENDED, source_of
 
 
@@ -59,8 +58,13 @@ def test_missing_or_broken_files_are_built_again(fleet, tmp_path, monkeypatch):
 
 
 def test_round_trip_keeps_arrays_and_objects(tmp_path):
-    value = {"a": np.arange(12.0).reshape(3, 4), "b": np.asfortranarray(np.ones((3, 2))), "c": ("x", 3),
-             "d": np.arange(10)[::2], "e": np.zeros((0, 2), dtype=np.int64)}
+    value = {
+        "a": np.arange(12.0).reshape(3, 4),
+        "b": np.asfortranarray(np.ones((3, 2))),
+        "c": ("x", 3),
+        "d": np.arange(10)[::2],
+        "e": np.zeros((0, 2), dtype=np.int64),
+    }
     spill.save(str(tmp_path), "v", value)
     got = spill.load(str(tmp_path), "v")
     for k in ("a", "b", "d", "e"):
@@ -79,8 +83,11 @@ def test_dask_workers_with_spill_equal_in_process(fleet, tmp_path):
     runs = []
     for workers in (1, 2, 3):
         with dask_client(workers=workers) as client:
-            runs.append(solve_batch_partitioned(src, partitions=3, client=client, cache=0, spill=True,
-                                                spill_dir=str(tmp_path)))
+            runs.append(
+                solve_batch_partitioned(
+                    src, partitions=3, client=client, cache=0, spill=True, spill_dir=str(tmp_path)
+                )
+            )
         assert not list(tmp_path.iterdir())
         same_bits(runs[-1], runs[0])
     if bare.layout.extended:

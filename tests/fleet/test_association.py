@@ -4,8 +4,14 @@ registration (registration.fleet.association.associate), on simulated data with 
 import numpy as np
 import pytest
 
-from registration.fleet import (AssociationOptions, associate_and_register, association_scenario, association_scores,
-                                build_problem, solve_batch)
+from registration.fleet import (
+    AssociationOptions,
+    associate_and_register,
+    association_scenario,
+    association_scores,
+    build_problem,
+    solve_batch,
+)
 
 DURATION_S = 120.0
 
@@ -17,8 +23,9 @@ def _run(sim, options=None):
 
 @pytest.fixture(scope="module")
 def easy():
-    sim = association_scenario(5, angle_bias=np.radians(2.0), p_missed=0.0, clutter_per_scan=0.0,
-                               duration_s=DURATION_S, seed=3)
+    sim = association_scenario(
+        5, angle_bias=np.radians(2.0), p_missed=0.0, clutter_per_scan=0.0, duration_s=DURATION_S, seed=3
+    )
     return sim, _run(sim)
 
 
@@ -51,8 +58,9 @@ def test_easy_case_registers_like_the_true_ids(easy):
 
 
 def test_clutter_and_misses():
-    sim = association_scenario(5, angle_bias=np.radians(2.0), p_missed=0.1, clutter_per_scan=2.0,
-                               duration_s=DURATION_S, seed=4)
+    sim = association_scenario(
+        5, angle_bias=np.radians(2.0), p_missed=0.1, clutter_per_scan=2.0, duration_s=DURATION_S, seed=4
+    )
     result = _run(sim)
     scores = association_scores(result.labels, sim.true_target)
     clutter = np.flatnonzero(sim.true_target == "")
@@ -67,8 +75,15 @@ def test_clutter_and_misses():
 def test_reassociation_improves_a_5_degree_case():
     """20 targets (crossing pairs), angle biases of 5 deg: the first pass, under the starting
     covariance, pairs more plots wrongly than the passes under the estimate that follow."""
-    sim = association_scenario(20, crossing=True, angle_bias=np.radians(5.0), p_missed=0.1, clutter_per_scan=1.0,
-                               duration_s=DURATION_S, seed=3)
+    sim = association_scenario(
+        20,
+        crossing=True,
+        angle_bias=np.radians(5.0),
+        p_missed=0.1,
+        clutter_per_scan=1.0,
+        duration_s=DURATION_S,
+        seed=3,
+    )
     once = _run(sim, AssociationOptions(max_iterations=1))
     again = _run(sim)
     assert once.iterations == 1 and again.iterations > 1 and again.changes[0] > 0
@@ -79,8 +94,9 @@ def test_reassociation_improves_a_5_degree_case():
 
 
 def test_unassociated_plots_are_reported():
-    sim = association_scenario(5, angle_bias=np.radians(2.0), p_missed=0.0, clutter_per_scan=0.5,
-                               duration_s=DURATION_S, seed=5)
+    sim = association_scenario(
+        5, angle_bias=np.radians(2.0), p_missed=0.0, clutter_per_scan=0.5, duration_s=DURATION_S, seed=5
+    )
     only_one = (sim.true_target == "T1") & (sim.plots["sensor"] != "A-3D")  # T1 left to A-3D alone
     keep = ~only_one
     sim.plots = {k: v[keep] for k, v in sim.plots.items()}
@@ -122,7 +138,9 @@ def test_bad_input_is_refused_clearly(easy):
     with pytest.raises(ValueError, match="at least two sensors.*'B-3D'"):
         associate_and_register(one, sc.sensors, sc.navigation, sc.platforms)
     with pytest.raises(ValueError, match="references"):
-        associate_and_register(sim.plots, sc.sensors, sc.navigation, sc.platforms, references={"target": ["T1"]})
+        associate_and_register(
+            sim.plots, sc.sensors, sc.navigation, sc.platforms, references={"target": ["T1"]}
+        )
     with pytest.raises(ValueError, match="gate_probability"):
         AssociationOptions(gate_probability=1.5)
     with pytest.raises(ValueError, match="plots: missing column 'sensor'"):
@@ -159,7 +177,9 @@ def test_line_cost_through_the_joint_covariance_matches_the_direct_formula():
     dG = G_b - G_g[g]
     S = tl.cov + C_g[g] + dG @ P @ np.swapaxes(dG, 1, 2)
     d = tl.line - line_g[g]
-    np.testing.assert_allclose(d2, np.einsum("ki,ki->k", d, np.linalg.solve(S, d[..., None])[..., 0]), rtol=1e-9)
+    np.testing.assert_allclose(
+        d2, np.einsum("ki,ki->k", d, np.linalg.solve(S, d[..., None])[..., 0]), rtol=1e-9
+    )
     np.testing.assert_allclose(logdet, np.linalg.slogdet(S)[1], rtol=1e-9)
 
 
@@ -176,8 +196,9 @@ def test_windows_too_short_for_any_tracklet_give_a_clear_error(window_s):
     sc = fleet_scenario(0, duration_s=120.0)
     plots = {k: v for k, v in sc.plots.items() if k != "target"}
     try:
-        result = associate_and_register(plots, sc.sensors, sc.navigation, sc.platforms, None,
-                                        AssociationOptions(window_s=window_s))
+        result = associate_and_register(
+            plots, sc.sensors, sc.navigation, sc.platforms, None, AssociationOptions(window_s=window_s)
+        )
     except ValueError as exc:
         assert "give longer windows" in str(exc)
     else:

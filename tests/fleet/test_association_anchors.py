@@ -18,7 +18,12 @@ import numpy as np
 import pytest
 
 from registration.fleet import associate_and_register, build_problem, solve_batch
-from registration.fleet.association.simulated.fleets import atc_fleet, registration_scores, rolling_fleet, vessel_fleet
+from registration.fleet.association.simulated.fleets import (
+    atc_fleet,
+    registration_scores,
+    rolling_fleet,
+    vessel_fleet,
+)
 
 
 def _wrong(labels, truth) -> int:
@@ -112,7 +117,9 @@ def test_reference_id_carries_over_to_plots_without_ids():
 
     sim = rolling_fleet(34, duration_s=300.0, clutter_share=0.05)
     sc = sim.scenario
-    refs = reference_table(sc, ["T2"], np.random.default_rng(34), period_s=1.0, sigma_m=20.0, duration_s=300.0)
+    refs = reference_table(
+        sc, ["T2"], np.random.default_rng(34), period_s=1.0, sigma_m=20.0, duration_s=300.0
+    )
     refs["target"] = np.full(refs["target"].size, "ADSB-4CA2B1")
     result = associate_and_register(sim.plots, sc.sensors, sc.navigation, sc.platforms, refs)
     mine = sim.true_target == "T2"

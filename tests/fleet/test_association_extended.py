@@ -14,8 +14,13 @@ same plots. The position errors of all sensors can move together without changin
 import numpy as np
 import pytest
 
-from registration.fleet import (associate_and_register, association_scenario, association_scores, build_problem,
-                                solve_batch)
+from registration.fleet import (
+    associate_and_register,
+    association_scenario,
+    association_scores,
+    build_problem,
+    solve_batch,
+)
 from registration.fleet.association.grouping.cost import group_covariances, joint_covariance, line_cost
 from registration.fleet.association.grouping.geometry import TIME_BIAS_SLOT, plot_geometry, state_columns
 from registration.fleet.association.grouping.match import make_tracklets, time_shift_sensitivity
@@ -46,8 +51,15 @@ def _difference_in_sigma(result, base) -> np.ndarray:
 
 @pytest.fixture(scope="module")
 def extended():
-    sim = association_scenario(5, angle_bias=np.radians(2.0), p_missed=0.0, clutter_per_scan=0.0,
-                               duration_s=DURATION_S, seed=3, **EXTENDED)
+    sim = association_scenario(
+        5,
+        angle_bias=np.radians(2.0),
+        p_missed=0.0,
+        clutter_per_scan=0.0,
+        duration_s=DURATION_S,
+        seed=3,
+        **EXTENDED,
+    )
     return sim, _run(sim)
 
 
@@ -80,8 +92,18 @@ def test_extended_case_registers_like_the_true_ids(extended):
 def test_other_draw_larger_errors_clutter_and_crossings():
     """A draw and error sizes the method was not tuned on: 10 targets in crossing pairs, 3 deg
     angle biases, 1000 ppm gains, 0.8 s time biases, 40 m position errors, misses and clutter."""
-    sim = association_scenario(10, crossing=True, angle_bias=np.radians(3.0), p_missed=0.1, clutter_per_scan=1.0,
-                               duration_s=DURATION_S, seed=12, range_gain=1e-3, time_bias=0.8, position_error=40.0)
+    sim = association_scenario(
+        10,
+        crossing=True,
+        angle_bias=np.radians(3.0),
+        p_missed=0.1,
+        clutter_per_scan=1.0,
+        duration_s=DURATION_S,
+        seed=12,
+        range_gain=1e-3,
+        time_bias=0.8,
+        position_error=40.0,
+    )
     result = _run(sim)
     scores = association_scores(result.labels, sim.true_target)
     assert scores["error_rate"] < 0.01
@@ -96,8 +118,16 @@ def test_tracklet_sensitivity_matches_finite_differences():
     (time_shift_sensitivity) besides the platform's. Nearly noise-free plots, so that the fit's
     weights moving with the estimate (a second-order term the sensitivity leaves out) stay small;
     time biases off the 0.1 s navigation grid, whose kinks a difference would straddle."""
-    sim = association_scenario(5, angle_bias=np.radians(2.0), p_missed=0.0, clutter_per_scan=0.0, duration_s=60.0,
-                               seed=3, noise_scale=0.01, **EXTENDED)
+    sim = association_scenario(
+        5,
+        angle_bias=np.radians(2.0),
+        p_missed=0.0,
+        clutter_per_scan=0.0,
+        duration_s=60.0,
+        seed=3,
+        noise_scale=0.01,
+        **EXTENDED,
+    )
     sc = sim.scenario
     problem = build_problem(dict(sim.plots, target=sim.true_target), sc.sensors, sc.navigation, sc.platforms)
     layout = problem.layout
@@ -125,7 +155,14 @@ def test_tracklet_sensitivity_matches_finite_differences():
             own = time_shift_sensitivity(tl.line[full], 10.0)[(cols[:, TIME_BIAS_SLOT] == i)]
             assert np.abs(own).max() > 0.1 * np.abs(G).max()  # the tracklet's motion is no small part
         checked.add(layout.quantities[i])
-    assert {"range_gain", "time_bias", "position_east", "position_up", "heading_error", "range_bias"} <= checked
+    assert {
+        "range_gain",
+        "time_bias",
+        "position_east",
+        "position_up",
+        "heading_error",
+        "range_bias",
+    } <= checked
 
 
 def test_line_cost_with_eleven_states_matches_the_direct_formula():
@@ -156,5 +193,7 @@ def test_line_cost_with_eleven_states_matches_the_direct_formula():
     dG = G_b - G_g[g]
     S = tl.cov + C_g[g] + dG @ P @ np.swapaxes(dG, 1, 2)
     d = tl.line - line_g[g]
-    np.testing.assert_allclose(d2, np.einsum("ki,ki->k", d, np.linalg.solve(S, d[..., None])[..., 0]), rtol=1e-9)
+    np.testing.assert_allclose(
+        d2, np.einsum("ki,ki->k", d, np.linalg.solve(S, d[..., None])[..., 0]), rtol=1e-9
+    )
     np.testing.assert_allclose(logdet, np.linalg.slogdet(S)[1], rtol=1e-9)

@@ -60,7 +60,9 @@ def test_register_writes_the_associations_and_counts_per_sensor(bridge, tmp_path
     assert len(found) == sim.true_target.size
     labelled = found["target"] != ""
     assert (found["target"][labelled] == sim.true_target[labelled]).all()  # no wrong join
-    assert ((found["reason"] != "") | labelled).all() and (found["join"][labelled & (found["reason"] == "")] != "").all()
+    assert ((found["reason"] != "") | labelled).all() and (
+        found["join"][labelled & (found["reason"] == "")] != ""
+    ).all()
     summary = json.loads((tmp_path / "o" / "summary.json").read_text())
     counts = summary["inputs"]["association"]["by_sensor"]["ARPA"]
     assert counts["given"] > 0 and counts["associated"] > 0

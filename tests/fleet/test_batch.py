@@ -35,7 +35,7 @@ def test_the_scenario_is_asynchronous(noisy):
     t, s = sc.plots["time"], sc.plots["sensor"]
     times = {sid: set(np.round(t[s == sid], 6)) for sid in np.unique(s)}
     sids = sorted(times)
-    assert all(not times[a] & times[b] for i, a in enumerate(sids) for b in sids[i + 1:])
+    assert all(not times[a] & times[b] for i, a in enumerate(sids) for b in sids[i + 1 :])
     assert result.converged
 
 
@@ -68,8 +68,14 @@ def test_nearly_noise_free_data_recover_the_truth():
 
 
 def test_converges_from_zero_with_5_degree_and_3_km_errors():
-    sc = fleet_scenario(2, angle_bias=np.radians(5.0), range_bias=3000.0, heading_error=np.radians(5.0),
-                        level_error=np.radians(5.0), duration_s=150.0)
+    sc = fleet_scenario(
+        2,
+        angle_bias=np.radians(5.0),
+        range_bias=3000.0,
+        heading_error=np.radians(5.0),
+        level_error=np.radians(5.0),
+        duration_s=150.0,
+    )
     result = solve_batch(sc.problem())
     assert result.converged and result.iterations < 30
     assert np.abs(_z(sc, result)).max() < 4.0
@@ -96,7 +102,10 @@ def test_fused_targets_and_residual_table(noisy):
         assert 2.0 < nees.mean() < 4.0  # 3 expected; instants share the registration error, so loose
     assert result.residuals.shape == (sc.plots["time"].size, 3)
     unmeasured = ~np.isfinite(sc.plots["range"])
-    assert np.isnan(result.residuals[unmeasured, 0]).all() and np.isfinite(result.residuals[~unmeasured, 0]).all()
+    assert (
+        np.isnan(result.residuals[unmeasured, 0]).all()
+        and np.isfinite(result.residuals[~unmeasured, 0]).all()
+    )
     assert 0.9 < np.nanstd(result.residuals) < 1.1
     by_target, by_sensor = result.residual_check("target"), result.residual_check("sensor")
     assert set(by_target) == set(sc.config.targets) and set(by_sensor) == set(sc.config.sensors)
@@ -113,8 +122,10 @@ def test_a_window_too_long_for_the_manoeuvres_shows_in_the_residuals():
 
 SITE = {"S": (0.0, 0.0, 50.0)}
 #: Two 3-D radars at one surveyed site, 5 m apart: their common biases move every target alike.
-TWIN = {"R1": ("S", (20.0, np.radians(0.1), np.radians(0.1)), 1.0, 0.0, (0.0, 0.0, 10.0)),
-        "R2": ("S", (30.0, np.radians(0.15), np.radians(0.15)), 1.5, 0.4, (5.0, 0.0, 12.0))}
+TWIN = {
+    "R1": ("S", (20.0, np.radians(0.1), np.radians(0.1)), 1.0, 0.0, (0.0, 0.0, 10.0)),
+    "R2": ("S", (30.0, np.radians(0.15), np.radians(0.15)), 1.5, 0.4, (5.0, 0.0, 12.0)),
+}
 
 
 @pytest.mark.parametrize("reference", [None, "T1"])
@@ -127,9 +138,13 @@ def test_reference_targets_make_absolute_biases_observable(reference):
         texts = " ".join(c.text for c in result.observability.unobservable)
         for ch in ("range", "bearing", "elevation"):
             pair = sorted([f"{ch} bias of sensor R1", f"{ch} bias of sensor R2"])
-            assert f"{pair[0]} and {pair[1]} enter only as their difference" in texts or \
-                f"{pair[1]} and {pair[0]} enter only as their difference" in texts, texts
-        assert all(result.status[f"{s}:{ch}_bias"] == "not identifiable" for s in TWIN for ch in ("range", "bearing"))
+            assert (
+                f"{pair[0]} and {pair[1]} enter only as their difference" in texts
+                or f"{pair[1]} and {pair[0]} enter only as their difference" in texts
+            ), texts
+        assert all(
+            result.status[f"{s}:{ch}_bias"] == "not identifiable" for s in TWIN for ch in ("range", "bearing")
+        )
         diff, sigma = result.combination({"R1:range_bias": 1, "R2:range_bias": -1})
         truth = sc.truth_state["R1:range_bias"] - sc.truth_state["R2:range_bias"]
         assert np.isfinite(sigma) and abs(diff - truth) < 3 * sigma
@@ -151,13 +166,17 @@ def test_level_platforms_report_heading_and_bearing_sums():
         value, sigma = result.combination({f"{platform}:heading_error": 1, f"{sensor}:bearing_bias": 1})
         truth = sc.truth_state[f"{platform}:heading_error"] + sc.truth_state[f"{sensor}:bearing_bias"]
         assert sigma < np.radians(0.05) and abs(value - truth) < 3.5 * sigma
-    assert result.status["B:heading_error"] == "not identifiable" and np.isinf(result.sigma_of("B:heading_error"))
+    assert result.status["B:heading_error"] == "not identifiable" and np.isinf(
+        result.sigma_of("B:heading_error")
+    )
     assert result.status["S-2D:bearing_bias"] == "identifiable"  # the surveyed site's heading is fixed
 
 
 def test_a_warm_start_reaches_the_same_optimum_in_fewer_iterations(noisy):
     sc, cold = noisy
-    warm = solve_batch(sc.problem(), x0=cold.estimate + 0.5 * cold.sigma * np.where(np.isfinite(cold.sigma), 1, 0))
+    warm = solve_batch(
+        sc.problem(), x0=cold.estimate + 0.5 * cold.sigma * np.where(np.isfinite(cold.sigma), 1, 0)
+    )
     free = cold.layout.free
     assert warm.converged and warm.iterations < cold.iterations
     assert np.abs((warm.estimate - cold.estimate)[free] / cold.sigma[free]).max() < 0.01

@@ -14,12 +14,17 @@ import registration.fleet.association.associate as association
 import registration.fleet.batch.covariance as covariance
 import registration.fleet.batch.solver as solver
 from registration.fleet import (
-    AssociationOptions, BatchOptions, associate_and_register, build_problem, fleet_scenario, solve_batch,
+    AssociationOptions,
+    BatchOptions,
+    associate_and_register,
+    build_problem,
+    fleet_scenario,
+    solve_batch,
 )
+from registration.fleet.batch.solver import NumericalError
 from registration.fleet.data.layout import state_scale
 from registration.fleet.online.filter import register_online
 from registration.fleet.online.result import FINAL_RESIDUALS
-from registration.fleet.batch.solver import NumericalError
 
 
 def test_a_window_undetermined_at_the_solution_is_set_aside_with_its_reason(monkeypatch):
@@ -40,8 +45,14 @@ def test_a_window_undetermined_at_the_solution_is_set_aside_with_its_reason(monk
     # seed 14 provokes it with them (the check under test is the solver's, not the association's)
     sc = fleet_scenario(14, time_bias=2.0)
     plots = {k: v for k, v in sc.plots.items() if k != "target"}
-    result = associate_and_register(plots, sc.sensors, sc.navigation, sc.platforms, None,
-                                    AssociationOptions(window_s=10.0, max_iterations=2))
+    result = associate_and_register(
+        plots,
+        sc.sensors,
+        sc.navigation,
+        sc.platforms,
+        None,
+        AssociationOptions(window_s=10.0, max_iterations=2),
+    )
     reasons = [e.reason for r in solved for e in r.excluded]
     assert any("set aside at the solution" in r and "singular geometry" in r for r in reasons), reasons
     assert result.batch.converged and np.isfinite(result.batch.sigma[result.batch.layout.free]).any()
@@ -50,6 +61,7 @@ def test_a_window_undetermined_at_the_solution_is_set_aside_with_its_reason(monk
 def test_a_covariance_that_cannot_be_computed_is_a_numerical_error_not_bad_input(monkeypatch):
     """numpy's LinAlgError is a ValueError, which the command line reports as bad input (exit 2);
     the covariance now raises NumericalError (an ArithmeticError) naming the windows instead."""
+
     def singular(*args, **kwargs):
         raise np.linalg.LinAlgError("Singular matrix")
 
@@ -77,8 +89,9 @@ def test_the_reference_term_is_in_the_chi_square_and_follows_its_sigma(short):
     beside the plots' term (before: one total only, nothing per term)."""
     sc = short
     right = solve_batch(sc.problem())
-    tight = solve_batch(build_problem(sc.plots, sc.sensors, sc.navigation, sc.platforms,
-                                      _with_reference_sigma(sc, 0.3)))
+    tight = solve_batch(
+        build_problem(sc.plots, sc.sensors, sc.navigation, sc.platforms, _with_reference_sigma(sc, 0.3))
+    )
     ss, n = right.chi_square.parts["references"]
     assert n == 3 * right.reference_target.size > 0 and 0.6 < ss / n < 1.3
     assert sum(v[0] for v in right.chi_square.parts.values()) == pytest.approx(right.chi_square.chi2)
@@ -86,7 +99,9 @@ def test_the_reference_term_is_in_the_chi_square_and_follows_its_sigma(short):
     assert n_t == n and ss_t / n_t > 30 * ss / n
     assert set(right.residual_check("reference")) == {"T1"}
     assert right.residual_check("reference")["T1"] == pytest.approx((ss / n, n))
-    assert "references" in right.chi_square.parts_text() and "reference positions used" in "\n".join(right.lines())
+    assert "references" in right.chi_square.parts_text() and "reference positions used" in "\n".join(
+        right.lines()
+    )
     assert not [w for w in right.warnings if "reference positions" in w]
 
 
@@ -94,13 +109,21 @@ def test_reference_positions_that_no_window_holds_are_warned_about(short):
     """Reference times on another origin (here 1000 s late): no window holds them, so their sigma
     cannot matter, and the result says so (before: silently identical chi-square)."""
     sc = short
-    late = [solve_batch(build_problem(sc.plots, sc.sensors, sc.navigation, sc.platforms,
-                                      _with_reference_sigma(sc, s, 1000.0))) for s in (1.0, 0.02)]
+    late = [
+        solve_batch(
+            build_problem(
+                sc.plots, sc.sensors, sc.navigation, sc.platforms, _with_reference_sigma(sc, s, 1000.0)
+            )
+        )
+        for s in (1.0, 0.02)
+    ]
     assert late[0].chi_square.chi2 == late[1].chi_square.chi2  # sigma_m cannot enter: nothing uses them
     for r in late:
         assert r.reference_target.size == 0 and r.references_given == sc.references["time"].size
         assert r.chi_square.parts["references"] == (0.0, 0)
-        assert any("reference positions are not used" in w and "time origin" in w for w in r.warnings), r.warnings
+        assert any("reference positions are not used" in w and "time origin" in w for w in r.warnings), (
+            r.warnings
+        )
 
 
 def test_the_online_verdict_rests_on_the_residuals_at_the_final_estimate(short):
@@ -110,9 +133,14 @@ def test_the_online_verdict_rests_on_the_residuals_at_the_final_estimate(short):
     verdicts and the gate followed the innovations (exit 0); now there is one verdict, the
     residuals', and the innovations are information."""
     sc = short
-    result = register_online(sc.plots, sc.sensors, sc.navigation, sc.platforms, _with_reference_sigma(sc, 0.02))
+    result = register_online(
+        sc.plots, sc.sensors, sc.navigation, sc.platforms, _with_reference_sigma(sc, 0.02)
+    )
     assert result.consistency.ok  # the innovations alone would pass the gate
-    assert result.verdict.quantity == FINAL_RESIDUALS and result.verdict_basis == "residuals at the final estimate"
+    assert (
+        result.verdict.quantity == FINAL_RESIDUALS
+        and result.verdict_basis == "residuals at the final estimate"
+    )
     assert not result.verdict.ok and result.verdict.mean == pytest.approx(result.fit_check.mean)
     assert result.fit_check.parts["references"][0] / result.fit_check.parts["references"][1] > 1000
     lines = result.lines()
@@ -135,7 +163,10 @@ def test_a_named_structural_direction_carries_its_own_scaled_information():
     Js = d[:, None] * result.information * d[None, :]
     names = [layout.names[i] for i in free]
     named = 0
-    for unobservable, combos in ((True, result.observability.unobservable), (False, result.observability.weak)):
+    for unobservable, combos in (
+        (True, result.observability.unobservable),
+        (False, result.observability.weak),
+    ):
         for c in combos:
             if not c.text.startswith("heading error of platform"):
                 continue  # a generic direction (an eigenvector): its eigenvalue is its information already
@@ -150,8 +181,12 @@ def test_a_named_structural_direction_carries_its_own_scaled_information():
             assert c.eigenvalue == pytest.approx(part @ Js @ part, rel=1e-6, abs=1e-12)
             assert (c.eigenvalue < 0.01) if unobservable else (0.01 <= c.eigenvalue < 10.0)
             doc = c.to_json()
-            assert doc["scaled_information"] == c.eigenvalue and 0.5 < doc["share_in_unobservable_directions"] + \
-                doc["share_in_weak_directions"] <= 1.0 + 1e-9
+            assert (
+                doc["scaled_information"] == c.eigenvalue
+                and 0.5
+                < doc["share_in_unobservable_directions"] + doc["share_in_weak_directions"]
+                <= 1.0 + 1e-9
+            )
             named += 1
     assert named >= 2
 
@@ -181,8 +216,15 @@ def test_the_association_shows_its_passes_on_a_terminal(monkeypatch):
     terminal = _Terminal()
     monkeypatch.setattr("sys.stderr", terminal)
     monkeypatch.setattr(solver, "PROGRESS_DELAY_S", 0.0)
-    associate_and_register(plots, sc.sensors, sc.navigation, sc.platforms, None,
-                           AssociationOptions(max_iterations=2, batch=BatchOptions()), progress=True)
+    associate_and_register(
+        plots,
+        sc.sensors,
+        sc.navigation,
+        sc.platforms,
+        None,
+        AssociationOptions(max_iterations=2, batch=BatchOptions()),
+        progress=True,
+    )
     assert "association passes" in terminal.getvalue() and "fleet batch solve" in terminal.getvalue()
 
 
@@ -198,7 +240,10 @@ def test_the_report_classes_a_named_sum_as_the_status_classes_its_states():
     nav["pitch"], nav["roll"] = np.zeros_like(nav["pitch"]), np.zeros_like(nav["roll"])
     result = solve_batch(build_problem(sc.plots, sc.sensors, nav, sc.platforms, sc.references))
     checked = 0
-    for unobservable, combos in ((True, result.observability.unobservable), (False, result.observability.weak)):
+    for unobservable, combos in (
+        (True, result.observability.unobservable),
+        (False, result.observability.weak),
+    ):
         for c in combos:
             if not c.text.startswith("heading error of platform"):
                 continue

@@ -17,8 +17,8 @@ import pytest
 from registration import _codegen
 from registration.cli import main
 from registration.fleet import BatchOptions, build_problem, fleet_scenario, register_online, solve_batch
-from registration.fleet.simulation.scenario import DEFAULT_FLEET, Circle, Line
 from registration.fleet.batch.solver import time_bias_warnings
+from registration.fleet.simulation.scenario import DEFAULT_FLEET, Circle, Line
 
 LAT, LON, ALT = np.radians(36.0), np.radians(14.5), 20.0
 Z3, Z6 = np.zeros(3), np.zeros(6)
@@ -30,8 +30,9 @@ def _target(east, north, up):
 
 def _plot(p, gain=0.0, pos_err=Z3, v=Z3, rate=Z6, dt=0.0, bias=Z3):
     """Predicted plot of fleet_residual_ext for a level, north-facing site at (LAT, LON, ALT)."""
-    return _codegen.get("fleet_residual_ext")(p, v, LAT, LON, ALT, 0.0, 0.0, 0.0, rate, Z3, bias, gain, dt, pos_err,
-                                              Z3, 0.0, 0.0, 0.0)[2][0]
+    return _codegen.get("fleet_residual_ext")(
+        p, v, LAT, LON, ALT, 0.0, 0.0, 0.0, rate, Z3, bias, gain, dt, pos_err, Z3, 0.0, 0.0, 0.0
+    )[2][0]
 
 
 def test_position_error_sign_against_hand_geometry():
@@ -63,12 +64,25 @@ def test_time_bias_sees_target_and_platform_earlier():
 def test_without_the_new_errors_it_is_the_three_error_model():
     rng = np.random.default_rng(4)
     n = 200
-    p = np.array(pymap3d.enu2ecef(rng.uniform(-9e4, 9e4, n), rng.uniform(-9e4, 9e4, n), rng.uniform(0, 9e3, n),
-                                  36.0, 14.5, 0.0)).T
-    nav = [np.full(n, LAT), np.full(n, LON), np.full(n, 15.0), rng.uniform(-3, 3, n), rng.uniform(-.1, .1, n),
-           rng.uniform(-.1, .1, n)]
-    att, bias, lever = rng.uniform(-.01, .01, (n, 3)), rng.uniform(-.01, .01, (n, 3)), rng.uniform(-30, 30, (n, 3))
-    meas = [rng.uniform(1e3, 1e5, n), rng.uniform(-3, 3, n), rng.uniform(-.1, .3, n)]
+    p = np.array(
+        pymap3d.enu2ecef(
+            rng.uniform(-9e4, 9e4, n), rng.uniform(-9e4, 9e4, n), rng.uniform(0, 9e3, n), 36.0, 14.5, 0.0
+        )
+    ).T
+    nav = [
+        np.full(n, LAT),
+        np.full(n, LON),
+        np.full(n, 15.0),
+        rng.uniform(-3, 3, n),
+        rng.uniform(-0.1, 0.1, n),
+        rng.uniform(-0.1, 0.1, n),
+    ]
+    att, bias, lever = (
+        rng.uniform(-0.01, 0.01, (n, 3)),
+        rng.uniform(-0.01, 0.01, (n, 3)),
+        rng.uniform(-30, 30, (n, 3)),
+    )
+    meas = [rng.uniform(1e3, 1e5, n), rng.uniform(-3, 3, n), rng.uniform(-0.1, 0.3, n)]
     base = _codegen.get("fleet_residual")(p, *nav, att, bias, lever, *meas)
     ext = _codegen.get("fleet_residual_ext")(p, Z3, *nav, Z6, att, bias, 0.0, 0.0, Z3, lever, *meas)
     np.testing.assert_allclose(ext[0], base[0], rtol=1e-12, atol=1e-9)
@@ -76,6 +90,7 @@ def test_without_the_new_errors_it_is_the_three_error_model():
 
 
 # -- the switch --------------------------------------------------------------------------------
+
 
 def _with(sensors: dict, **columns) -> dict:
     out = dict(sensors)
@@ -92,19 +107,26 @@ def scenario():
 def test_columns_switch_states_on_and_a_sensor_without_range_has_no_gain(scenario):
     layout = scenario.problem().layout
     assert "A-ESM:range_gain" not in layout.names and "A-3D:range_gain" in layout.names
-    assert {layout.units[layout.index(n)] for n in ("A-3D:range_gain", "A-3D:time_bias", "A-3D:position_up")} == {"1", "s", "m"}
+    assert {
+        layout.units[layout.index(n)] for n in ("A-3D:range_gain", "A-3D:time_bias", "A-3D:position_up")
+    } == {"1", "s", "m"}
     plain = fleet_scenario(7, duration_s=150.0)
     assert not any(q in ("range_gain", "time_bias") for q in plain.problem().layout.quantities)
     held = _with(scenario.sensors, prior_range_gain=0.0)
-    result = solve_batch(build_problem(scenario.plots, held, scenario.navigation, scenario.platforms, scenario.references))
+    result = solve_batch(
+        build_problem(scenario.plots, held, scenario.navigation, scenario.platforms, scenario.references)
+    )
     assert result.status["A-3D:range_gain"] == "fixed" and result.value("A-3D:range_gain") == 0.0
 
 
-@pytest.mark.parametrize("column, value, words", [
-    ("prior_time_bias", -1.0, "prior_time_bias of sensor 'A-3D' is -1.0"),
-    ("prior_range_gain", 0.5, "prior_range_gain of sensor 'A-3D' is 0.5"),
-    ("prior_position", -2.0, "prior_position of sensor 'A-3D' is -2.0"),
-])
+@pytest.mark.parametrize(
+    "column, value, words",
+    [
+        ("prior_time_bias", -1.0, "prior_time_bias of sensor 'A-3D' is -1.0"),
+        ("prior_range_gain", 0.5, "prior_range_gain of sensor 'A-3D' is 0.5"),
+        ("prior_position", -2.0, "prior_position of sensor 'A-3D' is -2.0"),
+    ],
+)
 def test_bad_priors_name_table_row_and_column(scenario, column, value, words):
     sensors = dict(scenario.sensors)
     sensors[column] = np.where(sensors["sensor"] == "A-3D", value, np.inf)
@@ -149,11 +171,16 @@ def test_a_time_bias_beyond_half_the_window_is_warned_about(scenario):
     x = np.zeros(layout.n)
     x[layout.index("B-3D:time_bias")] = 6.0
     warnings = time_bias_warnings(layout, x, BatchOptions(window_s=10.0))
-    assert len(warnings) == 1 and "time bias of sensor B-3D is +6 s" in warnings[0] and "window_s >= 24" in warnings[0]
+    assert (
+        len(warnings) == 1
+        and "time bias of sensor B-3D is +6 s" in warnings[0]
+        and "window_s >= 24" in warnings[0]
+    )
     assert time_bias_warnings(layout, x, BatchOptions(window_s=20.0)) == ()
 
 
 # -- observability in the user's terms -----------------------------------------------------------
+
 
 def _report(config, **errors):
     result = solve_batch(fleet_scenario(1, duration_s=200.0, config=config, **errors).problem())
@@ -167,9 +194,13 @@ def test_a_narrow_span_of_ranges_names_gain_against_bias():
 
 
 def test_targets_all_flying_one_way_name_time_against_position_and_a_common_shift():
-    targets = {f"T{k}": Line(-40e3 + 10e3 * k, 30e3 - 5e3 * k, np.radians(90.0), 200.0, 6000.0 + 500 * k)
-               for k in range(5)}
-    text = _report(replace(DEFAULT_FLEET, targets=targets, reference_target=None), time_bias=0.3, position_error=20.0)
+    targets = {
+        f"T{k}": Line(-40e3 + 10e3 * k, 30e3 - 5e3 * k, np.radians(90.0), 200.0, 6000.0 + 500 * k)
+        for k in range(5)
+    }
+    text = _report(
+        replace(DEFAULT_FLEET, targets=targets, reference_target=None), time_bias=0.3, position_error=20.0
+    )
     assert "position errors move together, so the whole picture shifts" in text
     assert "time bias is barely told apart from position errors or angle biases" in text
 
@@ -179,16 +210,24 @@ def test_still_level_ships_without_a_reference_name_the_common_clock():
     sensors, and the report says so (the same fleet with rolling ships fixes it)."""
     ships = {k: replace(v, speed=0.0) for k, v in DEFAULT_FLEET.ships.items()}
     config = replace(DEFAULT_FLEET, ships=ships, reference_target=None)
-    result = solve_batch(fleet_scenario(1, duration_s=200.0, config=config, time_bias=0.3, ship_motion=False).problem())
+    result = solve_batch(
+        fleet_scenario(1, duration_s=200.0, config=config, time_bias=0.3, ship_motion=False).problem()
+    )
     texts = [c.text for c in result.observability.unobservable]
-    assert any("the time biases of all sensors move together (a clock common to the fleet)" in t for t in texts)
+    assert any(
+        "the time biases of all sensors move together (a clock common to the fleet)" in t for t in texts
+    )
     assert all(s == "not identifiable" for n, s in result.status.items() if n.endswith(":time_bias"))
-    rolling = solve_batch(fleet_scenario(1, duration_s=200.0, config=replace(DEFAULT_FLEET, reference_target=None),
-                                         time_bias=0.3).problem())
+    rolling = solve_batch(
+        fleet_scenario(
+            1, duration_s=200.0, config=replace(DEFAULT_FLEET, reference_target=None), time_bias=0.3
+        ).problem()
+    )
     assert all(s == "identifiable" for n, s in rolling.status.items() if n.endswith(":time_bias"))
 
 
 # -- online, files, CLI ------------------------------------------------------------------------
+
 
 def _other_fleet():
     from tests.fleet.test_extended_montecarlo import OTHER_FLEET
@@ -206,10 +245,13 @@ def test_online_filter_estimates_the_new_states_near_the_batch(case):
     if case.startswith("default"):
         sc = fleet_scenario(7, duration_s=300.0, range_gain=4e-4, time_bias=0.25, position_error=15.0)
     else:
-        sc = fleet_scenario(9001, duration_s=600.0, config=_other_fleet(), range_gain=1e-3, time_bias=0.5,
-                            position_error=35.0)
+        sc = fleet_scenario(
+            9001, duration_s=600.0, config=_other_fleet(), range_gain=1e-3, time_bias=0.5, position_error=35.0
+        )
     batch = solve_batch(sc.problem())
-    online = register_online(sc.plots, sc.sensors, sc.navigation, sc.platforms, sc.references, residuals=False)
+    online = register_online(
+        sc.plots, sc.sensors, sc.navigation, sc.platforms, sc.references, residuals=False
+    )
     assert online.layout.names == batch.layout.names
     free = batch.layout.free
     free = free[np.isfinite(batch.sigma[free])]
@@ -220,20 +262,38 @@ def test_online_filter_estimates_the_new_states_near_the_batch(case):
 
 def test_simulate_with_the_new_errors_writes_their_rows_and_units(tmp_path, capsys):
     out = tmp_path / "sim"
-    code = main(["fleet", "simulate", "--out", str(out), "--no-plots", "--range-gain-ppm", "500",
-                 "--time-bias-s", "0.3", "--position-error-m", "20"])
+    code = main(
+        [
+            "fleet",
+            "simulate",
+            "--out",
+            str(out),
+            "--no-plots",
+            "--range-gain-ppm",
+            "500",
+            "--time-bias-s",
+            "0.3",
+            "--position-error-m",
+            "20",
+        ]
+    )
     assert code == 0
     printed = capsys.readouterr().out
     assert "ppm" in printed
     est = pd.read_csv(out / "estimates.csv")
     units = dict(zip(est["state"], est["unit"]))
     assert units["range_gain"] == "1" and units["time_bias"] == "s" and units["position_up"] == "m"
-    assert set(pd.read_csv(out / "sensors.csv").columns) >= {"prior_range_gain", "prior_time_bias_s", "prior_position_m"}
+    assert set(pd.read_csv(out / "sensors.csv").columns) >= {
+        "prior_range_gain",
+        "prior_time_bias_s",
+        "prior_position_m",
+    }
     tb = est[est["state"] == "time_bias"]
     assert (np.abs(tb["estimate"] - tb["truth"]) < 4 * tb["sigma"]).all()
 
 
 # -- the fast paths against the libraries ------------------------------------------------------
+
 
 def test_seen_navigation_is_scipys_cubic_hermite_curve():
     from scipy.interpolate import CubicHermiteSpline
@@ -269,5 +329,6 @@ def test_window_basis_and_its_rate_are_numpys_legendre_series():
         c = np.eye(4)[k]
         mask = blk.coef_mask[block, k]
         np.testing.assert_allclose(basis[:, k], legendre.legval(tau, c) * mask, atol=1e-13)
-        np.testing.assert_allclose(rate[:, k], legendre.legval(tau, legendre.legder(c)) * mask / blk.block_half[block],
-                                   atol=1e-13)
+        np.testing.assert_allclose(
+            rate[:, k], legendre.legval(tau, legendre.legder(c)) * mask / blk.block_half[block], atol=1e-13
+        )

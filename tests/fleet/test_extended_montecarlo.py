@@ -93,8 +93,12 @@ EXTENDED_COLUMNS = ("prior_range_gain", "prior_time_bias", "prior_position")
 #: one), other sensors and targets, another reference target.
 OTHER_FLEET = FleetConfig(
     ships={
-        "D": ShipTrack(10e3, -25e3, np.radians(20.0), 14.0, 16.0, np.radians(1.2), 7.5, np.radians(3.5), 10.0, 0.5),
-        "E": ShipTrack(-25e3, 20e3, np.radians(135.0), 9.0, 14.0, np.radians(1.8), 8.5, np.radians(4.5), 12.5, 2.3),
+        "D": ShipTrack(
+            10e3, -25e3, np.radians(20.0), 14.0, 16.0, np.radians(1.2), 7.5, np.radians(3.5), 10.0, 0.5
+        ),
+        "E": ShipTrack(
+            -25e3, 20e3, np.radians(135.0), 9.0, 14.0, np.radians(1.8), 8.5, np.radians(4.5), 12.5, 2.3
+        ),
     },
     sites={"F": (25e3, 30e3, 50.0)},
     sensors={
@@ -114,12 +118,30 @@ OTHER_FLEET = FleetConfig(
 )
 
 CONFIGS = {
-    "default": dict(config=DEFAULT_FLEET, seeds=range(3000, 3060), duration_s=150.0,
-                    range_gain=5e-4, time_bias=0.3, position_error=20.0),
-    "default-other-sizes": dict(config=DEFAULT_FLEET, seeds=range(7000, 7020), duration_s=150.0,
-                                range_gain=2e-4, time_bias=-0.8, position_error=50.0),
-    "other-fleet": dict(config=OTHER_FLEET, seeds=range(9000, 9020), duration_s=180.0,
-                        range_gain=1e-3, time_bias=0.5, position_error=35.0),
+    "default": dict(
+        config=DEFAULT_FLEET,
+        seeds=range(3000, 3060),
+        duration_s=150.0,
+        range_gain=5e-4,
+        time_bias=0.3,
+        position_error=20.0,
+    ),
+    "default-other-sizes": dict(
+        config=DEFAULT_FLEET,
+        seeds=range(7000, 7020),
+        duration_s=150.0,
+        range_gain=2e-4,
+        time_bias=-0.8,
+        position_error=50.0,
+    ),
+    "other-fleet": dict(
+        config=OTHER_FLEET,
+        seeds=range(9000, 9020),
+        duration_s=180.0,
+        range_gain=1e-3,
+        time_bias=0.5,
+        position_error=35.0,
+    ),
 }
 
 
@@ -134,7 +156,9 @@ def summarise(layout, estimates, truths, sigmas, covariances, statuses) -> dict:
     err = est - tru
     free = layout.free
     used = free[np.isfinite(sig[:, free]).all(axis=0)]
-    nees = np.array([e[used] @ np.linalg.solve(P[np.ix_(used, used)], e[used]) for e, P in zip(err, covariances)])
+    nees = np.array(
+        [e[used] @ np.linalg.solve(P[np.ix_(used, used)], e[used]) for e, P in zip(err, covariances)]
+    )
     states = {}
     for i, name in enumerate(layout.names):
         if _kind(name) not in NEW_KINDS or i not in free:
@@ -144,8 +168,13 @@ def summarise(layout, estimates, truths, sigmas, covariances, statuses) -> dict:
             counts[st[name]] = counts.get(st[name], 0) + 1
         rmse = float(np.sqrt(np.mean(err[:, i] ** 2)))
         crlb = float(np.mean(sig[:, i] ** 2))
-        states[name] = {"rmse": rmse, "crlb": crlb, "ratio": rmse / np.sqrt(crlb) if np.isfinite(crlb) else np.inf,
-                        "counts": counts, "checked": counts == {"identifiable": len(statuses)}}
+        states[name] = {
+            "rmse": rmse,
+            "crlb": crlb,
+            "ratio": rmse / np.sqrt(crlb) if np.isfinite(crlb) else np.inf,
+            "counts": counts,
+            "checked": counts == {"identifiable": len(statuses)},
+        }
     return {"runs": len(estimates), "nees": nees, "nees_dof": int(used.size), "states": states}
 
 
@@ -153,8 +182,11 @@ def kind_ratios(summary: dict, checked_only: bool = True) -> dict:
     """Per new kind: sqrt(mean over its (checked) states of RMSE^2 / CRLB)."""
     out = {}
     for kind in NEW_KINDS:
-        r2 = [s["ratio"] ** 2 for n, s in summary["states"].items()
-              if _kind(n) == kind and (s["checked"] or not checked_only)]
+        r2 = [
+            s["ratio"] ** 2
+            for n, s in summary["states"].items()
+            if _kind(n) == kind and (s["checked"] or not checked_only)
+        ]
         if r2:
             out[kind] = float(np.sqrt(np.mean(r2)))
     return out
@@ -179,8 +211,17 @@ def _run(cfg: dict) -> dict:
         chi2 += result.chi_square.chi2
         dof += result.chi_square.dof
     summary = summarise(layout, estimates, truths, sigmas, covariances, statuses)
-    summary.update(layout=layout, estimates=estimates, truths=truths, sigmas=sigmas, covariances=covariances,
-                   statuses=statuses, converged=converged, chi2=chi2, dof=dof)
+    summary.update(
+        layout=layout,
+        estimates=estimates,
+        truths=truths,
+        sigmas=sigmas,
+        covariances=covariances,
+        statuses=statuses,
+        converged=converged,
+        chi2=chi2,
+        dof=dof,
+    )
     return summary
 
 
@@ -192,13 +233,17 @@ def mc(request):
 
 
 def _table(summary: dict) -> str:
-    lines = [f"{summary['name']}: {summary['runs']} runs, mean NEES {summary['nees'].mean():.2f} over "
-             f"{summary['nees_dof']} states, band {nees_interval(summary['runs'], summary['nees_dof'], 0.95)}"]
+    lines = [
+        f"{summary['name']}: {summary['runs']} runs, mean NEES {summary['nees'].mean():.2f} over "
+        f"{summary['nees_dof']} states, band {nees_interval(summary['runs'], summary['nees_dof'], 0.95)}"
+    ]
     for kind, r in kind_ratios(summary).items():
         lines.append(f"  {kind}: pooled RMSE/sqrt(CRLB) {r:.3f}")
     for name, s in summary["states"].items():
-        lines.append(f"  {name:22s} RMSE {s['rmse']:.3g} sqrt(CRLB) {np.sqrt(s['crlb']):.3g} ratio {s['ratio']:.3f} "
-                     f"{'checked' if s['checked'] else 'EXCLUDED'} {s['counts']}")
+        lines.append(
+            f"  {name:22s} RMSE {s['rmse']:.3g} sqrt(CRLB) {np.sqrt(s['crlb']):.3g} ratio {s['ratio']:.3f} "
+            f"{'checked' if s['checked'] else 'EXCLUDED'} {s['counts']}"
+        )
     return "\n".join(lines)
 
 
@@ -210,7 +255,8 @@ def test_every_run_converges(mc):
 def test_the_model_fits_the_data(mc):
     lo, hi = nees_interval(1, mc["dof"], level=0.99)
     assert lo <= mc["chi2"] <= hi, (
-        f"{mc['name']}: chi2 {mc['chi2']:.0f} outside [{lo:.0f}, {hi:.0f}] for {mc['dof']} dof")
+        f"{mc['name']}: chi2 {mc['chi2']:.0f} outside [{lo:.0f}, {hi:.0f}] for {mc['dof']} dof"
+    )
 
 
 def test_state_nees_in_its_95_percent_band(mc):
@@ -218,7 +264,8 @@ def test_state_nees_in_its_95_percent_band(mc):
     print(_table(mc))
     assert lo <= mc["nees"].mean() <= hi, (
         f"{mc['name']}: mean NEES {mc['nees'].mean():.2f} outside [{lo:.2f}, {hi:.2f}] for {mc['nees_dof']} states\n"
-        + _table(mc))
+        + _table(mc)
+    )
 
 
 def test_new_states_rmse_matches_the_crlb(mc):
@@ -229,9 +276,12 @@ def test_new_states_rmse_matches_the_crlb(mc):
     runs = mc["runs"]
     q = 0.01 / (2 * len(checked))  # Bonferroni: 99 % over all checked states, two-sided
     lo, hi = (np.sqrt(2.0 * gammaincinv(runs / 2, p) / runs) for p in (q, 1 - q))
-    single = {n: round(mc["states"][n]["ratio"], 3) for n in checked if not lo <= mc["states"][n]["ratio"] <= hi}
+    single = {
+        n: round(mc["states"][n]["ratio"], 3) for n in checked if not lo <= mc["states"][n]["ratio"] <= hi
+    }
     assert not single, (
-        f"{mc['name']}: single-state RMSE/sqrt(CRLB) outside [{lo:.2f}, {hi:.2f}]: {single}\n" + _table(mc))
+        f"{mc['name']}: single-state RMSE/sqrt(CRLB) outside [{lo:.2f}, {hi:.2f}]: {single}\n" + _table(mc)
+    )
 
 
 def test_exclusions_are_by_status(mc):
@@ -277,11 +327,19 @@ def test_checks_detect_a_sign_error(mc):
 
 # -- the simulator against an independent computation -------------------------------------------------------
 
+
 def test_simulated_plots_match_an_independent_computation():
     pymap3d = pytest.importorskip("pymap3d")
     config = DEFAULT_FLEET
-    sc = fleet_scenario(11, duration_s=30.0, range_gain=5e-4, time_bias=0.3, position_error=20.0,
-                        noise_scale=1e-9, ship_motion=False)
+    sc = fleet_scenario(
+        11,
+        duration_s=30.0,
+        range_gain=5e-4,
+        time_bias=0.3,
+        position_error=20.0,
+        noise_scale=1e-9,
+        ship_motion=False,
+    )
     truth = sc.truth_state
     for sid in ("A-3D", "C-2D", "S-2D"):
         pid, sigma, _, _, lever = config.sensors[sid]
@@ -297,7 +355,9 @@ def test_simulated_plots_match_an_independent_computation():
         targets = sc.plots["target"][rows]
         enu_c = np.array([config.targets[str(k)].enu(np.array([t]))[0] for k, t in zip(targets, t_true)])
         x, y, z = pymap3d.enu2ecef(enu_c[:, 0], enu_c[:, 1], enu_c[:, 2], *CENTRE, deg=False)
-        te, tn, tu = pymap3d.ecef2enu(x, y, z, lat, lon, alt, deg=False)  # target in ENU at the navigation point
+        te, tn, tu = pymap3d.ecef2enu(
+            x, y, z, lat, lon, alt, deg=False
+        )  # target in ENU at the navigation point
         starboard = np.stack([np.cos(heading), -np.sin(heading), np.zeros(rows.size)], axis=1)
         bow = np.stack([np.sin(heading), np.cos(heading), np.zeros(rows.size)], axis=1)
         up = np.array([0.0, 0.0, 1.0])
@@ -305,10 +365,14 @@ def test_simulated_plots_match_an_independent_computation():
         sensor_enu = lever[0] * starboard + lever[1] * bow + lever[2] * up - pos_err  # true = stated - error
         u = np.stack([te, tn, tu], axis=1) - sensor_enu
         ux, uy, uz = (u * starboard).sum(1), (u * bow).sum(1), u[:, 2]
-        rng = (1 + truth.get(f"{sid}:range_gain", 0.0)) * np.sqrt(ux**2 + uy**2 + uz**2) + truth[f"{sid}:range_bias"]
+        rng = (1 + truth.get(f"{sid}:range_gain", 0.0)) * np.sqrt(ux**2 + uy**2 + uz**2) + truth[
+            f"{sid}:range_bias"
+        ]
         brg = wrap_angle(np.arctan2(ux, uy) + truth[f"{sid}:bearing_bias"])
         np.testing.assert_allclose(sc.plots["range"][rows], rng, rtol=0, atol=1e-4, err_msg=sid)
-        np.testing.assert_allclose(wrap_angle(sc.plots["bearing"][rows] - brg), 0.0, rtol=0, atol=1e-9, err_msg=sid)
+        np.testing.assert_allclose(
+            wrap_angle(sc.plots["bearing"][rows] - brg), 0.0, rtol=0, atol=1e-9, err_msg=sid
+        )
         if np.isfinite(sigma[2]):
             ele = np.arctan2(uz, np.hypot(ux, uy)) + truth[f"{sid}:elevation_bias"]
             np.testing.assert_allclose(sc.plots["elevation"][rows], ele, rtol=0, atol=1e-9, err_msg=sid)
@@ -319,12 +383,32 @@ def test_simulated_plots_match_an_independent_computation():
 #: ``solve_batch(fleet_scenario(5, duration_s=120).problem()).estimate`` as produced by commit b80e4f0
 #: (before the extended model), as hexadecimal floats.
 GOLDEN_ESTIMATE = (
-    "0x1.f6c3da4241406p-8", "0x1.f661e261b154dp-9", "-0x1.dcdda3887428bp-9", "0x1.0abe59789fef7p-8",
-    "-0x1.276ab3ad58b5cp-8", "0x1.b58b2e7ccc4bap-9", "0x1.53c21e1874197p-8", "-0x1.cdce02ac8bafdp-9",
-    "0x1.cfe2c83cd965dp-9", "0x0.0p+0", "0x0.0p+0", "0x0.0p+0", "-0x1.2c38aedbae021p+8", "-0x1.0c8079bdfbe0ep-6",
-    "-0x1.203488997aebcp-6", "0x1.338628cf1fe35p-6", "-0x1.1e49d64b70dbcp-6", "-0x1.27e03b71ed1abp+8",
-    "-0x1.a3e38163fb9e2p-7", "-0x1.1364b25e90c72p-6", "-0x1.2a69f6e93975cp+8", "-0x1.c5855d16fe1fep-7",
-    "0x1.22a657836cf63p-6", "-0x1.293c22e049189p+8", "0x1.55fc718bc8d90p-6", "0x1.28af838ed083bp+8",
+    "0x1.f6c3da4241406p-8",
+    "0x1.f661e261b154dp-9",
+    "-0x1.dcdda3887428bp-9",
+    "0x1.0abe59789fef7p-8",
+    "-0x1.276ab3ad58b5cp-8",
+    "0x1.b58b2e7ccc4bap-9",
+    "0x1.53c21e1874197p-8",
+    "-0x1.cdce02ac8bafdp-9",
+    "0x1.cfe2c83cd965dp-9",
+    "0x0.0p+0",
+    "0x0.0p+0",
+    "0x0.0p+0",
+    "-0x1.2c38aedbae021p+8",
+    "-0x1.0c8079bdfbe0ep-6",
+    "-0x1.203488997aebcp-6",
+    "0x1.338628cf1fe35p-6",
+    "-0x1.1e49d64b70dbcp-6",
+    "-0x1.27e03b71ed1abp+8",
+    "-0x1.a3e38163fb9e2p-7",
+    "-0x1.1364b25e90c72p-6",
+    "-0x1.2a69f6e93975cp+8",
+    "-0x1.c5855d16fe1fep-7",
+    "0x1.22a657836cf63p-6",
+    "-0x1.293c22e049189p+8",
+    "0x1.55fc718bc8d90p-6",
+    "0x1.28af838ed083bp+8",
     "-0x1.1fc06aca415e3p-6",
 )
 
@@ -345,9 +429,11 @@ def test_without_extended_columns_results_are_unchanged(baseline, monkeypatch):
     assert not any(_kind(n) in NEW_KINDS for n in result.layout.names)
     assert result.layout.width == 6
     golden = np.array([float.fromhex(h) for h in GOLDEN_ESTIMATE])
-    assert result.estimate.shape == golden.shape and np.allclose(result.estimate, golden, rtol=1e-12, atol=0.0), (
-        "estimate differs from the pre-extension code's:\n"
-        + "\n".join(f"{n}: {a!r} vs {b!r}" for n, a, b in zip(result.layout.names, result.estimate, golden) if a != b))
+    assert result.estimate.shape == golden.shape and np.allclose(
+        result.estimate, golden, rtol=1e-12, atol=0.0
+    ), "estimate differs from the pre-extension code's:\n" + "\n".join(
+        f"{n}: {a!r} vs {b!r}" for n, a, b in zip(result.layout.names, result.estimate, golden) if a != b
+    )
     # and the extended generated functions are not even called
     called = []
     get = _codegen.get
@@ -388,6 +474,14 @@ def test_extended_states_all_fixed_give_the_same_estimate(baseline):
             assert result.sigma[j] == 0 and result.estimate[j] == base.estimate[i], nm
             continue
         assert abs(result.estimate[j] - base.estimate[i]) <= 1e-8 * base.sigma[i], (
-            nm, result.estimate[j], base.estimate[i], base.sigma[i])
-        assert abs(result.sigma[j] - base.sigma[i]) <= 1e-8 * base.sigma[i], (nm, result.sigma[j], base.sigma[i])
+            nm,
+            result.estimate[j],
+            base.estimate[i],
+            base.sigma[i],
+        )
+        assert abs(result.sigma[j] - base.sigma[i]) <= 1e-8 * base.sigma[i], (
+            nm,
+            result.sigma[j],
+            base.sigma[i],
+        )
         assert result.status[nm] == base.status[nm], nm

@@ -26,14 +26,17 @@ def _write(scenario, folder, fmt="csv"):
 
 
 def _read(paths):
-    return read_fleet_tables(paths["plots"], paths["navigation"], paths["sensors"], paths["platforms"], paths["reference"])
+    return read_fleet_tables(
+        paths["plots"], paths["navigation"], paths["sensors"], paths["platforms"], paths["reference"]
+    )
 
 
 @pytest.mark.parametrize("fmt", ["csv", "parquet"])
 def test_round_trip_gives_the_tables_back(scenario, tmp_path, fmt):
     paths = _write(scenario, tmp_path, fmt)
-    assert list(pd.read_csv(paths["plots"]).columns if fmt == "csv" else pd.read_parquet(paths["plots"]).columns) == [
-        "time_s", "sensor", "target", "range_m", "bearing_deg", "elevation_deg"]
+    assert list(
+        pd.read_csv(paths["plots"]).columns if fmt == "csv" else pd.read_parquet(paths["plots"]).columns
+    ) == ["time_s", "sensor", "target", "range_m", "bearing_deg", "elevation_deg"]
     tables = _read(paths)
     for name in ("plots", "navigation", "sensors"):
         want, got = getattr(scenario, name), getattr(tables, name)
@@ -42,9 +45,13 @@ def test_round_trip_gives_the_tables_back(scenario, tmp_path, fmt):
                 assert (got[key] == v).all(), key
             else:
                 np.testing.assert_allclose(got[key], v, rtol=1e-15, atol=1e-15, err_msg=key)
-    assert np.isinf(tables.platforms["prior_heading"][:3]).all() and (tables.platforms["prior_heading"][3] == 0)
+    assert np.isinf(tables.platforms["prior_heading"][:3]).all() and (
+        tables.platforms["prior_heading"][3] == 0
+    )
     p = np.stack([tables.references[c] for c in ("lat", "lon", "alt")])
-    np.testing.assert_allclose(geodetic2ecef(*p), np.stack([scenario.references[c] for c in "xyz"], axis=1), atol=1e-6)
+    np.testing.assert_allclose(
+        geodetic2ecef(*p), np.stack([scenario.references[c] for c in "xyz"], axis=1), atol=1e-6
+    )
     problem = tables.problem()
     assert problem.n_plots == scenario.plots["time"].size
 
@@ -79,25 +86,57 @@ def _set(column, row, value):
     def edit(frame):
         frame[column] = frame[column].astype(object)
         frame.loc[row, column] = value
+
     return edit
 
 
-@pytest.mark.parametrize("name, edit, words", [
-    ("plots", lambda f: f.pop("time_s"), ["plots.csv", "missing column", "time_s"]),
-    ("plots", lambda f: f.insert(0, "bearing", f.pop("bearing_deg")), ["plots.csv", "unknown column", "bearing"]),
-    ("plots", lambda f: f.__setitem__("bearing_deg", np.radians(f["bearing_deg"])),
-     ["plots.csv", "row", "'bearing_deg'", "radians?"]),
-    ("navigation", lambda f: (f.__setitem__("lat_deg", np.radians(f["lat_deg"])), f.__setitem__("lon_deg", np.radians(f["lon_deg"]))),
-     ["navigation.csv", "row", "'lat_deg'", "radians?"]),
-    ("plots", _set("sensor", 7, "Z-9"), ["plots.csv", "row 7", "'sensor'", "unknown sensor 'Z-9'", "sensors.csv"]),
-    ("sensors", _set("platform", 2, "Q"), ["sensors.csv", "row 2", "'platform'", "unknown platform 'Q'"]),
-    ("plots", _set("range_m", 4, "far"), ["plots.csv", "row 4", "'range_m'", "'far' is not a number (m)"]),
-    ("plots", _set("elevation_deg", 5, 120.0), ["plots.csv", "row 5", "'elevation_deg'", "deg"]),
-    ("navigation", _set("alt_m", 3, np.nan), ["navigation.csv", "row 3", "'alt_m'", "empty", "(m)"]),
-    ("sensors", _set("sigma_bearing_deg", 1, 0.0), ["sensors.csv", "row 1", "'sigma_bearing_deg'", "outside (0"]),
-    ("plots", lambda f: f.loc.__setitem__((0, ["range_m", "bearing_deg", "elevation_deg"]), np.nan),
-     ["plots.csv", "row 0", "no measured channel"]),
-])
+@pytest.mark.parametrize(
+    "name, edit, words",
+    [
+        ("plots", lambda f: f.pop("time_s"), ["plots.csv", "missing column", "time_s"]),
+        (
+            "plots",
+            lambda f: f.insert(0, "bearing", f.pop("bearing_deg")),
+            ["plots.csv", "unknown column", "bearing"],
+        ),
+        (
+            "plots",
+            lambda f: f.__setitem__("bearing_deg", np.radians(f["bearing_deg"])),
+            ["plots.csv", "row", "'bearing_deg'", "radians?"],
+        ),
+        (
+            "navigation",
+            lambda f: (
+                f.__setitem__("lat_deg", np.radians(f["lat_deg"])),
+                f.__setitem__("lon_deg", np.radians(f["lon_deg"])),
+            ),
+            ["navigation.csv", "row", "'lat_deg'", "radians?"],
+        ),
+        (
+            "plots",
+            _set("sensor", 7, "Z-9"),
+            ["plots.csv", "row 7", "'sensor'", "unknown sensor 'Z-9'", "sensors.csv"],
+        ),
+        ("sensors", _set("platform", 2, "Q"), ["sensors.csv", "row 2", "'platform'", "unknown platform 'Q'"]),
+        (
+            "plots",
+            _set("range_m", 4, "far"),
+            ["plots.csv", "row 4", "'range_m'", "'far' is not a number (m)"],
+        ),
+        ("plots", _set("elevation_deg", 5, 120.0), ["plots.csv", "row 5", "'elevation_deg'", "deg"]),
+        ("navigation", _set("alt_m", 3, np.nan), ["navigation.csv", "row 3", "'alt_m'", "empty", "(m)"]),
+        (
+            "sensors",
+            _set("sigma_bearing_deg", 1, 0.0),
+            ["sensors.csv", "row 1", "'sigma_bearing_deg'", "outside (0"],
+        ),
+        (
+            "plots",
+            lambda f: f.loc.__setitem__((0, ["range_m", "bearing_deg", "elevation_deg"]), np.nan),
+            ["plots.csv", "row 0", "no measured channel"],
+        ),
+    ],
+)
 def test_bad_cells_name_file_row_column_and_unit(scenario, tmp_path, name, edit, words):
     paths = _write(scenario, tmp_path)
     _edit(paths, name, edit)
@@ -115,6 +154,7 @@ def test_a_missing_file_is_named(tmp_path, scenario):
 
 
 # --- on_bad_row="skip": bad rows of the plots and reference files set aside with a reason code ---
+
 
 def _frame(path):
     return pd.read_csv(path, dtype={"sensor": str, "platform": str, "target": str})
@@ -135,7 +175,11 @@ def _spoil_plots(plots):
         20: ("sensor", "Z-9", "unknown_sensor"),
         30: ("range_m", -5.0, "non_positive_range"),
         44: ("time_s", np.nan, "non_finite"),
-        47: ("sensor", np.nan, "empty_id"),  # an empty target cell is no id now (associated), a sensor's is bad
+        47: (
+            "sensor",
+            np.nan,
+            "empty_id",
+        ),  # an empty target cell is no id now (associated), a sensor's is bad
         c2d: ("elevation_deg", 1.0, "unmeasured_channel"),
         a3d: ("time_s", 75.0, "outside_navigation"),
     }
@@ -164,8 +208,8 @@ def spoiled(scenario, tmp_path):
 
 
 def test_skip_mode_sets_bad_rows_aside_with_their_reason(spoiled):
-    from registration.io.fleet.rejects import FLEET_REASON_CODES
     from registration.io.files.tablefile import REASON_CODES
+    from registration.io.fleet.rejects import FLEET_REASON_CODES
 
     paths, _, want = spoiled
     first = min(want)
@@ -176,11 +220,16 @@ def test_skip_mode_sets_bad_rows_aside_with_their_reason(spoiled):
     assert got == want
     refs = [r for r in tables.rejected if r.file == str(paths["reference"])]
     assert [(r.row, r.column, r.code) for r in refs] == [(5, "lat_deg", "non_numeric")]
-    assert set(REASON_CODES) <= set(FLEET_REASON_CODES) and {r.code for r in tables.rejected} <= set(FLEET_REASON_CODES)
+    assert set(REASON_CODES) <= set(FLEET_REASON_CODES) and {r.code for r in tables.rejected} <= set(
+        FLEET_REASON_CODES
+    )
     n_plots = len(_frame(paths["plots"]))
     assert tables.rows()["plots"] == n_plots - len(want) and tables.rows_read()["plots"] == n_plots
     frame = tables.rejected_frame()
-    assert list(frame.columns) == ["file", "row", "column", "reason_code", "reason"] and len(frame) == len(want) + 1
+    assert (
+        list(frame.columns) == ["file", "row", "column", "reason_code", "reason"]
+        and len(frame) == len(want) + 1
+    )
     assert "'Z-9'" in frame.set_index("row").loc[20, "reason"]
 
 
@@ -227,11 +276,15 @@ def test_every_plot_row_bad_is_a_clear_error(scenario, tmp_path):
     assert len(err.value.rejected) == n and len(err.value.rejected_frame()) == n
 
 
-@pytest.mark.parametrize("name, column, row", [("navigation", "alt_m", 3), ("sensors", "sigma_bearing_deg", 1)])
+@pytest.mark.parametrize(
+    "name, column, row", [("navigation", "alt_m", 3), ("sensors", "sigma_bearing_deg", 1)]
+)
 def test_a_bad_row_of_the_defining_files_still_stops_in_skip_mode(scenario, tmp_path, name, column, row):
     paths = _write(scenario, tmp_path)
     _edit(paths, name, _set(column, row, "high"))
-    with pytest.raises(ValueError, match=rf"{name}.csv: row {row}, column '{column}': 'high' is not a number"):
+    with pytest.raises(
+        ValueError, match=rf"{name}.csv: row {row}, column '{column}': 'high' is not a number"
+    ):
         read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row="skip")
 
 
@@ -251,6 +304,7 @@ def test_skip_mode_sets_aside_the_reference_of_a_target_left_without_plots(scena
 
 # --- a CSV line with fewer or more fields than the header is a bad row, not a row of empty cells ---
 
+
 def _lines(path):
     return path.read_text().splitlines()
 
@@ -264,21 +318,29 @@ def _cut(line: str, keep: int) -> str:
     return ",".join(line.split(",")[:keep])
 
 
-@pytest.mark.parametrize("where, edit, column, code, fields", [
-    ("last", lambda line: _cut(line, 5), "elevation_deg", "short_row", 5),  # a half-written last line
-    ("middle", lambda line: _cut(line, 4), "bearing_deg", "short_row", 4),
-    ("first", lambda line: line + ",7.5", "*", "long_row", 7),  # pandas would truncate it with a warning
-    ("middle", lambda line: line + ",7.5,8", "*", "long_row", 8),  # pandas would refuse the whole file
-])
-def test_a_line_with_another_number_of_fields_is_a_bad_row(scenario, tmp_path, where, edit, column, code, fields):
+@pytest.mark.parametrize(
+    "where, edit, column, code, fields",
+    [
+        ("last", lambda line: _cut(line, 5), "elevation_deg", "short_row", 5),  # a half-written last line
+        ("middle", lambda line: _cut(line, 4), "bearing_deg", "short_row", 4),
+        ("first", lambda line: line + ",7.5", "*", "long_row", 7),  # pandas would truncate it with a warning
+        ("middle", lambda line: line + ",7.5,8", "*", "long_row", 8),  # pandas would refuse the whole file
+    ],
+)
+def test_a_line_with_another_number_of_fields_is_a_bad_row(
+    scenario, tmp_path, where, edit, column, code, fields
+):
     """Before: a line cut to 5 of 6 fields read as a plot without elevation ("not measured"), exit 0."""
     paths = _write(scenario, tmp_path)
     lines = _lines(paths["plots"])
     row = {"first": 0, "middle": 60, "last": len(lines) - 2}[where]
     lines[row + 1] = edit(lines[row + 1])
     _put_lines(paths["plots"], lines)
-    with pytest.raises(ValueError, match=rf"plots.csv: row {row}, column '{re.escape(column)}': line {row + 2} has "
-                                         rf"{fields} fields, the header 6"):
+    with pytest.raises(
+        ValueError,
+        match=rf"plots.csv: row {row}, column '{re.escape(column)}': line {row + 2} has "
+        rf"{fields} fields, the header 6",
+    ):
         _read(paths)
     tables = read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row="skip")
     assert [(r.row, r.column, r.code) for r in tables.rejected] == [(row, column, code)]
@@ -296,8 +358,11 @@ def test_a_cut_line_of_the_navigation_stops_in_both_modes(scenario, tmp_path, mo
     lines = _lines(paths["navigation"])
     lines[-1] = _cut(lines[-1], 6)
     _put_lines(paths["navigation"], lines)
-    with pytest.raises(ValueError, match=rf"navigation.csv: row {len(lines) - 2}, column 'pitch_deg': line "
-                                         rf"{len(lines)} has 6 fields, the header 8"):
+    with pytest.raises(
+        ValueError,
+        match=rf"navigation.csv: row {len(lines) - 2}, column 'pitch_deg': line "
+        rf"{len(lines)} has 6 fields, the header 8",
+    ):
         read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row=mode)
 
 
@@ -313,6 +378,7 @@ def test_an_empty_plots_file_is_named(scenario, tmp_path):
 
 
 # --- navigation of platforms that carry no sensor: ignored, with a note ---
+
 
 def _with_extra_ship(scenario):
     """The scenario's navigation with a ship 'X' (a copy of A's rows) that carries no sensor."""
@@ -348,7 +414,9 @@ def test_navigation_of_a_platform_without_sensors_is_ignored_with_a_note(scenari
 def test_a_navigation_error_names_the_file_row_with_ignored_rows_before_it(scenario, tmp_path):
     s = scenario
     nav, n_extra = _with_extra_ship(s)
-    order = np.r_[np.arange(nav["time"].size - n_extra, nav["time"].size), np.arange(nav["time"].size - n_extra)]
+    order = np.r_[
+        np.arange(nav["time"].size - n_extra, nav["time"].size), np.arange(nav["time"].size - n_extra)
+    ]
     nav = {k: v[order] for k, v in nav.items()}  # X's rows first
     write_fleet_tables(tmp_path, s.plots, nav, s.sensors, s.platforms, s.references)
     paths = {n: tmp_path / f"{n}.csv" for n in NAMES}
@@ -359,14 +427,19 @@ def test_a_navigation_error_names_the_file_row_with_ignored_rows_before_it(scena
     frame.to_csv(paths["navigation"], index=False)
     with pytest.raises(ValueError, match=rf"navigation.csv: row {n_extra + 5}, column 'lat_deg': 'north'"):
         _read(paths)
-    good.loc[n_extra + 5, "time_s"] = good.loc[n_extra + 4, "time_s"]  # a check of build_problem's, in both modes
+    good.loc[n_extra + 5, "time_s"] = good.loc[
+        n_extra + 4, "time_s"
+    ]  # a check of build_problem's, in both modes
     good.to_csv(paths["navigation"], index=False)
     for mode in ("stop", "skip"):
-        with pytest.raises(ValueError, match=rf"navigation.csv: row {n_extra + 4}: time .* does not increase"):
+        with pytest.raises(
+            ValueError, match=rf"navigation.csv: row {n_extra + 4}: time .* does not increase"
+        ):
             read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row=mode).problem()
 
 
 # --- radians in the attitude columns, and angle sigmas that look like radians ---
+
 
 def _track(heading_deg, speed=8.0, course_deg=None, n=600, dt=1.0, pitch=None, roll=None):
     """File columns of one platform sailing a course (deg; default: its heading) at ``speed`` m/s."""
@@ -378,25 +451,45 @@ def _track(heading_deg, speed=8.0, course_deg=None, n=600, dt=1.0, pitch=None, r
     lat = 36.0 + np.degrees(north / 6.371e6)
     lon = 14.0 + np.degrees(east / (6.371e6 * np.cos(np.radians(36.0))))
     zero = np.zeros(n)
-    return {"time_s": t, "lat_deg": lat, "lon_deg": lon, "heading_deg": np.array(heading),
-            "pitch_deg": zero if pitch is None else pitch, "roll_deg": zero if roll is None else roll}
+    return {
+        "time_s": t,
+        "lat_deg": lat,
+        "lon_deg": lon,
+        "heading_deg": np.array(heading),
+        "pitch_deg": zero if pitch is None else pitch,
+        "roll_deg": zero if roll is None else roll,
+    }
 
 
-@pytest.mark.parametrize("columns, refused", [
-    (_track(60.0 + np.zeros(600)), False),  # degrees, a steady course
-    (_track(np.radians(60.0) + np.zeros(600), course_deg=60.0), True),  # radians of the same ship
-    (_track(np.radians(np.linspace(10, 300, 600)), course_deg=np.linspace(10, 300, 600)), True),  # radians, turning
-    (_track(2.0 + np.zeros(600)), False),  # degrees, heading north within +-2 pi: matches its track as degrees
-    (_track(np.radians(2.0) + np.zeros(600), course_deg=2.0), False),  # radians near north: undecidable, not refused
-    (_track(3.0 + np.zeros(600), course_deg=20.0), False),  # degrees with 17 deg of drift
-    (_track(np.zeros(600), speed=0.0), False),  # a site that does not move
-])
+@pytest.mark.parametrize(
+    "columns, refused",
+    [
+        (_track(60.0 + np.zeros(600)), False),  # degrees, a steady course
+        (_track(np.radians(60.0) + np.zeros(600), course_deg=60.0), True),  # radians of the same ship
+        (
+            _track(np.radians(np.linspace(10, 300, 600)), course_deg=np.linspace(10, 300, 600)),
+            True,
+        ),  # radians, turning
+        (
+            _track(2.0 + np.zeros(600)),
+            False,
+        ),  # degrees, heading north within +-2 pi: matches its track as degrees
+        (
+            _track(np.radians(2.0) + np.zeros(600), course_deg=2.0),
+            False,
+        ),  # radians near north: undecidable, not refused
+        (_track(3.0 + np.zeros(600), course_deg=20.0), False),  # degrees with 17 deg of drift
+        (_track(np.zeros(600), speed=0.0), False),  # a site that does not move
+    ],
+)
 def test_headings_in_radians_are_refused_only_when_the_track_says_so(columns, refused):
     from registration.io.fleet.checks import attitude_check
 
     platform = np.full(columns["time_s"].size, "A")
     if refused:
-        with pytest.raises(ValueError, match=r"nav.csv: row \d+, column 'heading_deg': .* platform 'A' .*radians\?"):
+        with pytest.raises(
+            ValueError, match=r"nav.csv: row \d+, column 'heading_deg': .* platform 'A' .*radians\?"
+        ):
             attitude_check("nav.csv", columns, platform)
     else:
         assert attitude_check("nav.csv", columns, platform) == []
@@ -407,8 +500,12 @@ def test_pitch_and_roll_that_look_like_radians_are_noted_not_refused():
 
     wave = np.sin(np.arange(600) / 8.0)
     platform = np.full(600, "A")
-    assert attitude_check("nav.csv", _track(60.0, pitch=1.5 * wave, roll=4.0 * wave), platform) == []  # degrees
-    notes = attitude_check("nav.csv", _track(60.0, pitch=np.radians(1.5) * wave, roll=np.radians(4.0) * wave), platform)
+    assert (
+        attitude_check("nav.csv", _track(60.0, pitch=1.5 * wave, roll=4.0 * wave), platform) == []
+    )  # degrees
+    notes = attitude_check(
+        "nav.csv", _track(60.0, pitch=np.radians(1.5) * wave, roll=np.radians(4.0) * wave), platform
+    )
     assert len(notes) == 1 and "pitch_deg and roll_deg of platform 'A'" in notes[0] and "radians?" in notes[0]
     assert attitude_check("nav.csv", _track(60.0), platform) == []  # level: zeros are not noted
 
@@ -420,8 +517,11 @@ def test_a_navigation_file_with_attitude_in_radians_is_refused_up_front(scenario
     for column in ("heading_deg", "pitch_deg", "roll_deg"):
         frame[column] = np.radians(frame[column])
     frame.to_csv(paths["navigation"], index=False)
-    with pytest.raises(ValueError, match=r"navigation.csv: row \d+, column 'heading_deg': .*radians\? heading_deg, "
-                                         r"pitch_deg and roll_deg are in degrees"):
+    with pytest.raises(
+        ValueError,
+        match=r"navigation.csv: row \d+, column 'heading_deg': .*radians\? heading_deg, "
+        r"pitch_deg and roll_deg are in degrees",
+    ):
         read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row="skip")
 
 
@@ -432,24 +532,32 @@ def test_angle_sigmas_that_look_like_radians_are_noted(scenario, tmp_path):
     sensors["sigma_bearing_deg"] = np.radians(sensors["sigma_bearing_deg"])
     sensors.to_csv(paths["sensors"], index=False)
     notes = _read(paths).notes
-    assert len(notes) == 1 and "sensors.csv: sigma_bearing_deg below 0.02 deg for sensor(s) 'A-3D'" in notes[0]
+    assert (
+        len(notes) == 1 and "sensors.csv: sigma_bearing_deg below 0.02 deg for sensor(s) 'A-3D'" in notes[0]
+    )
     assert "radians?" in notes[0]
 
 
 # --- a channel with plot values but no sigma column in the sensors file is the sensors file's problem ---
+
 
 @pytest.mark.parametrize("mode", ["stop", "skip"])
 def test_a_missing_sigma_column_is_blamed_on_the_sensors_file(scenario, tmp_path, mode):
     """Before: plots.csv: row 0 ... has a elevation value but does not measure elevation."""
     paths = _write(scenario, tmp_path)
     _frame(paths["sensors"]).drop(columns="sigma_elevation_deg").to_csv(paths["sensors"], index=False)
-    with pytest.raises(ValueError, match=r"sensors.csv: no column 'sigma_elevation_deg', but .*plots.csv has elevation "
-                                         r"values .* for sensor\(s\) \['A-3D', 'A-ESM', 'B-3D', 'C-3D'\] .*give their "
-                                         r"sigma_elevation_deg, or leave the plots' elevation_deg cells empty"):
+    with pytest.raises(
+        ValueError,
+        match=r"sensors.csv: no column 'sigma_elevation_deg', but .*plots.csv has elevation "
+        r"values .* for sensor\(s\) \['A-3D', 'A-ESM', 'B-3D', 'C-3D'\] .*give their "
+        r"sigma_elevation_deg, or leave the plots' elevation_deg cells empty",
+    ):
         read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row=mode)
     s = scenario
     sensors = {k: v for k, v in s.sensors.items() if k != "sigma_elevation"}
-    with pytest.raises(ValueError, match=r"sensors: no sigma_elevation column, but the plots have elevation values"):
+    with pytest.raises(
+        ValueError, match=r"sensors: no sigma_elevation column, but the plots have elevation values"
+    ):
         build_problem(s.plots, sensors, s.navigation, s.platforms, s.references)
 
 
@@ -459,6 +567,9 @@ def test_a_value_in_an_unmeasured_channel_reads_in_good_english(scenario, tmp_pa
     row = _first_row(plots, "C-2D")
     plots.loc[row, "elevation_deg"] = 1.0
     plots.to_csv(paths["plots"], index=False)
-    with pytest.raises(ValueError, match=rf"plots.csv: row {row}, column 'elevation_deg': sensor 'C-2D' has an "
-                                         r"elevation value but does not measure elevation \(its sigma_elevation"):
+    with pytest.raises(
+        ValueError,
+        match=rf"plots.csv: row {row}, column 'elevation_deg': sensor 'C-2D' has an "
+        r"elevation value but does not measure elevation \(its sigma_elevation",
+    ):
         _read(paths)

@@ -14,8 +14,14 @@ N = 500
 
 
 def _random_inputs(rng, n=N):
-    nav = [rng.uniform(-1.4, 1.4, n), rng.uniform(-3.1, 3.1, n), rng.uniform(0, 50, n),
-           rng.uniform(-3.1, 3.1, n), rng.uniform(-0.3, 0.3, n), rng.uniform(-0.3, 0.3, n)]
+    nav = [
+        rng.uniform(-1.4, 1.4, n),
+        rng.uniform(-3.1, 3.1, n),
+        rng.uniform(0, 50, n),
+        rng.uniform(-3.1, 3.1, n),
+        rng.uniform(-0.3, 0.3, n),
+        rng.uniform(-0.3, 0.3, n),
+    ]
     att_err = rng.uniform(-0.1, 0.1, (n, 3))
     bias = np.c_[rng.uniform(-3000, 3000, n), rng.uniform(-0.1, 0.1, (n, 2))]
     lever = rng.uniform(-50, 50, (n, 3))
@@ -31,7 +37,9 @@ def test_the_fleet_functions_are_covered_by_the_jacobian_tests():
 
     assert derive.fleet in derive.registry.MODULES
     functions = _codegen.manifest()["functions"]
-    assert {"output": "J", "of": "residual", "wrt": ["p_ecef", "att_err", "bias"]} in functions["fleet_residual"]["jacobians"]
+    assert {"output": "J", "of": "residual", "wrt": ["p_ecef", "att_err", "bias"]} in functions[
+        "fleet_residual"
+    ]["jacobians"]
     for name in ("fleet_plot2ecef", "fleet_rows_1", "fleet_rows_4"):
         assert name in functions
 
@@ -65,17 +73,21 @@ def test_lever_arm_and_error_signs():
     p = _codegen.get("geodetic2ecef")(lat, lon, 0.0)[0][0] + R_ecef_enu @ [0.0, 1000.0, 0.0]
     lever = np.array([0.0, 10.0, 0.0])
     heading_error, bearing_bias = np.radians(2.0), np.radians(-1.0)
-    true_plot = _codegen.get("fleet_residual")(p, lat, lon, 0.0, 0.0, 0.0, 0.0, np.zeros(3), np.zeros(3), lever,
-                                               0.0, 0.0, 0.0)[2][0]
+    true_plot = _codegen.get("fleet_residual")(
+        p, lat, lon, 0.0, 0.0, 0.0, 0.0, np.zeros(3), np.zeros(3), lever, 0.0, 0.0, 0.0
+    )[2][0]
     assert abs(true_plot[0] - 990.0) < 1e-6 and abs(true_plot[1]) < 1e-12
     measured = true_plot + [0.0, bearing_bias, 0.0]
     reported_heading = heading_error  # true heading 0
     args = (p, lat, lon, 0.0, reported_heading, 0.0, 0.0)
-    res = _codegen.get("fleet_residual")(*args, [heading_error, 0, 0], [0, bearing_bias, 0], lever, *measured)[0][0]
+    res = _codegen.get("fleet_residual")(
+        *args, [heading_error, 0, 0], [0, bearing_bias, 0], lever, *measured
+    )[0][0]
     assert np.abs(res).max() < 1e-9
     # without the lever arm, an uncorrected prediction is off by bias + error in bearing
-    plot0 = _codegen.get("fleet_residual")(p, lat, lon, 0.0, 0.0, 0.0, 0.0, np.zeros(3), np.zeros(3), np.zeros(3),
-                                           0.0, 0.0, 0.0)[2][0] + [0.0, bearing_bias, 0.0]
+    plot0 = _codegen.get("fleet_residual")(
+        p, lat, lon, 0.0, 0.0, 0.0, 0.0, np.zeros(3), np.zeros(3), np.zeros(3), 0.0, 0.0, 0.0
+    )[2][0] + [0.0, bearing_bias, 0.0]
     res = _codegen.get("fleet_residual")(*args, np.zeros(3), np.zeros(3), np.zeros(3), *plot0)[0][0]
     assert abs(res[1] - (bearing_bias + heading_error)) < 1e-12 and abs(res[0]) < 1e-6
 
@@ -83,8 +95,9 @@ def test_lever_arm_and_error_signs():
 def test_bearing_residual_is_wrapped():
     lat, lon = 0.3, 0.2
     p = _codegen.get("plot2ecef_standard")(lat, lon, 0.0, 0.0, 0.0, 0.0, 5e4, np.pi - 1e-3, 0.0)[0][0]
-    res = _codegen.get("fleet_residual")(p, lat, lon, 0.0, 0.0, 0.0, 0.0, np.zeros(3), np.zeros(3), np.zeros(3),
-                                         5e4, -np.pi + 1e-3, 0.0)[0][0]
+    res = _codegen.get("fleet_residual")(
+        p, lat, lon, 0.0, 0.0, 0.0, 0.0, np.zeros(3), np.zeros(3), np.zeros(3), 5e4, -np.pi + 1e-3, 0.0
+    )[0][0]
     assert abs(res[1] - 2e-3) < 1e-9
 
 
@@ -97,9 +110,19 @@ def test_rows_function_is_the_whitened_residual_times_the_basis():
     basis = rng.uniform(-1, 1, (N, 4))
     residual, J, _ = _codegen.get("fleet_residual")(p, *nav, att_err, bias, lever, *plot)
     A = J * weight[:, :, None]
-    expected = np.concatenate([np.concatenate([basis[:, k, None, None] * A[:, :, :3] for k in range(4)], axis=2),
-                               A[:, :, 3:], (weight * residual)[:, :, None]], axis=2)
+    expected = np.concatenate(
+        [
+            np.concatenate([basis[:, k, None, None] * A[:, :, :3] for k in range(4)], axis=2),
+            A[:, :, 3:],
+            (weight * residual)[:, :, None],
+        ],
+        axis=2,
+    )
     rows = _codegen.get("fleet_rows_4")(p, *nav, att_err, bias, lever, *plot, weight, basis)[0].swapaxes(1, 2)
     np.testing.assert_allclose(rows, expected, rtol=1e-12, atol=1e-12 * np.abs(expected).max())
-    rows1 = _codegen.get("fleet_rows_1")(p, *nav, att_err, bias, lever, *plot, weight, basis[:, 0])[0].swapaxes(1, 2)
-    np.testing.assert_allclose(rows1[:, :, :3], expected[:, :, :3], rtol=1e-12, atol=1e-12 * np.abs(expected).max())
+    rows1 = _codegen.get("fleet_rows_1")(p, *nav, att_err, bias, lever, *plot, weight, basis[:, 0])[
+        0
+    ].swapaxes(1, 2)
+    np.testing.assert_allclose(
+        rows1[:, :, :3], expected[:, :, :3], rtol=1e-12, atol=1e-12 * np.abs(expected).max()
+    )

@@ -36,7 +36,9 @@ def test_state_nees_in_its_interval(runs):
     n = runs[0][1].layout.free.size
     lo, hi = nees_interval(RUNS, n, level=0.99)
     assert all(r.converged for _, r in runs)
-    assert lo <= np.mean(nees) <= hi, f"mean NEES {np.mean(nees):.2f} outside [{lo:.2f}, {hi:.2f}] for {n} states"
+    assert lo <= np.mean(nees) <= hi, (
+        f"mean NEES {np.mean(nees):.2f} outside [{lo:.2f}, {hi:.2f}] for {n} states"
+    )
 
 
 def test_fused_target_nees_in_its_interval(runs):
@@ -46,7 +48,7 @@ def test_fused_target_nees_in_its_interval(runs):
         for sc, result in runs:
             t, p, cov = result.targets.of(tid)
             k = t.size // 2
-            d = p[k] - sc.target_ecef(tid, t[k:k + 1])[0]
+            d = p[k] - sc.target_ecef(tid, t[k : k + 1])[0]
             nees.append(d @ np.linalg.solve(cov[k], d))
         assert lo <= np.mean(nees) <= hi, f"{tid}: mean NEES {np.mean(nees):.2f} outside [{lo:.2f}, {hi:.2f}]"
 

@@ -18,8 +18,13 @@ AGREEMENT = 0.1
 
 
 def _tables(sc) -> dict:
-    return dict(plots=sc.plots, sensors=sc.sensors, navigation=sc.navigation, platforms=sc.platforms,
-                references=sc.references)
+    return dict(
+        plots=sc.plots,
+        sensors=sc.sensors,
+        navigation=sc.navigation,
+        platforms=sc.platforms,
+        references=sc.references,
+    )
 
 
 def _z(sc, result) -> np.ndarray:
@@ -34,8 +39,10 @@ def test_two_ships_agree_with_the_two_ship_filter(seed):
     sc = paper_scenario(seed, ship_motion=ShipMotion())
     config = RegistrationConfig()
     two_ship = register(sc.data, config)
-    fleet = register_online(**fleet_tables(sc.data, config.sigma0, config.prior_sigma),
-                            options=OnlineOptions(window_s=0.0, q_angle=config.q_sigma[0], q_range=config.q_sigma[3]))
+    fleet = register_online(
+        **fleet_tables(sc.data, config.sigma0, config.prior_sigma),
+        options=OnlineOptions(window_s=0.0, q_angle=config.q_sigma[0], q_range=config.q_sigma[3]),
+    )
     assert fleet.n_plots_used == 2 * len(sc.data["time"])
     for k, name in enumerate(STATE_MAP.values()):
         sigma = two_ship.final_sigma[k]
@@ -91,8 +98,14 @@ def test_streaming_in_chunks_is_bit_identical(fleet):
 def test_a_batch_result_is_a_prior():
     """Batch over the first 100 s, the filter over the rest: as good as the batch over everything,
     from 5 deg and 3 km errors."""
-    sc = fleet_scenario(2, angle_bias=np.radians(5.0), range_bias=3000.0, heading_error=np.radians(5.0),
-                        level_error=np.radians(5.0), duration_s=240.0)
+    sc = fleet_scenario(
+        2,
+        angle_bias=np.radians(5.0),
+        range_bias=3000.0,
+        heading_error=np.radians(5.0),
+        level_error=np.radians(5.0),
+        duration_s=240.0,
+    )
     early = sc.plots["time"] < 100.0
     first = {k: v[early] for k, v in sc.plots.items()}
     rest = {k: v[~early] for k, v in sc.plots.items()}
@@ -106,8 +119,14 @@ def test_a_batch_result_is_a_prior():
 
 
 def test_large_errors_without_prior_are_found_by_iterating_the_first_epochs():
-    sc = fleet_scenario(2, angle_bias=np.radians(5.0), range_bias=3000.0, heading_error=np.radians(5.0),
-                        level_error=np.radians(5.0), duration_s=150.0)
+    sc = fleet_scenario(
+        2,
+        angle_bias=np.radians(5.0),
+        range_bias=3000.0,
+        heading_error=np.radians(5.0),
+        level_error=np.radians(5.0),
+        duration_s=150.0,
+    )
     filt = FleetFilter(sc.sensors, sc.navigation, sc.platforms, sc.references)
     order = np.argsort(sc.plots["time"])
     filt.update({k: v[order] for k, v in sc.plots.items()})

@@ -76,8 +76,11 @@ def test_history_title_clear_of_the_panels_and_x_labels_under_every_column(onlin
     title = next(t for t in fig.findobj(Text) if t.get_text().startswith("Online estimates"))
     assert _inside(fig, title)
     box = title.get_window_extent(renderer)
-    tops = [max(ax.title.get_window_extent(renderer).y1, ax.get_window_extent(renderer).y1)
-            for ax in fig.axes if ax.get_visible()]
+    tops = [
+        max(ax.title.get_window_extent(renderer).y1, ax.get_window_extent(renderer).y1)
+        for ax in fig.axes
+        if ax.get_visible()
+    ]
     assert box.y0 - max(tops) >= 5  # pixels of white between the title and the panels' titles
     visible = [ax for ax in fig.axes if ax.get_visible()]
     columns = {}
@@ -88,7 +91,9 @@ def test_history_title_clear_of_the_panels_and_x_labels_under_every_column(onlin
             columns[col] = (row, ax)
     assert len(columns) == 4
     for _, ax in columns.values():
-        labels = [t.label1 for t in ax.xaxis.get_major_ticks() if t.label1.get_visible() and t.label1.get_text()]
+        labels = [
+            t.label1 for t in ax.xaxis.get_major_ticks() if t.label1.get_visible() and t.label1.get_text()
+        ]
         assert labels, ax.get_title()
         assert ax.get_xlabel() == "time (s)"
 
@@ -99,5 +104,9 @@ def test_every_target_on_the_map_has_its_own_colour_and_marker():
     assert len(problem.target_ids) == 12
     fig = map_figure(problem, SimpleNamespace(estimate=np.zeros(problem.layout.n)))
     for ax in fig.axes:
-        styles = [(line.get_color(), line.get_marker()) for line in ax.get_lines() if not line.get_label().startswith("_")]
+        styles = [
+            (line.get_color(), line.get_marker())
+            for line in ax.get_lines()
+            if not line.get_label().startswith("_")
+        ]
         assert len(styles) == 12 and len(set(styles)) == 12, styles

@@ -17,8 +17,15 @@ def scenario():
 
 
 def _tables(sc) -> dict:
-    return copy.deepcopy({"plots": sc.plots, "sensors": sc.sensors, "navigation": sc.navigation,
-                          "platforms": sc.platforms, "references": sc.references})
+    return copy.deepcopy(
+        {
+            "plots": sc.plots,
+            "sensors": sc.sensors,
+            "navigation": sc.navigation,
+            "platforms": sc.platforms,
+            "references": sc.references,
+        }
+    )
 
 
 def _row_of(plots: dict, sensor: str) -> int:
@@ -34,8 +41,9 @@ def test_the_scenario_tables_build(scenario):
 
 def test_pandas_frames_are_accepted(scenario):
     frames = scenario.frames()
-    problem = build_problem(frames["plots"], frames["sensors"], frames["navigation"], frames["platforms"],
-                            frames["references"])
+    problem = build_problem(
+        frames["plots"], frames["sensors"], frames["navigation"], frames["platforms"], frames["references"]
+    )
     np.testing.assert_array_equal(problem.meas, build_problem(**_tables(scenario)).meas)
 
 
@@ -59,8 +67,11 @@ def test_plot_outside_the_navigation_span(scenario):
     t = _tables(scenario)
     row = _row_of(t["plots"], "B-3D")
     t["plots"]["time"][row] = 1e4
-    with pytest.raises(ValueError, match=rf"plots row {row} \(sensor 'B-3D', time 10000 s\) lies outside the "
-                                         r"navigation of platform 'B' \(0 s to 60 s\)"):
+    with pytest.raises(
+        ValueError,
+        match=rf"plots row {row} \(sensor 'B-3D', time 10000 s\) lies outside the "
+        r"navigation of platform 'B' \(0 s to 60 s\)",
+    ):
         build_problem(**t)
 
 
@@ -72,8 +83,10 @@ def test_sensor_with_no_channel(scenario):
         build_problem(**t)
 
 
-@pytest.mark.parametrize("value, message", [(-1.0, "expected a standard deviation >= 0"),
-                                            (0.0, "needs a noise standard deviation > 0")])
+@pytest.mark.parametrize(
+    "value, message",
+    [(-1.0, "expected a standard deviation >= 0"), (0.0, "needs a noise standard deviation > 0")],
+)
 def test_bad_noise_sigma(scenario, value, message):
     t = _tables(scenario)
     t["sensors"]["sigma_range"][0] = value
@@ -91,7 +104,9 @@ def test_negative_prior(scenario):
 def test_degrees_for_radians(scenario):
     t = _tables(scenario)
     t["plots"]["bearing"] = np.degrees(t["plots"]["bearing"])
-    with pytest.raises(ValueError, match=r"bearing .* is outside \[-6.28319, 6.28319\] rad \(these look like degrees"):
+    with pytest.raises(
+        ValueError, match=r"bearing .* is outside \[-6.28319, 6.28319\] rad \(these look like degrees"
+    ):
         build_problem(**t)
 
 
@@ -99,7 +114,9 @@ def test_value_in_a_channel_the_sensor_does_not_measure(scenario):
     t = _tables(scenario)
     row = _row_of(t["plots"], "A-ESM")
     t["plots"]["range"][row] = 1000.0
-    with pytest.raises(ValueError, match=rf"plots row {row}: sensor 'A-ESM' has a range value but does not measure range"):
+    with pytest.raises(
+        ValueError, match=rf"plots row {row}: sensor 'A-ESM' has a range value but does not measure range"
+    ):
         build_problem(**t)
 
 
@@ -136,7 +153,9 @@ def test_a_target_seen_by_one_sensor_only_is_reported_and_excluded(scenario):
     _with_extra_target(t, "LONE", "C-3D", rows)
     problem = build_problem(**t)
     assert [e.target for e in problem.excluded] == ["LONE"]
-    assert "seen by one sensor only" in problem.excluded[0].text() and problem.excluded[0].n_plots == rows.size
+    assert (
+        "seen by one sensor only" in problem.excluded[0].text() and problem.excluded[0].n_plots == rows.size
+    )
     assert "LONE" not in problem.target_ids and problem.n_plots == problem.n_input_plots - rows.size
     # a reference target is kept even when one sensor sees it
     ref = {"target": np.array(["LONE"]), "time": np.array([10.0]), "x": [1.0], "y": [2.0], "z": [3.0]}
@@ -173,12 +192,27 @@ def test_nothing_left_to_register(scenario):
 
 def test_navigation_is_interpolated_across_north_and_a_site_is_constant():
     """Heading 179 deg then -179 deg: half way it is 180 deg, not 0; a one-row site holds always."""
-    nav = {"platform": np.array(["A", "A", "S"]), "time": np.array([0.0, 10.0, 0.0]),
-           "lat": np.array([0.6, 0.6002, 0.61]), "lon": np.array([3.1415, -3.1415, 0.2]), "alt": np.array([10.0, 10.0, 50.0]),
-           "heading": np.radians([179.0, -179.0, 0.0]), "pitch": np.array([0.0, 0.02, 0.0]), "roll": np.zeros(3)}
-    sensors = {"sensor": np.array(["a", "s"]), "platform": np.array(["A", "S"]), "sigma_bearing": np.array([0.01, 0.01])}
-    plots = {"time": np.array([5.0, 5.0, 123.0]), "sensor": np.array(["a", "s", "s"]), "target": np.array(["T", "T", "T"]),
-             "bearing": np.array([0.1, 0.2, 0.3])}
+    nav = {
+        "platform": np.array(["A", "A", "S"]),
+        "time": np.array([0.0, 10.0, 0.0]),
+        "lat": np.array([0.6, 0.6002, 0.61]),
+        "lon": np.array([3.1415, -3.1415, 0.2]),
+        "alt": np.array([10.0, 10.0, 50.0]),
+        "heading": np.radians([179.0, -179.0, 0.0]),
+        "pitch": np.array([0.0, 0.02, 0.0]),
+        "roll": np.zeros(3),
+    }
+    sensors = {
+        "sensor": np.array(["a", "s"]),
+        "platform": np.array(["A", "S"]),
+        "sigma_bearing": np.array([0.01, 0.01]),
+    }
+    plots = {
+        "time": np.array([5.0, 5.0, 123.0]),
+        "sensor": np.array(["a", "s", "s"]),
+        "target": np.array(["T", "T", "T"]),
+        "bearing": np.array([0.1, 0.2, 0.3]),
+    }
     problem = build_problem(plots, sensors, nav)
     a, s = problem.nav[0], problem.nav[1]
     np.testing.assert_allclose([a[0], abs(a[1]), abs(a[3]), a[4]], [0.6001, np.pi, np.pi, 0.01], atol=1e-12)

@@ -32,7 +32,6 @@ from registration.fleet.data.inputs import read_references
 from registration.fleet.online.filter import OnlineOptions, register_online
 from registration.io.fleet.read import read_fleet_tables
 from registration.io.fleet.write import write_fleet_tables
-
 from tests.fleet.test_archive import assert_same
 
 SIGMA_H, SIGMA_UP = 3.0, 30.0
@@ -57,8 +56,15 @@ def _anisotropic_references(sc, seed: int = 11) -> dict:
     lat, lon, _ = ecef2geodetic(truth)
     noise_enu = np.random.default_rng(seed).normal(size=(t.size, 3)) * [SIGMA_H, SIGMA_H, SIGMA_UP]
     p = truth + np.einsum("nji,nj->ni", _enu_rows(lat, lon), noise_enu)  # R_ecef_enu = R_enu_ecef^T
-    return {"target": np.full(t.size, tid), "time": t, "x": p[:, 0], "y": p[:, 1], "z": p[:, 2],
-            "sigma": np.full(t.size, SIGMA_H), "sigma_up": np.full(t.size, SIGMA_UP)}
+    return {
+        "target": np.full(t.size, tid),
+        "time": t,
+        "x": p[:, 0],
+        "y": p[:, 1],
+        "z": p[:, 2],
+        "sigma": np.full(t.size, SIGMA_H),
+        "sigma_up": np.full(t.size, SIGMA_UP),
+    }
 
 
 @pytest.fixture(scope="module")
@@ -75,7 +81,10 @@ def _problem(sc, refs):
 def test_sigma_up_equal_to_sigma_changes_nothing_bit_for_bit():
     sc = fleet_scenario(0, duration_s=120.0)
     base = solve_batch(sc.problem())
-    for sigma_up in (np.array(sc.references["sigma"], dtype=float), np.full(sc.references["time"].size, np.nan)):
+    for sigma_up in (
+        np.array(sc.references["sigma"], dtype=float),
+        np.full(sc.references["time"].size, np.nan),
+    ):
         same = solve_batch(_problem(sc, {**sc.references, "sigma_up": sigma_up}))
         assert np.array_equal(same.estimate, base.estimate)
         assert np.array_equal(same.sigma, base.sigma)
@@ -93,7 +102,9 @@ def _tiny(fleet):
     keep = sc.plots["time"] < 30.0
     plots = {k: np.asarray(v)[keep] for k, v in sc.plots.items()}
     rkeep = refs["time"] < 30.0
-    problem = build_problem(plots, sc.sensors, sc.navigation, sc.platforms, {k: v[rkeep] for k, v in refs.items()})
+    problem = build_problem(
+        plots, sc.sensors, sc.navigation, sc.platforms, {k: v[rkeep] for k, v in refs.items()}
+    )
     design = make_design(problem, make_blocks(problem, 20.0, 3))
     assert design.ref_whiten is not None and design.ref_p.shape[0] > 20
     x = solve_batch(problem).estimate
@@ -104,7 +115,10 @@ def _tiny(fleet):
 def test_whitened_residual_is_east_north_up_over_their_sigmas(fleet):
     design, x = _tiny(fleet)
     blk = design.blocks
-    coef = initial_coefficients(design, x) + np.random.default_rng(2).normal(size=(blk.n_blocks, blk.n_coef, 3)) * 50.0
+    coef = (
+        initial_coefficients(design, x)
+        + np.random.default_rng(2).normal(size=(blk.n_blocks, blk.n_coef, 3)) * 50.0
+    )
     ev = evaluate(design, x, coef)
     p = np.einsum("mk,mkj->mj", blk.ref_basis, coef[blk.ref_block])
     lat, lon, _ = ecef2geodetic(design.ref_p)
@@ -117,7 +131,12 @@ def test_whitened_normal_equations_against_finite_differences_of_the_cost(fleet)
     design, x = _tiny(fleet)
     blk = design.blocks
     rng = np.random.default_rng(3)
-    coef = initial_coefficients(design, x) + rng.normal(size=(blk.n_blocks, blk.n_coef, 3)) * [[30.0], [5.0], [1.0], [0.2]]
+    coef = initial_coefficients(design, x) + rng.normal(size=(blk.n_blocks, blk.n_coef, 3)) * [
+        [30.0],
+        [5.0],
+        [1.0],
+        [0.2],
+    ]
     normal = normal_equations(design, evaluate(design, x, coef))
     assert not normal.U.any() and not normal.W.any()  # references do not touch the states
 
@@ -162,7 +181,7 @@ def test_whitened_step_equals_a_dense_least_squares_fit_of_the_references(fleet)
         A = np.zeros((3 * sel.size, 3 * blk.n_coef))
         for r, i in enumerate(sel):
             for k in range(blk.n_coef):
-                A[3 * r:3 * r + 3, 3 * k:3 * k + 3] = blk.ref_basis[i, k] * L[i]
+                A[3 * r : 3 * r + 3, 3 * k : 3 * k + 3] = blk.ref_basis[i, k] * L[i]
         y = np.einsum("nij,nj->ni", L[sel], design.ref_p[sel]).reshape(-1)
         c_dense = np.linalg.lstsq(A, y, rcond=None)[0]
         c_step = start[b].reshape(-1) + np.linalg.solve(normal.V[b], normal.b_c[b])
@@ -175,8 +194,15 @@ def test_whitened_step_equals_a_dense_least_squares_fit_of_the_references(fleet)
 def test_a_reference_with_3_m_horizontal_and_30_m_vertical_noise(fleet):
     sc, refs = fleet
     both = solve_batch(_problem(sc, refs))
-    flat = solve_batch(_problem(sc, {**{k: v for k, v in refs.items() if k != "sigma_up"},
-                                     "sigma": np.full(refs["time"].size, SIGMA_UP)}))
+    flat = solve_batch(
+        _problem(
+            sc,
+            {
+                **{k: v for k, v in refs.items() if k != "sigma_up"},
+                "sigma": np.full(refs["time"].size, SIGMA_UP),
+            },
+        )
+    )
     truth = sc.truth_vector(both.layout)
     free = both.layout.free
     z = (both.estimate - truth)[free] / both.sigma[free]
@@ -199,8 +225,14 @@ def _files(sc, refs, folder, fmt="csv"):
 
 
 def _read(paths, **kwargs):
-    return read_fleet_tables(paths["plots"], paths["navigation"], paths["sensors"], paths["platforms"],
-                             paths["reference"], **kwargs)
+    return read_fleet_tables(
+        paths["plots"],
+        paths["navigation"],
+        paths["sensors"],
+        paths["platforms"],
+        paths["reference"],
+        **kwargs,
+    )
 
 
 @pytest.mark.parametrize("fmt", ["csv", "parquet"])
@@ -214,16 +246,21 @@ def test_the_file_column_round_trips(fleet, tmp_path, fmt):
     tables = _read(paths)
     np.testing.assert_array_equal(tables.references["sigma_up"], refs["sigma_up"])
     got = tables.problem().references
-    np.testing.assert_array_equal(got.sigma_up, np.where(np.isnan(refs["sigma_up"]), refs["sigma"], refs["sigma_up"]))
+    np.testing.assert_array_equal(
+        got.sigma_up, np.where(np.isnan(refs["sigma_up"]), refs["sigma"], refs["sigma_up"])
+    )
     assert np.array_equal(got.sigma_up[got.sigma_up != SIGMA_UP], got.sigma[got.sigma_up != SIGMA_UP])
 
 
-@pytest.mark.parametrize("value, code, words", [
-    ("0", "out_of_range", ["0 m is outside (0, inf] m"]),
-    ("-2", "out_of_range", ["-2 m is outside (0, inf] m"]),
-    ("-inf", "non_finite", ["-inf m is outside"]),
-    ("high", "non_numeric", ["'high' is not a number (m)"]),
-])
+@pytest.mark.parametrize(
+    "value, code, words",
+    [
+        ("0", "out_of_range", ["0 m is outside (0, inf] m"]),
+        ("-2", "out_of_range", ["-2 m is outside (0, inf] m"]),
+        ("-inf", "non_finite", ["-inf m is outside"]),
+        ("high", "non_numeric", ["'high' is not a number (m)"]),
+    ],
+)
 def test_bad_sigma_up_cells_name_file_row_column_and_unit(fleet, tmp_path, value, code, words):
     sc, refs = fleet
     paths = _files(sc, refs, tmp_path)
@@ -242,9 +279,18 @@ def test_bad_sigma_up_cells_name_file_row_column_and_unit(fleet, tmp_path, value
 
 
 def test_the_table_refuses_a_bad_sigma_up_naming_the_row():
-    refs = {"target": ["T1", "T1"], "time": [0.0, 1.0], "x": [6.4e6, 6.4e6], "y": [0.0, 0.0], "z": [0.0, 0.0],
-            "sigma": [3.0, 3.0], "sigma_up": [30.0, -1.0]}
-    with pytest.raises(ValueError, match=r"references row 1: reference of target 'T1': sigma_up -1.0 m must be > 0"):
+    refs = {
+        "target": ["T1", "T1"],
+        "time": [0.0, 1.0],
+        "x": [6.4e6, 6.4e6],
+        "y": [0.0, 0.0],
+        "z": [0.0, 0.0],
+        "sigma": [3.0, 3.0],
+        "sigma_up": [30.0, -1.0],
+    }
+    with pytest.raises(
+        ValueError, match=r"references row 1: reference of target 'T1': sigma_up -1.0 m must be > 0"
+    ):
         read_references(refs, ["T1"])
     ok = read_references({**refs, "sigma_up": [np.nan, 7.0]}, ["T1"])
     np.testing.assert_array_equal(ok.sigma_up, [3.0, 7.0])
@@ -263,19 +309,31 @@ def test_partitioned_solver_equals_solve_batch_with_sigma_up(fleet):
 
 def test_the_online_filter_takes_sigma_up(fleet):
     sc, refs = fleet
-    flat = {**{k: v for k, v in refs.items() if k != "sigma_up"}, "sigma": np.full(refs["time"].size, SIGMA_UP)}
+    flat = {
+        **{k: v for k, v in refs.items() if k != "sigma_up"},
+        "sigma": np.full(refs["time"].size, SIGMA_UP),
+    }
     options = OnlineOptions()
-    both = register_online(sc.plots, sc.sensors, sc.navigation, sc.platforms, refs, options=options, residuals=False)
-    wide = register_online(sc.plots, sc.sensors, sc.navigation, sc.platforms, flat, options=options, residuals=False)
+    both = register_online(
+        sc.plots, sc.sensors, sc.navigation, sc.platforms, refs, options=options, residuals=False
+    )
+    wide = register_online(
+        sc.plots, sc.sensors, sc.navigation, sc.platforms, flat, options=options, residuals=False
+    )
     free = both.layout.free
     truth = sc.truth_vector(both.layout)
     assert np.abs((both.estimate - truth)[free] / both.sigma[free]).max() < 3.5
-    assert np.all(both.sigma[free] <= wide.sigma[free] * (1 + 1e-6)) and (both.sigma[free] < 0.8 * wide.sigma[free]).any()
+    assert (
+        np.all(both.sigma[free] <= wide.sigma[free] * (1 + 1e-6))
+        and (both.sigma[free] < 0.8 * wide.sigma[free]).any()
+    )
 
 
 def test_the_association_gate_takes_the_larger_sigma(fleet):
     sc, refs = fleet
-    r = read_references({**refs, "sigma_up": np.where(np.arange(refs["time"].size) % 2, 1.0, SIGMA_UP)},
-                        [str(refs["target"][0])])
+    r = read_references(
+        {**refs, "sigma_up": np.where(np.arange(refs["time"].size) % 2, 1.0, SIGMA_UP)},
+        [str(refs["target"][0])],
+    )
     curves = anchor_curves(None, np.zeros(0), r, BatchOptions(), gap_s=10.0, accel_sigma=1.0)
     np.testing.assert_array_equal(np.sort(curves.ref_sigma), np.sort(np.maximum(r.sigma, r.sigma_up)))

@@ -28,8 +28,13 @@ def test_a_target_overhead_falls_silent_inside_the_cone():
     site = {"S": (0.0, 0.0, 10.0)}
     sensors = {"S-3D": ("S", (20.0, np.radians(0.1), np.radians(0.1)), 1.0, 0.0, (0.0, 0.0, 0.0))}
     over = Line(-20e3, 0.0, np.radians(90.0), 200.0, 5000.0)  # straight over the site at t = 100 s, 5 km up
-    sc = fleet_scenario(duration_s=200.0, config=FleetConfig({}, site, sensors, {"T": over}, None),
-                        angle_bias=0.0, range_bias=0.0, noise_scale=1e-6)
+    sc = fleet_scenario(
+        duration_s=200.0,
+        config=FleetConfig({}, site, sensors, {"T": over}, None),
+        angle_bias=0.0,
+        range_bias=0.0,
+        noise_scale=1e-6,
+    )
     t = sc.plots["time"]
     elevation = sc.plots["elevation"]
     assert np.nanmax(elevation) <= DEFAULT_COVERAGE["3d"].max_elevation + 1e-6
@@ -42,12 +47,19 @@ def test_a_target_overhead_falls_silent_inside_the_cone():
 def test_the_radio_horizon_and_the_coverage_mask():
     # the textbook 4/3-earth radar horizon: 4.12 (sqrt(h1) + sqrt(h2)) km, heights in m
     for h1, h2 in ((10.0, 300.0), (25.0, 10000.0), (1.0, 1.0)):
-        assert float(horizon_range(np.array(h1), np.array(h2))) == pytest.approx(4.12e3 * (h1**0.5 + h2**0.5), rel=3e-3)
+        assert float(horizon_range(np.array(h1), np.array(h2))) == pytest.approx(
+            4.12e3 * (h1**0.5 + h2**0.5), rel=3e-3
+        )
     cov = DEFAULT_COVERAGE["2d"]
     r = np.array([50e3, 90e3, 50e3, 500e3])
     el = np.radians([1.0, 1.0, 75.0, 1.0])
     mask = visible(cov, r, el, np.full(4, 10.0), np.array([300.0, 300.0, 300.0, 50e3]))
-    assert mask.tolist() == [True, False, False, False]  # in view; below the horizon; in the cone; beyond range
+    assert mask.tolist() == [
+        True,
+        False,
+        False,
+        False,
+    ]  # in view; below the horizon; in the cone; beyond range
 
 
 def test_random_targets_stay_in_the_area():
@@ -64,8 +76,24 @@ def test_random_targets_stay_in_the_area():
 
 def test_fleet_simulate_duration_and_targets(tmp_path):
     out = tmp_path / "sim"
-    assert main(["fleet", "simulate", "--duration-s", "120", "--targets", "3", "--out", str(out), "--no-plots",
-                 "--format", "parquet"]) == 0
+    assert (
+        main(
+            [
+                "fleet",
+                "simulate",
+                "--duration-s",
+                "120",
+                "--targets",
+                "3",
+                "--out",
+                str(out),
+                "--no-plots",
+                "--format",
+                "parquet",
+            ]
+        )
+        == 0
+    )
     plots = pd.read_parquet(out / "plots.parquet")
     assert set(plots["target"]) == {"T1", "T2", "T3"} and plots["time_s"].max() < 120.0
     assert set(pd.read_parquet(out / "reference.parquet")["target"]) == {"T1"}

@@ -8,8 +8,11 @@ import pytest
 from registration.fleet import fleet_scenario, register_online, solve_batch
 from registration.fleet.combinations import UNDETERMINED, named_sums
 
-SUMS = {"A+A-3D": ("A:heading_error", "A-3D:bearing_bias"), "A+A-ESM": ("A:heading_error", "A-ESM:bearing_bias"),
-        "B+B-3D": ("B:heading_error", "B-3D:bearing_bias")}
+SUMS = {
+    "A+A-3D": ("A:heading_error", "A-3D:bearing_bias"),
+    "A+A-ESM": ("A:heading_error", "A-ESM:bearing_bias"),
+    "B+B-3D": ("B:heading_error", "B-3D:bearing_bias"),
+}
 
 
 @pytest.fixture(scope="module")
@@ -60,7 +63,9 @@ def test_online_result_has_the_same_combination_and_rows(level, level_online):
         value, sigma = online.combination(coeffs)
         i, j = online.layout.index(a), online.layout.index(b)
         assert value == online.estimate[i] + online.estimate[j]
-        assert np.isclose(sigma, np.sqrt(online.covariance[i, i] + online.covariance[j, j] + 2 * online.covariance[i, j]))
+        assert np.isclose(
+            sigma, np.sqrt(online.covariance[i, i] + online.covariance[j, j] + 2 * online.covariance[i, j])
+        )
         # the parts keep the diffuse prior, the sum is known to the batch's precision
         assert online.sigma_of(a) > np.radians(1) and sigma < np.radians(0.05)
         b_value, b_sigma = batch.combination(coeffs)

@@ -36,16 +36,26 @@ def bridge(tmp_path_factory):
     """A bridge log imported (heading held) and read back as fleet tables, with its targets file."""
     folder = tmp_path_factory.mktemp("surface")
     log = simulate_bridge_log()
-    result = import_nmea(log.write(folder / "bridge.log"), PLATFORM, log.sensors,
-                         platform_priors={"prior_heading_deg": 0.0, "prior_pitch_deg": 0.0, "prior_roll_deg": 0.0})
+    result = import_nmea(
+        log.write(folder / "bridge.log"),
+        PLATFORM,
+        log.sensors,
+        platform_priors={"prior_heading_deg": 0.0, "prior_pitch_deg": 0.0, "prior_roll_deg": 0.0},
+    )
     written = result.write(folder)
     return log, written
 
 
 def _labelled(log, written, targets=True):
     """The tables with the simulation's track -> MMSI labels as target ids (the association's answer)."""
-    tables = read_fleet_tables(written["plots"], written["navigation"], written["sensors"], written["platforms"],
-                               written["reference"], targets=written["targets"] if targets else None)
+    tables = read_fleet_tables(
+        written["plots"],
+        written["navigation"],
+        written["sensors"],
+        written["platforms"],
+        written["reference"],
+        targets=written["targets"] if targets else None,
+    )
     plots = dict(tables.plots)
     plots["target"] = np.array([log.track_mmsi.get(str(t), f"T{t}") for t in plots.pop("track")])
     return replace(tables, plots=plots)
@@ -53,16 +63,22 @@ def _labelled(log, written, targets=True):
 
 # the table -----------------------------------------------------------------------------------------
 def test_the_targets_table_is_read_and_refused_row_by_row():
-    table = {"target": ["A", "B", "C"], "surface_alt": [42.0, np.nan, 40.0], "sigma_surface": [5.0, np.nan, 2.0]}
+    table = {
+        "target": ["A", "B", "C"],
+        "surface_alt": [42.0, np.nan, 40.0],
+        "sigma_surface": [5.0, np.nan, 2.0],
+    }
     surface = read_surface(table)
     alt, sigma = surface.of(["C", "X", "A", "B"])
     np.testing.assert_array_equal(alt, [40.0, np.nan, 42.0, np.nan])
     np.testing.assert_array_equal(sigma, [2.0, np.nan, 5.0, np.nan])
     assert read_surface(None) is None and read_surface({"target": ["A"], "name": ["x"]}) is None
-    for bad, words in ((dict(table, target=["A", "B", "A"]), "targets row 2: target 'A' is listed again (first in row 0)"),
-                       (dict(table, sigma_surface=[5.0, np.nan, 0.0]), "targets row 2: target 'C': sigma_surface 0.0 m"),
-                       (dict(table, sigma_surface=[np.nan, np.nan, 2.0]), "targets row 0: target 'A': sigma_surface nan m"),
-                       (dict(table, surface_alt=[42.0, np.nan, 2e4]), "targets row 2: target 'C': surface_alt 20000.0 m")):
+    for bad, words in (
+        (dict(table, target=["A", "B", "A"]), "targets row 2: target 'A' is listed again (first in row 0)"),
+        (dict(table, sigma_surface=[5.0, np.nan, 0.0]), "targets row 2: target 'C': sigma_surface 0.0 m"),
+        (dict(table, sigma_surface=[np.nan, np.nan, 2.0]), "targets row 0: target 'A': sigma_surface nan m"),
+        (dict(table, surface_alt=[42.0, np.nan, 2e4]), "targets row 2: target 'C': surface_alt 20000.0 m"),
+    ):
         with pytest.raises(ValueError) as err:
             read_surface(bad)
         assert words in str(err.value)
@@ -77,8 +93,14 @@ def test_the_targets_file_is_refused_naming_file_row_and_unit(bridge, tmp_path):
     bad = tmp_path / "targets.csv"
     frame.to_csv(bad, index=False)
     with pytest.raises(ValueError) as err:
-        read_fleet_tables(written["plots"], written["navigation"], written["sensors"], written["platforms"],
-                          written["reference"], targets=bad)
+        read_fleet_tables(
+            written["plots"],
+            written["navigation"],
+            written["sensors"],
+            written["platforms"],
+            written["reference"],
+            targets=bad,
+        )
     assert all(w in str(err.value) for w in ("targets.csv", "row 3", "sigma_surface_m", "m"))
 
 
@@ -128,11 +150,18 @@ def test_the_height_residual_against_pymap3d(small):
 
 def test_surface_normal_equations_against_central_differences_of_the_cost(small):
     problem, design = small
-    alone = replace(design, weight=np.zeros_like(design.weight), ref_weight=np.zeros_like(design.ref_weight),
-                    ref_whiten=None if design.ref_whiten is None else np.zeros_like(design.ref_whiten))
+    alone = replace(
+        design,
+        weight=np.zeros_like(design.weight),
+        ref_weight=np.zeros_like(design.ref_weight),
+        ref_whiten=None if design.ref_whiten is None else np.zeros_like(design.ref_whiten),
+    )
     x = np.zeros(problem.layout.n)
     rng = np.random.default_rng(3)
-    coef = initial_coefficients(design, x) + rng.normal(size=(design.blocks.n_blocks, design.blocks.n_coef, 3)) * 30.0
+    coef = (
+        initial_coefficients(design, x)
+        + rng.normal(size=(design.blocks.n_blocks, design.blocks.n_coef, 3)) * 30.0
+    )
     normal = normal_equations(alone, evaluate(alone, x, coef))
     blk = design.blocks
     q = 3 * blk.n_coef
@@ -170,8 +199,11 @@ def test_with_the_surface_the_radar_errors_come_back_and_without_it_a_warning(br
     c = log.config
     with_surface = solve_batch(_labelled(log, written).problem())
     assert with_surface.converged and with_surface.iterations < 30
-    for state, truth in (("RADAR:range_bias", c.range_bias_m), ("RADAR:bearing_bias", c.bearing_bias_rad),
-                         ("RADAR:time_bias", c.clock_offset_s)):
+    for state, truth in (
+        ("RADAR:range_bias", c.range_bias_m),
+        ("RADAR:bearing_bias", c.bearing_bias_rad),
+        ("RADAR:time_bias", c.clock_offset_s),
+    ):
         assert abs(with_surface.value(state) - truth) < 3.5 * with_surface.sigma_of(state), state
     parts = with_surface.chi_square.parts
     assert parts["surface"][0] < 0.01 * parts["surface"][1]  # the heights follow the sea; no measured value
@@ -191,13 +223,21 @@ def test_the_partitioned_solver_takes_the_surface(bridge):
     log, written = bridge
     tables = _labelled(log, written)
     batch = solve_batch(tables.problem())
-    source = TablesSource(tables.plots, tables.sensors, tables.navigation, tables.platforms, tables.references,
-                          targets=tables.targets)
+    source = TablesSource(
+        tables.plots,
+        tables.sensors,
+        tables.navigation,
+        tables.platforms,
+        tables.references,
+        targets=tables.targets,
+    )
     for partitions in (1, 3):
         part = solve_batch_partitioned(source, partitions=partitions)
         assert_same(part, batch)
         assert part.chi_square.parts["surface"][1] == batch.chi_square.parts["surface"][1]
-        assert [(r["name"], r["status"]) for r in part.rows()] == [(r["name"], r["status"]) for r in batch.rows()]
+        assert [(r["name"], r["status"]) for r in part.rows()] == [
+            (r["name"], r["status"]) for r in batch.rows()
+        ]
 
 
 def test_an_archive_folder_with_a_targets_file_registers_with_the_surface(bridge, tmp_path):
@@ -216,8 +256,22 @@ def test_an_archive_folder_with_a_targets_file_registers_with_the_surface(bridge
     plots["target"] = [log.track_mmsi.get(t, f"T{t}") for t in plots.pop("track")]
     plots.to_parquet(folder / "plots.parquet", index=False)
     out = tmp_path / "out"
-    assert main(["fleet", "register", "--tables", str(folder), "--partition-s", "200", "--out", str(out),
-                 "--no-plots"]) == 0
+    assert (
+        main(
+            [
+                "fleet",
+                "register",
+                "--tables",
+                str(folder),
+                "--partition-s",
+                "200",
+                "--out",
+                str(out),
+                "--no-plots",
+            ]
+        )
+        == 0
+    )
     est = pd.read_csv(out / "estimates.csv").set_index(["object", "state"])
     batch = solve_batch(tables.problem())
     for name in ("range_bias", "time_bias"):  # m, s: file units are SI here

@@ -27,8 +27,9 @@ def _both(seed: int, motion):
     sc = paper_scenario(seed, ship_motion=motion)
     config = RegistrationConfig()
     filtered = register(sc.data, config)
-    batch = solve_batch(build_problem(**fleet_tables(sc.data, config.sigma0, config.prior_sigma)),
-                        BatchOptions(window_s=0))
+    batch = solve_batch(
+        build_problem(**fleet_tables(sc.data, config.sigma0, config.prior_sigma)), BatchOptions(window_s=0)
+    )
     return sc, filtered, batch
 
 
@@ -40,8 +41,12 @@ def test_moving_ships_filter_ends_at_the_batch_solution(seed):
     for k, (online_name, name) in enumerate(STATE_MAP.items()):
         if batch.status[name] in ("identifiable", "weak"):
             sigma = batch.sigma_of(name)
-            assert abs(filtered.final[k] - batch.value(name)) < TOLERANCE * sigma, (online_name, filtered.final[k],
-                                                                                   batch.value(name), sigma)
+            assert abs(filtered.final[k] - batch.value(name)) < TOLERANCE * sigma, (
+                online_name,
+                filtered.final[k],
+                batch.value(name),
+                sigma,
+            )
             assert abs(filtered.final_sigma[k] - sigma) < 0.1 * sigma  # the same posterior spread
             compared += 1
     assert compared >= 6

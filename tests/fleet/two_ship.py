@@ -9,10 +9,18 @@ NAV = ("lat", "lon", "alt", "heading", "pitch", "roll")
 PLOT = ("range", "bearing", "elevation")
 #: The online filter's state names -> the fleet's, in the filter's order.
 STATE_MAP = {
-    "dC_a": "a:heading_error", "dphi_a": "a:pitch_error", "dtheta_a": "a:roll_error",
-    "dr_a": "a-radar:range_bias", "dq_a": "a-radar:bearing_bias", "de_a": "a-radar:elevation_bias",
-    "dC_b": "b:heading_error", "dphi_b": "b:pitch_error", "dtheta_b": "b:roll_error",
-    "dr_b": "b-radar:range_bias", "dq_b": "b-radar:bearing_bias", "de_b": "b-radar:elevation_bias",
+    "dC_a": "a:heading_error",
+    "dphi_a": "a:pitch_error",
+    "dtheta_a": "a:roll_error",
+    "dr_a": "a-radar:range_bias",
+    "dq_a": "a-radar:bearing_bias",
+    "de_a": "a-radar:elevation_bias",
+    "dC_b": "b:heading_error",
+    "dphi_b": "b:pitch_error",
+    "dtheta_b": "b:roll_error",
+    "dr_b": "b-radar:range_bias",
+    "dq_b": "b-radar:bearing_bias",
+    "de_b": "b-radar:elevation_bias",
 }
 
 
@@ -26,7 +34,11 @@ def fleet_tables(data: dict, sigma0, prior_sigma) -> dict:
     navigation = {"platform": np.repeat(["a", "b"], n), "time": np.r_[t, t]}
     for c in NAV:
         navigation[c] = np.r_[data[f"a_{c}"], data[f"b_{c}"]]
-    plots = {"time": np.r_[t, t], "sensor": np.repeat(["a-radar", "b-radar"], n), "target": np.full(2 * n, "T")}
+    plots = {
+        "time": np.r_[t, t],
+        "sensor": np.repeat(["a-radar", "b-radar"], n),
+        "target": np.full(2 * n, "T"),
+    }
     for c in PLOT:
         plots[c] = np.r_[data[f"a_{c}"], data[f"b_{c}"]]
     platforms = {"platform": np.array(["a", "b"])}

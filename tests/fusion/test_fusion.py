@@ -17,16 +17,36 @@ import pytest
 from registration import fusion as F
 from registration.fusion.inputs import BLOCK
 
-PAPER1 = dict(z=np.array([100e3, np.radians(15.0)]), s=np.array([100.0, 7e-3]), comps=("azimuth",),
-              s2=np.array([4e-3]), site=np.array([80e3, 0.0]))
-PAPER2 = dict(z=np.array([80e3, np.radians(45.0)]), s=np.array([60.0, 5e-3]), comps=("range",),
-              s2=np.array([10.0]), site=np.array([40e3, 0.0]))
+PAPER1 = dict(
+    z=np.array([100e3, np.radians(15.0)]),
+    s=np.array([100.0, 7e-3]),
+    comps=("azimuth",),
+    s2=np.array([4e-3]),
+    site=np.array([80e3, 0.0]),
+)
+PAPER2 = dict(
+    z=np.array([80e3, np.radians(45.0)]),
+    s=np.array([60.0, 5e-3]),
+    comps=("range",),
+    s2=np.array([10.0]),
+    site=np.array([40e3, 0.0]),
+)
 # 3-D: an IRST (azimuth + elevation) 36 km from the radar, slightly above it
-IRST3 = dict(z=np.array([60e3, np.radians(30.0), np.radians(10.0)]), s=np.array([50.0, 4e-3, 6e-3]),
-             comps=("azimuth", "elevation"), s2=np.array([2e-3, 2e-3]), site=np.array([30e3, -20e3, 50.0]))
+IRST3 = dict(
+    z=np.array([60e3, np.radians(30.0), np.radians(10.0)]),
+    s=np.array([50.0, 4e-3, 6e-3]),
+    comps=("azimuth", "elevation"),
+    s2=np.array([2e-3, 2e-3]),
+    site=np.array([30e3, -20e3, 50.0]),
+)
 # 3-D, same platform: a co-located sensor measuring elevation only
-SAME3 = dict(z=np.array([60e3, np.radians(30.0), np.radians(10.0)]), s=np.array([50.0, 4e-3, 6e-3]),
-             comps=("elevation",), s2=np.array([1e-3]), site=np.zeros(3))
+SAME3 = dict(
+    z=np.array([60e3, np.radians(30.0), np.radians(10.0)]),
+    s=np.array([50.0, 4e-3, 6e-3]),
+    comps=("elevation",),
+    s2=np.array([1e-3]),
+    site=np.zeros(3),
+)
 CASES = {"paper1": PAPER1, "paper2": PAPER2, "irst3d": IRST3, "same_site3d": SAME3}
 
 
@@ -45,7 +65,9 @@ def xyz_to_polar(p: np.ndarray) -> np.ndarray:
     if p.shape[1] == 2:
         return np.stack([np.hypot(p[:, 0], p[:, 1]), np.arctan2(p[:, 1], p[:, 0])], axis=1)
     rho = np.hypot(p[:, 0], p[:, 1])
-    return np.stack([np.linalg.norm(p, axis=1), np.arctan2(p[:, 1], p[:, 0]), np.arctan2(p[:, 2], rho)], axis=1)
+    return np.stack(
+        [np.linalg.norm(p, axis=1), np.arctan2(p[:, 1], p[:, 0]), np.arctan2(p[:, 2], rho)], axis=1
+    )
 
 
 def truth(case):
@@ -130,7 +152,9 @@ def test_fusion_of_a_bearing_follows_the_paper_steps_by_hand():
     np.testing.assert_allclose(res.p_pseudo_loc[0], ph, rtol=1e-12)
     np.testing.assert_allclose(res.R_pseudo[0], R, rtol=1e-9)
     np.testing.assert_allclose(res.p_fused_loc[0], X, rtol=1e-12)
-    np.testing.assert_allclose(res.P_claimed[0], np.linalg.inv(np.linalg.inv(P) + np.linalg.inv(R)), rtol=1e-8)
+    np.testing.assert_allclose(
+        res.P_claimed[0], np.linalg.inv(np.linalg.inv(P) + np.linalg.inv(R)), rtol=1e-8
+    )
 
 
 @pytest.mark.parametrize("name", sorted(CASES))
@@ -340,7 +364,10 @@ def test_bearing_across_the_pi_cut_is_fused_on_the_wrapped_difference():
         (dict(components=["azimth"]), "unknown component 'azimth'"),
         (dict(components=["elevation"]), "unknown component 'elevation' for a 2-D"),
         (dict(components=[]), "at least one"),
-        (dict(components=["azimuth", "bearing"], z_second=[1.0, 1.0], sigma_second=[1e-3, 1e-3]), "listed twice"),
+        (
+            dict(components=["azimuth", "bearing"], z_second=[1.0, 1.0], sigma_second=[1e-3, 1e-3]),
+            "listed twice",
+        ),
         (dict(sigma_radar=[100.0, 0.0]), r"sigma_radar.*must be > 0"),
         (dict(sigma_second=[-4e-3]), r"sigma_second.*must be > 0"),
         (dict(sigma_radar=[100.0, 7e-3, 1e-3]), r"sigma_radar: expected shape \(2,\)"),
@@ -356,8 +383,14 @@ def test_bearing_across_the_pi_cut_is_fused_on_the_wrapped_difference():
     ],
 )
 def test_bad_input_raises_clear_value_error(kwargs, match):
-    args = dict(z_radar=[100e3, 0.26], sigma_radar=[100.0, 7e-3], z_second=[1.0], sigma_second=[4e-3],
-                components=["azimuth"], site_second_loc=[80e3, 0.0])
+    args = dict(
+        z_radar=[100e3, 0.26],
+        sigma_radar=[100.0, 7e-3],
+        z_second=[1.0],
+        sigma_second=[4e-3],
+        components=["azimuth"],
+        site_second_loc=[80e3, 0.0],
+    )
     args.update(kwargs)
     with pytest.raises(ValueError, match=match):
         F.fuse_paper(**args)
@@ -376,4 +409,6 @@ def test_crlb_rejects_a_target_at_a_site_and_bad_shapes():
     with pytest.raises(ValueError, match="cov"):
         F.gdop(np.ones(3))
     with pytest.raises(ValueError, match="max_iterations"):
-        F.fuse_optimal([100e3, 0.26], [100.0, 7e-3], [1.0], [4e-3], ["azimuth"], [80e3, 0.0], max_iterations=0)
+        F.fuse_optimal(
+            [100e3, 0.26], [100.0, 7e-3], [1.0], [4e-3], ["azimuth"], [80e3, 0.0], max_iterations=0
+        )

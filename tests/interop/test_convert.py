@@ -11,7 +11,9 @@ import numpy as np
 import pytest
 from stonesoup.models.measurement.linear import LinearGaussian
 from stonesoup.models.measurement.nonlinear import (
-    CartesianToBearingRange, CartesianToBearingRangeRate, CartesianToElevationBearingRange,
+    CartesianToBearingRange,
+    CartesianToBearingRangeRate,
+    CartesianToElevationBearingRange,
 )
 from stonesoup.sensor.radar import RadarElevationBearingRange
 from stonesoup.types.detection import Clutter, Detection
@@ -21,7 +23,13 @@ from registration import _codegen
 from registration.fleet import build_problem, fleet_scenario, solve_batch
 from registration.fleet.simulation.scenario import CENTRE
 from registration.interop.stonesoup import (
-    EPOCH, LocalFrame, detections_to_tables, measured_plot, measurement_model, mounted_radar, tables_to_detections,
+    EPOCH,
+    LocalFrame,
+    detections_to_tables,
+    measured_plot,
+    measurement_model,
+    mounted_radar,
+    tables_to_detections,
 )
 
 RNG = np.random.default_rng(7)
@@ -37,8 +45,16 @@ def world_state(p) -> State:
 
 def fleet_plot(nav, lever, target_world) -> np.ndarray:
     """The generated model's predicted plot (range m, deck bearing, elevation rad) with zero errors."""
-    return _codegen.get("fleet_residual")(FRAME.world2ecef(target_world), *np.atleast_2d(nav).T, np.zeros(3),
-                                           np.zeros(3), np.atleast_2d(lever), 1.0, 0.0, 0.0)[2]
+    return _codegen.get("fleet_residual")(
+        FRAME.world2ecef(target_world),
+        *np.atleast_2d(nav).T,
+        np.zeros(3),
+        np.zeros(3),
+        np.atleast_2d(lever),
+        1.0,
+        0.0,
+        0.0,
+    )[2]
 
 
 def plot_difference_m(a, b) -> np.ndarray:
@@ -51,11 +67,13 @@ def plot_difference_m(a, b) -> np.ndarray:
 def random_setup(n=N):
     p_nav = np.column_stack([RNG.uniform(-50e3, 50e3, n), RNG.uniform(-50e3, 50e3, n), RNG.uniform(0, 40, n)])
     lat, lon, alt = FRAME.world2geodetic(p_nav)
-    nav = np.column_stack([lat, lon, alt, RNG.uniform(-np.pi, np.pi, n), RNG.uniform(-0.3, 0.3, n),
-                           RNG.uniform(-0.4, 0.4, n)])
+    nav = np.column_stack(
+        [lat, lon, alt, RNG.uniform(-np.pi, np.pi, n), RNG.uniform(-0.3, 0.3, n), RNG.uniform(-0.4, 0.4, n)]
+    )
     lever = RNG.uniform(-30, 30, (n, 3))
-    target = p_nav + np.column_stack([RNG.uniform(-60e3, 60e3, n), RNG.uniform(-60e3, 60e3, n),
-                                      RNG.uniform(-100, 12e3, n)])
+    target = p_nav + np.column_stack(
+        [RNG.uniform(-60e3, 60e3, n), RNG.uniform(-60e3, 60e3, n), RNG.uniform(-100, 12e3, n)]
+    )
     return nav, lever, target
 
 
@@ -73,22 +91,44 @@ def test_our_navigation_as_a_stonesoup_model_measures_what_the_fleet_model_predi
 
 def test_stonesoup_poses_as_navigation_give_the_fleet_model_stonesoups_measurements():
     n = N
-    p_sensor = np.column_stack([RNG.uniform(-50e3, 50e3, n), RNG.uniform(-50e3, 50e3, n), RNG.uniform(5, 60, n)])
-    orientation = np.column_stack([RNG.uniform(-0.4, 0.4, n), RNG.uniform(-0.3, 0.3, n), RNG.uniform(-np.pi, np.pi, n)])
-    target = p_sensor + np.column_stack([RNG.uniform(-60e3, 60e3, n), RNG.uniform(-60e3, 60e3, n),
-                                         RNG.uniform(0, 12e3, n)])
+    p_sensor = np.column_stack(
+        [RNG.uniform(-50e3, 50e3, n), RNG.uniform(-50e3, 50e3, n), RNG.uniform(5, 60, n)]
+    )
+    orientation = np.column_stack(
+        [RNG.uniform(-0.4, 0.4, n), RNG.uniform(-0.3, 0.3, n), RNG.uniform(-np.pi, np.pi, n)]
+    )
+    target = p_sensor + np.column_stack(
+        [RNG.uniform(-60e3, 60e3, n), RNG.uniform(-60e3, 60e3, n), RNG.uniform(0, 12e3, n)]
+    )
     lever = np.array([1.5, 20.0, 25.0])
     detections = []
     for i in range(n):
-        model = CartesianToElevationBearingRange(ndim_state=6, mapping=(0, 2, 4), noise_covar=np.diag([4e-6, 1e-6, 100.0]),
-                                                 translation_offset=p_sensor[i][:, None],
-                                                 rotation_offset=orientation[i][:, None])
-        detections.append(Detection(model.function(world_state(target[i])), measurement_model=model,
-                                    timestamp=EPOCH + datetime.timedelta(seconds=i),
-                                    metadata={"sensor": "R", "target": f"T{i}"}))
-    sensors = {"sensor": ["R"], "platform": ["P"], "lever_x": [lever[0]], "lever_y": [lever[1]], "lever_z": [lever[2]]}
+        model = CartesianToElevationBearingRange(
+            ndim_state=6,
+            mapping=(0, 2, 4),
+            noise_covar=np.diag([4e-6, 1e-6, 100.0]),
+            translation_offset=p_sensor[i][:, None],
+            rotation_offset=orientation[i][:, None],
+        )
+        detections.append(
+            Detection(
+                model.function(world_state(target[i])),
+                measurement_model=model,
+                timestamp=EPOCH + datetime.timedelta(seconds=i),
+                metadata={"sensor": "R", "target": f"T{i}"},
+            )
+        )
+    sensors = {
+        "sensor": ["R"],
+        "platform": ["P"],
+        "lever_x": [lever[0]],
+        "lever_y": [lever[1]],
+        "lever_z": [lever[2]],
+    }
     tables = detections_to_tables(detections, FRAME, sensors)
-    nav = np.column_stack([tables["navigation"][c] for c in ("lat", "lon", "alt", "heading", "pitch", "roll")])
+    nav = np.column_stack(
+        [tables["navigation"][c] for c in ("lat", "lon", "alt", "heading", "pitch", "roll")]
+    )
     plots = np.column_stack([tables["plots"][c] for c in ("range", "bearing", "elevation")])
     assert list(tables["navigation"]["platform"]) == ["P"] * n
     expected = fleet_plot(nav, np.tile(lever, (n, 1)), target)
@@ -115,7 +155,9 @@ def test_bearing_signs_starboard_is_negative_in_stonesoup():
     model = measurement_model(FRAME, nav, (0, 0, 0), (1.0, 1e-3, 1e-3), "R")
     z = np.asarray(model.function(world_state([1000.0, 0.0, 0.0])), float).ravel()  # due east = starboard
     assert z[1] == pytest.approx(-np.pi / 2, abs=1e-9)
-    assert measured_plot(Detection(z[:, None], measurement_model=model), "R")[1] == pytest.approx(np.pi / 2, abs=1e-9)
+    assert measured_plot(Detection(z[:, None], measurement_model=model), "R")[1] == pytest.approx(
+        np.pi / 2, abs=1e-9
+    )
 
 
 def test_a_2d_radar_agrees_for_a_level_platform_and_a_target_at_its_height():
@@ -140,12 +182,24 @@ def test_tables_round_trip_through_stonesoup_detections_and_register_alike():
     plots = {k: v[keep] for k, v in scenario.plots.items()}
     detections = tables_to_detections(plots, scenario.sensors, scenario.navigation, FRAME)
     assert len(detections) == keep.sum()
-    assert all(isinstance(d.measurement_model, CartesianToBearingRange) == d.metadata["sensor"].endswith("2D")
-               for d in detections)
-    tables = detections_to_tables(detections + [Clutter(detections[0].state_vector,
-                                                        measurement_model=detections[0].measurement_model,
-                                                        timestamp=detections[0].timestamp, metadata={"sensor": "A-3D"})],
-                                  FRAME, scenario.sensors, EPOCH)
+    assert all(
+        isinstance(d.measurement_model, CartesianToBearingRange) == d.metadata["sensor"].endswith("2D")
+        for d in detections
+    )
+    tables = detections_to_tables(
+        detections
+        + [
+            Clutter(
+                detections[0].state_vector,
+                measurement_model=detections[0].measurement_model,
+                timestamp=detections[0].timestamp,
+                metadata={"sensor": "A-3D"},
+            )
+        ],
+        FRAME,
+        scenario.sensors,
+        EPOCH,
+    )
     order = np.lexsort((plots["sensor"], plots["target"], plots["time"]))
     back = np.lexsort((tables["plots"]["sensor"], tables["plots"]["target"], tables["plots"]["time"]))
     for c in ("range", "bearing", "elevation"):
@@ -154,19 +208,27 @@ def test_tables_round_trip_through_stonesoup_detections_and_register_alike():
     used = np.isin(scenario.sensors["sensor"], plots["sensor"])
     sensors = {k: v[used] for k, v in scenario.sensors.items()}
     ours = solve_batch(build_problem(plots, sensors, scenario.navigation, scenario.platforms))
-    theirs = solve_batch(build_problem(tables["plots"], tables["sensors"], tables["navigation"], scenario.platforms))
+    theirs = solve_batch(
+        build_problem(tables["plots"], tables["sensors"], tables["navigation"], scenario.platforms)
+    )
     assert sorted(ours.layout.names) == sorted(theirs.layout.names)
     for name in ours.layout.names:  # navigation given at the plot times replaces its interpolation exactly
         assert abs(ours.value(name) - theirs.value(name)) <= 1e-6 * ours.sigma_of(name), name
 
 
-@pytest.mark.parametrize("model", [
-    CartesianToBearingRangeRate(ndim_state=6, mapping=(0, 2, 4), velocity_mapping=(1, 3, 5),
-                                noise_covar=np.eye(3)),
-    LinearGaussian(ndim_state=6, mapping=(0, 2, 4), noise_covar=np.eye(3)),
-])
+@pytest.mark.parametrize(
+    "model",
+    [
+        CartesianToBearingRangeRate(
+            ndim_state=6, mapping=(0, 2, 4), velocity_mapping=(1, 3, 5), noise_covar=np.eye(3)
+        ),
+        LinearGaussian(ndim_state=6, mapping=(0, 2, 4), noise_covar=np.eye(3)),
+    ],
+)
 def test_unsupported_models_are_refused_naming_sensor_and_model(model):
-    det = Detection(np.zeros((3, 1)), measurement_model=model, timestamp=EPOCH, metadata={"sensor": "X9", "target": "T"})
+    det = Detection(
+        np.zeros((3, 1)), measurement_model=model, timestamp=EPOCH, metadata={"sensor": "X9", "target": "T"}
+    )
     with pytest.raises(ValueError, match=rf"X9.*{type(model).__name__}"):
         detections_to_tables([det], FRAME)
 
@@ -178,15 +240,30 @@ def test_bad_detections_and_sensors_are_refused_clearly():
     with pytest.raises(ValueError, match="metadata"):
         detections_to_tables([Detection(z, measurement_model=model, timestamp=EPOCH)], FRAME)
     with pytest.raises(ValueError, match="target id"):
-        detections_to_tables([Detection(z, measurement_model=model, timestamp=EPOCH, metadata={"sensor": "R"})], FRAME)
+        detections_to_tables(
+            [Detection(z, measurement_model=model, timestamp=EPOCH, metadata={"sensor": "R"})], FRAME
+        )
     bare = CartesianToElevationBearingRange(ndim_state=6, mapping=(0, 2, 4), noise_covar=np.eye(3))
     bare.rotation_offset = None
     with pytest.raises(ValueError, match="R.*orientation"):
-        detections_to_tables([Detection(z, measurement_model=bare, timestamp=EPOCH,
-                                         metadata={"sensor": "R", "target": "T"})], FRAME)
-    loose = RadarElevationBearingRange(ndim_state=6, position_mapping=(0, 2, 4), noise_covar=np.eye(3))  # no platform
+        detections_to_tables(
+            [Detection(z, measurement_model=bare, timestamp=EPOCH, metadata={"sensor": "R", "target": "T"})],
+            FRAME,
+        )
+    loose = RadarElevationBearingRange(
+        ndim_state=6, position_mapping=(0, 2, 4), noise_covar=np.eye(3)
+    )  # no platform
     with pytest.raises(ValueError, match="R.*default pose"):
-        detections_to_tables([Detection(z, measurement_model=loose.measurement_model, timestamp=EPOCH,
-                                        metadata={"sensor": "R", "target": "T"})], FRAME)
+        detections_to_tables(
+            [
+                Detection(
+                    z,
+                    measurement_model=loose.measurement_model,
+                    timestamp=EPOCH,
+                    metadata={"sensor": "R", "target": "T"},
+                )
+            ],
+            FRAME,
+        )
     with pytest.raises(ValueError, match="ESM.*bearing"):
         measurement_model(FRAME, nav, (0, 0, 0), (np.nan, 1e-3, 1e-3), "ESM")

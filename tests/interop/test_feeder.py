@@ -4,7 +4,10 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
-from stonesoup.models.measurement.nonlinear import CartesianToBearingRangeRate, CartesianToElevationBearingRange
+from stonesoup.models.measurement.nonlinear import (
+    CartesianToBearingRangeRate,
+    CartesianToElevationBearingRange,
+)
 from stonesoup.sensor.radar import RadarElevationBearingRange
 from stonesoup.types.detection import Detection
 from stonesoup.types.state import State
@@ -12,7 +15,11 @@ from stonesoup.types.state import State
 from registration.fleet import fleet_scenario, solve_batch
 from registration.fleet.simulation.scenario import CENTRE
 from registration.interop.stonesoup import (
-    EPOCH, LocalFrame, RegisteredDetectionFeeder, RegistrationCorrector, tables_to_detections,
+    EPOCH,
+    LocalFrame,
+    RegisteredDetectionFeeder,
+    RegistrationCorrector,
+    tables_to_detections,
 )
 
 FRAME = LocalFrame(*CENTRE)
@@ -23,7 +30,9 @@ def result_of(names, estimate, covariance=None):
     """The duck type the corrector takes: layout.names, estimate, covariance."""
     n = len(names)
     cov = np.zeros((n, n)) if covariance is None else covariance
-    return SimpleNamespace(layout=SimpleNamespace(names=tuple(names)), estimate=np.asarray(estimate, float), covariance=cov)
+    return SimpleNamespace(
+        layout=SimpleNamespace(names=tuple(names)), estimate=np.asarray(estimate, float), covariance=cov
+    )
 
 
 def detections_of(scenario, sensors=RADARS_3D):
@@ -67,8 +76,14 @@ def test_the_true_errors_make_detections_fit_stonesoups_model_of_the_true_target
 def test_the_added_covariance_is_j_p_jt_of_the_corrected_error(quiet_fleet):
     s = quiet_fleet
     names = list(s.truth_state)
-    states = ["A:heading_error", "A:pitch_error", "A:roll_error", "A-3D:range_bias", "A-3D:bearing_bias",
-              "A-3D:elevation_bias"]
+    states = [
+        "A:heading_error",
+        "A:pitch_error",
+        "A:roll_error",
+        "A-3D:range_bias",
+        "A-3D:bearing_bias",
+        "A-3D:elevation_bias",
+    ]
     idx = [names.index(n) for n in states]
     rng = np.random.default_rng(11)
     G = rng.normal(size=(6, 6)) * np.array([1e-3, 1e-3, 1e-3, 30.0, 1e-3, 1e-3])
@@ -78,11 +93,18 @@ def test_the_added_covariance_is_j_p_jt_of_the_corrected_error(quiet_fleet):
     det = next(d for d in detections_of(s, ("A-3D",)))
     truth = truth_state(s, det)
     corrected = RegistrationCorrector(result_of(names, x0, P), s.sensors, FRAME).correct(det)
-    added = np.asarray(corrected.measurement_model.covar(), float) - np.asarray(det.measurement_model.covar(), float)
+    added = np.asarray(corrected.measurement_model.covar(), float) - np.asarray(
+        det.measurement_model.covar(), float
+    )
 
     def error(x):  # corrected measurement minus Stone Soup's model of the true target, by the corrected model
-        d = RegistrationCorrector(result_of(names, x), s.sensors, FRAME, registration_noise=False).correct(det)
-        return np.asarray(d.state_vector, float).ravel() - np.asarray(d.measurement_model.function(truth), float).ravel()
+        d = RegistrationCorrector(result_of(names, x), s.sensors, FRAME, registration_noise=False).correct(
+            det
+        )
+        return (
+            np.asarray(d.state_vector, float).ravel()
+            - np.asarray(d.measurement_model.function(truth), float).ravel()
+        )
 
     J = np.empty((3, 6))
     for k, i in enumerate(idx):
@@ -101,20 +123,24 @@ def test_a_zero_result_passes_detections_through_the_feeder_unchanged_scan_by_sc
     names = list(s.truth_state)
     detections = detections_of(s)[:40]
     scans = [(d.timestamp, {d}) for d in detections]
-    feeder = RegisteredDetectionFeeder(reader=scans, result=result_of(names, np.zeros(len(names))), sensors=s.sensors,
-                                       frame=FRAME)
+    feeder = RegisteredDetectionFeeder(
+        reader=scans, result=result_of(names, np.zeros(len(names))), sensors=s.sensors, frame=FRAME
+    )
     out = list(feeder)
     assert [t for t, _ in out] == [t for t, _ in scans]
     for (_, (before,)), (_, after) in zip(scans, out):
         (after,) = after
         assert after is not before and after.metadata == before.metadata
-        np.testing.assert_allclose(np.asarray(after.state_vector, float), np.asarray(before.state_vector, float),
-                                   rtol=1e-15)
+        np.testing.assert_allclose(
+            np.asarray(after.state_vector, float), np.asarray(before.state_vector, float), rtol=1e-15
+        )
         m0, m1 = before.measurement_model, after.measurement_model
-        np.testing.assert_allclose(np.asarray(m1.translation_offset, float), np.asarray(m0.translation_offset, float),
-                                   atol=1e-8)
-        np.testing.assert_allclose(np.asarray(m1.rotation_offset, float), np.asarray(m0.rotation_offset, float),
-                                   atol=1e-12)
+        np.testing.assert_allclose(
+            np.asarray(m1.translation_offset, float), np.asarray(m0.translation_offset, float), atol=1e-8
+        )
+        np.testing.assert_allclose(
+            np.asarray(m1.rotation_offset, float), np.asarray(m0.rotation_offset, float), atol=1e-12
+        )
         np.testing.assert_array_equal(np.asarray(m1.covar()), np.asarray(m0.covar()))
 
 
@@ -126,7 +152,10 @@ def test_a_registered_fleet_gives_consistent_corrected_detections():
     for det in detections_of(s):
         truth = truth_state(s, det)
         for d, out in ((det, nees_raw), (corrector.correct(det), nees)):
-            v = np.asarray(d.state_vector, float).ravel() - np.asarray(d.measurement_model.function(truth), float).ravel()
+            v = (
+                np.asarray(d.state_vector, float).ravel()
+                - np.asarray(d.measurement_model.function(truth), float).ravel()
+            )
             v[:2] = np.angle(np.exp(1j * v[:2]))
             out.append(v @ np.linalg.solve(np.asarray(d.measurement_model.covar(), float), v))
     assert np.mean(nees_raw) > 30.0
@@ -138,31 +167,48 @@ def test_detections_that_cannot_be_corrected_are_refused_by_name(quiet_fleet):
     names = list(s.truth_state)
     det = detections_of(s, ("B-3D",))[0]
     without_b3d = [n for n in names if not n.startswith("B-3D:")]
-    feeder = RegisteredDetectionFeeder(reader=[(det.timestamp, {det})], result=result_of(without_b3d, np.zeros(len(without_b3d))),
-                                       sensors=s.sensors, frame=FRAME)
+    feeder = RegisteredDetectionFeeder(
+        reader=[(det.timestamp, {det})],
+        result=result_of(without_b3d, np.zeros(len(without_b3d))),
+        sensors=s.sensors,
+        frame=FRAME,
+    )
     with pytest.raises(ValueError, match="B-3D.*no state"):
         list(feeder)
     corrector = RegistrationCorrector(result_of(names, np.zeros(len(names))), s.sensors, FRAME)
-    other = Detection(det.state_vector, timestamp=det.timestamp, measurement_model=det.measurement_model,
-                      metadata={"sensor": "Z-9"})
+    other = Detection(
+        det.state_vector,
+        timestamp=det.timestamp,
+        measurement_model=det.measurement_model,
+        metadata={"sensor": "Z-9"},
+    )
     with pytest.raises(ValueError, match="Z-9"):
         corrector.correct(other)
-    rate = CartesianToBearingRangeRate(ndim_state=6, mapping=(0, 2, 4), velocity_mapping=(1, 3, 5), noise_covar=np.eye(3))
+    rate = CartesianToBearingRangeRate(
+        ndim_state=6, mapping=(0, 2, 4), velocity_mapping=(1, 3, 5), noise_covar=np.eye(3)
+    )
     with pytest.raises(ValueError, match="B-3D.*CartesianToBearingRangeRate"):
         corrector.correct(Detection(np.zeros((3, 1)), measurement_model=rate, metadata={"sensor": "B-3D"}))
     bare = CartesianToElevationBearingRange(ndim_state=6, mapping=(0, 2, 4), noise_covar=np.eye(3))
     bare.rotation_offset = None
     with pytest.raises(ValueError, match="B-3D.*orientation"):
         corrector.correct(Detection(det.state_vector, measurement_model=bare, metadata={"sensor": "B-3D"}))
-    loose = RadarElevationBearingRange(ndim_state=6, position_mapping=(0, 2, 4), noise_covar=np.eye(3))  # no platform
+    loose = RadarElevationBearingRange(
+        ndim_state=6, position_mapping=(0, 2, 4), noise_covar=np.eye(3)
+    )  # no platform
     with pytest.raises(ValueError, match="B-3D.*default pose"):
-        corrector.correct(Detection(det.state_vector, measurement_model=loose.measurement_model, metadata={"sensor": "B-3D"}))
+        corrector.correct(
+            Detection(
+                det.state_vector, measurement_model=loose.measurement_model, metadata={"sensor": "B-3D"}
+            )
+        )
     cov = np.zeros((len(names), len(names)))
     cov[names.index("B:heading_error"), names.index("B:heading_error")] = np.inf
     with pytest.raises(ValueError, match="B:heading_error"):
         RegistrationCorrector(result_of(names, np.zeros(len(names)), cov), s.sensors, FRAME).correct(det)
-    RegistrationCorrector(result_of(names, np.zeros(len(names)), cov), s.sensors, FRAME,
-                          registration_noise=False).correct(det)
+    RegistrationCorrector(
+        result_of(names, np.zeros(len(names)), cov), s.sensors, FRAME, registration_noise=False
+    ).correct(det)
 
 
 def test_a_live_online_filter_corrects_each_scan_with_what_it_knows_by_then():
@@ -187,8 +233,10 @@ def test_a_live_online_filter_corrects_each_scan_with_what_it_knows_by_then():
         for d in late:
             yield d.timestamp, {d}
 
-    out = [next(iter(dets)) for _, dets in RegisteredDetectionFeeder(reader=scans(), result=filt, sensors=s.sensors,
-                                                                     frame=FRAME)]
+    out = [
+        next(iter(dets))
+        for _, dets in RegisteredDetectionFeeder(reader=scans(), result=filt, sensors=s.sensors, frame=FRAME)
+    ]
     bias = filt.estimate[filt.layout.index("A-3D:range_bias")]
     assert abs(bias) > 50.0  # the filter has learned the range bias by the late scans
     for before, after in zip(early + late, out):

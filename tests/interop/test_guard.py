@@ -12,7 +12,9 @@ def forget_interop_modules(monkeypatch, also_stonesoup: bool) -> None:
     """Drop registration.interop's submodules (and Stone Soup's) from the import cache for this test only."""
     for name in list(sys.modules):
         if name.startswith("registration.interop."):
-            monkeypatch.setattr(registration.interop, name.rsplit(".", 1)[1], sys.modules[name], raising=False)
+            monkeypatch.setattr(
+                registration.interop, name.rsplit(".", 1)[1], sys.modules[name], raising=False
+            )
             monkeypatch.delitem(sys.modules, name)
         elif also_stonesoup and (name == "stonesoup" or name.startswith("stonesoup.")):
             monkeypatch.delitem(sys.modules, name)
@@ -21,7 +23,7 @@ def forget_interop_modules(monkeypatch, also_stonesoup: bool) -> None:
 
 def test_missing_stonesoup_gives_the_install_command(monkeypatch):
     forget_interop_modules(monkeypatch, also_stonesoup=True)
-    with pytest.raises(ImportError, match=r'pip install stonesoup'):
+    with pytest.raises(ImportError, match=r"pip install stonesoup"):
         importlib.import_module("registration.interop.stonesoup")
 
 

@@ -13,14 +13,19 @@ RNG = np.random.default_rng(20261201)
 
 
 def random_orientations(n: int) -> np.ndarray:
-    return np.column_stack([RNG.uniform(-1.2, 1.2, n), RNG.uniform(-1.4, 1.4, n), RNG.uniform(-np.pi, np.pi, n)])
+    return np.column_stack(
+        [RNG.uniform(-1.2, 1.2, n), RNG.uniform(-1.4, 1.4, n), RNG.uniform(-np.pi, np.pi, n)]
+    )
 
 
 def random_navigation(frame: LocalFrame, n: int, spread: float = 60e3) -> np.ndarray:
-    p = np.column_stack([RNG.uniform(-spread, spread, n), RNG.uniform(-spread, spread, n), RNG.uniform(-5, 50, n)])
+    p = np.column_stack(
+        [RNG.uniform(-spread, spread, n), RNG.uniform(-spread, spread, n), RNG.uniform(-5, 50, n)]
+    )
     lat, lon, alt = frame.world2geodetic(p)
-    return np.column_stack([lat, lon, alt, RNG.uniform(-np.pi, np.pi, n), RNG.uniform(-0.3, 0.3, n),
-                            RNG.uniform(-0.4, 0.4, n)])
+    return np.column_stack(
+        [lat, lon, alt, RNG.uniform(-np.pi, np.pi, n), RNG.uniform(-0.3, 0.3, n), RNG.uniform(-0.4, 0.4, n)]
+    )
 
 
 def test_orientation_rotation_is_stonesoups_sensor_to_world_rotation():
@@ -47,7 +52,9 @@ def test_at_the_origin_yaw_is_a_quarter_turn_minus_heading_and_pitch_roll_keep_t
     np.testing.assert_allclose(o[:, 1], pitch, atol=1e-12)
     np.testing.assert_allclose(np.cos(o[:, 2] - (np.pi / 2 - heading)), 1.0, atol=1e-12)
     # heading 90 deg (bow east) is yaw 0: Stone Soup's forward axis is world x = east
-    np.testing.assert_allclose(frame.orientation(ORIGIN[0], ORIGIN[1], np.pi / 2, 0, 0), [[0, 0, 0]], atol=1e-15)
+    np.testing.assert_allclose(
+        frame.orientation(ORIGIN[0], ORIGIN[1], np.pi / 2, 0, 0), [[0, 0, 0]], atol=1e-15
+    )
 
 
 def test_away_from_the_origin_the_orientation_carries_the_tilt_of_the_local_axes():
@@ -56,9 +63,12 @@ def test_away_from_the_origin_the_orientation_carries_the_tilt_of_the_local_axes
     o = frame.orientation(nav[:, 0], nav[:, 1], *nav[:, 3:].T)
     # the deck axes in world coordinates through ECEF match Stone Soup's rotation of o
     R_ecef_deck = np.stack([frame.R_ecef_world]) @ orientation_rotation(o)
-    np.testing.assert_allclose(R_ecef_deck, enu2ecef_rotation(nav[:, 0], nav[:, 1]) @ deck2enu_rotation(*nav[:, 3:].T),
-                               atol=1e-14)
-    assert np.abs(o[:, 1] - nav[:, 4]).max() > 1e-4  # 60 km out, the pitch relative to world is not the local one
+    np.testing.assert_allclose(
+        R_ecef_deck, enu2ecef_rotation(nav[:, 0], nav[:, 1]) @ deck2enu_rotation(*nav[:, 3:].T), atol=1e-14
+    )
+    assert (
+        np.abs(o[:, 1] - nav[:, 4]).max() > 1e-4
+    )  # 60 km out, the pitch relative to world is not the local one
 
 
 def test_attitude_inverts_orientation():
@@ -107,11 +117,14 @@ def test_reference_point_is_what_stonesoups_geodetic_feeder_takes():
 
     frame = LocalFrame(*ORIGIN)
     lat, lon, alt = ORIGIN[0] + 0.004, ORIGIN[1] - 0.006, 850.0
-    det = Detection(np.array([[np.degrees(lon)], [np.degrees(lat)], [alt]]))  # Stone Soup order: lon, lat (deg), alt
+    det = Detection(
+        np.array([[np.degrees(lon)], [np.degrees(lat)], [alt]])
+    )  # Stone Soup order: lon, lat (deg), alt
     feeder = LLAtoENUConverter(reader=[(None, {det})], reference_point=frame.reference_point_deg)
-    (_, (converted,)), = list(feeder)
-    np.testing.assert_allclose(np.asarray(converted.state_vector, float).ravel(),
-                               frame.geodetic2world(lat, lon, alt)[0], atol=1e-6)
+    ((_, (converted,)),) = list(feeder)
+    np.testing.assert_allclose(
+        np.asarray(converted.state_vector, float).ravel(), frame.geodetic2world(lat, lon, alt)[0], atol=1e-6
+    )
 
 
 def test_centred_on_puts_the_origin_under_the_mean_position():

@@ -31,15 +31,34 @@ def test_import_and_register_recover_every_error(seed, tmp_path):
     truth.sites.to_csv(tmp_path / "SITES.csv", index=False)
     for form in ("ast", "pcap"):
         date = ["--date", truth.date.isoformat()] if form == "ast" else []  # the pcap carries its own date
-        assert main(["import", "asterix", str(tmp_path / f"atc.{form}"), "--sites", str(tmp_path / "SITES.csv"),
-                     "--out", str(tmp_path / form), *date]) == 0
+        assert (
+            main(
+                [
+                    "import",
+                    "asterix",
+                    str(tmp_path / f"atc.{form}"),
+                    "--sites",
+                    str(tmp_path / "SITES.csv"),
+                    "--out",
+                    str(tmp_path / form),
+                    *date,
+                ]
+            )
+            == 0
+        )
     for name in ("plots", "navigation", "sensors", "platforms", "reference"):
-        assert (tmp_path / "ast" / f"{name}.csv").read_bytes() == (tmp_path / "pcap" / f"{name}.csv").read_bytes(), name
+        assert (tmp_path / "ast" / f"{name}.csv").read_bytes() == (
+            tmp_path / "pcap" / f"{name}.csv"
+        ).read_bytes(), name
     plots = pd.read_csv(tmp_path / "pcap" / "plots.csv", dtype={"target": str}, keep_default_na=False)
     kinds = plots["target"].str[0].where(plots["target"] != "", "")
-    assert (plots["target"] == "").any() and (kinds == "A").any()  # primary-only and Mode A/C-only plots are there
+    assert (plots["target"] == "").any() and (
+        kinds == "A"
+    ).any()  # primary-only and Mode A/C-only plots are there
     reg = tmp_path / "reg"  # plots without ids are associated to the targets with ids (mixed ids)
-    assert main(["fleet", "register", "--tables", str(tmp_path / "pcap"), "--out", str(reg), "--no-plots"]) == 0
+    assert (
+        main(["fleet", "register", "--tables", str(tmp_path / "pcap"), "--out", str(reg), "--no-plots"]) == 0
+    )
     assoc = pd.read_csv(reg / "associations.csv", dtype={"target": str}, keep_default_na=False)
     given = plots["target"].to_numpy()
     assert (assoc["target"].to_numpy()[given != ""] == given[given != ""]).all()  # ids given are kept

@@ -37,11 +37,20 @@ def bridge_log(tmp_path_factory):
 def test_raw_and_pcap_import_to_identical_folders(asterix_files, tmp_path, capsys):
     files, sites = asterix_files
     for form in ("raw", "pcap", "pcapng"):
-        assert main(["import", "asterix", str(files[form]), "--sites", str(sites), "--out", str(tmp_path / form)]) == 0
+        assert (
+            main(
+                ["import", "asterix", str(files[form]), "--sites", str(sites), "--out", str(tmp_path / form)]
+            )
+            == 0
+        )
     assert "next: registration fleet register --tables" in capsys.readouterr().out
     for name in TABLES:
         raw = (tmp_path / "raw" / f"{name}.csv").read_bytes()
-        assert raw == (tmp_path / "pcap" / f"{name}.csv").read_bytes() == (tmp_path / "pcapng" / f"{name}.csv").read_bytes()
+        assert (
+            raw
+            == (tmp_path / "pcap" / f"{name}.csv").read_bytes()
+            == (tmp_path / "pcapng" / f"{name}.csv").read_bytes()
+        )
     summary = json.loads((tmp_path / "raw" / "import_summary.json").read_text())
     assert summary  # a JSON object
     rejected = pd.read_csv(tmp_path / "pcap" / "rejected.csv")
@@ -52,8 +61,22 @@ def test_parquet_format_and_a_rerun_replaces_the_other_format(asterix_files, tmp
     files, sites = asterix_files
     out = tmp_path / "imp"
     assert main(["import", "asterix", str(files["raw"]), "--sites", str(sites), "--out", str(out)]) == 0
-    assert main(["import", "asterix", str(files["raw"]), "--sites", str(sites), "--out", str(out),
-                 "--format", "parquet"]) == 0
+    assert (
+        main(
+            [
+                "import",
+                "asterix",
+                str(files["raw"]),
+                "--sites",
+                str(sites),
+                "--out",
+                str(out),
+                "--format",
+                "parquet",
+            ]
+        )
+        == 0
+    )
     assert not list(out.glob("*.csv")) or {p.name for p in out.glob("*.csv")} == {"rejected.csv"}
     plots = pd.read_parquet(out / "plots.parquet")
     assert len(plots) > 0 and {"time_s", "sensor", "range_m", "bearing_deg"} <= set(plots.columns)
@@ -67,20 +90,44 @@ def test_a_file_that_is_no_recording_exits_2_and_leaves_out_as_it_was(asterix_fi
     capsys.readouterr()
     assert main(["import", "asterix", str(sites), "--sites", str(sites), "--out", str(out)]) == 2
     err = capsys.readouterr().err
-    assert err.startswith("registration import asterix: error:") and str(sites) in err and err.count("\n") == 1
+    assert (
+        err.startswith("registration import asterix: error:") and str(sites) in err and err.count("\n") == 1
+    )
     assert {p.name: p.read_bytes() for p in out.iterdir()} == before
-    assert main(["import", "asterix", str(tmp_path / "missing.ast"), "--sites", str(sites), "--out", str(out)]) == 2
+    assert (
+        main(["import", "asterix", str(tmp_path / "missing.ast"), "--sites", str(sites), "--out", str(out)])
+        == 2
+    )
 
 
 def test_nmea_import_chains_into_fleet_register(bridge_log, tmp_path):
     log, path, sensors = bridge_log
     out = tmp_path / "imp"
-    assert main(["import", "nmea", str(path), "--platform", "OWN", "--sensors", str(sensors), "--out", str(out)]) == 0
+    assert (
+        main(["import", "nmea", str(path), "--platform", "OWN", "--sensors", str(sensors), "--out", str(out)])
+        == 0
+    )
     assert {f"{t}.csv" for t in TABLES} <= {p.name for p in out.iterdir()}
     platforms = pd.read_csv(out / "platforms.csv")
     assert (platforms[["prior_heading_deg", "prior_pitch_deg", "prior_roll_deg"]] == 0).all(axis=None)
-    assert main(["import", "nmea", str(path), "--platform", "OWN", "--sensors", str(sensors), "--out",
-                 str(tmp_path / "free"), "--prior-heading-deg", "free"]) == 0
+    assert (
+        main(
+            [
+                "import",
+                "nmea",
+                str(path),
+                "--platform",
+                "OWN",
+                "--sensors",
+                str(sensors),
+                "--out",
+                str(tmp_path / "free"),
+                "--prior-heading-deg",
+                "free",
+            ]
+        )
+        == 0
+    )
     assert pd.read_csv(tmp_path / "free" / "platforms.csv")["prior_heading_deg"].isna().all()
     reg = tmp_path / "reg"  # the ARPA's sensor-local tracks are associated to the AIS vessels
     assert main(["fleet", "register", "--tables", str(out), "--out", str(reg), "--no-plots"]) == 0
@@ -92,7 +139,9 @@ def test_nmea_import_chains_into_fleet_register(bridge_log, tmp_path):
     assoc = pd.read_csv(reg / "associations.csv", dtype={"track": str, "target": str}, keep_default_na=False)
     joined = assoc[assoc["target"] != ""]
     assert set(joined["target"]) <= set(log.track_mmsi.values())
-    assert (joined["track"].map(log.track_mmsi) == joined["target"]).all()  # every join is the track's own vessel
+    assert (
+        joined["track"].map(log.track_mmsi) == joined["target"]
+    ).all()  # every join is the track's own vessel
     without_ais = assoc[~assoc["track"].isin(log.track_mmsi)]
     assert len(without_ais) > 0 and (without_ais["target"] == "").all()
     _assert_surface_run(reg)
@@ -107,16 +156,36 @@ def _assert_surface_run(reg):
     summary = json.loads((reg / "summary.json").read_text())
     assert summary["converged"] and summary["iterations"] < 30
     assert not any("no measured height" in w for w in summary["warnings"])
-    assert summary["consistency"]["status"] != "grossly inconsistent" and summary["consistency"]["mean"] > 0.85
+    assert (
+        summary["consistency"]["status"] != "grossly inconsistent" and summary["consistency"]["mean"] > 0.85
+    )
 
 
 def test_nmea_log_without_heading_exits_2(bridge_log, tmp_path, capsys):
     log, path, sensors = bridge_log
-    lines = [ln for ln in path.read_text().splitlines() if not ln.startswith(("$PASHR", "$HEHDT", "$GPHDT", "$HETHS"))]
+    lines = [
+        ln
+        for ln in path.read_text().splitlines()
+        if not ln.startswith(("$PASHR", "$HEHDT", "$GPHDT", "$HETHS"))
+    ]
     bad = tmp_path / "noheading.log"
     bad.write_text("\n".join(lines) + "\n")
-    assert main(["import", "nmea", str(bad), "--platform", "OWN", "--sensors", str(sensors),
-                 "--out", str(tmp_path / "o")]) == 2
+    assert (
+        main(
+            [
+                "import",
+                "nmea",
+                str(bad),
+                "--platform",
+                "OWN",
+                "--sensors",
+                str(sensors),
+                "--out",
+                str(tmp_path / "o"),
+            ]
+        )
+        == 2
+    )
     err = capsys.readouterr().err
     assert "heading" in err and err.count("\n") == 1
     assert not (tmp_path / "o").exists() or not any((tmp_path / "o").iterdir())
@@ -132,13 +201,25 @@ def test_nmea_chain_on_a_log_it_was_not_developed_on(tmp_path):
     from tests.io.nmea.bridgelog import simulate_bridge_log
     from tests.io.nmea.truth import BridgeLogConfig
 
-    config = dataclasses.replace(BridgeLogConfig(), seed=7, bearing_reference="T", distance_unit="K",
-                                 reception_stamp="prefix-unix", n_vessels=12, n_ais=9, range_bias_m=-35.0,
-                                 bearing_bias_rad=float(np.radians(-1.2)), clock_offset_s=-0.5)
+    config = dataclasses.replace(
+        BridgeLogConfig(),
+        seed=7,
+        bearing_reference="T",
+        distance_unit="K",
+        reception_stamp="prefix-unix",
+        n_vessels=12,
+        n_ais=9,
+        range_bias_m=-35.0,
+        bearing_bias_rad=float(np.radians(-1.2)),
+        clock_offset_s=-0.5,
+    )
     log = simulate_bridge_log(config)
     path, sensors = log.write(tmp_path / "b.log"), log.write_sensors(tmp_path / "s.csv")
     out, reg = tmp_path / "imp", tmp_path / "reg"
-    assert main(["import", "nmea", str(path), "--platform", "OWN", "--sensors", str(sensors), "--out", str(out)]) == 0
+    assert (
+        main(["import", "nmea", str(path), "--platform", "OWN", "--sensors", str(sensors), "--out", str(out)])
+        == 0
+    )
     assert main(["fleet", "register", "--tables", str(out), "--out", str(reg), "--no-plots"]) == 0
     est = pd.read_csv(reg / "estimates.csv").set_index(["object", "state"])
     for state, scale in (("range_bias", 1.0), ("bearing_bias", 57.29577951308232), ("time_bias", 1.0)):
@@ -160,14 +241,34 @@ def _heading_run(tmp_path, roll_deg: float, pitch_deg: float, seed: int):
     from tests.io.nmea.bridgelog import simulate_bridge_log
     from tests.io.nmea.truth import BridgeLogConfig
 
-    config = dataclasses.replace(BridgeLogConfig(), seed=seed, heading_error_rad=float(np.radians(1.0)),
-                                 roll_amplitude_rad=float(np.radians(roll_deg)),
-                                 pitch_amplitude_rad=float(np.radians(pitch_deg)))
+    config = dataclasses.replace(
+        BridgeLogConfig(),
+        seed=seed,
+        heading_error_rad=float(np.radians(1.0)),
+        roll_amplitude_rad=float(np.radians(roll_deg)),
+        pitch_amplitude_rad=float(np.radians(pitch_deg)),
+    )
     log = simulate_bridge_log(config)
     path, sensors = log.write(tmp_path / "b.log"), log.write_sensors(tmp_path / "s.csv")
     out, reg = tmp_path / "imp", tmp_path / "reg"
-    assert main(["import", "nmea", str(path), "--platform", "OWN", "--sensors", str(sensors), "--out", str(out),
-                 "--prior-heading-deg", "free"]) == 0
+    assert (
+        main(
+            [
+                "import",
+                "nmea",
+                str(path),
+                "--platform",
+                "OWN",
+                "--sensors",
+                str(sensors),
+                "--out",
+                str(out),
+                "--prior-heading-deg",
+                "free",
+            ]
+        )
+        == 0
+    )
     assert main(["fleet", "register", "--tables", str(out), "--out", str(reg), "--no-plots"]) == 0
     return log, pd.read_csv(reg / "estimates.csv").set_index(["object", "state"])
 
@@ -179,8 +280,10 @@ def test_heading_error_separated_from_the_bearing_bias_by_a_heavy_roll(tmp_path)
     """One radar on one ship: a heading error turns the picture about the vertical, a bearing bias
     about the deck's normal. A heavy roll and pitch (15 deg, 5 deg) tell them apart."""
     log, est = _heading_run(tmp_path, 15.0, 5.0, seed=2)
-    for (obj, state), truth in ((("OWN", "heading_error"), log.errors["OWN:heading_error"]),
-                                (("RADAR", "bearing_bias"), log.errors["RADAR:bearing_bias"])):
+    for (obj, state), truth in (
+        (("OWN", "heading_error"), log.errors["OWN:heading_error"]),
+        (("RADAR", "bearing_bias"), log.errors["RADAR:bearing_bias"]),
+    ):
         row = est.loc[(obj, state)]
         assert abs(row["estimate"] - truth * DEG) < 3.5 * row["sigma"], (state, row["estimate"], row["sigma"])
         assert row["sigma"] < 0.3 and row["status"] == "identifiable", state  # deg
@@ -192,7 +295,10 @@ def test_heading_error_weak_under_a_gentle_roll_and_the_sum_is_given(tmp_path):
     """The default motion (4 deg roll, 1.5 deg pitch) barely tells them apart: both are reported
     weak with honest sigmas (over 0.5 deg), and their sum is given as an identifiable combination."""
     log, est = _heading_run(tmp_path, 4.0, 1.5, seed=2)
-    truth = {"heading_error": log.errors["OWN:heading_error"], "bearing_bias": log.errors["RADAR:bearing_bias"]}
+    truth = {
+        "heading_error": log.errors["OWN:heading_error"],
+        "bearing_bias": log.errors["RADAR:bearing_bias"],
+    }
     for obj, state in (("OWN", "heading_error"), ("RADAR", "bearing_bias")):
         row = est.loc[(obj, state)]
         assert row["status"] == "weak" and row["sigma"] > 0.5, state

@@ -19,8 +19,8 @@ from registration import _codegen
 from registration.landing import (
     LandingGeometry,
     combine,
-    default_geometry,
     deck_to_touchdown_rotation,
+    default_geometry,
     radar_to_touchdown,
     transfer_camera,
     transfer_radar,
@@ -64,7 +64,9 @@ def test_angled_deck_centreline_points_aft_and_to_starboard():
 def test_positive_pitch_lowers_the_stern_so_the_aircraft_appears_higher():
     """The touchdown point is 105 m aft of the motion centre: 0.01 rad bow-up pitch drops it ~1 m,
     so a point fixed in the mean frame is ~1 m higher in the (deck-following) touchdown frame."""
-    p = _codegen.get("landing_mtd2td")(np.zeros(3), [0.0, 0.01, 0.0], GEOM.angled_deck_rad, GEOM.l_touchdown_deck_m)[0][0]
+    p = _codegen.get("landing_mtd2td")(
+        np.zeros(3), [0.0, 0.01, 0.0], GEOM.angled_deck_rad, GEOM.l_touchdown_deck_m
+    )[0][0]
     assert p[2] == pytest.approx(105.0 * np.sin(0.01) + 20.0 * (1 - np.cos(0.01)), abs=1e-3)
 
 
@@ -72,7 +74,9 @@ def test_positive_roll_lowers_starboard():
     """A deck point 10 m to starboard of the touchdown point (camera there) moves down with roll."""
     z = np.zeros(3)
     g = LandingGeometry(0.0, z, z, np.array([10.0, 0.0, 0.0]))
-    polar = _codegen.get("landing_td2ctd")(np.array([1000.0, 0.0, 0.0]), [0.0, 0.0, 0.02], 0.0, g.d_camera_deck_m)[0][0]
+    polar = _codegen.get("landing_td2ctd")(
+        np.array([1000.0, 0.0, 0.0]), [0.0, 0.0, 0.02], 0.0, g.d_camera_deck_m
+    )[0][0]
     assert polar[2] > 0  # the camera went down, so the target is seen higher
 
 
@@ -120,7 +124,9 @@ def test_bma_is_the_product_of_the_papers_three_matrices(approach_points):
     rt = transfer_radar(_radar_polar_of(p, att), np.diag(SIG_R**2), att, GEOM)
     assert rt.BMA == pytest.approx(rt.B @ rt.M @ rt.A, rel=1e-10, abs=1e-14)
     assert rt.M == pytest.approx(deck_to_touchdown_rotation(att, GEOM), abs=1e-15)
-    assert np.einsum("nij,nkj->nik", rt.M, rt.M) == pytest.approx(np.broadcast_to(np.eye(3), rt.M.shape), abs=1e-14)
+    assert np.einsum("nij,nkj->nik", rt.M, rt.M) == pytest.approx(
+        np.broadcast_to(np.eye(3), rt.M.shape), abs=1e-14
+    )
 
 
 # --------------------------------------------------------------------------- error transfer, Monte Carlo
@@ -147,7 +153,9 @@ def test_transferred_radar_covariance_matches_monte_carlo(slant_m):
     P_R = np.diag(SIG_R**2)
     P_R[1, 2] = P_R[2, 1] = 0.3 * SIG_R[1] * SIG_R[2]  # a correlated radar, for generality
     draws = rng.multivariate_normal(polar_true, P_R, N_MC)
-    moved = _codegen.get("landing_radar2ctd")(draws, ATT, GEOM.angled_deck_rad, GEOM.d_radar_deck_m, GEOM.d_camera_deck_m)[0]
+    moved = _codegen.get("landing_radar2ctd")(
+        draws, ATT, GEOM.angled_deck_rad, GEOM.d_radar_deck_m, GEOM.d_camera_deck_m
+    )[0]
     rt = transfer_radar(polar_true, P_R, ATT, GEOM)
     assert _whitened_error(moved, rt.P_ctd[0], angle_cols=(1,)) < TOL
     # negative control: leaving the rotation M out (B A instead of B M A) is detected, by > 25
@@ -228,7 +236,9 @@ def test_methods_camera_and_radar_are_the_two_inputs():
     rt, ct, att, _ = _random_transfers(np.random.default_rng(3), n=20)
     cam = combine(rt, ct, att, GEOM, "camera")
     rad = combine(rt, ct, att, GEOM, "radar")
-    assert cam.polar_ctd[:, 1:] == pytest.approx(ct.angles_ctd) and cam.polar_ctd[:, 0] == pytest.approx(rt.polar_ctd[:, 0])
+    assert cam.polar_ctd[:, 1:] == pytest.approx(ct.angles_ctd) and cam.polar_ctd[:, 0] == pytest.approx(
+        rt.polar_ctd[:, 0]
+    )
     assert rad.p_td == pytest.approx(rt.p_td, abs=1e-8)  # rebuilt through the camera = eq. (7) directly
 
 

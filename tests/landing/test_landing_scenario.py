@@ -64,7 +64,11 @@ def test_simulated_sensor_tracks_have_the_requested_rates_and_clocks():
     assert np.diff(sim.true_t_radar) == pytest.approx(0.05)
     assert np.diff(sim.true_t_camera) == pytest.approx(0.04)
     assert sim.t_camera - sim.true_t_camera == pytest.approx(0.004)
-    assert sim.polar_rdr.shape == (3, sim.t_radar.size, 3) and sim.angles_cam.shape == (3, sim.t_camera.size, 2)
+    assert sim.polar_rdr.shape == (3, sim.t_radar.size, 3) and sim.angles_cam.shape == (
+        3,
+        sim.t_camera.size,
+        2,
+    )
     resid = sim.polar_rdr - sc.truth_radar(sim.true_t_radar)[None]
     assert resid.std(axis=(0, 1)) == pytest.approx(sc.radar.sigma, rel=0.05)
 
@@ -105,9 +109,16 @@ def test_swapped_weights_break_the_ordering():
     res = run_once(sim, sc.config(methods=("camera", "paper")))
     rt, ct = res.radar, res.camera
     swapped = replace(ct, P_ctd=rt.P_ctd[:, 1:, 1:].copy())
-    swapped_rt = replace(rt, P_ctd=np.concatenate(
-        [np.concatenate([rt.P_ctd[:, :1, :1], np.zeros((rt.P_ctd.shape[0], 1, 2))], axis=2),
-         np.concatenate([np.zeros((rt.P_ctd.shape[0], 2, 1)), ct.P_ctd], axis=2)], axis=1))
+    swapped_rt = replace(
+        rt,
+        P_ctd=np.concatenate(
+            [
+                np.concatenate([rt.P_ctd[:, :1, :1], np.zeros((rt.P_ctd.shape[0], 1, 2))], axis=2),
+                np.concatenate([np.zeros((rt.P_ctd.shape[0], 2, 1)), ct.P_ctd], axis=2),
+            ],
+            axis=1,
+        ),
+    )
     att = np.tile(res.attitude, (res.runs, 1))
     bad = combine(swapped_rt, swapped, att, sc.geometry, "paper")
     truth = np.tile(sc.truth_td(res.t), (res.runs, 1))
@@ -171,7 +182,9 @@ def test_cli_rejects_bad_options(tmp_path, capsys):
 def test_process_refuses_bad_tracks_with_the_alignment_messages():
     sc = default_scenario()
     sim = simulate(sc, runs=1, rng=1)
-    args = dict(sigma_rdr=sc.radar.sigma, sigma_cam=sc.camera.sigma, attitude_fn=sc.attitude, geometry=sc.geometry)
+    args = dict(
+        sigma_rdr=sc.radar.sigma, sigma_cam=sc.camera.sigma, attitude_fn=sc.attitude, geometry=sc.geometry
+    )
     t_bad = sim.t_radar.copy()
     t_bad[10] = t_bad[9]
     with pytest.raises(ValueError, match="radar track .*t: duplicate timestamp"):

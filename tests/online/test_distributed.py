@@ -9,9 +9,20 @@ import sys
 import numpy as np
 import pytest
 
-from registration.core.parallel import DASK_MISSING, chunk_ranges, dask_client, map_chunks, require_distributed
+from registration.core.parallel import (
+    DASK_MISSING,
+    chunk_ranges,
+    dask_client,
+    map_chunks,
+    require_distributed,
+)
 from registration.online import RegistrationConfig
-from registration.online.distributed import MonteCarloJob, merge_runs, run_montecarlo_chunked, run_montecarlo_jobs
+from registration.online.distributed import (
+    MonteCarloJob,
+    merge_runs,
+    run_montecarlo_chunked,
+    run_montecarlo_jobs,
+)
 from registration.online.montecarlo import collect_runs, run_montecarlo
 
 ARRAYS = ("rmse", "mean_error", "filter_sigma", "filter_two_sigma_mean", "crlb_sigma", "nees", "nis")
@@ -55,7 +66,9 @@ def test_merge_adds_counts_and_rejects_different_scenarios():
 
 
 def test_jobs_are_independent_of_their_batch():
-    jobs = [MonteCarloJob(4, 0, scenario_kwargs={"n_steps": 20, "angle_sigma": np.radians(s)}) for s in (0.2, 0.5)]
+    jobs = [
+        MonteCarloJob(4, 0, scenario_kwargs={"n_steps": 20, "angle_sigma": np.radians(s)}) for s in (0.2, 0.5)
+    ]
     both = run_montecarlo_jobs(jobs, chunk_runs=3)
     for job, res in zip(jobs, both):
         assert_identical(res, run_montecarlo(4, 0, **job.scenario_kwargs))

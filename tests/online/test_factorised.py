@@ -31,8 +31,14 @@ def _rows(n: int, seed: int = 3) -> np.ndarray:
 
 
 def _inputs(cfg: RegistrationConfig, rows: np.ndarray) -> dict:
-    return {"x": np.zeros(N_STATE), "P": np.diag(np.square(cfg.prior_sigma)), "info": np.zeros((N_STATE, N_STATE)),
-            "Q": np.diag(np.square(cfg.q_sigma)), "row": rows, "sigma0": np.array(cfg.sigma0)}
+    return {
+        "x": np.zeros(N_STATE),
+        "P": np.diag(np.square(cfg.prior_sigma)),
+        "info": np.zeros((N_STATE, N_STATE)),
+        "Q": np.diag(np.square(cfg.q_sigma)),
+        "row": rows,
+        "sigma0": np.array(cfg.sigma0),
+    }
 
 
 def _tolerance(P_pred: np.ndarray) -> np.ndarray:
@@ -71,7 +77,9 @@ def test_each_step_matches_joseph_to_the_conditioning_tolerance(lin):
     d = np.sqrt(np.einsum("kii->ki", ref[1]))
     err = np.max(np.abs(new[1] - ref[1]) / (d[:, :, None] * d[:, None, :]), axis=(1, 2))
     tol = _tolerance(P + inp["Q"])
-    assert np.all(err <= tol), f"worst step {np.argmax(err / tol)}: {err.max():.2e} vs tolerance {tol.min():.2e}"
+    assert np.all(err <= tol), (
+        f"worst step {np.argmax(err / tol)}: {err.max():.2e} vs tolerance {tol.min():.2e}"
+    )
 
 
 def test_register_and_update_run_the_carlson_step():
@@ -92,7 +100,9 @@ def test_stays_positive_definite_over_ill_conditioned_steps():
     every carried P is finite, has a Cholesky factor and a positive diagonal."""
     prior = (1e-9, 1e-9, 1e-9, 1e4, 1e-9, 1e-9) * 2
     cfg = RegistrationConfig(prior_sigma=prior, q_sigma=(0.0,) * N_STATE, covariance_update="carlson")
-    out = _codegen.get(cfg.step_name).scan(ILL_STEPS, STEP_CARRY, _inputs(cfg, _rows(ILL_STEPS)), keep_last=("info_new",))
+    out = _codegen.get(cfg.step_name).scan(
+        ILL_STEPS, STEP_CARRY, _inputs(cfg, _rows(ILL_STEPS)), keep_last=("info_new",)
+    )
     P = out["P_new"]
     assert np.isfinite(P).all() and np.isfinite(out["x_new"]).all()
     assert (np.einsum("kii->ki", P) > 0).all()

@@ -34,11 +34,11 @@ def _map_plots(c, P_pred, sigma0, variant="standard"):
     n, m = 12, 6
     K = np.zeros((n + m + 3, n + m + 3))
     K[:n, :n] = np.linalg.inv(P_pred)
-    K[n:n + m, n:n + m] = np.diag(1.0 / sigma0**2)
-    K[:n, n + m:], K[n:n + m, n + m:] = H.T, M.T
-    K[n + m:, :n], K[n + m:, n:n + m] = H, M
+    K[n : n + m, n : n + m] = np.diag(1.0 / sigma0**2)
+    K[:n, n + m :], K[n : n + m, n + m :] = H.T, M.T
+    K[n + m :, :n], K[n + m :, n : n + m] = H, M
     sol = np.linalg.solve(K, np.concatenate([np.zeros(n + m), Z]))
-    v = sol[n:n + m]
+    v = sol[n : n + m]
     return c[6:9] - v[0:3], c[15:18] - v[3:6], v, Z
 
 
@@ -92,7 +92,9 @@ def test_fitted_step_equals_numpy_composition(variant):
         if k == 13:
             row = _row_seen_near_the_stern(row)
             x[4] = 0.0  # corrected bearing -pi + 1e-3
-        out = dict(zip(step.output_names, (np.squeeze(v) for v in step(x, P, np.zeros((12, 12)), Q, row, sigma0))))
+        out = dict(
+            zip(step.output_names, (np.squeeze(v) for v in step(x, P, np.zeros((12, 12)), Q, row, sigma0)))
+        )
         x_ref, P_ref, nu_ref, S_ref = _fitted_reference(x, P, Q, row, sigma0, variant)
         assert np.abs(out["nu"]).max() < 5e3  # metres: a sane innovation, no 2 pi slip
         assert np.allclose(out["nu"], nu_ref, rtol=1e-7, atol=1e-6), (out["nu"], nu_ref)
@@ -109,7 +111,9 @@ def test_fitted_point_is_the_true_plot_without_noise():
     sigma0 = np.array([50.0, 0.0087, 0.0087] * 2)
     args = (sc.truth_state, np.eye(12), np.zeros((12, 12)), np.zeros((12, 12)), rows[2], sigma0)
     a = dict(zip(["x", "P", "info", "nu", "S", "nis"], _codegen.get("kalman_step_fitted_standard")(*args)))
-    b = dict(zip(["x", "P", "info", "nu", "S", "nis"], _codegen.get("kalman_step_relinearized_standard")(*args)))
+    b = dict(
+        zip(["x", "P", "info", "nu", "S", "nis"], _codegen.get("kalman_step_relinearized_standard")(*args))
+    )
     assert np.abs(np.squeeze(a["nu"])).max() < 1e-5  # metres: the truth explains the data exactly
     assert np.allclose(np.squeeze(a["S"]), np.squeeze(b["S"]), rtol=1e-6)
 
@@ -132,7 +136,9 @@ def test_fitted_point_moves_from_the_corrected_plots_to_the_fused_target_as_p_sh
         Z_t, H_t, _, R_t, _, _ = (np.squeeze(u) for u in pair(*np.split(fitted, 6), sigma0))
         # the generated step linearises at this t: its S is H(t) P H(t)^T + R(t), not the one at c
         x_est = sc.truth_state
-        out = _codegen.get("kalman_step_fitted_standard")(x_est, P, np.zeros((12, 12)), np.zeros((12, 12)), rows[10], sigma0)
+        out = _codegen.get("kalman_step_fitted_standard")(
+            x_est, P, np.zeros((12, 12)), np.zeros((12, 12)), rows[10], sigma0
+        )
         S_step = np.squeeze(out[4])
         assert np.allclose(S_step, H_t @ P @ H_t.T + R_t, rtol=1e-8), (S_step, H_t @ P @ H_t.T + R_t)
         if expect_fused:  # the two radars' plots of one point: Z(t) ~ 0
@@ -169,7 +175,9 @@ def _bias_z_scores(linearization: str, runs: int = 40):
 def test_fitted_linearisation_is_unbiased_and_consistent_where_paper_is_not():
     lo, hi = stats.chi2.ppf([0.005, 0.995], 160)
     z_fit, nees_fit, dof = _bias_z_scores("fitted")
-    assert (np.abs(z_fit) < 3.0).all(), f"fitted: mean error beyond the prior pull, in standard errors: {z_fit}"
+    assert (np.abs(z_fit) < 3.0).all(), (
+        f"fitted: mean error beyond the prior pull, in standard errors: {z_fit}"
+    )
     assert lo <= nees_fit <= hi, f"fitted: NEES sum {nees_fit:.0f} outside [{lo:.0f}, {hi:.0f}] ({dof} dof)"
     # the defect this linearisation removes: the paper's range biases end several standard
     # errors high and its NEES is beyond the 99 % interval (optimistic)

@@ -7,10 +7,16 @@ import json
 import numpy as np
 import pytest
 
-from registration.online.montecarlo import crlb_information, nees_interval, nees_series, parse_sum, run_montecarlo
 from registration.online import RegistrationConfig, register
-from registration.online.scenario import paper_scenario
 from registration.online.contract import N_STATE, STATE_NAMES
+from registration.online.montecarlo import (
+    crlb_information,
+    nees_interval,
+    nees_series,
+    parse_sum,
+    run_montecarlo,
+)
+from registration.online.scenario import paper_scenario
 
 RUNS = 8
 
@@ -66,8 +72,16 @@ def test_crlb_below_filter_sigma_and_shrinking(level):
 def test_crlb_information_matches_the_filter_without_errors():
     """With no biases and no noise, measured == true, so the filter's accumulated information
     (the generated Kalman step) equals the bound's (the generated pseudo-measurement at the truth)."""
-    sc = paper_scenario(0, n_steps=40, range_sigma=0.0, angle_sigma=0.0, range_bias=0.0, angle_bias=0.0,
-                        heading_error=0.0, level_error=0.0)
+    sc = paper_scenario(
+        0,
+        n_steps=40,
+        range_sigma=0.0,
+        angle_sigma=0.0,
+        range_bias=0.0,
+        angle_bias=0.0,
+        heading_error=0.0,
+        level_error=0.0,
+    )
     cfg = RegistrationConfig()
     info = crlb_information(sc, sigma0=cfg.sigma0)
     assert info.shape == (40, N_STATE, N_STATE)
@@ -90,7 +104,10 @@ def test_nees_interval_covers_the_average_of_chi_square_draws_at_its_level():
     lo1, hi1 = nees_interval(1, 1)
     assert lo1 == pytest.approx(0.000982, rel=1e-3) and hi1 == pytest.approx(5.0239, rel=1e-4)
     # more runs, narrower interval around the dimension
-    assert nees_interval(1000, 4)[1] - nees_interval(1000, 4)[0] < nees_interval(100, 4)[1] - nees_interval(100, 4)[0]
+    assert (
+        nees_interval(1000, 4)[1] - nees_interval(1000, 4)[0]
+        < nees_interval(100, 4)[1] - nees_interval(100, 4)[0]
+    )
     with pytest.raises(ValueError):
         nees_interval(0, 3)
 

@@ -23,7 +23,9 @@ def sims():
     return paper_scenarios(SEEDS, **KW)
 
 
-@pytest.mark.parametrize("kwargs", [KW, dict(n_steps=30, dt=1, t_variant="paper", antenna_height=35.0, range_sigma=20.0)])
+@pytest.mark.parametrize(
+    "kwargs", [KW, dict(n_steps=30, dt=1, t_variant="paper", antenna_height=35.0, range_sigma=20.0)]
+)
 def test_scenarios_of_many_seeds_equal_one_scenario_per_seed(kwargs):
     sims = paper_scenarios(SEEDS, **kwargs)
     assert sims.rows.shape == (len(SEEDS), kwargs["n_steps"], len(ROW_COLUMNS))
@@ -44,11 +46,16 @@ def test_scenarios_are_independent_copies_of_the_cached_tracks():
     a.truth["a_plot"][:] = 0.0
     assert b.data["a_lat"][0] != 0.0 and b.truth["a_plot"][0, 0] != 0.0
     assert paper_scenario(0, n_steps=20).data["a_lat"][0] == b.data["a_lat"][0]
-    assert not paper_scenarios((0,), n_steps=20).truth["a_plot"].flags.writeable  # the cache cannot be changed
+    assert (
+        not paper_scenarios((0,), n_steps=20).truth["a_plot"].flags.writeable
+    )  # the cache cannot be changed
 
 
-@pytest.mark.parametrize("config", [RegistrationConfig(), RegistrationConfig(q_mode="adaptive", q_window=5)],
-                         ids=["fixed", "adaptive"])
+@pytest.mark.parametrize(
+    "config",
+    [RegistrationConfig(), RegistrationConfig(q_mode="adaptive", q_window=5)],
+    ids=["fixed", "adaptive"],
+)
 def test_filter_runs_equal_register_per_run(sims, config):
     out = filter_runs(config, sims.rows)
     J = information_at_estimates(sims.rows, out["x"][:, -1], config.sigma0, config.t_variant)
@@ -91,7 +98,8 @@ def test_montecarlo_equals_register_run_by_run():
         P.append(r.covariances)
         nis.append(r.nis)
         assert {q.name for q in res.quantities if q.kind == "identifiable"} <= {
-            n for n, s in r.observability.status.items() if s == "identifiable"}
+            n for n, s in r.observability.status.items() if s == "identifiable"
+        }
     err, P = np.array(err), np.array(P)
     T = np.array([q.direction for q in res.quantities]).reshape(-1, N_STATE)
     e_q = err @ T.T
@@ -101,7 +109,9 @@ def test_montecarlo_equals_register_run_by_run():
     np.testing.assert_array_equal(res.filter_sigma, np.sqrt(np.mean(var_q, axis=0)))
     np.testing.assert_array_equal(res.nis, np.mean(nis, axis=0))
     crlb = crlb_from_information(crlb_information(paper_scenario(SEEDS[0], **KW)), cfg.prior_sigma)
-    np.testing.assert_array_equal(res.crlb_sigma, np.sqrt(np.clip(np.einsum("qi,kij,qj->kq", T, crlb, T), 0.0, None)))
+    np.testing.assert_array_equal(
+        res.crlb_sigma, np.sqrt(np.clip(np.einsum("qi,kij,qj->kq", T, crlb, T), 0.0, None))
+    )
     assert sum(res.status_counts["dr_a"].values()) == len(SEEDS)
 
 
@@ -114,7 +124,13 @@ def test_quadratic_forms_of_states_and_sums_equal_the_einsum(rows):
     T = np.zeros((len(rows), N_STATE))
     for q, idx in enumerate(rows):
         T[q, idx] = 1.0
-    np.testing.assert_array_equal(quadratic_forms(P, T), np.einsum("qi,rkij,pj->rkqp", T, P, T, optimize=True))
-    np.testing.assert_array_equal(quadratic_forms(P, T, diagonal=True), np.einsum("qi,rkij,qj->rkq", T, P, T, optimize=True))
+    np.testing.assert_array_equal(
+        quadratic_forms(P, T), np.einsum("qi,rkij,pj->rkqp", T, P, T, optimize=True)
+    )
+    np.testing.assert_array_equal(
+        quadratic_forms(P, T, diagonal=True), np.einsum("qi,rkij,qj->rkq", T, P, T, optimize=True)
+    )
     W = T * 0.5  # any other direction goes through the einsum
-    np.testing.assert_array_equal(quadratic_forms(P, W), np.einsum("qi,rkij,pj->rkqp", W, P, W, optimize=True))
+    np.testing.assert_array_equal(
+        quadratic_forms(P, W), np.einsum("qi,rkij,pj->rkqp", W, P, W, optimize=True)
+    )

@@ -7,8 +7,8 @@ import pytest
 from scipy import stats
 
 from registration.online import OnlineRegistrar, RegistrationConfig, register, validate_data
-from registration.online.scenario import ShipMotion, paper_scenario
 from registration.online.contract import DATA_COLUMNS, STATE_NAMES
+from registration.online.scenario import ShipMotion, paper_scenario
 
 QUIET = dict(angle_sigma=0.0, range_sigma=0.0)
 SHARP = RegistrationConfig(sigma0=(1.0, 1e-4, 1e-4) * 2, linearization="relinearized")
@@ -72,7 +72,9 @@ def test_noisy_runs_are_consistent_across_seeds():
         total += float(err @ np.linalg.solve(cov, err))
         dof += len(names)
     lo, hi = stats.chi2.ppf([0.005, 0.995], dof)
-    assert lo <= total <= hi, f"NEES sum {total:.1f} outside the 99% interval [{lo:.1f}, {hi:.1f}] for {dof} dof"
+    assert lo <= total <= hi, (
+        f"NEES sum {total:.1f} outside the 99% interval [{lo:.1f}, {hi:.1f}] for {dof} dof"
+    )
 
 
 def test_nis_is_consistent():
@@ -97,17 +99,32 @@ def test_observability_flags_heading_bearing_on_a_level_ship_only():
 
 
 def test_paper_and_relinearized_agree_for_small_biases_and_differ_for_large():
-    small = paper_scenario(ship_motion=ShipMotion(), range_bias=10.0, angle_bias=np.radians(0.01),
-                           heading_error=np.radians(0.002), level_error=np.radians(0.001), **QUIET)
+    small = paper_scenario(
+        ship_motion=ShipMotion(),
+        range_bias=10.0,
+        angle_bias=np.radians(0.01),
+        heading_error=np.radians(0.002),
+        level_error=np.radians(0.001),
+        **QUIET,
+    )
     cfg = dict(sigma0=(1.0, 1e-4, 1e-4) * 2)
     a = register(small.data, RegistrationConfig(linearization="paper", **cfg))
     for lin in ("relinearized", "fitted"):
         b = register(small.data, RegistrationConfig(linearization=lin, **cfg))
-        assert (np.abs(a.final - b.final) < 0.01 * a.final_sigma).all(), (lin, np.abs(a.final - b.final) / a.final_sigma)
+        assert (np.abs(a.final - b.final) < 0.01 * a.final_sigma).all(), (
+            lin,
+            np.abs(a.final - b.final) / a.final_sigma,
+        )
     # Large errors: the paper linearises at the raw measurements, so second-order terms
     # (range x angle error^2 ~ 60 km x (3 deg)^2 / 2 ~ 80 m) stay in its residual.
-    large = paper_scenario(ship_motion=ShipMotion(), range_bias=5000.0, angle_bias=np.radians(3.0),
-                           heading_error=np.radians(0.6), level_error=np.radians(0.2), **QUIET)
+    large = paper_scenario(
+        ship_motion=ShipMotion(),
+        range_bias=5000.0,
+        angle_bias=np.radians(3.0),
+        heading_error=np.radians(0.6),
+        level_error=np.radians(0.2),
+        **QUIET,
+    )
     prior = (np.radians(2),) * 3 + (10000.0,) + (np.radians(6),) * 2
     a = register(large.data, RegistrationConfig(linearization="paper", prior_sigma=prior * 2, **cfg))
     b = register(large.data, RegistrationConfig(linearization="relinearized", prior_sigma=prior * 2, **cfg))
@@ -243,7 +260,11 @@ def test_information_matrix_equals_per_row_solves():
 
 def test_information_at_estimate_compiled_equals_numpy_and_skips_extreme_rows():
     from registration.online.contract import correct_rows
-    from registration.online.information import information_at_estimate, information_skipping_bad_rows, pair_model
+    from registration.online.information import (
+        information_at_estimate,
+        information_skipping_bad_rows,
+        pair_model,
+    )
 
     sc = paper_scenario(seed=2, n_steps=80)
     cfg = RegistrationConfig(sigma0=tuple(sc.sigma0))
@@ -258,15 +279,24 @@ def test_information_at_estimate_compiled_equals_numpy_and_skips_extreme_rows():
     J_bad, used_bad = information_at_estimate(bad, x, cfg.sigma0, cfg.t_variant)
     assert used_bad == 79 and np.isfinite(J_bad).all()
     keep = np.arange(80) != 5
-    assert np.allclose(J_bad, information_at_estimate(rows[keep], x, cfg.sigma0, cfg.t_variant)[0], rtol=1e-10)
+    assert np.allclose(
+        J_bad, information_at_estimate(rows[keep], x, cfg.sigma0, cfg.t_variant)[0], rtol=1e-10
+    )
 
 
 def test_scalars_and_file_columns_get_a_message_that_says_what_to_do():
     scenario = paper_scenario(n_steps=10)
-    with pytest.raises(ValueError, match="column 'time': expected a 1-D array with one value per row, got a single value"):
+    with pytest.raises(
+        ValueError, match="column 'time': expected a 1-D array with one value per row, got a single value"
+    ):
         register({k: float(v[0]) for k, v in scenario.data.items()})
-    file_named = {("time_s" if k == "time" else f"{k}_deg" if k.endswith(("lat", "lon")) else k): v for k, v in scenario.data.items()}
-    with pytest.raises(ValueError, match=r"missing column\(s\).*read the file with registration.recorded.read_table"):
+    file_named = {
+        ("time_s" if k == "time" else f"{k}_deg" if k.endswith(("lat", "lon")) else k): v
+        for k, v in scenario.data.items()
+    }
+    with pytest.raises(
+        ValueError, match=r"missing column\(s\).*read the file with registration.recorded.read_table"
+    ):
         register(file_named)
     with pytest.raises(ValueError, match="column 'a_lat': 10 values, but 'time' has 9"):
         register({**scenario.data, "time": scenario.data["time"][:9]})

@@ -24,7 +24,13 @@ def _rows(scenario) -> np.ndarray:
 
 
 def _state(reg) -> dict:
-    return {"x": reg.x.copy(), "P": reg.P.copy(), "info": reg.info.copy(), "n": reg.n_updates, "t": reg.last_time}
+    return {
+        "x": reg.x.copy(),
+        "P": reg.P.copy(),
+        "info": reg.info.copy(),
+        "n": reg.n_updates,
+        "t": reg.last_time,
+    }
 
 
 def _assert_state(reg, state) -> None:
@@ -32,15 +38,27 @@ def _assert_state(reg, state) -> None:
         np.testing.assert_array_equal(_state(reg)[key], value, err_msg=key)
 
 
-@pytest.mark.parametrize("config", [RegistrationConfig(), RegistrationConfig(linearization="paper", t_variant="paper"),
-                                    RegistrationConfig(q_mode="adaptive", q_window=8)], ids=["fitted", "paper", "adaptive"])
+@pytest.mark.parametrize(
+    "config",
+    [
+        RegistrationConfig(),
+        RegistrationConfig(linearization="paper", t_variant="paper"),
+        RegistrationConfig(q_mode="adaptive", q_window=8),
+    ],
+    ids=["fitted", "paper", "adaptive"],
+)
 def test_update_equals_register_bit_for_bit(scenario, config):
     batch = register(scenario.data, config)
     reg = OnlineRegistrar(config)
     rows = _rows(scenario)
     outs = [reg.update(rows[k], time=float(scenario.data["time"][k])) for k in range(len(rows))]
-    for key, ref in (("x", batch.estimates), ("P", batch.covariances), ("nu", batch.innovations),
-                     ("S", batch.innovation_covariances), ("nis", batch.nis)):
+    for key, ref in (
+        ("x", batch.estimates),
+        ("P", batch.covariances),
+        ("nu", batch.innovations),
+        ("S", batch.innovation_covariances),
+        ("nis", batch.nis),
+    ):
         np.testing.assert_array_equal(np.array([o[key] for o in outs]), ref, err_msg=key)
     np.testing.assert_array_equal(reg.x, batch.final)
     np.testing.assert_array_equal(reg.info, batch.information)
@@ -51,17 +69,25 @@ def test_a_long_stream_keeps_every_row_s_results_the_caller_s(scenario):
     """update() results come in blocks of rows the compiled step fills: over several blocks each
     returned array is still that row's, whatever the caller did to the others."""
     rows = np.tile(_rows(scenario), (3, 1))[:150]
-    data = {"time": np.arange(len(rows), dtype=float), **{c: rows[:, j] for j, c in enumerate(DATA_COLUMNS[1:])}}
+    data = {
+        "time": np.arange(len(rows), dtype=float),
+        **{c: rows[:, j] for j, c in enumerate(DATA_COLUMNS[1:])},
+    }
     batch = register(data)
     reg = OnlineRegistrar()
     outs = [reg.update(row) for row in rows]
     for o in outs[::2]:
         o["x"][:], o["P"][:], o["S"][:] = np.nan, np.nan, np.nan
-    for key, ref in (("x", batch.estimates), ("P", batch.covariances), ("nu", batch.innovations),
-                     ("S", batch.innovation_covariances), ("nis", batch.nis)):
+    for key, ref in (
+        ("x", batch.estimates),
+        ("P", batch.covariances),
+        ("nu", batch.innovations),
+        ("S", batch.innovation_covariances),
+        ("nis", batch.nis),
+    ):
         np.testing.assert_array_equal(np.array([o[key] for o in outs[1::2]]), ref[1::2], err_msg=key)
     np.testing.assert_array_equal(reg.x, batch.final)
-    np.testing.assert_array_equal(reg.state_dict()["window"], batch.estimates[-reg.config.q_window:])
+    np.testing.assert_array_equal(reg.state_dict()["window"], batch.estimates[-reg.config.q_window :])
 
 
 def test_update_then_block_then_update_is_one_run(scenario):
@@ -77,7 +103,7 @@ def test_update_then_block_then_update_is_one_run(scenario):
     np.testing.assert_array_equal(out["x"], batch.final)
     np.testing.assert_array_equal(reg.P, batch.covariances[-1])
     np.testing.assert_array_equal(reg.info, batch.information)
-    np.testing.assert_array_equal(reg.state_dict()["window"], batch.estimates[-reg.config.q_window:])
+    np.testing.assert_array_equal(reg.state_dict()["window"], batch.estimates[-reg.config.q_window :])
 
 
 def test_returned_arrays_are_the_callers_and_the_state_is_read_only(scenario):
@@ -124,7 +150,9 @@ def test_a_subnormal_range_passes_as_in_the_batch(scenario):
     np.testing.assert_array_equal(outs[-1]["x"], block["x"][-1])
 
 
-@pytest.mark.parametrize("column,value", [("a_range", 0.0), ("b_range", -np.inf), ("a_lat", np.nan), ("b_pitch", 2.0)])
+@pytest.mark.parametrize(
+    "column,value", [("a_range", 0.0), ("b_range", -np.inf), ("a_lat", np.nan), ("b_pitch", 2.0)]
+)
 def test_bad_row_raises_value_error_and_a_bad_row_is_named_before_a_bad_time(scenario, column, value):
     rows = _rows(scenario)
     reg = OnlineRegistrar()
@@ -139,9 +167,16 @@ def test_bad_row_raises_value_error_and_a_bad_row_is_named_before_a_bad_time(sce
     _assert_state(reg, before)
 
 
-@pytest.mark.parametrize("time,message", [(10.0, "does not increase"), (np.nan, "not finite"), (np.inf, "not finite"),
-                                          ("soon", "row 1, column 'time': value 'soon' is not a number; expected seconds"),
-                                          ("11.0", "row 1, column 'time': value '11.0' is not a number")])
+@pytest.mark.parametrize(
+    "time,message",
+    [
+        (10.0, "does not increase"),
+        (np.nan, "not finite"),
+        (np.inf, "not finite"),
+        ("soon", "row 1, column 'time': value 'soon' is not a number; expected seconds"),
+        ("11.0", "row 1, column 'time': value '11.0' is not a number"),
+    ],
+)
 def test_bad_time_raises_value_error_and_leaves_the_state(scenario, time, message):
     rows = _rows(scenario)
     reg = OnlineRegistrar()
@@ -174,7 +209,6 @@ def test_a_copied_registrar_continues_like_the_original(scenario):
         np.testing.assert_array_equal(twin.info, reg.info)
 
 
-
 def _row_forms(scenario) -> dict:
     """The scenario's rows as each form update() takes: the contract's array and the mappings users try first."""
     import pandas as pd
@@ -187,8 +221,10 @@ def _row_forms(scenario) -> dict:
         "dict of numpy scalars, time included": [{c: data[c][i] for c in DATA_COLUMNS} for i in range(k)],
         "pandas Series": [r for _, r in frame.iterrows()],
         "dict of one-element lists": [{c: [float(data[c][i])] for c in ROW_COLUMNS} for i in range(k)],
-        "dict of strings and ints": [{c: (repr(float(data[c][i])) if j % 2 else data[c][i]) for j, c in enumerate(ROW_COLUMNS)}
-                                     for i in range(k)],
+        "dict of strings and ints": [
+            {c: (repr(float(data[c][i])) if j % 2 else data[c][i]) for j, c in enumerate(ROW_COLUMNS)}
+            for i in range(k)
+        ],
     }
 
 
@@ -219,12 +255,15 @@ def test_a_series_row_is_read_by_position_not_label_by_label(scenario, monkeypat
     assert calls == []
 
 
-@pytest.mark.parametrize("edit, message", [
-    (lambda m: m.pop("b_roll"), r"row: missing column\(s\) \['b_roll'\]"),
-    (lambda m: m.__setitem__("a_range", "far"), r"row: column 'a_range': expected a number"),
-    (lambda m: m.__setitem__("a_lat", [0.1, 0.2]), r"row: column 'a_lat' holds 2 values"),
-    (lambda m: m.__setitem__("a_lat", 2.0), r"row 0, column 'a_lat': value 2.0 is outside"),
-])
+@pytest.mark.parametrize(
+    "edit, message",
+    [
+        (lambda m: m.pop("b_roll"), r"row: missing column\(s\) \['b_roll'\]"),
+        (lambda m: m.__setitem__("a_range", "far"), r"row: column 'a_range': expected a number"),
+        (lambda m: m.__setitem__("a_lat", [0.1, 0.2]), r"row: column 'a_lat' holds 2 values"),
+        (lambda m: m.__setitem__("a_lat", 2.0), r"row 0, column 'a_lat': value 2.0 is outside"),
+    ],
+)
 def test_a_bad_mapping_row_is_named_as_before(scenario, edit, message):
     row = _row_forms(scenario)["dict of floats"][0]
     edit(row)

@@ -7,9 +7,9 @@ from functools import lru_cache
 import numpy as np
 import pandas as pd
 
-from registration.recorded import to_file_frame
-from registration.online.scenario import ShipMotion, paper_scenario
 from registration.online.contract import IS_ANGLE
+from registration.online.scenario import ShipMotion, paper_scenario
+from registration.recorded import to_file_frame
 
 
 @lru_cache(maxsize=4)
@@ -36,7 +36,9 @@ def tiled(copies: int, n_steps: int = 300) -> pd.DataFrame:
 def estimates_from_file(est: pd.DataFrame) -> np.ndarray:
     """(K, 12) estimates in SI units/radians from an estimates table (degrees, metres)."""
     cols = est.columns[2:-1:2]
-    return np.stack([np.radians(est[c]) if IS_ANGLE[i] else np.asarray(est[c]) for i, c in enumerate(cols)], axis=1)
+    return np.stack(
+        [np.radians(est[c]) if IS_ANGLE[i] else np.asarray(est[c]) for i, c in enumerate(cols)], axis=1
+    )
 
 
 def in_file_units(values: np.ndarray) -> np.ndarray:

@@ -17,8 +17,11 @@ from hypothesis import strategies as st
 
 from registration.io.files.csvrows import SHAPE_COLUMN, RowShape, count_fields, read_csv_blocks
 
-SETTINGS = settings(max_examples=int(__import__("os").environ.get("HYPOTHESIS_EXAMPLES", "60")), deadline=None,
-                    suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(
+    max_examples=int(__import__("os").environ.get("HYPOTHESIS_EXAMPLES", "60")),
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow],
+)
 #: cell text with the characters that matter to a CSV parser (quoted by csv.writer when needed)
 cell = st.text(alphabet=list('ab1.-, "\n\r\t') + ["é"], max_size=6)
 
@@ -79,19 +82,25 @@ def test_short_and_long_lines_are_flagged_and_the_rest_reads_as_pandas_reads_it(
         pd.testing.assert_frame_equal(got.loc[ok, header].reset_index(drop=True), want, check_dtype=False)
 
 
-@pytest.mark.parametrize("text, fields", [
-    (b'a,b\n1,2\n3\n4,5,6\n', [2, 2, 1, 3]),
-    (b'a,b\r\n"x,y",2\r\n  \r\n"line\nbreak",3\r\n', [2, 2, 2]),  # quoted separators, a blank line
-    (b'a,b\n1, "q"\n2,"say ""hi"", ok"\n', [2, 2, 2]),  # a blank before a quote, escaped quotes
-    (b'a,b\nab"c,2\n"x"y,3,4\n', [2, 2, 3]),  # quotes inside unquoted values: counted by the csv module
-    (b'a,b\r1,2\r3\r', [2, 2, 1]),  # lone carriage returns end lines, as for pandas
-    (b'\xef\xbb\xbf"a","b"\n1,2', [2, 2]),  # a byte-order mark, no final line end
-])
+@pytest.mark.parametrize(
+    "text, fields",
+    [
+        (b"a,b\n1,2\n3\n4,5,6\n", [2, 2, 1, 3]),
+        (b'a,b\r\n"x,y",2\r\n  \r\n"line\nbreak",3\r\n', [2, 2, 2]),  # quoted separators, a blank line
+        (b'a,b\n1, "q"\n2,"say ""hi"", ok"\n', [2, 2, 2]),  # a blank before a quote, escaped quotes
+        (b'a,b\nab"c,2\n"x"y,3,4\n', [2, 2, 3]),  # quotes inside unquoted values: counted by the csv module
+        (b"a,b\r1,2\r3\r", [2, 2, 1]),  # lone carriage returns end lines, as for pandas
+        (b'\xef\xbb\xbf"a","b"\n1,2', [2, 2]),  # a byte-order mark, no final line end
+    ],
+)
 def test_counts_match_the_csv_module(text, fields):
     got, blank = count_fields(text)
     assert got[~blank].tolist() == fields
-    rows = [r for r in csv.reader(io.StringIO(text.decode("utf-8-sig"), newline=""), skipinitialspace=True)
-            if r and "".join(r).strip()]
+    rows = [
+        r
+        for r in csv.reader(io.StringIO(text.decode("utf-8-sig"), newline=""), skipinitialspace=True)
+        if r and "".join(r).strip()
+    ]
     assert [len(r) for r in rows] == fields
 
 
@@ -103,22 +112,34 @@ def test_a_file_of_blank_lines_has_no_header(tmp_path):
 
 
 @SETTINGS
-@given(body=st.lists(st.sampled_from(list('a1, "\n\t') + ["\r\n"]), max_size=40).map("".join), block=st.integers(1, 20))
+@given(
+    body=st.lists(st.sampled_from(list('a1, "\n\t') + ["\r\n"]), max_size=40).map("".join),
+    block=st.integers(1, 20),
+)
 def test_any_text_pandas_reads_gives_its_rows(body, block):
     """Arbitrary text, stray quotes included: the rows are the rows pandas finds, or pandas' error."""
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "t.csv"
         path.write_bytes(("h0,h1\n" + body).encode())
         try:
-            want = pd.read_csv(path, header=None, names=range(60), skiprows=1, index_col=False, skipinitialspace=True,
-                               dtype=str)
+            want = pd.read_csv(
+                path,
+                header=None,
+                names=range(60),
+                skiprows=1,
+                index_col=False,
+                skipinitialspace=True,
+                dtype=str,
+            )
         except pd.errors.ParserError:
             with pytest.raises(Exception):
                 list(read_csv_blocks(path, block_bytes=block))
             return
         got = pd.concat(list(read_csv_blocks(path, block_bytes=block)), ignore_index=True)
         assert len(got) == len(want)
-        fields = (want.notna().to_numpy() * np.arange(1, 61)).max(axis=1, initial=0)  # at least the last non-empty
+        fields = (want.notna().to_numpy() * np.arange(1, 61)).max(
+            axis=1, initial=0
+        )  # at least the last non-empty
         if SHAPE_COLUMN in got:
             flagged = got[SHAPE_COLUMN].to_numpy()
             counted = np.array([s.fields if isinstance(s, RowShape) else 2 for s in flagged])

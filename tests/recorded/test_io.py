@@ -11,8 +11,18 @@ import pytest
 from registration.cli import main
 from registration.online.contract import DATA_COLUMNS
 from registration.recorded import (
-    SYNC_COLUMNS, CheckpointError, CsvAppender, FileFormatError, PartsWriter, from_file_frame, iter_frames, load_checkpoint,
-    read_table, save_checkpoint, to_file_frame, write_table,
+    SYNC_COLUMNS,
+    CheckpointError,
+    CsvAppender,
+    FileFormatError,
+    PartsWriter,
+    from_file_frame,
+    iter_frames,
+    load_checkpoint,
+    read_table,
+    save_checkpoint,
+    to_file_frame,
+    write_table,
 )
 
 from ._register_data import frame, scenario
@@ -24,7 +34,9 @@ def test_write_then_read_table_converts_units_only_at_the_boundary(tmp_path, suf
     path = write_table(data, tmp_path / f"t{suffix}")
     raw = pd.read_csv(path) if suffix == ".csv" else pd.read_parquet(path)
     assert tuple(raw.columns) == SYNC_COLUMNS
-    assert np.allclose(raw["a_lat_deg"], np.degrees(data["a_lat"]), rtol=0, atol=0)  # degrees in the file, exactly
+    assert np.allclose(
+        raw["a_lat_deg"], np.degrees(data["a_lat"]), rtol=0, atol=0
+    )  # degrees in the file, exactly
     assert np.array_equal(raw["a_range_m"], data["a_range"])
     back = read_table(path)
     assert tuple(back) == DATA_COLUMNS
@@ -96,8 +108,17 @@ def test_appenders_cut_back_to_a_recorded_length(tmp_path):
 def test_checkpoints_are_exact_and_damage_is_detected(tmp_path):
     path = tmp_path / "c.json"
     rng = np.random.default_rng(1)
-    state = {"x": rng.normal(size=12) * 1e-7, "P": rng.normal(size=(12, 12)), "n": 12345678901234,
-             "t": 0.1 + 0.2, "none": None, "tiny": 5e-324, "neg0": -0.0, "names": ["a", "b"], "nested": {"w": np.zeros((0, 12))}}
+    state = {
+        "x": rng.normal(size=12) * 1e-7,
+        "P": rng.normal(size=(12, 12)),
+        "n": 12345678901234,
+        "t": 0.1 + 0.2,
+        "none": None,
+        "tiny": 5e-324,
+        "neg0": -0.0,
+        "names": ["a", "b"],
+        "nested": {"w": np.zeros((0, 12))},
+    }
     save_checkpoint(path, state)
     back = load_checkpoint(path)
     assert np.array_equal(back["x"], state["x"]) and np.array_equal(back["P"], state["P"])
@@ -140,6 +161,9 @@ def test_a_csv_line_with_an_extra_field_is_a_bad_row_wherever_it_stands(tmp_path
     lines = frame(60).to_csv(index=False).splitlines()
     lines[line] += ",1.0"
     path.write_text("\n".join(lines) + "\n")
-    with pytest.raises(BadRowError, match=rf"row {line - 1}, column '\*': line {line + 1} has 20 fields, the header "
-                                          r"19: .* \[long_row\]"):
+    with pytest.raises(
+        BadRowError,
+        match=rf"row {line - 1}, column '\*': line {line + 1} has 20 fields, the header "
+        r"19: .* \[long_row\]",
+    ):
         read_table(path)

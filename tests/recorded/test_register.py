@@ -24,8 +24,32 @@ def _run(*args):
 @pytest.mark.parametrize("suffix", [".csv", ".parquet"])
 def test_simulate_export_then_register_recovers_the_python_api(tmp_path, suffix, capsys):
     exported = tmp_path / f"example{suffix}"
-    assert main(["simulate", "--steps", "300", "--no-plots", "--out", str(tmp_path / "sim"), "--export", str(exported)]) == 0
-    assert _run(exported, "--out", tmp_path / "reg", "--chunk-rows", "64", *(["--no-progress"] if suffix == ".csv" else FAST)) == 0
+    assert (
+        main(
+            [
+                "simulate",
+                "--steps",
+                "300",
+                "--no-plots",
+                "--out",
+                str(tmp_path / "sim"),
+                "--export",
+                str(exported),
+            ]
+        )
+        == 0
+    )
+    assert (
+        _run(
+            exported,
+            "--out",
+            tmp_path / "reg",
+            "--chunk-rows",
+            "64",
+            *(["--no-progress"] if suffix == ".csv" else FAST),
+        )
+        == 0
+    )
     text = capsys.readouterr().out
     assert "UNOBSERVABLE" in text and "not a converged estimate" in text
     est = pd.read_csv(tmp_path / "reg" / "estimates.csv")
@@ -44,17 +68,37 @@ def test_simulate_export_then_register_recovers_the_python_api(tmp_path, suffix,
         for stat in ("max", "mean", "std"):
             assert np.allclose(summary[key][stat], stats[key][stat], rtol=1e-9), (key, stat)
     assert summary["observability"]["unobservable"] == api.observability.to_json()["unobservable"]
-    assert np.allclose(summary["observability"]["singular_values"], api.observability.singular_values, rtol=1e-6, atol=1e-9)
-    assert [e["status"] for e in summary["estimates"][:12]] == [api.observability.status[n] for n in summary["state_names"]]
+    assert np.allclose(
+        summary["observability"]["singular_values"], api.observability.singular_values, rtol=1e-6, atol=1e-9
+    )
+    assert [e["status"] for e in summary["estimates"][:12]] == [
+        api.observability.status[n] for n in summary["state_names"]
+    ]
     pos = pd.read_csv(tmp_path / "reg" / "positions.csv")
     assert np.array_equal(pos[["a_ecef_x_m", "a_ecef_y_m", "a_ecef_z_m"]].to_numpy(), api.corrected_a_ecef)
-    assert np.array_equal(pos[["diff_raw_x_m", "diff_raw_y_m", "diff_raw_z_m"]].to_numpy(), api.raw_difference_ecef)
+    assert np.array_equal(
+        pos[["diff_raw_x_m", "diff_raw_y_m", "diff_raw_z_m"]].to_numpy(), api.raw_difference_ecef
+    )
 
 
 def test_parquet_outputs_adaptive_q_and_plots(tmp_path):
     inp = tmp_path / "in.parquet"
     frame(120, motion=True).to_parquet(inp, index=False)
-    assert _run(inp, "--out", tmp_path / "reg", "--format", "parquet", "--q-mode", "adaptive", "--chunk-rows", "50", "--no-progress") == 0
+    assert (
+        _run(
+            inp,
+            "--out",
+            tmp_path / "reg",
+            "--format",
+            "parquet",
+            "--q-mode",
+            "adaptive",
+            "--chunk-rows",
+            "50",
+            "--no-progress",
+        )
+        == 0
+    )
     est = pd.read_parquet(tmp_path / "reg" / "estimates.parquet")
     assert len(est) == 120 and est["row"].tolist() == list(range(120))
     api = register(read_table(inp), RegistrationConfig(q_mode="adaptive"))
@@ -110,7 +154,12 @@ def test_every_bad_row_reason_in_skip_mode_accounts_for_every_row(tmp_path, suff
     for (row, col, _, code, text), r in zip(BAD, rej.itertuples()):
         assert (r.column, r.reason_code) == (col, code) and text in r.reason, r
         assert r.file == str(inp) and json.loads(r.values)["time_s"] is not None
-    assert {b[3] for b in BAD} == set(REASON_CODES) - {"missing_column", "filter_non_finite", "short_row", "long_row"}
+    assert {b[3] for b in BAD} == set(REASON_CODES) - {
+        "missing_column",
+        "filter_non_finite",
+        "short_row",
+        "long_row",
+    }
     summary = json.loads((tmp_path / "reg" / "summary.json").read_text())
     assert summary["rows"]["read"] == n and summary["rows"]["accepted"] + summary["rows"]["rejected"] == n
     # the accepted rows give the same estimates as the API fed with exactly those rows
@@ -120,7 +169,9 @@ def test_every_bad_row_reason_in_skip_mode_accounts_for_every_row(tmp_path, suff
 
 
 @pytest.mark.parametrize("row,column,value,code,text", BAD)
-def test_every_bad_row_reason_in_stop_mode_names_file_row_and_column(tmp_path, capsys, row, column, value, code, text):
+def test_every_bad_row_reason_in_stop_mode_names_file_row_and_column(
+    tmp_path, capsys, row, column, value, code, text
+):
     f = frame(60).astype(object)
     f.loc[row, column] = f.loc[row - 1, "time_s"] if value is None else value
     inp = tmp_path / "bad.csv"
@@ -168,14 +219,21 @@ def test_a_line_with_fewer_or_more_fields_than_the_header_is_a_bad_row(tmp_path,
     _cut_lines(inp, {row: edit for row, (edit, *_) in SHAPES.items()})
     assert _run(inp, "--out", tmp_path / "stop", *FAST) == 2
     err = capsys.readouterr().err
-    assert f"{inp}: row 12, column 'a_pitch_deg': line 14 has 5 fields, the header 19" in err and "[short_row]" in err
+    assert (
+        f"{inp}: row 12, column 'a_pitch_deg': line 14 has 5 fields, the header 19" in err
+        and "[short_row]" in err
+    )
     assert _run(inp, "--out", tmp_path / "reg", "--on-bad-row", "skip", *FAST) == 0
     rej = pd.read_csv(tmp_path / "reg" / "rejected.csv")
-    assert [(r.row, r.column, r.reason_code) for r in rej.itertuples()] == [(row, c, code) for row, (_, c, code, _) in SHAPES.items()]
+    assert [(r.row, r.column, r.reason_code) for r in rej.itertuples()] == [
+        (row, c, code) for row, (_, c, code, _) in SHAPES.items()
+    ]
     for row, (_, _, _, fields) in SHAPES.items():
         assert f"line {row + 2} has {fields} fields, the header 19" in rej.set_index("row").loc[row, "reason"]
     est = pd.read_csv(tmp_path / "reg" / "estimates.csv")
-    api = register(from_file_frame(frame(60).drop(index=list(SHAPES)).reset_index(drop=True)), RegistrationConfig())
+    api = register(
+        from_file_frame(frame(60).drop(index=list(SHAPES)).reset_index(drop=True)), RegistrationConfig()
+    )
     assert np.array_equal(file_estimates(est), in_file_units(api.estimates))
 
 
@@ -219,7 +277,9 @@ def test_validate_only_reports_without_estimating(tmp_path, capsys):
 
 # ----------------------------------------------------------------------------- checkpoints
 def _checkpointed(tmp_path, inp, ckpt, *extra):
-    return _run(inp, "--out", tmp_path / "reg", "--checkpoint", ckpt, "--checkpoint-every", "40", *FAST, *extra)
+    return _run(
+        inp, "--out", tmp_path / "reg", "--checkpoint", ckpt, "--checkpoint-every", "40", *FAST, *extra
+    )
 
 
 def test_damaged_checkpoints_give_a_clear_error_never_a_silent_restart(tmp_path, capsys):

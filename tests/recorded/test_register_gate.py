@@ -77,7 +77,11 @@ def test_every_angle_in_radians_also_names_the_positions(tmp_path, capsys):
     _in_radians(frame(300), ALL_ANGLES).to_csv(inp, index=False)
     assert _run(inp, "--out", tmp_path / "reg", *FAST) == EXIT_INCONSISTENT
     err = capsys.readouterr().err
-    assert CAUSE in err and "columns 'a_lat_deg' and 'a_lon_deg'" in err and "columns 'b_lat_deg' and 'b_lon_deg'" in err
+    assert (
+        CAUSE in err
+        and "columns 'a_lat_deg' and 'a_lon_deg'" in err
+        and "columns 'b_lat_deg' and 'b_lon_deg'" in err
+    )
 
 
 def test_sigmas_in_radians_given_to_a_degree_option_exit_3(tmp_path, capsys):
@@ -86,20 +90,24 @@ def test_sigmas_in_radians_given_to_a_degree_option_exit_3(tmp_path, capsys):
     assert _run(inp, "--out", tmp_path / "reg", "--sigma", "50,0.008,0.008", *FAST) == EXIT_INCONSISTENT
     err = capsys.readouterr().err
     assert "noise sigmas in the wrong unit" in err and "mean NIS" in err
-    assert "warning" not in err.replace("warning: inconsistent", "")  # the columns are right: no column warning
+    assert "warning" not in err.replace(
+        "warning: inconsistent", ""
+    )  # the columns are right: no column warning
 
 
 def test_the_unit_warning_needs_enough_values_and_skips_angles_that_are_small_in_degrees(tmp_path):
     f = frame(300)
     small = tmp_path / "small.csv"
-    _in_radians(f.iloc[:MIN_VALUES - 1], ALL_ANGLES).to_csv(small, index=False)
+    _in_radians(f.iloc[: MIN_VALUES - 1], ALL_ANGLES).to_csv(small, index=False)
     assert angle_unit_warnings(small, sync_layout()) == []  # too few rows to judge
     enough = tmp_path / "enough.csv"
     _in_radians(f.iloc[:MIN_VALUES], ALL_ANGLES).to_csv(enough, index=False)
     assert len(angle_unit_warnings(enough, sync_layout())) == 6
     # elevation, pitch and roll of a few degrees are normal: never a warning, whatever their unit
     low = tmp_path / "low.csv"
-    _in_radians(f, [c for c in ALL_ANGLES if c.split("_")[1] in ("elevation", "pitch", "roll")]).to_csv(low, index=False)
+    _in_radians(f, [c for c in ALL_ANGLES if c.split("_")[1] in ("elevation", "pitch", "roll")]).to_csv(
+        low, index=False
+    )
     assert angle_unit_warnings(low, sync_layout()) == []
     # a ship near the equator is not a ship in radians (its longitude is far from 0)
     equator = f.copy()
@@ -127,7 +135,10 @@ def test_every_row_rejected_names_the_reasons_with_counts(tmp_path, capsys):
     f.to_csv(inp, index=False)
     assert _run(inp, "--out", tmp_path / "reg", "--on-bad-row", "skip", *FAST) == EXIT_BAD_INPUT
     err = capsys.readouterr().err
-    assert "all 20 rows rejected (20 non_positive_range)" in err and "the first at row 0, column 'a_range_m'" in err
+    assert (
+        "all 20 rows rejected (20 non_positive_range)" in err
+        and "the first at row 0, column 'a_range_m'" in err
+    )
 
 
 def test_out_naming_an_existing_file_is_one_line_naming_it(tmp_path, capsys):
@@ -145,7 +156,9 @@ def _register_options():
 
     from registration.cli import build_parser
 
-    sub = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction)).choices["register"]
+    sub = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction)).choices[
+        "register"
+    ]
     return [a for a in sub._actions if a.option_strings and not isinstance(a, argparse._HelpAction)]
 
 
@@ -174,7 +187,13 @@ def test_ctrl_c_says_where_the_outputs_are(tmp_path):
 
     from registration.cli.register import interrupt_hint
 
-    ckpt = interrupt_hint(argparse.Namespace(out=tmp_path / "reg", checkpoint=tmp_path / "run.ckpt", validate_only=False))
-    assert "rerun the same command to resume" in ckpt and str(tmp_path / "run.ckpt") in ckpt and "partial-" in ckpt
+    ckpt = interrupt_hint(
+        argparse.Namespace(out=tmp_path / "reg", checkpoint=tmp_path / "run.ckpt", validate_only=False)
+    )
+    assert (
+        "rerun the same command to resume" in ckpt
+        and str(tmp_path / "run.ckpt") in ckpt
+        and "partial-" in ckpt
+    )
     plain = interrupt_hint(argparse.Namespace(out=tmp_path / "reg", checkpoint=None, validate_only=False))
     assert "nothing was written" in plain and "--checkpoint" in plain

@@ -15,11 +15,11 @@ import sys
 import pandas as pd
 import pytest
 
-import registration.recorded.run.filtering as filtering
 import registration.io.output.outfolder as outfolder
+import registration.recorded.run.filtering as filtering
 from registration.cli import main
-from registration.recorded import OUTPUT_NAMES, RunOptions, load_checkpoint, run_register
 from registration.io.output.outfolder import MARKER, RunFolder, prepare_out, publish
+from registration.recorded import OUTPUT_NAMES, RunOptions, load_checkpoint, run_register
 
 from ._register_data import frame
 from .test_register_async import write_async
@@ -67,7 +67,9 @@ def test_a_failed_run_leaves_the_earlier_run_untouched(tmp_path, capsys, mistake
         f.loc[40, "a_range_m"] = -1.0
         f.to_csv(bad, index=False)
     elif mistake == "unreadable":
-        bad.write_text(f.to_csv(index=False) + "1,2,3," * 10 + "\n")  # a malformed line: the file cannot be read
+        bad.write_text(
+            f.to_csv(index=False) + "1,2,3," * 10 + "\n"
+        )  # a malformed line: the file cannot be read
     else:
         f.iloc[:0].to_csv(bad, index=False)
     assert _run(bad, "--out", out, *FAST) == 2
@@ -93,13 +95,22 @@ def test_every_row_rejected_replaces_the_earlier_run_whole(tmp_path, good_templa
 def test_a_synchronous_run_after_an_asynchronous_one_removes_the_pairing_files(tmp_path):
     _, paths, nav, _ = write_async(tmp_path)
     out = tmp_path / "reg"
-    assert main(["register", *map(str, paths[:2]), *nav, "--clock-offset-b", "0.3", "--out", str(out), *FAST]) == 0
+    assert (
+        main(["register", *map(str, paths[:2]), *nav, "--clock-offset-b", "0.3", "--out", str(out), *FAST])
+        == 0
+    )
     assert {"paired.csv", "pairing.json", "unpaired.csv"} <= {p.name for p in out.iterdir()}
     (out / "my_notes.txt").write_text("kept\n")  # not a file a run writes: never touched
     sync = tmp_path / "sync.csv"
     frame(60).to_csv(sync, index=False)
     assert _run(sync, "--out", out, *FAST) == 0
-    assert {p.name for p in out.iterdir()} == {"estimates.csv", "positions.csv", "rejected.csv", "summary.json", "my_notes.txt"}
+    assert {p.name for p in out.iterdir()} == {
+        "estimates.csv",
+        "positions.csv",
+        "rejected.csv",
+        "summary.json",
+        "my_notes.txt",
+    }
     assert (out / "my_notes.txt").read_text() == "kept\n"
     assert json.loads((out / "summary.json").read_text())["form"] == "synchronous"
 
@@ -108,15 +119,33 @@ def test_a_rerun_with_the_same_pairing_takes_it_over_without_duplicating_rejecte
     _, paths, nav, _ = write_async(tmp_path)
     b = pd.read_parquet(paths[1])
     b.loc[7, "b_range_m"] = -5.0  # a bad plot row: the pairing's part of rejected.csv
-    b.loc[20, "b_range_m"] = 1e300  # valid, but no finite filter step at the instants next to it: the filter's part
+    b.loc[20, "b_range_m"] = (
+        1e300  # valid, but no finite filter step at the instants next to it: the filter's part
+    )
     b.to_parquet(paths[1], index=False)
     out = tmp_path / "reg"
-    args = ["register", *map(str, paths[:2]), *nav, "--clock-offset-b", "0.3", "--on-bad-row", "skip", "--out", str(out), *FAST]
+    args = [
+        "register",
+        *map(str, paths[:2]),
+        *nav,
+        "--clock-offset-b",
+        "0.3",
+        "--on-bad-row",
+        "skip",
+        "--out",
+        str(out),
+        *FAST,
+    ]
     assert main(args) == 0
     first = _snapshot(out)
     rejected = pd.read_csv(out / "rejected.csv")
-    assert rejected["reason_code"].tolist()[0] == "non_positive_range" and "filter_non_finite" in set(rejected["reason_code"])
-    assert set(rejected["file"]) == {str(paths[1]), str(out / "paired.csv")}  # the table by its published name
+    assert rejected["reason_code"].tolist()[0] == "non_positive_range" and "filter_non_finite" in set(
+        rejected["reason_code"]
+    )
+    assert set(rejected["file"]) == {
+        str(paths[1]),
+        str(out / "paired.csv"),
+    }  # the table by its published name
     capsys.readouterr()
     assert main(args) == 0
     assert "reusing the pairing" in capsys.readouterr().err
@@ -127,14 +156,23 @@ def test_a_rerun_with_the_same_pairing_takes_it_over_without_duplicating_rejecte
 
 def _interrupt_pass_2(monkeypatch):
     """Ctrl-C during the second pass (information matrix), after the filter pass was checkpointed."""
+
     def stop(*args, **kwargs):
         raise KeyboardInterrupt
+
     monkeypatch.setattr(filtering, "information_at_estimate", stop)
 
 
 def _options(out, ckpt=None):
-    return RunOptions(out=out, checkpoint=ckpt, checkpoint_every=40, chunk_rows=40, plots=False, progress=False,
-                      log=lambda m: None)
+    return RunOptions(
+        out=out,
+        checkpoint=ckpt,
+        checkpoint_every=40,
+        chunk_rows=40,
+        plots=False,
+        progress=False,
+        log=lambda m: None,
+    )
 
 
 def test_an_interrupted_run_without_checkpoint_changes_nothing(tmp_path, monkeypatch, good_template):
@@ -148,7 +186,9 @@ def test_an_interrupted_run_without_checkpoint_changes_nothing(tmp_path, monkeyp
     assert _snapshot(out) == before and not list(out.glob("partial-*"))
 
 
-def test_a_checkpointed_run_stopped_half_way_is_marked_and_resumes_into_place(tmp_path, monkeypatch, good_template):
+def test_a_checkpointed_run_stopped_half_way_is_marked_and_resumes_into_place(
+    tmp_path, monkeypatch, good_template
+):
     inp, out = _good_run(tmp_path, good_template)
     before = _snapshot(out)
     other, ckpt = tmp_path / "other.csv", tmp_path / "run.ckpt"
@@ -232,6 +272,21 @@ def test_the_names_a_run_may_replace_are_those_it_writes(tmp_path):
     """Every file of a full asynchronous run with plots is in OUTPUT_NAMES, so none is left behind."""
     _, paths, nav, _ = write_async(tmp_path)
     out = tmp_path / "reg"
-    assert main(["register", *map(str, paths[:2]), *nav, "--clock-offset-b", "0.3", "--out", str(out),
-                 "--format", "parquet", "--no-progress"]) == 0
+    assert (
+        main(
+            [
+                "register",
+                *map(str, paths[:2]),
+                *nav,
+                "--clock-offset-b",
+                "0.3",
+                "--out",
+                str(out),
+                "--format",
+                "parquet",
+                "--no-progress",
+            ]
+        )
+        == 0
+    )
     assert {p.name for p in out.iterdir()} <= OUTPUT_NAMES

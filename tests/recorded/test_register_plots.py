@@ -6,8 +6,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-import registration.recorded.run.filtering as filtering
 import registration.recorded.output.plots as plots
+import registration.recorded.run.filtering as filtering
 import registration.recorded.run.runner as runner
 from registration.recorded import RunOptions, run_register
 from registration.recorded.output.plotseries import SERIES_FIELDS, PlotSeries, plot_step
@@ -17,14 +17,26 @@ from ._register_data import frame
 
 def _feed(series: PlotSeries, n: int, sizes) -> None:
     rng = np.random.default_rng(1)
-    data = {"time": np.arange(n, dtype=float), "x": rng.normal(size=(n, 12)), "raw_diff": rng.normal(size=(n, 3)),
-            "rows": rng.normal(size=(n, 18))}
+    data = {
+        "time": np.arange(n, dtype=float),
+        "x": rng.normal(size=(n, 12)),
+        "raw_diff": rng.normal(size=(n, 3)),
+        "rows": rng.normal(size=(n, 18)),
+    }
     P = np.broadcast_to(np.eye(12), (n, 12, 12)) * (1.0 + np.arange(n))[:, None, None]
     start = 0
     for size in sizes:
         s = slice(start, min(start + size, n))
-        series.add(data["time"][s], data["x"][s], P[s], data["raw_diff"][s], -data["raw_diff"][s],
-                   data["raw_diff"][s] * 2, data["raw_diff"][s] * 3, data["rows"][s])
+        series.add(
+            data["time"][s],
+            data["x"][s],
+            P[s],
+            data["raw_diff"][s],
+            -data["raw_diff"][s],
+            data["raw_diff"][s] * 2,
+            data["raw_diff"][s] * 3,
+            data["rows"][s],
+        )
         start = s.stop
         if start >= n:
             break
@@ -62,12 +74,21 @@ def test_a_resumed_run_plots_the_points_of_an_uninterrupted_one(tmp_path, monkey
     f.to_csv(inp, index=False)
 
     def options(out, ckpt=None):
-        return RunOptions(out=out, checkpoint=ckpt, checkpoint_every=64, chunk_rows=64, on_bad_row="skip",
-                          progress=False, log=lambda m: None)
+        return RunOptions(
+            out=out,
+            checkpoint=ckpt,
+            checkpoint_every=64,
+            chunk_rows=64,
+            on_bad_row="skip",
+            progress=False,
+            log=lambda m: None,
+        )
 
     run_register([inp], options(tmp_path / "ref"))
     with monkeypatch.context() as m:  # stopped in the second pass: the resumed run has no series in memory
-        m.setattr(filtering, "information_at_estimate", lambda *a, **k: (_ for _ in ()).throw(KeyboardInterrupt))
+        m.setattr(
+            filtering, "information_at_estimate", lambda *a, **k: (_ for _ in ()).throw(KeyboardInterrupt)
+        )
         with pytest.raises(KeyboardInterrupt):
             run_register([inp], options(tmp_path / "run", tmp_path / "run.ckpt"))
     run_register([inp], options(tmp_path / "run", tmp_path / "run.ckpt"))

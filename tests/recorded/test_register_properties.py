@@ -19,16 +19,29 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from registration.recorded import SYNC_COLUMNS, BadRowError, FileFormatError, RunOptions, check_frame, iter_frames, run_register, sync_layout
+from registration.recorded import (
+    SYNC_COLUMNS,
+    BadRowError,
+    FileFormatError,
+    RunOptions,
+    check_frame,
+    iter_frames,
+    run_register,
+    sync_layout,
+)
 
 from ._register_data import frame
 
-SETTINGS = settings(max_examples=int(__import__("os").environ.get("HYPOTHESIS_EXAMPLES", "40")), deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(
+    max_examples=int(__import__("os").environ.get("HYPOTHESIS_EXAMPLES", "40")),
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow],
+)
 
 cells = st.one_of(
     st.floats(allow_nan=True, allow_infinity=True),
     st.floats(min_value=-400, max_value=400),
-    st.integers(min_value=-10**20, max_value=10**20),
+    st.integers(min_value=-(10**20), max_value=10**20),
     st.text(max_size=6),
     st.booleans(),
     st.none(),
@@ -37,7 +50,9 @@ cells = st.one_of(
 
 @st.composite
 def arbitrary_tables(draw):
-    columns = draw(st.lists(st.sampled_from(list(SYNC_COLUMNS) + ["extra", "time"]), unique=True, max_size=22))
+    columns = draw(
+        st.lists(st.sampled_from(list(SYNC_COLUMNS) + ["extra", "time"]), unique=True, max_size=22)
+    )
     n = draw(st.integers(min_value=0, max_value=12))
     data = {c: draw(st.lists(cells, min_size=n, max_size=n)) for c in columns}
     return pd.DataFrame(data, columns=columns)
@@ -58,7 +73,9 @@ def test_reader_and_validator_accept_or_reject_every_row_and_raise_only_document
         _write(df, path)
         if suffix == ".csv" and not len(df.columns):
             # the only table that cannot be read: a CSV without a header line; the error names the file
-            with pytest.raises(FileFormatError, match=f"^{re.escape(str(path))}: the file is empty: no header line"):
+            with pytest.raises(
+                FileFormatError, match=f"^{re.escape(str(path))}: the file is empty: no header line"
+            ):
                 list(iter_frames(path, SYNC_COLUMNS, chunk))
             return
         blocks = list(iter_frames(path, SYNC_COLUMNS, chunk))  # every other table is read
@@ -74,14 +91,18 @@ def test_reader_and_validator_accept_or_reject_every_row_and_raise_only_document
             for r in blk.rejections:
                 assert r.reason and r.code and json.loads(r.values) is not None
         # the rows a CSV parser sees (a bare carriage return inside a text cell ends a record)
-        expected = len(pd.read_csv(path, index_col=False, skipinitialspace=True)) if suffix == ".csv" else len(df)
+        expected = (
+            len(pd.read_csv(path, index_col=False, skipinitialspace=True)) if suffix == ".csv" else len(df)
+        )
         assert accepted + len(rejected) == seen == expected
         assert len(set(rejected)) == len(rejected)
         # stop mode: the first bad row, or nothing
         try:
             last = None
             for first, f in blocks:
-                last = check_frame(f, sync_layout(), str(path), first_row=first, mode="stop", last_time=last).last_time
+                last = check_frame(
+                    f, sync_layout(), str(path), first_row=first, mode="stop", last_time=last
+                ).last_time
             assert not rejected
         except BadRowError as exc:
             assert exc.row == min(rejected) and str(path) in str(exc)
@@ -89,7 +110,9 @@ def test_reader_and_validator_accept_or_reject_every_row_and_raise_only_document
 
 extreme = st.one_of(
     st.floats(allow_nan=True, allow_infinity=True),
-    st.sampled_from([0.0, -0.0, 90.0, -90.0, 89.999999, 180.0, -180.0, 360.0, 1e-300, 5e-324, 1e300, 1e6, -12000.0, 1e-9]),
+    st.sampled_from(
+        [0.0, -0.0, 90.0, -90.0, 89.999999, 180.0, -180.0, 360.0, 1e-300, 5e-324, 1e300, 1e6, -12000.0, 1e-9]
+    ),
     st.text(max_size=3),
 )
 
@@ -106,15 +129,26 @@ def near_valid_tables(draw):
 
 
 @SETTINGS
-@given(df=near_valid_tables(), q_mode=st.sampled_from(["fixed", "adaptive"]), lin=st.sampled_from(["paper", "relinearized"]))
+@given(
+    df=near_valid_tables(),
+    q_mode=st.sampled_from(["fixed", "adaptive"]),
+    lin=st.sampled_from(["paper", "relinearized"]),
+)
 def test_runner_never_lets_the_filter_state_become_non_finite(df, q_mode, lin):
     from registration.online import RegistrationConfig
 
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "t.csv"
         df.to_csv(path, index=False)
-        options = RunOptions(out=Path(tmp) / "out", config=RegistrationConfig(q_mode=q_mode, linearization=lin),
-                             on_bad_row="skip", chunk_rows=5, plots=False, progress=False, log=lambda m: None)
+        options = RunOptions(
+            out=Path(tmp) / "out",
+            config=RegistrationConfig(q_mode=q_mode, linearization=lin),
+            on_bad_row="skip",
+            chunk_rows=5,
+            plots=False,
+            progress=False,
+            log=lambda m: None,
+        )
         n = len(pd.read_csv(path, index_col=False, skipinitialspace=True))  # as a CSV parser sees it
         try:
             summary = run_register([path], options)

@@ -12,8 +12,8 @@ from pathlib import Path
 
 import pytest
 
-from registration.recorded import CheckpointError, load_checkpoint
 from registration.cli import main
+from registration.recorded import CheckpointError, load_checkpoint
 
 from ._register_data import tiled
 
@@ -21,14 +21,32 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def _command(inp, out, ckpt):
-    return ["register", str(inp), "--out", str(out), "--checkpoint", str(ckpt), "--checkpoint-every", "1000",
-            "--chunk-rows", "500", "--on-bad-row", "skip", "--no-plots", "--no-progress"]
+    return [
+        "register",
+        str(inp),
+        "--out",
+        str(out),
+        "--checkpoint",
+        str(ckpt),
+        "--checkpoint-every",
+        "1000",
+        "--chunk-rows",
+        "500",
+        "--on-bad-row",
+        "skip",
+        "--no-plots",
+        "--no-progress",
+    ]
 
 
 def _start(args):
     env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
-    return subprocess.Popen([sys.executable, "-m", "registration.cli", *args], env=env,
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    return subprocess.Popen(
+        [sys.executable, "-m", "registration.cli", *args],
+        env=env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+    )
 
 
 def _kill_when(proc, ckpt, ready, timeout=60.0):
@@ -37,7 +55,9 @@ def _kill_when(proc, ckpt, ready, timeout=60.0):
     while time.monotonic() < t_end:
         if proc.poll() is not None:
             out, err = proc.communicate()
-            pytest.fail(f"the run ended before it could be killed (rc {proc.returncode}): {err.decode()[-2000:]}")
+            pytest.fail(
+                f"the run ended before it could be killed (rc {proc.returncode}): {err.decode()[-2000:]}"
+            )
         if ckpt.exists():
             try:
                 state = load_checkpoint(ckpt)
@@ -70,12 +90,21 @@ def test_sigkill_twice_then_resume_equals_an_uninterrupted_run(tmp_path):
 
     out, ckpt = tmp_path / "run", tmp_path / "run.ckpt"
     args = _command(inp, out, ckpt)
-    seen1 = _kill_when(_start(args), ckpt, lambda s: s["phase"] == "filter" and s["state"]["rows_done"] >= 8000)
+    seen1 = _kill_when(
+        _start(args), ckpt, lambda s: s["phase"] == "filter" and s["state"]["rows_done"] >= 8000
+    )
     assert 0 < seen1["state"]["rows_done"] < n_rows
     # a kill leaves rows after the checkpoint in the outputs: resume must cut them, not duplicate them
-    seen2 = _kill_when(_start(args), ckpt,
-                       lambda s: s["phase"] == "observability" and s["state"]["obs_rows_done"] >= 4000
-                       or s["phase"] == "filter" and s["state"]["rows_done"] >= seen1["state"]["rows_done"] + 12000)
+    seen2 = _kill_when(
+        _start(args),
+        ckpt,
+        lambda s: (
+            s["phase"] == "observability"
+            and s["state"]["obs_rows_done"] >= 4000
+            or s["phase"] == "filter"
+            and s["state"]["rows_done"] >= seen1["state"]["rows_done"] + 12000
+        ),
+    )
     assert seen2["state"]["rows_done"] > seen1["state"]["rows_done"]
     proc = _start(args)
     _, err = proc.communicate(timeout=120)
@@ -91,7 +120,10 @@ def test_sigkill_twice_then_resume_equals_an_uninterrupted_run(tmp_path):
     assert est["row"].is_unique and rej["row"].is_unique
     assert sorted(est["row"].tolist() + rej["row"].tolist()) == list(range(n_rows))
     assert sorted(rej["row"]) == bad
-    got, ref = json.loads((out / "summary.json").read_text()), json.loads((ref_out / "summary.json").read_text())
+    got, ref = (
+        json.loads((out / "summary.json").read_text()),
+        json.loads((ref_out / "summary.json").read_text()),
+    )
     for key in ("estimates", "before", "after", "observability", "rows", "mean_nis", "time_span_s"):
         assert got[key] == ref[key], key
     assert load_checkpoint(ckpt)["phase"] == "done"

@@ -28,19 +28,23 @@ import time
 import numpy as np
 
 from registration.fleet.association.grouping.confirm import confirm_targets
-from registration.fleet.association.joining.curves import anchor_curves
 from registration.fleet.association.grouping.geometry import Assigner
-from registration.fleet.association.inputs import (all_plots_problem, anchor_references, initial_covariance,
-                                                   plot_ids)
+from registration.fleet.association.inputs import (
+    all_plots_problem,
+    anchor_references,
+    initial_covariance,
+    plot_ids,
+)
 from registration.fleet.association.joining.checks import JoinState, outlier_stage
+from registration.fleet.association.joining.curves import anchor_curves
 from registration.fleet.association.joining.joins import DEFER_SHARE, join_units
-from registration.fleet.association.references import name_by_references
+from registration.fleet.association.joining.singles import join_single_plots
+from registration.fleet.association.joining.units import make_units
 from registration.fleet.association.options import AssociationOptions
+from registration.fleet.association.references import name_by_references
 from registration.fleet.association.report import plot_report, track_notes
 from registration.fleet.association.result import AssociationResult
-from registration.fleet.association.joining.singles import join_single_plots
 from registration.fleet.association.solves import Registrar
-from registration.fleet.association.joining.units import make_units
 from registration.fleet.batch.solve import solve_batch
 from registration.fleet.batch.solver import progress_bar, progress_status
 
@@ -50,12 +54,16 @@ __all__ = ["AssociationOptions", "AssociationResult", "associate_and_register"]
 def _nothing_associated(problem, given, refs, options) -> ValueError:
     sensors = np.unique(problem.sensor)
     if sensors.size == 1 and not (given != "").any() and refs.time.size == 0:
-        return ValueError(f"plots: association needs plots of at least two sensors, or target ids, or references; all "
-                          f"{problem.n_plots} plots are of sensor {problem.sensor_ids[sensors[0]]!r}")
-    return ValueError("association: no plots could be associated: no target has ids given, a reference or plots of "
-                      "two position-fixing sensors that match; with windows of a few seconds a target's pieces of "
-                      "track are too short to match: give longer windows (--window-s, AssociationOptions.window_s; "
-                      f"{options.window_s:g} s now), or check the gate and the initial sigmas (AssociationOptions)")
+        return ValueError(
+            f"plots: association needs plots of at least two sensors, or target ids, or references; all "
+            f"{problem.n_plots} plots are of sensor {problem.sensor_ids[sensors[0]]!r}"
+        )
+    return ValueError(
+        "association: no plots could be associated: no target has ids given, a reference or plots of "
+        "two position-fixing sensors that match; with windows of a few seconds a target's pieces of "
+        "track are too short to match: give longer windows (--window-s, AssociationOptions.window_s; "
+        f"{options.window_s:g} s now), or check the gate and the initial sigmas (AssociationOptions)"
+    )
 
 
 def _check_windows(problem, options: AssociationOptions) -> None:
@@ -67,14 +75,25 @@ def _check_windows(problem, options: AssociationOptions) -> None:
         if t.size > 1:
             per_window.append(options.window_s / float(np.median(np.diff(t))))
     if per_window and max(per_window) < options.min_tracklet_plots:
-        raise ValueError(f"association: windows of {options.window_s:g} s hold at most {max(per_window):.2g} plots of "
-                         f"any sensor, too few to match a target's pieces of track: give longer windows (--window-s, "
-                         f"AssociationOptions.window_s; 20 s by default)")
+        raise ValueError(
+            f"association: windows of {options.window_s:g} s hold at most {max(per_window):.2g} plots of "
+            f"any sensor, too few to match a target's pieces of track: give longer windows (--window-s, "
+            f"AssociationOptions.window_s; 20 s by default)"
+        )
 
 
-def associate_and_register(plots, sensors, navigation, platforms=None, references=None,
-                           options: AssociationOptions | None = None, *, progress: bool = False,
-                           joins: dict | None = None, targets=None) -> AssociationResult:
+def associate_and_register(
+    plots,
+    sensors,
+    navigation,
+    platforms=None,
+    references=None,
+    options: AssociationOptions | None = None,
+    *,
+    progress: bool = False,
+    joins: dict | None = None,
+    targets=None,
+) -> AssociationResult:
     """Associate the plots without target ids with targets, and register the fleet with them.
 
     ``plots``, ``sensors``, ``navigation``, ``platforms``, ``references``: the long-form tables of
@@ -115,13 +134,22 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
         state, units, join_passes, joined_ok = join_units(reg, units, base, options, bar, state)
         labels = np.where(base != "", base, state.label).astype(str)
         progress_status(bar, "single plots")
-        curves = anchor_curves(reg.problem_solved, reg.x, refs, reg.between, gap_s=options.reference_gap_s,
-                               accel_sigma=options.reference_accel_sigma,
-                               fit=reg.labelled_fit() if reg.thinned else None, surface=problem.surface)
+        curves = anchor_curves(
+            reg.problem_solved,
+            reg.x,
+            refs,
+            reg.between,
+            gap_s=options.reference_gap_s,
+            accel_sigma=options.reference_accel_sigma,
+            fit=reg.labelled_fit() if reg.thinned else None,
+            surface=problem.surface,
+        )
         single = join_single_plots(reg, curves, labels, (labels == "") & ~state.outlier, options)
         if (single != "").any():
             labels = np.where(single != "", single, labels).astype(str)
-            if (single != "").sum() > DEFER_SHARE * (labels != "").sum():  # else checked by the final solve only
+            if (single != "").sum() > DEFER_SHARE * (
+                labels != ""
+            ).sum():  # else checked by the final solve only
                 reg.solve(labels)
         outliers = outlier_stage(reg, labels, given, options) | state.outlier
         labels[outliers] = ""
@@ -129,13 +157,23 @@ def associate_and_register(plots, sensors, navigation, platforms=None, reference
         result = reg.solve(labels, final=True)
         if result is None or result.chi_square.dof < 1:  # nothing, or more trajectory terms than values
             raise _nothing_associated(problem, given, refs, options)
-    report = plot_report(problem, labels, given != "", outliers, units, state, conf.track, result, single != "")
+    report = plot_report(
+        problem, labels, given != "", outliers, units, state, conf.track, result, single != ""
+    )
     notes = (*units.notes, *state.notes, *track_notes(problem, track_id, given != "", labels))
-    return AssociationResult(batch=result, problem=reg.problem_solved, iterations=conf.passes,
-                             converged=conf.converged and joined_ok, changes=conf.changes,
-                             seconds_total=time.perf_counter() - t0, seconds_assignment=assigner.seconds,
-                             seconds_registration=reg.seconds, notes=notes,
-                             join_passes=join_passes, **report)
+    return AssociationResult(
+        batch=result,
+        problem=reg.problem_solved,
+        iterations=conf.passes,
+        converged=conf.converged and joined_ok,
+        changes=conf.changes,
+        seconds_total=time.perf_counter() - t0,
+        seconds_assignment=assigner.seconds,
+        seconds_registration=reg.seconds,
+        notes=notes,
+        join_passes=join_passes,
+        **report,
+    )
 
 
 def _solve(problem, options=None, x0=None, **kwargs):

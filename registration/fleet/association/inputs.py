@@ -14,8 +14,16 @@ from registration.fleet.data.inputs import References, read_references
 from registration.fleet.data.problem import Exclusion, FleetProblem, build_problem
 from registration.fleet.data.tables import read_table
 
-__all__ = ["PLACEHOLDER", "PlotIds", "id_column", "plot_ids", "all_plots_problem", "anchor_references",
-           "initial_covariance", "labelled_problem"]
+__all__ = [
+    "PLACEHOLDER",
+    "PlotIds",
+    "id_column",
+    "plot_ids",
+    "all_plots_problem",
+    "anchor_references",
+    "initial_covariance",
+    "labelled_problem",
+]
 
 #: The one target all plots are put under in :func:`all_plots_problem`.
 PLACEHOLDER = "?"
@@ -111,8 +119,13 @@ def _first_seen(labels: np.ndarray, row: np.ndarray) -> tuple[tuple[str, ...], n
     return tuple(str(u) for u in unique[rank]), index
 
 
-def labelled_problem(problem: FleetProblem, labels: np.ndarray, refs: References,
-                     margin_s: float = 0.0, keep_lone: bool = False) -> FleetProblem:
+def labelled_problem(
+    problem: FleetProblem,
+    labels: np.ndarray,
+    refs: References,
+    margin_s: float = 0.0,
+    keep_lone: bool = False,
+) -> FleetProblem:
     """The problem of the plots with a label ``labels`` (N,; '' none), the labels as target ids
     (in order of first row), with the reference positions of those targets that lie within their
     plots' time span (+- ``margin_s``). A target seen by one sensor only and not a reference is set
@@ -125,15 +138,24 @@ def labelled_problem(problem: FleetProblem, labels: np.ndarray, refs: References
     names, target = _first_seen(lab, sub.row) if lab.size else ((), np.zeros(0, dtype=np.int64))
     ref_names = set(refs.target.astype(str))
     n_sensors_all = max(len(problem.sensor_ids), 1)
-    pairs = np.unique(target * n_sensors_all + sub.sensor) // n_sensors_all  # the target of each (target, sensor)
+    pairs = (
+        np.unique(target * n_sensors_all + sub.sensor) // n_sensors_all
+    )  # the target of each (target, sensor)
     n_sensors = np.bincount(pairs, minlength=len(names))
     lone = [] if keep_lone else [k for k in np.flatnonzero(n_sensors == 1) if names[k] not in ref_names]
     exclusions = []
     for k in lone:
         t = sub.time[target == k]
-        exclusions.append(Exclusion(names[k], "seen by one sensor only and not a reference: its plots fit any "
-                                              "registration errors, so they carry no registration information",
-                                    int(t.size), float(t.min()), float(t.max())))
+        exclusions.append(
+            Exclusion(
+                names[k],
+                "seen by one sensor only and not a reference: its plots fit any "
+                "registration errors, so they carry no registration information",
+                int(t.size),
+                float(t.min()),
+                float(t.max()),
+            )
+        )
     drop = np.isin(target, lone)
     if drop.all():
         raise ValueError("association: no target is seen by two sensors or is a reference")
@@ -154,6 +176,8 @@ def _references_of(problem: FleetProblem, refs: References, margin_s: float) -> 
     lookup = {t: k for k, t in enumerate(names)}
     k = np.array([lookup.get(str(t), -1) for t in refs.target], dtype=np.int64)
     inside = k >= 0
-    inside[inside] = (refs.time[inside] >= t0[k[inside]] - margin_s) & (refs.time[inside] <= t1[k[inside]] + margin_s)
+    inside[inside] = (refs.time[inside] >= t0[k[inside]] - margin_s) & (
+        refs.time[inside] <= t1[k[inside]] + margin_s
+    )
     kept = refs.subset(inside)
     return {"references": kept, "ref_target": k[inside]}

@@ -74,28 +74,59 @@ class AssociationOptions:
     batch: BatchOptions = field(default_factory=BatchOptions)
 
     def __post_init__(self):
-        positive = ("window_s", "max_speed", "accel_sigma", "initial_sigma_attitude", "initial_sigma_angle_bias",
-                    "initial_sigma_range_bias", "initial_sigma_range_gain", "initial_sigma_time_bias",
-                    "initial_sigma_position", "track_gap_s", "reference_gap_s", "reference_accel_sigma",
-                    "jump_accel_sigma")
+        positive = (
+            "window_s",
+            "max_speed",
+            "accel_sigma",
+            "initial_sigma_attitude",
+            "initial_sigma_angle_bias",
+            "initial_sigma_range_bias",
+            "initial_sigma_range_gain",
+            "initial_sigma_time_bias",
+            "initial_sigma_position",
+            "track_gap_s",
+            "reference_gap_s",
+            "reference_accel_sigma",
+            "jump_accel_sigma",
+        )
         checks = {k: getattr(self, k) > 0 for k in positive}
-        checks.update({k: 0 < getattr(self, k) < 1 for k in ("gate_probability", "jump_probability",
-                                                                "drop_probability", "outlier_probability")})
-        checks.update({"max_missed": self.max_missed >= 0, "min_track_plots": self.min_track_plots >= 2,
-                       "min_tracklet_plots": self.min_tracklet_plots >= 3, "max_iterations": self.max_iterations >= 1,
-                       "iteration_plots": self.iteration_plots >= 1, "test_plots": self.test_plots >= 3,
-                       "min_join_plots": self.min_join_plots >= 2, "ambiguity_ratio": self.ambiguity_ratio >= 1,
-                       "max_join_passes": self.max_join_passes >= 1})
+        checks.update(
+            {
+                k: 0 < getattr(self, k) < 1
+                for k in ("gate_probability", "jump_probability", "drop_probability", "outlier_probability")
+            }
+        )
+        checks.update(
+            {
+                "max_missed": self.max_missed >= 0,
+                "min_track_plots": self.min_track_plots >= 2,
+                "min_tracklet_plots": self.min_tracklet_plots >= 3,
+                "max_iterations": self.max_iterations >= 1,
+                "iteration_plots": self.iteration_plots >= 1,
+                "test_plots": self.test_plots >= 3,
+                "min_join_plots": self.min_join_plots >= 2,
+                "ambiguity_ratio": self.ambiguity_ratio >= 1,
+                "max_join_passes": self.max_join_passes >= 1,
+            }
+        )
         bad = [k for k, ok in checks.items() if not ok]
         if bad:
-            raise ValueError(f"AssociationOptions: invalid {', '.join(f'{k}={getattr(self, k)!r}' for k in bad)} "
-                             "(windows, sigmas, speeds > 0; probabilities in (0, 1); ambiguity_ratio >= 1; counts >= "
-                             "their minimum)")
+            raise ValueError(
+                f"AssociationOptions: invalid {', '.join(f'{k}={getattr(self, k)!r}' for k in bad)} "
+                "(windows, sigmas, speeds > 0; probabilities in (0, 1); ambiguity_ratio >= 1; counts >= "
+                "their minimum)"
+            )
 
     def initial_sigma(self) -> dict:
         """The starting sigma of each state quantity without a finite prior (rad, m, 1, s)."""
-        return {"heading_error": self.initial_sigma_attitude, "pitch_error": self.initial_sigma_attitude,
-                "roll_error": self.initial_sigma_attitude, "range_bias": self.initial_sigma_range_bias,
-                "bearing_bias": self.initial_sigma_angle_bias, "elevation_bias": self.initial_sigma_angle_bias,
-                "range_gain": self.initial_sigma_range_gain, "time_bias": self.initial_sigma_time_bias,
-                **{f"position_{a}": self.initial_sigma_position for a in ("east", "north", "up")}}
+        return {
+            "heading_error": self.initial_sigma_attitude,
+            "pitch_error": self.initial_sigma_attitude,
+            "roll_error": self.initial_sigma_attitude,
+            "range_bias": self.initial_sigma_range_bias,
+            "bearing_bias": self.initial_sigma_angle_bias,
+            "elevation_bias": self.initial_sigma_angle_bias,
+            "range_gain": self.initial_sigma_range_gain,
+            "time_bias": self.initial_sigma_time_bias,
+            **{f"position_{a}": self.initial_sigma_position for a in ("east", "north", "up")},
+        }

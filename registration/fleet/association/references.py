@@ -7,17 +7,19 @@ from __future__ import annotations
 import numpy as np
 
 from registration.fleet.association.joining.attach import candidate_plots, pair_tests
-from registration.fleet.association.joining.curves import anchor_curves
 from registration.fleet.association.joining.checks import JoinState
+from registration.fleet.association.joining.curves import anchor_curves
 from registration.fleet.association.joining.joins import choose_joins
+from registration.fleet.association.joining.units import Units
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.solves import Registrar
-from registration.fleet.association.joining.units import Units
 
 __all__ = ["name_by_references"]
 
 
-def name_by_references(reg: Registrar, labels: np.ndarray, given: np.ndarray, options: AssociationOptions) -> np.ndarray:
+def name_by_references(
+    reg: Registrar, labels: np.ndarray, given: np.ndarray, options: AssociationOptions
+) -> np.ndarray:
     """(N,) ``labels`` with each target the position-fixing sensors confirmed (not an id given) renamed
     to the reference target it is (ADS-B, AIS): the target's plots, all its sensors together, are
     tested against each reference target as a track is (:func:`choose_joins`, the targets that exist
@@ -33,14 +35,37 @@ def name_by_references(reg: Registrar, labels: np.ndarray, given: np.ndarray, op
     np.minimum.at(t0, unit[confirmed], t[confirmed])
     np.maximum.at(t1, unit[confirmed], t[confirmed])
     none = np.zeros(labels.size, dtype=bool)
-    units = Units(unit, np.zeros(names.size, dtype=np.int64), names, t0, t1, np.zeros(names.size, dtype=bool), none,
-                  none, ())
+    units = Units(
+        unit,
+        np.zeros(names.size, dtype=np.int64),
+        names,
+        t0,
+        t1,
+        np.zeros(names.size, dtype=bool),
+        none,
+        none,
+        (),
+    )
     conflicts = (np.minimum(t1[:, None], t1[None, :]) - np.maximum(t0[:, None], t0[None, :])) > 0
     np.fill_diagonal(conflicts, False)
-    curves = anchor_curves(None, reg.x, reg.refs, reg.between, gap_s=options.reference_gap_s,
-                           accel_sigma=options.reference_accel_sigma, surface=reg.problem.surface)
-    u, j, plots, _ = candidate_plots(reg.problem, reg.x, unit, np.arange(names.size), curves, k=options.test_plots,
-                                     min_plots=options.min_join_plots)
+    curves = anchor_curves(
+        None,
+        reg.x,
+        reg.refs,
+        reg.between,
+        gap_s=options.reference_gap_s,
+        accel_sigma=options.reference_accel_sigma,
+        surface=reg.problem.surface,
+    )
+    u, j, plots, _ = candidate_plots(
+        reg.problem,
+        reg.x,
+        unit,
+        np.arange(names.size),
+        curves,
+        k=options.test_plots,
+        min_plots=options.min_join_plots,
+    )
     pairs = pair_tests(reg.problem, reg.x, curves, u, j, plots)
     state = JoinState.empty(names.size, labels.size)
     choose_joins(pairs, curves.names, reg.P, state, units, conflicts, np.zeros(1, dtype=bool), options)

@@ -7,15 +7,16 @@ from __future__ import annotations
 import numpy as np
 
 from registration.fleet.association.joining.checks import JoinState
-from registration.fleet.association.result import CLUTTER_REASONS, REASONS
 from registration.fleet.association.joining.units import Units
+from registration.fleet.association.result import CLUTTER_REASONS, REASONS
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["plot_report", "track_notes"]
 
 
-def _reasons(labels: np.ndarray, registered: np.ndarray, outliers: np.ndarray, units: Units,
-             state: JoinState) -> np.ndarray:
+def _reasons(
+    labels: np.ndarray, registered: np.ndarray, outliers: np.ndarray, units: Units, state: JoinState
+) -> np.ndarray:
     """(N,) the reason code of each plot ('' for a registered plot with a label)."""
     out = np.full(labels.size, "", dtype=object)
     lab = labels != ""
@@ -25,10 +26,15 @@ def _reasons(labels: np.ndarray, registered: np.ndarray, outliers: np.ndarray, u
     has = unl & (u >= 0)
     if has.any():
         uu = u[has]
-        out[has] = np.where(state.target[uu] != "", "outside_span",
-                            np.where(state.dropped[uu], "dropped",
-                                     np.where(~state.tested[uu], "no_anchor",
-                                              np.where(state.gated[uu], "ambiguous", "no_match"))))
+        out[has] = np.where(
+            state.target[uu] != "",
+            "outside_span",
+            np.where(
+                state.dropped[uu],
+                "dropped",
+                np.where(~state.tested[uu], "no_anchor", np.where(state.gated[uu], "ambiguous", "no_match")),
+            ),
+        )
     out[unl & units.short] = "short_track"
     out[unl & units.clutter] = "clutter"
     out[unl & (out == "")] = "no_anchor"  # in no unit (cannot happen for a plot without id; kept total)
@@ -36,16 +42,27 @@ def _reasons(labels: np.ndarray, registered: np.ndarray, outliers: np.ndarray, u
     return out.astype(str)
 
 
-def _join_values(problem: FleetProblem, labels: np.ndarray, given: np.ndarray, e: np.ndarray, units: Units,
-                 state: JoinState, track: np.ndarray, single: np.ndarray) -> np.ndarray:
+def _join_values(
+    problem: FleetProblem,
+    labels: np.ndarray,
+    given: np.ndarray,
+    e: np.ndarray,
+    units: Units,
+    state: JoinState,
+    track: np.ndarray,
+    single: np.ndarray,
+) -> np.ndarray:
     """(N,) mean squared normalised residual of each labelled plot's piece: its unit (joins), the
     plot alone (single plots), its track and target (confirmed targets) or its sensor and target
     (ids given); NaN where none."""
     lab = labels != ""
     _, target = np.unique(labels, return_inverse=True)
     kind = np.where(given, 0, np.where(single, 3, np.where(state.label != "", 1, 2)))
-    a = np.where(kind == 0, problem.sensor, np.where(kind == 1, units.of_plot,
-                                                     np.where(kind == 3, np.arange(labels.size), track)))
+    a = np.where(
+        kind == 0,
+        problem.sensor,
+        np.where(kind == 1, units.of_plot, np.where(kind == 3, np.arange(labels.size), track)),
+    )
     key = np.stack([kind, a, np.where(kind == 1, 0, target)])
     out = np.full(labels.size, np.nan)
     if not lab.any():
@@ -59,8 +76,17 @@ def _join_values(problem: FleetProblem, labels: np.ndarray, given: np.ndarray, e
     return out
 
 
-def plot_report(problem: FleetProblem, labels: np.ndarray, given: np.ndarray, outliers: np.ndarray, units: Units,
-                state: JoinState, track: np.ndarray, batch, single: np.ndarray) -> dict:
+def plot_report(
+    problem: FleetProblem,
+    labels: np.ndarray,
+    given: np.ndarray,
+    outliers: np.ndarray,
+    units: Units,
+    state: JoinState,
+    track: np.ndarray,
+    batch,
+    single: np.ndarray,
+) -> dict:
     """Per input row: ``labels``, ``given``, ``reasons``, ``join``, ``tracks``; ``unassociated_rows``,
     ``unassociated_by_sensor``, ``n_clutter``, ``n_unconfirmed``, ``by_sensor`` (the fields of
     :class:`AssociationResult`), from the final labels (N,) of the problem's plots, the ids given
@@ -71,8 +97,11 @@ def plot_report(problem: FleetProblem, labels: np.ndarray, given: np.ndarray, ou
     registered = np.isfinite(e).any(axis=1)
     reasons = _reasons(labels, registered, outliers, units, state)
     join = _join_values(problem, labels, given, e, units, state, track, single)
-    names = np.where((state.label != "") & (units.of_plot >= 0), units.name[np.maximum(units.of_plot, 0)], "") \
-        if units.n else np.full(labels.size, "", dtype=object)
+    names = (
+        np.where((state.label != "") & (units.of_plot >= 0), units.name[np.maximum(units.of_plot, 0)], "")
+        if units.n
+        else np.full(labels.size, "", dtype=object)
+    )
     names = np.where(single, "plot", names)
 
     def rows(values, fill, dtype):
@@ -84,19 +113,31 @@ def plot_report(problem: FleetProblem, labels: np.ndarray, given: np.ndarray, ou
     by_sensor = {}
     for s, sid in enumerate(problem.sensor_ids):
         mine = problem.sensor == s
-        counts = {"given": int((mine & given).sum()), "associated": int((mine & ~given & ~unl).sum()),
-                  "unassociated": int((mine & unl).sum())}
+        counts = {
+            "given": int((mine & given).sum()),
+            "associated": int((mine & ~given & ~unl).sum()),
+            "unassociated": int((mine & unl).sum()),
+        }
         counts.update({k: int((mine & (reasons == k)).sum()) for k in REASONS})
         by_sensor[sid] = counts
     clutter = int(np.isin(reasons[unl], CLUTTER_REASONS).sum())
-    return {"labels": rows(labels, "", object).astype(str), "given": rows(given, False, bool),
-            "reasons": rows(reasons, "", object).astype(str), "join": rows(join, np.nan, float),
-            "tracks": rows(names, "", object).astype(str), "unassociated_rows": np.sort(problem.row[unl]),
-            "unassociated_by_sensor": {sid: c["unassociated"] for sid, c in by_sensor.items()},
-            "n_clutter": clutter, "n_unconfirmed": int(unl.sum()) - clutter, "by_sensor": by_sensor}
+    return {
+        "labels": rows(labels, "", object).astype(str),
+        "given": rows(given, False, bool),
+        "reasons": rows(reasons, "", object).astype(str),
+        "join": rows(join, np.nan, float),
+        "tracks": rows(names, "", object).astype(str),
+        "unassociated_rows": np.sort(problem.row[unl]),
+        "unassociated_by_sensor": {sid: c["unassociated"] for sid, c in by_sensor.items()},
+        "n_clutter": clutter,
+        "n_unconfirmed": int(unl.sum()) - clutter,
+        "by_sensor": by_sensor,
+    }
 
 
-def track_notes(problem: FleetProblem, track_id: np.ndarray, given: np.ndarray, labels: np.ndarray) -> list[str]:
+def track_notes(
+    problem: FleetProblem, track_id: np.ndarray, given: np.ndarray, labels: np.ndarray
+) -> list[str]:
     """One note per given track (``track_id`` (N,), '' none; rows without a target id given) whose
     plots were associated with more than one target: the id was reused for another object, or the
     track jumped from one object to another; the note names the targets and their time spans."""
@@ -114,7 +155,10 @@ def track_notes(problem: FleetProblem, track_id: np.ndarray, given: np.ndarray, 
             t = problem.time[sel[inverse == k]]
             parts.append((float(t.min()), f"{pairs[1, k]} ({t.min():g} to {t.max():g} s)"))
         sensor, number = tr.split("\x1f", 1)
-        notes.append(f"sensor {sensor} track {number}: its plots were associated with {len(parts)} targets, "
-                     + ", ".join(p for _, p in sorted(parts)) + ": an id reused for another object or a track that "
-                     "jumped, split")
+        notes.append(
+            f"sensor {sensor} track {number}: its plots were associated with {len(parts)} targets, "
+            + ", ".join(p for _, p in sorted(parts))
+            + ": an id reused for another object or a track that "
+            "jumped, split"
+        )
     return notes

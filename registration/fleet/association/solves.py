@@ -22,15 +22,21 @@ from dataclasses import replace
 
 import numpy as np
 
-from registration.fleet.association.joining.curves import fit_windows
 from registration.fleet.association.inputs import labelled_problem
+from registration.fleet.association.joining.curves import fit_windows
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.batch.solve import solve_batch
 from registration.fleet.data.inputs import References
 from registration.fleet.data.problem import FleetProblem
 
-__all__ = ["INTERMEDIATE_TOLERANCE", "INTERMEDIATE_ITERATIONS", "SOLVE_PLOTS", "Registrar", "thin_labels",
-           "usable_covariance"]
+__all__ = [
+    "INTERMEDIATE_TOLERANCE",
+    "INTERMEDIATE_ITERATIONS",
+    "SOLVE_PLOTS",
+    "Registrar",
+    "thin_labels",
+    "usable_covariance",
+]
 
 #: Stopping tolerance (chi-square units) of the solves between association passes: their estimate
 #: only sets the next gates, so a remaining change of about sqrt(0.01) = 0.1 sigma is enough.
@@ -83,12 +89,22 @@ class Registrar:
     ``P`` the latest estimate and usable covariance (start: 0, ``P0``),
     ``problem_solved`` and ``result`` the latest solve (None before any), ``seconds`` in the solver."""
 
-    def __init__(self, problem: FleetProblem, refs: References, P0: np.ndarray, options: AssociationOptions,
-                 progress: bool = False, solver=solve_batch):
+    def __init__(
+        self,
+        problem: FleetProblem,
+        refs: References,
+        P0: np.ndarray,
+        options: AssociationOptions,
+        progress: bool = False,
+        solver=solve_batch,
+    ):
         self.problem, self.refs, self.P0, self.solver = problem, refs, P0, solver
         self.final_options = replace(options.batch, window_s=options.window_s)
-        self.between = replace(self.final_options, tolerance=max(self.final_options.tolerance, INTERMEDIATE_TOLERANCE),
-                               max_iterations=min(self.final_options.max_iterations, INTERMEDIATE_ITERATIONS))
+        self.between = replace(
+            self.final_options,
+            tolerance=max(self.final_options.tolerance, INTERMEDIATE_TOLERANCE),
+            max_iterations=min(self.final_options.max_iterations, INTERMEDIATE_ITERATIONS),
+        )
         self.margin_s = options.window_s
         self.progress = progress
         self.x, self.P = np.zeros(problem.layout.n), P0.copy()
@@ -110,8 +126,12 @@ class Registrar:
             return None
         t0 = time.perf_counter()
         try:
-            result = self.solver(problem, self.final_options if final else self.between, x0=self._start(problem),
-                                 progress=self.progress)
+            result = self.solver(
+                problem,
+                self.final_options if final else self.between,
+                x0=self._start(problem),
+                progress=self.progress,
+            )
         except ValueError:  # every window set aside: nothing to register yet
             return None
         finally:
@@ -128,8 +148,12 @@ class Registrar:
         (:func:`~registration.fleet.association.joining.curves.fit_windows`; computed once per solve, started
         from the windows of the last such fit)."""
         if self._fit is None:
-            self._fit = fit_windows(labelled_problem(self.problem, self.labels, self.refs, self.margin_s), self.x,
-                                    self.between, self._last_fit)
+            self._fit = fit_windows(
+                labelled_problem(self.problem, self.labels, self.refs, self.margin_s),
+                self.x,
+                self.between,
+                self._last_fit,
+            )
             self._last_fit = self._fit
         return self._fit
 

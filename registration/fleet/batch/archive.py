@@ -56,8 +56,9 @@ def _array(column):
 
     if (pa.types.is_string(column.type) or pa.types.is_large_string(column.type)) and column.null_count == 0:
         encoded = column.dictionary_encode()
-        return pd.Categorical.from_codes(encoded.indices.to_numpy(zero_copy_only=False),
-                                         encoded.dictionary.to_pylist())
+        return pd.Categorical.from_codes(
+            encoded.indices.to_numpy(zero_copy_only=False), encoded.dictionary.to_pylist()
+        )
     return column.to_numpy(zero_copy_only=False)
 
 
@@ -69,11 +70,15 @@ class ParquetSource:
         self.folder = Path(folder)
         self.file_columns = file_columns
         self.batch_rows = int(batch_rows)
-        self.paths = {name: self._find(name)
-                      for name in ("plots", "navigation", "sensors", "platforms", "reference", "targets")}
+        self.paths = {
+            name: self._find(name)
+            for name in ("plots", "navigation", "sensors", "platforms", "reference", "targets")
+        }
         for name in ("plots", "navigation", "sensors"):
             if self.paths[name] is None:
-                raise ValueError(f"{self.folder}: no {name} table ({name}.parquet or a folder {name}/ of Parquet files)")
+                raise ValueError(
+                    f"{self.folder}: no {name} table ({name}.parquet or a folder {name}/ of Parquet files)"
+                )
         self.sensors = self._whole("sensors")
         self.platforms = self._whole("platforms") if self.paths["platforms"] is not None else None
         self.targets = self._whole("targets") if self.paths["targets"] is not None else None
@@ -147,8 +152,13 @@ class ParquetSource:
         files = [self._file_column(name, c) for c in columns]
         for fragment in data.get_fragments():
             try:
-                for batch in fragment.to_batches(columns=files, batch_size=self.batch_rows, schema=data.schema,
-                                                 batch_readahead=1, fragment_readahead=1):
+                for batch in fragment.to_batches(
+                    columns=files,
+                    batch_size=self.batch_rows,
+                    schema=data.schema,
+                    batch_readahead=1,
+                    fragment_readahead=1,
+                ):
                     yield self._convert(name, {c: _array(batch.column(c)) for c in files})
             except Exception as exc:  # pyarrow errors of many kinds
                 raise ValueError(f"{fragment.path}: cannot be read ({_one_line(exc)})") from exc
@@ -201,7 +211,9 @@ class ParquetSource:
                 table = kept.get(key)
                 if table is None:
                     try:
-                        table = fragment.subset(row_group_ids=[gid]).to_table(schema=data.schema, use_threads=False)
+                        table = fragment.subset(row_group_ids=[gid]).to_table(
+                            schema=data.schema, use_threads=False
+                        )
                     except Exception as exc:  # pyarrow errors of many kinds
                         raise ValueError(f"{fragment.path}: cannot be read ({_one_line(exc)})") from exc
                 used[key] = table
@@ -243,10 +255,14 @@ class ParquetSource:
 
         def overlaps(stats) -> bool:
             ts, ps = stats.get(t_col), stats.get(p_col)
-            return any((ts is None or ts["min"] is None or (ts["max"] >= a and ts["min"] <= b))
-                       and (ps is None or not isinstance(ps["min"], str) or ps["min"] <= str(pid) <= ps["max"])
-                       for pid, (a, b) in ranges.items())
+            return any(
+                (ts is None or ts["min"] is None or (ts["max"] >= a and ts["min"] <= b))
+                and (ps is None or not isinstance(ps["min"], str) or ps["min"] <= str(pid) <= ps["max"])
+                for pid, (a, b) in ranges.items()
+            )
 
         out = self._convert("navigation", self._read_groups("navigation", overlaps, expression))
-        order = np.lexsort((np.asarray(out["time"], dtype=np.float64), np.asarray(out["platform"]).astype(str)))
+        order = np.lexsort(
+            (np.asarray(out["time"], dtype=np.float64), np.asarray(out["platform"]).astype(str))
+        )
         return {k: np.asarray(v)[order] for k, v in out.items()}

@@ -28,7 +28,15 @@ from numpy.polynomial import legendre
 
 from registration.fleet.data.problem import FleetProblem
 
-__all__ = ["Blocks", "make_blocks", "legendre_basis", "legendre_basis_rate", "target_spans", "window_grid", "window_of"]
+__all__ = [
+    "Blocks",
+    "make_blocks",
+    "legendre_basis",
+    "legendre_basis_rate",
+    "target_spans",
+    "window_grid",
+    "window_of",
+]
 
 #: Two reference/plot times closer than this (s) are the same instant (window_s = 0).
 SAME_INSTANT_S = 1e-6
@@ -102,13 +110,17 @@ class Blocks:
             half = self.block_half[block]
             tau = (time - self.block_centre[block]) / half
             mask = self.coef_mask[block]
-            return legendre_basis(tau, self.n_coef) * mask, legendre_basis_rate(tau, self.n_coef) * mask / half[:, None]
+            return legendre_basis(tau, self.n_coef) * mask, legendre_basis_rate(
+                tau, self.n_coef
+            ) * mask / half[:, None]
         inv_half = 1.0 / self.block_half[block]
         tau = (time - self.block_centre[block]) * inv_half
         t2 = tau * tau
         mask = self.coef_mask[block]
         basis = np.stack([np.ones_like(tau), tau, 1.5 * t2 - 0.5, (2.5 * t2 - 1.5) * tau], axis=1)
-        rate = np.stack([np.zeros_like(tau), inv_half, 3.0 * tau * inv_half, (7.5 * t2 - 1.5) * inv_half], axis=1)
+        rate = np.stack(
+            [np.zeros_like(tau), inv_half, 3.0 * tau * inv_half, (7.5 * t2 - 1.5) * inv_half], axis=1
+        )
         return basis * mask, rate * mask
 
 
@@ -131,7 +143,9 @@ def window_grid(t0: np.ndarray, t1: np.ndarray, window_s: float) -> tuple[np.nda
     return count, length, offset
 
 
-def window_of(t0: np.ndarray, count: np.ndarray, length: np.ndarray, target: np.ndarray, time: np.ndarray) -> np.ndarray:
+def window_of(
+    t0: np.ndarray, count: np.ndarray, length: np.ndarray, target: np.ndarray, time: np.ndarray
+) -> np.ndarray:
     """(M,) index of the window (0 .. count - 1 of its target) that time ``time`` (s) of target ``target`` falls in."""
     return np.clip(np.floor((time - t0[target]) / length[target]), 0, count[target] - 1).astype(np.int64)
 
@@ -158,7 +172,7 @@ def _instant_keys(target, time, ref_target, ref_time):
     new = np.r_[True, (np.diff(tg[order]) != 0) | (np.diff(rounded[order]) != 0)]
     key = np.empty(tg.size, dtype=np.int64)
     key[order] = np.cumsum(new) - 1
-    return key[: time.size], key[time.size:]
+    return key[: time.size], key[time.size :]
 
 
 def _block_geometry(problem: FleetProblem, window_s: float, degree: int, span=None):
@@ -168,15 +182,23 @@ def _block_geometry(problem: FleetProblem, window_s: float, degree: int, span=No
     if window_s == 0:
         key, ref_key = _instant_keys(target, time, ref_target, ref_time)
     else:
-        key, ref_key, t0, length, offset = _window_keys(target, time, ref_target, ref_time,
-                                                        len(problem.target_ids), window_s, span)
+        key, ref_key, t0, length, offset = _window_keys(
+            target, time, ref_target, ref_time, len(problem.target_ids), window_s, span
+        )
     uniq, block = np.unique(key, return_inverse=True)
     pos = np.clip(np.searchsorted(uniq, ref_key), 0, uniq.size - 1)
     ref_block = np.where(uniq[pos] == ref_key, pos, -1)
     first = np.zeros(uniq.size, dtype=np.int64)
     first[block[::-1]] = np.arange(time.size)[::-1]
     if window_s == 0:
-        return block, ref_block, target[first], time[first], np.ones(uniq.size), np.zeros(uniq.size, dtype=np.int64)
+        return (
+            block,
+            ref_block,
+            target[first],
+            time[first],
+            np.ones(uniq.size),
+            np.zeros(uniq.size, dtype=np.int64),
+        )
     b_target = target[first]
     w = uniq - offset[b_target]
     centre = t0[b_target] + (w + 0.5) * length[b_target]
@@ -193,7 +215,9 @@ def _local_states(group_block: np.ndarray, group_state: np.ndarray, n_blocks: in
     n_in = np.bincount(group_block, minlength=n_blocks)
     first_group = np.r_[0, np.cumsum(n_in)[:-1]]
     rank = np.arange(group_block.size) - first_group[group_block]
-    local = np.full((n_blocks, max(int(n_in.max(initial=1)), 1), group_state.shape[1]), n_state, dtype=np.int64)
+    local = np.full(
+        (n_blocks, max(int(n_in.max(initial=1)), 1), group_state.shape[1]), n_state, dtype=np.int64
+    )
     local[group_block, rank] = group_state
     return rank, local.reshape(n_blocks, -1)
 
@@ -242,7 +266,29 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) 
     group_block_start = np.flatnonzero(np.r_[True, np.diff(group_block) != 0])
     patterns, inverse = np.unique(local_state, axis=0, return_inverse=True)
     pattern_blocks = tuple(np.flatnonzero(inverse.reshape(-1) == k) for k in range(patterns.shape[0]))
-    return Blocks(n_coef, order, block_sorted, basis, block_start, b_target, centre, half, coef_mask,
-                  group_start, group_block, group_sensor, group_state, rank, local_state,
-                  group_block_start, chunk_size, chunk_slot, chunk_group_start, ref_index, ref_block, ref_basis,
-                  patterns, pattern_blocks)
+    return Blocks(
+        n_coef,
+        order,
+        block_sorted,
+        basis,
+        block_start,
+        b_target,
+        centre,
+        half,
+        coef_mask,
+        group_start,
+        group_block,
+        group_sensor,
+        group_state,
+        rank,
+        local_state,
+        group_block_start,
+        chunk_size,
+        chunk_slot,
+        chunk_group_start,
+        ref_index,
+        ref_block,
+        ref_basis,
+        patterns,
+        pattern_blocks,
+    )

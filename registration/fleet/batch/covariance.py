@@ -68,8 +68,10 @@ def solution_information(fit) -> Solution:
     except np.linalg.LinAlgError as exc:
         bad = singular_blocks(fit.design, normal)
         names = sorted({fit.problem.target_ids[t] for t in fit.design.blocks.block_target[bad]})
-        raise NumericalError(f"the information at the solution cannot be computed: {bad.size} target windows "
-                             f"(targets {', '.join(names) or 'unknown'}) are singular there ({exc})") from exc
+        raise NumericalError(
+            f"the information at the solution cannot be computed: {bad.size} target windows "
+            f"(targets {', '.join(names) or 'unknown'}) are singular there ({exc})"
+        ) from exc
     free = fit.problem.layout.free
     S = red.S[np.ix_(free, free)]
     prior = fit.design.prior_weight[free] ** 2

@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.fleet.corrected import corrected_positions
 from registration.fleet.batch.normal import Design
+from registration.fleet.corrected import corrected_positions
 
 __all__ = ["ASSUMED_RANGE_M", "plot_positions", "initial_coefficients"]
 
@@ -29,7 +29,9 @@ def plot_positions(design: Design, x: np.ndarray | None = None) -> np.ndarray:
     r = np.where(has[:, 0], design.meas[:, 0], ASSUMED_RANGE_M)  # an absent channel's bias is 0
     e = np.where(has[:, 2], design.meas[:, 2], 0.0)
     nav = design.seen_at(design.seen_time(xs[:-1]))[0] if design.time_biased else design.nav
-    return corrected_positions(nav, design.state, xs, design.lever, np.stack([r, design.meas[:, 1], e], axis=1))
+    return corrected_positions(
+        nav, design.state, xs, design.lever, np.stack([r, design.meas[:, 1], e], axis=1)
+    )
 
 
 def initial_coefficients(design: Design, x: np.ndarray | None = None) -> np.ndarray:
@@ -44,7 +46,9 @@ def initial_coefficients(design: Design, x: np.ndarray | None = None) -> np.ndar
     n_all = np.add.reduceat(real, starts)
     sum_ranged = np.add.reduceat(p * ranged[:, None], starts, axis=0)
     sum_all = np.add.reduceat(p * real[:, None], starts, axis=0)
-    mean = np.where((n_ranged > 0)[:, None], sum_ranged / np.maximum(n_ranged, 1)[:, None], sum_all / n_all[:, None])
+    mean = np.where(
+        (n_ranged > 0)[:, None], sum_ranged / np.maximum(n_ranged, 1)[:, None], sum_all / n_all[:, None]
+    )
     coef = np.zeros((blk.n_blocks, blk.n_coef, 3))
     coef[:, 0] = mean
     return coef

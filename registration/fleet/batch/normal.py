@@ -54,8 +54,19 @@ from registration.fleet.batch.blocks import Blocks
 from registration.fleet.data.navigation import SeenNavigation
 from registration.fleet.data.problem import FleetProblem
 
-__all__ = ["Design", "Evaluation", "Normal", "SurfaceRows", "chunk_positions", "make_design", "evaluate",
-           "normal_equations", "positions", "reference_whitening", "surface_rows"]
+__all__ = [
+    "Design",
+    "Evaluation",
+    "Normal",
+    "SurfaceRows",
+    "chunk_positions",
+    "make_design",
+    "evaluate",
+    "normal_equations",
+    "positions",
+    "reference_whitening",
+    "surface_rows",
+]
 
 
 @dataclass(frozen=True)
@@ -124,11 +135,17 @@ class Design:
     ref_p: np.ndarray  # (R', 3) ECEF m
     ref_weight: np.ndarray  # (R',) 1 / sigma (1/m)
     prior_weight: np.ndarray  # (n,) 1 / prior sigma (0: no prior; fixed states are not free)
-    scale: np.ndarray  # (n,) prior or reference sigma of each state (registration.fleet.data.layout.state_scale)
+    scale: (
+        np.ndarray
+    )  # (n,) prior or reference sigma of each state (registration.fleet.data.layout.state_scale)
     time: np.ndarray  # (rows,) reported plot time (s)
-    seen_at: object = None  # with time biases: times (rows,) -> (nav, rate, outside); navigation.SeenNavigation
+    seen_at: object = (
+        None  # with time biases: times (rows,) -> (nav, rate, outside); navigation.SeenNavigation
+    )
     seen_cache: dict = field(default_factory=dict)  # the seen basis and navigation of the latest time biases
-    ref_whiten: np.ndarray | None = None  # (R', 3, 3) 1/m: L of reference_whitening; None: every sigma_up == sigma
+    ref_whiten: np.ndarray | None = (
+        None  # (R', 3, 3) 1/m: L of reference_whitening; None: every sigma_up == sigma
+    )
     surface: SurfaceRows | None = None  # the surface targets' height constraints; None: no surface target
 
     @property
@@ -193,24 +210,49 @@ def make_design(problem: FleetProblem, blocks: Blocks) -> Design:
     state = layout.sensor_states(sensor, problem.sensor_platform)
     with np.errstate(divide="ignore", invalid="ignore"):
         weight = np.where(problem.mask[o] & real[:, None], 1.0 / problem.sensor_sigma[sensor], 0.0)
-        prior_weight = np.where(np.isfinite(layout.prior_sigma) & (layout.prior_sigma > 0), 1.0 / layout.prior_sigma, 0.0)
+        prior_weight = np.where(
+            np.isfinite(layout.prior_sigma) & (layout.prior_sigma > 0), 1.0 / layout.prior_sigma, 0.0
+        )
     refs = problem.references
     seen_at = None
     tb = layout.time_bias_index[np.unique(sensor)]
     if layout.extended and (layout.prior_sigma[tb[tb >= 0]] > 0).any():
         if blocks.n_coef == 1:
-            raise ValueError("a time bias needs target windows (window_s > 0): the targets' velocities come from the "
-                             "windows' polynomials; give window_s > 0 or drop the prior_time_bias column")
+            raise ValueError(
+                "a time bias needs target windows (window_s > 0): the targets' velocities come from the "
+                "windows' polynomials; give window_s > 0 or drop the prior_time_bias column"
+            )
 
-        seen_at = SeenNavigation(problem.tracks, problem.platform_ids, problem.platform[o], sensor, problem.time[o])
+        seen_at = SeenNavigation(
+            problem.tracks, problem.platform_ids, problem.platform[o], sensor, problem.time[o]
+        )
     used = blocks.ref_index
     sigma, sigma_up = refs.sigma[used], refs.sigma_up[used]
-    whiten = None if np.array_equal(sigma, sigma_up) else reference_whitening(refs.p_ecef[used], sigma, sigma_up)
-    return Design(blocks, layout.n, blocks.chunk_slot, real, blocks.block[source], blocks.basis[source],
-                  blocks.chunk_slot[blocks.block_start], problem.nav[o], problem.meas[o], weight,
-                  problem.sensor_lever[sensor], state, refs.p_ecef[used],
-                  1.0 / sigma, prior_weight, layout.scale, problem.time[o], seen_at, ref_whiten=whiten,
-                  surface=surface_rows(problem, blocks))
+    whiten = (
+        None if np.array_equal(sigma, sigma_up) else reference_whitening(refs.p_ecef[used], sigma, sigma_up)
+    )
+    return Design(
+        blocks,
+        layout.n,
+        blocks.chunk_slot,
+        real,
+        blocks.block[source],
+        blocks.basis[source],
+        blocks.chunk_slot[blocks.block_start],
+        problem.nav[o],
+        problem.meas[o],
+        weight,
+        problem.sensor_lever[sensor],
+        state,
+        refs.p_ecef[used],
+        1.0 / sigma,
+        prior_weight,
+        layout.scale,
+        problem.time[o],
+        seen_at,
+        ref_whiten=whiten,
+        surface=surface_rows(problem, blocks),
+    )
 
 
 def positions(basis: np.ndarray, block: np.ndarray, coef: np.ndarray) -> np.ndarray:
@@ -278,10 +320,26 @@ def _extended_rows(design: Design, xs: np.ndarray, coef: np.ndarray) -> np.ndarr
             weight = np.where(aside[:, None], 0.0, weight)
     p = chunk_positions(design, basis, coef)
     return _codegen.get(f"fleet_rows_ext_{blk.n_coef}")(
-        p, v, nav[:, 0], nav[:, 1], nav[:, 2], nav[:, 3], nav[:, 4], nav[:, 5], rate,
-        xs[state[:, :3]], xs[state[:, 3:6]], xs[state[:, 6]], xs[state[:, 8:11]], design.lever,
-        design.meas[:, 0], design.meas[:, 1], design.meas[:, 2], weight,
-        basis[:, 0] if blk.n_coef == 1 else basis)[0]
+        p,
+        v,
+        nav[:, 0],
+        nav[:, 1],
+        nav[:, 2],
+        nav[:, 3],
+        nav[:, 4],
+        nav[:, 5],
+        rate,
+        xs[state[:, :3]],
+        xs[state[:, 3:6]],
+        xs[state[:, 6]],
+        xs[state[:, 8:11]],
+        design.lever,
+        design.meas[:, 0],
+        design.meas[:, 1],
+        design.meas[:, 2],
+        weight,
+        basis[:, 0] if blk.n_coef == 1 else basis,
+    )[0]
 
 
 def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
@@ -296,16 +354,30 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
         p = positions(design.basis, design.block, coef)
         nav = design.nav
         rows_t = _codegen.get(f"fleet_rows_{blk.n_coef}")(
-            p, nav[:, 0], nav[:, 1], nav[:, 2], nav[:, 3], nav[:, 4], nav[:, 5],
-            xs[design.att_state], xs[design.bias_state], design.lever,
-            design.meas[:, 0], design.meas[:, 1], design.meas[:, 2], design.weight,
-            design.basis[:, 0] if blk.n_coef == 1 else design.basis)[0]
+            p,
+            nav[:, 0],
+            nav[:, 1],
+            nav[:, 2],
+            nav[:, 3],
+            nav[:, 4],
+            nav[:, 5],
+            xs[design.att_state],
+            xs[design.bias_state],
+            design.lever,
+            design.meas[:, 0],
+            design.meas[:, 1],
+            design.meas[:, 2],
+            design.weight,
+            design.basis[:, 0] if blk.n_coef == 1 else design.basis,
+        )[0]
     Z = rows_t.swapaxes(1, 2)  # each plot's 3 rows, contiguous
     e = Z[:, :, -1]
     if design.ref_whiten is None:
         e_ref = (design.ref_p - positions(blk.ref_basis, blk.ref_block, coef)) * design.ref_weight[:, None]
     else:
-        e_ref = np.einsum("rij,rj->ri", design.ref_whiten, design.ref_p - positions(blk.ref_basis, blk.ref_block, coef))
+        e_ref = np.einsum(
+            "rij,rj->ri", design.ref_whiten, design.ref_p - positions(blk.ref_basis, blk.ref_block, coef)
+        )
     prior = x * design.prior_weight
     cost = float(np.sum(e * e) + np.sum(e_ref * e_ref) + np.sum(prior * prior))
     surf = design.surface
@@ -313,8 +385,15 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
         return Evaluation(x, coef, Z, e_ref, cost)
     residual, J = _codegen.get("surface_residual")(positions(surf.basis, surf.block, coef), surf.alt)
     e_surface = residual * surf.weight
-    return Evaluation(x, coef, Z, e_ref, cost + float(np.sum(e_surface * e_surface)), e_surface,
-                      -J * surf.weight[:, None, None])
+    return Evaluation(
+        x,
+        coef,
+        Z,
+        e_ref,
+        cost + float(np.sum(e_surface * e_surface)),
+        e_surface,
+        -J * surf.weight[:, None, None],
+    )
 
 
 @dataclass
@@ -328,8 +407,9 @@ class Normal:
     b_x: np.ndarray  # (n + 1,)
 
 
-def _whitened_terms(block: np.ndarray, basis: np.ndarray, whiten: np.ndarray, e: np.ndarray, V: np.ndarray,
-                    b_c: np.ndarray) -> None:
+def _whitened_terms(
+    block: np.ndarray, basis: np.ndarray, whiten: np.ndarray, e: np.ndarray, V: np.ndarray, b_c: np.ndarray
+) -> None:
     """Add to V (B, K, 3, K, 3) and b_c (B, K, 3) in place the terms of residuals ``e`` (R, a) =
     ``L (y - p(t))`` (up to a constant) of positions in blocks ``block`` (R,) with basis values
     ``basis`` (R, K) and whitening rows ``whiten`` (R, a, 3): ``V += basis_k basis_m L^T L``,
@@ -346,8 +426,14 @@ def _whitened_terms(block: np.ndarray, basis: np.ndarray, whiten: np.ndarray, e:
             V[:, k, :, m, :] += np.bincount(at9, w.reshape(-1), 9 * B).reshape(B, 3, 3)
 
 
-def _reference_terms(blk: Blocks, ev: Evaluation, ref_weight: np.ndarray, V: np.ndarray, b_c: np.ndarray,
-                     whiten: np.ndarray | None = None) -> None:
+def _reference_terms(
+    blk: Blocks,
+    ev: Evaluation,
+    ref_weight: np.ndarray,
+    V: np.ndarray,
+    b_c: np.ndarray,
+    whiten: np.ndarray | None = None,
+) -> None:
     """Add the reference positions' terms to V (B, K, 3, K, 3) and b_c (B, K, 3) in place: with the
     scalar weights ``ref_weight`` (R',), or with the whitening matrices ``whiten`` (R', 3, 3)."""
     if blk.ref_block.size == 0:
@@ -388,12 +474,14 @@ def normal_equations(design: Design, ev: Evaluation) -> Normal:
     V5, b_c3 = V.reshape(-1, K, 3, K, 3), b_c.reshape(-1, K, 3)
     _reference_terms(blk, ev, design.ref_weight, V5, b_c3, design.ref_whiten)
     if design.surface is not None:
-        _whitened_terms(design.surface.block, design.surface.basis, ev.surface_whiten, ev.e_surface[:, None], V5, b_c3)
+        _whitened_terms(
+            design.surface.block, design.surface.basis, ev.surface_whiten, ev.e_surface[:, None], V5, b_c3
+        )
     idx = blk.group_state
     flat = (idx[:, :, None] * n1 + idx[:, None, :]).reshape(-1)
-    U = np.bincount(flat, G[:, q:q + w, q:q + w].reshape(-1), n1 * n1).reshape(n1, n1)
-    b_x = -np.bincount(idx.reshape(-1), G[:, q:q + w, -1].reshape(-1), n1)
+    U = np.bincount(flat, G[:, q : q + w, q : q + w].reshape(-1), n1 * n1).reshape(n1, n1)
+    b_x = -np.bincount(idx.reshape(-1), G[:, q : q + w, -1].reshape(-1), n1)
     pw = np.append(design.prior_weight, 0.0)
     U[np.diag_indices(n1)] += pw**2
     b_x -= pw**2 * np.append(ev.x, 0.0)
-    return Normal(V, np.ascontiguousarray(G[:, :q, q:q + w]), U, b_c, b_x)
+    return Normal(V, np.ascontiguousarray(G[:, :q, q : q + w]), U, b_c, b_x)

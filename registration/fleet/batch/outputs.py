@@ -43,14 +43,36 @@ from registration.fleet.batch.schur import reduce
 from registration.fleet.batch.solver import outside_when_seen
 from registration.fleet.corrected import corrected_positions
 
-__all__ = ["CHANNELS", "FUSED_COLUMNS", "HIST_BINS", "HIST_LIMIT", "SAMPLE_PLOTS", "ArchiveOutputs", "archive_outputs",
-           "output_pass", "part_name", "write_part"]
+__all__ = [
+    "CHANNELS",
+    "FUSED_COLUMNS",
+    "HIST_BINS",
+    "HIST_LIMIT",
+    "SAMPLE_PLOTS",
+    "ArchiveOutputs",
+    "archive_outputs",
+    "output_pass",
+    "part_name",
+    "write_part",
+]
 
 #: The channels of a plot, in the order of the residuals' columns.
 CHANNELS = ("range", "bearing", "elevation")
 #: The columns of a fused targets part file.
-FUSED_COLUMNS = ("target", "time_s", "x_m", "y_m", "z_m", "cov_xx_m2", "cov_xy_m2", "cov_xz_m2", "cov_yy_m2",
-                 "cov_yz_m2", "cov_zz_m2", "n_plots")
+FUSED_COLUMNS = (
+    "target",
+    "time_s",
+    "x_m",
+    "y_m",
+    "z_m",
+    "cov_xx_m2",
+    "cov_xy_m2",
+    "cov_xz_m2",
+    "cov_yy_m2",
+    "cov_yz_m2",
+    "cov_zz_m2",
+    "n_plots",
+)
 #: The most plots the figures' sample holds.
 SAMPLE_PLOTS = 20_000
 #: The residual histogram: HIST_BINS bins over [-HIST_LIMIT, HIST_LIMIT] (values clipped to it).
@@ -105,20 +127,41 @@ def _sums(problem, design, ev, residual: np.ndarray) -> dict:
     refs = problem.references.target[design.blocks.ref_index].astype(str)
     ref_ids, ref_inv = np.unique(refs, return_inverse=True)
     e_ref = np.asarray(ev.e_ref, dtype=np.float64).reshape(-1, 3)
-    by_reference = (ref_ids, np.bincount(ref_inv, np.sum(e_ref**2, axis=1), minlength=ref_ids.size),
-                    np.full(ref_ids.size, 3) * np.bincount(ref_inv, minlength=ref_ids.size))
-    hist = np.stack([np.histogram(np.clip(residual[given[:, c], c], -HIST_LIMIT, HIST_LIMIT), HIST_BINS,
-                                  (-HIST_LIMIT, HIST_LIMIT))[0] for c in range(3)])
-    return {"count": count, "sum": total, "squares": squares, "by_target": by_target, "by_reference": by_reference,
-            "hist": hist.astype(np.int64)}
+    by_reference = (
+        ref_ids,
+        np.bincount(ref_inv, np.sum(e_ref**2, axis=1), minlength=ref_ids.size),
+        np.full(ref_ids.size, 3) * np.bincount(ref_inv, minlength=ref_ids.size),
+    )
+    hist = np.stack(
+        [
+            np.histogram(
+                np.clip(residual[given[:, c], c], -HIST_LIMIT, HIST_LIMIT),
+                HIST_BINS,
+                (-HIST_LIMIT, HIST_LIMIT),
+            )[0]
+            for c in range(3)
+        ]
+    )
+    return {
+        "count": count,
+        "sum": total,
+        "squares": squares,
+        "by_target": by_target,
+        "by_reference": by_reference,
+        "hist": hist.astype(np.int64),
+    }
 
 
 def _sample(problem, x: np.ndarray, residual: np.ndarray, every: int) -> dict:
     """Every ``every``-th plot of the partition: time (s, reported), sensor, target (indices), residual
     (3,), and lat/lon (rad) as measured and corrected (NaN without a range)."""
     pick = np.arange(0, problem.n_plots, max(1, int(every)))
-    out = {"time": problem.time[pick], "sensor": problem.sensor[pick], "target": problem.target[pick],
-           "residual": residual[pick]}
+    out = {
+        "time": problem.time[pick],
+        "sensor": problem.sensor[pick],
+        "target": problem.target[pick],
+        "residual": residual[pick],
+    }
     has_range = problem.mask[pick, 0]
     sel = pick[has_range]
     layout = problem.layout
@@ -129,15 +172,18 @@ def _sample(problem, x: np.ndarray, residual: np.ndarray, every: int) -> dict:
         m = meas.copy()
         m[:, 2] = np.where(problem.mask[sel, 2], m[:, 2], xs[state[:, 5]])
         nav = problem.seen(states, sel)[1]
-        lat, lon, _ = ecef2geodetic(corrected_positions(nav, state, xs, problem.sensor_lever[problem.sensor[sel]], m))
+        lat, lon, _ = ecef2geodetic(
+            corrected_positions(nav, state, xs, problem.sensor_lever[problem.sensor[sel]], m)
+        )
         out[f"{name}_lat"] = np.full(pick.size, np.nan)
         out[f"{name}_lon"] = np.full(pick.size, np.nan)
         out[f"{name}_lat"][has_range], out[f"{name}_lon"][has_range] = lat, lon
     return out
 
 
-def output_pass(task: PartitionTask, x: np.ndarray, coef: np.ndarray, P_sink: np.ndarray, part: int, parts,
-                every: int) -> dict:
+def output_pass(
+    task: PartitionTask, x: np.ndarray, coef: np.ndarray, P_sink: np.ndarray, part: int, parts, every: int
+) -> dict:
     """The outputs of one partition at the solution (module docstring): {sums, parts (chi-square
     parts), rows (fused rows), sample, fused (the table, when ``parts`` is None)}; part ``part``
     written into the folder ``parts``. ``P_sink`` (n + 1, n + 1): the states' covariance, the
@@ -148,8 +194,10 @@ def output_pass(task: PartitionTask, x: np.ndarray, coef: np.ndarray, P_sink: np
     options = task.options
     design = make_design(problem, make_blocks(problem, options.window_s, options.degree, task.plan.span))
     if design.blocks.n_blocks != coef.shape[0]:
-        raise ValueError(f"partition {task.index}: {design.blocks.n_blocks} windows, but {coef.shape[0]} "
-                         "windows' coefficients: the partitions are not the solve's")
+        raise ValueError(
+            f"partition {task.index}: {design.blocks.n_blocks} windows, but {coef.shape[0]} "
+            "windows' coefficients: the partitions are not the solve's"
+        )
     ev = evaluate(design, x, coef)
     normal = normal_equations(design, ev)
     outside = outside_when_seen(design, x)
@@ -159,9 +207,13 @@ def output_pass(task: PartitionTask, x: np.ndarray, coef: np.ndarray, P_sink: np
     residual = np.full((problem.n_plots, 3), np.nan)
     residual[design.blocks.order] = np.where(weight > 0, ev.e, np.nan)[design.slot]
     table = _fused_table(problem, design, x, coef, normal, P_sink)
-    out = {"sums": _sums(problem, design, ev, residual), "parts": chi_square_parts(replace(design, weight=weight), ev),
-           "rows": int(table["time_s"].size), "sample": _sample(problem, x, residual, every),
-           "sensor_ids": tuple(problem.sensor_ids)}
+    out = {
+        "sums": _sums(problem, design, ev, residual),
+        "parts": chi_square_parts(replace(design, weight=weight), ev),
+        "rows": int(table["time_s"].size),
+        "sample": _sample(problem, x, residual, every),
+        "sensor_ids": tuple(problem.sensor_ids),
+    }
     if parts is None:
         out["fused"] = table
     else:
@@ -210,7 +262,9 @@ def _reduce(found: list, target_ids: tuple, sample_max: int, every: int, tables)
     count, total, squares = np.zeros((S, 3), dtype=np.int64), np.zeros((S, 3)), np.zeros((S, 3))
     hist = np.zeros((3, HIST_BINS), dtype=np.int64)
     by_target, by_reference = {}, {}
-    parts = {key: (0.0, 0) for f in found for key in f["parts"]}  # plots, references and, with a surface, surface
+    parts = {
+        key: (0.0, 0) for f in found for key in f["parts"]
+    }  # plots, references and, with a surface, surface
     for f in found:  # in partition order
         s = f["sums"]
         count += s["count"]
@@ -226,12 +280,27 @@ def _reduce(found: list, target_ids: tuple, sample_max: int, every: int, tables)
         mean, rms = total / count, np.sqrt(squares / count)
     sample = {k: np.concatenate([f["sample"][k] for f in found])[:sample_max] for k in found[0]["sample"]}
     order = sorted(by_target, key=list(target_ids).index)
-    return ArchiveOutputs(sensor_ids, count, mean, rms, squares, {k: by_target[k] for k in order}, by_reference,
-                          hist, parts, sum(f["rows"] for f in found), len(found), sample, every, tables)
+    return ArchiveOutputs(
+        sensor_ids,
+        count,
+        mean,
+        rms,
+        squares,
+        {k: by_target[k] for k in order},
+        by_reference,
+        hist,
+        parts,
+        sum(f["rows"] for f in found),
+        len(found),
+        sample,
+        every,
+        tables,
+    )
 
 
-def archive_outputs(result, source, options, *, parts=None, client=None,
-                    sample_max: int = SAMPLE_PLOTS) -> ArchiveOutputs:
+def archive_outputs(
+    result, source, options, *, parts=None, client=None, sample_max: int = SAMPLE_PLOTS
+) -> ArchiveOutputs:
     """The outputs of the partitioned solve ``result`` of ``source`` with ``options`` (module
     docstring), by one pass over its partitions (in this process or on ``client``'s workers): the
     fused targets written as parts into the folder ``parts`` (None: returned in ``.tables``),
@@ -242,12 +311,14 @@ def archive_outputs(result, source, options, *, parts=None, client=None,
     tasks = [replace(t, source=source, options=options) for t in result.tasks]
     coefs = list(result.coefficients)
     if len(tasks) != len(coefs):
-        raise ValueError(f"{len(tasks)} partitions with plots but {len(coefs)} with coefficients: the partitions "
-                         "are not the solve's")
+        raise ValueError(
+            f"{len(tasks)} partitions with plots but {len(coefs)} with coefficients: the partitions "
+            "are not the solve's"
+        )
     room = max(1, int(sample_max) - len(tasks))
     every = max(1, -(-int(result.n_plots) // room))
     P_sink = np.zeros((layout.n + 1, layout.n + 1))
-    P_sink[:layout.n, :layout.n] = result.covariance
+    P_sink[: layout.n, : layout.n] = result.covariance
     folder = None if parts is None else str(parts)
     args = [(result.estimate, c, P_sink, j, folder, every) for j, c in enumerate(coefs)]
     found = run_pass(output_pass, tasks, args, client)

@@ -34,11 +34,25 @@ from registration.core.parallel import map_chunks
 from registration.fleet.batch.blocks import window_grid
 from registration.fleet.batch.covariance import state_covariance
 from registration.fleet.batch.partitions import DEFAULT_NAV_MARGIN_S, ArchivePlan, TablesSource, make_plan
-from registration.fleet.batch.passes import PartitionTask, archive_sensors, final_pass, reduce_pass, setup_pass, step_pass
+from registration.fleet.batch.passes import (
+    PartitionTask,
+    archive_sensors,
+    final_pass,
+    reduce_pass,
+    setup_pass,
+    step_pass,
+)
 from registration.fleet.batch.schur import determined_directions, solve_reduced
+from registration.fleet.batch.solver import (
+    LAMBDA_MAX,
+    LAMBDA_START,
+    TARGETS_FIRST,
+    BatchOptions,
+    NumericalError,
+    progress_bar,
+    time_bias_warnings,
+)
 from registration.fleet.batch.spill import make_folder, remove_folder
-from registration.fleet.batch.solver import (LAMBDA_MAX, LAMBDA_START, TARGETS_FIRST, BatchOptions, NumericalError,
-                                             progress_bar, time_bias_warnings)
 from registration.fleet.data.layout import StateLayout
 from registration.fleet.observability import fleet_observability
 from registration.fleet.result import ChiSquareCheck, StateEstimates
@@ -109,7 +123,14 @@ class _Passes:
         prior = float(np.sum(self.pw2 * xs * xs))
         S = {lam: U + sum(p["S"][i] for p in parts) for i, lam in enumerate(lams)}
         r = {lam: b_x - sum(p["b_x"] - p["r"][i] for p in parts) for i, lam in enumerate(lams)}
-        return {"cost": sum(p["cost"] for p in parts) + prior, "U": U, "b_x": b_x, "S": S, "r": r, "parts": parts}
+        return {
+            "cost": sum(p["cost"] for p in parts) + prior,
+            "U": U,
+            "b_x": b_x,
+            "S": S,
+            "r": r,
+            "parts": parts,
+        }
 
     def step(self, x: np.ndarray, point: dict, lam: float, free: np.ndarray, scale, determined) -> tuple:
         """(dx (n,), dcoefs, predicted reduction, trial cost) of the damped step ``lam`` at ``point``."""
@@ -130,8 +151,15 @@ class _Passes:
         return dx[:n], [p["dc"] for p in parts], b_dot + damp, cost
 
 
-def _levenberg_marquardt(passes: _Passes, x: np.ndarray, free: np.ndarray, scale: np.ndarray, options: BatchOptions,
-                         relative: float, bar=None):
+def _levenberg_marquardt(
+    passes: _Passes,
+    x: np.ndarray,
+    free: np.ndarray,
+    scale: np.ndarray,
+    options: BatchOptions,
+    relative: float,
+    bar=None,
+):
     """:func:`registration.fleet.batch.solver.levenberg_marquardt` over the partitions: (x, converged,
     iterations, cost history); the coefficients are updated in ``passes.coefs``."""
     lam, nu = LAMBDA_START, 2.0
@@ -161,53 +189,85 @@ def _levenberg_marquardt(passes: _Passes, x: np.ndarray, free: np.ndarray, scale
     return x, converged, it, history
 
 
-def _setup(plan: ArchivePlan, source, options: BatchOptions, x0: np.ndarray, client, cache: int,
-           spill: str | None) -> tuple:
+def _setup(
+    plan: ArchivePlan, source, options: BatchOptions, x0: np.ndarray, client, cache: int, spill: str | None
+) -> tuple:
     """The tasks of the partitions with plots, their starting coefficients, exclusions and warnings."""
     empty = np.zeros((0, 2), dtype=np.int64)
     tasks = [PartitionTask(source, plan, k, options, empty, cache, spill) for k in range(plan.n_partitions)]
     found = run_pass(setup_pass, tasks, [(x0,)] * len(tasks), client)
-    kept = [(PartitionTask(source, plan, t.index, options, f["dropped"], cache, spill), f)
-            for t, f in zip(tasks, found) if f is not None and f["coef"] is not None]
+    kept = [
+        (PartitionTask(source, plan, t.index, options, f["dropped"], cache, spill), f)
+        for t, f in zip(tasks, found)
+        if f is not None and f["coef"] is not None
+    ]
     exclusions = tuple(e for f in found if f is not None for e in f["exclusions"])
     count = window_grid(plan.t0, plan.t1, plan.window_s)[0]
     edge = [d for f in found if f is not None for d in f["dropped"] if d[1] in (0, count[d[0]] - 1)]
-    warnings = (f"{len(edge)} undetermined windows set aside at the ends of their targets' spans (first: target "
-                f"{plan.target_ids[edge[0][0]]}); solve_batch would cut those targets' windows anew, so its "
-                "estimate may differ slightly",) if edge else ()
+    warnings = (
+        (
+            f"{len(edge)} undetermined windows set aside at the ends of their targets' spans (first: target "
+            f"{plan.target_ids[edge[0][0]]}); solve_batch would cut those targets' windows anew, so its "
+            "estimate may differ slightly",
+        )
+        if edge
+        else ()
+    )
     if not kept:
         raise ValueError("no plots to register (every window was set aside)")
-    return [t for t, _ in kept], [f["coef"] for _, f in kept], sum(f["plots"] for _, f in kept), exclusions, warnings
+    return (
+        [t for t, _ in kept],
+        [f["coef"] for _, f in kept],
+        sum(f["plots"] for _, f in kept),
+        exclusions,
+        warnings,
+    )
 
 
-def _final(passes: _Passes, x: np.ndarray, layout: StateLayout, options: BatchOptions, plan: ArchivePlan) -> tuple:
+def _final(
+    passes: _Passes, x: np.ndarray, layout: StateLayout, options: BatchOptions, plan: ArchivePlan
+) -> tuple:
     """(information with priors (free, free), chi-square check, exclusions) at the solution;
     NumericalError where solve_batch would set windows aside and solve again (module docstring)."""
     parts = run_pass(final_pass, passes.tasks, [(x, c) for c in passes.coefs], passes.client)
     singular, empty = sum(p["singular"] for p in parts), sum(p["empty"] for p in parts)
     if singular or empty:
-        raise NumericalError(f"{singular} target windows are undetermined at the solution and {empty} would be left "
-                             "without plots by the plots a time bias moves outside the navigation; the partitioned "
-                             "solver does not solve again without them: register in memory (solve_batch)")
+        raise NumericalError(
+            f"{singular} target windows are undetermined at the solution and {empty} would be left "
+            "without plots by the plots a time bias moves outside the navigation; the partitioned "
+            "solver does not solve again without them: register in memory (solve_batch)"
+        )
     free = layout.free
     U = sum(p["U"] for p in parts) + np.diag(passes.pw2)
     S = U + sum(p["S"][0] for p in parts)
     information = 0.5 * (S + S.T)[np.ix_(free, free)]
     xs = np.append(x, 0.0)
     prior = (xs * np.sqrt(passes.pw2))[free]
-    keys = dict.fromkeys(key for p in parts for key in p["parts"])  # plots, references and, with a surface, surface
-    chi_parts = {key: (sum(p["parts"].get(key, (0.0, 0))[0] for p in parts),
-                       sum(p["parts"].get(key, (0.0, 0))[1] for p in parts)) for key in keys}
+    keys = dict.fromkeys(
+        key for p in parts for key in p["parts"]
+    )  # plots, references and, with a surface, surface
+    chi_parts = {
+        key: (
+            sum(p["parts"].get(key, (0.0, 0))[0] for p in parts),
+            sum(p["parts"].get(key, (0.0, 0))[1] for p in parts),
+        )
+        for key in keys
+    }
     chi_parts["priors"] = (float(np.sum(prior * prior)), int(np.count_nonzero(passes.pw2[free])))
     n_values = sum(n for _, n in chi_parts.values())
     n_params = free.size + 3 * sum(p["n_coef"] for p in parts)
     cost = sum(p["cost"] for p in parts) + float(np.sum(passes.pw2 * xs * xs))
     tb = layout.time_bias_index[layout.time_bias_index >= 0]
     if tb.size and np.max(np.abs(x[tb])) > plan.nav_margin_s:
-        raise ValueError(f"a time bias of {np.max(np.abs(x[tb])):.3g} s exceeds the navigation margin of "
-                         f"{plan.nav_margin_s:g} s read around each partition: register again with a larger margin")
-    return information, ChiSquareCheck(cost, n_values - n_params, chi_parts), tuple(
-        e for p in parts for e in p["exclusions"])
+        raise ValueError(
+            f"a time bias of {np.max(np.abs(x[tb])):.3g} s exceeds the navigation margin of "
+            f"{plan.nav_margin_s:g} s read around each partition: register again with a larger margin"
+        )
+    return (
+        information,
+        ChiSquareCheck(cost, n_values - n_params, chi_parts),
+        tuple(e for p in parts for e in p["exclusions"]),
+    )
 
 
 def _remove_spill(folder: str, client) -> None:
@@ -220,10 +280,20 @@ def _remove_spill(folder: str, client) -> None:
             pass
 
 
-def solve_batch_partitioned(source, options: BatchOptions | None = None, x0: np.ndarray | None = None, *,
-                            partitions: int | None = None, partition_s: float | None = None, client=None,
-                            cache: int | None = None, spill: bool | None = None, spill_dir: str | None = None,
-                            nav_margin_s: float = DEFAULT_NAV_MARGIN_S, progress: bool = False) -> PartitionedResult:
+def solve_batch_partitioned(
+    source,
+    options: BatchOptions | None = None,
+    x0: np.ndarray | None = None,
+    *,
+    partitions: int | None = None,
+    partition_s: float | None = None,
+    client=None,
+    cache: int | None = None,
+    spill: bool | None = None,
+    spill_dir: str | None = None,
+    nav_margin_s: float = DEFAULT_NAV_MARGIN_S,
+    progress: bool = False,
+) -> PartitionedResult:
     """:func:`registration.fleet.batch.solve.solve_batch`'s estimate and covariance of the states from an
     archive read partition by partition (module docstring).
 
@@ -240,8 +310,9 @@ def solve_batch_partitioned(source, options: BatchOptions | None = None, x0: np.
     (n,; rad, m): starting states.
     """
     options = options or BatchOptions()
-    plan = make_plan(source, options.window_s, partitions=partitions, partition_s=partition_s,
-                     nav_margin_s=nav_margin_s)
+    plan = make_plan(
+        source, options.window_s, partitions=partitions, partition_s=partition_s, nav_margin_s=nav_margin_s
+    )
     layout, platform_ids, sensor_ids, sensor_platform = archive_sensors(source)
     x = np.zeros(layout.n) if x0 is None else np.array(x0, dtype=np.float64)
     if x.shape != (layout.n,) or not np.isfinite(x).all():
@@ -257,9 +328,12 @@ def solve_batch_partitioned(source, options: BatchOptions | None = None, x0: np.
         passes = _Passes(tasks, client, layout, coefs)
         free = layout.free
         with progress_bar(progress, "fleet partitioned solve", unit="iteration") as bar:
-            x, _, it1, h1 = _levenberg_marquardt(passes, x, np.zeros(0, dtype=np.int64), np.zeros(0), options,
-                                                 TARGETS_FIRST, bar)
-            x, converged, it2, h2 = _levenberg_marquardt(passes, x, free, layout.scale[free], options, 0.0, bar)
+            x, _, it1, h1 = _levenberg_marquardt(
+                passes, x, np.zeros(0, dtype=np.int64), np.zeros(0), options, TARGETS_FIRST, bar
+            )
+            x, converged, it2, h2 = _levenberg_marquardt(
+                passes, x, free, layout.scale[free], options, 0.0, bar
+            )
         information, chi2, outside = _final(passes, x, layout, options, plan)
     finally:
         if folder is not None:
@@ -274,8 +348,25 @@ def solve_batch_partitioned(source, options: BatchOptions | None = None, x0: np.
     report = fleet_observability(information_data, free, layout, sensor_platform, platform_ids, sensor_ids)
     status = {layout.names[i]: "fixed" for i in layout.fixed}
     status.update(report.status)
-    return PartitionedResult(layout, x, P, sigma, information, information_data, undetermined,
-                             converged, it1 + it2, h1 + h2[1:], chi2, passes.coefs,
-                             plan.excluded + exclusions + outside, warnings + time_bias_warnings(layout, x, options),
-                             n_plots, plan, report, status, layout.scale[free],
-                             tuple(replace(t, spill=None) for t in passes.tasks))
+    return PartitionedResult(
+        layout,
+        x,
+        P,
+        sigma,
+        information,
+        information_data,
+        undetermined,
+        converged,
+        it1 + it2,
+        h1 + h2[1:],
+        chi2,
+        passes.coefs,
+        plan.excluded + exclusions + outside,
+        warnings + time_bias_warnings(layout, x, options),
+        n_plots,
+        plan,
+        report,
+        status,
+        layout.scale[free],
+        tuple(replace(t, spill=None) for t in passes.tasks),
+    )

@@ -36,8 +36,16 @@ import numpy as np
 from registration.fleet.batch.blocks import window_grid, window_of
 from registration.fleet.data.problem import Exclusion
 
-__all__ = ["DEFAULT_NAV_MARGIN_S", "NAV_EXTRA_SAMPLES", "SLACK_S", "ArchivePlan", "TablesSource", "make_plan",
-           "partition_of", "window_index"]
+__all__ = [
+    "DEFAULT_NAV_MARGIN_S",
+    "NAV_EXTRA_SAMPLES",
+    "SLACK_S",
+    "ArchivePlan",
+    "TablesSource",
+    "make_plan",
+    "partition_of",
+    "window_index",
+]
 
 #: Plots are read this far (s) beyond a partition's windows, so rounding cannot lose one.
 SLACK_S = 1e-3
@@ -46,8 +54,10 @@ NAV_EXTRA_SAMPLES = 3
 #: Navigation read beyond a partition's plots (s): the largest time bias it can follow exactly.
 DEFAULT_NAV_MARGIN_S = 60.0
 #: Why a target seen by one sensor only is set aside (the text of build_problem).
-SINGLE_SENSOR = ("seen by one sensor only and not a reference: its plots fit any registration errors, so they "
-                 "carry no registration information")
+SINGLE_SENSOR = (
+    "seen by one sensor only and not a reference: its plots fit any registration errors, so they "
+    "carry no registration information"
+)
 
 
 def _columns(table) -> dict | None:
@@ -67,10 +77,22 @@ class TablesSource:
     """The fleet tables in memory (:mod:`registration.fleet.data.tables`: SI units, radians) as a
     partition source (module docstring); ``batch_rows``: rows per batch of the first passes."""
 
-    def __init__(self, plots, sensors, navigation, platforms=None, references=None, batch_rows: int = 1_000_000,
-                 targets=None):
+    def __init__(
+        self,
+        plots,
+        sensors,
+        navigation,
+        platforms=None,
+        references=None,
+        batch_rows: int = 1_000_000,
+        targets=None,
+    ):
         self.plots, self.navigation = _columns(plots), _columns(navigation)
-        self.sensors, self.platforms, self.references = _columns(sensors), _columns(platforms), _columns(references)
+        self.sensors, self.platforms, self.references = (
+            _columns(sensors),
+            _columns(platforms),
+            _columns(references),
+        )
         self.targets = _columns(targets)  # the surface targets (read whole: a row per target)
         self.batch_rows = int(batch_rows)
         self.token = uuid.uuid4().hex
@@ -84,7 +106,7 @@ class TablesSource:
             return
         n = len(next(iter(table.values())))
         for a in range(0, n, self.batch_rows):
-            yield {c: table[c][a:a + self.batch_rows] for c in columns}
+            yield {c: table[c][a : a + self.batch_rows] for c in columns}
 
     def plot_batches(self, columns):
         return self._batches(self.plots, columns)
@@ -225,7 +247,9 @@ def _cuts(t0: np.ndarray, t1: np.ndarray, window_s: float, partitions: int | Non
     lo, hi = float(starts.min()), float(starts.max())
     if partition_s is not None:
         if not partition_s > 0:
-            raise ValueError(f"--partition-s (partition_s): expected a partition length > 0 s, got {partition_s}")
+            raise ValueError(
+                f"--partition-s (partition_s): expected a partition length > 0 s, got {partition_s}"
+            )
         cuts = lo + partition_s * np.arange(1, max(1, int(np.ceil((hi - lo) / partition_s)) + 1))
     else:
         p = 1 if partitions is None else int(partitions)
@@ -277,27 +301,42 @@ def _navigation_ranges(source, platforms: list[str], plot_ranges: np.ndarray, ma
                 if not np.isfinite(first[p]):
                     continue
                 lo, hi = lows[p][at, 0], highs[p][at, -1]
-                ranges[p] = (float(lo if np.isfinite(lo) else first[p]), float(hi if np.isfinite(hi) else last[p]))
+                ranges[p] = (
+                    float(lo if np.isfinite(lo) else first[p]),
+                    float(hi if np.isfinite(hi) else last[p]),
+                )
             at += 1
         out.append(ranges)
     return tuple(out)
 
 
-def make_plan(source, window_s: float, *, partitions: int | None = None, partition_s: float | None = None,
-              nav_margin_s: float = DEFAULT_NAV_MARGIN_S) -> ArchivePlan:
+def make_plan(
+    source,
+    window_s: float,
+    *,
+    partitions: int | None = None,
+    partition_s: float | None = None,
+    nav_margin_s: float = DEFAULT_NAV_MARGIN_S,
+) -> ArchivePlan:
     """The plan of an archive (module docstring): ``partitions`` equal time ranges of the windows'
     start times, or ranges of ``partition_s`` seconds (default: one partition)."""
     if not window_s > 0:
-        raise ValueError(f"window_s: the partitioned solver needs target windows (window_s > 0), got {window_s}")
+        raise ValueError(
+            f"window_s: the partitioned solver needs target windows (window_s > 0), got {window_s}"
+        )
     ids, t_min, t_max, count, n_sensors, n = _first_pass(source)
     refs = _reference_targets(source)
-    excluded = tuple(Exclusion(g, SINGLE_SENSOR, count[g], float(t_min[g]), float(t_max[g]))
-                     for g in ids if n_sensors[g] == 1 and g not in refs)
+    excluded = tuple(
+        Exclusion(g, SINGLE_SENSOR, count[g], float(t_min[g]), float(t_max[g]))
+        for g in ids
+        if n_sensors[g] == 1 and g not in refs
+    )
     gone = {e.target for e in excluded}
     kept = tuple(g for g in ids if g not in gone)
     if not kept:
-        raise ValueError("no plots to register (every target was excluded: "
-                         + "; ".join(e.text() for e in excluded) + ")")
+        raise ValueError(
+            "no plots to register (every target was excluded: " + "; ".join(e.text() for e in excluded) + ")"
+        )
     t0 = np.array([t_min[g] for g in kept])
     t1 = np.array([t_max[g] for g in kept])
     cuts, starts, ends = _cuts(t0, t1, window_s, partitions, partition_s)
@@ -311,5 +350,6 @@ def make_plan(source, window_s: float, *, partitions: int | None = None, partiti
     sensor_platforms = list(dict.fromkeys(np.asarray(source.sensors["platform"]).astype(str).tolist()))
     nav = _navigation_ranges(source, sensor_platforms, ranges, float(nav_margin_s))
     token = f"{source.token}:{window_s}:{hash((cuts.tobytes(), t0.tobytes(), t1.tobytes()))}"
-    return ArchivePlan(float(window_s), kept, tuple(ids), t0, t1, excluded, cuts, ranges, nav, n,
-                       float(nav_margin_s), token)
+    return ArchivePlan(
+        float(window_s), kept, tuple(ids), t0, t1, excluded, cuts, ranges, nav, n, float(nav_margin_s), token
+    )

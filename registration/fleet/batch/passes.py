@@ -32,22 +32,36 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from registration.fleet.batch import spill as _spill
 from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.initial import initial_coefficients
 from registration.fleet.batch.normal import evaluate, make_design, normal_equations
+from registration.fleet.batch.partitions import ArchivePlan, partition_of, window_index
 from registration.fleet.batch.residuals import chi_square_parts
-from registration.fleet.batch import spill as _spill
 from registration.fleet.batch.schur import reduce
 from registration.fleet.batch.solver import BatchOptions, outside_when_seen, singular_blocks
-from registration.fleet.data.inputs import (index_of, read_platforms, read_plots, read_references, read_sensors,
-                                            read_surface)
+from registration.fleet.data.inputs import (
+    index_of,
+    read_platforms,
+    read_plots,
+    read_references,
+    read_sensors,
+    read_surface,
+)
 from registration.fleet.data.layout import StateLayout, make_layout
 from registration.fleet.data.navigation import navigation_at, platform_navigation
 from registration.fleet.data.problem import Exclusion, FleetProblem
 from registration.fleet.data.tables import read_table
-from registration.fleet.batch.partitions import ArchivePlan, partition_of, window_index
 
-__all__ = ["PartitionTask", "archive_layout", "final_pass", "partition_problem", "reduce_pass", "setup_pass", "step_pass"]
+__all__ = [
+    "PartitionTask",
+    "archive_layout",
+    "final_pass",
+    "partition_problem",
+    "reduce_pass",
+    "setup_pass",
+    "step_pass",
+]
 
 
 @dataclass(frozen=True)
@@ -98,7 +112,9 @@ def partition_problem(task: PartitionTask) -> FleetProblem | None:
     sensors_t = read_table("sensors", src.sensors, ("sensor", "platform"))
     platform_ids, platform_priors = read_platforms(src.platforms, sensors_t.ids("platform"))
     specs = read_sensors(sensors_t, platform_ids)
-    plots_t = read_table(src.name("plots"), _read(src, "plots", src.read_plots, lo, hi), ("time", "sensor", "target"))
+    plots_t = read_table(
+        src.name("plots"), _read(src, "plots", src.read_plots, lo, hi), ("time", "sensor", "target")
+    )
     cols = read_plots(plots_t, specs)
     target = index_of(cols.target, plan.target_ids)
     keep = target >= 0
@@ -116,21 +132,41 @@ def partition_problem(task: PartitionTask) -> FleetProblem | None:
     ref_keep = ref_target >= 0
     ref_keep[ref_keep] = partition_of(plan, ref_target[ref_keep], refs.time[ref_keep]) == k
     refs = refs.subset(ref_keep)
-    nav_t = read_table(src.name("navigation"), _read(src, "navigation", src.read_navigation, plan.nav_ranges[k]),
-                       ("platform",))
+    nav_t = read_table(
+        src.name("navigation"),
+        _read(src, "navigation", src.read_navigation, plan.nav_ranges[k]),
+        ("platform",),
+    )
     tracks = platform_navigation(nav_t, platform_ids)
 
     def describe(i: int) -> str:
         return f"plot at {time[i]:g} s of sensor {str(specs.ids[sensor[i]])!r}"
 
     nav = navigation_at(tracks, platform_ids, specs.platform[sensor], time, describe)
-    layout = make_layout(platform_ids, platform_priors, specs.ids, specs.channels, specs.prior, specs.extended_prior)
+    layout = make_layout(
+        platform_ids, platform_priors, specs.ids, specs.channels, specs.prior, specs.extended_prior
+    )
     return FleetProblem(
-        platform_ids=tuple(platform_ids), sensor_ids=specs.ids, target_ids=plan.target_ids,
-        sensor_platform=specs.platform, sensor_sigma=specs.sigma, sensor_lever=specs.lever, layout=layout,
-        time=time, sensor=sensor, target=target[keep], meas=cols.meas[keep], mask=cols.mask[keep], nav=nav, row=keep,
-        n_input_plots=int(cols.time.shape[0]), references=refs, ref_target=index_of(refs.target, plan.target_ids),
-        tracks=tracks, surface=read_surface(getattr(src, "targets", None)))
+        platform_ids=tuple(platform_ids),
+        sensor_ids=specs.ids,
+        target_ids=plan.target_ids,
+        sensor_platform=specs.platform,
+        sensor_sigma=specs.sigma,
+        sensor_lever=specs.lever,
+        layout=layout,
+        time=time,
+        sensor=sensor,
+        target=target[keep],
+        meas=cols.meas[keep],
+        mask=cols.mask[keep],
+        nav=nav,
+        row=keep,
+        n_input_plots=int(cols.time.shape[0]),
+        references=refs,
+        ref_target=index_of(refs.target, plan.target_ids),
+        tracks=tracks,
+        surface=read_surface(getattr(src, "targets", None)),
+    )
 
 
 def archive_layout(source) -> StateLayout:
@@ -144,16 +180,24 @@ def archive_sensors(source) -> tuple:
     sensors_t = read_table("sensors", source.sensors, ("sensor", "platform"))
     platform_ids, platform_priors = read_platforms(source.platforms, sensors_t.ids("platform"))
     specs = read_sensors(sensors_t, platform_ids)
-    layout = make_layout(platform_ids, platform_priors, specs.ids, specs.channels, specs.prior, specs.extended_prior)
+    layout = make_layout(
+        platform_ids, platform_priors, specs.ids, specs.channels, specs.prior, specs.extended_prior
+    )
     return layout, tuple(platform_ids), tuple(specs.ids), specs.platform
 
 
 def _design(task: PartitionTask, problem: FleetProblem):
     """The partition's design without priors; navigation and measurements column-major, as the
     generated functions take them column by column (the same numbers, without a copy per evaluation)."""
-    design = make_design(problem, make_blocks(problem, task.options.window_s, task.options.degree, task.plan.span))
-    return replace(design, prior_weight=np.zeros_like(design.prior_weight), nav=np.asfortranarray(design.nav),
-                   meas=np.asfortranarray(design.meas))
+    design = make_design(
+        problem, make_blocks(problem, task.options.window_s, task.options.degree, task.plan.span)
+    )
+    return replace(
+        design,
+        prior_weight=np.zeros_like(design.prior_weight),
+        nav=np.asfortranarray(design.nav),
+        meas=np.asfortranarray(design.meas),
+    )
 
 
 @dataclass(frozen=True)
@@ -166,7 +210,11 @@ class _Plots:
 
 
 def _new_entry(problem: FleetProblem, design) -> dict:
-    return {"problem": _Plots(problem.target, problem.time, problem.target_ids), "design": design, "points": {}}
+    return {
+        "problem": _Plots(problem.target, problem.time, problem.target_ids),
+        "design": design,
+        "points": {},
+    }
 
 
 def _keep(task: PartitionTask, entry: dict) -> None:
@@ -214,8 +262,14 @@ def _point_digest(x: np.ndarray, coef: np.ndarray) -> str:
     return _spill.digest(x.tobytes(), coef.tobytes(), str(coef.shape))
 
 
-def _point(task: PartitionTask, entry: dict, x: np.ndarray, coef: np.ndarray, with_normal: bool = True,
-           with_ev: bool = False) -> dict:
+def _point(
+    task: PartitionTask,
+    entry: dict,
+    x: np.ndarray,
+    coef: np.ndarray,
+    with_normal: bool = True,
+    with_ev: bool = False,
+) -> dict:
     """{ev, cost, normal, reduced: {lam: Reduced}} at (x, coef), computed as asked (the latest two
     points are kept in the entry; the normal equations and cost of the latest one on disk too)."""
     key = (x.tobytes(), coef.tobytes())
@@ -245,8 +299,12 @@ def _point(task: PartitionTask, entry: dict, x: np.ndarray, coef: np.ndarray, wi
 def _spill_point(task: PartitionTask, x: np.ndarray, coef: np.ndarray, pt: dict, slot: str = "point") -> None:
     """Write a point's normal equations, cost and latest reduction to the disk cache (if the task has one)."""
     if task.spill is not None:
-        _spill.save(task.spill, f"{task.spill_name}-{slot}", {"normal": pt["normal"], "cost": pt["cost"],
-                                                              "reduced": pt["reduced"]}, _point_digest(x, coef))
+        _spill.save(
+            task.spill,
+            f"{task.spill_name}-{slot}",
+            {"normal": pt["normal"], "cost": pt["cost"], "reduced": pt["reduced"]},
+            _point_digest(x, coef),
+        )
 
 
 def _reduced(entry: dict, pt: dict, lam: float):
@@ -269,8 +327,11 @@ def setup_pass(task: PartitionTask, x0: np.ndarray) -> dict | None:
         task_k = replace(task, dropped=np.concatenate(dropped))
         problem = partition_problem(task_k)
         if problem is None:
-            return None if not exclusions else {"dropped": task_k.dropped, "exclusions": exclusions,
-                                                "coef": None, "plots": 0}
+            return (
+                None
+                if not exclusions
+                else {"dropped": task_k.dropped, "exclusions": exclusions, "coef": None, "plots": 0}
+            )
         design = _design(task_k, problem)
         coef = initial_coefficients(design, x0)
         ev = evaluate(design, x0, coef)
@@ -285,7 +346,12 @@ def setup_pass(task: PartitionTask, x0: np.ndarray) -> dict | None:
                 entry["points"][(x0.tobytes(), coef.tobytes())] = pt
                 _spill_point(task_k, x0, coef, pt)
                 _keep(task_k, entry)
-            return {"dropped": task_k.dropped, "exclusions": exclusions, "coef": coef, "plots": problem.n_plots}
+            return {
+                "dropped": task_k.dropped,
+                "exclusions": exclusions,
+                "coef": coef,
+                "plots": problem.n_plots,
+            }
         blk = design.blocks
         first = blk.order[blk.block_start[bad]]
         w = window_index(task.plan, problem.target[first], problem.time[first])[0]
@@ -294,9 +360,16 @@ def setup_pass(task: PartitionTask, x0: np.ndarray) -> dict | None:
             plots = blk.order[blk.block == b]
             t = problem.time[plots]
             sensors = sorted({problem.sensor_ids[s] for s in problem.sensor[plots]})
-            exclusions.append(Exclusion(problem.target_ids[blk.block_target[b]], "singular geometry: its position is "
-                                        f"not determined by the plots of {', '.join(sensors)} in this window",
-                                        int(plots.size), float(t.min()), float(t.max())))
+            exclusions.append(
+                Exclusion(
+                    problem.target_ids[blk.block_target[b]],
+                    "singular geometry: its position is "
+                    f"not determined by the plots of {', '.join(sensors)} in this window",
+                    int(plots.size),
+                    float(t.min()),
+                    float(t.max()),
+                )
+            )
 
 
 def reduce_pass(task: PartitionTask, x: np.ndarray, coef: np.ndarray, lams: tuple) -> dict:
@@ -315,8 +388,13 @@ def _reduce_terms(entry: dict, pt: dict, lams: tuple) -> dict:
     keep alive the buffer of a whole spill file the arrays may view."""
     normal = pt["normal"]
     reds = [_reduced(entry, pt, lam) for lam in lams]
-    return {"cost": pt["cost"], "U": normal.U.copy(), "b_x": normal.b_x.copy(), "S": [r.S.copy() for r in reds],
-            "r": [r.r.copy() for r in reds]}
+    return {
+        "cost": pt["cost"],
+        "U": normal.U.copy(),
+        "b_x": normal.b_x.copy(),
+        "S": [r.S.copy() for r in reds],
+        "r": [r.r.copy() for r in reds],
+    }
 
 
 def step_pass(task: PartitionTask, x: np.ndarray, coef: np.ndarray, dx: np.ndarray, lam: float) -> dict:
@@ -336,8 +414,12 @@ def step_pass(task: PartitionTask, x: np.ndarray, coef: np.ndarray, dx: np.ndarr
     x_trial, coef_trial = x + dx[:-1], coef + dc3
     trial = _point(task, entry, x_trial, coef_trial, with_normal=task.spill is not None)
     _spill_point(task, x_trial, coef_trial, trial, "trial")
-    return {"dc": dc3, "b_dot": float(np.sum(dc * normal.b_c)), "damp": float(np.sum(diag_V * dc**2)),
-            "cost": trial["cost"]}
+    return {
+        "dc": dc3,
+        "b_dot": float(np.sum(dc * normal.b_c)),
+        "damp": float(np.sum(diag_V * dc**2)),
+        "cost": trial["cost"],
+    }
 
 
 def final_pass(task: PartitionTask, x: np.ndarray, coef: np.ndarray) -> dict:
@@ -357,10 +439,22 @@ def final_pass(task: PartitionTask, x: np.ndarray, coef: np.ndarray) -> dict:
     for k in np.unique(problem.target[outside]):
         sel = outside & (problem.target == k)
         t = problem.time[sel]
-        exclusions.append(Exclusion(problem.target_ids[k], "seen outside its platform's navigation once its "
-                                    "sensor's time bias is applied (reported time - time bias)", int(sel.sum()),
-                                    float(t.min()), float(t.max())))
-    out.update(parts=chi_square_parts(replace(design, weight=weight), pt["ev"]),
-               n_coef=int(design.blocks.coef_mask.sum()), singular=int(singular_blocks(design, pt["normal"]).size),
-               outside=int(outside.sum()), exclusions=exclusions, empty=int(empty.sum()))
+        exclusions.append(
+            Exclusion(
+                problem.target_ids[k],
+                "seen outside its platform's navigation once its "
+                "sensor's time bias is applied (reported time - time bias)",
+                int(sel.sum()),
+                float(t.min()),
+                float(t.max()),
+            )
+        )
+    out.update(
+        parts=chi_square_parts(replace(design, weight=weight), pt["ev"]),
+        n_coef=int(design.blocks.coef_mask.sum()),
+        singular=int(singular_blocks(design, pt["normal"]).size),
+        outside=int(outside.sum()),
+        exclusions=exclusions,
+        empty=int(empty.sum()),
+    )
     return out

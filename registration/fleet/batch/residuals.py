@@ -8,12 +8,18 @@ from __future__ import annotations
 import numpy as np
 
 from registration.fleet.batch.normal import Design, Evaluation
+from registration.fleet.batch.solver import BatchOptions, determined_design, fit_windows
 from registration.fleet.data.problem import FleetProblem
 from registration.fleet.result import ChiSquareCheck
-from registration.fleet.batch.solver import BatchOptions, determined_design, fit_windows
 
-__all__ = ["UNUSED_REFERENCES_WARN", "chi_square_parts", "reference_residuals", "residual_table", "residuals_at",
-           "unused_references"]
+__all__ = [
+    "UNUSED_REFERENCES_WARN",
+    "chi_square_parts",
+    "reference_residuals",
+    "residual_table",
+    "residuals_at",
+    "unused_references",
+]
 
 
 def chi_square_parts(design: Design, ev: Evaluation, free: np.ndarray | None = None) -> dict:
@@ -25,8 +31,10 @@ def chi_square_parts(design: Design, ev: Evaluation, free: np.ndarray | None = N
     constraints, one value each), "priors": (the same over the priors of the states ``free``
     (indices), if given)}."""
     e = np.where(design.weight > 0, ev.e, 0.0)
-    parts = {"plots": (float(np.sum(e * e)), int(np.count_nonzero(design.weight))),
-             "references": (float(np.sum(ev.e_ref * ev.e_ref)), design.n_reference_values)}
+    parts = {
+        "plots": (float(np.sum(e * e)), int(np.count_nonzero(design.weight))),
+        "references": (float(np.sum(ev.e_ref * ev.e_ref)), design.n_reference_values),
+    }
     if design.surface is not None:
         parts["surface"] = (float(np.sum(ev.e_surface * ev.e_surface)), design.surface.size)
     if free is not None:
@@ -35,7 +43,9 @@ def chi_square_parts(design: Design, ev: Evaluation, free: np.ndarray | None = N
     return parts
 
 
-def reference_residuals(problem: FleetProblem, design: Design, ev: Evaluation) -> tuple[np.ndarray, np.ndarray]:
+def reference_residuals(
+    problem: FleetProblem, design: Design, ev: Evaluation
+) -> tuple[np.ndarray, np.ndarray]:
     """(target ids (R',), normalised residuals (R', 3)): per reference position used, ``(known -
     fitted position) / sigma`` per ECEF axis (dimensionless; sigma in m per axis). When some
     reference used has ``sigma_up`` not equal to its ``sigma`` (:attr:`Design.ref_whiten`), the three
@@ -69,13 +79,16 @@ def unused_references(problem: FleetProblem, design: Design) -> str | None:
     if not flagged:
         return None
     first = int(np.flatnonzero(~used & np.isin(target, flagged))[0])
-    return (f"{int(np.sum(~used))} of {n} reference positions are not used (of targets "
-            + ", ".join(f"{t}: {share[t]:.0%}" for t in flagged) + f"; the first at {refs.time[first]:g} s): no "
-            "window holds them, as they lie outside their target's plotted time span (with window_s = 0: at no "
-            "instant of its plots) or its plots there were set aside, so neither they nor their sigma enter the "
-            "estimate or the chi-square. That is expected where the reference track runs longer than the plots "
-            "(AIS before and after the radar holds a vessel); otherwise check the reference file's time_s against "
-            "the plots' time origin")
+    return (
+        f"{int(np.sum(~used))} of {n} reference positions are not used (of targets "
+        + ", ".join(f"{t}: {share[t]:.0%}" for t in flagged)
+        + f"; the first at {refs.time[first]:g} s): no "
+        "window holds them, as they lie outside their target's plotted time span (with window_s = 0: at no "
+        "instant of its plots) or its plots there were set aside, so neither they nor their sigma enter the "
+        "estimate or the chi-square. That is expected where the reference track runs longer than the plots "
+        "(AIS before and after the radar holds a vessel); otherwise check the reference file's time_s against "
+        "the plots' time origin"
+    )
 
 
 def residual_table(problem: FleetProblem, design: Design, ev: Evaluation) -> np.ndarray:
@@ -86,8 +99,9 @@ def residual_table(problem: FleetProblem, design: Design, ev: Evaluation) -> np.
     return out
 
 
-def residuals_at(problem: FleetProblem, x: np.ndarray, options: BatchOptions | None = None
-                 ) -> tuple[np.ndarray, ChiSquareCheck, FleetProblem]:
+def residuals_at(
+    problem: FleetProblem, x: np.ndarray, options: BatchOptions | None = None
+) -> tuple[np.ndarray, ChiSquareCheck, FleetProblem]:
     """Normalised residuals (input plot rows, 3) at states ``x`` (n,; rad, m) with the trajectories
     fitted, their chi-square check (degrees of freedom: measured values minus trajectory
     coefficients; the states count as known) and the problem they were computed on (windows whose

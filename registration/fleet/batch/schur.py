@@ -26,7 +26,15 @@ from registration.core.observability import UNOBSERVABLE_BELOW
 from registration.fleet.batch.blocks import Blocks
 from registration.fleet.batch.normal import Normal
 
-__all__ = ["Reduced", "determined_directions", "local_coupling", "masked_blocks", "reduce", "solve_reduced", "damped_step"]
+__all__ = [
+    "Reduced",
+    "determined_directions",
+    "local_coupling",
+    "masked_blocks",
+    "reduce",
+    "solve_reduced",
+    "damped_step",
+]
 
 
 @dataclass
@@ -121,7 +129,9 @@ def solve_reduced(S: np.ndarray, r: np.ndarray, scale: np.ndarray, determined: n
     return scale * (Q @ z)
 
 
-def damped_step(blk: Blocks, normal: Normal, free: np.ndarray, scale: np.ndarray, determined: np.ndarray, lam: float):
+def damped_step(
+    blk: Blocks, normal: Normal, free: np.ndarray, scale: np.ndarray, determined: np.ndarray, lam: float
+):
     """The step (dx (n,), dcoef (B, n_coef, 3)) and its predicted cost reduction."""
     red = reduce(blk, normal, lam)
     n = normal.U.shape[0] - 1

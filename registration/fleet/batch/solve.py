@@ -11,19 +11,26 @@ from __future__ import annotations
 import numpy as np
 
 from registration.fleet.batch.covariance import fused_targets, solution_information, state_covariance
-from registration.fleet.observability import fleet_observability
-from registration.fleet.data.problem import FleetProblem
-from registration.fleet.batch.residuals import chi_square_parts, reference_residuals, residual_table, unused_references
-from registration.fleet.result import BatchResult, ChiSquareCheck
+from registration.fleet.batch.residuals import (
+    chi_square_parts,
+    reference_residuals,
+    residual_table,
+    unused_references,
+)
 from registration.fleet.batch.solver import BatchOptions, fit
+from registration.fleet.data.problem import FleetProblem
+from registration.fleet.observability import fleet_observability
+from registration.fleet.result import BatchResult, ChiSquareCheck
 
 __all__ = ["HEIGHT_WARNING", "solve_batch"]
 
 #: The warning for targets whose height only slant ranges measure (FleetProblem.targets_without_height).
-HEIGHT_WARNING = ("{} targets have no measured height ({}): no plot with an elevation, no reference with a height and "
-                  "no surface; their heights are determined only weakly by the slant ranges and trade off against the "
-                  "range biases, so those may be wrong by more than their sigma. Give the surface they move on (the "
-                  "targets table's surface_alt_m, sigma_surface_m; ships: mean sea level) or references with heights")
+HEIGHT_WARNING = (
+    "{} targets have no measured height ({}): no plot with an elevation, no reference with a height and "
+    "no surface; their heights are determined only weakly by the slant ranges and trade off against the "
+    "range biases, so those may be wrong by more than their sigma. Give the surface they move on (the "
+    "targets table's surface_alt_m, sigma_surface_m; ships: mean sea level) or references with heights"
+)
 
 
 def _per_input_row(problem: FleetProblem, values: np.ndarray) -> np.ndarray:
@@ -42,8 +49,13 @@ def _chi_square(fit_, ev) -> ChiSquareCheck:
     return ChiSquareCheck(ev.cost, n_values - n_params, parts)
 
 
-def solve_batch(problem: FleetProblem, options: BatchOptions | None = None, x0: np.ndarray | None = None, *,
-                progress: bool = False) -> BatchResult:
+def solve_batch(
+    problem: FleetProblem,
+    options: BatchOptions | None = None,
+    x0: np.ndarray | None = None,
+    *,
+    progress: bool = False,
+) -> BatchResult:
     """Register a fleet: maximum-likelihood (or, with finite priors, maximum a posteriori)
     estimates of every platform's attitude errors and every sensor's biases, jointly with the
     target trajectories, from all plots at once. See docs/fleet.md for the model and the method.
@@ -57,8 +69,9 @@ def solve_batch(problem: FleetProblem, options: BatchOptions | None = None, x0: 
     layout = problem.layout
     free = layout.free
     sol = solution_information(fit_)
-    report = fleet_observability(sol.information_data, free, layout, problem.sensor_platform,
-                                 problem.platform_ids, problem.sensor_ids)
+    report = fleet_observability(
+        sol.information_data, free, layout, problem.sensor_platform, problem.platform_ids, problem.sensor_ids
+    )
     scale = layout.scale[free]
     P_free, undetermined = state_covariance(sol.information, scale)
     n = layout.n
@@ -74,16 +87,33 @@ def solve_batch(problem: FleetProblem, options: BatchOptions | None = None, x0: 
     ref_target, ref_residuals = reference_residuals(problem, fit_.design, sol.evaluation)
     unused = unused_references(problem, fit_.design)
     flat = problem.targets_without_height()
-    height = (HEIGHT_WARNING.format(len(flat), ", ".join(flat[:5]) + (", ..." if len(flat) > 5 else "")),) if flat else ()
+    height = (
+        (HEIGHT_WARNING.format(len(flat), ", ".join(flat[:5]) + (", ..." if len(flat) > 5 else "")),)
+        if flat
+        else ()
+    )
     return BatchResult(
-        layout=layout, estimate=fit_.x.copy(), covariance=P, sigma=sigma, status=status,
-        targets=fused_targets(fit_, sol.reduced, P_sink), residuals=residual_table(problem, fit_.design, sol.evaluation),
-        chi_square=_chi_square(fit_, sol.evaluation), observability=report, excluded=problem.excluded,
-        information=sol.information_data, free_names=tuple(layout.names[i] for i in free), scale=scale,
-        undetermined=undetermined, converged=fit_.converged, iterations=fit_.iterations,
+        layout=layout,
+        estimate=fit_.x.copy(),
+        covariance=P,
+        sigma=sigma,
+        status=status,
+        targets=fused_targets(fit_, sol.reduced, P_sink),
+        residuals=residual_table(problem, fit_.design, sol.evaluation),
+        chi_square=_chi_square(fit_, sol.evaluation),
+        observability=report,
+        excluded=problem.excluded,
+        information=sol.information_data,
+        free_names=tuple(layout.names[i] for i in free),
+        scale=scale,
+        undetermined=undetermined,
+        converged=fit_.converged,
+        iterations=fit_.iterations,
         plot_target=_per_input_row(problem, np.array(problem.target_ids, dtype=str)[problem.target]),
         plot_sensor=_per_input_row(problem, np.array(problem.sensor_ids, dtype=str)[problem.sensor]),
-        cost_history=fit_.cost_history, warnings=fit_.warnings + ((unused,) if unused else ()) + height,
-        reference_target=ref_target, reference_residuals=ref_residuals,
+        cost_history=fit_.cost_history,
+        warnings=fit_.warnings + ((unused,) if unused else ()) + height,
+        reference_target=ref_target,
+        reference_residuals=ref_residuals,
         references_given=int(problem.references.time.size),
     )

@@ -23,13 +23,32 @@ import numpy as np
 
 from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.initial import initial_coefficients
-from registration.fleet.batch.normal import Design, Evaluation, Normal, evaluate, make_design, normal_equations
-from registration.fleet.data.problem import Exclusion, FleetProblem
+from registration.fleet.batch.normal import (
+    Design,
+    Evaluation,
+    Normal,
+    evaluate,
+    make_design,
+    normal_equations,
+)
 from registration.fleet.batch.schur import damped_step, determined_directions, masked_blocks, reduce
+from registration.fleet.data.problem import Exclusion, FleetProblem
 
-__all__ = ["BatchOptions", "Fit", "NumericalError", "determined_design", "exclude_singular", "fit", "fit_windows",
-           "levenberg_marquardt", "outside_when_seen", "progress_bar", "progress_status", "singular_blocks",
-           "time_bias_warnings"]
+__all__ = [
+    "BatchOptions",
+    "Fit",
+    "NumericalError",
+    "determined_design",
+    "exclude_singular",
+    "fit",
+    "fit_windows",
+    "levenberg_marquardt",
+    "outside_when_seen",
+    "progress_bar",
+    "progress_status",
+    "singular_blocks",
+    "time_bias_warnings",
+]
 
 LAMBDA_START = 1e-3
 LAMBDA_MAX = 1e16
@@ -59,8 +78,17 @@ def progress_bar(enabled: bool, desc: str, total: int | None = None, unit: str =
         terminal = enabled and sys.stderr.isatty()
     except (AttributeError, ValueError):
         terminal = False
-    return tqdm(total=total, desc=desc, unit=unit, file=sys.stderr, disable=not terminal, leave=False,
-                delay=PROGRESS_DELAY_S, dynamic_ncols=True, mininterval=0.5)
+    return tqdm(
+        total=total,
+        desc=desc,
+        unit=unit,
+        file=sys.stderr,
+        disable=not terminal,
+        leave=False,
+        delay=PROGRESS_DELAY_S,
+        dynamic_ncols=True,
+        mininterval=0.5,
+    )
 
 
 def progress_status(bar, text: str) -> None:
@@ -114,8 +142,15 @@ class Fit:
     warnings: tuple = ()
 
 
-def levenberg_marquardt(design: Design, start: Evaluation, free: np.ndarray, options: BatchOptions,
-                        relative: float = 0.0, normal: Normal | None = None, bar=None):
+def levenberg_marquardt(
+    design: Design,
+    start: Evaluation,
+    free: np.ndarray,
+    options: BatchOptions,
+    relative: float = 0.0,
+    normal: Normal | None = None,
+    bar=None,
+):
     """Minimise the sum of squares over the free states and all coefficients from ``start``.
 
     Stops when the predicted reduction is below ``options.tolerance`` or ``relative`` times the
@@ -131,7 +166,9 @@ def levenberg_marquardt(design: Design, start: Evaluation, free: np.ndarray, opt
     for it in range(1, options.max_iterations + 1):
         normal = normal if normal is not None else normal_equations(design, ev)
         if determined is None:  # structural: found once, at the start
-            determined = determined_directions(reduce(design.blocks, normal, 0.0).S[np.ix_(free, free)], scale)
+            determined = determined_directions(
+                reduce(design.blocks, normal, 0.0).S[np.ix_(free, free)], scale
+            )
         accepted = False
         while lam < LAMBDA_MAX:
             dx, dc, pred = damped_step(design.blocks, normal, free, scale, determined, lam)
@@ -166,8 +203,9 @@ def singular_blocks(design: Design, normal: Normal) -> np.ndarray:
     return np.flatnonzero(~(w[:, 0] > SINGULAR_BLOCK * w[:, -1]))
 
 
-def exclude_singular(problem: FleetProblem, design: Design, bad: np.ndarray,
-                     outside: np.ndarray | None = None) -> FleetProblem:
+def exclude_singular(
+    problem: FleetProblem, design: Design, bad: np.ndarray, outside: np.ndarray | None = None
+) -> FleetProblem:
     """The problem without the plots of the windows ``bad`` (:func:`singular_blocks`), each recorded
     as an exclusion. ``outside`` (N,) bool, given when the windows were found at the solution: the
     plots seen outside their platform's navigation there (:func:`outside_when_seen`), which weighed
@@ -177,25 +215,35 @@ def exclude_singular(problem: FleetProblem, design: Design, bad: np.ndarray,
     exclusions = []
     for b in bad:
         end = blk.block_start[b + 1] if b + 1 < blk.n_blocks else blk.order.size
-        plots = blk.order[blk.block_start[b]:end]
+        plots = blk.order[blk.block_start[b] : end]
         drop[plots] = True
         n_out = int(outside[plots].sum()) if outside is not None else 0
         held = plots[~outside[plots]] if n_out else plots
         sensors = sorted({problem.sensor_ids[s] for s in problem.sensor[held]})
         why = f"its position is not determined by the plots of {', '.join(sensors) or 'no sensor'} in this window"
         if n_out:
-            why = (f"{why}, once its {n_out} plots seen outside their platform's navigation (reported time - "
-                   "time bias) are set aside at the solution")
+            why = (
+                f"{why}, once its {n_out} plots seen outside their platform's navigation (reported time - "
+                "time bias) are set aside at the solution"
+            )
         elif outside is not None:
             why += " at the solution (its geometry at the estimate; it was determined at the start)"
         t = problem.time[plots]
-        exclusions.append(Exclusion(problem.target_ids[blk.block_target[b]], f"singular geometry: {why}",
-                                    int(plots.size), float(t.min()), float(t.max())))
+        exclusions.append(
+            Exclusion(
+                problem.target_ids[blk.block_target[b]],
+                f"singular geometry: {why}",
+                int(plots.size),
+                float(t.min()),
+                float(t.max()),
+            )
+        )
     return problem.drop_plots(drop, exclusions)
 
 
-def determined_design(problem: FleetProblem, options: BatchOptions, x0: np.ndarray, priors: bool = True,
-                      coefficients=None):
+def determined_design(
+    problem: FleetProblem, options: BatchOptions, x0: np.ndarray, priors: bool = True, coefficients=None
+):
     """``(problem, design, start, normal)``: the design of ``problem`` with the windows whose position
     their plots do not determine set aside (:func:`singular_blocks`, :func:`exclude_singular`, again
     until none is left), its evaluation at states ``x0`` (n,) with the window means of the plots
@@ -216,7 +264,9 @@ def determined_design(problem: FleetProblem, options: BatchOptions, x0: np.ndarr
     return None
 
 
-def fit_windows(design: Design, start: Evaluation, normal: Normal, options: BatchOptions) -> tuple[Evaluation, Normal]:
+def fit_windows(
+    design: Design, start: Evaluation, normal: Normal, options: BatchOptions
+) -> tuple[Evaluation, Normal]:
     """The window coefficients fitted with the states held (Gauss-Newton, each window's step
     ``V_b^-1 b_c,b``), until the predicted reduction of the sum of squares is below
     ``options.tolerance``; Levenberg-Marquardt from there if a step does not lower it."""
@@ -260,8 +310,16 @@ def _outside_exclusions(problem: FleetProblem, outside: np.ndarray) -> tuple[Exc
     for k in np.unique(problem.target[outside]):
         sel = outside & (problem.target == k)
         t = problem.time[sel]
-        out.append(Exclusion(problem.target_ids[k], "seen outside its platform's navigation once its sensor's time "
-                             "bias is applied (reported time - time bias)", int(sel.sum()), float(t.min()), float(t.max())))
+        out.append(
+            Exclusion(
+                problem.target_ids[k],
+                "seen outside its platform's navigation once its sensor's time "
+                "bias is applied (reported time - time bias)",
+                int(sel.sum()),
+                float(t.min()),
+                float(t.max()),
+            )
+        )
     return tuple(out)
 
 
@@ -272,8 +330,10 @@ def time_bias_warnings(layout, x: np.ndarray, options: BatchOptions) -> tuple[st
     for s in np.flatnonzero(layout.time_bias_index >= 0):
         i = int(layout.time_bias_index[s])
         if options.window_s > 0 and abs(x[i]) > 0.5 * options.window_s:
-            out.append(f"{layout.labels[i]} is {x[i]:+.3g} s, more than half the {options.window_s:g} s windows: "
-                       f"not to be trusted; register again with longer windows (window_s >= {4 * abs(x[i]):.3g} s)")
+            out.append(
+                f"{layout.labels[i]} is {x[i]:+.3g} s, more than half the {options.window_s:g} s windows: "
+                f"not to be trusted; register again with longer windows (window_s >= {4 * abs(x[i]):.3g} s)"
+            )
     return tuple(out)
 
 
@@ -293,17 +353,25 @@ def _set_aside_outside(problem, design, ev, options):
     return replace(problem, excluded=problem.excluded + _outside_exclusions(problem, outside)), design
 
 
-def _two_phases(design: Design, start: Evaluation, normal: Normal, free: np.ndarray, options: BatchOptions, bar):
+def _two_phases(
+    design: Design, start: Evaluation, normal: Normal, free: np.ndarray, options: BatchOptions, bar
+):
     """Levenberg-Marquardt on the target windows alone (states held), then on everything:
     (evaluation, normal equations, converged, iterations, cost history)."""
-    ev, normal, _, it1, hist1 = levenberg_marquardt(design, start, np.zeros(0, dtype=np.int64), options,
-                                                    TARGETS_FIRST, normal, bar)
+    ev, normal, _, it1, hist1 = levenberg_marquardt(
+        design, start, np.zeros(0, dtype=np.int64), options, TARGETS_FIRST, normal, bar
+    )
     ev, normal, converged, it2, hist2 = levenberg_marquardt(design, ev, free, options, 0.0, normal, bar)
     return ev, normal, converged, it1 + it2, hist1 + hist2[1:]
 
 
-def fit(problem: FleetProblem, options: BatchOptions | None = None, x0: np.ndarray | None = None, *,
-        progress: bool = False) -> Fit:
+def fit(
+    problem: FleetProblem,
+    options: BatchOptions | None = None,
+    x0: np.ndarray | None = None,
+    *,
+    progress: bool = False,
+) -> Fit:
     """Solve the batch problem (module docstring) from states ``x0`` (n,; rad, m; default zeros: a
     warm start only saves iterations); windows of singular geometry are set aside, and so are plots
     that their sensor's estimated time bias moves outside their platform's navigation (they weigh
@@ -325,27 +393,49 @@ def fit(problem: FleetProblem, options: BatchOptions | None = None, x0: np.ndarr
         for attempt in range(MAX_REFITS + 1):
             found = determined_design(problem, options, x0)
             if found is None:
-                raise ValueError("no plots to register (every target was excluded: "
-                                 + "; ".join(e.text() for e in problem.excluded) + ")")
+                raise ValueError(
+                    "no plots to register (every target was excluded: "
+                    + "; ".join(e.text() for e in problem.excluded)
+                    + ")"
+                )
             problem, design, start, normal = found
-            ev, normal, converged, iterations, history = _two_phases(design, start, normal, problem.layout.free,
-                                                                     options, bar)
+            ev, normal, converged, iterations, history = _two_phases(
+                design, start, normal, problem.layout.free, options, bar
+            )
             last = attempt == MAX_REFITS
             aside = _set_aside_outside(problem, design, ev, options)
             outside = outside_when_seen(design, ev.x)
             if aside is None and drops < MAX_TIME_BIAS_REFITS and not last:  # a window would be left empty
-                problem, x0, drops = problem.drop_plots(outside, _outside_exclusions(problem, outside)), ev.x, drops + 1
+                problem, x0, drops = (
+                    problem.drop_plots(outside, _outside_exclusions(problem, outside)),
+                    ev.x,
+                    drops + 1,
+                )
                 continue
             solved_problem, solved_design = aside if aside is not None else (problem, design)
-            bad = singular_blocks(solved_design, normal)  # at the solution, with the plots set aside weighing 0
+            bad = singular_blocks(
+                solved_design, normal
+            )  # at the solution, with the plots set aside weighing 0
             if bad.size == 0:
                 problem, design = solved_problem, solved_design
                 break
             if last:
-                raise NumericalError(f"{bad.size} target windows are still undetermined at the solution after "
-                                     f"{attempt} solves that set such windows aside (first: target "
-                                     f"{problem.target_ids[design.blocks.block_target[bad[0]]]}); the covariance "
-                                     "cannot be computed")
+                raise NumericalError(
+                    f"{bad.size} target windows are still undetermined at the solution after "
+                    f"{attempt} solves that set such windows aside (first: target "
+                    f"{problem.target_ids[design.blocks.block_target[bad[0]]]}); the covariance "
+                    "cannot be computed"
+                )
             problem, x0 = exclude_singular(problem, design, bad, outside), ev.x
-    return Fit(problem, design, ev.x, ev.coef, converged, iterations, history, ev, normal,
-               time_bias_warnings(problem.layout, ev.x, options))
+    return Fit(
+        problem,
+        design,
+        ev.x,
+        ev.coef,
+        converged,
+        iterations,
+        history,
+        ev,
+        normal,
+        time_bias_warnings(problem.layout, ev.x, options),
+    )

@@ -85,7 +85,7 @@ def load(folder: str, name: str, tag: str | None = None):
             head = f.read(len(_MAGIC) + 16)
             if len(head) != len(_MAGIC) + 16 or not head.startswith(_MAGIC):
                 return None
-            n_meta, n_table = struct.unpack("<QQ", head[len(_MAGIC):])
+            n_meta, n_table = struct.unpack("<QQ", head[len(_MAGIC) :])
             meta, table = f.read(n_meta), f.read(n_table)
             found, offsets = pickle.loads(table)
             if tag is not None and found != tag:
@@ -99,7 +99,7 @@ def load(folder: str, name: str, tag: str | None = None):
     except (OSError, EOFError, pickle.UnpicklingError, struct.error, ValueError, TypeError):
         return None
     view = memoryview(data)
-    return pickle.loads(meta, buffers=[view[off:off + n] for off, n in offsets])
+    return pickle.loads(meta, buffers=[view[off : off + n] for off, n in offsets])
 
 
 def make_folder(parent: str | None = None) -> str:

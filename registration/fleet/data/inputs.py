@@ -12,11 +12,28 @@ import numpy as np
 from registration.core.frames import geodetic2ecef
 from registration.core.validation import check_range, degree_hint
 from registration.fleet.data.tables import (
-    ATTITUDE_ERRORS, CHANNELS, DEFAULT_REFERENCE_SIGMA, EXTENDED_PRIOR_COLUMNS, Table, read_table,
+    ATTITUDE_ERRORS,
+    CHANNELS,
+    DEFAULT_REFERENCE_SIGMA,
+    EXTENDED_PRIOR_COLUMNS,
+    Table,
+    read_table,
 )
 
-__all__ = ["index_of", "SensorSpecs", "PlotColumns", "References", "RowProblem", "plot_problems", "read_platforms",
-           "read_sensors", "read_plots", "read_references", "read_surface", "SurfaceTargets"]
+__all__ = [
+    "index_of",
+    "SensorSpecs",
+    "PlotColumns",
+    "References",
+    "RowProblem",
+    "plot_problems",
+    "read_platforms",
+    "read_sensors",
+    "read_plots",
+    "read_references",
+    "read_surface",
+    "SurfaceTargets",
+]
 
 #: The accepted window of each measured channel (low, high, unit).
 CHANNEL_LIMITS = {
@@ -41,7 +58,9 @@ def _sigma_column(table: Table, column: str, rows_ids, *, allow_missing: bool, w
         if np.isnan(v):
             continue
         if v < 0:
-            raise table.error(row, f"{column} of {what} {str(rows_ids[row])!r} is {v}; expected a standard deviation >= 0")
+            raise table.error(
+                row, f"{column} of {what} {str(rows_ids[row])!r} is {v}; expected a standard deviation >= 0"
+            )
     return values
 
 
@@ -56,8 +75,13 @@ def read_platforms(platforms, sensor_platforms: np.ndarray) -> tuple[tuple[str, 
     dupes = sorted({p for p in ids if list(ids).count(p) > 1})
     if dupes:
         raise ValueError(f"platforms: duplicate platform ids {dupes}")
-    priors = np.stack([_sigma_column(table, f"prior_{a}", ids, allow_missing=False, what="platform")
-                       for a in ATTITUDE_ERRORS], axis=1)
+    priors = np.stack(
+        [
+            _sigma_column(table, f"prior_{a}", ids, allow_missing=False, what="platform")
+            for a in ATTITUDE_ERRORS
+        ],
+        axis=1,
+    )
     return tuple(str(p) for p in ids), priors
 
 
@@ -94,23 +118,47 @@ def read_sensors(table: Table, platform_ids) -> SensorSpecs:
     index = {p: i for i, p in enumerate(platform_ids)}
     for row, p in enumerate(plat):
         if p not in index:
-            raise table.error(row, f"sensor {str(ids[row])!r} is on unknown platform {str(p)!r} (platforms: {list(platform_ids)})")
-    sigma = np.stack([_sigma_column(table, f"sigma_{c}", ids, allow_missing=True, what="sensor") for c in CHANNELS], axis=1)
+            raise table.error(
+                row,
+                f"sensor {str(ids[row])!r} is on unknown platform {str(p)!r} (platforms: {list(platform_ids)})",
+            )
+    sigma = np.stack(
+        [_sigma_column(table, f"sigma_{c}", ids, allow_missing=True, what="sensor") for c in CHANNELS], axis=1
+    )
     for row in range(table.n_rows):
         if np.any(sigma[row] == 0):
             k = int(np.flatnonzero(sigma[row] == 0)[0])
-            raise table.error(row, f"sigma_{CHANNELS[k]} of sensor {str(ids[row])!r} is 0; a measured channel needs a noise "
-                                   "standard deviation > 0 (NaN = channel not measured)")
+            raise table.error(
+                row,
+                f"sigma_{CHANNELS[k]} of sensor {str(ids[row])!r} is 0; a measured channel needs a noise "
+                "standard deviation > 0 (NaN = channel not measured)",
+            )
         if np.all(np.isnan(sigma[row])):
-            raise table.error(row, f"sensor {str(ids[row])!r} measures no channel: give sigma_range, sigma_bearing "
-                                   "and/or sigma_elevation")
+            raise table.error(
+                row,
+                f"sensor {str(ids[row])!r} measures no channel: give sigma_range, sigma_bearing "
+                "and/or sigma_elevation",
+            )
         if np.nanmax(sigma[row, 1:], initial=0.0) > MAX_ANGLE_SIGMA:
-            raise table.error(row, f"angle sigma of sensor {str(ids[row])!r} above 20 deg; pass radians, not degrees")
-    prior = np.stack([_sigma_column(table, f"prior_{c}", ids, allow_missing=False, what="sensor") for c in CHANNELS], axis=1)
+            raise table.error(
+                row, f"angle sigma of sensor {str(ids[row])!r} above 20 deg; pass radians, not degrees"
+            )
+    prior = np.stack(
+        [_sigma_column(table, f"prior_{c}", ids, allow_missing=False, what="sensor") for c in CHANNELS],
+        axis=1,
+    )
     lever = np.stack([table.floats(f"lever_{a}", default=0.0) for a in "xyz"], axis=1)
     check_range("sensors.lever", lever, -1.0e4, 1.0e4, "m (deck frame)")
-    return SensorSpecs(tuple(str(s) for s in ids), np.array([index[p] for p in plat], dtype=np.int64), ~np.isnan(sigma), sigma,
-                       prior, lever, _extended_priors(table, ids), tuple(table.has(f"sigma_{c}") for c in CHANNELS))
+    return SensorSpecs(
+        tuple(str(s) for s in ids),
+        np.array([index[p] for p in plat], dtype=np.int64),
+        ~np.isnan(sigma),
+        sigma,
+        prior,
+        lever,
+        _extended_priors(table, ids),
+        tuple(table.has(f"sigma_{c}") for c in CHANNELS),
+    )
 
 
 def _extended_priors(table: Table, ids) -> np.ndarray:
@@ -125,8 +173,11 @@ def _extended_priors(table: Table, ids) -> np.ndarray:
         big = np.flatnonzero(np.isfinite(out[:, 0]) & (out[:, 0] > MAX_GAIN_PRIOR))
         if big.size:
             row = int(big[0])
-            raise table.error(row, f"prior_range_gain of sensor {str(ids[row])!r} is {out[row, 0]}; expected a "
-                                   f"dimensionless sigma <= {MAX_GAIN_PRIOR} (1e-4 = 100 ppm; not percent or ppm)")
+            raise table.error(
+                row,
+                f"prior_range_gain of sensor {str(ids[row])!r} is {out[row, 0]}; expected a "
+                f"dimensionless sigma <= {MAX_GAIN_PRIOR} (1e-4 = 100 ppm; not percent or ppm)",
+            )
     return out
 
 
@@ -164,12 +215,17 @@ def _channel_problem(values: np.ndarray, k: int, sensor_ids, sensor: np.ndarray)
     finite = np.isfinite(values)
     below = finite & ((values <= lo) if k == 0 else (values < lo))
     bad = np.isinf(values) | below | (finite & (values > hi))
-    code = np.where(np.isinf(values), "non_finite", np.where(below & (k == 0), "non_positive_range", "out_of_range"))
+    code = np.where(
+        np.isinf(values), "non_finite", np.where(below & (k == 0), "non_positive_range", "out_of_range")
+    )
 
     def message(row: int) -> str:
         hint = degree_hint(values[finite], max(abs(lo), abs(hi))) if k else ""
-        return (f"{name} {values[row]} of sensor {str(sensor_ids[sensor[row]])!r} is outside "
-                f"{'(' if k == 0 else '['}{lo:g}, {hi:g}] {unit}{hint}")
+        return (
+            f"{name} {values[row]} of sensor {str(sensor_ids[sensor[row]])!r} is outside "
+            f"{'(' if k == 0 else '['}{lo:g}, {hi:g}] {unit}{hint}"
+        )
+
     return RowProblem(code, name, bad, message)
 
 
@@ -184,9 +240,11 @@ def _missing_sigma_columns(sensors: SensorSpecs, names: np.ndarray, mask: np.nda
         if not sensors.sigma_columns[k] and mask[:, k].any():
             row = int(np.argmax(mask[:, k]))
             which = [str(s) for s in np.unique(names[mask[:, k]])]
-            raise ValueError(f"sensors: no sigma_{c} column, but the plots have {c} values for sensor(s) {which} "
-                             f"({int(mask[:, k].sum())} plots; the first, plots row {row}): give the sensors' "
-                             f"sigma_{c}, or leave the plots' {c} empty (NaN)")
+            raise ValueError(
+                f"sensors: no sigma_{c} column, but the plots have {c} values for sensor(s) {which} "
+                f"({int(mask[:, k].sum())} plots; the first, plots row {row}): give the sensors' "
+                f"sigma_{c}, or leave the plots' {c} empty (NaN)"
+            )
 
 
 def plot_problems(table: Table, sensors: SensorSpecs) -> list[RowProblem]:
@@ -207,16 +265,32 @@ def plot_problems(table: Table, sensors: SensorSpecs) -> list[RowProblem]:
 
     def unmeasured(row: int) -> str:
         c = first_extra[row]
-        return (f"sensor {str(names[row])!r} has {_article(c)} value but does not measure {c} (its sigma_{c} in the "
-                f"sensors table is empty): give it there, or leave the plots' {c} of this sensor empty")
+        return (
+            f"sensor {str(names[row])!r} has {_article(c)} value but does not measure {c} (its sigma_{c} in the "
+            f"sensors table is empty): give it there, or leave the plots' {c} of this sensor empty"
+        )
+
     return [
-        RowProblem("non_finite", "time", ~np.isfinite(time), lambda r: f"time {time[r]} is not a finite number of seconds"),
-        RowProblem("unknown_sensor", "sensor", ~known,
-                   lambda r: f"unknown sensor {str(names[r])!r} (sensors: {list(sensors.ids)})"),
+        RowProblem(
+            "non_finite",
+            "time",
+            ~np.isfinite(time),
+            lambda r: f"time {time[r]} is not a finite number of seconds",
+        ),
+        RowProblem(
+            "unknown_sensor",
+            "sensor",
+            ~known,
+            lambda r: f"unknown sensor {str(names[r])!r} (sensors: {list(sensors.ids)})",
+        ),
         *(_channel_problem(meas[:, k], k, sensors.ids, sensor) for k in range(3)),
         RowProblem("unmeasured_channel", first_extra, extra.any(axis=1), unmeasured),
-        RowProblem("no_channel", "range", ~mask.any(axis=1),
-                   lambda r: f"plot of sensor {str(names[r])!r} has no measured channel"),
+        RowProblem(
+            "no_channel",
+            "range",
+            ~mask.any(axis=1),
+            lambda r: f"plot of sensor {str(names[r])!r} has no measured channel",
+        ),
     ]
 
 
@@ -228,8 +302,13 @@ def read_plots(table: Table, sensors: SensorSpecs) -> PlotColumns:
             raise table.error(row, problem.message(row))
     meas = np.stack([table.floats(c, default=np.nan) for c in CHANNELS], axis=1)
     mask = np.isfinite(meas)
-    return PlotColumns(table.floats("time"), index_of(table.ids("sensor"), sensors.ids), table.ids("target"),
-                       np.where(mask, meas, 0.0), mask)
+    return PlotColumns(
+        table.floats("time"),
+        index_of(table.ids("sensor"), sensors.ids),
+        table.ids("target"),
+        np.where(mask, meas, 0.0),
+        mask,
+    )
 
 
 @dataclass(frozen=True)
@@ -256,8 +335,9 @@ class References:
     def subset(self, which: np.ndarray) -> "References":
         """The references selected by ``which``: an (R,) bool mask or an array of indices (in the
         order given), every field taken alike."""
-        return References(self.target[which], self.time[which], self.p_ecef[which], self.sigma[which],
-                          self.sigma_up[which])
+        return References(
+            self.target[which], self.time[which], self.p_ecef[which], self.sigma[which], self.sigma_up[which]
+        )
 
 
 def read_references(references, target_ids) -> References:
@@ -268,7 +348,9 @@ def read_references(references, target_ids) -> References:
     known = set(target_ids)
     for row, t in enumerate(target):
         if t not in known:
-            raise table.error(row, f"reference target {str(t)!r} has no plots (targets: {sorted(str(k) for k in known)})")
+            raise table.error(
+                row, f"reference target {str(t)!r} has no plots (targets: {sorted(str(k) for k in known)})"
+            )
     time = table.floats("time")
     if table.has("x"):
         p = np.stack([table.floats(c) for c in "xyz"], axis=1)
@@ -276,23 +358,30 @@ def read_references(references, target_ids) -> References:
     elif table.has("lat"):
         p = geodetic2ecef(table.floats("lat"), table.floats("lon"), table.floats("alt"))
     else:
-        raise ValueError("references: give the known position as ECEF x, y, z (m) or as lat, lon (rad), alt (m)")
+        raise ValueError(
+            "references: give the known position as ECEF x, y, z (m) or as lat, lon (rad), alt (m)"
+        )
     sigma = table.floats("sigma", default=DEFAULT_REFERENCE_SIGMA)
     bad = np.flatnonzero(~(np.isfinite(time) & (sigma > 0) & np.isfinite(sigma)))
     if bad.size:
         r = int(bad[0])
-        raise table.error(r, f"reference of target {str(target[r])!r}: time {time[r]} s and sigma {sigma[r]} m must be "
-                             "finite and sigma > 0 (the accuracy of the known position)")
+        raise table.error(
+            r,
+            f"reference of target {str(target[r])!r}: time {time[r]} s and sigma {sigma[r]} m must be "
+            "finite and sigma > 0 (the accuracy of the known position)",
+        )
     sigma_up = table.floats("sigma_up", default=np.nan)
     sigma_up = np.where(np.isnan(sigma_up), sigma, sigma_up)  # not given: the same as sigma
     bad = np.flatnonzero(~(sigma_up > 0))
     if bad.size:
         r = int(bad[0])
-        raise table.error(r, f"reference of target {str(target[r])!r}: sigma_up {sigma_up[r]} m must be > 0 "
-                             "(the accuracy of the known position along the local up; NaN: the same as sigma; "
-                             "inf: no height known)")
+        raise table.error(
+            r,
+            f"reference of target {str(target[r])!r}: sigma_up {sigma_up[r]} m must be > 0 "
+            "(the accuracy of the known position along the local up; NaN: the same as sigma; "
+            "inf: no height known)",
+        )
     return References(target, time, p.reshape(-1, 3), sigma, sigma_up)
-
 
 
 @dataclass(frozen=True)
@@ -331,11 +420,17 @@ def read_surface(targets) -> SurfaceTargets | None:
         if np.isnan(alt[row]):
             continue
         if not (np.isfinite(alt[row]) and -1.0e4 <= alt[row] <= 1.0e4):
-            raise table.error(row, f"target {str(t)!r}: surface_alt {alt[row]} m must lie within 10 km of the "
-                                   "WGS-84 ellipsoid (the height of the surface the target moves on)")
+            raise table.error(
+                row,
+                f"target {str(t)!r}: surface_alt {alt[row]} m must lie within 10 km of the "
+                "WGS-84 ellipsoid (the height of the surface the target moves on)",
+            )
         if not (np.isfinite(sigma[row]) and sigma[row] > 0):
-            raise table.error(row, f"target {str(t)!r}: sigma_surface {sigma[row]} m must be finite and > 0 "
-                                   "(the standard deviation of the target's height about surface_alt)")
+            raise table.error(
+                row,
+                f"target {str(t)!r}: sigma_surface {sigma[row]} m must be finite and > 0 "
+                "(the standard deviation of the target's height about surface_alt)",
+            )
     on = np.isfinite(alt)
     if not on.any():
         return None

@@ -23,19 +23,36 @@ import numpy as np
 
 from registration.fleet.data.tables import ATTITUDE_ERRORS, CHANNEL_UNITS, CHANNELS, EXTENDED_ERRORS
 
-__all__ = ["EXTENDED_LABELS", "EXTENDED_UNITS", "FILE_UNITS", "REFERENCE_SCALE", "StateLayout", "make_layout",
-           "state_scale"]
+__all__ = [
+    "EXTENDED_LABELS",
+    "EXTENDED_UNITS",
+    "FILE_UNITS",
+    "REFERENCE_SCALE",
+    "StateLayout",
+    "make_layout",
+    "state_scale",
+]
 
 #: Scale of a state without prior: 1 deg for angles, 1 km for ranges and positions, 1e-3 (1000 ppm)
 #: for range gains, 1 s for time biases.
 REFERENCE_SCALE = {"rad": float(np.radians(1.0)), "m": 1000.0, "1": 1.0e-3, "s": 1.0}
 #: Units and label words of the extended errors, in EXTENDED_ERRORS order.
 EXTENDED_UNITS = ("1", "s", "m", "m", "m")
-EXTENDED_LABELS = ("range gain", "time bias", "east position error", "north position error", "up position error")
+EXTENDED_LABELS = (
+    "range gain",
+    "time bias",
+    "east position error",
+    "north position error",
+    "up position error",
+)
 #: Unit of each state unit in files (estimates.csv, history.csv) and on the console, with the factor
 #: from the SI value: (file unit, factor, console unit, factor).
-FILE_UNITS = {"rad": ("deg", float(np.degrees(1.0)), "deg", float(np.degrees(1.0))), "m": ("m", 1.0, "m", 1.0),
-              "1": ("1", 1.0, "ppm", 1.0e6), "s": ("s", 1.0, "s", 1.0)}
+FILE_UNITS = {
+    "rad": ("deg", float(np.degrees(1.0)), "deg", float(np.degrees(1.0))),
+    "m": ("m", 1.0, "m", 1.0),
+    "1": ("1", 1.0, "ppm", 1.0e6),
+    "s": ("s", 1.0, "s", 1.0),
+}
 
 
 def state_scale(layout) -> np.ndarray:
@@ -43,7 +60,6 @@ def state_scale(layout) -> np.ndarray:
     ref = np.array([REFERENCE_SCALE[u] for u in layout.units])
     p = layout.prior_sigma
     return np.where(np.isfinite(p) & (p > 0), p, ref)
-
 
 
 @dataclass(frozen=True)
@@ -91,7 +107,9 @@ class StateLayout:
         """True when any sensor has a time-bias state (estimated or fixed)."""
         return bool((self.time_bias_index >= 0).any())
 
-    def sensor_states(self, sensor: np.ndarray, sensor_platform: np.ndarray, absent: int | None = None) -> np.ndarray:
+    def sensor_states(
+        self, sensor: np.ndarray, sensor_platform: np.ndarray, absent: int | None = None
+    ) -> np.ndarray:
         """(M, width) state indices of sensors ``sensor`` (M,) as the plot model takes them
         (module docstring); where a state is absent ``absent``, by default ``n`` (the sink)."""
         parts = [self.att_index[sensor_platform[sensor]], self.bias_index[sensor]]
@@ -122,8 +140,14 @@ class StateLayout:
             raise ValueError(f"unknown state {name!r}; states are {list(self.names)}") from None
 
 
-def make_layout(platform_ids, platform_priors: np.ndarray, sensor_ids, sensor_channels: np.ndarray,
-                sensor_priors: np.ndarray, extended_priors: np.ndarray | None = None) -> StateLayout:
+def make_layout(
+    platform_ids,
+    platform_priors: np.ndarray,
+    sensor_ids,
+    sensor_channels: np.ndarray,
+    sensor_priors: np.ndarray,
+    extended_priors: np.ndarray | None = None,
+) -> StateLayout:
     """The layout for platforms (priors (P, 3), rad) and sensors (channels (S, 3) bool, priors (S, 3));
     ``extended_priors`` (S, 5) the priors of the extended errors (EXTENDED_ERRORS order; NaN = not
     modelled). A sensor without range has no range gain."""
@@ -141,7 +165,9 @@ def make_layout(platform_ids, platform_priors: np.ndarray, sensor_ids, sensor_ch
     att_index = np.zeros((len(platform_ids), 3), dtype=np.int64)
     for p, pid in enumerate(platform_ids):
         for k, what in enumerate(ATTITUDE_ERRORS):
-            att_index[p, k] = add("platform", pid, f"{what}_error", f"{what} error", "rad", platform_priors[p, k])
+            att_index[p, k] = add(
+                "platform", pid, f"{what}_error", f"{what} error", "rad", platform_priors[p, k]
+            )
     bias_index = np.full((len(sensor_ids), 3), -1, dtype=np.int64)
     extended_index = np.full((len(sensor_ids), len(EXTENDED_ERRORS)), -1, dtype=np.int64)
     if extended_priors is None:
@@ -149,10 +175,23 @@ def make_layout(platform_ids, platform_priors: np.ndarray, sensor_ids, sensor_ch
     for s, sid in enumerate(sensor_ids):
         for k, channel in enumerate(CHANNELS):
             if sensor_channels[s, k]:
-                bias_index[s, k] = add("sensor", sid, f"{channel}_bias", f"{channel} bias", CHANNEL_UNITS[k], sensor_priors[s, k])
+                bias_index[s, k] = add(
+                    "sensor", sid, f"{channel}_bias", f"{channel} bias", CHANNEL_UNITS[k], sensor_priors[s, k]
+                )
         for k, what in enumerate(EXTENDED_ERRORS):
             if np.isnan(extended_priors[s, k]) or (what == "range_gain" and not sensor_channels[s, 0]):
                 continue
-            extended_index[s, k] = add("sensor", sid, what, EXTENDED_LABELS[k], EXTENDED_UNITS[k], extended_priors[s, k])
-    return StateLayout(tuple(names), tuple(labels), tuple(units), tuple(objects), tuple(quantities),
-                       np.array(prior, dtype=np.float64), att_index, bias_index, extended_index)
+            extended_index[s, k] = add(
+                "sensor", sid, what, EXTENDED_LABELS[k], EXTENDED_UNITS[k], extended_priors[s, k]
+            )
+    return StateLayout(
+        tuple(names),
+        tuple(labels),
+        tuple(units),
+        tuple(objects),
+        tuple(quantities),
+        np.array(prior, dtype=np.float64),
+        att_index,
+        bias_index,
+        extended_index,
+    )

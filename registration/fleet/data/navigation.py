@@ -20,8 +20,17 @@ from registration.core.angles import wrap_angle
 from registration.core.validation import check_range
 from registration.fleet.data.tables import NAV_COLUMNS, Table
 
-__all__ = ["NAV_LIMITS", "SeenNavigation", "catmull_rom_slopes", "hermite_cubics", "platform_navigation",
-           "unused_platforms", "navigation_at", "navigation_rate_at", "outside_navigation"]
+__all__ = [
+    "NAV_LIMITS",
+    "SeenNavigation",
+    "catmull_rom_slopes",
+    "hermite_cubics",
+    "platform_navigation",
+    "unused_platforms",
+    "navigation_at",
+    "navigation_rate_at",
+    "outside_navigation",
+]
 
 #: Accepted window (low, high, unit) of each navigation column.
 NAV_LIMITS = {
@@ -42,8 +51,10 @@ def unused_platforms(nav: Table, platform_ids) -> list[str]:
     unknown = ~np.isin(ids, list(platform_ids))
     if not unknown.any():
         return []
-    return [f"navigation: platform(s) {sorted(np.unique(ids[unknown]).tolist())} carry no sensor; their "
-            f"{int(unknown.sum())} rows are ignored (platforms used: {list(platform_ids)})"]
+    return [
+        f"navigation: platform(s) {sorted(np.unique(ids[unknown]).tolist())} carry no sensor; their "
+        f"{int(unknown.sum())} rows are ignored (platforms used: {list(platform_ids)})"
+    ]
 
 
 def platform_navigation(nav: Table, platform_ids) -> dict[str, tuple[np.ndarray, np.ndarray]]:
@@ -58,7 +69,9 @@ def platform_navigation(nav: Table, platform_ids) -> dict[str, tuple[np.ndarray,
     values = np.stack([nav.floats(c) for c in NAV_COLUMNS], axis=1)
     for j, c in enumerate(NAV_COLUMNS):
         lo, hi, unit = NAV_LIMITS[c]
-        check_range(f"navigation.{c}", np.where(used, values[:, j], 0.0), lo, hi, unit, angle=unit.startswith("rad"))
+        check_range(
+            f"navigation.{c}", np.where(used, values[:, j], 0.0), lo, hi, unit, angle=unit.startswith("rad")
+        )
     time = nav.floats("time", default=np.nan)
     out = {}
     for pid in platform_ids:
@@ -70,8 +83,11 @@ def platform_navigation(nav: Table, platform_ids) -> dict[str, tuple[np.ndarray,
             bad = np.flatnonzero(~np.isfinite(t) | ~np.append(np.diff(t) > 0, True))
             if bad.size:
                 r = int(rows[bad[0]])
-                raise nav.error(r, f"time {t[bad[0]]} s of platform {str(pid)!r} is not finite or the next row's "
-                                   "time does not increase (times must be finite and strictly increasing)")
+                raise nav.error(
+                    r,
+                    f"time {t[bad[0]]} s of platform {str(pid)!r} is not finite or the next row's "
+                    "time does not increase (times must be finite and strictly increasing)",
+                )
             for c in _UNWRAP:
                 j = NAV_COLUMNS.index(c)
                 v[:, j] = np.unwrap(v[:, j])
@@ -79,7 +95,9 @@ def platform_navigation(nav: Table, platform_ids) -> dict[str, tuple[np.ndarray,
     return out
 
 
-def outside_navigation(tracks: dict, platform_ids, plot_platform: np.ndarray, plot_time: np.ndarray) -> np.ndarray:
+def outside_navigation(
+    tracks: dict, platform_ids, plot_platform: np.ndarray, plot_time: np.ndarray
+) -> np.ndarray:
     """(N,) bool: the plots whose time (s) lies outside their platform's navigation time span (a
     fixed site, one navigation row, holds at every time; a NaN time is not flagged)."""
     out = np.zeros(plot_time.shape[0], dtype=bool)
@@ -91,8 +109,9 @@ def outside_navigation(tracks: dict, platform_ids, plot_platform: np.ndarray, pl
     return out
 
 
-def navigation_at(tracks: dict, platform_ids, plot_platform: np.ndarray, plot_time: np.ndarray,
-                  describe_row) -> np.ndarray:
+def navigation_at(
+    tracks: dict, platform_ids, plot_platform: np.ndarray, plot_time: np.ndarray, describe_row
+) -> np.ndarray:
     """(N, 6) navigation of each plot's platform at its time (NAV_COLUMNS order, angles wrapped).
 
     ``describe_row(i)`` names plot i in errors (row, sensor, time).
@@ -103,8 +122,10 @@ def navigation_at(tracks: dict, platform_ids, plot_platform: np.ndarray, plot_ti
         outside = np.flatnonzero(outside_all[sel])
         if outside.size:
             i = int(sel[outside[0]])
-            raise ValueError(f"{describe_row(i)} lies outside the navigation of platform {str(pid)!r} "
-                             f"({t[0]:g} s to {t[-1]:g} s); {outside.size} plot(s) do")
+            raise ValueError(
+                f"{describe_row(i)} lies outside the navigation of platform {str(pid)!r} "
+                f"({t[0]:g} s to {t[-1]:g} s); {outside.size} plot(s) do"
+            )
         for j in range(6):
             out[sel, j] = np.interp(plot_time[sel], t, v[:, j])
     return _wrapped(out)
@@ -132,8 +153,9 @@ def _wrapped(nav: np.ndarray) -> np.ndarray:
     return nav
 
 
-def navigation_rate_at(tracks: dict, platform_ids, plot_platform: np.ndarray, plot_time: np.ndarray
-                       ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def navigation_rate_at(
+    tracks: dict, platform_ids, plot_platform: np.ndarray, plot_time: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(nav (N, 6), rate (N, 6), outside (N,) bool) of each plot's platform at times ``plot_time`` (s),
     by :class:`SeenNavigation` (its docstring)."""
     return SeenNavigation(tracks, platform_ids, plot_platform, plot_platform, plot_time)(plot_time)
@@ -142,7 +164,11 @@ def navigation_rate_at(tracks: dict, platform_ids, plot_platform: np.ndarray, pl
 def catmull_rom_slopes(t: np.ndarray, v: np.ndarray) -> np.ndarray:
     """(K, m) slopes of samples ``v`` (K, m) at strictly increasing times ``t`` (K,): the centred
     difference (v[k+1] - v[k-1]) / (t[k+1] - t[k-1]), one-sided at the ends."""
-    return np.gradient(v, t, axis=0, edge_order=1) if t.size > 2 else np.repeat((v[1:] - v[:1]) / (t[1] - t[0]), 2, 0)
+    return (
+        np.gradient(v, t, axis=0, edge_order=1)
+        if t.size > 2
+        else np.repeat((v[1:] - v[:1]) / (t[1] - t[0]), 2, 0)
+    )
 
 
 def hermite_cubics(t: np.ndarray, v: np.ndarray) -> np.ndarray:
@@ -170,8 +196,14 @@ class SeenNavigation:
     is flagged in ``outside``; a fixed site has zero rate.
     """
 
-    def __init__(self, tracks: dict, platform_ids, row_platform: np.ndarray, row_sensor: np.ndarray,
-                 row_time: np.ndarray):
+    def __init__(
+        self,
+        tracks: dict,
+        platform_ids,
+        row_platform: np.ndarray,
+        row_sensor: np.ndarray,
+        row_time: np.ndarray,
+    ):
         order = np.lexsort((row_time, row_sensor))
         new = np.r_[True, (np.diff(row_sensor[order]) != 0) | (np.diff(row_time[order]) != 0)]
         self.first = order[new]  # one row per instant

@@ -15,12 +15,24 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from registration.fleet.data.inputs import (
-    References, RowProblem, SurfaceTargets, index_of, plot_problems, read_platforms, read_plots, read_references,
-    read_sensors, read_surface,
+    References,
+    RowProblem,
+    SurfaceTargets,
+    index_of,
+    plot_problems,
+    read_platforms,
+    read_plots,
+    read_references,
+    read_sensors,
+    read_surface,
 )
 from registration.fleet.data.layout import StateLayout, make_layout
 from registration.fleet.data.navigation import (
-    navigation_at, navigation_rate_at, outside_navigation, platform_navigation, unused_platforms,
+    navigation_at,
+    navigation_rate_at,
+    outside_navigation,
+    platform_navigation,
+    unused_platforms,
 )
 from registration.fleet.data.tables import read_table
 
@@ -75,10 +87,14 @@ class FleetProblem:
     ref_target: np.ndarray  # (R,) index into target_ids
     excluded: tuple[Exclusion, ...] = field(default_factory=tuple)
     tracks: dict | None = None  # per platform id: navigation (times, values), for plots seen at other times
-    notes: tuple[str, ...] = ()  # what was ignored without an error, e.g. navigation of platforms without sensors
+    notes: tuple[
+        str, ...
+    ] = ()  # what was ignored without an error, e.g. navigation of platforms without sensors
     surface: SurfaceTargets | None = None  # targets on a surface of known height, by id
 
-    def navigation_at(self, time: np.ndarray, plot: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def navigation_at(
+        self, time: np.ndarray, plot: np.ndarray | None = None
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(nav (M, 6), its rate (M, 6), outside (M,) bool) of the platforms of plots ``plot`` (M,;
         default all) at times ``time`` (M,) s, for plots seen at times corrected by a time bias:
         the navigation on the C1 Hermite curve through its samples, its rate of change (rad/s, m/s)
@@ -138,21 +154,27 @@ class FleetProblem:
         return np.where(self.mask, self.sensor_sigma[self.sensor], np.nan)
 
     @classmethod
-    def from_tables(cls, plots, sensors, navigation, platforms=None, references=None, targets=None) -> "FleetProblem":
+    def from_tables(
+        cls, plots, sensors, navigation, platforms=None, references=None, targets=None
+    ) -> "FleetProblem":
         """See :func:`build_problem`."""
         return build_problem(plots, sensors, navigation, platforms, references, targets)
 
     def drop_plots(self, drop: np.ndarray, exclusions) -> "FleetProblem":
         """The problem without the plots flagged in ``drop`` (N,), with ``exclusions`` recorded."""
         keep = ~np.asarray(drop, dtype=bool)
-        per_plot = {k: getattr(self, k)[keep] for k in ("time", "sensor", "target", "meas", "mask", "nav", "row")}
+        per_plot = {
+            k: getattr(self, k)[keep] for k in ("time", "sensor", "target", "meas", "mask", "nav", "row")
+        }
         return replace(self, **per_plot, excluded=self.excluded + tuple(exclusions))
 
     def lines(self) -> list[str]:
         """A short human-readable summary."""
-        out = [f"{len(self.platform_ids)} platforms, {len(self.sensor_ids)} sensors, {len(self.target_ids)} targets, "
-               f"{self.n_plots} plots used of {self.n_input_plots}, {len(self.references.time)} reference positions, "
-               f"{self.layout.n} states ({self.layout.free.size} estimated)"]
+        out = [
+            f"{len(self.platform_ids)} platforms, {len(self.sensor_ids)} sensors, {len(self.target_ids)} targets, "
+            f"{self.n_plots} plots used of {self.n_input_plots}, {len(self.references.time)} reference positions, "
+            f"{self.layout.n} states ({self.layout.free.size} estimated)"
+        ]
         out += [f"  excluded: {e.text()}" for e in self.excluded]
         out += [f"  note: {n}" for n in self.notes]
         return out
@@ -164,7 +186,9 @@ def _first_seen(ids: np.ndarray) -> tuple[str, ...]:
     return tuple(str(u) for u in unique[np.argsort(first)])
 
 
-def _seen_by_one_sensor(target: np.ndarray, sensor: np.ndarray) -> tuple[tuple[str, ...], np.ndarray, np.ndarray]:
+def _seen_by_one_sensor(
+    target: np.ndarray, sensor: np.ndarray
+) -> tuple[tuple[str, ...], np.ndarray, np.ndarray]:
     """Targets in order of first appearance, each plot's index into them, and the targets (indices)
     seen by one sensor only."""
     targets = _first_seen(target)
@@ -185,9 +209,16 @@ def _single_sensor_targets(plots, references) -> list[Exclusion]:
         if tid not in refs:
             sel = which == k
             t = plots.time[sel]
-            out.append(Exclusion(str(tid), "seen by one sensor only and not a reference: its plots fit any "
-                                           "registration errors, so they carry no registration information",
-                                 int(sel.sum()), float(t.min()), float(t.max())))
+            out.append(
+                Exclusion(
+                    str(tid),
+                    "seen by one sensor only and not a reference: its plots fit any "
+                    "registration errors, so they carry no registration information",
+                    int(sel.sum()),
+                    float(t.min()),
+                    float(t.max()),
+                )
+            )
     return out
 
 
@@ -209,15 +240,20 @@ def plot_row_problems(plots, sensors, navigation, platforms=None, reference_targ
     target = plots_t.ids("target") if plots_t.has("target") else np.full(plots_t.n_rows, "")
     sensor = np.where(valid, index_of(plots_t.ids("sensor"), specs.ids), 0)
     targets, which, single = _seen_by_one_sensor(target[valid], sensor[valid])
-    set_aside = [targets[k] for k in single if targets[k] not in set(np.asarray(reference_targets).astype(str))]
+    set_aside = [
+        targets[k] for k in single if targets[k] not in set(np.asarray(reference_targets).astype(str))
+    ]
     platform = specs.platform[sensor]
     outside = valid & ~np.isin(target, set_aside) & outside_navigation(tracks, platform_ids, platform, time)
 
     def message(row: int) -> str:
         pid = platform_ids[platform[row]]
         t = tracks[pid][0]
-        return (f"plot of sensor {specs.ids[sensor[row]]!r} at {time[row]:g} s lies outside the navigation of "
-                f"platform {str(pid)!r} ({t[0]:g} s to {t[-1]:g} s)")
+        return (
+            f"plot of sensor {specs.ids[sensor[row]]!r} at {time[row]:g} s lies outside the navigation of "
+            f"platform {str(pid)!r} ({t[0]:g} s to {t[-1]:g} s)"
+        )
+
     return problems + [RowProblem("outside_navigation", "time", outside, message)]
 
 
@@ -252,15 +288,31 @@ def build_problem(plots, sensors, navigation, platforms=None, references=None, t
         return f"plots row {int(keep[i])} (sensor {str(specs.ids[sensor[i]])!r}, time {time[i]:g} s)"
 
     nav = navigation_at(tracks, platform_ids, specs.platform[sensor], time, describe)
-    layout = make_layout(platform_ids, platform_priors, specs.ids, specs.channels, specs.prior, specs.extended_prior)
+    layout = make_layout(
+        platform_ids, platform_priors, specs.ids, specs.channels, specs.prior, specs.extended_prior
+    )
     ref_keep = np.isin(refs.target, target_ids)
     refs = refs.subset(ref_keep)
     return FleetProblem(
-        platform_ids=tuple(platform_ids), sensor_ids=specs.ids, target_ids=target_ids,
-        sensor_platform=specs.platform, sensor_sigma=specs.sigma, sensor_lever=specs.lever, layout=layout,
-        time=time, sensor=sensor, target=index_of(cols.target[keep], target_ids),
-        meas=cols.meas[keep], mask=cols.mask[keep], nav=nav, row=keep, n_input_plots=int(cols.time.shape[0]),
-        references=refs, ref_target=index_of(refs.target, target_ids),
-        excluded=tuple(excluded), tracks=tracks, notes=tuple(unused_platforms(nav_t, platform_ids)),
+        platform_ids=tuple(platform_ids),
+        sensor_ids=specs.ids,
+        target_ids=target_ids,
+        sensor_platform=specs.platform,
+        sensor_sigma=specs.sigma,
+        sensor_lever=specs.lever,
+        layout=layout,
+        time=time,
+        sensor=sensor,
+        target=index_of(cols.target[keep], target_ids),
+        meas=cols.meas[keep],
+        mask=cols.mask[keep],
+        nav=nav,
+        row=keep,
+        n_input_plots=int(cols.time.shape[0]),
+        references=refs,
+        ref_target=index_of(refs.target, target_ids),
+        excluded=tuple(excluded),
+        tracks=tracks,
+        notes=tuple(unused_platforms(nav_t, platform_ids)),
         surface=read_surface(targets),
     )

@@ -40,8 +40,17 @@ import numpy as np
 
 from registration.core.validation import as_float_array
 
-__all__ = ["Table", "read_table", "CHANNELS", "CHANNEL_UNITS", "ATTITUDE_ERRORS", "EXTENDED_ERRORS",
-           "EXTENDED_PRIOR_COLUMNS", "NAV_COLUMNS", "DEFAULT_REFERENCE_SIGMA"]
+__all__ = [
+    "Table",
+    "read_table",
+    "CHANNELS",
+    "CHANNEL_UNITS",
+    "ATTITUDE_ERRORS",
+    "EXTENDED_ERRORS",
+    "EXTENDED_PRIOR_COLUMNS",
+    "NAV_COLUMNS",
+    "DEFAULT_REFERENCE_SIGMA",
+]
 
 #: The measured channels, in plot order, and their units.
 CHANNELS = ("range", "bearing", "elevation")
@@ -51,7 +60,13 @@ ATTITUDE_ERRORS = ("heading", "pitch", "roll")
 #: The extended errors of a sensor, in state order (after its three biases), and the sensors-table
 #: column of each one's prior (the three position errors share one).
 EXTENDED_ERRORS = ("range_gain", "time_bias", "position_east", "position_north", "position_up")
-EXTENDED_PRIOR_COLUMNS = ("prior_range_gain", "prior_time_bias", "prior_position", "prior_position", "prior_position")
+EXTENDED_PRIOR_COLUMNS = (
+    "prior_range_gain",
+    "prior_time_bias",
+    "prior_position",
+    "prior_position",
+    "prior_position",
+)
 #: Navigation columns, in the order the generated functions take them.
 NAV_COLUMNS = ("lat", "lon", "alt", "heading", "pitch", "roll")
 #: Standard deviation per axis (m) of a reference position when the table gives none.
@@ -80,7 +95,11 @@ class Table:
                 self.require(column)
             return np.full(self.n_rows, float(default))
         values = self.columns[column]
-        if values.dtype == bool or values.dtype.kind in "OUS" and any(isinstance(v, (str, bool)) for v in values):
+        if (
+            values.dtype == bool
+            or values.dtype.kind in "OUS"
+            and any(isinstance(v, (str, bool)) for v in values)
+        ):
             raise ValueError(f"{self.name}: column {column!r} must hold numbers, got {values.dtype} values")
         return as_float_array(f"{self.name}.{column}", values).reshape(self.n_rows)
 
@@ -102,7 +121,9 @@ def read_table(name: str, table, required: tuple[str, ...] = ()) -> Table:
     if hasattr(table, "to_dict") and hasattr(table, "columns") and not isinstance(table, Mapping):
         table = {str(c): table[c].to_numpy() for c in table.columns}
     if not isinstance(table, Mapping):
-        raise ValueError(f"{name}: expected a pandas DataFrame or a mapping of column -> array, got {type(table).__name__}")
+        raise ValueError(
+            f"{name}: expected a pandas DataFrame or a mapping of column -> array, got {type(table).__name__}"
+        )
     columns, n = {}, None
     for key, values in table.items():
         arr = np.asarray(values)

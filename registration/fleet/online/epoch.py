@@ -23,9 +23,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.fleet.data.problem import FleetProblem
 from registration.fleet.batch.schur import reduce
 from registration.fleet.batch.solver import BatchOptions, determined_design, fit_windows
+from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["EpochInformation", "epoch_information", "informative_plots"]
 
@@ -58,7 +58,9 @@ def epoch_information(problem: FleetProblem, x: np.ndarray, options: BatchOption
     keep = informative_plots(problem.target, problem.sensor, problem.ref_target)
     if not keep.any():
         return None
-    found = determined_design(problem.drop_plots(~keep, ()), options, x, priors=False)  # the filter carries the prior
+    found = determined_design(
+        problem.drop_plots(~keep, ()), options, x, priors=False
+    )  # the filter carries the prior
     if found is None:
         return None
     problem, design, start, normal = found
@@ -66,4 +68,3 @@ def epoch_information(problem: FleetProblem, x: np.ndarray, options: BatchOption
     red = reduce(design.blocks, normal, 0.0)
     n = design.n_state
     return EpochInformation(red.S[:n, :n], red.r[:n], problem.n_plots)
-

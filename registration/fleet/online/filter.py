@@ -37,17 +37,23 @@ import numpy as np
 
 from registration.core.consistency import ConsistencyReport
 from registration.fleet.batch.blocks import SAME_INSTANT_S
-from registration.fleet.data.inputs import (index_of, read_platforms, read_plots, read_references, read_sensors,
-                                            read_surface)
+from registration.fleet.batch.residuals import residuals_at
+from registration.fleet.batch.solver import BatchOptions
+from registration.fleet.data.inputs import (
+    index_of,
+    read_platforms,
+    read_plots,
+    read_references,
+    read_sensors,
+    read_surface,
+)
 from registration.fleet.data.layout import make_layout
 from registration.fleet.data.navigation import navigation_at, platform_navigation
+from registration.fleet.data.problem import Exclusion, FleetProblem, build_problem
+from registration.fleet.data.tables import read_table
 from registration.fleet.observability import fleet_observability
 from registration.fleet.online.epoch import epoch_information
 from registration.fleet.online.result import OnlineHistory, OnlineResult
-from registration.fleet.data.problem import Exclusion, FleetProblem, build_problem
-from registration.fleet.batch.residuals import residuals_at
-from registration.fleet.batch.solver import BatchOptions
-from registration.fleet.data.tables import read_table
 
 __all__ = ["DIFFUSE", "FleetFilter", "OnlineOptions", "information_update", "register_online"]
 
@@ -100,8 +106,11 @@ class OnlineOptions:
             raise ValueError(f"max_iterations: expected >= 1, got {self.max_iterations}")
 
     def batch(self) -> BatchOptions:
-        return BatchOptions(window_s=self.window_s, degree=self.degree if self.window_s > 0 else 0,
-                            max_iterations=int(self.max_iterations))
+        return BatchOptions(
+            window_s=self.window_s,
+            degree=self.degree if self.window_s > 0 else 0,
+            max_iterations=int(self.max_iterations),
+        )
 
     def epoch_key(self, time: np.ndarray) -> np.ndarray:
         length = self.window_s if self.window_s > 0 else self.epoch_s
@@ -119,21 +128,47 @@ class FleetFilter:
     ``covariance`` over the same states) to start from.
     """
 
-    def __init__(self, sensors, navigation, platforms=None, references=None, *,
-                 options: OnlineOptions | None = None, prior=None, targets=None):
+    def __init__(
+        self,
+        sensors,
+        navigation,
+        platforms=None,
+        references=None,
+        *,
+        options: OnlineOptions | None = None,
+        prior=None,
+        targets=None,
+    ):
         self.options = options or OnlineOptions()
         sensors_t = read_table("sensors", sensors, ("sensor", "platform"))
         self.platform_ids, platform_priors = read_platforms(platforms, sensors_t.ids("platform"))
         self.specs = read_sensors(sensors_t, self.platform_ids)
-        self.tracks = platform_navigation(read_table("navigation", navigation, ("platform",)), self.platform_ids)
-        ref_ids = [] if references is None else list(dict.fromkeys(read_table("references", references).ids("target")))
+        self.tracks = platform_navigation(
+            read_table("navigation", navigation, ("platform",)), self.platform_ids
+        )
+        ref_ids = (
+            []
+            if references is None
+            else list(dict.fromkeys(read_table("references", references).ids("target")))
+        )
         self.references = read_references(references, ref_ids)
         self.surface = read_surface(targets)
-        self.layout = make_layout(self.platform_ids, platform_priors, self.specs.ids, self.specs.channels,
-                                  self.specs.prior, self.specs.extended_prior)
+        self.layout = make_layout(
+            self.platform_ids,
+            platform_priors,
+            self.specs.ids,
+            self.specs.channels,
+            self.specs.prior,
+            self.specs.extended_prior,
+        )
         self.x, self.P = _start(self.layout, prior)
         self.information = np.zeros((self.layout.n, self.layout.n))
-        q = {"rad": self.options.q_angle, "m": self.options.q_range, "1": self.options.q_gain, "s": self.options.q_time}
+        q = {
+            "rad": self.options.q_angle,
+            "m": self.options.q_range,
+            "1": self.options.q_gain,
+            "s": self.options.q_time,
+        }
         self._q2 = np.array([q[u] for u in self.layout.units]) ** 2
         self._buffer = {k: [] for k in _BUFFER}
         self._n_read = 0
@@ -155,13 +190,28 @@ class FleetFilter:
         key = self.options.epoch_key(cols.time)
         if self._closed_key is not None and (key <= self._closed_key).any():
             row = int(np.flatnonzero(key <= self._closed_key)[0])
-            raise table.error(row, f"time {cols.time[row]:g} s falls in an epoch already processed; feed plots in "
-                                   "time order (an epoch closes when a plot of a later epoch arrives)")
+            raise table.error(
+                row,
+                f"time {cols.time[row]:g} s falls in an epoch already processed; feed plots in "
+                "time order (an epoch closes when a plot of a later epoch arrives)",
+            )
         platform = self.specs.platform[cols.sensor]
-        nav = navigation_at(self.tracks, self.platform_ids, platform, cols.time,
-                            lambda i: f"plots row {i} (sensor {self.specs.ids[cols.sensor[i]]!r}, time {cols.time[i]:g} s)")
-        new = {"time": cols.time, "sensor": cols.sensor, "target": cols.target.astype(str), "meas": cols.meas,
-               "mask": cols.mask, "nav": nav, "row": self._n_read + np.arange(cols.time.size)}
+        nav = navigation_at(
+            self.tracks,
+            self.platform_ids,
+            platform,
+            cols.time,
+            lambda i: f"plots row {i} (sensor {self.specs.ids[cols.sensor[i]]!r}, time {cols.time[i]:g} s)",
+        )
+        new = {
+            "time": cols.time,
+            "sensor": cols.sensor,
+            "target": cols.target.astype(str),
+            "meas": cols.meas,
+            "mask": cols.mask,
+            "nav": nav,
+            "row": self._n_read + np.arange(cols.time.size),
+        }
         for k in _BUFFER:
             self._buffer[k].append(new[k])
         self._n_read += int(cols.time.size)
@@ -193,7 +243,9 @@ class FleetFilter:
     def _epoch(self, plots: dict) -> None:
         t_end = float(plots["time"].max())
         if self._t_last is not None:
-            self.P[np.diag_indices_from(self.P)] += self._q2 * max(t_end - self._t_last, 0.0) * (self.layout.prior_sigma > 0)
+            self.P[np.diag_indices_from(self.P)] += (
+                self._q2 * max(t_end - self._t_last, 0.0) * (self.layout.prior_sigma > 0)
+            )
         self._t_last = t_end
         problem = self._problem(plots)
         nis, dof, used = 0.0, 0, 0
@@ -202,8 +254,12 @@ class FleetFilter:
             info = epoch_information(problem, x_lin, self.options.batch())
             if info is None:
                 break
-            b = info.b + info.L @ (x_lin - self.x)  # the gradient at the prior mean of the model linearised at x_lin
-            x, P, nis, dof = information_update(self.x, self.P, info.L, b, self.layout.free, self.layout.scale)
+            b = info.b + info.L @ (
+                x_lin - self.x
+            )  # the gradient at the prior mean of the model linearised at x_lin
+            x, P, nis, dof = information_update(
+                self.x, self.P, info.L, b, self.layout.free, self.layout.scale
+            )
             moved = np.abs(x - x_lin)[self.layout.free] / self.layout.scale[self.layout.free]
             self.n_linearisations += 1
             x_lin, L, used = x, info.L, info.n_plots
@@ -215,7 +271,9 @@ class FleetFilter:
         if used < plots["time"].size:
             for tid in np.unique(plots["target"]):
                 self._unused.setdefault(str(tid), []).append(plots["time"][plots["target"] == tid])
-        self._history.append((t_end, self.x.copy(), np.sqrt(np.clip(np.diag(self.P), 0, None)), nis, dof, used))
+        self._history.append(
+            (t_end, self.x.copy(), np.sqrt(np.clip(np.diag(self.P), 0, None)), nis, dof, used)
+        )
 
     def _problem(self, plots: dict) -> FleetProblem:
         target_ids = tuple(dict.fromkeys(plots["target"]))
@@ -224,12 +282,26 @@ class FleetFilter:
         sel = np.isin(refs.target, target_ids) & (refs.time >= t0) & (refs.time <= t1)  # this epoch's only
         refs = refs.subset(sel)
         return FleetProblem(
-            platform_ids=tuple(self.platform_ids), sensor_ids=self.specs.ids, target_ids=target_ids,
-            sensor_platform=self.specs.platform, sensor_sigma=self.specs.sigma, sensor_lever=self.specs.lever,
-            layout=self.layout, time=plots["time"], sensor=plots["sensor"],
-            target=index_of(plots["target"], target_ids), meas=plots["meas"], mask=plots["mask"], nav=plots["nav"],
-            row=plots["row"], n_input_plots=self._n_read, references=refs,
-            ref_target=index_of(refs.target, target_ids), tracks=self.tracks, surface=self.surface)
+            platform_ids=tuple(self.platform_ids),
+            sensor_ids=self.specs.ids,
+            target_ids=target_ids,
+            sensor_platform=self.specs.platform,
+            sensor_sigma=self.specs.sigma,
+            sensor_lever=self.specs.lever,
+            layout=self.layout,
+            time=plots["time"],
+            sensor=plots["sensor"],
+            target=index_of(plots["target"], target_ids),
+            meas=plots["meas"],
+            mask=plots["mask"],
+            nav=plots["nav"],
+            row=plots["row"],
+            n_input_plots=self._n_read,
+            references=refs,
+            ref_target=index_of(refs.target, target_ids),
+            tracks=self.tracks,
+            surface=self.surface,
+        )
 
     # -- output ----------------------------------------------------------------------------------
     @property
@@ -246,33 +318,62 @@ class FleetFilter:
         """The estimates now, with the history, observability report and innovation check."""
         layout = self.layout
         f = layout.free
-        report = fleet_observability(self.information[np.ix_(f, f)], f, layout, self.specs.platform,
-                                     self.platform_ids, self.specs.ids)
+        report = fleet_observability(
+            self.information[np.ix_(f, f)], f, layout, self.specs.platform, self.platform_ids, self.specs.ids
+        )
         status = {layout.names[i]: "fixed" for i in layout.fixed}
         status.update(report.status)
         h = self._history
-        hist = OnlineHistory(np.array([e[0] for e in h]), np.array([e[1] for e in h]).reshape(len(h), layout.n),
-                             np.array([e[2] for e in h]).reshape(len(h), layout.n), np.array([e[3] for e in h]),
-                             np.array([e[4] for e in h], dtype=np.int64), np.array([e[5] for e in h], dtype=np.int64))
+        hist = OnlineHistory(
+            np.array([e[0] for e in h]),
+            np.array([e[1] for e in h]).reshape(len(h), layout.n),
+            np.array([e[2] for e in h]).reshape(len(h), layout.n),
+            np.array([e[3] for e in h]),
+            np.array([e[4] for e in h], dtype=np.int64),
+            np.array([e[5] for e in h], dtype=np.int64),
+        )
         dof = int(hist.dof.sum())
-        consistency = (ConsistencyReport.from_mean(float(hist.nis.sum()) / dof, dof, 1,
-                                                   "normalised innovation squared per degree of freedom")
-                       if dof else None)
-        return OnlineResult(layout, self.estimate, self.covariance, np.sqrt(np.clip(np.diag(self.P), 0, None)),
-                            status, report, consistency, hist, self._exclusions(), self._n_read, int(hist.n_plots.sum()))
+        consistency = (
+            ConsistencyReport.from_mean(
+                float(hist.nis.sum()) / dof, dof, 1, "normalised innovation squared per degree of freedom"
+            )
+            if dof
+            else None
+        )
+        return OnlineResult(
+            layout,
+            self.estimate,
+            self.covariance,
+            np.sqrt(np.clip(np.diag(self.P), 0, None)),
+            status,
+            report,
+            consistency,
+            hist,
+            self._exclusions(),
+            self._n_read,
+            int(hist.n_plots.sum()),
+        )
 
     def _exclusions(self) -> tuple[Exclusion, ...]:
         out = []
         for tid, times in self._unused.items():
             t = np.concatenate(times)
-            out.append(Exclusion(tid, "no registration information in some epochs (seen by one sensor only, without a "
-                                      "reference, or its position not determined by its plots)", int(t.size),
-                                 float(t.min()), float(t.max())))
+            out.append(
+                Exclusion(
+                    tid,
+                    "no registration information in some epochs (seen by one sensor only, without a "
+                    "reference, or its position not determined by its plots)",
+                    int(t.size),
+                    float(t.min()),
+                    float(t.max()),
+                )
+            )
         return tuple(out)
 
 
-def information_update(x: np.ndarray, P: np.ndarray, L: np.ndarray, b: np.ndarray, free: np.ndarray,
-                       scale: np.ndarray) -> tuple[np.ndarray, np.ndarray, float, int]:
+def information_update(
+    x: np.ndarray, P: np.ndarray, L: np.ndarray, b: np.ndarray, free: np.ndarray, scale: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, float, int]:
     """The Kalman update of (x (n,), P (n, n)) with information ``L`` (n, n) and gradient ``b`` (n,)
     on the states ``free``, in coordinates scaled by ``scale`` (n,) (module docstring).
     Returns the new x and P (copies), the normalised innovation squared and its degrees of freedom,
@@ -318,17 +419,30 @@ def _start(layout, prior) -> tuple[np.ndarray, np.ndarray]:
     fixed = layout.fixed
     x[fixed], P[fixed], P[:, fixed] = 0.0, 0.0, 0.0
     undetermined = ~np.isfinite(np.asarray(getattr(prior, "sigma", np.zeros(n)), dtype=float))
-    P[np.diag_indices(n)] += np.where(undetermined & (layout.prior_sigma > 0), (DIFFUSE * layout.scale) ** 2, 0.0)
+    P[np.diag_indices(n)] += np.where(
+        undetermined & (layout.prior_sigma > 0), (DIFFUSE * layout.scale) ** 2, 0.0
+    )
     return x, P
 
 
-def register_online(plots, sensors, navigation, platforms=None, references=None, *,
-                    options: OnlineOptions | None = None, prior=None, residuals: bool = True,
-                    targets=None) -> OnlineResult:
+def register_online(
+    plots,
+    sensors,
+    navigation,
+    platforms=None,
+    references=None,
+    *,
+    options: OnlineOptions | None = None,
+    prior=None,
+    residuals: bool = True,
+    targets=None,
+) -> OnlineResult:
     """Run :class:`FleetFilter` over a whole plots table (sorted by time here) and return its result;
     with ``residuals``, also the normalised residuals of every plot at the final estimate
     (:func:`registration.fleet.batch.residuals.residuals_at`)."""
-    filt = FleetFilter(sensors, navigation, platforms, references, options=options, prior=prior, targets=targets)
+    filt = FleetFilter(
+        sensors, navigation, platforms, references, options=options, prior=prior, targets=targets
+    )
     table = read_table("plots", plots, ("time", "sensor", "target"))
     order = np.argsort(table.floats("time"), kind="stable")
     filt.update({k: v[order] for k, v in table.columns.items()})

@@ -105,8 +105,10 @@ class OnlineResult:
         if c is None:
             return None
         lo, hi = c.interval
-        return (f"normalised innovations (information on the filter's covariance, not the verdict): mean {c.mean:.4g} "
-                f"per degree of freedom over {c.samples}, band for independent samples [{lo:.3g}, {hi:.3g}]")
+        return (
+            f"normalised innovations (information on the filter's covariance, not the verdict): mean {c.mean:.4g} "
+            f"per degree of freedom over {c.samples}, band for independent samples [{lo:.3g}, {hi:.3g}]"
+        )
 
     def combination(self, coefficients: dict) -> tuple[float, float]:
         """Value and sigma (1σ) of ``sum_i a_i x_i`` for ``coefficients`` {state name: a_i} (rad, m),

@@ -53,8 +53,13 @@ DEFAULT_COVERAGE = {
 def coverage_for(sigma) -> Coverage:
     """The default coverage of a sensor from its noise sigmas (range, bearing, elevation; NaN: not measured)."""
     has = np.isfinite(np.asarray(sigma, dtype=float))
-    kind = {(True, True, True): "3d", (True, True, False): "2d", (False, True, True): "passive",
-            (False, True, False): "bearing", (True, False, False): "range"}.get(tuple(bool(h) for h in has), "3d")
+    kind = {
+        (True, True, True): "3d",
+        (True, True, False): "2d",
+        (False, True, True): "passive",
+        (False, True, False): "bearing",
+        (True, False, False): "range",
+    }.get(tuple(bool(h) for h in has), "3d")
     return DEFAULT_COVERAGE[kind]
 
 
@@ -66,9 +71,17 @@ def horizon_range(h_sensor: np.ndarray, h_target: np.ndarray) -> np.ndarray:
     return np.sqrt(ka * np.maximum(h_sensor, 1.0)) + np.sqrt(ka * np.maximum(h_target, 1.0))
 
 
-def visible(coverage: Coverage, range_true: np.ndarray, elevation_true: np.ndarray, h_sensor: np.ndarray,
-            h_target: np.ndarray) -> np.ndarray:
+def visible(
+    coverage: Coverage,
+    range_true: np.ndarray,
+    elevation_true: np.ndarray,
+    h_sensor: np.ndarray,
+    h_target: np.ndarray,
+) -> np.ndarray:
     """Boolean mask of the plots the sensor reports: true slant range (m) and deck elevation (rad)
     within its coverage and the target above the radio horizon."""
-    return ((range_true <= coverage.max_range) & (elevation_true <= coverage.max_elevation)
-            & (range_true <= horizon_range(h_sensor, h_target)))
+    return (
+        (range_true <= coverage.max_range)
+        & (elevation_true <= coverage.max_elevation)
+        & (range_true <= horizon_range(h_sensor, h_target))
+    )

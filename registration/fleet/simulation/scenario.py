@@ -17,21 +17,34 @@ import numpy as np
 
 from registration import _codegen
 from registration.core.angles import wrap_angle
-from registration.fleet.data.problem import FleetProblem, build_problem
 from registration.core.frames import ecef2geodetic
+from registration.fleet.data.problem import FleetProblem, build_problem
 from registration.fleet.simulation.coverage import coverage_for, visible
 from registration.fleet.simulation.tracks import Circle, Line, ShipTrack, enu2ecef_points
 
-__all__ = ["DEFAULT_FLEET", "FleetConfig", "FleetScenario", "fleet_scenario", "SHIPS", "SITE", "SENSORS", "TARGETS",
-           "CENTRE"]
+__all__ = [
+    "DEFAULT_FLEET",
+    "FleetConfig",
+    "FleetScenario",
+    "fleet_scenario",
+    "SHIPS",
+    "SITE",
+    "SENSORS",
+    "TARGETS",
+    "CENTRE",
+]
 
 #: Centre of the exercise area (lat, lon rad; alt m): the ENU origin of the targets' tracks.
 CENTRE = (np.radians(36.0), np.radians(14.5), 0.0)
 #: Ships: start east/north of CENTRE (m), course (rad from north), speed (m/s), antenna height
 #: (m), pitch and roll amplitude (rad) and period (s), wave phase (rad).
 SHIPS = {
-    "A": ShipTrack(-20e3, -10e3, np.radians(60.0), 10.0, 15.0, np.radians(1.5), 8.0, np.radians(4.0), 11.0, 0.0),
-    "B": ShipTrack(15e3, -20e3, np.radians(330.0), 8.0, 12.0, np.radians(2.0), 7.0, np.radians(5.0), 12.0, 1.7),
+    "A": ShipTrack(
+        -20e3, -10e3, np.radians(60.0), 10.0, 15.0, np.radians(1.5), 8.0, np.radians(4.0), 11.0, 0.0
+    ),
+    "B": ShipTrack(
+        15e3, -20e3, np.radians(330.0), 8.0, 12.0, np.radians(2.0), 7.0, np.radians(5.0), 12.0, 1.7
+    ),
     "C": ShipTrack(0.0, 15e3, np.radians(200.0), 12.0, 18.0, np.radians(1.0), 9.0, np.radians(3.0), 9.5, 3.1),
 }
 #: The shore site: east/north of CENTRE (m), height (m); level and north-aligned by survey.
@@ -112,7 +125,11 @@ class FleetScenario:
 
 #: The extended errors the simulator can give every sensor, with the sensors-table prior column
 #: that switches each on (the position errors share one).
-EXTENDED_SIZES = {"range_gain": "prior_range_gain", "time_bias": "prior_time_bias", "position_error": "prior_position"}
+EXTENDED_SIZES = {
+    "range_gain": "prior_range_gain",
+    "time_bias": "prior_time_bias",
+    "position_error": "prior_position",
+}
 
 
 def _extended_truth(config: FleetConfig, rng, extended: dict) -> dict:
@@ -135,7 +152,9 @@ def _truth_errors(config: FleetConfig, rng, sizes: dict) -> dict:
     truth = {}
     for pid in (*config.ships, *config.sites):
         for what, key in (("heading", "heading_error"), ("pitch", "level_error"), ("roll", "level_error")):
-            truth[f"{pid}:{what}_error"] = 0.0 if pid in config.sites else sizes[key] * rng.choice([-1.0, 1.0])
+            truth[f"{pid}:{what}_error"] = (
+                0.0 if pid in config.sites else sizes[key] * rng.choice([-1.0, 1.0])
+            )
     for sid, (_, sigma, _, _, _) in config.sensors.items():
         for k, ch in enumerate(("range", "bearing", "elevation")):
             if np.isfinite(sigma[k]):
@@ -150,7 +169,9 @@ def _site_nav(config: FleetConfig, pid: str) -> np.ndarray:
     return np.array([lat[0], lon[0], height, 0.0, 0.0, 0.0])
 
 
-def _navigation(config: FleetConfig, duration_s: float, truth: dict, ship_motion: bool, rate_hz: float) -> dict:
+def _navigation(
+    config: FleetConfig, duration_s: float, truth: dict, ship_motion: bool, rate_hz: float
+) -> dict:
     t = np.arange(0.0, duration_s + 0.5 / rate_hz, 1.0 / rate_hz)
     names = ("lat", "lon", "alt", "heading", "pitch", "roll")
     platform, times, rows = [], [], []
@@ -166,7 +187,11 @@ def _navigation(config: FleetConfig, duration_s: float, truth: dict, ship_motion
         times.append(np.zeros(1))
         rows.append(_site_nav(config, pid)[None, :])
     rows = np.concatenate(rows)
-    return {"platform": np.array(platform), "time": np.concatenate(times), **{c: rows[:, j] for j, c in enumerate(names)}}
+    return {
+        "platform": np.array(platform),
+        "time": np.concatenate(times),
+        **{c: rows[:, j] for j, c in enumerate(names)},
+    }
 
 
 def _true_nav(config: FleetConfig, pid: str, t: np.ndarray, ship_motion: bool) -> np.ndarray:
@@ -175,8 +200,9 @@ def _true_nav(config: FleetConfig, pid: str, t: np.ndarray, ship_motion: bool) -
     return np.tile(_site_nav(config, pid), (t.size, 1))
 
 
-def _sensor_plots(config: FleetConfig, sid: str, duration_s: float, truth: dict, rng, noise_scale: float,
-                  ship_motion: bool) -> dict:
+def _sensor_plots(
+    config: FleetConfig, sid: str, duration_s: float, truth: dict, rng, noise_scale: float, ship_motion: bool
+) -> dict:
     pid, sigma, period, offset, lever = config.sensors[sid]
     times = np.arange(offset, duration_s, period)
     sigma = np.asarray(sigma)
@@ -191,23 +217,45 @@ def _sensor_plots(config: FleetConfig, sid: str, duration_s: float, truth: dict,
     if any(k in truth for k in extended):  # the sensor sits at stated position - position error
         pos_err = np.array([truth.get(f"{sid}:position_{a}", 0.0) for a in ("east", "north", "up")])
         z3, z6 = np.zeros(3), np.zeros(6)
-        plot = _codegen.get("fleet_residual_ext")(p, z3, *nav.T, z6, z3, bias, truth.get(f"{sid}:range_gain", 0.0),
-                                                  0.0, pos_err, lever, 0.0, 0.0, 0.0)[2]
+        plot = _codegen.get("fleet_residual_ext")(
+            p,
+            z3,
+            *nav.T,
+            z6,
+            z3,
+            bias,
+            truth.get(f"{sid}:range_gain", 0.0),
+            0.0,
+            pos_err,
+            lever,
+            0.0,
+            0.0,
+            0.0,
+        )[2]
     else:
         plot = _codegen.get("fleet_residual")(p, *nav.T, np.zeros(3), bias, lever, 0.0, 0.0, 0.0)[2]
     measured = plot + noise_scale * rng.normal(size=plot.shape) * np.nan_to_num(sigma)
     measured[:, ~np.isfinite(sigma)] = np.nan
     measured[:, 1] = wrap_angle(measured[:, 1])
     seen_plots = _in_coverage(sid, sigma, p, nav, lever)
-    return {"time": np.tile(times, n_t)[seen_plots], "sensor": np.full(times.size * n_t, sid)[seen_plots],
-            "target": np.repeat(np.array(list(config.targets)), times.size)[seen_plots],
-            "range": measured[seen_plots, 0], "bearing": measured[seen_plots, 1], "elevation": measured[seen_plots, 2]}
+    return {
+        "time": np.tile(times, n_t)[seen_plots],
+        "sensor": np.full(times.size * n_t, sid)[seen_plots],
+        "target": np.repeat(np.array(list(config.targets)), times.size)[seen_plots],
+        "range": measured[seen_plots, 0],
+        "bearing": measured[seen_plots, 1],
+        "elevation": measured[seen_plots, 2],
+    }
 
 
-def _in_coverage(sid: str, sigma: np.ndarray, p_ecef: np.ndarray, nav: np.ndarray, lever: np.ndarray) -> np.ndarray:
+def _in_coverage(
+    sid: str, sigma: np.ndarray, p_ecef: np.ndarray, nav: np.ndarray, lever: np.ndarray
+) -> np.ndarray:
     """Which plots the sensor reports (:mod:`registration.fleet.simulation.coverage`): judged at the
     true geometry, without biases (the true navigation ``nav``, target ECEF ``p_ecef``)."""
-    true_plot = _codegen.get("fleet_residual")(p_ecef, *nav.T, np.zeros(3), np.zeros(3), lever, 0.0, 0.0, 0.0)[2]
+    true_plot = _codegen.get("fleet_residual")(
+        p_ecef, *nav.T, np.zeros(3), np.zeros(3), lever, 0.0, 0.0, 0.0
+    )[2]
     h_target = ecef2geodetic(p_ecef)[2] if p_ecef.size else np.zeros(0)
     return visible(coverage_for(sigma), true_plot[:, 0], true_plot[:, 2], nav[:, 2] + lever[2], h_target)
 
@@ -237,16 +285,33 @@ def _references(config: FleetConfig, duration_s: float, sigma: float, rng) -> di
         return None
     t = np.arange(0.5, duration_s, 1.0)
     p = enu2ecef_points(CENTRE, config.targets[tid].enu(t)) + sigma * rng.normal(size=(t.size, 3))
-    return {"target": np.full(t.size, tid), "time": t, "x": p[:, 0], "y": p[:, 1], "z": p[:, 2],
-            "sigma": np.full(t.size, sigma)}
+    return {
+        "target": np.full(t.size, tid),
+        "time": t,
+        "x": p[:, 0],
+        "y": p[:, 1],
+        "z": p[:, 2],
+        "sigma": np.full(t.size, sigma),
+    }
 
 
-def fleet_scenario(seed: int = 0, *, duration_s: float = 300.0, angle_bias: float = np.radians(1.0),
-                   range_bias: float = 300.0, heading_error: float = np.radians(0.5),
-                   level_error: float = np.radians(0.2), noise_scale: float = 1.0, ship_motion: bool = True,
-                   reference_sigma: float = 3.0, nav_rate_hz: float = 10.0,
-                   config: FleetConfig = DEFAULT_FLEET, range_gain: float | None = None,
-                   time_bias: float | None = None, position_error: float | None = None) -> FleetScenario:
+def fleet_scenario(
+    seed: int = 0,
+    *,
+    duration_s: float = 300.0,
+    angle_bias: float = np.radians(1.0),
+    range_bias: float = 300.0,
+    heading_error: float = np.radians(0.5),
+    level_error: float = np.radians(0.2),
+    noise_scale: float = 1.0,
+    ship_motion: bool = True,
+    reference_sigma: float = 3.0,
+    nav_rate_hz: float = 10.0,
+    config: FleetConfig = DEFAULT_FLEET,
+    range_gain: float | None = None,
+    time_bias: float | None = None,
+    position_error: float | None = None,
+) -> FleetScenario:
     """The fleet ``config`` (default: the module docstring's) over ``duration_s`` seconds.
 
     Errors: each ship's heading error is +-``heading_error`` and its pitch and roll errors
@@ -265,14 +330,24 @@ def fleet_scenario(seed: int = 0, *, duration_s: float = 300.0, angle_bias: floa
     each +-size with random signs per sensor and estimated without prior (empty prior column).
     A plot whose true time falls before the navigation starts is set aside by the solver.
     """
-    for name, v in (("angle_bias", angle_bias), ("heading_error", heading_error), ("level_error", level_error)):
+    for name, v in (
+        ("angle_bias", angle_bias),
+        ("heading_error", heading_error),
+        ("level_error", level_error),
+    ):
         if abs(v) > np.radians(20):
             raise ValueError(f"{name}: {v} rad is implausibly large (pass radians, not degrees)")
     if not duration_s > 10 or not nav_rate_hz > 0:
-        raise ValueError(f"duration_s must exceed 10 s and nav_rate_hz be > 0, got {duration_s}, {nav_rate_hz}")
+        raise ValueError(
+            f"duration_s must exceed 10 s and nav_rate_hz be > 0, got {duration_s}, {nav_rate_hz}"
+        )
     rng = np.random.default_rng(seed)
-    sizes = {"angle_bias": angle_bias, "range_bias": range_bias, "heading_error": heading_error,
-             "level_error": level_error}
+    sizes = {
+        "angle_bias": angle_bias,
+        "range_bias": range_bias,
+        "heading_error": heading_error,
+        "level_error": level_error,
+    }
     truth = _truth_errors(config, rng, sizes)
     extended = {"range_gain": range_gain, "time_bias": time_bias, "position_error": position_error}
     for name, v in extended.items():
@@ -281,11 +356,27 @@ def fleet_scenario(seed: int = 0, *, duration_s: float = 300.0, angle_bias: floa
     if range_gain is not None and abs(range_gain) > 0.1:
         raise ValueError(f"range_gain: {range_gain} is implausibly large (dimensionless: 1e-3 = 1000 ppm)")
     truth.update(_extended_truth(config, rng, extended))
-    parts = [_sensor_plots(config, sid, duration_s, truth, rng, noise_scale, ship_motion) for sid in config.sensors]
+    parts = [
+        _sensor_plots(config, sid, duration_s, truth, rng, noise_scale, ship_motion) for sid in config.sensors
+    ]
     plots = {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
     platforms, sensors = _tables(config, noise_scale, extended)
     sizes.update({k: v for k, v in extended.items() if v is not None})
-    description = {"seed": seed, "duration_s": duration_s, **{f"{k}": v for k, v in sizes.items()},
-                   "noise_scale": noise_scale, "ship_motion": ship_motion, "plots": int(plots["time"].size)}
-    return FleetScenario(platforms, sensors, _navigation(config, duration_s, truth, ship_motion, nav_rate_hz), plots,
-                         _references(config, duration_s, reference_sigma, rng), truth, config, description)
+    description = {
+        "seed": seed,
+        "duration_s": duration_s,
+        **{f"{k}": v for k, v in sizes.items()},
+        "noise_scale": noise_scale,
+        "ship_motion": ship_motion,
+        "plots": int(plots["time"].size),
+    }
+    return FleetScenario(
+        platforms,
+        sensors,
+        _navigation(config, duration_s, truth, ship_motion, nav_rate_hz),
+        plots,
+        _references(config, duration_s, reference_sigma, rng),
+        truth,
+        config,
+        description,
+    )

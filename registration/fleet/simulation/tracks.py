@@ -79,8 +79,14 @@ class Circle:
 
     def enu(self, t: np.ndarray) -> np.ndarray:
         a = self.phase + self.speed / self.radius * t
-        return np.stack([self.east + self.radius * np.cos(a), self.north + self.radius * np.sin(a),
-                         np.full(np.shape(t), self.z)], axis=-1)
+        return np.stack(
+            [
+                self.east + self.radius * np.cos(a),
+                self.north + self.radius * np.sin(a),
+                np.full(np.shape(t), self.z),
+            ],
+            axis=-1,
+        )
 
 
 @dataclass(frozen=True)
@@ -95,8 +101,14 @@ class Line:
     z: float
 
     def enu(self, t: np.ndarray) -> np.ndarray:
-        return np.stack([self.east + self.speed * t * np.sin(self.course), self.north + self.speed * t * np.cos(self.course),
-                         np.full(np.shape(t), self.z)], axis=-1)
+        return np.stack(
+            [
+                self.east + self.speed * t * np.sin(self.course),
+                self.north + self.speed * t * np.cos(self.course),
+                np.full(np.shape(t), self.z),
+            ],
+            axis=-1,
+        )
 
 
 def random_targets(n: int, seed: int = 0, *, half_width: float = 40e3) -> dict:
@@ -109,5 +121,9 @@ def random_targets(n: int, seed: int = 0, *, half_width: float = 40e3) -> dict:
     east, north = rng.uniform(-half_width, half_width, (2, n))
     radius, speed = rng.uniform(3e3, 20e3, n), rng.uniform(100.0, 250.0, n)
     z, phase = rng.uniform(1e3, 10e3, n), rng.uniform(0.0, 2.0 * np.pi, n)
-    return {f"T{k + 1}": Circle(float(east[k]), float(north[k]), float(radius[k]), float(speed[k]), float(z[k]),
-                                float(phase[k])) for k in range(n)}
+    return {
+        f"T{k + 1}": Circle(
+            float(east[k]), float(north[k]), float(radius[k]), float(speed[k]), float(z[k]), float(phase[k])
+        )
+        for k in range(n)
+    }

@@ -16,11 +16,21 @@ category in ``decode48``, ``decode34``, ``decode21``; ``reader``: one file decod
 ``tables``, ``summary``); beside them ``importer`` (the import) and ``errors``.
 """
 
+from registration.io.asterix.decode.reader import DecodedFile, decode_file
+from registration.io.asterix.decode.uap import DEFAULT_EDITIONS, SUPPORTED_EDITIONS
 from registration.io.asterix.errors import REASONS, AsterixImportError
 from registration.io.asterix.importer import AsterixImport, import_asterix
-from registration.io.asterix.decode.reader import DecodedFile, decode_file
 from registration.io.asterix.tables.sites import check_sites, read_sites
-from registration.io.asterix.decode.uap import DEFAULT_EDITIONS, SUPPORTED_EDITIONS
 
-__all__ = ["AsterixImport", "AsterixImportError", "DEFAULT_EDITIONS", "DecodedFile", "REASONS", "SUPPORTED_EDITIONS",
-           "check_sites", "decode_file", "import_asterix", "read_sites"]
+__all__ = [
+    "AsterixImport",
+    "AsterixImportError",
+    "DEFAULT_EDITIONS",
+    "DecodedFile",
+    "REASONS",
+    "SUPPORTED_EDITIONS",
+    "check_sites",
+    "decode_file",
+    "import_asterix",
+    "read_sites",
+]

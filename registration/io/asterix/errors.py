@@ -31,7 +31,7 @@ REASONS = {
     "spare_frn": "an FSPEC that names a spare FRN of the edition",
     "item_overrun": "an item that runs past the end of its data block",
     "bad_item": "an item whose structure the edition does not allow (too many extension octets, "
-                "an explicit length of 0, a spare compound subfield)",
+    "an explicit length of 0, a spare compound subfield)",
     "missing_item": "a record without an item the reader needs (source, time, position, ...)",
     "bad_time": "a time of day of 24 h or more",
     "no_detection": "a CAT048 report of type 0 (no detection)",
@@ -63,8 +63,15 @@ class Rejections:
 
     parts: list = field(default_factory=list)
 
-    def add(self, file: str, offset: np.ndarray | int, packet: np.ndarray | int, category: np.ndarray | int, code: str,
-            reason: str | np.ndarray) -> None:
+    def add(
+        self,
+        file: str,
+        offset: np.ndarray | int,
+        packet: np.ndarray | int,
+        category: np.ndarray | int,
+        code: str,
+        reason: str | np.ndarray,
+    ) -> None:
         """Set aside N items of one file with one reason code: ``offset`` (N,) byte offsets,
         ``packet`` (N,) packet numbers from 1 (0: not a capture), ``category`` (N,) or one value
         (0: unknown), ``reason`` one text or (N,) texts."""
@@ -95,18 +102,34 @@ class Rejections:
         import pandas as pd
 
         if not self.parts:
-            return pd.DataFrame({c: pd.Series(dtype="Int64" if c in ("offset", "packet", "category") else object)
-                                 for c in REJECTED_COLUMNS})
-        cols = [np.concatenate([np.broadcast_to(np.asarray(p[k], dtype=object) if k in (0, 4) else p[k],
-                                                (p[1].size,)) for p in self.parts]) for k in range(6)]
+            return pd.DataFrame(
+                {
+                    c: pd.Series(dtype="Int64" if c in ("offset", "packet", "category") else object)
+                    for c in REJECTED_COLUMNS
+                }
+            )
+        cols = [
+            np.concatenate(
+                [
+                    np.broadcast_to(np.asarray(p[k], dtype=object) if k in (0, 4) else p[k], (p[1].size,))
+                    for p in self.parts
+                ]
+            )
+            for k in range(6)
+        ]
         order = np.lexsort((cols[1].astype(np.int64), _file_order(cols[0], self.parts)))
-        frame = pd.DataFrame({
-            "file": cols[0][order].astype(str),
-            "offset": pd.array(cols[1][order].astype(np.int64), dtype="Int64"),
-            "packet": pd.array(np.where(cols[2][order] > 0, cols[2][order], 0).astype(np.int64), dtype="Int64"),
-            "category": pd.array(cols[3][order].astype(np.int64), dtype="Int64"),
-            "reason_code": cols[4][order].astype(str),
-            "reason": cols[5][order].astype(str)})
+        frame = pd.DataFrame(
+            {
+                "file": cols[0][order].astype(str),
+                "offset": pd.array(cols[1][order].astype(np.int64), dtype="Int64"),
+                "packet": pd.array(
+                    np.where(cols[2][order] > 0, cols[2][order], 0).astype(np.int64), dtype="Int64"
+                ),
+                "category": pd.array(cols[3][order].astype(np.int64), dtype="Int64"),
+                "reason_code": cols[4][order].astype(str),
+                "reason": cols[5][order].astype(str),
+            }
+        )
         frame.loc[frame["packet"] == 0, "packet"] = pd.NA
         frame.loc[frame["category"] == 0, "category"] = pd.NA
         return frame

@@ -11,14 +11,19 @@ from typing import TYPE_CHECKING, Iterable, Mapping, Sequence
 
 import numpy as np
 
-from registration.io.asterix.tables.assemble import FileRows, SiteLookup, assemble_file
-from registration.io.asterix.errors import Rejections
 from registration.io.asterix.decode.reader import decode_file
+from registration.io.asterix.decode.uap import check_editions
+from registration.io.asterix.errors import Rejections
+from registration.io.asterix.tables.assemble import FileRows, SiteLookup, assemble_file
 from registration.io.asterix.tables.sites import check_sites, read_sites
-from registration.io.asterix.tables.summary import file_summary, sensor_summary, sources_not_in_sites, time_summary
+from registration.io.asterix.tables.summary import (
+    file_summary,
+    sensor_summary,
+    sources_not_in_sites,
+    time_summary,
+)
 from registration.io.asterix.tables.tables import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
 from registration.io.asterix.tables.timeofday import Unwrapper, capture_day
-from registration.io.asterix.decode.uap import check_editions
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -47,8 +52,13 @@ class AsterixImport:
     @property
     def tables(self) -> dict:
         """File name stem -> DataFrame of the five fleet tables."""
-        return {"plots": self.plots, "navigation": self.navigation, "sensors": self.sensors,
-                "platforms": self.platforms, "reference": self.reference}
+        return {
+            "plots": self.plots,
+            "navigation": self.navigation,
+            "sensors": self.sensors,
+            "platforms": self.platforms,
+            "reference": self.reference,
+        }
 
 
 class _Progress:
@@ -110,19 +120,28 @@ def _reference(rows: list, plot_targets: set, which: str) -> tuple[dict, dict]:
     ref = _concat([r.reference for r in rows], REFERENCE_COLUMNS)
     targets = ref["target"].astype(str) if ref["target"].size else np.zeros(0, dtype=str)
     plotted = np.isin(targets, list(plot_targets)) if targets.size else np.zeros(0, dtype=bool)
-    info = {"reports": int(targets.size), "targets": int(np.unique(targets).size),
-            "targets_without_plots": int(np.unique(targets[~plotted]).size),
-            "reports_of_targets_without_plots": int((~plotted).sum()),
-            "kept": which}
+    info = {
+        "reports": int(targets.size),
+        "targets": int(np.unique(targets).size),
+        "targets_without_plots": int(np.unique(targets[~plotted]).size),
+        "reports_of_targets_without_plots": int((~plotted).sum()),
+        "kept": which,
+    }
     if which == "plotted":
         ref = {c: v[plotted] for c, v in ref.items()}
     return ref, info
 
 
-def import_asterix(paths: str | Path | Sequence[str | Path], sites: pd.DataFrame | str | Path,
-                   date: dt.date | str | None = None, progress: bool = False, *,
-                   editions: Mapping[int, str] | None = None, ports: Iterable[int] | None = None,
-                   reference_targets: str = "plotted") -> AsterixImport:
+def import_asterix(
+    paths: str | Path | Sequence[str | Path],
+    sites: pd.DataFrame | str | Path,
+    date: dt.date | str | None = None,
+    progress: bool = False,
+    *,
+    editions: Mapping[int, str] | None = None,
+    ports: Iterable[int] | None = None,
+    reference_targets: str = "plotted",
+) -> AsterixImport:
     """Import ASTERIX recordings (raw data blocks, pcap, pcapng; gzip or not; told apart by content).
 
     ``paths``: one path or a list, read in order as one stream (time of day carried across files).
@@ -152,7 +171,9 @@ def import_asterix(paths: str | Path | Sequence[str | Path], sites: pd.DataFrame
     try:
         for path in paths:
             bar.start(path)
-            decoded.append(decode_file(path, editions, rejections, ports, bar if bar.bar is not None else None))
+            decoded.append(
+                decode_file(path, editions, rejections, ports, bar if bar.bar is not None else None)
+            )
             decoded[-1].capture.buf = np.zeros(0, dtype=np.uint8)  # fields decoded: the file's bytes can go
             bar.finish_file()
     finally:
@@ -160,20 +181,33 @@ def import_asterix(paths: str | Path | Sequence[str | Path], sites: pd.DataFrame
     return _build(decoded, sites, date, editions, rejections, reference_targets)
 
 
-def _build(decoded: list, sites: pd.DataFrame, date: dt.date | None, editions: dict, rejections: Rejections,
-           which: str) -> AsterixImport:
-    first_capture = next((d.capture.counts["first_packet_time"] for d in decoded
-                          if "first_packet_time" in d.capture.counts), None)
+def _build(
+    decoded: list,
+    sites: pd.DataFrame,
+    date: dt.date | None,
+    editions: dict,
+    rejections: Rejections,
+    which: str,
+) -> AsterixImport:
+    first_capture = next(
+        (d.capture.counts["first_packet_time"] for d in decoded if "first_packet_time" in d.capture.counts),
+        None,
+    )
     source = "argument" if date is not None else "capture" if first_capture is not None else "recording"
-    reference_day = date if date is not None else capture_day(first_capture) if first_capture is not None else None
+    reference_day = (
+        date if date is not None else capture_day(first_capture) if first_capture is not None else None
+    )
     unwrapper = Unwrapper(reference_day)
     names = sites["sensor"].astype(str).to_numpy()
     lookup = SiteLookup(sites["sac"].to_numpy(), sites["sic"].to_numpy())
     rows: list[FileRows] = [assemble_file(d, unwrapper, lookup, names, editions, rejections) for d in decoded]
     plots = _concat([r.plots for r in rows], (*PLOT_COLUMNS, "kind", "capture_lag_s"))
-    service = _concat([r.service for r in rows], ("sensor", "msg_type", "time_s", "azimuth_deg", "rotation_s"))
-    reference, ref_info = _reference(rows, set(plots["target"].astype(str)) - {""} if plots["target"].size else set(),
-                                     which)
+    service = _concat(
+        [r.service for r in rows], ("sensor", "msg_type", "time_s", "azimuth_deg", "rotation_s")
+    )
+    reference, ref_info = _reference(
+        rows, set(plots["target"].astype(str)) - {""} if plots["target"].size else set(), which
+    )
     decoded_counts = {}
     for r in rows:
         for cat, counts in r.decoded.items():
@@ -187,8 +221,12 @@ def _build(decoded: list, sites: pd.DataFrame, date: dt.date | None, editions: d
         "files": [file_summary(d, d.blocks_by_category) for d in decoded],
         "editions": {f"{c:03d}": e for c, e in sorted(editions.items())},
         "time": time_summary(reference_day, source, times, unwrapper.placed_by_capture),
-        "plots": {"total": int(plots["time_s"].size), "mode_s": int((plots["kind"] == "mode_s").sum()),
-                  "mode_a": int((plots["kind"] == "mode_a").sum()), "without_id": int((plots["kind"] == "none").sum())},
+        "plots": {
+            "total": int(plots["time_s"].size),
+            "mode_s": int((plots["kind"] == "mode_s").sum()),
+            "mode_a": int((plots["kind"] == "mode_a").sum()),
+            "without_id": int((plots["kind"] == "none").sum()),
+        },
         "sensors": sensor_summary(sites, plots, service, decoded_counts),
         "sac_sic_not_in_sites": sources_not_in_sites(unknown),
         "reference": ref_info,
@@ -196,5 +234,12 @@ def _build(decoded: list, sites: pd.DataFrame, date: dt.date | None, editions: d
     }
     plot_frame = _frame({c: plots[c] for c in PLOT_COLUMNS})
     plot_frame["target"] = plot_frame["target"].astype(str)
-    return AsterixImport(plot_frame, tables["navigation"], tables["sensors"], tables["platforms"],
-                         _frame(reference), rejections.frame(), summary)
+    return AsterixImport(
+        plot_frame,
+        tables["navigation"],
+        tables["sensors"],
+        tables["platforms"],
+        _frame(reference),
+        rejections.frame(),
+        summary,
+    )

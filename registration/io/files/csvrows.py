@@ -57,11 +57,15 @@ class RowShape:
 
     def reason(self) -> str:
         if self.fields < self.header:
-            return (f"line {self.line} has {self.fields} fields, the header {self.header}: the row is cut short (a "
-                    f"truncated or half-written line?); every row needs all {self.header} fields, an empty field "
-                    "where a value is not given")
-        return (f"line {self.line} has {self.fields} fields, the header {self.header}: fields that no column is named "
-                "for (a missing line break, or a separator inside an unquoted value?)")
+            return (
+                f"line {self.line} has {self.fields} fields, the header {self.header}: the row is cut short (a "
+                f"truncated or half-written line?); every row needs all {self.header} fields, an empty field "
+                "where a value is not given"
+            )
+        return (
+            f"line {self.line} has {self.fields} fields, the header {self.header}: fields that no column is named "
+            "for (a missing line break, or a separator inside an unquoted value?)"
+        )
 
 
 @dataclass(frozen=True)
@@ -85,7 +89,9 @@ def count_fields(data: bytes) -> tuple[np.ndarray, np.ndarray]:
 def _scan(data: bytes, final: bool) -> _Lines:
     """The lines of ``data`` (starting outside quotes); the vectorised count, else the csv module's."""
     b = np.frombuffer(data, dtype=np.uint8)
-    ev = np.flatnonzero(b <= _COMMA)  # one pass: ',', '"', CR, LF are all <= ','; digits, '.' and letters are not
+    ev = np.flatnonzero(
+        b <= _COMMA
+    )  # one pass: ',', '"', CR, LF are all <= ','; digits, '.' and letters are not
     c = b[ev]
     lf = c == _LF
     all_lf = ev[lf]  # every LF, for the line numbers
@@ -94,9 +100,11 @@ def _scan(data: bytes, final: bool) -> _Lines:
         if not _quotes_regular(b, ev[q]):
             return _scan_exact(data, final)
         if q.size % 2:  # a quote opened at the end of the buffer: its line continues in the next read
-            ev, c, lf, q = ev[:q[-1]], c[:q[-1]], lf[:q[-1]], q[:-1]
+            ev, c, lf, q = ev[: q[-1]], c[: q[-1]], lf[: q[-1]], q[:-1]
         seps = np.cumsum((c == _COMMA) | lf | (c == _CR))
-        if not np.array_equal(seps[q[0::2]], seps[q[1::2]]):  # some quoted value holds a separator or line end
+        if not np.array_equal(
+            seps[q[0::2]], seps[q[1::2]]
+        ):  # some quoted value holds a separator or line end
             outside = (np.cumsum(c == _QUOTE) & 1) == 0
             ev, c, lf = ev[outside], c[outside], lf[outside]
     is_end = lf
@@ -120,7 +128,7 @@ def _blank(b: np.ndarray, starts: np.ndarray, ends: np.ndarray, candidate: np.nd
     lines = np.flatnonzero(candidate)
     if lines.size <= 64:  # usually: blank lines and lines cut to one field are rare
         for i in lines:
-            blank[i] = not bytes(b[starts[i]:ends[i]]).strip(b" \t\r\n")
+            blank[i] = not bytes(b[starts[i] : ends[i]]).strip(b" \t\r\n")
     else:  # a one-column file
         solid = np.r_[0, np.cumsum(~((b == _SPACE) | (b == _TAB) | (b == _CR) | (b == _LF)))]
         blank[lines] = solid[ends[lines]] == solid[starts[lines]]
@@ -137,7 +145,7 @@ def _quotes_regular(b: np.ndarray, quotes: np.ndarray) -> bool:
     if not (end | (nxt == _COMMA) | (nxt == _LF) | (nxt == _CR) | (nxt == _QUOTE)).all():
         return False
     prev = b[np.maximum(opening - 1, 0)]
-    escaped = np.r_[False, closing[:opening.size - 1] == opening[1:] - 1]
+    escaped = np.r_[False, closing[: opening.size - 1] == opening[1:] - 1]
     ok = (opening == 0) | (prev == _COMMA) | (prev == _LF) | (prev == _CR) | escaped
     if ok.all():
         return True
@@ -164,6 +172,7 @@ def _scan_exact(data: bytes, final: bool) -> _Lines:
         for line in text:
             pos += len(line.encode("utf-8", "surrogateescape"))
             yield line
+
     starts, fields, blank, start = [], [], [], 0
     for row in csv.reader(lines(), skipinitialspace=True):
         starts.append(start)
@@ -174,8 +183,13 @@ def _scan_exact(data: bytes, final: bool) -> _Lines:
         start = starts.pop()
         fields.pop(), blank.pop()
     b = np.frombuffer(data, dtype=np.uint8)
-    return _Lines(np.array(starts, dtype=np.int64), np.array(fields, dtype=np.int64), np.array(blank, dtype=bool),
-                  start if not final else len(data), np.flatnonzero(b == _LF))
+    return _Lines(
+        np.array(starts, dtype=np.int64),
+        np.array(fields, dtype=np.int64),
+        np.array(blank, dtype=bool),
+        start if not final else len(data),
+        np.flatnonzero(b == _LF),
+    )
 
 
 def _header(data: bytes, lines: _Lines, path) -> tuple[list[str], int]:
@@ -187,7 +201,10 @@ def _header(data: bytes, lines: _Lines, path) -> tuple[list[str], int]:
         raise ValueError(f"{path}: the file is empty: no header line and no data rows")
     i = int(first[0])
     end = int(lines.starts[i + 1]) if i + 1 < lines.starts.size else lines.cut
-    names = [str(n) for n in pd.read_csv(io.BytesIO(data[lines.starts[i]:end]), nrows=0, skipinitialspace=True).columns]
+    names = [
+        str(n)
+        for n in pd.read_csv(io.BytesIO(data[lines.starts[i] : end]), nrows=0, skipinitialspace=True).columns
+    ]
     return names, i
 
 
@@ -215,7 +232,7 @@ def read_csv_blocks(path, dtype: dict | None = None, block_bytes: int = BLOCK_BY
                 yield _parse(data, lines, names, line, dtype)
                 empty = False
             line += int(np.searchsorted(lines.newlines, lines.cut))
-            carry = data[lines.cut:]
+            carry = data[lines.cut :]
             if not chunk:
                 break
     if empty:  # a header and no rows
@@ -233,11 +250,19 @@ def _parse(data: bytes, lines: _Lines, names: list[str], line: int, dtype: dict 
     if fields.size == 0:
         return pd.DataFrame({c: pd.Series(dtype=object) for c in names})
     spare = [f"<field {k}>" for k in range(n + 1, int(fields.max()) + 1)]
-    frame = pd.read_csv(io.BytesIO(data[:lines.cut]), header=None, names=names + spare, index_col=False,
-                        skipinitialspace=True, dtype={k: v for k, v in (dtype or {}).items() if k in names})
+    frame = pd.read_csv(
+        io.BytesIO(data[: lines.cut]),
+        header=None,
+        names=names + spare,
+        index_col=False,
+        skipinitialspace=True,
+        dtype={k: v for k, v in (dtype or {}).items() if k in names},
+    )
     if len(frame) != fields.size:
-        raise ValueError(f"pandas reads {len(frame)} rows from the {fields.size} lines from line {line} on; "
-                         "the file's quoting is not understood")
+        raise ValueError(
+            f"pandas reads {len(frame)} rows from the {fields.size} lines from line {line} on; "
+            "the file's quoting is not understood"
+        )
     frame = frame[names] if spare else frame
     bad = np.flatnonzero(fields != n)
     if bad.size:  # the column only where it is needed: a file's good rows read as pandas reads them

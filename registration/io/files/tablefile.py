@@ -17,8 +17,16 @@ __all__ = ["FileFormatError", "NoValidRowsError", "REASON_CODES", "file_format",
 
 #: Reason codes of a rejected row, common to all readers (readers may add their own beside them).
 REASON_CODES = (
-    "missing_column", "non_numeric", "non_finite", "out_of_range", "non_positive_range",
-    "time_backwards", "time_duplicate", "filter_non_finite", "short_row", "long_row",
+    "missing_column",
+    "non_numeric",
+    "non_finite",
+    "out_of_range",
+    "non_positive_range",
+    "time_backwards",
+    "time_duplicate",
+    "filter_non_finite",
+    "short_row",
+    "long_row",
 )
 
 

@@ -22,46 +22,79 @@ __all__ = ["FILE_COLUMNS", "OPTIONAL_IDS", "FileRead", "check_frame", "read_file
 #: Per table: (file column, table column, unit, required, (low, high) accepted in file units).
 #: unit "id" = an identifier; "deg" columns are converted to radians.
 FILE_COLUMNS = {
-    "plots": (("time_s", "time", "s", True, None), ("sensor", "sensor", "id", True, None),
-              ("target", "target", "id", False, None), ("track", "track", "id", False, None),
-              ("range_m", "range", "m", False, (0.0, 1e8)),
-              ("bearing_deg", "bearing", "deg", False, (-360.0, 360.0)),
-              ("elevation_deg", "elevation", "deg", False, (-90.0, 90.0))),
-    "navigation": (("time_s", "time", "s", True, None), ("platform", "platform", "id", True, None),
-                   ("lat_deg", "lat", "deg", True, (-90.0, 90.0)), ("lon_deg", "lon", "deg", True, (-360.0, 360.0)),
-                   ("alt_m", "alt", "m", True, (-1.2e4, 1e6)), ("heading_deg", "heading", "deg", True, (-360.0, 360.0)),
-                   ("pitch_deg", "pitch", "deg", True, (-90.0, 90.0)), ("roll_deg", "roll", "deg", True, (-90.0, 90.0))),
-    "sensors": (("sensor", "sensor", "id", True, None), ("platform", "platform", "id", True, None),
-                ("sigma_range_m", "sigma_range", "m", False, (0.0, 1e6)),
-                ("sigma_bearing_deg", "sigma_bearing", "deg", False, (0.0, 20.0)),
-                ("sigma_elevation_deg", "sigma_elevation", "deg", False, (0.0, 20.0)),
-                ("prior_range_bias_m", "prior_range", "m", False, (0.0, math.inf)),
-                ("prior_bearing_bias_deg", "prior_bearing", "deg", False, (0.0, math.inf)),
-                ("prior_elevation_bias_deg", "prior_elevation", "deg", False, (0.0, math.inf)),
-                ("lever_x_m", "lever_x", "m", False, (-1e4, 1e4)), ("lever_y_m", "lever_y", "m", False, (-1e4, 1e4)),
-                ("lever_z_m", "lever_z", "m", False, (-1e4, 1e4)),
-                ("prior_range_gain", "prior_range_gain", "dimensionless", False, (0.0, 0.1)),
-                ("prior_time_bias_s", "prior_time_bias", "s", False, (0.0, math.inf)),
-                ("prior_position_m", "prior_position", "m", False, (0.0, math.inf))),
-    "platforms": (("platform", "platform", "id", True, None),
-                  ("prior_heading_deg", "prior_heading", "deg", False, (0.0, math.inf)),
-                  ("prior_pitch_deg", "prior_pitch", "deg", False, (0.0, math.inf)),
-                  ("prior_roll_deg", "prior_roll", "deg", False, (0.0, math.inf))),
-    "reference": (("time_s", "time", "s", True, None), ("target", "target", "id", True, None),
-                  ("lat_deg", "lat", "deg", False, (-90.0, 90.0)), ("lon_deg", "lon", "deg", False, (-360.0, 360.0)),
-                  ("alt_m", "alt", "m", False, (-1.2e4, 1e8)), ("x_m", "x", "m", False, (-1e8, 1e8)),
-                  ("y_m", "y", "m", False, (-1e8, 1e8)), ("z_m", "z", "m", False, (-1e8, 1e8)),
-                  ("sigma_m", "sigma", "m", False, (0.0, 1e6)), ("sigma_up_m", "sigma_up", "m", False, (0.0, math.inf))),
-    "targets": (("target", "target", "id", True, None), ("name", "name", "id", False, None),
-                ("surface_alt_m", "surface_alt", "m", False, (-1e4, 1e4)),
-                ("sigma_surface_m", "sigma_surface", "m", False, (0.0, 1e6))),
+    "plots": (
+        ("time_s", "time", "s", True, None),
+        ("sensor", "sensor", "id", True, None),
+        ("target", "target", "id", False, None),
+        ("track", "track", "id", False, None),
+        ("range_m", "range", "m", False, (0.0, 1e8)),
+        ("bearing_deg", "bearing", "deg", False, (-360.0, 360.0)),
+        ("elevation_deg", "elevation", "deg", False, (-90.0, 90.0)),
+    ),
+    "navigation": (
+        ("time_s", "time", "s", True, None),
+        ("platform", "platform", "id", True, None),
+        ("lat_deg", "lat", "deg", True, (-90.0, 90.0)),
+        ("lon_deg", "lon", "deg", True, (-360.0, 360.0)),
+        ("alt_m", "alt", "m", True, (-1.2e4, 1e6)),
+        ("heading_deg", "heading", "deg", True, (-360.0, 360.0)),
+        ("pitch_deg", "pitch", "deg", True, (-90.0, 90.0)),
+        ("roll_deg", "roll", "deg", True, (-90.0, 90.0)),
+    ),
+    "sensors": (
+        ("sensor", "sensor", "id", True, None),
+        ("platform", "platform", "id", True, None),
+        ("sigma_range_m", "sigma_range", "m", False, (0.0, 1e6)),
+        ("sigma_bearing_deg", "sigma_bearing", "deg", False, (0.0, 20.0)),
+        ("sigma_elevation_deg", "sigma_elevation", "deg", False, (0.0, 20.0)),
+        ("prior_range_bias_m", "prior_range", "m", False, (0.0, math.inf)),
+        ("prior_bearing_bias_deg", "prior_bearing", "deg", False, (0.0, math.inf)),
+        ("prior_elevation_bias_deg", "prior_elevation", "deg", False, (0.0, math.inf)),
+        ("lever_x_m", "lever_x", "m", False, (-1e4, 1e4)),
+        ("lever_y_m", "lever_y", "m", False, (-1e4, 1e4)),
+        ("lever_z_m", "lever_z", "m", False, (-1e4, 1e4)),
+        ("prior_range_gain", "prior_range_gain", "dimensionless", False, (0.0, 0.1)),
+        ("prior_time_bias_s", "prior_time_bias", "s", False, (0.0, math.inf)),
+        ("prior_position_m", "prior_position", "m", False, (0.0, math.inf)),
+    ),
+    "platforms": (
+        ("platform", "platform", "id", True, None),
+        ("prior_heading_deg", "prior_heading", "deg", False, (0.0, math.inf)),
+        ("prior_pitch_deg", "prior_pitch", "deg", False, (0.0, math.inf)),
+        ("prior_roll_deg", "prior_roll", "deg", False, (0.0, math.inf)),
+    ),
+    "reference": (
+        ("time_s", "time", "s", True, None),
+        ("target", "target", "id", True, None),
+        ("lat_deg", "lat", "deg", False, (-90.0, 90.0)),
+        ("lon_deg", "lon", "deg", False, (-360.0, 360.0)),
+        ("alt_m", "alt", "m", False, (-1.2e4, 1e8)),
+        ("x_m", "x", "m", False, (-1e8, 1e8)),
+        ("y_m", "y", "m", False, (-1e8, 1e8)),
+        ("z_m", "z", "m", False, (-1e8, 1e8)),
+        ("sigma_m", "sigma", "m", False, (0.0, 1e6)),
+        ("sigma_up_m", "sigma_up", "m", False, (0.0, math.inf)),
+    ),
+    "targets": (
+        ("target", "target", "id", True, None),
+        ("name", "name", "id", False, None),
+        ("surface_alt_m", "surface_alt", "m", False, (-1e4, 1e4)),
+        ("sigma_surface_m", "sigma_surface", "m", False, (0.0, 1e6)),
+    ),
 }
 #: Id columns of a table whose empty cells mean "no id" (not an error): a plot without a target id is
 #: associated (registration.fleet.association), one without a track id is tracked by the association.
 OPTIONAL_IDS = {"plots": ("target", "track"), "targets": ("name",)}
 #: Sigma columns whose value must be > 0 (a prior may be 0: fixed).
-_POSITIVE = {"range_m", "sigma_range_m", "sigma_bearing_deg", "sigma_elevation_deg", "sigma_m", "sigma_up_m",
-             "sigma_surface_m"}
+_POSITIVE = {
+    "range_m",
+    "sigma_range_m",
+    "sigma_bearing_deg",
+    "sigma_elevation_deg",
+    "sigma_m",
+    "sigma_up_m",
+    "sigma_surface_m",
+}
 #: Columns where inf is a meaning rather than an error (besides the priors' "no prior"): a reference
 #: without a height.
 _INF_ALLOWED = {"sigma_up_m"}
@@ -80,13 +113,17 @@ def _read_frame(path: Path):
         raise ValueError(f"{path}: no such file")
     try:
         if fmt == "csv":
-            blocks = list(read_csv_blocks(path, dtype={"sensor": str, "platform": str, "target": str, "track": str}))
+            blocks = list(
+                read_csv_blocks(path, dtype={"sensor": str, "platform": str, "target": str, "track": str})
+            )
             frame = pd.concat(blocks, ignore_index=True) if len(blocks) > 1 else blocks[0]
         else:
             frame = pd.read_parquet(path)
     except Exception as exc:  # pandas/pyarrow parse errors of many types
         text = str(exc)
-        raise ValueError(text if text.startswith(f"{path}: ") else f"{path}: cannot read it as {fmt.upper()}: {exc}") from exc
+        raise ValueError(
+            text if text.startswith(f"{path}: ") else f"{path}: cannot read it as {fmt.upper()}: {exc}"
+        ) from exc
     frame.columns = [str(c).strip() for c in frame.columns]
     return frame
 
@@ -108,9 +145,13 @@ def _number_column(bad: BadRows, frame, column: str, unit: str, required: bool, 
     raw = frame[column]
     values = pd.to_numeric(raw, errors="coerce").to_numpy(dtype=np.float64)
     given = raw.notna().to_numpy() & ~raw.astype(str).str.strip().isin(["", "nan", "NaN"]).to_numpy()
-    bad.add(column, "non_numeric", given & np.isnan(values), lambda r: f"{raw.iloc[r]!r} is not a number ({unit})")
+    bad.add(
+        column, "non_numeric", given & np.isnan(values), lambda r: f"{raw.iloc[r]!r} is not a number ({unit})"
+    )
     if required:
-        bad.add(column, "non_finite", np.isnan(values), lambda r: f"empty or NaN; a number ({unit}) is required")
+        bad.add(
+            column, "non_finite", np.isnan(values), lambda r: f"empty or NaN; a number ({unit}) is required"
+        )
     lo, hi = limits if limits is not None else (-math.inf, math.inf)
     strict = column in _POSITIVE
     finite_only = not ((column.startswith("prior_") or column in _INF_ALLOWED) and hi == math.inf)
@@ -121,6 +162,7 @@ def _number_column(bad: BadRows, frame, column: str, unit: str, required: bool, 
         if np.isinf(values[r]):
             return "non_finite"
         return "non_positive_range" if column == "range_m" and values[r] <= 0 else "out_of_range"
+
     bad.add(column, code, out, lambda r: f"{values[r]:g} {unit} is outside {span} {unit}")
     return values
 
@@ -148,10 +190,16 @@ def _used_platforms(frame, shapes, platforms: set, path: Path):
         return frame, shapes, None, []
     extra = sorted({str(v).strip() for v in ids[~keep].unique()})
     rows = np.flatnonzero(keep)
-    note = (f"{path}: platform(s) {extra} carry no sensor; their {int((~keep).sum())} navigation rows are ignored "
-            f"(platforms used: {sorted(platforms)})")
-    return (frame.iloc[rows].reset_index(drop=True), None if shapes is None else shapes.iloc[rows].reset_index(drop=True),
-            rows, [note])
+    note = (
+        f"{path}: platform(s) {extra} carry no sensor; their {int((~keep).sum())} navigation rows are ignored "
+        f"(platforms used: {sorted(platforms)})"
+    )
+    return (
+        frame.iloc[rows].reset_index(drop=True),
+        None if shapes is None else shapes.iloc[rows].reset_index(drop=True),
+        rows,
+        [note],
+    )
 
 
 def read_file(name: str, path: Path, skip: bool, platforms: set | None = None) -> FileRead:
@@ -160,8 +208,15 @@ def read_file(name: str, path: Path, skip: bool, platforms: set | None = None) -
     return check_frame(name, path, _read_frame(path), skip, platforms)
 
 
-def check_frame(name: str, path: Path, frame, skip: bool, platforms: set | None = None, first_row: int = 0,
-                whole_file: bool = True) -> FileRead:
+def check_frame(
+    name: str,
+    path: Path,
+    frame,
+    skip: bool,
+    platforms: set | None = None,
+    first_row: int = 0,
+    whole_file: bool = True,
+) -> FileRead:
     """:func:`read_file` on rows already read: ``frame`` (a DataFrame of :func:`_read_frame`'s kind, or
     a block of :func:`~registration.io.files.csvrows.read_csv_blocks`) holds the file's data rows
     from ``first_row`` on, and the errors and bad rows name file rows. ``whole_file`` False: the
@@ -173,14 +228,18 @@ def check_frame(name: str, path: Path, frame, skip: bool, platforms: set | None 
     spec = FILE_COLUMNS[name]
     missing = [c for c, _, _, req, _ in spec if req and c not in frame.columns]
     if missing:
-        raise ValueError(f"{path}: missing column(s) {missing}; the {name} table has columns "
-                         f"{[c for c, *_ in spec]} (columns found: {list(frame.columns)})")
+        raise ValueError(
+            f"{path}: missing column(s) {missing}; the {name} table has columns "
+            f"{[c for c, *_ in spec]} (columns found: {list(frame.columns)})"
+        )
     known = {c for c, *_ in spec}
     unknown = [c for c in frame.columns if c not in known]
     if unknown:
         raise ValueError(f"{path}: unknown column(s) {unknown}; the {name} table has columns {sorted(known)}")
     if len(frame) == 0 and whole_file:
-        raise ValueError(f"{path}: no data rows (the file holds only a header); the {name} file needs at least one row")
+        raise ValueError(
+            f"{path}: no data rows (the file holds only a header); the {name} file needs at least one row"
+        )
     notes, file_rows = [], None
     if platforms is not None:
         frame, shapes, file_rows, notes = _used_platforms(frame, shapes, platforms, path)
@@ -189,7 +248,12 @@ def check_frame(name: str, path: Path, frame, skip: bool, platforms: set | None 
     bad = BadRows(path, len(frame), skip, file_rows)
     if shapes is not None:  # first: the cells a short line lacks are not empty cells
         shape = shapes.to_numpy()
-        bad.add(lambda r: shape[r].column, lambda r: shape[r].code, shapes.notna().to_numpy(), lambda r: shape[r].reason())
+        bad.add(
+            lambda r: shape[r].column,
+            lambda r: shape[r].code,
+            shapes.notna().to_numpy(),
+            lambda r: shape[r].reason(),
+        )
     numbers, out = {}, {}
     for column, key, unit, required, limits in spec:
         if column not in frame.columns:

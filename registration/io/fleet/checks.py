@@ -30,8 +30,15 @@ import numpy as np
 
 from registration.core.angles import wrap_angle
 
-__all__ = ["MIN_UNIT_CHECK_VALUES", "MIN_ANGLE_SIGMA_DEG", "SMALL_ATTITUDE", "radians_check", "attitude_check",
-           "sigma_notes", "channel_columns_check"]
+__all__ = [
+    "MIN_UNIT_CHECK_VALUES",
+    "MIN_ANGLE_SIGMA_DEG",
+    "SMALL_ATTITUDE",
+    "radians_check",
+    "attitude_check",
+    "sigma_notes",
+    "channel_columns_check",
+]
 
 #: Fewest values of a bearing column (or of lat/lon) for the radians-in-degrees check.
 MIN_UNIT_CHECK_VALUES = 100
@@ -45,8 +52,11 @@ SMALL_ATTITUDE = 0.2
 SEGMENT_S, MIN_SEGMENT_M, MIN_SPEED, MIN_SEGMENTS = 5.0, 20.0, 1.0, 5
 RADIANS_MATCH_DEG, DEGREES_MISS_DEG = 15.0, 30.0
 _EARTH_RADIUS = 6.371e6  # m, mean; enough for a course over ground
-_CHANNEL_COLUMNS = (("range_m", "sigma_range_m", "range"), ("bearing_deg", "sigma_bearing_deg", "bearing"),
-                    ("elevation_deg", "sigma_elevation_deg", "elevation"))
+_CHANNEL_COLUMNS = (
+    ("range_m", "sigma_range_m", "range"),
+    ("bearing_deg", "sigma_bearing_deg", "bearing"),
+    ("elevation_deg", "sigma_elevation_deg", "elevation"),
+)
 
 
 def radians_check(path, columns: dict) -> None:
@@ -64,9 +74,11 @@ def radians_check(path, columns: dict) -> None:
         if all(np.max(np.abs(v)) <= b for v, b in zip(vals, bounds)):
             col = columns[names[0]]
             r = int(np.nanargmax(np.abs(col)))
-            raise ValueError(f"{path}: row {r}, column {names[0]!r}: all {vals[0].size} values of "
-                             f"{' and '.join(repr(n) for n in names)} lie within +-{np.max(np.abs(vals[0])):.3g} "
-                             f"(the largest here, {col[r]:.4g}): radians? These columns are in degrees")
+            raise ValueError(
+                f"{path}: row {r}, column {names[0]!r}: all {vals[0].size} values of "
+                f"{' and '.join(repr(n) for n in names)} lie within +-{np.max(np.abs(vals[0])):.3g} "
+                f"(the largest here, {col[r]:.4g}): radians? These columns are in degrees"
+            )
 
 
 def _stretches(t: np.ndarray, lat_deg: np.ndarray, lon_deg: np.ndarray):
@@ -96,8 +108,15 @@ def attitude_check(path, columns: dict, platform: np.ndarray) -> list[str]:
     notes = []
     for pid in dict.fromkeys(platform.tolist()):
         rows = np.flatnonzero(platform == pid)
-        rows = rows[np.all([np.isfinite(columns[c][rows]) for c in ("time_s", "lat_deg", "lon_deg", "heading_deg",
-                                                                    "pitch_deg", "roll_deg")], axis=0)]
+        rows = rows[
+            np.all(
+                [
+                    np.isfinite(columns[c][rows])
+                    for c in ("time_s", "lat_deg", "lon_deg", "heading_deg", "pitch_deg", "roll_deg")
+                ],
+                axis=0,
+            )
+        ]
         if rows.size < 2:
             continue
         a, b, course, speed = _stretches(*(columns[c][rows] for c in ("time_s", "lat_deg", "lon_deg")))
@@ -106,7 +125,10 @@ def attitude_check(path, columns: dict, platform: np.ndarray) -> list[str]:
         h = columns["heading_deg"][rows]
         peak = float(np.max(np.abs(h)))
         if peak <= 2 * math.pi:
-            as_radians, as_degrees = _miss(course, h[a], h[b]), _miss(course, np.radians(h[a]), np.radians(h[b]))
+            as_radians, as_degrees = (
+                _miss(course, h[a], h[b]),
+                _miss(course, np.radians(h[a]), np.radians(h[b])),
+            )
             if as_radians <= RADIANS_MATCH_DEG and as_degrees >= DEGREES_MISS_DEG:
                 r = int(rows[np.argmax(np.abs(h))])
                 raise ValueError(
@@ -114,12 +136,15 @@ def attitude_check(path, columns: dict, platform: np.ndarray) -> list[str]:
                     f"within +-{peak:.3g}, and read as radians they follow its course over ground (from lat_deg, "
                     f"lon_deg; median difference {as_radians:.1f} deg over {course.size} stretches of its track) while "
                     f"read as degrees they do not ({as_degrees:.1f} deg): radians? heading_deg, pitch_deg and roll_deg "
-                    "are in degrees (numpy.degrees converts)")
+                    "are in degrees (numpy.degrees converts)"
+                )
         pr = np.concatenate([columns["pitch_deg"][rows], columns["roll_deg"][rows]])
         if np.max(np.abs(pr)) <= SMALL_ATTITUDE and np.ptp(pr) > 0:
-            notes.append(f"{path}: pitch_deg and roll_deg of platform {str(pid)!r} all lie within "
-                         f"+-{np.max(np.abs(pr)):.2g} while it moves at {np.median(speed):.1f} m/s: radians? (a ship at "
-                         "sea pitches and rolls by degrees; if these are degrees, ignore this note)")
+            notes.append(
+                f"{path}: pitch_deg and roll_deg of platform {str(pid)!r} all lie within "
+                f"+-{np.max(np.abs(pr)):.2g} while it moves at {np.median(speed):.1f} m/s: radians? (a ship at "
+                "sea pitches and rolls by degrees; if these are degrees, ignore this note)"
+            )
     return notes
 
 
@@ -133,13 +158,17 @@ def sigma_notes(path, columns: dict, sensor: np.ndarray) -> list[str]:
         if len(small):
             listed = ", ".join(f"{str(sensor[r])!r} {v[r]:g} (row {r})" for r in small[:5])
             listed += f" and {len(small) - 5} more" if len(small) > 5 else ""
-            notes.append(f"{path}: {column} below {MIN_ANGLE_SIGMA_DEG:g} deg for sensor(s) {listed}: radians? "
-                         f"({v[small[0]]:g} rad would be {math.degrees(v[small[0]]):.3g} deg; precision trackers "
-                         "reach such sigmas, radars rarely do: if they are degrees, ignore this note)")
+            notes.append(
+                f"{path}: {column} below {MIN_ANGLE_SIGMA_DEG:g} deg for sensor(s) {listed}: radians? "
+                f"({v[small[0]]:g} rad would be {math.degrees(v[small[0]]):.3g} deg; precision trackers "
+                "reach such sigmas, radars rarely do: if they are degrees, ignore this note)"
+            )
     return notes
 
 
-def channel_columns_check(plots_path, plots: dict, plot_sensor: np.ndarray, sensors_path, sensor_columns) -> None:
+def channel_columns_check(
+    plots_path, plots: dict, plot_sensor: np.ndarray, sensors_path, sensor_columns
+) -> None:
     """A ValueError, the sensors file's, for a channel with values in the plots file whose sigma
     column the sensors file lacks (without it no sensor measures that channel). ``plots``: file
     column -> values in file units (NaN where empty or bad); ``sensor_columns``: the sensors
@@ -151,6 +180,8 @@ def channel_columns_check(plots_path, plots: dict, plot_sensor: np.ndarray, sens
         given = np.isfinite(values)
         first = int(np.argmax(given))
         which = [str(s) for s in np.unique(plot_sensor[given])]
-        raise ValueError(f"{sensors_path}: no column {sigma!r}, but {plots_path} has {name} values (column {column!r}) "
-                         f"for sensor(s) {which} ({int(given.sum())} rows, the first row {first}): give their {sigma}, "
-                         f"or leave the plots' {column} cells empty")
+        raise ValueError(
+            f"{sensors_path}: no column {sigma!r}, but {plots_path} has {name} values (column {column!r}) "
+            f"for sensor(s) {which} ({int(given.sum())} rows, the first row {first}): give their {sigma}, "
+            f"or leave the plots' {column} cells empty"
+        )

@@ -28,24 +28,31 @@ from pathlib import Path
 
 import numpy as np
 
+from registration.fleet.data.tables import DEFAULT_REFERENCE_SIGMA
 from registration.io.fleet.cells import FILE_COLUMNS, check_frame, read_file
 from registration.io.fleet.checks import attitude_check
 from registration.io.fleet.folder import tables_in_folder
-from registration.fleet.data.tables import DEFAULT_REFERENCE_SIGMA
 
 __all__ = ["csv_tables", "parquet_from_csv"]
 
 _IDS = {"sensor": str, "platform": str, "target": str, "track": str}
 #: Per table: the degree columns whose values are checked together for radians, and their bound.
-_RADIANS = {"plots": (("bearing_deg", 2 * math.pi),), "reference": (("lat_deg", math.pi / 2), ("lon_deg", 2 * math.pi)),
-            "navigation": (("lat_deg", math.pi / 2), ("lon_deg", 2 * math.pi))}
+_RADIANS = {
+    "plots": (("bearing_deg", 2 * math.pi),),
+    "reference": (("lat_deg", math.pi / 2), ("lon_deg", 2 * math.pi)),
+    "navigation": (("lat_deg", math.pi / 2), ("lon_deg", 2 * math.pi)),
+}
 
 
 def csv_tables(folder) -> bool:
     """True when the archive folder gives some lazily read table (plots, navigation, reference) as CSV."""
     folder = Path(folder)
-    return any((folder / f"{n}.csv").is_file() and not (folder / f"{n}.parquet").exists() and not (folder / n).is_dir()
-               for n in ("plots", "navigation", "reference"))
+    return any(
+        (folder / f"{n}.csv").is_file()
+        and not (folder / f"{n}.parquet").exists()
+        and not (folder / n).is_dir()
+        for n in ("plots", "navigation", "reference")
+    )
 
 
 class _Radians:
@@ -79,14 +86,18 @@ class _Radians:
             return
         if all(self.peak[c][0] <= bound for c, bound in self.columns):
             peak, row, value = self.peak[cols[0]]
-            raise ValueError(f"{path}: row {row}, column {cols[0]!r}: all {self.n[cols[0]]} values of "
-                             f"{' and '.join(repr(n) for n in cols)} lie within +-{peak:.3g} (the largest here, "
-                             f"{value:.4g}): radians? These columns are in degrees")
+            raise ValueError(
+                f"{path}: row {row}, column {cols[0]!r}: all {self.n[cols[0]]} values of "
+                f"{' and '.join(repr(n) for n in cols)} lie within +-{peak:.3g} (the largest here, "
+                f"{value:.4g}): radians? These columns are in degrees"
+            )
 
 
 def _shifted(exc: ValueError, first_row: int) -> ValueError:
     """An error of a block naming a row, with the block's row made the file's."""
-    return ValueError(re.sub(r": row (\d+),", lambda m: f": row {int(m.group(1)) + first_row},", str(exc), count=1))
+    return ValueError(
+        re.sub(r": row (\d+),", lambda m: f": row {int(m.group(1)) + first_row},", str(exc), count=1)
+    )
 
 
 def _first_bad(read, extra: list) -> None:
@@ -103,8 +114,16 @@ def _unknown(path: Path, read, column: str, known: set, other: Path, first_row: 
     values = np.asarray(read.table[column]).astype(str)
     bad = np.flatnonzero(~np.isin(values, list(known)) & read.bad.ok())
     rows = read.file_rows if read.file_rows is not None else first_row + np.arange(values.size)
-    return [RejectedRow(str(path), int(rows[i]), column, f"unknown_{column}",
-                        f"unknown {column} {str(values[i])!r}; {other} lists {sorted(known)}") for i in bad[:1]]
+    return [
+        RejectedRow(
+            str(path),
+            int(rows[i]),
+            column,
+            f"unknown_{column}",
+            f"unknown {column} {str(values[i])!r}; {other} lists {sorted(known)}",
+        )
+        for i in bad[:1]
+    ]
 
 
 def _reference_rows(path: Path, read) -> list:
@@ -121,8 +140,15 @@ def _reference_rows(path: Path, read) -> list:
         bad = np.flatnonzero(ok & np.isnan(read.numbers[column]))
         if bad.size:
             row = int(bad[0]) if rows is None else int(rows[bad[0]])
-            return [RejectedRow(str(path), row, column, "non_finite",
-                                f"empty or NaN; a number ({column.rsplit('_', 1)[1]}) is required for the position")]
+            return [
+                RejectedRow(
+                    str(path),
+                    row,
+                    column,
+                    "non_finite",
+                    f"empty or NaN; a number ({column.rsplit('_', 1)[1]}) is required for the position",
+                )
+            ]
     return []
 
 
@@ -133,8 +159,11 @@ def _block_table(name: str, read) -> "object":
     cols = {}
     for column, key, unit, *_ in FILE_COLUMNS[name]:
         if column in read.columns:
-            cols[column] = (pa.array(np.asarray(read.table[key]).astype(str), pa.string()) if unit == "id"
-                            else pa.array(read.numbers[column], pa.float64()))
+            cols[column] = (
+                pa.array(np.asarray(read.table[key]).astype(str), pa.string())
+                if unit == "id"
+                else pa.array(read.numbers[column], pa.float64())
+            )
     if name == "reference" and "sigma_m" in cols:
         sigma = read.numbers["sigma_m"]
         cols["sigma_m"] = pa.array(np.where(np.isnan(sigma), DEFAULT_REFERENCE_SIGMA, sigma), pa.float64())
@@ -152,14 +181,23 @@ def _convert(name: str, path: Path, target: Path, context: dict, block_bytes: in
         for block in read_csv_blocks(path, dtype={k: v for k, v in _IDS.items()}, block_bytes=block_bytes):
             block.columns = [str(c).strip() for c in block.columns]
             n_block = len(block)
-            read = check_frame(name, path, block, True, context["platforms"] if name == "navigation" else None,
-                               first_row, whole_file=False)
+            read = check_frame(
+                name,
+                path,
+                block,
+                True,
+                context["platforms"] if name == "navigation" else None,
+                first_row,
+                whole_file=False,
+            )
             extra = []
             if name == "plots":
                 extra = _unknown(path, read, "sensor", context["sensors"], context["sensors_path"], first_row)
                 if "target" not in read.table or np.any(read.table["target"] == ""):
-                    raise ValueError(f"{path}: plots without a target id (row {first_row}'s block): they need the "
-                                     "association, which holds every plot in memory; register without --partition-s")
+                    raise ValueError(
+                        f"{path}: plots without a target id (row {first_row}'s block): they need the "
+                        "association, which holds every plot in memory; register without --partition-s"
+                    )
             if name == "reference":
                 extra = _reference_rows(path, read)
             _first_bad(read, extra)
@@ -178,7 +216,9 @@ def _convert(name: str, path: Path, target: Path, context: dict, block_bytes: in
         if writer is not None:
             writer.close()
     if first_row == 0:
-        raise ValueError(f"{path}: no data rows (the file holds only a header); the {name} file needs at least one row")
+        raise ValueError(
+            f"{path}: no data rows (the file holds only a header); the {name} file needs at least one row"
+        )
     radians.check(path)
     return list(dict.fromkeys(notes))
 
@@ -201,15 +241,19 @@ def parquet_from_csv(folder, temp, block_bytes: int | None = None) -> list[str]:
     for name in ("sensors", "platforms", "targets"):
         if paths[name] is not None and paths[name].suffix == ".csv":
             shutil.copyfile(paths[name], temp / f"{name}.csv")
-    context = {"sensors": set() if sensors is None else set(sensors.table["sensor"].tolist()),
-               "platforms": set() if sensors is None else set(sensors.table["platform"].tolist()),
-               "sensors_path": paths["sensors"]}
+    context = {
+        "sensors": set() if sensors is None else set(sensors.table["sensor"].tolist()),
+        "platforms": set() if sensors is None else set(sensors.table["platform"].tolist()),
+        "sensors_path": paths["sensors"],
+    }
     notes = []
     for name in ("plots", "navigation", "reference"):
         path = paths[name]
         if path is None or path.suffix != ".csv":
             continue
         if sensors is None and name in ("plots", "navigation"):
-            raise ValueError(f"{path}: a CSV archive needs its sensors table as CSV too (found {paths['sensors']})")
+            raise ValueError(
+                f"{path}: a CSV archive needs its sensors table as CSV too (found {paths['sensors']})"
+            )
         notes += _convert(name, path, temp / f"{name}.parquet", context, block_bytes or BLOCK_BYTES)
     return notes

@@ -20,7 +20,9 @@ REQUIRED_TABLES = ("plots", "navigation", "sensors")
 SUFFIXES = (".csv", ".parquet", ".pq")
 
 
-def tables_in_folder(folder: Path | str, given: dict[str, Path | None] | None = None) -> dict[str, Path | None]:
+def tables_in_folder(
+    folder: Path | str, given: dict[str, Path | None] | None = None
+) -> dict[str, Path | None]:
     """The path of each table: ``given[name]`` where it is not None, else the folder's file of that name.
 
     Raises ``ValueError`` naming the folder when it is not a folder, when a required table is
@@ -30,8 +32,10 @@ def tables_in_folder(folder: Path | str, given: dict[str, Path | None] | None = 
     folder = Path(folder)
     given = dict(given or {})
     if not folder.is_dir():
-        raise ValueError(f"--tables {folder}: no such folder (expected the folder of an import: "
-                         f"{', '.join(n + '.csv' for n in TABLE_NAMES)}, or .parquet)")
+        raise ValueError(
+            f"--tables {folder}: no such folder (expected the folder of an import: "
+            f"{', '.join(n + '.csv' for n in TABLE_NAMES)}, or .parquet)"
+        )
     paths: dict[str, Path | None] = {}
     for name in TABLE_NAMES:
         if given.get(name) is not None:
@@ -39,11 +43,15 @@ def tables_in_folder(folder: Path | str, given: dict[str, Path | None] | None = 
             continue
         found = [folder / (name + s) for s in SUFFIXES if (folder / (name + s)).is_file()]
         if len(found) > 1:
-            raise ValueError(f"--tables {folder}: {name} is there in two formats ({', '.join(p.name for p in found)}); "
-                             f"remove one or name the table with --{name}")
+            raise ValueError(
+                f"--tables {folder}: {name} is there in two formats ({', '.join(p.name for p in found)}); "
+                f"remove one or name the table with --{name}"
+            )
         paths[name] = found[0] if found else None
     missing = [n for n in REQUIRED_TABLES if paths[n] is None]
     if missing:
-        raise ValueError(f"--tables {folder}: no {', '.join(missing)} table in the folder "
-                         f"(expected {', '.join(n + '.csv' for n in missing)} or .parquet) and none given by option")
+        raise ValueError(
+            f"--tables {folder}: no {', '.join(missing)} table in the folder "
+            f"(expected {', '.join(n + '.csv' for n in missing)} or .parquet) and none given by option"
+        )
     return paths

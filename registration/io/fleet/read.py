@@ -45,14 +45,13 @@ from pathlib import Path
 
 import numpy as np
 
-from registration.io.fleet.checks import MIN_UNIT_CHECK_VALUES, channel_columns_check
-from registration.io.fleet.cells import FILE_COLUMNS, read_file
 from registration.fleet.data.problem import FleetProblem, build_problem, plot_row_problems
-from registration.io.fleet.rejects import BadRows, NoValidPlotsError, RejectedRow, check_mode, rejected_frame
 from registration.fleet.data.tables import DEFAULT_REFERENCE_SIGMA
+from registration.io.fleet.cells import FILE_COLUMNS, read_file
+from registration.io.fleet.checks import MIN_UNIT_CHECK_VALUES, channel_columns_check
+from registration.io.fleet.rejects import BadRows, NoValidPlotsError, RejectedRow, check_mode, rejected_frame
 
-__all__ = ["FILE_COLUMNS", "FleetTables", "read_fleet_tables", "needs_association",
-           "MIN_UNIT_CHECK_VALUES"]
+__all__ = ["FILE_COLUMNS", "FleetTables", "read_fleet_tables", "needs_association", "MIN_UNIT_CHECK_VALUES"]
 
 #: The one target id the file checks put plots without a target id under (they are never set aside).
 UNLABELLED = "\x1f(no id)"
@@ -66,8 +65,14 @@ def needs_association(plots: dict) -> bool:
 
 
 #: Table name -> the library table name used in build_problem's errors.
-_LIBRARY_NAME = {"plots": "plots", "navigation": "navigation", "sensors": "sensors", "platforms": "platforms",
-                 "reference": "references", "targets": "targets"}
+_LIBRARY_NAME = {
+    "plots": "plots",
+    "navigation": "navigation",
+    "sensors": "sensors",
+    "platforms": "platforms",
+    "reference": "references",
+    "targets": "targets",
+}
 #: Table column -> file column, of the plots and reference files (the columns rows are set aside for).
 _FILE_COLUMN = {key: column for name in ("plots", "reference") for column, key, *_ in FILE_COLUMNS[name]}
 
@@ -101,8 +106,9 @@ class FleetTables:
         data rows (kept and set aside), so per-row outputs line up with the file. The reader's
         ``notes`` come first in ``problem.notes``."""
         try:
-            problem = build_problem(self.plots, self.sensors, self.navigation, self.platforms, self.references,
-                                    self.targets)
+            problem = build_problem(
+                self.plots, self.sensors, self.navigation, self.platforms, self.references, self.targets
+            )
         except ValueError as exc:
             raise _file_error(exc, self.paths, self.file_rows) from exc
         problem = replace(problem, notes=(*self.notes, *problem.notes))
@@ -129,8 +135,14 @@ class FleetTables:
         return rejected_frame(self.rejected)
 
     def _tables(self) -> dict:
-        tables = {"plots": self.plots, "navigation": self.navigation, "sensors": self.sensors,
-                  "platforms": self.platforms, "reference": self.references, "targets": self.targets}
+        tables = {
+            "plots": self.plots,
+            "navigation": self.navigation,
+            "sensors": self.sensors,
+            "platforms": self.platforms,
+            "reference": self.references,
+            "targets": self.targets,
+        }
         return {k: v for k, v in tables.items() if v is not None}
 
 
@@ -146,7 +158,11 @@ def _file_error(exc: ValueError, paths: dict, file_rows: dict | None = None) -> 
             if m.group(2) and file_rows and name in file_rows:
                 rest = re.sub(r"^row \d+", f"row {int(file_rows[name][int(m.group(2))])}", rest)
             # the library speaks SI units and radians; say so where its message quotes an angle
-            text = f"{path}: " + rest + (" (values in SI units and radians)" if re.search(r"\brad\b", rest) else "")
+            text = (
+                f"{path}: "
+                + rest
+                + (" (values in SI units and radians)" if re.search(r"\brad\b", rest) else "")
+            )
             break
     return ValueError(text)
 
@@ -159,8 +175,12 @@ def _check_ids(tables: dict, paths: dict, bads: dict) -> None:
     for table, column, other, key in checks:
         known = {str(v) for v in tables[other][key]}
         values = tables[table][column]
-        bads[table].add(column, f"unknown_{column}", ~np.isin(values, list(known)),
-                        lambda r: f"unknown {column} {str(values[r])!r}; {paths[other]} lists {sorted(known)}")
+        bads[table].add(
+            column,
+            f"unknown_{column}",
+            ~np.isin(values, list(known)),
+            lambda r: f"unknown {column} {str(values[r])!r}; {paths[other]} lists {sorted(known)}",
+        )
 
 
 def _take(table: dict, keep: np.ndarray) -> dict:
@@ -182,12 +202,15 @@ def _skip_plot_rows(tables: dict, paths: dict, bad: BadRows, file_rows: dict) ->
         plots["target"] = np.full(rows.size, UNLABELLED)
         ref_targets.append(UNLABELLED)
     try:
-        problems = plot_row_problems(plots, tables["sensors"], tables["navigation"], tables.get("platforms"),
-                                     ref_targets)
+        problems = plot_row_problems(
+            plots, tables["sensors"], tables["navigation"], tables.get("platforms"), ref_targets
+        )
     except ValueError as exc:
         raise _file_error(exc, paths, file_rows) from exc
     for p in problems:
-        bad.add(lambda i, p=p: _FILE_COLUMN[p.at(i)[1]], lambda i, p=p: p.at(i)[0], p.bad, p.message, rows=rows)
+        bad.add(
+            lambda i, p=p: _FILE_COLUMN[p.at(i)[1]], lambda i, p=p: p.at(i)[0], p.bad, p.message, rows=rows
+        )
     return bad.ok()
 
 
@@ -204,19 +227,33 @@ def _skip_rows(tables: dict, paths: dict, bads: dict, file_rows: dict) -> FleetT
     if ref is not None:
         if not needs_association(tables["plots"]):  # else the references are anchors for the association
             targets = set(tables["plots"].get("target", ()))
-            bads["reference"].add("target", "unknown_target",
-                                  bads["reference"].ok() & ~np.isin(ref["target"], list(targets)),
-                                  lambda r: f"reference target {str(ref['target'][r])!r} has no plots kept "
-                                            f"(targets: {sorted(targets)})")
+            bads["reference"].add(
+                "target",
+                "unknown_target",
+                bads["reference"].ok() & ~np.isin(ref["target"], list(targets)),
+                lambda r: (
+                    f"reference target {str(ref['target'][r])!r} has no plots kept "
+                    f"(targets: {sorted(targets)})"
+                ),
+            )
         file_rows["reference"] = np.flatnonzero(bads["reference"].ok())
         tables["reference"] = _take(ref, file_rows["reference"])
     rejected = [r for b in bads.values() for r in b.rejected()]
-    return FleetTables(tables["plots"], tables["navigation"], tables["sensors"], tables.get("platforms"),
-                       tables.get("reference"), paths, rejected, file_rows)
+    return FleetTables(
+        tables["plots"],
+        tables["navigation"],
+        tables["sensors"],
+        tables.get("platforms"),
+        tables.get("reference"),
+        paths,
+        rejected,
+        file_rows,
+    )
 
 
-def read_fleet_tables(plots, navigation, sensors, platforms=None, reference=None, *, targets=None,
-                      on_bad_row: str = "stop") -> FleetTables:
+def read_fleet_tables(
+    plots, navigation, sensors, platforms=None, reference=None, *, targets=None, on_bad_row: str = "stop"
+) -> FleetTables:
     """Read the fleet files (paths; ``.csv`` or ``.parquet``) into :class:`FleetTables` (SI, radians).
 
     ValueError naming the file, row (from 0), column and unit for: an unreadable file, a missing or
@@ -241,31 +278,68 @@ def read_fleet_tables(plots, navigation, sensors, platforms=None, reference=None
     """
     if check_mode(on_bad_row) == "stop":
         return _first_bad_row_stops(plots, navigation, sensors, platforms, reference, targets)
-    paths = {k: Path(v) for k, v in (("plots", plots), ("navigation", navigation), ("sensors", sensors),
-                                     ("platforms", platforms), ("reference", reference), ("targets", targets))
-             if v is not None}
+    paths = {
+        k: Path(v)
+        for k, v in (
+            ("plots", plots),
+            ("navigation", navigation),
+            ("sensors", sensors),
+            ("platforms", platforms),
+            ("reference", reference),
+            ("targets", targets),
+        )
+        if v is not None
+    }
     files = {}
-    for name in ("plots", "sensors", "platforms", "navigation", "reference", "targets"):  # navigation: of the platforms used
+    for name in (
+        "plots",
+        "sensors",
+        "platforms",
+        "navigation",
+        "reference",
+        "targets",
+    ):  # navigation: of the platforms used
         if name in paths:
-            used = {str(p) for f in (files.get("sensors"), files.get("platforms")) if f for p in f.table["platform"]}
-            files[name] = read_file(name, paths[name], name in ("plots", "reference"),
-                                    used if name == "navigation" else None)
+            used = {
+                str(p)
+                for f in (files.get("sensors"), files.get("platforms"))
+                if f
+                for p in f.table["platform"]
+            }
+            files[name] = read_file(
+                name, paths[name], name in ("plots", "reference"), used if name == "navigation" else None
+            )
     tables = {name: f.table for name, f in files.items()}
     bads = {name: f.bad for name, f in files.items()}
-    channel_columns_check(paths["plots"], files["plots"].numbers, tables["plots"]["sensor"], paths["sensors"],
-                          files["sensors"].columns)
+    channel_columns_check(
+        paths["plots"],
+        files["plots"].numbers,
+        tables["plots"]["sensor"],
+        paths["sensors"],
+        files["sensors"].columns,
+    )
     ref = tables.get("reference")
     if ref is not None and not ({"lat", "lon", "alt"} <= set(ref) or {"x", "y", "z"} <= set(ref)):
-        raise ValueError(f"{paths['reference']}: give the known positions as lat_deg, lon_deg, alt_m or as x_m, y_m, z_m")
+        raise ValueError(
+            f"{paths['reference']}: give the known positions as lat_deg, lon_deg, alt_m or as x_m, y_m, z_m"
+        )
     if ref is not None and "sigma" in ref:
         ref["sigma"] = np.where(np.isnan(ref["sigma"]), DEFAULT_REFERENCE_SIGMA, ref["sigma"])
     if ref is not None:
         for key in ("x", "y", "z") if "x" in ref else ("lat", "lon", "alt"):
             column = _FILE_COLUMN[key]
-            bads["reference"].add(column, "non_finite", np.isnan(ref[key]),
-                                  lambda r, u=column.rsplit("_", 1)[1]: f"empty or NaN; a number ({u}) is required for the position")
+            bads["reference"].add(
+                column,
+                "non_finite",
+                np.isnan(ref[key]),
+                lambda r, u=column.rsplit("_", 1)[1]: (
+                    f"empty or NaN; a number ({u}) is required for the position"
+                ),
+            )
     _check_ids(tables, paths, bads)
-    left_out = {k: f.file_rows for k, f in files.items() if f.file_rows is not None}  # navigation of unused platforms
+    left_out = {
+        k: f.file_rows for k, f in files.items() if f.file_rows is not None
+    }  # navigation of unused platforms
     out = _skip_rows(tables, paths, bads, left_out)
     out.notes = [n for f in files.values() for n in f.notes]
     out.targets = tables.get("targets")
@@ -276,7 +350,9 @@ def _first_bad_row_stops(plots, navigation, sensors, platforms, reference, targe
     """Stop mode: every row is checked as in skip mode, then the first bad row of the plots file (else
     of the reference file) raises, so the error names the earliest row whatever column is wrong."""
     try:
-        tables = read_fleet_tables(plots, navigation, sensors, platforms, reference, targets=targets, on_bad_row="skip")
+        tables = read_fleet_tables(
+            plots, navigation, sensors, platforms, reference, targets=targets, on_bad_row="skip"
+        )
     except NoValidPlotsError as exc:
         rejected = exc.rejected
     else:

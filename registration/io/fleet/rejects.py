@@ -33,12 +33,25 @@ from registration.io.files.tablefile import REASON_CODES, NoValidRowsError
 if TYPE_CHECKING:
     import pandas
 
-__all__ = ["BAD_ROW_MODES", "FLEET_REASON_CODES", "REJECTED_COLUMNS", "RejectedRow", "BadRows", "NoValidPlotsError",
-           "rejected_frame", "check_mode"]
+__all__ = [
+    "BAD_ROW_MODES",
+    "FLEET_REASON_CODES",
+    "REJECTED_COLUMNS",
+    "RejectedRow",
+    "BadRows",
+    "NoValidPlotsError",
+    "rejected_frame",
+    "check_mode",
+]
 
 BAD_ROW_MODES = ("stop", "skip")
 FLEET_REASON_CODES = REASON_CODES + (
-    "empty_id", "unknown_sensor", "unknown_target", "no_channel", "unmeasured_channel", "outside_navigation",
+    "empty_id",
+    "unknown_sensor",
+    "unknown_target",
+    "no_channel",
+    "unmeasured_channel",
+    "outside_navigation",
 )
 #: Columns of :func:`rejected_frame` (and of the fleet's rejected.csv; named as in the rejected.csv of
 #: ``registration register``, whose rows also carry the raw values).
@@ -74,9 +87,14 @@ def rejected_frame(rows) -> "pandas.DataFrame":
     import pandas as pd
 
     rows = list(rows)
-    return pd.DataFrame({c: pd.Series([getattr(r, _ATTRIBUTE.get(c, c)) for r in rows],
-                                      dtype="int64" if c == "row" else object)
-                         for c in REJECTED_COLUMNS})
+    return pd.DataFrame(
+        {
+            c: pd.Series(
+                [getattr(r, _ATTRIBUTE.get(c, c)) for r in rows], dtype="int64" if c == "row" else object
+            )
+            for c in REJECTED_COLUMNS
+        }
+    )
 
 
 class NoValidPlotsError(NoValidRowsError):
@@ -87,7 +105,9 @@ class NoValidPlotsError(NoValidRowsError):
         self.rejected = list(rejected)
         mine = [r for r in self.rejected if r.file == file]
         codes = ", ".join(f"{n} {code}" for code, n in sorted(Counter(r.code for r in mine).items()))
-        first = f", the first at row {mine[0].row}, column {mine[0].column!r}: {mine[0].reason}" if mine else ""
+        first = (
+            f", the first at row {mine[0].row}, column {mine[0].column!r}: {mine[0].reason}" if mine else ""
+        )
         super().__init__(f"{file}: no valid rows to register: all {n_rows} rows rejected ({codes}){first}")
 
     def rejected_frame(self):
@@ -105,19 +125,27 @@ class BadRows:
         self.file_rows = file_rows
         self.first: dict[int, tuple[str, str, str]] = {}  # row -> (column, code, reason)
 
-    def add(self, column: str | Callable[[int], str], code: str | Callable[[int], str], bad: np.ndarray,
-            reason: Callable[[int], str], rows: np.ndarray | None = None) -> None:
+    def add(
+        self,
+        column: str | Callable[[int], str],
+        code: str | Callable[[int], str],
+        bad: np.ndarray,
+        reason: Callable[[int], str],
+        rows: np.ndarray | None = None,
+    ) -> None:
         """Rows flagged in ``bad`` (K,) have the problem ``reason(i)``; ``rows`` (K,) maps them to
         the rows checked (default: the identity), which ``file_rows`` maps to file rows. ``column``,
         ``code``: one for all, or per flagged row i."""
         hit = np.flatnonzero(bad)
         if hit.size == 0:
             return
-        at = (lambda v, i: v if isinstance(v, str) else v(i))
+        at = lambda v, i: v if isinstance(v, str) else v(i)
         row = (lambda i: int(i)) if rows is None else (lambda i: int(rows[i]))
         if not self.skip:
             i = int(hit[0])
-            raise ValueError(f"{self.file}: row {self._file_row(row(i))}, column {at(column, i)!r}: {reason(i)}")
+            raise ValueError(
+                f"{self.file}: row {self._file_row(row(i))}, column {at(column, i)!r}: {reason(i)}"
+            )
         for i in hit:
             r = row(i)
             if r not in self.first:

@@ -37,8 +37,9 @@ def _file_frame(name: str, table):
     return pd.DataFrame(out)
 
 
-def write_fleet_tables(folder, plots, navigation, sensors, platforms=None, references=None,
-                       fmt: str = "csv", targets=None) -> list[Path]:
+def write_fleet_tables(
+    folder, plots, navigation, sensors, platforms=None, references=None, fmt: str = "csv", targets=None
+) -> list[Path]:
     """Write the tables (SI units, radians; as :func:`build_problem` takes them) as files in
     ``folder``: ``plots``, ``navigation``, ``sensors``, ``platforms`` (if given) and ``reference``
     (if given; ECEF positions are written as lat/lon/alt) and ``targets`` (if given) with suffix ``.csv`` or ``.parquet``
@@ -49,8 +50,14 @@ def write_fleet_tables(folder, plots, navigation, sensors, platforms=None, refer
         raise ValueError(f"fmt: expected 'csv' or 'parquet', got {fmt!r}")
     folder = Path(folder)
     written = []
-    for name, table in (("plots", plots), ("navigation", navigation), ("sensors", sensors),
-                        ("platforms", platforms), ("reference", references), ("targets", targets)):
+    for name, table in (
+        ("plots", plots),
+        ("navigation", navigation),
+        ("sensors", sensors),
+        ("platforms", platforms),
+        ("reference", references),
+        ("targets", targets),
+    ):
         if table is None:
             continue
         path = folder / f"{name}.{fmt}"

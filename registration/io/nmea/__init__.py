@@ -17,4 +17,12 @@ from registration.io.nmea.importer import NmeaImport, import_nmea
 from registration.io.nmea.reference import AisSigmas
 from registration.io.nmea.sensors import check_sensors, read_sensors
 
-__all__ = ["AisSigmas", "NmeaImport", "NmeaImportError", "REASONS", "check_sensors", "import_nmea", "read_sensors"]
+__all__ = [
+    "AisSigmas",
+    "NmeaImport",
+    "NmeaImportError",
+    "REASONS",
+    "check_sensors",
+    "import_nmea",
+    "read_sensors",
+]

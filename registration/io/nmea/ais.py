@@ -66,8 +66,12 @@ class _Assembler:
         if self.orphans:
             i = np.array(sorted(self.orphans))
             lines = self.log.line[i]
-            self.rejections.add(self.log.file[i], lines, "ais_fragment",
-                                "AIS fragment without its other parts (the message is incomplete)")
+            self.rejections.add(
+                self.log.file[i],
+                lines,
+                "ais_fragment",
+                "AIS fragment without its other parts (the message is incomplete)",
+            )
         return self.complete
 
 
@@ -86,8 +90,14 @@ def read_ais(log: SentenceLog, rejections: Rejections) -> list[AisMessage]:
     fragments and payloads pyais cannot decode are set aside."""
     c = columns(log, log.where("VDM", "VDO"), 6, 7, rejections, "AIS")
     count, number = numbers(c.cols[1]), numbers(c.cols[2])
-    bad = ~((count >= 1) & (count <= 9) & (number >= 1) & (number <= count) & (count == np.round(count))
-            & (number == np.round(number)))
+    bad = ~(
+        (count >= 1)
+        & (count <= 9)
+        & (number >= 1)
+        & (number <= count)
+        & (count == np.round(count))
+        & (number == np.round(number))
+    )
     c = c.reject(bad, rejections, "bad_field", "AIS fragment count or number is not 1-9")
     count, number = count[~bad].astype(int), number[~bad].astype(int)
     asm = _Assembler(log, rejections)
@@ -96,8 +106,11 @@ def read_ais(log: SentenceLog, rejections: Rejections) -> list[AisMessage]:
     out, failed, reasons = [], [], []
     for parts in asm.finish():
         data, error = _decode(log, parts)
-        if error is None and not (isinstance(getattr(data, "mmsi", None), int)
-                                  and isinstance(getattr(data, "msg_type", None), int) and 1 <= data.msg_type <= 27):
+        if error is None and not (
+            isinstance(getattr(data, "mmsi", None), int)
+            and isinstance(getattr(data, "msg_type", None), int)
+            and 1 <= data.msg_type <= 27
+        ):
             error = "the payload is too short to hold a message type and an MMSI"
         if error is not None:
             failed.extend(parts)
@@ -105,8 +118,11 @@ def read_ais(log: SentenceLog, rejections: Rejections) -> list[AisMessage]:
             continue
         received = log.received[parts]
         first = np.flatnonzero(np.isfinite(received))
-        out.append(AisMessage(parts, log.kind[parts[0]] == "VDO", float(received[first[0]]) if first.size else np.nan,
-                              data))
+        out.append(
+            AisMessage(
+                parts, log.kind[parts[0]] == "VDO", float(received[first[0]]) if first.size else np.nan, data
+            )
+        )
     if failed:
         i = np.array(failed)
         rejections.add(log.file[i], log.line[i], "ais_decode", reasons)

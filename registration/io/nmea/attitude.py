@@ -45,8 +45,10 @@ class Attitude:
     roll: np.ndarray
 
     def take(self, keep: np.ndarray) -> "Attitude":
-        return Attitude(self.kind, *(a[keep] for a in (self.index, self.talker, self.tod, self.heading,
-                                                        self.pitch, self.roll)))
+        return Attitude(
+            self.kind,
+            *(a[keep] for a in (self.index, self.talker, self.tod, self.heading, self.pitch, self.roll)),
+        )
 
     def __len__(self) -> int:
         return int(self.index.size)
@@ -69,14 +71,26 @@ def read_pashr(log: SentenceLog, rejections: Rejections, angles: str = "tait-bry
     c = columns(log, pashr_subtypes(log)[0], 5, 6, rejections, "PASHR")
     tod = time_of_day(c.cols[1])
     bad = np.isnan(tod)
-    c = c.reject(bad, rejections, "bad_time", [f"PASHR UTC time {v!r} is not hhmmss[.sss]" for v in c.cols[1]])
+    c = c.reject(
+        bad, rejections, "bad_time", [f"PASHR UTC time {v!r} is not hhmmss[.sss]" for v in c.cols[1]]
+    )
     tod = tod[~bad]
     heading, roll, pitch = numbers(c.cols[2]), numbers(c.cols[4]), numbers(c.cols[5])
     flag = text(c.cols[3])
-    bad = (np.isnan(heading) | np.isnan(roll) | np.isnan(pitch) | (heading < 0) | (heading > 360)
-           | (np.abs(roll) > 90) | (np.abs(pitch) > 90))
-    reasons = np.where(bad, "PASHR heading, roll or pitch empty, not a number or out of range",
-                       "PASHR heading is not true (field 3 is not T)")
+    bad = (
+        np.isnan(heading)
+        | np.isnan(roll)
+        | np.isnan(pitch)
+        | (heading < 0)
+        | (heading > 360)
+        | (np.abs(roll) > 90)
+        | (np.abs(pitch) > 90)
+    )
+    reasons = np.where(
+        bad,
+        "PASHR heading, roll or pitch empty, not a number or out of range",
+        "PASHR heading is not true (field 3 is not T)",
+    )
     bad |= flag != "T"
     c = c.reject(bad, rejections, "bad_field", reasons)
     keep = ~bad
@@ -97,7 +111,9 @@ def read_headings(log: SentenceLog, kind: str, rejections: Rejections) -> Attitu
         flag = flag[~invalid]
     heading = numbers(c.cols[1])
     bad = np.isnan(heading) | (heading < 0) | (heading > 360)
-    reasons = np.where(bad, f"{kind} heading empty, not a number or out of range", "HDT heading is not true (not T)")
+    reasons = np.where(
+        bad, f"{kind} heading empty, not a number or out of range", "HDT heading is not true (not T)"
+    )
     if kind == "HDT":
         bad |= flag != "T"
     c = c.reject(bad, rejections, "bad_field", reasons)

@@ -145,7 +145,9 @@ def _day0_from_received(clock: Clock, received: np.ndarray) -> float:
     return float(np.round((received[lines[0]] - clock.anchor_u[j]) / DAY_S))
 
 
-def fit_clock(anchor_index: np.ndarray, anchor_tod: np.ndarray, dates: Dates, date, received: np.ndarray) -> Clock:
+def fit_clock(
+    anchor_index: np.ndarray, anchor_tod: np.ndarray, dates: Dates, date, received: np.ndarray
+) -> Clock:
     """The :class:`Clock` of a log: anchors ``anchor_index`` (A,) with times of day ``anchor_tod``
     (A,) s, the dated sentences ``dates``, the ``date`` argument (``datetime.date``,
     ``'YYYY-MM-DD'`` or None) and each sentence's reception time ``received`` (N,) unix s."""
@@ -161,8 +163,10 @@ def fit_clock(anchor_index: np.ndarray, anchor_tod: np.ndarray, dates: Dates, da
         clock.date_source = "ZDA/RMC"
         n_other = int((candidates != candidates[0]).sum())
         if n_other:
-            clock.notes.append(f"{n_other} of {candidates.size} ZDA/RMC dates disagree with the first one "
-                               f"(by the log's times of day); the first is used")
+            clock.notes.append(
+                f"{n_other} of {candidates.size} ZDA/RMC dates disagree with the first one "
+                f"(by the log's times of day); the first is used"
+            )
     elif given is not None:
         clock.day0, clock.date_source = given, "date argument"
     else:
@@ -170,9 +174,13 @@ def fit_clock(anchor_index: np.ndarray, anchor_tod: np.ndarray, dates: Dates, da
         clock.date_source = "reception times" if np.isfinite(clock.day0) else "none"
     clock.origin_day = given if given is not None else clock.day0
     if given is not None and np.isfinite(clock.day0) and clock.day0 != given:
-        clock.notes.append(f"the log's first day ({clock.date_source}) is {int(clock.day0 - given):+d} day(s) "
-                           f"from the date argument; time_s counts from midnight of the date argument")
+        clock.notes.append(
+            f"the log's first day ({clock.date_source}) is {int(clock.day0 - given):+d} day(s) "
+            f"from the date argument; time_s counts from midnight of the date argument"
+        )
     if not clock.known:
-        clock.notes.append("the log gives no date (no ZDA, no valid RMC, no reception times) and no date argument "
-                           "was given: time_s counts from midnight of the log's first day; AIS positions are set aside")
+        clock.notes.append(
+            "the log gives no date (no ZDA, no valid RMC, no reception times) and no date argument "
+            "was given: time_s counts from midnight of the log's first day; AIS positions are set aside"
+        )
     return clock

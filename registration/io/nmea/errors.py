@@ -7,9 +7,8 @@ it), a reason code and a reason in words. The codes are listed in :data:`REASONS
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -95,11 +94,23 @@ class Rejections:
         import pandas as pd
 
         if not self.file:
-            return pd.DataFrame({"file": pd.Series([], dtype=object), "line": pd.Series([], dtype=np.int64),
-                                 "code": pd.Series([], dtype=object), "reason": pd.Series([], dtype=object)})
+            return pd.DataFrame(
+                {
+                    "file": pd.Series([], dtype=object),
+                    "line": pd.Series([], dtype=np.int64),
+                    "code": pd.Series([], dtype=object),
+                    "reason": pd.Series([], dtype=object),
+                }
+            )
         f = np.concatenate(self.file)
         ln = np.concatenate(self.line)
         order = np.lexsort((ln, f))
         names = np.array(self.files, dtype=object)
-        return pd.DataFrame({"file": names[f[order]], "line": ln[order],
-                             "code": np.concatenate(self.code)[order], "reason": np.concatenate(self.reason)[order]})
+        return pd.DataFrame(
+            {
+                "file": names[f[order]],
+                "line": ln[order],
+                "code": np.concatenate(self.code)[order],
+                "reason": np.concatenate(self.reason)[order],
+            }
+        )

@@ -34,8 +34,12 @@ class Columns:
     def take(self, keep: np.ndarray) -> "Columns":
         """The sentences where ``keep`` (K,) bool is true."""
         keep = np.asarray(keep, bool)
-        return Columns(self.log, self.index[keep], self.talker[keep],
-                       [tuple(np.asarray(c, dtype=object)[keep]) for c in self.cols])
+        return Columns(
+            self.log,
+            self.index[keep],
+            self.talker[keep],
+            [tuple(np.asarray(c, dtype=object)[keep]) for c in self.cols],
+        )
 
     def reject(self, bad: np.ndarray, rejections: Rejections, code: str, reason) -> "Columns":
         """Set aside the sentences where ``bad`` (K,) is true (``reason``: a text or (K,) texts) and
@@ -49,8 +53,9 @@ class Columns:
         return self
 
 
-def columns(log: SentenceLog, index: np.ndarray, n_required: int, width: int, rejections: Rejections,
-            name: str) -> Columns:
+def columns(
+    log: SentenceLog, index: np.ndarray, n_required: int, width: int, rejections: Rejections, name: str
+) -> Columns:
     """The sentences ``index`` split into ``width`` columns (the address and ``width - 1`` fields);
     those with fewer than ``n_required`` fields (address not counted) are set aside as
     ``too_few_fields``; missing optional fields read as ''."""
@@ -59,12 +64,14 @@ def columns(log: SentenceLog, index: np.ndarray, n_required: int, width: int, re
     short = n < n_required
     if short.any():
         i = index[short]
-        reasons = [f"{name} has {k} fields, at least {n_required} expected (a truncated sentence?)" for k in n[short]]
+        reasons = [
+            f"{name} has {k} fields, at least {n_required} expected (a truncated sentence?)" for k in n[short]
+        ]
         rejections.add(log.file[i], log.line[i], "too_few_fields", reasons)
         rows = [r for r, s in zip(rows, short) if not s]
         index = index[~short]
     pad = [""] * width
-    rows = [r if len(r) >= width else r + pad[:width - len(r)] for r in rows]
+    rows = [r if len(r) >= width else r + pad[: width - len(r)] for r in rows]
     cols = list(zip(*rows))[:width] if rows else [()] * width
     return Columns(log, index, log.talker[index], cols)
 

@@ -44,8 +44,13 @@ class Fixes:
     geoid: np.ndarray
 
     def take(self, keep: np.ndarray) -> "Fixes":
-        return Fixes(self.kind, *(a[keep] for a in (self.index, self.talker, self.tod, self.lat, self.lon,
-                                                     self.alt_msl, self.geoid)))
+        return Fixes(
+            self.kind,
+            *(
+                a[keep]
+                for a in (self.index, self.talker, self.tod, self.lat, self.lon, self.alt_msl, self.geoid)
+            ),
+        )
 
 
 @dataclass
@@ -95,8 +100,13 @@ def _gga_like(log: SentenceLog, kind: str, rejections: Rejections) -> Fixes:
     geoid = numbers(c.cols[11 if gga else 10])
     geoid = np.where(np.isnan(geoid) | (np.abs(geoid) <= MAX_GEOID_M), geoid, np.inf)  # NaN: not given
     bad = ~((alt >= ALTITUDE_SPAN_M[0]) & (alt <= ALTITUDE_SPAN_M[1])) | np.isinf(geoid)
-    c = c.reject(bad, rejections, "bad_field", f"{kind} altitude empty, not a number or outside "
-                 f"[{ALTITUDE_SPAN_M[0]:g}, {ALTITUDE_SPAN_M[1]:g}] m, or geoid separation beyond {MAX_GEOID_M:g} m")
+    c = c.reject(
+        bad,
+        rejections,
+        "bad_field",
+        f"{kind} altitude empty, not a number or outside "
+        f"[{ALTITUDE_SPAN_M[0]:g}, {ALTITUDE_SPAN_M[1]:g}] m, or geoid separation beyond {MAX_GEOID_M:g} m",
+    )
     keep = ~bad
     return Fixes(kind, c.index, c.talker, tod[keep], lat[keep], lon[keep], alt[keep], geoid[keep])
 
@@ -125,14 +135,17 @@ def _rmc(log: SentenceLog, rejections: Rejections) -> tuple[Fixes, Dates]:
     v = numbers(ddmmyy)
     six = np.array([len(s.strip()) == 6 for s in ddmmyy], dtype=bool)
     yy = np.mod(v, 100.0)
-    day = _days(np.floor(v / 10000.0), np.mod(np.floor(v / 100.0), 100.0),
-                np.where(yy < 80, 2000.0 + yy, 1900.0 + yy))
+    day = _days(
+        np.floor(v / 10000.0), np.mod(np.floor(v / 100.0), 100.0), np.where(yy < 80, 2000.0 + yy, 1900.0 + yy)
+    )
     day = np.where(six, day, np.nan)
     bad = np.isnan(day)
     c = c.reject(bad, rejections, "bad_field", [f"RMC date {s!r} is not ddmmyy" for s in ddmmyy])
     keep = ~bad
     n = int(keep.sum())
-    fixes = Fixes("RMC", c.index, c.talker, tod[keep], lat[keep], lon[keep], np.full(n, np.nan), np.full(n, np.nan))
+    fixes = Fixes(
+        "RMC", c.index, c.talker, tod[keep], lat[keep], lon[keep], np.full(n, np.nan), np.full(n, np.nan)
+    )
     return fixes, Dates(c.index, tod[keep], day[keep])
 
 
@@ -154,6 +167,9 @@ def read_fixes(log: SentenceLog, rejections: Rejections) -> tuple[dict[str, Fixe
     zda = _zda(log, rejections)
     index = np.concatenate([zda.index, rmc_dates.index])
     order = np.argsort(index, kind="stable")
-    dates = Dates(index[order], np.concatenate([zda.tod, rmc_dates.tod])[order],
-                  np.concatenate([zda.day, rmc_dates.day])[order])
+    dates = Dates(
+        index[order],
+        np.concatenate([zda.tod, rmc_dates.tod])[order],
+        np.concatenate([zda.day, rmc_dates.day])[order],
+    )
     return fixes, dates

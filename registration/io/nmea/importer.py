@@ -24,7 +24,13 @@ from registration.io.nmea.fixes import read_fixes
 from registration.io.nmea.lines import SentenceLog, read_log
 from registration.io.nmea.navigation import build_navigation
 from registration.io.nmea.reference import AisSigmas, read_references
-from registration.io.nmea.sensors import TALKER_COLUMN, check_sensors, platform_sensors, read_sensors, talker_map
+from registration.io.nmea.sensors import (
+    TALKER_COLUMN,
+    check_sensors,
+    platform_sensors,
+    read_sensors,
+    talker_map,
+)
 from registration.io.nmea.summary import ImportParts, build_summary
 from registration.io.nmea.ttm import read_ttm
 
@@ -70,8 +76,13 @@ class NmeaImport:
     def tables(self) -> dict[str, pd.DataFrame]:
         """The fleet tables by file name (``plots``, ``navigation``, ``sensors``, ``platforms``,
         ``reference``, ``targets``)."""
-        out = {"plots": self.plots, "navigation": self.navigation, "sensors": self.sensors,
-               "platforms": self.platforms, "reference": self.reference}
+        out = {
+            "plots": self.plots,
+            "navigation": self.navigation,
+            "sensors": self.sensors,
+            "platforms": self.platforms,
+            "reference": self.reference,
+        }
         if self.targets is not None:
             out["targets"] = self.targets
         return out
@@ -88,7 +99,9 @@ class NmeaImport:
         for name, frame in self.tables.items():
             if len(frame):
                 out[name] = folder / f"{name}.{fmt}"
-                frame.to_csv(out[name], index=False) if fmt == "csv" else frame.to_parquet(out[name], index=False)
+                frame.to_csv(out[name], index=False) if fmt == "csv" else frame.to_parquet(
+                    out[name], index=False
+                )
         out["rejected"] = folder / "rejected.csv"
         self.rejected.to_csv(out["rejected"], index=False)
         out["summary"] = folder / "import_summary.json"
@@ -139,15 +152,19 @@ def _platforms_table(platform: str, priors: Mapping[str, float] | None) -> pd.Da
     priors = dict(priors or {})
     unknown = sorted(set(priors) - set(PLATFORM_PRIOR_COLUMNS))
     if unknown:
-        raise ValueError(f"platform_priors: unknown key(s) {unknown}; expected {list(PLATFORM_PRIOR_COLUMNS)} (deg)")
+        raise ValueError(
+            f"platform_priors: unknown key(s) {unknown}; expected {list(PLATFORM_PRIOR_COLUMNS)} (deg)"
+        )
     row = {"platform": [str(platform)]}
     for column in PLATFORM_PRIOR_COLUMNS:
         v = priors.get(column, math.nan)
         if v is None:
             v = math.nan
         if not isinstance(v, (int, float)) or (not math.isnan(v) and v < 0):
-            raise ValueError(f"platform_priors[{column!r}]: expected a prior sigma >= 0 deg (or None, inf: free), "
-                             f"got {v!r}")
+            raise ValueError(
+                f"platform_priors[{column!r}]: expected a prior sigma >= 0 deg (or None, inf: free), "
+                f"got {v!r}"
+            )
         row[column] = [math.nan if math.isinf(v) else float(v)]
     return pd.DataFrame(row)
 
@@ -160,10 +177,18 @@ def _anchors(fixes: dict, dates, pashr) -> tuple[np.ndarray, np.ndarray]:
     return index, tod[first]
 
 
-def import_nmea(paths: str | Path | Sequence[str | Path], platform: str, sensors: pd.DataFrame | str | Path,
-                date: dt.date | str | None = None, keep_acquiring: bool = False, progress: bool = False, *,
-                platform_priors: Mapping[str, float] | None = None, ais_sigmas: AisSigmas | None = None,
-                pashr_angles: str = "tait-bryan") -> NmeaImport:
+def import_nmea(
+    paths: str | Path | Sequence[str | Path],
+    platform: str,
+    sensors: pd.DataFrame | str | Path,
+    date: dt.date | str | None = None,
+    keep_acquiring: bool = False,
+    progress: bool = False,
+    *,
+    platform_priors: Mapping[str, float] | None = None,
+    ais_sigmas: AisSigmas | None = None,
+    pashr_angles: str = "tait-bryan",
+) -> NmeaImport:
     """Import NMEA 0183 log files (with AIS) as the fleet tables of ``platform`` (docs/nmea.md).
 
     ``paths``: a log file or a list of them, read in the order given (one log cut into files);
@@ -196,13 +221,24 @@ def import_nmea(paths: str | Path | Sequence[str | Path], platform: str, sensors
     log = read_log(paths, rejections, progress)
     not_used = _sort_types(log, rejections)
     fixes, dates = read_fixes(log, rejections)
-    attitudes = {"PASHR": read_pashr(log, rejections, pashr_angles), "HDT": read_headings(log, "HDT", rejections),
-                 "THS": read_headings(log, "THS", rejections)}
+    attitudes = {
+        "PASHR": read_pashr(log, rejections, pashr_angles),
+        "HDT": read_headings(log, "HDT", rejections),
+        "THS": read_headings(log, "THS", rejections),
+    }
     clock = fit_clock(*_anchors(fixes, dates, attitudes["PASHR"]), dates, date, log.received)
     nav = build_navigation(log, clock, fixes, attitudes, rejections)
     plots = read_ttm(log, clock, nav, talkers, only, keep_acquiring, rejections)
     messages = read_ais(log, rejections)
     refs = read_references(log, messages, clock, nav.sea_level, sigmas, rejections)
     summary = build_summary(ImportParts(log, clock, nav, plots, refs, rejections, not_used, len(messages)))
-    return NmeaImport(nav.frame(platform), plots.frame(), sensor_rows.drop(columns=[TALKER_COLUMN], errors="ignore"),
-                      platforms, refs.frame(), rejections.frame(), summary, refs.targets_frame())
+    return NmeaImport(
+        nav.frame(platform),
+        plots.frame(),
+        sensor_rows.drop(columns=[TALKER_COLUMN], errors="ignore"),
+        platforms,
+        refs.frame(),
+        rejections.frame(),
+        summary,
+        refs.targets_frame(),
+    )

@@ -93,8 +93,10 @@ def _prefix_time(prefix: str) -> float:
     try:
         stamp = datetime.fromisoformat(text)
     except ValueError:
-        raise LineProblem("bad_prefix", f"text before the sentence {text[:40]!r} is not a timestamp "
-                                        "(ISO 8601 UTC or unix seconds)") from None
+        raise LineProblem(
+            "bad_prefix",
+            f"text before the sentence {text[:40]!r} is not a timestamp (ISO 8601 UTC or unix seconds)",
+        ) from None
     if stamp.tzinfo is None:
         stamp = stamp.replace(tzinfo=timezone.utc)
     return stamp.timestamp()
@@ -109,11 +111,11 @@ def _tag_block(block: str) -> float:
     for ch in block[:star].encode("latin-1"):
         x ^= ch
     try:
-        claimed = int(block[star + 1:], 16)
+        claimed = int(block[star + 1 :], 16)
     except ValueError:
         claimed = -1
     if claimed != x:
-        raise LineProblem("bad_tag_block", f"tag block checksum {block[star + 1:]!r}, computed {x:02X}")
+        raise LineProblem("bad_tag_block", f"tag block checksum {block[star + 1 :]!r}, computed {x:02X}")
     for item in block[:star].split(","):
         if item.startswith("c:"):
             try:
@@ -122,7 +124,9 @@ def _tag_block(block: str) -> float:
                 c = math.nan
             c = c / 1000.0 if c > 1e11 else c
             if not 0.0 <= c <= 1e11:
-                raise LineProblem("bad_tag_block", f"tag block time {item!r} is not unix seconds (or milliseconds)")
+                raise LineProblem(
+                    "bad_tag_block", f"tag block time {item!r} is not unix seconds (or milliseconds)"
+                )
             return c
     return math.nan
 
@@ -133,15 +137,15 @@ def line_parts(line: str) -> tuple[float, str]:
     m = _START.search(line)
     if m is None:
         raise LineProblem("not_a_sentence", f"no '$' or '!' on the line: {line[:40]!r}")
-    received = _prefix_time(line[:m.start()]) if m.start() else math.nan
-    rest = line[m.start():]
+    received = _prefix_time(line[: m.start()]) if m.start() else math.nan
+    rest = line[m.start() :]
     while rest.startswith("\\"):
         end = rest.find("\\", 1)
         if end < 0:
             raise LineProblem("bad_tag_block", "tag block not closed by a backslash")
         c = _tag_block(rest[1:end])
         received = c if not math.isnan(c) else received
-        rest = rest[end + 1:]
+        rest = rest[end + 1 :]
     if not rest.startswith(("$", "!")):
         raise LineProblem("not_a_sentence", f"no '$' or '!' after the tag block: {rest[:40]!r}")
     return received, rest
@@ -186,7 +190,9 @@ def _split_file(path: Path, file_index: int, out: dict, rejections: Rejections, 
     out["file"].extend([file_index] * (len(numbers) - len(out["file"])))
     for code in set(bad_codes):
         pick = [k for k, c in enumerate(bad_codes) if c == code]
-        rejections.add([file_index] * len(pick), [bad_lines[k] for k in pick], code, [bad_reasons[k] for k in pick])
+        rejections.add(
+            [file_index] * len(pick), [bad_lines[k] for k in pick], code, [bad_reasons[k] for k in pick]
+        )
     return len(lines), blank
 
 
@@ -253,12 +259,14 @@ def read_log(paths, rejections: Rejections, progress: bool = False) -> SentenceL
     received = np.asarray(out["received"], dtype=np.float64)
     sentences = out["sentence"]
     has, ok = checksums_ok(sentences)
-    rejections.add(file[~has], line[~has], "no_checksum",
-                   "the sentence does not end in '*hh' (a truncated line?)")
+    rejections.add(
+        file[~has], line[~has], "no_checksum", "the sentence does not end in '*hh' (a truncated line?)"
+    )
     bad = has & ~ok
     rejections.add(file[bad], line[bad], "bad_checksum", "the checksum does not match the sentence")
     keep = np.flatnonzero(ok)
     sentences = [sentences[k] for k in keep]
     talker, kind = _addresses(sentences)
-    return SentenceLog([str(p) for p in files], file[keep], line[keep], sentences, talker, kind, received[keep],
-                       lines, blank)
+    return SentenceLog(
+        [str(p) for p in files], file[keep], line[keep], sentences, talker, kind, received[keep], lines, blank
+    )

@@ -17,9 +17,8 @@ valid attitude samples with the wrap at north, NaN across gaps above :data:`MAX_
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -72,13 +71,23 @@ class Navigation:
         ``heading_deg`` [0, 360), ``pitch_deg``, ``roll_deg``."""
         import pandas as pd
 
-        return pd.DataFrame({"time_s": self.time, "platform": np.full(self.time.size, str(platform), dtype=object),
-                             "lat_deg": np.degrees(self.lat), "lon_deg": np.degrees(wrap_angle(self.lon)),
-                             "alt_m": self.alt, "heading_deg": np.mod(np.degrees(self.heading), 360.0),
-                             "pitch_deg": np.degrees(self.pitch), "roll_deg": np.degrees(self.roll)})
+        return pd.DataFrame(
+            {
+                "time_s": self.time,
+                "platform": np.full(self.time.size, str(platform), dtype=object),
+                "lat_deg": np.degrees(self.lat),
+                "lon_deg": np.degrees(wrap_angle(self.lon)),
+                "alt_m": self.alt,
+                "heading_deg": np.mod(np.degrees(self.heading), 360.0),
+                "pitch_deg": np.degrees(self.pitch),
+                "roll_deg": np.degrees(self.roll),
+            }
+        )
 
 
-def interpolate_angle(t_samples: np.ndarray, unwrapped: np.ndarray, t: np.ndarray, max_gap: float) -> np.ndarray:
+def interpolate_angle(
+    t_samples: np.ndarray, unwrapped: np.ndarray, t: np.ndarray, max_gap: float
+) -> np.ndarray:
     """Linear interpolation of an unwrapped angle series (rad) at ``t``, wrapped to (-pi, pi]; NaN
     outside the span or where the bracketing samples are more than ``max_gap`` s apart."""
     t = np.asarray(t, dtype=np.float64)
@@ -132,18 +141,24 @@ def _positions(log: SentenceLog, clock: Clock, fixes: dict[str, Fixes], rejectio
     else:
         missing = np.isnan(f.geoid)
         if missing.any():
-            notes.append(f"{int(missing.sum())} {kind} fixes without geoid separation: their altitude above mean "
-                         "sea level is used as the ellipsoid height (an error of the geoid height, tens of metres)")
+            notes.append(
+                f"{int(missing.sum())} {kind} fixes without geoid separation: their altitude above mean "
+                "sea level is used as the ellipsoid height (an error of the geoid height, tens of metres)"
+            )
         alt = f.alt_msl + np.where(missing, 0.0, f.geoid)
     if not geoid.size:
         notes.append("no geoid separation in the log: mean sea level taken as the ellipsoid (AIS alt_m 0)")
     return t, f.lat, np.unwrap(f.lon), alt, f"{kind} ({talker})" if talker else kind, sea_level
 
 
-def _attitude(log: SentenceLog, clock: Clock, attitudes: dict[str, Attitude], rejections: Rejections, notes: list):
+def _attitude(
+    log: SentenceLog, clock: Clock, attitudes: dict[str, Attitude], rejections: Rejections, notes: list
+):
     kind = next((k for k in ("PASHR", "HDT", "THS") if len(attitudes[k])), None)
     if kind is None:
-        raise NmeaImportError("no valid heading in the log: no $PASHR, HDT or THS sentence with a valid heading")
+        raise NmeaImportError(
+            "no valid heading in the log: no $PASHR, HDT or THS sentence with a valid heading"
+        )
     a, talker = _one_talker(attitudes[kind])
     if kind == "PASHR":
         t = clock.place(a.index, a.tod)
@@ -151,18 +166,27 @@ def _attitude(log: SentenceLog, clock: Clock, attitudes: dict[str, Attitude], re
         t = clock.previous_anchor_time(a.index)
         bad = np.isnan(t)
         i = a.index[bad]
-        rejections.add(log.file[i], log.line[i], "no_time", f"{kind} has no time field and no timed sentence before it")
+        rejections.add(
+            log.file[i], log.line[i], "no_time", f"{kind} has no time field and no timed sentence before it"
+        )
         a, t = a.take(~bad), t[~bad]
         a.pitch[:] = 0.0
         a.roll[:] = 0.0
-        notes.append(f"no $PASHR attitude: heading from {kind}, pitch and roll 0 (a level ship); {kind} sentences "
-                     "have no time field and take the time of the navigation sentence before them")
+        notes.append(
+            f"no $PASHR attitude: heading from {kind}, pitch and roll 0 (a level ship); {kind} sentences "
+            "have no time field and take the time of the navigation sentence before them"
+        )
     keep = _sorted_unique(log, a.index, t, rejections, f"{kind} attitude")
     return a.take(keep), t[keep], f"{kind} ({talker})" if talker else kind
 
 
-def build_navigation(log: SentenceLog, clock: Clock, fixes: dict[str, Fixes], attitudes: dict[str, Attitude],
-                     rejections: Rejections) -> Navigation:
+def build_navigation(
+    log: SentenceLog,
+    clock: Clock,
+    fixes: dict[str, Fixes],
+    attitudes: dict[str, Attitude],
+    rejections: Rejections,
+) -> Navigation:
     """The :class:`Navigation` of the log; :class:`NmeaImportError` without a valid position or
     heading, or when no attitude sample lies among the positions."""
     notes: list[str] = []
@@ -171,16 +195,32 @@ def build_navigation(log: SentenceLog, clock: Clock, fixes: dict[str, Fixes], at
     heading_unwrapped = np.unwrap(a.heading)
     inside = _bracketed(tp, ta, MAX_POSITION_GAP_S)
     i = a.index[~inside]
-    rejections.add(log.file[i], log.line[i], "outside_positions",
-                   f"this attitude sample lacks a position fix within {MAX_POSITION_GAP_S:g} s before it or within "
-                   f"{MAX_POSITION_GAP_S:g} s after it (both are needed to interpolate the position)")
+    rejections.add(
+        log.file[i],
+        log.line[i],
+        "outside_positions",
+        f"this attitude sample lacks a position fix within {MAX_POSITION_GAP_S:g} s before it or within "
+        f"{MAX_POSITION_GAP_S:g} s after it (both are needed to interpolate the position)",
+    )
     if not inside.any():
-        raise NmeaImportError(f"no attitude sample ({attitude_source}, {ta.size} valid) lies within the position fixes "
-                              f"({position_source}, {tp.size} valid) to interpolate them: "
-                              "the two do not overlap in time")
+        raise NmeaImportError(
+            f"no attitude sample ({attitude_source}, {ta.size} valid) lies within the position fixes "
+            f"({position_source}, {tp.size} valid) to interpolate them: "
+            "the two do not overlap in time"
+        )
     t = ta[inside]
-    nav = Navigation(t, np.interp(t, tp, lat), np.interp(t, tp, lon), np.interp(t, tp, alt),
-                     a.heading[inside], a.pitch[inside], a.roll[inside],
-                     {"position": position_source, "attitude": attitude_source}, sea_level,
-                     ta, heading_unwrapped, notes)
+    nav = Navigation(
+        t,
+        np.interp(t, tp, lat),
+        np.interp(t, tp, lon),
+        np.interp(t, tp, alt),
+        a.heading[inside],
+        a.pitch[inside],
+        a.roll[inside],
+        {"position": position_source, "attitude": attitude_source},
+        sea_level,
+        ta,
+        heading_unwrapped,
+        notes,
+    )
     return nav

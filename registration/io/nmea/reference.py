@@ -21,10 +21,9 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 import math
 from dataclasses import dataclass, fields
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -106,9 +105,17 @@ class References:
         ``sigma_up_m``."""
         import pandas as pd
 
-        return pd.DataFrame({"time_s": self.time, "target": self.target, "lat_deg": np.degrees(self.lat),
-                             "lon_deg": np.degrees(self.lon), "alt_m": self.alt, "sigma_m": self.sigma,
-                             "sigma_up_m": self.sigma_up})
+        return pd.DataFrame(
+            {
+                "time_s": self.time,
+                "target": self.target,
+                "lat_deg": np.degrees(self.lat),
+                "lon_deg": np.degrees(self.lon),
+                "alt_m": self.alt,
+                "sigma_m": self.sigma,
+                "sigma_up_m": self.sigma_up,
+            }
+        )
 
     def targets_frame(self) -> pd.DataFrame:
         """The targets file table of the vessels with reference positions: ``target`` (MMSI), ``name``
@@ -117,14 +124,20 @@ class References:
         import pandas as pd
 
         mmsi = [m for m, v in self.vessels.items() if v["positions"] > 0]
-        return pd.DataFrame({"target": mmsi, "name": [self.vessels[m]["name"] or "" for m in mmsi],
-                             "surface_alt_m": np.full(len(mmsi), float(self.sea_level)),
-                             "sigma_surface_m": np.full(len(mmsi), float(self.surface_sigma))})
+        return pd.DataFrame(
+            {
+                "target": mmsi,
+                "name": [self.vessels[m]["name"] or "" for m in mmsi],
+                "surface_alt_m": np.full(len(mmsi), float(self.sea_level)),
+                "sigma_surface_m": np.full(len(mmsi), float(self.surface_sigma)),
+            }
+        )
 
 
 def _vessel(vessels: dict, mmsi: str) -> dict:
-    return vessels.setdefault(mmsi, {"mmsi": mmsi, "name": None, "callsign": None, "class": None, "positions": 0,
-                                     "messages": {}})
+    return vessels.setdefault(
+        mmsi, {"mmsi": mmsi, "name": None, "callsign": None, "class": None, "positions": 0, "messages": {}}
+    )
 
 
 def _static(v: dict, data) -> None:
@@ -167,7 +180,9 @@ def _position_time(clock: Clock, received: np.ndarray, second: np.ndarray) -> tu
     return np.where(timed, t, recv), timed
 
 
-def _reports(log: SentenceLog, messages: list[AisMessage], vessels: dict, own: dict, rejections: Rejections) -> list:
+def _reports(
+    log: SentenceLog, messages: list[AisMessage], vessels: dict, own: dict, rejections: Rejections
+) -> list:
     """The position reports of other vessels as (message, mmsi, lat deg, lon deg); own ship's counted."""
     own_mmsi = {str(m.data.mmsi) for m in messages if m.own}
     own["mmsi"] = sorted(own_mmsi)
@@ -181,22 +196,34 @@ def _reports(log: SentenceLog, messages: list[AisMessage], vessels: dict, own: d
         i = m.parts[0]
         if mmsi in own_mmsi:
             if t in POSITION_TYPES:
-                rejections.add(log.file[i], log.line[i], "ais_own_ship", f"MMSI {mmsi} is the own ship's (!AIVDO)")
+                rejections.add(
+                    log.file[i], log.line[i], "ais_own_ship", f"MMSI {mmsi} is the own ship's (!AIVDO)"
+                )
             continue
         _static(_vessel(vessels, mmsi), m.data)
         if t not in POSITION_TYPES:
             continue
         lat, lon = getattr(m.data, "lat", None), getattr(m.data, "lon", None)
         if lat is None or lon is None or not (abs(float(lat)) <= 90.0 and abs(float(lon)) <= 180.0):
-            rejections.add(log.file[i], log.line[i], "ais_no_position",
-                           f"AIS message {t} of MMSI {mmsi}: position not available ({lat}, {lon})")
+            rejections.add(
+                log.file[i],
+                log.line[i],
+                "ais_no_position",
+                f"AIS message {t} of MMSI {mmsi}: position not available ({lat}, {lon})",
+            )
             continue
         out.append((m, mmsi, float(lat), float(lon)))
     return out
 
 
-def read_references(log: SentenceLog, messages: list[AisMessage], clock: Clock, sea_level: float,
-                    sigmas: AisSigmas, rejections: Rejections) -> References:
+def read_references(
+    log: SentenceLog,
+    messages: list[AisMessage],
+    clock: Clock,
+    sea_level: float,
+    sigmas: AisSigmas,
+    rejections: Rejections,
+) -> References:
     """The reference positions of the AIS messages (see the module's text); ``sea_level``: the
     ellipsoid height (m) of mean sea level."""
     vessels, own = {}, {"mmsi": [], "messages": {}}
@@ -206,16 +233,26 @@ def read_references(log: SentenceLog, messages: list[AisMessage], clock: Clock, 
     second = np.array([_second(m.data) for m, *_ in reports], dtype=np.float64)
     time, timed = _position_time(clock, received, second)
     no_time = np.isnan(received)
-    rejections.add(log.file[first[no_time]], log.line[first[no_time]], "ais_no_time",
-                   "AIS position without a reception time (no tag block c: and no timestamp prefix)")
+    rejections.add(
+        log.file[first[no_time]],
+        log.line[first[no_time]],
+        "ais_no_time",
+        "AIS position without a reception time (no tag block c: and no timestamp prefix)",
+    )
     no_date = np.isnan(time) & ~no_time
-    rejections.add(log.file[first[no_date]], log.line[first[no_date]], "no_date",
-                   "the log gives no date to place the AIS reception time")
+    rejections.add(
+        log.file[first[no_date]],
+        log.line[first[no_date]],
+        "no_date",
+        "the log gives no date to place the AIS reception time",
+    )
     bad = no_time | no_date
     mmsi = np.array([r[1] for r in reports], dtype=object)
     lat = np.array([r[2] for r in reports], dtype=np.float64)
     lon = np.array([r[3] for r in reports], dtype=np.float64)
-    sigma = np.array([_sigma(m.data, sigmas, bool(k)) for (m, *_), k in zip(reports, timed)], dtype=np.float64)
+    sigma = np.array(
+        [_sigma(m.data, sigmas, bool(k)) for (m, *_), k in zip(reports, timed)], dtype=np.float64
+    )
     keep = np.flatnonzero(~bad)
     seen: set = set()
     dup = []
@@ -224,11 +261,25 @@ def read_references(log: SentenceLog, messages: list[AisMessage], clock: Clock, 
         dup.append(key in seen)
         seen.add(key)
     dup = np.array(dup, dtype=bool)
-    rejections.add(log.file[first[keep[dup]]], log.line[first[keep[dup]]], "ais_duplicate",
-                   "the same AIS report (MMSI, time, position) received again")
+    rejections.add(
+        log.file[first[keep[dup]]],
+        log.line[first[keep[dup]]],
+        "ais_duplicate",
+        "the same AIS report (MMSI, time, position) received again",
+    )
     keep = keep[~dup]
     for k in keep:
         vessels[mmsi[k]]["positions"] += 1
-    return References(time[keep], mmsi[keep], np.radians(lat[keep]), np.radians(lon[keep]),
-                      np.full(keep.size, float(sea_level)), sigma[keep], np.full(keep.size, np.inf),
-                      vessels, own, float(sea_level), float(sigmas.height_m))
+    return References(
+        time[keep],
+        mmsi[keep],
+        np.radians(lat[keep]),
+        np.radians(lon[keep]),
+        np.full(keep.size, float(sea_level)),
+        sigma[keep],
+        np.full(keep.size, np.inf),
+        vessels,
+        own,
+        float(sea_level),
+        float(sigmas.height_m),
+    )

@@ -7,11 +7,10 @@ file's line), the column and its unit.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 import math
 import re
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -78,26 +77,36 @@ def check_sensors(frame: pd.DataFrame, source: str = "sensors") -> pd.DataFrame:
         raise ValueError(f"{source}: missing column(s) {missing} (columns found: {list(frame.columns)})")
     unknown = [c for c in frame.columns if c not in known]
     if unknown:
-        raise ValueError(f"{source}: unknown column(s) {unknown}; the sensors table has columns "
-                         f"{[c for c, *_ in FILE_COLUMNS['sensors']]} and {TALKER_COLUMN!r}")
+        raise ValueError(
+            f"{source}: unknown column(s) {unknown}; the sensors table has columns "
+            f"{[c for c, *_ in FILE_COLUMNS['sensors']]} and {TALKER_COLUMN!r}"
+        )
     if len(frame) == 0:
         raise ValueError(f"{source}: no rows; give at least one sensor")
     out = {"sensor": _ids(frame, source, "sensor"), "platform": _ids(frame, source, "platform")}
     seen: dict[str, int] = {}
     for row, s in enumerate(out["sensor"]):
         if s in seen:
-            raise ValueError(f"{_where(source, row, 'sensor')}: sensor {s!r} is given twice (first at row {seen[s]})")
+            raise ValueError(
+                f"{_where(source, row, 'sensor')}: sensor {s!r} is given twice (first at row {seen[s]})"
+            )
         seen[s] = row
     for column in frame.columns:
         if column in _SPEC and _SPEC[column][0] != "id":
             unit, _, limits = _SPEC[column]
-            out[column] = [_cell_number(source, row, column, v, unit, limits)
-                           for row, v in enumerate(frame[column].tolist())]
+            out[column] = [
+                _cell_number(source, row, column, v, unit, limits)
+                for row, v in enumerate(frame[column].tolist())
+            ]
     if TALKER_COLUMN in frame.columns:
         out[TALKER_COLUMN] = _talkers(frame[TALKER_COLUMN].tolist(), out["platform"], source)
     columns = [c for c in frame.columns if c in out]
-    checked = pd.DataFrame({c: np.asarray(out[c], dtype=object if c in ("sensor", "platform", TALKER_COLUMN) else float)
-                            for c in columns})
+    checked = pd.DataFrame(
+        {
+            c: np.asarray(out[c], dtype=object if c in ("sensor", "platform", TALKER_COLUMN) else float)
+            for c in columns
+        }
+    )
     checked.attrs["source"] = source
     return checked
 
@@ -107,12 +116,16 @@ def _talkers(values: list, platforms: list[str], source: str) -> list[str]:
     for row, v in enumerate(values):
         text = "" if v is None or (isinstance(v, float) and math.isnan(v)) else str(v).strip().upper()
         if text and not _TALKER.match(text):
-            raise ValueError(f"{_where(source, row, TALKER_COLUMN)}: {v!r} is not an NMEA talker (two letters or "
-                             "digits, such as RA)")
+            raise ValueError(
+                f"{_where(source, row, TALKER_COLUMN)}: {v!r} is not an NMEA talker (two letters or "
+                "digits, such as RA)"
+            )
         key = (platforms[row], text)
         if text and key in seen:
-            raise ValueError(f"{_where(source, row, TALKER_COLUMN)}: talker {text!r} is given twice on platform "
-                             f"{platforms[row]!r} (first at row {seen[key]}); one talker names one sensor")
+            raise ValueError(
+                f"{_where(source, row, TALKER_COLUMN)}: talker {text!r} is given twice on platform "
+                f"{platforms[row]!r} (first at row {seen[key]}); one talker names one sensor"
+            )
         seen[key] = row
         talkers.append(text)
     return talkers
@@ -142,16 +155,20 @@ def platform_sensors(sensors: pd.DataFrame, platform: str, source: str = "sensor
     ``sigma_range_m`` and ``sigma_bearing_deg``: TTM gives both."""
     rows = sensors[sensors["platform"] == str(platform)].reset_index(drop=True)
     if len(rows) == 0:
-        raise ValueError(f"{source}: no sensor on platform {str(platform)!r} "
-                         f"(platforms in the table: {sorted(set(sensors['platform']))})")
+        raise ValueError(
+            f"{source}: no sensor on platform {str(platform)!r} "
+            f"(platforms in the table: {sorted(set(sensors['platform']))})"
+        )
     talkers, only = talker_map(rows)
     fed = set(talkers.values()) | ({only} if only else set())
     for s in sorted(fed):
         r = rows[rows["sensor"] == s].iloc[0]
         for column in ("sigma_range_m", "sigma_bearing_deg"):
             if column not in rows.columns or not np.isfinite(r[column]):
-                raise ValueError(f"{source}: sensor {s!r} receives TTM plots (range and bearing) but has no {column}; "
-                                 f"give its noise sigma")
+                raise ValueError(
+                    f"{source}: sensor {s!r} receives TTM plots (range and bearing) but has no {column}; "
+                    f"give its noise sigma"
+                )
     return rows
 
 

@@ -62,8 +62,13 @@ def _plots(p: Plots) -> dict:
     for s in sorted(set(p.sensor.astype(str))):
         mine = p.sensor.astype(str) == s
         per_sensor[s] = {"plots": int(mine.sum()), "tracks": int(np.unique(p.track[mine].astype(str)).size)}
-    return {"rows": int(p.time.size), "per_sensor": per_sensor, "bearing_reference": _counts(p.reference),
-            "distance_unit": _counts(p.unit), "status": _counts(p.status)}
+    return {
+        "rows": int(p.time.size),
+        "per_sensor": per_sensor,
+        "bearing_reference": _counts(p.reference),
+        "distance_unit": _counts(p.unit),
+        "status": _counts(p.status),
+    }
 
 
 def _vessels(r: References) -> list[dict]:
@@ -88,14 +93,25 @@ def build_summary(parts: ImportParts) -> dict:
         "sentences": sentence_counts(parts.log),
         "not_used": dict(sorted(parts.not_used.items())),
         "date": {"origin": clock.origin_date(), "source": clock.date_source},
-        "time_span": {"all": _span(clock, np.concatenate(times)) if times else None,
-                      "navigation": _span(clock, nav.time), "plots": _span(clock, parts.plots.time),
-                      "reference": _span(clock, r.time)},
-        "navigation": {"rows": int(nav.time.size), "position": nav.sources["position"],
-                       "attitude": nav.sources["attitude"], "sea_level_m": float(nav.sea_level)},
+        "time_span": {
+            "all": _span(clock, np.concatenate(times)) if times else None,
+            "navigation": _span(clock, nav.time),
+            "plots": _span(clock, parts.plots.time),
+            "reference": _span(clock, r.time),
+        },
+        "navigation": {
+            "rows": int(nav.time.size),
+            "position": nav.sources["position"],
+            "attitude": nav.sources["attitude"],
+            "sea_level_m": float(nav.sea_level),
+        },
         "plots": _plots(parts.plots),
-        "ais": {"messages": int(parts.ais_messages), "reference_positions": int(r.time.size),
-                "vessels": _vessels(r), "own_ship": {"mmsi": list(r.own["mmsi"]), "messages": dict(r.own["messages"])}},
+        "ais": {
+            "messages": int(parts.ais_messages),
+            "reference_positions": int(r.time.size),
+            "vessels": _vessels(r),
+            "own_ship": {"mmsi": list(r.own["mmsi"]), "messages": dict(r.own["messages"])},
+        },
         "rejected": {"lines": parts.rejections.count(), "by_reason": parts.rejections.counts()},
         "notes": list(clock.notes) + list(nav.notes),
     }

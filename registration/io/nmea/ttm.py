@@ -22,9 +22,8 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -65,8 +64,15 @@ class Plots:
         """The plots file table: ``time_s``, ``sensor``, ``track``, ``range_m``, ``bearing_deg``."""
         import pandas as pd
 
-        return pd.DataFrame({"time_s": self.time, "sensor": self.sensor, "track": self.track,
-                             "range_m": self.range, "bearing_deg": np.degrees(self.bearing)})
+        return pd.DataFrame(
+            {
+                "time_s": self.time,
+                "sensor": self.sensor,
+                "track": self.track,
+                "range_m": self.range,
+                "bearing_deg": np.degrees(self.bearing),
+            }
+        )
 
 
 def _track_ids(col) -> np.ndarray:
@@ -84,16 +90,25 @@ def _sensors(c: Columns, talkers: dict[str, str], only: str | None, rejections: 
     sensor = np.array([talkers.get(t, only) for t in talker], dtype=object)
     bad = np.array([s is None for s in sensor], dtype=bool)
     known = sorted(talkers) if talkers else []
-    c = c.reject(bad, rejections, "ttm_no_sensor",
-                 [f"TTM talker {t!r} names no sensor of the platform (talkers in the sensors table: {known})"
-                  for t in talker])
+    c = c.reject(
+        bad,
+        rejections,
+        "ttm_no_sensor",
+        [
+            f"TTM talker {t!r} names no sensor of the platform (talkers in the sensors table: {known})"
+            for t in talker
+        ],
+    )
     return c, sensor[~bad]
 
 
 def _status(c: Columns, sensor: np.ndarray, keep_acquiring: bool, rejections: Rejections):
     status = text(c.cols[12])
-    tests = (("ttm_lost", lambda s: s == "L"), ("ttm_acquiring", lambda s: (s == "Q") & (not keep_acquiring)),
-             ("ttm_status", lambda s: ~np.isin(s, ["T", "Q", "L"])))
+    tests = (
+        ("ttm_lost", lambda s: s == "L"),
+        ("ttm_acquiring", lambda s: (s == "Q") & (not keep_acquiring)),
+        ("ttm_status", lambda s: ~np.isin(s, ["T", "Q", "L"])),
+    )
     for code, test in tests:
         bad = test(status)
         c = c.reject(bad, rejections, code, [f"TTM target status {s!r}" for s in status])
@@ -109,11 +124,13 @@ def _values(c: Columns, rejections: Rejections):
     with np.errstate(over="ignore", invalid="ignore"):
         too_far = distance * np.nan_to_num(factor, nan=1.0) > MAX_RANGE_M
     far = f"TTM distance empty, not a number, not positive or beyond {MAX_RANGE_M:g} m"
-    checks = ((~(distance > 0) | too_far, far),
-              (np.isnan(factor), "TTM distance unit is not K, N or S"),
-              (~((bearing >= 0) & (bearing <= 360)), "TTM bearing empty, not a number or outside [0, 360] deg"),
-              (~np.isin(ref, ["T", "R"]), "TTM bearing reference is not T (true) or R (relative)"),
-              (np.array([not v.strip() for v in c.cols[1]], dtype=bool), "TTM target number is empty"))
+    checks = (
+        (~(distance > 0) | too_far, far),
+        (np.isnan(factor), "TTM distance unit is not K, N or S"),
+        (~((bearing >= 0) & (bearing <= 360)), "TTM bearing empty, not a number or outside [0, 360] deg"),
+        (~np.isin(ref, ["T", "R"]), "TTM bearing reference is not T (true) or R (relative)"),
+        (np.array([not v.strip() for v in c.cols[1]], dtype=bool), "TTM target number is empty"),
+    )
     bad = np.zeros(len(c), bool)
     reasons = np.full(len(c), "", dtype=object)
     for b, why in checks[::-1]:  # the first check's reason wins
@@ -124,8 +141,15 @@ def _values(c: Columns, rejections: Rejections):
     return c, keep, distance[keep] * factor[keep], np.radians(bearing[keep]), unit[keep], ref[keep]
 
 
-def read_ttm(log: SentenceLog, clock: Clock, nav: Navigation, talkers: dict[str, str], only: str | None,
-             keep_acquiring: bool, rejections: Rejections) -> Plots:
+def read_ttm(
+    log: SentenceLog,
+    clock: Clock,
+    nav: Navigation,
+    talkers: dict[str, str],
+    only: str | None,
+    keep_acquiring: bool,
+    rejections: Rejections,
+) -> Plots:
     """The plots of the log's TTM sentences (see the module's text). ``talkers``: talker -> sensor;
     ``only``: the sensor of TTMs whose talker is not in ``talkers`` (the platform's only sensor),
     None to set those aside."""
@@ -133,7 +157,9 @@ def read_ttm(log: SentenceLog, clock: Clock, nav: Navigation, talkers: dict[str,
     c, sensor = _sensors(c, talkers, only, rejections)
     c, sensor, status = _status(c, sensor, keep_acquiring, rejections)
     no_time = np.array([v.strip() == "" for v in c.cols[14]], dtype=bool)
-    c = c.reject(no_time, rejections, "no_time", "TTM without a UTC time field (field 14): its time is not guessed")
+    c = c.reject(
+        no_time, rejections, "no_time", "TTM without a UTC time field (field 14): its time is not guessed"
+    )
     sensor, status = sensor[~no_time], status[~no_time]
     tod = time_of_day(c.cols[14])
     bad = np.isnan(tod)
@@ -147,16 +173,30 @@ def read_ttm(log: SentenceLog, clock: Clock, nav: Navigation, talkers: dict[str,
     q[true] = q[true] - heading  # true -> deck bearing
     no_heading = np.zeros(len(c), bool)
     no_heading[true] = np.isnan(heading)
-    c = c.reject(no_heading, rejections, "ttm_no_heading",
-                 "true TTM bearing at a time without heading samples around it to make it relative")
+    c = c.reject(
+        no_heading,
+        rejections,
+        "ttm_no_heading",
+        "true TTM bearing at a time without heading samples around it to make it relative",
+    )
     keep = ~no_heading
     time, sensor, status, rng, q, unit, ref = (a[keep] for a in (time, sensor, status, rng, q, unit, ref))
     track = _track_ids(c.cols[1])
     dup = _duplicates(time, sensor, track)
-    c = c.reject(dup, rejections, "duplicate_time", "a second TTM of the same sensor and track at the same time")
+    c = c.reject(
+        dup, rejections, "duplicate_time", "a second TTM of the same sensor and track at the same time"
+    )
     keep = ~dup
-    return Plots(time[keep], sensor[keep], track[keep], rng[keep], wrap_angle(q[keep]), ref[keep], unit[keep],
-                 status[keep])
+    return Plots(
+        time[keep],
+        sensor[keep],
+        track[keep],
+        rng[keep],
+        wrap_angle(q[keep]),
+        ref[keep],
+        unit[keep],
+        status[keep],
+    )
 
 
 def _duplicates(time: np.ndarray, sensor: np.ndarray, track: np.ndarray) -> np.ndarray:

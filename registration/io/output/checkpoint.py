@@ -26,7 +26,16 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["CheckpointError", "save_checkpoint", "load_checkpoint", "fsync_dir", "encode", "decode", "FORMAT", "VERSION"]
+__all__ = [
+    "CheckpointError",
+    "save_checkpoint",
+    "load_checkpoint",
+    "fsync_dir",
+    "encode",
+    "decode",
+    "FORMAT",
+    "VERSION",
+]
 
 FORMAT = "sensor-registration-checkpoint"
 VERSION = 1
@@ -77,7 +86,12 @@ def save_checkpoint(path, payload: dict) -> None:
     """Write ``payload`` (numbers, strings, lists, dicts, numpy arrays) atomically to ``path``."""
     path = Path(path)
     enc = encode(payload)
-    doc = {"format": FORMAT, "version": VERSION, "payload": enc, "sha256": hashlib.sha256(_canonical(enc)).hexdigest()}
+    doc = {
+        "format": FORMAT,
+        "version": VERSION,
+        "payload": enc,
+        "sha256": hashlib.sha256(_canonical(enc)).hexdigest(),
+    }
     data = json.dumps(doc, sort_keys=True, separators=(",", ":"), allow_nan=False).encode() + b"\n"
     tmp = path.with_name(path.name + ".tmp")
     with open(tmp, "wb") as f:
@@ -111,18 +125,24 @@ def load_checkpoint(path) -> dict:
     try:
         doc = json.loads(raw.decode("utf-8"))
     except (UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise CheckpointError(f"checkpoint {path} is truncated or corrupt (not valid JSON: {exc}){hint}") from exc
+        raise CheckpointError(
+            f"checkpoint {path} is truncated or corrupt (not valid JSON: {exc}){hint}"
+        ) from exc
     if not isinstance(doc, dict) or doc.get("format") != FORMAT:
         raise CheckpointError(f"checkpoint {path} is not a sensor-registration checkpoint{hint}")
     if doc.get("version") != VERSION:
-        raise CheckpointError(f"checkpoint {path} has version {doc.get('version')!r}; this program reads version {VERSION}{hint}")
+        raise CheckpointError(
+            f"checkpoint {path} has version {doc.get('version')!r}; this program reads version {VERSION}{hint}"
+        )
     payload = doc.get("payload")
     try:
         digest = hashlib.sha256(_canonical(payload)).hexdigest()
     except (TypeError, ValueError) as exc:
         raise CheckpointError(f"checkpoint {path} is corrupt ({exc}){hint}") from exc
     if not isinstance(doc.get("sha256"), str) or digest != doc["sha256"]:
-        raise CheckpointError(f"checkpoint {path} was modified or damaged (its content does not match its sha256){hint}")
+        raise CheckpointError(
+            f"checkpoint {path} was modified or damaged (its content does not match its sha256){hint}"
+        )
     try:
         return decode(payload)
     except (TypeError, ValueError, OverflowError) as exc:

@@ -30,14 +30,39 @@ from pathlib import Path
 
 from registration.io.output.checkpoint import CheckpointError, fsync_dir, load_checkpoint
 
-__all__ = ["OUTPUT_NAMES", "MARKER", "OutputFolderError", "RunFolder", "prepare_out", "new_run_folder",
-           "mark_in_place", "publish", "discard", "records_folder", "make_folders", "remove_empty_folders"]
+__all__ = [
+    "OUTPUT_NAMES",
+    "MARKER",
+    "OutputFolderError",
+    "RunFolder",
+    "prepare_out",
+    "new_run_folder",
+    "mark_in_place",
+    "publish",
+    "discard",
+    "records_folder",
+    "make_folders",
+    "remove_empty_folders",
+]
 
 #: What a run writes into OUT (a Parquet output is a folder of parts).
-OUTPUT_NAMES = frozenset({
-    "estimates.csv", "estimates.parquet", "positions.csv", "positions.parquet", "rejected.csv", "summary.json",
-    "estimates.png", "differences.png", "tracks.png", "paired.csv", "paired.parquet", "pairing.json", "unpaired.csv",
-})
+OUTPUT_NAMES = frozenset(
+    {
+        "estimates.csv",
+        "estimates.parquet",
+        "positions.csv",
+        "positions.parquet",
+        "rejected.csv",
+        "summary.json",
+        "estimates.png",
+        "differences.png",
+        "tracks.png",
+        "paired.csv",
+        "paired.parquet",
+        "pairing.json",
+        "unpaired.csv",
+    }
+)
 #: The file that marks a folder whose contents are not a finished run.
 MARKER = "INCOMPLETE"
 _PARTIAL = "partial-"
@@ -161,7 +186,9 @@ def prepare_out(out: Path, output_names: frozenset = OUTPUT_NAMES) -> None:
     resumed. Raises :class:`OutputFolderError` for an unusable ``out``. ``output_names``: what
     the command writes into ``out``."""
     if out.exists() and not out.is_dir():
-        raise OutputFolderError(f"--out {out}: is a file, not a folder; give a folder (it is created if missing)")
+        raise OutputFolderError(
+            f"--out {out}: is a file, not a folder; give a folder (it is created if missing)"
+        )
     try:
         created = make_folders(out)
     except OSError as exc:
@@ -191,8 +218,10 @@ def _complete_publication(out: Path, output_names: frozenset = OUTPUT_NAMES) -> 
     try:
         names = json.loads(fields.get("files", "[]"))
     except json.JSONDecodeError as exc:
-        raise OutputFolderError(f"{out / MARKER}: damaged (its file list cannot be read); the folder holds an "
-                                "interrupted publication: check it, then delete the marker to go on") from exc
+        raise OutputFolderError(
+            f"{out / MARKER}: damaged (its file list cannot be read); the folder holds an "
+            "interrupted publication: check it, then delete the marker to go on"
+        ) from exc
     work = out / fields["publishing"]
     pid = _pid_of(work.name)
     if pid is not None and _pid_alive(pid):
@@ -201,8 +230,9 @@ def _complete_publication(out: Path, output_names: frozenset = OUTPUT_NAMES) -> 
         _move_in(out, work, names, output_names)
 
 
-def new_run_folder(out: Path, checkpoint, command: str = "registration register",
-                   output_names: frozenset = OUTPUT_NAMES) -> RunFolder:
+def new_run_folder(
+    out: Path, checkpoint, command: str = "registration register", output_names: frozenset = OUTPUT_NAMES
+) -> RunFolder:
     """A new, empty run folder inside ``out`` (created if missing, with its parents) with its
     ``INCOMPLETE`` marker, for ``command`` writing ``output_names``."""
     created: tuple[Path, ...] = ()
@@ -216,26 +246,38 @@ def new_run_folder(out: Path, checkpoint, command: str = "registration register"
         except (FileExistsError, FileNotFoundError):  # taken, or out removed meanwhile by a failed run: again
             continue
         except OSError as exc:
-            raise OutputFolderError(f"--out {out}: cannot write in the folder: {exc.strerror or exc}") from exc
+            raise OutputFolderError(
+                f"--out {out}: cannot write in the folder: {exc.strerror or exc}"
+            ) from exc
     else:
         raise OutputFolderError(f"--out {out}: cannot make a run folder in it")
     if checkpoint is None:
-        how = (f"checkpoint: none\nWithout --checkpoint this run cannot be resumed; once process {os.getpid()} is gone "
-               f"the folder can be deleted (the next run into {out} deletes it).\n")
+        how = (
+            f"checkpoint: none\nWithout --checkpoint this run cannot be resumed; once process {os.getpid()} is gone "
+            f"the folder can be deleted (the next run into {out} deletes it).\n"
+        )
     else:
-        how = (f"checkpoint: {Path(checkpoint).resolve()}\nTo resume, rerun the same command (same inputs, options, "
-               "--out and --checkpoint); it continues in this folder.\n")
-    _write_text(path / MARKER, f"This folder holds the unfinished outputs of a `{command}` run (process "
-                               f"{os.getpid()}, started {time.strftime('%Y-%m-%d %H:%M:%S')}). They are moved into "
-                               f"{out} when the run finishes; until then {out} keeps what it held before.\n" + how)
+        how = (
+            f"checkpoint: {Path(checkpoint).resolve()}\nTo resume, rerun the same command (same inputs, options, "
+            "--out and --checkpoint); it continues in this folder.\n"
+        )
+    _write_text(
+        path / MARKER,
+        f"This folder holds the unfinished outputs of a `{command}` run (process "
+        f"{os.getpid()}, started {time.strftime('%Y-%m-%d %H:%M:%S')}). They are moved into "
+        f"{out} when the run finishes; until then {out} keeps what it held before.\n" + how,
+    )
     return RunFolder(out, path, command, frozenset(output_names), created)
 
 
 def mark_in_place(folder: RunFolder, checkpoint) -> None:
     """Mark ``out`` itself incomplete while a checkpoint of an older version resumes in it."""
     make_folders(folder.out)
-    _write_text(folder.out / MARKER, "The outputs in this folder are those of an unfinished `registration register` run.\n"
-                                     f"checkpoint: {Path(checkpoint).resolve()}\nTo resume, rerun the same command.\n")
+    _write_text(
+        folder.out / MARKER,
+        "The outputs in this folder are those of an unfinished `registration register` run.\n"
+        f"checkpoint: {Path(checkpoint).resolve()}\nTo resume, rerun the same command.\n",
+    )
 
 
 def publish(folder: RunFolder) -> None:
@@ -248,10 +290,16 @@ def publish(folder: RunFolder) -> None:
     if fields.get("publishing") == folder.path.name:  # this very publication was interrupted: same files
         names = json.loads(fields["files"])
     else:
-        names = sorted((p.name for p in folder.path.iterdir() if p.name != MARKER), key=lambda n: (n == "summary.json", n))
-        _write_text(out / MARKER, f"The outputs of a `{folder.command}` run are being moved into this folder. If "
-                                  f"this file stays, that was interrupted: the next run into {out} completes it.\n"
-                                  f"publishing: {folder.path.name}\nfiles: {json.dumps(names)}\n")
+        names = sorted(
+            (p.name for p in folder.path.iterdir() if p.name != MARKER),
+            key=lambda n: (n == "summary.json", n),
+        )
+        _write_text(
+            out / MARKER,
+            f"The outputs of a `{folder.command}` run are being moved into this folder. If "
+            f"this file stays, that was interrupted: the next run into {out} completes it.\n"
+            f"publishing: {folder.path.name}\nfiles: {json.dumps(names)}\n",
+        )
         fsync_dir(out)
     _move_in(out, folder.path, names, folder.names)
 
@@ -262,8 +310,11 @@ def _move_in(out: Path, work: Path, names: list[str], output_names: frozenset = 
     aside = out / (_ASIDE + work.name)
     aside.mkdir(exist_ok=True)
     new = set(names)
-    old = [p for p in out.iterdir()
-           if _is_output(p.name, output_names) and (p.name not in new or (work / p.name).exists())]
+    old = [
+        p
+        for p in out.iterdir()
+        if _is_output(p.name, output_names) and (p.name not in new or (work / p.name).exists())
+    ]
     for p in sorted(old, key=lambda p: p.name != "summary.json"):
         _remove(aside / p.name)
         os.rename(p, aside / p.name)

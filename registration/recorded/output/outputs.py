@@ -13,11 +13,11 @@ from pathlib import Path
 
 import numpy as np
 
+from registration.io.output.outfolder import RunFolder
 from registration.online.contract import IS_ANGLE, STATE_NAMES
+from registration.recorded.output.writers import CsvAppender, open_appender
 from registration.recorded.reading.columns import ESTIMATE_COLUMNS, POSITION_COLUMNS, REJECTED_COLUMNS
 from registration.recorded.run.options import RunOptions
-from registration.io.output.outfolder import RunFolder
-from registration.recorded.output.writers import CsvAppender, open_appender
 
 __all__ = ["DifferenceStats", "Outputs", "output_paths", "estimate_frame", "position_frame", "rejected_rows"]
 
@@ -25,7 +25,11 @@ __all__ = ["DifferenceStats", "Outputs", "output_paths", "estimate_frame", "posi
 def output_paths(options: RunOptions, folder: Path | None = None) -> dict[str, Path]:
     """Paths of the estimates, positions and rejected outputs of a run in ``folder`` (default: ``options.out``)."""
     out, ext = options.out if folder is None else Path(folder), options.output_suffix
-    return {"estimates": out / f"estimates{ext}", "positions": out / f"positions{ext}", "rejected": out / "rejected.csv"}
+    return {
+        "estimates": out / f"estimates{ext}",
+        "positions": out / f"positions{ext}",
+        "rejected": out / "rejected.csv",
+    }
 
 
 class Outputs:
@@ -33,11 +37,22 @@ class Outputs:
     ``{name: [size, rows]}`` to cut each back to; ``keep_rejected``: append to an existing
     rejected.csv (the pairing's)."""
 
-    def __init__(self, options: RunOptions, folder: RunFolder, marks: dict | None = None, *, keep_rejected: bool = False):
+    def __init__(
+        self,
+        options: RunOptions,
+        folder: RunFolder,
+        marks: dict | None = None,
+        *,
+        keep_rejected: bool = False,
+    ):
         paths, fmt = output_paths(options, folder.path), options.out_format
         self.folder = folder
-        self.estimates = open_appender(paths["estimates"], ESTIMATE_COLUMNS, fmt, None if marks is None else tuple(marks["estimates"]))
-        self.positions = open_appender(paths["positions"], POSITION_COLUMNS, fmt, None if marks is None else tuple(marks["positions"]))
+        self.estimates = open_appender(
+            paths["estimates"], ESTIMATE_COLUMNS, fmt, None if marks is None else tuple(marks["estimates"])
+        )
+        self.positions = open_appender(
+            paths["positions"], POSITION_COLUMNS, fmt, None if marks is None else tuple(marks["positions"])
+        )
         if marks is None:
             self.rejected = CsvAppender(paths["rejected"], REJECTED_COLUMNS, keep_existing=keep_rejected)
         else:
@@ -49,7 +64,9 @@ class Outputs:
     def marks(self) -> dict:
         """``{name: [size, rows]}`` and the run folder's name: what a checkpoint records to resume
         these outputs (no folder for a run resumed in ``--out`` itself)."""
-        marks = {name: [w.size, w.rows] for name, w in zip(("estimates", "positions", "rejected"), self._all())}
+        marks = {
+            name: [w.size, w.rows] for name, w in zip(("estimates", "positions", "rejected"), self._all())
+        }
         if not self.folder.in_place:
             marks["folder"] = self.folder.path.name
         return marks
@@ -84,7 +101,10 @@ def position_frame(rows: np.ndarray, times: np.ndarray, corrected_a, corrected_b
     """DataFrame of :data:`POSITION_COLUMNS` from (K, 3) ECEF arrays in metres."""
     import pandas as pd
 
-    frame = pd.DataFrame(np.concatenate([corrected_a, corrected_b, raw_diff, corrected_diff], axis=1), columns=POSITION_COLUMNS[2:])
+    frame = pd.DataFrame(
+        np.concatenate([corrected_a, corrected_b, raw_diff, corrected_diff], axis=1),
+        columns=POSITION_COLUMNS[2:],
+    )
     frame.insert(0, "time_s", times)
     frame.insert(0, "row", rows.astype(np.int64))
     return frame
@@ -103,7 +123,9 @@ class DifferenceStats:
             self.n, self.mean, self.m2, self.maxabs = 0, np.zeros(3), np.zeros(3), np.zeros(3)
         else:
             self.n = int(state["n"])
-            self.mean, self.m2, self.maxabs = (np.asarray(state[k], dtype=float).reshape(3) for k in ("mean", "m2", "maxabs"))
+            self.mean, self.m2, self.maxabs = (
+                np.asarray(state[k], dtype=float).reshape(3) for k in ("mean", "m2", "maxabs")
+            )
 
     def add(self, z: np.ndarray) -> None:
         """Take in a block of differences (K, 3), m."""

@@ -20,11 +20,11 @@ from registration.core.frames import ecef2geodetic
 from registration.core.plotting import OKABE_ITO, pyplot
 from registration.online.contract import IS_ANGLE
 from registration.online.plots import SHIP_COLOURS, plot_difference_series, plot_estimate_series
+from registration.recorded.output.outputs import output_paths
+from registration.recorded.output.plotseries import PLOT_POINTS, plot_step
 from registration.recorded.reading.columns import ESTIMATE_COLUMNS, POSITION_COLUMNS
 from registration.recorded.reading.formats import iter_frames
 from registration.recorded.run.options import RunOptions
-from registration.recorded.output.outputs import output_paths
-from registration.recorded.output.plotseries import PLOT_POINTS, plot_step
 
 __all__ = ["write_plots", "series_from_outputs", "release_free_memory", "PLOT_POINTS", "READ_ROWS"]
 
@@ -55,9 +55,21 @@ def write_plots(series: dict, status: dict, folder: Path) -> list[Path]:
     observability ``status`` (state name -> status); return their paths."""
     out = Path(folder)
     release_free_memory()
-    written = [Path(plot_estimate_series(series["time"], series["x"], series["sigma"], status, None, out / "estimates.png"))]
+    written = [
+        Path(
+            plot_estimate_series(
+                series["time"], series["x"], series["sigma"], status, None, out / "estimates.png"
+            )
+        )
+    ]
     release_free_memory()
-    written.append(Path(plot_difference_series(series["time"], series["raw_diff"], series["corrected_diff"], out / "differences.png")))
+    written.append(
+        Path(
+            plot_difference_series(
+                series["time"], series["raw_diff"], series["corrected_diff"], out / "differences.png"
+            )
+        )
+    )
     release_free_memory()
     nav = series["nav_deg"]
     tracks = {c: nav[:, i] for i, c in enumerate(_NAV_COLUMNS)}
@@ -77,14 +89,16 @@ def series_from_outputs(table_path: Path, options: RunOptions, folder: Path, reg
     est = _strided(paths["estimates"], ESTIMATE_COLUMNS, step)
     pos = _strided(paths["positions"], POSITION_COLUMNS, step)
     angle = np.where(IS_ANGLE, np.pi / 180, 1.0)
-    series = {"time": np.asarray(est["time_s"], dtype=float),
-              "x": est[ESTIMATE_COLUMNS[2:-1:2]].to_numpy(dtype=float) * angle,
-              "sigma": est[ESTIMATE_COLUMNS[3:-1:2]].to_numpy(dtype=float) * angle,
-              "raw_diff": pos[["diff_raw_x_m", "diff_raw_y_m", "diff_raw_z_m"]].to_numpy(dtype=float),
-              "corrected_diff": pos[["diff_x_m", "diff_y_m", "diff_z_m"]].to_numpy(dtype=float),
-              "a_ecef": pos[["a_ecef_x_m", "a_ecef_y_m", "a_ecef_z_m"]].to_numpy(dtype=float),
-              "b_ecef": pos[["b_ecef_x_m", "b_ecef_y_m", "b_ecef_z_m"]].to_numpy(dtype=float),
-              "nav_deg": _rows_of(table_path, _NAV_COLUMNS, np.asarray(est["row"], dtype=np.int64))}
+    series = {
+        "time": np.asarray(est["time_s"], dtype=float),
+        "x": est[ESTIMATE_COLUMNS[2:-1:2]].to_numpy(dtype=float) * angle,
+        "sigma": est[ESTIMATE_COLUMNS[3:-1:2]].to_numpy(dtype=float) * angle,
+        "raw_diff": pos[["diff_raw_x_m", "diff_raw_y_m", "diff_raw_z_m"]].to_numpy(dtype=float),
+        "corrected_diff": pos[["diff_x_m", "diff_y_m", "diff_z_m"]].to_numpy(dtype=float),
+        "a_ecef": pos[["a_ecef_x_m", "a_ecef_y_m", "a_ecef_z_m"]].to_numpy(dtype=float),
+        "b_ecef": pos[["b_ecef_x_m", "b_ecef_y_m", "b_ecef_z_m"]].to_numpy(dtype=float),
+        "nav_deg": _rows_of(table_path, _NAV_COLUMNS, np.asarray(est["row"], dtype=np.int64)),
+    }
     return series
 
 
@@ -143,7 +157,14 @@ def _plot_tracks(tracks: dict, targets: dict, path: Path) -> Path:
         lat, lon = targets[s]
         good = np.isfinite(lat) & np.isfinite(lon)
         if good.any():
-            ax.plot(lon[good], lat[good], ".", ms=2, color=colour, label=f"target, corrected plots of radar {s.upper()}")
+            ax.plot(
+                lon[good],
+                lat[good],
+                ".",
+                ms=2,
+                color=colour,
+                label=f"target, corrected plots of radar {s.upper()}",
+            )
     ax.set_xlabel("longitude (deg E)")
     ax.set_ylabel("latitude (deg N)")
     ax.set_title("Ship tracks and the target (dots on tracks: start)")

@@ -21,7 +21,16 @@ PLOT_POINTS = 4000
 
 #: name -> columns per row: time (s), estimates x and their 1 sigma (rad or m), ECEF differences
 #: before/after and the corrected target from radar A and B (m), ships' latitude/longitude (deg)
-SERIES_FIELDS = {"time": 1, "x": 12, "sigma": 12, "raw_diff": 3, "corrected_diff": 3, "a_ecef": 3, "b_ecef": 3, "nav_deg": 4}
+SERIES_FIELDS = {
+    "time": 1,
+    "x": 12,
+    "sigma": 12,
+    "raw_diff": 3,
+    "corrected_diff": 3,
+    "a_ecef": 3,
+    "b_ecef": 3,
+    "nav_deg": 4,
+}
 #: the columns of an 18-value contract row that hold a_lat, a_lon, b_lat, b_lon (rad)
 NAV_SLOTS = [SENSOR_ROW[s].start + SENSOR_COLUMNS.index(k) for s in ("a", "b") for k in ("lat", "lon")]
 
@@ -48,9 +57,17 @@ class PlotSeries:
         k = len(time)
         ordinals = np.arange(self.n, self.n + k)
         keep = ordinals % self.step == 0
-        kept = {"time": time[keep], "x": x[keep], "sigma": np.sqrt(np.einsum("kii->ki", P[keep])),
-                "raw_diff": raw_diff[keep], "corrected_diff": corrected_diff[keep], "a_ecef": a_ecef[keep],
-                "b_ecef": b_ecef[keep], "nav_deg": np.degrees(rows[keep][:, NAV_SLOTS]), "_k": ordinals[keep]}
+        kept = {
+            "time": time[keep],
+            "x": x[keep],
+            "sigma": np.sqrt(np.einsum("kii->ki", P[keep])),
+            "raw_diff": raw_diff[keep],
+            "corrected_diff": corrected_diff[keep],
+            "a_ecef": a_ecef[keep],
+            "b_ecef": b_ecef[keep],
+            "nav_deg": np.degrees(rows[keep][:, NAV_SLOTS]),
+            "_k": ordinals[keep],
+        }
         for name, values in kept.items():
             self._parts[name].append(np.array(values, dtype=float if name != "_k" else np.int64))
         self.n += k
@@ -65,7 +82,9 @@ class PlotSeries:
 
     def arrays(self) -> dict[str, np.ndarray]:
         """The kept rows: one (M, width) array per :data:`SERIES_FIELDS` name (``time``: (M,))."""
-        out = {name: np.concatenate(self._parts[name]) if self._parts[name] else np.empty((0, w))
-               for name, w in SERIES_FIELDS.items()}
+        out = {
+            name: np.concatenate(self._parts[name]) if self._parts[name] else np.empty((0, w))
+            for name, w in SERIES_FIELDS.items()
+        }
         out["time"] = out["time"].reshape(-1)
         return out

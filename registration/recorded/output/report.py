@@ -10,8 +10,8 @@ from registration.core.consistency import ConsistencyReport
 from registration.core.observability import observability_report
 from registration.online.contract import STATE_LABELS, STATE_NAMES, STATE_UNITS
 from registration.online.result import estimate_rows
-from registration.recorded.run.options import RunOptions
 from registration.recorded.output.outputs import output_paths
+from registration.recorded.run.options import RunOptions
 from registration.recorded.run.plan import RunPlan, Table
 from registration.recorded.run.runstate import RunState
 
@@ -30,26 +30,43 @@ def summary_consistency(summary: dict) -> ConsistencyReport | None:
     return ConsistencyReport.from_mean(summary["mean_nis"], accepted, NIS_DOF, "NIS")
 
 
-def build_summary(table: Table, plan: RunPlan, state: RunState, options: RunOptions, elapsed_s: float,
-                  warnings: list[str] = ()) -> dict:
+def build_summary(
+    table: Table,
+    plan: RunPlan,
+    state: RunState,
+    options: RunOptions,
+    elapsed_s: float,
+    warnings: list[str] = (),
+) -> dict:
     """The summary dict of a finished run that took ``elapsed_s`` seconds; ``warnings``: about its inputs."""
     final = options.observability == "final"
     info = state.obs_info if final else state.registrar.info
-    report = observability_report(info, np.array(options.config.prior_sigma), STATE_NAMES, STATE_LABELS, STATE_UNITS)
+    report = observability_report(
+        info, np.array(options.config.prior_sigma), STATE_NAMES, STATE_LABELS, STATE_UNITS
+    )
     accepted = state.rows_accepted
     summary = {
         "table": table.label,
         "state_names": list(STATE_NAMES),
         "config": options.config.to_json(),
         "options": _options_json(options),
-        "rows": {"read": state.rows_read, "accepted": accepted, "rejected": sum(state.rejected.values()),
-                 "rejected_by_reason": dict(sorted(state.rejected.items())), "used_for_observability": state.obs_used},
+        "rows": {
+            "read": state.rows_read,
+            "accepted": accepted,
+            "rejected": sum(state.rejected.values()),
+            "rejected_by_reason": dict(sorted(state.rejected.items())),
+            "used_for_observability": state.obs_used,
+        },
         "time_span_s": [state.first_time, state.last_time],
         "before": state.raw.summary(),
         "after": state.corrected.summary(),
         "estimates": _final_estimates(state, report),
-        "observability": {**report.to_json(), "information": "at the final estimate (second pass)" if final
-                          else "accumulated by the filter at its linearisation points"},
+        "observability": {
+            **report.to_json(),
+            "information": "at the final estimate (second pass)"
+            if final
+            else "accumulated by the filter at its linearisation points",
+        },
         "mean_nis": state.nis_sum / accepted if accepted else None,
         "outputs": {k: str(p) for k, p in output_paths(options).items()},
         "form": plan.form,
@@ -66,9 +83,15 @@ def build_summary(table: Table, plan: RunPlan, state: RunState, options: RunOpti
 
 
 def _options_json(options: RunOptions) -> dict:
-    return {"on_bad_row": options.on_bad_row, "format": options.out_format, "chunk_rows": options.chunk_rows,
-            "block_rows": options.block_rows, "checkpoint": None if options.checkpoint is None else str(options.checkpoint),
-            "checkpoint_every": options.checkpoint_every, "observability": options.observability}
+    return {
+        "on_bad_row": options.on_bad_row,
+        "format": options.out_format,
+        "chunk_rows": options.chunk_rows,
+        "block_rows": options.block_rows,
+        "checkpoint": None if options.checkpoint is None else str(options.checkpoint),
+        "checkpoint_every": options.checkpoint_every,
+        "observability": options.observability,
+    }
 
 
 def _final_estimates(state: RunState, report) -> list[dict]:

@@ -29,7 +29,9 @@ class CsvAppender:
     the file to that length (refusing when the file is shorter: rows would be missing).
     """
 
-    def __init__(self, path, columns: list[str], *, resume: tuple[int, int] | None = None, keep_existing: bool = False):
+    def __init__(
+        self, path, columns: list[str], *, resume: tuple[int, int] | None = None, keep_existing: bool = False
+    ):
         self.path = Path(path)
         self.columns = list(columns)
         header = (",".join(_csv_quote(c) for c in self.columns) + "\n").encode()
@@ -63,8 +65,11 @@ class CsvAppender:
         if not len(frame):
             return
         buf = io.BytesIO()
-        pacsv.write_csv(pa.Table.from_pandas(frame, preserve_index=False), buf,
-                        write_options=pacsv.WriteOptions(include_header=False))
+        pacsv.write_csv(
+            pa.Table.from_pandas(frame, preserve_index=False),
+            buf,
+            write_options=pacsv.WriteOptions(include_header=False),
+        )
         self._write(buf.getvalue(), len(frame))
 
     def append_rows(self, rows: list[list]) -> None:
@@ -119,7 +124,9 @@ class PartsWriter:
             present = {p.name for p in self.path.glob("part-*.parquet")}
             missing = [self._name(i) for i in range(self.size) if self._name(i) not in present]
             if missing:
-                raise CheckpointError(f"{self.path}: part(s) {missing[:3]} recorded by the checkpoint are missing; delete the checkpoint to start over")
+                raise CheckpointError(
+                    f"{self.path}: part(s) {missing[:3]} recorded by the checkpoint are missing; delete the checkpoint to start over"
+                )
             for name in present:
                 if int(name[5:11]) >= self.size:
                     (self.path / name).unlink()

@@ -18,15 +18,20 @@ import os
 import shutil
 from pathlib import Path
 
-from registration.recorded.reading.columns import PAIRED_COLUMNS, REJECTED_COLUMNS, SYNC_COLUMNS, UNPAIRED_COLUMNS
-from registration.recorded.reading.formats import scan_file
-from registration.recorded.run.options import RunOptions
 from registration.io.output.outfolder import RunFolder
 from registration.recorded.output.outputs import rejected_rows
-from registration.recorded.pairing.pairs import Pairer
-from registration.recorded.run.plan import RunPlan, Table, fingerprint, table_rows
-from registration.recorded.reading.sources import plan_sources
 from registration.recorded.output.writers import CsvAppender, ParquetFileWriter, write_json_atomic
+from registration.recorded.pairing.pairs import Pairer
+from registration.recorded.reading.columns import (
+    PAIRED_COLUMNS,
+    REJECTED_COLUMNS,
+    SYNC_COLUMNS,
+    UNPAIRED_COLUMNS,
+)
+from registration.recorded.reading.formats import scan_file
+from registration.recorded.reading.sources import plan_sources
+from registration.recorded.run.options import RunOptions
+from registration.recorded.run.plan import RunPlan, Table, fingerprint, table_rows
 
 __all__ = ["pair_inputs"]
 
@@ -44,17 +49,29 @@ def pair_inputs(plan: RunPlan, options: RunOptions) -> Table:
         options.message(f"registration register: reusing the pairing in {folder.final(paired)}")
         return Table(paired, meta["report"]["paired"], meta["report"], folder.final(paired))
     if plan.resume is not None:
-        options.message("registration register: the pairing stage is redone (its result was missing or changed)")
+        options.message(
+            "registration register: the pairing stage is redone (its result was missing or changed)"
+        )
     tmp = paired.with_name(paired.name + ".partial")
     report = _pair_into(tmp, plan, options)
     os.replace(tmp, paired)
     rejected = folder.path / "rejected.csv"
-    write_json_atomic(meta_path, {"fingerprint": fp, "paired_sha256": scan_file(paired)[0], "report": report,
-                                  "rejected_size": rejected.stat().st_size, "rejected_sha256": scan_file(rejected)[0],
-                                  "unpaired_sha256": scan_file(folder.path / "unpaired.csv")[0]})
-    options.message(f"registration register: paired {report['paired']} of {report['instants']} instants "
-                    f"({report['exact']} exact, {report['interpolated']} interpolated, {report['unpaired']} unpaired) "
-                    f"into {folder.final(paired)}")
+    write_json_atomic(
+        meta_path,
+        {
+            "fingerprint": fp,
+            "paired_sha256": scan_file(paired)[0],
+            "report": report,
+            "rejected_size": rejected.stat().st_size,
+            "rejected_sha256": scan_file(rejected)[0],
+            "unpaired_sha256": scan_file(folder.path / "unpaired.csv")[0],
+        },
+    )
+    options.message(
+        f"registration register: paired {report['paired']} of {report['instants']} instants "
+        f"({report['exact']} exact, {report['interpolated']} interpolated, {report['unpaired']} unpaired) "
+        f"into {folder.final(paired)}"
+    )
     return Table(paired, report["paired"], report, folder.final(paired))
 
 
@@ -66,7 +83,11 @@ def _published_meta(paired: Path, meta_path: Path, fp: str) -> dict | None:
         meta = json.loads(meta_path.read_text())
     except json.JSONDecodeError:
         meta = {}
-    if isinstance(meta, dict) and meta.get("fingerprint") == fp and meta.get("paired_sha256") == scan_file(paired)[0]:
+    if (
+        isinstance(meta, dict)
+        and meta.get("fingerprint") == fp
+        and meta.get("paired_sha256") == scan_file(paired)[0]
+    ):
         return meta
     return None
 
@@ -80,7 +101,10 @@ def _take_over(folder: RunFolder, name: str, fp: str) -> dict | None:
         return None
     if scan_file(out / "unpaired.csv")[0] != meta["unpaired_sha256"]:
         return None
-    if _copy_prefix(out / "rejected.csv", work / "rejected.csv", meta["rejected_size"]) != meta["rejected_sha256"]:
+    if (
+        _copy_prefix(out / "rejected.csv", work / "rejected.csv", meta["rejected_size"])
+        != meta["rejected_sha256"]
+    ):
         (work / "rejected.csv").unlink(missing_ok=True)
         return None
     shutil.copyfile(out / "unpaired.csv", work / "unpaired.csv")
@@ -116,7 +140,11 @@ def _pair_into(tmp: Path, plan: RunPlan, options: RunOptions) -> dict:
     unpaired = CsvAppender(plan.folder.path / "unpaired.csv", UNPAIRED_COLUMNS)
     ref = next(s for s in sources if s.plots_of == plan.pairing.pair_at)
     bar = options.progress_bar(table_rows(ref.path, plan.newlines(ref.path)), 0, "pairing")
-    table = CsvAppender(tmp, PAIRED_COLUMNS) if options.out_format == "csv" else ParquetFileWriter(tmp, SYNC_COLUMNS)
+    table = (
+        CsvAppender(tmp, PAIRED_COLUMNS)
+        if options.out_format == "csv"
+        else ParquetFileWriter(tmp, SYNC_COLUMNS)
+    )
     pairer = Pairer(sources, plan.pairing, chunk_rows=options.block_rows, mode=options.on_bad_row)
     try:
         for block in pairer.blocks():

@@ -37,9 +37,9 @@ from registration.core.alignment import REASON_EXTRAPOLATION
 from registration.online.contract import N_ROW, ROW_COLUMNS, SENSOR_ROW, SENSORS
 from registration.recorded.reading.columns import NAV_KINDS, PLOT_KINDS
 from registration.recorded.reading.formats import to_file_frame
-from registration.recorded.run.options import PairingOptions
 from registration.recorded.reading.sources import Source
 from registration.recorded.reading.streams import REASON_GAP, SampleStream
+from registration.recorded.run.options import PairingOptions
 
 __all__ = ["PairedBlock", "Pairer"]
 
@@ -80,7 +80,14 @@ class Pairer:
         self._others = [s for s in self._streams if s is not self._ref]
         self._columns = self._plan_columns()
         self._need = options.degree + 2
-        self._counts = {"instants": 0, "paired": 0, "exact": 0, "interpolated": 0, "unpaired": 0, "unpaired_reasons": {}}
+        self._counts = {
+            "instants": 0,
+            "paired": 0,
+            "exact": 0,
+            "interpolated": 0,
+            "unpaired": 0,
+            "unpaired_reasons": {},
+        }
 
     def _plan_columns(self) -> list[_Column]:
         """For each sensor: the stream and columns of its navigation, then of its plot."""
@@ -88,12 +95,30 @@ class Pairer:
         for sensor in SENSORS:
             base = SENSOR_ROW[sensor].start
             nav = next(s for s in self._streams if sensor in s.source.nav_of)
-            out.append(_Column(nav, nav.source.columns_for(sensor, NAV_KINDS), [i for i, k in enumerate(NAV_KINDS) if k in _ANGLE_KINDS],
-                               slice(base, base + len(NAV_KINDS)), False))
-            plot = next(s for s in self._streams if len(s.source.columns_for(sensor, PLOT_KINDS)) == len(PLOT_KINDS)
-                        and (sensor == s.source.plots_of or sensor in s.source.nav_of))
-            out.append(_Column(plot, plot.source.columns_for(sensor, PLOT_KINDS), [i for i, k in enumerate(PLOT_KINDS) if k in _ANGLE_KINDS],
-                               slice(base + len(NAV_KINDS), base + len(NAV_KINDS) + len(PLOT_KINDS)), sensor != self.options.pair_at))
+            out.append(
+                _Column(
+                    nav,
+                    nav.source.columns_for(sensor, NAV_KINDS),
+                    [i for i, k in enumerate(NAV_KINDS) if k in _ANGLE_KINDS],
+                    slice(base, base + len(NAV_KINDS)),
+                    False,
+                )
+            )
+            plot = next(
+                s
+                for s in self._streams
+                if len(s.source.columns_for(sensor, PLOT_KINDS)) == len(PLOT_KINDS)
+                and (sensor == s.source.plots_of or sensor in s.source.nav_of)
+            )
+            out.append(
+                _Column(
+                    plot,
+                    plot.source.columns_for(sensor, PLOT_KINDS),
+                    [i for i, k in enumerate(PLOT_KINDS) if k in _ANGLE_KINDS],
+                    slice(base + len(NAV_KINDS), base + len(NAV_KINDS) + len(PLOT_KINDS)),
+                    sensor != self.options.pair_at,
+                )
+            )
         return out
 
     def blocks(self) -> Iterator[PairedBlock]:
@@ -177,6 +202,13 @@ class Pairer:
             **self._counts,
             "extrapolation_reason": REASON_EXTRAPOLATION,
             "max_gap_s": {s.name: s.max_gap for s in streams},
-            "files": {str(s.source.path): {"role": s.name, "rows": s.n_read, "accepted": s.n_accepted,
-                                           "rejected": s.n_read - s.n_accepted} for s in streams},
+            "files": {
+                str(s.source.path): {
+                    "role": s.name,
+                    "rows": s.n_read,
+                    "accepted": s.n_accepted,
+                    "rejected": s.n_read - s.n_accepted,
+                }
+                for s in streams
+            },
         }

@@ -24,13 +24,33 @@ import numpy as np
 from registration.online.contract import DATA_COLUMNS, IS_ANGLE, SENSOR_COLUMNS, STATE_NAMES
 
 __all__ = [
-    "Field", "TIME_FIELD", "NAV_KINDS", "PLOT_KINDS", "sensor_fields", "SYNC_FIELDS", "SYNC_COLUMNS",
-    "PLOT_FIELDS", "NAV_FIELDS", "ESTIMATE_COLUMNS", "POSITION_COLUMNS", "REJECTED_COLUMNS", "UNPAIRED_COLUMNS",
+    "Field",
+    "TIME_FIELD",
+    "NAV_KINDS",
+    "PLOT_KINDS",
+    "sensor_fields",
+    "SYNC_FIELDS",
+    "SYNC_COLUMNS",
+    "PLOT_FIELDS",
+    "NAV_FIELDS",
+    "ESTIMATE_COLUMNS",
+    "POSITION_COLUMNS",
+    "REJECTED_COLUMNS",
+    "UNPAIRED_COLUMNS",
     "PAIRED_COLUMNS",
 ]
 
-_UNIT = {"lat": "deg", "lon": "deg", "alt": "m", "heading": "deg", "pitch": "deg", "roll": "deg",
-         "range": "m", "bearing": "deg", "elevation": "deg"}
+_UNIT = {
+    "lat": "deg",
+    "lon": "deg",
+    "alt": "m",
+    "heading": "deg",
+    "pitch": "deg",
+    "roll": "deg",
+    "range": "m",
+    "bearing": "deg",
+    "elevation": "deg",
+}
 _MEANING = {
     "lat": "geodetic latitude of the radar antenna (WGS-84), north positive",
     "lon": "geodetic longitude of the radar antenna, east positive",
@@ -67,7 +87,11 @@ class Field:
 
     @property
     def meaning(self) -> str:
-        return "timestamp, seconds (any epoch; strictly increasing)" if self.kind == "time" else _MEANING[self.kind]
+        return (
+            "timestamp, seconds (any epoch; strictly increasing)"
+            if self.kind == "time"
+            else _MEANING[self.kind]
+        )
 
 
 TIME_FIELD = Field("time_s", "time", "", "s")
@@ -89,12 +113,32 @@ NAV_FIELDS = sensor_fields("", NAV_KINDS)
 assert tuple(f.contract_name for f in SYNC_FIELDS) == DATA_COLUMNS
 
 #: estimates.csv|parquet: input row, time (s), each state and its 1 sigma (deg or m), the NIS.
-ESTIMATE_COLUMNS = ["row", "time_s"] + [
-    c for i, n in enumerate(STATE_NAMES) for c in (f"{n}_{'deg' if IS_ANGLE[i] else 'm'}", f"{n}_sigma_{'deg' if IS_ANGLE[i] else 'm'}")
-] + ["nis"]
+ESTIMATE_COLUMNS = (
+    ["row", "time_s"]
+    + [
+        c
+        for i, n in enumerate(STATE_NAMES)
+        for c in (f"{n}_{'deg' if IS_ANGLE[i] else 'm'}", f"{n}_sigma_{'deg' if IS_ANGLE[i] else 'm'}")
+    ]
+    + ["nis"]
+)
 #: positions.csv|parquet: corrected target ECEF from radar A and B, raw and corrected A - B (m).
-POSITION_COLUMNS = ["row", "time_s", "a_ecef_x_m", "a_ecef_y_m", "a_ecef_z_m", "b_ecef_x_m", "b_ecef_y_m", "b_ecef_z_m",
-                    "diff_raw_x_m", "diff_raw_y_m", "diff_raw_z_m", "diff_x_m", "diff_y_m", "diff_z_m"]
+POSITION_COLUMNS = [
+    "row",
+    "time_s",
+    "a_ecef_x_m",
+    "a_ecef_y_m",
+    "a_ecef_z_m",
+    "b_ecef_x_m",
+    "b_ecef_y_m",
+    "b_ecef_z_m",
+    "diff_raw_x_m",
+    "diff_raw_y_m",
+    "diff_raw_z_m",
+    "diff_x_m",
+    "diff_y_m",
+    "diff_z_m",
+]
 #: rejected.csv: one bad input row with its reason.
 REJECTED_COLUMNS = ["file", "row", "column", "reason_code", "reason", "values"]
 #: unpaired.csv: an instant of the asynchronous form that could not be paired, with its reason.

@@ -22,14 +22,22 @@ from typing import Iterator, Mapping
 
 import numpy as np
 
+from registration.io.files.csvrows import SHAPE_COLUMN, read_csv_blocks
 from registration.io.files.tablefile import FileFormatError, file_format, write_frame
 from registration.recorded.reading.columns import SYNC_COLUMNS, SYNC_FIELDS
-from registration.io.files.csvrows import SHAPE_COLUMN, read_csv_blocks
 from registration.recorded.reading.rowcheck import check_frame, sync_layout
 
 __all__ = [
-    "file_format", "to_file_frame", "from_file_frame", "write_table", "write_frame", "read_table", "read_columns",
-    "count_rows", "iter_frames", "scan_file",
+    "file_format",
+    "to_file_frame",
+    "from_file_frame",
+    "write_table",
+    "write_frame",
+    "read_table",
+    "read_columns",
+    "count_rows",
+    "iter_frames",
+    "scan_file",
 ]
 
 
@@ -40,7 +48,9 @@ def to_file_frame(data: Mapping, fields=SYNC_FIELDS):
 
     missing = [f.contract_name for f in fields if f.contract_name not in data]
     if missing:
-        raise ValueError(f"missing column(s) {missing}; expected {[f.contract_name for f in fields]} (SI units, radians)")
+        raise ValueError(
+            f"missing column(s) {missing}; expected {[f.contract_name for f in fields]} (SI units, radians)"
+        )
     out = {}
     for f in fields:
         v = np.asarray(data[f.contract_name], dtype=np.float64)
@@ -89,7 +99,11 @@ def read_table(path, *, validate: bool = True) -> dict:
 
     frames = list(iter_frames(path, SYNC_COLUMNS, chunk_rows=1 << 20))
 
-    frame = pd.concat([f for _, f in frames], ignore_index=True) if frames else pd.DataFrame(columns=list(SYNC_COLUMNS))
+    frame = (
+        pd.concat([f for _, f in frames], ignore_index=True)
+        if frames
+        else pd.DataFrame(columns=list(SYNC_COLUMNS))
+    )
     if validate:
         check_frame(frame, sync_layout(), str(path), first_row=0, mode="stop")
     return from_file_frame(frame)
@@ -164,7 +178,9 @@ def iter_frames(path, columns, chunk_rows: int, start_row: int = 0) -> Iterator[
                 base += md.row_group(g).num_rows
                 g += 1
             names = [n for n in pf.schema_arrow.names if n.strip() in wanted]
-            batches = pf.iter_batches(batch_size=chunk_rows, row_groups=list(range(g, md.num_row_groups)), columns=names)
+            batches = pf.iter_batches(
+                batch_size=chunk_rows, row_groups=list(range(g, md.num_row_groups)), columns=names
+            )
             source = (b.to_pandas() for b in batches)
         yield from _rechunk(source, base, start_row, chunk_rows, path)
     except FileFormatError:
@@ -205,15 +221,23 @@ def _rechunk(source, base: int, start_row: int, chunk_rows: int, path) -> Iterat
         have += len(frame)
         pos += len(frame)
         while have >= chunk_rows:
-            block = pd.concat(pending, ignore_index=True) if len(pending) > 1 else pending[0].reset_index(drop=True)
+            block = (
+                pd.concat(pending, ignore_index=True)
+                if len(pending) > 1
+                else pending[0].reset_index(drop=True)
+            )
             out, rest = block.iloc[:chunk_rows], block.iloc[chunk_rows:]
             first = pos - have
             yield first, out.reset_index(drop=True)
             pending, have = ([rest] if len(rest) else []), len(rest)
     if pos < start_row:
-        raise FileFormatError(f"{path}: has {pos} rows, fewer than the {start_row} already processed (was it changed?)")
+        raise FileFormatError(
+            f"{path}: has {pos} rows, fewer than the {start_row} already processed (was it changed?)"
+        )
     if have:
-        block = pd.concat(pending, ignore_index=True) if len(pending) > 1 else pending[0].reset_index(drop=True)
+        block = (
+            pd.concat(pending, ignore_index=True) if len(pending) > 1 else pending[0].reset_index(drop=True)
+        )
         yield pos - have, block
 
 

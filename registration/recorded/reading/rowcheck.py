@@ -37,13 +37,36 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from registration.online.contract import (
-    LIMITS, N_ROW, PROBLEM_NON_FINITE, PROBLEM_NON_POSITIVE, SENSOR_COLUMNS, SENSOR_ROW, SENSORS, cell_problems,
-)
-from registration.recorded.reading.columns import NAV_KINDS, PLOT_KINDS, SYNC_FIELDS, TIME_FIELD, Field, sensor_fields
 from registration.io.files.csvrows import SHAPE_COLUMN
+from registration.online.contract import (
+    LIMITS,
+    N_ROW,
+    PROBLEM_NON_FINITE,
+    PROBLEM_NON_POSITIVE,
+    SENSOR_COLUMNS,
+    SENSOR_ROW,
+    SENSORS,
+    cell_problems,
+)
+from registration.recorded.reading.columns import (
+    NAV_KINDS,
+    PLOT_KINDS,
+    SYNC_FIELDS,
+    TIME_FIELD,
+    Field,
+    sensor_fields,
+)
 
-__all__ = ["BadRowError", "Layout", "CheckedBlock", "Rejection", "check_frame", "sync_layout", "plot_layout", "nav_layout"]
+__all__ = [
+    "BadRowError",
+    "Layout",
+    "CheckedBlock",
+    "Rejection",
+    "check_frame",
+    "sync_layout",
+    "plot_layout",
+    "nav_layout",
+]
 
 _NON_NUMERIC, _MISSING = 10, 11  # file-level codes beside contract.cell_problems' 1..3
 
@@ -216,8 +239,9 @@ def _row_values(frame, i: int, columns) -> str:
     return json.dumps(out)
 
 
-def check_frame(frame, layout: Layout, file: str, *, first_row: int, mode: str = "stop",
-                last_time: float | None = None) -> CheckedBlock:
+def check_frame(
+    frame, layout: Layout, file: str, *, first_row: int, mode: str = "stop", last_time: float | None = None
+) -> CheckedBlock:
     """Validate one block of a file; see the module docstring for the rules and reasons.
 
     ``last_time``: time (s) of the last accepted row before this block (None at the start).
@@ -277,10 +301,20 @@ def check_frame(frame, layout: Layout, file: str, *, first_row: int, mode: str =
         else:
             column = TIME_FIELD.file_name
             if t[i] == prev[i]:
-                code, reason = "time_duplicate", f"time {_fmt(t[i])} s is duplicated: the previous accepted row has the same time"
+                code, reason = (
+                    "time_duplicate",
+                    f"time {_fmt(t[i])} s is duplicated: the previous accepted row has the same time",
+                )
             else:
-                code, reason = "time_backwards", f"time {_fmt(t[i])} s goes backwards: the previous accepted row is at {_fmt(prev[i])} s"
+                code, reason = (
+                    "time_backwards",
+                    f"time {_fmt(t[i])} s goes backwards: the previous accepted row is at {_fmt(prev[i])} s",
+                )
         if mode == "stop":
             raise BadRowError(file, first_row + int(i), column, code, reason)
-        rejections.append(Rejection(first_row + int(i), column, code, reason, _row_values(frame, int(i), layout.columns)))
-    return CheckedBlock(first_row=first_row, values=values, accepted=accepted, rejections=rejections, last_time=new_last)
+        rejections.append(
+            Rejection(first_row + int(i), column, code, reason, _row_values(frame, int(i), layout.columns))
+        )
+    return CheckedBlock(
+        first_row=first_row, values=values, accepted=accepted, rejections=rejections, last_time=new_last
+    )

@@ -13,8 +13,8 @@ from pathlib import Path
 
 from registration.recorded.reading.columns import NAV_FIELDS
 from registration.recorded.reading.formats import read_columns
-from registration.recorded.run.options import PairingOptions
 from registration.recorded.reading.rowcheck import Layout, nav_layout, plot_layout
+from registration.recorded.run.options import PairingOptions
 
 __all__ = ["Source", "plan_sources"]
 
@@ -41,7 +41,11 @@ class Source:
 
 
 def _sensor_of_plot_file(cols: set[str]) -> str | None:
-    has = [s for s in ("a", "b") if any(f"{s}_{k}_{u}" in cols for k, u in (("range", "m"), ("bearing", "deg"), ("elevation", "deg")))]
+    has = [
+        s
+        for s in ("a", "b")
+        if any(f"{s}_{k}_{u}" in cols for k, u in (("range", "m"), ("bearing", "deg"), ("elevation", "deg")))
+    ]
     return has[0] if len(has) == 1 else None
 
 
@@ -55,24 +59,43 @@ def _plot_sensors(inputs: list[Path], cols: list[set[str]]) -> list[str]:
     elif sensors[1] is None:
         sensors[1] = "a" if sensors[0] == "b" else "b"
     if sensors[0] == sensors[1]:
-        raise ValueError(f"both plot files {inputs[0]} and {inputs[1]} hold radar {sensors[0].upper()}'s plots (column prefix)")
+        raise ValueError(
+            f"both plot files {inputs[0]} and {inputs[1]} hold radar {sensors[0].upper()}'s plots (column prefix)"
+        )
     return sensors
 
 
 def _plot_source(path: Path, cols: set[str], sensor: str, options: PairingOptions) -> Source:
-    prefixed = f"{sensor}_range_m" in cols or f"{sensor}_bearing_deg" in cols or f"{sensor}_elevation_deg" in cols
+    prefixed = (
+        f"{sensor}_range_m" in cols or f"{sensor}_bearing_deg" in cols or f"{sensor}_elevation_deg" in cols
+    )
     lead = f"{sensor}_" if prefixed else ""
     with_nav = any(f"{lead}{f.file_name}" in cols for f in NAV_FIELDS)
-    return Source(path, plot_layout(sensor, prefixed, with_nav), options.clock_offset(sensor), sensor, (sensor,) if with_nav else (),
-                  f"plots of radar {sensor.upper()}" + (" with navigation" if with_nav else ""))
+    return Source(
+        path,
+        plot_layout(sensor, prefixed, with_nav),
+        options.clock_offset(sensor),
+        sensor,
+        (sensor,) if with_nav else (),
+        f"plots of radar {sensor.upper()}" + (" with navigation" if with_nav else ""),
+    )
 
 
 def _nav_source(path: Path) -> Source:
     cols = set(read_columns(path))
     ships = tuple(s for s in ("a", "b") if any(f"{s}_{f.file_name}" in cols for f in NAV_FIELDS))
     if not ships:
-        raise ValueError(f"navigation file {path}: no navigation columns; expected time_s and a_lat_deg ... a_roll_deg and/or b_lat_deg ... b_roll_deg")
-    return Source(path, nav_layout(ships), 0.0, None, ships, "navigation of ship(s) " + ", ".join(x.upper() for x in ships))
+        raise ValueError(
+            f"navigation file {path}: no navigation columns; expected time_s and a_lat_deg ... a_roll_deg and/or b_lat_deg ... b_roll_deg"
+        )
+    return Source(
+        path,
+        nav_layout(ships),
+        0.0,
+        None,
+        ships,
+        "navigation of ship(s) " + ", ".join(x.upper() for x in ships),
+    )
 
 
 def plan_sources(inputs: list[Path], navs: list[Path], options: PairingOptions) -> list[Source]:
@@ -86,7 +109,11 @@ def plan_sources(inputs: list[Path], navs: list[Path], options: PairingOptions) 
     for s in ("a", "b"):
         given = [src for src in sources if s in src.nav_of]
         if not given:
-            raise ValueError(f"no navigation for ship {s.upper()}: give it in its plot file ({', '.join(f.file_name for f in NAV_FIELDS)}) or in a --nav file (prefixed {s}_)")
+            raise ValueError(
+                f"no navigation for ship {s.upper()}: give it in its plot file ({', '.join(f.file_name for f in NAV_FIELDS)}) or in a --nav file (prefixed {s}_)"
+            )
         if len(given) > 1:
-            raise ValueError(f"navigation of ship {s.upper()} is given twice ({given[0].path} and {given[1].path}); give it once")
+            raise ValueError(
+                f"navigation of ship {s.upper()} is given twice ({given[0].path} and {given[1].path}); give it once"
+            )
     return sorted(sources[:2], key=lambda src: src.plots_of) + sources[2:]

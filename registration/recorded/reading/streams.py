@@ -13,9 +13,9 @@ import numpy as np
 
 from registration.core.alignment import align
 from registration.recorded.reading.formats import iter_frames
-from registration.recorded.run.options import PairingOptions
 from registration.recorded.reading.rowcheck import check_frame
 from registration.recorded.reading.sources import Source
+from registration.recorded.run.options import PairingOptions
 
 __all__ = ["SampleStream", "REASON_GAP", "REASON_NO_SAMPLES"]
 
@@ -109,8 +109,16 @@ class SampleStream:
         todo = np.flatnonzero(~exact)
         if todo.size:
             d = options.degree
-            fit = align(self.t, self.y[:, cols], tau[todo], degree=d, n_nearest=d + 1,
-                        max_extrapolation_s=options.max_extrapolation_s, angle_columns=angle_cols, strict=False)
+            fit = align(
+                self.t,
+                self.y[:, cols],
+                tau[todo],
+                degree=d,
+                n_nearest=d + 1,
+                max_extrapolation_s=options.max_extrapolation_s,
+                angle_columns=angle_cols,
+                strict=False,
+            )
             vals[todo] = fit.y
             reason[todo] = fit.reason
             self._mark_gaps(i[todo], inext[todo], iprev[todo], reason, todo)

@@ -5,9 +5,9 @@ from __future__ import annotations
 from pathlib import Path
 
 from registration.recorded.reading.formats import iter_frames
-from registration.recorded.run.options import PairingOptions, RunOptions
 from registration.recorded.reading.rowcheck import Layout, check_frame, sync_layout
 from registration.recorded.reading.sources import plan_sources
+from registration.recorded.run.options import PairingOptions, RunOptions
 
 __all__ = ["validate_files"]
 
@@ -24,10 +24,14 @@ def validate_files(inputs, options: RunOptions, max_listed: int = 20) -> dict:
     if len(inputs) == 1:
         jobs = [(inputs[0], sync_layout())]
     else:
-        jobs = [(src.path, src.layout) for src in plan_sources(inputs, navs, options.pairing or PairingOptions())]
+        jobs = [
+            (src.path, src.layout) for src in plan_sources(inputs, navs, options.pairing or PairingOptions())
+        ]
     report = {"files": {}, "problems": []}
     for path, layout in jobs:
-        report["files"][str(path)] = _validate_file(path, layout, options.chunk_rows, report["problems"], max_listed)
+        report["files"][str(path)] = _validate_file(
+            path, layout, options.chunk_rows, report["problems"], max_listed
+        )
     return report
 
 
@@ -42,5 +46,7 @@ def _validate_file(path: Path, layout: Layout, chunk_rows: int, problems: list, 
         for r in blk.rejections:
             by[r.code] = by.get(r.code, 0) + 1
             if len(problems) < max_listed:
-                problems.append({"file": str(path), "row": r.row, "column": r.column, "code": r.code, "reason": r.reason})
+                problems.append(
+                    {"file": str(path), "row": r.row, "column": r.column, "code": r.code, "reason": r.reason}
+                )
     return {"layout": layout.name, "rows": rows, "accepted": acc, "rejected_by_reason": by}

@@ -13,17 +13,23 @@ from __future__ import annotations
 
 import numpy as np
 
+from registration.io.files.tablefile import FileFormatError, NoValidRowsError
 from registration.online.contract import correct_rows
 from registration.online.filter import OnlineRegistrar
 from registration.online.information import information_at_estimate, target_positions
-from registration.io.files.tablefile import FileFormatError, NoValidRowsError
+from registration.recorded.output.outputs import Outputs, estimate_frame, position_frame, rejected_rows
+from registration.recorded.output.plotseries import PLOT_POINTS, PlotSeries
 from registration.recorded.reading.columns import SYNC_COLUMNS
 from registration.recorded.reading.formats import iter_frames
+from registration.recorded.reading.rowcheck import (
+    BadRowError,
+    CheckedBlock,
+    Rejection,
+    check_frame,
+    sync_layout,
+)
 from registration.recorded.run.options import RunOptions
-from registration.recorded.output.outputs import Outputs, estimate_frame, position_frame, rejected_rows
 from registration.recorded.run.plan import RunPlan, Table
-from registration.recorded.output.plotseries import PLOT_POINTS, PlotSeries
-from registration.recorded.reading.rowcheck import BadRowError, CheckedBlock, Rejection, check_frame, sync_layout
 from registration.recorded.run.runstate import Checkpointer, RunState
 
 __all__ = ["filter_table"]
@@ -59,33 +65,52 @@ def _nothing_to_register(table: Table, plan: RunPlan, state: RunState, options: 
     if state.rows_read == 0 and plan.form == "synchronous":
         return FileFormatError(f"{table.label}: no data rows (the file holds only a header)")
     if state.rows_read == 0:
-        return NoValidRowsError(f"no instant of the two plot files could be paired, so there is nothing to register; "
-                                f"see {options.out / 'unpaired.csv'} and {options.out / 'rejected.csv'}")
+        return NoValidRowsError(
+            f"no instant of the two plot files could be paired, so there is nothing to register; "
+            f"see {options.out / 'unpaired.csv'} and {options.out / 'rejected.csv'}"
+        )
     codes = ", ".join(f"{n} {code}" for code, n in sorted(state.rejected.items()))
-    return NoValidRowsError(f"{table.label}: no valid rows to register: all {state.rows_read} rows rejected ({codes}), the "
-                            f"first at {state.first_rejection}; see {options.out / 'rejected.csv'}")
+    return NoValidRowsError(
+        f"{table.label}: no valid rows to register: all {state.rows_read} rows rejected ({codes}), the "
+        f"first at {state.first_rejection}; see {options.out / 'rejected.csv'}"
+    )
 
 
 def _start(plan: RunPlan, options: RunOptions) -> tuple[RunState, Outputs]:
     """A new state and fresh outputs, or the checkpoint's state and outputs cut back to its marks."""
     if plan.resume is None:
-        state = RunState(OnlineRegistrar(options.config), plot_series=PlotSeries(PLOT_POINTS) if options.plots else None)
+        state = RunState(
+            OnlineRegistrar(options.config), plot_series=PlotSeries(PLOT_POINTS) if options.plots else None
+        )
         return state, Outputs(options, plan.folder, keep_rejected=plan.form == "asynchronous")
     payload = plan.resume
-    options.message(f"registration register: resuming from checkpoint {options.checkpoint} at row "
-                    f"{payload['state']['rows_done']} (phase {payload['phase']})")
+    options.message(
+        f"registration register: resuming from checkpoint {options.checkpoint} at row "
+        f"{payload['state']['rows_done']} (phase {payload['phase']})"
+    )
     state = RunState.from_checkpoint(payload, options.config)
     return state, Outputs(options, plan.folder, payload["outputs"])
 
 
-def _filter_pass(table: Table, state: RunState, outputs: Outputs, options: RunOptions, saver: Checkpointer) -> None:
+def _filter_pass(
+    table: Table, state: RunState, outputs: Outputs, options: RunOptions, saver: Checkpointer
+) -> None:
     """Pass 1 from ``state.filter_pass`` to the end of the table."""
     layout, where = sync_layout(), state.filter_pass
     saver.start_pass(where.rows_done)
     bar = options.progress_bar(table.rows, where.rows_done, "registering")
     try:
-        for first, frame in iter_frames(table.path, SYNC_COLUMNS, options.block_rows, start_row=where.rows_done):
-            block = check_frame(frame, layout, table.label, first_row=first, mode=options.on_bad_row, last_time=where.last_time)
+        for first, frame in iter_frames(
+            table.path, SYNC_COLUMNS, options.block_rows, start_row=where.rows_done
+        ):
+            block = check_frame(
+                frame,
+                layout,
+                table.label,
+                first_row=first,
+                mode=options.on_bad_row,
+                last_time=where.last_time,
+            )
             where.last_time = block.last_time
             rejections = list(block.rejections) + _register_block(block, table, state, outputs, options)
             outputs.rejected.append_rows(rejected_rows(table.label, sorted(rejections, key=lambda r: r.row)))
@@ -99,7 +124,9 @@ def _filter_pass(table: Table, state: RunState, outputs: Outputs, options: RunOp
         bar.close()
 
 
-def _register_block(block: CheckedBlock, table: Table, state: RunState, outputs: Outputs, options: RunOptions) -> list[Rejection]:
+def _register_block(
+    block: CheckedBlock, table: Table, state: RunState, outputs: Outputs, options: RunOptions
+) -> list[Rejection]:
     """Filter the accepted rows of one block and write them; return the rows whose step was not finite."""
     accepted = np.flatnonzero(block.accepted)
     rows, times = block.values[accepted, 1:], block.values[accepted, 0]
@@ -109,7 +136,15 @@ def _register_block(block: CheckedBlock, table: Table, state: RunState, outputs:
         result = state.registrar.update_block(rows[s:], times[s:], partial=True)
         n = result["n"]
         if n:
-            _write_registered(block.first_row + accepted[s:s + n], times[s:s + n], rows[s:s + n], result, state, outputs, options)
+            _write_registered(
+                block.first_row + accepted[s : s + n],
+                times[s : s + n],
+                rows[s : s + n],
+                result,
+                state,
+                outputs,
+                options,
+            )
         s += n
         if s < len(accepted):  # this row's step would not be finite: never committed
             row = int(block.first_row + accepted[s])
@@ -121,7 +156,9 @@ def _register_block(block: CheckedBlock, table: Table, state: RunState, outputs:
     return rejections
 
 
-def _write_registered(rows_abs, times, rows, result: dict, state: RunState, outputs: Outputs, options: RunOptions) -> None:
+def _write_registered(
+    rows_abs, times, rows, result: dict, state: RunState, outputs: Outputs, options: RunOptions
+) -> None:
     """Append the estimates and positions of registered rows (K, 18) and add them to the statistics."""
     x, t_variant = result["x"], options.config.t_variant
     outputs.estimates.append_frame(estimate_frame(rows_abs, times, x, result["P"], result["nis"]))
@@ -134,22 +171,31 @@ def _write_registered(rows_abs, times, rows, result: dict, state: RunState, outp
         state.plot_series.add(times, x, result["P"], raw_diff, cor_diff, cor_a, cor_b, rows)
 
 
-def _observability_pass(table: Table, state: RunState, outputs: Outputs, options: RunOptions, saver: Checkpointer) -> None:
+def _observability_pass(
+    table: Table, state: RunState, outputs: Outputs, options: RunOptions, saver: Checkpointer
+) -> None:
     """Pass 2: add up the information at the final estimate over the rows the filter used."""
     layout, where = sync_layout(), state.obs_pass
     x_final, config = state.registrar.x.copy(), options.config
     saver.start_pass(where.rows_done)
     bar = options.progress_bar(table.rows, where.rows_done, "observability")
     try:
-        for first, frame in iter_frames(table.path, SYNC_COLUMNS, options.block_rows, start_row=where.rows_done):
-            block = check_frame(frame, layout, table.label, first_row=first, mode="skip", last_time=where.last_time)
+        for first, frame in iter_frames(
+            table.path, SYNC_COLUMNS, options.block_rows, start_row=where.rows_done
+        ):
+            block = check_frame(
+                frame, layout, table.label, first_row=first, mode="skip", last_time=where.last_time
+            )
             where.last_time = block.last_time
             accepted = np.flatnonzero(block.accepted)
             if state.filter_rejected:
-                accepted = np.array([i for i in accepted if int(first + i) not in state.filter_rejected], dtype=np.int64)
+                accepted = np.array(
+                    [i for i in accepted if int(first + i) not in state.filter_rejected], dtype=np.int64
+                )
             if len(accepted):
-                J, used = information_at_estimate(np.ascontiguousarray(block.values[accepted, 1:]), x_final,
-                                                  config.sigma0, config.t_variant)
+                J, used = information_at_estimate(
+                    np.ascontiguousarray(block.values[accepted, 1:]), x_final, config.sigma0, config.t_variant
+                )
                 state.obs_info = state.obs_info + J
                 state.obs_used += used
             where.rows_done = first + block.n_rows

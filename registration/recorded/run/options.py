@@ -106,5 +106,14 @@ class RunOptions:
         """A tqdm bar on standard error counting rows (disabled without ``progress``)."""
         from tqdm import tqdm
 
-        return tqdm(total=total, initial=initial, desc=desc, unit="row", unit_scale=True, disable=not self.progress,
-                    file=sys.stderr, dynamic_ncols=True, mininterval=0.5)
+        return tqdm(
+            total=total,
+            initial=initial,
+            desc=desc,
+            unit="row",
+            unit_scale=True,
+            disable=not self.progress,
+            file=sys.stderr,
+            dynamic_ncols=True,
+            mininterval=0.5,
+        )

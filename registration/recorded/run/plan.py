@@ -15,11 +15,11 @@ import json
 from dataclasses import dataclass
 from pathlib import Path
 
-from registration.io.output.checkpoint import CheckpointError, load_checkpoint
 from registration.io.files.tablefile import FileFormatError, file_format
+from registration.io.output.checkpoint import CheckpointError, load_checkpoint
+from registration.io.output.outfolder import RunFolder, mark_in_place, new_run_folder, prepare_out, publish
 from registration.recorded.reading.formats import count_rows, iter_frames, read_columns, scan_file
 from registration.recorded.run.options import PairingOptions, RunOptions
-from registration.io.output.outfolder import RunFolder, mark_in_place, new_run_folder, prepare_out, publish
 
 __all__ = ["Table", "RunPlan", "plan_run", "fingerprint", "table_rows"]
 
@@ -84,7 +84,9 @@ def _check_inputs(inputs: list[Path], navs: list[Path]) -> str:
     if not inputs or len(inputs) > 2:
         raise ValueError("give one synchronous table, or two per-sensor plot files (radar A, radar B)")
     if len(inputs) == 1 and navs:
-        raise ValueError("--nav is for the asynchronous form (two plot files); a synchronous table carries its navigation")
+        raise ValueError(
+            "--nav is for the asynchronous form (two plot files); a synchronous table carries its navigation"
+        )
     for p in inputs + navs:
         file_format(p)
         if not p.is_file():
@@ -114,11 +116,17 @@ def plan_run(inputs, options: RunOptions) -> RunPlan:
     prepare_out(options.out)
     pairing = options.pairing or (PairingOptions() if form == "asynchronous" else None)
     inputs_key = {
-        "inputs": [scans[str(p)][0] for p in inputs], "nav": [scans[str(p)][0] for p in navs], "form": form,
-        "on_bad_row": options.on_bad_row, "format": options.out_format, "block_rows": options.block_rows,
+        "inputs": [scans[str(p)][0] for p in inputs],
+        "nav": [scans[str(p)][0] for p in navs],
+        "form": form,
+        "on_bad_row": options.on_bad_row,
+        "format": options.out_format,
+        "block_rows": options.block_rows,
         "pairing": pairing.to_json() if pairing else None,
     }
-    fp = fingerprint({**inputs_key, "config": options.config.to_json(), "observability": options.observability})
+    fp = fingerprint(
+        {**inputs_key, "config": options.config.to_json(), "observability": options.observability}
+    )
     plan = RunPlan(inputs, navs, form, pairing, scans, inputs_key, fp)
     if options.checkpoint is not None and Path(options.checkpoint).exists():
         plan.resume = _matching_checkpoint(options, fp)
@@ -155,7 +163,8 @@ def _resume_folder(options: RunOptions, payload: dict, fp: str) -> RunFolder:
     if path is not None and _summary_fingerprint(options.out) != fp:
         raise CheckpointError(
             f"checkpoint {options.checkpoint} continues a run whose unfinished outputs were in {path}, which no longer "
-            "exists; delete the checkpoint to start over")
+            "exists; delete the checkpoint to start over"
+        )
     folder = RunFolder(options.out, options.out)
     mark_in_place(folder, options.checkpoint)
     return folder
@@ -175,6 +184,10 @@ def _finished_summary(options: RunOptions, payload: dict) -> dict:
         publish(RunFolder(options.out, path))
     summary_path = options.out / "summary.json"
     if not summary_path.exists():
-        raise CheckpointError(f"checkpoint {options.checkpoint} says the run is complete but {summary_path} is missing; delete the checkpoint to recompute")
-    options.message(f"registration register: run already complete (checkpoint {options.checkpoint}); delete it to recompute")
+        raise CheckpointError(
+            f"checkpoint {options.checkpoint} says the run is complete but {summary_path} is missing; delete the checkpoint to recompute"
+        )
+    options.message(
+        f"registration register: run already complete (checkpoint {options.checkpoint}); delete it to recompute"
+    )
     return json.loads(summary_path.read_text())

@@ -27,16 +27,16 @@ from __future__ import annotations
 import time
 
 from registration.io.files.tablefile import NoValidRowsError
-from registration.recorded.run.filtering import filter_table
-from registration.recorded.run.options import RunOptions
 from registration.io.output.outfolder import discard, publish, records_folder
-from registration.recorded.pairing.paired import pair_inputs
-from registration.recorded.run.plan import RunPlan, plan_run
 from registration.recorded.output.plots import series_from_outputs, write_plots
 from registration.recorded.output.report import build_summary
-from registration.recorded.run.runstate import mark_done
-from registration.recorded.reading.unitcheck import input_warnings
 from registration.recorded.output.writers import write_json_atomic
+from registration.recorded.pairing.paired import pair_inputs
+from registration.recorded.reading.unitcheck import input_warnings
+from registration.recorded.run.filtering import filter_table
+from registration.recorded.run.options import RunOptions
+from registration.recorded.run.plan import RunPlan, plan_run
+from registration.recorded.run.runstate import mark_done
 
 __all__ = ["run_register"]
 
@@ -65,7 +65,9 @@ def run_register(inputs, options: RunOptions) -> dict:
             discard(plan.folder)
         raise
     if options.checkpoint is not None:
-        mark_done(options.checkpoint)  # a kill from here on: the rerun publishes the folder the checkpoint records
+        mark_done(
+            options.checkpoint
+        )  # a kill from here on: the rerun publishes the folder the checkpoint records
     publish(plan.folder)  # an interrupted publication is completed by the next run into --out
     return summary
 
@@ -77,12 +79,17 @@ def _run(plan: RunPlan, options: RunOptions, started: float) -> dict:
         options.message(f"registration register: warning: {w}")
     table = pair_inputs(plan, options) if plan.form == "asynchronous" else plan.sync_table()
     state = filter_table(table, plan, options)
-    summary = build_summary(table, plan, state, options, elapsed_s=round(time.perf_counter() - started, 3), warnings=warnings)
+    summary = build_summary(
+        table, plan, state, options, elapsed_s=round(time.perf_counter() - started, 3), warnings=warnings
+    )
     folder = plan.folder
     write_json_atomic(folder.path / "summary.json", summary)
     if options.plots:
-        series = state.plot_series.arrays() if state.plot_series is not None else \
-            series_from_outputs(table.path, options, folder.path, state.rows_accepted)  # a resumed run
+        series = (
+            state.plot_series.arrays()
+            if state.plot_series is not None
+            else series_from_outputs(table.path, options, folder.path, state.rows_accepted)
+        )  # a resumed run
         paths = write_plots(series, summary["observability"]["status"], folder.path)
         summary["plots"] = [str(folder.final(p)) for p in paths]
         write_json_atomic(folder.path / "summary.json", summary)

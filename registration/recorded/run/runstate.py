@@ -14,10 +14,10 @@ from pathlib import Path
 
 import numpy as np
 
+from registration.io.output.checkpoint import load_checkpoint, save_checkpoint
 from registration.online.config import RegistrationConfig
 from registration.online.contract import N_STATE
 from registration.online.filter import OnlineRegistrar
-from registration.io.output.checkpoint import load_checkpoint, save_checkpoint
 from registration.recorded.output.outputs import DifferenceStats, Outputs
 from registration.recorded.output.plotseries import PlotSeries
 
@@ -54,7 +54,9 @@ class RunState:
     last_time: float | None = None
     raw: DifferenceStats = field(default_factory=DifferenceStats)  # X_A - X_B from the measurements
     corrected: DifferenceStats = field(default_factory=DifferenceStats)  # X_A - X_B after correction
-    obs_info: np.ndarray = field(default_factory=lambda: np.zeros((N_STATE, N_STATE)))  # information at the final estimate
+    obs_info: np.ndarray = field(
+        default_factory=lambda: np.zeros((N_STATE, N_STATE))
+    )  # information at the final estimate
     obs_used: int = 0  # rows in obs_info
     plot_series: PlotSeries | None = None  # points for the plots (not checkpointed: None after a resume)
 
@@ -63,9 +65,13 @@ class RunState:
         for r in rejections:
             self.rejected[r.code] = self.rejected.get(r.code, 0) + 1
         if rejections and self.first_rejection is None:
-            self.first_rejection = f"row {rejections[0].row}, column {rejections[0].column!r}: {rejections[0].reason}"
+            self.first_rejection = (
+                f"row {rejections[0].row}, column {rejections[0].column!r}: {rejections[0].reason}"
+            )
 
-    def add_registered(self, times: np.ndarray, nis: np.ndarray, raw_diff: np.ndarray, corrected_diff: np.ndarray) -> None:
+    def add_registered(
+        self, times: np.ndarray, nis: np.ndarray, raw_diff: np.ndarray, corrected_diff: np.ndarray
+    ) -> None:
         """Take in one run of registered rows for the statistics: their times (s), NIS and ECEF differences (m)."""
         self.raw.add(raw_diff)
         self.corrected.add(corrected_diff)
@@ -77,28 +83,51 @@ class RunState:
     def to_checkpoint(self, fingerprint: str, marks: dict) -> dict:
         """The checkpoint payload for this state and the outputs' ``marks``."""
         counters = {
-            "rows_done": self.filter_pass.rows_done, "last_time": self.filter_pass.last_time,
-            "obs_rows_done": self.obs_pass.rows_done, "obs_last_time": self.obs_pass.last_time,
-            "rows_total": self.rows_read, "accepted": self.rows_accepted, "rejected": self.rejected,
-            "first_rejection": self.first_rejection, "filter_rejected": sorted(self.filter_rejected),
-            "nis_sum": self.nis_sum, "first_time": self.first_time, "time": self.last_time,
-            "obs_info": self.obs_info, "obs_used": self.obs_used,
+            "rows_done": self.filter_pass.rows_done,
+            "last_time": self.filter_pass.last_time,
+            "obs_rows_done": self.obs_pass.rows_done,
+            "obs_last_time": self.obs_pass.last_time,
+            "rows_total": self.rows_read,
+            "accepted": self.rows_accepted,
+            "rejected": self.rejected,
+            "first_rejection": self.first_rejection,
+            "filter_rejected": sorted(self.filter_rejected),
+            "nis_sum": self.nis_sum,
+            "first_time": self.first_time,
+            "time": self.last_time,
+            "obs_info": self.obs_info,
+            "obs_used": self.obs_used,
         }
-        return {"fingerprint": fingerprint, "phase": self.phase, "filter": self.registrar.state_dict(), "state": counters,
-                "stats": {"raw": self.raw.state(), "corrected": self.corrected.state()}, "outputs": marks}
+        return {
+            "fingerprint": fingerprint,
+            "phase": self.phase,
+            "filter": self.registrar.state_dict(),
+            "state": counters,
+            "stats": {"raw": self.raw.state(), "corrected": self.corrected.state()},
+            "outputs": marks,
+        }
 
     @classmethod
     def from_checkpoint(cls, payload: dict, config: RegistrationConfig) -> "RunState":
         """Inverse of :meth:`to_checkpoint` (the outputs' marks are read by :class:`Outputs`)."""
         c = payload["state"]
         return cls(
-            registrar=OnlineRegistrar.from_state_dict(payload["filter"], config), phase=payload["phase"],
-            filter_pass=PassPosition(c["rows_done"], c["last_time"]), obs_pass=PassPosition(c["obs_rows_done"], c["obs_last_time"]),
-            rows_read=c["rows_total"], rows_accepted=c["accepted"], rejected=dict(c["rejected"]),
-            first_rejection=c.get("first_rejection"), filter_rejected={int(r) for r in c["filter_rejected"]},
-            nis_sum=c["nis_sum"], first_time=c["first_time"], last_time=c["time"],
-            raw=DifferenceStats(payload["stats"]["raw"]), corrected=DifferenceStats(payload["stats"]["corrected"]),
-            obs_info=c["obs_info"], obs_used=c["obs_used"],
+            registrar=OnlineRegistrar.from_state_dict(payload["filter"], config),
+            phase=payload["phase"],
+            filter_pass=PassPosition(c["rows_done"], c["last_time"]),
+            obs_pass=PassPosition(c["obs_rows_done"], c["obs_last_time"]),
+            rows_read=c["rows_total"],
+            rows_accepted=c["accepted"],
+            rejected=dict(c["rejected"]),
+            first_rejection=c.get("first_rejection"),
+            filter_rejected={int(r) for r in c["filter_rejected"]},
+            nis_sum=c["nis_sum"],
+            first_time=c["first_time"],
+            last_time=c["time"],
+            raw=DifferenceStats(payload["stats"]["raw"]),
+            corrected=DifferenceStats(payload["stats"]["corrected"]),
+            obs_info=c["obs_info"],
+            obs_used=c["obs_used"],
         )
 
 

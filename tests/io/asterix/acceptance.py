@@ -37,7 +37,9 @@ def _read_fleet_tables():
     return read_fleet_tables
 
 
-def run_acceptance(folder: Path, seed: int = 0, duration_s: float = 600.0, unidentified: bool = False) -> pd.DataFrame:
+def run_acceptance(
+    folder: Path, seed: int = 0, duration_s: float = 600.0, unidentified: bool = False
+) -> pd.DataFrame:
     """Simulate, encode, import (raw and pcap must agree), register; one row per error with its
     truth, estimate, sigma and z = (estimate - truth) / sigma (SI units, radians)."""
     from registration.fleet import BatchOptions, solve_batch
@@ -60,14 +62,22 @@ def run_acceptance(folder: Path, seed: int = 0, duration_s: float = 600.0, unide
     for name, frame in tables.items():
         paths[name] = folder / f"{name}.csv"
         frame.to_csv(paths[name], index=False)
-    fleet = _read_fleet_tables()(paths["plots"], paths["navigation"], paths["sensors"], paths["platforms"],
-                                 paths["reference"])
+    fleet = _read_fleet_tables()(
+        paths["plots"], paths["navigation"], paths["sensors"], paths["platforms"], paths["reference"]
+    )
     result = solve_batch(fleet.problem(), BatchOptions(window_s=20.0))
     rows = []
     for name, value in truth.truth.items():
         estimate, sigma = result.value(name), result.sigma_of(name)
-        rows.append({"state": name, "truth": value, "estimate": estimate, "sigma": sigma,
-                     "z": (estimate - value) / sigma})
+        rows.append(
+            {
+                "state": name,
+                "truth": value,
+                "estimate": estimate,
+                "sigma": sigma,
+                "z": (estimate - value) / sigma,
+            }
+        )
     out = pd.DataFrame(rows)
     out.attrs["lines"] = result.lines()
     out.attrs["summary"] = pcap.summary
@@ -76,7 +86,9 @@ def run_acceptance(folder: Path, seed: int = 0, duration_s: float = 600.0, unide
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("folder", nargs="?", help="where the recording and tables go (default: a temporary folder)")
+    parser.add_argument(
+        "folder", nargs="?", help="where the recording and tables go (default: a temporary folder)"
+    )
     parser.add_argument("--seed", type=int, default=0, help="scenario seed (integer)")
     parser.add_argument("--duration", type=float, default=600.0, help="scenario length (s)")
     parser.add_argument("--unidentified", action="store_true", help="pass the plots without target ids too")

@@ -22,15 +22,23 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from tests.io.asterix.encode import cat021_record, cat034_record, cat048_record, encode_recording, service_messages
+from tests.io.asterix.encode import (
+    cat021_record,
+    cat034_record,
+    cat048_record,
+    encode_recording,
+    service_messages,
+)
 
 __all__ = ["AtcTruth", "atc_truth", "encode_atc", "CENTRE_DEG", "RADAR_LAYOUT"]
 
 CENTRE_DEG = (45.0, 5.0)
 #: name -> (sac, sic, east m, north m, antenna height m, scan period s, sigma range m, sigma bearing deg)
-RADAR_LAYOUT = {"R1": (30, 1, -60e3, 0.0, 150.0, 4.0, 30.0, 0.08),
-                "R2": (30, 2, 60e3, 20e3, 90.0, 5.0, 40.0, 0.10),
-                "R3": (30, 3, 0.0, 80e3, 300.0, 6.0, 25.0, 0.07)}
+RADAR_LAYOUT = {
+    "R1": (30, 1, -60e3, 0.0, 150.0, 4.0, 30.0, 0.08),
+    "R2": (30, 2, 60e3, 20e3, 90.0, 5.0, 40.0, 0.10),
+    "R3": (30, 3, 0.0, 80e3, 300.0, 6.0, 25.0, 0.07),
+}
 ADSB_SOURCE = (40, 1)
 _FT = 0.3048
 
@@ -64,21 +72,48 @@ def encode_atc(plots: dict, adsb: dict, sites: pd.DataFrame, date: dt.date, scan
         t, kind = float(plots["time_s"][k]), plots["kind"][k]
         rho = int(round(plots["range_m"][k] / 1852.0 * 256))
         theta = int(round(plots["bearing_deg"][k] / 360.0 * 65536)) % 65536
-        kw = {"typ": 5, "address": int(plots["address"][k])} if kind == "mode_s" else \
-            {"typ": 2, "mode_a": int(plots["mode_a"][k])} if kind == "mode_a" else {"typ": 1}
+        kw = (
+            {"typ": 5, "address": int(plots["address"][k])}
+            if kind == "mode_s"
+            else {"typ": 2, "mode_a": int(plots["mode_a"][k])}
+            if kind == "mode_a"
+            else {"typ": 1}
+        )
         messages.append((t, 48, sac, sic, cat048_record("1.32", sac, sic, t, rho, theta, **kw)))
     for radar, (t0, period, sectors, t1) in (scans or {}).items():
         sac, sic = src[radar]
         for t, what, sector in service_messages(sac, sic, t0, t1, period, sectors):
-            messages.append((t, 34, sac, sic, cat034_record("1.29", sac, sic, 1 if what == "north" else 2, t, sector,
-                                                            period if what == "north" else None)))
+            messages.append(
+                (
+                    t,
+                    34,
+                    sac,
+                    sic,
+                    cat034_record(
+                        "1.29",
+                        sac,
+                        sic,
+                        1 if what == "north" else 2,
+                        t,
+                        sector,
+                        period if what == "north" else None,
+                    ),
+                )
+            )
     gva = adsb.get("gva", np.full(len(adsb["time_s"]), 2))
     for k in range(len(adsb["time_s"])):
         t = float(adsb["time_s"][k])
-        rec = cat021_record("2.6", *ADSB_SOURCE, t, address=int(adsb["address"][k]), lat_deg=float(adsb["lat_deg"][k]),
-                            lon_deg=float(adsb["lon_deg"][k]),
-                            height_ft_raw=int(round(adsb["height_m"][k] / _FT / 6.25)), nacp=int(adsb["nacp"][k]),
-                            gva=int(gva[k]))
+        rec = cat021_record(
+            "2.6",
+            *ADSB_SOURCE,
+            t,
+            address=int(adsb["address"][k]),
+            lat_deg=float(adsb["lat_deg"][k]),
+            lon_deg=float(adsb["lon_deg"][k]),
+            height_ft_raw=int(round(adsb["height_m"][k] / _FT / 6.25)),
+            nacp=int(adsb["nacp"][k]),
+            gva=int(gva[k]),
+        )
         messages.append((t, 21, *ADSB_SOURCE, rec))
     return encode_recording(messages, date)
 
@@ -105,8 +140,18 @@ def _sites(origin, R) -> tuple[pd.DataFrame, dict]:
 
         ecef[name] = geodetic2ecef(np.radians(lat[0]), np.radians(lon[0]), h)[0]
         rows.append((name, sac, sic, lat[0], lon[0], h, sr, sb, np.nan, np.nan))
-    columns = ["sensor", "sac", "sic", "lat_deg", "lon_deg", "alt_m", "sigma_range_m", "sigma_bearing_deg",
-               "prior_range_gain", "prior_time_bias_s"]
+    columns = [
+        "sensor",
+        "sac",
+        "sic",
+        "lat_deg",
+        "lon_deg",
+        "alt_m",
+        "sigma_range_m",
+        "sigma_bearing_deg",
+        "prior_range_gain",
+        "prior_time_bias_s",
+    ]
     return pd.DataFrame(rows, columns=columns), ecef
 
 
@@ -144,8 +189,13 @@ def _radar_plots(name, p_site, R_enu_site, track, t0, duration, errors, rng) -> 
     return out
 
 
-def atc_truth(seed: int = 0, duration_s: float = 600.0, t0: float = 36000.0, n_aircraft: int = 20,
-              date: dt.date = dt.date(2024, 5, 1)) -> AtcTruth:
+def atc_truth(
+    seed: int = 0,
+    duration_s: float = 600.0,
+    t0: float = 36000.0,
+    n_aircraft: int = 20,
+    date: dt.date = dt.date(2024, 5, 1),
+) -> AtcTruth:
     """A simulated scenario; aircraft 0-13 are Mode S (0-11 with ADS-B at 1 Hz, NACp 8-10), 14-16
     Mode A/C only, the rest primary only. Errors of random sign: range bias 80-200 m, gain 200-600
     ppm, azimuth bias 0.15-0.4 deg, clock offset 0.3-1.0 s."""
@@ -160,22 +210,39 @@ def atc_truth(seed: int = 0, duration_s: float = 600.0, t0: float = 36000.0, n_a
     truth, plots, scans = {}, [], {}
     sign = lambda: rng.choice([-1.0, 1.0])  # noqa: E731
     for name, site in zip(RADAR_LAYOUT, sites.itertuples()):
-        errors = {"range_bias": sign() * rng.uniform(80, 200), "range_gain": sign() * rng.uniform(200e-6, 600e-6),
-                  "bearing_bias": np.radians(sign() * rng.uniform(0.15, 0.4)), "time_bias": sign() * rng.uniform(0.3, 1.0),
-                  "phase": rng.uniform(0, RADAR_LAYOUT[name][5])}
-        truth.update({f"{name}:{k}": errors[k] for k in ("range_bias", "range_gain", "bearing_bias", "time_bias")})
+        errors = {
+            "range_bias": sign() * rng.uniform(80, 200),
+            "range_gain": sign() * rng.uniform(200e-6, 600e-6),
+            "bearing_bias": np.radians(sign() * rng.uniform(0.15, 0.4)),
+            "time_bias": sign() * rng.uniform(0.3, 1.0),
+            "phase": rng.uniform(0, RADAR_LAYOUT[name][5]),
+        }
+        truth.update(
+            {f"{name}:{k}": errors[k] for k in ("range_bias", "range_gain", "bearing_bias", "time_bias")}
+        )
         R_site = enu2ecef_rotation(np.radians(site.lat_deg), np.radians(site.lon_deg))[0]
         for j, t, r, b in _radar_plots(name, site_ecef[name], R_site, tracks, t0, duration_s, errors, rng):
             plots.append((t, name, r, b, j))
         period = RADAR_LAYOUT[name][5]
-        scans[name] = (t0 + errors["phase"] + errors["time_bias"], period, 8, t0 + duration_s + errors["time_bias"])
+        scans[name] = (
+            t0 + errors["phase"] + errors["time_bias"],
+            period,
+            8,
+            t0 + duration_s + errors["time_bias"],
+        )
     j = np.array([p[4] for p in plots])
     kind = np.where(j < 14, "mode_s", np.where(j < 17, "mode_a", "primary"))
     address = 0x400000 + 0x1234 * j
-    plot_arrays = {"time_s": np.array([p[0] for p in plots]), "radar": np.array([p[1] for p in plots]),
-                   "range_m": np.array([p[2] for p in plots]), "bearing_deg": np.array([p[3] for p in plots]),
-                   "kind": kind, "address": address, "mode_a": np.where(kind == "mode_a", 0o4000 + 0o11 * j, -1),
-                   "aircraft": j}
+    plot_arrays = {
+        "time_s": np.array([p[0] for p in plots]),
+        "radar": np.array([p[1] for p in plots]),
+        "range_m": np.array([p[2] for p in plots]),
+        "bearing_deg": np.array([p[3] for p in plots]),
+        "kind": kind,
+        "address": address,
+        "mode_a": np.where(kind == "mode_a", 0o4000 + 0o11 * j, -1),
+        "aircraft": j,
+    }
     return AtcTruth(plot_arrays, _adsb(rng, tracks, start, t0, duration_s), sites, scans, truth, date)
 
 
@@ -189,12 +256,25 @@ def _adsb(rng, tracks, start, t0: float, duration_s: float) -> dict:
             p = tracks[j](t)
             lat, lon, h = _to_geodetic(p)
             north, east = rng.normal(0, sigma_h, 2)
-            rows.append((t, 0x400000 + 0x1234 * j, lat[0] + np.degrees(north / 6.371e6),
-                         lon[0] + np.degrees(east / (6.371e6 * np.cos(np.radians(lat[0])))),
-                         h[0] + rng.normal(0, min(2 * sigma_h, 20.0)), nacp))
+            rows.append(
+                (
+                    t,
+                    0x400000 + 0x1234 * j,
+                    lat[0] + np.degrees(north / 6.371e6),
+                    lon[0] + np.degrees(east / (6.371e6 * np.cos(np.radians(lat[0])))),
+                    h[0] + rng.normal(0, min(2 * sigma_h, 20.0)),
+                    nacp,
+                )
+            )
     a = list(zip(*rows))
-    return {"time_s": np.array(a[0]), "address": np.array(a[1]), "lat_deg": np.array(a[2]), "lon_deg": np.array(a[3]),
-            "height_m": np.array(a[4]), "nacp": np.array(a[5])}
+    return {
+        "time_s": np.array(a[0]),
+        "address": np.array(a[1]),
+        "lat_deg": np.array(a[2]),
+        "lon_deg": np.array(a[3]),
+        "height_m": np.array(a[4]),
+        "nacp": np.array(a[5]),
+    }
 
 
 if __name__ == "__main__":

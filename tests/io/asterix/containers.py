@@ -20,8 +20,19 @@ def _checksum(header: bytes) -> int:
 
 
 def _ipv4(payload: bytes, proto: int, ident: int) -> bytes:
-    head = struct.pack("!BBHHHBBH4s4s", 0x45, 0, 20 + len(payload), ident & 0xFFFF, 0x4000, 64, proto, 0,
-                       bytes([10, 0, 0, 1]), bytes([239, 1, 1, 1]))
+    head = struct.pack(
+        "!BBHHHBBH4s4s",
+        0x45,
+        0,
+        20 + len(payload),
+        ident & 0xFFFF,
+        0x4000,
+        64,
+        proto,
+        0,
+        bytes([10, 0, 0, 1]),
+        bytes([239, 1, 1, 1]),
+    )
     return head[:10] + struct.pack("!H", _checksum(head)) + head[12:] + payload
 
 
@@ -40,7 +51,9 @@ def tcp_frame(ident: int = 0) -> bytes:
     return _MACS + b"\x08\x00" + _ipv4(struct.pack("!HHIIHHHH", 1234, 80, 0, 0, 0x5002, 1024, 0, 0), 6, ident)
 
 
-def pcap_bytes(frames: list[bytes], times: list[float], nanosecond: bool = False, big_endian: bool = False) -> bytes:
+def pcap_bytes(
+    frames: list[bytes], times: list[float], nanosecond: bool = False, big_endian: bool = False
+) -> bytes:
     """A pcap file of Ethernet ``frames`` captured at ``times`` (UTC s since 1970)."""
     e = ">" if big_endian else "<"
     magic = 0xA1B23C4D if nanosecond else 0xA1B2C3D4
@@ -69,7 +82,11 @@ def pcapng_bytes(frames: list[bytes], times: list[float], nanosecond: bool = Tru
     out = [shb, idb]
     for k, (frame, t) in enumerate(zip(frames, times)):
         ticks = round(t * 10**resol)
-        out.append(_block(6, struct.pack("<IIIII", 0, ticks >> 32, ticks & 0xFFFFFFFF, len(frame), len(frame)) + frame))
+        out.append(
+            _block(
+                6, struct.pack("<IIIII", 0, ticks >> 32, ticks & 0xFFFFFFFF, len(frame), len(frame)) + frame
+            )
+        )
         if k == 0:
             arp = arp_frame()
             out.append(_block(3, struct.pack("<I", len(arp)) + arp))

@@ -15,8 +15,11 @@ def _random_value(var, rng: np.random.Generator, depth: int = 0):
     from asterix.base import Compound, Element, Explicit, Extended, Group, Repetitive
 
     if issubclass(var, (Element, Group)):
-        return int(rng.integers(0, 2 ** min(var.cv_bit_size, 62))) if var.cv_bit_size <= 62 else \
-            int.from_bytes(rng.bytes((var.cv_bit_size + 7) // 8), "big") % 2**var.cv_bit_size
+        return (
+            int(rng.integers(0, 2 ** min(var.cv_bit_size, 62)))
+            if var.cv_bit_size <= 62
+            else int.from_bytes(rng.bytes((var.cv_bit_size + 7) // 8), "big") % 2**var.cv_bit_size
+        )
     if issubclass(var, Extended):
         n = int(rng.integers(1, len(var.cv_items_list) + 1))
         return tuple(int(rng.integers(0, 2 ** _group_bits(g))) for g in var.cv_items_list[:n])
@@ -55,8 +58,12 @@ def random_record(cat: int, edition: str, rng: np.random.Generator, p_item: floa
 def random_blocks(cat: int, edition: str, rng: np.random.Generator, blocks: int, per_block: int) -> bytes:
     """Data blocks of random records, end to end."""
     s = spec(cat, edition)
-    return b"".join(s.create([random_record(cat, edition, rng) for _ in range(int(rng.integers(1, per_block + 1)))])
-                    .unparse().to_bytes() for _ in range(blocks))
+    return b"".join(
+        s.create([random_record(cat, edition, rng) for _ in range(int(rng.integers(1, per_block + 1)))])
+        .unparse()
+        .to_bytes()
+        for _ in range(blocks)
+    )
 
 
 def parse_blocks(cat: int, edition: str, data: bytes) -> list:

@@ -14,20 +14,38 @@ import datetime as dt
 import sys
 from pathlib import Path
 
-import numpy as np
 import pandas as pd
 
-from tests.io.asterix.encode import cat021_record, cat034_record, cat048_record, encode_recording, service_messages
+from tests.io.asterix.encode import (
+    cat021_record,
+    cat034_record,
+    cat048_record,
+    encode_recording,
+    service_messages,
+)
 
-__all__ = ["DATE", "T0", "SITES", "RADARS", "PLOT_TARGETS", "ADSB_TARGETS", "standard_messages", "standard_recording",
-           "sites_frame", "STAMP_DELAY_S"]
+__all__ = [
+    "DATE",
+    "T0",
+    "SITES",
+    "RADARS",
+    "PLOT_TARGETS",
+    "ADSB_TARGETS",
+    "standard_messages",
+    "standard_recording",
+    "sites_frame",
+    "STAMP_DELAY_S",
+]
 
 DATE = dt.date(2024, 5, 1)
 T0 = 36000.0
 DURATION = 40.0
 #: sensor -> (sac, sic, lat, lon, alt, scan period s, sectors)
-RADARS = {"R1": (10, 1, 45.0, 5.0, 120.0, 4.0, 8), "R2": (10, 2, 45.3, 5.4, 80.0, 5.0, 16),
-          "RX": (10, 9, 44.0, 4.0, 10.0, 6.0, 8)}
+RADARS = {
+    "R1": (10, 1, 45.0, 5.0, 120.0, 4.0, 8),
+    "R2": (10, 2, 45.3, 5.4, 80.0, 5.0, 16),
+    "RX": (10, 9, 44.0, 4.0, 10.0, 6.0, 8),
+}
 SITES = ("R1", "R2")  # RX is not in SITES
 #: R2 time-stamps its plots this late (s) against its own service messages: the clock check sees it.
 STAMP_DELAY_S = {"R1": 0.0, "R2": 0.25, "RX": 0.0}
@@ -69,15 +87,30 @@ def _radar_messages(name: str, t0: float, duration: float) -> list:
     sac, sic, _, _, _, period, sectors = RADARS[name]
     out = []
     for t, kind, sector in service_messages(sac, sic, t0, t0 + duration, period, sectors):
-        rec = cat034_record("1.29", sac, sic, 1 if kind == "north" else 2, t, sector, period if kind == "north" else None,
-                            extras=kind == "north")
+        rec = cat034_record(
+            "1.29",
+            sac,
+            sic,
+            1 if kind == "north" else 2,
+            t,
+            sector,
+            period if kind == "north" else None,
+            extras=kind == "north",
+        )
         out.append((t, 34, sac, sic, rec))
     for scan in range(int(duration // period)):
         for k, (bearing, rho, kwargs, _) in enumerate(PLOT_TARGETS.values()):
             bearing = (bearing + 0.5 * scan) % 360.0
             t = t0 + (scan + bearing / 360.0) * period + STAMP_DELAY_S[name]
-            rec = cat048_record("1.32", sac, sic, t, int(round(rho * 256)), int(round(bearing / 360 * 65536)) % 65536,
-                                **kwargs)
+            rec = cat048_record(
+                "1.32",
+                sac,
+                sic,
+                t,
+                int(round(rho * 256)),
+                int(round(bearing / 360 * 65536)) % 65536,
+                **kwargs,
+            )
             out.append((t, 48, sac, sic, rec))
     return out
 
@@ -89,8 +122,17 @@ def _adsb_messages(t0: float, duration: float) -> list:
         height = kwargs.pop("height", True)
         for k in range(int(duration)):
             t = t0 + k + 0.1 * j
-            rec = cat021_record("2.6", 20, 1, t, address=address, lat_deg=45.1 + 0.001 * k, lon_deg=5.2 + 0.01 * j,
-                                height_ft_raw=1600 + k if height else None, **kwargs)
+            rec = cat021_record(
+                "2.6",
+                20,
+                1,
+                t,
+                address=address,
+                lat_deg=45.1 + 0.001 * k,
+                lon_deg=5.2 + 0.01 * j,
+                height_ft_raw=1600 + k if height else None,
+                **kwargs,
+            )
             out.append((t, 21, 20, 1, rec))
     return out
 

@@ -20,7 +20,11 @@ def atc(tmp_path_factory):
     rec = encode_atc(truth.plots, truth.adsb, truth.sites, truth.date, truth.scans)
     (folder / "atc.ast").write_bytes(rec.raw())
     (folder / "atc.pcap").write_bytes(rec.pcap())
-    return truth, import_asterix(folder / "atc.ast", truth.sites, date=truth.date), import_asterix(folder / "atc.pcap", truth.sites)
+    return (
+        truth,
+        import_asterix(folder / "atc.ast", truth.sites, date=truth.date),
+        import_asterix(folder / "atc.pcap", truth.sites),
+    )
 
 
 def test_raw_and_pcap_agree(atc):
@@ -31,7 +35,11 @@ def test_raw_and_pcap_agree(atc):
 
 def test_plots_are_the_truth_to_the_asterix_resolution(atc):
     truth, _, pcap = atc
-    p = pd.DataFrame({k: v for k, v in truth.plots.items()}).sort_values("time_s", kind="stable").reset_index(drop=True)
+    p = (
+        pd.DataFrame({k: v for k, v in truth.plots.items()})
+        .sort_values("time_s", kind="stable")
+        .reset_index(drop=True)
+    )
     got = pcap.plots
     assert len(got) == len(p)
     order = np.lexsort((got["bearing_deg"], np.round(got["time_s"] * 128)))
@@ -42,8 +50,11 @@ def test_plots_are_the_truth_to_the_asterix_resolution(atc):
     bearing = (got["bearing_deg"] - p["bearing_deg"] + 180) % 360 - 180
     assert np.abs(bearing).max() <= 0.5 * 360 / 65536 + 1e-9
     assert (got["sensor"].to_numpy() == p["radar"].to_numpy()).all()
-    ids = np.where(p["kind"] == "mode_s", [f"{a:06X}" for a in p["address"]],
-                   np.where(p["kind"] == "mode_a", [f"A{m:04o}" if m >= 0 else "" for m in p["mode_a"]], ""))
+    ids = np.where(
+        p["kind"] == "mode_s",
+        [f"{a:06X}" for a in p["address"]],
+        np.where(p["kind"] == "mode_a", [f"A{m:04o}" if m >= 0 else "" for m in p["mode_a"]], ""),
+    )
     assert (got["target"].to_numpy() == ids).all()
 
 
@@ -51,7 +62,9 @@ def test_references_and_summary(atc):
     truth, _, pcap = atc
     ref = pcap.reference
     assert len(ref) == len(truth.adsb["time_s"])
-    np.testing.assert_allclose(np.sort(ref["alt_m"]), np.sort(truth.adsb["height_m"]), atol=0.5 * 6.25 * 0.3048)
+    np.testing.assert_allclose(
+        np.sort(ref["alt_m"]), np.sort(truth.adsb["height_m"]), atol=0.5 * 6.25 * 0.3048
+    )
     for name, layout in RADAR_LAYOUT.items():
         s = pcap.summary["sensors"][name]
         assert s["scan_period_s"] == pytest.approx(layout[5])

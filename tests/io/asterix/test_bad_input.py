@@ -22,7 +22,9 @@ def blocks() -> list:
     messages = []
     for k in range(15):
         t = 1000.0 + k
-        messages.append((t, 48, SAC, SIC, cat048_record("1.32", SAC, SIC, t, 2560 + k, 1000 * k, address=0x100000 + k)))
+        messages.append(
+            (t, 48, SAC, SIC, cat048_record("1.32", SAC, SIC, t, 2560 + k, 1000 * k, address=0x100000 + k))
+        )
     rec = encode_recording(messages, DATE, max_records=3)
     assert len(rec.blocks) == 5
     return rec.blocks
@@ -38,14 +40,17 @@ def _reasons(result) -> dict:
     return result.rejected.groupby("reason_code").size().to_dict()
 
 
-@pytest.mark.parametrize("content, words", [
-    (b"", "empty file"),
-    (b"time_s,sensor,target\n1.0,R1,T1\n", "a text file"),
-    (bytes([0xFF, 0x00, 0x10]) + bytes(13), "no ASTERIX category"),
-    (bytes([48, 0x40, 0x00]) + bytes(20), "declares 16384 bytes; the file has 23"),
-    (b"\x89PNG\r\n\x1a\n" + bytes(40), "neither a pcap/pcapng capture nor an ASTERIX recording"),
-    (gzip.compress(b"hello world, not asterix at all\n"), "a text file"),
-])
+@pytest.mark.parametrize(
+    "content, words",
+    [
+        (b"", "empty file"),
+        (b"time_s,sensor,target\n1.0,R1,T1\n", "a text file"),
+        (bytes([0xFF, 0x00, 0x10]) + bytes(13), "no ASTERIX category"),
+        (bytes([48, 0x40, 0x00]) + bytes(20), "declares 16384 bytes; the file has 23"),
+        (b"\x89PNG\r\n\x1a\n" + bytes(40), "neither a pcap/pcapng capture nor an ASTERIX recording"),
+        (gzip.compress(b"hello world, not asterix at all\n"), "a text file"),
+    ],
+)
 def test_not_asterix_raises_one_line_naming_the_file(tmp_path, sites, content, words):
     path = tmp_path / "strange.bin"
     path.write_bytes(content)
@@ -68,7 +73,9 @@ def test_truncated_last_block(tmp_path, sites, blocks):
     assert row["offset"] == len(data) - len(blocks[-1]) and "left in the file" in row["reason"]
 
 
-@pytest.mark.parametrize("length, code", [(0xFFFF, "truncated_block"), (1, "bad_block_length"), (0, "bad_block_length")])
+@pytest.mark.parametrize(
+    "length, code", [(0xFFFF, "truncated_block"), (1, "bad_block_length"), (0, "bad_block_length")]
+)
 def test_bad_length_field_mid_file_resynchronises(tmp_path, sites, blocks, length, code):
     broken = bytearray(blocks[1])
     broken[1:3] = length.to_bytes(2, "big")
@@ -86,19 +93,33 @@ def _with_record(block: bytes, record: bytes) -> bytes:
     return block[:1] + (len(body) + 3).to_bytes(2, "big") + body
 
 
-@pytest.mark.parametrize("record, last, code, words", [
-    (b"\xff", True, "fspec_overrun", "FSPEC runs past the end"),
-    (b"\xff\xff\xff\xff\xff\x00", False, "fspec_overrun", "FX bit set in its octet 4"),
-    (b"\x00", False, "empty_record", "names no item"),
-    (b"\x01\x20\xc8" + bytes(10), True, "item_overrun", "I048/250 (FRN 10) needs 1601 bytes, 11 left"),
-    (b"\x20" + b"\x01" * 7, False, "bad_item", "I048/020 has the FX bit set in its last octet allowed (6 groups"),
-    (b"\x01\x01\x01\x04\x00", False, "bad_item", "explicit item I048/SP has length 0"),
-    (b"\x02\x91", False, "bad_item", "compound item I048/130 has the FX bit set"),
-])
+@pytest.mark.parametrize(
+    "record, last, code, words",
+    [
+        (b"\xff", True, "fspec_overrun", "FSPEC runs past the end"),
+        (b"\xff\xff\xff\xff\xff\x00", False, "fspec_overrun", "FX bit set in its octet 4"),
+        (b"\x00", False, "empty_record", "names no item"),
+        (b"\x01\x20\xc8" + bytes(10), True, "item_overrun", "I048/250 (FRN 10) needs 1601 bytes, 11 left"),
+        (
+            b"\x20" + b"\x01" * 7,
+            False,
+            "bad_item",
+            "I048/020 has the FX bit set in its last octet allowed (6 groups",
+        ),
+        (b"\x01\x01\x01\x04\x00", False, "bad_item", "explicit item I048/SP has length 0"),
+        (b"\x02\x91", False, "bad_item", "compound item I048/130 has the FX bit set"),
+    ],
+)
 def test_a_record_that_cannot_be_walked_ends_its_block(tmp_path, sites, blocks, record, last, code, words):
     """The block's earlier records are kept; the bad one and what follows it in the block (the
     three records of block 2 unless it is ``last``) are skipped."""
-    data = b"".join([blocks[0], _with_record(blocks[1], record + (b"" if last else blocks[2][3:])), *blocks[2 if last else 3:]])
+    data = b"".join(
+        [
+            blocks[0],
+            _with_record(blocks[1], record + (b"" if last else blocks[2][3:])),
+            *blocks[2 if last else 3 :],
+        ]
+    )
     result = _run(tmp_path, sites, data)
     assert len(result.plots) == (15 if last else 12) and _reasons(result) == {code: 1}
     row = result.rejected.iloc[0]
@@ -126,22 +147,50 @@ def test_records_without_what_the_reader_needs(tmp_path, sites):
         (2.0, 48, SAC, SIC, cat048_record("1.32", SAC, SIC, 2.0, 10, 10, typ=0)),  # no detection
         (3.0, 48, SAC, SIC, cat048_record("1.32", SAC, SIC, 3.0, 10, 10).del_item("040")),
         (4.0, 48, SAC, SIC, cat048_record("1.32", SAC, SIC, 4.0, 10, 10).set_item("140", 86400 * 128 + 5)),
-        (5.0, 21, 1, 1, cat021_record("2.6", 1, 1, 5.0, address=None, lat_deg=1, lon_deg=1, height_ft_raw=1, nacp=9)),
-        (6.0, 21, 1, 1, cat021_record("2.6", 1, 1, 6.0, address=2, lat_deg=1, lon_deg=1, height_ft_raw=1,
-                                      nacp=9).del_item("071")),
+        (
+            5.0,
+            21,
+            1,
+            1,
+            cat021_record("2.6", 1, 1, 5.0, address=None, lat_deg=1, lon_deg=1, height_ft_raw=1, nacp=9),
+        ),
+        (
+            6.0,
+            21,
+            1,
+            1,
+            cat021_record(
+                "2.6", 1, 1, 6.0, address=2, lat_deg=1, lon_deg=1, height_ft_raw=1, nacp=9
+            ).del_item("071"),
+        ),
         (7.0, 34, SAC, SIC, cat034_record("1.29", SAC, SIC, 1, 7.0).del_item("030")),
     ]
     result = _run(tmp_path, sites, encode_recording(messages, DATE).raw())
     assert len(result.plots) == 0
-    assert _reasons(result) == {"zero_range": 1, "no_detection": 1, "missing_item": 3, "bad_time": 1, "no_address": 1}
+    assert _reasons(result) == {
+        "zero_range": 1,
+        "no_detection": 1,
+        "missing_item": 3,
+        "bad_time": 1,
+        "no_address": 1,
+    }
     reasons = set(result.rejected["reason"])
-    assert {"no I048/040 (measured position)", "no I034/030 (time of day)",
-            "no time item (I021/071, I021/073 or I021/077)"} <= reasons
+    assert {
+        "no I048/040 (measured position)",
+        "no I034/030 (time of day)",
+        "no time item (I021/071, I021/073 or I021/077)",
+    } <= reasons
 
 
 def test_truncated_pcap_keeps_the_packets_before(tmp_path, sites, blocks):
-    rec = encode_recording([(1000.0 + k, 48, SAC, SIC, cat048_record("1.32", SAC, SIC, 1000.0 + k, 100, 0, address=k + 1))
-                            for k in range(6)], DATE, max_records=1)
+    rec = encode_recording(
+        [
+            (1000.0 + k, 48, SAC, SIC, cat048_record("1.32", SAC, SIC, 1000.0 + k, 100, 0, address=k + 1))
+            for k in range(6)
+        ],
+        DATE,
+        max_records=1,
+    )
     data = rec.pcap()
     result = _run(tmp_path, sites, data[:-10], "cut.pcap")
     assert 0 < len(result.plots) < 6 and _reasons(result) == {"truncated_packet": 1}
@@ -151,7 +200,9 @@ def test_truncated_pcap_keeps_the_packets_before(tmp_path, sites, blocks):
 def test_datagram_that_is_not_asterix(tmp_path, sites):
     from tests.io.asterix.containers import pcap_bytes, udp_frame
 
-    good = encode_recording([(5.0, 48, SAC, SIC, cat048_record("1.32", SAC, SIC, 5.0, 100, 0, address=7))], DATE).raw()
+    good = encode_recording(
+        [(5.0, 48, SAC, SIC, cat048_record("1.32", SAC, SIC, 5.0, 100, 0, address=7))], DATE
+    ).raw()
     frames = [udp_frame(b"hello, this is not ASTERIX"), udp_frame(good), udp_frame(good + b"\x30\x00")]
     result = _run(tmp_path, sites, pcap_bytes(frames, [1.7e9, 1.7e9 + 1, 1.7e9 + 2]), "mixed.pcap")
     assert len(result.plots) == 2

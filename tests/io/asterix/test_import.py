@@ -61,8 +61,12 @@ def test_plot_values_are_the_encoded_ones(imported):
     scans = np.arange(_scans("R1"))
     bearing = (bearing0 + 0.5 * scans) % 360
     np.testing.assert_array_equal(r1["range_m"], rho * 1852.0)  # 1/256 NM, 1852 m exactly
-    np.testing.assert_allclose(r1["bearing_deg"], np.round(bearing / 360 * 65536) * 360 / 65536, rtol=0, atol=0)
-    np.testing.assert_allclose(r1["time_s"], np.round((T0 + (scans + bearing / 360) * period) * 128) / 128, atol=0)
+    np.testing.assert_allclose(
+        r1["bearing_deg"], np.round(bearing / 360 * 65536) * 360 / 65536, rtol=0, atol=0
+    )
+    np.testing.assert_allclose(
+        r1["time_s"], np.round((T0 + (scans + bearing / 360) * period) * 128) / 128, atol=0
+    )
 
 
 def test_set_aside_plots_and_reports_name_their_reason(imported):
@@ -93,7 +97,9 @@ def test_reference_sigma_comes_from_nacp_and_gva(imported):
     assert sigma_up["3C6DD2"] == pytest.approx(2 * 92.6 / circular_95)  # no GVA: twice the horizontal
     first = ref[ref["target"] == "4CA1F3"].iloc[0]
     assert first["alt_m"] == pytest.approx(1600 * 6.25 * 0.3048)
-    assert first["lat_deg"] == pytest.approx(45.1, abs=2e-7) and first["time_s"] == pytest.approx(T0, abs=1 / 128)
+    assert first["lat_deg"] == pytest.approx(45.1, abs=2e-7) and first["time_s"] == pytest.approx(
+        T0, abs=1 / 128
+    )
 
 
 def test_all_reference_targets_on_request(files, sites):
@@ -107,7 +113,10 @@ def test_summary_scan_periods_clock_check_and_unknown_sources(imported):
     r1, r2 = summary["sensors"]["R1"], summary["sensors"]["R2"]
     assert r1["scan_period_s"] == pytest.approx(4.0) and r2["scan_period_s"] == pytest.approx(5.0)
     assert r1["antenna_rotation_period_s"] == pytest.approx(4.0)
-    assert abs(r1["clock_check"]["median_offset_s"]) < 1 / 128 and r1["clock_check"]["plots_outside_their_sector"] == 0
+    assert (
+        abs(r1["clock_check"]["median_offset_s"]) < 1 / 128
+        and r1["clock_check"]["plots_outside_their_sector"] == 0
+    )
     assert r2["clock_check"]["median_offset_s"] == pytest.approx(STAMP_DELAY_S["R2"], abs=1 / 128)
     assert r2["clock_check"]["plots_outside_their_sector"] > 0  # stamped 0.25 s late: past their sector
     unknown = {(s["category"], s["sac"], s["sic"]): s["records"] for s in summary["sac_sic_not_in_sites"]}
@@ -125,20 +134,38 @@ def test_summary_scan_periods_clock_check_and_unknown_sources(imported):
 def test_site_tables(imported):
     result = imported["raw"]
     nav = result.navigation
-    assert list(nav.columns) == ["time_s", "platform", "lat_deg", "lon_deg", "alt_m", "heading_deg", "pitch_deg",
-                                 "roll_deg"]
-    assert list(nav["platform"]) == ["R1", "R2"] and (nav[["heading_deg", "pitch_deg", "roll_deg"]] == 0).all().all()
+    assert list(nav.columns) == [
+        "time_s",
+        "platform",
+        "lat_deg",
+        "lon_deg",
+        "alt_m",
+        "heading_deg",
+        "pitch_deg",
+        "roll_deg",
+    ]
+    assert (
+        list(nav["platform"]) == ["R1", "R2"]
+        and (nav[["heading_deg", "pitch_deg", "roll_deg"]] == 0).all().all()
+    )
     assert nav["time_s"].iloc[0] >= T0
     assert list(result.sensors.columns) == ["sensor", "platform", "sigma_range_m", "sigma_bearing_deg"]
     assert (result.platforms[["prior_heading_deg", "prior_pitch_deg", "prior_roll_deg"]] == 0).all().all()
 
 
 def test_sites_priors_pass_through(files, sites):
-    sites = sites.assign(prior_range_gain=[0.01, np.nan], prior_time_bias_s=[1.0, 2.0], prior_heading_deg=[0.5, np.nan])
+    sites = sites.assign(
+        prior_range_gain=[0.01, np.nan], prior_time_bias_s=[1.0, 2.0], prior_heading_deg=[0.5, np.nan]
+    )
     result = import_asterix(files["raw"], sites)
     assert list(result.sensors["prior_time_bias_s"]) == [1.0, 2.0]
-    assert result.sensors["prior_range_gain"].iloc[0] == 0.01 and np.isnan(result.sensors["prior_range_gain"].iloc[1])
-    assert result.platforms["prior_heading_deg"].iloc[0] == 0.5 and result.platforms["prior_pitch_deg"].iloc[1] == 0
+    assert result.sensors["prior_range_gain"].iloc[0] == 0.01 and np.isnan(
+        result.sensors["prior_range_gain"].iloc[1]
+    )
+    assert (
+        result.platforms["prior_heading_deg"].iloc[0] == 0.5
+        and result.platforms["prior_pitch_deg"].iloc[1] == 0
+    )
 
 
 def _read_fleet_tables():
@@ -159,12 +186,15 @@ def test_the_fleet_reader_accepts_the_tables(imported, tmp_path):
     for name, frame in tables.items():
         paths[name] = tmp_path / f"{name}.csv"
         frame.to_csv(paths[name], index=False)
-    fleet = _read_fleet_tables()(paths["plots"], paths["navigation"], paths["sensors"], paths["platforms"],
-                                 paths["reference"])
+    fleet = _read_fleet_tables()(
+        paths["plots"], paths["navigation"], paths["sensors"], paths["platforms"], paths["reference"]
+    )
     np.testing.assert_allclose(fleet.plots["bearing"], np.radians(tables["plots"]["bearing_deg"]), rtol=1e-15)
     np.testing.assert_allclose(fleet.plots["range"], tables["plots"]["range_m"], rtol=1e-15)
     assert set(fleet.references["target"]) == {"4CA1F3", "3C6DD2"}
-    np.testing.assert_allclose(fleet.references["lat"], np.radians(tables["reference"]["lat_deg"]), rtol=1e-15)
+    np.testing.assert_allclose(
+        fleet.references["lat"], np.radians(tables["reference"]["lat_deg"]), rtol=1e-15
+    )
     np.testing.assert_array_equal(fleet.references["sigma_up"], tables["reference"]["sigma_up_m"])
     assert np.all(fleet.platforms["prior_heading"] == 0)
     problem = fleet.problem()

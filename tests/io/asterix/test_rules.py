@@ -23,16 +23,25 @@ def _fields048(**columns) -> dict:
 
 def test_mode_3a_rules():
     codes = [0o4521, 0o4521, 0o4521, 0o4521, 0o7700, 0o1200, 0o0001, 0o1234, 0o7500]
-    f = _fields048(m3a=codes, m3a_v=[0, 1, 0, 0, 0, 0, 0, 0, 0], m3a_g=[0, 0, 1, 0, 0, 0, 0, 0, 0],
-                   m3a_l=[0, 0, 0, 1, 0, 0, 0, 0, 0], has_070=[True] * 7 + [False, True])
+    f = _fields048(
+        m3a=codes,
+        m3a_v=[0, 1, 0, 0, 0, 0, 0, 0, 0],
+        m3a_g=[0, 0, 1, 0, 0, 0, 0, 0, 0],
+        m3a_l=[0, 0, 0, 1, 0, 0, 0, 0, 0],
+        has_070=[True] * 7 + [False, True],
+    )
     ids, kind = target_ids(f)
     assert list(ids) == ["A4521", "", "", "A4521", "", "", "A0001", "", ""]
     assert list(kind) == ["mode_a", "none", "none", "mode_a", "none", "none", "mode_a", "none", "none"]
 
 
 def test_mode_s_address_wins_and_is_six_uppercase_hex_digits():
-    f = _fields048(m3a=[0o1234, 0o1234, 0], address=[0x4CA1F3, 0x00000A, 0], has_220=[True, True, False],
-                   has_070=[True, False, False])
+    f = _fields048(
+        m3a=[0o1234, 0o1234, 0],
+        address=[0x4CA1F3, 0x00000A, 0],
+        has_220=[True, True, False],
+        has_070=[True, False, False],
+    )
     ids, kind = target_ids(f)
     assert list(ids) == ["4CA1F3", "00000A", ""] and list(kind) == ["mode_s", "mode_s", "none"]
 
@@ -40,8 +49,14 @@ def test_mode_s_address_wins_and_is_six_uppercase_hex_digits():
 def _fields021(nacp, gva=None, old=False) -> dict:
     n = len(nacp)
     f = {k: np.zeros(n, dtype=np.int64) for k in ("sac", "tod", "tst", "sim", "rab", "nucp", "nacp", "gva")}
-    f.update(has_080=np.ones(n, bool), time_item=np.full(n, "071", dtype=object), has_position=np.ones(n, bool),
-             lat_deg=np.zeros(n), lon_deg=np.zeros(n), has_140=np.ones(n, bool))
+    f.update(
+        has_080=np.ones(n, bool),
+        time_item=np.full(n, "071", dtype=object),
+        has_position=np.ones(n, bool),
+        lat_deg=np.zeros(n),
+        lon_deg=np.zeros(n),
+        has_140=np.ones(n, bool),
+    )
     key = "nucp" if old else "nacp"
     f[key] = np.array([0 if v is None else v for v in nacp])
     f[f"has_{key}"] = np.array([v is not None for v in nacp])
@@ -63,7 +78,9 @@ def test_nacp_rules_and_sigma():
     assert CIRCULAR_95 == pytest.approx(2.4477, abs=1e-4)
     horizontal, vertical = adsb_sigma_m([3.0, 3.0, 185.2], [2, 1, 2])
     np.testing.assert_allclose(horizontal, np.array([3.0, 3.0, 185.2]) / CIRCULAR_95)
-    np.testing.assert_allclose(vertical, [45 / 1.959964, 150 / 1.959964, 45 / 1.959964])  # GVA 2: 45 m, 1: 150 m
+    np.testing.assert_allclose(
+        vertical, [45 / 1.959964, 150 / 1.959964, 45 / 1.959964]
+    )  # GVA 2: 45 m, 1: 150 m
 
 
 def test_nucp_rules_of_editions_0_2x():
@@ -88,21 +105,30 @@ def test_other_adsb_rules_in_order():
 HEADER = "sensor,sac,sic,lat_deg,lon_deg,alt_m,sigma_range_m,sigma_bearing_deg"
 
 
-@pytest.mark.parametrize("text, words", [
-    (HEADER + "\nR1,1,2,45,5,10,30,0.1\nR2,1,2,45,5,10,30,0.1\n", "row 1, column 'sic': SAC/SIC 1/2 is also in row 0"),
-    (HEADER + "\nR1,1,2,95,5,10,30,0.1\n", "row 0, column 'lat_deg': 95 deg is outside [-90, 90] deg"),
-    (HEADER + "\nR1,1,256,45,5,10,30,0.1\n", "row 0, column 'sic': '256' is not an integer in [0, 255]"),
-    (HEADER + "\nR1,1,2,45,5,10,0,0.1\n", "row 0, column 'sigma_range_m': 0 m is outside (0, 1e+06] m"),
-    (HEADER + "\nR1,1,2,45,5,10,30,25\n", "column 'sigma_bearing_deg': 25 deg is outside (0, 20] deg"),
-    (HEADER + "\nR1,1,2,45,five,10,30,0.1\n", "row 0, column 'lon_deg': 'five' is not a number (deg)"),
-    (HEADER + "\nR1,1,2,45,5,,30,0.1\n", "row 0, column 'alt_m': empty; a number (m) is required"),
-    (HEADER + "\nR1,1,2,45,5,10,30\n", "row 0: 7 fields, the header 8 (cut short?)"),
-    (HEADER + ",prior_range_gain\nR1,1,2,45,5,10,30,0.1,0.5\n", "'prior_range_gain': 0.5 dimensionless is outside [0, 0.1]"),
-    (HEADER + ",colour\nR1,1,2,45,5,10,30,0.1,red\n", "unknown column(s) ['colour']"),
-    ("sensor,sac,lat_deg\nR1,1,45\n", "missing column(s) ['sic', 'lon_deg'"),
-    (HEADER + "\n", "no data rows"),
-    (HEADER + "\n,1,2,45,5,10,30,0.1\n", "row 0, column 'sensor': empty"),
-])
+@pytest.mark.parametrize(
+    "text, words",
+    [
+        (
+            HEADER + "\nR1,1,2,45,5,10,30,0.1\nR2,1,2,45,5,10,30,0.1\n",
+            "row 1, column 'sic': SAC/SIC 1/2 is also in row 0",
+        ),
+        (HEADER + "\nR1,1,2,95,5,10,30,0.1\n", "row 0, column 'lat_deg': 95 deg is outside [-90, 90] deg"),
+        (HEADER + "\nR1,1,256,45,5,10,30,0.1\n", "row 0, column 'sic': '256' is not an integer in [0, 255]"),
+        (HEADER + "\nR1,1,2,45,5,10,0,0.1\n", "row 0, column 'sigma_range_m': 0 m is outside (0, 1e+06] m"),
+        (HEADER + "\nR1,1,2,45,5,10,30,25\n", "column 'sigma_bearing_deg': 25 deg is outside (0, 20] deg"),
+        (HEADER + "\nR1,1,2,45,five,10,30,0.1\n", "row 0, column 'lon_deg': 'five' is not a number (deg)"),
+        (HEADER + "\nR1,1,2,45,5,,30,0.1\n", "row 0, column 'alt_m': empty; a number (m) is required"),
+        (HEADER + "\nR1,1,2,45,5,10,30\n", "row 0: 7 fields, the header 8 (cut short?)"),
+        (
+            HEADER + ",prior_range_gain\nR1,1,2,45,5,10,30,0.1,0.5\n",
+            "'prior_range_gain': 0.5 dimensionless is outside [0, 0.1]",
+        ),
+        (HEADER + ",colour\nR1,1,2,45,5,10,30,0.1,red\n", "unknown column(s) ['colour']"),
+        ("sensor,sac,lat_deg\nR1,1,45\n", "missing column(s) ['sic', 'lon_deg'"),
+        (HEADER + "\n", "no data rows"),
+        (HEADER + "\n,1,2,45,5,10,30,0.1\n", "row 0, column 'sensor': empty"),
+    ],
+)
 def test_sites_errors_name_file_row_column_unit(tmp_path, text, words):
     path = tmp_path / "SITES.csv"
     path.write_text(text)

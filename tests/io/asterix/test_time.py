@@ -20,8 +20,25 @@ def _messages(t0: float, t1: float) -> list:
     out = []
     for t in np.arange(t0, t1, 0.5):
         out.append((t, 48, 10, 1, cat048_record("1.32", 10, 1, t, 2000, 100, address=0xABCDEF)))
-        out.append((t + 0.25, 21, 20, 1, cat021_record("2.6", 20, 1, t + 0.25, address=0xABCDEF, lat_deg=45.0,
-                                                       lon_deg=5.0, height_ft_raw=1000, nacp=9)))
+        out.append(
+            (
+                t + 0.25,
+                21,
+                20,
+                1,
+                cat021_record(
+                    "2.6",
+                    20,
+                    1,
+                    t + 0.25,
+                    address=0xABCDEF,
+                    lat_deg=45.0,
+                    lon_deg=5.0,
+                    height_ft_raw=1000,
+                    nacp=9,
+                ),
+            )
+        )
     return out
 
 

@@ -5,15 +5,29 @@ from __future__ import annotations
 
 import pytest
 
-from registration.io.asterix.decode.uap import (DEFAULT_EDITIONS, SUPPORTED_EDITIONS, Compound, Explicit, Extended, Fixed,
-                                         Repetitive, RepetitiveFx, check_editions, uap_for)
+from registration.io.asterix.decode.uap import (
+    DEFAULT_EDITIONS,
+    SUPPORTED_EDITIONS,
+    Compound,
+    Explicit,
+    Extended,
+    Fixed,
+    Repetitive,
+    RepetitiveFx,
+    check_editions,
+    uap_for,
+)
 from tests.io.asterix.encode import spec
 
 EDITIONS = [(cat, e) for cat, editions in SUPPORTED_EDITIONS.items() for e in editions]
 
 
 def _layout(var):
-    from asterix.base import Compound as C, Element, Explicit as E, Extended as X, Group, Repetitive as R
+    from asterix.base import Compound as C
+    from asterix.base import Element, Group
+    from asterix.base import Explicit as E
+    from asterix.base import Extended as X
+    from asterix.base import Repetitive as R
 
     if issubclass(var, (Element, Group)):
         assert var.cv_bit_size % 8 == 0
@@ -31,7 +45,9 @@ def _layout(var):
     if issubclass(var, E):
         return Explicit()
     if issubclass(var, C):
-        return Compound(tuple(None if n is None else _layout(n.cv_rule.cv_variation) for n in var.cv_items_list))
+        return Compound(
+            tuple(None if n is None else _layout(n.cv_rule.cv_variation) for n in var.cv_items_list)
+        )
     raise TypeError(var)
 
 

@@ -18,7 +18,7 @@ EDITIONS = [(cat, e) for cat, editions in SUPPORTED_EDITIONS.items() for e in ed
 
 def _buffer(data: bytes) -> np.ndarray:
     buf = np.zeros(len(data) + PAD, dtype=np.uint8)
-    buf[:len(data)] = np.frombuffer(data, dtype=np.uint8)
+    buf[: len(data)] = np.frombuffer(data, dtype=np.uint8)
     return buf
 
 
@@ -26,7 +26,7 @@ def _block_bounds(data: bytes) -> tuple[np.ndarray, np.ndarray]:
     starts, p = [], 0
     while p < len(data):
         starts.append(p)
-        p += int.from_bytes(data[p + 1:p + 3], "big")
+        p += int.from_bytes(data[p + 1 : p + 3], "big")
     starts = np.array(starts, dtype=np.int64)
     return starts, np.append(starts[1:], len(data))
 
@@ -49,9 +49,11 @@ def test_records_and_items_match_libasterix(cat, edition):
             if name not in items:
                 assert offset == -1, (r, name)
             else:
-                assert data[offset:offset + len(items[name])] == items[name], (r, name)
+                assert data[offset : offset + len(items[name])] == items[name], (r, name)
         end, offsets = walk_one(memoryview(data), int(rec.start[r]), int(ends[rec.block[r]]), uap, names)
-        assert end == rec.end[r] and offsets == {n: int(rec.items[n][r]) for n in names if rec.items[n][r] >= 0}
+        assert end == rec.end[r] and offsets == {
+            n: int(rec.items[n][r]) for n in names if rec.items[n][r] >= 0
+        }
 
 
 @pytest.mark.parametrize("cat, edition", [(48, "1.32"), (21, "2.6"), (21, "0.23"), (34, "1.29")])
@@ -124,8 +126,9 @@ def test_decoded_fields_match_libasterix(files):
         assert f48["rab"][k] == _value(r, "020", "RAB") and f48["tst"][k] == (_value(r, "020", "TST") or 0)
         assert f48["address"][k] == (_value(r, "220") or 0)
         if f48["has_070"][k]:
-            assert [f48[x][k] for x in ("m3a_v", "m3a_g", "m3a_l", "m3a")] == \
-                [_value(r, "070", x) for x in ("V", "G", "L", "MODE3A")]
+            assert [f48[x][k] for x in ("m3a_v", "m3a_g", "m3a_l", "m3a")] == [
+                _value(r, "070", x) for x in ("V", "G", "L", "MODE3A")
+            ]
     f34 = dec.records[34].fields
     for k, (_, r) in enumerate(per_cat[34]):
         assert (f34["msg_type"][k], f34["tod"][k]) == (_value(r, "000"), _value(r, "030"))
@@ -133,14 +136,17 @@ def test_decoded_fields_match_libasterix(files):
     f21 = dec.records[21].fields
     for k, (_, r) in enumerate(per_cat[21]):
         assert f21["address"][k] == _value(r, "080")
-        assert f21["tod"][k] == next(v for v in (_value(r, "071"), _value(r, "073"), _value(r, "077")) if v is not None)
+        assert f21["tod"][k] == next(
+            v for v in (_value(r, "071"), _value(r, "073"), _value(r, "077")) if v is not None
+        )
         if _value(r, "090", "NACP") is not None:
             assert f21["nacp"][k] == _value(r, "090", "NACP")
         if _value(r, "140") is not None:
             assert f21["height"][k] == r.get_item("140").variation.content.as_quantity("ft") / 6.25
         lat = r.get_item("131") or r.get_item("130")
-        assert f21["lat_deg"][k] == pytest.approx(lat.variation.get_item("LAT").variation.content.as_quantity("°"),
-                                                  abs=1e-12)
+        assert f21["lat_deg"][k] == pytest.approx(
+            lat.variation.get_item("LAT").variation.content.as_quantity("°"), abs=1e-12
+        )
 
 
 def test_chunks_do_not_change_the_result(files, monkeypatch):
@@ -171,12 +177,53 @@ def test_cat021_of_other_editions(tmp_path, edition):
     messages = [(10.0, 48, 10, 1, cat048_record("1.32", 10, 1, 10.0, 100, 0, address=0xABC123))]
     for k, q in enumerate(quality):
         t = 11.0 + k
-        messages.append((t, 21, 20, 1, cat021_record(edition, 20, 1, t, address=0xABC123, lat_deg=-33.5 + k,
-                                                     lon_deg=151.25, height_ft_raw=2000, nacp=q, gva=None,
-                                                     hires=False, sim=0)))
-    messages.append((14.0, 21, 20, 1, cat021_record(edition, 20, 1, 14.0, address=0xABC123, lat_deg=1, lon_deg=1,
-                                                    height_ft_raw=1, nacp=9, sim=1, gva=None, hires=False)))
-    (tmp_path / "old.ast").write_bytes(encode_recording(messages, dt.date(2024, 5, 1), editions={21: edition}).raw())
+        messages.append(
+            (
+                t,
+                21,
+                20,
+                1,
+                cat021_record(
+                    edition,
+                    20,
+                    1,
+                    t,
+                    address=0xABC123,
+                    lat_deg=-33.5 + k,
+                    lon_deg=151.25,
+                    height_ft_raw=2000,
+                    nacp=q,
+                    gva=None,
+                    hires=False,
+                    sim=0,
+                ),
+            )
+        )
+    messages.append(
+        (
+            14.0,
+            21,
+            20,
+            1,
+            cat021_record(
+                edition,
+                20,
+                1,
+                14.0,
+                address=0xABC123,
+                lat_deg=1,
+                lon_deg=1,
+                height_ft_raw=1,
+                nacp=9,
+                sim=1,
+                gva=None,
+                hires=False,
+            ),
+        )
+    )
+    (tmp_path / "old.ast").write_bytes(
+        encode_recording(messages, dt.date(2024, 5, 1), editions={21: edition}).raw()
+    )
     result = import_asterix(tmp_path / "old.ast", sites_frame(), editions={21: edition})
     ref = result.reference
     lsb = 180 / 2 ** (25 if edition in ("0.24", "0.26") else 23)
@@ -184,5 +231,7 @@ def test_cat021_of_other_editions(tmp_path, edition):
     np.testing.assert_allclose(ref["time_s"], [11.0, 12.0])
     epu = [3.0, 10.0] if old else [10.0, 92.6]  # NUCp 9, 8: 3 m, 10 m; NACp 10, 8: 10 m, 0.05 NM
     np.testing.assert_allclose(ref["sigma_m"], np.array(epu) / 2.4477, rtol=1e-4)
-    np.testing.assert_allclose(ref["sigma_up_m"], 2 * np.array(epu) / 2.4477, rtol=1e-4)  # no GVA in these editions
+    np.testing.assert_allclose(
+        ref["sigma_up_m"], 2 * np.array(epu) / 2.4477, rtol=1e-4
+    )  # no GVA in these editions
     assert result.rejected.groupby("reason_code").size().to_dict() == {"low_nacp": 1, "simulated": 1}

@@ -72,8 +72,12 @@ class BridgeLog:
     def errors(self) -> dict[str, float]:
         """The simulated errors by state name: range bias (m), bearing bias (rad), time bias (s), heading error (rad)."""
         c = self.config
-        return {f"{SENSOR}:range_bias": c.range_bias_m, f"{SENSOR}:bearing_bias": c.bearing_bias_rad,
-                f"{SENSOR}:time_bias": c.clock_offset_s, f"{PLATFORM}:heading_error": c.heading_error_rad}
+        return {
+            f"{SENSOR}:range_bias": c.range_bias_m,
+            f"{SENSOR}:bearing_bias": c.bearing_bias_rad,
+            f"{SENSOR}:time_bias": c.clock_offset_s,
+            f"{PLATFORM}:heading_error": c.heading_error_rad,
+        }
 
 
 class _Lines:
@@ -119,13 +123,22 @@ def _navigation(truth: Truth, out: _Lines, rng) -> None:
             out.add(s, str(pynmea2.VTG("GP", "VTG", (cog, "T", "", "M", sog, "N", "", "K", "D"))))
             for part in range(3):
                 sats = [f"{(4 * part + j) % 32 + 1:02d},45,{(30 * j) % 360:03d},40" for j in range(4)]
-                out.add(s, str(pynmea2.GSV("GP", "GSV", tuple(["3", str(part + 1), "12"] + ",".join(sats).split(",")))))
+                out.add(
+                    s,
+                    str(
+                        pynmea2.GSV(
+                            "GP", "GSV", tuple(["3", str(part + 1), "12"] + ",".join(sats).split(","))
+                        )
+                    ),
+                )
 
 
 def _ttm(truth: Truth, out: _Lines, rng) -> pd.DataFrame:
     c = truth.config
     rows = []
-    scans = np.arange(truth.t0, truth.t0 + c.duration_s - c.scan_period_s - c.clock_offset_s - 1.0, c.scan_period_s)
+    scans = np.arange(
+        truth.t0, truth.t0 + c.duration_s - c.scan_period_s - c.clock_offset_s - 1.0, c.scan_period_s
+    )
     units = list(UNITS)
     for k, v in enumerate(truth.vessels):
         t = scans + v.phase_s
@@ -137,11 +150,28 @@ def _ttm(truth: Truth, out: _Lines, rng) -> pd.DataFrame:
             ref = c.bearing_reference if c.bearing_reference != "mixed" else "RT"[int(rng.integers(2))]
             unit = c.distance_unit if c.distance_unit != "mixed" else units[int(rng.integers(3))]
             b = q_m[j] + (truth.reported_heading(t_rep[j]) if ref == "T" else 0.0)
-            out.add(t[j] + 0.1, encode.ttm(v.track, f"{r_m[j] / UNITS[unit]:.5f}", float(np.degrees(b)), ref, unit, "T",
-                                           t_rep[j]))
+            out.add(
+                t[j] + 0.1,
+                encode.ttm(
+                    v.track, f"{r_m[j] / UNITS[unit]:.5f}", float(np.degrees(b)), ref, unit, "T", t_rep[j]
+                ),
+            )
             rows.append((t[j], t_rep[j], str(v.track), v.mmsi, r[j], q[j], r_m[j], q_m[j], ref, unit))
-    return pd.DataFrame(rows, columns=["time_true", "time_reported", "track", "mmsi", "range_true", "bearing_true",
-                                       "range_measured", "bearing_measured", "reference", "unit"])
+    return pd.DataFrame(
+        rows,
+        columns=[
+            "time_true",
+            "time_reported",
+            "track",
+            "mmsi",
+            "range_true",
+            "bearing_true",
+            "range_measured",
+            "bearing_measured",
+            "reference",
+            "unit",
+        ],
+    )
 
 
 def _ais_line(out: _Lines, sentences: list[str], recv: float, midnight: float) -> None:
@@ -162,44 +192,107 @@ def _ais(truth: Truth, out: _Lines, rng, midnight: float) -> pd.DataFrame:
             lat_noisy, lon_noisy = truth.offset(p["lat"], p["lon"], noise[0], noise[1])
             second = int(t % 60) if rng.random() >= c.unavailable_second_fraction else 60
             kind = 18 if v.ais_class == "B" else (1 if n % 2 == 0 else 3)
-            data = {"msg_type": kind, "mmsi": int(v.mmsi), "lat": float(np.degrees(lat_noisy)),
-                    "lon": float(np.degrees(lon_noisy)), "speed": round(float(p["speed"]) * 3600 / 1852, 1),
-                    "course": round(float(np.degrees(p["course"])), 1), "heading": int(np.degrees(p["course"])) % 360,
-                    "second": second, "accuracy": v.accuracy}
+            data = {
+                "msg_type": kind,
+                "mmsi": int(v.mmsi),
+                "lat": float(np.degrees(lat_noisy)),
+                "lon": float(np.degrees(lon_noisy)),
+                "speed": round(float(p["speed"]) * 3600 / 1852, 1),
+                "course": round(float(np.degrees(p["course"])), 1),
+                "heading": int(np.degrees(p["course"])) % 360,
+                "second": second,
+                "accuracy": v.accuracy,
+            }
             recv = t + rng.uniform(0, c.latency_max_s)
             _ais_line(out, encode.ais(data), recv, midnight)
-            rows.append((v.mmsi, t, recv, second, float(p["lat"]), float(p["lon"]), float(lat_noisy), float(lon_noisy), kind,
-                         v.accuracy, float(p["speed"])))
+            rows.append(
+                (
+                    v.mmsi,
+                    t,
+                    recv,
+                    second,
+                    float(p["lat"]),
+                    float(p["lon"]),
+                    float(lat_noisy),
+                    float(lon_noisy),
+                    kind,
+                    v.accuracy,
+                    float(p["speed"]),
+                )
+            )
         for t in np.arange(truth.t0 + 5.0 + k, end, c.static_period_s):
             seq = (seq + 1) % 10
             if v.ais_class == "A":
-                static = [{"msg_type": 5, "mmsi": int(v.mmsi), "shipname": v.name, "callsign": f"CALL{k}", "to_bow": 80,
-                           "to_stern": 20, "to_port": 8, "to_starboard": 8}]
+                static = [
+                    {
+                        "msg_type": 5,
+                        "mmsi": int(v.mmsi),
+                        "shipname": v.name,
+                        "callsign": f"CALL{k}",
+                        "to_bow": 80,
+                        "to_stern": 20,
+                        "to_port": 8,
+                        "to_starboard": 8,
+                    }
+                ]
             else:
-                static = [{"msg_type": 24, "mmsi": int(v.mmsi), "partno": 0, "shipname": v.name},
-                          {"msg_type": 24, "mmsi": int(v.mmsi), "partno": 1, "callsign": f"CALL{k}"}]
+                static = [
+                    {"msg_type": 24, "mmsi": int(v.mmsi), "partno": 0, "shipname": v.name},
+                    {"msg_type": 24, "mmsi": int(v.mmsi), "partno": 1, "callsign": f"CALL{k}"},
+                ]
             for d in static:
                 _ais_line(out, encode.ais(d, seq_id=seq), t, midnight)
     own = truth.own
     for t in np.arange(np.ceil(truth.t0) + 1.0, end, c.vdo_period_s):
         o = own(t)
-        data = {"msg_type": 1, "mmsi": int(OWN_MMSI), "lat": float(np.degrees(o["lat"])), "lon": float(np.degrees(o["lon"])),
-                "speed": round(float(o["speed"]) * 3600 / 1852, 1), "course": round(float(np.degrees(o["course"])), 1),
-                "second": int(t % 60), "accuracy": True}
+        data = {
+            "msg_type": 1,
+            "mmsi": int(OWN_MMSI),
+            "lat": float(np.degrees(o["lat"])),
+            "lon": float(np.degrees(o["lon"])),
+            "speed": round(float(o["speed"]) * 3600 / 1852, 1),
+            "course": round(float(np.degrees(o["course"])), 1),
+            "second": int(t % 60),
+            "accuracy": True,
+        }
         _ais_line(out, encode.ais(data, own=True), t + 0.2, midnight)
-    return pd.DataFrame(rows, columns=["mmsi", "time_true", "time_received", "second", "lat", "lon", "lat_reported",
-                                       "lon_reported", "msg_type", "accuracy", "speed"])
+    return pd.DataFrame(
+        rows,
+        columns=[
+            "mmsi",
+            "time_true",
+            "time_received",
+            "second",
+            "lat",
+            "lon",
+            "lat_reported",
+            "lon_reported",
+            "msg_type",
+            "accuracy",
+            "speed",
+        ],
+    )
 
 
 def sensors_table(config: BridgeLogConfig) -> pd.DataFrame:
     """The sensors table of the log's radar (talker RA), fleet file columns plus ``talker``; its
     biases and time bias estimated without prior (empty cells)."""
     x, y, z = config.lever_arm_m
-    return pd.DataFrame({"sensor": [SENSOR], "platform": [PLATFORM], "talker": ["RA"],
-                         "sigma_range_m": [config.sigma_range_m],
-                         "sigma_bearing_deg": [float(np.degrees(config.sigma_bearing_rad))],
-                         "prior_range_bias_m": [np.nan], "prior_bearing_bias_deg": [np.nan],
-                         "lever_x_m": [x], "lever_y_m": [y], "lever_z_m": [z], "prior_time_bias_s": [np.nan]})
+    return pd.DataFrame(
+        {
+            "sensor": [SENSOR],
+            "platform": [PLATFORM],
+            "talker": ["RA"],
+            "sigma_range_m": [config.sigma_range_m],
+            "sigma_bearing_deg": [float(np.degrees(config.sigma_bearing_rad))],
+            "prior_range_bias_m": [np.nan],
+            "prior_bearing_bias_deg": [np.nan],
+            "lever_x_m": [x],
+            "lever_y_m": [y],
+            "lever_z_m": [z],
+            "prior_time_bias_s": [np.nan],
+        }
+    )
 
 
 def simulate_bridge_log(config: BridgeLogConfig | None = None) -> BridgeLog:

@@ -14,4 +14,3 @@ def bridge(tmp_path_factory):
     log = simulate_bridge_log(BridgeLogConfig(seed=0))
     path = log.write(tmp_path_factory.mktemp("bridge") / "bridge.nmea")
     return log, path, import_nmea(path, PLATFORM, log.sensors)
-

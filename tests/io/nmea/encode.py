@@ -10,7 +10,21 @@ import numpy as np
 import pynmea2
 from pyais import TagBlock, encode_dict
 
-__all__ = ["hhmmss", "ddmm", "gga", "rmc", "gns", "zda", "hdt", "ths", "pashr", "ttm", "ais", "tag", "checksummed"]
+__all__ = [
+    "hhmmss",
+    "ddmm",
+    "gga",
+    "rmc",
+    "gns",
+    "zda",
+    "hdt",
+    "ths",
+    "pashr",
+    "ttm",
+    "ais",
+    "tag",
+    "checksummed",
+]
 
 
 def hhmmss(t: float, decimals: int = 2) -> str:
@@ -34,29 +48,56 @@ def ddmm(angle_rad: float, lon: bool) -> tuple[str, str]:
     return text + f"{m:09.6f}", hemi
 
 
-def gga(t: float, lat: float, lon: float, alt_msl: float = 30.0, geoid: str = "42.00", quality: str = "2",
-        talker: str = "GP") -> str:
+def gga(
+    t: float,
+    lat: float,
+    lon: float,
+    alt_msl: float = 30.0,
+    geoid: str = "42.00",
+    quality: str = "2",
+    talker: str = "GP",
+) -> str:
     la, ns = ddmm(lat, False)
     lo, ew = ddmm(lon, True)
-    return str(pynmea2.GGA(talker, "GGA", (hhmmss(t), la, ns, lo, ew, quality, "12", "0.8", f"{alt_msl:.2f}", "M", geoid,
-                                           "M", "", "")))
+    return str(
+        pynmea2.GGA(
+            talker,
+            "GGA",
+            (hhmmss(t), la, ns, lo, ew, quality, "12", "0.8", f"{alt_msl:.2f}", "M", geoid, "M", "", ""),
+        )
+    )
 
 
-def rmc(t: float, lat: float, lon: float, day: dt.date, status: str = "A", sog: str = "15.6", cog: str = "40.0") -> str:
+def rmc(
+    t: float, lat: float, lon: float, day: dt.date, status: str = "A", sog: str = "15.6", cog: str = "40.0"
+) -> str:
     la, ns = ddmm(lat, False)
     lo, ew = ddmm(lon, True)
-    return str(pynmea2.RMC("GP", "RMC", (hhmmss(t), status, la, ns, lo, ew, sog, cog, day.strftime("%d%m%y"), "", "",
-                                         "D")))
+    return str(
+        pynmea2.RMC(
+            "GP", "RMC", (hhmmss(t), status, la, ns, lo, ew, sog, cog, day.strftime("%d%m%y"), "", "", "D")
+        )
+    )
 
 
-def gns(t: float, lat: float, lon: float, mode: str = "AA", alt_msl: float = 30.0, geoid: str = "42.00") -> str:
+def gns(
+    t: float, lat: float, lon: float, mode: str = "AA", alt_msl: float = 30.0, geoid: str = "42.00"
+) -> str:
     la, ns = ddmm(lat, False)
     lo, ew = ddmm(lon, True)
-    return str(pynmea2.GNS("GN", "GNS", (hhmmss(t), la, ns, lo, ew, mode, "14", "0.8", f"{alt_msl:.2f}", geoid, "", "")))
+    return str(
+        pynmea2.GNS(
+            "GN", "GNS", (hhmmss(t), la, ns, lo, ew, mode, "14", "0.8", f"{alt_msl:.2f}", geoid, "", "")
+        )
+    )
 
 
 def zda(t: float, day: dt.date) -> str:
-    return str(pynmea2.ZDA("GP", "ZDA", (hhmmss(t), f"{day.day:02d}", f"{day.month:02d}", f"{day.year:04d}", "00", "00")))
+    return str(
+        pynmea2.ZDA(
+            "GP", "ZDA", (hhmmss(t), f"{day.day:02d}", f"{day.month:02d}", f"{day.year:04d}", "00", "00")
+        )
+    )
 
 
 def hdt(heading_deg: float) -> str:
@@ -69,16 +110,49 @@ def ths(heading_deg: float, mode: str = "A") -> str:
 
 
 def pashr(t: float, heading_deg: float, roll_deg: float, pitch_deg: float, flag: str = "T") -> str:
-    fields = ["R", hhmmss(t, 3), f"{heading_deg % 360.0:.3f}", flag, f"{roll_deg:+.3f}", f"{pitch_deg:+.3f}", "+0.00",
-              "0.020", "0.020", "0.050", "2", "1"]
+    fields = [
+        "R",
+        hhmmss(t, 3),
+        f"{heading_deg % 360.0:.3f}",
+        flag,
+        f"{roll_deg:+.3f}",
+        f"{pitch_deg:+.3f}",
+        "+0.00",
+        "0.020",
+        "0.020",
+        "0.050",
+        "2",
+        "1",
+    ]
     return str(pynmea2.ash.ASHRATT("ASH", fields))
 
 
-def ttm(number: int, distance: str, bearing_deg: float, reference: str = "R", unit: str = "N", status: str = "T",
-        t: float | None = None, talker: str = "RA") -> str:
+def ttm(
+    number: int,
+    distance: str,
+    bearing_deg: float,
+    reference: str = "R",
+    unit: str = "N",
+    status: str = "T",
+    t: float | None = None,
+    talker: str = "RA",
+) -> str:
     """TTM; ``t`` None: the sentence of NMEA 2.x, without the time and acquisition fields."""
-    fields = [f"{number:02d}", distance, f"{bearing_deg % 360.0:.4f}", reference, "10.0", "0.0", "T", "0.5", "10.0", unit,
-              "", status, ""]
+    fields = [
+        f"{number:02d}",
+        distance,
+        f"{bearing_deg % 360.0:.4f}",
+        reference,
+        "10.0",
+        "0.0",
+        "T",
+        "0.5",
+        "10.0",
+        unit,
+        "",
+        status,
+        "",
+    ]
     if t is not None:
         fields += [hhmmss(t), "A"]
     return str(pynmea2.TTM(talker, "TTM", tuple(fields)))

@@ -21,7 +21,9 @@ def radar_sensors(**extra) -> pd.DataFrame:
     return pd.DataFrame(row)
 
 
-def navigation_lines(t0: float = 43200.0, n: int = 20, heading: float = 30.0, day: dt.date = DAY) -> list[str]:
+def navigation_lines(
+    t0: float = 43200.0, n: int = 20, heading: float = 30.0, day: dt.date = DAY
+) -> list[str]:
     """A minimal own-ship log: 1 Hz GGA and ZDA, 10 Hz $PASHR, a still ship heading ``heading`` deg."""
     out = []
     for k in range(n):

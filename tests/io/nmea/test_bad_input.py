@@ -14,7 +14,7 @@ T0 = 43200.0
 def _corrupt(sentence: str) -> str:
     """One character of the sentence changed, its checksum kept."""
     k = sentence.index(",") + 3
-    return sentence[:k] + ("7" if sentence[k] != "7" else "8") + sentence[k + 1:]
+    return sentence[:k] + ("7" if sentence[k] != "7" else "8") + sentence[k + 1 :]
 
 
 def _edited(sentence: str, old: str, new: str) -> str:
@@ -24,7 +24,9 @@ def _edited(sentence: str, old: str, new: str) -> str:
 
 def _bad_lines() -> list[tuple[str | None, str]]:
     """(expected code or None: accepted, line)."""
-    static = encode.ais({"msg_type": 5, "mmsi": 244000001, "shipname": "LONE PART", "callsign": "X1"}, seq_id=4)
+    static = encode.ais(
+        {"msg_type": 5, "mmsi": 244000001, "shipname": "LONE PART", "callsign": "X1"}, seq_id=4
+    )
     position = encode.ais({"msg_type": 1, "mmsi": 244000002, "lat": 43.1, "lon": 7.6, "second": 3})[0]
     return [
         ("bad_checksum", _corrupt(encode.gga(T0 + 3.5, 0.75, 0.13))),
@@ -34,9 +36,17 @@ def _bad_lines() -> list[tuple[str | None, str]]:
         ("unknown_type", encode.checksummed("PQQQA,1,2")),
         (None, encode.checksummed("GPVTG,40.0,T,,M,15.6,N,28.9,K,D")),  # known to pynmea2, not used
         (None, encode.checksummed("PGRME,15.0,M,45.0,M,25.0,M")),
-        (None, encode.checksummed("PASHR,POS,0,10,120003.00,4300.0,N,00730.0,E,30.0,,0.0,0.0,0.0,0.0,1.0,1.0,1.0,1.0,,")),
+        (
+            None,
+            encode.checksummed(
+                "PASHR,POS,0,10,120003.00,4300.0,N,00730.0,E,30.0,,0.0,0.0,0.0,0.0,1.0,1.0,1.0,1.0,,"
+            ),
+        ),
         ("ais_fragment", static[0]),  # a first part whose second never comes
-        ("ais_fragment", encode.ais({"msg_type": 5, "mmsi": 244000003, "shipname": "SECOND ONLY"}, seq_id=6)[1]),
+        (
+            "ais_fragment",
+            encode.ais({"msg_type": 5, "mmsi": 244000003, "shipname": "SECOND ONLY"}, seq_id=6)[1],
+        ),
         ("ais_decode", encode.checksummed("AIVDM,1,1,,A,w,0", "!")),
         ("ais_decode", encode.checksummed("AIVDM,1,1,,A,1,0", "!")),
         ("bad_field", encode.checksummed("AIVDM,0,1,,A,1,0", "!")),
@@ -82,8 +92,12 @@ def test_every_bad_line_is_set_aside_with_its_line_number(tmp_path):
 def test_binary_garbage_and_crlf_do_not_break_the_reader(tmp_path):
     path = tmp_path / "dirty.nmea"
     lines = navigation_lines(n=3)
-    blob = b"\r\n".join(x.encode() for x in lines[:12]) + b"\r\n\x00\xff\xfe\x85junk\x1c\r\n" + \
-        b"\r\n".join(x.encode() for x in lines[12:]) + b"\r\n"
+    blob = (
+        b"\r\n".join(x.encode() for x in lines[:12])
+        + b"\r\n\x00\xff\xfe\x85junk\x1c\r\n"
+        + b"\r\n".join(x.encode() for x in lines[12:])
+        + b"\r\n"
+    )
     path.write_bytes(blob)
     result = import_nmea(path, "OWN", radar_sensors())
     assert result.rejected.loc[result.rejected.code == "not_a_sentence", "line"].tolist() == [13]
@@ -98,7 +112,11 @@ def test_fragments_out_of_order_and_interleaved(tmp_path):
     lines = navigation_lines(n=3) + [a[0], b[0], a[1], b[1], c[1], c[0], a[0], a[0], a[1]]
     result = import_lines(tmp_path, lines)
     n = len(navigation_lines(n=3))
-    assert result.rejected.loc[result.rejected.code == "ais_fragment", "line"].tolist() == [n + 5, n + 6, n + 7]
+    assert result.rejected.loc[result.rejected.code == "ais_fragment", "line"].tolist() == [
+        n + 5,
+        n + 6,
+        n + 7,
+    ]
     names = {v["mmsi"]: v["name"] for v in result.summary["ais"]["vessels"]}
     assert names == {"244000001": "ALPHA", "244000002": "BRAVO"}
     assert result.summary["ais"]["vessels"][0]["messages"] == {"5": 2}

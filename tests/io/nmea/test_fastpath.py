@@ -31,10 +31,22 @@ def random_log(tmp_path_factory):
     days = [dt.date(2000, 1, 1) + dt.timedelta(days=int(d)) for d in rng.integers(0, 20000, n)]
     lines = []
     for k in range(n):
-        lines += [encode.gga(t[k], lat[k], lon[k], alt_msl=float(rng.uniform(-50, 500)), geoid=f"{rng.uniform(-100, 80):.2f}"),
-                  encode.rmc(t[k], lat[k], lon[k], days[k]), encode.gns(t[k], lat[k], lon[k]), encode.zda(t[k], days[k]),
-                  encode.hdt(float(rng.uniform(0, 360))),
-                  encode.pashr(t[k], float(rng.uniform(0, 360)), float(rng.uniform(-30, 30)), float(rng.uniform(-20, 20)))]
+        lines += [
+            encode.gga(
+                t[k],
+                lat[k],
+                lon[k],
+                alt_msl=float(rng.uniform(-50, 500)),
+                geoid=f"{rng.uniform(-100, 80):.2f}",
+            ),
+            encode.rmc(t[k], lat[k], lon[k], days[k]),
+            encode.gns(t[k], lat[k], lon[k]),
+            encode.zda(t[k], days[k]),
+            encode.hdt(float(rng.uniform(0, 360))),
+            encode.pashr(
+                t[k], float(rng.uniform(0, 360)), float(rng.uniform(-30, 30)), float(rng.uniform(-20, 20))
+            ),
+        ]
     path = tmp_path_factory.mktemp("fast") / "random.nmea"
     path.write_text("\n".join(lines) + "\n")
     rejections = Rejections([str(path)])

@@ -16,7 +16,7 @@ def _damage(lines: list[str], rng) -> list[str]:
         r = rng.random()
         if r < 0.02 and len(line) > 2:  # a character changed
             k = int(rng.integers(len(line)))
-            line = line[:k] + chr(int(rng.integers(32, 127))) + line[k + 1:]
+            line = line[:k] + chr(int(rng.integers(32, 127))) + line[k + 1 :]
         elif r < 0.04:  # cut short
             line = line[: int(rng.integers(len(line) + 1))]
         elif r < 0.05 and out:  # joined to the line before (a lost line end)
@@ -44,8 +44,9 @@ def test_a_damaged_log_is_read_without_raising(tmp_path, seed):
     assert len(result.reference) > 0.7 * len(log.reports)
     summary = result.summary
     counted = sum(n for per_talker in summary["sentences"].values() for n in per_talker.values())
-    set_aside_before_typing = result.rejected.code.isin(["not_a_sentence", "bad_prefix", "bad_tag_block", "no_checksum",
-                                                         "bad_checksum"]).sum()
+    set_aside_before_typing = result.rejected.code.isin(
+        ["not_a_sentence", "bad_prefix", "bad_tag_block", "no_checksum", "bad_checksum"]
+    ).sum()
     # every non-blank line is a sentence with a correct checksum, or set aside before it is typed
     assert counted + set_aside_before_typing + summary["blank_lines"] == summary["lines"]
     assert (result.rejected.line >= 1).all() and (result.rejected.line <= summary["lines"]).all()

@@ -13,14 +13,25 @@ from tests.io.nmea.bridgelog import OWN_MMSI, PLATFORM
 def test_navigation_rows_at_the_attitude_rate_with_interpolated_positions(bridge):
     log, _, result = bridge
     nav = result.navigation
-    assert list(nav.columns) == ["time_s", "platform", "lat_deg", "lon_deg", "alt_m", "heading_deg", "pitch_deg", "roll_deg"]
+    assert list(nav.columns) == [
+        "time_s",
+        "platform",
+        "lat_deg",
+        "lon_deg",
+        "alt_m",
+        "heading_deg",
+        "pitch_deg",
+        "roll_deg",
+    ]
     assert np.allclose(np.diff(nav.time_s), 0.1)  # 10 Hz
     # the last 0.9 s of $PASHR lie after the last GGA: set aside, never extrapolated
     assert len(nav) == 6000 - 9 and (result.rejected["code"] == "outside_positions").sum() == 9
     truth = log.truth.own(nav.time_s.to_numpy())
     east = (np.radians(nav.lon_deg) - truth["lon"]) * 6.4e6 * np.cos(truth["lat"])
     north = (np.radians(nav.lat_deg) - truth["lat"]) * 6.4e6
-    assert np.abs(east).max() < 0.01 and np.abs(north).max() < 0.01  # straight course: linear interpolation exact
+    assert (
+        np.abs(east).max() < 0.01 and np.abs(north).max() < 0.01
+    )  # straight course: linear interpolation exact
     assert np.allclose(nav.alt_m, 30.0 + 42.0)  # MSL altitude + geoid separation
     assert np.abs(wrap_angle(np.radians(nav.heading_deg) - truth["heading"])).max() < np.radians(0.001)
     # $PASHR signs are the package's: roll starboard down, pitch bow up
@@ -43,7 +54,9 @@ def test_plots_are_the_measured_ranges_deck_bearings_and_radar_times(bridge):
     assert p.bearing_deg.between(-180, 180).all()
     # the measured bias shows: bearing - true bearing averages the simulated bias
     d = wrap_angle(np.radians(p.bearing_deg) - t.bearing_true).mean()
-    assert d == pytest.approx(log.config.bearing_bias_rad, abs=3 * log.config.sigma_bearing_rad / np.sqrt(len(p)))
+    assert d == pytest.approx(
+        log.config.bearing_bias_rad, abs=3 * log.config.sigma_bearing_rad / np.sqrt(len(p))
+    )
 
 
 def test_reference_positions_times_and_sigmas(bridge):
@@ -52,7 +65,11 @@ def test_reference_positions_times_and_sigmas(bridge):
     assert list(ref.columns) == ["time_s", "target", "lat_deg", "lon_deg", "alt_m", "sigma_m", "sigma_up_m"]
     assert len(ref) == len(rep) and OWN_MMSI not in set(ref.target)
     r = ref.sort_values(["target", "time_s"], kind="stable").reset_index(drop=True)
-    t = rep.assign(target=rep.mmsi.astype(str)).sort_values(["target", "time_true"], kind="stable").reset_index(drop=True)
+    t = (
+        rep.assign(target=rep.mmsi.astype(str))
+        .sort_values(["target", "time_true"], kind="stable")
+        .reset_index(drop=True)
+    )
     assert (r.target == t.target).all()
     # AIS positions in 1/10000 minute (1.7e-6 deg)
     assert np.abs(r.lat_deg - np.degrees(t.lat_reported)).max() < 2e-6
@@ -77,9 +94,9 @@ def test_reference_positions_times_and_sigmas(bridge):
 def test_sensors_platforms_and_summary(bridge):
     log, path, result = bridge
     assert "talker" not in result.sensors.columns and list(result.sensors.sensor) == ["RADAR"]
-    assert result.platforms.to_dict("records") == [{"platform": "OWN", "prior_heading_deg": np.nan,
-                                                   "prior_pitch_deg": np.nan, "prior_roll_deg": np.nan}] or \
-        (result.platforms.platform.tolist() == ["OWN"] and result.platforms.iloc[0, 1:].isna().all())
+    assert result.platforms.to_dict("records") == [
+        {"platform": "OWN", "prior_heading_deg": np.nan, "prior_pitch_deg": np.nan, "prior_roll_deg": np.nan}
+    ] or (result.platforms.platform.tolist() == ["OWN"] and result.platforms.iloc[0, 1:].isna().all())
     s = result.summary
     assert s["sentences"]["TTM"] == {"RA": len(log.plots)} and s["sentences"]["PASHR"] == {"-": 6000}
     assert s["navigation"]["position"] == "GGA (GP)" and s["navigation"]["attitude"] == "PASHR"
@@ -87,7 +104,10 @@ def test_sensors_platforms_and_summary(bridge):
     assert s["time_span"]["navigation"]["start_utc"] == "2024-05-01T12:00:00Z"
     names = {v["mmsi"]: v["name"] for v in s["ais"]["vessels"]}
     assert names == {v.mmsi: v.name for v in log.truth.vessels if v.mmsi}
-    assert s["ais"]["own_ship"] == {"mmsi": [OWN_MMSI], "messages": {"1": sum("!AIVDO" in x for x in log.lines)}}
+    assert s["ais"]["own_ship"] == {
+        "mmsi": [OWN_MMSI],
+        "messages": {"1": sum("!AIVDO" in x for x in log.lines)},
+    }
     assert s["plots"]["per_sensor"]["RADAR"]["tracks"] == 14
     assert s["rejected"] == {"lines": 9, "by_reason": {"outside_positions": 9}}
     import json

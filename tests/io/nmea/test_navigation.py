@@ -43,7 +43,9 @@ def test_without_heading_or_position_one_error_names_what_is_missing(tmp_path):
 def test_heights_from_gns_and_rmc(tmp_path):
     gns = [encode.gns(T0 + k, LAT, LON, alt_msl=12.0, geoid="47.50") for k in range(3)]
     result = import_lines(tmp_path, gns + [encode.pashr(T0 + 1, 0, 0, 0)], date="2024-05-01")
-    assert result.navigation.alt_m.tolist() == [59.5] and result.summary["navigation"]["position"] == "GNS (GN)"
+    assert (
+        result.navigation.alt_m.tolist() == [59.5] and result.summary["navigation"]["position"] == "GNS (GN)"
+    )
     rmc = [encode.rmc(T0 + k, LAT, LON, DAY) for k in range(3)]
     result = import_lines(tmp_path, rmc + [encode.pashr(T0 + 1, 0, 0, 0)])
     assert result.navigation.alt_m.tolist() == [0.0]
@@ -57,7 +59,10 @@ def test_heights_from_gns_and_rmc(tmp_path):
 def test_the_most_frequent_talker_is_the_position_source(tmp_path):
     lines = navigation_lines(n=5) + [encode.gga(T0 + k + 0.5, LAT + 0.1, LON, talker="GN") for k in range(2)]
     result = import_lines(tmp_path, lines)
-    assert np.allclose(result.navigation.lat_deg, 43.0) and result.summary["navigation"]["position"] == "GGA (GP)"
+    assert (
+        np.allclose(result.navigation.lat_deg, 43.0)
+        and result.summary["navigation"]["position"] == "GGA (GP)"
+    )
     assert result.summary["sentences"]["GGA"] == {"GN": 2, "GP": 5}
 
 
@@ -74,8 +79,14 @@ def test_pashr_tss_roll_is_converted(tmp_path):
 
 def test_attitude_samples_set_aside(tmp_path):
     lines = [encode.gga(T0 + k, LAT, LON) for k in (0, 1, 2, 20, 21)]
-    lines += [encode.pashr(T0 + 1.5, 0, 0, 0), encode.pashr(T0 + 1.5, 5, 0, 0), encode.pashr(T0 + 1.7, 0, 0, 0, flag="M"),
-              encode.pashr(T0 + 10.0, 0, 0, 0), encode.pashr(T0 + 20.5, 0, 0, 0), encode.ths(10.0, "V")]
+    lines += [
+        encode.pashr(T0 + 1.5, 0, 0, 0),
+        encode.pashr(T0 + 1.5, 5, 0, 0),
+        encode.pashr(T0 + 1.7, 0, 0, 0, flag="M"),
+        encode.pashr(T0 + 10.0, 0, 0, 0),
+        encode.pashr(T0 + 20.5, 0, 0, 0),
+        encode.ths(10.0, "V"),
+    ]
     result = import_lines(tmp_path, lines, date="2024-05-01")
     assert result.navigation.time_s.tolist() == [T0 + 1.5, T0 + 20.5]
     assert rejected_lines(result, "duplicate_time") == [7]

@@ -16,7 +16,9 @@ MIDNIGHT = dt.datetime.combine(DAY, dt.time(0), tzinfo=dt.timezone.utc).timestam
 
 def test_midnight_rollover_keeps_one_time_axis(tmp_path):
     start = dt.datetime(2024, 5, 1, 23, 58, 0, tzinfo=dt.timezone.utc)
-    log = simulate_bridge_log(BridgeLogConfig(seed=4, start_utc=start, duration_s=240.0, n_vessels=4, n_ais=3))
+    log = simulate_bridge_log(
+        BridgeLogConfig(seed=4, start_utc=start, duration_s=240.0, n_vessels=4, n_ais=3)
+    )
     result = import_nmea(log.write(tmp_path / "midnight.nmea"), PLATFORM, log.sensors)
     nav = result.navigation.time_s.to_numpy()
     assert np.all(np.diff(nav) > 0) and nav[0] == 86280.0 and nav[-1] > 86400.0 + 110
@@ -51,7 +53,9 @@ def test_date_argument_sets_the_origin(tmp_path):
 
 def test_date_from_reception_times_without_zda_rmc_or_argument(tmp_path):
     lines = [x for x in navigation_lines(t0=43200.0, n=5) if "ZDA" not in x]
-    report = encode.ais({"msg_type": 1, "mmsi": 244000001, "lat": 43.1, "lon": 7.6, "second": 2, "speed": 10.0})
+    report = encode.ais(
+        {"msg_type": 1, "mmsi": 244000001, "lat": 43.1, "lon": 7.6, "second": 2, "speed": 10.0}
+    )
     lines.append(encode.tag(MIDNIGHT + 43202.7) + report[0])
     result = import_lines(tmp_path, lines)
     assert result.summary["date"] == {"origin": "2024-05-01", "source": "reception times"}

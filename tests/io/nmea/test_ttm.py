@@ -25,8 +25,14 @@ def test_distance_units(tmp_path, unit, per_unit):
 
 def test_true_bearings_become_deck_bearings_with_the_heading_then(tmp_path):
     lines = navigation_lines(heading=30.0)
-    cases = [("T", 100.0, 70.0), ("R", 100.0, 100.0), ("T", 10.0, -20.0), ("T", 200.0, 170.0), ("R", 270.0, -90.0),
-             ("T", 210.0, 180.0)]
+    cases = [
+        ("T", 100.0, 70.0),
+        ("R", 100.0, 100.0),
+        ("T", 10.0, -20.0),
+        ("T", 200.0, 170.0),
+        ("R", 270.0, -90.0),
+        ("T", 210.0, 180.0),
+    ]
     lines += [encode.ttm(k + 1, "2.00000", b, ref, t=T0 + 1.05 + k) for k, (ref, b, _) in enumerate(cases)]
     plots = import_lines(tmp_path, lines).plots
     assert plots.bearing_deg.to_numpy() == pytest.approx([q for *_, q in cases], abs=1e-6)
@@ -36,16 +42,32 @@ def test_true_bearing_across_north_interpolates_the_heading_the_short_way(tmp_pa
     lines = []
     for k in range(6):
         t = T0 + k
-        lines += [encode.gga(t, LAT, LON), encode.pashr(t, 359.0, 0.0, 0.0), encode.pashr(t + 0.5, 1.0, 0.0, 0.0)]
-    lines += [encode.ttm(1, "2.00000", 90.0, "T", t=T0 + 2.25), encode.ttm(2, "2.00000", 90.0, "T", t=T0 + 2.75)]
+        lines += [
+            encode.gga(t, LAT, LON),
+            encode.pashr(t, 359.0, 0.0, 0.0),
+            encode.pashr(t + 0.5, 1.0, 0.0, 0.0),
+        ]
+    lines += [
+        encode.ttm(1, "2.00000", 90.0, "T", t=T0 + 2.25),
+        encode.ttm(2, "2.00000", 90.0, "T", t=T0 + 2.75),
+    ]
     plots = import_lines(tmp_path, lines, date="2024-05-01").plots
     # heading 0 deg halfway between 359 and 1 (not 180); 0 between 1 and the next 359
     assert plots.bearing_deg.to_numpy() == pytest.approx([90.0, 90.0], abs=1e-6)
 
 
 def test_generated_mixed_references_and_units_give_the_measured_deck_bearings(tmp_path):
-    log = simulate_bridge_log(BridgeLogConfig(seed=2, duration_s=90.0, n_vessels=5, n_ais=2, bearing_reference="mixed",
-                                              distance_unit="mixed", heading_error_rad=np.radians(0.7)))
+    log = simulate_bridge_log(
+        BridgeLogConfig(
+            seed=2,
+            duration_s=90.0,
+            n_vessels=5,
+            n_ais=2,
+            bearing_reference="mixed",
+            distance_unit="mixed",
+            heading_error_rad=np.radians(0.7),
+        )
+    )
     result = import_nmea(log.write(tmp_path / "mixed.nmea"), PLATFORM, log.sensors)
     p = result.plots.sort_values(["track", "time_s"]).reset_index(drop=True)
     t = log.plots.sort_values(["track", "time_reported"]).reset_index(drop=True)
@@ -58,7 +80,9 @@ def test_generated_mixed_references_and_units_give_the_measured_deck_bearings(tm
 
 
 def test_status_lost_and_acquiring(tmp_path):
-    lines = navigation_lines() + [encode.ttm(1, "2.0", 10.0, status=s, t=T0 + 2 + k) for k, s in enumerate("TLQX")]
+    lines = navigation_lines() + [
+        encode.ttm(1, "2.0", 10.0, status=s, t=T0 + 2 + k) for k, s in enumerate("TLQX")
+    ]
     result = import_lines(tmp_path, lines)
     n = len(navigation_lines())
     assert result.plots.track.tolist() == ["1"]
@@ -76,7 +100,10 @@ def test_ttm_without_time_field_is_set_aside_never_timed(tmp_path):
 
 
 def test_true_bearing_outside_the_heading_is_set_aside(tmp_path):
-    lines = navigation_lines(n=5) + [encode.ttm(1, "2.0", 10.0, "T", t=T0 + 100.0), encode.ttm(2, "2.0", 10.0, "R", t=T0 + 100.0)]
+    lines = navigation_lines(n=5) + [
+        encode.ttm(1, "2.0", 10.0, "T", t=T0 + 100.0),
+        encode.ttm(2, "2.0", 10.0, "R", t=T0 + 100.0),
+    ]
     result = import_lines(tmp_path, lines)
     assert rejected_lines(result, "ttm_no_heading") == [len(lines) - 1]
     assert result.plots.track.tolist() == ["2"]  # relative: kept; the engine checks it against the navigation
@@ -84,7 +111,9 @@ def test_true_bearing_outside_the_heading_is_set_aside(tmp_path):
 
 def test_talkers_name_the_sensors(tmp_path):
     sensors = pd.concat([radar_sensors(talker="RA"), radar_sensors(talker="rb").assign(sensor="NAV2")])
-    lines = navigation_lines() + [encode.ttm(j + 1, "2.0", 10.0, t=T0 + 2, talker=k) for j, k in enumerate(("RA", "RB", "RC"))]
+    lines = navigation_lines() + [
+        encode.ttm(j + 1, "2.0", 10.0, t=T0 + 2, talker=k) for j, k in enumerate(("RA", "RB", "RC"))
+    ]
     result = import_lines(tmp_path, lines, sensors=sensors)
     assert result.plots.sensor.tolist() == ["RADAR", "NAV2"]
     assert rejected_lines(result, "ttm_no_sensor") == [len(lines)]
@@ -94,6 +123,12 @@ def test_talkers_name_the_sensors(tmp_path):
 
 
 def test_a_second_ttm_of_a_track_at_one_time_is_set_aside(tmp_path):
-    lines = navigation_lines() + [encode.ttm(1, "2.0", 10.0, t=T0 + 2)] * 2 + [encode.ttm(2, "2.0", 10.0, t=T0 + 2)]
+    lines = (
+        navigation_lines()
+        + [encode.ttm(1, "2.0", 10.0, t=T0 + 2)] * 2
+        + [encode.ttm(2, "2.0", 10.0, t=T0 + 2)]
+    )
     result = import_lines(tmp_path, lines)
-    assert result.plots.track.tolist() == ["1", "2"] and rejected_lines(result, "duplicate_time") == [len(lines) - 1]
+    assert result.plots.track.tolist() == ["1", "2"] and rejected_lines(result, "duplicate_time") == [
+        len(lines) - 1
+    ]

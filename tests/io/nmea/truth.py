@@ -122,11 +122,16 @@ class Truth:
         north = c.own_speed_mps * np.cos(c.own_course_rad) * s
         lat, lon = self._to_geodetic(east, north)
         w = 2 * np.pi
-        return {"lat": lat, "lon": lon, "alt": np.full(t.shape, c.antenna_msl_m + c.geoid_separation_m),
-                "heading": c.own_course_rad + c.yaw_amplitude_rad * np.sin(w * s / c.yaw_period_s),
-                "pitch": c.pitch_amplitude_rad * np.sin(w * s / c.pitch_period_s + 0.4),
-                "roll": c.roll_amplitude_rad * np.sin(w * s / c.roll_period_s + 1.1),
-                "speed": np.full(t.shape, c.own_speed_mps), "course": np.full(t.shape, c.own_course_rad)}
+        return {
+            "lat": lat,
+            "lon": lon,
+            "alt": np.full(t.shape, c.antenna_msl_m + c.geoid_separation_m),
+            "heading": c.own_course_rad + c.yaw_amplitude_rad * np.sin(w * s / c.yaw_period_s),
+            "pitch": c.pitch_amplitude_rad * np.sin(w * s / c.pitch_period_s + 0.4),
+            "roll": c.roll_amplitude_rad * np.sin(w * s / c.roll_period_s + 1.1),
+            "speed": np.full(t.shape, c.own_speed_mps),
+            "course": np.full(t.shape, c.own_course_rad),
+        }
 
     def reported_heading(self, t) -> np.ndarray:
         """The heading the navigation reports (true + heading error), rad."""
@@ -139,9 +144,13 @@ class Truth:
         s = np.asarray(t, dtype=np.float64) - self.t0
         lat, lon = self._to_geodetic(v.east + v.v_east * s, v.north + v.v_north * s)
         shape = np.shape(s)
-        return {"lat": lat, "lon": lon, "alt": np.full(shape, self.config.geoid_separation_m),
-                "speed": np.full(shape, np.hypot(v.v_east, v.v_north)),
-                "course": np.full(shape, np.mod(np.arctan2(v.v_east, v.v_north), 2 * np.pi))}
+        return {
+            "lat": lat,
+            "lon": lon,
+            "alt": np.full(shape, self.config.geoid_separation_m),
+            "speed": np.full(shape, np.hypot(v.v_east, v.v_north)),
+            "course": np.full(shape, np.mod(np.arctan2(v.v_east, v.v_north), 2 * np.pi)),
+        }
 
     def radar(self, k: int, t) -> tuple[np.ndarray, np.ndarray]:
         """True slant range (m) and deck bearing (rad) of vessel ``k`` from the radar at times ``t``
@@ -155,9 +164,28 @@ class Truth:
         return np.linalg.norm(u_deck, axis=1), np.arctan2(u_deck[:, 0], u_deck[:, 1])
 
 
-NAMES = ["NORDIC STAR", "AURORA", "BLUE WHALE", "CAPE ROSA", "DELFINO", "ELBE TRADER", "FJORD KING", "GALATEA",
-         "HELIOS", "IONIAN SEA", "JUNO", "KASTOR", "LIGURIA", "MISTRAL", "NEREIDE", "ORION", "POSEIDON", "QUEEN MAB",
-         "RIVIERA", "SIRIUS"]
+NAMES = [
+    "NORDIC STAR",
+    "AURORA",
+    "BLUE WHALE",
+    "CAPE ROSA",
+    "DELFINO",
+    "ELBE TRADER",
+    "FJORD KING",
+    "GALATEA",
+    "HELIOS",
+    "IONIAN SEA",
+    "JUNO",
+    "KASTOR",
+    "LIGURIA",
+    "MISTRAL",
+    "NEREIDE",
+    "ORION",
+    "POSEIDON",
+    "QUEEN MAB",
+    "RIVIERA",
+    "SIRIUS",
+]
 
 
 def make_truth(config: BridgeLogConfig) -> Truth:
@@ -171,13 +199,21 @@ def make_truth(config: BridgeLogConfig) -> Truth:
     for k in range(config.n_vessels):
         r, az = rng.uniform(3e3, 18e3), rng.uniform(0, 2 * np.pi)
         speed, course = rng.uniform(3.0, 12.0), rng.uniform(0, 2 * np.pi)
-        v = Vessel(int(tracks[k]), r * np.sin(az), r * np.cos(az), speed * np.sin(course), speed * np.cos(course),
-                   phase_s=float(rng.uniform(0, config.scan_period_s)))
+        v = Vessel(
+            int(tracks[k]),
+            r * np.sin(az),
+            r * np.cos(az),
+            speed * np.sin(course),
+            speed * np.cos(course),
+            phase_s=float(rng.uniform(0, config.scan_period_s)),
+        )
         if k < config.n_ais:
             v.mmsi = str(244000100 + k)
             v.name = NAMES[k % len(NAMES)]
             v.ais_class = "A" if k % 3 != 2 else "B"
-            v.period_s = int(rng.choice([2, 3, 6, 10])) if v.ais_class == "A" else int(config.class_b_period_s)
+            v.period_s = (
+                int(rng.choice([2, 3, 6, 10])) if v.ais_class == "A" else int(config.class_b_period_s)
+            )
             v.accuracy = bool(rng.random() < 0.5)
         truth.vessels.append(v)
     return truth

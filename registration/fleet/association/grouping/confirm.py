@@ -22,10 +22,10 @@ import numpy as np
 from registration.fleet.association.grouping.geometry import Assigner, PlotGeometry, plot_geometry
 from registration.fleet.association.grouping.groups import group_tracklets
 from registration.fleet.association.grouping.match import chain_groups, make_tracklets
-from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.joining.units import make_units
-from registration.fleet.data.problem import FleetProblem
+from registration.fleet.association.options import AssociationOptions
 from registration.fleet.batch.solver import progress_status
+from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["Confirmed", "confirm_targets", "fixing_sensors", "merge_fragments", "new_names"]
 
@@ -63,8 +63,9 @@ class Confirmed:
     seconds_registration: float = 0.0
 
 
-def _group_labels(problem: FleetProblem, tl, group: np.ndarray, chain: np.ndarray, min_windows: int,
-                  taken: set) -> np.ndarray:
+def _group_labels(
+    problem: FleetProblem, tl, group: np.ndarray, chain: np.ndarray, min_windows: int, taken: set
+) -> np.ndarray:
     """(N,) the label of each plot ('' none): a group is confirmed when it holds two or more sensors,
     a chain when it holds confirmed groups in ``min_windows`` windows or more (a chain of one window
     is mostly a target's pieces that missed their group by chance); names by first row, not in
@@ -111,6 +112,7 @@ def merge_fragments(problem: FleetProblem, labels: np.ndarray, track: np.ndarray
         while root[a] != a:
             a = root[a]
         return a
+
     pairs = np.unique(np.stack([track[sel], index]), axis=1)
     for tr in np.unique(pairs[0]):
         mine = pairs[1][pairs[0] == tr]
@@ -139,19 +141,44 @@ def _window_subset(problem: FleetProblem, options: AssociationOptions) -> np.nda
     return np.floor(problem.time / options.window_s).astype(np.int64) % k == 0
 
 
-def _group_pass(problem, track, x, P, options, assigner, screen: bool, last: bool, taken: set,
-                geom: PlotGeometry | None = None):
+def _group_pass(
+    problem,
+    track,
+    x,
+    P,
+    options,
+    assigner,
+    screen: bool,
+    last: bool,
+    taken: set,
+    geom: PlotGeometry | None = None,
+):
     """One grouping pass: (labels (N,), tracklet of each plot (N,))."""
     geom = plot_geometry(problem, x, np.flatnonzero(track >= 0)) if geom is None else geom
-    tl = make_tracklets(problem, geom, track, options.window_s, options.min_tracklet_plots,
-                        options.gate_probability if screen else None)
+    tl = make_tracklets(
+        problem,
+        geom,
+        track,
+        options.window_s,
+        options.min_tracklet_plots,
+        options.gate_probability if screen else None,
+    )
     group = group_tracklets(problem, x, tl, P, options.gate_probability, assigner)
     chain = chain_groups(tl, group, assigner)
     return _group_labels(problem, tl, group, chain, 2 if last else 1, taken), tl.of_plot
 
 
-def confirm_targets(problem: FleetProblem, given: np.ndarray, track_id: np.ndarray, x: np.ndarray, P: np.ndarray,
-                    options: AssociationOptions, assigner: Assigner, register, bar) -> Confirmed:
+def confirm_targets(
+    problem: FleetProblem,
+    given: np.ndarray,
+    track_id: np.ndarray,
+    x: np.ndarray,
+    P: np.ndarray,
+    options: AssociationOptions,
+    assigner: Assigner,
+    register,
+    bar,
+) -> Confirmed:
     """Targets among the fixing sensors' plots without a label in ``given`` (N,), their tracks from
     ``track_id`` (N,; '' : made by the tracker), from the estimate ``x`` and covariance ``P``;
     ``register(labels, subset) -> (x, P)`` registers the labelled plots (``subset``: only those
@@ -184,5 +211,6 @@ def confirm_targets(problem: FleetProblem, given: np.ndarray, track_id: np.ndarr
         track = make_units(problem, track_id, free, x, options, assigner).of_plot
     labels, piece = _group_pass(problem, track, x, P, options, assigner, passes > 0, True, taken)
     labels = merge_fragments(problem, labels, track)
-    return Confirmed(np.where(given != "", given, labels), x, P, track, piece, passes + 1, converged, changes,
-                     t_solve)
+    return Confirmed(
+        np.where(given != "", given, labels), x, P, track, piece, passes + 1, converged, changes, t_solve
+    )

@@ -38,7 +38,9 @@ def _mahalanobis(d: np.ndarray, S: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     try:
         L = np.linalg.cholesky(S)
     except np.linalg.LinAlgError:
-        return np.einsum("...i,...i->...", d, np.linalg.solve(S, d[..., None])[..., 0]), np.linalg.slogdet(S)[1]
+        return np.einsum("...i,...i->...", d, np.linalg.solve(S, d[..., None])[..., 0]), np.linalg.slogdet(S)[
+            1
+        ]
     y = np.empty_like(d)
     for i in range(d.shape[1]):  # forward substitution y = L^-1 d
         y[:, i] = (d[:, i] - np.einsum("ki,ki->k", L[:, i, :i], y[:, :i])) / L[:, i, i]
@@ -46,8 +48,9 @@ def _mahalanobis(d: np.ndarray, S: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return np.einsum("ki,ki->k", y, y), 2.0 * np.log(diag).sum(axis=1)
 
 
-def group_covariances(cov: np.ndarray, G: np.ndarray, P: np.ndarray,
-                      cols: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def group_covariances(
+    cov: np.ndarray, G: np.ndarray, P: np.ndarray, cols: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Per group curve (covariance ``cov`` (G, 9, 9), sensitivity ``G`` (G, 9, n)) under the states'
     covariance P (n, n), for the tracklets of one sensor whose platform's and own states are
     ``cols`` (w,; -1: a state the sensor does not have): the curve's covariance with the
@@ -86,8 +89,15 @@ def line_cost(tl, b: np.ndarray, G_b: np.ndarray, line: np.ndarray, joint: np.nd
     return _mahalanobis(d, S)
 
 
-def measurement_cost(problem: FleetProblem, x: np.ndarray, tl, b: np.ndarray, cols: np.ndarray, line: np.ndarray,
-                     joint: np.ndarray):
+def measurement_cost(
+    problem: FleetProblem,
+    x: np.ndarray,
+    tl,
+    b: np.ndarray,
+    cols: np.ndarray,
+    line: np.ndarray,
+    joint: np.ndarray,
+):
     """(d2, logdet), each (K,), of K pairs as :func:`line_cost`, in the channels of the tracklets'
     sensor (module docstring; ``cols`` (w,) its platform's and its own state columns, -1 where
     it has none), under the states ``x`` (n,). ``A C_g A^T + R + D P D^T`` is written as
@@ -105,13 +115,18 @@ def measurement_cost(problem: FleetProblem, x: np.ndarray, tl, b: np.ndarray, co
     if cols.size == 6:
         res, J = _codegen.get("fleet_residual")(p, *problem.nav[plot].T, att, bias, lever, *meas.T)[:2]
     else:  # at the time seen: the group curve's velocity there (m/s), the platform's navigation and rate
-        rate_basis = np.concatenate([(k * tau ** max(k - 1, 0))[:, None, None] * np.eye(3) for k in range(N_COEF)],
-                                    axis=2) / tl.half_width
+        rate_basis = (
+            np.concatenate(
+                [(k * tau ** max(k - 1, 0))[:, None, None] * np.eye(3) for k in range(N_COEF)], axis=2
+            )
+            / tl.half_width
+        )
         v = (rate_basis @ line[grp][..., None])[..., 0]
         nav, rate = tl.rep_nav[b].reshape(-1, 6), tl.rep_rate[b].reshape(-1, 6)
         gain, pos_err = xs[cols[6]], xs[cols[8:11]]  # range gain, position error (ENU); the time bias is in t
-        res, J = _codegen.get("fleet_residual_ext")(p, v, *nav.T, rate, att, bias, gain, 0.0, pos_err, lever,
-                                                    *meas.T)[:2]
+        res, J = _codegen.get("fleet_residual_ext")(
+            p, v, *nav.T, rate, att, bias, gain, 0.0, pos_err, lever, *meas.T
+        )[:2]
     res, J = np.asarray(res).reshape(-1, 3), np.asarray(J).reshape(-1, 3, 3 + cols.size)
     res, J = np.where(mask, res, 0.0), np.where(mask[..., None], J, 0.0)
     W = np.concatenate([J[:, :, :3] @ basis, J[:, :, 3:]], axis=2).reshape(k_pairs, 9, N_LINE + cols.size)

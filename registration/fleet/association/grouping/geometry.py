@@ -38,12 +38,20 @@ import numpy as np
 from scipy.optimize import linear_sum_assignment
 
 from registration import _codegen
-from registration.fleet.corrected import corrected_positions
 from registration.fleet.batch.initial import ASSUMED_RANGE_M
+from registration.fleet.corrected import corrected_positions
 from registration.fleet.data.problem import FleetProblem
 
-__all__ = ["N_COEF", "N_LINE", "TIME_BIAS_SLOT", "UNCONSTRAINED_SIGMA_M", "PlotGeometry", "plot_geometry",
-           "state_columns", "Assigner"]
+__all__ = [
+    "N_COEF",
+    "N_LINE",
+    "TIME_BIAS_SLOT",
+    "UNCONSTRAINED_SIGMA_M",
+    "PlotGeometry",
+    "plot_geometry",
+    "state_columns",
+    "Assigner",
+]
 
 #: Standard deviation (m) given to a plot position along a direction its sensor does not measure.
 UNCONSTRAINED_SIGMA_M = 1.0e5
@@ -94,22 +102,31 @@ def state_columns(problem: FleetProblem, sel: np.ndarray | None = None) -> np.nd
     return problem.layout.sensor_states(sensor, problem.sensor_platform, absent=-1)
 
 
-def _positions(problem: FleetProblem, xs: np.ndarray, cols: np.ndarray, sel: np.ndarray, nav: np.ndarray,
-               rate: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _positions(
+    problem: FleetProblem,
+    xs: np.ndarray,
+    cols: np.ndarray,
+    sel: np.ndarray,
+    nav: np.ndarray,
+    rate: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray]:
     """(p_ecef (M, 3) m, J (M, 3, 3 + w)) of plots ``sel`` with states ``xs`` (n + 1,, 0 last)."""
     att, bias = xs[cols[:, :3]], xs[cols[:, 3:6]]
     mask, meas = problem.mask[sel], problem.meas[sel]
     lever = problem.sensor_lever[problem.sensor[sel]]
     r = np.where(mask[:, 0], meas[:, 0], ASSUMED_RANGE_M + bias[:, 0])
     e = np.where(mask[:, 2], meas[:, 2], bias[:, 2])
-    p = corrected_positions(nav, cols, xs, lever, np.stack([r, meas[:, 1], e], axis=1))  # cols -1 reads xs[-1] = 0
+    p = corrected_positions(
+        nav, cols, xs, lever, np.stack([r, meas[:, 1], e], axis=1)
+    )  # cols -1 reads xs[-1] = 0
     if cols.shape[1] == 6:
         J = _codegen.get("fleet_residual")(p, *nav.T, att, bias, lever, r, meas[:, 1], e)[1]
         return p, np.asarray(J).reshape(-1, 3, 9)
     gain, pos_err = xs[cols[:, 6]], xs[cols[:, 8:11]]
     # the target velocity 0: the time bias's column is the platform's motion (module docstring)
-    J = _codegen.get("fleet_residual_ext")(p, np.zeros(3), *nav.T, rate, att, bias, gain, 0.0, pos_err, lever, r,
-                                           meas[:, 1], e)[1]
+    J = _codegen.get("fleet_residual_ext")(
+        p, np.zeros(3), *nav.T, rate, att, bias, gain, 0.0, pos_err, lever, r, meas[:, 1], e
+    )[1]
     return p, np.asarray(J).reshape(-1, 3, 14)
 
 

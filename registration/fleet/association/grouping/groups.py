@@ -12,7 +12,12 @@ from __future__ import annotations
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association.grouping.cost import group_covariances, joint_covariance, line_cost, measurement_cost
+from registration.fleet.association.grouping.cost import (
+    group_covariances,
+    joint_covariance,
+    line_cost,
+    measurement_cost,
+)
 from registration.fleet.association.grouping.geometry import N_LINE, Assigner, state_columns
 from registration.fleet.data.problem import FleetProblem
 
@@ -89,8 +94,15 @@ def _costs(problem: FleetProblem, x, tl, b: np.ndarray, gi: np.ndarray, curves, 
     return d2, logdet
 
 
-def _assign_windows(b: np.ndarray, bi: np.ndarray, gi: np.ndarray, cost: np.ndarray, no_match: np.ndarray,
-                    window: np.ndarray, assigner: Assigner) -> np.ndarray:
+def _assign_windows(
+    b: np.ndarray,
+    bi: np.ndarray,
+    gi: np.ndarray,
+    cost: np.ndarray,
+    no_match: np.ndarray,
+    window: np.ndarray,
+    assigner: Assigner,
+) -> np.ndarray:
     """(B,) the group given to each tracklet ``b`` (-1: none), one assignment per window."""
     out = np.full(b.size, -1, dtype=np.int64)
     pair_window = window[bi]
@@ -108,8 +120,9 @@ def _assign_windows(b: np.ndarray, bi: np.ndarray, gi: np.ndarray, cost: np.ndar
     return out
 
 
-def group_tracklets(problem: FleetProblem, x: np.ndarray, tl, P: np.ndarray, gate_probability: float,
-                    assigner: Assigner) -> np.ndarray:
+def group_tracklets(
+    problem: FleetProblem, x: np.ndarray, tl, P: np.ndarray, gate_probability: float, assigner: Assigner
+) -> np.ndarray:
     """(T,) group id of each tracklet (unique over all windows), under the estimate ``x`` (n,) and
     its covariance ``P`` (n, n)."""
     rank = (problem.layout.bias_index >= 0).sum(axis=1)

@@ -29,8 +29,14 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association.grouping.geometry import (N_COEF, N_LINE, TIME_BIAS_SLOT, Assigner, PlotGeometry,
-                                                     state_columns)
+from registration.fleet.association.grouping.geometry import (
+    N_COEF,
+    N_LINE,
+    TIME_BIAS_SLOT,
+    Assigner,
+    PlotGeometry,
+    state_columns,
+)
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["Tracklets", "make_tracklets", "chain_groups", "time_shift_sensitivity"]
@@ -78,10 +84,17 @@ def _fit_pieces(geom: PlotGeometry, order: np.ndarray, start: np.ndarray, tau: n
     # the sums in the blocks (a, b) with a + b = k
     moments = np.add.reduceat(power[:, :, None, None] * info[:, None], start, axis=0)  # (K, 5, 3, 3)
     a, b = np.divmod(np.arange(N_COEF * N_COEF), N_COEF)
-    N = moments[:, a + b].reshape(-1, N_COEF, N_COEF, 3, 3).transpose(0, 1, 3, 2, 4).reshape(-1, N_LINE, N_LINE)
+    N = (
+        moments[:, a + b]
+        .reshape(-1, N_COEF, N_COEF, 3, 3)
+        .transpose(0, 1, 3, 2, 4)
+        .reshape(-1, N_LINE, N_LINE)
+    )
     p = geom.p_ecef[at]
     rhs = (basis[:, :, None] * (info @ p[..., None])[..., 0][:, None, :]).reshape(-1, N_LINE)
-    sens = (basis[:, :, None, None] * (info @ geom.dp_dx[at])[:, None]).reshape(-1, N_LINE, geom.dp_dx.shape[2])
+    sens = (basis[:, :, None, None] * (info @ geom.dp_dx[at])[:, None]).reshape(
+        -1, N_LINE, geom.dp_dx.shape[2]
+    )
     rhs, sens = (np.add.reduceat(v, start, axis=0) for v in (rhs, sens))
     cov = np.linalg.inv(N)
     line = (cov @ rhs[..., None])[..., 0]
@@ -92,8 +105,14 @@ def _fit_pieces(geom: PlotGeometry, order: np.ndarray, start: np.ndarray, tau: n
     return line, cov, cov @ sens, chi
 
 
-def make_tracklets(problem: FleetProblem, geom: PlotGeometry, track: np.ndarray, window_s: float,
-                   min_plots: int, gate_probability: float | None) -> Tracklets:
+def make_tracklets(
+    problem: FleetProblem,
+    geom: PlotGeometry,
+    track: np.ndarray,
+    window_s: float,
+    min_plots: int,
+    gate_probability: float | None,
+) -> Tracklets:
     """Cut the sensor tracks ``track`` (N,) into windows and fit each piece (module docstring);
     ``geom`` covers at least the plots in a track.
     Pieces of fewer than ``min_plots`` plots are left out, and, when ``gate_probability`` is given,
@@ -138,8 +157,20 @@ def make_tracklets(problem: FleetProblem, geom: PlotGeometry, track: np.ndarray,
     first, last = start[keep], start[keep] + count[keep] - 1
     at = np.stack([first, (first + last) // 2, last], axis=1)
     rep_rows = geom.rows(order[at])
-    return Tracklets(key_t[first], key_w[first], problem.sensor[order[first]], line, cov, G[:, :, :n], order[at],
-                     tau[at], of_plot, geom.nav[rep_rows], geom.rate[rep_rows], 0.5 * window_s)
+    return Tracklets(
+        key_t[first],
+        key_w[first],
+        problem.sensor[order[first]],
+        line,
+        cov,
+        G[:, :, :n],
+        order[at],
+        tau[at],
+        of_plot,
+        geom.nav[rep_rows],
+        geom.rate[rep_rows],
+        0.5 * window_s,
+    )
 
 
 def time_shift_sensitivity(line: np.ndarray, half_width: float) -> np.ndarray:

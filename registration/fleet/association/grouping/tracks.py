@@ -106,7 +106,9 @@ class _Tracks:
         for name in ("sensor", "id", "x", "P", "t", "missed"):
             setattr(self, name, getattr(self, name)[sel])
 
-    def open(self, sensor: np.ndarray, z: np.ndarray, R: np.ndarray, t: np.ndarray, max_speed: float) -> np.ndarray:
+    def open(
+        self, sensor: np.ndarray, z: np.ndarray, R: np.ndarray, t: np.ndarray, max_speed: float
+    ) -> np.ndarray:
         n = sensor.size
         ids = self.next_id + np.arange(n)
         self.next_id += n
@@ -122,8 +124,18 @@ class _Tracks:
         return ids
 
 
-def _match_scan(tracks: _Tracks, live: np.ndarray, xp, Pp, sen, p: np.ndarray, cov: np.ndarray, trace: np.ndarray,
-                gate: float, assigner: Assigner) -> tuple[np.ndarray, np.ndarray]:
+def _match_scan(
+    tracks: _Tracks,
+    live: np.ndarray,
+    xp,
+    Pp,
+    sen,
+    p: np.ndarray,
+    cov: np.ndarray,
+    trace: np.ndarray,
+    gate: float,
+    assigner: Assigner,
+) -> tuple[np.ndarray, np.ndarray]:
     """Pairs (track index into ``tracks``, plot index into the step) of one step: one assignment
     over all sensors, tracks and plots of different sensors never paired (``sen`` is sorted). The
     step's plots: positions ``p`` (M, 3) m, covariances ``cov`` (M, 3, 3) m^2 and their traces (M,)."""
@@ -177,9 +189,18 @@ def _update(tracks: _Tracks, ti: np.ndarray, xp, Pp, z: np.ndarray, R: np.ndarra
     tracks.missed[ti] = 0
 
 
-def sensor_tracks(time: np.ndarray, sensor: np.ndarray, geom: PlotGeometry, assigner: Assigner, *,
-                  max_speed: float, accel_sigma: float, gate_probability: float, max_missed: int,
-                  min_plots: int) -> np.ndarray:
+def sensor_tracks(
+    time: np.ndarray,
+    sensor: np.ndarray,
+    geom: PlotGeometry,
+    assigner: Assigner,
+    *,
+    max_speed: float,
+    accel_sigma: float,
+    gate_probability: float,
+    max_missed: int,
+    min_plots: int,
+) -> np.ndarray:
     """(N,) track id of each plot (ids unique over all sensors), -1 for plots in no track of at
     least ``min_plots`` plots (clutter). ``time`` (N,) s, ``sensor`` (N,) sensor index."""
     gate = float(chi2.ppf(gate_probability, 3))
@@ -213,8 +234,15 @@ def sensor_tracks(time: np.ndarray, sensor: np.ndarray, geom: PlotGeometry, assi
     return track
 
 
-def track_breaks(time: np.ndarray, track: np.ndarray, geom: PlotGeometry, *, max_speed: float, accel_sigma: float,
-                 probability: float) -> tuple[np.ndarray, np.ndarray]:
+def track_breaks(
+    time: np.ndarray,
+    track: np.ndarray,
+    geom: PlotGeometry,
+    *,
+    max_speed: float,
+    accel_sigma: float,
+    probability: float,
+) -> tuple[np.ndarray, np.ndarray]:
     """Where given tracks jump: each track (``track`` (M,) key per plot, ``time`` (M,) s, the plots'
     geometry ``geom`` rows in the same order) is followed by the constant-velocity filter of
     :func:`sensor_tracks`, and a plot outside the ``1 - probability`` gate (chi-square, 3 degrees

@@ -25,11 +25,19 @@ import numpy as np
 from scipy.stats import chi2
 
 from registration import _codegen
-from registration.fleet.association.joining.curves import Curves
 from registration.fleet.association.grouping.geometry import state_columns
+from registration.fleet.association.joining.curves import Curves
 from registration.fleet.data.problem import FleetProblem
 
-__all__ = ["Pairs", "candidate_plots", "pair_tests", "evaluate", "pair_statistics", "kalman_update", "verify_plots"]
+__all__ = [
+    "Pairs",
+    "candidate_plots",
+    "pair_tests",
+    "evaluate",
+    "pair_statistics",
+    "kalman_update",
+    "verify_plots",
+]
 
 #: Pairs of ``test_plots`` (20) plots whose tests are formed in one batch (bounds the memory: about
 #: 60 kB per pair); pairs of fewer plots are batched by more, for about the same memory, up to
@@ -64,11 +72,21 @@ class Pairs:
         return int(self.unit.size)
 
     def take(self, sel: np.ndarray) -> "Pairs":
-        return Pairs(*(getattr(self, f)[sel] for f in ("unit", "target", "r", "D", "Sc", "dof", "plots", "mask")))
+        return Pairs(
+            *(getattr(self, f)[sel] for f in ("unit", "target", "r", "D", "Sc", "dof", "plots", "mask"))
+        )
 
 
-def candidate_plots(problem: FleetProblem, x: np.ndarray, unit_of_plot: np.ndarray, units: np.ndarray,
-                    curves: Curves, *, k: int, min_plots: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, dict]:
+def candidate_plots(
+    problem: FleetProblem,
+    x: np.ndarray,
+    unit_of_plot: np.ndarray,
+    units: np.ndarray,
+    curves: Curves,
+    *,
+    k: int,
+    min_plots: int,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, dict]:
     """The pairs (unit of ``units``, anchor target) worth testing: at least ``min_plots`` of the
     unit's plots inside the target's predicted span. Returns (unit (C,), target (C,), plots (C, k)
     spread evenly over the covered plots, -1 padding; per target, the covered plots (bool over
@@ -99,7 +117,12 @@ def candidate_plots(problem: FleetProblem, x: np.ndarray, unit_of_plot: np.ndarr
         out_t.append(np.full(ids.size, j))
         out_p.append(idx)
     if not out_u:
-        return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64), np.zeros((0, k), dtype=np.int64), covered_by
+        return (
+            np.zeros(0, dtype=np.int64),
+            np.zeros(0, dtype=np.int64),
+            np.zeros((0, k), dtype=np.int64),
+            covered_by,
+        )
     return np.concatenate(out_u), np.concatenate(out_t), np.concatenate(out_p), covered_by
 
 
@@ -116,8 +139,9 @@ def _residuals(problem: FleetProblem, x: np.ndarray, plots: np.ndarray, p: np.nd
     else:
         _, nav, rate = problem.seen(x, plots)
         gain, pos_err = xs[cols[:, 6]], xs[cols[:, 8:11]]
-        res, J = _codegen.get("fleet_residual_ext")(p, v, *nav.T, rate, att, bias, gain, 0.0, pos_err, lever,
-                                                    *meas.T)[:2]
+        res, J = _codegen.get("fleet_residual_ext")(
+            p, v, *nav.T, rate, att, bias, gain, 0.0, pos_err, lever, *meas.T
+        )[:2]
     return np.asarray(res).reshape(-1, 3), np.asarray(J).reshape(-1, 3, 3 + cols.shape[1]), cols
 
 
@@ -154,37 +178,73 @@ def _chunk_tests(problem: FleetProblem, x: np.ndarray, curves: Curves, unit, tar
         D[batch] -= JA[batch] @ curves.Y_states[b]
         G[batch] = JA[batch] @ curves.V_inv[b]
     sigma = np.nan_to_num(problem.sensor_sigma[problem.sensor[flat]], nan=1.0)
-    same = (block.reshape(c, k)[:, :, None] == block.reshape(c, k)[:, None, :]) & batch.reshape(c, k)[:, :, None]
-    Sc = np.einsum("ckaq,cjbq->ckajb", G.reshape(c, k, 3, q), JA.reshape(c, k, 3, q)) * same[:, :, None, :, None]
+    same = (block.reshape(c, k)[:, :, None] == block.reshape(c, k)[:, None, :]) & batch.reshape(c, k)[
+        :, :, None
+    ]
+    Sc = (
+        np.einsum("ckaq,cjbq->ckajb", G.reshape(c, k, 3, q), JA.reshape(c, k, 3, q))
+        * same[:, :, None, :, None]
+    )
     own = Jp @ cov @ np.swapaxes(Jp, 1, 2) + sigma[:, :, None] ** 2 * np.eye(3)
     diag = np.arange(k)
     Sc[:, diag, :, diag, :] += np.swapaxes(own.reshape(c, k, 3, 3), 0, 1)
     Sc = Sc.reshape(c, 3 * k, 3 * k)
     mk = mask.reshape(c, 3 * k)
-    Sc = np.where(mk[:, :, None] & mk[:, None, :], Sc, 0.0) + np.where(mk, 0.0, 1.0)[:, :, None] * np.eye(3 * k)
+    Sc = np.where(mk[:, :, None] & mk[:, None, :], Sc, 0.0) + np.where(mk, 0.0, 1.0)[:, :, None] * np.eye(
+        3 * k
+    )
     r = res.reshape(c, 3 * k)
     D = D.reshape(c, k, 3, n + 1).reshape(c, 3 * k, n + 1)[:, :, :n]
     return Pairs(unit, target, r, D, 0.5 * (Sc + np.swapaxes(Sc, 1, 2)), mk.sum(axis=1), plots, mk)
 
 
-def pair_tests(problem: FleetProblem, x: np.ndarray, curves: Curves, unit: np.ndarray, target: np.ndarray,
-               plots: np.ndarray) -> Pairs:
+def pair_tests(
+    problem: FleetProblem,
+    x: np.ndarray,
+    curves: Curves,
+    unit: np.ndarray,
+    target: np.ndarray,
+    plots: np.ndarray,
+) -> Pairs:
     """The tests of the pairs (``unit`` (C,), ``target`` (C,), their ``plots`` (C, k), -1 padding) under
     the estimate ``x`` (n,): residuals, their Jacobian D and ``R + A C A^T`` (module docstring)."""
     c = _chunk(plots.shape[1])
-    parts = [_chunk_tests(problem, x, curves, unit[a:a + c], target[a:a + c], plots[a:a + c])
-             for a in range(0, unit.size, c)]
+    parts = [
+        _chunk_tests(problem, x, curves, unit[a : a + c], target[a : a + c], plots[a : a + c])
+        for a in range(0, unit.size, c)
+    ]
     if not parts:
         n, k = problem.layout.n, plots.shape[1]
         z = np.zeros(0, dtype=np.int64)
-        return Pairs(z, z, np.zeros((0, 3 * k)), np.zeros((0, 3 * k, n)), np.zeros((0, 3 * k, 3 * k)), z, plots,
-                     np.zeros((0, 3 * k), dtype=bool))
-    return Pairs(*(np.concatenate([getattr(p, f) for p in parts]) for f in
-                   ("unit", "target", "r", "D", "Sc", "dof", "plots", "mask")))
+        return Pairs(
+            z,
+            z,
+            np.zeros((0, 3 * k)),
+            np.zeros((0, 3 * k, n)),
+            np.zeros((0, 3 * k, 3 * k)),
+            z,
+            plots,
+            np.zeros((0, 3 * k), dtype=bool),
+        )
+    return Pairs(
+        *(
+            np.concatenate([getattr(p, f) for p in parts])
+            for f in ("unit", "target", "r", "D", "Sc", "dof", "plots", "mask")
+        )
+    )
 
 
-def pair_statistics(problem: FleetProblem, x: np.ndarray, curves: Curves, unit: np.ndarray, target: np.ndarray,
-                    plots: np.ndarray, dx: np.ndarray, P: np.ndarray, **options) -> tuple[np.ndarray, np.ndarray]:
+def pair_statistics(
+    problem: FleetProblem,
+    x: np.ndarray,
+    curves: Curves,
+    unit: np.ndarray,
+    target: np.ndarray,
+    plots: np.ndarray,
+    dx: np.ndarray,
+    P: np.ndarray,
+    **options,
+) -> tuple[np.ndarray, np.ndarray]:
     """(d2 (C,), values compared (C,)) of the pairs: :func:`pair_tests` and :func:`evaluate` (with its
     ``options``) one batch at a time, the tests not kept (the single plots' many pairs)."""
     c = _chunk(plots.shape[1])
@@ -231,8 +291,15 @@ def _cholesky(S: np.ndarray) -> np.ndarray:
         return np.linalg.cholesky((v * np.maximum(w, floor)[:, None, :]) @ np.swapaxes(v, 1, 2))
 
 
-def evaluate(pairs: Pairs, dx: np.ndarray, P: np.ndarray, *, outlier_limit: np.ndarray | None = None,
-             max_trim: int = 0, keep: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def evaluate(
+    pairs: Pairs,
+    dx: np.ndarray,
+    P: np.ndarray,
+    *,
+    outlier_limit: np.ndarray | None = None,
+    max_trim: int = 0,
+    keep: np.ndarray | None = None,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """(d2 (C,), log det S (C,), plots kept (C, k) bool, values compared (C,)) of the pairs with the
     states moved by ``dx`` (n,) and covariance P (n, n): ``r + D dx`` against ``Sc + D P D^T``. With
     ``outlier_limit`` (per number of channels 0..3, the limit of the deletion statistic) up to
@@ -254,7 +321,10 @@ def evaluate(pairs: Pairs, dx: np.ndarray, P: np.ndarray, *, outlier_limit: np.n
             r, D, Sc = _masked(r0, D0, pairs.Sc[s], keep)
             L = _cholesky(Sc + D @ P @ np.swapaxes(D, 1, 2))
             y = np.linalg.solve(L, r[..., None])[..., 0]
-            d2[s], logdet[s] = np.einsum("ki,ki->k", y, y), 2.0 * np.log(np.diagonal(L, axis1=1, axis2=2)).sum(axis=1)
+            d2[s], logdet[s] = (
+                np.einsum("ki,ki->k", y, y),
+                2.0 * np.log(np.diagonal(L, axis1=1, axis2=2)).sum(axis=1),
+            )
             if outlier_limit is None or it == max_trim:
                 break
             # only a pair well above its mean can hold a plot beyond the outlier limit
@@ -273,21 +343,38 @@ def evaluate(pairs: Pairs, dx: np.ndarray, P: np.ndarray, *, outlier_limit: np.n
     return d2, logdet, keep_all, dof
 
 
-def kalman_update(pairs: Pairs, i: int, dx: np.ndarray, P: np.ndarray,
-                  keep: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+def kalman_update(
+    pairs: Pairs, i: int, dx: np.ndarray, P: np.ndarray, keep: np.ndarray | None = None
+) -> tuple[np.ndarray, np.ndarray]:
     """The states' correction and covariance after taking pair ``i`` (its plots ``keep`` (k,) bool) as
     a join: the linear Gaussian update ``dx - K (r + D dx)``, ``P - K D P`` with ``K = P D^T S^-1``."""
     keep = pairs.plots[i] >= 0 if keep is None else keep
-    r, D, Sc = (v[0] for v in _masked(pairs.r[i:i + 1] + pairs.D[i:i + 1] @ dx, pairs.D[i:i + 1],
-                                      pairs.Sc[i:i + 1], keep[None, :]))
+    r, D, Sc = (
+        v[0]
+        for v in _masked(
+            pairs.r[i : i + 1] + pairs.D[i : i + 1] @ dx,
+            pairs.D[i : i + 1],
+            pairs.Sc[i : i + 1],
+            keep[None, :],
+        )
+    )
     L = _cholesky((Sc + D @ P @ D.T)[None])[0]
     K = np.linalg.solve(L.T, np.linalg.solve(L, D @ P)).T
     P = P - K @ D @ P
     return dx - K @ r, 0.5 * (P + P.T)
 
 
-def verify_plots(problem: FleetProblem, x: np.ndarray, curves: Curves, unit: np.ndarray, target: np.ndarray,
-                 plots: np.ndarray, dx: np.ndarray, P: np.ndarray, probability: float) -> np.ndarray:
+def verify_plots(
+    problem: FleetProblem,
+    x: np.ndarray,
+    curves: Curves,
+    unit: np.ndarray,
+    target: np.ndarray,
+    plots: np.ndarray,
+    dx: np.ndarray,
+    P: np.ndarray,
+    probability: float,
+) -> np.ndarray:
     """(M,) bool: each plot (``plots`` (M,) of ``unit`` joined to ``target``) alone passes the chi-square
     ``1 - probability`` gate of its channels against the target under the states ``x + dx`` and
     their covariance P: the plots of a join that are not the target (clutter, a stray plot a tracker

@@ -9,12 +9,19 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.stats import chi2
 
+from registration.fleet.association.joining.units import Units
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.solves import Registrar
-from registration.fleet.association.joining.units import Units
 
-__all__ = ["MAX_DROP_ROUNDS", "MAX_OUTLIER_SHARE", "JoinState", "drop_failing", "failing_joins", "outlier_stage",
-           "registered_labels"]
+__all__ = [
+    "MAX_DROP_ROUNDS",
+    "MAX_OUTLIER_SHARE",
+    "JoinState",
+    "drop_failing",
+    "failing_joins",
+    "outlier_stage",
+    "registered_labels",
+]
 
 #: Registrations after drops within one pass, at most (then every failing join is dropped at once).
 MAX_DROP_ROUNDS = 4
@@ -43,12 +50,21 @@ class JoinState:
     tabu: set = field(default_factory=set)
     notes: list = field(default_factory=list)
 
-    _PER_UNIT = (("target", ""), ("test", np.nan), ("best", np.inf), ("tested", False), ("gated", False),
-                 ("dropped", False), ("failed", False))
+    _PER_UNIT = (
+        ("target", ""),
+        ("test", np.nan),
+        ("best", np.inf),
+        ("tested", False),
+        ("gated", False),
+        ("dropped", False),
+        ("failed", False),
+    )
 
     @classmethod
     def empty(cls, n_units: int, n_plots: int) -> "JoinState":
-        per_unit = [np.full(n_units, v, dtype=object if isinstance(v, str) else type(v)) for _, v in cls._PER_UNIT]
+        per_unit = [
+            np.full(n_units, v, dtype=object if isinstance(v, str) else type(v)) for _, v in cls._PER_UNIT
+        ]
         return cls(*per_unit, np.full(n_plots, "", dtype=object), np.zeros(n_plots, dtype=bool))
 
     def extend(self, n_units: int) -> None:
@@ -102,15 +118,23 @@ def failing_joins(reg: Registrar, state: JoinState, units: Units, options: Assoc
     cnt_in = np.bincount(u, np.where(out, 0, cnt), minlength=units.n)
     ss_all, cnt_all = np.bincount(u, ss, minlength=units.n), np.bincount(u, cnt, minlength=units.n)
     joined = (state.target != "") & (n > 0)
-    fail = joined & ((n_out > MAX_OUTLIER_SHARE * n) |
-                     (ss_in > chi2.ppf(1.0 - options.drop_probability, np.maximum(cnt_in, 1))))
+    fail = joined & (
+        (n_out > MAX_OUTLIER_SHARE * n)
+        | (ss_in > chi2.ppf(1.0 - options.drop_probability, np.maximum(cnt_in, 1)))
+    )
     bad = np.flatnonzero(fail)
     outliers[plots[out & ~fail[u]]] = True
     return bad, (ss_all[bad] - cnt_all[bad]) / np.sqrt(2.0 * cnt_all[bad]), outliers
 
 
-def drop_failing(reg: Registrar, state: JoinState, units: Units, base: np.ndarray, prov: np.ndarray,
-                  options: AssociationOptions) -> int:
+def drop_failing(
+    reg: Registrar,
+    state: JoinState,
+    units: Units,
+    base: np.ndarray,
+    prov: np.ndarray,
+    options: AssociationOptions,
+) -> int:
     """Drop failing joins (the worst per sensor, then register again) until none fails; then leave
     out the single outlying plots of the joins kept (and register again). Returns the joins dropped."""
     dropped = 0
@@ -124,8 +148,12 @@ def drop_failing(reg: Registrar, state: JoinState, units: Units, base: np.ndarra
                 bad, excess = bad[first], excess[first]
             for u, z in zip(bad, excess):
                 sensor = reg.problem.sensor_ids[units.sensor[u]]
-                state.drop(int(u), units.of_plot, f"sensor {sensor} {units.name[u]}: join to target {state.target[u]} "
-                                                  f"dropped, its residuals {z:.3g} sigma above their chi-square mean")
+                state.drop(
+                    int(u),
+                    units.of_plot,
+                    f"sensor {sensor} {units.name[u]}: join to target {state.target[u]} "
+                    f"dropped, its residuals {z:.3g} sigma above their chi-square mean",
+                )
             dropped += bad.size
         elif outliers.any():
             state.label[outliers], state.outlier[outliers] = "", True
@@ -135,7 +163,9 @@ def drop_failing(reg: Registrar, state: JoinState, units: Units, base: np.ndarra
     return dropped
 
 
-def outlier_stage(reg: Registrar, labels: np.ndarray, given: np.ndarray, options: AssociationOptions) -> np.ndarray:
+def outlier_stage(
+    reg: Registrar, labels: np.ndarray, given: np.ndarray, options: AssociationOptions
+) -> np.ndarray:
     """(N,) bool: the associated plots (labelled, no id given) whose squared normalised residuals under
     the latest registration exceed the chi-square ``1 - outlier_probability`` quantile."""
     out = np.zeros(labels.size, dtype=bool)

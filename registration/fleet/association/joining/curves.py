@@ -36,7 +36,15 @@ from registration.fleet.batch.solver import BatchOptions, determined_design, sin
 from registration.fleet.data.inputs import References, SurfaceTargets
 from registration.fleet.data.problem import FleetProblem
 
-__all__ = ["Curves", "NO_HEIGHT_SIGMA_M", "Prediction", "WindowFit", "anchor_curves", "fit_windows", "join_fits"]
+__all__ = [
+    "Curves",
+    "NO_HEIGHT_SIGMA_M",
+    "Prediction",
+    "WindowFit",
+    "anchor_curves",
+    "fit_windows",
+    "join_fits",
+]
 
 #: The vertical sigma (m) a reference position without a height predicts with when its target is not
 #: on a surface of known height.
@@ -78,8 +86,13 @@ class Windows:
 
     def take(self, sel: np.ndarray, target: np.ndarray | None = None) -> "Windows":
         """The windows ``sel``, with the target indices ``target`` (default theirs)."""
-        return Windows(self.n_coef, self.block_target[sel] if target is None else target, self.block_centre[sel],
-                       self.block_half[sel], self.coef_mask[sel])
+        return Windows(
+            self.n_coef,
+            self.block_target[sel] if target is None else target,
+            self.block_centre[sel],
+            self.block_half[sel],
+            self.coef_mask[sel],
+        )
 
 
 @dataclass(frozen=True)
@@ -111,10 +124,23 @@ class WindowFit:
     @classmethod
     def empty(cls, x: np.ndarray, n_coef: int = 4) -> "WindowFit":
         q = 3 * n_coef
-        return cls((), Windows(n_coef, np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0),
-                               np.zeros((0, n_coef), dtype=bool)),
-                   np.zeros((0, n_coef, 3)), np.zeros((0, q, q)), np.zeros((0, q, 0)), np.zeros((0, 0), dtype=np.int64),
-                   np.zeros(0, dtype=bool), np.asarray(x, dtype=np.float64), int(np.size(x)))
+        return cls(
+            (),
+            Windows(
+                n_coef,
+                np.zeros(0, dtype=np.int64),
+                np.zeros(0),
+                np.zeros(0),
+                np.zeros((0, n_coef), dtype=bool),
+            ),
+            np.zeros((0, n_coef, 3)),
+            np.zeros((0, q, q)),
+            np.zeros((0, q, 0)),
+            np.zeros((0, 0), dtype=np.int64),
+            np.zeros(0, dtype=bool),
+            np.asarray(x, dtype=np.float64),
+            int(np.size(x)),
+        )
 
     def without(self, drop: set) -> "WindowFit":
         """The fit of the targets not in ``drop`` (names)."""
@@ -122,13 +148,26 @@ class WindowFit:
         if keep_t.all():
             return self
         new_index = np.cumsum(keep_t) - 1
-        sel = np.flatnonzero(keep_t[self.windows.block_target]) if self.windows.block_target.size else \
-            np.zeros(0, dtype=np.int64)
+        sel = (
+            np.flatnonzero(keep_t[self.windows.block_target])
+            if self.windows.block_target.size
+            else np.zeros(0, dtype=np.int64)
+        )
         plots = keep_t[self.row_target]
-        return WindowFit(tuple(t for t, k in zip(self.names, keep_t) if k),
-                         self.windows.take(sel, new_index[self.windows.block_target[sel]]), self.coef[sel],
-                         self.V_inv[sel], self.Y[sel], self.local[sel], self.determined[sel], self.x, self.n_state,
-                         self.rows[plots], new_index[self.row_target[plots]], self.residuals[plots])
+        return WindowFit(
+            tuple(t for t, k in zip(self.names, keep_t) if k),
+            self.windows.take(sel, new_index[self.windows.block_target[sel]]),
+            self.coef[sel],
+            self.V_inv[sel],
+            self.Y[sel],
+            self.local[sel],
+            self.determined[sel],
+            self.x,
+            self.n_state,
+            self.rows[plots],
+            new_index[self.row_target[plots]],
+            self.residuals[plots],
+        )
 
 
 def join_fits(a: WindowFit, b: WindowFit) -> WindowFit:
@@ -142,19 +181,34 @@ def join_fits(a: WindowFit, b: WindowFit) -> WindowFit:
 
     def pad(f: WindowFit):
         extra = width - f.Y.shape[2]
-        return (np.concatenate([f.Y, np.zeros(f.Y.shape[:2] + (extra,))], axis=2),
-                np.concatenate([f.local, np.full((f.local.shape[0], extra), f.n_state, dtype=np.int64)], axis=1))
+        return (
+            np.concatenate([f.Y, np.zeros(f.Y.shape[:2] + (extra,))], axis=2),
+            np.concatenate([f.local, np.full((f.local.shape[0], extra), f.n_state, dtype=np.int64)], axis=1),
+        )
 
     (Ya, la), (Yb, lb) = pad(a), pad(b)
     wa, wb = a.windows, b.windows
-    windows = Windows(wa.n_coef, np.concatenate([wa.block_target, wb.block_target + len(a.names)]),
-                      np.concatenate([wa.block_centre, wb.block_centre]),
-                      np.concatenate([wa.block_half, wb.block_half]), np.concatenate([wa.coef_mask, wb.coef_mask]))
-    return WindowFit(a.names + b.names, windows, np.concatenate([a.coef, b.coef]), np.concatenate([a.V_inv, b.V_inv]),
-                     np.concatenate([Ya, Yb]), np.concatenate([la, lb]), np.concatenate([a.determined, b.determined]),
-                     a.x, a.n_state, np.concatenate([a.rows, b.rows]),
-                     np.concatenate([a.row_target, b.row_target + len(a.names)]),
-                     np.concatenate([a.residuals, b.residuals]))
+    windows = Windows(
+        wa.n_coef,
+        np.concatenate([wa.block_target, wb.block_target + len(a.names)]),
+        np.concatenate([wa.block_centre, wb.block_centre]),
+        np.concatenate([wa.block_half, wb.block_half]),
+        np.concatenate([wa.coef_mask, wb.coef_mask]),
+    )
+    return WindowFit(
+        a.names + b.names,
+        windows,
+        np.concatenate([a.coef, b.coef]),
+        np.concatenate([a.V_inv, b.V_inv]),
+        np.concatenate([Ya, Yb]),
+        np.concatenate([la, lb]),
+        np.concatenate([a.determined, b.determined]),
+        a.x,
+        a.n_state,
+        np.concatenate([a.rows, b.rows]),
+        np.concatenate([a.row_target, b.row_target + len(a.names)]),
+        np.concatenate([a.residuals, b.residuals]),
+    )
 
 
 @dataclass(frozen=True)
@@ -278,19 +332,28 @@ def _start_coefficients(design, names: tuple, x: np.ndarray, prior: WindowFit) -
 
 def _warm_design(problem: FleetProblem, options: BatchOptions, x: np.ndarray, prior: WindowFit):
     """:func:`~registration.fleet.batch.solver.determined_design` started from :func:`_start_coefficients`."""
-    return determined_design(problem, options, x, coefficients=lambda p, design, x0: _start_coefficients(
-        design, tuple(str(t) for t in p.target_ids), x0, prior))
+    return determined_design(
+        problem,
+        options,
+        x,
+        coefficients=lambda p, design, x0: _start_coefficients(
+            design, tuple(str(t) for t in p.target_ids), x0, prior
+        ),
+    )
 
 
-def fit_windows(problem: FleetProblem | None, x: np.ndarray, options: BatchOptions,
-                prior: WindowFit | None = None) -> WindowFit:
+def fit_windows(
+    problem: FleetProblem | None, x: np.ndarray, options: BatchOptions, prior: WindowFit | None = None
+) -> WindowFit:
     """The windows of the targets of ``problem`` (the registered labelled plots; None: none) fitted
     to its plots with the states held at ``x``: Gauss-Newton on the windows from the plots' means,
     or, where an earlier fit ``prior`` has the same window, from its coefficients (fewer steps)."""
     x = np.asarray(x, dtype=np.float64)
     if problem is None:
         return WindowFit.empty(x)
-    found = determined_design(problem, options, x) if prior is None else _warm_design(problem, options, x, prior)
+    found = (
+        determined_design(problem, options, x) if prior is None else _warm_design(problem, options, x, prior)
+    )
     if found is None:
         return WindowFit.empty(x)
     problem, design, ev, normal = found
@@ -312,13 +375,33 @@ def fit_windows(problem: FleetProblem | None, x: np.ndarray, options: BatchOptio
     determined[bad] = False
     windows = Windows(blk.n_coef, blk.block_target, blk.block_centre, blk.block_half, blk.coef_mask)
     residuals = np.where(design.weight > 0, ev.e, np.nan)[design.slot]  # as the batch's residual table
-    return WindowFit(tuple(str(t) for t in problem.target_ids), windows, ev.coef, red.V_inv, red.Y, blk.local_state,
-                     determined, x, problem.layout.n, problem.row[blk.order], problem.target[blk.order], residuals)
+    return WindowFit(
+        tuple(str(t) for t in problem.target_ids),
+        windows,
+        ev.coef,
+        red.V_inv,
+        red.Y,
+        blk.local_state,
+        determined,
+        x,
+        problem.layout.n,
+        problem.row[blk.order],
+        problem.target[blk.order],
+        residuals,
+    )
 
 
-def anchor_curves(problem: FleetProblem | None, x: np.ndarray, refs: References, options: BatchOptions, *,
-                  gap_s: float, accel_sigma: float, fit: WindowFit | None = None,
-                  surface: SurfaceTargets | None = None) -> Curves:
+def anchor_curves(
+    problem: FleetProblem | None,
+    x: np.ndarray,
+    refs: References,
+    options: BatchOptions,
+    *,
+    gap_s: float,
+    accel_sigma: float,
+    fit: WindowFit | None = None,
+    surface: SurfaceTargets | None = None,
+) -> Curves:
     """The anchors: the targets of ``problem`` (the registered labelled plots; None: none) under the
     estimate ``x``, then the reference targets of ``refs`` that are not among them. ``fit``: their
     windows already fitted (:func:`fit_windows`; then ``problem`` is not used). ``surface``: the
@@ -338,7 +421,20 @@ def anchor_curves(problem: FleetProblem | None, x: np.ndarray, refs: References,
     if not np.isfinite(sigma_up).all():
         on = surface.of(rt)[1] if surface is not None else np.full(rt.size, np.nan)
         sigma_up = np.where(np.isfinite(sigma_up), sigma_up, np.where(np.isfinite(on), on, NO_HEIGHT_SIGMA_M))
-    return Curves(names + tuple(extra), len(names), blk, order, coef, V_inv, Y, local,
-                  k[keep][order_r], refs.time[keep][order_r], refs.p_ecef[keep][order_r],
-                  np.maximum(refs.sigma, sigma_up)[keep][order_r],
-                  float(gap_s), float(accel_sigma), fit)
+    return Curves(
+        names + tuple(extra),
+        len(names),
+        blk,
+        order,
+        coef,
+        V_inv,
+        Y,
+        local,
+        k[keep][order_r],
+        refs.time[keep][order_r],
+        refs.p_ecef[keep][order_r],
+        np.maximum(refs.sigma, sigma_up)[keep][order_r],
+        float(gap_s),
+        float(accel_sigma),
+        fit,
+    )

@@ -28,16 +28,27 @@ import itertools
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association.joining.attach import (Pairs, candidate_plots, evaluate, kalman_update, pair_statistics,
-                                                   pair_tests, verify_plots)
-from registration.fleet.association.joining.checks import (MAX_OUTLIER_SHARE, JoinState, drop_failing,
-                                                   registered_labels)
 from registration.fleet.association.grouping.confirm import new_names
-from registration.fleet.association.joining.curves import anchor_curves, fit_windows, join_fits
 from registration.fleet.association.inputs import labelled_problem
+from registration.fleet.association.joining.attach import (
+    Pairs,
+    candidate_plots,
+    evaluate,
+    kalman_update,
+    pair_statistics,
+    pair_tests,
+    verify_plots,
+)
+from registration.fleet.association.joining.checks import (
+    MAX_OUTLIER_SHARE,
+    JoinState,
+    drop_failing,
+    registered_labels,
+)
+from registration.fleet.association.joining.curves import anchor_curves, fit_windows, join_fits
+from registration.fleet.association.joining.units import Units, split_units, unit_conflicts
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.solves import Registrar
-from registration.fleet.association.joining.units import Units, split_units, unit_conflicts
 from registration.fleet.batch.solver import progress_status
 
 __all__ = ["DEFER_SHARE", "choose_joins", "join_units"]
@@ -79,8 +90,16 @@ def _outlier_limits(probability: float) -> np.ndarray:
     return np.r_[np.inf, chi2.ppf(1.0 - probability, [1, 2, 3])]
 
 
-def choose_joins(pairs: Pairs, names: tuple, P: np.ndarray, state: JoinState, units: Units, conflicts: np.ndarray,
-                 fresh: np.ndarray, options: AssociationOptions):
+def choose_joins(
+    pairs: Pairs,
+    names: tuple,
+    P: np.ndarray,
+    state: JoinState,
+    units: Units,
+    conflicts: np.ndarray,
+    fresh: np.ndarray,
+    options: AssociationOptions,
+):
     """The joins of one pass (module docstring): a list of (unit, target index, d^2/dof), and the
     states' correction and covariance after them (n,), (n, n). ``fresh`` (S,): the sensors with no
     registered plot yet."""
@@ -94,7 +113,9 @@ def choose_joins(pairs: Pairs, names: tuple, P: np.ndarray, state: JoinState, un
         allowed &= ~np.array([(int(u), n) in state.tabu for u, n in zip(unit, pname)])
     joined = np.flatnonzero(state.target != "")
     if joined.size:
-        allowed &= ~(conflicts[unit][:, joined] & (state.target[joined][None, :] == pname[:, None])).any(axis=1)
+        allowed &= ~(conflicts[unit][:, joined] & (state.target[joined][None, :] == pname[:, None])).any(
+            axis=1
+        )
     active = np.flatnonzero(allowed)
     dx, Pk, fresh, out = np.zeros(P.shape[0]), P.copy(), fresh.copy(), []
     log_ratio, limits = float(np.log(options.ambiguity_ratio)), _outlier_limits(options.outlier_probability)
@@ -146,8 +167,17 @@ def choose_joins(pairs: Pairs, names: tuple, P: np.ndarray, state: JoinState, un
     return out, dx, Pk
 
 
-def _label_verified(reg: Registrar, curves, state: JoinState, units: Units, taken: list, covered: dict,
-                    dx: np.ndarray, Pk: np.ndarray, options: AssociationOptions) -> int:
+def _label_verified(
+    reg: Registrar,
+    curves,
+    state: JoinState,
+    units: Units,
+    taken: list,
+    covered: dict,
+    dx: np.ndarray,
+    Pk: np.ndarray,
+    options: AssociationOptions,
+) -> int:
     """Label the plots of the joins ``taken`` that pass the per-plot gate under the states after them
     (:func:`~registration.fleet.association.joining.attach.verify_plots`); a join with more than
     MAX_OUTLIER_SHARE of its plots failing is not taken (a track that swapped targets): it is marked
@@ -159,15 +189,20 @@ def _label_verified(reg: Registrar, curves, state: JoinState, units: Units, take
     # a position-fixing sensor's plots fix the target themselves: its whole track is the target's,
     # the part outside the target's span extends it (those plots are checked once registered)
     fixing = (problem.layout.bias_index >= 0).all(axis=1)
-    extra = [np.setdiff1d(np.flatnonzero(units.of_plot == u), p) if fixing[units.sensor[u]] else np.zeros(0, dtype=int)
-             for (u, _, _), p in zip(taken, plots)]
+    extra = [
+        np.setdiff1d(np.flatnonzero(units.of_plot == u), p)
+        if fixing[units.sensor[u]]
+        else np.zeros(0, dtype=int)
+        for (u, _, _), p in zip(taken, plots)
+    ]
     u_rep = np.concatenate([np.full(p.size, u) for (u, _, _), p in zip(taken, plots)])
     j_rep = np.concatenate([np.full(p.size, j) for (_, j, _), p in zip(taken, plots)])
-    ok = verify_plots(problem, reg.x, curves, u_rep, j_rep, np.concatenate(plots), dx, Pk,
-                      options.outlier_probability)
+    ok = verify_plots(
+        problem, reg.x, curves, u_rep, j_rep, np.concatenate(plots), dx, Pk, options.outlier_probability
+    )
     labelled, start = [], 0
     for (u, j, test), p, more in zip(taken, plots, extra):
-        good = ok[start:start + p.size]
+        good = ok[start : start + p.size]
         start += p.size
         if good.sum() < (1.0 - MAX_OUTLIER_SHARE) * p.size:
             state.tabu.add((int(u), str(state.target[u])))
@@ -187,7 +222,9 @@ def _split(units: Units, state: JoinState, problem, options: AssociationOptions)
     joined different targets)."""
     count = np.bincount(units.of_plot[units.of_plot >= 0], minlength=units.n)
     bad = (state.target == "") & (state.failed | state.tested)
-    which = np.flatnonzero(bad & (count >= 2 * options.min_join_plots) & (units.t1 - units.t0 >= 2 * options.window_s))
+    which = np.flatnonzero(
+        bad & (count >= 2 * options.min_join_plots) & (units.t1 - units.t0 >= 2 * options.window_s)
+    )
     if which.size == 0:
         return units, 0
     units, _, _ = split_units(units, problem, which)
@@ -200,15 +237,23 @@ def _provisional(units: Units, state: JoinState, problem, labels: np.ndarray, op
     a new name; the units that hold them (they are then no longer joiners)."""
     fixing = (problem.layout.bias_index >= 0).all(axis=1)
     count = np.bincount(units.of_plot[units.of_plot >= 0], minlength=units.n)
-    which = np.flatnonzero((state.target == "") & fixing[units.sensor] & (count >= 2 * options.min_join_plots))
+    which = np.flatnonzero(
+        (state.target == "") & fixing[units.sensor] & (count >= 2 * options.min_join_plots)
+    )
     prov = np.full(problem.n_plots, "", dtype=object)
     for u, name in zip(which, new_names(which.size, set(labels) | set(state.target))):
         prov[units.of_plot == u] = name
     return prov, which
 
 
-def _prescreen(reg: Registrar, curves, unit: np.ndarray, target: np.ndarray, plots: np.ndarray,
-               options: AssociationOptions) -> np.ndarray:
+def _prescreen(
+    reg: Registrar,
+    curves,
+    unit: np.ndarray,
+    target: np.ndarray,
+    plots: np.ndarray,
+    options: AssociationOptions,
+) -> np.ndarray:
     """(C,) bool: the pairs worth the full test, by a test of three of their plots (first, middle,
     last; one may be an outlier) under the latest estimate: within FAR_OFF times its gate."""
     if unit.size == 0:
@@ -216,8 +261,18 @@ def _prescreen(reg: Registrar, curves, unit: np.ndarray, target: np.ndarray, plo
     n = (plots >= 0).sum(axis=1)
     rows = np.arange(unit.size)
     three = np.stack([plots[:, 0], plots[rows, (n - 1) // 2], plots[rows, n - 1]], axis=1)
-    d2, dof = pair_statistics(reg.problem, reg.x, curves, unit, target, three, np.zeros(reg.x.size), reg.P,
-                              outlier_limit=_outlier_limits(options.outlier_probability), max_trim=1)
+    d2, dof = pair_statistics(
+        reg.problem,
+        reg.x,
+        curves,
+        unit,
+        target,
+        three,
+        np.zeros(reg.x.size),
+        reg.P,
+        outlier_limit=_outlier_limits(options.outlier_probability),
+        max_trim=1,
+    )
     return (dof > 0) & (d2 < FAR_OFF * chi2.ppf(options.gate_probability, np.maximum(dof, 1)))
 
 
@@ -230,10 +285,19 @@ def _curves(reg: Registrar, labels: np.ndarray, prov: np.ndarray, options: Assoc
     if cache.get("key") == key:
         return cache["curves"]
     fit = _fit(reg, lab, cache)
-    cache["key"], cache["curves"] = key, anchor_curves(None, reg.x, reg.refs, reg.between, fit=fit,
-                                                       gap_s=options.reference_gap_s,
-                                                       accel_sigma=options.reference_accel_sigma,
-                                                       surface=reg.problem.surface)
+    cache["key"], cache["curves"] = (
+        key,
+        anchor_curves(
+            None,
+            reg.x,
+            reg.refs,
+            reg.between,
+            fit=fit,
+            gap_s=options.reference_gap_s,
+            accel_sigma=options.reference_accel_sigma,
+            surface=reg.problem.surface,
+        ),
+    )
     return cache["curves"]
 
 
@@ -267,8 +331,14 @@ def _fit_windows(reg: Registrar, lab: np.ndarray):
     return fit_windows(problem, reg.x, reg.between)
 
 
-def join_units(reg: Registrar, units: Units, base: np.ndarray, options: AssociationOptions, bar,
-               state: JoinState | None = None) -> tuple[JoinState, Units, int, bool]:
+def join_units(
+    reg: Registrar,
+    units: Units,
+    base: np.ndarray,
+    options: AssociationOptions,
+    bar,
+    state: JoinState | None = None,
+) -> tuple[JoinState, Units, int, bool]:
     """Join the units to the anchors (module docstring) from the registration ``reg`` of the
     ``base`` labels (N,; ids given and confirmed targets, '' none). ``state``: joins to start from
     (default none; a wrong one is dropped by the checks). Units that match no target as a whole, or
@@ -294,9 +364,18 @@ def join_units(reg: Registrar, units: Units, base: np.ndarray, options: Associat
         progress_status(bar, f"join pass {passes}: testing tracks against targets")
         labels = registered_labels(base, state, prov)
         curves = _curves(reg, labels, prov, options, cache)
-        free = np.flatnonzero((state.target == "") & ~np.isin(np.arange(units.n), sources if sources is not None else []))
-        u, t, plots, covered = candidate_plots(problem, reg.x, units.of_plot, free, curves, k=options.test_plots,
-                                               min_plots=options.min_join_plots)
+        free = np.flatnonzero(
+            (state.target == "") & ~np.isin(np.arange(units.n), sources if sources is not None else [])
+        )
+        u, t, plots, covered = candidate_plots(
+            problem,
+            reg.x,
+            units.of_plot,
+            free,
+            curves,
+            k=options.test_plots,
+            min_plots=options.min_join_plots,
+        )
         provisional = np.isin(np.array(curves.names, dtype=object)[t], np.unique(prov[prov != ""]))
         keep = ~(provisional & fixing[units.sensor[u]]) if u.size else np.zeros(0, dtype=bool)
         keep[keep] = _prescreen(reg, curves, u[keep], t[keep], plots[keep], options)

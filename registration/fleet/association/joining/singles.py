@@ -41,12 +41,18 @@ def _same_scan(problem, labels: np.ndarray, plot: np.ndarray, name: np.ndarray) 
     """(C,) bool: the plot's sensor already has a plot of that target at that time."""
     have = (labels != "") & np.isin(problem.time, problem.time[plot])
     taken = set(zip(problem.sensor[have].tolist(), problem.time[have].tolist(), labels[have].tolist()))
-    return np.array([(s, t, n) in taken for s, t, n in zip(problem.sensor[plot].tolist(), problem.time[plot].tolist(),
-                                                           name.tolist())], dtype=bool)
+    return np.array(
+        [
+            (s, t, n) in taken
+            for s, t, n in zip(problem.sensor[plot].tolist(), problem.time[plot].tolist(), name.tolist())
+        ],
+        dtype=bool,
+    )
 
 
-def join_single_plots(reg: Registrar, curves: Curves, labels: np.ndarray, free: np.ndarray,
-                      options: AssociationOptions) -> np.ndarray:
+def join_single_plots(
+    reg: Registrar, curves: Curves, labels: np.ndarray, free: np.ndarray, options: AssociationOptions
+) -> np.ndarray:
     """(N,) the target each free plot (``free`` (N,) bool) is joined to, '' none (module docstring);
     ``labels`` (N,) the plots' labels so far."""
     problem = reg.problem
@@ -58,7 +64,9 @@ def join_single_plots(reg: Registrar, curves: Curves, labels: np.ndarray, free: 
     plot, target = _candidates(reg, curves, free)
     if plot.size == 0:
         return out
-    d2, dof = pair_statistics(problem, reg.x, curves, plot, target, plot[:, None], np.zeros(reg.x.size), reg.P)
+    d2, dof = pair_statistics(
+        problem, reg.x, curves, plot, target, plot[:, None], np.zeros(reg.x.size), reg.P
+    )
     ok = (dof > 0) & (d2 < chi2.ppf(options.gate_probability, np.maximum(dof, 1)))
     lp = np.where(ok, chi2.logsf(d2, np.maximum(dof, 1)), -np.inf)
     order = np.lexsort((-lp, plot))
@@ -72,8 +80,9 @@ def join_single_plots(reg: Registrar, curves: Curves, labels: np.ndarray, free: 
     names = np.array(curves.names, dtype=object)[target[best]]
     clash = _same_scan(problem, labels, plot[best], names)
     # two free plots of one scan for one target: neither is taken (which one is the target is not known)
-    key = np.stack([problem.sensor[plot[best]], np.round(problem.time[plot[best]] * 1e6).astype(np.int64),
-                    target[best]])
+    key = np.stack(
+        [problem.sensor[plot[best]], np.round(problem.time[plot[best]] * 1e6).astype(np.int64), target[best]]
+    )
     _, inverse, counts = np.unique(key, axis=1, return_inverse=True, return_counts=True)
     clash |= counts[inverse.reshape(-1)] > 1
     out[plot[best][~clash]] = names[~clash]

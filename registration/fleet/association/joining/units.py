@@ -18,8 +18,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from registration.fleet.association.grouping.geometry import Assigner, plot_geometry
-from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.grouping.tracks import sensor_tracks, track_breaks
+from registration.fleet.association.options import AssociationOptions
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["Units", "make_units", "split_units", "unit_conflicts"]
@@ -68,8 +68,16 @@ def _gap_breaks(key: np.ndarray, time: np.ndarray, gap_s: float) -> np.ndarray:
     return out
 
 
-def _split_notes(problem: FleetProblem, key: np.ndarray, names: np.ndarray, time: np.ndarray, gaps: np.ndarray,
-                 jumps: np.ndarray, d2: np.ndarray, plots: np.ndarray) -> list[str]:
+def _split_notes(
+    problem: FleetProblem,
+    key: np.ndarray,
+    names: np.ndarray,
+    time: np.ndarray,
+    gaps: np.ndarray,
+    jumps: np.ndarray,
+    d2: np.ndarray,
+    plots: np.ndarray,
+) -> list[str]:
     """One note per given track that was split: where and why."""
     notes = []
     for k in np.unique(key[gaps | jumps]):
@@ -78,15 +86,26 @@ def _split_notes(problem: FleetProblem, key: np.ndarray, names: np.ndarray, time
         why = []
         for i in sel[gaps[sel] | jumps[sel]]:
             j = sel[np.searchsorted(time[sel], time[i]) - 1]
-            why.append(f"at {time[i]:g} s ({'gap of %.3g s' % (time[i] - time[j]) if gaps[i] else 'jump: %.3g sigma off its prediction' % np.sqrt(d2[i])})")
+            why.append(
+                f"at {time[i]:g} s ({'gap of %.3g s' % (time[i] - time[j]) if gaps[i] else 'jump: %.3g sigma off its prediction' % np.sqrt(d2[i])})"
+            )
         sensor = problem.sensor_ids[problem.sensor[plots[sel[0]]]]
-        notes.append(f"sensor {sensor} {names[sel[0]]}: split into {len(why) + 1} pieces, " + ", ".join(why)
-                     + " (an id reused for another object, or a track that jumped)")
+        notes.append(
+            f"sensor {sensor} {names[sel[0]]}: split into {len(why) + 1} pieces, "
+            + ", ".join(why)
+            + " (an id reused for another object, or a track that jumped)"
+        )
     return notes
 
 
-def make_units(problem: FleetProblem, track_id: np.ndarray, free: np.ndarray, x: np.ndarray,
-               options: AssociationOptions, assigner: Assigner) -> Units:
+def make_units(
+    problem: FleetProblem,
+    track_id: np.ndarray,
+    free: np.ndarray,
+    x: np.ndarray,
+    options: AssociationOptions,
+    assigner: Assigner,
+) -> Units:
     """The units of the plots ``free`` (N,) bool (those without a target label) of the problem,
     from their ``track_id`` (N,; '' none: made by the tracker) and the estimate ``x`` (n,; the plots
     are placed corrected by it)."""
@@ -94,8 +113,17 @@ def make_units(problem: FleetProblem, track_id: np.ndarray, free: np.ndarray, x:
     at = np.flatnonzero(free)
     if at.size == 0:
         none = np.zeros(n, dtype=bool)
-        return Units(np.full(n, -1, dtype=np.int64), np.zeros(0, dtype=np.int64), np.zeros(0, dtype=str), np.zeros(0),
-                     np.zeros(0), np.zeros(0, dtype=bool), none, none.copy(), ())
+        return Units(
+            np.full(n, -1, dtype=np.int64),
+            np.zeros(0, dtype=np.int64),
+            np.zeros(0, dtype=str),
+            np.zeros(0),
+            np.zeros(0),
+            np.zeros(0, dtype=bool),
+            none,
+            none.copy(),
+            (),
+        )
     geom = plot_geometry(problem, x, at)
     time = geom.time
     given = track_id[at] != ""
@@ -104,13 +132,21 @@ def make_units(problem: FleetProblem, track_id: np.ndarray, free: np.ndarray, x:
     notes: list[str] = []
     if given.any():
         g = np.flatnonzero(given)
-        labels = np.char.add(np.char.add(np.array(problem.sensor_ids)[problem.sensor[at[g]]], "\x1f"), track_id[at[g]])
+        labels = np.char.add(
+            np.char.add(np.array(problem.sensor_ids)[problem.sensor[at[g]]], "\x1f"), track_id[at[g]]
+        )
         _, gkey = np.unique(labels, return_inverse=True)
         gaps = _gap_breaks(gkey, time[g], options.track_gap_s)
         gpiece = _pieces(gkey, time[g], gaps)
         sub = _geometry_rows(geom, g)
-        jumps, d2 = track_breaks(time[g], gpiece, sub, max_speed=options.max_speed, accel_sigma=options.jump_accel_sigma,
-                                 probability=options.jump_probability)
+        jumps, d2 = track_breaks(
+            time[g],
+            gpiece,
+            sub,
+            max_speed=options.max_speed,
+            accel_sigma=options.jump_accel_sigma,
+            probability=options.jump_probability,
+        )
         gnames = np.char.add("track ", track_id[at[g]])
         notes += _split_notes(problem, gkey, gnames, time[g], gaps, jumps, d2, at[g])
         key[g] = _pieces(gkey, time[g], gaps | jumps)
@@ -124,10 +160,17 @@ def make_units(problem: FleetProblem, track_id: np.ndarray, free: np.ndarray, x:
     clutter = np.zeros(n, dtype=bool)
     rest = np.flatnonzero(~given)
     if rest.size:
-        tracks = sensor_tracks(time[rest], problem.sensor[at[rest]], _geometry_rows(geom, rest), assigner,
-                               max_speed=options.max_speed, accel_sigma=options.accel_sigma,
-                               gate_probability=options.gate_probability, max_missed=options.max_missed,
-                               min_plots=options.min_track_plots)
+        tracks = sensor_tracks(
+            time[rest],
+            problem.sensor[at[rest]],
+            _geometry_rows(geom, rest),
+            assigner,
+            max_speed=options.max_speed,
+            accel_sigma=options.accel_sigma,
+            gate_probability=options.gate_probability,
+            max_missed=options.max_missed,
+            min_plots=options.min_track_plots,
+        )
         clutter[at[rest[tracks < 0]]] = True
         ok = tracks >= 0
         tkey = np.where(ok, tracks, -1)
@@ -140,8 +183,12 @@ def make_units(problem: FleetProblem, track_id: np.ndarray, free: np.ndarray, x:
 
 def _geometry_rows(geom, rows: np.ndarray):
     """The plot geometry of the rows ``rows`` of ``geom`` (a PlotGeometry of the same kind)."""
-    return type(geom)(*(getattr(geom, f)[rows] for f in ("p_ecef", "info", "cov", "dp_dx", "J", "weight", "plots",
-                                                        "time", "nav", "rate")))
+    return type(geom)(
+        *(
+            getattr(geom, f)[rows]
+            for f in ("p_ecef", "info", "cov", "dp_dx", "J", "weight", "plots", "time", "nav", "rate")
+        )
+    )
 
 
 def _collect(problem, at, key, names, time, given, clutter, notes, options) -> Units:
@@ -216,19 +263,24 @@ def unit_conflicts(units: Units, problem: FleetProblem, previous: np.ndarray | N
             out[pairs[:, 0], pairs[:, 1]] = out[pairs[:, 1], pairs[:, 0]] = True
             continue
         interval = float(np.median(np.diff(unique))) if unique.size > 1 else 0.0
-        overlap = np.minimum(units.t1[mine][:, None], units.t1[mine][None, :]) - \
-            np.maximum(units.t0[mine][:, None], units.t0[mine][None, :])
+        overlap = np.minimum(units.t1[mine][:, None], units.t1[mine][None, :]) - np.maximum(
+            units.t0[mine][:, None], units.t0[mine][None, :]
+        )
         out[np.ix_(mine, mine)] = overlap > 3.0 * interval
     np.fill_diagonal(out, False)
     return out
 
 
-def split_units(units: Units, problem: FleetProblem, which: np.ndarray) -> tuple[Units, np.ndarray, list[str]]:
+def split_units(
+    units: Units, problem: FleetProblem, which: np.ndarray
+) -> tuple[Units, np.ndarray, list[str]]:
     """``units`` with each unit of ``which`` cut in two halves at its median plot time (the halves
     are new units at the end, named ``<name>.1`` and ``<name>.2``; the unit itself is left without
     plots). Returns (units, (K, 2) the new units of each, notes)."""
     of_plot = units.of_plot.copy()
-    sensor, name, t0, t1, given = (list(v) for v in (units.sensor, units.name, units.t0, units.t1, units.given))
+    sensor, name, t0, t1, given = (
+        list(v) for v in (units.sensor, units.name, units.t0, units.t1, units.given)
+    )
     halves, notes = [], []
     for u in which:
         plots = np.flatnonzero(of_plot == u)
@@ -247,8 +299,19 @@ def split_units(units: Units, problem: FleetProblem, which: np.ndarray) -> tuple
             t1.append(float(t[part].max()))
             given.append(units.given[u])
         halves.append(ids)
-        notes.append(f"sensor {problem.sensor_ids[units.sensor[u]]} {units.name[u]}: matched no target as a whole; "
-                     f"split at {cut:g} s and its halves tested apart (it may hold two objects)")
-    out = Units(of_plot, np.array(sensor, dtype=np.int64), np.array(name, dtype=object).astype(str), np.array(t0),
-                np.array(t1), np.array(given, dtype=bool), units.short, units.clutter, units.notes)
+        notes.append(
+            f"sensor {problem.sensor_ids[units.sensor[u]]} {units.name[u]}: matched no target as a whole; "
+            f"split at {cut:g} s and its halves tested apart (it may hold two objects)"
+        )
+    out = Units(
+        of_plot,
+        np.array(sensor, dtype=np.int64),
+        np.array(name, dtype=object).astype(str),
+        np.array(t0),
+        np.array(t1),
+        np.array(given, dtype=bool),
+        units.short,
+        units.clutter,
+        units.notes,
+    )
     return out, np.array(halves, dtype=np.int64).reshape(-1, 2), notes

@@ -16,11 +16,26 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.fleet.simulation.scenario import SENSORS, SHIPS, SITE, FleetConfig, FleetScenario, fleet_scenario
+from registration.fleet.simulation.scenario import (
+    SENSORS,
+    SHIPS,
+    SITE,
+    FleetConfig,
+    FleetScenario,
+    fleet_scenario,
+)
 from registration.fleet.simulation.tracks import Circle, Line
 
-__all__ = ["CLUTTER_RANGE_M", "CLUTTER_ELEVATION_RAD", "MAX_ELEVATION_RAD", "RADARS", "AssociationScenario", "association_targets",
-           "association_scenario", "association_scores"]
+__all__ = [
+    "CLUTTER_RANGE_M",
+    "CLUTTER_ELEVATION_RAD",
+    "MAX_ELEVATION_RAD",
+    "RADARS",
+    "AssociationScenario",
+    "association_targets",
+    "association_scenario",
+    "association_scores",
+]
 
 #: Range (m) and elevation (rad) windows of the uniform clutter.
 CLUTTER_RANGE_M = (2.0e3, 100.0e3)
@@ -74,8 +89,11 @@ def _clutter(scenario: FleetScenario, rng, per_scan: float) -> dict:
         n = rng.poisson(per_scan, times.size)
         t = np.repeat(times, n)
         m = t.size
-        cols = {"range": rng.uniform(*CLUTTER_RANGE_M, m), "bearing": rng.uniform(-np.pi, np.pi, m),
-                "elevation": rng.uniform(*CLUTTER_ELEVATION_RAD, m)}
+        cols = {
+            "range": rng.uniform(*CLUTTER_RANGE_M, m),
+            "bearing": rng.uniform(-np.pi, np.pi, m),
+            "elevation": rng.uniform(*CLUTTER_ELEVATION_RAD, m),
+        }
         for c in cols:
             if not np.isfinite(sensors[f"sigma_{c}"][s]):
                 cols[c] = np.full(m, np.nan)
@@ -83,15 +101,26 @@ def _clutter(scenario: FleetScenario, rng, per_scan: float) -> dict:
     return {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
 
 
-def association_scenario(n_targets: int = 5, *, crossing: bool = False, angle_bias: float = np.radians(2.0),
-                         p_missed: float = 0.1, clutter_per_scan: float = 1.0, duration_s: float = 300.0,
-                         seed: int = 0, sensors: dict | None = None, **fleet) -> AssociationScenario:
+def association_scenario(
+    n_targets: int = 5,
+    *,
+    crossing: bool = False,
+    angle_bias: float = np.radians(2.0),
+    p_missed: float = 0.1,
+    clutter_per_scan: float = 1.0,
+    duration_s: float = 300.0,
+    seed: int = 0,
+    sensors: dict | None = None,
+    **fleet,
+) -> AssociationScenario:
     """The plots of ``n_targets`` targets with misses and clutter (module docstring); ``angle_bias``
     (rad) is the size of every angle bias (bearing and elevation), random signs; ``fleet``: other
     :func:`~registration.fleet.simulation.scenario.fleet_scenario` arguments (range_bias, heading_error, ...)."""
     if n_targets < 1 or not 0 <= p_missed < 1 or clutter_per_scan < 0:
-        raise ValueError(f"n_targets >= 1, p_missed in [0, 1), clutter_per_scan >= 0; got {n_targets}, {p_missed}, "
-                         f"{clutter_per_scan}")
+        raise ValueError(
+            f"n_targets >= 1, p_missed in [0, 1), clutter_per_scan >= 0; got {n_targets}, {p_missed}, "
+            f"{clutter_per_scan}"
+        )
     rng = np.random.default_rng(seed)
     targets = association_targets(n_targets, rng, crossing=crossing, duration_s=duration_s)
     config = FleetConfig(SHIPS, SITE, RADARS if sensors is None else sensors, targets, None)
@@ -122,10 +151,14 @@ def association_scores(labels: np.ndarray, true_target: np.ndarray) -> dict:
     for lab in np.unique(labels[both]):
         ids, counts = np.unique(true_target[both & (labels == lab)], return_counts=True)
         stands_for[str(lab)] = str(ids[np.argmax(counts)])
-    wrong = np.array([stands_for.get(lab, "") != t for lab, t in zip(labels[both], true_target[both])], dtype=bool)
+    wrong = np.array(
+        [stands_for.get(lab, "") != t for lab, t in zip(labels[both], true_target[both])], dtype=bool
+    )
     n_real, n_clutter = int(real.sum()), int((~real).sum())
     targets = set(stands_for.values())
-    return {"error_rate": float(wrong.sum()) / max(n_real, 1),
-            "unassociated_rate": float((real & ~given).sum()) / max(n_real, 1),
-            "clutter_associated": float((~real & given).sum()) / max(n_clutter, 1),
-            "labels_per_target": len(stands_for) / max(len(targets), 1)}
+    return {
+        "error_rate": float(wrong.sum()) / max(n_real, 1),
+        "unassociated_rate": float((real & ~given).sum()) / max(n_real, 1),
+        "clutter_associated": float((~real & given).sum()) / max(n_clutter, 1),
+        "labels_per_target": len(stands_for) / max(len(targets), 1),
+    }

@@ -67,14 +67,22 @@ def _resync(buf: np.ndarray, mv: memoryview, p: int, n: int, cats: Collection[in
     return None
 
 
-def _segment_blocks(mv: memoryview, buf: np.ndarray, s: int, e: int, raw: bool, seen: set, out: list, bad: list) -> None:
+def _segment_blocks(
+    mv: memoryview, buf: np.ndarray, s: int, e: int, raw: bool, seen: set, out: list, bad: list
+) -> None:
     """Append (start, end, category) of the blocks in [s, e) to ``out``; problems to ``bad`` as
     (offset, code, reason)."""
     p = s
     while p < e:
         if p + 3 > e:
-            bad.append((p, "truncated_block", f"{e - p} bytes left at the end of the {'file' if raw else 'datagram'}, "
-                                              "too few for a data block header"))
+            bad.append(
+                (
+                    p,
+                    "truncated_block",
+                    f"{e - p} bytes left at the end of the {'file' if raw else 'datagram'}, "
+                    "too few for a data block header",
+                )
+            )
             return
         cat, length = _header(mv, p)
         if 3 <= length <= e - p:
@@ -83,9 +91,12 @@ def _segment_blocks(mv: memoryview, buf: np.ndarray, s: int, e: int, raw: bool, 
             p += length
             continue
         code = "bad_block_length" if length < 3 else "truncated_block"
-        what = (f"data block of category {cat} with length {length} (below the 3-byte header)" if length < 3 else
-                f"data block of category {cat} declares {length} bytes, {e - p} left in the "
-                f"{'file' if raw else 'datagram'}")
+        what = (
+            f"data block of category {cat} with length {length} (below the 3-byte header)"
+            if length < 3
+            else f"data block of category {cat} declares {length} bytes, {e - p} left in the "
+            f"{'file' if raw else 'datagram'}"
+        )
         q = _resync(buf, mv, p, e, seen or ASTERIX_CATEGORIES) if raw else None
         if q is None:
             bad.append((p, code, f"{what}; the remaining {e - p} bytes are skipped"))

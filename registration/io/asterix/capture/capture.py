@@ -17,16 +17,54 @@ from typing import Iterable
 
 import numpy as np
 
-from registration.io.asterix.errors import AsterixImportError, Rejections
-from registration.io.asterix.decode.fields import PAD
 from registration.io.asterix.capture.netstack import Segments, udp_segments
 from registration.io.asterix.capture.pcap import PCAP_MAGICS, PCAPNG_MAGIC, pcap_packets, pcapng_packets
+from registration.io.asterix.decode.fields import PAD
+from registration.io.asterix.errors import AsterixImportError, Rejections
 
 __all__ = ["Capture", "read_capture", "ASTERIX_CATEGORIES"]
 
 #: Categories assigned by EUROCONTROL (the ASTERIX category list), used to recognise a raw file.
-ASTERIX_CATEGORIES = frozenset((1, 2, 3, 4, 7, 8, 9, 10, 11, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 30, 31, 32,
-                                34, 48, 62, 63, 65, 150, 151, 152, 205, 238, 240, 247, 252))
+ASTERIX_CATEGORIES = frozenset(
+    (
+        1,
+        2,
+        3,
+        4,
+        7,
+        8,
+        9,
+        10,
+        11,
+        15,
+        16,
+        17,
+        18,
+        19,
+        20,
+        21,
+        22,
+        23,
+        24,
+        25,
+        30,
+        31,
+        32,
+        34,
+        48,
+        62,
+        63,
+        65,
+        150,
+        151,
+        152,
+        205,
+        238,
+        240,
+        247,
+        252,
+    )
+)
 
 
 @dataclass
@@ -50,20 +88,24 @@ def _gunzip(raw: bytes, path: str, notes: list) -> bytes:
     """All members of a gzip stream decompressed, fed 1 MiB at a time so that a truncated or corrupt
     stream keeps what came out before the fault."""
     out, pos, step = [], 0, 1 << 20
-    while raw[pos:pos + 2] == b"\x1f\x8b":
+    while raw[pos : pos + 2] == b"\x1f\x8b":
         d = zlib.decompressobj(wbits=31)
         try:
             while not d.eof and pos < len(raw):
-                out.append(d.decompress(raw[pos:pos + step]))
+                out.append(d.decompress(raw[pos : pos + step]))
                 pos = min(pos + step, len(raw))
         except zlib.error as exc:
-            notes.append(f"{path}: the gzip stream is corrupt after {sum(map(len, out))} decompressed bytes ({exc}); "
-                         "the rest of the file is lost")
+            notes.append(
+                f"{path}: the gzip stream is corrupt after {sum(map(len, out))} decompressed bytes ({exc}); "
+                "the rest of the file is lost"
+            )
             break
         if not d.eof:
             out.append(d.flush())
-            notes.append(f"{path}: the gzip stream is truncated after {sum(map(len, out))} decompressed bytes; "
-                         "what came before is imported")
+            notes.append(
+                f"{path}: the gzip stream is truncated after {sum(map(len, out))} decompressed bytes; "
+                "what came before is imported"
+            )
             break
         pos -= len(d.unused_data)
     data = b"".join(out)
@@ -89,8 +131,10 @@ def _raw_check(data: bytes, path: str) -> None:
     if cat not in ASTERIX_CATEGORIES:
         raise AsterixImportError(f"{path}: {what} (the first byte, {cat}, is no ASTERIX category)")
     if length < 3 or length > n:
-        raise AsterixImportError(f"{path}: {what} (the first data block, category {cat}, declares {length} bytes; "
-                                 f"the file has {n})")
+        raise AsterixImportError(
+            f"{path}: {what} (the first data block, category {cat}, declares {length} bytes; "
+            f"the file has {n})"
+        )
 
 
 def read_capture(path: str | Path, rejections: Rejections, ports: Iterable[int] | None = None) -> Capture:
@@ -106,9 +150,11 @@ def read_capture(path: str | Path, rejections: Rejections, ports: Iterable[int] 
     data = _gunzip(raw, name, notes) if zipped else raw
     del raw
     if not data:
-        raise AsterixImportError(f"{name}: an empty file, neither a pcap/pcapng capture nor an ASTERIX recording")
+        raise AsterixImportError(
+            f"{name}: an empty file, neither a pcap/pcapng capture nor an ASTERIX recording"
+        )
     buf = np.zeros(len(data) + PAD, dtype=np.uint8)
-    buf[:len(data)] = np.frombuffer(data, dtype=np.uint8)
+    buf[: len(data)] = np.frombuffer(data, dtype=np.uint8)
     magic = bytes(data[:4])
     counts: dict = {}
     if magic in PCAP_MAGICS or magic == PCAPNG_MAGIC:

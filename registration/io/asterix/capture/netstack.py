@@ -17,14 +17,24 @@ from typing import Iterable
 
 import numpy as np
 
-from registration.io.asterix.decode.fields import u8, u16, u32
 from registration.io.asterix.capture.pcap import Packets
+from registration.io.asterix.decode.fields import u8, u16, u32
 
 __all__ = ["LINKTYPES", "Segments", "udp_segments"]
 
 #: LINKTYPE_ numbers read -> name.
-LINKTYPES = {0: "BSD loopback", 1: "Ethernet", 12: "raw IP", 14: "raw IP", 101: "raw IP", 108: "OpenBSD loopback",
-             113: "Linux cooked (SLL)", 228: "raw IPv4", 229: "raw IPv6", 276: "Linux cooked (SLL2)"}
+LINKTYPES = {
+    0: "BSD loopback",
+    1: "Ethernet",
+    12: "raw IP",
+    14: "raw IP",
+    101: "raw IP",
+    108: "OpenBSD loopback",
+    113: "Linux cooked (SLL)",
+    228: "raw IPv4",
+    229: "raw IPv6",
+    276: "Linux cooked (SLL2)",
+}
 
 
 @dataclass
@@ -66,7 +76,9 @@ def _network(buf: np.ndarray, p: Packets) -> tuple[np.ndarray, np.ndarray, np.nd
     return l3, version, supported
 
 
-def udp_segments(buf: np.ndarray, packets: Packets, ports: Iterable[int] | None = None) -> tuple[Segments, dict]:
+def udp_segments(
+    buf: np.ndarray, packets: Packets, ports: Iterable[int] | None = None
+) -> tuple[Segments, dict]:
     """The UDP payloads of ``packets`` (to a destination port in ``ports``, if given) as segments,
     and the counts of packets: read, UDP datagrams kept, and those skipped by kind."""
     l3, version, supported = _network(buf, packets)
@@ -85,15 +97,18 @@ def udp_segments(buf: np.ndarray, packets: Packets, ports: Iterable[int] | None 
     stop = np.minimum(udp + length, end)
     keep = wanted & (stop >= start)
     segments = Segments(start[keep], stop[keep], packets.number[keep], packets.time[keep])
-    counts = {"packets": int(packets.number.size), "udp_datagrams": int(keep.sum()),
-              "skipped_packets": {
-                  "unsupported_link_type": int((~supported).sum()),
-                  "not_ip": int((supported & ~(v4 | v6)).sum()),
-                  "not_udp": int(((v4 | v6) & ~fragment & (proto != 17)).sum()),
-                  "ip_fragment": int(fragment.sum()),
-                  "cut_before_udp_payload": int((is_udp & ~whole).sum() + (v4 & (proto == 17) & (ihl < 20)).sum()),
-                  "bad_udp_length": int((whole & (length < 8)).sum()),
-                  "other_port": int((whole & (length >= 8) & ~wanted).sum()),
-              }}
+    counts = {
+        "packets": int(packets.number.size),
+        "udp_datagrams": int(keep.sum()),
+        "skipped_packets": {
+            "unsupported_link_type": int((~supported).sum()),
+            "not_ip": int((supported & ~(v4 | v6)).sum()),
+            "not_udp": int(((v4 | v6) & ~fragment & (proto != 17)).sum()),
+            "ip_fragment": int(fragment.sum()),
+            "cut_before_udp_payload": int((is_udp & ~whole).sum() + (v4 & (proto == 17) & (ihl < 20)).sum()),
+            "bad_udp_length": int((whole & (length < 8)).sum()),
+            "other_port": int((whole & (length >= 8) & ~wanted).sum()),
+        },
+    }
     counts["non_udp_packets"] = int(counts["packets"] - keep.sum())
     return segments, counts

@@ -26,8 +26,12 @@ from registration.io.asterix.errors import Rejections
 __all__ = ["PCAP_MAGICS", "PCAPNG_MAGIC", "Packets", "pcap_packets", "pcapng_packets"]
 
 #: The first four octets of a pcap file -> (byte order, time stamp fraction unit in s).
-PCAP_MAGICS = {b"\xd4\xc3\xb2\xa1": ("<", 1e-6), b"\xa1\xb2\xc3\xd4": (">", 1e-6),
-               b"\x4d\x3c\xb2\xa1": ("<", 1e-9), b"\xa1\xb2\x3c\x4d": (">", 1e-9)}
+PCAP_MAGICS = {
+    b"\xd4\xc3\xb2\xa1": ("<", 1e-6),
+    b"\xa1\xb2\xc3\xd4": (">", 1e-6),
+    b"\x4d\x3c\xb2\xa1": ("<", 1e-9),
+    b"\xa1\xb2\x3c\x4d": (">", 1e-9),
+}
 #: The block type of a pcapng Section Header Block (the first four octets of the file).
 PCAPNG_MAGIC = b"\x0a\x0d\x0d\x0a"
 #: A captured length above this (octets) means a corrupt record header, not a packet.
@@ -49,8 +53,13 @@ class Packets:
     @classmethod
     def from_lists(cls, rows: list) -> "Packets":
         a = np.array(rows, dtype=np.float64).reshape(-1, 5)
-        return cls(a[:, 0].astype(np.int64), a[:, 1].astype(np.int64), a[:, 2], a[:, 3].astype(np.int64),
-                   a[:, 4].astype(np.int64))
+        return cls(
+            a[:, 0].astype(np.int64),
+            a[:, 1].astype(np.int64),
+            a[:, 2],
+            a[:, 3].astype(np.int64),
+            a[:, 4].astype(np.int64),
+        )
 
 
 def pcap_packets(data: bytes, path: str, rejections: Rejections) -> Packets:
@@ -59,7 +68,9 @@ def pcap_packets(data: bytes, path: str, rejections: Rejections) -> Packets:
     n = len(data)
     rows = []
     if n < 24:
-        rejections.add(path, 0, 0, 0, "truncated_packet", f"the pcap file header needs 24 bytes, the file has {n}")
+        rejections.add(
+            path, 0, 0, 0, "truncated_packet", f"the pcap file header needs 24 bytes, the file has {n}"
+        )
         return Packets.from_lists(rows)
     linktype = struct.unpack_from(order + "I", data, 20)[0] & 0xFFFF
     head = struct.Struct(order + "IIII")
@@ -67,14 +78,26 @@ def pcap_packets(data: bytes, path: str, rejections: Rejections) -> Packets:
     while p < n:
         k += 1
         if p + 16 > n:
-            rejections.add(path, p, k, 0, "truncated_packet",
-                           f"packet {k}: the capture ends inside its 16-byte record header ({n - p} bytes left)")
+            rejections.add(
+                path,
+                p,
+                k,
+                0,
+                "truncated_packet",
+                f"packet {k}: the capture ends inside its 16-byte record header ({n - p} bytes left)",
+            )
             break
         sec, frac, incl, _ = head.unpack_from(data, p)
         if incl > _MAX_PACKET or p + 16 + incl > n:
-            rejections.add(path, p, k, 0, "truncated_packet",
-                           f"packet {k}: captured length {incl} bytes runs past the end of the file "
-                           f"({n - p - 16} bytes left); the rest of the capture is lost")
+            rejections.add(
+                path,
+                p,
+                k,
+                0,
+                "truncated_packet",
+                f"packet {k}: captured length {incl} bytes runs past the end of the file "
+                f"({n - p - 16} bytes left); the rest of the capture is lost",
+            )
             break
         rows.append((p + 16, incl, sec + frac * unit, linktype, k))
         p += 16 + incl
@@ -88,7 +111,7 @@ def _options(data: bytes, order: str, start: int, end: int) -> dict:
         code, length = struct.unpack_from(order + "HH", data, start)
         if code == 0:
             break
-        out.setdefault(code, bytes(data[start + 4:start + 4 + length]))
+        out.setdefault(code, bytes(data[start + 4 : start + 4 + length]))
         start += 4 + length + (-length % 4)
     return out
 
@@ -100,7 +123,7 @@ def _resolution(opts: dict) -> float:
     if not raw:
         return 1e-6
     value = raw[0]
-    return 2.0 ** -(value & 0x7F) if value & 0x80 else 10.0 ** -value
+    return 2.0 ** -(value & 0x7F) if value & 0x80 else 10.0**-value
 
 
 def _packet_block(data: bytes, order: str, btype: int, p: int, length: int, interfaces: list) -> tuple | None:
@@ -124,21 +147,40 @@ def pcapng_packets(data: bytes, path: str, rejections: Rejections) -> Packets:
     p, k = 0, 0
     while p < n:
         if p + 12 > n:
-            rejections.add(path, p, k + 1, 0, "truncated_packet", f"the capture ends inside a block header ({n - p} bytes left)")
+            rejections.add(
+                path,
+                p,
+                k + 1,
+                0,
+                "truncated_packet",
+                f"the capture ends inside a block header ({n - p} bytes left)",
+            )
             break
-        if bytes(data[p:p + 4]) == PCAPNG_MAGIC:
-            magic = bytes(data[p + 8:p + 12])
+        if bytes(data[p : p + 4]) == PCAPNG_MAGIC:
+            magic = bytes(data[p + 8 : p + 12])
             order = "<" if magic == b"\x4d\x3c\x2b\x1a" else ">" if magic == b"\x1a\x2b\x3c\x4d" else ""
             if not order:
-                rejections.add(path, p, k + 1, 0, "truncated_packet", "a section header with a bad byte-order magic; "
-                               "the rest of the capture is skipped")
+                rejections.add(
+                    path,
+                    p,
+                    k + 1,
+                    0,
+                    "truncated_packet",
+                    "a section header with a bad byte-order magic; the rest of the capture is skipped",
+                )
                 break
             interfaces = []
         btype, length = struct.unpack_from(order + "II", data, p)
         if length < 12 or length % 4 or p + length > n:
-            rejections.add(path, p, k + 1, 0, "truncated_packet",
-                           f"block of type {btype} declares {length} bytes, {n - p} left in the file (not a multiple "
-                           "of 4, below 12 or past the end); the rest of the capture is lost")
+            rejections.add(
+                path,
+                p,
+                k + 1,
+                0,
+                "truncated_packet",
+                f"block of type {btype} declares {length} bytes, {n - p} left in the file (not a multiple "
+                "of 4, below 12 or past the end); the rest of the capture is lost",
+            )
             break
         if btype == 1 and length >= 20:
             linktype = struct.unpack_from(order + "H", data, p + 8)[0]
@@ -147,9 +189,15 @@ def pcapng_packets(data: bytes, path: str, rejections: Rejections) -> Packets:
             k += 1
             got = _packet_block(data, order, btype, p, length, interfaces) if interfaces else None
             if got is None:
-                rejections.add(path, p, k, 0, "truncated_packet",
-                               f"packet {k}: a packet block whose captured length exceeds the block or whose "
-                               "interface was not described; the packet is skipped")
+                rejections.add(
+                    path,
+                    p,
+                    k,
+                    0,
+                    "truncated_packet",
+                    f"packet {k}: a packet block whose captured length exceeds the block or whose "
+                    "interface was not described; the packet is skipped",
+                )
             else:
                 rows.append((got[0], got[1], got[2], interfaces[got[3]][0], k))
         p += length

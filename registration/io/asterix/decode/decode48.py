@@ -45,7 +45,12 @@ def decode048(buf: np.ndarray, rec: Records) -> dict:
     out["tst"] = ext * (u8(buf, at["020"] + 1) >> 7)
     out["rho"], out["theta"] = u16(buf, at["040"]), u16(buf, at["040"] + 2)
     m3a = u16(buf, at["070"])
-    out["m3a_v"], out["m3a_g"], out["m3a_l"], out["m3a"] = m3a >> 15, (m3a >> 14) & 1, (m3a >> 13) & 1, m3a & 0x0FFF
+    out["m3a_v"], out["m3a_g"], out["m3a_l"], out["m3a"] = (
+        m3a >> 15,
+        (m3a >> 14) & 1,
+        (m3a >> 13) & 1,
+        m3a & 0x0FFF,
+    )
     out["address"] = u24(buf, at["220"])
     for name, h in has.items():  # absent items read as 0
         for key in _FIELDS[name]:
@@ -53,5 +58,11 @@ def decode048(buf: np.ndarray, rec: Records) -> dict:
     return out
 
 
-_FIELDS = {"010": ("sac", "sic"), "140": ("tod",), "020": ("typ", "sim", "rab", "tst"), "040": ("rho", "theta"),
-           "070": ("m3a_v", "m3a_g", "m3a_l", "m3a"), "220": ("address",)}
+_FIELDS = {
+    "010": ("sac", "sic"),
+    "140": ("tod",),
+    "020": ("typ", "sim", "rab", "tst"),
+    "040": ("rho", "theta"),
+    "070": ("m3a_v", "m3a_g", "m3a_l", "m3a"),
+    "220": ("address",),
+}

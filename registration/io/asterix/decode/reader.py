@@ -12,15 +12,18 @@ from typing import Any, Iterable, Mapping
 
 import numpy as np
 
-from registration.io.asterix.decode.decode21 import decode021, wanted as wanted021
-from registration.io.asterix.decode.decode34 import WANTED as WANTED034, decode034
-from registration.io.asterix.decode.decode48 import WANTED as WANTED048, decode048
 from registration.io.asterix.capture.blocks import Blocks, find_blocks
 from registration.io.asterix.capture.capture import Capture, read_capture
-from registration.io.asterix.errors import Rejections
+from registration.io.asterix.decode.decode21 import decode021
+from registration.io.asterix.decode.decode21 import wanted as wanted021
+from registration.io.asterix.decode.decode34 import WANTED as WANTED034
+from registration.io.asterix.decode.decode34 import decode034
+from registration.io.asterix.decode.decode48 import WANTED as WANTED048
+from registration.io.asterix.decode.decode48 import decode048
 from registration.io.asterix.decode.scalar import explain_record
 from registration.io.asterix.decode.uap import check_editions, uap_for
 from registration.io.asterix.decode.walker import Records, walk_records
+from registration.io.asterix.errors import Rejections
 
 __all__ = ["CategoryRecords", "DecodedFile", "decode_file", "CHUNK_BYTES"]
 
@@ -73,8 +76,15 @@ def _chunks(sizes: np.ndarray) -> list[slice]:
     return [slice(int(a), int(b)) for a, b in zip(bounds[:-1], bounds[1:])]
 
 
-def _walk_category(cap: Capture, blocks: Blocks, sel: np.ndarray, cat: int, edition: str, rejections: Rejections,
-                   progress: Any) -> CategoryRecords:
+def _walk_category(
+    cap: Capture,
+    blocks: Blocks,
+    sel: np.ndarray,
+    cat: int,
+    edition: str,
+    rejections: Rejections,
+    progress: Any,
+) -> CategoryRecords:
     uap = uap_for(cat, edition)
     wanted = _wanted(cat, edition)
     parts = []
@@ -86,20 +96,35 @@ def _walk_category(cap: Capture, blocks: Blocks, sel: np.ndarray, cat: int, edit
             code, reason = explain_record(mv, start, int(blocks.end[idx[b]]), uap)
             rest = int(blocks.end[idx[b]]) - start
             seg = int(blocks.segment[idx[b]])
-            rejections.add(cap.path, start, int(cap.segments.packet[seg]), cat, code,
-                           f"CAT{cat:03d} record (edition {edition}): {reason}; the rest of the data block "
-                           f"({rest} bytes) is skipped")
+            rejections.add(
+                cap.path,
+                start,
+                int(cap.segments.packet[seg]),
+                cat,
+                code,
+                f"CAT{cat:03d} record (edition {edition}): {reason}; the rest of the data block "
+                f"({rest} bytes) is skipped",
+            )
         seg = blocks.segment[idx[rec.block]]
-        parts.append((_decode(cat, edition, cap.buf, rec), rec.start, cap.segments.packet[seg], cap.segments.time[seg]))
+        parts.append(
+            (_decode(cat, edition, cap.buf, rec), rec.start, cap.segments.packet[seg], cap.segments.time[seg])
+        )
         if progress is not None:
             progress.update(int((blocks.end[idx] - blocks.start[idx]).sum()))
     fields = {k: np.concatenate([p[0][k] for p in parts]) for k in parts[0][0]} if parts else {}
     cat_ = (lambda i: np.concatenate([p[i] for p in parts])) if parts else (lambda i: np.zeros(0))
-    return CategoryRecords(fields, cat_(1).astype(np.int64), cat_(2).astype(np.int64), cat_(3).astype(np.float64))
+    return CategoryRecords(
+        fields, cat_(1).astype(np.int64), cat_(2).astype(np.int64), cat_(3).astype(np.float64)
+    )
 
 
-def decode_file(path: str | Path, editions: Mapping[int, str] | None = None, rejections: Rejections | None = None,
-                ports: Iterable[int] | None = None, progress: Any = None) -> DecodedFile:
+def decode_file(
+    path: str | Path,
+    editions: Mapping[int, str] | None = None,
+    rejections: Rejections | None = None,
+    ports: Iterable[int] | None = None,
+    progress: Any = None,
+) -> DecodedFile:
     """Decode the CAT048, CAT034 and CAT021 records of one file (raw, pcap or pcapng, gzip or not).
 
     ``editions``: category -> edition (default :data:`~registration.io.asterix.decode.uap.DEFAULT_EDITIONS`);
@@ -123,10 +148,20 @@ def decode_file(path: str | Path, editions: Mapping[int, str] | None = None, rej
         records[cat] = _walk_category(cap, blocks, sel, cat, editions[cat], rejections, progress)
     other = np.flatnonzero(~np.isin(blocks.category, (48, 34, 21)))
     if other.size:
-        rejections.add(cap.path, blocks.start[other], cap.segments.packet[blocks.segment[other]], blocks.category[other],
-                       "unknown_category", np.array([f"data block of category {c} ({e - s} bytes), not decoded"
-                                                     for c, s, e in zip(blocks.category[other], blocks.start[other],
-                                                                        blocks.end[other])], dtype=object))
+        rejections.add(
+            cap.path,
+            blocks.start[other],
+            cap.segments.packet[blocks.segment[other]],
+            blocks.category[other],
+            "unknown_category",
+            np.array(
+                [
+                    f"data block of category {c} ({e - s} bytes), not decoded"
+                    for c, s, e in zip(blocks.category[other], blocks.start[other], blocks.end[other])
+                ],
+                dtype=object,
+            ),
+        )
         if progress is not None:
             progress.update(int((blocks.end[other] - blocks.start[other]).sum()))
     return DecodedFile(cap, records, {int(c): int(n) for c, n in zip(cats, counts)})

@@ -7,7 +7,15 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from registration.io.asterix.decode.uap import Compound, Explicit, Extended, Fixed, Repetitive, RepetitiveFx, Uap
+from registration.io.asterix.decode.uap import (
+    Compound,
+    Explicit,
+    Extended,
+    Fixed,
+    Repetitive,
+    RepetitiveFx,
+    Uap,
+)
 
 __all__ = ["RecordProblem", "walk_one", "explain_record"]
 
@@ -31,19 +39,24 @@ def _size(data: Sequence[int], at: int, layout: object, name: str) -> int:
             size += octets
             if not fx or not data[at + size - 1] & 1:
                 return size
-        raise RecordProblem("bad_item", f"item {name} has the FX bit set in its last octet allowed "
-                                        f"({len(layout.groups)} groups in this edition)")
+        raise RecordProblem(
+            "bad_item",
+            f"item {name} has the FX bit set in its last octet allowed "
+            f"({len(layout.groups)} groups in this edition)",
+        )
     if isinstance(layout, RepetitiveFx):
         size = layout.octets
         while data[at + size - 1] & 1:
             size += layout.octets
         return size
     if isinstance(layout, Repetitive):
-        count = int.from_bytes(bytes(data[at:at + layout.rep]), "big")
+        count = int.from_bytes(bytes(data[at : at + layout.rep]), "big")
         return layout.rep + count * layout.octets
     if isinstance(layout, Explicit):
         if data[at] == 0:
-            raise RecordProblem("bad_item", f"explicit item {name} has length 0 (at least 1: the length octet)")
+            raise RecordProblem(
+                "bad_item", f"explicit item {name} has length 0 (at least 1: the length octet)"
+            )
         return data[at]
     if isinstance(layout, Compound):
         present, size = _fspec_items(data, at, len(layout.subitems), f"compound item {name}")
@@ -67,9 +80,11 @@ def _fspec_items(data: Sequence[int], at: int, n: int, what: str) -> tuple[list,
         if not octet & 1:
             return present, j
         if j == octets:
-            raise RecordProblem("fspec_overrun" if what == "record" else "bad_item",
-                                f"the FSPEC of the {what} has the FX bit set in its octet {octets}, the last its "
-                                f"{n} items allow")
+            raise RecordProblem(
+                "fspec_overrun" if what == "record" else "bad_item",
+                f"the FSPEC of the {what} has the FX bit set in its octet {octets}, the last its "
+                f"{n} items allow",
+            )
 
 
 def walk_one(data: Sequence[int], pos: int, end: int, uap: Uap, wanted: tuple = ()) -> tuple[int, dict]:
@@ -81,22 +96,29 @@ def walk_one(data: Sequence[int], pos: int, end: int, uap: Uap, wanted: tuple = 
     except IndexError:
         present, size = None, None
     if present is None or pos + size > end:
-        raise RecordProblem("fspec_overrun", f"the FSPEC runs past the end of the data block ({end - pos} bytes left)")
+        raise RecordProblem(
+            "fspec_overrun", f"the FSPEC runs past the end of the data block ({end - pos} bytes left)"
+        )
     if not present:
         raise RecordProblem("empty_record", "the FSPEC names no item")
     cursor, offsets = pos + size, {}
     for k in present:
         item = uap.items[k - 1] if k <= len(uap.items) else None
         if item is None:
-            raise RecordProblem("spare_frn", f"the FSPEC sets FRN {k}, spare in {label} edition {uap.edition}")
+            raise RecordProblem(
+                "spare_frn", f"the FSPEC sets FRN {k}, spare in {label} edition {uap.edition}"
+            )
         name, layout = item
         try:
             size = _size(data, cursor, layout, f"I{uap.category:03d}/{name}")
         except IndexError:
             size = end - cursor + 1
         if cursor + size > end:
-            raise RecordProblem("item_overrun", f"item I{uap.category:03d}/{name} (FRN {k}) needs {size} bytes, "
-                                                f"{end - cursor} left in the data block")
+            raise RecordProblem(
+                "item_overrun",
+                f"item I{uap.category:03d}/{name} (FRN {k}) needs {size} bytes, "
+                f"{end - cursor} left in the data block",
+            )
         if name in wanted:
             offsets[name] = cursor
         cursor += size

@@ -26,8 +26,20 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Mapping
 
-__all__ = ["Fixed", "Extended", "Repetitive", "RepetitiveFx", "Explicit", "Compound", "Uap", "UAPS",
-           "DEFAULT_EDITIONS", "SUPPORTED_EDITIONS", "uap_for", "check_editions"]
+__all__ = [
+    "Fixed",
+    "Extended",
+    "Repetitive",
+    "RepetitiveFx",
+    "Explicit",
+    "Compound",
+    "Uap",
+    "UAPS",
+    "DEFAULT_EDITIONS",
+    "SUPPORTED_EDITIONS",
+    "uap_for",
+    "check_editions",
+]
 
 
 @dataclass(frozen=True)
@@ -99,49 +111,145 @@ def _x(n: int, last_fx: bool = True) -> Extended:
 
 def _cat048(n020: int) -> tuple:
     f = Fixed
-    return (("010", f(2)), ("140", f(3)), ("020", _x(n020)), ("040", f(4)), ("070", f(2)), ("090", f(2)),
-            ("130", Compound(tuple(f(1) for _ in range(7)))),
-            ("220", f(3)), ("240", f(6)), ("250", Repetitive(1, 8)), ("161", f(2)), ("042", f(4)), ("200", f(4)),
-            ("170", _x(2)),
-            ("210", f(4)), ("030", RepetitiveFx(1)), ("080", f(2)), ("100", f(4)), ("110", f(2)),
-            ("120", Compound((f(2), Repetitive(1, 6)))), ("230", f(2)),
-            ("260", f(7)), ("055", f(1)), ("050", f(2)), ("065", f(1)), ("060", f(2)), ("SP", Explicit()),
-            ("RE", Explicit()))
+    return (
+        ("010", f(2)),
+        ("140", f(3)),
+        ("020", _x(n020)),
+        ("040", f(4)),
+        ("070", f(2)),
+        ("090", f(2)),
+        ("130", Compound(tuple(f(1) for _ in range(7)))),
+        ("220", f(3)),
+        ("240", f(6)),
+        ("250", Repetitive(1, 8)),
+        ("161", f(2)),
+        ("042", f(4)),
+        ("200", f(4)),
+        ("170", _x(2)),
+        ("210", f(4)),
+        ("030", RepetitiveFx(1)),
+        ("080", f(2)),
+        ("100", f(4)),
+        ("110", f(2)),
+        ("120", Compound((f(2), Repetitive(1, 6)))),
+        ("230", f(2)),
+        ("260", f(7)),
+        ("055", f(1)),
+        ("050", f(2)),
+        ("065", f(1)),
+        ("060", f(2)),
+        ("SP", Explicit()),
+        ("RE", Explicit()),
+    )
 
 
 def _cat034() -> tuple:
     f = Fixed
-    return (("010", f(2)), ("000", f(1)), ("030", f(3)), ("020", f(1)), ("041", f(2)),
-            ("050", Compound((f(1), None, None, f(1), f(1), f(2)))),
-            ("060", Compound((f(1), None, None, f(1), f(1), f(1)))),
-            ("070", Repetitive(1, 2)), ("100", f(8)), ("110", f(1)), ("120", f(8)), ("090", f(2)),
-            ("RE", Explicit()), ("SP", Explicit()))
+    return (
+        ("010", f(2)),
+        ("000", f(1)),
+        ("030", f(3)),
+        ("020", f(1)),
+        ("041", f(2)),
+        ("050", Compound((f(1), None, None, f(1), f(1), f(2)))),
+        ("060", Compound((f(1), None, None, f(1), f(1), f(1)))),
+        ("070", Repetitive(1, 2)),
+        ("100", f(8)),
+        ("110", f(1)),
+        ("120", f(8)),
+        ("090", f(2)),
+        ("RE", Explicit()),
+        ("SP", Explicit()),
+    )
 
 
 def _cat021_v0(position_octets: int, frn27: bool) -> tuple:
     f = Fixed
-    items = (("010", f(2)), ("040", f(2)), ("030", f(3)), ("130", f(position_octets)), ("080", f(3)), ("140", f(2)),
-             ("090", f(2)), ("210", f(1)), ("230", f(2)), ("145", f(2)), ("150", f(2)), ("151", f(2)),
-             ("152", f(2)), ("155", f(2)), ("157", f(2)), ("160", f(4)), ("165", _x(2)), ("170", f(6)),
-             ("095", f(1)), ("032", f(1)), ("200", f(1)), ("020", f(1)),
-             ("220", Compound((f(2), f(2), f(2), f(1)))), ("146", f(2)), ("148", f(2)),
-             ("110", Compound((_x(1), Repetitive(1, 15)))))
+    items = (
+        ("010", f(2)),
+        ("040", f(2)),
+        ("030", f(3)),
+        ("130", f(position_octets)),
+        ("080", f(3)),
+        ("140", f(2)),
+        ("090", f(2)),
+        ("210", f(1)),
+        ("230", f(2)),
+        ("145", f(2)),
+        ("150", f(2)),
+        ("151", f(2)),
+        ("152", f(2)),
+        ("155", f(2)),
+        ("157", f(2)),
+        ("160", f(4)),
+        ("165", _x(2)),
+        ("170", f(6)),
+        ("095", f(1)),
+        ("032", f(1)),
+        ("200", f(1)),
+        ("020", f(1)),
+        ("220", Compound((f(2), f(2), f(2), f(1)))),
+        ("146", f(2)),
+        ("148", f(2)),
+        ("110", Compound((_x(1), Repetitive(1, 15)))),
+    )
     tail = (("070", f(2)), ("131", f(1))) if frn27 else (None, None)
     return items + tail + (None,) * 5 + (("RE", Explicit()), ("SP", Explicit()))
 
 
 def _cat021_v2(n040: int, n090: int, last271_fx: bool) -> tuple:
     f = Fixed
-    return (("010", f(2)), ("040", _x(n040)), ("161", f(2)), ("015", f(1)), ("071", f(3)), ("130", f(6)),
-            ("131", f(8)), ("072", f(3)), ("150", f(2)), ("151", f(2)), ("080", f(3)), ("073", f(3)),
-            ("074", f(4)), ("075", f(3)), ("076", f(4)), ("140", f(2)), ("090", _x(n090)), ("210", f(1)),
-            ("070", f(2)), ("230", f(2)), ("145", f(2)), ("152", f(2)), ("200", f(1)), ("155", f(2)),
-            ("157", f(2)), ("160", f(4)), ("165", f(2)), ("077", f(3)), ("170", f(6)), ("020", f(1)),
-            ("220", Compound((f(2), f(2), f(2), f(1)))), ("146", f(2)), ("148", f(2)),
-            ("110", Compound((_x(1), Repetitive(1, 15)))), ("016", f(1)), ("008", f(1)),
-            ("271", _x(2, last271_fx)), ("132", f(1)), ("250", Repetitive(1, 8)), ("260", f(7)), ("400", f(1)),
-            ("295", Compound(tuple(f(1) for _ in range(23)))),
-            None, None, None, None, None, ("RE", Explicit()), ("SP", Explicit()))
+    return (
+        ("010", f(2)),
+        ("040", _x(n040)),
+        ("161", f(2)),
+        ("015", f(1)),
+        ("071", f(3)),
+        ("130", f(6)),
+        ("131", f(8)),
+        ("072", f(3)),
+        ("150", f(2)),
+        ("151", f(2)),
+        ("080", f(3)),
+        ("073", f(3)),
+        ("074", f(4)),
+        ("075", f(3)),
+        ("076", f(4)),
+        ("140", f(2)),
+        ("090", _x(n090)),
+        ("210", f(1)),
+        ("070", f(2)),
+        ("230", f(2)),
+        ("145", f(2)),
+        ("152", f(2)),
+        ("200", f(1)),
+        ("155", f(2)),
+        ("157", f(2)),
+        ("160", f(4)),
+        ("165", f(2)),
+        ("077", f(3)),
+        ("170", f(6)),
+        ("020", f(1)),
+        ("220", Compound((f(2), f(2), f(2), f(1)))),
+        ("146", f(2)),
+        ("148", f(2)),
+        ("110", Compound((_x(1), Repetitive(1, 15)))),
+        ("016", f(1)),
+        ("008", f(1)),
+        ("271", _x(2, last271_fx)),
+        ("132", f(1)),
+        ("250", Repetitive(1, 8)),
+        ("260", f(7)),
+        ("400", f(1)),
+        ("295", Compound(tuple(f(1) for _ in range(23)))),
+        None,
+        None,
+        None,
+        None,
+        None,
+        ("RE", Explicit()),
+        ("SP", Explicit()),
+    )
 
 
 def _table() -> dict:
@@ -150,7 +258,12 @@ def _table() -> dict:
         out[(48, edition)] = Uap(48, edition, _cat048(n020))
     for edition in ("1.27", "1.28", "1.29"):
         out[(34, edition)] = Uap(34, edition, _cat034())
-    for edition, octets, frn27 in (("0.23", 6, False), ("0.24", 8, False), ("0.25", 8, False), ("0.26", 8, True)):
+    for edition, octets, frn27 in (
+        ("0.23", 6, False),
+        ("0.24", 8, False),
+        ("0.25", 8, False),
+        ("0.26", 8, True),
+    ):
         out[(21, edition)] = Uap(21, edition, _cat021_v0(octets, frn27))
     for edition in ("2.1", "2.2", "2.3", "2.4", "2.5", "2.6", "2.7"):
         n040 = 5 if edition in ("2.6", "2.7") else 3
@@ -183,13 +296,19 @@ def check_editions(editions: Mapping[int | str, str] | None) -> dict:
         try:
             cat = int(cat)
         except (TypeError, ValueError):
-            raise ValueError(f"editions: category {cat!r} is not a number; the reader decodes categories "
-                             f"{sorted(SUPPORTED_EDITIONS)}") from None
+            raise ValueError(
+                f"editions: category {cat!r} is not a number; the reader decodes categories "
+                f"{sorted(SUPPORTED_EDITIONS)}"
+            ) from None
         if cat not in SUPPORTED_EDITIONS:
-            raise ValueError(f"editions: CAT{cat:03d} is not decoded by the reader; it decodes categories "
-                             f"{sorted(SUPPORTED_EDITIONS)} (other categories are skipped and counted)")
+            raise ValueError(
+                f"editions: CAT{cat:03d} is not decoded by the reader; it decodes categories "
+                f"{sorted(SUPPORTED_EDITIONS)} (other categories are skipped and counted)"
+            )
         if str(edition) not in SUPPORTED_EDITIONS[cat]:
-            raise ValueError(f"editions: CAT{cat:03d} edition {edition!r} is not supported; supported: "
-                             f"{', '.join(SUPPORTED_EDITIONS[cat])}")
+            raise ValueError(
+                f"editions: CAT{cat:03d} edition {edition!r} is not supported; supported: "
+                f"{', '.join(SUPPORTED_EDITIONS[cat])}"
+            )
         out[cat] = str(edition)
     return out

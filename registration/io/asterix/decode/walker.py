@@ -15,7 +15,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.io.asterix.decode.uap import Compound, Explicit, Extended, Fixed, Repetitive, RepetitiveFx, Uap
+from registration.io.asterix.decode.uap import (
+    Compound,
+    Explicit,
+    Extended,
+    Fixed,
+    Repetitive,
+    RepetitiveFx,
+    Uap,
+)
 
 __all__ = ["Records", "walk_records", "MAX_REPETITIONS"]
 
@@ -162,7 +170,9 @@ def _step(buf: np.ndarray, pos: np.ndarray, end: np.ndarray, uap: Uap, wanted: t
     return cursor, bad, offsets
 
 
-def walk_records(buf: np.ndarray, start: np.ndarray, end: np.ndarray, uap: Uap, wanted: tuple = ()) -> Records:
+def walk_records(
+    buf: np.ndarray, start: np.ndarray, end: np.ndarray, uap: Uap, wanted: tuple = ()
+) -> Records:
     """The records of the data blocks [start, end) (offsets of their headers and ends in ``buf``),
     all of ``uap``'s category, and the offsets of the ``wanted`` items (names such as "040")."""
     lanes = np.flatnonzero(start + 3 < end)
@@ -183,7 +193,11 @@ def walk_records(buf: np.ndarray, start: np.ndarray, end: np.ndarray, uap: Uap, 
         lanes, pos, stop = lanes[more], cursor[more], stop[more]
     cat = {k: np.concatenate(v) if v else np.zeros(0, dtype=np.int64) for k, v in found.items()}
     order = np.lexsort((cat["start"], cat["block"]))
-    return Records(cat["start"][order], cat["end"][order], cat["block"][order],
-                   {name: cat[name][order] for name in wanted},
-                   np.concatenate(bad_start) if bad_start else np.zeros(0, dtype=np.int64),
-                   np.concatenate(bad_block) if bad_block else np.zeros(0, dtype=np.int64))
+    return Records(
+        cat["start"][order],
+        cat["end"][order],
+        cat["block"][order],
+        {name: cat[name][order] for name in wanted},
+        np.concatenate(bad_start) if bad_start else np.zeros(0, dtype=np.int64),
+        np.concatenate(bad_block) if bad_block else np.zeros(0, dtype=np.int64),
+    )

@@ -30,8 +30,15 @@ from registration.io.asterix.decode.decode21 import FOOT_M, HEIGHT_LSB_FT
 from registration.io.asterix.tables.plots48 import format_ids
 from registration.io.asterix.tables.verdicts import Verdicts
 
-__all__ = ["NACP_EPU_M", "NUCP_EPU_M", "GVA_BOUND_M", "CIRCULAR_95", "adsb_sigma_m", "reference_verdicts",
-           "reference_columns"]
+__all__ = [
+    "NACP_EPU_M",
+    "NUCP_EPU_M",
+    "GVA_BOUND_M",
+    "CIRCULAR_95",
+    "adsb_sigma_m",
+    "reference_verdicts",
+    "reference_columns",
+]
 
 _NM = 1852.0
 #: NACp -> horizontal EPU, 95 % (m) (RTCA DO-260B); NACp below 7 is set aside.
@@ -51,8 +58,9 @@ def adsb_sigma_m(epu_m: np.ndarray, gva: np.ndarray) -> tuple[np.ndarray, np.nda
     EPU / 2.4477, and GVA bound / 1.96, else 2 EPU / 2.4477."""
     horizontal = np.asarray(epu_m, dtype=float) / CIRCULAR_95
     gva = np.asarray(gva)
-    vertical = np.where(gva == 1, GVA_BOUND_M[1] / _GAUSS_95,
-                        np.where(gva == 2, GVA_BOUND_M[2] / _GAUSS_95, 2.0 * horizontal))
+    vertical = np.where(
+        gva == 1, GVA_BOUND_M[1] / _GAUSS_95, np.where(gva == 2, GVA_BOUND_M[2] / _GAUSS_95, 2.0 * horizontal)
+    )
     return horizontal, vertical
 
 
@@ -67,15 +75,21 @@ def reference_verdicts(f: dict, old_edition: bool) -> tuple[Verdicts, np.ndarray
     """(why each CAT021 record is set aside, its horizontal EPU in m: NaN where unknown)."""
     v = Verdicts(f["sac"].size)
     v.rule(~f["has_080"], "no_address", "no I021/080 (target address)")
-    v.rule(f["time_item"] == "", "missing_item", "no time item (" + ("I021/030" if old_edition else
-                                                                   "I021/071, I021/073 or I021/077") + ")")
+    v.rule(
+        f["time_item"] == "",
+        "missing_item",
+        "no time item (" + ("I021/030" if old_edition else "I021/071, I021/073 or I021/077") + ")",
+    )
     v.rule(f["tod"] >= 86400 * 128, "bad_time", "time of day is 24 h or more")
     v.rule(f["tst"] == 1, "test_target", "test target (I021/040 TST)")
     v.rule(f["sim"] == 1, "simulated", "simulated target (I021/040 SIM)")
     v.rule(f["rab"] == 1, "field_monitor", "report from a field monitor (I021/040 RAB)")
     v.rule(~f["has_position"], "no_position", "no WGS-84 position (I021/130, I021/131)")
-    v.rule((np.abs(f["lat_deg"]) > 90) | (np.abs(f["lon_deg"]) > 180), "bad_position",
-           "latitude beyond +-90 deg or longitude beyond +-180 deg")
+    v.rule(
+        (np.abs(f["lat_deg"]) > 90) | (np.abs(f["lon_deg"]) > 180),
+        "bad_position",
+        "latitude beyond +-90 deg or longitude beyond +-180 deg",
+    )
     if old_edition:
         v.rule(~f["has_nucp"], "no_quality", "no I021/090 (NUCp)")
         epu = _lookup(NUCP_EPU_M, f["nucp"])
@@ -94,5 +108,12 @@ def reference_verdicts(f: dict, old_edition: bool) -> tuple[Verdicts, np.ndarray
 def reference_columns(f: dict, time_s: np.ndarray, epu_m: np.ndarray) -> dict:
     """The reference file columns of records (all; select the kept ones after)."""
     horizontal, vertical = adsb_sigma_m(epu_m, np.where(f["has_gva"], f["gva"], 0))
-    return {"time_s": time_s, "target": format_ids(f["address"], "%06X"), "lat_deg": f["lat_deg"], "lon_deg": f["lon_deg"],
-            "alt_m": f["height"] * (HEIGHT_LSB_FT * FOOT_M), "sigma_m": horizontal, "sigma_up_m": vertical}
+    return {
+        "time_s": time_s,
+        "target": format_ids(f["address"], "%06X"),
+        "lat_deg": f["lat_deg"],
+        "lon_deg": f["lon_deg"],
+        "alt_m": f["height"] * (HEIGHT_LSB_FT * FOOT_M),
+        "sigma_m": horizontal,
+        "sigma_up_m": vertical,
+    }

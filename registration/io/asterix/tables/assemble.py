@@ -9,11 +9,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from registration.io.asterix.tables.adsb21 import reference_columns, reference_verdicts
 from registration.io.asterix.decode.decode34 import NORTH_MARKER, SECTOR_LSB_DEG
-from registration.io.asterix.errors import Rejections
-from registration.io.asterix.tables.plots48 import plot_columns, plot_verdicts, unknown_source_texts
 from registration.io.asterix.decode.reader import DecodedFile
+from registration.io.asterix.errors import Rejections
+from registration.io.asterix.tables.adsb21 import reference_columns, reference_verdicts
+from registration.io.asterix.tables.plots48 import plot_columns, plot_verdicts, unknown_source_texts
 from registration.io.asterix.tables.timeofday import Unwrapper, midnight_utc
 from registration.io.asterix.tables.verdicts import Verdicts
 
@@ -25,7 +25,9 @@ class SiteLookup:
 
     def __init__(self, sac: np.ndarray, sic: np.ndarray) -> None:
         self.table = np.full(1 << 16, -1, dtype=np.int64)
-        self.table[np.asarray(sac, dtype=np.int64) * 256 + np.asarray(sic, dtype=np.int64)] = np.arange(len(sac))
+        self.table[np.asarray(sac, dtype=np.int64) * 256 + np.asarray(sic, dtype=np.int64)] = np.arange(
+            len(sac)
+        )
 
     def __call__(self, fields: dict) -> np.ndarray:
         return np.where(fields["has_010"], self.table[(fields["sac"] * 256 + fields["sic"]) & 0xFFFF], -1)
@@ -75,10 +77,16 @@ def _service(f: dict, t: np.ndarray, sensor: np.ndarray, v: Verdicts) -> dict:
     v.rule(f["tod"] >= 86400 * 128, "bad_time", "I034/030 time of day is 24 h or more")
     v.rule(sensor < 0, "unknown_sac_sic", unknown_source_texts(f["sac"], f["sic"], sensor < 0))
     keep = v.kept()
-    azimuth = np.where(f["msg_type"] == NORTH_MARKER, 0.0,
-                       np.where(f["has_020"], f["sector"] * SECTOR_LSB_DEG, np.nan))
-    return {"sensor": sensor[keep], "msg_type": f["msg_type"][keep], "time_s": t[keep], "azimuth_deg": azimuth[keep],
-            "rotation_s": np.where(f["has_041"], f["rotation"] / 128.0, np.nan)[keep]}
+    azimuth = np.where(
+        f["msg_type"] == NORTH_MARKER, 0.0, np.where(f["has_020"], f["sector"] * SECTOR_LSB_DEG, np.nan)
+    )
+    return {
+        "sensor": sensor[keep],
+        "msg_type": f["msg_type"][keep],
+        "time_s": t[keep],
+        "azimuth_deg": azimuth[keep],
+        "rotation_s": np.where(f["has_041"], f["rotation"] / 128.0, np.nan)[keep],
+    }
 
 
 def _unknown(counter: Counter, cat: int, f: dict, sensor: np.ndarray) -> None:
@@ -88,8 +96,14 @@ def _unknown(counter: Counter, cat: int, f: dict, sensor: np.ndarray) -> None:
         counter[(cat, p >> 8, p & 0xFF)] += k
 
 
-def assemble_file(dec: DecodedFile, unwrapper: Unwrapper, sites: SiteLookup, names: np.ndarray, editions: dict,
-                  rejections: Rejections) -> FileRows:
+def assemble_file(
+    dec: DecodedFile,
+    unwrapper: Unwrapper,
+    sites: SiteLookup,
+    names: np.ndarray,
+    editions: dict,
+    rejections: Rejections,
+) -> FileRows:
     """The rows of one decoded file; records set aside go to ``rejections``. ``names``: the SITES
     sensor names; ``editions``: category -> edition used."""
     path = dec.capture.path
@@ -120,7 +134,9 @@ def assemble_file(dec: DecodedFile, unwrapper: Unwrapper, sites: SiteLookup, nam
         v, epu = reference_verdicts(rec.fields, editions[21].startswith("0."))
         v.report(rejections, path, rec.offset, rec.packet, 21)
         keep = v.kept()
-        rows.reference = {k: np.asarray(c)[keep] for k, c in reference_columns(rec.fields, times[21], epu).items()}
+        rows.reference = {
+            k: np.asarray(c)[keep] for k, c in reference_columns(rec.fields, times[21], epu).items()
+        }
         src = rec.fields["sac"][keep] * 256 + rec.fields["sic"][keep]
         for p, k in zip(*[a.tolist() for a in np.unique(src, return_counts=True)]):
             rows.adsb_sources[(p >> 8, p & 0xFF)] += k

@@ -21,7 +21,15 @@ import numpy as np
 from registration.io.asterix.decode.decode48 import RHO_LSB_NM, THETA_LSB_DEG
 from registration.io.asterix.tables.verdicts import Verdicts
 
-__all__ = ["NM_M", "SHARED_MODE_A", "format_ids", "unknown_source_texts", "target_ids", "plot_verdicts", "plot_columns"]
+__all__ = [
+    "NM_M",
+    "SHARED_MODE_A",
+    "format_ids",
+    "unknown_source_texts",
+    "target_ids",
+    "plot_verdicts",
+    "plot_columns",
+]
 
 #: The international nautical mile (m), exact.
 NM_M = 1852.0
@@ -44,7 +52,9 @@ def unknown_source_texts(sac: np.ndarray, sic: np.ndarray, mask: np.ndarray) -> 
     pairs = sac[mask] * 256 + sic[mask]
     if pairs.size:
         unique, inverse = np.unique(pairs, return_inverse=True)
-        texts = np.array([f"SAC/SIC {p >> 8}/{p & 0xFF} is not in SITES" for p in unique.tolist()], dtype=object)
+        texts = np.array(
+            [f"SAC/SIC {p >> 8}/{p & 0xFF} is not in SITES" for p in unique.tolist()], dtype=object
+        )
         out[mask] = texts[inverse.ravel()]
     return out
 
@@ -66,7 +76,11 @@ def plot_verdicts(f: dict, sensor: np.ndarray) -> Verdicts:
     """Why each CAT048 record is set aside (''  when kept); ``sensor`` (N,) index of its SITES row
     (-1: SAC/SIC not in SITES)."""
     v = Verdicts(f["sac"].size)
-    for item, what in (("010", "data source identifier"), ("140", "time of day"), ("040", "measured position")):
+    for item, what in (
+        ("010", "data source identifier"),
+        ("140", "time of day"),
+        ("040", "measured position"),
+    ):
         v.rule(~f[f"has_{item}"], "missing_item", f"no I048/{item} ({what})")
     v.rule(f["tod"] >= 86400 * 128, "bad_time", "I048/140 time of day is 24 h or more")
     v.rule(sensor < 0, "unknown_sac_sic", unknown_source_texts(f["sac"], f["sic"], sensor < 0))
@@ -82,6 +96,11 @@ def plot_columns(f: dict, time_s: np.ndarray, sensor_name: np.ndarray) -> dict:
     """The plots file columns of records (all of them; select the kept ones after): ``time_s``,
     ``sensor``, ``target``, ``range_m``, ``bearing_deg``, and ``kind`` ('mode_s', 'mode_a', 'none')."""
     ids, kind = target_ids(f)
-    return {"time_s": time_s, "sensor": sensor_name, "target": ids, "range_m": f["rho"] * (RHO_LSB_NM * NM_M),
-            "bearing_deg": f["theta"] * THETA_LSB_DEG, "kind": kind}
-
+    return {
+        "time_s": time_s,
+        "sensor": sensor_name,
+        "target": ids,
+        "range_m": f["rho"] * (RHO_LSB_NM * NM_M),
+        "bearing_deg": f["theta"] * THETA_LSB_DEG,
+        "kind": kind,
+    }

@@ -35,7 +35,9 @@ def scan_period(north_times: np.ndarray) -> dict:
     return out
 
 
-def antenna_track(times: np.ndarray, azimuth_deg: np.ndarray, period_s: float | None) -> tuple[np.ndarray, np.ndarray]:
+def antenna_track(
+    times: np.ndarray, azimuth_deg: np.ndarray, period_s: float | None
+) -> tuple[np.ndarray, np.ndarray]:
     """(times, unwrapped azimuth in degrees, increasing) of the antenna from its service messages
     (north markers at 0 deg, sector crossings at their azimuth). Messages at one time count once;
     the turns between messages come from the scan period when known (a gap of missed messages),
@@ -56,7 +58,9 @@ def antenna_track(times: np.ndarray, azimuth_deg: np.ndarray, period_s: float | 
     return t[good], angle[good]
 
 
-def clock_check(track_t: np.ndarray, track_deg: np.ndarray, plot_t: np.ndarray, plot_bearing_deg: np.ndarray) -> dict:
+def clock_check(
+    track_t: np.ndarray, track_deg: np.ndarray, plot_t: np.ndarray, plot_bearing_deg: np.ndarray
+) -> dict:
     """The clock check of one radar's plots (times s, azimuths deg) against its antenna track
     (:func:`antenna_track`): ``plots_checked`` (plots within the track's time span),
     ``median_offset_s`` (plot time - time the antenna pointed at the plot's azimuth),
@@ -76,6 +80,9 @@ def clock_check(track_t: np.ndarray, track_deg: np.ndarray, plot_t: np.ndarray, 
     offset = t - np.interp(unwrapped, track_deg, track_t)
     k = np.clip(np.searchsorted(track_deg, unwrapped, side="right"), 1, track_t.size - 1)
     outside = (t < track_t[k - 1]) | (t > track_t[k])
-    out.update(plots_checked=int(t.size), median_offset_s=float(np.median(offset)),
-               plots_outside_their_sector=int(outside.sum()))
+    out.update(
+        plots_checked=int(t.size),
+        median_offset_s=float(np.median(offset)),
+        plots_outside_their_sector=int(outside.sum()),
+    )
     return out

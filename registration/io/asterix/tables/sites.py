@@ -50,8 +50,13 @@ SITE_COLUMNS = {
     "prior_roll_deg": ("deg", 0.0, math.inf, False, False),
 }
 #: Prior columns passed on to the fleet sensors file.
-SENSOR_PRIORS = ("prior_range_bias_m", "prior_bearing_bias_deg", "prior_range_gain", "prior_time_bias_s",
-                 "prior_position_m")
+SENSOR_PRIORS = (
+    "prior_range_bias_m",
+    "prior_bearing_bias_deg",
+    "prior_range_gain",
+    "prior_time_bias_s",
+    "prior_position_m",
+)
 #: Prior columns of the fleet platforms file (0 when SITES does not give them).
 PLATFORM_PRIORS = ("prior_heading_deg", "prior_pitch_deg", "prior_roll_deg")
 
@@ -70,13 +75,17 @@ def read_sites(path: str | Path) -> pd.DataFrame:
         raise ValueError(f"{path}: cannot read it as CSV: {exc}") from exc
     lines = [row for row in lines if any(cell.strip() for cell in row)]
     if not lines:
-        raise ValueError(f"{path}: an empty file; expected a header and one row per sensor "
-                         f"({', '.join(c for c, v in SITE_COLUMNS.items() if v[4])})")
+        raise ValueError(
+            f"{path}: an empty file; expected a header and one row per sensor "
+            f"({', '.join(c for c, v in SITE_COLUMNS.items() if v[4])})"
+        )
     header = [c.strip() for c in lines[0]]
     for r, row in enumerate(lines[1:]):
         if len(row) != len(header):
-            raise ValueError(f"{path}: row {r}: {len(row)} fields, the header {len(header)} "
-                             f"({'cut short' if len(row) < len(header) else 'an extra field'}?)")
+            raise ValueError(
+                f"{path}: row {r}: {len(row)} fields, the header {len(header)} "
+                f"({'cut short' if len(row) < len(header) else 'an extra field'}?)"
+            )
     frame = pd.DataFrame([[c.strip() for c in row] for row in lines[1:]], columns=header, dtype=object)
     return check_sites(frame, str(path))
 
@@ -117,8 +126,10 @@ def check_sites(frame: pd.DataFrame, source: str = "sites") -> pd.DataFrame:
         raise ValueError(f"{source}: unknown column(s) {unknown}; the columns are {list(SITE_COLUMNS)}")
     missing = [c for c, v in SITE_COLUMNS.items() if v[4] and c not in columns]
     if missing:
-        raise ValueError(f"{source}: missing column(s) {missing} (required: "
-                         f"{[c for c, v in SITE_COLUMNS.items() if v[4]]})")
+        raise ValueError(
+            f"{source}: missing column(s) {missing} (required: "
+            f"{[c for c, v in SITE_COLUMNS.items() if v[4]]})"
+        )
     if len(frame) == 0:
         raise ValueError(f"{source}: no data rows (the file holds only a header)")
     frame = frame.set_axis(columns, axis=1)
@@ -126,16 +137,22 @@ def check_sites(frame: pd.DataFrame, source: str = "sites") -> pd.DataFrame:
     for column in columns:
         cells = frame[column].tolist()
         if column == "sensor":
-            names = ["" if c is None or (isinstance(c, float) and math.isnan(c)) else str(c).strip() for c in cells]
+            names = [
+                "" if c is None or (isinstance(c, float) and math.isnan(c)) else str(c).strip() for c in cells
+            ]
             for r, name in enumerate(names):
                 if not name:
-                    raise ValueError(f"{source}: row {r}, column 'sensor': empty; every site needs a sensor id")
+                    raise ValueError(
+                        f"{source}: row {r}, column 'sensor': empty; every site needs a sensor id"
+                    )
             out[column] = names
         else:
             out[column] = [_number(source, r, column, c) for r, c in enumerate(cells)]
     _unique(source, out["sensor"], "sensor", "sensor")
     _unique(source, [f"{int(a)}/{int(b)}" for a, b in zip(out["sac"], out["sic"])], "sic", "SAC/SIC")
-    typed = pd.DataFrame({c: np.asarray(v, dtype=np.int64 if c in ("sac", "sic") else None) for c, v in out.items()})
+    typed = pd.DataFrame(
+        {c: np.asarray(v, dtype=np.int64 if c in ("sac", "sic") else None) for c, v in out.items()}
+    )
     typed["sensor"] = typed["sensor"].astype(str)
     return typed
 
@@ -144,6 +161,8 @@ def _unique(source: str, values: list, column: str, what: str) -> None:
     seen = {}
     for r, v in enumerate(values):
         if v in seen:
-            raise ValueError(f"{source}: row {r}, column {column!r}: {what} {v} is also in row {seen[v]}; "
-                             "each must be unique")
+            raise ValueError(
+                f"{source}: row {r}, column {column!r}: {what} {v} is also in row {seen[v]}; "
+                "each must be unique"
+            )
         seen[v] = r

@@ -29,9 +29,14 @@ def _median(values: np.ndarray) -> float | None:
 def file_summary(dec: DecodedFile, blocks_seen: dict) -> dict:
     """One file: name, format, gzip, octets, packet counts (captures), data blocks per category."""
     cap = dec.capture
-    out = {"file": cap.path, "format": cap.kind, "gzip": cap.gzip, "bytes": cap.size,
-           "data_blocks": {f"{c:03d}": n for c, n in sorted(blocks_seen.items())},
-           "records": {f"{c:03d}": rec.size for c, rec in dec.records.items()}}
+    out = {
+        "file": cap.path,
+        "format": cap.kind,
+        "gzip": cap.gzip,
+        "bytes": cap.size,
+        "data_blocks": {f"{c:03d}": n for c, n in sorted(blocks_seen.items())},
+        "records": {f"{c:03d}": rec.size for c, rec in dec.records.items()},
+    }
     out.update({k: v for k, v in cap.counts.items() if k != "first_packet_time"})
     if cap.notes:
         out["notes"] = list(cap.notes)
@@ -40,14 +45,18 @@ def file_summary(dec: DecodedFile, blocks_seen: dict) -> dict:
 
 def time_summary(reference: dt.date | None, source: str, times: np.ndarray, placed_by_capture: int) -> dict:
     """What ``time_s`` counts from and the span of the records' times (s)."""
-    meaning = {"argument": "the date given",
-               "capture": "the UTC date of the first packet of the first capture",
-               "recording": "the first day of the recording (raw file(s), no date given: the date is not known)"}[source]
+    meaning = {
+        "argument": "the date given",
+        "capture": "the UTC date of the first packet of the first capture",
+        "recording": "the first day of the recording (raw file(s), no date given: the date is not known)",
+    }[source]
     finite = times[np.isfinite(times)]
-    return {"reference_date": None if reference is None else reference.isoformat(),
-            "time_s": f"seconds since midnight UTC of {meaning}",
-            "span_s": [float(finite.min()), float(finite.max())] if finite.size else None,
-            "files_placed_by_packet_times": placed_by_capture}
+    return {
+        "reference_date": None if reference is None else reference.isoformat(),
+        "time_s": f"seconds since midnight UTC of {meaning}",
+        "span_s": [float(finite.min()), float(finite.max())] if finite.size else None,
+        "files_placed_by_packet_times": placed_by_capture,
+    }
 
 
 def _service_of(service: dict, k: int, plots_t: np.ndarray, plots_b: np.ndarray) -> dict:
@@ -73,10 +82,15 @@ def sensor_summary(sites: pd.DataFrame, plots: dict, service: dict, decoded: dic
     for k, row in enumerate(sites.itertuples(index=False)):
         mine = plots["sensor"] == row.sensor
         kind = plots["kind"][mine]
-        entry = {"sac": int(row.sac), "sic": int(row.sic),
-                 "records": {f"{c:03d}": int(v[k]) for c, v in sorted(decoded.items())},
-                 "plots": int(mine.sum()), "plots_mode_s": int((kind == "mode_s").sum()),
-                 "plots_mode_a": int((kind == "mode_a").sum()), "plots_without_id": int((kind == "none").sum())}
+        entry = {
+            "sac": int(row.sac),
+            "sic": int(row.sic),
+            "records": {f"{c:03d}": int(v[k]) for c, v in sorted(decoded.items())},
+            "plots": int(mine.sum()),
+            "plots_mode_s": int((kind == "mode_s").sum()),
+            "plots_mode_a": int((kind == "mode_a").sum()),
+            "plots_without_id": int((kind == "none").sum()),
+        }
         entry.update(_service_of(service, k, plots["time_s"][mine], plots["bearing_deg"][mine]))
         entry["capture_minus_plot_time_s"] = _median(plots["capture_lag_s"][mine])
         out[row.sensor] = entry
@@ -85,5 +99,7 @@ def sensor_summary(sites: pd.DataFrame, plots: dict, service: dict, decoded: dic
 
 def sources_not_in_sites(unknown: Counter) -> list:
     """[{category, sac, sic, records}] of the CAT048/CAT034 sources not in SITES, most records first."""
-    return [{"category": f"{c:03d}", "sac": s, "sic": i, "records": n}
-            for (c, s, i), n in sorted(unknown.items(), key=lambda kv: (-kv[1], kv[0]))]
+    return [
+        {"category": f"{c:03d}", "sac": s, "sic": i, "records": n}
+        for (c, s, i), n in sorted(unknown.items(), key=lambda kv: (-kv[1], kv[0]))
+    ]

@@ -37,12 +37,26 @@ def site_tables(sites: pd.DataFrame, time_s: float) -> dict:
 
     n = len(sites)
     name = sites["sensor"].astype(str).to_numpy()
-    navigation = pd.DataFrame({"time_s": np.full(n, float(time_s)), "platform": name,
-                               "lat_deg": sites["lat_deg"].to_numpy(float), "lon_deg": sites["lon_deg"].to_numpy(float),
-                               "alt_m": sites["alt_m"].to_numpy(float), "heading_deg": np.zeros(n),
-                               "pitch_deg": np.zeros(n), "roll_deg": np.zeros(n)})
-    sensors = pd.DataFrame({"sensor": name, "platform": name, "sigma_range_m": sites["sigma_range_m"].to_numpy(float),
-                            "sigma_bearing_deg": sites["sigma_bearing_deg"].to_numpy(float)})
+    navigation = pd.DataFrame(
+        {
+            "time_s": np.full(n, float(time_s)),
+            "platform": name,
+            "lat_deg": sites["lat_deg"].to_numpy(float),
+            "lon_deg": sites["lon_deg"].to_numpy(float),
+            "alt_m": sites["alt_m"].to_numpy(float),
+            "heading_deg": np.zeros(n),
+            "pitch_deg": np.zeros(n),
+            "roll_deg": np.zeros(n),
+        }
+    )
+    sensors = pd.DataFrame(
+        {
+            "sensor": name,
+            "platform": name,
+            "sigma_range_m": sites["sigma_range_m"].to_numpy(float),
+            "sigma_bearing_deg": sites["sigma_bearing_deg"].to_numpy(float),
+        }
+    )
     for column in SENSOR_PRIORS:
         if column in sites:
             sensors[column] = sites[column].to_numpy(float)

@@ -32,8 +32,9 @@ class Verdicts:
         codes, n = np.unique(self.code[self.code != ""].astype(str), return_counts=True)
         return {str(c): int(k) for c, k in zip(codes, n)}
 
-    def report(self, rejections: Rejections, file: str, offset: np.ndarray, packet: np.ndarray,
-               category: int) -> None:
+    def report(
+        self, rejections: Rejections, file: str, offset: np.ndarray, packet: np.ndarray, category: int
+    ) -> None:
         """Add the records set aside to ``rejections``, one call per reason code."""
         for code in np.unique(self.code[self.code != ""].astype(str)):
             m = self.code == code
