@@ -240,6 +240,12 @@ def numerical_message(exc: BaseException) -> str:
     )
 
 
+def _after_publishing(exc: BaseException) -> bool:
+    """Ctrl-C held back while the outputs were published, so they are whole (not a lost run)."""
+    signals = sys.modules.get("registration.io.output.signals")
+    return signals is not None and isinstance(exc, signals.InterruptedAfterPublishing)
+
+
 def _debug() -> bool:
     return os.environ.get(DEBUG_ENV, "").strip() not in ("", "0")
 
@@ -273,11 +279,16 @@ def run_guarded(prog: str, run, args: argparse.Namespace, hint=None) -> int:
     except BrokenPipeError:
         _silence_stdout()
         return EXIT_BROKEN_PIPE
-    except KeyboardInterrupt:
+    except KeyboardInterrupt as exc:
         if _debug():
             traceback.print_exc()
+        if _after_publishing(exc):
+            out = getattr(args, "out", None)
+            text = f"{prog}: interrupted once the outputs were published: {out} holds this run's outputs"
+        else:
+            text = (hint(args) if hint else None) or interrupt_message(prog, args)
         # on a line of its own: a progress bar may have left the cursor at the end of its line
-        print("\n" + ((hint(args) if hint else None) or interrupt_message(prog, args)), file=sys.stderr)
+        print("\n" + text, file=sys.stderr)
         return EXIT_INTERRUPTED
     except CommandError as exc:
         return _fail(prog, str(exc), exc.code)

@@ -16,12 +16,20 @@ checkpoint records the folder's name, and rerunning the same command resumes ins
 checkpoint written before runs had folders of their own (no name recorded) resumes in OUT
 itself, which is then marked ``INCOMPLETE`` until the run ends.
 Leftover folders of processes that are gone and cannot be resumed are removed by the next run.
+
+A marker is read as untrusted input: it may name only a run folder of this module's own making
+(``partial-<pid>-<hex>``, directly inside OUT, not a symbolic link) and plain file names; a
+marker that names anything else is refused with a one-line :class:`OutputFolderError`, and
+nothing is moved or deleted. Ctrl-C and SIGTERM are held back during the renames
+(:mod:`registration.io.output.signals`), so OUT holds exactly the old outputs or exactly the new
+ones when the process stops; after a SIGKILL the marker stays, and the next run completes the move.
 """
 
 from __future__ import annotations
 
 import json
 import os
+import re
 import secrets
 import shutil
 import time
@@ -29,6 +37,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from registration.io.output.checkpoint import CheckpointError, fsync_dir, load_checkpoint
+from registration.io.output.signals import deferred_signals, publication_step
 
 __all__ = [
     "OUTPUT_NAMES",
@@ -67,6 +76,8 @@ OUTPUT_NAMES = frozenset(
 MARKER = "INCOMPLETE"
 _PARTIAL = "partial-"
 _ASIDE = ".replaced-"
+#: The only folder a marker may name: one this module made (``partial-<pid>-<hex token>``).
+_RUN_FOLDER = re.compile(r"partial-[0-9]+-[0-9a-f]+")
 
 
 class OutputFolderError(ValueError):
@@ -74,7 +85,8 @@ class OutputFolderError(ValueError):
 
 
 def _is_output(name: str, names: frozenset = OUTPUT_NAMES) -> bool:
-    """A name a run writes (one of ``names``), or one of its temporary files (``*.tmp``, ``paired.*.partial``)."""
+    """A name a run writes (one of ``names``), or one of its temporary files (``*.tmp``,
+    ``paired.*.partial``)."""
     for suffix in (".tmp", ".partial"):
         if name.endswith(suffix):
             name = name[: -len(suffix)]
@@ -199,13 +211,15 @@ def prepare_out(out: Path, output_names: frozenset = OUTPUT_NAMES) -> None:
     _complete_publication(out, output_names)
     for d in sorted(out.glob(f"{_PARTIAL}*")) + sorted(out.glob(f"{_ASIDE}*")):
         pid = _pid_of(d.name)
-        if not d.is_dir() or pid is None or _pid_alive(pid):
-            continue
+        if d.is_symlink() or not d.is_dir() or pid is None or _pid_alive(pid):
+            continue  # a symbolic link is never followed
         if d.name.startswith(_ASIDE):
             shutil.rmtree(d, ignore_errors=True)
             continue
         ckpt = _marker_fields(d / MARKER).get("checkpoint")
-        if ckpt == "none" or (ckpt is not None and not records_folder(ckpt, d.name)):
+        # no checkpoint line (no marker, or an empty one: the run failed as it started, a full disk
+        # say): nothing can resume it
+        if ckpt in (None, "none") or not records_folder(ckpt, d.name):
             shutil.rmtree(d, ignore_errors=True)
 
 
@@ -215,6 +229,33 @@ def _complete_publication(out: Path, output_names: frozenset = OUTPUT_NAMES) -> 
     fields = _marker_fields(out / MARKER)
     if "publishing" not in fields:
         return
+    work, names = _publication_of(out, fields)
+    pid = _pid_of(work.name)
+    if pid is not None and _pid_alive(pid):
+        return
+    if work.is_dir() or all((out / n).exists() for n in names):
+        _move_in(out, work, names, output_names)
+
+
+def _refuse(out: Path, what: str) -> OutputFolderError:
+    return OutputFolderError(
+        f"{out / MARKER}: {what}; it is not a marker this tool wrote, so nothing was moved or deleted: "
+        f"check {out}, then delete {out / MARKER} to go on"
+    )
+
+
+def _publication_of(out: Path, fields: dict) -> tuple[Path, list[str]]:
+    """The run folder and the file names an interrupted publication's marker names, checked: the
+    folder must be a run folder this module makes (``partial-<pid>-<hex>``), a direct child of
+    ``out`` and no symbolic link; each name a plain file name (no separator, no ``..``). Anything
+    else is refused (:class:`OutputFolderError`) before a single file is moved or deleted, so a
+    crafted marker cannot make a run delete or move anything outside ``out``."""
+    name = fields["publishing"]
+    if not _RUN_FOLDER.fullmatch(name):
+        raise _refuse(out, f"names {name!r} as the folder being published, not a run folder")
+    work = out / name
+    if work.is_symlink():
+        raise _refuse(out, f"the folder it names, {name}, is a symbolic link")
     try:
         names = json.loads(fields.get("files", "[]"))
     except json.JSONDecodeError as exc:
@@ -222,12 +263,23 @@ def _complete_publication(out: Path, output_names: frozenset = OUTPUT_NAMES) -> 
             f"{out / MARKER}: damaged (its file list cannot be read); the folder holds an "
             "interrupted publication: check it, then delete the marker to go on"
         ) from exc
-    work = out / fields["publishing"]
-    pid = _pid_of(work.name)
-    if pid is not None and _pid_alive(pid):
-        return
-    if work.is_dir() or all((out / n).exists() for n in names):
-        _move_in(out, work, names, output_names)
+    if not isinstance(names, list) or not all(_plain_name(n) for n in names):
+        raise _refuse(out, "its file list holds something other than plain file names")
+    return work, names
+
+
+def _is_summary(name: str) -> bool:
+    """``summary.json`` or ``import_summary.json``: the file that says a run is whole."""
+    return name.endswith("summary.json")
+
+
+def _plain_name(name: object) -> bool:
+    """A file name with no folder part: not empty, no separator or NUL, not ``.`` or ``..``."""
+    return (
+        isinstance(name, str)
+        and name not in ("", ".", "..")
+        and not any(c in name for c in ("/", "\\", "\0"))
+    )
 
 
 def new_run_folder(
@@ -253,13 +305,13 @@ def new_run_folder(
         raise OutputFolderError(f"--out {out}: cannot make a run folder in it")
     if checkpoint is None:
         how = (
-            f"checkpoint: none\nWithout --checkpoint this run cannot be resumed; once process {os.getpid()} is gone "
-            f"the folder can be deleted (the next run into {out} deletes it).\n"
+            "checkpoint: none\nWithout --checkpoint this run cannot be resumed; once process "
+            f"{os.getpid()} is gone the folder can be deleted (the next run into {out} deletes it).\n"
         )
     else:
         how = (
-            f"checkpoint: {Path(checkpoint).resolve()}\nTo resume, rerun the same command (same inputs, options, "
-            "--out and --checkpoint); it continues in this folder.\n"
+            f"checkpoint: {Path(checkpoint).resolve()}\nTo resume, rerun the same command (same inputs, "
+            "options, --out and --checkpoint); it continues in this folder.\n"
         )
     _write_text(
         path / MARKER,
@@ -286,13 +338,19 @@ def publish(folder: RunFolder) -> None:
     if folder.in_place:
         (out / MARKER).unlink(missing_ok=True)
         return
+    with deferred_signals():  # Ctrl-C or SIGTERM now takes effect once the outputs are whole
+        _publish(folder)
+
+
+def _publish(folder: RunFolder) -> None:
+    out = folder.out
     fields = _marker_fields(out / MARKER)
     if fields.get("publishing") == folder.path.name:  # this very publication was interrupted: same files
-        names = json.loads(fields["files"])
+        names = _publication_of(out, fields)[1]
     else:
         names = sorted(
             (p.name for p in folder.path.iterdir() if p.name != MARKER),
-            key=lambda n: (n == "summary.json", n),
+            key=lambda n: (_is_summary(n), n),  # the summary arrives last
         )
         _write_text(
             out / MARKER,
@@ -315,12 +373,17 @@ def _move_in(out: Path, work: Path, names: list[str], output_names: frozenset = 
         for p in out.iterdir()
         if _is_output(p.name, output_names) and (p.name not in new or (work / p.name).exists())
     ]
-    for p in sorted(old, key=lambda p: p.name != "summary.json"):
+    step = 0
+    for p in sorted(old, key=lambda p: not _is_summary(p.name)):  # the summary leaves first
         _remove(aside / p.name)
+        publication_step(step)
         os.rename(p, aside / p.name)
+        step += 1
     for name in names:
         if (work / name).exists():
+            publication_step(step)
             os.rename(work / name, out / name)
+            step += 1
     fsync_dir(out)
     (out / MARKER).unlink(missing_ok=True)
     shutil.rmtree(aside, ignore_errors=True)
