@@ -62,7 +62,7 @@ def dask_client(scheduler: str | None = None, workers: int | None = None):
         return
     with (
         distributed.LocalCluster(
-            n_workers=int(workers), threads_per_worker=1, processes=True, dashboard_address=":0"
+            n_workers=int(workers), threads_per_worker=1, processes=True, dashboard_address="127.0.0.1:0"
         ) as cluster,
         distributed.Client(cluster) as client,
     ):
