@@ -1,0 +1,7 @@
+"""ASTERIX encoders: CAT063 sensor status messages carrying a registration's estimates
+(:mod:`~registration.io.asterix.encode.cat063`), on the data-block framing of
+:mod:`~registration.io.asterix.encode.blocks`."""
+
+from registration.io.asterix.encode.cat063 import CAT063_EDITIONS, SensorStatus, encode_cat063, status_record
+
+__all__ = ["CAT063_EDITIONS", "SensorStatus", "encode_cat063", "status_record"]
