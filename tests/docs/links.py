@@ -43,7 +43,12 @@ _CODE = re.compile(r"`[^`\n]*`")
 _LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)(?:\s+\"[^\"]*\")?\)")
 _HEADING = re.compile(r"^#{1,6}\s+(.*?)\s*#*\s*$", re.M)
 _HTML_ANCHOR = re.compile(r"<a\s+(?:id|name)=\"([^\"]+)\"")
-_MENTION = re.compile(r"docs/[\w./-]+\.md(?:#[\w-]+)?")
+#: For a mention of a split page without anchor or section: words just before it, and the part they ask for.
+_HINTS = [
+    (re.compile(r"estimates\.csv|command", re.I), "docs/howto/"),
+    (re.compile(r"column|degrees", re.I), "docs/reference/"),
+]
+_MENTION = re.compile(r"(docs/[\w./-]+\.md)(?:#([\w-]+))?(, \"[^\"\n]+\")?")
 
 
 def markdown_files(root: Path = ROOT) -> list[Path]:
@@ -84,13 +89,15 @@ def resolve(page: Path, target: str) -> tuple[Path, str]:
     return ((page.parent / path).resolve() if path else page.resolve()), anchor
 
 
-def new_place(old: str, anchor: str, root: Path = ROOT) -> str | None:
-    """The new repository path of moved page ``old`` (repository-relative), chosen by ``anchor``."""
+def new_place(old: str, anchor: str, root: Path = ROOT, section: str = "") -> str | None:
+    """The new repository path of moved page ``old`` (repository-relative), chosen by ``anchor`` or,
+    for a mention such as ``docs/fleet.md, "The files"``, by the heading the ``section`` begins."""
     places = MOVED.get(old)
     if not places:
         return None
     for place in places:
-        if anchor and anchor in anchors((root / place).read_text(encoding="utf-8")):
+        found = anchors((root / place).read_text(encoding="utf-8"))
+        if (anchor and anchor in found) or (section and any(a.startswith(_slug(section)) for a in found)):
             return place
     return places[0]
 
@@ -124,9 +131,13 @@ def relink(page: Path, root: Path = ROOT, base: Path | None = None) -> str:
         return _LINK.sub(lambda m: _link(m, _relinked(page.resolve(), m.group(1), root, folder)), text)
 
     def mention(m: re.Match[str]) -> str:
-        old, _, anchor = m.group(0).partition("#")
-        place = new_place(old, anchor, root)
-        return m.group(0) if place is None else place + (f"#{anchor}" if anchor else "")
+        old, anchor, section = m.group(1), m.group(2) or "", m.group(3) or ""
+        place = new_place(old, anchor, root, section.strip(', "'))
+        before = text[max(0, m.start() - 120) : m.start()]
+        if not (anchor or section) and place is not None and len(MOVED[old]) > 1:
+            for hint, folder in _HINTS:  # a split page: the words before the mention choose the part
+                place = next((p for p in MOVED[old] if hint.search(before) and p.startswith(folder)), place)
+        return m.group(0) if place is None else place + (f"#{anchor}" if anchor else "") + section
 
     return _MENTION.sub(mention, text)
 
@@ -134,6 +145,8 @@ def relink(page: Path, root: Path = ROOT, base: Path | None = None) -> str:
 def main(argv: list[str]) -> int:
     for name in argv:
         page = Path(name).resolve()
+        if page.is_relative_to(Path(__file__).parent):
+            continue  # the move map and its tests name the old pages on purpose
         text = relink(page)
         if text != page.read_text(encoding="utf-8"):
             page.write_text(text, encoding="utf-8")

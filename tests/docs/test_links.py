@@ -70,6 +70,8 @@ def test_a_split_page_sends_each_anchor_to_its_part():
     assert new_place("docs/fleet.md", "files-and-commands") == "docs/howto/register-a-fleet.md"
     assert new_place("docs/fleet.md", "the-input-tables-in-memory-si") == "docs/reference/fleet-files.md"
     assert new_place("docs/fleet.md", "") == "docs/background/fleet-model.md"
+    assert new_place("docs/fleet.md", "", section="What is rejected") == "docs/reference/fleet-files.md"
+    assert new_place("docs/fleet.md", "", section="Sensor error model") == "docs/background/fleet-model.md"
 
 
 def test_the_checker_sees_a_dead_link_and_a_dead_anchor(tmp_path):
