@@ -21,7 +21,7 @@ ROOT = Path(__file__).resolve().parents[2]
 MOVED = {
     "docs/asterix.md": ["docs/howto/import-asterix.md"],
     "docs/nmea.md": ["docs/howto/import-nmea.md"],
-    "docs/archive.md": ["docs/howto/register-an-archive.md"],
+    "docs/archive.md": ["docs/howto/register-an-archive.md", "docs/background/archive-solver.md"],
     "docs/register.md": ["docs/howto/register-recorded-files.md"],
     "docs/scale.md": ["docs/howto/monte-carlo-and-dask.md"],
     "docs/stonesoup.md": ["docs/howto/stonesoup.md"],
