@@ -86,3 +86,16 @@ def test_the_checker_sees_a_dead_link_and_a_dead_anchor(tmp_path):
     assert [t for t, _ in found] == ["a.md#speed-benchpy", "a.md#nope", "c.md"]
     ok = [t for t, (p, a) in found if p.exists() and (not a or a in anchors(p.read_text(encoding="utf-8")))]
     assert ok == ["a.md#speed-benchpy"]
+
+
+def test_the_relink_tool_moves_mentions_in_code(tmp_path):
+    """(Its links in Markdown: test_the_relink_tool_leaves_no_dead_link_in_the_pending_pages.)"""
+    code = tmp_path / "module.py"
+    code.write_text(
+        '"""See docs/fleet.md, "What is rejected"; docs/nmea.md; the columns of docs/fleet.md."""\n',
+        encoding="utf-8",
+    )
+    assert relink(code) == (
+        '"""See docs/reference/fleet-files.md, "What is rejected"; docs/howto/import-nmea.md; '
+        'the columns of docs/reference/fleet-files.md."""\n'
+    )
