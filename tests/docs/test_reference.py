@@ -67,3 +67,18 @@ def test_main_writes_the_page(tmp_path, capsys):
     assert main([str(out)]) == 0
     assert out.read_text(encoding="utf-8") == render()
     assert str(out) in capsys.readouterr().out
+
+
+def test_every_option_help_is_on_the_page(monkeypatch):
+    """The same check on any Python: argparse's layout varies by version, an option's help does not."""
+    page = " ".join(PAGE.read_text(encoding="utf-8").split())
+    monkeypatch.setenv("COLUMNS", "100000")  # one line per option: its flags, 2+ spaces, its help
+    missing = []
+    for parser in commands(build_parser()):
+        for line in parser.format_help().splitlines():
+            flags_help = re.match(r"^  (-\S.*?)\s{2,}(\S.*)$", line)
+            if flags_help and " ".join(flags_help.group(2).split()) not in page:
+                missing.append(f"{parser.prog} {flags_help.group(1)}: {flags_help.group(2)[:60]}")
+    assert not missing, (
+        "docs/reference/cli.md is stale: run `python -m registration.cli.reference`\n" + "\n".join(missing)
+    )
