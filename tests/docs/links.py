@@ -114,12 +114,21 @@ def _relinked(page: Path, target: str, root: Path, base: Path) -> str:
 
 
 def _link(m: re.Match[str], target: str) -> str:
-    """The link of ``m`` to ``target``; a link text that was the old file's name becomes the new one's."""
+    """The link of ``m`` to ``target``; a link text that named the old file (``fleet.md`` or
+    ``docs/fleet.md``) names the new one in the same form."""
     whole, old = m.group(0), m.group(1)
     start, end = m.start(1) - m.start(0), m.end(1) - m.start(0)
     text = whole[:start] + target + whole[end:]
     name, new_name = old.partition("#")[0].rsplit("/", 1)[-1], target.partition("#")[0].rsplit("/", 1)[-1]
-    return text.replace(f"[{name}]", f"[{new_name}]", 1) if name and name != new_name else text
+    label = re.match(r"!?\[([^\]]*)\]", text)
+    if label is None or not name:
+        return text
+    new_label = label.group(1)
+    if label.group(1) in MOVED:  # docs/fleet.md: the part the target chose, by its file name
+        new_label = next((p for p in MOVED[label.group(1)] if p.endswith(f"/{new_name}")), new_label)
+    elif label.group(1) == name:
+        new_label = new_name
+    return text.replace(f"[{label.group(1)}]", f"[{new_label}]", 1)
 
 
 def relink(page: Path, root: Path = ROOT, base: Path | None = None) -> str:
