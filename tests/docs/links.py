@@ -19,8 +19,8 @@ ROOT = Path(__file__).resolve().parents[2]
 #: old page -> its new place(s); a page split in parts lists each, and an anchor goes to the part
 #: that has that heading (a link without an anchor to the first).
 MOVED = {
-    "docs/asterix.md": ["docs/howto/import-asterix.md"],
-    "docs/nmea.md": ["docs/howto/import-nmea.md"],
+    "docs/asterix.md": ["docs/howto/import-asterix.md", "docs/background/importers.md"],
+    "docs/nmea.md": ["docs/howto/import-nmea.md", "docs/background/importers.md"],
     "docs/archive.md": ["docs/howto/register-an-archive.md", "docs/background/archive-solver.md"],
     "docs/register.md": ["docs/howto/register-recorded-files.md"],
     "docs/scale.md": ["docs/howto/monte-carlo-and-dask.md"],
