@@ -291,8 +291,9 @@ def specs() -> list[CasadiSpec]:
             CasadiSpec(
                 name=f"information_step_{variant}",
                 doc=(
-                    f"Fisher information accumulation, T variant '{variant}': info_new = info + H^T R^-1 H, "
-                    "H and R at the row corrected by the fixed estimate x. Input info carried from output info_new."
+                    f"Fisher information accumulation, T variant '{variant}': info_new = info + H^T R^-1 "
+                    "H, H and R at the row corrected by the fixed estimate x. Input info carried from "
+                    "output info_new."
                 ),
                 inputs=INFO_INPUTS,
                 outputs=INFO_OUTPUTS,
@@ -313,10 +314,12 @@ def specs() -> list[CasadiSpec]:
                     CasadiSpec(
                         name=f"kalman_step_{lin}_{variant}{suffix}",
                         doc=(
-                            f"One registration Kalman step (eqs. 18-23), linearisation '{lin}', T variant '{variant}'"
+                            "One registration Kalman step (eqs. 18-23), "
+                            f"linearisation '{lin}', T variant '{variant}'"
                             + ("" if update == "joseph" else f", covariance update '{update}'")
                             + ". "
-                            "Inputs x, P, info carried from outputs x_new, P_new, info_new of the previous step."
+                            "Inputs x, P, info carried from outputs x_new, P_new, info_new "
+                            "of the previous step."
                         ),
                         inputs=INPUTS,
                         outputs=OUTPUTS,
