@@ -166,7 +166,7 @@ def derive_sources_sha256(derive_dir: Path = DERIVE_DIR) -> str:
 def tool_versions() -> dict:
     """The versions of the tools whose output the artifacts depend on."""
     return {
-        "casadi": ca.__version__,
+        "casadi": ca.__version__,  # type: ignore[attr-defined]
         "sympy": sp.__version__,
         "python": ".".join(platform.python_version_tuple()[:2]),
     }
