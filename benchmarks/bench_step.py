@@ -35,7 +35,7 @@ import time
 import numpy as np
 
 from registration import _codegen
-from registration._codegen import cbackend
+from registration._codegen import cbackend, ckernel
 from registration.online import RegistrationConfig
 from registration.online.contract import DATA_COLUMNS, N_STATE
 from registration.online.filter import STEP_CARRY
@@ -91,7 +91,7 @@ def kernel_run(config: RegistrationConfig, rows: np.ndarray, lib) -> dict:
         a = np.asarray(inputs_of(config, rows)[name], dtype=np.float64)
         core = () if (r, c) == (1, 1) else ((r,) if c == 1 else (r, c))
         prepared.append((a, a.shape != core, core))
-    outs = cbackend.CKernel(fn.name, work, lib).scan(
+    outs = ckernel.CKernel(fn.name, work, lib).scan(
         prepared, len(rows), len(STEP_CARRY), [True] * len(fn.output_names), fn.output_shapes
     )
     return {

@@ -87,9 +87,9 @@ def specs() -> list[FunctionSpec]:
         FunctionSpec(
             name="enu2deck_attitude",
             doc=(
-                "heading, pitch, roll (rad) of a rotation R_enu_deck = Rz(C) Rx(phi) Ry(theta): the inverse of "
-                "deck2enu_rotation for pitch in [-pi/2, pi/2] (heading from the bow's horizontal components, pitch "
-                "from the bow's up component, roll from the up row)."
+                "heading, pitch, roll (rad) of a rotation R_enu_deck = Rz(C) Rx(phi) Ry(theta): the inverse "
+                "of deck2enu_rotation for pitch in [-pi/2, pi/2] (heading from the bow's horizontal "
+                "components, pitch from the bow's up component, roll from the up row)."
             ),
             inputs=(Port("R_enu_deck", R_ENU_DECK, "1"),),
             outputs=(Port("attitude", enu2deck_attitude_expr(R_ENU_DECK), "rad"),),
@@ -97,7 +97,10 @@ def specs() -> list[FunctionSpec]:
         ),
         FunctionSpec(
             name="deck2enu",
-            doc="Phi (eq. 2): radar measurement (r m, q rad, e rad) and attitude (rad) -> target ENU offset (m).",
+            doc=(
+                "Phi (eq. 2): radar measurement (r m, q rad, e rad) and attitude (rad) -> target ENU "
+                "offset (m)."
+            ),
             inputs=MEAS_INPUTS,
             outputs=(Port("u_enu", Phi, "m"),),
             domain=MEAS_DOMAIN,

@@ -1,7 +1,7 @@
 """The emitter: each function spec becomes a CasADi Function (sympy -> SX, after CSE), written as
-a serialized ``.casadi`` file and C source, plus ``manifest.json`` (each artifact's sha256, the
-derive sources hash, tool versions, constants, variant names); and the folder comparison behind
-``python -m derive --check``.
+a serialized ``.casadi`` file and C source; the typed Python wrappers of them all (``api.py``,
+:mod:`derive.wrappers`); ``manifest.json`` (each artifact's sha256, the derive sources hash, tool
+versions, constants, variant names); and the folder comparison behind ``python -m derive --check``.
 
 Deterministic: the same derive sources and tool versions give the same bytes (run under
 PYTHONHASHSEED=0, which ``python -m derive`` arranges).
@@ -21,6 +21,7 @@ import casadi as ca
 import sympy as sp
 
 from .spec import FunctionSpec
+from .wrappers import API_NAME, api_text
 
 DERIVE_DIR = Path(__file__).resolve().parent
 REPO_DIR = DERIVE_DIR.parent
@@ -165,7 +166,7 @@ def derive_sources_sha256(derive_dir: Path = DERIVE_DIR) -> str:
 def tool_versions() -> dict:
     """The versions of the tools whose output the artifacts depend on."""
     return {
-        "casadi": ca.__version__,
+        "casadi": ca.__version__,  # type: ignore[attr-defined]
         "sympy": sp.__version__,
         "python": ".".join(platform.python_version_tuple()[:2]),
     }
@@ -235,6 +236,8 @@ def _emit_into(specs: list, out_dir: Path, constants: dict, variants: dict) -> d
         }
     init = '"""' + " ".join(HEADER_LINES) + '\n\nData package holding the generated CasADi artifacts."""\n'
     (out_dir / "__init__.py").write_text(init)
+    api = api_text(functions, variants, HEADER_LINES)
+    (out_dir / API_NAME).write_bytes(api)
     manifest = {
         "header": " ".join(HEADER_LINES),
         "regenerate_command": "python -m derive",
@@ -242,6 +245,7 @@ def _emit_into(specs: list, out_dir: Path, constants: dict, variants: dict) -> d
         "tool_versions": tool_versions(),
         "constants": {k: float(v) for k, v in constants.items()},
         "functions": functions,
+        "modules": {"api": {"file": API_NAME, "sha256": sha256_bytes(api)}},
         "variants": {kind: list(names) for kind, names in variants.items()},
     }
     (out_dir / MANIFEST_NAME).write_text(json.dumps(manifest, indent=2, sort_keys=True) + "\n")

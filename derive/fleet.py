@@ -247,10 +247,10 @@ def _rows_spec(residual_spec: FunctionSpec, n_basis: int, extended: bool = False
     return CasadiSpec(
         name=name,
         doc=(
-            f"Rows of the batch normal equations for one plot, polynomial basis of size {n_basis}: the inputs of "
-            f"{residual_spec.name}{' (without dt)' if extended else ''}, channel weights w = mask / sigma (1/m, 1/rad, "
-            f"1/rad) and the basis values at the plot time. Output rows_t ({m}x3) = Z^T, Z = [basis^T (x) diag(w) J_p "
-            f"| diag(w) J_x | w * residual], {state_doc}."
+            f"Rows of the batch normal equations for one plot, polynomial basis of size {n_basis}: the "
+            f"inputs of {residual_spec.name}{' (without dt)' if extended else ''}, channel weights w = mask "
+            "/ sigma (1/m, 1/rad, 1/rad) and the basis values at the plot time. Output rows_t "
+            f"({m}x3) = Z^T, Z = [basis^T (x) diag(w) J_p | diag(w) J_x | w * residual], {state_doc}."
         ),
         inputs=inputs,
         outputs=(CasadiPort("rows_t", (m, 3), "1/m, 1/rad"),),
@@ -298,13 +298,13 @@ def extended_specs() -> list:
     residual_spec = FunctionSpec(
         name="fleet_residual_ext",
         doc=(
-            "One plot of fleet registration with the extended sensor errors: target p_ecef (m) and velocity v_ecef "
-            "(m/s); platform navigation lat, lon (rad), alt (m), reported heading, pitch, roll (rad) and their rates "
-            "nav_rate (rad/s, m/s); attitude errors att_err (rad); biases [range m, bearing rad, elevation rad]; "
-            "range gain (1); dt (s): target and platform seen dt earlier, to first order; sensor position error "
-            "pos_err (m, ENU, stated - true); lever_deck (m); measured r (m), q, e (rad). Outputs residual = measured "
-            "- predicted (bearing wrapped), J = d residual / d(p_ecef, att_err, bias, gain, dt, pos_err) (3x14) and "
-            "the predicted plot."
+            "One plot of fleet registration with the extended sensor errors: target p_ecef (m) and velocity "
+            "v_ecef (m/s); platform navigation lat, lon (rad), alt (m), reported heading, pitch, roll (rad) "
+            "and their rates nav_rate (rad/s, m/s); attitude errors att_err (rad); biases [range m, bearing "
+            "rad, elevation rad]; range gain (1); dt (s): target and platform seen dt earlier, to first "
+            "order; sensor position error pos_err (m, ENU, stated - true); lever_deck (m); measured r (m), "
+            "q, e (rad). Outputs residual = measured - predicted (bearing wrapped), J = d residual / "
+            "d(p_ecef, att_err, bias, gain, dt, pos_err) (3x14) and the predicted plot."
         ),
         inputs=(
             Port("p_ecef", p_ecef, "m"),
@@ -331,10 +331,10 @@ def extended_specs() -> list:
     plot2ecef_spec = FunctionSpec(
         name="fleet_plot2ecef_ext",
         doc=(
-            "Target ECEF (m) of one plot corrected by the extended registration errors: navigation lat, lon (rad), "
-            "alt (m), reported heading, pitch, roll (rad), att_err (rad), biases [m, rad, rad], range gain (1), "
-            "sensor position error pos_err (m, ENU, stated - true), lever_deck (m), measured r (m), q, e (rad). "
-            "The inverse of fleet_residual_ext's predicted plot at dt = 0."
+            "Target ECEF (m) of one plot corrected by the extended registration errors: navigation lat, lon "
+            "(rad), alt (m), reported heading, pitch, roll (rad), att_err (rad), biases [m, rad, rad], range "
+            "gain (1), sensor position error pos_err (m, ENU, stated - true), lever_deck (m), measured r "
+            "(m), q, e (rad). The inverse of fleet_residual_ext's predicted plot at dt = 0."
         ),
         inputs=(
             *nav_ports,

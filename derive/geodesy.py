@@ -105,7 +105,10 @@ def specs() -> list[FunctionSpec]:
     out.append(
         FunctionSpec(
             name="ecef2geodetic",
-            doc="Geodetic lat, lon (rad) and alt (m above WGS-84) of an ECEF point p_ecef (m): the inverse of eq. (1).",
+            doc=(
+                "Geodetic lat, lon (rad) and alt (m above WGS-84) of an ECEF point p_ecef (m): the inverse "
+                "of eq. (1)."
+            ),
             inputs=(Port("p_ecef", sp.Matrix([px, py, pz]), "m"),),
             outputs=(Port("geodetic", ecef2geodetic_expr(px, py, pz), "rad, rad, m"),),
             domain={"p_ecef": [(-7.4e6, 7.4e6)] * 3},
@@ -118,9 +121,9 @@ def specs() -> list[FunctionSpec]:
         FunctionSpec(
             name="surface_residual",
             doc=(
-                "Height residual of a target on a surface of known height (a ship on the sea): residual = "
-                "alt_surface (m above WGS-84) - the geodetic height of p_ecef (m, the inverse of eq. (1)), and "
-                "J = d residual / d p_ecef (1x3; minus the geodetic up at the point)."
+                "Height residual of a target on a surface of known height (a ship on the sea): residual "
+                "= alt_surface (m above WGS-84) - the geodetic height of p_ecef (m, the inverse of eq. "
+                "(1)), and J = d residual / d p_ecef (1x3; minus the geodetic up at the point)."
             ),
             inputs=(Port("p_ecef", p_ecef, "m"), Port("alt_surface", alt_surface, "m")),
             outputs=(Port("residual", residual, "m"), Port("J", jacobian(residual, p_ecef), "1")),

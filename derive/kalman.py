@@ -113,7 +113,8 @@ def _chol_upper(A: ca.SX) -> tuple[ca.SX, list]:
     (CasADi folds a product with ``1/d`` back into a division, and divisions, not products, bound
     the step's time)."""
     n = A.shape[0]
-    U, inv = ca.SX.zeros(n, n), [None] * n
+    U = ca.SX.zeros(n, n)
+    inv: list = [None] * n  # 1/U_jj, filled from the last column
     for j in reversed(range(n)):
         s = A[j, j] - _tree_sum(U[j, k] ** 2 for k in range(j + 1, n))
         inv[j] = ca.sqrt(1 / s)
@@ -130,7 +131,7 @@ def _whitened(R: ca.SX, H: ca.SX) -> ca.SX:
     J = ca.SX(ca.DM.eye(m)[list(reversed(range(m))), :])
     U, inv = _chol_upper(J @ R @ J)
     L, inv = J @ U @ J, inv[::-1]
-    rows = []
+    rows: list = []
     for i in range(m):
         acc = H[i, :] - sum((L[i, k] * rows[k] for k in range(i)), ca.SX.zeros(1, H.shape[1]))
         rows.append(acc * inv[i])
@@ -291,8 +292,9 @@ def specs() -> list[CasadiSpec]:
             CasadiSpec(
                 name=f"information_step_{variant}",
                 doc=(
-                    f"Fisher information accumulation, T variant '{variant}': info_new = info + H^T R^-1 H, "
-                    "H and R at the row corrected by the fixed estimate x. Input info carried from output info_new."
+                    f"Fisher information accumulation, T variant '{variant}': info_new = info + H^T R^-1 "
+                    "H, H and R at the row corrected by the fixed estimate x. Input info carried from "
+                    "output info_new."
                 ),
                 inputs=INFO_INPUTS,
                 outputs=INFO_OUTPUTS,
@@ -313,10 +315,12 @@ def specs() -> list[CasadiSpec]:
                     CasadiSpec(
                         name=f"kalman_step_{lin}_{variant}{suffix}",
                         doc=(
-                            f"One registration Kalman step (eqs. 18-23), linearisation '{lin}', T variant '{variant}'"
+                            "One registration Kalman step (eqs. 18-23), "
+                            f"linearisation '{lin}', T variant '{variant}'"
                             + ("" if update == "joseph" else f", covariance update '{update}'")
                             + ". "
-                            "Inputs x, P, info carried from outputs x_new, P_new, info_new of the previous step."
+                            "Inputs x, P, info carried from outputs x_new, P_new, info_new "
+                            "of the previous step."
                         ),
                         inputs=INPUTS,
                         outputs=OUTPUTS,

@@ -1,4 +1,5 @@
-"""Carrier landing (Wang, Liu and Gao 2017): the radar/camera space alignment chain and its Jacobians (eqs. 7-11).
+"""Carrier landing (Wang, Liu and Gao 2017): the radar/camera space alignment chain and its
+Jacobians (eqs. 7-11).
 
 Frames (all right-handed, metres; see docs/landing.md for pictures in words and numeric examples):
 
@@ -87,7 +88,8 @@ def td2ctd_expr(p_td, attitude, angled_deck, d_camera_deck) -> sp.Matrix:
 
 
 def camera_to_ctd_rotation_expr(attitude, angled_deck) -> sp.Matrix:
-    """R_ctd_cam = R_td_deck R_deck_cam with R_deck_cam = R_td_level^T (camera aligned with the landing area)."""
+    """R_ctd_cam = R_td_deck R_deck_cam with R_deck_cam = R_td_level^T (camera aligned with the
+    landing area)."""
     return td_deck_rotation_expr(attitude, angled_deck) * td_level_rotation_expr(angled_deck).T
 
 
@@ -263,7 +265,9 @@ def specs() -> list[FunctionSpec]:
         ),
         FunctionSpec(
             name="landing_td2radar",
-            doc="Simulation (inverse of eq. 7): p_td (m) -> the radar polar [r m, a rad, b rad] in deck axes.",
+            doc=(
+                "Simulation (inverse of eq. 7): p_td (m) -> the radar polar [r m, a rad, b rad] in deck axes."
+            ),
             inputs=(Port("p_td", p_td, "m"), att_port, phic_port, Port("d_radar_deck", d_r, "m")),
             outputs=(Port("polar_rdr", polar_rdr_sim, "m, rad, rad"),),
             domain={**dom_common, "p_td": P_TD_DOMAIN, "d_radar_deck": LEVER_DOMAIN},

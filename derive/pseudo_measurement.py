@@ -93,7 +93,8 @@ def specs() -> list[FunctionSpec]:
                 name=f"ecef2plot_{variant}",
                 doc=(
                     f"Inverse of eq. (3), T variant '{variant}': target ECEF p (m) seen from a ship at "
-                    "(lat, lon rad; alt m) with attitude (heading, pitch, roll rad) -> plot [r m, q rad, e rad]."
+                    "(lat, lon rad; alt m) with attitude (heading, pitch, roll rad) -> plot [r m, q rad, "
+                    "e rad]."
                 ),
                 inputs=(
                     Port("p_ecef", sp.Matrix([x, y, z]), "m"),
@@ -137,8 +138,9 @@ def specs() -> list[FunctionSpec]:
             FunctionSpec(
                 name=f"pseudo_measurement_{variant}",
                 doc=(
-                    f"Two-sensor pseudo-measurement (eqs. 7-19), T variant '{variant}'. Inputs per sensor: "
-                    "nav [lat rad, lon rad, alt m], att [heading, pitch, roll rad], meas [r m, q rad, e rad]; "
+                    f"Two-sensor pseudo-measurement (eqs. 7-19), T variant '{variant}'. Inputs per "
+                    "sensor: nav [lat rad, lon rad, alt m], att [heading, pitch, roll rad], meas [r m, q "
+                    "rad, e rad]; "
                     "sigma0 = [sr_A m, sq_A rad, se_A rad, sr_B, sq_B, se_B]. Outputs Z = X_A - X_B (m), "
                     "H (3x12), M (3x6), R = M R0 M^T (m^2), and X_A, X_B (ECEF m)."
                 ),

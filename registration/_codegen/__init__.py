@@ -1,7 +1,10 @@
 """Access to the generated functions (``generated/``) for the runtime: hash-checked artifacts and
 what their manifest records (:mod:`.artifacts`), the compiled C backend (:mod:`.cbackend`, its
-one-time build in :mod:`.build`), the serialized CasADi fallback (:mod:`.casadi_backend`) and the
-numpy callables on top (:mod:`.function`). Users call the capability subpackages, not this one."""
+one-time build in :mod:`.build`, the calls through ctypes in :mod:`.ckernel`), the serialized
+CasADi fallback (:mod:`.casadi_backend`), the numpy callables on top (:mod:`.function`) and their
+carried-state steppers (:mod:`.stepper`, compiled: :mod:`.cstepper`). The runtime calls them by
+name with keyword inputs through the typed wrappers ``python -m derive`` emits beside them
+(``registration._generated.api``). Users call the capability subpackages, not this one."""
 
 from registration._codegen.artifacts import (
     ArtifactError,

@@ -93,8 +93,8 @@ def build_library(
     print(BUILD_MESSAGE.format(folder=lib_path.parent.parent), file=sys.stderr, flush=True)
     started = time.perf_counter()
     flags = [f for f in flags if f != "-shared"]
-    with tempfile.TemporaryDirectory(dir=lib_path.parent) as tmp:
-        tmp = Path(tmp)
+    with tempfile.TemporaryDirectory(dir=lib_path.parent) as tmp_name:
+        tmp = Path(tmp_name)
         jobs = [(driver, tmp / "0.o", driver.stat().st_size)]
         for i, (fname, data) in enumerate(sources, start=1):
             (tmp / fname).write_bytes(data)

@@ -1,9 +1,9 @@
 """Generated functions as numpy callables, on the backend chosen once per process.
 
 Backends (environment variable ``REGISTRATION_BACKEND``): ``c``, the compiled C sources
-(:mod:`registration._codegen.cbackend`); ``casadi``, the serialized functions
-(:mod:`registration._codegen.casadi_backend`, no compiler needed); ``auto`` (default), ``c`` if
-a C compiler works, otherwise ``casadi`` with one warning.
+(:mod:`registration._codegen.cbackend`, called through :mod:`registration._codegen.ckernel`);
+``casadi``, the serialized functions (:mod:`registration._codegen.casadi_backend`, no compiler
+needed); ``auto`` (default), ``c`` if a C compiler works, otherwise ``casadi`` with one warning.
 """
 
 from __future__ import annotations
@@ -16,8 +16,10 @@ import numpy as np
 
 from registration._codegen.artifacts import ArtifactError, manifest
 from registration._codegen.casadi_backend import CasadiKernel
-from registration._codegen.cbackend import CKernel, PointCall, library
-from registration._codegen.stepper import CStepper, PyStepper
+from registration._codegen.cbackend import library
+from registration._codegen.ckernel import CKernel, PointCall
+from registration._codegen.cstepper import CStepper
+from registration._codegen.stepper import PyStepper
 
 __all__ = ["BoundCall", "GeneratedFunction", "backend", "get"]
 

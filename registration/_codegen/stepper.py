@@ -1,14 +1,12 @@
-"""Carried-state single steps of a generated function (a streaming filter), at compiled speed.
+"""Carried-state single steps of a generated function (a streaming filter): what a step does and
+returns, the layout of a stepped function's inputs and outputs, and the stepper of the serialized
+CasADi backend (:class:`PyStepper`); the compiled one is :mod:`registration._codegen.cstepper`.
 
-A :class:`CStepper` keeps every input of the function in a persistent column-major buffer: the
-constant inputs are written once, the carried state (the first inputs, fed from the first
-outputs) stays in the buffers between steps, and a step writes only the one input that changes
-(``feed``). The compiled ``registration_step`` of ``_batch.c`` checks that input against
-element-wise bounds, evaluates the function, checks the chosen outputs are finite and only then
-commits the new state; it also copies the delivered outputs into the caller's next row of a
-block (so that a streaming loop returns views, not per-row copies) and, if asked, one output
-into a ring of its last values (a window of estimates). :class:`PyStepper` does the same on the
-serialized CasADi backend.
+A stepper keeps every input of the function: the constant inputs are written once, the carried
+state (the first inputs, fed from the first outputs) stays between steps, and a step writes only
+the one input that changes (``feed``). A step checks that input against element-wise bounds,
+evaluates the function, checks the chosen outputs are finite and only then commits the new state;
+it can also keep one output's last values (a window of estimates).
 
 Codes returned by ``step``: :data:`OK`, :data:`OUT_OF_BOUNDS` (the fed input is outside its
 bounds or NaN; nothing evaluated), :data:`NON_FINITE` (a checked output is not finite; the state
@@ -17,14 +15,25 @@ is left as it was), :data:`FAILED` (the generated function returned a non-zero f
 
 from __future__ import annotations
 
-import ctypes
 import enum
-import functools
 from collections import deque
 
 import numpy as np
 
-__all__ = ["StepCode", "OK", "OUT_OF_BOUNDS", "NON_FINITE", "FAILED", "CStepper", "PyStepper"]
+__all__ = [
+    "StepCode",
+    "OK",
+    "OUT_OF_BOUNDS",
+    "NON_FINITE",
+    "FAILED",
+    "StepLayout",
+    "PyStepper",
+    "column_major",
+    "core_shape",
+    "from_column_major",
+    "kept_output",
+    "kept_values",
+]
 
 
 class StepCode(enum.IntEnum):
@@ -39,51 +48,21 @@ class StepCode(enum.IntEnum):
 OK, OUT_OF_BOUNDS, NON_FINITE, FAILED = (int(c) for c in StepCode)
 
 
-class _StepperStruct(ctypes.Structure):
-    """Mirror of ``registration_stepper`` in ``_batch.c``."""
-
-    _fields_ = [
-        ("f", ctypes.c_void_p),
-        ("n_in", ctypes.c_int),
-        ("n_out", ctypes.c_int),
-        ("n_carry", ctypes.c_int),
-        ("check_in", ctypes.c_int),
-        ("n_finite", ctypes.c_int),
-        ("in_ptr", ctypes.c_void_p),
-        ("out_ptr", ctypes.c_void_p),
-        ("in_size", ctypes.c_void_p),
-        ("out_size", ctypes.c_void_p),
-        ("low", ctypes.c_void_p),
-        ("high", ctypes.c_void_p),
-        ("finite_out", ctypes.c_void_p),
-        ("arg", ctypes.c_void_p),
-        ("res", ctypes.c_void_p),
-        ("iw", ctypes.c_void_p),
-        ("w", ctypes.c_void_p),
-        ("n_deliver", ctypes.c_int),
-        ("deliver_out", ctypes.c_void_p),
-        ("deliver_ptr", ctypes.c_void_p),
-        ("ring_out", ctypes.c_int),
-        ("ring_len", ctypes.c_int),
-        ("ring", ctypes.c_void_p),
-        ("ring_count", ctypes.c_longlong),
-    ]
-
-
-def _core(shape: tuple[int, int]) -> tuple:
+def core_shape(shape: tuple[int, int]) -> tuple:
+    """The numpy shape of one value of a (rows, cols) port: (), (rows,) or (rows, cols)."""
     r, c = shape
     return () if (r, c) == (1, 1) else ((r,) if c == 1 else (r, c))
 
 
-def _column_major(value, shape: tuple[int, int], name: str) -> np.ndarray:
+def column_major(value, shape: tuple[int, int], name: str) -> np.ndarray:
     """``value`` at its core shape as a flat column-major float64 array."""
     a = np.asarray(value, dtype=np.float64)
-    if a.shape != _core(shape):
-        raise ValueError(f"input {name!r}: expected shape {_core(shape)}, got {a.shape}")
+    if a.shape != core_shape(shape):
+        raise ValueError(f"input {name!r}: expected shape {core_shape(shape)}, got {a.shape}")
     return a.T.ravel() if a.ndim == 2 else a.ravel()
 
 
-def _from_column_major(buf: np.ndarray, shape: tuple[int, int]):
+def from_column_major(buf: np.ndarray, shape: tuple[int, int]):
     """A flat column-major buffer at its core shape (a view; a float for a scalar)."""
     r, c = shape
     if (r, c) == (1, 1):
@@ -91,35 +70,7 @@ def _from_column_major(buf: np.ndarray, shape: tuple[int, int]):
     return buf if c == 1 else buf.reshape(c, r).T
 
 
-def _results_function(views: list[np.ndarray], keys: tuple[str, ...] | None):
-    """``f()``: a new copy of each view (of an output buffer, at its core shape), a float for a
-    one-element view; a tuple, or a dict under ``keys``. Written out for the views, so a step's
-    results cost one copy per output."""
-    return functools.partial(_results_template(tuple(v.shape == (1,) for v in views), keys), *views)
-
-
-@functools.lru_cache(maxsize=None)
-def _results_template(scalars: tuple[bool, ...], keys: tuple[str, ...] | None):
-    """``f(*views)`` for views of which those flagged in ``scalars`` become floats, returning a
-    tuple or (``keys`` given) a dict; compiled once per pattern."""
-    names = [f"v{i}" for i in range(len(scalars))]
-    parts = [f"{n}.item()" if scalar else f"{n}.copy()" for n, scalar in zip(names, scalars)]
-    return _compiled("results", names, parts, keys)
-
-
-def _compiled(name: str, params: list[str], parts: list[str], keys: tuple[str, ...] | None):
-    """A function ``name(*params)`` returning the expressions ``parts`` as a tuple, or as a dict
-    under ``keys``: built once per pattern, so a call costs no per-field Python loop."""
-    if keys is not None:
-        body = "{" + ", ".join(f"{k!r}: {p}" for k, p in zip(keys, parts)) + "}"
-    else:
-        body = f"({', '.join(parts)},)" if parts else "()"
-    namespace: dict = {}
-    exec(f"def {name}({', '.join(params)}):\n    return {body}\n", namespace)  # noqa: S102
-    return namespace[name]
-
-
-class _Layout:
+class StepLayout:
     """Names, shapes and which inputs are carried, fed, bounded; which outputs are checked and delivered."""
 
     def __init__(self, fn, carry: dict, feed: str, low, high, finite, deliver):
@@ -154,120 +105,7 @@ class _Layout:
         ]
 
 
-class CStepper:
-    """Compiled carried-state steps of one generated function (see the module docstring).
-
-    ``set(name, value)`` writes an input (core shape), ``get(name)`` reads one back (a copy),
-    ``step(value)`` writes the fed input and evaluates; after :data:`OK`, ``results()`` returns
-    the delivered outputs as new arrays of their core shapes (floats for scalars): a tuple, or a
-    dict when ``deliver`` maps result keys to output names. ``advance(value)`` is ``step`` then
-    ``results`` in one call, for a streaming loop: the results, or the step's code (an int) if
-    it was not :data:`OK`. Its arrays are the caller's too, but cheaper: the compiled step copies
-    the delivered outputs into rows of blocks of :data:`BLOCK_ROWS` steps, and ``advance``
-    returns views of one row (a block is freed when no row of it is referenced any more).
-    ``keep(name, length)`` keeps the last ``length`` values of output ``name`` of the successful
-    steps (copied by the compiled step into a ring), ``kept()`` returns them, ``set_kept`` loads them.
-    """
-
-    def __init__(
-        self, fn, kernel, library, carry: dict, feed: str, low=None, high=None, finite=(), deliver=()
-    ):
-        lay = self._layout = _Layout(fn, carry, feed, low, high, finite, deliver)
-        self._in = [np.zeros(r * c) for r, c in lay.in_shapes]
-        sizes = [r * c for r, c in lay.out_shapes]
-        self._out = [np.zeros(size) for size in sizes]
-        views = [
-            self._out[j] if lay.out_shapes[j][1] == 1 else self._out[j].reshape(lay.out_shapes[j][::-1]).T
-            for j in lay.deliver
-        ]  # matrices are column-major
-        #: results() -> the delivered outputs of the last successful step, as new arrays (floats for scalars)
-        self.results = _results_function(views, lay.keys)
-        self._feed = self._in[lay.feed]
-        work = kernel.work
-        keep = self._keep = {
-            "in_ptr": (ctypes.c_void_p * len(self._in))(*[a.ctypes.data for a in self._in]),
-            "out_ptr": (ctypes.c_void_p * len(self._out))(*[a.ctypes.data for a in self._out]),
-            "in_size": (ctypes.c_longlong * len(self._in))(*[a.size for a in self._in]),
-            "out_size": (ctypes.c_longlong * len(sizes))(*sizes),
-            "finite_out": (ctypes.c_int * max(1, len(lay.finite)))(*lay.finite),
-            "arg": (ctypes.c_void_p * max(work["sz_arg"], 1))(),
-            "res": (ctypes.c_void_p * max(work["sz_res"], 1))(),
-            "iw": np.zeros(max(work["sz_iw"], 1), dtype=np.int64),
-            "w": np.zeros(max(work["sz_w"], 1)),
-            "low": lay.low if lay.low is not None else np.zeros(1),
-            "high": lay.high if lay.high is not None else np.zeros(1),
-            "deliver_out": (ctypes.c_int * max(1, len(lay.deliver)))(*lay.deliver),
-            "deliver_ptr": (ctypes.c_void_p * max(1, len(lay.deliver)))(),
-        }
-        addr = {
-            k: (v.ctypes.data if isinstance(v, np.ndarray) else ctypes.addressof(v)) for k, v in keep.items()
-        }
-        self._struct = _StepperStruct(
-            f=ctypes.cast(getattr(library, fn.name), ctypes.c_void_p).value,
-            n_in=len(self._in),
-            n_out=len(self._out),
-            n_carry=lay.n_carry,
-            check_in=lay.feed if lay.low is not None else -1,
-            n_finite=len(lay.finite),
-            n_deliver=len(lay.deliver),
-            ring_out=-1,
-            **addr,
-        )
-        self._ring: np.ndarray | None = None
-        call = functools.partial(library.registration_step, ctypes.byref(self._struct))
-        blocks = _Blocks(keep["deliver_ptr"], [lay.out_shapes[j] for j in lay.deliver])
-        self.step, self.advance = _step_functions(self._feed, call, self._unchecked(call), blocks, lay.keys)
-
-    def _unchecked(self, call):
-        """``call`` with the bounds check of the fed input switched off for once."""
-        struct = self._struct
-
-        def unchecked():
-            saved, struct.check_in = struct.check_in, -1
-            try:
-                return call()
-            finally:
-                struct.check_in = saved
-
-        return unchecked
-
-    def set(self, name: str, value) -> None:
-        """Write input ``name`` (its core shape; a carried input sets the state)."""
-        j = self._layout.inputs.index(name)
-        self._in[j][:] = _column_major(value, self._layout.in_shapes[j], name)
-
-    def keep(self, name: str, length: int) -> None:
-        """From now on keep the last ``length`` (>= 1) values of vector output ``name``; none kept yet."""
-        j, size = _kept_output(self._layout, name, length)
-        self._ring = np.zeros((length, size))
-        self._struct.ring = self._ring.ctypes.data
-        self._struct.ring_out, self._struct.ring_len, self._struct.ring_count = j, length, 0
-
-    def kept(self) -> np.ndarray:
-        """The kept values, oldest first: a new (m, size) array, m <= length (see :meth:`keep`)."""
-        if self._ring is None:
-            raise ValueError("nothing is kept: call keep() first")
-        count, length = self._struct.ring_count, len(self._ring)
-        if count <= length:
-            return self._ring[:count].copy()
-        return np.roll(self._ring, -(count % length), axis=0)
-
-    def set_kept(self, values) -> None:
-        """Replace the kept values by ``values`` ((m, size), oldest first, m <= length)."""
-        if self._ring is None:
-            raise ValueError("nothing is kept: call keep() first")
-        values = _kept_values(values, self._ring.shape)
-        self._ring[: len(values)] = values
-        self._struct.ring_count = len(values)
-
-    def get(self, name: str):
-        """A copy of input ``name`` at its core shape (a carried input: the committed state)."""
-        j = self._layout.inputs.index(name)
-        out = _from_column_major(self._in[j], self._layout.in_shapes[j])
-        return out if isinstance(out, float) else out.copy()
-
-
-def _kept_output(lay: _Layout, name: str, length: int) -> tuple[int, int]:
+def kept_output(lay: StepLayout, name: str, length: int) -> tuple[int, int]:
     """Index and size of vector output ``name`` to keep ``length`` values of; ValueError if not one."""
     if name not in lay.outputs or lay.out_shapes[lay.outputs.index(name)][1] != 1:
         raise ValueError(f"{lay.fn_name}: keep() takes a vector output, got {name!r}")
@@ -277,7 +115,7 @@ def _kept_output(lay: _Layout, name: str, length: int) -> tuple[int, int]:
     return j, lay.out_shapes[j][0]
 
 
-def _kept_values(values, shape: tuple[int, int]) -> np.ndarray:
+def kept_values(values, shape: tuple[int, int]) -> np.ndarray:
     """``values`` as an (m, size) float64 array with m <= the ring's length; ValueError otherwise."""
     a = np.asarray(values, dtype=np.float64)
     if a.ndim != 2 or a.shape[1] != shape[1] or len(a) > shape[0]:
@@ -287,100 +125,21 @@ def _kept_values(values, shape: tuple[int, int]) -> np.ndarray:
     return a
 
 
-#: Steps per block of delivered results (see :class:`CStepper`): 64 rows of the Kalman step's
-#: x, P, nu, S, nis are 86 kB.
-BLOCK_ROWS = 64
-
-
-class _Blocks:
-    """Blocks of :data:`BLOCK_ROWS` rows into which the compiled step copies the delivered outputs;
-    ``new()`` allocates one, points the step's ``deliver_ptr`` at its first row and returns its
-    arrays: per output (rows,), (rows, r) or (rows, r, c) (column-major rows seen transposed)."""
-
-    def __init__(self, deliver_ptr, shapes: list[tuple[int, int]]):
-        self._ptr, self._shapes = deliver_ptr, shapes
-        sizes = [r * c for r, c in shapes]
-        self._offsets = [BLOCK_ROWS * sum(sizes[:m]) for m in range(len(sizes) + 1)]
-
-    def new(self) -> tuple:
-        block = np.empty(self._offsets[-1])
-        base = block.ctypes.data
-        arrays = []
-        for m, (r, c) in enumerate(self._shapes):
-            self._ptr[m] = base + block.itemsize * self._offsets[m]
-            part = block[self._offsets[m] : self._offsets[m + 1]]
-            arrays.append(
-                part
-                if (r, c) == (1, 1)
-                else part.reshape(BLOCK_ROWS, r)
-                if c == 1
-                else part.reshape(BLOCK_ROWS, c, r).swapaxes(1, 2)
-            )
-        return tuple(arrays)
-
-
-def _step_functions(feed: np.ndarray, call, unchecked, blocks: _Blocks, keys: tuple[str, ...] | None):
-    """``step(value, check=True)`` and ``advance(value)`` of a :class:`CStepper` (closures: the names
-    are bound once, as these run once per row of a stream). Both count the successful steps, whose
-    results the compiled step has copied to the next row of the current block."""
-    rows = blocks.new()
-    row = 0
-    scalars = tuple(a.ndim == 1 for a in rows)
-    pick = _row_template(scalars, keys)
-
-    def step(value, check: bool = True) -> int:
-        """Write the fed input (flat, in its column-major order) and evaluate one step; a code.
-
-        ``check=False`` skips the bounds of the fed input (for values a detailed check accepted)."""
-        nonlocal rows, row
-        feed[:] = value
-        code = call() if check else unchecked()
-        if not code:
-            row += 1
-            if row == BLOCK_ROWS:
-                rows, row = blocks.new(), 0
-        return code
-
-    def advance(value):
-        """``step(value)``, then the results as views of their row of the block; the code if not OK."""
-        nonlocal rows, row
-        feed[:] = value
-        code = call()
-        if code:
-            return code
-        out = pick(row, *rows)
-        row += 1
-        if row == BLOCK_ROWS:
-            rows, row = blocks.new(), 0
-        return out
-
-    return step, advance
-
-
-@functools.lru_cache(maxsize=None)
-def _row_template(scalars: tuple[bool, ...], keys: tuple[str, ...] | None):
-    """``f(i, *arrays)``: row ``i`` of each array (a float for those flagged in ``scalars``), as a
-    tuple or a dict under ``keys``; compiled once per pattern."""
-    names = [f"a{m}" for m in range(len(scalars))]
-    parts = [f"{n}.item(i)" if scalar else f"{n}[i]" for n, scalar in zip(names, scalars)]
-    return _compiled("pick", ["i", *names], parts, keys)
-
-
 class PyStepper:
     """:class:`CStepper` on the serialized CasADi backend: the same checks, in NumPy."""
 
     def __init__(self, fn, carry: dict, feed: str, low=None, high=None, finite=(), deliver=()):
         self._fn = fn
-        self._layout = _Layout(fn, carry, feed, low, high, finite, deliver)
-        self._values = [np.zeros(_core(s)) for s in self._layout.in_shapes]
+        self._layout = StepLayout(fn, carry, feed, low, high, finite, deliver)
+        self._values = [np.zeros(core_shape(s)) for s in self._layout.in_shapes]
         self._last: list | None = None
         self._ring: deque | None = None
         self._ring_out = -1
 
     def keep(self, name: str, length: int) -> None:
-        self._ring_out, size = _kept_output(self._layout, name, length)
+        self._ring_out, size = kept_output(self._layout, name, length)
         self._ring = deque(maxlen=int(length))
-        self._ring_size = size
+        self._ring_len, self._ring_size = int(length), size
 
     def kept(self) -> np.ndarray:
         if self._ring is None:
@@ -391,11 +150,11 @@ class PyStepper:
         if self._ring is None:
             raise ValueError("nothing is kept: call keep() first")
         self._ring.clear()
-        self._ring.extend(_kept_values(values, (self._ring.maxlen, self._ring_size)).copy())
+        self._ring.extend(kept_values(values, (self._ring_len, self._ring_size)).copy())
 
     def set(self, name: str, value) -> None:
         j = self._layout.inputs.index(name)
-        _column_major(value, self._layout.in_shapes[j], name)  # shape check
+        column_major(value, self._layout.in_shapes[j], name)  # shape check
         self._values[j] = np.array(value, dtype=np.float64)
 
     def get(self, name: str):
@@ -405,10 +164,11 @@ class PyStepper:
     def step(self, value, check: bool = True) -> int:
         lay = self._layout
         flat = np.asarray(value, dtype=np.float64).ravel()
-        if check and lay.low is not None and not ((flat >= lay.low) & (flat <= lay.high)).all():
+        low, high = lay.low, lay.high  # both or neither (StepLayout)
+        if check and low is not None and high is not None and not ((flat >= low) & (flat <= high)).all():
             return OUT_OF_BOUNDS
         r, c = lay.in_shapes[lay.feed]
-        self._values[lay.feed] = flat.reshape(c, r).T if c > 1 else flat.reshape(_core((r, c)))
+        self._values[lay.feed] = flat.reshape(c, r).T if c > 1 else flat.reshape(core_shape((r, c)))
         outs = [o[0] for o in self._fn(*self._values)]
         if not all(np.isfinite(outs[j]).all() for j in lay.finite):
             return NON_FINITE
@@ -420,9 +180,13 @@ class PyStepper:
         return OK
 
     def results(self) -> tuple | dict:
+        last = self._last
+        if last is None and self._layout.deliver:
+            raise ValueError(f"{self._layout.fn_name}: results() before a successful step")
         out = tuple(
-            float(self._last[j]) if np.ndim(self._last[j]) == 0 else np.array(self._last[j])
+            float(last[j]) if np.ndim(last[j]) == 0 else np.array(last[j])
             for j in self._layout.deliver
+            if last is not None
         )
         return out if self._layout.keys is None else dict(zip(self._layout.keys, out))
 

@@ -14,6 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from registration import _codegen
+from registration._generated import api as generated
 from registration.core.validation import (
     as_float_array,
     broadcast_1d,
@@ -73,10 +74,10 @@ def _attitude(heading, pitch, roll):
     return {"heading": h, "pitch": p, "roll": rl}
 
 
-def _ordered(values: dict, names: list[str]):
+def _broadcast(values: dict) -> dict:
     n = broadcast_1d(**values)
     # a length-1 array broadcasts like a scalar
-    return [values[k].reshape(()) if values[k].shape == (1,) and n != 1 else values[k] for k in names]
+    return {k: v.reshape(()) if v.shape == (1,) and n != 1 else v for k, v in values.items()}
 
 
 def geodetic2ecef(lat, lon, alt) -> np.ndarray:
@@ -86,7 +87,7 @@ def geodetic2ecef(lat, lon, alt) -> np.ndarray:
     Example: ``geodetic2ecef(0, 0, 0)`` -> ``[[6378137, 0, 0]]``.
     """
     v = _geodetic(lat, lon, alt)
-    return _codegen.get("geodetic2ecef")(*_ordered(v, ["lat", "lon", "alt"]))[0]
+    return generated.geodetic2ecef(**_broadcast(v)).p_ecef
 
 
 def ecef2geodetic(p_ecef) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -105,7 +106,7 @@ def ecef2geodetic(p_ecef) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         raise ValueError(
             f"p_ecef: point {int(np.argmax(close))} lies within 100 km of the earth's centre; expected ECEF metres"
         )
-    geo = _codegen.get("ecef2geodetic")(p)[0].reshape(-1, 3)
+    geo = generated.ecef2geodetic(p_ecef=p).geodetic.reshape(-1, 3)
     return geo[:, 0], geo[:, 1], geo[:, 2]
 
 
@@ -119,13 +120,13 @@ def enu2ecef_rotation(lat, lon, variant: str = "standard") -> np.ndarray:
     if variant not in T_VARIANTS:
         raise ValueError(f"variant: expected one of {T_VARIANTS}, got {variant!r}")
     v = _geodetic(lat, lon)
-    return _codegen.get(f"enu2ecef_rotation_{variant}")(*_ordered(v, ["lat", "lon"]))[0]
+    return generated.enu2ecef_rotation(t_variant=variant, **_broadcast(v)).R_ecef_enu
 
 
 def deck2enu_rotation(heading, pitch, roll) -> np.ndarray:
     """R_enu_deck (N, 3, 3) = Rz(heading) Rx(pitch) Ry(roll), angles in radians."""
     v = _attitude(heading, pitch, roll)
-    return _codegen.get("deck2enu_rotation")(*_ordered(v, ["heading", "pitch", "roll"]))[0]
+    return generated.deck2enu_rotation(**_broadcast(v)).R_enu_deck
 
 
 def enu2deck_attitude(R_enu_deck) -> np.ndarray:
@@ -138,7 +139,7 @@ def enu2deck_attitude(R_enu_deck) -> np.ndarray:
     R = R.reshape(-1, 3, 3).copy()
     check_finite("R_enu_deck", R, "1")
     R[:, 2, 1] = np.clip(R[:, 2, 1], -1.0, 1.0)
-    return _codegen.get("enu2deck_attitude")(R)[0].reshape(-1, 3)
+    return generated.enu2deck_attitude(R_enu_deck=R).attitude.reshape(-1, 3)
 
 
 def deck2enu(r, q, e, heading, pitch, roll) -> np.ndarray:
@@ -149,7 +150,7 @@ def deck2enu(r, q, e, heading, pitch, roll) -> np.ndarray:
     q = 0, e = 0, r = 1000 -> ``[[1000, 0, 0]]`` (the bow points east).
     """
     v = {**_measurement(r, q, e), **_attitude(heading, pitch, roll)}
-    return _codegen.get("deck2enu")(*_ordered(v, ["r", "q", "e", "heading", "pitch", "roll"]))[0]
+    return generated.deck2enu(**_broadcast(v)).u_enu
 
 
 def deck2enu_jacobians(r, q, e, heading, pitch, roll) -> tuple[np.ndarray, np.ndarray]:
@@ -158,10 +159,8 @@ def deck2enu_jacobians(r, q, e, heading, pitch, roll) -> tuple[np.ndarray, np.nd
     Units: metres per radian for angle columns, dimensionless for the range column. Eq. (11).
     """
     v = {**_measurement(r, q, e), **_attitude(heading, pitch, roll)}
-    _, psi, gamma = _codegen.get("deck2enu_jacobians")(
-        *_ordered(v, ["r", "q", "e", "heading", "pitch", "roll"])
-    )
-    return psi, gamma
+    out = generated.deck2enu_jacobians(**_broadcast(v))
+    return out.Psi, out.Gamma
 
 
 def plot2ecef(lat, lon, alt, heading, pitch, roll, r, q, e, variant: str = "standard") -> np.ndarray:
@@ -169,5 +168,4 @@ def plot2ecef(lat, lon, alt, heading, pitch, roll, r, q, e, variant: str = "stan
     if variant not in T_VARIANTS:
         raise ValueError(f"variant: expected one of {T_VARIANTS}, got {variant!r}")
     v = {**_geodetic(lat, lon, alt), **_attitude(heading, pitch, roll), **_measurement(r, q, e)}
-    names = ["lat", "lon", "alt", "heading", "pitch", "roll", "r", "q", "e"]
-    return _codegen.get(f"plot2ecef_{variant}")(*_ordered(v, names))[0]
+    return generated.plot2ecef(t_variant=variant, **_broadcast(v)).p_ecef

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration import _codegen
+from registration._generated import api as generated
 
 __all__ = ["COMPONENTS", "UNITS", "parse_components", "polar2cartesian", "cartesian2polar"]
 
@@ -23,14 +23,14 @@ _ALIASES = {"bearing": "azimuth", "r": "range", "az": "azimuth", "el": "elevatio
 
 def polar2cartesian(polar: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """polar (N, d) -> point p (N, d) in metres relative to the site, and J = dp/dpolar (N, d, d)."""
-    d = polar.shape[-1]
-    return _codegen.get(f"polar2cartesian{d}")(polar)
+    by_dim = {2: generated.polar2cartesian2, 3: generated.polar2cartesian3}
+    return by_dim[polar.shape[-1]](polar=polar)
 
 
 def cartesian2polar(p_rel: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Point relative to a site (N, d) in metres -> polar (N, d), and J = dpolar/dp (N, d, d)."""
-    d = p_rel.shape[-1]
-    return _codegen.get(f"cartesian2polar{d}")(p_rel)
+    by_dim = {2: generated.cartesian2polar2, 3: generated.cartesian2polar3}
+    return by_dim[p_rel.shape[-1]](p=p_rel)
 
 
 def parse_components(components, dim: int) -> np.ndarray:

@@ -29,7 +29,7 @@ from stonesoup.buffered_generator import BufferedGenerator
 from stonesoup.feeder.base import DetectionFeeder
 from stonesoup.types.array import CovarianceMatrix, StateVector
 
-from registration import _codegen
+from registration._generated import api as generated
 from registration.core.angles import wrap_angle
 from registration.fleet.data.tables import ATTITUDE_ERRORS, CHANNELS, EXTENDED_ERRORS, read_table
 from registration.interop.convert import (
@@ -175,9 +175,12 @@ class RegistrationCorrector:
                 f"sensor {sensor!r}: the registration covariance of {bad} is not finite (the data do not "
                 "determine them); pass registration_noise=False to correct without it"
             )
-        args = (*nav, x[:3], x[3:], lever, *measured)
-        p_ecef = _codegen.get("fleet_plot2ecef")(*args)[0]
-        J = _codegen.get("fleet_residual")(p_ecef, *args)[1][0][:, 3:9]
+        lat, lon, alt, heading, pitch, roll = nav
+        r, q, e = measured
+        ports = dict(lat=lat, lon=lon, alt=alt, heading=heading, pitch=pitch, roll=roll)
+        ports.update(att_err=x[:3], bias=x[3:], lever_deck=lever, r=r, q=q, e=e)
+        p_ecef = generated.fleet_plot2ecef(**ports).p_ecef
+        J = generated.fleet_residual(p_ecef=p_ecef, **ports).J[0][:, 3:9]
         return ss_covariance(kind, J @ P @ J.T)
 
 

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration import _codegen
+from registration._generated import api as generated
 from registration.core.angles import wrap_angle
 from registration.landing.geometry import LandingGeometry, radar_to_touchdown
 from registration.landing.inputs import as_attitude
@@ -138,7 +138,12 @@ def combine(
     else:
         x, P, w = _weighted_angles(method, x_r, P_r, innov, P_c)
     x[:, 1] = wrap_angle(x[:, 1])
-    p_td, J = _codegen.get("landing_ctd2td")(x, att, geometry.angled_deck_rad, geometry.d_camera_deck_m)
+    td = generated.landing_ctd2td(
+        polar_ctd=x,
+        attitude=att,
+        angled_deck=geometry.angled_deck_rad,
+        d_camera_deck=geometry.d_camera_deck_m,
+    )
     return PositionEstimate(
-        method=method, polar_ctd=x, P_polar=P, p_td=p_td, P_td=propagate_covariance(J, P), weights=w
+        method=method, polar_ctd=x, P_polar=P, p_td=td.p_td, P_td=propagate_covariance(td.J, P), weights=w
     )

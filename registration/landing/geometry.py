@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration import _codegen
+from registration._generated import api as generated
 from registration.core.validation import as_float_array, check_range
 from registration.landing.inputs import as_attitude, as_lever_arm, as_polar, common_count
 
@@ -72,7 +72,7 @@ class LandingGeometry:
 def deck_to_touchdown_rotation(attitude, geometry: LandingGeometry) -> np.ndarray:
     """M = R_td_deck (N, 3, 3) = T_A(phi_c) T_L R_level_deck(yaw, pitch, roll) (eq. 8); attitude in rad."""
     att = as_attitude(attitude)
-    return _codegen.get("landing_deck2td_rotation")(att, geometry.angled_deck_rad)[0]
+    return generated.landing_deck2td_rotation(attitude=att, angled_deck=geometry.angled_deck_rad).R_td_deck
 
 
 def radar_to_touchdown(polar_rdr, attitude, geometry: LandingGeometry) -> tuple[np.ndarray, np.ndarray]:
@@ -81,7 +81,10 @@ def radar_to_touchdown(polar_rdr, attitude, geometry: LandingGeometry) -> tuple[
     pol = as_polar("polar_rdr", polar_rdr, 3)
     att = as_attitude(attitude)
     common_count(polar_rdr=pol, attitude=att)
-    p_td, _, _, _, J = _codegen.get("landing_radar2td")(
-        pol, att, geometry.angled_deck_rad, geometry.d_radar_deck_m
+    td = generated.landing_radar2td(
+        polar_rdr=pol,
+        attitude=att,
+        angled_deck=geometry.angled_deck_rad,
+        d_radar_deck=geometry.d_radar_deck_m,
     )
-    return p_td, J
+    return td.p_td, td.J

@@ -8,7 +8,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from registration import _codegen
+from registration._generated import api as generated
 from registration.landing.geometry import LandingGeometry, deck_to_touchdown_rotation
 from registration.landing.pipeline import LandingConfig
 
@@ -197,28 +197,39 @@ class LandingScenario:
         p[:, 2] += self.approach.height_offset_m
         return p
 
-    def _moved(self, function: str, position, t, lever_arm_m: np.ndarray) -> np.ndarray:
-        """The generated ``function`` applied to ``position(t)`` with the attitude at true times t (s)."""
-        t = np.atleast_1d(np.asarray(t, dtype=float))
-        return _codegen.get(function)(
-            position(t), self.attitude(t), self.geometry.angled_deck_rad, lever_arm_m
-        )[0]
+    def _deck(self, t: np.ndarray) -> dict[str, np.ndarray | float]:
+        """The inputs every generated deck transform takes at true times t (s): attitude, angled deck."""
+        return {"attitude": self.attitude(t), "angled_deck": self.geometry.angled_deck_rad}
 
     def truth_td(self, t) -> np.ndarray:
         """Aircraft position (N, 3), m, in the touchdown frame (which moves with the deck)."""
-        return self._moved("landing_mtd2td", self.truth_mtd, t, self.geometry.l_touchdown_deck_m)
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        l_td_deck = self.geometry.l_touchdown_deck_m
+        return generated.landing_mtd2td(p_mtd=self.truth_mtd(t), **self._deck(t), l_td_deck=l_td_deck).p_td
 
     def truth_radar(self, t) -> np.ndarray:
         """Noise-free radar polar [r, a, b] (N, 3) at true times t (s)."""
-        return self._moved("landing_td2radar", self.truth_td, t, self.geometry.d_radar_deck_m)
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        d_radar_deck = self.geometry.d_radar_deck_m
+        return generated.landing_td2radar(
+            p_td=self.truth_td(t), **self._deck(t), d_radar_deck=d_radar_deck
+        ).polar_rdr
 
     def truth_camera(self, t) -> np.ndarray:
         """Noise-free camera angles [a, b] (N, 2) at true times t (s)."""
-        return self._moved("landing_td2camera", self.truth_td, t, self.geometry.d_camera_deck_m)
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        d_camera_deck = self.geometry.d_camera_deck_m
+        return generated.landing_td2camera(
+            p_td=self.truth_td(t), **self._deck(t), d_camera_deck=d_camera_deck
+        ).angles_cam
 
     def truth_ctd(self, t) -> np.ndarray:
         """True polar [r, a, b] (N, 3) about the camera in td axes at true times t (s)."""
-        return self._moved("landing_td2ctd", self.truth_td, t, self.geometry.d_camera_deck_m)
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        d_camera_deck = self.geometry.d_camera_deck_m
+        return generated.landing_td2ctd(
+            p_td=self.truth_td(t), **self._deck(t), d_camera_deck=d_camera_deck
+        ).polar_ctd
 
     def config(self, **overrides) -> LandingConfig:
         """A processing configuration that knows this scenario's clock offsets (calibrated clocks)."""

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration import _codegen
+from registration._generated import api as generated
 from registration.landing.geometry import LandingGeometry
 from registration.landing.inputs import as_attitude, as_covariance, as_polar, common_count
 
@@ -72,19 +72,21 @@ def transfer_radar(polar_rdr, P_rdr, attitude, geometry: LandingGeometry) -> Rad
     n = common_count(polar_rdr=pol, attitude=att)
     P = as_covariance("P_rdr", P_rdr, n, 3)
     phic, d_r, d_c = geometry.angled_deck_rad, geometry.d_radar_deck_m, geometry.d_camera_deck_m
-    p_td, _, A, M, _ = _codegen.get("landing_radar2td")(pol, att, phic, d_r)
-    _, B = _codegen.get("landing_td2ctd")(p_td, att, phic, d_c)
-    polar_ctd, BMA = _codegen.get("landing_radar2ctd")(pol, att, phic, d_r, d_c)
+    td = generated.landing_radar2td(polar_rdr=pol, attitude=att, angled_deck=phic, d_radar_deck=d_r)
+    B = generated.landing_td2ctd(p_td=td.p_td, attitude=att, angled_deck=phic, d_camera_deck=d_c).B
+    ctd = generated.landing_radar2ctd(
+        polar_rdr=pol, attitude=att, angled_deck=phic, d_radar_deck=d_r, d_camera_deck=d_c
+    )
     return RadarTransfer(
         polar_rdr=pol,
-        polar_ctd=polar_ctd,
-        P_ctd=propagate_covariance(BMA, P),
+        polar_ctd=ctd.polar_ctd,
+        P_ctd=propagate_covariance(ctd.BMA, P),
         P_rdr=P,
-        A=A,
-        M=M,
+        A=td.A,
+        M=td.M,
         B=B,
-        BMA=BMA,
-        p_td=p_td,
+        BMA=ctd.BMA,
+        p_td=td.p_td,
     )
 
 
@@ -118,8 +120,8 @@ def transfer_camera(angles_cam, P_cam, attitude, geometry: LandingGeometry) -> C
     att = as_attitude(attitude)
     n = common_count(angles_cam=ang, attitude=att)
     P = as_covariance("P_cam", P_cam, n, 2)
-    angles_ctd, J = _codegen.get("landing_camera2ctd")(ang, att, geometry.angled_deck_rad)
-    return CameraTransfer(angles_ctd=angles_ctd, P_ctd=propagate_covariance(J, P), P_cam=P, J=J)
+    ctd = generated.landing_camera2ctd(angles_cam=ang, attitude=att, angled_deck=geometry.angled_deck_rad)
+    return CameraTransfer(angles_ctd=ctd.angles_ctd, P_ctd=propagate_covariance(ctd.J, P), P_cam=P, J=ctd.J)
 
 
 def variance_ratios(P_in: np.ndarray, P_out: np.ndarray) -> np.ndarray:

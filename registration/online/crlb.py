@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration import _codegen
+from registration._generated import api as generated
 from registration.online.contract import SENSORS
 
 __all__ = ["crlb_information", "nees_series", "crlb_from_information", "quadratic_forms"]
@@ -25,15 +25,14 @@ def crlb_information(scenario, sigma0=None, t_variant: str | None = None) -> np.
     """
     t_variant = t_variant or scenario.description.get("t_variant", "standard")
     sigma0 = np.asarray(scenario.sigma0 if sigma0 is None else sigma0, dtype=float)
-    fn = _codegen.get(f"pseudo_measurement_{t_variant}")
     d, tr = scenario.data, scenario.truth
-    args = []
+    ports = {}
     for p in SENSORS:
-        args.append(np.stack([d[f"{p}_lat"], d[f"{p}_lon"], d[f"{p}_alt"]], axis=1))
-        args.append(np.stack([tr[f"{p}_heading"], tr[f"{p}_pitch"], tr[f"{p}_roll"]], axis=1))
-        args.append(np.asarray(tr[f"{p}_plot"], dtype=float))
-    out = dict(zip(fn.output_names, fn(*args, sigma0)))
-    H, R = out["H"], out["R"]
+        ports[f"nav_{p}"] = np.stack([d[f"{p}_lat"], d[f"{p}_lon"], d[f"{p}_alt"]], axis=1)
+        ports[f"att_{p}"] = np.stack([tr[f"{p}_heading"], tr[f"{p}_pitch"], tr[f"{p}_roll"]], axis=1)
+        ports[f"meas_{p}"] = np.asarray(tr[f"{p}_plot"], dtype=float)
+    out = generated.pseudo_measurement(t_variant=t_variant, sigma0=sigma0, **ports)
+    H, R = out.H, out.R
     RinvH = np.linalg.solve(R, H)  # (K, 3, 12)
     info = np.einsum("kai,kaj->kij", H, RinvH)
     return 0.5 * (info + info.transpose(0, 2, 1))

@@ -9,6 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from registration import _codegen
+from registration._generated import api as generated
 from registration.online.contract import N_STATE, PLOT, SENSOR_ROW, correct_rows
 
 __all__ = [
@@ -62,18 +63,18 @@ def information_skipping_bad_rows(H: np.ndarray, R: np.ndarray) -> tuple[np.ndar
 
 def pair_model(rows: np.ndarray, sigma0, t_variant: str) -> dict:
     """The generated pair model at rows (K, 18): Z, H, M, R ... by output name (SI units)."""
-    fn = _codegen.get(f"pseudo_measurement_{t_variant}")
     a, b = rows[:, SENSOR_ROW["a"]], rows[:, SENSOR_ROW["b"]]
-    args = [
-        a[:, 0:3],
-        a[:, 3:6],
-        a[:, PLOT],
-        b[:, 0:3],
-        b[:, 3:6],
-        b[:, PLOT],
-        np.asarray(sigma0, dtype=float),
-    ]
-    return dict(zip(fn.output_names, fn(*args)))
+    out = generated.pseudo_measurement(
+        t_variant=t_variant,
+        nav_a=a[:, 0:3],
+        att_a=a[:, 3:6],
+        meas_a=a[:, PLOT],
+        nav_b=b[:, 0:3],
+        att_b=b[:, 3:6],
+        meas_b=b[:, PLOT],
+        sigma0=np.asarray(sigma0, dtype=float),
+    )
+    return out._asdict()
 
 
 def information_at_estimate(
@@ -108,7 +109,9 @@ def information_at_estimate(
 
 def target_positions(rows: np.ndarray, t_variant: str) -> tuple[np.ndarray, np.ndarray]:
     """Target ECEF (K, 3) in m as radar A and as radar B place it (Wang et al. eq. (3)), from rows (K, 18)."""
-    fn = _codegen.get(f"plot2ecef_{t_variant}")
-    p_a = fn(*(rows[:, SENSOR_ROW["a"]][:, j] for j in range(9)))[0]
-    p_b = fn(*(rows[:, SENSOR_ROW["b"]][:, j] for j in range(9)))[0]
+    names = ("lat", "lon", "alt", "heading", "pitch", "roll", "r", "q", "e")  # SENSOR_COLUMNS' order
+    p_a, p_b = (
+        generated.plot2ecef(t_variant=t_variant, **dict(zip(names, rows[:, SENSOR_ROW[s]].T))).p_ecef
+        for s in ("a", "b")
+    )
     return np.asarray(p_a).reshape(-1, 3), np.asarray(p_b).reshape(-1, 3)

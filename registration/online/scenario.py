@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from registration import _codegen
+from registration._generated import api as generated
 from registration.core.angles import wrap_angle
 from registration.core.motion import ShipMotion
 from registration.online.contract import (
@@ -95,7 +96,7 @@ def _paper_target(t: np.ndarray, dt: float) -> tuple[np.ndarray, np.ndarray, np.
     """Target latitude, longitude (rad) and altitude (m): 45 km north of the ships' midpoint, 200 m/s."""
     n_steps = len(t)
     mid_lat, mid_lon = np.radians(20.0), np.radians(115.25)
-    M, N = _codegen.get("radii_of_curvature")(mid_lat)[0][0]
+    M, N = generated.radii_of_curvature(lat=mid_lat).radii[0]
     tgt_alt = np.linspace(2000.0, 4000.0, n_steps)
     tgt_lat, tgt_lon = _dead_reckon(
         mid_lat + 45_000.0 / (M + 2000.0), mid_lon, tgt_alt, _target_course(t), 200.0 * np.ones(n_steps), dt
@@ -114,7 +115,16 @@ def _ship_truth(prefix, ship, t, dt, p_target_ecef, *, ship_motion, antenna_heig
         pitch, roll = np.zeros(n_steps), np.zeros(n_steps)
     else:
         pitch, roll = ship_motion.angles(t, ship["phase"])
-    plot = _codegen.get(f"ecef2plot_{t_variant}")(p_target_ecef, lat, lon, alt, heading, pitch, roll)[0]
+    plot = generated.ecef2plot(
+        t_variant=t_variant,
+        p_ecef=p_target_ecef,
+        lat=lat,
+        lon=lon,
+        alt=alt,
+        heading=heading,
+        pitch=pitch,
+        roll=roll,
+    ).plot
     return {
         f"{prefix}_lat": lat,
         f"{prefix}_lon": lon,
@@ -123,7 +133,7 @@ def _ship_truth(prefix, ship, t, dt, p_target_ecef, *, ship_motion, antenna_heig
         f"{prefix}_pitch": pitch,
         f"{prefix}_roll": roll,
         f"{prefix}_plot": plot,
-        f"{prefix}_p_ecef": _codegen.get("geodetic2ecef")(lat, lon, alt)[0],
+        f"{prefix}_p_ecef": generated.geodetic2ecef(lat=lat, lon=lon, alt=alt).p_ecef,
     }
 
 
@@ -133,7 +143,7 @@ def _geometry(n_steps: int, dt: float, ship_motion, antenna_height: float, t_var
     ships' true tracks, attitudes and plots. Cached per configuration (read-only arrays)."""
     t = np.arange(n_steps) * dt
     tgt_lat, tgt_lon, tgt_alt = _paper_target(t, dt)
-    p_target_ecef = _codegen.get("geodetic2ecef")(tgt_lat, tgt_lon, tgt_alt)[0]
+    p_target_ecef = generated.geodetic2ecef(lat=tgt_lat, lon=tgt_lon, alt=tgt_alt).p_ecef
     geo = {
         "time": t,
         "p_target_ecef": p_target_ecef,

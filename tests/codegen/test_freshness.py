@@ -91,6 +91,10 @@ def test_manifest_records_tools_and_artifacts():
             assert hashlib.sha256(path.read_bytes()).hexdigest() == meta["artifacts"][kind]["sha256"], name
             assert b"DO NOT EDIT" in path.read_bytes()[:400]
         assert meta["inputs"] and meta["outputs"]
+    for name, meta in m["modules"].items():  # the typed API (generated/api.py)
+        path = _codegen.generated_dir() / meta["file"]
+        assert hashlib.sha256(path.read_bytes()).hexdigest() == meta["sha256"], name
+        assert b"DO NOT EDIT" in path.read_bytes()[:400]
 
 
 def test_full_check_passes_on_this_tree(fresh_check):
@@ -109,7 +113,8 @@ def test_regeneration_is_deterministic(fresh_check):
     assert files == sorted(p.name for p in (REPO / "generated").iterdir() if p.is_file())
     for f in files:
         assert (fresh / f).read_bytes() == (REPO / "generated" / f).read_bytes(), (
-            f"{f}: two generations differ (derive/ changed without `{REGEN}`, or emission is not deterministic)"
+            f"{f}: two generations differ "
+            f"(derive/ changed without `{REGEN}`, or emission is not deterministic)"
         )
 
 

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from registration import _codegen
-from registration._codegen import cbackend
+from registration._codegen import cbackend, ckernel
 from registration.online import RegistrationConfig
 from registration.online.contract import DATA_COLUMNS, N_STATE
 from registration.online.filter import STEP_CARRY
@@ -21,7 +21,8 @@ from registration.online.scenario import paper_scenario
 
 STEPS = ("kalman_step_fitted_standard", "kalman_step_fitted_standard_carlson")
 UPDATE = {"kalman_step_fitted_standard": "joseph", "kalman_step_fitted_standard_carlson": "carlson"}
-#: prior sigmas: the default, and one with sigmas from 1e-12 rad to 1e5 m and no process noise (cond(P) ~ 1e37)
+#: prior sigmas: the default, and one with sigmas from 1e-12 rad to 1e5 m and no process noise
+#: (cond(P) ~ 1e37)
 PRIORS = {
     "default": {},
     "ill": {"prior_sigma": (1e-12, 1e-3, 1e-12, 1e5, 1e-12, 1e-3) * 2, "q_sigma": (0.0,) * N_STATE},
@@ -69,7 +70,7 @@ def _points(name: str, prior: dict, rows: np.ndarray) -> tuple[list, object]:
 def _evaluate(name: str, prepared: list, fn, lib) -> dict:
     """Every output of ``name`` at the points, from library ``lib``, at its core shape."""
     work = _codegen.manifest()["functions"][name]["work"]
-    outs = cbackend.CKernel(name, work, lib).call(prepared, len(prepared[4][0]), fn.output_shapes)
+    outs = ckernel.CKernel(name, work, lib).call(prepared, len(prepared[4][0]), fn.output_shapes)
     shaped = {}
     for out_name, buf, (r, c) in zip(fn.output_names, outs, fn.output_shapes):
         shaped[out_name] = (

@@ -190,7 +190,7 @@ def test_advance_gives_the_scan_s_results_as_the_caller_s_arrays_across_blocks(r
     """advance() = step() + results(), as a dict under the deliver keys; in the C backend its arrays
     are rows of blocks the compiled step fills: every row stays the step's own, across block ends,
     with step() calls and refused steps in between."""
-    from registration._codegen.stepper import BLOCK_ROWS
+    from registration._codegen.cstepper import BLOCK_ROWS
 
     fn = GeneratedFunction(STEP, force_backend=backend)
     stream = rows.reshape(-1, 18)

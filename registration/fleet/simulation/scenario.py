@@ -15,10 +15,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from registration import _codegen
+from registration._generated import api as generated
 from registration.core.angles import wrap_angle
 from registration.core.frames import ecef2geodetic
 from registration.fleet.data.problem import FleetProblem, build_problem
+from registration.fleet.data.tables import NAV_COLUMNS
 from registration.fleet.simulation.coverage import coverage_for, visible
 from registration.fleet.simulation.tracks import Circle, Line, ShipTrack, enu2ecef_points
 
@@ -213,27 +214,17 @@ def _sensor_plots(
     p = np.concatenate([enu2ecef_points(CENTRE, track.enu(seen)) for track in config.targets.values()])
     nav = np.tile(nav, (n_t, 1))
     lever = np.asarray(lever, dtype=float)
+    ports = dict(zip(NAV_COLUMNS, nav.T), bias=bias, lever_deck=lever, r=0.0, q=0.0, e=0.0)
     extended = [f"{sid}:{k}" for k in ("range_gain", "time_bias", "position_east")]
     if any(k in truth for k in extended):  # the sensor sits at stated position - position error
         pos_err = np.array([truth.get(f"{sid}:position_{a}", 0.0) for a in ("east", "north", "up")])
         z3, z6 = np.zeros(3), np.zeros(6)
-        plot = _codegen.get("fleet_residual_ext")(
-            p,
-            z3,
-            *nav.T,
-            z6,
-            z3,
-            bias,
-            truth.get(f"{sid}:range_gain", 0.0),
-            0.0,
-            pos_err,
-            lever,
-            0.0,
-            0.0,
-            0.0,
-        )[2]
+        gain = truth.get(f"{sid}:range_gain", 0.0)
+        plot = generated.fleet_residual_ext(
+            p_ecef=p, v_ecef=z3, **ports, nav_rate=z6, att_err=z3, gain=gain, dt=0.0, pos_err=pos_err
+        ).plot
     else:
-        plot = _codegen.get("fleet_residual")(p, *nav.T, np.zeros(3), bias, lever, 0.0, 0.0, 0.0)[2]
+        plot = generated.fleet_residual(p_ecef=p, **ports, att_err=np.zeros(3)).plot
     measured = plot + noise_scale * rng.normal(size=plot.shape) * np.nan_to_num(sigma)
     measured[:, ~np.isfinite(sigma)] = np.nan
     measured[:, 1] = wrap_angle(measured[:, 1])
@@ -253,9 +244,8 @@ def _in_coverage(
 ) -> np.ndarray:
     """Which plots the sensor reports (:mod:`registration.fleet.simulation.coverage`): judged at the
     true geometry, without biases (the true navigation ``nav``, target ECEF ``p_ecef``)."""
-    true_plot = _codegen.get("fleet_residual")(
-        p_ecef, *nav.T, np.zeros(3), np.zeros(3), lever, 0.0, 0.0, 0.0
-    )[2]
+    ports = dict(zip(NAV_COLUMNS, nav.T), att_err=np.zeros(3), bias=np.zeros(3), lever_deck=lever)
+    true_plot = generated.fleet_residual(p_ecef=p_ecef, **ports, r=0.0, q=0.0, e=0.0).plot
     h_target = ecef2geodetic(p_ecef)[2] if p_ecef.size else np.zeros(0)
     return visible(coverage_for(sigma), true_plot[:, 0], true_plot[:, 2], nav[:, 2] + lever[2], h_target)
 

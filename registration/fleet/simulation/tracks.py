@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration import _codegen
+from registration._generated import api as generated
 from registration.core.angles import wrap_angle
 from registration.core.motion import ShipMotion
 
@@ -18,8 +18,8 @@ __all__ = ["ShipTrack", "Circle", "Line", "enu2ecef_points", "random_targets"]
 def enu2ecef_points(centre, p_enu: np.ndarray) -> np.ndarray:
     """(N, 3) ECEF (m) of points given in the ENU frame at ``centre`` = (lat, lon rad, alt m)."""
     lat, lon, alt = centre
-    origin = _codegen.get("geodetic2ecef")(lat, lon, alt)[0][0]
-    R_ecef_enu = _codegen.get("enu2ecef_rotation_standard")(lat, lon)[0][0]
+    origin = generated.geodetic2ecef(lat=lat, lon=lon, alt=alt).p_ecef[0]
+    R_ecef_enu = generated.enu2ecef_rotation_standard(lat=lat, lon=lon).R_ecef_enu[0]
     return origin + np.atleast_2d(p_enu) @ R_ecef_enu.T
 
 
@@ -48,7 +48,7 @@ class ShipTrack:
     @staticmethod
     def geodetic(centre, east: np.ndarray, north: np.ndarray, height: float):
         """(lat, lon) rad of points offset east/north (m) from ``centre`` at ``height`` m."""
-        M, N = _codegen.get("radii_of_curvature")(centre[0])[0][0]
+        M, N = generated.radii_of_curvature(lat=centre[0]).radii[0]
         lat = centre[0] + north / (M + height)
         lon = centre[1] + east / ((N + height) * np.cos(centre[0]))
         return lat, lon

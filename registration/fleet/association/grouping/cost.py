@@ -25,9 +25,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration import _codegen
+from registration._generated import api as generated
 from registration.fleet.association.grouping.geometry import N_COEF, N_LINE
 from registration.fleet.data.problem import FleetProblem
+from registration.fleet.data.tables import NAV_COLUMNS
 
 __all__ = ["group_covariances", "joint_covariance", "line_cost", "measurement_cost"]
 
@@ -112,8 +113,10 @@ def measurement_cost(
     meas, mask = problem.meas[plot], problem.mask[plot]
     att, bias = (np.tile(xs[c], (plot.size, 1)) for c in (cols[:3], cols[3:6]))
     lever = problem.sensor_lever[problem.sensor[plot]]
+    ports = dict(att_err=att, bias=bias, lever_deck=lever, r=meas[:, 0], q=meas[:, 1], e=meas[:, 2])
     if cols.size == 6:
-        res, J = _codegen.get("fleet_residual")(p, *problem.nav[plot].T, att, bias, lever, *meas.T)[:2]
+        fit = generated.fleet_residual(p_ecef=p, **dict(zip(NAV_COLUMNS, problem.nav[plot].T)), **ports)
+        res, J = fit.residual, fit.J
     else:  # at the time seen: the group curve's velocity there (m/s), the platform's navigation and rate
         rate_basis = (
             np.concatenate(
@@ -124,9 +127,11 @@ def measurement_cost(
         v = (rate_basis @ line[grp][..., None])[..., 0]
         nav, rate = tl.rep_nav[b].reshape(-1, 6), tl.rep_rate[b].reshape(-1, 6)
         gain, pos_err = xs[cols[6]], xs[cols[8:11]]  # range gain, position error (ENU); the time bias is in t
-        res, J = _codegen.get("fleet_residual_ext")(
-            p, v, *nav.T, rate, att, bias, gain, 0.0, pos_err, lever, *meas.T
-        )[:2]
+        nav_ports = dict(zip(NAV_COLUMNS, nav.T))
+        fit_ext = generated.fleet_residual_ext(
+            p_ecef=p, v_ecef=v, **nav_ports, nav_rate=rate, gain=gain, dt=0.0, pos_err=pos_err, **ports
+        )
+        res, J = fit_ext.residual, fit_ext.J
     res, J = np.asarray(res).reshape(-1, 3), np.asarray(J).reshape(-1, 3, 3 + cols.size)
     res, J = np.where(mask, res, 0.0), np.where(mask[..., None], J, 0.0)
     W = np.concatenate([J[:, :, :3] @ basis, J[:, :, 3:]], axis=2).reshape(k_pairs, 9, N_LINE + cols.size)

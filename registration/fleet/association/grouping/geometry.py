@@ -37,10 +37,11 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import linear_sum_assignment
 
-from registration import _codegen
+from registration._generated import api as generated
 from registration.fleet.batch.initial import ASSUMED_RANGE_M
 from registration.fleet.corrected import corrected_positions
 from registration.fleet.data.problem import FleetProblem
+from registration.fleet.data.tables import NAV_COLUMNS
 
 __all__ = [
     "N_COEF",
@@ -119,14 +120,16 @@ def _positions(
     p = corrected_positions(
         nav, cols, xs, lever, np.stack([r, meas[:, 1], e], axis=1)
     )  # cols -1 reads xs[-1] = 0
+    ports = dict(zip(NAV_COLUMNS, nav.T))
+    ports.update(att_err=att, bias=bias, lever_deck=lever, r=r, q=meas[:, 1], e=e)
     if cols.shape[1] == 6:
-        J = _codegen.get("fleet_residual")(p, *nav.T, att, bias, lever, r, meas[:, 1], e)[1]
+        J = generated.fleet_residual(p_ecef=p, **ports).J
         return p, np.asarray(J).reshape(-1, 3, 9)
     gain, pos_err = xs[cols[:, 6]], xs[cols[:, 8:11]]
     # the target velocity 0: the time bias's column is the platform's motion (module docstring)
-    J = _codegen.get("fleet_residual_ext")(
-        p, np.zeros(3), *nav.T, rate, att, bias, gain, 0.0, pos_err, lever, r, meas[:, 1], e
-    )[1]
+    J = generated.fleet_residual_ext(
+        p_ecef=p, v_ecef=np.zeros(3), nav_rate=rate, gain=gain, dt=0.0, pos_err=pos_err, **ports
+    ).J
     return p, np.asarray(J).reshape(-1, 3, 14)
 
 

@@ -24,10 +24,11 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.stats import chi2
 
-from registration import _codegen
+from registration._generated import api as generated
 from registration.fleet.association.grouping.geometry import state_columns
 from registration.fleet.association.joining.curves import Curves
 from registration.fleet.data.problem import FleetProblem
+from registration.fleet.data.tables import NAV_COLUMNS
 
 __all__ = [
     "Pairs",
@@ -134,14 +135,18 @@ def _residuals(problem: FleetProblem, x: np.ndarray, plots: np.ndarray, p: np.nd
     att, bias = xs[cols[:, :3]], xs[cols[:, 3:6]]
     meas = problem.meas[plots]
     lever = problem.sensor_lever[problem.sensor[plots]]
+    ports = dict(att_err=att, bias=bias, lever_deck=lever, r=meas[:, 0], q=meas[:, 1], e=meas[:, 2])
     if cols.shape[1] == 6:
-        res, J = _codegen.get("fleet_residual")(p, *problem.nav[plots].T, att, bias, lever, *meas.T)[:2]
+        fit = generated.fleet_residual(p_ecef=p, **dict(zip(NAV_COLUMNS, problem.nav[plots].T)), **ports)
+        res, J = fit.residual, fit.J
     else:
         _, nav, rate = problem.seen(x, plots)
         gain, pos_err = xs[cols[:, 6]], xs[cols[:, 8:11]]
-        res, J = _codegen.get("fleet_residual_ext")(
-            p, v, *nav.T, rate, att, bias, gain, 0.0, pos_err, lever, *meas.T
-        )[:2]
+        nav_ports = dict(zip(NAV_COLUMNS, nav.T))
+        fit_ext = generated.fleet_residual_ext(
+            p_ecef=p, v_ecef=v, **nav_ports, nav_rate=rate, gain=gain, dt=0.0, pos_err=pos_err, **ports
+        )
+        res, J = fit_ext.residual, fit_ext.J
     return np.asarray(res).reshape(-1, 3), np.asarray(J).reshape(-1, 3, 3 + cols.shape[1]), cols
 
 
