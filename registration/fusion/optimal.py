@@ -15,7 +15,7 @@ import numpy as np
 from registration.core import linalg as la
 from registration.core.angles import wrap_angle
 from registration.core.validation import check_finite
-from registration.fusion.inputs import (
+from registration.fusion.checks import (
     SITE_TOL,
     broadcast_rows,
     check_off_site,

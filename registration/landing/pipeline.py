@@ -13,9 +13,9 @@ import numpy as np
 
 from registration.core.alignment import AlignedSamples, align
 from registration.core.validation import as_float_array, check_positive
+from registration.landing.checks import as_attitude
 from registration.landing.fusion import FUSION_METHODS, combine, radar_only
 from registration.landing.geometry import LandingGeometry
-from registration.landing.inputs import as_attitude
 from registration.landing.transfer import CameraTransfer, RadarTransfer, transfer_camera, transfer_radar
 
 __all__ = ["LandingConfig", "LandingResult", "fusion_instants", "process"]

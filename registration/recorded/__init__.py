@@ -3,17 +3,19 @@ column names, row checks with a reason for every bad row, pairing of asynchronou
 streaming run that is checkpointed and resumes bit for bit.
 
 The run is a pipeline (:mod:`.run.runner`): :mod:`.run.plan` (with :mod:`.output.outfolder`) ->
-:mod:`.reading.unitcheck` -> :mod:`.pairing.paired` (with :mod:`.reading.sources`,
-:mod:`.reading.streams`, :mod:`.pairing.pairs`) -> :mod:`.run.filtering` (with :mod:`.run.runstate`,
-:mod:`.output.outputs`) -> :mod:`.output.report` and :mod:`.output.plots` -> publication in ``--out``
-(:mod:`.output.outfolder`). Subpackages: ``reading`` (formats, row checks, field counts, unit
-checks, sources, streams), ``pairing``, ``run`` (plan, options, checkpoint, filtering, runner) and
-``output`` (outputs, report, plots, writers, the output folder).
+:mod:`.reading.unitcheck` (through :func:`.run.plan.input_warnings`) -> :mod:`.pairing.paired`
+(with :mod:`.reading.sources`, :mod:`.reading.streams`, :mod:`.pairing.pairs`) ->
+:mod:`.run.filtering` (with :mod:`.run.runstate`, :mod:`.output.outputs`) -> :mod:`.output.report`
+and :mod:`.output.plots` -> publication in ``--out`` (:mod:`.output.outfolder`). Subpackages:
+``reading`` (formats, row checks, field counts, unit checks, sources, streams), ``pairing``,
+``run`` (plan, checkpoint, filtering, runner) and ``output`` (outputs, report, plots, writers,
+the output folder); ``options`` (the run's and the pairing's options) lies below them all.
 """
 
 from registration.io.files.tablefile import REASON_CODES, FileFormatError, NoValidRowsError
 from registration.io.output.checkpoint import CheckpointError, load_checkpoint, save_checkpoint
 from registration.io.output.outfolder import OUTPUT_NAMES, OutputFolderError
+from registration.recorded.options import PairingOptions, RunOptions
 from registration.recorded.output.report import summary_consistency
 from registration.recorded.output.writers import CsvAppender, PartsWriter
 from registration.recorded.reading.columns import (
@@ -38,7 +40,6 @@ from registration.recorded.reading.formats import (
 )
 from registration.recorded.reading.rowcheck import BadRowError, check_frame, sync_layout
 from registration.recorded.reading.validate import validate_files
-from registration.recorded.run.options import PairingOptions, RunOptions
 from registration.recorded.run.runner import run_register
 
 __all__ = [

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from registration import fusion as F
-from registration.fusion.inputs import BLOCK
+from registration.fusion.checks import BLOCK
 
 PAPER1 = dict(
     z=np.array([100e3, np.radians(15.0)]),

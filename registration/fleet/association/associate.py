@@ -29,18 +29,18 @@ import numpy as np
 
 from registration.fleet.association.grouping.confirm import confirm_targets
 from registration.fleet.association.grouping.geometry import Assigner
-from registration.fleet.association.inputs import (
+from registration.fleet.association.grouping.units import make_units
+from registration.fleet.association.joining.checks import JoinState, outlier_stage
+from registration.fleet.association.joining.curves import anchor_curves
+from registration.fleet.association.joining.joins import DEFER_SHARE, join_units
+from registration.fleet.association.joining.singles import join_single_plots
+from registration.fleet.association.options import AssociationOptions
+from registration.fleet.association.problems import (
     all_plots_problem,
     anchor_references,
     initial_covariance,
     plot_ids,
 )
-from registration.fleet.association.joining.checks import JoinState, outlier_stage
-from registration.fleet.association.joining.curves import anchor_curves
-from registration.fleet.association.joining.joins import DEFER_SHARE, join_units
-from registration.fleet.association.joining.singles import join_single_plots
-from registration.fleet.association.joining.units import make_units
-from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.references import name_by_references
 from registration.fleet.association.report import plot_report, track_notes
 from registration.fleet.association.result import AssociationResult

@@ -22,9 +22,9 @@ from dataclasses import replace
 
 import numpy as np
 
-from registration.fleet.association.inputs import labelled_problem
 from registration.fleet.association.joining.curves import fit_windows
 from registration.fleet.association.options import AssociationOptions
+from registration.fleet.association.problems import labelled_problem
 from registration.fleet.batch.solve import solve_batch
 from registration.fleet.data.inputs import References
 from registration.fleet.data.problem import FleetProblem

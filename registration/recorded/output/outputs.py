@@ -15,9 +15,9 @@ import numpy as np
 
 from registration.io.output.outfolder import RunFolder
 from registration.online.contract import IS_ANGLE, STATE_NAMES
+from registration.recorded.options import RunOptions
 from registration.recorded.output.writers import CsvAppender, open_appender
 from registration.recorded.reading.columns import ESTIMATE_COLUMNS, POSITION_COLUMNS, REJECTED_COLUMNS
-from registration.recorded.run.options import RunOptions
 
 __all__ = ["DifferenceStats", "Outputs", "output_paths", "estimate_frame", "position_frame", "rejected_rows"]
 

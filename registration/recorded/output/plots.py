@@ -20,11 +20,11 @@ from registration.core.frames import ecef2geodetic
 from registration.core.plotting import OKABE_ITO, pyplot
 from registration.online.contract import IS_ANGLE
 from registration.online.plots import SHIP_COLOURS, plot_difference_series, plot_estimate_series
+from registration.recorded.options import RunOptions
 from registration.recorded.output.outputs import output_paths
 from registration.recorded.output.plotseries import PLOT_POINTS, plot_step
 from registration.recorded.reading.columns import ESTIMATE_COLUMNS, POSITION_COLUMNS
 from registration.recorded.reading.formats import iter_frames
-from registration.recorded.run.options import RunOptions
 
 __all__ = ["write_plots", "series_from_outputs", "release_free_memory", "PLOT_POINTS", "READ_ROWS"]
 

@@ -10,8 +10,8 @@ from registration.core.consistency import ConsistencyReport
 from registration.core.observability import observability_report
 from registration.online.contract import STATE_LABELS, STATE_NAMES, STATE_UNITS
 from registration.online.result import estimate_rows
+from registration.recorded.options import RunOptions
 from registration.recorded.output.outputs import output_paths
-from registration.recorded.run.options import RunOptions
 from registration.recorded.run.plan import RunPlan, Table
 from registration.recorded.run.runstate import RunState
 

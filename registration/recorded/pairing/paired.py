@@ -19,6 +19,7 @@ import shutil
 from pathlib import Path
 
 from registration.io.output.outfolder import RunFolder
+from registration.recorded.options import RunOptions
 from registration.recorded.output.outputs import rejected_rows
 from registration.recorded.output.writers import CsvAppender, ParquetFileWriter, write_json_atomic
 from registration.recorded.pairing.pairs import Pairer
@@ -30,7 +31,6 @@ from registration.recorded.reading.columns import (
 )
 from registration.recorded.reading.formats import scan_file
 from registration.recorded.reading.sources import plan_sources
-from registration.recorded.run.options import RunOptions
 from registration.recorded.run.plan import RunPlan, Table, fingerprint, table_rows
 
 __all__ = ["pair_inputs"]

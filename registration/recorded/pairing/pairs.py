@@ -35,11 +35,11 @@ import numpy as np
 
 from registration.core.alignment import REASON_EXTRAPOLATION
 from registration.online.contract import N_ROW, ROW_COLUMNS, SENSOR_ROW, SENSORS
+from registration.recorded.options import PairingOptions
 from registration.recorded.reading.columns import NAV_KINDS, PLOT_KINDS
 from registration.recorded.reading.formats import to_file_frame
 from registration.recorded.reading.sources import Source
 from registration.recorded.reading.streams import REASON_GAP, SampleStream
-from registration.recorded.run.options import PairingOptions
 
 __all__ = ["PairedBlock", "Pairer"]
 

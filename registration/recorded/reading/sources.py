@@ -11,10 +11,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+from registration.recorded.options import PairingOptions
 from registration.recorded.reading.columns import NAV_FIELDS
 from registration.recorded.reading.formats import read_columns
 from registration.recorded.reading.rowcheck import Layout, nav_layout, plot_layout
-from registration.recorded.run.options import PairingOptions
 
 __all__ = ["Source", "plan_sources"]
 

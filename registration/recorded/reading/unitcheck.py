@@ -21,11 +21,9 @@ import math
 import numpy as np
 
 from registration.recorded.reading.formats import iter_frames
-from registration.recorded.reading.rowcheck import Layout, sync_layout
-from registration.recorded.reading.sources import plan_sources
-from registration.recorded.run.plan import RunPlan
+from registration.recorded.reading.rowcheck import Layout
 
-__all__ = ["SAMPLE_ROWS", "MIN_VALUES", "angle_unit_warnings", "input_warnings"]
+__all__ = ["SAMPLE_ROWS", "MIN_VALUES", "angle_unit_warnings"]
 
 #: Rows read from the start of each file for the check.
 SAMPLE_ROWS = 10_000
@@ -75,12 +73,3 @@ def angle_unit_warnings(path, layout: Layout, sample_rows: int = SAMPLE_ROWS) ->
                 "are degrees, the ship sails within 1.6 deg of 0 N, 0 E and this warning can be ignored)"
             )
     return out
-
-
-def input_warnings(plan: RunPlan) -> list[str]:
-    """The warnings of :func:`angle_unit_warnings` for every input file of ``plan``, in reading order."""
-    if plan.form == "synchronous":
-        jobs = [(plan.inputs[0], sync_layout())]
-    else:
-        jobs = [(s.path, s.layout) for s in plan_sources(plan.inputs, plan.navs, plan.pairing)]
-    return [w for path, layout in jobs for w in angle_unit_warnings(path, layout)]

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from registration.recorded.options import PairingOptions, RunOptions
 from registration.recorded.reading.formats import iter_frames
 from registration.recorded.reading.rowcheck import Layout, check_frame, sync_layout
 from registration.recorded.reading.sources import plan_sources
-from registration.recorded.run.options import PairingOptions, RunOptions
 
 __all__ = ["validate_files"]
 

@@ -1,3 +1,3 @@
-"""The run of registration register: plan, options, the checkpointed filtering and its state, the pipeline (docs/register.md)."""
+"""The run of registration register: plan, the checkpointed filtering and its state, the pipeline (docs/register.md)."""
 
 __all__: list[str] = []

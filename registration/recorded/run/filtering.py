@@ -17,6 +17,7 @@ from registration.io.files.tablefile import FileFormatError, NoValidRowsError
 from registration.online.contract import correct_rows
 from registration.online.filter import OnlineRegistrar
 from registration.online.information import information_at_estimate, target_positions
+from registration.recorded.options import RunOptions
 from registration.recorded.output.outputs import Outputs, estimate_frame, position_frame, rejected_rows
 from registration.recorded.output.plotseries import PLOT_POINTS, PlotSeries
 from registration.recorded.reading.columns import SYNC_COLUMNS
@@ -28,7 +29,6 @@ from registration.recorded.reading.rowcheck import (
     check_frame,
     sync_layout,
 )
-from registration.recorded.run.options import RunOptions
 from registration.recorded.run.plan import RunPlan, Table
 from registration.recorded.run.runstate import Checkpointer, RunState
 

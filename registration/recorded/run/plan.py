@@ -18,10 +18,13 @@ from pathlib import Path
 from registration.io.files.tablefile import FileFormatError, file_format
 from registration.io.output.checkpoint import CheckpointError, load_checkpoint
 from registration.io.output.outfolder import RunFolder, mark_in_place, new_run_folder, prepare_out, publish
+from registration.recorded.options import PairingOptions, RunOptions
 from registration.recorded.reading.formats import count_rows, iter_frames, read_columns, scan_file
-from registration.recorded.run.options import PairingOptions, RunOptions
+from registration.recorded.reading.rowcheck import sync_layout
+from registration.recorded.reading.sources import plan_sources
+from registration.recorded.reading.unitcheck import angle_unit_warnings
 
-__all__ = ["Table", "RunPlan", "plan_run", "fingerprint", "table_rows"]
+__all__ = ["Table", "RunPlan", "plan_run", "fingerprint", "table_rows", "input_warnings"]
 
 
 @dataclass
@@ -191,3 +194,13 @@ def _finished_summary(options: RunOptions, payload: dict) -> dict:
         f"registration register: run already complete (checkpoint {options.checkpoint}); delete it to recompute"
     )
     return json.loads(summary_path.read_text())
+
+
+def input_warnings(plan: RunPlan) -> list[str]:
+    """The warnings of :func:`~registration.recorded.reading.unitcheck.angle_unit_warnings` for
+    every input file of ``plan`` (angle columns that seem to hold radians), in reading order."""
+    if plan.form == "synchronous":
+        jobs = [(plan.inputs[0], sync_layout())]
+    else:
+        jobs = [(s.path, s.layout) for s in plan_sources(plan.inputs, plan.navs, plan.pairing)]
+    return [w for path, layout in jobs for w in angle_unit_warnings(path, layout)]

@@ -5,7 +5,7 @@ Each stage is a module of its own and hands its result to the next:
 1. :func:`~registration.recorded.run.plan.plan_run`: check the inputs and ``--out``, fingerprint the
    inputs, find the checkpoint to resume from, and choose the run's own folder inside ``--out``
    (:mod:`registration.io.output.outfolder`);
-2. :func:`~registration.recorded.reading.unitcheck.input_warnings`: angle columns that seem to hold
+2. :func:`~registration.recorded.run.plan.input_warnings`: angle columns that seem to hold
    radians (printed at once, listed in the summary);
 3. :func:`~registration.recorded.pairing.paired.pair_inputs` (two plot files only): the published
    synchronous table ``paired.csv|parquet``;
@@ -28,14 +28,13 @@ import time
 
 from registration.io.files.tablefile import NoValidRowsError
 from registration.io.output.outfolder import discard, publish, records_folder
+from registration.recorded.options import RunOptions
 from registration.recorded.output.plots import series_from_outputs, write_plots
 from registration.recorded.output.report import build_summary
 from registration.recorded.output.writers import write_json_atomic
 from registration.recorded.pairing.paired import pair_inputs
-from registration.recorded.reading.unitcheck import input_warnings
 from registration.recorded.run.filtering import filter_table
-from registration.recorded.run.options import RunOptions
-from registration.recorded.run.plan import RunPlan, plan_run
+from registration.recorded.run.plan import RunPlan, input_warnings, plan_run
 from registration.recorded.run.runstate import mark_done
 
 __all__ = ["run_register"]

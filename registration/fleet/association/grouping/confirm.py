@@ -22,7 +22,7 @@ import numpy as np
 from registration.fleet.association.grouping.geometry import Assigner, PlotGeometry, plot_geometry
 from registration.fleet.association.grouping.groups import group_tracklets
 from registration.fleet.association.grouping.match import chain_groups, make_tracklets
-from registration.fleet.association.joining.units import make_units
+from registration.fleet.association.grouping.units import make_units
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.batch.solver import progress_status
 from registration.fleet.data.problem import FleetProblem

@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association.joining.units import Units
+from registration.fleet.association.grouping.units import Units
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.solves import Registrar
 

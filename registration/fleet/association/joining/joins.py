@@ -1,4 +1,4 @@
-"""Joining tracks (units, :mod:`.units`) to the anchor targets (:mod:`.curves`), robustly
+"""Joining tracks (units, :mod:`..grouping.units`) to the anchor targets (:mod:`.curves`), robustly
 (:func:`join_units`).
 
 A pass tests every track not yet joined against every anchor whose span it overlaps
@@ -29,7 +29,7 @@ import numpy as np
 from scipy.stats import chi2
 
 from registration.fleet.association.grouping.confirm import new_names
-from registration.fleet.association.inputs import labelled_problem
+from registration.fleet.association.grouping.units import Units, split_units, unit_conflicts
 from registration.fleet.association.joining.attach import (
     Pairs,
     candidate_plots,
@@ -46,8 +46,8 @@ from registration.fleet.association.joining.checks import (
     registered_labels,
 )
 from registration.fleet.association.joining.curves import anchor_curves, fit_windows, join_fits
-from registration.fleet.association.joining.units import Units, split_units, unit_conflicts
 from registration.fleet.association.options import AssociationOptions
+from registration.fleet.association.problems import labelled_problem
 from registration.fleet.association.solves import Registrar
 from registration.fleet.batch.solver import progress_status
 
@@ -68,7 +68,7 @@ MAX_SPLIT_DEPTH = 6
 def _margins(pairs: Pairs, cand: np.ndarray, lp: np.ndarray, conflicts: np.ndarray, log_ratio: float):
     """(positions in ``cand`` of each unit's best candidate, their margin): the log tail-probability
     ratio to the unit's next candidate and to the candidates for the same target of the units that
-    conflict with it (:func:`~registration.fleet.association.joining.units.unit_conflicts`) and have that
+    conflict with it (:func:`~registration.fleet.association.grouping.units.unit_conflicts`) and have that
     target among their own best (within ``log_ratio`` of their best)."""
     unit, target = pairs.unit[cand], pairs.target[cand]
     best = np.flatnonzero(np.r_[True, unit[1:] != unit[:-1]])
@@ -215,7 +215,7 @@ def _label_verified(
 
 
 def _split(units: Units, state: JoinState, problem, options: AssociationOptions):
-    """Split in halves (:func:`~registration.fleet.association.joining.units.split_units`) the units not
+    """Split in halves (:func:`~registration.fleet.association.grouping.units.split_units`) the units not
     joined that failed, matched no target or stayed ambiguous, and have at least twice
     ``min_join_plots`` plots over at least two windows: (units, number split). The halves of a
     track that holds two objects can each join theirs (the report notes a given track whose pieces
