@@ -5,10 +5,11 @@ time-aligns both sensors to common fusion instants, moves the radar into the cam
 with its covariance and fuses (Wang, Liu & Gao 2017, eqs. 7-12), and prints the 3-D position RMSE
 in range bins for radar only, camera angles with radar range, and fused (plus the joint update).
 
-Writes into ``--out DIR`` (default ``out/landing``): ``summary.json`` (``bins``: ``range_min_m, range_max_m, rmse_radar_m,
-rmse_camera_m, rmse_fused_m`` and more) and, unless ``--no-plots``, ``attitude.png`` (Fig. 1),
-``variance_ratios.png`` (Figs. 2-3), ``rmse.png`` (Fig. 4) and ``fused_polar.png`` (Fig. 5); an earlier
-run's outputs there are replaced only once all are written (:mod:`registration.cli.staging`).
+Writes into ``--out DIR`` (default ``out/landing``): ``summary.json`` (``bins``: ``range_min_m,
+range_max_m, rmse_radar_m, rmse_camera_m, rmse_fused_m`` and more) and, unless ``--no-plots``,
+``attitude.png`` (Fig. 1), ``variance_ratios.png`` (Figs. 2-3), ``rmse.png`` (Fig. 4) and
+``fused_polar.png`` (Fig. 5); an earlier run's outputs there are replaced only once all are written
+(:mod:`registration.cli.staging`).
 
 Units at this edge: metres, seconds, degrees (``_deg``), milliradians (``_mrad``) for angle noise
 and milliseconds (``_ms``) for clock offsets; SI and radians inside.
@@ -45,7 +46,10 @@ LANDING_OUTPUTS = frozenset(
     {"summary.json", "attitude.png", "variance_ratios.png", "rmse.png", "fused_polar.png"}
 )
 
-HELP = "simulate a carrier approach and fuse the landing radar with the centreline camera: position RMSE by range bin, plots"
+HELP = (
+    "simulate a carrier approach and fuse the landing radar with the centreline camera: position RMSE by "
+    "range bin, plots"
+)
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -245,7 +249,8 @@ def _check_args(args: argparse.Namespace) -> None:
         raise ValueError(f"--ship-speed-mps: expected >= 0 m/s, got {args.ship_speed_mps}")
     if not args.start_range_m > args.end_range_m >= 0:
         raise ValueError(
-            f"--start-range-m, --end-range-m: expected start > end >= 0 m, got {args.start_range_m}, {args.end_range_m}"
+            f"--start-range-m, --end-range-m: expected start > end >= 0 m, got {args.start_range_m}, "
+            f"{args.end_range_m}"
         )
     ratio = args.bin_m / args.plot_bin_m
     if abs(ratio - round(ratio)) > 1e-9:
@@ -293,8 +298,9 @@ def _report(
 ) -> tuple[dict, np.ndarray]:
     """Print the RMSE table, the mean NEES and the paired z-scores; return NEES per method and z per bin."""
     print(
-        f"registration landing: {args.runs} Monte Carlo runs of a {sc.duration_s:.1f} s approach "
-        f"(closure {sc.closure_speed_mps:.1f} m/s), {mc.t.size} fusion instants per run at {config.fusion_rate_hz:g} Hz"
+        f"registration landing: {args.runs} Monte Carlo runs of a {sc.duration_s:.1f} s approach (closure "
+        f"{sc.closure_speed_mps:.1f} m/s), {mc.t.size} fusion instants per run at {config.fusion_rate_hz:g} "
+        "Hz"
     )
     print("3-D position RMSE in the touchdown frame by range to the touchdown point:")
     print(_table(mc))

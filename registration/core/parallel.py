@@ -31,7 +31,8 @@ def require_distributed():
 
 
 def chunk_ranges(n: int, chunk: int, start: int = 0) -> list[tuple[int, int]]:
-    """``[(start, stop), ...]`` covering ``start .. start + n - 1`` in consecutive pieces of at most ``chunk``."""
+    """``[(start, stop), ...]`` covering ``start .. start
+    + n - 1`` in consecutive pieces of at most ``chunk``."""
     n, chunk = int(n), int(chunk)
     if chunk < 1:
         raise ValueError(f"chunk: expected at least 1 item per chunk, got {chunk}")

@@ -86,7 +86,8 @@ def fusion_instants(t_radar: np.ndarray, t_camera: np.ndarray, config: LandingCo
     )
     if hi <= lo:
         raise ValueError(
-            f"sensor data overlap too short: [{lo:.3f}, {hi:.3f}] s after removing half_window_s = {config.half_window_s} s at each end"
+            f"sensor data overlap too short: [{lo:.3f}, {hi:.3f}] s after removing half_window_s = "
+            f"{config.half_window_s} s at each end"
         )
     step = 1.0 / config.fusion_rate_hz
     return lo + step * np.arange(int(np.floor((hi - lo) / step)) + 1)
@@ -99,7 +100,8 @@ def _runs_first(name: str, value, width: int, n_t: int) -> np.ndarray:
         arr = arr[None]
     if arr.ndim != 3 or arr.shape[1:] != (n_t, width):
         raise ValueError(
-            f"{name}: expected shape ({n_t}, {width}) or (R, {n_t}, {width}) to match its timestamps, got {arr.shape}"
+            f"{name}: expected shape ({n_t}, {width}) or (R, {n_t}, {width}) to match its timestamps, got "
+            f"{arr.shape}"
         )
     return arr
 
@@ -118,7 +120,8 @@ def _check_tracks(t_radar, polar_rdr, sigma_rdr, t_camera, angles_cam, sigma_cam
     s_c = as_float_array("sigma_cam", sigma_cam)
     if s_r.shape != (3,) or s_c.shape != (2,):
         raise ValueError(
-            f"sigma_rdr: expected 3 values [m, rad, rad], sigma_cam 2 values [rad, rad]; got {s_r.shape}, {s_c.shape}"
+            f"sigma_rdr: expected 3 values [m, rad, rad], sigma_cam 2 values [rad, rad]; got {s_r.shape}, "
+            f"{s_c.shape}"
         )
     check_positive("sigma_rdr", s_r, "[m, rad, rad]")
     check_positive("sigma_cam", s_c, "[rad, rad]")

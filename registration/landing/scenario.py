@@ -119,7 +119,8 @@ class Approach:
             raise ValueError(f"glide_slope_rad: expected [0, 0.52) rad, got {self.glide_slope_rad!r}")
         if not self.start_range_m > self.end_range_m >= 0:
             raise ValueError(
-                f"start_range_m > end_range_m >= 0 (m) required, got {self.start_range_m!r}, {self.end_range_m!r}"
+                f"start_range_m > end_range_m >= 0 (m) required, got {self.start_range_m!r}, "
+                f"{self.end_range_m!r}"
             )
         if not self.ground_speed_mps > 0:
             raise ValueError(f"ground_speed_mps: expected > 0 m/s, got {self.ground_speed_mps!r}")

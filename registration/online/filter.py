@@ -283,7 +283,8 @@ class OnlineRegistrar:
             info = out["info_new"][n - 1] if n else self.info
             if not partial:
                 raise RuntimeError(
-                    f"row {self.n_updates + n}: the filter step produced non-finite values; state left unchanged"
+                    f"row {self.n_updates + n}: the filter step produced non-finite values; state left "
+                    "unchanged"
                 )
         if n:
             window = np.concatenate([self._state("window"), x[:n]])[-self._q_window :]

@@ -126,7 +126,8 @@ def _direction(names) -> np.ndarray:
 
 
 def _select_quantities(runs, status_counts, combo_counts, include_weak, sums_requested) -> tuple[list, dict]:
-    """Identifiable (in every run) states, then identifiable sums, then flagged weak states and requested sums."""
+    """Identifiable (in every run) states, then identifiable
+    sums, then flagged weak states and requested sums."""
     quantities: list[Quantity] = []
     excluded = {}
     for i, name in enumerate(STATE_NAMES):

@@ -68,7 +68,8 @@ def sweep_table(parameter: str, values, results: list[MonteCarloResult]):
 
 
 def write_sweep_table(table, path, fmt: str = "csv") -> Path:
-    """Write the table as ``path`` with the suffix of ``fmt`` (``"csv"`` or ``"parquet"``); returns the path."""
+    """Write the table as ``path`` with the suffix of
+    ``fmt`` (``"csv"`` or ``"parquet"``); returns the path."""
     if fmt not in ("csv", "parquet"):
         raise ValueError(f"format: expected 'csv' or 'parquet', got {fmt!r}")
     path = Path(path).with_suffix("." + fmt)

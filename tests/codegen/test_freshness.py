@@ -109,7 +109,8 @@ def test_regeneration_is_deterministic(fresh_check):
     assert files == sorted(p.name for p in (REPO / "generated").iterdir() if p.is_file())
     for f in files:
         assert (fresh / f).read_bytes() == (REPO / "generated" / f).read_bytes(), (
-            f"{f}: two generations differ (derive/ changed without `{REGEN}`, or emission is not deterministic)"
+            f"{f}: two generations differ (derive/ changed without `{REGEN}`, or emission is not "
+            "deterministic)"
         )
 
 

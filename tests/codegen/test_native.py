@@ -21,7 +21,8 @@ from registration.online.scenario import paper_scenario
 
 STEPS = ("kalman_step_fitted_standard", "kalman_step_fitted_standard_carlson")
 UPDATE = {"kalman_step_fitted_standard": "joseph", "kalman_step_fitted_standard_carlson": "carlson"}
-#: prior sigmas: the default, and one with sigmas from 1e-12 rad to 1e5 m and no process noise (cond(P) ~ 1e37)
+# : prior sigmas: the default, and one with sigmas from 1e-12 rad to 1e5 m and no process noise (cond(P) ~
+# 1e37)
 PRIORS = {
     "default": {},
     "ill": {"prior_sigma": (1e-12, 1e-3, 1e-12, 1e5, 1e-12, 1e-3) * 2, "q_sigma": (0.0,) * N_STATE},

@@ -79,7 +79,8 @@ _BUFFER = ("time", "sensor", "target", "meas", "mask", "nav", "row")
 class OnlineOptions:
     """Settings of :class:`FleetFilter`.
 
-    window_s, degree: the target windows, as in the batch (:class:`~registration.fleet.batch.solver.BatchOptions`);
+    window_s, degree: the target windows, as in the batch
+    (:class:`~registration.fleet.batch.solver.BatchOptions`);
         an epoch is one window of the absolute time grid. epoch_s: with ``window_s = 0``, the
         length (s) of an epoch of instants (0: one instant per epoch). q_angle (rad/sqrt(s)), q_range
         (m/sqrt(s); range biases and position errors), q_gain (1/sqrt(s); range gains), q_time

@@ -106,8 +106,9 @@ class OnlineResult:
             return None
         lo, hi = c.interval
         return (
-            f"normalised innovations (information on the filter's covariance, not the verdict): mean {c.mean:.4g} "
-            f"per degree of freedom over {c.samples}, band for independent samples [{lo:.3g}, {hi:.3g}]"
+            "normalised innovations (information on the filter's covariance, not the verdict): mean "
+            f"{c.mean:.4g} per degree of freedom over {c.samples}, band for independent samples [{lo:.3g}, "
+            f"{hi:.3g}]"
         )
 
     def combination(self, coefficients: dict) -> tuple[float, float]:

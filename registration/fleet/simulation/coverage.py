@@ -51,7 +51,8 @@ DEFAULT_COVERAGE = {
 
 
 def coverage_for(sigma) -> Coverage:
-    """The default coverage of a sensor from its noise sigmas (range, bearing, elevation; NaN: not measured)."""
+    """The default coverage of a sensor from its noise
+    sigmas (range, bearing, elevation; NaN: not measured)."""
     has = np.isfinite(np.asarray(sigma, dtype=float))
     kind = {
         (True, True, True): "3d",

@@ -23,7 +23,8 @@ __all__ = ["DifferenceStats", "Outputs", "output_paths", "estimate_frame", "posi
 
 
 def output_paths(options: RunOptions, folder: Path | None = None) -> dict[str, Path]:
-    """Paths of the estimates, positions and rejected outputs of a run in ``folder`` (default: ``options.out``)."""
+    """Paths of the estimates, positions and rejected outputs
+    of a run in ``folder`` (default: ``options.out``)."""
     out, ext = options.out if folder is None else Path(folder), options.output_suffix
     return {
         "estimates": out / f"estimates{ext}",

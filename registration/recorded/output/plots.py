@@ -103,7 +103,8 @@ def series_from_outputs(table_path: Path, options: RunOptions, folder: Path, reg
 
 
 def _rows_of(path, columns, rows: np.ndarray) -> np.ndarray:
-    """(len(rows), len(columns)) numbers of the given absolute rows (ascending) of a table; NaN if not a number."""
+    """(len(rows), len(columns)) numbers of the given absolute
+    rows (ascending) of a table; NaN if not a number."""
     out, i = np.full((len(rows), len(columns)), np.nan), 0
     for first, frame in iter_frames(path, columns, READ_ROWS):
         j = np.searchsorted(rows, first + len(frame))

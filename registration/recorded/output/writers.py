@@ -40,8 +40,9 @@ class CsvAppender:
             actual = self.path.stat().st_size if self.path.exists() else -1
             if actual < size:
                 raise CheckpointError(
-                    f"{self.path} holds {max(actual, 0)} bytes but the checkpoint recorded {size}: the output was "
-                    "truncated or replaced after the checkpoint, so rows would be lost; delete the checkpoint to start over"
+                    f"{self.path} holds {max(actual, 0)} bytes but the checkpoint recorded {size}: the "
+                    "output was truncated or replaced after the checkpoint, so rows would be lost; delete "
+                    "the checkpoint to start over"
                 )
             self._f = open(self.path, "r+b")
             self._f.truncate(size)
@@ -125,7 +126,8 @@ class PartsWriter:
             missing = [self._name(i) for i in range(self.size) if self._name(i) not in present]
             if missing:
                 raise CheckpointError(
-                    f"{self.path}: part(s) {missing[:3]} recorded by the checkpoint are missing; delete the checkpoint to start over"
+                    f"{self.path}: part(s) {missing[:3]} recorded by the checkpoint are missing; delete the "
+                    "checkpoint to start over"
                 )
             for name in present:
                 if int(name[5:11]) >= self.size:

@@ -37,7 +37,8 @@ __all__ = ["pair_inputs"]
 
 
 def pair_inputs(plan: RunPlan, options: RunOptions) -> Table:
-    """The published paired table of ``plan``'s inputs in the run folder (made now unless a matching one exists)."""
+    """The published paired table of ``plan``'s inputs in
+    the run folder (made now unless a matching one exists)."""
     folder = plan.folder
     paired = folder.path / f"paired{options.output_suffix}"
     meta_path = folder.path / "pairing.json"

@@ -60,7 +60,8 @@ def _plot_sensors(inputs: list[Path], cols: list[set[str]]) -> list[str]:
         sensors[1] = "a" if sensors[0] == "b" else "b"
     if sensors[0] == sensors[1]:
         raise ValueError(
-            f"both plot files {inputs[0]} and {inputs[1]} hold radar {sensors[0].upper()}'s plots (column prefix)"
+            f"both plot files {inputs[0]} and {inputs[1]} hold radar {sensors[0].upper()}'s plots (column "
+            "prefix)"
         )
     return sensors
 
@@ -86,7 +87,8 @@ def _nav_source(path: Path) -> Source:
     ships = tuple(s for s in ("a", "b") if any(f"{s}_{f.file_name}" in cols for f in NAV_FIELDS))
     if not ships:
         raise ValueError(
-            f"navigation file {path}: no navigation columns; expected time_s and a_lat_deg ... a_roll_deg and/or b_lat_deg ... b_roll_deg"
+            f"navigation file {path}: no navigation columns; expected time_s and a_lat_deg ... a_roll_deg "
+            "and/or b_lat_deg ... b_roll_deg"
         )
     return Source(
         path,
@@ -110,10 +112,12 @@ def plan_sources(inputs: list[Path], navs: list[Path], options: PairingOptions) 
         given = [src for src in sources if s in src.nav_of]
         if not given:
             raise ValueError(
-                f"no navigation for ship {s.upper()}: give it in its plot file ({', '.join(f.file_name for f in NAV_FIELDS)}) or in a --nav file (prefixed {s}_)"
+                f"no navigation for ship {s.upper()}: give it in its plot file "
+                f"({', '.join(f.file_name for f in NAV_FIELDS)}) or in a --nav file (prefixed {s}_)"
             )
         if len(given) > 1:
             raise ValueError(
-                f"navigation of ship {s.upper()} is given twice ({given[0].path} and {given[1].path}); give it once"
+                f"navigation of ship {s.upper()} is given twice ({given[0].path} and {given[1].path}); give "
+                "it once"
             )
     return sorted(sources[:2], key=lambda src: src.plots_of) + sources[2:]

@@ -53,9 +53,9 @@ def angle_unit_warnings(path, layout: Layout, sample_rows: int = SAMPLE_ROWS) ->
     for f, peak in peaks.items():
         if f.kind in _COMPASS and peak is not None and 0 < peak[0] <= 2 * math.pi:
             out.append(
-                f"{path}: column {f.file_name!r} is in degrees by its name, but its first {peak[1]} values all lie "
-                f"within +-{peak[0]:.3g} (radians lie within +-6.28): radians? (if they are degrees, the "
-                f"{f.kind} stays within {peak[0]:.3g} deg of 0 and this warning can be ignored)"
+                f"{path}: column {f.file_name!r} is in degrees by its name, but its first {peak[1]} values "
+                f"all lie within +-{peak[0]:.3g} (radians lie within +-6.28): radians? (if they are degrees, "
+                f"the {f.kind} stays within {peak[0]:.3g} deg of 0 and this warning can be ignored)"
             )
     for lat in (f for f in peaks if f.kind == "lat"):
         lon = next((f for f in peaks if f.kind == "lon" and f.prefix == lat.prefix), None)
@@ -68,8 +68,9 @@ def angle_unit_warnings(path, layout: Layout, sample_rows: int = SAMPLE_ROWS) ->
             and b[0] <= 2 * math.pi
         ):
             out.append(
-                f"{path}: columns {lat.file_name!r} and {lon.file_name!r} are in degrees by their names, but their "
-                f"first {min(a[1], b[1])} values all lie within +-{a[0]:.3g} and +-{b[0]:.3g}: radians? (if they "
-                "are degrees, the ship sails within 1.6 deg of 0 N, 0 E and this warning can be ignored)"
+                f"{path}: columns {lat.file_name!r} and {lon.file_name!r} are in degrees by their names, but "
+                f"their first {min(a[1], b[1])} values all lie within +-{a[0]:.3g} and +-{b[0]:.3g}: "
+                "radians? (if they are degrees, the ship sails within 1.6 deg of 0 N, 0 E and this warning "
+                "can be ignored)"
             )
     return out

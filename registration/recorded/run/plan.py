@@ -146,8 +146,9 @@ def _matching_checkpoint(options: RunOptions, fp: str) -> dict:
     payload = load_checkpoint(options.checkpoint)
     if payload.get("fingerprint") != fp:
         raise CheckpointError(
-            f"checkpoint {options.checkpoint} was written for other input files or options (its fingerprint does not "
-            "match these inputs' contents and options); rerun the exact command that wrote it, or delete it to start over"
+            f"checkpoint {options.checkpoint} was written for other input files or options (its fingerprint "
+            "does not match these inputs' contents and options); rerun the exact command that wrote it, or "
+            "delete it to start over"
         )
     return payload
 
@@ -165,8 +166,8 @@ def _resume_folder(options: RunOptions, payload: dict, fp: str) -> RunFolder:
         return RunFolder(options.out, path)
     if path is not None and _summary_fingerprint(options.out) != fp:
         raise CheckpointError(
-            f"checkpoint {options.checkpoint} continues a run whose unfinished outputs were in {path}, which no longer "
-            "exists; delete the checkpoint to start over"
+            f"checkpoint {options.checkpoint} continues a run whose unfinished outputs were in {path}, which "
+            "no longer exists; delete the checkpoint to start over"
         )
     folder = RunFolder(options.out, options.out)
     mark_in_place(folder, options.checkpoint)
@@ -188,10 +189,12 @@ def _finished_summary(options: RunOptions, payload: dict) -> dict:
     summary_path = options.out / "summary.json"
     if not summary_path.exists():
         raise CheckpointError(
-            f"checkpoint {options.checkpoint} says the run is complete but {summary_path} is missing; delete the checkpoint to recompute"
+            f"checkpoint {options.checkpoint} says the run is complete but {summary_path} is missing; delete "
+            "the checkpoint to recompute"
         )
     options.message(
-        f"registration register: run already complete (checkpoint {options.checkpoint}); delete it to recompute"
+        f"registration register: run already complete (checkpoint {options.checkpoint}); delete it to "
+        "recompute"
     )
     return json.loads(summary_path.read_text())
 

@@ -86,9 +86,12 @@ def _split_notes(
         why = []
         for i in sel[gaps[sel] | jumps[sel]]:
             j = sel[np.searchsorted(time[sel], time[i]) - 1]
-            why.append(
-                f"at {time[i]:g} s ({'gap of %.3g s' % (time[i] - time[j]) if gaps[i] else 'jump: %.3g sigma off its prediction' % np.sqrt(d2[i])})"
+            reason = (
+                "gap of %.3g s" % (time[i] - time[j])
+                if gaps[i]
+                else "jump: %.3g sigma off its prediction" % np.sqrt(d2[i])
             )
+            why.append(f"at {time[i]:g} s ({reason})")
         sensor = problem.sensor_ids[problem.sensor[plots[sel[0]]]]
         notes.append(
             f"sensor {sensor} {names[sel[0]]}: split into {len(why) + 1} pieces, "

@@ -12,13 +12,14 @@ A pass tests every track not yet joined against every anchor whose span it overl
   yet takes one join per round, the most certain, before its other tracks are judged.
 
 The joins are registered (:class:`~registration.fleet.association.solves.Registrar`), and each join's
-residuals under the new estimate are tested (:func:`~registration.fleet.association.joining.checks.failing_joins`): a join whose squared
-normalised residuals exceed the chi-square ``1 - drop_probability`` quantile is dropped, the worst
-of each sensor first (one wrong join can make good ones fail), the registration made again, until
-none fails. A dropped pair is not taken again. Passes repeat until nothing changes. Then the
-final stage leaves out single associated plots whose residuals exceed the ``1 -
-outlier_probability`` quantile (:func:`~registration.fleet.association.joining.checks.outlier_stage`) and the last registration uses the accepted
-plots only.
+residuals under the new estimate are tested
+(:func:`~registration.fleet.association.joining.checks.failing_joins`): a join whose squared normalised
+residuals exceed the chi-square ``1 - drop_probability`` quantile is dropped, the worst of each sensor
+first (one wrong join can make good ones fail), the registration made again, until none fails. A dropped
+pair is not taken again. Passes repeat until nothing changes. Then the final stage leaves out single
+associated plots whose residuals exceed the ``1 - outlier_probability`` quantile
+(:func:`~registration.fleet.association.joining.checks.outlier_stage`) and the last registration uses the
+accepted plots only.
 """
 
 from __future__ import annotations

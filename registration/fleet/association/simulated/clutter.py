@@ -115,7 +115,8 @@ def association_scenario(
 ) -> AssociationScenario:
     """The plots of ``n_targets`` targets with misses and clutter (module docstring); ``angle_bias``
     (rad) is the size of every angle bias (bearing and elevation), random signs; ``fleet``: other
-    :func:`~registration.fleet.simulation.scenario.fleet_scenario` arguments (range_bias, heading_error, ...)."""
+    :func:`~registration.fleet.simulation.scenario.fleet_scenario` arguments (range_bias, heading_error,
+    ...)."""
     if n_targets < 1 or not 0 <= p_missed < 1 or clutter_per_scan < 0:
         raise ValueError(
             f"n_targets >= 1, p_missed in [0, 1), clutter_per_scan >= 0; got {n_targets}, {p_missed}, "
