@@ -74,6 +74,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--max-plot-points", type=int, default=2000, metavar="N", help="points drawn per set in the plots"
     )
+    _add_geometry_options(parser)
+    _add_sensor_options(parser)
+
+
+def _add_geometry_options(parser: argparse.ArgumentParser) -> None:
+    """Where the second site and the target lie (default: the scenario's)."""
     g = parser.add_argument_group("geometry (radar A at the origin, azimuth counter-clockwise from +x)")
     g.add_argument(
         "--baseline-m",
@@ -112,6 +118,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         metavar="DEG",
         help="true target elevation from the radar, deg; giving it makes the problem 3-D; default: 2-D",
     )
+
+
+def _add_sensor_options(parser: argparse.ArgumentParser) -> None:
+    """The radar's and the second sensor's noise, and what the second sensor measures (default: the
+    scenario's)."""
     s = parser.add_argument_group("sensors")
     s.add_argument(
         "--sigma-range-m",

@@ -72,6 +72,26 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         help="stop at the first bad row, or skip: set bad rows aside in rejected.csv",
     )
     p.add_argument("--format", choices=["csv", "parquet"], default="csv", help="format of the outputs")
+    _add_filter_options(p)
+    p.add_argument(
+        "--validate-only", action="store_true", help="check every row and report, without estimating"
+    )
+    add_no_plots(p)
+    p.add_argument("--no-progress", action="store_true", help="no progress bar")
+    add_allow_inconsistent(p)
+    p.add_argument(
+        "--each",
+        action="store_true",
+        help="every INPUT is a synchronous table of its own: one registration per file, "
+        "into DIR/<file stem>/",
+    )
+    add_dask(p, "files of --each")
+    _add_asynchronous_options(p)
+
+
+def _add_filter_options(p: argparse.ArgumentParser) -> None:
+    """The filter's model and noise: linearisation, process noise, rotation T, radar sigmas, and
+    where the information matrix is taken."""
     p.add_argument(
         "--linearization",
         choices=list(LINEARIZATIONS),
@@ -105,19 +125,10 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         default="final",
         help="information matrix at the final estimate (second pass) or as the filter accumulated it",
     )
-    p.add_argument(
-        "--validate-only", action="store_true", help="check every row and report, without estimating"
-    )
-    add_no_plots(p)
-    p.add_argument("--no-progress", action="store_true", help="no progress bar")
-    add_allow_inconsistent(p)
-    p.add_argument(
-        "--each",
-        action="store_true",
-        help="every INPUT is a synchronous table of its own: one registration per file, "
-        "into DIR/<file stem>/",
-    )
-    add_dask(p, "files of --each")
+
+
+def _add_asynchronous_options(p: argparse.ArgumentParser) -> None:
+    """The pairing of the asynchronous form's two plot files: clock offsets and interpolation."""
     g = p.add_argument_group("asynchronous form (two plot files)")
     g.add_argument(
         "--clock-offset-a",
