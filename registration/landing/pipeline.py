@@ -163,6 +163,37 @@ def _run_major(y: np.ndarray, runs: int, k: int) -> np.ndarray:
     return y.reshape(m, runs, k).transpose(1, 0, 2).reshape(runs * m, k)
 
 
+def _align_tracks(
+    t_r: np.ndarray, pol: np.ndarray, t_c: np.ndarray, ang: np.ndarray, tau: np.ndarray, config: LandingConfig
+):
+    """Both tracks aligned at the fusion instants ``tau``: (the radar's alignment, the camera's, the
+    mask (len(tau),) of the instants both sensors can evaluate); ValueError when there is none."""
+    ra = _align_runs(
+        "radar track (t = t_radar, y = polar_rdr as columns [r, a, b] per run)",
+        t_r,
+        pol,
+        tau,
+        config.radar_clock_offset_s,
+        1,
+        config,
+    )
+    ca = _align_runs(
+        "camera track (t = t_camera, y = angles_cam as columns [a, b] per run)",
+        t_c,
+        ang,
+        tau,
+        config.camera_clock_offset_s,
+        0,
+        config,
+    )
+    ok = ra.valid & ca.valid
+    if not ok.any():
+        raise ValueError(
+            "no fusion instant can be evaluated by both sensors; check the timestamps and window"
+        )
+    return ra, ca, ok
+
+
 def process(
     t_radar,
     polar_rdr,
@@ -199,29 +230,7 @@ def process(
     )
     runs = pol.shape[0]
     tau = fusion_instants(t_r, t_c, config) if t_fusion is None else as_float_array("t_fusion", t_fusion)
-    ra = _align_runs(
-        "radar track (t = t_radar, y = polar_rdr as columns [r, a, b] per run)",
-        t_r,
-        pol,
-        tau,
-        config.radar_clock_offset_s,
-        1,
-        config,
-    )
-    ca = _align_runs(
-        "camera track (t = t_camera, y = angles_cam as columns [a, b] per run)",
-        t_c,
-        ang,
-        tau,
-        config.camera_clock_offset_s,
-        0,
-        config,
-    )
-    ok = ra.valid & ca.valid
-    if not ok.any():
-        raise ValueError(
-            "no fusion instant can be evaluated by both sensors; check the timestamps and window"
-        )
+    ra, ca, ok = _align_tracks(t_r, pol, t_c, ang, tau, config)
     tau = tau[ok]
     att_m = as_attitude(attitude_fn(tau))
     if att_m.shape != (tau.size, 3):

@@ -22,7 +22,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from registration.fleet.association.joining.curves import fit_windows
+from registration.fleet.association.joining.windowfit import fit_windows
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.problems import labelled_problem
 from registration.fleet.batch.solve import solve_batch
@@ -143,10 +143,10 @@ class Registrar:
         return result
 
     def labelled_fit(self):
-        """The windows of the last solve's targets fitted to all their plots (the problem the solve
-        would have had without its subsample) under its estimate
-        (:func:`~registration.fleet.association.joining.curves.fit_windows`; computed once per solve, started
-        from the windows of the last such fit)."""
+        """The windows of the last solve's targets fitted to all their plots (the problem the solve would
+        have had without its subsample) under its estimate
+        (:func:`~registration.fleet.association.joining.windowfit.fit_windows`; computed once per solve,
+        started from the windows of the last such fit)."""
         if self._fit is None:
             self._fit = fit_windows(
                 labelled_problem(self.problem, self.labels, self.refs, self.margin_s),

@@ -46,9 +46,8 @@ from registration.fleet.association.joining.checks import (
     drop_failing,
     registered_labels,
 )
-from registration.fleet.association.joining.curves import anchor_curves, fit_windows, join_fits
+from registration.fleet.association.joining.passcurves import pass_curves
 from registration.fleet.association.options import AssociationOptions
-from registration.fleet.association.problems import labelled_problem
 from registration.fleet.association.solves import Registrar
 from registration.fleet.batch.solver import progress_status
 
@@ -277,59 +276,39 @@ def _prescreen(
     return (dof > 0) & (d2 < FAR_OFF * chi2.ppf(options.gate_probability, np.maximum(dof, 1)))
 
 
-def _curves(reg: Registrar, labels: np.ndarray, prov: np.ndarray, options: AssociationOptions, cache: dict):
-    """The anchors' curves: the registered targets, the provisional ones and the references (the same
-    as the last ones while neither the estimate nor the provisional targets changed, ``cache``: joins
-    since the last solve barely move a curve)."""
-    lab = np.where((prov != "") & (labels == ""), prov, labels)
-    key = (reg.solves, tuple(np.unique(prov[prov != ""])))
-    if cache.get("key") == key:
-        return cache["curves"]
-    fit = _fit(reg, lab, cache)
-    cache["key"], cache["curves"] = (
-        key,
-        anchor_curves(
-            None,
-            reg.x,
-            reg.refs,
-            reg.between,
-            fit=fit,
-            gap_s=options.reference_gap_s,
-            accel_sigma=options.reference_accel_sigma,
-            surface=reg.problem.surface,
-        ),
+def _pass_joins(
+    reg: Registrar,
+    units: Units,
+    state: JoinState,
+    labels: np.ndarray,
+    prov: np.ndarray,
+    sources: np.ndarray | None,
+    conflicts: np.ndarray,
+    options: AssociationOptions,
+    cache: dict,
+) -> tuple[list[int], np.ndarray]:
+    """The joins of one pass: the free units (not joined, not a provisional target's ``sources``)
+    tested against the anchors' curves of the registered ``labels`` and the provisional targets
+    ``prov`` (a position-fixing sensor's track never joins a provisional target), prescreened, then
+    chosen and labelled in ``state``. Returns (the units joined, (S,) True for the sensors with no
+    registered plot yet)."""
+    problem = reg.problem
+    fixing = (problem.layout.bias_index >= 0).all(axis=1)
+    curves = pass_curves(reg, labels, prov, options, cache)
+    free = np.flatnonzero(
+        (state.target == "") & ~np.isin(np.arange(units.n), sources if sources is not None else [])
     )
-    return cache["curves"]
-
-
-def _fit(reg: Registrar, lab: np.ndarray, cache: dict):
-    """The windows of the targets labelled in ``lab`` (N,) fitted under the latest estimate. Under the
-    same estimate as the last fit, the targets whose plots did not change keep their windows (with the
-    states held, each target's windows are fitted to its own plots) and only the others are fitted
-    (the provisional targets, say). After a solve of a subsample, its targets' windows fitted to all
-    their plots (for the checks) are such a last fit."""
-    last, last_lab, missing = None, None, set()
-    if cache.get("fit") is not None and cache.get("solves") == reg.solves:
-        last, last_lab = cache["fit"], cache["lab"]
-    elif reg.thinned:
-        last, last_lab = reg.labelled_fit(), reg.labels
-        missing = set(lab.tolist()) - set(last.names) - {""}  # targets it sets aside: seen by one sensor only
-    if last is not None:
-        changed = lab != last_lab
-        names = (set(lab[changed].tolist()) | set(last_lab[changed].tolist()) | missing) - {""}
-        redo = np.where(np.isin(lab, list(names)), lab, "") if names else np.full(lab.size, "", dtype=object)
-        fit = join_fits(last.without(names), _fit_windows(reg, redo))
-    else:
-        fit = _fit_windows(reg, lab)
-    cache["fit"], cache["lab"], cache["solves"] = fit, lab.copy(), reg.solves
-    return fit
-
-
-def _fit_windows(reg: Registrar, lab: np.ndarray):
-    problem = None
-    if (lab != "").any():
-        problem = labelled_problem(reg.problem, lab, reg.refs, reg.margin_s, keep_lone=True)
-    return fit_windows(problem, reg.x, reg.between)
+    u, t, plots, covered = candidate_plots(
+        problem, reg.x, units.of_plot, free, curves, k=options.test_plots, min_plots=options.min_join_plots
+    )
+    provisional = np.isin(np.array(curves.names, dtype=object)[t], np.unique(prov[prov != ""]))
+    keep = ~(provisional & fixing[units.sensor[u]]) if u.size else np.zeros(0, dtype=bool)
+    keep[keep] = _prescreen(reg, curves, u[keep], t[keep], plots[keep], options)
+    pairs = pair_tests(problem, reg.x, curves, u[keep], t[keep], plots[keep])
+    fresh = np.bincount(problem.sensor[labels != ""], minlength=len(problem.sensor_ids)) == 0
+    taken, dx, Pk = choose_joins(pairs, curves.names, reg.P, state, units, conflicts, fresh, options)
+    taken = _label_verified(reg, curves, state, units, taken, covered, dx, Pk, options)
+    return taken, fresh
 
 
 def join_units(
@@ -356,7 +335,6 @@ def join_units(
     passes, converged, splits, prov, sources = 0, False, 0, np.full(problem.n_plots, "", dtype=object), None
     cache: dict = {}
     deferred = False
-    fixing = (problem.layout.bias_index >= 0).all(axis=1)
     if state.label.any():
         reg.solve(registered_labels(base, state, prov))
         drop_failing(reg, state, units, base, prov, options)
@@ -364,26 +342,7 @@ def join_units(
     for passes in itertools.count(1):
         progress_status(bar, f"join pass {passes}: testing tracks against targets")
         labels = registered_labels(base, state, prov)
-        curves = _curves(reg, labels, prov, options, cache)
-        free = np.flatnonzero(
-            (state.target == "") & ~np.isin(np.arange(units.n), sources if sources is not None else [])
-        )
-        u, t, plots, covered = candidate_plots(
-            problem,
-            reg.x,
-            units.of_plot,
-            free,
-            curves,
-            k=options.test_plots,
-            min_plots=options.min_join_plots,
-        )
-        provisional = np.isin(np.array(curves.names, dtype=object)[t], np.unique(prov[prov != ""]))
-        keep = ~(provisional & fixing[units.sensor[u]]) if u.size else np.zeros(0, dtype=bool)
-        keep[keep] = _prescreen(reg, curves, u[keep], t[keep], plots[keep], options)
-        pairs = pair_tests(problem, reg.x, curves, u[keep], t[keep], plots[keep])
-        fresh = np.bincount(problem.sensor[labels != ""], minlength=len(problem.sensor_ids)) == 0
-        taken, dx, Pk = choose_joins(pairs, curves.names, reg.P, state, units, conflicts, fresh, options)
-        taken = _label_verified(reg, curves, state, units, taken, covered, dx, Pk, options)
+        taken, fresh = _pass_joins(reg, units, state, labels, prov, sources, conflicts, options, cache)
         dropped = 0
         if taken:
             added = np.isin(units.of_plot, taken) & (state.label != "")
