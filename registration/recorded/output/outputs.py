@@ -65,7 +65,7 @@ class Outputs:
     def marks(self) -> dict:
         """``{name: [size, rows]}`` and the run folder's name: what a checkpoint records to resume
         these outputs (no folder for a run resumed in ``--out`` itself)."""
-        marks = {
+        marks: dict[str, list | str] = {
             name: [w.size, w.rows] for name, w in zip(("estimates", "positions", "rejected"), self._all())
         }
         if not self.folder.in_place:

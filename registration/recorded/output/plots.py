@@ -111,7 +111,7 @@ def _rows_of(path, columns, rows: np.ndarray) -> np.ndarray:
         for c, name in enumerate(columns):
             if name in frame:
                 out[i:j, c] = _numeric(frame[name].iloc[rows[i:j] - first])
-        i = j
+        i = int(j)
     return out
 
 

@@ -4,6 +4,8 @@ gate, warnings about the inputs, outputs (where they are once published in ``--o
 
 from __future__ import annotations
 
+from typing import Sequence
+
 import numpy as np
 
 from registration.core.consistency import ConsistencyReport
@@ -36,7 +38,7 @@ def build_summary(
     state: RunState,
     options: RunOptions,
     elapsed_s: float,
-    warnings: list[str] = (),
+    warnings: Sequence[str] = (),
 ) -> dict:
     """The summary dict of a finished run that took ``elapsed_s`` seconds; ``warnings``: about its inputs."""
     final = options.observability == "final"

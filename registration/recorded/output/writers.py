@@ -13,6 +13,7 @@ import io
 import json
 import os
 from pathlib import Path
+from typing import BinaryIO
 
 import numpy as np
 
@@ -34,6 +35,8 @@ class CsvAppender:
     ):
         self.path = Path(path)
         self.columns = list(columns)
+        self._f: BinaryIO
+        self.rows: int | None
         header = (",".join(_csv_quote(c) for c in self.columns) + "\n").encode()
         if resume is not None:
             size, rows = resume

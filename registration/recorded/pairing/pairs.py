@@ -29,7 +29,7 @@ with the file length.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Iterator
+from typing import Any, Iterator
 
 import numpy as np
 
@@ -80,7 +80,7 @@ class Pairer:
         self._others = [s for s in self._streams if s is not self._ref]
         self._columns = self._plan_columns()
         self._need = options.degree + 2
-        self._counts = {
+        self._counts: dict[str, Any] = {
             "instants": 0,
             "paired": 0,
             "exact": 0,

@@ -51,13 +51,15 @@ def _sensor_of_plot_file(cols: set[str]) -> str | None:
 
 def _plot_sensors(inputs: list[Path], cols: list[set[str]]) -> list[str]:
     """'a'/'b' for each of the two plot files: by column prefix, else by position."""
-    sensors = [_sensor_of_plot_file(c) for c in cols]
-    if sensors[0] is None and sensors[1] is None:
-        sensors = ["a", "b"]
-    elif sensors[0] is None:
-        sensors[0] = "a" if sensors[1] == "b" else "b"
-    elif sensors[1] is None:
-        sensors[1] = "a" if sensors[0] == "b" else "b"
+    first, second = (_sensor_of_plot_file(c) for c in cols)
+    if first is None and second is None:
+        first, second = "a", "b"
+    elif first is None:
+        first = "a" if second == "b" else "b"
+    elif second is None:
+        second = "a" if first == "b" else "b"
+    assert first is not None and second is not None  # each branch above names both
+    sensors = [first, second]
     if sensors[0] == sensors[1]:
         raise ValueError(
             f"both plot files {inputs[0]} and {inputs[1]} hold radar {sensors[0].upper()}'s plots (column "
@@ -120,4 +122,5 @@ def plan_sources(inputs: list[Path], navs: list[Path], options: PairingOptions) 
                 f"navigation of ship {s.upper()} is given twice ({given[0].path} and {given[1].path}); give "
                 "it once"
             )
-    return sorted(sources[:2], key=lambda src: src.plots_of) + sources[2:]
+    # the first two sources are the plot files: plots_of is set
+    return sorted(sources[:2], key=lambda src: str(src.plots_of)) + sources[2:]

@@ -59,6 +59,8 @@ def angle_unit_warnings(path, layout: Layout, sample_rows: int = SAMPLE_ROWS) ->
             )
     for lat in (f for f in peaks if f.kind == "lat"):
         lon = next((f for f in peaks if f.kind == "lon" and f.prefix == lat.prefix), None)
+        if lon is None:
+            continue
         a, b = peaks[lat], peaks.get(lon)
         if (
             a is not None

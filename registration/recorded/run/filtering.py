@@ -82,14 +82,14 @@ def _start(plan: RunPlan, options: RunOptions) -> tuple[RunState, Outputs]:
         state = RunState(
             OnlineRegistrar(options.config), plot_series=PlotSeries(PLOT_POINTS) if options.plots else None
         )
-        return state, Outputs(options, plan.folder, keep_rejected=plan.form == "asynchronous")
+        return state, Outputs(options, plan.working_folder(), keep_rejected=plan.form == "asynchronous")
     payload = plan.resume
     options.message(
         f"registration register: resuming from checkpoint {options.checkpoint} at row "
         f"{payload['state']['rows_done']} (phase {payload['phase']})"
     )
     state = RunState.from_checkpoint(payload, options.config)
-    return state, Outputs(options, plan.folder, payload["outputs"])
+    return state, Outputs(options, plan.working_folder(), payload["outputs"])
 
 
 def _filter_pass(

@@ -59,6 +59,18 @@ class RunPlan:
     finished: dict | None = None
     folder: RunFolder | None = None  # where the run writes (None for a finished run)
 
+    def working_folder(self) -> RunFolder:
+        """The folder the run writes into (the plan of every run but a finished one has it)."""
+        if self.folder is None:
+            raise RuntimeError("the plan of a finished run has no folder to write into")
+        return self.folder
+
+    def async_pairing(self) -> PairingOptions:
+        """The pairing options of the asynchronous form (the synchronous form has none)."""
+        if self.pairing is None:
+            raise RuntimeError("the synchronous form has no pairing options")
+        return self.pairing
+
     def newlines(self, path: Path) -> int:
         return self.scans[str(path)][1]
 
@@ -205,5 +217,5 @@ def input_warnings(plan: RunPlan) -> list[str]:
     if plan.form == "synchronous":
         jobs = [(plan.inputs[0], sync_layout())]
     else:
-        jobs = [(s.path, s.layout) for s in plan_sources(plan.inputs, plan.navs, plan.pairing)]
+        jobs = [(s.path, s.layout) for s in plan_sources(plan.inputs, plan.navs, plan.async_pairing())]
     return [w for path, layout in jobs for w in angle_unit_warnings(path, layout)]

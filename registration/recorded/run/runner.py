@@ -54,20 +54,20 @@ def run_register(inputs, options: RunOptions) -> dict:
     plan = plan_run(inputs, options)
     if plan.finished is not None:
         return plan.finished
+    folder = plan.working_folder()
     try:
         summary = _run(plan, options, started)
     except NoValidRowsError:
-        publish(plan.folder)  # a complete answer: rejected.csv lists every row with its reason
+        publish(folder)  # a complete answer: rejected.csv lists every row with its reason
         raise
     except BaseException:
-        if not (options.checkpoint is not None and records_folder(options.checkpoint, plan.folder.path.name)):
-            discard(plan.folder)
+        if not (options.checkpoint is not None and records_folder(options.checkpoint, folder.path.name)):
+            discard(folder)
         raise
     if options.checkpoint is not None:
-        mark_done(
-            options.checkpoint
-        )  # a kill from here on: the rerun publishes the folder the checkpoint records
-    publish(plan.folder)  # an interrupted publication is completed by the next run into --out
+        # a kill from here on: the rerun publishes the folder the checkpoint records
+        mark_done(options.checkpoint)
+    publish(folder)  # an interrupted publication is completed by the next run into --out
     return summary
 
 
@@ -81,7 +81,7 @@ def _run(plan: RunPlan, options: RunOptions, started: float) -> dict:
     summary = build_summary(
         table, plan, state, options, elapsed_s=round(time.perf_counter() - started, 3), warnings=warnings
     )
-    folder = plan.folder
+    folder = plan.working_folder()
     write_json_atomic(folder.path / "summary.json", summary)
     if options.plots:
         series = (
