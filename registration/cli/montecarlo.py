@@ -176,6 +176,7 @@ def run(args: argparse.Namespace) -> int:
     with dask_client(args.scheduler, args.workers) as client:
         results = run_montecarlo_jobs(jobs, client, chunk_runs=args.chunk_runs, progress=True)
     if args.sweep:
+        assert name is not None and values is not None  # sweep_jobs names the swept option and its values
         return _write_sweep(args, out, name, values, results)
     result = results[0]
     print(result.table())

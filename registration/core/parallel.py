@@ -61,6 +61,7 @@ def dask_client(scheduler: str | None = None, workers: int | None = None):
         with distributed.Client(scheduler) as client:
             yield client
         return
+    assert workers is not None  # neither a scheduler nor workers: returned above
     with (
         distributed.LocalCluster(
             n_workers=int(workers), threads_per_worker=1, processes=True, dashboard_address=":0"

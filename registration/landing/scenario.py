@@ -5,6 +5,7 @@ and can be changed through the dataclasses (or the CLI). SI units and radians.""
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from typing import Any
 
 import numpy as np
 
@@ -223,7 +224,7 @@ class LandingScenario:
 
     def config(self, **overrides) -> LandingConfig:
         """A processing configuration that knows this scenario's clock offsets (calibrated clocks)."""
-        base = dict(
+        base: dict[str, Any] = dict(
             radar_clock_offset_s=self.radar.clock_offset_s, camera_clock_offset_s=self.camera.clock_offset_s
         )
         base.update(overrides)

@@ -76,7 +76,7 @@ class MonteCarloResult:
         return [q for q in self.quantities if q.in_nees]
 
     def nees_summary(self) -> dict | None:
-        if self.nees is None:
+        if self.nees is None or self.nees_interval is None:  # both None: no quantity in the NEES
             return None
         lo, hi = self.nees_interval
         final = float(self.nees[-1])
@@ -184,6 +184,7 @@ class MonteCarloResult:
         return "\n".join(lines)
 
     def to_json(self) -> dict:
+        nees = self.nees_summary()
         series = []
         for j, q in enumerate(self.quantities):
             series.append(
@@ -207,7 +208,7 @@ class MonteCarloResult:
             "scenario": self.scenario,
             "scenario_kwargs": self.scenario_kwargs,
             "final": self.final_rows(),
-            "nees": None if self.nees is None else {**self.nees_summary(), "series": self.nees.tolist()},
+            "nees": None if nees is None or self.nees is None else {**nees, "series": self.nees.tolist()},
             "nis": {**self.nis_summary(), "series": self.nis.tolist()},
             "observability": {
                 "status_counts": self.status_counts,
@@ -267,7 +268,7 @@ class MonteCarloResult:
         if self.quantities:
             axes[0].legend(fontsize=8, loc="upper right", framealpha=0.9)
         ax = axes[len(self.quantities)]
-        if self.nees is not None:
+        if self.nees is not None and self.nees_interval is not None:
             lo, hi = self.nees_interval
             ax.plot(t, self.nees, color="k", lw=1.2, label=f"avg NEES (m = {self.nees_dof} per run)")
             ax.axhspan(lo, hi, color="tab:green", alpha=0.15, label=f"NEES 95% interval [{lo:.2f}, {hi:.2f}]")

@@ -52,7 +52,8 @@ def parse_sum(text: str) -> tuple[str, str]:
         raise ValueError(f"sum {text!r}: the two states must differ")
     if IS_ANGLE[i] != IS_ANGLE[j]:
         raise ValueError(f"sum {text!r}: cannot add an angle and a range")
-    return tuple(STATE_NAMES[k] for k in sorted((i, j)))
+    lo, hi = sorted((i, j))
+    return STATE_NAMES[lo], STATE_NAMES[hi]
 
 
 def _observability_counts(

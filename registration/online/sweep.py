@@ -41,7 +41,7 @@ def sweep_table(parameter: str, values, results: list[MonteCarloResult]):
 
     rows = []
     for value, res in zip(values, results, strict=True):
-        if res.nees is None:
+        if res.nees is None or res.nees_interval is None:  # both None: no quantity in the NEES
             nees, lo, hi = np.nan, np.nan, np.nan
         else:
             (lo, hi), nees = res.nees_interval, float(res.nees[-1])

@@ -164,7 +164,7 @@ class FleetFilter:
             "s": self.options.q_time,
         }
         self._q2 = np.array([q[u] for u in self.layout.units]) ** 2
-        self._buffer = {k: [] for k in _BUFFER}
+        self._buffer: dict[str, list[np.ndarray]] = {k: [] for k in _BUFFER}
         self._n_read = 0
         self._closed_key: int | None = None
         self._open_key: int | None = None  # the latest epoch buffered
@@ -220,8 +220,10 @@ class FleetFilter:
 
     # -- processing ------------------------------------------------------------------------------
     def _process(self, closing_all: bool) -> int:
-        buf = {k: np.concatenate(v) if v else None for k, v in self._buffer.items()}
-        if buf["time"] is None or buf["time"].size == 0:
+        if not self._buffer["time"]:  # every column is buffered with the time
+            return 0
+        buf = {k: np.concatenate(v) for k, v in self._buffer.items()}
+        if buf["time"].size == 0:
             return 0
         key = self.options.epoch_key(buf["time"])
         keys = np.unique(key)
@@ -390,6 +392,6 @@ def register_online(
     result = filt.result()
     if residuals and result.n_plots_used:
         problem = build_problem(plots, sensors, navigation, platforms, references, targets)
-        table, check, _ = residuals_at(problem, result.estimate, filt.options.batch())
-        result = replace(result, residuals=table, fit_check=check)
+        res, check, _ = residuals_at(problem, result.estimate, filt.options.batch())
+        result = replace(result, residuals=res, fit_check=check)
     return result

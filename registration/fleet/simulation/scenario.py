@@ -186,11 +186,11 @@ def _navigation(
         platform.append(pid)
         times.append(np.zeros(1))
         rows.append(_site_nav(config, pid)[None, :])
-    rows = np.concatenate(rows)
+    table = np.concatenate(rows)
     return {
         "platform": np.array(platform),
         "time": np.concatenate(times),
-        **{c: rows[:, j] for j, c in enumerate(names)},
+        **{c: table[:, j] for j, c in enumerate(names)},
     }
 
 
