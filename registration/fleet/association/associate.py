@@ -178,6 +178,7 @@ def associate_and_register(
         problem, labels, given != "", outliers, units, state, conf.track, result, single != ""
     )
     notes = (*units.notes, *state.notes, *track_notes(problem, track_id, given != "", labels))
+    assert reg.problem_solved is not None  # the final solve registered the labelled plots
     return AssociationResult(
         batch=result,
         problem=reg.problem_solved,

@@ -28,7 +28,7 @@ from functools import cached_property
 
 import numpy as np
 
-from registration.fleet.association.joining.windowfit import WindowFit, fit_windows
+from registration.fleet.association.joining.windowfit import WindowFit, Windows, fit_windows
 from registration.fleet.batch.solver import BatchOptions
 from registration.fleet.data.inputs import References, SurfaceTargets
 from registration.fleet.data.problem import FleetProblem
@@ -64,7 +64,7 @@ class Curves:
 
     names: tuple
     n_batch: int
-    blocks: object
+    blocks: Windows
     order: np.ndarray
     coef: np.ndarray
     V_inv: np.ndarray
@@ -76,7 +76,7 @@ class Curves:
     ref_sigma: np.ndarray
     gap_s: float
     accel_sigma: float
-    fit: WindowFit | None = None
+    fit: WindowFit
 
     @property
     def n_targets(self) -> int:
@@ -136,8 +136,8 @@ class Curves:
             basis, rate = self.blocks.basis_and_rate_at(block, t_seen)
             p = np.einsum("mk,mkj->mj", basis, self.coef[block])
             v = np.einsum("mk,mkj->mj", rate, self.coef[block])
-            for a in range(3):
-                A[:, a, a::3] = basis
+            for axis in range(3):
+                A[:, axis, axis::3] = basis
             return Prediction(p, v, block, A, cov)
         a, w = self._brackets(target, t_seen)
         b = a + 1
@@ -177,6 +177,7 @@ def anchor_curves(
     keep = k >= 0
     order_r = np.lexsort((refs.time[keep], k[keep]))
     sigma_up = refs.sigma_up
+    assert sigma_up is not None  # References fills it in (with sigma where not given)
     if not np.isfinite(sigma_up).all():
         on = surface.of(rt)[1] if surface is not None else np.full(rt.size, np.nan)
         sigma_up = np.where(np.isfinite(sigma_up), sigma_up, np.where(np.isfinite(on), on, NO_HEIGHT_SIGMA_M))

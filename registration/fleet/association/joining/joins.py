@@ -29,7 +29,7 @@ import itertools
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association.grouping.confirm import new_names
+from registration.fleet.association.grouping.confirm import fixing_sensors, new_names
 from registration.fleet.association.grouping.units import Units, split_units, unit_conflicts
 from registration.fleet.association.joining.attach import (
     Pairs,
@@ -105,8 +105,8 @@ def choose_joins(
     registered plot yet."""
     if pairs.size == 0:
         return [], np.zeros(P.shape[0]), P
-    names = np.array(names, dtype=object)
-    unit, pname = pairs.unit, names[pairs.target]
+    target_names = np.array(names, dtype=object)
+    unit, pname = pairs.unit, target_names[pairs.target]
     state.tested[unit] = True
     allowed = state.target[unit] == ""
     if state.tabu:  # the pairs dropped before (few)
@@ -147,7 +147,8 @@ def choose_joins(
         if not ok.any():
             break
         rank = best[ok][np.lexsort((-lp[best[ok]], -margin[ok]))]
-        now, sensors_now = [], set()
+        now: list[tuple[int, int]] = []
+        sensors_now: set[int] = set()
         for b in rank:
             c = int(cand[b])
             u, j = int(unit[c]), int(pairs.target[c])
@@ -155,7 +156,7 @@ def choose_joins(
             if (fresh[s] and s in sensors_now) or any(j == j2 and conflicts[u, u2] for u2, j2 in now):
                 continue
             dx, Pk = kalman_update(pairs, c, dx, Pk, keep[at[b]])
-            state.target[u] = str(names[j])  # taken; labelled once its plots are verified
+            state.target[u] = str(target_names[j])  # taken; labelled once its plots are verified
             out.append((u, j, float(d2[at[b]] / dof[at[b]])))
             now.append((u, j))
             sensors_now.add(s)
@@ -177,7 +178,7 @@ def _label_verified(
     dx: np.ndarray,
     Pk: np.ndarray,
     options: AssociationOptions,
-) -> int:
+) -> list[int]:
     """Label the plots of the joins ``taken`` that pass the per-plot gate under the states after them
     (:func:`~registration.fleet.association.joining.attach.verify_plots`); a join with more than
     MAX_OUTLIER_SHARE of its plots failing is not taken (a track that swapped targets): it is marked
@@ -188,7 +189,7 @@ def _label_verified(
     plots = [covered[j][units.of_plot[covered[j]] == u] for u, j, _ in taken]
     # a position-fixing sensor's plots fix the target themselves: its whole track is the target's,
     # the part outside the target's span extends it (those plots are checked once registered)
-    fixing = (problem.layout.bias_index >= 0).all(axis=1)
+    fixing = fixing_sensors(problem)
     extra = [
         np.setdiff1d(np.flatnonzero(units.of_plot == u), p)
         if fixing[units.sensor[u]]
@@ -235,7 +236,7 @@ def _split(units: Units, state: JoinState, problem, options: AssociationOptions)
 def _provisional(units: Units, state: JoinState, problem, labels: np.ndarray, options: AssociationOptions):
     """(N,) provisional targets: each track of a position-fixing sensor that joined no anchor, under
     a new name; the units that hold them (they are then no longer joiners)."""
-    fixing = (problem.layout.bias_index >= 0).all(axis=1)
+    fixing = fixing_sensors(problem)
     count = np.bincount(units.of_plot[units.of_plot >= 0], minlength=units.n)
     which = np.flatnonzero(
         (state.target == "") & fixing[units.sensor] & (count >= 2 * options.min_join_plots)
@@ -293,7 +294,7 @@ def _pass_joins(
     chosen and labelled in ``state``. Returns (the units joined, (S,) True for the sensors with no
     registered plot yet)."""
     problem = reg.problem
-    fixing = (problem.layout.bias_index >= 0).all(axis=1)
+    fixing = fixing_sensors(problem)
     curves = pass_curves(reg, labels, prov, options, cache)
     free = np.flatnonzero(
         (state.target == "") & ~np.isin(np.arange(units.n), sources if sources is not None else [])

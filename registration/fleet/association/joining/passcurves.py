@@ -49,13 +49,15 @@ def _fit(reg: Registrar, lab: np.ndarray, cache: dict) -> WindowFit:
     states held, each target's windows are fitted to its own plots) and only the others are fitted
     (the provisional targets, say). After a solve of a subsample, its targets' windows fitted to all
     their plots (for the checks) are such a last fit."""
-    last, last_lab, missing = None, None, set()
+    last: WindowFit | None = None
+    last_lab: np.ndarray | None = None
+    missing: set = set()
     if cache.get("fit") is not None and cache.get("solves") == reg.solves:
         last, last_lab = cache["fit"], cache["lab"]
     elif reg.thinned:
         last, last_lab = reg.labelled_fit(), reg.labels
         missing = set(lab.tolist()) - set(last.names) - {""}  # targets it sets aside: seen by one sensor only
-    if last is not None:
+    if last is not None and last_lab is not None:  # set together
         changed = lab != last_lab
         names = (set(lab[changed].tolist()) | set(last_lab[changed].tolist()) | missing) - {""}
         redo = np.where(np.isin(lab, list(names)), lab, "") if names else np.full(lab.size, "", dtype=object)

@@ -9,6 +9,7 @@ states, :mod:`registration.fleet.batch.schur`); :mod:`.curves` predicts the anch
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from typing import cast
 
 import numpy as np
 
@@ -40,7 +41,8 @@ class Windows:
     coef_mask: np.ndarray
 
     def basis_and_rate_at(self, block: np.ndarray, time: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        return Blocks.basis_and_rate_at(self, block, time)
+        # duck-typed: it reads only n_coef, block_centre, block_half and coef_mask, which Windows has
+        return Blocks.basis_and_rate_at(cast(Blocks, self), block, time)
 
     def take(self, sel: np.ndarray, target: np.ndarray | None = None) -> "Windows":
         """The windows ``sel``, with the target indices ``target`` (default theirs)."""

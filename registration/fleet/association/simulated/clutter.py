@@ -61,7 +61,7 @@ class AssociationScenario:
 def association_targets(n_targets: int, rng, *, crossing: bool, duration_s: float) -> dict:
     """``n_targets`` target tracks in a 90 km square about the centre: crossing pairs first (two
     lines through one point at mid-time, same height) when ``crossing``, then lines and circles."""
-    out = {}
+    out: dict[str, Line | Circle] = {}
     n_pairs = n_targets // 2 if crossing else 0
     for k in range(n_pairs):
         point = rng.uniform(-30e3, 30e3, 2)
