@@ -7,12 +7,12 @@ Each stage is a module of its own and hands its result to the next:
    (:mod:`registration.io.output.outfolder`);
 2. :func:`~registration.recorded.run.plan.input_warnings`: angle columns that seem to hold
    radians (printed at once, listed in the summary);
-3. :func:`~registration.recorded.pairing.paired.pair_inputs` (two plot files only): the published
+3. :func:`~registration.recorded.run.pairstage.pair_inputs` (two plot files only): the published
    synchronous table ``paired.csv|parquet``;
 4. :func:`~registration.recorded.run.filtering.filter_table`: read, check and filter the table block
    by block, writing estimates, positions and rejected rows, then the information matrix at the
    final estimate; checkpointed and resumable bit for bit;
-5. :func:`~registration.recorded.output.report.build_summary` (with the consistency gate's figures),
+5. :func:`~registration.recorded.run.summary.build_summary` (with the consistency gate's figures),
    ``summary.json``, the plots (from the points kept while filtering,
    :mod:`registration.recorded.output.plotseries`), the checkpoint marked ``done``;
 6. :func:`~registration.io.output.outfolder.publish`: the run's folder replaces the outputs of an
@@ -30,12 +30,12 @@ from registration.io.files.tablefile import NoValidRowsError
 from registration.io.output.outfolder import discard, publish, records_folder
 from registration.recorded.options import RunOptions
 from registration.recorded.output.plots import series_from_outputs, write_plots
-from registration.recorded.output.report import build_summary
 from registration.recorded.output.writers import write_json_atomic
-from registration.recorded.pairing.paired import pair_inputs
 from registration.recorded.run.filtering import filter_table
+from registration.recorded.run.pairstage import pair_inputs
 from registration.recorded.run.plan import RunPlan, input_warnings, plan_run
 from registration.recorded.run.runstate import mark_done
+from registration.recorded.run.summary import build_summary
 
 __all__ = ["run_register"]
 
