@@ -2,15 +2,16 @@
 column names, row checks with a reason for every bad row, pairing of asynchronous plots, and a
 streaming run that is checkpointed and resumes bit for bit.
 
-The run is a pipeline (:mod:`.run.runner`) of stages that take its plan: :mod:`.run.plan`
-(with :mod:`registration.io.output.outfolder`; the unit check :mod:`.reading.unitcheck` through
+The run is a pipeline (:mod:`.run.runner`) of stages that take its plan: :mod:`.run.plan` (with
+:mod:`registration.io.output.outfolder`; the unit check :mod:`.reading.unitcheck` through
 :func:`.run.plan.input_warnings`) -> :mod:`.run.pairstage` (with :mod:`.reading.sources`,
 :mod:`.reading.streams`, :mod:`.pairing.pairs`) -> :mod:`.run.filtering` (with :mod:`.run.runstate`,
-:mod:`.output.outputs`) -> :mod:`.run.summary` and :mod:`.output.plots` -> publication in ``--out``. Subpackages: ``run`` (the stages: plan, pairing stage, checkpointed
-filtering, summary, runner) above ``reading`` (formats, row checks, field counts, unit checks,
-sources, streams), ``pairing`` (the pairing of two plot streams) and ``output`` (outputs, plots,
-writers, the output folder); ``options`` (the run's and the pairing's options) lies below them
-all.
+:mod:`.output.outputs`) -> :mod:`.run.summary` and :mod:`.output.plots` -> publication in ``--out``.
+
+Subpackages: ``run`` (the stages: plan, pairing stage, checkpointed filtering, summary, runner)
+above ``reading`` (formats, row checks, field counts, unit checks, sources, streams), ``pairing``
+(the pairing of two plot streams) and ``output`` (outputs, plots, writers); ``options`` (the run's
+and the pairing's options) lies below them all.
 """
 
 from registration.io.files.tablefile import REASON_CODES, FileFormatError, NoValidRowsError
