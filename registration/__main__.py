@@ -1,4 +1,5 @@
-"""``python -m registration``: the same as the ``registration`` command (an entry point, on top of the CLI)."""
+"""``python -m registration``: the same as the ``registration`` command (an entry point, on top of
+the CLI)."""
 
 import sys
 

@@ -26,7 +26,8 @@ MODULES = _modules()
 
 
 def _imports(name: str, path: Path) -> list[tuple[str, str | None, int]]:
-    """(module imported, name imported from it or None, line) for every import of the package, at any depth."""
+    """(module imported, name imported from it or None,
+    line) for every import of the package, at any depth."""
     out = []
     package = name if path.name == "__init__.py" else name.rpartition(".")[0]
     for node in ast.walk(ast.parse(path.read_text())):

@@ -152,14 +152,15 @@ def summary_lines(runs: list[dict]) -> list[str]:
         tr = _peer_units(n, truth[n])
         rms = float(np.sqrt(np.mean((est - tr) ** 2)))
         out.append(
-            f"| {label.replace(':', ' ')} ({unit}) | {tr:+.1f} | {est.mean():+.4f} | {rms:.4f} | {sig.mean():.4f} | {rms / sig.mean():.2f} |"
+            f"| {label.replace(':', ' ')} ({unit}) | {tr:+.1f} | {est.mean():+.4f} | {rms:.4f} | "
+            f"{sig.mean():.4f} | {rms / sig.mean():.2f} |"
         )
     nees = np.array([r["nees"] for r in runs])
     lo, hi = nees_interval(len(runs), runs[0]["n_states"])
     out.append("")
     out.append(
-        f"NEES per run: {', '.join(f'{v:.1f}' for v in nees)}; mean {nees.mean():.2f} for {runs[0]['n_states']} "
-        f"states, 95 % interval for the mean of {len(runs)} runs [{lo:.2f}, {hi:.2f}]"
+        f"NEES per run: {', '.join(f'{v:.1f}' for v in nees)}; mean {nees.mean():.2f} for "
+        f"{runs[0]['n_states']} states, 95 % interval for the mean of {len(runs)} runs [{lo:.2f}, {hi:.2f}]"
     )
     keys = ["pairs_rms_m", *[f"{s}_to_truth_rms_m" for s in RANGING], "S4_angle_rms_rad"]
     for key in keys:

@@ -1,9 +1,9 @@
 """``registration fuse``: the paper's dissimilar-dimension fusion scenarios, with honest rows beside them.
 
-Prints one table (analytic and Monte Carlo GDOP per estimator, beside the paper's figure) and
-writes into ``--out DIR`` (default ``out/fuse``) ``summary.json``, ``measurements.png`` (like the paper's Fig. 3/5:
-geometry, radar points and pseudo-measurement points) and ``fused.png`` (like Fig. 4/6: fused
-points of the paper's method and of the optimal fuser), all with 2-sigma covariance ellipses.
+Prints one table (analytic and Monte Carlo GDOP per estimator, beside the paper's figure) and writes into
+``--out DIR`` (default ``out/fuse``) ``summary.json``, ``measurements.png`` (like the paper's Fig. 3/5:
+geometry, radar points and pseudo-measurement points) and ``fused.png`` (like Fig. 4/6: fused points of
+the paper's method and of the optimal fuser), all with 2-sigma covariance ellipses.
 
 Units at this edge: metres, degrees (``_deg``) for positions of the target, milliradians
 (``_mrad``) for angle standard deviations (the paper quotes them in mrad).
@@ -26,11 +26,15 @@ from registration.fusion.scenarios import paper_scenario
 #: What `registration fuse` writes into --out (the outputs of an earlier run there are replaced whole).
 FUSE_OUTPUTS = frozenset({"summary.json", "measurements.png", "fused.png"})
 
-HELP = "fuse a radar with a remote bearing-only or range-only sensor (paper scenarios 1 and 2): GDOP, CRLB, optimal fuser"
+HELP = (
+    "fuse a radar with a remote bearing-only or range-only sensor (paper scenarios 1 and 2): GDOP, CRLB, "
+    "optimal fuser"
+)
 
 
 def _per_scenario(value) -> str:
-    """``default: scenario 1 X, scenario 2 Y`` for a parameter ``value(scenario)`` (number or text) of the paper's scenarios."""
+    """``default: scenario 1 X, scenario 2 Y`` for a parameter
+    ``value(scenario)`` (number or text) of the paper's scenarios."""
 
     def text(v) -> str:
         return v if isinstance(v, str) else f"{v:g}"
@@ -70,6 +74,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--max-plot-points", type=int, default=2000, metavar="N", help="points drawn per set in the plots"
     )
+    _add_geometry_options(parser)
+    _add_sensor_options(parser)
+
+
+def _add_geometry_options(parser: argparse.ArgumentParser) -> None:
+    """Where the second site and the target lie (default: the scenario's)."""
     g = parser.add_argument_group("geometry (radar A at the origin, azimuth counter-clockwise from +x)")
     g.add_argument(
         "--baseline-m",
@@ -108,6 +118,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         metavar="DEG",
         help="true target elevation from the radar, deg; giving it makes the problem 3-D; default: 2-D",
     )
+
+
+def _add_sensor_options(parser: argparse.ArgumentParser) -> None:
+    """The radar's and the second sensor's noise, and what the second sensor measures (default: the
+    scenario's)."""
     s = parser.add_argument_group("sensors")
     s.add_argument(
         "--sigma-range-m",
@@ -165,7 +180,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 # --------------------------------------------------------------------------- scenario from options
 def _check_numbers(args) -> None:
-    """Finite numbers everywhere, standard deviations and the target range > 0 (ValueError naming the option)."""
+    """Finite numbers everywhere, standard deviations and
+    the target range > 0 (ValueError naming the option)."""
     if args.seed < 0:
         raise ValueError(f"--seed: expected an integer >= 0, got {args.seed}")
     for name, value in vars(args).items():
@@ -198,7 +214,8 @@ def _scenario_from_args(args):
     if args.site_second_m is not None:
         if len(args.site_second_m) != dim:
             raise ValueError(
-                f"--site-second-m: expected {dim} coordinates (m) for a {dim}-D problem, got {len(args.site_second_m)}"
+                f"--site-second-m: expected {dim} coordinates (m) for a {dim}-D problem, got "
+                f"{len(args.site_second_m)}"
             )
         site = list(args.site_second_m)
     if args.baseline_m is not None or args.site_second_m is not None or dim != base.dim:
@@ -246,7 +263,8 @@ def _scenario_from_args(args):
     for c, v in given.items():
         if v is not None and c not in comps:
             raise ValueError(
-                f"--sigma-second-{c}-{'m' if c == 'range' else 'mrad'}: the second sensor does not measure {c} (see --second)"
+                f"--sigma-second-{c}-{'m' if c == 'range' else 'mrad'}: the second sensor does not measure "
+                f"{c} (see --second)"
             )
     if args.second is not None or any(v is not None for v in given.values()):
         changes["components"] = comps
@@ -275,8 +293,10 @@ def format_table(ev: FusionEvaluation) -> str:
     d = ev.details
     lines.append("")
     lines.append(
-        f"improvement over radar (Monte Carlo): paper method x{d['improvement_over_radar']['paper_actual']:.2f}, "
-        f"optimal x{d['improvement_over_radar']['optimal']:.2f}; CRLB/paper-method GDOP = {d['efficiency_paper_vs_crlb']:.3f}"
+        "improvement over radar (Monte Carlo): paper method "
+        f"x{d['improvement_over_radar']['paper_actual']:.2f}, optimal "
+        f"x{d['improvement_over_radar']['optimal']:.2f}; CRLB/paper-method GDOP = "
+        f"{d['efficiency_paper_vs_crlb']:.3f}"
     )
     lines.append(
         f"claimed covariance below the CRLB: {'YES' if ev.claimed_below_crlb else 'no'}"

@@ -5,10 +5,11 @@ time-aligns both sensors to common fusion instants, moves the radar into the cam
 with its covariance and fuses (Wang, Liu & Gao 2017, eqs. 7-12), and prints the 3-D position RMSE
 in range bins for radar only, camera angles with radar range, and fused (plus the joint update).
 
-Writes into ``--out DIR`` (default ``out/landing``): ``summary.json`` (``bins``: ``range_min_m, range_max_m, rmse_radar_m,
-rmse_camera_m, rmse_fused_m`` and more) and, unless ``--no-plots``, ``attitude.png`` (Fig. 1),
-``variance_ratios.png`` (Figs. 2-3), ``rmse.png`` (Fig. 4) and ``fused_polar.png`` (Fig. 5); an earlier
-run's outputs there are replaced only once all are written (:mod:`registration.cli.staging`).
+Writes into ``--out DIR`` (default ``out/landing``): ``summary.json`` (``bins``: ``range_min_m,
+range_max_m, rmse_radar_m, rmse_camera_m, rmse_fused_m`` and more) and, unless ``--no-plots``,
+``attitude.png`` (Fig. 1), ``variance_ratios.png`` (Figs. 2-3), ``rmse.png`` (Fig. 4) and
+``fused_polar.png`` (Fig. 5); an earlier run's outputs there are replaced only once all are written
+(:mod:`registration.cli.staging`).
 
 Units at this edge: metres, seconds, degrees (``_deg``), milliradians (``_mrad``) for angle noise
 and milliseconds (``_ms``) for clock offsets; SI and radians inside.
@@ -45,11 +46,13 @@ LANDING_OUTPUTS = frozenset(
     {"summary.json", "attitude.png", "variance_ratios.png", "rmse.png", "fused_polar.png"}
 )
 
-HELP = "simulate a carrier approach and fuse the landing radar with the centreline camera: position RMSE by range bin, plots"
+HELP = (
+    "simulate a carrier approach and fuse the landing radar with the centreline camera: position RMSE by "
+    "range bin, plots"
+)
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    d = default_scenario()
     add_out(parser, "landing", "summary.json and the PNG plots")
     add_no_plots(parser)
     parser.add_argument(
@@ -94,94 +97,48 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="process as if both clocks had no offset (shows what an uncalibrated clock costs)",
     )
     s = parser.add_argument_group("scenario")
-    s.add_argument(
-        "--glide-slope-deg",
-        type=float,
-        default=np.degrees(d.approach.glide_slope_rad),
-        metavar="DEG",
-        help="glide slope, deg",
-    )
-    s.add_argument(
-        "--ground-speed-mps",
-        type=float,
-        default=d.approach.ground_speed_mps,
-        metavar="M/S",
-        help="aircraft ground speed, m/s",
-    )
-    s.add_argument(
-        "--start-range-m",
-        type=float,
-        default=d.approach.start_range_m,
-        metavar="M",
-        help="start, m along the path to touchdown",
-    )
-    s.add_argument(
-        "--end-range-m",
-        type=float,
-        default=d.approach.end_range_m,
-        metavar="M",
-        help="end, m along the path to touchdown",
-    )
-    s.add_argument(
-        "--ship-speed-mps", type=float, default=d.ship.speed_mps, metavar="M/S", help="carrier speed, m/s"
-    )
-    s.add_argument(
-        "--angled-deck-deg",
-        type=float,
-        default=np.degrees(d.geometry.angled_deck_rad),
-        metavar="DEG",
-        help="angled-deck angle, deg",
-    )
+    for flag, default, metavar, text in _scenario_options(default_scenario()):
+        s.add_argument(flag, type=float, default=default, metavar=metavar, help=text)
+
+
+def _scenario_options(d: LandingScenario) -> list[tuple[str, float, str, str]]:
+    """The scenario options, every one a float: (flag, default from ``d``, metavar, help), in the
+    order of --help."""
+    rows = [
+        ("--glide-slope-deg", np.degrees(d.approach.glide_slope_rad), "DEG", "glide slope, deg"),
+        ("--ground-speed-mps", d.approach.ground_speed_mps, "M/S", "aircraft ground speed, m/s"),
+        ("--start-range-m", d.approach.start_range_m, "M", "start, m along the path to touchdown"),
+        ("--end-range-m", d.approach.end_range_m, "M", "end, m along the path to touchdown"),
+        ("--ship-speed-mps", d.ship.speed_mps, "M/S", "carrier speed, m/s"),
+        ("--angled-deck-deg", np.degrees(d.geometry.angled_deck_rad), "DEG", "angled-deck angle, deg"),
+    ]
     for axis, amp, per in (
         ("yaw", d.ship.yaw_amplitude_rad, d.ship.yaw_period_s),
         ("pitch", d.ship.pitch_amplitude_rad, d.ship.pitch_period_s),
         ("roll", d.ship.roll_amplitude_rad, d.ship.roll_period_s),
     ):
-        s.add_argument(
-            f"--{axis}-deg", type=float, default=np.degrees(amp), metavar="DEG", help=f"{axis} amplitude, deg"
-        )
-        s.add_argument(f"--{axis}-period-s", type=float, default=per, metavar="S", help=f"{axis} period, s")
-    s.add_argument(
-        "--radar-rate-hz", type=float, default=d.radar.rate_hz, metavar="HZ", help="radar rate, Hz"
-    )
-    s.add_argument(
-        "--radar-sigma-range-m",
-        type=float,
-        default=d.radar.sigma_range_m,
-        metavar="M",
-        help="radar range noise standard deviation, m",
-    )
-    s.add_argument(
-        "--radar-sigma-angle-mrad",
-        type=float,
-        default=d.radar.sigma_azimuth_rad * 1e3,
-        metavar="MRAD",
-        help="radar azimuth and elevation noise standard deviation, mrad",
-    )
-    s.add_argument(
-        "--radar-clock-offset-ms",
-        type=float,
-        default=d.radar.clock_offset_s * 1e3,
-        metavar="MS",
-        help="radar clock offset (its clock reads true time + offset), ms",
-    )
-    s.add_argument(
-        "--camera-rate-hz", type=float, default=d.camera.rate_hz, metavar="HZ", help="camera rate, Hz"
-    )
-    s.add_argument(
-        "--camera-sigma-angle-mrad",
-        type=float,
-        default=d.camera.sigma_azimuth_rad * 1e3,
-        metavar="MRAD",
-        help="camera azimuth and elevation noise standard deviation, mrad",
-    )
-    s.add_argument(
-        "--camera-clock-offset-ms",
-        type=float,
-        default=d.camera.clock_offset_s * 1e3,
-        metavar="MS",
-        help="camera clock offset (its clock reads true time + offset), ms",
-    )
+        rows.append((f"--{axis}-deg", np.degrees(amp), "DEG", f"{axis} amplitude, deg"))
+        rows.append((f"--{axis}-period-s", per, "S", f"{axis} period, s"))
+    clock = "clock offset (its clock reads true time + offset), ms"
+    return rows + [
+        ("--radar-rate-hz", d.radar.rate_hz, "HZ", "radar rate, Hz"),
+        ("--radar-sigma-range-m", d.radar.sigma_range_m, "M", "radar range noise standard deviation, m"),
+        (
+            "--radar-sigma-angle-mrad",
+            d.radar.sigma_azimuth_rad * 1e3,
+            "MRAD",
+            "radar azimuth and elevation noise standard deviation, mrad",
+        ),
+        ("--radar-clock-offset-ms", d.radar.clock_offset_s * 1e3, "MS", f"radar {clock}"),
+        ("--camera-rate-hz", d.camera.rate_hz, "HZ", "camera rate, Hz"),
+        (
+            "--camera-sigma-angle-mrad",
+            d.camera.sigma_azimuth_rad * 1e3,
+            "MRAD",
+            "camera azimuth and elevation noise standard deviation, mrad",
+        ),
+        ("--camera-clock-offset-ms", d.camera.clock_offset_s * 1e3, "MS", f"camera {clock}"),
+    ]
 
 
 def scenario_from_args(args: argparse.Namespace) -> LandingScenario:
@@ -245,7 +202,8 @@ def _check_args(args: argparse.Namespace) -> None:
         raise ValueError(f"--ship-speed-mps: expected >= 0 m/s, got {args.ship_speed_mps}")
     if not args.start_range_m > args.end_range_m >= 0:
         raise ValueError(
-            f"--start-range-m, --end-range-m: expected start > end >= 0 m, got {args.start_range_m}, {args.end_range_m}"
+            f"--start-range-m, --end-range-m: expected start > end >= 0 m, got {args.start_range_m}, "
+            f"{args.end_range_m}"
         )
     ratio = args.bin_m / args.plot_bin_m
     if abs(ratio - round(ratio)) > 1e-9:
@@ -293,8 +251,9 @@ def _report(
 ) -> tuple[dict, np.ndarray]:
     """Print the RMSE table, the mean NEES and the paired z-scores; return NEES per method and z per bin."""
     print(
-        f"registration landing: {args.runs} Monte Carlo runs of a {sc.duration_s:.1f} s approach "
-        f"(closure {sc.closure_speed_mps:.1f} m/s), {mc.t.size} fusion instants per run at {config.fusion_rate_hz:g} Hz"
+        f"registration landing: {args.runs} Monte Carlo runs of a {sc.duration_s:.1f} s approach (closure "
+        f"{sc.closure_speed_mps:.1f} m/s), {mc.t.size} fusion instants per run at {config.fusion_rate_hz:g} "
+        "Hz"
     )
     print("3-D position RMSE in the touchdown frame by range to the touchdown point:")
     print(_table(mc))

@@ -45,7 +45,10 @@ MONTECARLO_OUTPUTS = frozenset(
     {"montecarlo.json", "montecarlo.png", "sweep.csv", "sweep.parquet", "sweep.png"}
 )
 
-HELP = "Monte Carlo over seeds: RMSE of the identifiable estimates vs the filter's 2σ and the Cramér-Rao bound, and NEES"
+HELP = (
+    "Monte Carlo over seeds: RMSE of the identifiable estimates vs the filter's 2σ and the Cramér-Rao "
+    "bound, and NEES"
+)
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -109,7 +112,8 @@ def parse_sweep(text: str) -> tuple[str, list]:
 
 
 def pooled_consistency(result):
-    """The consistency report of every run's NIS pooled: mean over runs and steps, runs x steps samples of 3 dof."""
+    """The consistency report of every run's NIS pooled:
+    mean over runs and steps, runs x steps samples of 3 dof."""
     from registration.core.consistency import ConsistencyReport
 
     nis = np.asarray(result.nis, dtype=float)
@@ -172,6 +176,7 @@ def run(args: argparse.Namespace) -> int:
     with dask_client(args.scheduler, args.workers) as client:
         results = run_montecarlo_jobs(jobs, client, chunk_runs=args.chunk_runs, progress=True)
     if args.sweep:
+        assert name is not None and values is not None  # sweep_jobs names the swept option and its values
         return _write_sweep(args, out, name, values, results)
     result = results[0]
     print(result.table())
@@ -195,7 +200,8 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _write_sweep(args: argparse.Namespace, out: Path, name: str, values: list, results: list) -> int:
-    """The sweep's table and figure, published into ``out`` whole; exit code of the least consistent grid point."""
+    """The sweep's table and figure, published into ``out``
+    whole; exit code of the least consistent grid point."""
     from registration.online.sweep import plot_sweep, sweep_table, write_sweep_table
 
     table = sweep_table(name, values, results)

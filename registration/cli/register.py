@@ -72,6 +72,26 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         help="stop at the first bad row, or skip: set bad rows aside in rejected.csv",
     )
     p.add_argument("--format", choices=["csv", "parquet"], default="csv", help="format of the outputs")
+    _add_filter_options(p)
+    p.add_argument(
+        "--validate-only", action="store_true", help="check every row and report, without estimating"
+    )
+    add_no_plots(p)
+    p.add_argument("--no-progress", action="store_true", help="no progress bar")
+    add_allow_inconsistent(p)
+    p.add_argument(
+        "--each",
+        action="store_true",
+        help="every INPUT is a synchronous table of its own: one registration per file, "
+        "into DIR/<file stem>/",
+    )
+    add_dask(p, "files of --each")
+    _add_asynchronous_options(p)
+
+
+def _add_filter_options(p: argparse.ArgumentParser) -> None:
+    """The filter's model and noise: linearisation, process noise, rotation T, radar sigmas, and
+    where the information matrix is taken."""
     p.add_argument(
         "--linearization",
         choices=list(LINEARIZATIONS),
@@ -105,18 +125,10 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         default="final",
         help="information matrix at the final estimate (second pass) or as the filter accumulated it",
     )
-    p.add_argument(
-        "--validate-only", action="store_true", help="check every row and report, without estimating"
-    )
-    add_no_plots(p)
-    p.add_argument("--no-progress", action="store_true", help="no progress bar")
-    add_allow_inconsistent(p)
-    p.add_argument(
-        "--each",
-        action="store_true",
-        help="every INPUT is a synchronous table of its own: one registration per file, into DIR/<file stem>/",
-    )
-    add_dask(p, "files of --each")
+
+
+def _add_asynchronous_options(p: argparse.ArgumentParser) -> None:
+    """The pairing of the asynchronous form's two plot files: clock offsets and interpolation."""
     g = p.add_argument_group("asynchronous form (two plot files)")
     g.add_argument(
         "--clock-offset-a",
@@ -224,8 +236,9 @@ def interrupt_hint(args: argparse.Namespace) -> str:
             "(give --checkpoint FILE to make a long run resumable)"
         )
     return (
-        f"registration register: interrupted; rerun the same command to resume from its checkpoint {args.checkpoint} "
-        f"(the unfinished outputs are in {args.out}/partial-*; {args.out} holds what it held before)"
+        "registration register: interrupted; rerun the same command to resume from its checkpoint "
+        f"{args.checkpoint} (the unfinished outputs are in {args.out}/partial-*; {args.out} holds what it "
+        "held before)"
     )
 
 
@@ -245,11 +258,13 @@ def run(args: argparse.Namespace) -> int:
             n_bad = r["rows"] - r["accepted"]
             bad += n_bad
             print(
-                f"{path} ({r['layout']}): {r['rows']} rows, {r['accepted']} valid, {n_bad} bad {r['rejected_by_reason'] or ''}"
+                f"{path} ({r['layout']}): {r['rows']} rows, {r['accepted']} valid, {n_bad} bad "
+                f"{r['rejected_by_reason'] or ''}"
             )
         for prob in report["problems"]:
             print(
-                f"  {prob['file']}: row {prob['row']}, column {prob['column']!r}: {prob['reason']} [{prob['code']}]"
+                f"  {prob['file']}: row {prob['row']}, column {prob['column']!r}: {prob['reason']} "
+                f"[{prob['code']}]"
             )
         return EXIT_BAD_ROWS if bad else EXIT_OK
 
@@ -273,14 +288,14 @@ def _print_summary(summary: dict, estimate_lines, gate) -> None:
     consistency (``gate``), warnings about the inputs."""
     rows = summary["rows"]
     print(
-        f"registration register: {summary['form']} input, {rows['read']} rows read, {rows['accepted']} registered, "
-        f"{rows['rejected']} rejected {rows['rejected_by_reason'] or ''}"
+        f"registration register: {summary['form']} input, {rows['read']} rows read, {rows['accepted']} "
+        f"registered, {rows['rejected']} rejected {rows['rejected_by_reason'] or ''}"
     )
     if "pairing" in summary:
         p = summary["pairing"]
         print(
-            f"pairing: {p['instants']} instants, {p['paired']} paired ({p['exact']} exact, {p['interpolated']} interpolated), "
-            f"{p['unpaired']} unpaired {p['unpaired_reasons'] or ''}"
+            f"pairing: {p['instants']} instants, {p['paired']} paired ({p['exact']} exact, "
+            f"{p['interpolated']} interpolated), {p['unpaired']} unpaired {p['unpaired_reasons'] or ''}"
         )
     print("\nX_A - X_B (m)     before       after")
     for stat in ("max", "mean", "std"):
@@ -319,7 +334,8 @@ def register_file(task: tuple) -> dict:
 
 
 def each_tasks(args: argparse.Namespace) -> list[tuple]:
-    """One ``(path, RunOptions)`` per input, its outputs in ``--out``/<file stem> (checked before any work)."""
+    """One ``(path, RunOptions)`` per input, its outputs
+    in ``--out``/<file stem> (checked before any work)."""
     import dataclasses
 
     if args.checkpoint is not None or args.nav:
@@ -351,7 +367,8 @@ def run_each(args: argparse.Namespace) -> int:
             (r,) = validate_files([path], options)["files"].values()
             bad += r["rows"] - r["accepted"]
             print(
-                f"{path} ({r['layout']}): {r['rows']} rows, {r['accepted']} valid, {r['rows'] - r['accepted']} bad"
+                f"{path} ({r['layout']}): {r['rows']} rows, {r['accepted']} valid, "
+                f"{r['rows'] - r['accepted']} bad"
             )
         return EXIT_BAD_ROWS if bad else EXIT_OK
     with dask_client(args.scheduler, args.workers) as client:

@@ -33,20 +33,20 @@ def schema() -> dict:
 
     return {
         "synchronous": {
-            "description": "one table; each row is one pair of plots of the common target by radar A and radar B "
-            "at the same instant, with both ships' navigation and attitude",
+            "description": "one table; each row is one pair of plots of the common target by radar A and "
+            "radar B at the same instant, with both ships' navigation and attitude",
             "columns": rows(SYNC_FIELDS),
         },
         "plot_file": {
-            "description": "asynchronous form: one file per radar, each with its own timestamps and rate (give two: "
-            "radar A's, then radar B's). The columns may carry the radar's prefix (a_range_m) to say "
-            "which radar the file belongs to. The ship's navigation may be in the same file "
-            "(all six columns, same clock) or in a --nav file.",
+            "description": "asynchronous form: one file per radar, each with its own timestamps and rate "
+            "(give two: radar A's, then radar B's). The columns may carry the radar's prefix (a_range_m) to "
+            "say which radar the file belongs to. The ship's navigation may be in the same file (all six "
+            "columns, same clock) or in a --nav file.",
             "columns": rows(PLOT_FIELDS) + rows(NAV_FIELDS, required=False),
         },
         "navigation_file": {
-            "description": "asynchronous form, --nav FILE: the navigation of one or both ships at its own rate, on the "
-            "reference clock; the columns carry the ship's prefix",
+            "description": "asynchronous form, --nav FILE: the navigation of one or both ships at its own "
+            "rate, on the reference clock; the columns carry the ship's prefix",
             "columns": rows((PLOT_FIELDS[0],))
             + rows(NAV_FIELDS, "a", required=False)
             + rows(NAV_FIELDS, "b", required=False),
@@ -85,12 +85,14 @@ def run(args: argparse.Namespace) -> int:
     print("                           (every state and its 1-sigma after each row, degrees or metres)")
     print("   positions.csv|parquet   " + ", ".join(s["outputs"]["positions"]))
     print(
-        "                           (corrected ECEF target positions from radar A and B; raw and corrected A - B)"
+        "                           (corrected ECEF target positions from radar A and B; raw and corrected "
+        "A - B)"
     )
     print("   rejected.csv            " + ", ".join(s["outputs"]["rejected"]))
     print("   unpaired.csv            " + ", ".join(s["outputs"]["unpaired"]) + "  (asynchronous form)")
     print("   summary.json, estimates.png, differences.png, tracks.png")
     print(
-        "\nExample: registration simulate --export example.csv --out sim && registration register example.csv --out reg"
+        "\nExample: registration simulate --export example.csv --out sim && registration register "
+        "example.csv --out reg"
     )
     return 0

@@ -1,4 +1,5 @@
-"""``registration simulate``: the two-ship scenario of Wang et al. 2011 end to end, with a report and plots."""
+"""``registration simulate``: the two-ship scenario of
+Wang et al. 2011 end to end, with a report and plots."""
 
 from __future__ import annotations
 
@@ -19,7 +20,10 @@ from registration.cli.options import add_no_plots, add_out, add_seed
 from registration.cli.staging import staged_outputs
 from registration.online import DEFAULT_LINEARIZATION, LINEARIZATIONS, Q_MODES, T_VARIANTS
 
-HELP = "simulate the two-ship scenario of Wang et al. 2011, register online, and compare with the paper's Table 1"
+HELP = (
+    "simulate the two-ship scenario of Wang et al. 2011, register online, and compare with the paper's "
+    "Table 1"
+)
 
 DEFAULT_MOTION = "2,8,5,12"
 
@@ -166,7 +170,8 @@ def estimate_lines(rows: list[dict]) -> list[str]:
             else "   <- not a converged estimate"
         )
         lines.append(
-            f"  {r['name']:<14}{r['estimate'] * k:12.4g}{r['sigma'] * k:10.3g}{truth:>10}  {unit:<4}  {r['status']}{mark}"
+            f"  {r['name']:<14}{r['estimate'] * k:12.4g}{r['sigma'] * k:10.3g}{truth:>10}  {unit:<4}  "
+            f"{r['status']}{mark}"
         )
     return lines
 

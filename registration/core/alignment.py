@@ -99,12 +99,14 @@ def _check_sample_times(t: np.ndarray) -> None:
     if (d == 0).any():
         i = int(np.argmax(d == 0))
         raise ValueError(
-            f"t: duplicate timestamp {float(t[i])!r} s at indices {i} and {i + 1}; timestamps must be strictly increasing"
+            f"t: duplicate timestamp {float(t[i])!r} s at indices {i} and {i + 1}; timestamps must be "
+            "strictly increasing"
         )
     if (d < 0).any():
         i = int(np.argmax(d < 0))
         raise ValueError(
-            f"t: timestamps not sorted: t[{i}] = {float(t[i])!r} s > t[{i + 1}] = {float(t[i + 1])!r} s; sort the samples by time first"
+            f"t: timestamps not sorted: t[{i}] = {float(t[i])!r} s > t[{i + 1}] = {float(t[i + 1])!r} s; "
+            "sort the samples by time first"
         )
 
 
@@ -138,7 +140,8 @@ def _check_samples(t, y) -> tuple[np.ndarray, np.ndarray]:
     if bad.any():
         i, k = (int(v) for v in np.argwhere(bad)[0])
         raise ValueError(
-            f"y: non-finite sample {float(y2[i, k])} at index {i}, column {k} (t = {float(t[i])!r} s); remove or fill it before aligning"
+            f"y: non-finite sample {float(y2[i, k])} at index {i}, column {k} (t = {float(t[i])!r} s); "
+            "remove or fill it before aligning"
         )
     return t, y2
 
@@ -261,11 +264,14 @@ def _refuse_first_invalid(
 ) -> None:
     i = int(np.argmax(~valid))
     detail = {
-        REASON_TOO_FEW: f"its window holds {int(n[i])} sample(s) but degree {degree} needs at least {degree + 1}",
+        REASON_TOO_FEW: f"its window holds {int(n[i])} sample(s) but degree {degree} needs at least "
+        f"{degree + 1}",
         REASON_EXTRAPOLATION: (
-            f"it lies {ext[i]:.6g} s outside its window's samples, beyond max_extrapolation_s = {max_extrapolation_s:g} s"
+            f"it lies {ext[i]:.6g} s outside its window's samples, beyond max_extrapolation_s = "
+            f"{max_extrapolation_s:g} s"
         ),
-        REASON_ILL_CONDITIONED: f"its window's sample times are too clustered (condition number > {MAX_CONDITION:g})",
+        REASON_ILL_CONDITIONED: "its window's sample times are too clustered (condition number > "
+        f"{MAX_CONDITION:g})",
     }[reason[i]]
     raise ValueError(
         f"t_eval: instant {float(tau[i])!r} s (index {i}) cannot be evaluated: {detail}. "

@@ -102,7 +102,8 @@ class ConsistencyReport:
 
 
 def check_consistency(values, dof: int, quantity: str = "NIS") -> ConsistencyReport:
-    """Report on normalised squared innovations ``values`` (any shape) with ``dof`` degrees of freedom each."""
+    """Report on normalised squared innovations ``values``
+    (any shape) with ``dof`` degrees of freedom each."""
     values = np.asarray(values, dtype=np.float64).reshape(-1)
     if values.size == 0:
         raise ValueError(f"{quantity}: no samples to check")

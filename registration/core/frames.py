@@ -91,7 +91,8 @@ def geodetic2ecef(lat, lon, alt) -> np.ndarray:
 
 
 def ecef2geodetic(p_ecef) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Geodetic ``lat, lon`` (rad) and ``alt`` (m above WGS-84), each (N,), of ECEF points (N, 3) or (3,) in m.
+    """Geodetic ``lat, lon`` (rad) and ``alt`` (m above
+    WGS-84), each (N,), of ECEF points (N, 3) or (3,) in m.
 
     The inverse of :func:`geodetic2ecef` (generated, Bowring's iteration: float64 rounding of the
     latitude from -12 km to 1000 km of height). Points within 100 km of the earth's centre are refused.
@@ -104,7 +105,8 @@ def ecef2geodetic(p_ecef) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     close = np.einsum("ij,ij->i", p, p) < 1e10
     if close.any():
         raise ValueError(
-            f"p_ecef: point {int(np.argmax(close))} lies within 100 km of the earth's centre; expected ECEF metres"
+            f"p_ecef: point {int(np.argmax(close))} lies within 100 km of the earth's centre; expected ECEF "
+            "metres"
         )
     geo = generated.ecef2geodetic(p_ecef=p).geodetic.reshape(-1, 3)
     return geo[:, 0], geo[:, 1], geo[:, 2]
@@ -164,7 +166,8 @@ def deck2enu_jacobians(r, q, e, heading, pitch, roll) -> tuple[np.ndarray, np.nd
 
 
 def plot2ecef(lat, lon, alt, heading, pitch, roll, r, q, e, variant: str = "standard") -> np.ndarray:
-    """Eq. (3): a radar plot from a ship at (lat, lon rad, alt m) with attitude (rad) -> target ECEF (N, 3) m."""
+    """Eq. (3): a radar plot from a ship at (lat, lon rad,
+    alt m) with attitude (rad) -> target ECEF (N, 3) m."""
     if variant not in T_VARIANTS:
         raise ValueError(f"variant: expected one of {T_VARIANTS}, got {variant!r}")
     v = {**_geodetic(lat, lon, alt), **_attitude(heading, pitch, roll), **_measurement(r, q, e)}

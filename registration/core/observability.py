@@ -14,9 +14,10 @@ posterior standard deviation is ``1 / sqrt(1 + s)`` of the prior one. Classes:
 * **weak**: ``0.01 <= s < 10`` - the posterior keeps more than 30 % of the prior spread;
 * observable otherwise.
 
-Directions are named as combinations of prior-scaled states (``x_i / sigma_i``). A two-state
-direction ``x_i - x_j`` (equal coefficients in the states' own, identical units) means that only ``x_i + x_j`` enters the measurements:
-for a level ship, heading error and bearing bias (Phi depends on C and q only through C + q).
+Directions are named as combinations of prior-scaled states (``x_i / sigma_i``). A two-state direction
+``x_i - x_j`` (equal coefficients in the states' own, identical units) means that only ``x_i + x_j``
+enters the measurements: for a level ship, heading error and bearing bias (Phi depends on C and q only
+through C + q).
 """
 
 from __future__ import annotations

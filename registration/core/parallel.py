@@ -31,7 +31,8 @@ def require_distributed():
 
 
 def chunk_ranges(n: int, chunk: int, start: int = 0) -> list[tuple[int, int]]:
-    """``[(start, stop), ...]`` covering ``start .. start + n - 1`` in consecutive pieces of at most ``chunk``."""
+    """``[(start, stop), ...]`` covering ``start .. start
+    + n - 1`` in consecutive pieces of at most ``chunk``."""
     n, chunk = int(n), int(chunk)
     if chunk < 1:
         raise ValueError(f"chunk: expected at least 1 item per chunk, got {chunk}")
@@ -60,6 +61,7 @@ def dask_client(scheduler: str | None = None, workers: int | None = None):
         with distributed.Client(scheduler) as client:
             yield client
         return
+    assert workers is not None  # neither a scheduler nor workers: returned above
     with (
         distributed.LocalCluster(
             n_workers=int(workers), threads_per_worker=1, processes=True, dashboard_address="127.0.0.1:0"

@@ -35,15 +35,16 @@ def as_float_array(name: str, value) -> np.ndarray:
     if arr.dtype.kind in "biufc" and arr.dtype.kind not in "bc":
         return arr.astype(np.float64, copy=False)
     if arr.dtype.kind == "O":
+        converted: np.ndarray | None
         try:
-            arr = arr.astype(np.float64)
+            converted = arr.astype(np.float64)
         except (TypeError, ValueError):
-            arr = None
-        if arr is not None and not any(
+            converted = None
+        if converted is not None and not any(
             v is None or isinstance(v, (bool, np.bool_, str))
             for v in np.ravel(np.asarray(value, dtype=object))
         ):
-            return arr
+            return converted
     if value is None or isinstance(value, (str, bytes, bool, np.bool_)):
         what = repr(value)
     else:

@@ -2,7 +2,7 @@
 
 ``paper``: the paper's pseudo-measurement method with its claimed and its consistent covariance;
 ``optimal``: the maximum-likelihood fuser, Fisher information and Cramér-Rao bound; ``gdop``: the
-accuracy figure; ``polar`` and ``inputs``: components, transforms and input checks;
+accuracy figure; ``polar`` and ``checks``: components, transforms and input checks;
 ``scenarios``: the paper's two scenarios and their Monte Carlo evaluation.
 """
 

@@ -52,13 +52,15 @@ def _mean_claim(covs: np.ndarray) -> tuple[float, float]:
 
 
 def _below(cov: np.ndarray, bound: np.ndarray) -> bool:
-    """True when ``cov`` is smaller than ``bound`` in some direction (bound - cov has a positive eigenvalue)."""
+    """True when ``cov`` is smaller than ``bound`` in some
+    direction (bound - cov has a positive eigenvalue)."""
     ev = np.linalg.eigvalsh(bound - cov)
     return bool(ev.max() > 1e-9 * np.trace(bound))
 
 
 def _below_fraction(covs: np.ndarray, bound: np.ndarray) -> float:
-    """Fraction of the covariances (N, d, d) that are below ``bound`` in some direction (as :func:`_below`)."""
+    """Fraction of the covariances (N, d, d) that are below ``bound`` in some direction (as
+    :func:`_below`)."""
     return float(np.mean(np.linalg.eigvalsh(bound - covs).max(axis=1) > 1e-9 * np.trace(bound)))
 
 
@@ -91,7 +93,8 @@ class FusionEvaluation:
         return next(r for r in self.rows if r["name"] == name)
 
     def to_json(self) -> dict:
-        """A JSON-ready summary: ``rows`` (name, analytic_gdop_m, monte_carlo_gdop_m, paper_gdop_m) plus context."""
+        """A JSON-ready summary: ``rows`` (name, analytic_gdop_m,
+        monte_carlo_gdop_m, paper_gdop_m) plus context."""
         return {
             "scenario": describe(self.scenario),
             "trials": self.trials,
@@ -138,10 +141,10 @@ def _warnings(
     warnings = []
     if below:
         warnings.append(
-            f"the paper method's claimed covariance (eq. 13, GDOP {g_claim:.1f} m) is below the Cramer-Rao bound "
-            f"(GDOP {g_bound:.1f} m) in some direction: it claims more accuracy than any unbiased fuser of these "
-            "measurements can have, because it treats the pseudo-measurement as independent of the radar point it "
-            "was built from"
+            f"the paper method's claimed covariance (eq. 13, GDOP {g_claim:.1f} m) is below the Cramer-Rao "
+            f"bound (GDOP {g_bound:.1f} m) in some direction: it claims more accuracy than any unbiased "
+            "fuser of these measurements can have, because it treats the pseudo-measurement as independent "
+            "of the radar point it was built from"
         )
     if not opt.converged.all():
         warnings.append(

@@ -15,7 +15,7 @@ import numpy as np
 from registration.core import linalg as la
 from registration.core.angles import wrap_angle
 from registration.core.validation import check_finite
-from registration.fusion.inputs import (
+from registration.fusion.checks import (
     SITE_TOL,
     broadcast_rows,
     check_off_site,
@@ -72,7 +72,8 @@ class OptimalResult:
 def fisher_information(
     p_loc, sigma_radar, sigma_second, components, site_second_loc, site_radar_loc=None
 ) -> np.ndarray:
-    """Fisher information (N, d, d) in 1/m^2 of the raw measurements about the position ``p_loc`` (d,) or (N, d) m."""
+    """Fisher information (N, d, d) in 1/m^2 of the raw
+    measurements about the position ``p_loc`` (d,) or (N, d) m."""
     p, dim = point_rows("p_loc", p_loc, "in metres with d = 2 or 3")
     check_finite("p_loc", p, "m")
     s_a = sigma_rows("sigma_radar", sigma_radar, dim, COMPONENTS[dim])
@@ -161,7 +162,8 @@ def _fuse_optimal_block(
             if near.any():
                 i = offset + int(rows[np.argmax(near)])
                 raise ValueError(
-                    f"{name}: the Gauss-Newton iterate for row {i} reached the sensor's site; degenerate geometry"
+                    f"{name}: the Gauss-Newton iterate for row {i} reached the sensor's site; degenerate "
+                    "geometry"
                 )
         h, H = _model(points, site_a, site_b, idx)
         r = _residual(z[:, rows], h, angle_rows)

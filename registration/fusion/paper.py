@@ -14,7 +14,7 @@ import numpy as np
 
 from registration.core import linalg as la
 from registration.core.angles import wrap_angle
-from registration.fusion.inputs import (
+from registration.fusion.checks import (
     broadcast_rows,
     check_off_site,
     common_rows,

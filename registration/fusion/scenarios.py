@@ -77,7 +77,8 @@ class FusionScenario:
         ss = as_float_array("sigma_second", self.sigma_second)
         if ss.shape != (idx.size,):
             raise ValueError(
-                f"sigma_second: expected one standard deviation per component {tuple(self.components)}, got shape {ss.shape}"
+                f"sigma_second: expected one standard deviation per component {tuple(self.components)}, got "
+                f"shape {ss.shape}"
             )
         check_positive("sigma_second", ss, "(standard deviations in m and rad)")
         # crlb() checks the target is off both sites and validates everything once more

@@ -1,1 +1,2 @@
-"""Interoperation with other frameworks: Stone Soup (:mod:`registration.interop.stonesoup`, needs Stone Soup: ``pip install stonesoup``)."""
+"""Interoperation with other frameworks: Stone Soup
+(:mod:`registration.interop.stonesoup`, needs Stone Soup: ``pip install stonesoup``)."""

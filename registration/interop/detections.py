@@ -113,7 +113,7 @@ def _sensors_table(rows: list, info: dict) -> dict:
 def _navigation_table(platform: np.ndarray, time: np.ndarray, nav: np.ndarray, sensor: np.ndarray) -> dict:
     """One navigation row per (platform, time); sensors of one platform at one instant must agree."""
     order = np.lexsort((time, platform))
-    keep = []
+    keep: list[int] = []
     for i in order:
         if keep and platform[keep[-1]] == platform[i] and time[keep[-1]] == time[i]:
             j = keep[-1]
@@ -127,11 +127,11 @@ def _navigation_table(platform: np.ndarray, time: np.ndarray, nav: np.ndarray, s
                 )
             continue
         keep.append(i)
-    keep = np.array(keep, dtype=int)
+    rows = np.array(keep, dtype=int)
     return {
-        "platform": platform[keep],
-        "time": time[keep],
-        **{c: nav[keep, k] for k, c in enumerate(NAV_COLUMNS)},
+        "platform": platform[rows],
+        "time": time[rows],
+        **{c: nav[rows, k] for k, c in enumerate(NAV_COLUMNS)},
     }
 
 

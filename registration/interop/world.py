@@ -76,7 +76,8 @@ class LocalFrame:
 
     @property
     def reference_point_deg(self) -> tuple[float, float, float]:
-        """The origin as Stone Soup's geodetic feeders (``LLAtoENUConverter``) take it: (lon deg, lat deg, alt m)."""
+        """The origin as Stone Soup's geodetic feeders
+        (``LLAtoENUConverter``) take it: (lon deg, lat deg, alt m)."""
         lat, lon, alt = self.origin
         return float(np.degrees(lon)), float(np.degrees(lat)), alt
 
@@ -116,7 +117,8 @@ class LocalFrame:
         return np.stack([c[:, 2], c[:, 1], wrap_angle(np.pi / 2 - c[:, 0])], axis=1)
 
     def attitude(self, lat, lon, orientation) -> np.ndarray:
-        """Attitudes (N, 3) = (heading, pitch, roll) rad at (lat, lon) rad of Stone Soup orientations (N, 3)."""
+        """Attitudes (N, 3) = (heading, pitch, roll) rad at
+        (lat, lon) rad of Stone Soup orientations (N, 3)."""
         R = np.swapaxes(self._world_enu(lat, lon), 1, 2) @ orientation_rotation(orientation)
         return enu2deck_attitude(R)
 

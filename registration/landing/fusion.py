@@ -10,8 +10,8 @@ import numpy as np
 
 from registration._generated import api as generated
 from registration.core.angles import wrap_angle
+from registration.landing.checks import as_attitude
 from registration.landing.geometry import LandingGeometry, radar_to_touchdown
-from registration.landing.inputs import as_attitude
 from registration.landing.transfer import CameraTransfer, RadarTransfer, propagate_covariance
 
 __all__ = ["FUSION_METHODS", "PositionEstimate", "radar_only", "combine"]

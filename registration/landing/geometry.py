@@ -29,7 +29,7 @@ import numpy as np
 
 from registration._generated import api as generated
 from registration.core.validation import as_float_array, check_range
-from registration.landing.inputs import as_attitude, as_lever_arm, as_polar, common_count
+from registration.landing.checks import as_attitude, as_lever_arm, as_polar, common_count
 
 __all__ = ["LandingGeometry", "deck_to_touchdown_rotation", "radar_to_touchdown"]
 

@@ -166,7 +166,7 @@ def monte_carlo(
     sse = {m: np.zeros((0, nb)) for m in methods}
     nees_sum = {m: np.zeros((0, nb)) for m in methods}
     polar_sse = {m: np.zeros((nb, 3)) for m in methods}
-    truth = None
+    truth: _Truth | None = None
     example: dict = {}
     for nrun in _batches(runs, runs_per_batch, progress):
         res = run_once(simulate(scenario, nrun, rng), config)
@@ -177,6 +177,7 @@ def monte_carlo(
         _accumulate(res, truth, sse, nees_sum, polar_sse)
         if not example:
             example = _example(res, truth, methods)
+    assert truth is not None  # at least one run: the first batch sets it
     att = scenario.attitude(truth.t)
     return MonteCarloResult(
         bin_edges_m=edges,

@@ -13,9 +13,9 @@ import numpy as np
 
 from registration.core.alignment import AlignedSamples, align
 from registration.core.validation import as_float_array, check_positive
+from registration.landing.checks import as_attitude
 from registration.landing.fusion import FUSION_METHODS, combine, radar_only
 from registration.landing.geometry import LandingGeometry
-from registration.landing.inputs import as_attitude
 from registration.landing.transfer import CameraTransfer, RadarTransfer, transfer_camera, transfer_radar
 
 __all__ = ["LandingConfig", "LandingResult", "fusion_instants", "process"]
@@ -86,7 +86,8 @@ def fusion_instants(t_radar: np.ndarray, t_camera: np.ndarray, config: LandingCo
     )
     if hi <= lo:
         raise ValueError(
-            f"sensor data overlap too short: [{lo:.3f}, {hi:.3f}] s after removing half_window_s = {config.half_window_s} s at each end"
+            f"sensor data overlap too short: [{lo:.3f}, {hi:.3f}] s after removing half_window_s = "
+            f"{config.half_window_s} s at each end"
         )
     step = 1.0 / config.fusion_rate_hz
     return lo + step * np.arange(int(np.floor((hi - lo) / step)) + 1)
@@ -99,7 +100,8 @@ def _runs_first(name: str, value, width: int, n_t: int) -> np.ndarray:
         arr = arr[None]
     if arr.ndim != 3 or arr.shape[1:] != (n_t, width):
         raise ValueError(
-            f"{name}: expected shape ({n_t}, {width}) or (R, {n_t}, {width}) to match its timestamps, got {arr.shape}"
+            f"{name}: expected shape ({n_t}, {width}) or (R, {n_t}, {width}) to match its timestamps, got "
+            f"{arr.shape}"
         )
     return arr
 
@@ -118,7 +120,8 @@ def _check_tracks(t_radar, polar_rdr, sigma_rdr, t_camera, angles_cam, sigma_cam
     s_c = as_float_array("sigma_cam", sigma_cam)
     if s_r.shape != (3,) or s_c.shape != (2,):
         raise ValueError(
-            f"sigma_rdr: expected 3 values [m, rad, rad], sigma_cam 2 values [rad, rad]; got {s_r.shape}, {s_c.shape}"
+            f"sigma_rdr: expected 3 values [m, rad, rad], sigma_cam 2 values [rad, rad]; got {s_r.shape}, "
+            f"{s_c.shape}"
         )
     check_positive("sigma_rdr", s_r, "[m, rad, rad]")
     check_positive("sigma_cam", s_c, "[rad, rad]")
@@ -160,6 +163,37 @@ def _run_major(y: np.ndarray, runs: int, k: int) -> np.ndarray:
     return y.reshape(m, runs, k).transpose(1, 0, 2).reshape(runs * m, k)
 
 
+def _align_tracks(
+    t_r: np.ndarray, pol: np.ndarray, t_c: np.ndarray, ang: np.ndarray, tau: np.ndarray, config: LandingConfig
+):
+    """Both tracks aligned at the fusion instants ``tau``: (the radar's alignment, the camera's, the
+    mask (len(tau),) of the instants both sensors can evaluate); ValueError when there is none."""
+    ra = _align_runs(
+        "radar track (t = t_radar, y = polar_rdr as columns [r, a, b] per run)",
+        t_r,
+        pol,
+        tau,
+        config.radar_clock_offset_s,
+        1,
+        config,
+    )
+    ca = _align_runs(
+        "camera track (t = t_camera, y = angles_cam as columns [a, b] per run)",
+        t_c,
+        ang,
+        tau,
+        config.camera_clock_offset_s,
+        0,
+        config,
+    )
+    ok = ra.valid & ca.valid
+    if not ok.any():
+        raise ValueError(
+            "no fusion instant can be evaluated by both sensors; check the timestamps and window"
+        )
+    return ra, ca, ok
+
+
 def process(
     t_radar,
     polar_rdr,
@@ -196,29 +230,7 @@ def process(
     )
     runs = pol.shape[0]
     tau = fusion_instants(t_r, t_c, config) if t_fusion is None else as_float_array("t_fusion", t_fusion)
-    ra = _align_runs(
-        "radar track (t = t_radar, y = polar_rdr as columns [r, a, b] per run)",
-        t_r,
-        pol,
-        tau,
-        config.radar_clock_offset_s,
-        1,
-        config,
-    )
-    ca = _align_runs(
-        "camera track (t = t_camera, y = angles_cam as columns [a, b] per run)",
-        t_c,
-        ang,
-        tau,
-        config.camera_clock_offset_s,
-        0,
-        config,
-    )
-    ok = ra.valid & ca.valid
-    if not ok.any():
-        raise ValueError(
-            "no fusion instant can be evaluated by both sensors; check the timestamps and window"
-        )
+    ra, ca, ok = _align_tracks(t_r, pol, t_c, ang, tau, config)
     tau = tau[ok]
     att_m = as_attitude(attitude_fn(tau))
     if att_m.shape != (tau.size, 3):

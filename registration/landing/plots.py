@@ -109,7 +109,8 @@ def _plot_rmse(plt, mc: MonteCarloResult, fine: MonteCarloResult, path: Path) ->
     ax.set_ylabel("3-D position RMSE (m)")
     ax.set_ylim(bottom=0)
     ax.set_title(
-        f"Positioning RMSE along the approach ({mc.runs} runs, {fine.bin_edges_m[1] - fine.bin_edges_m[0]:g} m bins)"
+        f"Positioning RMSE along the approach ({mc.runs} runs, {fine.bin_edges_m[1] - fine.bin_edges_m[0]:g} "
+        "m bins)"
     )
     ax.legend()
     ax2.set_ylabel("fused (eq. 12) RMSE vs\ncamera + radar range (%)")

@@ -5,6 +5,7 @@ and can be changed through the dataclasses (or the CLI). SI units and radians.""
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from typing import Any
 
 import numpy as np
 
@@ -119,7 +120,8 @@ class Approach:
             raise ValueError(f"glide_slope_rad: expected [0, 0.52) rad, got {self.glide_slope_rad!r}")
         if not self.start_range_m > self.end_range_m >= 0:
             raise ValueError(
-                f"start_range_m > end_range_m >= 0 (m) required, got {self.start_range_m!r}, {self.end_range_m!r}"
+                f"start_range_m > end_range_m >= 0 (m) required, got {self.start_range_m!r}, "
+                f"{self.end_range_m!r}"
             )
         if not self.ground_speed_mps > 0:
             raise ValueError(f"ground_speed_mps: expected > 0 m/s, got {self.ground_speed_mps!r}")
@@ -233,7 +235,7 @@ class LandingScenario:
 
     def config(self, **overrides) -> LandingConfig:
         """A processing configuration that knows this scenario's clock offsets (calibrated clocks)."""
-        base = dict(
+        base: dict[str, Any] = dict(
             radar_clock_offset_s=self.radar.clock_offset_s, camera_clock_offset_s=self.camera.clock_offset_s
         )
         base.update(overrides)

@@ -13,8 +13,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from registration._generated import api as generated
+from registration.landing.checks import as_attitude, as_covariance, as_polar, common_count
 from registration.landing.geometry import LandingGeometry
-from registration.landing.inputs import as_attitude, as_covariance, as_polar, common_count
 
 __all__ = [
     "RadarTransfer",

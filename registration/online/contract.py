@@ -206,7 +206,8 @@ def validate_data(data: Mapping) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _file_columns_hint(data) -> str:
-    """A pointer to the file reader when ``data`` carries file column names (``*_deg``, ``*_m``, ``time_s``)."""
+    """A pointer to the file reader when ``data`` carries
+    file column names (``*_deg``, ``*_m``, ``time_s``)."""
     names = [str(c) for c in (data.columns if hasattr(data, "columns") else data)]
     if any(n.endswith(("_deg", "_m")) or n == "time_s" for n in names):
         return (
@@ -255,7 +256,8 @@ def row_from_mapping(row: Mapping | np.ndarray) -> np.ndarray:
         arr = np.asarray(row, dtype=np.float64)
         if arr.shape != (N_ROW,):
             raise ValueError(
-                f"row: expected {N_ROW} values in contract order (a_lat ... b_elevation), got shape {arr.shape}"
+                f"row: expected {N_ROW} values in contract order (a_lat ... b_elevation), got shape "
+                f"{arr.shape}"
             )
         return arr
     values = _plain_row(row)
@@ -272,7 +274,8 @@ def row_from_mapping(row: Mapping | np.ndarray) -> np.ndarray:
             raise ValueError(f"row: column {c!r}: expected a number ({exc})") from exc
         if cell.size != 1:
             raise ValueError(
-                f"row: column {c!r} holds {cell.size} values; update() takes one row (use update_block for several)"
+                f"row: column {c!r} holds {cell.size} values; update() takes one row (use update_block for "
+                "several)"
             )
         values[j] = cell[0]
     return values

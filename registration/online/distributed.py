@@ -35,7 +35,8 @@ DEFAULT_CHUNK_RUNS = 100
 
 @dataclass(frozen=True)
 class ChunkTask:
-    """Seeds ``start .. stop - 1`` of one Monte Carlo configuration (filter ``config``, scenario arguments)."""
+    """Seeds ``start .. stop - 1`` of one Monte Carlo
+    configuration (filter ``config``, scenario arguments)."""
 
     start: int
     stop: int
@@ -81,7 +82,8 @@ def merge_runs(parts: list[dict]) -> dict:
 
 @dataclass
 class MonteCarloJob:
-    """One Monte Carlo configuration of :func:`run_montecarlo_jobs` (the arguments of :func:`run_montecarlo`)."""
+    """One Monte Carlo configuration of :func:`run_montecarlo_jobs` (the arguments of
+    :func:`run_montecarlo`)."""
 
     runs: int = 100
     seed0: int = 0
@@ -141,6 +143,7 @@ def run_montecarlo_chunked(
     progress: bool = False,
     **scenario_kwargs,
 ) -> MonteCarloResult:
-    """:func:`run_montecarlo` in chunks of ``chunk_runs`` seeds, on ``client``'s workers or in this process."""
+    """:func:`run_montecarlo` in chunks of ``chunk_runs``
+    seeds, on ``client``'s workers or in this process."""
     job = MonteCarloJob(runs, seed0, config, include_weak, tuple(extra_sums), scenario_kwargs)
     return run_montecarlo_jobs([job], client, chunk_runs=chunk_runs, progress=progress)[0]

@@ -7,6 +7,8 @@ is bit for bit the run in one piece. Wang et al. 2011, the filter of eqs. (18)-(
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from registration import _codegen
@@ -92,7 +94,9 @@ class OnlineRegistrar:
     def __init__(self, config: RegistrationConfig | None = None):
         self.config = config or RegistrationConfig()
         self._step = _codegen.get(self.config.step_name)
-        self._stepper = None  # the compiled single-row stepper holding the state, made on first update()
+        # The compiled single-row stepper holding the state, made on first update(): the generated
+        # module's CStepper or PyStepper (the generated callables are untyped, hence Any).
+        self._stepper: Any = None
         self._advance = None  # its advance(), bound once
         # The state as read-only arrays; None after update(), when it lives in the stepper's buffers.
         self._held: dict | None = {
@@ -283,7 +287,8 @@ class OnlineRegistrar:
             info = out["info_new"][n - 1] if n else self.info
             if not partial:
                 raise RuntimeError(
-                    f"row {self.n_updates + n}: the filter step produced non-finite values; state left unchanged"
+                    f"row {self.n_updates + n}: the filter step produced non-finite values; state left "
+                    "unchanged"
                 )
         if n:
             window = np.concatenate([self._state("window"), x[:n]])[-self._q_window :]

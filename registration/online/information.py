@@ -32,8 +32,8 @@ def information_matrix(H: np.ndarray, R: np.ndarray) -> np.ndarray:
     W[:, 0] = H[:, 0] / L[:, 0, 0, None]
     W[:, 1] = (H[:, 1] - L[:, 1, 0, None] * W[:, 0]) / L[:, 1, 1, None]
     W[:, 2] = (H[:, 2] - L[:, 2, 0, None] * W[:, 0] - L[:, 2, 1, None] * W[:, 1]) / L[:, 2, 2, None]
-    W = W.reshape(-1, H.shape[-1])
-    J = W.T @ W
+    W_rows = W.reshape(-1, H.shape[-1])
+    J = W_rows.T @ W_rows
     return 0.5 * (J + J.T)
 
 

@@ -76,7 +76,7 @@ class MonteCarloResult:
         return [q for q in self.quantities if q.in_nees]
 
     def nees_summary(self) -> dict | None:
-        if self.nees is None:
+        if self.nees is None or self.nees_interval is None:  # both None: no quantity in the NEES
             return None
         lo, hi = self.nees_interval
         final = float(self.nees[-1])
@@ -133,21 +133,29 @@ class MonteCarloResult:
         cfg = self.config
         motion = self.scenario.get("ship_motion")
         lines = [
-            f"Monte Carlo: {self.runs} runs of the paper scenario (seeds {self.seed0}..{self.seed0 + self.runs - 1}), "
-            f"{len(self.time)} rows each; ships {'level (paper)' if motion is None else 'pitching/rolling'}; "
-            f"angle noise {np.degrees(self.scenario['angle_sigma_rad']):.3g} deg; "
-            f"filter: linearization {cfg.linearization}, Q {cfg.q_mode}, T {cfg.t_variant} "
-            f"(data simulated with T {self.scenario.get('t_variant', 'standard')})",
-            "Final step. RMSE over runs; filter sigma = rms over runs of the filter's own sigma, 2σ = its mean 2-sigma;",
-            "CRLB = Cramér-Rao bound with the prior, from H, R at the true values; bias = mean error over runs.",
+            f"Monte Carlo: {self.runs} runs of the paper scenario (seeds "
+            f"{self.seed0}..{self.seed0 + self.runs - 1}), {len(self.time)} rows each; ships "
+            f"{'level (paper)' if motion is None else 'pitching/rolling'}; angle noise "
+            f"{np.degrees(self.scenario['angle_sigma_rad']):.3g} deg; filter: linearization "
+            f"{cfg.linearization}, Q {cfg.q_mode}, T {cfg.t_variant} (data simulated with T "
+            f"{self.scenario.get('t_variant', 'standard')})",
+            "Final step. RMSE over runs; filter sigma = rms over runs of the filter's own sigma, 2σ = its "
+            "mean 2-sigma;",
+            "CRLB = Cramér-Rao bound with the prior, from H, R at the true values; bias = mean error over "
+            "runs.",
         ]
-        head = f"  {'quantity':<16}{'unit':<5}{'RMSE':>10}{'σ filter':>10}{'2σ filter':>11}{'√CRLB':>10}{'RMSE/√CRLB':>11}{'bias':>10}  kind"
+        head = (
+            "  "
+            f"{'quantity':<16}{'unit':<5}{'RMSE':>10}{'σ filter':>10}{'2σ filter':>11}{'√CRLB':>10}"
+            f"{'RMSE/√CRLB':>11}{'bias':>10}  kind"
+        )
         lines.append(head)
         for row, q in zip(self.final_rows(), self.quantities):
             k = q.scale
             lines.append(
                 f"  {q.name:<16}{q.unit:<5}{row['rmse'] * k:10.4g}{row['filter_sigma'] * k:10.4g}"
-                f"{row['filter_two_sigma_mean'] * k:11.4g}{row['crlb_sigma'] * k:10.4g}{row['rmse_over_crlb']:11.2f}"
+                f"{row['filter_two_sigma_mean'] * k:11.4g}{row['crlb_sigma'] * k:10.4g}"
+                f"{row['rmse_over_crlb']:11.2f}"
                 f"{row['mean_error'] * k:10.3g}  {q.kind}"
             )
         if not self.quantities:
@@ -160,21 +168,23 @@ class MonteCarloResult:
         if ns is not None:
             lo, hi = ns["interval_95"]
             lines.append(
-                f"NEES of the identifiable part ({', '.join(ns['quantities'])}; m = {ns['dof_per_run']} per run): "
-                f"final {ns['final']:.3g}, time mean {ns['time_mean']:.3g}; 95% interval [{lo:.3g}, {hi:.3g}] "
-                f"(M avgNEES ~ chi2({ns['chi2_dof']})); inside at {100 * ns['fraction_of_steps_inside']:.0f}% of steps -> {ns['verdict']}"
+                f"NEES of the identifiable part ({', '.join(ns['quantities'])}; m = {ns['dof_per_run']} per "
+                f"run): final {ns['final']:.3g}, time mean {ns['time_mean']:.3g}; 95% interval [{lo:.3g}, "
+                f"{hi:.3g}] (M avgNEES ~ chi2({ns['chi2_dof']})); inside at "
+                f"{100 * ns['fraction_of_steps_inside']:.0f}% of steps -> {ns['verdict']}"
             )
         else:
             lines.append("NEES: no identifiable quantity, nothing to test")
         nis = self.nis_summary()
         lo, hi = nis["interval_95"]
         lines.append(
-            f"NIS (3 per run): time mean {nis['time_mean']:.3g}; 95% interval [{lo:.3g}, {hi:.3g}] (chi2({nis['chi2_dof']})); "
-            f"inside at {100 * nis['fraction_of_steps_inside']:.0f}% of steps"
+            f"NIS (3 per run): time mean {nis['time_mean']:.3g}; 95% interval [{lo:.3g}, {hi:.3g}] "
+            f"(chi2({nis['chi2_dof']})); inside at {100 * nis['fraction_of_steps_inside']:.0f}% of steps"
         )
         return "\n".join(lines)
 
     def to_json(self) -> dict:
+        nees = self.nees_summary()
         series = []
         for j, q in enumerate(self.quantities):
             series.append(
@@ -198,7 +208,7 @@ class MonteCarloResult:
             "scenario": self.scenario,
             "scenario_kwargs": self.scenario_kwargs,
             "final": self.final_rows(),
-            "nees": None if self.nees is None else {**self.nees_summary(), "series": self.nees.tolist()},
+            "nees": None if nees is None or self.nees is None else {**nees, "series": self.nees.tolist()},
             "nis": {**self.nis_summary(), "series": self.nis.tolist()},
             "observability": {
                 "status_counts": self.status_counts,
@@ -258,7 +268,7 @@ class MonteCarloResult:
         if self.quantities:
             axes[0].legend(fontsize=8, loc="upper right", framealpha=0.9)
         ax = axes[len(self.quantities)]
-        if self.nees is not None:
+        if self.nees is not None and self.nees_interval is not None:
             lo, hi = self.nees_interval
             ax.plot(t, self.nees, color="k", lw=1.2, label=f"avg NEES (m = {self.nees_dof} per run)")
             ax.axhspan(lo, hi, color="tab:green", alpha=0.15, label=f"NEES 95% interval [{lo:.2f}, {hi:.2f}]")

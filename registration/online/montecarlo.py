@@ -52,7 +52,8 @@ def parse_sum(text: str) -> tuple[str, str]:
         raise ValueError(f"sum {text!r}: the two states must differ")
     if IS_ANGLE[i] != IS_ANGLE[j]:
         raise ValueError(f"sum {text!r}: cannot add an angle and a range")
-    return tuple(STATE_NAMES[k] for k in sorted((i, j)))
+    lo, hi = sorted((i, j))
+    return STATE_NAMES[lo], STATE_NAMES[hi]
 
 
 def _observability_counts(
@@ -126,7 +127,8 @@ def _direction(names) -> np.ndarray:
 
 
 def _select_quantities(runs, status_counts, combo_counts, include_weak, sums_requested) -> tuple[list, dict]:
-    """Identifiable (in every run) states, then identifiable sums, then flagged weak states and requested sums."""
+    """Identifiable (in every run) states, then identifiable
+    sums, then flagged weak states and requested sums."""
     quantities: list[Quantity] = []
     excluded = {}
     for i, name in enumerate(STATE_NAMES):

@@ -95,8 +95,8 @@ def plot_estimate_series(
     truth_state: np.ndarray | None,
     path: Path,
 ) -> Path:
-    """Estimates (K, 12) with a ±2 ``sigma`` (K, 12) band against time (K,) in s, SI units and
-    radians (drawn in degrees or metres), as ``path`` (PNG); ``status``: state name -> observability status."""
+    """Estimates (K, 12) with a ±2 ``sigma`` (K, 12) band against time (K,) in s, SI units and radians
+    (drawn in degrees or metres), as ``path`` (PNG); ``status``: state name -> observability status."""
     plt = pyplot()
     fig, axes = plt.subplots(
         6, 2, figsize=(11, 15), sharex=True, layout="constrained"

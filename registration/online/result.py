@@ -29,7 +29,8 @@ def difference_statistics(diff: np.ndarray) -> dict:
 
 
 def identifiable_combinations(x: np.ndarray, P: np.ndarray, report: ObservabilityReport) -> list[dict]:
-    """Estimates (rad or m, the states' unit) and 1 sigma of the sums that are identifiable when their parts are not (e.g. dC_a + dq_a)."""
+    """Estimates (rad or m, the states' unit) and 1 sigma of the sums
+    that are identifiable when their parts are not (e.g. dC_a + dq_a)."""
     out = []
     for a, b in report.identifiable_sums:
         i, j = STATE_NAMES.index(a), STATE_NAMES.index(b)
@@ -46,7 +47,8 @@ def identifiable_combinations(x: np.ndarray, P: np.ndarray, report: Observabilit
 
 
 def estimate_rows(x: np.ndarray, P: np.ndarray, report: ObservabilityReport, truth_state=None) -> list[dict]:
-    """One dict per state and per identifiable sum: name, unit ('rad' or 'm'), estimate, sigma, truth, status."""
+    """One dict per state and per identifiable sum: name,
+    unit ('rad' or 'm'), estimate, sigma, truth, status."""
     rows = []
     sigma = np.sqrt(np.diag(P))
     for i, name in enumerate(STATE_NAMES):

@@ -41,7 +41,7 @@ def sweep_table(parameter: str, values, results: list[MonteCarloResult]):
 
     rows = []
     for value, res in zip(values, results, strict=True):
-        if res.nees is None:
+        if res.nees is None or res.nees_interval is None:  # both None: no quantity in the NEES
             nees, lo, hi = np.nan, np.nan, np.nan
         else:
             (lo, hi), nees = res.nees_interval, float(res.nees[-1])
@@ -68,7 +68,8 @@ def sweep_table(parameter: str, values, results: list[MonteCarloResult]):
 
 
 def write_sweep_table(table, path, fmt: str = "csv") -> Path:
-    """Write the table as ``path`` with the suffix of ``fmt`` (``"csv"`` or ``"parquet"``); returns the path."""
+    """Write the table as ``path`` with the suffix of
+    ``fmt`` (``"csv"`` or ``"parquet"``); returns the path."""
     if fmt not in ("csv", "parquet"):
         raise ValueError(f"format: expected 'csv' or 'parquet', got {fmt!r}")
     path = Path(path).with_suffix("." + fmt)

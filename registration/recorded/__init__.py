@@ -2,19 +2,22 @@
 column names, row checks with a reason for every bad row, pairing of asynchronous plots, and a
 streaming run that is checkpointed and resumes bit for bit.
 
-The run is a pipeline (:mod:`.run.runner`): :mod:`.run.plan` (with :mod:`.output.outfolder`) ->
-:mod:`.reading.unitcheck` -> :mod:`.pairing.paired` (with :mod:`.reading.sources`,
+The run is a pipeline (:mod:`.run.runner`) of stages that take its plan: :mod:`.run.plan` (with
+:mod:`registration.io.output.outfolder`; the unit check :mod:`.reading.unitcheck` through
+:func:`.run.plan.input_warnings`) -> :mod:`.run.pairstage` (with :mod:`.reading.sources`,
 :mod:`.reading.streams`, :mod:`.pairing.pairs`) -> :mod:`.run.filtering` (with :mod:`.run.runstate`,
-:mod:`.output.outputs`) -> :mod:`.output.report` and :mod:`.output.plots` -> publication in ``--out``
-(:mod:`.output.outfolder`). Subpackages: ``reading`` (formats, row checks, field counts, unit
-checks, sources, streams), ``pairing``, ``run`` (plan, options, checkpoint, filtering, runner) and
-``output`` (outputs, report, plots, writers, the output folder).
+:mod:`.output.outputs`) -> :mod:`.run.summary` and :mod:`.output.plots` -> publication in ``--out``.
+
+Subpackages: ``run`` (the stages: plan, pairing stage, checkpointed filtering, summary, runner)
+above ``reading`` (formats, row checks, field counts, unit checks, sources, streams), ``pairing``
+(the pairing of two plot streams) and ``output`` (outputs, plots, writers); ``options`` (the run's
+and the pairing's options) lies below them all.
 """
 
 from registration.io.files.tablefile import REASON_CODES, FileFormatError, NoValidRowsError
 from registration.io.output.checkpoint import CheckpointError, load_checkpoint, save_checkpoint
 from registration.io.output.outfolder import OUTPUT_NAMES, OutputFolderError
-from registration.recorded.output.report import summary_consistency
+from registration.recorded.options import PairingOptions, RunOptions
 from registration.recorded.output.writers import CsvAppender, PartsWriter
 from registration.recorded.reading.columns import (
     ESTIMATE_COLUMNS,
@@ -38,8 +41,8 @@ from registration.recorded.reading.formats import (
 )
 from registration.recorded.reading.rowcheck import BadRowError, check_frame, sync_layout
 from registration.recorded.reading.validate import validate_files
-from registration.recorded.run.options import PairingOptions, RunOptions
 from registration.recorded.run.runner import run_register
+from registration.recorded.run.summary import summary_consistency
 
 __all__ = [
     "run_register",

@@ -1,4 +1,5 @@
-"""The consistency gate of `simulate` and `montecarlo`: the NIS line, summary.json, exit code 3 and --allow-inconsistent."""
+"""The consistency gate of `simulate` and `montecarlo`: the NIS line, summary.json, exit code 3 and
+--allow-inconsistent."""
 
 from __future__ import annotations
 

@@ -1,4 +1,5 @@
-"""Every failure a user can meet ends with one line on standard error and a documented exit code, no traceback."""
+"""Every failure a user can meet ends with one line on
+standard error and a documented exit code, no traceback."""
 
 from __future__ import annotations
 
@@ -162,7 +163,8 @@ def test_ctrl_c_says_where_it_stopped(tmp_path, capsys, monkeypatch):
 
 
 def test_every_message_names_the_full_command(tmp_path, capsys, monkeypatch):
-    """Before: `registration fleet: error: ...` beside `registration fleet register: error: ...` (the gate)."""
+    """Before: `registration fleet: error: ...` beside
+    `registration fleet register: error: ...` (the gate)."""
     missing = [f"--{t}={tmp_path / t}.csv" for t in ("plots", "navigation", "sensors")]
     assert main(["fleet", "register", *missing, "--out", str(tmp_path / "o")]) == EXIT_BAD_INPUT
     assert capsys.readouterr().err.startswith("registration fleet register: error: ")

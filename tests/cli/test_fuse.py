@@ -26,7 +26,8 @@ def gaussian_gdop_se(cov: np.ndarray, n: int) -> float:
 def test_scenario1_reproduces_the_papers_figures():
     ev = evaluate(paper_scenario(1), trials=2000, seed=1)
     radar, actual = ev.row("radar"), ev.row("paper_actual")
-    # Radar alone at range r: P has eigenvalues sigma_r^2 and (r sigma_a)^2, so GDOP = hypot(sigma_r, r sigma_a),
+    # Radar alone at range r: P has eigenvalues sigma_r^2 and (r sigma_a)^2, so GDOP = hypot(sigma_r, r
+    # sigma_a),
     # with the paper's sensor (100 m, 7 mrad) and target range (100 km).
     assert radar["analytic_gdop_m"] == pytest.approx(np.hypot(100.0, 100e3 * 7e-3), rel=1e-12)
     # the paper's radar figure is that analytic value to its printed precision

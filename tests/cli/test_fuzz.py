@@ -125,7 +125,8 @@ FAST = {
 
 @st.composite
 def command_lines(draw, name: str):
-    """FAST first, then random options: a later option overrides the fast default (argparse keeps the last)."""
+    """FAST first, then random options: a later option
+    overrides the fast default (argparse keeps the last)."""
     table = OPTIONS[name]
     argv = [name, *FAST[name]]
     for option in draw(st.lists(st.sampled_from(sorted(table)), max_size=4)):
@@ -232,7 +233,8 @@ def valid_table() -> list[list[str]]:
 
 @st.composite
 def mutated_tables(draw) -> bytes:
-    """The valid table with a few changes: odd cells, a column scaled (a unit mistake), dropped or swapped, rows cut or repeated."""
+    """The valid table with a few changes: odd cells, a column scaled
+    (a unit mistake), dropped or swapped, rows cut or repeated."""
     rows = [list(r) for r in valid_table()]
     width = len(rows[0])
     for _ in range(draw(st.integers(0, 3))):
@@ -264,7 +266,8 @@ def mutated_tables(draw) -> bytes:
 
 @st.composite
 def random_tables(draw) -> bytes:
-    """A CSV with some of the synchronous columns (any order, maybe extra ones) and a few rows of odd cells."""
+    """A CSV with some of the synchronous columns (any
+    order, maybe extra ones) and a few rows of odd cells."""
     columns = draw(
         st.lists(st.sampled_from(list(SYNC_COLUMNS) + ["extra", "time_s"]), max_size=len(SYNC_COLUMNS) + 2)
     )

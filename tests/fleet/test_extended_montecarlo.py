@@ -64,13 +64,13 @@ platform at the true time (reported - time bias), true sensor position (stated -
 ENU), range (1 + gain) |u| + bias.
 
 **Without the extended columns** the results are those of the code before the extension (commit
-b80e4f0): the golden estimate below was produced by that commit, on ``fleet_scenario(5,
-duration_s=120)``, and the current code reproduced it bit for bit on the machine it was made on.
-The test allows 1e-12 relative (another CPU or BLAS may round the last bits differently) and
-checks that none of the extended generated functions is called. **With the columns present and every prior 0** (all
-extended states fixed) the other states' estimates and sigmas equal the run without the columns to
-1e-8 sigma (a different generated function and the time-bias path are used, so not bit for bit),
-and the extended states are listed ``fixed`` with estimate 0 and sigma 0.
+b80e4f0): the golden estimate below was produced by that commit, on ``fleet_scenario(5, duration_s=120)``,
+and the current code reproduced it bit for bit on the machine it was made on. The test allows 1e-12
+relative (another CPU or BLAS may round the last bits differently) and checks that none of the extended
+generated functions is called. **With the columns present and every prior 0** (all extended states fixed)
+the other states' estimates and sigmas equal the run without the columns to 1e-8 sigma (a different
+generated function and the time-bias path are used, so not bit for bit), and the extended states are
+listed ``fixed`` with estimate 0 and sigma 0.
 """
 
 from __future__ import annotations
@@ -263,8 +263,8 @@ def test_state_nees_in_its_95_percent_band(mc):
     lo, hi = nees_interval(mc["runs"], mc["nees_dof"], level=0.95)
     print(_table(mc))
     assert lo <= mc["nees"].mean() <= hi, (
-        f"{mc['name']}: mean NEES {mc['nees'].mean():.2f} outside [{lo:.2f}, {hi:.2f}] for {mc['nees_dof']} states\n"
-        + _table(mc)
+        f"{mc['name']}: mean NEES {mc['nees'].mean():.2f} outside [{lo:.2f}, {hi:.2f}] for {mc['nees_dof']} "
+        "states\n" + _table(mc)
     )
 
 
@@ -378,7 +378,8 @@ def test_simulated_plots_match_an_independent_computation():
             np.testing.assert_allclose(sc.plots["elevation"][rows], ele, rtol=0, atol=1e-9, err_msg=sid)
 
 
-# -- without the extended columns: the results of before; with every prior 0: the same estimates ---------------
+# -- without the extended columns: the results of before; with every prior 0: the same estimates
+# ---------------
 
 #: ``solve_batch(fleet_scenario(5, duration_s=120).problem()).estimate`` as produced by commit b80e4f0
 #: (before the extended model), as hexadecimal floats.

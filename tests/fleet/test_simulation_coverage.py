@@ -39,7 +39,8 @@ def test_a_target_overhead_falls_silent_inside_the_cone():
     elevation = sc.plots["elevation"]
     assert np.nanmax(elevation) <= DEFAULT_COVERAGE["3d"].max_elevation + 1e-6
     silent = np.setdiff1d(np.arange(200.0), t)
-    # inside the cone: horizontal distance below 5 km / tan(70 deg) = 1.82 km, i.e. 9.1 s either side of t = 100 s
+    # inside the cone: horizontal distance below 5 km / tan(70 deg) = 1.82 km, i.e. 9.1 s either side of t =
+    # 100 s
     assert silent.min() >= 90 and silent.max() <= 110 and silent.size >= 15
     assert (t < 90).any() and (t > 110).any()
 

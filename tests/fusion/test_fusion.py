@@ -1,4 +1,5 @@
-"""Tests of dissimilar-dimension fusion (registration.fusion): the paper's method, the optimal fuser, the CRLB.
+"""Tests of dissimilar-dimension fusion (registration.fusion):
+the paper's method, the optimal fuser, the CRLB.
 
 Statistical tests use vectorised Monte Carlo with fixed seeds. Each states its reasoning: for n
 independent Gaussian samples, a variance estimate has a relative standard error sqrt(2/(n-1)),
@@ -15,7 +16,7 @@ import numpy as np
 import pytest
 
 from registration import fusion as F
-from registration.fusion.inputs import BLOCK
+from registration.fusion.checks import BLOCK
 
 PAPER1 = dict(
     z=np.array([100e3, np.radians(15.0)]),
@@ -50,7 +51,8 @@ SAME3 = dict(
 CASES = {"paper1": PAPER1, "paper2": PAPER2, "irst3d": IRST3, "same_site3d": SAME3}
 
 
-# --------------------------------------------------------------------------- independent helpers (plain numpy)
+# --------------------------------------------------------------------------- independent helpers (plain
+# numpy)
 def polar_to_xyz(z: np.ndarray) -> np.ndarray:
     """Independent of the generated functions: [r, az(, el)] -> Cartesian (rows)."""
     z = np.atleast_2d(z)

@@ -167,11 +167,13 @@ def test_a_2d_radar_agrees_for_a_level_platform_and_a_target_at_its_height():
     target = np.array([8000.0, -3000.0, 0.0])
     z = np.asarray(model.function(world_state(target)), float).ravel()  # (bearing, range)
     expected = fleet_plot(nav, np.zeros(3), target)[0]
-    # at the origin the deck plane of a level platform is the world's x-y plane: slant range = horizontal range
+    # at the origin the deck plane of a level platform is the world's x-y plane: slant range = horizontal
+    # range
     assert abs(expected[2]) * expected[0] < TOL_M
     assert abs(z[1] - expected[0]) < TOL_M
     assert abs(-z[0] - expected[1]) * expected[0] < TOL_M
-    # above that plane Stone Soup's 2-D range is horizontal, ours is slant: they differ (documented, not hidden)
+    # above that plane Stone Soup's 2-D range is horizontal, ours is slant: they differ (documented, not
+    # hidden)
     above = fleet_plot(nav, np.zeros(3), target + [0, 0, 3000.0])[0]
     assert above[0] - np.asarray(model.function(world_state(target + [0, 0, 3000.0])), float)[1, 0] > 100.0
 

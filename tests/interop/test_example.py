@@ -1,4 +1,5 @@
-"""docs/examples/stonesoup_tracking.py: Stone Soup tracks the registered detections better than the raw ones."""
+"""docs/examples/stonesoup_tracking.py: Stone Soup tracks
+the registered detections better than the raw ones."""
 
 import importlib.util
 from pathlib import Path

@@ -1,8 +1,9 @@
-"""Acceptance of `registration import asterix` with `registration fleet register --tables`, through
-the commands: a simulated air-traffic scenario (three radars with range bias, range gain, azimuth
-bias and clock offset; ADS-B for most aircraft; Mode A/C-only and primary-only plots) encoded by
-libasterix as a raw recording and a pcap; both forms must give identical tables, and, with the
-plots without ids associated, every error must come back within 3.5 sigma. Seeds other than those the reader was developed on (0-3)."""
+"""Acceptance of `registration import asterix` with `registration fleet register --tables`, through the
+commands: a simulated air-traffic scenario (three radars with range bias, range gain, azimuth bias and
+clock offset; ADS-B for most aircraft; Mode A/C-only and primary-only plots) encoded by libasterix as a
+raw recording and a pcap; both forms must give identical tables, and, with the plots without ids
+associated, every error must come back within 3.5 sigma. Seeds other than those the reader was developed
+on (0-3)."""
 
 from __future__ import annotations
 

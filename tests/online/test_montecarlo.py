@@ -113,7 +113,8 @@ def test_nees_interval_covers_the_average_of_chi_square_draws_at_its_level():
 
 
 def test_nees_of_a_consistent_filter_falls_inside_95_percent():
-    """Errors drawn from the claimed covariance: the run-averaged NEES is inside the interval ~95% of the time."""
+    """Errors drawn from the claimed covariance: the
+    run-averaged NEES is inside the interval ~95% of the time."""
     rng = np.random.default_rng(1)
     runs, k, n = 10, 400, 5
     A = rng.normal(size=(n, n))

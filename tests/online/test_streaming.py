@@ -210,7 +210,8 @@ def test_a_copied_registrar_continues_like_the_original(scenario):
 
 
 def _row_forms(scenario) -> dict:
-    """The scenario's rows as each form update() takes: the contract's array and the mappings users try first."""
+    """The scenario's rows as each form update() takes:
+    the contract's array and the mappings users try first."""
     import pandas as pd
 
     data, k = scenario.data, len(scenario.data["time"])

@@ -89,7 +89,8 @@ def test_async_plots_with_clock_offset_and_10hz_navigation_are_consistent_with_t
     )
     s = _summary(out)
     p = s["pairing"]
-    # A's instants are whole seconds; B's plots (0, 1.25, 2.5, ... s on the reference clock) coincide every 5 s
+    # A's instants are whole seconds; B's plots (0, 1.25, 2.5, ... s on the reference clock) coincide every 5
+    # s
     assert p["instants"] == n_a and p["exact"] == 60 and p["paired"] == p["exact"] + p["interpolated"]
     assert p["paired"] + p["unpaired"] == p["instants"]
     assert p["unpaired"] == 1 and p["unpaired_reasons"] == {
@@ -187,7 +188,8 @@ NAV_ROW_11 = (
     [
         (True, False, B_ROW_7),
         (False, True, NAV_ROW_11),
-        # both: the files are read in the order plot files (A, B), then navigation files, so B's row comes first
+        # both: the files are read in the order plot files (A, B), then navigation files, so B's row comes
+        # first
         (True, True, B_ROW_7),
     ],
 )

@@ -29,24 +29,26 @@ import numpy as np
 
 from registration.fleet.association.grouping.confirm import confirm_targets
 from registration.fleet.association.grouping.geometry import Assigner
-from registration.fleet.association.inputs import (
+from registration.fleet.association.grouping.units import make_units
+from registration.fleet.association.joining.checks import JoinState, outlier_stage
+from registration.fleet.association.joining.curves import anchor_curves
+from registration.fleet.association.joining.joins import DEFER_SHARE, join_units
+from registration.fleet.association.joining.singles import join_single_plots
+from registration.fleet.association.options import AssociationOptions
+from registration.fleet.association.problems import (
     all_plots_problem,
     anchor_references,
     initial_covariance,
     plot_ids,
 )
-from registration.fleet.association.joining.checks import JoinState, outlier_stage
-from registration.fleet.association.joining.curves import anchor_curves
-from registration.fleet.association.joining.joins import DEFER_SHARE, join_units
-from registration.fleet.association.joining.singles import join_single_plots
-from registration.fleet.association.joining.units import make_units
-from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.references import name_by_references
 from registration.fleet.association.report import plot_report, track_notes
 from registration.fleet.association.result import AssociationResult
 from registration.fleet.association.solves import Registrar
 from registration.fleet.batch.solve import solve_batch
 from registration.fleet.batch.solver import progress_bar, progress_status
+from registration.fleet.data.inputs import References
+from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["AssociationOptions", "AssociationResult", "associate_and_register"]
 
@@ -80,6 +82,35 @@ def _check_windows(problem, options: AssociationOptions) -> None:
             f"any sensor, too few to match a target's pieces of track: give longer windows (--window-s, "
             f"AssociationOptions.window_s; 20 s by default)"
         )
+
+
+def _single_plots_stage(
+    reg: Registrar,
+    problem: FleetProblem,
+    refs: References,
+    labels: np.ndarray,
+    free: np.ndarray,
+    options: AssociationOptions,
+) -> tuple[np.ndarray, np.ndarray]:
+    """The plots ``free`` (N,) in no track joined one by one to the anchors' curves: (the labels
+    with them, the target of each single plot ('' none)); registered again when they are more than
+    ``DEFER_SHARE`` of the labelled plots, else checked by the final solve only."""
+    curves = anchor_curves(
+        reg.problem_solved,
+        reg.x,
+        refs,
+        reg.between,
+        gap_s=options.reference_gap_s,
+        accel_sigma=options.reference_accel_sigma,
+        fit=reg.labelled_fit() if reg.thinned else None,
+        surface=problem.surface,
+    )
+    single = join_single_plots(reg, curves, labels, free, options)
+    if (single != "").any():
+        labels = np.where(single != "", single, labels).astype(str)
+        if (single != "").sum() > DEFER_SHARE * (labels != "").sum():
+            reg.solve(labels)
+    return labels, single
 
 
 def associate_and_register(
@@ -134,23 +165,9 @@ def associate_and_register(
         state, units, join_passes, joined_ok = join_units(reg, units, base, options, bar, state)
         labels = np.where(base != "", base, state.label).astype(str)
         progress_status(bar, "single plots")
-        curves = anchor_curves(
-            reg.problem_solved,
-            reg.x,
-            refs,
-            reg.between,
-            gap_s=options.reference_gap_s,
-            accel_sigma=options.reference_accel_sigma,
-            fit=reg.labelled_fit() if reg.thinned else None,
-            surface=problem.surface,
+        labels, single = _single_plots_stage(
+            reg, problem, refs, labels, (labels == "") & ~state.outlier, options
         )
-        single = join_single_plots(reg, curves, labels, (labels == "") & ~state.outlier, options)
-        if (single != "").any():
-            labels = np.where(single != "", single, labels).astype(str)
-            if (single != "").sum() > DEFER_SHARE * (
-                labels != ""
-            ).sum():  # else checked by the final solve only
-                reg.solve(labels)
         outliers = outlier_stage(reg, labels, given, options) | state.outlier
         labels[outliers] = ""
         progress_status(bar, "final registration")
@@ -161,6 +178,7 @@ def associate_and_register(
         problem, labels, given != "", outliers, units, state, conf.track, result, single != ""
     )
     notes = (*units.notes, *state.notes, *track_notes(problem, track_id, given != "", labels))
+    assert reg.problem_solved is not None  # the final solve registered the labelled plots
     return AssociationResult(
         batch=result,
         problem=reg.problem_solved,

@@ -27,22 +27,21 @@ class AssociationOptions:
     the last, and the solves between them, use every k-th window, k such that these hold about this
     many plots.
 
-    Tracks and joins: track_gap_s (s): a track (given by the ``track`` column or made by the
-    tracker) is split where its plots are further apart in time than this. jump_probability: a
-    given track is split where a plot lies outside the ``1 - jump_probability`` gate of the track's
-    prediction by a constant-velocity filter with white acceleration ``jump_accel_sigma`` (m/s^2;
-    generous: a 2-D radar's plots placed in a rolling deck sway with the roll). test_plots: plots of a track used in one join test at most (spread over it).
-    min_join_plots: plots of a track within a target's span needed to test the pair.
-    ambiguity_ratio: a join is accepted when its chi-square tail probability is at least this many
+    Tracks and joins: track_gap_s (s): a track (given by the ``track`` column or made by the tracker) is
+    split where its plots are further apart in time than this. jump_probability: a given track is split
+    where a plot lies outside the ``1 - jump_probability`` gate of the track's prediction by a
+    constant-velocity filter with white acceleration ``jump_accel_sigma`` (m/s^2; generous: a 2-D radar's
+    plots placed in a rolling deck sway with the roll). test_plots: plots of a track used in one join test
+    at most (spread over it). min_join_plots: plots of a track within a target's span needed to test the
+    pair. ambiguity_ratio: a join is accepted when its chi-square tail probability is at least this many
     times that of the track's next candidate (and of the sensor's other tracks for that target).
-    drop_probability: a join whose residuals under the registration exceed the chi-square
-    ``1 - drop_probability`` quantile is dropped. outlier_probability: in the final stage, an
-    associated plot whose residuals exceed the ``1 - outlier_probability`` quantile is left out.
-    reference_gap_s (s): reference positions further apart are not interpolated between;
-    reference_accel_sigma (m/s^2): the acceleration allowed between two reference positions.
-    max_join_passes: attach-register-check passes that change the joins at most, from the start and
-    again after each split of tracks and after the provisional targets. batch: the solver's options
-    (its window_s is replaced by this window_s).
+    drop_probability: a join whose residuals under the registration exceed the chi-square ``1 -
+    drop_probability`` quantile is dropped. outlier_probability: in the final stage, an associated plot
+    whose residuals exceed the ``1 - outlier_probability`` quantile is left out. reference_gap_s (s):
+    reference positions further apart are not interpolated between; reference_accel_sigma (m/s^2): the
+    acceleration allowed between two reference positions. max_join_passes: attach-register-check passes
+    that change the joins at most, from the start and again after each split of tracks and after the
+    provisional targets. batch: the solver's options (its window_s is replaced by this window_s).
     """
 
     window_s: float = 20.0

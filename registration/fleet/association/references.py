@@ -6,11 +6,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from registration.fleet.association.grouping.units import Units
 from registration.fleet.association.joining.attach import candidate_plots, pair_tests
 from registration.fleet.association.joining.checks import JoinState
 from registration.fleet.association.joining.curves import anchor_curves
 from registration.fleet.association.joining.joins import choose_joins
-from registration.fleet.association.joining.units import Units
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.solves import Registrar
 

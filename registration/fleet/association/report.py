@@ -6,8 +6,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from registration.fleet.association.grouping.units import Units
 from registration.fleet.association.joining.checks import JoinState
-from registration.fleet.association.joining.units import Units
 from registration.fleet.association.result import CLUTTER_REASONS, REASONS
 from registration.fleet.data.problem import FleetProblem
 

@@ -15,18 +15,20 @@ __all__ = ["AssociationResult", "REASONS", "CLUTTER_REASONS"]
 #: Why a plot has no target, or has one but was not registered (the ``reason`` of associations.csv).
 REASONS = {
     "clutter": "the tracker put it in no track of min_track_plots plots",
-    "short_track": "its track (or the piece of it between gaps and jumps) is shorter than min_track_plots plots",
-    "no_anchor": "no target overlaps its track in time: none with an id given, no reference, none confirmed by two "
-    "position-fixing sensors",
+    "short_track": "its track (or the piece of it between gaps and jumps) is shorter than min_track_plots "
+    "plots",
+    "no_anchor": "no target overlaps its track in time: none with an id given, no reference, none confirmed "
+    "by two position-fixing sensors",
     "no_match": "its track failed the gate of every target it overlaps",
-    "ambiguous": "its track passed the gates of several targets, or competes with another track of its sensor for "
-    "one, without a clear winner",
+    "ambiguous": "its track passed the gates of several targets, or competes with another track of its "
+    "sensor for one, without a clear winner",
     "dropped": "its track was joined to a target, then dropped: its residuals failed under the registration",
-    "outside_span": "its track was joined to a target, but this plot lies outside the span where the target's "
-    "position is known",
-    "outlier": "associated, then left out: its residuals exceed the outlier gate under the final registration",
-    "set_aside": "it has a target, but the registration set it aside (a target seen by one sensor only, a window "
-    "its plots do not determine, or seen outside its platform's navigation)",
+    "outside_span": "its track was joined to a target, but this plot lies outside the span where the "
+    "target's position is known",
+    "outlier": "associated, then left out: its residuals exceed the outlier gate under the final "
+    "registration",
+    "set_aside": "it has a target, but the registration set it aside (a target seen by one sensor only, a "
+    "window its plots do not determine, or seen outside its platform's navigation)",
 }
 #: Reasons counted as clutter in :attr:`AssociationResult.n_clutter`.
 CLUTTER_REASONS = ("clutter", "short_track")
@@ -109,9 +111,9 @@ class AssociationResult:
             f"association: {self.n_targets} targets, {self.n_associated} plots associated"
             + (f" (and {n_given} with ids given)" if n_given else "")
             + f", {self.unassociated_rows.size} unassociated ({self.n_clutter} clutter or short tracks, "
-            f"{self.n_unconfirmed} not joined to a target), {self.iterations} grouping and {self.join_passes} join "
-            f"passes ({'converged' if self.converged else 'NOT converged'}), {self.seconds_total:.2f} s "
-            f"({100 * self.assignment_share:.1f} % in assignment)"
+            f"{self.n_unconfirmed} not joined to a target), {self.iterations} grouping and "
+            f"{self.join_passes} join passes ({'converged' if self.converged else 'NOT converged'}), "
+            f"{self.seconds_total:.2f} s ({100 * self.assignment_share:.1f} % in assignment)"
         ]
         out += self.sensor_lines()
         out += [f"  note: {n}" for n in self.notes]

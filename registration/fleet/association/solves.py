@@ -22,12 +22,13 @@ from dataclasses import replace
 
 import numpy as np
 
-from registration.fleet.association.inputs import labelled_problem
-from registration.fleet.association.joining.curves import fit_windows
+from registration.fleet.association.joining.windowfit import WindowFit, fit_windows
 from registration.fleet.association.options import AssociationOptions
+from registration.fleet.association.problems import labelled_problem
 from registration.fleet.batch.solve import solve_batch
 from registration.fleet.data.inputs import References
 from registration.fleet.data.problem import FleetProblem
+from registration.fleet.result import BatchResult
 
 __all__ = [
     "INTERMEDIATE_TOLERANCE",
@@ -108,8 +109,13 @@ class Registrar:
         self.margin_s = options.window_s
         self.progress = progress
         self.x, self.P = np.zeros(problem.layout.n), P0.copy()
-        self.problem_solved, self.result, self.seconds, self.solves = None, None, 0.0, 0
-        self.labels, self.thinned, self._fit, self._last_fit = None, False, None, None
+        self.problem_solved: FleetProblem | None = None
+        self.result: BatchResult | None = None
+        self.seconds, self.solves = 0.0, 0
+        self.labels: np.ndarray | None = None
+        self.thinned = False
+        self._fit: WindowFit | None = None
+        self._last_fit: WindowFit | None = None
 
     def solve(self, labels: np.ndarray, subset: np.ndarray | None = None, final: bool = False):
         """Register the plots labelled in ``labels`` (N,; only those in ``subset`` (N,) bool if given)
@@ -143,10 +149,10 @@ class Registrar:
         return result
 
     def labelled_fit(self):
-        """The windows of the last solve's targets fitted to all their plots (the problem the solve
-        would have had without its subsample) under its estimate
-        (:func:`~registration.fleet.association.joining.curves.fit_windows`; computed once per solve, started
-        from the windows of the last such fit)."""
+        """The windows of the last solve's targets fitted to all their plots (the problem the solve would
+        have had without its subsample) under its estimate
+        (:func:`~registration.fleet.association.joining.windowfit.fit_windows`; computed once per solve,
+        started from the windows of the last such fit)."""
         if self._fit is None:
             self._fit = fit_windows(
                 labelled_problem(self.problem, self.labels, self.refs, self.margin_s),
@@ -162,6 +168,7 @@ class Registrar:
         registered or set aside); after a solve of a subsample, of every labelled plot
         (:meth:`labelled_fit`)."""
         if not self.thinned:
+            assert self.result is not None  # the residuals follow a solve
             return self.result.residuals[self.problem.row]
         return self.labelled_fit().residual_table(self.problem.n_input_plots)[self.problem.row]
 

@@ -1,3 +1,5 @@
-"""The online fleet filter (docs/fleet-online.md): FleetFilter and register_online, the information of one epoch, and the result."""
+"""The online fleet filter (docs/fleet-online.md): FleetFilter and
+register_online, the information of one epoch, the Kalman update in information form and its
+starting point, and the result."""
 
 __all__: list[str] = []

@@ -5,9 +5,10 @@ Its information about the states is the batch problem's, restricted to those plo
 the filter's current estimate ``x-`` (docs/fleet.md, "Online filter"):
 
 1. each target window's trajectory coefficients are fitted to its plots with the states held at
-   ``x-`` (:func:`~registration.fleet.batch.solver.fit_windows`: Gauss-Newton on the coefficients alone, window by window, from the
-   window means of the plots corrected by ``x-``; Levenberg-Marquardt if a step fails to lower the
-   sum of squares): the fitted plots, as the two-ship filter's ``fitted`` linearisation uses them;
+   ``x-`` (:func:`~registration.fleet.batch.solver.fit_windows`: Gauss-Newton on the coefficients alone,
+   window by window, from the window means of the plots corrected by ``x-``; Levenberg-Marquardt if a step
+   fails to lower the sum of squares): the fitted plots, as the two-ship filter's ``fitted`` linearisation
+   uses them;
 2. there the plots' whitened rows give the normal equations, and the windows are eliminated by the
    Schur complement (:func:`registration.fleet.batch.schur.reduce`): the states' information ``L`` and the
    gradient ``b`` of the epoch, so that ``L dx = b`` is the Gauss-Newton step from ``x-``.

@@ -54,13 +54,10 @@ from registration.fleet.data.tables import read_table
 from registration.fleet.observability import fleet_observability
 from registration.fleet.online.epoch import epoch_information
 from registration.fleet.online.result import OnlineHistory, OnlineResult
+from registration.fleet.online.update import information_update, start_state
 
-__all__ = ["DIFFUSE", "FleetFilter", "OnlineOptions", "information_update", "register_online"]
+__all__ = ["FleetFilter", "OnlineOptions", "register_online"]
 
-#: Prior sigma of a state without prior, in units of its reference scale (1 deg, 1 km).
-DIFFUSE = 10.0
-#: Directions of an epoch's scaled information below this share of its largest are not updated.
-DETERMINED_SHARE = 1e-12
 #: An epoch is linearised again at its updated estimate while the update moves a state by more
 #: than this share of its reference scale (0.1 deg, 100 m), at most MAX_RELINEARISATIONS times (an
 #: iterated update): large initial errors are then found as the batch finds them, while in the
@@ -68,10 +65,6 @@ DETERMINED_SHARE = 1e-12
 #: 0.3 m at 100 km, far below the noise of a radar).
 RELINEARISE_ABOVE = 0.1
 MAX_RELINEARISATIONS = 10
-#: The innovation check leaves out the components whose prior variance exceeds this many times
-#: their noise variance: such an innovation measures the spread of the prior, not the fit of the
-#: data (the first epochs of states that start without prior, at DIFFUSE).
-PRIOR_DOMINATED = 100.0
 _BUFFER = ("time", "sensor", "target", "meas", "mask", "nav", "row")
 
 
@@ -79,7 +72,8 @@ _BUFFER = ("time", "sensor", "target", "meas", "mask", "nav", "row")
 class OnlineOptions:
     """Settings of :class:`FleetFilter`.
 
-    window_s, degree: the target windows, as in the batch (:class:`~registration.fleet.batch.solver.BatchOptions`);
+    window_s, degree: the target windows, as in the batch
+    (:class:`~registration.fleet.batch.solver.BatchOptions`);
         an epoch is one window of the absolute time grid. epoch_s: with ``window_s = 0``, the
         length (s) of an epoch of instants (0: one instant per epoch). q_angle (rad/sqrt(s)), q_range
         (m/sqrt(s); range biases and position errors), q_gain (1/sqrt(s); range gains), q_time
@@ -161,7 +155,7 @@ class FleetFilter:
             self.specs.prior,
             self.specs.extended_prior,
         )
-        self.x, self.P = _start(self.layout, prior)
+        self.x, self.P = start_state(self.layout, prior)
         self.information = np.zeros((self.layout.n, self.layout.n))
         q = {
             "rad": self.options.q_angle,
@@ -170,7 +164,7 @@ class FleetFilter:
             "s": self.options.q_time,
         }
         self._q2 = np.array([q[u] for u in self.layout.units]) ** 2
-        self._buffer = {k: [] for k in _BUFFER}
+        self._buffer: dict[str, list[np.ndarray]] = {k: [] for k in _BUFFER}
         self._n_read = 0
         self._closed_key: int | None = None
         self._open_key: int | None = None  # the latest epoch buffered
@@ -226,8 +220,10 @@ class FleetFilter:
 
     # -- processing ------------------------------------------------------------------------------
     def _process(self, closing_all: bool) -> int:
-        buf = {k: np.concatenate(v) if v else None for k, v in self._buffer.items()}
-        if buf["time"] is None or buf["time"].size == 0:
+        if not self._buffer["time"]:  # every column is buffered with the time
+            return 0
+        buf = {k: np.concatenate(v) for k, v in self._buffer.items()}
+        if buf["time"].size == 0:
             return 0
         key = self.options.epoch_key(buf["time"])
         keys = np.unique(key)
@@ -371,60 +367,6 @@ class FleetFilter:
         return tuple(out)
 
 
-def information_update(
-    x: np.ndarray, P: np.ndarray, L: np.ndarray, b: np.ndarray, free: np.ndarray, scale: np.ndarray
-) -> tuple[np.ndarray, np.ndarray, float, int]:
-    """The Kalman update of (x (n,), P (n, n)) with information ``L`` (n, n) and gradient ``b`` (n,)
-    on the states ``free``, in coordinates scaled by ``scale`` (n,) (module docstring).
-    Returns the new x and P (copies), the normalised innovation squared and its degrees of freedom,
-    both over the innovation components whose prior variance is at most PRIOR_DOMINATED times their
-    noise variance."""
-    x, P = x.copy(), P.copy()
-    d = scale[free]
-    Ls = d[:, None] * L[np.ix_(free, free)] * d[None, :]
-    w, V = np.linalg.eigh(0.5 * (Ls + Ls.T))
-    keep = w > DETERMINED_SHARE * max(float(w[-1]) if w.size else 0.0, 0.0)
-    if not keep.any():
-        return x, P, 0.0, 0
-    w, V = w[keep], V[:, keep]
-    H = np.sqrt(w)[:, None] * V.T
-    nu = (V.T @ (d * b[free])) / np.sqrt(w)
-    Ps = P[np.ix_(free, free)] / d[:, None] / d[None, :]
-    PHt = Ps @ H.T
-    HPHt = H @ PHt
-    S = HPHt + np.eye(w.size)
-    K = np.linalg.solve(S, PHt.T).T
-    A = np.eye(free.size) - K @ H
-    Ps = A @ Ps @ A.T + K @ K.T
-    x[free] += d * (K @ nu)
-    P[np.ix_(free, free)] = d[:, None] * (0.5 * (Ps + Ps.T)) * d[None, :]
-    lam, U = np.linalg.eigh(0.5 * (HPHt + HPHt.T))  # S = U diag(1 + lam) U^T
-    tested = lam <= PRIOR_DOMINATED
-    return x, P, float(np.sum((U.T @ nu)[tested] ** 2 / (1.0 + lam[tested]))), int(tested.sum())
-
-
-def _start(layout, prior) -> tuple[np.ndarray, np.ndarray]:
-    """Initial estimate and covariance: the layout's priors, or a result over the same states."""
-    n = layout.n
-    if prior is None:
-        sigma = np.where(np.isfinite(layout.prior_sigma), layout.prior_sigma, DIFFUSE * layout.scale)
-        return np.zeros(n), np.diag(sigma**2)
-    names = tuple(getattr(getattr(prior, "layout", None), "names", ()))
-    if names != layout.names:
-        raise ValueError(f"prior: its states {list(names)} are not this filter's {list(layout.names)}")
-    x = np.array(prior.estimate, dtype=float)
-    P = np.array(prior.covariance, dtype=float)
-    if x.shape != (n,) or P.shape != (n, n) or not (np.isfinite(x).all() and np.isfinite(P).all()):
-        raise ValueError(f"prior: expected a finite estimate ({n},) and covariance ({n}, {n})")
-    fixed = layout.fixed
-    x[fixed], P[fixed], P[:, fixed] = 0.0, 0.0, 0.0
-    undetermined = ~np.isfinite(np.asarray(getattr(prior, "sigma", np.zeros(n)), dtype=float))
-    P[np.diag_indices(n)] += np.where(
-        undetermined & (layout.prior_sigma > 0), (DIFFUSE * layout.scale) ** 2, 0.0
-    )
-    return x, P
-
-
 def register_online(
     plots,
     sensors,
@@ -450,6 +392,6 @@ def register_online(
     result = filt.result()
     if residuals and result.n_plots_used:
         problem = build_problem(plots, sensors, navigation, platforms, references, targets)
-        table, check, _ = residuals_at(problem, result.estimate, filt.options.batch())
-        result = replace(result, residuals=table, fit_check=check)
+        res, check, _ = residuals_at(problem, result.estimate, filt.options.batch())
+        result = replace(result, residuals=res, fit_check=check)
     return result

@@ -106,8 +106,9 @@ class OnlineResult:
             return None
         lo, hi = c.interval
         return (
-            f"normalised innovations (information on the filter's covariance, not the verdict): mean {c.mean:.4g} "
-            f"per degree of freedom over {c.samples}, band for independent samples [{lo:.3g}, {hi:.3g}]"
+            "normalised innovations (information on the filter's covariance, not the verdict): mean "
+            f"{c.mean:.4g} per degree of freedom over {c.samples}, band for independent samples [{lo:.3g}, "
+            f"{hi:.3g}]"
         )
 
     def combination(self, coefficients: dict) -> tuple[float, float]:
@@ -128,8 +129,9 @@ class OnlineResult:
             out.append(f"verdict ({self.verdict_basis}): {self.verdict.message()}")
         if self.fit_check is not None and self.fit_check.parts:
             out.append(f"  its terms (mean square per value): {self.fit_check.parts_text()}")
-        if self.fit_check is not None and self.consistency is not None:
-            out.append(self.innovation_text())
+        innovations = self.innovation_text()
+        if self.fit_check is not None and innovations is not None:
+            out.append(innovations)
         out += state_lines(self.rows())
         out += self.observability.lines()
         out += [f"  excluded: {e.text()}" for e in self.excluded]

@@ -1,3 +1,4 @@
-"""The simulated fleet: ships, sites, sensors and targets with their true errors, through the generated geometry (docs/fleet.md)."""
+"""The simulated fleet: ships, sites, sensors and targets with
+their true errors, through the generated geometry (docs/fleet.md)."""
 
 __all__: list[str] = []

@@ -51,16 +51,17 @@ DEFAULT_COVERAGE = {
 
 
 def coverage_for(sigma) -> Coverage:
-    """The default coverage of a sensor from its noise sigmas (range, bearing, elevation; NaN: not measured)."""
+    """The default coverage of a sensor from its noise
+    sigmas (range, bearing, elevation; NaN: not measured)."""
     has = np.isfinite(np.asarray(sigma, dtype=float))
-    kind = {
+    kinds: dict[tuple[bool, ...], str] = {
         (True, True, True): "3d",
         (True, True, False): "2d",
         (False, True, True): "passive",
         (False, True, False): "bearing",
         (True, False, False): "range",
-    }.get(tuple(bool(h) for h in has), "3d")
-    return DEFAULT_COVERAGE[kind]
+    }
+    return DEFAULT_COVERAGE[kinds.get(tuple(bool(h) for h in has), "3d")]
 
 
 def horizon_range(h_sensor: np.ndarray, h_target: np.ndarray) -> np.ndarray:

@@ -187,11 +187,11 @@ def _navigation(
         platform.append(pid)
         times.append(np.zeros(1))
         rows.append(_site_nav(config, pid)[None, :])
-    rows = np.concatenate(rows)
+    table = np.concatenate(rows)
     return {
         "platform": np.array(platform),
         "time": np.concatenate(times),
-        **{c: rows[:, j] for j, c in enumerate(names)},
+        **{c: table[:, j] for j, c in enumerate(names)},
     }
 
 
@@ -285,6 +285,28 @@ def _references(config: FleetConfig, duration_s: float, sigma: float, rng) -> di
     }
 
 
+def _check_sizes(duration_s: float, nav_rate_hz: float, **angles: float) -> None:
+    """ValueError for an angle error over 20 deg (degrees passed as radians), a duration of 10 s or
+    less or a navigation rate that is not positive."""
+    for name, v in angles.items():
+        if abs(v) > np.radians(20):
+            raise ValueError(f"{name}: {v} rad is implausibly large (pass radians, not degrees)")
+    if not duration_s > 10 or not nav_rate_hz > 0:
+        raise ValueError(
+            f"duration_s must exceed 10 s and nav_rate_hz be > 0, got {duration_s}, {nav_rate_hz}"
+        )
+
+
+def _check_extended(extended: dict[str, float | None]) -> None:
+    """ValueError for an extended error size that is not finite, or a range gain over 0.1."""
+    for name, v in extended.items():
+        if v is not None and not np.isfinite(v):
+            raise ValueError(f"{name}: expected a finite size or None, got {v}")
+    range_gain = extended["range_gain"]
+    if range_gain is not None and abs(range_gain) > 0.1:
+        raise ValueError(f"range_gain: {range_gain} is implausibly large (dimensionless: 1e-3 = 1000 ppm)")
+
+
 def fleet_scenario(
     seed: int = 0,
     *,
@@ -320,17 +342,9 @@ def fleet_scenario(
     each +-size with random signs per sensor and estimated without prior (empty prior column).
     A plot whose true time falls before the navigation starts is set aside by the solver.
     """
-    for name, v in (
-        ("angle_bias", angle_bias),
-        ("heading_error", heading_error),
-        ("level_error", level_error),
-    ):
-        if abs(v) > np.radians(20):
-            raise ValueError(f"{name}: {v} rad is implausibly large (pass radians, not degrees)")
-    if not duration_s > 10 or not nav_rate_hz > 0:
-        raise ValueError(
-            f"duration_s must exceed 10 s and nav_rate_hz be > 0, got {duration_s}, {nav_rate_hz}"
-        )
+    _check_sizes(
+        duration_s, nav_rate_hz, angle_bias=angle_bias, heading_error=heading_error, level_error=level_error
+    )
     rng = np.random.default_rng(seed)
     sizes = {
         "angle_bias": angle_bias,
@@ -340,11 +354,7 @@ def fleet_scenario(
     }
     truth = _truth_errors(config, rng, sizes)
     extended = {"range_gain": range_gain, "time_bias": time_bias, "position_error": position_error}
-    for name, v in extended.items():
-        if v is not None and not np.isfinite(v):
-            raise ValueError(f"{name}: expected a finite size or None, got {v}")
-    if range_gain is not None and abs(range_gain) > 0.1:
-        raise ValueError(f"range_gain: {range_gain} is implausibly large (dimensionless: 1e-3 = 1000 ppm)")
+    _check_extended(extended)
     truth.update(_extended_truth(config, rng, extended))
     parts = [
         _sensor_plots(config, sid, duration_s, truth, rng, noise_scale, ship_motion) for sid in config.sensors

@@ -15,15 +15,16 @@ import numpy as np
 
 from registration.io.output.outfolder import RunFolder
 from registration.online.contract import IS_ANGLE, STATE_NAMES
+from registration.recorded.options import RunOptions
 from registration.recorded.output.writers import CsvAppender, open_appender
 from registration.recorded.reading.columns import ESTIMATE_COLUMNS, POSITION_COLUMNS, REJECTED_COLUMNS
-from registration.recorded.run.options import RunOptions
 
 __all__ = ["DifferenceStats", "Outputs", "output_paths", "estimate_frame", "position_frame", "rejected_rows"]
 
 
 def output_paths(options: RunOptions, folder: Path | None = None) -> dict[str, Path]:
-    """Paths of the estimates, positions and rejected outputs of a run in ``folder`` (default: ``options.out``)."""
+    """Paths of the estimates, positions and rejected outputs
+    of a run in ``folder`` (default: ``options.out``)."""
     out, ext = options.out if folder is None else Path(folder), options.output_suffix
     return {
         "estimates": out / f"estimates{ext}",
@@ -64,7 +65,7 @@ class Outputs:
     def marks(self) -> dict:
         """``{name: [size, rows]}`` and the run folder's name: what a checkpoint records to resume
         these outputs (no folder for a run resumed in ``--out`` itself)."""
-        marks = {
+        marks: dict[str, list | str] = {
             name: [w.size, w.rows] for name, w in zip(("estimates", "positions", "rejected"), self._all())
         }
         if not self.folder.in_place:

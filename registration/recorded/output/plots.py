@@ -20,11 +20,11 @@ from registration.core.frames import ecef2geodetic
 from registration.core.plotting import OKABE_ITO, pyplot
 from registration.online.contract import IS_ANGLE
 from registration.online.plots import SHIP_COLOURS, plot_difference_series, plot_estimate_series
+from registration.recorded.options import RunOptions
 from registration.recorded.output.outputs import output_paths
 from registration.recorded.output.plotseries import PLOT_POINTS, plot_step
 from registration.recorded.reading.columns import ESTIMATE_COLUMNS, POSITION_COLUMNS
 from registration.recorded.reading.formats import iter_frames
-from registration.recorded.run.options import RunOptions
 
 __all__ = ["write_plots", "series_from_outputs", "release_free_memory", "PLOT_POINTS", "READ_ROWS"]
 
@@ -103,14 +103,15 @@ def series_from_outputs(table_path: Path, options: RunOptions, folder: Path, reg
 
 
 def _rows_of(path, columns, rows: np.ndarray) -> np.ndarray:
-    """(len(rows), len(columns)) numbers of the given absolute rows (ascending) of a table; NaN if not a number."""
+    """(len(rows), len(columns)) numbers of the given absolute
+    rows (ascending) of a table; NaN if not a number."""
     out, i = np.full((len(rows), len(columns)), np.nan), 0
     for first, frame in iter_frames(path, columns, READ_ROWS):
         j = np.searchsorted(rows, first + len(frame))
         for c, name in enumerate(columns):
             if name in frame:
                 out[i:j, c] = _numeric(frame[name].iloc[rows[i:j] - first])
-        i = j
+        i = int(j)
     return out
 
 

@@ -48,7 +48,7 @@ class PlotSeries:
 
     def __init__(self, cap: int):
         self.cap, self.step, self.n = int(cap), 1, 0
-        self._parts = {k: [] for k in [*SERIES_FIELDS, "_k"]}  # "_k": the kept ordinals
+        self._parts: dict[str, list] = {k: [] for k in [*SERIES_FIELDS, "_k"]}  # "_k": the kept ordinals
 
     def add(self, time, x, P, raw_diff, corrected_diff, a_ecef, b_ecef, rows) -> None:
         """Take in one run of K registered rows: times (s), estimates x (K, 12) and covariances P

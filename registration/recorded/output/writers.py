@@ -13,6 +13,7 @@ import io
 import json
 import os
 from pathlib import Path
+from typing import BinaryIO
 
 import numpy as np
 
@@ -34,14 +35,17 @@ class CsvAppender:
     ):
         self.path = Path(path)
         self.columns = list(columns)
+        self._f: BinaryIO
+        self.rows: int | None
         header = (",".join(_csv_quote(c) for c in self.columns) + "\n").encode()
         if resume is not None:
             size, rows = resume
             actual = self.path.stat().st_size if self.path.exists() else -1
             if actual < size:
                 raise CheckpointError(
-                    f"{self.path} holds {max(actual, 0)} bytes but the checkpoint recorded {size}: the output was "
-                    "truncated or replaced after the checkpoint, so rows would be lost; delete the checkpoint to start over"
+                    f"{self.path} holds {max(actual, 0)} bytes but the checkpoint recorded {size}: the "
+                    "output was truncated or replaced after the checkpoint, so rows would be lost; delete "
+                    "the checkpoint to start over"
                 )
             self._f = open(self.path, "r+b")
             self._f.truncate(size)
@@ -125,7 +129,8 @@ class PartsWriter:
             missing = [self._name(i) for i in range(self.size) if self._name(i) not in present]
             if missing:
                 raise CheckpointError(
-                    f"{self.path}: part(s) {missing[:3]} recorded by the checkpoint are missing; delete the checkpoint to start over"
+                    f"{self.path}: part(s) {missing[:3]} recorded by the checkpoint are missing; delete the "
+                    "checkpoint to start over"
                 )
             for name in present:
                 if int(name[5:11]) >= self.size:

@@ -29,17 +29,17 @@ with the file length.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Iterator
+from typing import Any, Iterator
 
 import numpy as np
 
 from registration.core.alignment import REASON_EXTRAPOLATION
 from registration.online.contract import N_ROW, ROW_COLUMNS, SENSOR_ROW, SENSORS
+from registration.recorded.options import PairingOptions
 from registration.recorded.reading.columns import NAV_KINDS, PLOT_KINDS
 from registration.recorded.reading.formats import to_file_frame
 from registration.recorded.reading.sources import Source
 from registration.recorded.reading.streams import REASON_GAP, SampleStream
-from registration.recorded.run.options import PairingOptions
 
 __all__ = ["PairedBlock", "Pairer"]
 
@@ -80,7 +80,7 @@ class Pairer:
         self._others = [s for s in self._streams if s is not self._ref]
         self._columns = self._plan_columns()
         self._need = options.degree + 2
-        self._counts = {
+        self._counts: dict[str, Any] = {
             "instants": 0,
             "paired": 0,
             "exact": 0,

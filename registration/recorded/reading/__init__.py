@@ -1,3 +1,4 @@
-"""Reading recorded files: formats with units in the column names, row checks with a reason for every bad row, field counts per line, unit checks, sources and streams of rows (docs/register.md)."""
+"""Reading recorded files: formats with units in the column names, row checks with a reason for every bad
+row, field counts per line, unit checks, sources and streams of rows (docs/register.md)."""
 
 __all__: list[str] = []

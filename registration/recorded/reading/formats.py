@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import hashlib
 from pathlib import Path
-from typing import Iterator, Mapping
+from typing import TYPE_CHECKING, Iterator, Mapping, cast
 
 import numpy as np
 
@@ -26,6 +26,9 @@ from registration.io.files.csvrows import SHAPE_COLUMN, read_csv_blocks
 from registration.io.files.tablefile import FileFormatError, file_format, write_frame
 from registration.recorded.reading.columns import SYNC_COLUMNS, SYNC_FIELDS
 from registration.recorded.reading.rowcheck import check_frame, sync_layout
+
+if TYPE_CHECKING:  # pandas is imported where it is used (it is slow to import)
+    import pandas as pd
 
 __all__ = [
     "file_format",
@@ -143,7 +146,7 @@ def count_rows(path) -> int | None:
     return None
 
 
-def iter_frames(path, columns, chunk_rows: int, start_row: int = 0) -> Iterator[tuple[int, "object"]]:
+def iter_frames(path, columns, chunk_rows: int, start_row: int = 0) -> Iterator[tuple[int, pd.DataFrame]]:
     """Yield ``(first_row, DataFrame)`` blocks of exactly ``chunk_rows`` rows (the last may be shorter).
 
     Only the listed ``columns`` that exist in the file are read (the caller decides what a
@@ -197,16 +200,17 @@ def iter_frames(path, columns, chunk_rows: int, start_row: int = 0) -> Iterator[
         raise
 
 
-def _csv_frames(path, wanted: list[str]) -> Iterator[object]:
+def _csv_frames(path, wanted: list[str]) -> Iterator[pd.DataFrame]:
     """The wanted columns of a CSV file, block by block, with the shape of each row
     (:data:`~registration.io.files.csvrows.SHAPE_COLUMN`: a line with fewer or more fields than the
     header is a bad row for :func:`~registration.recorded.reading.rowcheck.check_frame`, not a row whose
     missing cells read as empty or whose extra fields are dropped)."""
-    for frame in read_csv_blocks(path):
+    for block in read_csv_blocks(path):
+        frame = cast("pd.DataFrame", block)  # read_csv_blocks yields DataFrames, typed as object
         yield frame[[c for c in frame.columns if str(c).strip() in wanted or c == SHAPE_COLUMN]]
 
 
-def _rechunk(source, base: int, start_row: int, chunk_rows: int, path) -> Iterator[tuple[int, object]]:
+def _rechunk(source, base: int, start_row: int, chunk_rows: int, path) -> Iterator[tuple[int, pd.DataFrame]]:
     import pandas as pd
 
     pending, have, pos = [], 0, base  # pos: absolute row of the next row from source

@@ -162,7 +162,7 @@ def _to_float(col) -> tuple[np.ndarray, np.ndarray]:
         if getattr(conv.dtype, "kind", "O") not in "iuf":
             raise TypeError("not a real dtype")
         values = np.asarray(conv, dtype=np.float64)
-        for i in np.flatnonzero(np.isnan(values)):
+        for i in np.flatnonzero(np.isnan(values)).tolist():
             non_numeric[i] = not _is_missing(raw[i]) and not _is_nan_text(raw[i])
         for i, v in enumerate(raw):  # booleans and complex numbers hidden in an object column
             if isinstance(v, (bool, np.bool_, complex, np.complexfloating)):

@@ -11,10 +11,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+from registration.recorded.options import PairingOptions
 from registration.recorded.reading.columns import NAV_FIELDS
 from registration.recorded.reading.formats import read_columns
 from registration.recorded.reading.rowcheck import Layout, nav_layout, plot_layout
-from registration.recorded.run.options import PairingOptions
 
 __all__ = ["Source", "plan_sources"]
 
@@ -51,16 +51,19 @@ def _sensor_of_plot_file(cols: set[str]) -> str | None:
 
 def _plot_sensors(inputs: list[Path], cols: list[set[str]]) -> list[str]:
     """'a'/'b' for each of the two plot files: by column prefix, else by position."""
-    sensors = [_sensor_of_plot_file(c) for c in cols]
-    if sensors[0] is None and sensors[1] is None:
-        sensors = ["a", "b"]
-    elif sensors[0] is None:
-        sensors[0] = "a" if sensors[1] == "b" else "b"
-    elif sensors[1] is None:
-        sensors[1] = "a" if sensors[0] == "b" else "b"
+    first, second = (_sensor_of_plot_file(c) for c in cols)
+    if first is None and second is None:
+        first, second = "a", "b"
+    elif first is None:
+        first = "a" if second == "b" else "b"
+    elif second is None:
+        second = "a" if first == "b" else "b"
+    assert first is not None and second is not None  # each branch above names both
+    sensors = [first, second]
     if sensors[0] == sensors[1]:
         raise ValueError(
-            f"both plot files {inputs[0]} and {inputs[1]} hold radar {sensors[0].upper()}'s plots (column prefix)"
+            f"both plot files {inputs[0]} and {inputs[1]} hold radar {sensors[0].upper()}'s plots (column "
+            "prefix)"
         )
     return sensors
 
@@ -86,7 +89,8 @@ def _nav_source(path: Path) -> Source:
     ships = tuple(s for s in ("a", "b") if any(f"{s}_{f.file_name}" in cols for f in NAV_FIELDS))
     if not ships:
         raise ValueError(
-            f"navigation file {path}: no navigation columns; expected time_s and a_lat_deg ... a_roll_deg and/or b_lat_deg ... b_roll_deg"
+            f"navigation file {path}: no navigation columns; expected time_s and a_lat_deg ... a_roll_deg "
+            "and/or b_lat_deg ... b_roll_deg"
         )
     return Source(
         path,
@@ -110,10 +114,13 @@ def plan_sources(inputs: list[Path], navs: list[Path], options: PairingOptions) 
         given = [src for src in sources if s in src.nav_of]
         if not given:
             raise ValueError(
-                f"no navigation for ship {s.upper()}: give it in its plot file ({', '.join(f.file_name for f in NAV_FIELDS)}) or in a --nav file (prefixed {s}_)"
+                f"no navigation for ship {s.upper()}: give it in its plot file "
+                f"({', '.join(f.file_name for f in NAV_FIELDS)}) or in a --nav file (prefixed {s}_)"
             )
         if len(given) > 1:
             raise ValueError(
-                f"navigation of ship {s.upper()} is given twice ({given[0].path} and {given[1].path}); give it once"
+                f"navigation of ship {s.upper()} is given twice ({given[0].path} and {given[1].path}); give "
+                "it once"
             )
-    return sorted(sources[:2], key=lambda src: src.plots_of) + sources[2:]
+    # the first two sources are the plot files: plots_of is set
+    return sorted(sources[:2], key=lambda src: str(src.plots_of)) + sources[2:]

@@ -12,10 +12,10 @@ from __future__ import annotations
 import numpy as np
 
 from registration.core.alignment import align
+from registration.recorded.options import PairingOptions
 from registration.recorded.reading.formats import iter_frames
 from registration.recorded.reading.rowcheck import check_frame
 from registration.recorded.reading.sources import Source
-from registration.recorded.run.options import PairingOptions
 
 __all__ = ["SampleStream", "REASON_GAP", "REASON_NO_SAMPLES"]
 

@@ -21,11 +21,9 @@ import math
 import numpy as np
 
 from registration.recorded.reading.formats import iter_frames
-from registration.recorded.reading.rowcheck import Layout, sync_layout
-from registration.recorded.reading.sources import plan_sources
-from registration.recorded.run.plan import RunPlan
+from registration.recorded.reading.rowcheck import Layout
 
-__all__ = ["SAMPLE_ROWS", "MIN_VALUES", "angle_unit_warnings", "input_warnings"]
+__all__ = ["SAMPLE_ROWS", "MIN_VALUES", "angle_unit_warnings"]
 
 #: Rows read from the start of each file for the check.
 SAMPLE_ROWS = 10_000
@@ -55,12 +53,14 @@ def angle_unit_warnings(path, layout: Layout, sample_rows: int = SAMPLE_ROWS) ->
     for f, peak in peaks.items():
         if f.kind in _COMPASS and peak is not None and 0 < peak[0] <= 2 * math.pi:
             out.append(
-                f"{path}: column {f.file_name!r} is in degrees by its name, but its first {peak[1]} values all lie "
-                f"within +-{peak[0]:.3g} (radians lie within +-6.28): radians? (if they are degrees, the "
-                f"{f.kind} stays within {peak[0]:.3g} deg of 0 and this warning can be ignored)"
+                f"{path}: column {f.file_name!r} is in degrees by its name, but its first {peak[1]} values "
+                f"all lie within +-{peak[0]:.3g} (radians lie within +-6.28): radians? (if they are degrees, "
+                f"the {f.kind} stays within {peak[0]:.3g} deg of 0 and this warning can be ignored)"
             )
     for lat in (f for f in peaks if f.kind == "lat"):
         lon = next((f for f in peaks if f.kind == "lon" and f.prefix == lat.prefix), None)
+        if lon is None:
+            continue
         a, b = peaks[lat], peaks.get(lon)
         if (
             a is not None
@@ -70,17 +70,9 @@ def angle_unit_warnings(path, layout: Layout, sample_rows: int = SAMPLE_ROWS) ->
             and b[0] <= 2 * math.pi
         ):
             out.append(
-                f"{path}: columns {lat.file_name!r} and {lon.file_name!r} are in degrees by their names, but their "
-                f"first {min(a[1], b[1])} values all lie within +-{a[0]:.3g} and +-{b[0]:.3g}: radians? (if they "
-                "are degrees, the ship sails within 1.6 deg of 0 N, 0 E and this warning can be ignored)"
+                f"{path}: columns {lat.file_name!r} and {lon.file_name!r} are in degrees by their names, but "
+                f"their first {min(a[1], b[1])} values all lie within +-{a[0]:.3g} and +-{b[0]:.3g}: "
+                "radians? (if they are degrees, the ship sails within 1.6 deg of 0 N, 0 E and this warning "
+                "can be ignored)"
             )
     return out
-
-
-def input_warnings(plan: RunPlan) -> list[str]:
-    """The warnings of :func:`angle_unit_warnings` for every input file of ``plan``, in reading order."""
-    if plan.form == "synchronous":
-        jobs = [(plan.inputs[0], sync_layout())]
-    else:
-        jobs = [(s.path, s.layout) for s in plan_sources(plan.inputs, plan.navs, plan.pairing)]
-    return [w for path, layout in jobs for w in angle_unit_warnings(path, layout)]

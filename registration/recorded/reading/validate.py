@@ -4,10 +4,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from registration.recorded.options import PairingOptions, RunOptions
 from registration.recorded.reading.formats import iter_frames
 from registration.recorded.reading.rowcheck import Layout, check_frame, sync_layout
 from registration.recorded.reading.sources import plan_sources
-from registration.recorded.run.options import PairingOptions, RunOptions
 
 __all__ = ["validate_files"]
 
@@ -27,17 +27,17 @@ def validate_files(inputs, options: RunOptions, max_listed: int = 20) -> dict:
         jobs = [
             (src.path, src.layout) for src in plan_sources(inputs, navs, options.pairing or PairingOptions())
         ]
-    report = {"files": {}, "problems": []}
+    files: dict[str, dict] = {}
+    problems: list[dict] = []
     for path, layout in jobs:
-        report["files"][str(path)] = _validate_file(
-            path, layout, options.chunk_rows, report["problems"], max_listed
-        )
-    return report
+        files[str(path)] = _validate_file(path, layout, options.chunk_rows, problems, max_listed)
+    return {"files": files, "problems": problems}
 
 
 def _validate_file(path: Path, layout: Layout, chunk_rows: int, problems: list, max_listed: int) -> dict:
     """Counts of one file; appends its rejections to ``problems`` while fewer than ``max_listed``."""
-    last, rows, acc, by = None, 0, 0, {}
+    last, rows, acc = None, 0, 0
+    by: dict[str, int] = {}
     for first, frame in iter_frames(path, layout.columns, chunk_rows):
         blk = check_frame(frame, layout, str(path), first_row=first, mode="skip", last_time=last)
         last = blk.last_time

@@ -1,3 +1,4 @@
-"""The run of registration register: plan, options, the checkpointed filtering and its state, the pipeline (docs/register.md)."""
+"""The run of registration register, stage by stage: plan, pairing stage (asynchronous form), the
+checkpointed filtering and its state, the summary, and the pipeline (docs/register.md)."""
 
 __all__: list[str] = []

@@ -17,6 +17,7 @@ from registration.io.files.tablefile import FileFormatError, NoValidRowsError
 from registration.online.contract import correct_rows
 from registration.online.filter import OnlineRegistrar
 from registration.online.information import information_at_estimate, target_positions
+from registration.recorded.options import RunOptions
 from registration.recorded.output.outputs import Outputs, estimate_frame, position_frame, rejected_rows
 from registration.recorded.output.plotseries import PLOT_POINTS, PlotSeries
 from registration.recorded.reading.columns import SYNC_COLUMNS
@@ -28,7 +29,6 @@ from registration.recorded.reading.rowcheck import (
     check_frame,
     sync_layout,
 )
-from registration.recorded.run.options import RunOptions
 from registration.recorded.run.plan import RunPlan, Table
 from registration.recorded.run.runstate import Checkpointer, RunState
 
@@ -82,14 +82,14 @@ def _start(plan: RunPlan, options: RunOptions) -> tuple[RunState, Outputs]:
         state = RunState(
             OnlineRegistrar(options.config), plot_series=PlotSeries(PLOT_POINTS) if options.plots else None
         )
-        return state, Outputs(options, plan.folder, keep_rejected=plan.form == "asynchronous")
+        return state, Outputs(options, plan.working_folder(), keep_rejected=plan.form == "asynchronous")
     payload = plan.resume
     options.message(
         f"registration register: resuming from checkpoint {options.checkpoint} at row "
         f"{payload['state']['rows_done']} (phase {payload['phase']})"
     )
     state = RunState.from_checkpoint(payload, options.config)
-    return state, Outputs(options, plan.folder, payload["outputs"])
+    return state, Outputs(options, plan.working_folder(), payload["outputs"])
 
 
 def _filter_pass(

@@ -18,10 +18,13 @@ from pathlib import Path
 from registration.io.files.tablefile import FileFormatError, file_format
 from registration.io.output.checkpoint import CheckpointError, load_checkpoint
 from registration.io.output.outfolder import RunFolder, mark_in_place, new_run_folder, prepare_out, publish
+from registration.recorded.options import PairingOptions, RunOptions
 from registration.recorded.reading.formats import count_rows, iter_frames, read_columns, scan_file
-from registration.recorded.run.options import PairingOptions, RunOptions
+from registration.recorded.reading.rowcheck import sync_layout
+from registration.recorded.reading.sources import plan_sources
+from registration.recorded.reading.unitcheck import angle_unit_warnings
 
-__all__ = ["Table", "RunPlan", "plan_run", "fingerprint", "table_rows"]
+__all__ = ["Table", "RunPlan", "plan_run", "fingerprint", "table_rows", "input_warnings"]
 
 
 @dataclass
@@ -55,6 +58,18 @@ class RunPlan:
     resume: dict | None = None
     finished: dict | None = None
     folder: RunFolder | None = None  # where the run writes (None for a finished run)
+
+    def working_folder(self) -> RunFolder:
+        """The folder the run writes into (the plan of every run but a finished one has it)."""
+        if self.folder is None:
+            raise RuntimeError("the plan of a finished run has no folder to write into")
+        return self.folder
+
+    def async_pairing(self) -> PairingOptions:
+        """The pairing options of the asynchronous form (the synchronous form has none)."""
+        if self.pairing is None:
+            raise RuntimeError("the synchronous form has no pairing options")
+        return self.pairing
 
     def newlines(self, path: Path) -> int:
         return self.scans[str(path)][1]
@@ -143,8 +158,9 @@ def _matching_checkpoint(options: RunOptions, fp: str) -> dict:
     payload = load_checkpoint(options.checkpoint)
     if payload.get("fingerprint") != fp:
         raise CheckpointError(
-            f"checkpoint {options.checkpoint} was written for other input files or options (its fingerprint does not "
-            "match these inputs' contents and options); rerun the exact command that wrote it, or delete it to start over"
+            f"checkpoint {options.checkpoint} was written for other input files or options (its fingerprint "
+            "does not match these inputs' contents and options); rerun the exact command that wrote it, or "
+            "delete it to start over"
         )
     return payload
 
@@ -162,8 +178,8 @@ def _resume_folder(options: RunOptions, payload: dict, fp: str) -> RunFolder:
         return RunFolder(options.out, path)
     if path is not None and _summary_fingerprint(options.out) != fp:
         raise CheckpointError(
-            f"checkpoint {options.checkpoint} continues a run whose unfinished outputs were in {path}, which no longer "
-            "exists; delete the checkpoint to start over"
+            f"checkpoint {options.checkpoint} continues a run whose unfinished outputs were in {path}, which "
+            "no longer exists; delete the checkpoint to start over"
         )
     folder = RunFolder(options.out, options.out)
     mark_in_place(folder, options.checkpoint)
@@ -185,9 +201,21 @@ def _finished_summary(options: RunOptions, payload: dict) -> dict:
     summary_path = options.out / "summary.json"
     if not summary_path.exists():
         raise CheckpointError(
-            f"checkpoint {options.checkpoint} says the run is complete but {summary_path} is missing; delete the checkpoint to recompute"
+            f"checkpoint {options.checkpoint} says the run is complete but {summary_path} is missing; delete "
+            "the checkpoint to recompute"
         )
     options.message(
-        f"registration register: run already complete (checkpoint {options.checkpoint}); delete it to recompute"
+        f"registration register: run already complete (checkpoint {options.checkpoint}); delete it to "
+        "recompute"
     )
     return json.loads(summary_path.read_text())
+
+
+def input_warnings(plan: RunPlan) -> list[str]:
+    """The warnings of :func:`~registration.recorded.reading.unitcheck.angle_unit_warnings` for
+    every input file of ``plan`` (angle columns that seem to hold radians), in reading order."""
+    if plan.form == "synchronous":
+        jobs = [(plan.inputs[0], sync_layout())]
+    else:
+        jobs = [(s.path, s.layout) for s in plan_sources(plan.inputs, plan.navs, plan.async_pairing())]
+    return [w for path, layout in jobs for w in angle_unit_warnings(path, layout)]

@@ -5,14 +5,14 @@ Each stage is a module of its own and hands its result to the next:
 1. :func:`~registration.recorded.run.plan.plan_run`: check the inputs and ``--out``, fingerprint the
    inputs, find the checkpoint to resume from, and choose the run's own folder inside ``--out``
    (:mod:`registration.io.output.outfolder`);
-2. :func:`~registration.recorded.reading.unitcheck.input_warnings`: angle columns that seem to hold
+2. :func:`~registration.recorded.run.plan.input_warnings`: angle columns that seem to hold
    radians (printed at once, listed in the summary);
-3. :func:`~registration.recorded.pairing.paired.pair_inputs` (two plot files only): the published
+3. :func:`~registration.recorded.run.pairstage.pair_inputs` (two plot files only): the published
    synchronous table ``paired.csv|parquet``;
 4. :func:`~registration.recorded.run.filtering.filter_table`: read, check and filter the table block
    by block, writing estimates, positions and rejected rows, then the information matrix at the
    final estimate; checkpointed and resumable bit for bit;
-5. :func:`~registration.recorded.output.report.build_summary` (with the consistency gate's figures),
+5. :func:`~registration.recorded.run.summary.build_summary` (with the consistency gate's figures),
    ``summary.json``, the plots (from the points kept while filtering,
    :mod:`registration.recorded.output.plotseries`), the checkpoint marked ``done``;
 6. :func:`~registration.io.output.outfolder.publish`: the run's folder replaces the outputs of an
@@ -28,15 +28,14 @@ import time
 
 from registration.io.files.tablefile import NoValidRowsError
 from registration.io.output.outfolder import discard, publish, records_folder
+from registration.recorded.options import RunOptions
 from registration.recorded.output.plots import series_from_outputs, write_plots
-from registration.recorded.output.report import build_summary
 from registration.recorded.output.writers import write_json_atomic
-from registration.recorded.pairing.paired import pair_inputs
-from registration.recorded.reading.unitcheck import input_warnings
 from registration.recorded.run.filtering import filter_table
-from registration.recorded.run.options import RunOptions
-from registration.recorded.run.plan import RunPlan, plan_run
+from registration.recorded.run.pairstage import pair_inputs
+from registration.recorded.run.plan import RunPlan, input_warnings, plan_run
 from registration.recorded.run.runstate import mark_done
+from registration.recorded.run.summary import build_summary
 
 __all__ = ["run_register"]
 
@@ -55,20 +54,20 @@ def run_register(inputs, options: RunOptions) -> dict:
     plan = plan_run(inputs, options)
     if plan.finished is not None:
         return plan.finished
+    folder = plan.working_folder()
     try:
         summary = _run(plan, options, started)
     except NoValidRowsError:
-        publish(plan.folder)  # a complete answer: rejected.csv lists every row with its reason
+        publish(folder)  # a complete answer: rejected.csv lists every row with its reason
         raise
     except BaseException:
-        if not (options.checkpoint is not None and records_folder(options.checkpoint, plan.folder.path.name)):
-            discard(plan.folder)
+        if not (options.checkpoint is not None and records_folder(options.checkpoint, folder.path.name)):
+            discard(folder)
         raise
     if options.checkpoint is not None:
-        mark_done(
-            options.checkpoint
-        )  # a kill from here on: the rerun publishes the folder the checkpoint records
-    publish(plan.folder)  # an interrupted publication is completed by the next run into --out
+        # a kill from here on: the rerun publishes the folder the checkpoint records
+        mark_done(options.checkpoint)
+    publish(folder)  # an interrupted publication is completed by the next run into --out
     return summary
 
 
@@ -82,7 +81,7 @@ def _run(plan: RunPlan, options: RunOptions, started: float) -> dict:
     summary = build_summary(
         table, plan, state, options, elapsed_s=round(time.perf_counter() - started, 3), warnings=warnings
     )
-    folder = plan.folder
+    folder = plan.working_folder()
     write_json_atomic(folder.path / "summary.json", summary)
     if options.plots:
         series = (

@@ -72,7 +72,8 @@ class RunState:
     def add_registered(
         self, times: np.ndarray, nis: np.ndarray, raw_diff: np.ndarray, corrected_diff: np.ndarray
     ) -> None:
-        """Take in one run of registered rows for the statistics: their times (s), NIS and ECEF differences (m)."""
+        """Take in one run of registered rows for the statistics:
+        their times (s), NIS and ECEF differences (m)."""
         self.raw.add(raw_diff)
         self.corrected.add(corrected_diff)
         self.nis_sum = self.nis_sum + float(np.sum(nis))

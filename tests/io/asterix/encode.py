@@ -64,7 +64,7 @@ def cat048_record(
     mode_a: int | None = None,
     v: int = 0,
     g: int = 0,
-    l: int = 0,
+    m3a_l: int = 0,
     sim: int = 0,
     rab: int = 0,
     tst: int | None = None,
@@ -80,7 +80,7 @@ def cat048_record(
     first = (typ << 4) | (sim << 3) | (rab << 0)  # 7 bits: TYP(3) SIM RDP SPI RAB
     items["020"] = (first,) if tst is None else (first, tst << 6)
     if mode_a is not None:
-        items["070"] = (("V", v), ("G", g), ("L", l), 0, ("MODE3A", mode_a))
+        items["070"] = (("V", v), ("G", g), ("L", m3a_l), 0, ("MODE3A", mode_a))
     if address is not None:
         items["220"] = address
     if extras:

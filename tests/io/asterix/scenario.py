@@ -54,7 +54,7 @@ PLOT_TARGETS = {
     "MS1": (30.0, 20.0, dict(typ=5, address=0x4CA1F3, mode_a=0o4521, extras=True), "4CA1F3"),
     "MS2": (75.0, 35.0, dict(typ=7, address=0x3C6DD2), "3C6DD2"),
     "MA1": (100.0, 40.0, dict(typ=2, mode_a=0o1234), "A1234"),
-    "MA2": (140.0, 12.5, dict(typ=3, mode_a=0o6543, l=1), "A6543"),
+    "MA2": (140.0, 12.5, dict(typ=3, mode_a=0o6543, m3a_l=1), "A6543"),
     "MA3": (170.0, 60.0, dict(typ=2, mode_a=0o7000), ""),
     "MA4": (200.0, 80.0, dict(typ=2, mode_a=0o2345, g=1), ""),
     "MA5": (230.0, 90.0, dict(typ=2, mode_a=0o3456, v=1), ""),

@@ -63,14 +63,16 @@ class BridgeLog:
         return path
 
     def write_sensors(self, path) -> Path:
-        """The sensors table (with its talker column) as a CSV file, for ``registration import nmea --sensors``."""
+        """The sensors table (with its talker column) as a CSV file, for ``registration import nmea
+        --sensors``."""
         path = Path(path)
         self.sensors.to_csv(path, index=False)
         return path
 
     @property
     def errors(self) -> dict[str, float]:
-        """The simulated errors by state name: range bias (m), bearing bias (rad), time bias (s), heading error (rad)."""
+        """The simulated errors by state name: range bias (m),
+        bearing bias (rad), time bias (s), heading error (rad)."""
         c = self.config
         return {
             f"{SENSOR}:range_bias": c.range_bias_m,

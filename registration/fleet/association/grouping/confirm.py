@@ -22,7 +22,7 @@ import numpy as np
 from registration.fleet.association.grouping.geometry import Assigner, PlotGeometry, plot_geometry
 from registration.fleet.association.grouping.groups import group_tracklets
 from registration.fleet.association.grouping.match import chain_groups, make_tracklets
-from registration.fleet.association.joining.units import make_units
+from registration.fleet.association.grouping.units import make_units
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.batch.solver import progress_status
 from registration.fleet.data.problem import FleetProblem
@@ -32,12 +32,13 @@ __all__ = ["Confirmed", "confirm_targets", "fixing_sensors", "merge_fragments", 
 
 def fixing_sensors(problem: FleetProblem) -> np.ndarray:
     """(S,) bool: the sensors that measure range, bearing and elevation (a plot fixes a position)."""
-    return (problem.layout.bias_index >= 0).all(axis=1)
+    return np.asarray((problem.layout.bias_index >= 0).all(axis=1))
 
 
 def new_names(count: int, taken: set) -> list[str]:
     """``count`` target names ``a1``, ``a2``, ... that are not in ``taken``."""
-    out, k = [], 0
+    out: list[str] = []
+    k = 0
     while len(out) < count:
         k += 1
         if f"a{k}" not in taken:
@@ -121,7 +122,7 @@ def merge_fragments(problem: FleetProblem, labels: np.ndarray, track: np.ndarray
             if t0[b] >= t1[a]:  # one after the other
                 ra, rb = find(int(a)), find(int(b))
                 root[max(ra, rb)] = min(ra, rb) if t0[min(ra, rb)] <= t0[max(ra, rb)] else max(ra, rb)
-    first = {}
+    first: dict[int, int] = {}
     out = labels.astype(object)
     merged = np.array([find(k) for k in range(names.size)])
     for k in range(names.size):  # the earliest piece names the merged target

@@ -20,13 +20,13 @@ that time (:meth:`FleetProblem.navigation_at`). The tracks and tracklets use tha
 common time axis of all sensors, so that the estimate lines the sensors' curves up.
 
 The time bias's column of ``dp_dx``, and of ``J`` here, is the platform's motion only
-(``fleet_residual_ext`` with the target velocity 0 and the navigation rates): a change of the
-estimate moves the navigation the plot is placed from (position and attitude), while the target
-the plot measured stays where it was. The target's own motion enters through the time stamp:
-the plot is re-stamped, which moves a tracklet along its own curve, and that term is the curve's
-derivative, added per tracklet from its fit (:mod:`registration.fleet.association.grouping.match`). Where
-a group's curve is compared with a sensor's own channels (:mod:`registration.fleet.association.grouping.cost`),
-both motions are in the generated column, the target's velocity coming from the group's curve.
+(``fleet_residual_ext`` with the target velocity 0 and the navigation rates): a change of the estimate
+moves the navigation the plot is placed from (position and attitude), while the target the plot measured
+stays where it was. The target's own motion enters through the time stamp: the plot is re-stamped, which
+moves a tracklet along its own curve, and that term is the curve's derivative, added per tracklet from its
+fit (:mod:`registration.fleet.association.grouping.match`). Where a group's curve is compared with a
+sensor's own channels (:mod:`registration.fleet.association.grouping.cost`), both motions are in the
+generated column, the target's velocity coming from the group's curve.
 """
 
 from __future__ import annotations

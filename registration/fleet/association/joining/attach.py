@@ -1,4 +1,4 @@
-"""The join test of a track (a unit, :mod:`.units`) against an anchor target (:mod:`.curves`), in
+"""The join test of a track (a unit, :mod:`..grouping.units`) against an anchor target (:mod:`.curves`), in
 the track's own measurement channels, under the registration estimate ``x`` and its covariance P.
 
 For up to ``test_plots`` plots of the track spread over its part within the target's span, the

@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association.joining.units import Units
+from registration.fleet.association.grouping.units import Units
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.solves import Registrar
 
@@ -62,10 +62,21 @@ class JoinState:
 
     @classmethod
     def empty(cls, n_units: int, n_plots: int) -> "JoinState":
-        per_unit = [
-            np.full(n_units, v, dtype=object if isinstance(v, str) else type(v)) for _, v in cls._PER_UNIT
-        ]
-        return cls(*per_unit, np.full(n_plots, "", dtype=object), np.zeros(n_plots, dtype=bool))
+        col = {
+            name: np.full(n_units, v, dtype=object if isinstance(v, str) else type(v))
+            for name, v in cls._PER_UNIT
+        }
+        return cls(
+            target=col["target"],
+            test=col["test"],
+            best=col["best"],
+            tested=col["tested"],
+            gated=col["gated"],
+            dropped=col["dropped"],
+            failed=col["failed"],
+            label=np.full(n_plots, "", dtype=object),
+            outlier=np.zeros(n_plots, dtype=bool),
+        )
 
     def extend(self, n_units: int) -> None:
         """Room for units up to ``n_units`` (new units: not joined, not tested)."""

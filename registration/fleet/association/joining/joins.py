@@ -1,4 +1,4 @@
-"""Joining tracks (units, :mod:`.units`) to the anchor targets (:mod:`.curves`), robustly
+"""Joining tracks (units, :mod:`..grouping.units`) to the anchor targets (:mod:`.curves`), robustly
 (:func:`join_units`).
 
 A pass tests every track not yet joined against every anchor whose span it overlaps
@@ -12,13 +12,14 @@ A pass tests every track not yet joined against every anchor whose span it overl
   yet takes one join per round, the most certain, before its other tracks are judged.
 
 The joins are registered (:class:`~registration.fleet.association.solves.Registrar`), and each join's
-residuals under the new estimate are tested (:func:`~registration.fleet.association.joining.checks.failing_joins`): a join whose squared
-normalised residuals exceed the chi-square ``1 - drop_probability`` quantile is dropped, the worst
-of each sensor first (one wrong join can make good ones fail), the registration made again, until
-none fails. A dropped pair is not taken again. Passes repeat until nothing changes. Then the
-final stage leaves out single associated plots whose residuals exceed the ``1 -
-outlier_probability`` quantile (:func:`~registration.fleet.association.joining.checks.outlier_stage`) and the last registration uses the accepted
-plots only.
+residuals under the new estimate are tested
+(:func:`~registration.fleet.association.joining.checks.failing_joins`): a join whose squared normalised
+residuals exceed the chi-square ``1 - drop_probability`` quantile is dropped, the worst of each sensor
+first (one wrong join can make good ones fail), the registration made again, until none fails. A dropped
+pair is not taken again. Passes repeat until nothing changes. Then the final stage leaves out single
+associated plots whose residuals exceed the ``1 - outlier_probability`` quantile
+(:func:`~registration.fleet.association.joining.checks.outlier_stage`) and the last registration uses the
+accepted plots only.
 """
 
 from __future__ import annotations
@@ -28,8 +29,8 @@ import itertools
 import numpy as np
 from scipy.stats import chi2
 
-from registration.fleet.association.grouping.confirm import new_names
-from registration.fleet.association.inputs import labelled_problem
+from registration.fleet.association.grouping.confirm import fixing_sensors, new_names
+from registration.fleet.association.grouping.units import Units, split_units, unit_conflicts
 from registration.fleet.association.joining.attach import (
     Pairs,
     candidate_plots,
@@ -45,8 +46,7 @@ from registration.fleet.association.joining.checks import (
     drop_failing,
     registered_labels,
 )
-from registration.fleet.association.joining.curves import anchor_curves, fit_windows, join_fits
-from registration.fleet.association.joining.units import Units, split_units, unit_conflicts
+from registration.fleet.association.joining.passcurves import pass_curves
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.solves import Registrar
 from registration.fleet.batch.solver import progress_status
@@ -68,7 +68,7 @@ MAX_SPLIT_DEPTH = 6
 def _margins(pairs: Pairs, cand: np.ndarray, lp: np.ndarray, conflicts: np.ndarray, log_ratio: float):
     """(positions in ``cand`` of each unit's best candidate, their margin): the log tail-probability
     ratio to the unit's next candidate and to the candidates for the same target of the units that
-    conflict with it (:func:`~registration.fleet.association.joining.units.unit_conflicts`) and have that
+    conflict with it (:func:`~registration.fleet.association.grouping.units.unit_conflicts`) and have that
     target among their own best (within ``log_ratio`` of their best)."""
     unit, target = pairs.unit[cand], pairs.target[cand]
     best = np.flatnonzero(np.r_[True, unit[1:] != unit[:-1]])
@@ -105,8 +105,8 @@ def choose_joins(
     registered plot yet."""
     if pairs.size == 0:
         return [], np.zeros(P.shape[0]), P
-    names = np.array(names, dtype=object)
-    unit, pname = pairs.unit, names[pairs.target]
+    target_names = np.array(names, dtype=object)
+    unit, pname = pairs.unit, target_names[pairs.target]
     state.tested[unit] = True
     allowed = state.target[unit] == ""
     if state.tabu:  # the pairs dropped before (few)
@@ -147,7 +147,8 @@ def choose_joins(
         if not ok.any():
             break
         rank = best[ok][np.lexsort((-lp[best[ok]], -margin[ok]))]
-        now, sensors_now = [], set()
+        now: list[tuple[int, int]] = []
+        sensors_now: set[int] = set()
         for b in rank:
             c = int(cand[b])
             u, j = int(unit[c]), int(pairs.target[c])
@@ -155,7 +156,7 @@ def choose_joins(
             if (fresh[s] and s in sensors_now) or any(j == j2 and conflicts[u, u2] for u2, j2 in now):
                 continue
             dx, Pk = kalman_update(pairs, c, dx, Pk, keep[at[b]])
-            state.target[u] = str(names[j])  # taken; labelled once its plots are verified
+            state.target[u] = str(target_names[j])  # taken; labelled once its plots are verified
             out.append((u, j, float(d2[at[b]] / dof[at[b]])))
             now.append((u, j))
             sensors_now.add(s)
@@ -177,7 +178,7 @@ def _label_verified(
     dx: np.ndarray,
     Pk: np.ndarray,
     options: AssociationOptions,
-) -> int:
+) -> list[int]:
     """Label the plots of the joins ``taken`` that pass the per-plot gate under the states after them
     (:func:`~registration.fleet.association.joining.attach.verify_plots`); a join with more than
     MAX_OUTLIER_SHARE of its plots failing is not taken (a track that swapped targets): it is marked
@@ -188,7 +189,7 @@ def _label_verified(
     plots = [covered[j][units.of_plot[covered[j]] == u] for u, j, _ in taken]
     # a position-fixing sensor's plots fix the target themselves: its whole track is the target's,
     # the part outside the target's span extends it (those plots are checked once registered)
-    fixing = (problem.layout.bias_index >= 0).all(axis=1)
+    fixing = fixing_sensors(problem)
     extra = [
         np.setdiff1d(np.flatnonzero(units.of_plot == u), p)
         if fixing[units.sensor[u]]
@@ -215,7 +216,7 @@ def _label_verified(
 
 
 def _split(units: Units, state: JoinState, problem, options: AssociationOptions):
-    """Split in halves (:func:`~registration.fleet.association.joining.units.split_units`) the units not
+    """Split in halves (:func:`~registration.fleet.association.grouping.units.split_units`) the units not
     joined that failed, matched no target or stayed ambiguous, and have at least twice
     ``min_join_plots`` plots over at least two windows: (units, number split). The halves of a
     track that holds two objects can each join theirs (the report notes a given track whose pieces
@@ -235,7 +236,7 @@ def _split(units: Units, state: JoinState, problem, options: AssociationOptions)
 def _provisional(units: Units, state: JoinState, problem, labels: np.ndarray, options: AssociationOptions):
     """(N,) provisional targets: each track of a position-fixing sensor that joined no anchor, under
     a new name; the units that hold them (they are then no longer joiners)."""
-    fixing = (problem.layout.bias_index >= 0).all(axis=1)
+    fixing = fixing_sensors(problem)
     count = np.bincount(units.of_plot[units.of_plot >= 0], minlength=units.n)
     which = np.flatnonzero(
         (state.target == "") & fixing[units.sensor] & (count >= 2 * options.min_join_plots)
@@ -276,59 +277,39 @@ def _prescreen(
     return (dof > 0) & (d2 < FAR_OFF * chi2.ppf(options.gate_probability, np.maximum(dof, 1)))
 
 
-def _curves(reg: Registrar, labels: np.ndarray, prov: np.ndarray, options: AssociationOptions, cache: dict):
-    """The anchors' curves: the registered targets, the provisional ones and the references (the same
-    as the last ones while neither the estimate nor the provisional targets changed, ``cache``: joins
-    since the last solve barely move a curve)."""
-    lab = np.where((prov != "") & (labels == ""), prov, labels)
-    key = (reg.solves, tuple(np.unique(prov[prov != ""])))
-    if cache.get("key") == key:
-        return cache["curves"]
-    fit = _fit(reg, lab, cache)
-    cache["key"], cache["curves"] = (
-        key,
-        anchor_curves(
-            None,
-            reg.x,
-            reg.refs,
-            reg.between,
-            fit=fit,
-            gap_s=options.reference_gap_s,
-            accel_sigma=options.reference_accel_sigma,
-            surface=reg.problem.surface,
-        ),
+def _pass_joins(
+    reg: Registrar,
+    units: Units,
+    state: JoinState,
+    labels: np.ndarray,
+    prov: np.ndarray,
+    sources: np.ndarray | None,
+    conflicts: np.ndarray,
+    options: AssociationOptions,
+    cache: dict,
+) -> tuple[list[int], np.ndarray]:
+    """The joins of one pass: the free units (not joined, not a provisional target's ``sources``)
+    tested against the anchors' curves of the registered ``labels`` and the provisional targets
+    ``prov`` (a position-fixing sensor's track never joins a provisional target), prescreened, then
+    chosen and labelled in ``state``. Returns (the units joined, (S,) True for the sensors with no
+    registered plot yet)."""
+    problem = reg.problem
+    fixing = fixing_sensors(problem)
+    curves = pass_curves(reg, labels, prov, options, cache)
+    free = np.flatnonzero(
+        (state.target == "") & ~np.isin(np.arange(units.n), sources if sources is not None else [])
     )
-    return cache["curves"]
-
-
-def _fit(reg: Registrar, lab: np.ndarray, cache: dict):
-    """The windows of the targets labelled in ``lab`` (N,) fitted under the latest estimate. Under the
-    same estimate as the last fit, the targets whose plots did not change keep their windows (with the
-    states held, each target's windows are fitted to its own plots) and only the others are fitted
-    (the provisional targets, say). After a solve of a subsample, its targets' windows fitted to all
-    their plots (for the checks) are such a last fit."""
-    last, last_lab, missing = None, None, set()
-    if cache.get("fit") is not None and cache.get("solves") == reg.solves:
-        last, last_lab = cache["fit"], cache["lab"]
-    elif reg.thinned:
-        last, last_lab = reg.labelled_fit(), reg.labels
-        missing = set(lab.tolist()) - set(last.names) - {""}  # targets it sets aside: seen by one sensor only
-    if last is not None:
-        changed = lab != last_lab
-        names = (set(lab[changed].tolist()) | set(last_lab[changed].tolist()) | missing) - {""}
-        redo = np.where(np.isin(lab, list(names)), lab, "") if names else np.full(lab.size, "", dtype=object)
-        fit = join_fits(last.without(names), _fit_windows(reg, redo))
-    else:
-        fit = _fit_windows(reg, lab)
-    cache["fit"], cache["lab"], cache["solves"] = fit, lab.copy(), reg.solves
-    return fit
-
-
-def _fit_windows(reg: Registrar, lab: np.ndarray):
-    problem = None
-    if (lab != "").any():
-        problem = labelled_problem(reg.problem, lab, reg.refs, reg.margin_s, keep_lone=True)
-    return fit_windows(problem, reg.x, reg.between)
+    u, t, plots, covered = candidate_plots(
+        problem, reg.x, units.of_plot, free, curves, k=options.test_plots, min_plots=options.min_join_plots
+    )
+    provisional = np.isin(np.array(curves.names, dtype=object)[t], np.unique(prov[prov != ""]))
+    keep = ~(provisional & fixing[units.sensor[u]]) if u.size else np.zeros(0, dtype=bool)
+    keep[keep] = _prescreen(reg, curves, u[keep], t[keep], plots[keep], options)
+    pairs = pair_tests(problem, reg.x, curves, u[keep], t[keep], plots[keep])
+    fresh = np.bincount(problem.sensor[labels != ""], minlength=len(problem.sensor_ids)) == 0
+    taken, dx, Pk = choose_joins(pairs, curves.names, reg.P, state, units, conflicts, fresh, options)
+    taken = _label_verified(reg, curves, state, units, taken, covered, dx, Pk, options)
+    return taken, fresh
 
 
 def join_units(
@@ -355,7 +336,6 @@ def join_units(
     passes, converged, splits, prov, sources = 0, False, 0, np.full(problem.n_plots, "", dtype=object), None
     cache: dict = {}
     deferred = False
-    fixing = (problem.layout.bias_index >= 0).all(axis=1)
     if state.label.any():
         reg.solve(registered_labels(base, state, prov))
         drop_failing(reg, state, units, base, prov, options)
@@ -363,26 +343,7 @@ def join_units(
     for passes in itertools.count(1):
         progress_status(bar, f"join pass {passes}: testing tracks against targets")
         labels = registered_labels(base, state, prov)
-        curves = _curves(reg, labels, prov, options, cache)
-        free = np.flatnonzero(
-            (state.target == "") & ~np.isin(np.arange(units.n), sources if sources is not None else [])
-        )
-        u, t, plots, covered = candidate_plots(
-            problem,
-            reg.x,
-            units.of_plot,
-            free,
-            curves,
-            k=options.test_plots,
-            min_plots=options.min_join_plots,
-        )
-        provisional = np.isin(np.array(curves.names, dtype=object)[t], np.unique(prov[prov != ""]))
-        keep = ~(provisional & fixing[units.sensor[u]]) if u.size else np.zeros(0, dtype=bool)
-        keep[keep] = _prescreen(reg, curves, u[keep], t[keep], plots[keep], options)
-        pairs = pair_tests(problem, reg.x, curves, u[keep], t[keep], plots[keep])
-        fresh = np.bincount(problem.sensor[labels != ""], minlength=len(problem.sensor_ids)) == 0
-        taken, dx, Pk = choose_joins(pairs, curves.names, reg.P, state, units, conflicts, fresh, options)
-        taken = _label_verified(reg, curves, state, units, taken, covered, dx, Pk, options)
+        taken, fresh = _pass_joins(reg, units, state, labels, prov, sources, conflicts, options, cache)
         dropped = 0
         if taken:
             added = np.isin(units.of_plot, taken) & (state.label != "")

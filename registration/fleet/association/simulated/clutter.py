@@ -61,7 +61,7 @@ class AssociationScenario:
 def association_targets(n_targets: int, rng, *, crossing: bool, duration_s: float) -> dict:
     """``n_targets`` target tracks in a 90 km square about the centre: crossing pairs first (two
     lines through one point at mid-time, same height) when ``crossing``, then lines and circles."""
-    out = {}
+    out: dict[str, Line | Circle] = {}
     n_pairs = n_targets // 2 if crossing else 0
     for k in range(n_pairs):
         point = rng.uniform(-30e3, 30e3, 2)
@@ -115,7 +115,8 @@ def association_scenario(
 ) -> AssociationScenario:
     """The plots of ``n_targets`` targets with misses and clutter (module docstring); ``angle_bias``
     (rad) is the size of every angle bias (bearing and elevation), random signs; ``fleet``: other
-    :func:`~registration.fleet.simulation.scenario.fleet_scenario` arguments (range_bias, heading_error, ...)."""
+    :func:`~registration.fleet.simulation.scenario.fleet_scenario` arguments (range_bias, heading_error,
+    ...)."""
     if n_targets < 1 or not 0 <= p_missed < 1 or clutter_per_scan < 0:
         raise ValueError(
             f"n_targets >= 1, p_missed in [0, 1), clutter_per_scan >= 0; got {n_targets}, {p_missed}, "

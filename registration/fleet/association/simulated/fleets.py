@@ -54,7 +54,7 @@ ISSUE_SENSORS = {
 def rolling_ships(rng, names=("A", "B", "C"), area_m: float = 25e3) -> dict:
     """Ships at random places within ``area_m`` of the centre, 5-12 m/s, rolling 3-5 deg with
     8-11 s periods, pitching 1-2 deg with 6-9 s periods."""
-    out = {}
+    out: dict[str, ShipTrack] = {}
     for name in names:
         e, n = rng.uniform(-area_m, area_m, 2)
         out[name] = ShipTrack(
@@ -84,7 +84,7 @@ def aircraft(
 ) -> dict:
     """``n`` aircraft at ``height_m`` (m), the first ``circling`` on circles of 4-12 km radius, the
     others on straight lines through a point within ``area_m`` of the centre at mid-time, 100-250 m/s."""
-    out = {}
+    out: dict[str, Line | Circle] = {}
     for k in range(n):
         e, no = rng.uniform(-area_m, area_m, 2)
         z, v = rng.uniform(*height_m), rng.uniform(100.0, 250.0)
@@ -295,7 +295,8 @@ def atc_fleet(
     refs = reference_table(
         sc, names[:n_adsb], rng, period_s=1.0, sigma_m=30.0, duration_s=duration_s, jitter=False
     )
-    refs["target"] = np.array([ids[t] for t in refs["target"]])
+    if refs is not None:  # None without ADS-B targets
+        refs["target"] = np.array([ids[t] for t in refs["target"]])
     sim.true_target = np.array([ids.get(t, t) for t in sim.true_target])
     return sim, refs
 

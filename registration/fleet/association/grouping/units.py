@@ -86,9 +86,12 @@ def _split_notes(
         why = []
         for i in sel[gaps[sel] | jumps[sel]]:
             j = sel[np.searchsorted(time[sel], time[i]) - 1]
-            why.append(
-                f"at {time[i]:g} s ({'gap of %.3g s' % (time[i] - time[j]) if gaps[i] else 'jump: %.3g sigma off its prediction' % np.sqrt(d2[i])})"
+            reason = (
+                "gap of %.3g s" % (time[i] - time[j])
+                if gaps[i]
+                else "jump: %.3g sigma off its prediction" % np.sqrt(d2[i])
             )
+            why.append(f"at {time[i]:g} s ({reason})")
         sensor = problem.sensor_ids[problem.sensor[plots[sel[0]]]]
         notes.append(
             f"sensor {sensor} {names[sel[0]]}: split into {len(why) + 1} pieces, "
@@ -96,6 +99,42 @@ def _split_notes(
             + " (an id reused for another object, or a track that jumped)"
         )
     return notes
+
+
+def _given_pieces(
+    problem: FleetProblem,
+    plots: np.ndarray,
+    track_id: np.ndarray,
+    time: np.ndarray,
+    geom,
+    rows: np.ndarray,
+    options: AssociationOptions,
+) -> tuple[np.ndarray, np.ndarray, list[str]]:
+    """The pieces of the given tracks: for the ``plots`` (M,) of the problem with their ``track_id``
+    and ``time`` (M,) (rows ``rows`` of the plot geometry ``geom``), (piece key (M,), piece name
+    (M,), one note per split track); a track is split at gaps and jumps."""
+    labels = np.char.add(np.char.add(np.array(problem.sensor_ids)[problem.sensor[plots]], "\x1f"), track_id)
+    _, gkey = np.unique(labels, return_inverse=True)
+    gaps = _gap_breaks(gkey, time, options.track_gap_s)
+    gpiece = _pieces(gkey, time, gaps)
+    jumps, d2 = track_breaks(
+        time,
+        gpiece,
+        _geometry_rows(geom, rows),
+        max_speed=options.max_speed,
+        accel_sigma=options.jump_accel_sigma,
+        probability=options.jump_probability,
+    )
+    gnames = np.char.add("track ", track_id)
+    notes = _split_notes(problem, gkey, gnames, time, gaps, jumps, d2, plots)
+    key = _pieces(gkey, time, gaps | jumps)
+    first = np.full(int(gkey.max()) + 1, np.iinfo(np.int64).max)
+    np.minimum.at(first, gkey, key)
+    last = np.zeros_like(first)
+    np.maximum.at(last, gkey, key)
+    split = (last > first)[gkey]
+    ordinal = (key - first[gkey] + 1).astype(str)
+    return key, np.where(split, np.char.add(np.char.add(gnames, "/"), ordinal), gnames), notes
 
 
 def make_units(
@@ -132,31 +171,10 @@ def make_units(
     notes: list[str] = []
     if given.any():
         g = np.flatnonzero(given)
-        labels = np.char.add(
-            np.char.add(np.array(problem.sensor_ids)[problem.sensor[at[g]]], "\x1f"), track_id[at[g]]
+        key[g], names[g], split_notes = _given_pieces(
+            problem, at[g], track_id[at[g]], time[g], geom, g, options
         )
-        _, gkey = np.unique(labels, return_inverse=True)
-        gaps = _gap_breaks(gkey, time[g], options.track_gap_s)
-        gpiece = _pieces(gkey, time[g], gaps)
-        sub = _geometry_rows(geom, g)
-        jumps, d2 = track_breaks(
-            time[g],
-            gpiece,
-            sub,
-            max_speed=options.max_speed,
-            accel_sigma=options.jump_accel_sigma,
-            probability=options.jump_probability,
-        )
-        gnames = np.char.add("track ", track_id[at[g]])
-        notes += _split_notes(problem, gkey, gnames, time[g], gaps, jumps, d2, at[g])
-        key[g] = _pieces(gkey, time[g], gaps | jumps)
-        first = np.full(int(gkey.max()) + 1, np.iinfo(np.int64).max)
-        np.minimum.at(first, gkey, key[g])
-        last = np.zeros_like(first)
-        np.maximum.at(last, gkey, key[g])
-        split = (last > first)[gkey]
-        ordinal = (key[g] - first[gkey] + 1).astype(str)
-        names[g] = np.where(split, np.char.add(np.char.add(gnames, "/"), ordinal), gnames)
+        notes += split_notes
     clutter = np.zeros(n, dtype=bool)
     rest = np.flatnonzero(~given)
     if rest.size:

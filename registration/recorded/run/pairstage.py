@@ -19,6 +19,7 @@ import shutil
 from pathlib import Path
 
 from registration.io.output.outfolder import RunFolder
+from registration.recorded.options import RunOptions
 from registration.recorded.output.outputs import rejected_rows
 from registration.recorded.output.writers import CsvAppender, ParquetFileWriter, write_json_atomic
 from registration.recorded.pairing.pairs import Pairer
@@ -30,15 +31,15 @@ from registration.recorded.reading.columns import (
 )
 from registration.recorded.reading.formats import scan_file
 from registration.recorded.reading.sources import plan_sources
-from registration.recorded.run.options import RunOptions
 from registration.recorded.run.plan import RunPlan, Table, fingerprint, table_rows
 
 __all__ = ["pair_inputs"]
 
 
 def pair_inputs(plan: RunPlan, options: RunOptions) -> Table:
-    """The published paired table of ``plan``'s inputs in the run folder (made now unless a matching one exists)."""
-    folder = plan.folder
+    """The published paired table of ``plan``'s inputs in
+    the run folder (made now unless a matching one exists)."""
+    folder = plan.working_folder()
     paired = folder.path / f"paired{options.output_suffix}"
     meta_path = folder.path / "pairing.json"
     fp = fingerprint(plan.inputs_key)
@@ -135,17 +136,18 @@ def _copy_prefix(src: Path, dst: Path, size: int) -> str | None:
 
 def _pair_into(tmp: Path, plan: RunPlan, options: RunOptions) -> dict:
     """Pair the inputs into the table file ``tmp``, rejected.csv and unpaired.csv; return the report."""
-    sources = plan_sources(plan.inputs, plan.navs, plan.pairing)
-    rejected = CsvAppender(plan.folder.path / "rejected.csv", REJECTED_COLUMNS)
-    unpaired = CsvAppender(plan.folder.path / "unpaired.csv", UNPAIRED_COLUMNS)
-    ref = next(s for s in sources if s.plots_of == plan.pairing.pair_at)
+    pairing, folder = plan.async_pairing(), plan.working_folder()
+    sources = plan_sources(plan.inputs, plan.navs, pairing)
+    rejected = CsvAppender(folder.path / "rejected.csv", REJECTED_COLUMNS)
+    unpaired = CsvAppender(folder.path / "unpaired.csv", UNPAIRED_COLUMNS)
+    ref = next(s for s in sources if s.plots_of == pairing.pair_at)
     bar = options.progress_bar(table_rows(ref.path, plan.newlines(ref.path)), 0, "pairing")
     table = (
         CsvAppender(tmp, PAIRED_COLUMNS)
         if options.out_format == "csv"
         else ParquetFileWriter(tmp, SYNC_COLUMNS)
     )
-    pairer = Pairer(sources, plan.pairing, chunk_rows=options.block_rows, mode=options.on_bad_row)
+    pairer = Pairer(sources, pairing, chunk_rows=options.block_rows, mode=options.on_bad_row)
     try:
         for block in pairer.blocks():
             for path, rejections in block.rejections:

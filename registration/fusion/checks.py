@@ -42,7 +42,8 @@ BLOCK = 16384
 
 
 def check_polar(name: str, z: np.ndarray, names: tuple[str, ...]) -> None:
-    """Ranges > 0 m, azimuths in [-2 pi, 2 pi] rad, elevations in [-pi/2, pi/2] rad; column j is ``names[j]``."""
+    """Ranges > 0 m, azimuths in [-2 pi, 2 pi] rad, elevations
+    in [-pi/2, pi/2] rad; column j is ``names[j]``."""
     for j, comp in enumerate(names):
         col = z[..., j]
         field = f"{name}[..., {j}] ({comp})"

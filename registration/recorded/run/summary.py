@@ -4,14 +4,16 @@ gate, warnings about the inputs, outputs (where they are once published in ``--o
 
 from __future__ import annotations
 
+from typing import Sequence
+
 import numpy as np
 
 from registration.core.consistency import ConsistencyReport
 from registration.core.observability import observability_report
 from registration.online.contract import STATE_LABELS, STATE_NAMES, STATE_UNITS
 from registration.online.result import estimate_rows
+from registration.recorded.options import RunOptions
 from registration.recorded.output.outputs import output_paths
-from registration.recorded.run.options import RunOptions
 from registration.recorded.run.plan import RunPlan, Table
 from registration.recorded.run.runstate import RunState
 
@@ -36,7 +38,7 @@ def build_summary(
     state: RunState,
     options: RunOptions,
     elapsed_s: float,
-    warnings: list[str] = (),
+    warnings: Sequence[str] = (),
 ) -> dict:
     """The summary dict of a finished run that took ``elapsed_s`` seconds; ``warnings``: about its inputs."""
     final = options.observability == "final"

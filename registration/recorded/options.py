@@ -6,6 +6,7 @@ from __future__ import annotations
 import sys
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
+from typing import Callable
 
 import numpy as np
 
@@ -70,7 +71,7 @@ class RunOptions:
     progress: bool = True
     nav: list = field(default_factory=list)
     pairing: PairingOptions | None = None  # for the asynchronous form; None: the defaults
-    log: object = None  # callable(str) for messages; default: print to stderr
+    log: Callable[[str], None] | None = None  # for messages; default: print to stderr
 
     def __post_init__(self):
         if self.on_bad_row not in ("stop", "skip"):
