@@ -26,7 +26,7 @@ from registration.fleet.association.inputs import labelled_problem
 from registration.fleet.association.joining.curves import fit_windows
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.batch.solve import solve_batch
-from registration.fleet.data.inputs import References
+from registration.fleet.data.known_targets import References
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = [

@@ -33,7 +33,7 @@ from registration.fleet.batch.initial import initial_coefficients
 from registration.fleet.batch.normal import evaluate, normal_equations
 from registration.fleet.batch.schur import masked_blocks, reduce
 from registration.fleet.batch.solver import BatchOptions, determined_design, singular_blocks
-from registration.fleet.data.inputs import References, SurfaceTargets
+from registration.fleet.data.known_targets import References, SurfaceTargets
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = [
