@@ -113,8 +113,8 @@ def _add_tables(reg: argparse.ArgumentParser) -> None:
         type=Path,
         default=None,
         metavar="DIR",
-        help="a folder holding the tables by their standard names (plots, navigation, sensors, "
-        "platforms, reference, targets; .csv or .parquet), as 'registration import' writes them",
+        help=f"a folder holding the tables by their standard names ({', '.join(TABLE_NAMES)}; .csv or "
+        ".parquet), as 'registration import' writes them",
     )
     for name in TABLE_NAMES:
         files.add_argument(f"--{name}", type=Path, default=None, metavar="FILE", help=option_help(name))

@@ -48,10 +48,11 @@ def open_fleet_tables(
 ) -> Iterator[FleetTables | ParquetSource]:
     """The tables of ``folder`` (and of ``given``: table name -> file, overriding the folder's) as a
     source (module docstring): read whole and checked (``on_bad_row``: :func:`read_fleet_tables`),
-    or with ``lazy`` the archive ``folder`` read by parts (its notes: the CSV conversion's)."""
+    or with ``lazy`` the archive ``folder`` read by parts, its tables by their standard names only
+    (``given`` is not used; the source's notes: the CSV conversion's)."""
     if not lazy:
         paths = table_paths(folder, given or {})
-        files = (paths[n] for n in TABLE_NAMES[:5])
+        files = (paths[n] for n in ("plots", "navigation", "sensors", "platforms", "reference"))
         yield read_fleet_tables(*files, targets=paths["targets"], on_bad_row=on_bad_row)
         return
     if folder is None:
