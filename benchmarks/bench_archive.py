@@ -158,9 +158,8 @@ def peak_mib() -> float:
 
 def run(mode: str, folder: Path, partition_s: float, out: Path) -> None:
     """One measured run (in this process): writes its figures and estimate to ``out``."""
-    from registration.fleet.batch.archive import ParquetSource
     from registration.fleet.batch.partitioned import solve_batch_partitioned
-    from registration.io.fleet.cells import FILE_COLUMNS
+    from registration.io.fleet.archive import ParquetSource
 
     t = time.perf_counter()
     if mode == "batch":
@@ -174,7 +173,7 @@ def run(mode: str, folder: Path, partition_s: float, out: Path) -> None:
         solve_seconds = time.perf_counter() - t_solve
     else:
         solve_seconds = None
-        source = ParquetSource(folder, FILE_COLUMNS)
+        source = ParquetSource(folder)
         result = solve_batch_partitioned(
             source,
             partition_s=partition_s,

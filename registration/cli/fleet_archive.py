@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import tempfile
 from pathlib import Path
 
 from registration.cli.errors import writing
@@ -175,7 +174,7 @@ def _solve_and_write(args: argparse.Namespace, out: Path, source) -> tuple:
             )  # a remote cluster may not see this disk: its workers return the parts
             outputs = archive_outputs(result, source, options, parts=None if remote else parts, client=client)
             if remote:
-                _write_parts(parts, outputs.tables)
+                _write_parts(parts, outputs.tables or [])
             _write_outputs(
                 folder.path,
                 args,
@@ -186,23 +185,9 @@ def _solve_and_write(args: argparse.Namespace, out: Path, source) -> tuple:
     return result, outputs
 
 
-def _run(args: argparse.Namespace, out: Path, tables: Path) -> tuple:
-    """Solve and write, the archive read as Parquet, or from CSV files converted first (module docstring)."""
-    from registration.fleet.batch.archive import ParquetSource
-    from registration.io.fleet.cells import FILE_COLUMNS
-    from registration.io.fleet.csvarchive import csv_tables, parquet_from_csv
-
-    if not csv_tables(tables):
-        return _solve_and_write(args, out, ParquetSource(tables, FILE_COLUMNS))
-    with tempfile.TemporaryDirectory(prefix="registration-csv-archive-") as temp:
-        notes = parquet_from_csv(tables, Path(temp))
-        for note in notes:
-            print(f"note: {note}")
-        return _solve_and_write(args, out, ParquetSource(Path(temp), FILE_COLUMNS))
-
-
 def run_archive(args: argparse.Namespace) -> int:
-    """Register the archive ``--tables DIR`` partition by partition and write the outputs (module docstring)."""
+    """Register the archive ``--tables DIR`` partition by partition and write the outputs (module
+    docstring); its tables are opened as the in-memory run's are (:mod:`registration.cli.fleet_tables`)."""
     from registration.cli.errors import consistency_gate, consistency_line, prepare_out
 
     if args.tables is None:
@@ -222,8 +207,11 @@ def run_archive(args: argparse.Namespace) -> int:
             "--targets: with --partition-s the surface targets are the --tables folder's targets file "
             "(targets.parquet or targets.csv)"
         )
+    from registration.cli.fleet_tables import opened_tables
+
     out = prepare_out(args.out)
-    result, outputs = _run(args, out, Path(args.tables))
+    with opened_tables(args, out, lazy=True) as source:
+        result, outputs = _solve_and_write(args, out, source)
     print(
         f"{result.n_plots} plots in {result.plan.n_partitions} partitions, {result.iterations} iterations, "
         f"chi-square/dof {result.chi_square.mean:.3f}"

@@ -64,15 +64,16 @@ def estimate_table(rows: list[dict]) -> list[str]:
     wo = max([8, *(len(r["object"]) + 2 for r in rows)])
     ws = max([16, *(len(r["state"]) + 2 for r in rows)])
     out = [
-        f"  {'object':<{wo}}{'state':<{ws}}{'estimate':>12}{'σ':>14}{'truth' if has_truth else '':>{10 if has_truth else 0}}"
-        "  unit  status"
+        f"  {'object':<{wo}}{'state':<{ws}}{'estimate':>12}{'σ':>14}"
+        f"{'truth' if has_truth else '':>{10 if has_truth else 0}}  unit  status"
     ]
     for r in rows:
         k, unit = (1e6, "ppm") if r["unit"] == "1" else (1.0, r["unit"])
         sigma = sigma_text(np.inf if r["sigma"] is None else k * r["sigma"], ".3g")
         truth = f"{k * r['truth']:10.4g}" if has_truth else ""
         out.append(
-            f"  {r['object']:<{wo}}{r['state']:<{ws}}{k * r['estimate']:12.4g}{sigma:>14}{truth}  {unit:<4}  {r['status']}"
+            f"  {r['object']:<{wo}}{r['state']:<{ws}}{k * r['estimate']:12.4g}{sigma:>14}{truth}  "
+            f"{unit:<4}  {r['status']}"
         )
     return out
 

@@ -22,7 +22,7 @@ from registration.core.parallel import dask_client  # noqa: E402
 from registration.fleet import BatchOptions, fleet_scenario  # noqa: E402
 from registration.fleet.batch.outputs import archive_outputs  # noqa: E402
 from registration.fleet.batch.partitioned import solve_batch_partitioned  # noqa: E402
-from registration.fleet.batch.partitions import TablesSource  # noqa: E402
+from registration.io.fleet.memory import TablesSource  # noqa: E402
 
 PARTITIONS = 3
 KILL_AT = PARTITIONS + 1  # a read of the first reduce pass

@@ -1,4 +1,4 @@
-"""Archives as Parquet files read lazily by the partitioned solver (registration.fleet.batch.archive),
+"""Archives as Parquet files read lazily by the partitioned solver (registration.io.fleet.archive),
 and the partitions mapped on Dask workers: the same estimate as solve_batch on the same files, also
 when the plots are a folder of files out of time order; a file that breaks mid-run is a one-line
 ValueError naming it; 1, 2 and 3 workers give the in-process answer."""
@@ -10,11 +10,10 @@ import pytest
 
 from registration.core.parallel import dask_client
 from registration.fleet import fleet_scenario, solve_batch
-from registration.fleet.batch.archive import ParquetSource
 from registration.fleet.batch.partitioned import solve_batch_partitioned
-from registration.fleet.batch.partitions import TablesSource
 from registration.io import read_fleet_tables, write_fleet_tables
-from registration.io.fleet.cells import FILE_COLUMNS
+from registration.io.fleet.archive import ParquetSource
+from registration.io.fleet.memory import TablesSource
 from tests.fleet.test_archive import EXTENDED, assert_same
 
 
@@ -48,7 +47,7 @@ def archive(tmp_path_factory):
 def test_parquet_archive_equals_solve_batch(archive):
     _, folder, split, batch = archive
     for path, partitions in ((folder, 1), (folder, 3), (split, 2), (split, 7)):
-        assert_same(solve_batch_partitioned(ParquetSource(path, FILE_COLUMNS), partitions=partitions), batch)
+        assert_same(solve_batch_partitioned(ParquetSource(path), partitions=partitions), batch)
 
 
 def test_a_file_that_breaks_mid_run_is_named(archive, monkeypatch):
@@ -59,7 +58,7 @@ def test_a_file_that_breaks_mid_run_is_named(archive, monkeypatch):
         target = broken / p.relative_to(split)
         target.parent.mkdir(exist_ok=True)
         target.write_bytes(p.read_bytes())
-    source = ParquetSource(broken, FILE_COLUMNS)
+    source = ParquetSource(broken)
     victim = broken / "plots" / "part-a.parquet"
     calls = {"n": 0}
     read = source.read_plots
@@ -92,3 +91,32 @@ def test_dask_workers_equal_in_process():
             got = solve_batch_partitioned(src, partitions=3, client=client, cache=2)
         assert got.estimate.tobytes() == ref.estimate.tobytes()
         assert got.sigma.tobytes() == ref.sigma.tobytes()
+
+
+def test_every_source_keeps_the_contract_and_opens_one_way(archive, tmp_path):
+    """The tables in memory, a checked folder and an archive are FleetSources; open_fleet_tables gives
+    the checked folder (in memory) or the archive (lazy) of the same folder, and a CSV archive's
+    temporary Parquet folder is gone when the context ends."""
+    from registration.fleet.data.source import FleetSource
+    from registration.io.fleet.read import FleetTables
+    from registration.io.fleet.sources import open_fleet_tables
+
+    sc, folder, _, _ = archive
+    assert isinstance(TablesSource(sc.plots, sc.sensors, sc.navigation), FleetSource)
+    with open_fleet_tables(folder) as tables:
+        assert isinstance(tables, FleetTables) and isinstance(tables, FleetSource) and tables.in_memory
+        assert tables.name("references") == str(folder / "reference.parquet")
+    with open_fleet_tables(folder, lazy=True) as source:
+        assert isinstance(source, ParquetSource) and isinstance(source, FleetSource) and not source.in_memory
+        assert source.name("plots") == str(folder / "plots.parquet")
+        # the small tables come from the checked reader: SI units, radians, the priors' "no prior" as inf
+        assert np.array_equal(
+            source.sensors["sigma_bearing"], tables.sensors["sigma_bearing"], equal_nan=True
+        )
+    csv = tmp_path / "csv"
+    csv.mkdir()
+    write_fleet_tables(csv, sc.plots, sc.navigation, sc.sensors, sc.platforms, sc.references, fmt="csv")
+    with open_fleet_tables(csv, lazy=True) as source:
+        temp = source.folder
+        assert temp != csv and (temp / "plots.parquet").is_file()
+    assert not temp.exists()

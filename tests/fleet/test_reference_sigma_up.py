@@ -26,10 +26,10 @@ from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.initial import initial_coefficients
 from registration.fleet.batch.normal import evaluate, make_design, normal_equations
 from registration.fleet.batch.partitioned import solve_batch_partitioned
-from registration.fleet.batch.partitions import TablesSource
 from registration.fleet.batch.solver import BatchOptions
-from registration.fleet.data.inputs import read_references
+from registration.fleet.data.known_targets import read_references
 from registration.fleet.online.filter import OnlineOptions, register_online
+from registration.io.fleet.memory import TablesSource
 from registration.io.fleet.read import read_fleet_tables
 from registration.io.fleet.write import write_fleet_tables
 from tests.fleet.test_archive import assert_same

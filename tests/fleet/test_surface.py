@@ -25,7 +25,7 @@ from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.initial import initial_coefficients
 from registration.fleet.batch.normal import evaluate, make_design, normal_equations, positions
 from registration.fleet.batch.solve import HEIGHT_WARNING
-from registration.fleet.data.inputs import read_surface
+from registration.fleet.data.known_targets import read_surface
 from registration.io import read_fleet_tables
 from registration.io.nmea import import_nmea
 from tests.io.nmea.bridgelog import PLATFORM, simulate_bridge_log
@@ -217,7 +217,7 @@ def test_with_the_surface_the_radar_errors_come_back_and_without_it_a_warning(br
 # the archive path ----------------------------------------------------------------------------------
 def test_the_partitioned_solver_takes_the_surface(bridge):
     from registration.fleet.batch.partitioned import solve_batch_partitioned
-    from registration.fleet.batch.partitions import TablesSource
+    from registration.io.fleet.memory import TablesSource
     from tests.fleet.test_archive import assert_same
 
     log, written = bridge

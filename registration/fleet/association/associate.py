@@ -47,7 +47,7 @@ from registration.fleet.association.result import AssociationResult
 from registration.fleet.association.solves import Registrar
 from registration.fleet.batch.solve import solve_batch
 from registration.fleet.batch.solver import progress_bar, progress_status
-from registration.fleet.data.inputs import References
+from registration.fleet.data.known_targets import References
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["AssociationOptions", "AssociationResult", "associate_and_register"]

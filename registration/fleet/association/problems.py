@@ -10,7 +10,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from registration.fleet.association.options import AssociationOptions
-from registration.fleet.data.inputs import References, read_references
+from registration.fleet.data.known_targets import References, read_references
 from registration.fleet.data.problem import Exclusion, FleetProblem, build_problem
 from registration.fleet.data.tables import read_table
 

@@ -26,7 +26,7 @@ from registration.fleet.association.joining.windowfit import WindowFit, fit_wind
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.problems import labelled_problem
 from registration.fleet.batch.solve import solve_batch
-from registration.fleet.data.inputs import References
+from registration.fleet.data.known_targets import References
 from registration.fleet.data.problem import FleetProblem
 from registration.fleet.result import BatchResult
 

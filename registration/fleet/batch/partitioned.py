@@ -33,7 +33,7 @@ from registration.core.observability import ObservabilityReport
 from registration.core.parallel import map_chunks
 from registration.fleet.batch.blocks import window_grid
 from registration.fleet.batch.covariance import state_covariance
-from registration.fleet.batch.partitions import DEFAULT_NAV_MARGIN_S, ArchivePlan, TablesSource, make_plan
+from registration.fleet.batch.partitions import DEFAULT_NAV_MARGIN_S, ArchivePlan, make_plan
 from registration.fleet.batch.passes import (
     PartitionTask,
     archive_sensors,
@@ -319,9 +319,9 @@ def solve_batch_partitioned(
         raise ValueError(f"x0: expected {layout.n} finite starting states, got shape {x.shape}")
     x[layout.fixed] = 0.0
     if cache is None:
-        cache = plan.n_partitions if isinstance(source, TablesSource) and client is None else 0
+        cache = plan.n_partitions if source.in_memory and client is None else 0
     if spill is None:
-        spill = cache < plan.n_partitions and not isinstance(source, TablesSource)
+        spill = cache < plan.n_partitions and not source.in_memory
     folder = make_folder(spill_dir) if spill else None
     try:
         tasks, coefs, n_plots, exclusions, warnings = _setup(plan, source, options, x, client, cache, folder)

@@ -40,18 +40,13 @@ from registration.fleet.batch.partitions import ArchivePlan, partition_of, windo
 from registration.fleet.batch.residuals import chi_square_parts
 from registration.fleet.batch.schur import reduce
 from registration.fleet.batch.solver import BatchOptions, outside_when_seen, singular_blocks
-from registration.fleet.data.inputs import (
-    index_of,
-    read_platforms,
-    read_plots,
-    read_references,
-    read_sensors,
-    read_surface,
-)
+from registration.fleet.data.known_targets import read_references, read_surface
 from registration.fleet.data.layout import StateLayout, make_layout
 from registration.fleet.data.navigation import navigation_at, platform_navigation
+from registration.fleet.data.plot_rows import read_plots
 from registration.fleet.data.problem import Exclusion, FleetProblem
-from registration.fleet.data.tables import read_table
+from registration.fleet.data.sensor_specs import read_platforms, read_sensors
+from registration.fleet.data.tables import index_of, read_table
 
 __all__ = [
     "PartitionTask",

@@ -14,18 +14,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from registration.fleet.data.inputs import (
-    References,
-    RowProblem,
-    SurfaceTargets,
-    index_of,
-    plot_problems,
-    read_platforms,
-    read_plots,
-    read_references,
-    read_sensors,
-    read_surface,
-)
+from registration.fleet.data.known_targets import References, SurfaceTargets, read_references, read_surface
 from registration.fleet.data.layout import StateLayout, make_layout
 from registration.fleet.data.navigation import (
     navigation_at,
@@ -34,7 +23,9 @@ from registration.fleet.data.navigation import (
     platform_navigation,
     unused_platforms,
 )
-from registration.fleet.data.tables import read_table
+from registration.fleet.data.plot_rows import RowProblem, plot_problems, read_plots
+from registration.fleet.data.sensor_specs import read_platforms, read_sensors
+from registration.fleet.data.tables import index_of, read_table
 
 __all__ = ["Exclusion", "FleetProblem", "build_problem", "plot_row_problems"]
 
@@ -50,7 +41,8 @@ class Exclusion:
     t_end: float
 
     def text(self) -> str:
-        return f"target {self.target} ({self.n_plots} plots, {self.t_start:g} s to {self.t_end:g} s): {self.reason}"
+        span = f"{self.n_plots} plots, {self.t_start:g} s to {self.t_end:g} s"
+        return f"target {self.target} ({span}): {self.reason}"
 
 
 @dataclass(frozen=True)
@@ -134,7 +126,7 @@ class FleetProblem:
         measured = np.zeros(len(self.target_ids), dtype=bool)
         measured[self.target[self.mask[:, 2]]] = True
         refs = self.references
-        measured[self.ref_target[np.isfinite(refs.sigma_up)]] = True
+        measured[self.ref_target[np.isfinite(refs.up_sigma)]] = True
         surface = self.surface_of_targets()
         if surface is not None:
             measured |= np.isfinite(surface[0])
@@ -171,8 +163,9 @@ class FleetProblem:
     def lines(self) -> list[str]:
         """A short human-readable summary."""
         out = [
-            f"{len(self.platform_ids)} platforms, {len(self.sensor_ids)} sensors, {len(self.target_ids)} targets, "
-            f"{self.n_plots} plots used of {self.n_input_plots}, {len(self.references.time)} reference positions, "
+            f"{len(self.platform_ids)} platforms, {len(self.sensor_ids)} sensors, "
+            f"{len(self.target_ids)} targets, {self.n_plots} plots used of {self.n_input_plots}, "
+            f"{len(self.references.time)} reference positions, "
             f"{self.layout.n} states ({self.layout.free.size} estimated)"
         ]
         out += [f"  excluded: {e.text()}" for e in self.excluded]
@@ -224,7 +217,7 @@ def _single_sensor_targets(plots, references) -> list[Exclusion]:
 
 def plot_row_problems(plots, sensors, navigation, platforms=None, reference_targets=()) -> list[RowProblem]:
     """The problems of the plots rows that :func:`build_problem` raises for, per row, in its order
-    (:func:`~registration.fleet.data.inputs.plot_problems`, then ``outside_navigation``: a plot outside
+    (:func:`~registration.fleet.data.plot_rows.plot_problems`, then ``outside_navigation``: a plot outside
     its platform's navigation time span, not counting the targets it sets aside as seen by one
     sensor, unless in ``reference_targets``). The other tables are checked as build_problem does
     (ValueError naming table, row and object)."""

@@ -50,6 +50,7 @@ __all__ = [
     "EXTENDED_PRIOR_COLUMNS",
     "NAV_COLUMNS",
     "DEFAULT_REFERENCE_SIGMA",
+    "index_of",
 ]
 
 #: The measured channels, in plot order, and their units.
@@ -92,7 +93,7 @@ class Table:
         """A numeric column as float64; ``default`` fills a missing column (None: it is required)."""
         if column not in self.columns:
             if default is None:
-                self.require(column)
+                return self.require(column)  # raises: the column is missing
             return np.full(self.n_rows, float(default))
         values = self.columns[column]
         if (
@@ -140,3 +141,10 @@ def read_table(name: str, table, required: tuple[str, ...] = ()) -> Table:
     for column in required:
         out.require(column)
     return out
+
+
+def index_of(values: np.ndarray, ids) -> np.ndarray:
+    """Index of each of ``values`` (strings) in ``ids``; -1 where absent (vectorised)."""
+    unique, inverse = np.unique(values, return_inverse=True)
+    lookup = {v: i for i, v in enumerate(ids)}
+    return np.array([lookup.get(u, -1) for u in unique], dtype=np.int64)[inverse].reshape(values.shape)

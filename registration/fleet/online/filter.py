@@ -39,18 +39,13 @@ from registration.core.consistency import ConsistencyReport
 from registration.fleet.batch.blocks import SAME_INSTANT_S
 from registration.fleet.batch.residuals import residuals_at
 from registration.fleet.batch.solver import BatchOptions
-from registration.fleet.data.inputs import (
-    index_of,
-    read_platforms,
-    read_plots,
-    read_references,
-    read_sensors,
-    read_surface,
-)
+from registration.fleet.data.known_targets import read_references, read_surface
 from registration.fleet.data.layout import make_layout
 from registration.fleet.data.navigation import navigation_at, platform_navigation
+from registration.fleet.data.plot_rows import read_plots
 from registration.fleet.data.problem import Exclusion, FleetProblem, build_problem
-from registration.fleet.data.tables import read_table
+from registration.fleet.data.sensor_specs import read_platforms, read_sensors
+from registration.fleet.data.tables import index_of, read_table
 from registration.fleet.observability import fleet_observability
 from registration.fleet.online.epoch import epoch_information
 from registration.fleet.online.result import OnlineHistory, OnlineResult

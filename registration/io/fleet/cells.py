@@ -11,105 +11,40 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
 from registration.io.fleet.checks import attitude_check, radians_check, sigma_notes
 from registration.io.fleet.rejects import BadRows
+from registration.io.fleet.schema import FLEET_FILES, INF_ALLOWED, POSITIVE
 
 __all__ = ["FILE_COLUMNS", "OPTIONAL_IDS", "FileRead", "check_frame", "read_file"]
 
-#: Per table: (file column, table column, unit, required, (low, high) accepted in file units).
-#: unit "id" = an identifier; "deg" columns are converted to radians.
-FILE_COLUMNS = {
-    "plots": (
-        ("time_s", "time", "s", True, None),
-        ("sensor", "sensor", "id", True, None),
-        ("target", "target", "id", False, None),
-        ("track", "track", "id", False, None),
-        ("range_m", "range", "m", False, (0.0, 1e8)),
-        ("bearing_deg", "bearing", "deg", False, (-360.0, 360.0)),
-        ("elevation_deg", "elevation", "deg", False, (-90.0, 90.0)),
-    ),
-    "navigation": (
-        ("time_s", "time", "s", True, None),
-        ("platform", "platform", "id", True, None),
-        ("lat_deg", "lat", "deg", True, (-90.0, 90.0)),
-        ("lon_deg", "lon", "deg", True, (-360.0, 360.0)),
-        ("alt_m", "alt", "m", True, (-1.2e4, 1e6)),
-        ("heading_deg", "heading", "deg", True, (-360.0, 360.0)),
-        ("pitch_deg", "pitch", "deg", True, (-90.0, 90.0)),
-        ("roll_deg", "roll", "deg", True, (-90.0, 90.0)),
-    ),
-    "sensors": (
-        ("sensor", "sensor", "id", True, None),
-        ("platform", "platform", "id", True, None),
-        ("sigma_range_m", "sigma_range", "m", False, (0.0, 1e6)),
-        ("sigma_bearing_deg", "sigma_bearing", "deg", False, (0.0, 20.0)),
-        ("sigma_elevation_deg", "sigma_elevation", "deg", False, (0.0, 20.0)),
-        ("prior_range_bias_m", "prior_range", "m", False, (0.0, math.inf)),
-        ("prior_bearing_bias_deg", "prior_bearing", "deg", False, (0.0, math.inf)),
-        ("prior_elevation_bias_deg", "prior_elevation", "deg", False, (0.0, math.inf)),
-        ("lever_x_m", "lever_x", "m", False, (-1e4, 1e4)),
-        ("lever_y_m", "lever_y", "m", False, (-1e4, 1e4)),
-        ("lever_z_m", "lever_z", "m", False, (-1e4, 1e4)),
-        ("prior_range_gain", "prior_range_gain", "dimensionless", False, (0.0, 0.1)),
-        ("prior_time_bias_s", "prior_time_bias", "s", False, (0.0, math.inf)),
-        ("prior_position_m", "prior_position", "m", False, (0.0, math.inf)),
-    ),
-    "platforms": (
-        ("platform", "platform", "id", True, None),
-        ("prior_heading_deg", "prior_heading", "deg", False, (0.0, math.inf)),
-        ("prior_pitch_deg", "prior_pitch", "deg", False, (0.0, math.inf)),
-        ("prior_roll_deg", "prior_roll", "deg", False, (0.0, math.inf)),
-    ),
-    "reference": (
-        ("time_s", "time", "s", True, None),
-        ("target", "target", "id", True, None),
-        ("lat_deg", "lat", "deg", False, (-90.0, 90.0)),
-        ("lon_deg", "lon", "deg", False, (-360.0, 360.0)),
-        ("alt_m", "alt", "m", False, (-1.2e4, 1e8)),
-        ("x_m", "x", "m", False, (-1e8, 1e8)),
-        ("y_m", "y", "m", False, (-1e8, 1e8)),
-        ("z_m", "z", "m", False, (-1e8, 1e8)),
-        ("sigma_m", "sigma", "m", False, (0.0, 1e6)),
-        ("sigma_up_m", "sigma_up", "m", False, (0.0, math.inf)),
-    ),
-    "targets": (
-        ("target", "target", "id", True, None),
-        ("name", "name", "id", False, None),
-        ("surface_alt_m", "surface_alt", "m", False, (-1e4, 1e4)),
-        ("sigma_surface_m", "sigma_surface", "m", False, (0.0, 1e6)),
-    ),
+#: Per table: (file column, table column, unit, required, (low, high) accepted in file units), the
+#: columns of :data:`registration.io.fleet.schema.FLEET_FILES` without their texts. unit "id" = an
+#: identifier; "deg" columns are converted to radians.
+FILE_COLUMNS: dict[str, tuple[tuple[str, str, str, bool, tuple[float, float] | None], ...]] = {
+    name: tuple((c.file, c.column, c.unit, c.required, c.limits) for c in table.columns)
+    for name, table in FLEET_FILES.items()
 }
 #: Id columns of a table whose empty cells mean "no id" (not an error): a plot without a target id is
 #: associated (registration.fleet.association), one without a track id is tracked by the association.
 OPTIONAL_IDS = {"plots": ("target", "track"), "targets": ("name",)}
-#: Sigma columns whose value must be > 0 (a prior may be 0: fixed).
-_POSITIVE = {
-    "range_m",
-    "sigma_range_m",
-    "sigma_bearing_deg",
-    "sigma_elevation_deg",
-    "sigma_m",
-    "sigma_up_m",
-    "sigma_surface_m",
-}
-#: Columns where inf is a meaning rather than an error (besides the priors' "no prior"): a reference
-#: without a height.
-_INF_ALLOWED = {"sigma_up_m"}
 
 
 def _read_frame(path: Path):
-    """A CSV or Parquet file as a DataFrame, id columns as text; a CSV frame with a line of fewer or
+    """A CSV or Parquet file (or a folder of Parquet files) as a DataFrame, id columns as text; a CSV
+    frame with a line of fewer or
     more fields than the header also has the column SHAPE_COLUMN (:mod:`registration.io.files.csvrows`)."""
     import pandas as pd
 
     from registration.io.files.csvrows import read_csv_blocks
     from registration.io.files.tablefile import file_format
 
-    fmt = file_format(path)
-    if not path.is_file():
+    frame: Any  # a DataFrame
+    fmt = "parquet" if path.is_dir() else file_format(path)  # a folder: a Parquet dataset
+    if not path.exists():
         raise ValueError(f"{path}: no such file")
     try:
         if fmt == "csv":
@@ -153,8 +88,8 @@ def _number_column(bad: BadRows, frame, column: str, unit: str, required: bool, 
             column, "non_finite", np.isnan(values), lambda r: f"empty or NaN; a number ({unit}) is required"
         )
     lo, hi = limits if limits is not None else (-math.inf, math.inf)
-    strict = column in _POSITIVE
-    finite_only = not ((column.startswith("prior_") or column in _INF_ALLOWED) and hi == math.inf)
+    strict = column in POSITIVE
+    finite_only = not ((column.startswith("prior_") or column in INF_ALLOWED) and hi == math.inf)
     out = ((values <= lo) if strict else (values < lo)) | (values > hi) | (finite_only & np.isinf(values))
     span = f"{'(' if strict else '['}{lo:g}, {hi:g}]"
 
@@ -191,7 +126,8 @@ def _used_platforms(frame, shapes, platforms: set, path: Path):
     extra = sorted({str(v).strip() for v in ids[~keep].unique()})
     rows = np.flatnonzero(keep)
     note = (
-        f"{path}: platform(s) {extra} carry no sensor; their {int((~keep).sum())} navigation rows are ignored "
+        f"{path}: platform(s) {extra} carry no sensor; their {int((~keep).sum())} navigation rows are "
+        "ignored "
         f"(platforms used: {sorted(platforms)})"
     )
     return (

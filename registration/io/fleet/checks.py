@@ -132,18 +132,19 @@ def attitude_check(path, columns: dict, platform: np.ndarray) -> list[str]:
             if as_radians <= RADIANS_MATCH_DEG and as_degrees >= DEGREES_MISS_DEG:
                 r = int(rows[np.argmax(np.abs(h))])
                 raise ValueError(
-                    f"{path}: row {r}, column 'heading_deg': the {rows.size} headings of platform {str(pid)!r} all lie "
-                    f"within +-{peak:.3g}, and read as radians they follow its course over ground (from lat_deg, "
-                    f"lon_deg; median difference {as_radians:.1f} deg over {course.size} stretches of its track) while "
-                    f"read as degrees they do not ({as_degrees:.1f} deg): radians? heading_deg, pitch_deg and roll_deg "
-                    "are in degrees (numpy.degrees converts)"
+                    f"{path}: row {r}, column 'heading_deg': the {rows.size} headings of platform "
+                    f"{str(pid)!r} all lie within +-{peak:.3g}, and read as radians they follow its course "
+                    f"over ground (from lat_deg, lon_deg; median difference {as_radians:.1f} deg over "
+                    f"{course.size} stretches of its track) while read as degrees they do not "
+                    f"({as_degrees:.1f} deg): radians? heading_deg, pitch_deg and roll_deg are in degrees "
+                    "(numpy.degrees converts)"
                 )
         pr = np.concatenate([columns["pitch_deg"][rows], columns["roll_deg"][rows]])
         if np.max(np.abs(pr)) <= SMALL_ATTITUDE and np.ptp(pr) > 0:
             notes.append(
                 f"{path}: pitch_deg and roll_deg of platform {str(pid)!r} all lie within "
-                f"+-{np.max(np.abs(pr)):.2g} while it moves at {np.median(speed):.1f} m/s: radians? (a ship at "
-                "sea pitches and rolls by degrees; if these are degrees, ignore this note)"
+                f"+-{np.max(np.abs(pr)):.2g} while it moves at {np.median(speed):.1f} m/s: radians? "
+                "(a ship at sea pitches and rolls by degrees; if these are degrees, ignore this note)"
             )
     return notes
 
@@ -154,7 +155,9 @@ def sigma_notes(path, columns: dict, sensor: np.ndarray) -> list[str]:
     notes = []
     for column in ("sigma_bearing_deg", "sigma_elevation_deg"):
         v = columns.get(column)
-        small = np.flatnonzero(np.isfinite(v) & (v < MIN_ANGLE_SIGMA_DEG)) if v is not None else ()
+        if v is None:
+            continue
+        small = np.flatnonzero(np.isfinite(v) & (v < MIN_ANGLE_SIGMA_DEG))
         if len(small):
             listed = ", ".join(f"{str(sensor[r])!r} {v[r]:g} (row {r})" for r in small[:5])
             listed += f" and {len(small) - 5} more" if len(small) > 5 else ""

@@ -1,6 +1,6 @@
 """A folder of fleet CSV files as an archive for the partitioned solver (docs/archive.md, "Files"):
 :func:`parquet_from_csv` converts it, block by block, into a Parquet folder that
-:class:`registration.fleet.batch.archive.ParquetSource` reads.
+:class:`registration.io.fleet.archive.ParquetSource` reads.
 
 The plots, navigation and reference CSV files are read in blocks of whole lines
 (:func:`registration.io.files.csvrows.read_csv_blocks`, ``block_bytes`` each), every block checked
@@ -25,6 +25,7 @@ import os
 import re
 import shutil
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -152,7 +153,7 @@ def _reference_rows(path: Path, read) -> list:
     return []
 
 
-def _block_table(name: str, read) -> "object":
+def _block_table(name: str, read) -> Any:
     """A checked block as a pyarrow table of the file's columns in file units."""
     import pyarrow as pa
 
@@ -177,6 +178,7 @@ def _convert(name: str, path: Path, target: Path, context: dict, block_bytes: in
     from registration.io.files.csvrows import read_csv_blocks
 
     writer, first_row, notes, radians = None, 0, [], _Radians(name)
+    block: Any  # a DataFrame
     try:
         for block in read_csv_blocks(path, dtype={k: v for k, v in _IDS.items()}, block_bytes=block_bytes):
             block.columns = [str(c).strip() for c in block.columns]
@@ -234,13 +236,17 @@ def parquet_from_csv(folder, temp, block_bytes: int | None = None) -> list[str]:
     for name, path in paths.items():
         if path is not None and path.suffix != ".csv":
             os.symlink(path.resolve(), temp / f"{name}.parquet")
-    sensors = read_file("sensors", paths["sensors"], False) if paths["sensors"].suffix == ".csv" else None
+    small = {
+        n: p
+        for n in ("sensors", "platforms", "targets")
+        if (p := paths[n]) is not None and p.suffix == ".csv"
+    }
+    sensors = read_file("sensors", small["sensors"], False) if "sensors" in small else None
     for name in ("platforms", "targets"):  # checked here: their errors name the file's row
-        if paths[name] is not None and paths[name].suffix == ".csv":
-            read_file(name, paths[name], False)
-    for name in ("sensors", "platforms", "targets"):
-        if paths[name] is not None and paths[name].suffix == ".csv":
-            shutil.copyfile(paths[name], temp / f"{name}.csv")
+        if name in small:
+            read_file(name, small[name], False)
+    for name, path in small.items():
+        shutil.copyfile(path, temp / f"{name}.csv")
     context = {
         "sensors": set() if sensors is None else set(sensors.table["sensor"].tolist()),
         "platforms": set() if sensors is None else set(sensors.table["platform"].tolist()),

@@ -38,8 +38,9 @@ def tables_in_folder(
         )
     paths: dict[str, Path | None] = {}
     for name in TABLE_NAMES:
-        if given.get(name) is not None:
-            paths[name] = Path(given[name])
+        path = given.get(name)
+        if path is not None:
+            paths[name] = Path(path)
             continue
         found = [folder / (name + s) for s in SUFFIXES if (folder / (name + s)).is_file()]
         if len(found) > 1:

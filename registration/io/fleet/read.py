@@ -40,15 +40,20 @@ proof (:mod:`registration.io.fleet.checks`).
 from __future__ import annotations
 
 import re
+import uuid
 from dataclasses import dataclass, field, replace
 from pathlib import Path
+from typing import Callable
 
 import numpy as np
 
+from registration.fleet.data.plot_rows import RowProblem
 from registration.fleet.data.problem import FleetProblem, build_problem, plot_row_problems
 from registration.fleet.data.tables import DEFAULT_REFERENCE_SIGMA
-from registration.io.fleet.cells import FILE_COLUMNS, read_file
+from registration.io.fleet.cells import FILE_COLUMNS, FileRead, read_file
 from registration.io.fleet.checks import MIN_UNIT_CHECK_VALUES, channel_columns_check
+from registration.io.fleet.folder import TABLE_NAMES
+from registration.io.fleet.memory import TablesSource
 from registration.io.fleet.rejects import BadRows, NoValidPlotsError, RejectedRow, check_mode, rejected_frame
 
 __all__ = ["FILE_COLUMNS", "FleetTables", "read_fleet_tables", "needs_association", "MIN_UNIT_CHECK_VALUES"]
@@ -78,9 +83,10 @@ _FILE_COLUMN = {key: column for name in ("plots", "reference") for column, key, 
 
 
 @dataclass
-class FleetTables:
+class FleetTables(TablesSource):
     """The tables read from files, in SI units and radians (mappings of column -> array, ready for
-    :func:`~registration.fleet.data.problem.build_problem`), and the file each came from.
+    :func:`~registration.fleet.data.problem.build_problem`), and the file each came from: a checked
+    folder, a :class:`~registration.fleet.data.source.FleetSource` whose errors name the files.
 
     ``rejected``: the rows set aside (``on_bad_row="skip"``), in file order then row order;
     ``file_rows``: per table with rows set aside (or, for the navigation, rows of platforms without
@@ -99,6 +105,12 @@ class FleetTables:
     file_rows: dict = field(default_factory=dict)
     notes: list[str] = field(default_factory=list)
     targets: dict | None = None
+    token: str = field(default_factory=lambda: uuid.uuid4().hex, repr=False, compare=False)
+
+    def name(self, table: str) -> str:
+        """The file of ``table`` (``references``: the reference file), else the table's name."""
+        path = self.paths.get("reference" if table == "references" else table)
+        return table if path is None else str(path)
 
     def problem(self) -> FleetProblem:
         """:func:`build_problem` on the tables; its errors name the file the row is in. With rows
@@ -208,10 +220,23 @@ def _skip_plot_rows(tables: dict, paths: dict, bad: BadRows, file_rows: dict) ->
     except ValueError as exc:
         raise _file_error(exc, paths, file_rows) from exc
     for p in problems:
-        bad.add(
-            lambda i, p=p: _FILE_COLUMN[p.at(i)[1]], lambda i, p=p: p.at(i)[0], p.bad, p.message, rows=rows
-        )
+        bad.add(_column_of(p), _code_of(p), p.bad, p.message, rows=rows)
     return bad.ok()
+
+
+def _always(reason: str) -> Callable[[int], str]:
+    """The same reason for every row."""
+    return lambda r: reason
+
+
+def _column_of(problem: RowProblem) -> Callable[[int], str]:
+    """The file column of each row of a :class:`RowProblem`."""
+    return lambda i: _FILE_COLUMN[problem.at(i)[1]]
+
+
+def _code_of(problem: RowProblem) -> Callable[[int], str]:
+    """The reason code of each row of a :class:`RowProblem`."""
+    return lambda i: problem.at(i)[0]
 
 
 def _skip_rows(tables: dict, paths: dict, bads: dict, file_rows: dict) -> FleetTables:
@@ -278,37 +303,9 @@ def read_fleet_tables(
     """
     if check_mode(on_bad_row) == "stop":
         return _first_bad_row_stops(plots, navigation, sensors, platforms, reference, targets)
-    paths = {
-        k: Path(v)
-        for k, v in (
-            ("plots", plots),
-            ("navigation", navigation),
-            ("sensors", sensors),
-            ("platforms", platforms),
-            ("reference", reference),
-            ("targets", targets),
-        )
-        if v is not None
-    }
-    files = {}
-    for name in (
-        "plots",
-        "sensors",
-        "platforms",
-        "navigation",
-        "reference",
-        "targets",
-    ):  # navigation: of the platforms used
-        if name in paths:
-            used = {
-                str(p)
-                for f in (files.get("sensors"), files.get("platforms"))
-                if f
-                for p in f.table["platform"]
-            }
-            files[name] = read_file(
-                name, paths[name], name in ("plots", "reference"), used if name == "navigation" else None
-            )
+    given = zip(TABLE_NAMES, (plots, navigation, sensors, platforms, reference, targets))
+    paths = {k: Path(v) for k, v in given if v is not None}
+    files = _read_files(paths)
     tables = {name: f.table for name, f in files.items()}
     bads = {name: f.bad for name, f in files.items()}
     channel_columns_check(
@@ -318,32 +315,43 @@ def read_fleet_tables(
         paths["sensors"],
         files["sensors"].columns,
     )
-    ref = tables.get("reference")
-    if ref is not None and not ({"lat", "lon", "alt"} <= set(ref) or {"x", "y", "z"} <= set(ref)):
-        raise ValueError(
-            f"{paths['reference']}: give the known positions as lat_deg, lon_deg, alt_m or as x_m, y_m, z_m"
-        )
-    if ref is not None and "sigma" in ref:
-        ref["sigma"] = np.where(np.isnan(ref["sigma"]), DEFAULT_REFERENCE_SIGMA, ref["sigma"])
-    if ref is not None:
-        for key in ("x", "y", "z") if "x" in ref else ("lat", "lon", "alt"):
-            column = _FILE_COLUMN[key]
-            bads["reference"].add(
-                column,
-                "non_finite",
-                np.isnan(ref[key]),
-                lambda r, u=column.rsplit("_", 1)[1]: (
-                    f"empty or NaN; a number ({u}) is required for the position"
-                ),
-            )
+    if "reference" in tables:
+        _check_reference_positions(tables["reference"], paths["reference"], bads["reference"])
     _check_ids(tables, paths, bads)
-    left_out = {
-        k: f.file_rows for k, f in files.items() if f.file_rows is not None
-    }  # navigation of unused platforms
+    left_out = {k: f.file_rows for k, f in files.items() if f.file_rows is not None}  # unused platforms
     out = _skip_rows(tables, paths, bads, left_out)
     out.notes = [n for f in files.values() for n in f.notes]
     out.targets = tables.get("targets")
     return out
+
+
+def _read_files(paths: dict[str, Path]) -> dict[str, FileRead]:
+    """Each file of ``paths`` read and checked cell by cell, the plots' and reference's bad rows
+    set aside; the navigation's rows of the platforms the sensors and platforms use."""
+    files: dict[str, FileRead] = {}
+    for name in ("plots", "sensors", "platforms", "navigation", "reference", "targets"):
+        if name not in paths:
+            continue
+        used = None
+        if name == "navigation":
+            used = {
+                str(p) for k in ("sensors", "platforms") if k in files for p in files[k].table["platform"]
+            }
+        files[name] = read_file(name, paths[name], name in ("plots", "reference"), used)
+    return files
+
+
+def _check_reference_positions(ref: dict, path: Path, bad: BadRows) -> None:
+    """A reference position as lat/lon/alt or x/y/z, every cell of it given (a bad row else); an
+    empty sigma is the default one."""
+    if not ({"lat", "lon", "alt"} <= set(ref) or {"x", "y", "z"} <= set(ref)):
+        raise ValueError(f"{path}: give the known positions as lat_deg, lon_deg, alt_m or as x_m, y_m, z_m")
+    if "sigma" in ref:
+        ref["sigma"] = np.where(np.isnan(ref["sigma"]), DEFAULT_REFERENCE_SIGMA, ref["sigma"])
+    for key in ("x", "y", "z") if "x" in ref else ("lat", "lon", "alt"):
+        column = _FILE_COLUMN[key]
+        reason = f"empty or NaN; a number ({column.rsplit('_', 1)[1]}) is required for the position"
+        bad.add(column, "non_finite", np.isnan(ref[key]), _always(reason))
 
 
 def _first_bad_row_stops(plots, navigation, sensors, platforms, reference, targets=None) -> FleetTables:

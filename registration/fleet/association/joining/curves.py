@@ -30,7 +30,7 @@ import numpy as np
 
 from registration.fleet.association.joining.windowfit import WindowFit, Windows, fit_windows
 from registration.fleet.batch.solver import BatchOptions
-from registration.fleet.data.inputs import References, SurfaceTargets
+from registration.fleet.data.known_targets import References, SurfaceTargets
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["Curves", "NO_HEIGHT_SIGMA_M", "Prediction", "anchor_curves"]

@@ -1,25 +1,27 @@
-"""An archive of fleet tables as Parquet files, read lazily by time range: :class:`ParquetSource`, the
-source of :func:`registration.fleet.batch.partitioned.solve_batch_partitioned` for archives too large
-for memory (docs/archive.md).
+"""An archive of fleet tables as Parquet files, read lazily by time range: :class:`ParquetSource`, a
+:class:`~registration.fleet.data.source.FleetSource` for
+:func:`registration.fleet.batch.partitioned.solve_batch_partitioned` on archives too large for memory
+(docs/archive.md).
 
 The folder holds ``plots``, ``navigation`` and (optional) ``reference`` each as one Parquet file
-(``plots.parquet``) or a folder of them (``plots/``, a dataset: the files together are the
-table, in any order), and ``sensors``, (optional) ``platforms`` and (optional) ``targets`` (the
-surface targets) as Parquet or CSV files (small: read whole). A partition's plots, references and navigation are read row group by row
-group: only the groups whose statistics on ``time_s`` (and ``platform``) overlap the partition,
-then filtered; the groups of the latest partition are kept (per process, while the file is
-unchanged) for the next one, which mostly reads the same. Memory is bounded by the partition when
-the files' row groups follow time (write the plots sorted by time, in row groups of 10^5 rows or
-so). The first passes get text columns as ``pandas.Categorical`` (no Python string per row).
-Plots of one target window may lie in several files in any order: a partition reads them from
-every file, so the answer is the same. Navigation rows are sorted by time per platform after
-reading.
+(``plots.parquet``) or a folder of them (``plots/``, a dataset: the files together are the table,
+in any order), and ``sensors``, (optional) ``platforms`` and (optional) ``targets`` (the surface
+targets) as Parquet or CSV files (small: read whole). A partition's plots, references and
+navigation are read row group by row group: only the groups whose statistics on ``time_s`` (and
+``platform``) overlap the partition, then filtered; the groups of the latest partition are kept
+(per process, while the file is unchanged) for the next one, which mostly reads the same. Memory
+is bounded by the partition when the files' row groups follow time (write the plots sorted by
+time, in row groups of 10^5 rows or so). The first passes get text columns as
+``pandas.Categorical`` (no Python string per row). Plots of one target window may lie in several
+files in any order: a partition reads them from every file, so the answer is the same. Navigation
+rows are sorted by time per platform after reading.
 
-Columns are converted from file units by ``file_columns`` (per table: (file column, table column,
-unit, ...) tuples, unit "deg" converted to radians: the fleet files' columns,
-``registration.io.fleet.cells.FILE_COLUMNS``); without it the files hold the tables' own columns
-(SI units). A file that cannot be read, when the run starts or in the middle of it, is a one-line
-ValueError naming it.
+The files hold the fleet files' columns in file units
+(:data:`registration.io.fleet.cells.FILE_COLUMNS`: degrees, metres, seconds); the source gives the
+tables' columns (SI units, radians). The small tables are read and checked cell by cell by the
+reader of every fleet file (:func:`registration.io.fleet.cells.read_file`), so a bad cell there is
+the error the in-memory run gives. A file that cannot be read, when the run starts or in the
+middle of it, is a one-line ValueError naming it.
 """
 
 from __future__ import annotations
@@ -27,8 +29,11 @@ from __future__ import annotations
 import os
 import uuid
 from pathlib import Path
+from typing import Iterable, Iterator, Mapping
 
 import numpy as np
+
+from registration.io.fleet.cells import FILE_COLUMNS, read_file
 
 __all__ = ["LAZY_TABLES", "ParquetSource"]
 
@@ -36,11 +41,12 @@ __all__ = ["LAZY_TABLES", "ParquetSource"]
 LAZY_TABLES = ("plots", "navigation", "reference")
 
 
-def _one_line(exc: Exception) -> str:
-    return " ".join(str(exc).split()) or type(exc).__name__
+def _unreadable(path, exc: Exception) -> ValueError:
+    """The one-line error of a file that cannot be read (pyarrow and OS errors of many kinds)."""
+    return ValueError(f"{path}: cannot be read ({' '.join(str(exc).split()) or type(exc).__name__})")
 
 
-def _identity(path: str) -> tuple:
+def _identity(path: str) -> tuple | None:
     """(size, modification time) of a file: a file rewritten in the middle of a run is read again."""
     try:
         st = os.stat(path)
@@ -63,12 +69,16 @@ def _array(column):
 
 
 class ParquetSource:
-    """The fleet tables of ``folder`` (module docstring) as a partition source
-    (:mod:`registration.fleet.batch.partitions`); ``batch_rows``: rows per batch of the first passes."""
+    """The fleet tables of ``folder`` (module docstring) as a
+    :class:`~registration.fleet.data.source.FleetSource`; ``batch_rows``: rows per batch of the
+    first passes; ``notes``: what was noted while the archive was made (a CSV archive's conversion)."""
 
-    def __init__(self, folder, file_columns: dict | None = None, batch_rows: int = 200_000):
+    #: The tables are read from files partition by partition.
+    in_memory = False
+
+    def __init__(self, folder, batch_rows: int = 200_000, notes: Iterable[str] = ()):
         self.folder = Path(folder)
-        self.file_columns = file_columns
+        self.notes = list(notes)
         self.batch_rows = int(batch_rows)
         self.paths = {
             name: self._find(name)
@@ -79,9 +89,9 @@ class ParquetSource:
                 raise ValueError(
                     f"{self.folder}: no {name} table ({name}.parquet or a folder {name}/ of Parquet files)"
                 )
-        self.sensors = self._whole("sensors")
-        self.platforms = self._whole("platforms") if self.paths["platforms"] is not None else None
-        self.targets = self._whole("targets") if self.paths["targets"] is not None else None
+        self.sensors = read_file("sensors", Path(str(self.paths["sensors"])), False).table
+        self.platforms = self._whole("platforms")
+        self.targets = self._whole("targets")
         self.token = uuid.uuid4().hex
 
     def __getstate__(self):
@@ -97,39 +107,25 @@ class ParquetSource:
         path = self.paths.get("reference" if table == "references" else table)
         return str(path) if path is not None else table
 
-    def _spec(self, table: str) -> tuple:
-        if self.file_columns is None:
-            return ()
-        return self.file_columns["reference" if table == "references" else table]
-
     def _convert(self, table: str, frame: dict) -> dict:
         """File columns to the tables' columns (module docstring)."""
-        spec = self._spec(table)
-        if not spec:
-            return frame
         out = {}
-        for file_col, col, unit, *_ in spec:
+        for file_col, col, unit, *_ in FILE_COLUMNS[table]:
             if file_col in frame:
                 v = frame[file_col]
                 out[col] = np.radians(np.asarray(v, dtype=np.float64)) if unit == "deg" else v
         return out
 
     def _file_column(self, table: str, column: str) -> str:
-        for file_col, col, *_ in self._spec(table):
+        for file_col, col, *_ in FILE_COLUMNS[table]:
             if col == column:
                 return file_col
         return column
 
-    def _whole(self, name: str) -> dict:
-        import pandas as pd
-
+    def _whole(self, name: str) -> dict | None:
+        """A small table, checked cell by cell (module docstring); None when the folder has none."""
         path = self.paths[name]
-        try:
-            ids = {c: str for c in ("sensor", "platform", "target", "name")}  # ids stay text ("007" is not 7)
-            frame = pd.read_csv(path, dtype=ids) if path.suffix == ".csv" else pd.read_parquet(path)
-        except Exception as exc:  # pandas/pyarrow errors of many kinds
-            raise ValueError(f"{path}: cannot be read ({_one_line(exc)})") from exc
-        return self._convert(name, {str(c): frame[c].to_numpy() for c in frame.columns})
+        return None if path is None else read_file(name, path, False).table
 
     def _dataset(self, name: str):
         import pyarrow.dataset as ds
@@ -139,10 +135,10 @@ class ParquetSource:
             try:
                 cache[name] = ds.dataset(str(self.paths[name]), format="parquet")
             except Exception as exc:  # pyarrow errors of many kinds
-                raise ValueError(f"{self.paths[name]}: cannot be read ({_one_line(exc)})") from exc
+                raise _unreadable(self.paths[name], exc) from exc
         return cache[name]
 
-    def _batches(self, name: str, columns):
+    def _batches(self, name: str, columns: Iterable[str]) -> Iterator[dict]:
         """Batches of ``columns`` (table names) as dicts of arrays; text columns without nulls as
         ``pandas.Categorical`` (no Python string per row: the first passes over 10^7 rows would
         otherwise leave their memory fragmented)."""
@@ -161,15 +157,15 @@ class ParquetSource:
                 ):
                     yield self._convert(name, {c: _array(batch.column(c)) for c in files})
             except Exception as exc:  # pyarrow errors of many kinds
-                raise ValueError(f"{fragment.path}: cannot be read ({_one_line(exc)})") from exc
+                raise _unreadable(fragment.path, exc) from exc
 
-    def plot_batches(self, columns):
+    def plot_batches(self, columns: Iterable[str]) -> Iterator[dict]:
         return self._batches("plots", columns)
 
-    def navigation_batches(self, columns):
+    def navigation_batches(self, columns: Iterable[str]) -> Iterator[dict]:
         return self._batches("navigation", columns)
 
-    def reference_batches(self, columns):
+    def reference_batches(self, columns: Iterable[str]) -> Iterator[dict]:
         return self._batches("reference", columns)
 
     def _row_groups(self, name: str) -> list:
@@ -188,7 +184,7 @@ class ParquetSource:
                 fragment.ensure_complete_metadata()
                 out.append((fragment, [(g.id, g.statistics) for g in fragment.row_groups], ident))
             except Exception as exc:  # pyarrow and OS errors of many kinds
-                raise ValueError(f"{fragment.path}: cannot be read ({_one_line(exc)})") from exc
+                raise _unreadable(fragment.path, exc) from exc
         stats[name] = out
         return out
 
@@ -215,10 +211,10 @@ class ParquetSource:
                             schema=data.schema, use_threads=False
                         )
                     except Exception as exc:  # pyarrow errors of many kinds
-                        raise ValueError(f"{fragment.path}: cannot be read ({_one_line(exc)})") from exc
+                        raise _unreadable(fragment.path, exc) from exc
                 used[key] = table
                 tables.append(table)
-        self._groups[name] = used
+        self.__dict__["_groups"][name] = used
         table = pa.concat_tables(tables) if tables else data.schema.empty_table()
         table = table.filter(expression)
         return {c: table.column(c).to_numpy(zero_copy_only=False) for c in table.column_names}
@@ -241,7 +237,7 @@ class ParquetSource:
     def read_references(self, lo: float, hi: float) -> dict | None:
         return None if self.paths["reference"] is None else self._time_range("reference", lo, hi)
 
-    def read_navigation(self, ranges: dict) -> dict:
+    def read_navigation(self, ranges: Mapping[str, tuple[float, float]]) -> dict:
         import pyarrow.dataset as ds
 
         t_col, p_col = self._file_column("navigation", "time"), self._file_column("navigation", "platform")
