@@ -12,6 +12,9 @@ is minus the deck bearing; measurement vectors are (elevation, bearing, range) o
 
 from __future__ import annotations
 
+# first, so that without Stone Soup the error says how to install it (not which module failed)
+from registration.interop.requires import INSTALL_HINT, STONESOUP_VERSION  # isort: split
+
 from registration.interop.convert import (
     EPOCH,
     MODEL_CHANNELS,
@@ -23,7 +26,6 @@ from registration.interop.convert import (
 )
 from registration.interop.detections import detections_to_tables
 from registration.interop.feeder import RegisteredDetectionFeeder, RegistrationCorrector
-from registration.interop.requires import INSTALL_HINT, STONESOUP_VERSION
 from registration.interop.world import DECK2BODY, LocalFrame, orientation_rotation
 
 __all__ = [
