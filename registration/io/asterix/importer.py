@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Iterable, Mapping, Sequence
 
 import numpy as np
 
+from registration.core.progress import progress_bar
 from registration.io.asterix.decode.reader import decode_file
 from registration.io.asterix.decode.uap import check_editions
 from registration.io.asterix.errors import Rejections
@@ -62,16 +63,16 @@ class AsterixImport:
 
 
 class _Progress:
-    """A tqdm bar over the files' sizes on disk, advanced by the octets of the blocks walked, scaled
-    by on-disk over decompressed size (gzip files), or nothing."""
+    """A bar (:func:`registration.core.progress.progress_bar`) over the files' sizes on disk,
+    advanced by the octets of the blocks walked, scaled by on-disk over decompressed size (gzip
+    files); ``bar`` None when it does not show."""
 
     def __init__(self, paths: list, enabled: bool) -> None:
         self.bar, self.on_disk, self.scale, self.done = None, 0, 1.0, 0
         if enabled:
-            from tqdm.auto import tqdm
-
             total = sum(Path(p).stat().st_size for p in paths if Path(p).is_file())
-            self.bar = tqdm(total=total, unit="B", unit_scale=True, desc="ASTERIX")
+            bar = progress_bar(enabled, "ASTERIX", total=total, unit="B", unit_scale=True)
+            self.bar = None if bar.disable else bar
 
     def start(self, path: str | Path) -> None:
         self.on_disk = Path(path).stat().st_size if Path(path).is_file() else 0
@@ -148,7 +149,8 @@ def import_asterix(
     ``sites``: the SITES table (DataFrame, or a path read with
     :func:`~registration.io.asterix.tables.sites.read_sites`). ``date``: the UTC day (datetime.date or
     'YYYY-MM-DD') that ``time_s`` counts from; None: the first capture's packet date, else the
-    recording's first day (the summary says which). ``progress``: a tqdm bar. ``editions``:
+    recording's first day (the summary says which). ``progress``: a bar over the bytes read
+    (:func:`registration.core.progress.progress_bar`). ``editions``:
     category -> edition (default the latest of each, e.g. ``{21: "0.26"}`` for an old ADS-B
     feed). ``ports``: UDP destination ports to read from captures (None: all).
     ``reference_targets``: 'plotted' (default) keeps the ADS-B reports of targets that some plot

@@ -196,7 +196,8 @@ def import_nmea(
     plus an optional ``talker`` column saying which sensor a TTM talker is (with one sensor on the
     platform and no talker, that sensor); ``date``: ``datetime.date`` or ``'YYYY-MM-DD'``, the UTC
     date the log starts on when it has no ZDA or RMC, and the origin of ``time_s``;
-    ``keep_acquiring``: keep TTM targets in acquisition (status Q); ``progress``: a tqdm bar;
+    ``keep_acquiring``: keep TTM targets in acquisition (status Q); ``progress``: a bar of lines read
+    (:func:`registration.core.progress.progress_bar`);
     ``platform_priors``: the platform's attitude prior sigmas by platforms file column
     (``prior_heading_deg``, ``prior_pitch_deg``, ``prior_roll_deg``; deg; missing or None: free);
     ``ais_sigmas``: the AIS reference sigma model (:class:`AisSigmas`); ``pashr_angles``:

@@ -27,6 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
+from registration.core.progress import progress_bar
 from registration.io.nmea.errors import Rejections
 
 __all__ = ["SentenceLog", "read_log", "line_parts", "LineProblem"]
@@ -234,17 +235,13 @@ def read_log(paths, rejections: Rejections, progress: bool = False) -> SentenceL
     """Read the log files (in the order given; each line's number counts from 1 in its file) into a
     :class:`SentenceLog` of the sentences with a correct checksum. Lines without a sentence, with a
     bad prefix or tag block, without a checksum or with a wrong one go to ``rejections``.
-    ``progress``: a tqdm bar of lines read on standard error."""
+    ``progress``: a bar of lines read (:func:`registration.core.progress.progress_bar`)."""
     files = [Path(p) for p in paths]
     for p in files:
         if not p.is_file():
             raise ValueError(f"{p}: no such file")
     out = {"file": [], "line": [], "sentence": [], "received": []}
-    bar = None
-    if progress:
-        from tqdm import tqdm
-
-        bar = tqdm(desc="NMEA lines", unit="line", unit_scale=True, leave=False)
+    bar = progress_bar(progress, "NMEA lines", unit="line", unit_scale=True)
     lines = blank = 0
     try:
         for k, p in enumerate(files):
@@ -252,8 +249,7 @@ def read_log(paths, rejections: Rejections, progress: bool = False) -> SentenceL
             lines += n
             blank += b
     finally:
-        if bar is not None:
-            bar.close()
+        bar.close()
     file = np.asarray(out["file"], dtype=np.int64)
     line = np.asarray(out["line"], dtype=np.int64)
     received = np.asarray(out["received"], dtype=np.float64)
