@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import datetime as dt
 from collections import Counter
-from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Iterable, Mapping, Sequence
 
@@ -25,6 +24,7 @@ from registration.io.asterix.tables.summary import (
 )
 from registration.io.asterix.tables.tables import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
 from registration.io.asterix.tables.timeofday import Unwrapper, capture_day
+from registration.io.imports import ImportResult
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -35,31 +35,12 @@ __all__ = ["AsterixImport", "import_asterix", "REFERENCE_TARGETS"]
 REFERENCE_TARGETS = ("plotted", "all")
 
 
-@dataclass
-class AsterixImport:
-    """What :func:`import_asterix` gives: the fleet tables as DataFrames in their file form
-    (docs/fleet.md: ``plots``, ``navigation``, ``sensors``, ``platforms``, ``reference``), the
-    records set aside (``rejected``: ``file``, ``offset``, ``packet``, ``category``,
-    ``reason_code``, ``reason``) and the ``summary`` (a JSON-able dict)."""
-
-    plots: pd.DataFrame
-    navigation: pd.DataFrame
-    sensors: pd.DataFrame
-    platforms: pd.DataFrame
-    reference: pd.DataFrame
-    rejected: pd.DataFrame
-    summary: dict
-
-    @property
-    def tables(self) -> dict:
-        """File name stem -> DataFrame of the five fleet tables."""
-        return {
-            "plots": self.plots,
-            "navigation": self.navigation,
-            "sensors": self.sensors,
-            "platforms": self.platforms,
-            "reference": self.reference,
-        }
+class AsterixImport(ImportResult):
+    """What :func:`import_asterix` gives (:class:`~registration.io.imports.ImportResult`): the fleet
+    tables as DataFrames in their file form (docs/fleet.md: ``plots``, ``navigation``,
+    ``sensors``, ``platforms``, ``reference``; no ``targets``), the records set aside
+    (``rejected``: ``file``, ``offset``, ``packet``, ``category``, ``reason_code``, ``reason``) and
+    the ``summary`` (a JSON-able dict); :meth:`write` writes them into a folder."""
 
 
 class _Progress:
@@ -237,11 +218,11 @@ def _build(
     plot_frame = _frame({c: plots[c] for c in PLOT_COLUMNS})
     plot_frame["target"] = plot_frame["target"].astype(str)
     return AsterixImport(
-        plot_frame,
-        tables["navigation"],
-        tables["sensors"],
-        tables["platforms"],
-        _frame(reference),
-        rejections.frame(),
-        summary,
+        plots=plot_frame,
+        navigation=tables["navigation"],
+        sensors=tables["sensors"],
+        platforms=tables["platforms"],
+        reference=_frame(reference),
+        rejected=rejections.frame(),
+        summary=summary,
     )

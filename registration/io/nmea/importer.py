@@ -8,14 +8,13 @@ The tables are DataFrames in the fleet *file* columns (degrees, metres, seconds;
 from __future__ import annotations
 
 import datetime as dt
-import json
 import math
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Mapping, Sequence
 
 import numpy as np
 
+from registration.io.imports import ImportResult
 from registration.io.nmea.ais import read_ais
 from registration.io.nmea.attitude import PASHR_ANGLES, pashr_subtypes, read_headings, read_pashr
 from registration.io.nmea.clock import fit_clock
@@ -45,9 +44,9 @@ USED_TYPES = ("GGA", "GNS", "RMC", "ZDA", "HDT", "THS", "PASHR", "TTM", "VDM", "
 PLATFORM_PRIOR_COLUMNS = ("prior_heading_deg", "prior_pitch_deg", "prior_roll_deg")
 
 
-@dataclass
-class NmeaImport:
-    """The fleet tables of one platform from an NMEA log, as DataFrames in the fleet file columns:
+class NmeaImport(ImportResult):
+    """What :func:`import_nmea` gives (:class:`~registration.io.imports.ImportResult`): the fleet
+    tables of one platform from an NMEA log, as DataFrames in the fleet file columns:
 
     * ``navigation``: ``time_s``, ``platform``, ``lat_deg``, ``lon_deg``, ``alt_m`` (above the
       ellipsoid), ``heading_deg``, ``pitch_deg``, ``roll_deg`` (one row per attitude sample);
@@ -61,52 +60,9 @@ class NmeaImport:
       (mean sea level above the ellipsoid), ``sigma_surface_m``;
     * ``rejected``: the lines set aside: ``file``, ``line`` (from 1), ``code``, ``reason``;
     * ``summary``: a JSON-able dict (docs/nmea.md, "The summary").
+
+    :meth:`write` writes them into a folder.
     """
-
-    navigation: pd.DataFrame
-    plots: pd.DataFrame
-    sensors: pd.DataFrame
-    platforms: pd.DataFrame
-    reference: pd.DataFrame
-    rejected: pd.DataFrame
-    summary: dict = field(default_factory=dict)
-    targets: pd.DataFrame | None = None
-
-    @property
-    def tables(self) -> dict[str, pd.DataFrame]:
-        """The fleet tables by file name (``plots``, ``navigation``, ``sensors``, ``platforms``,
-        ``reference``, ``targets``)."""
-        out = {
-            "plots": self.plots,
-            "navigation": self.navigation,
-            "sensors": self.sensors,
-            "platforms": self.platforms,
-            "reference": self.reference,
-        }
-        if self.targets is not None:
-            out["targets"] = self.targets
-        return out
-
-    def write(self, folder, fmt: str = "csv") -> dict[str, Path]:
-        """Write the tables with rows as ``<name>.csv`` (or ``.parquet``), ``rejected.csv`` and
-        ``import_summary.json`` into ``folder`` (created); a table without rows is not written (a fleet
-        file needs one). Returns name -> path."""
-        if fmt not in ("csv", "parquet"):
-            raise ValueError(f"fmt: expected 'csv' or 'parquet', got {fmt!r}")
-        folder = Path(folder)
-        folder.mkdir(parents=True, exist_ok=True)
-        out = {}
-        for name, frame in self.tables.items():
-            if len(frame):
-                out[name] = folder / f"{name}.{fmt}"
-                frame.to_csv(out[name], index=False) if fmt == "csv" else frame.to_parquet(
-                    out[name], index=False
-                )
-        out["rejected"] = folder / "rejected.csv"
-        self.rejected.to_csv(out["rejected"], index=False)
-        out["summary"] = folder / "import_summary.json"
-        out["summary"].write_text(json.dumps(self.summary, indent=2) + "\n")
-        return out
 
 
 def _known_types() -> set:
@@ -234,12 +190,12 @@ def import_nmea(
     refs = read_references(log, messages, clock, nav.sea_level, sigmas, rejections)
     summary = build_summary(ImportParts(log, clock, nav, plots, refs, rejections, not_used, len(messages)))
     return NmeaImport(
-        nav.frame(platform),
-        plots.frame(),
-        sensor_rows.drop(columns=[TALKER_COLUMN], errors="ignore"),
-        platforms,
-        refs.frame(),
-        rejections.frame(),
-        summary,
-        refs.targets_frame(),
+        plots=plots.frame(),
+        navigation=nav.frame(platform),
+        sensors=sensor_rows.drop(columns=[TALKER_COLUMN], errors="ignore"),
+        platforms=platforms,
+        reference=refs.frame(),
+        rejected=rejections.frame(),
+        summary=summary,
+        targets=refs.targets_frame(),
     )
