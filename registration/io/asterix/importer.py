@@ -13,7 +13,7 @@ import numpy as np
 from registration.core.progress import progress_bar
 from registration.io.asterix.decode.reader import decode_file
 from registration.io.asterix.decode.uap import check_editions
-from registration.io.asterix.errors import Rejections
+from registration.io.asterix.errors import LEDGER_COLUMNS, REASONS
 from registration.io.asterix.tables.assemble import FileRows, SiteLookup, assemble_file
 from registration.io.asterix.tables.sites import check_sites, read_sites
 from registration.io.asterix.tables.summary import (
@@ -24,6 +24,7 @@ from registration.io.asterix.tables.summary import (
 )
 from registration.io.asterix.tables.tables import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
 from registration.io.asterix.tables.timeofday import Unwrapper, capture_day
+from registration.io.files.ledger import RejectedLedger
 from registration.io.imports import ImportResult
 
 if TYPE_CHECKING:
@@ -149,7 +150,7 @@ def import_asterix(
     sites = read_sites(sites) if isinstance(sites, (str, Path)) else check_sites(sites, "sites")
     editions = check_editions(editions)
     date = _as_date(date)
-    rejections, bar = Rejections(), _Progress(paths, progress)
+    rejections, bar = RejectedLedger(LEDGER_COLUMNS), _Progress(paths, progress)
     decoded = []
     try:
         for path in paths:
@@ -169,7 +170,7 @@ def _build(
     sites: pd.DataFrame,
     date: dt.date | None,
     editions: dict,
-    rejections: Rejections,
+    rejections: RejectedLedger,
     which: str,
 ) -> AsterixImport:
     first_capture = next(
@@ -213,7 +214,7 @@ def _build(
         "sensors": sensor_summary(sites, plots, service, decoded_counts),
         "sac_sic_not_in_sites": sources_not_in_sites(unknown),
         "reference": ref_info,
-        "rejected": {"total": rejections.count(), "by_reason": rejections.by_code()},
+        "rejected": {"total": rejections.count(), "by_reason": rejections.by_code(tuple(REASONS))},
     }
     plot_frame = _frame({c: plots[c] for c in PLOT_COLUMNS})
     plot_frame["target"] = plot_frame["target"].astype(str)

@@ -14,11 +14,12 @@ from typing import TYPE_CHECKING, Mapping, Sequence
 
 import numpy as np
 
+from registration.io.files.ledger import RejectedLedger
 from registration.io.imports import ImportResult
 from registration.io.nmea.ais import read_ais
 from registration.io.nmea.attitude import PASHR_ANGLES, pashr_subtypes, read_headings, read_pashr
 from registration.io.nmea.clock import fit_clock
-from registration.io.nmea.errors import Rejections
+from registration.io.nmea.errors import LEDGER_COLUMNS
 from registration.io.nmea.fixes import read_fixes
 from registration.io.nmea.lines import SentenceLog, read_log
 from registration.io.nmea.navigation import build_navigation
@@ -71,7 +72,7 @@ def _known_types() -> set:
     return set(pynmea2.TalkerSentence.sentence_types) | set(USED_TYPES)
 
 
-def _sort_types(log: SentenceLog, rejections: Rejections) -> dict:
+def _sort_types(log: SentenceLog, rejections: RejectedLedger) -> dict:
     """Sentences of types not used: unknown types set aside (``unknown_type``); types pynmea2 knows
     counted (returned: type -> count; Ashtech's other $PASHR messages as ``PASHR (not attitude)``)."""
     import pynmea2
@@ -86,7 +87,7 @@ def _sort_types(log: SentenceLog, rejections: Rejections) -> dict:
             not_used[kind] = int(n)
             continue
         i = log.where(kind)
-        rejections.add(log.file[i], log.line[i], "unknown_type", f"unknown sentence type {kind!r}")
+        rejections.add(log.file[i], "unknown_type", f"unknown sentence type {kind!r}", line=log.line[i])
     other = pashr_subtypes(log)[1]
     if other.size:
         not_used["PASHR (not attitude)"] = int(other.size)
@@ -174,7 +175,7 @@ def import_nmea(
     paths = [paths] if isinstance(paths, (str, Path)) else list(paths)
     if not paths:
         raise ValueError("paths: no log file given")
-    rejections = Rejections([str(Path(p)) for p in paths])
+    rejections = RejectedLedger(LEDGER_COLUMNS, [str(Path(p)) for p in paths])
     log = read_log(paths, rejections, progress)
     not_used = _sort_types(log, rejections)
     fixes, dates = read_fixes(log, rejections)

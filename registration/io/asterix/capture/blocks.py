@@ -18,7 +18,7 @@ from typing import Collection
 import numpy as np
 
 from registration.io.asterix.capture.capture import ASTERIX_CATEGORIES, Capture
-from registration.io.asterix.errors import Rejections
+from registration.io.files.ledger import RejectedLedger
 
 __all__ = ["Blocks", "find_blocks"]
 
@@ -105,7 +105,7 @@ def _segment_blocks(
         p = q
 
 
-def find_blocks(cap: Capture, rejections: Rejections) -> Blocks:
+def find_blocks(cap: Capture, rejections: RejectedLedger) -> Blocks:
     """The data blocks of ``cap``; bad headers are set aside in ``rejections``."""
     mv = memoryview(cap.buf)
     seg = cap.segments
@@ -117,6 +117,6 @@ def find_blocks(cap: Capture, rejections: Rejections) -> Blocks:
         rows += out
         seg_of += [k] * len(out)
         for offset, code, reason in bad:
-            rejections.add(cap.path, offset, int(seg.packet[k]), 0, code, reason)
+            rejections.add(cap.path, code, reason, offset=offset, packet=int(seg.packet[k]), category=0)
     a = np.array(rows, dtype=np.int64).reshape(-1, 3)
     return Blocks(a[:, 0], a[:, 1], a[:, 2], np.array(seg_of, dtype=np.int64))

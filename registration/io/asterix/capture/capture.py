@@ -20,7 +20,8 @@ import numpy as np
 from registration.io.asterix.capture.netstack import Segments, udp_segments
 from registration.io.asterix.capture.pcap import PCAP_MAGICS, PCAPNG_MAGIC, pcap_packets, pcapng_packets
 from registration.io.asterix.decode.fields import PAD
-from registration.io.asterix.errors import AsterixImportError, Rejections
+from registration.io.asterix.errors import AsterixImportError
+from registration.io.files.ledger import RejectedLedger
 
 __all__ = ["Capture", "read_capture", "ASTERIX_CATEGORIES"]
 
@@ -137,7 +138,7 @@ def _raw_check(data: bytes, path: str) -> None:
         )
 
 
-def read_capture(path: str | Path, rejections: Rejections, ports: Iterable[int] | None = None) -> Capture:
+def read_capture(path: str | Path, rejections: RejectedLedger, ports: Iterable[int] | None = None) -> Capture:
     """Read ``path`` and find its data blocks' segments; packets cut short are set aside in
     ``rejections``. ``ports``: UDP destination ports to keep (None: all)."""
     name = str(path)
