@@ -15,6 +15,7 @@ from registration.io.asterix.decode.reader import decode_file
 from registration.io.asterix.decode.uap import check_editions
 from registration.io.asterix.errors import LEDGER_COLUMNS, REASONS
 from registration.io.asterix.tables.assemble import FileRows, SiteLookup, assemble_file
+from registration.io.asterix.tables.fleetfiles import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
 from registration.io.asterix.tables.sites import check_sites, read_sites
 from registration.io.asterix.tables.summary import (
     file_summary,
@@ -22,7 +23,6 @@ from registration.io.asterix.tables.summary import (
     sources_not_in_sites,
     time_summary,
 )
-from registration.io.asterix.tables.tables import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
 from registration.io.asterix.tables.timeofday import Unwrapper, capture_day
 from registration.io.files.ledger import RejectedLedger
 from registration.io.imports import ImportResult

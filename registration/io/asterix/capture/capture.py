@@ -19,8 +19,8 @@ import numpy as np
 
 from registration.io.asterix.capture.netstack import Segments, udp_segments
 from registration.io.asterix.capture.pcap import PCAP_MAGICS, PCAPNG_MAGIC, pcap_packets, pcapng_packets
-from registration.io.asterix.decode.fields import PAD
 from registration.io.asterix.errors import AsterixImportError
+from registration.io.asterix.octets import PAD
 from registration.io.files.ledger import RejectedLedger
 
 __all__ = ["Capture", "read_capture", "ASTERIX_CATEGORIES"]

@@ -16,8 +16,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.io.asterix.decode.fields import signed, u8, u16, u24, u32
 from registration.io.asterix.decode.walker import Records
+from registration.io.asterix.octets import signed, u8, u16, u24, u32
 
 __all__ = ["wanted", "decode021", "TOD_LSB_S", "HEIGHT_LSB_FT", "FOOT_M"]
 

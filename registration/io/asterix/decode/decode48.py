@@ -17,8 +17,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.io.asterix.decode.fields import u8, u16, u24
 from registration.io.asterix.decode.walker import Records
+from registration.io.asterix.octets import u8, u16, u24
 
 __all__ = ["WANTED", "TOD_LSB_S", "RHO_LSB_NM", "THETA_LSB_DEG", "decode048"]
 
