@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from registration.io.files.unreadable import read_error
 from registration.io.fleet.cells import FILE_COLUMNS
 
 if TYPE_CHECKING:
@@ -145,7 +146,7 @@ def read_sensors(path: str | Path) -> pd.DataFrame:
         else:
             frame = pd.read_csv(path, dtype=str, keep_default_na=False, skipinitialspace=True)
     except Exception as exc:  # pandas/pyarrow parse errors of many types
-        raise ValueError(f"{path}: cannot read it as a table: {exc}") from exc
+        raise read_error(path, exc, "cannot read it as a table") from exc
     return check_sensors(frame, str(path))
 
 

@@ -22,6 +22,7 @@ from registration.io.asterix.capture.pcap import PCAP_MAGICS, PCAPNG_MAGIC, pcap
 from registration.io.asterix.errors import AsterixImportError
 from registration.io.asterix.octets import PAD
 from registration.io.files.ledger import RejectedLedger
+from registration.io.files.unreadable import read_error
 
 __all__ = ["Capture", "read_capture", "ASTERIX_CATEGORIES"]
 
@@ -145,7 +146,7 @@ def read_capture(path: str | Path, rejections: RejectedLedger, ports: Iterable[i
     try:
         raw = Path(path).read_bytes()
     except OSError as exc:
-        raise AsterixImportError(f"{name}: cannot read the file: {exc.strerror or exc}") from exc
+        raise read_error(name, exc, "cannot read the file", AsterixImportError) from exc
     notes: list = []
     zipped = raw[:2] == b"\x1f\x8b"
     data = _gunzip(raw, name, notes) if zipped else raw

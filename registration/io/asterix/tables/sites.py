@@ -25,6 +25,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from registration.io.files.unreadable import read_error
+
 if TYPE_CHECKING:
     import pandas as pd
 
@@ -72,7 +74,7 @@ def read_sites(path: str | Path) -> pd.DataFrame:
         with open(path, newline="", encoding="utf-8-sig") as f:
             lines = [row for row in csv.reader(f)]
     except (OSError, UnicodeDecodeError, csv.Error) as exc:
-        raise ValueError(f"{path}: cannot read it as CSV: {exc}") from exc
+        raise read_error(path, exc, "cannot read it as CSV") from exc
     lines = [row for row in lines if any(cell.strip() for cell in row)]
     if not lines:
         raise ValueError(
