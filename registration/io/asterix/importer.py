@@ -192,7 +192,7 @@ def _build(
     reference, ref_info = _reference(
         rows, set(plots["target"].astype(str)) - {""} if plots["target"].size else set(), which
     )
-    decoded_counts = {}
+    decoded_counts: dict[int, int] = {}
     for r in rows:
         for cat, counts in r.decoded.items():
             decoded_counts[cat] = decoded_counts.get(cat, 0) + counts

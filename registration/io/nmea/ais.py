@@ -12,6 +12,7 @@ with its line number. The reception time of a message is that of its first part 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -30,7 +31,7 @@ class AisMessage:
     parts: list[int]
     own: bool
     received: float
-    data: object
+    data: Any  # pyais' decoded message (a class per message type)
 
 
 class _Assembler:
@@ -75,7 +76,7 @@ class _Assembler:
         return self.complete
 
 
-def _decode(log: SentenceLog, parts: list[int]) -> tuple[object, str | None]:
+def _decode(log: SentenceLog, parts: list[int]) -> tuple[Any, str | None]:
     """pyais' decoded message of the sentences ``parts``, or the error text."""
     import pyais
 

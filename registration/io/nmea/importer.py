@@ -112,7 +112,7 @@ def _platforms_table(platform: str, priors: Mapping[str, float] | None) -> pd.Da
         raise ValueError(
             f"platform_priors: unknown key(s) {unknown}; expected {list(PLATFORM_PRIOR_COLUMNS)} (deg)"
         )
-    row = {"platform": [str(platform)]}
+    row: dict[str, list] = {"platform": [str(platform)]}
     for column in PLATFORM_PRIOR_COLUMNS:
         v = priors.get(column, math.nan)
         if v is None:

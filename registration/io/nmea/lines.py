@@ -240,7 +240,7 @@ def read_log(paths, rejections: RejectedLedger, progress: bool = False) -> Sente
     for p in files:
         if not p.is_file():
             raise ValueError(f"{p}: no such file")
-    out = {"file": [], "line": [], "sentence": [], "received": []}
+    out: dict[str, list] = {"file": [], "line": [], "sentence": [], "received": []}
     bar = progress_bar(progress, "NMEA lines", unit="line", unit_scale=True)
     lines = blank = 0
     try:

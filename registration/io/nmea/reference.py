@@ -226,7 +226,8 @@ def read_references(
 ) -> References:
     """The reference positions of the AIS messages (see the module's text); ``sea_level``: the
     ellipsoid height (m) of mean sea level."""
-    vessels, own = {}, {"mmsi": [], "messages": {}}
+    vessels: dict = {}
+    own: dict = {"mmsi": [], "messages": {}}
     reports = _reports(log, messages, vessels, own, rejections)
     first = np.array([m.parts[0] for m, *_ in reports], dtype=np.int64)
     received = np.array([m.received for m, *_ in reports], dtype=np.float64)
@@ -255,12 +256,12 @@ def read_references(
     )
     keep = np.flatnonzero(~bad)
     seen: set = set()
-    dup = []
+    repeated = []
     for k in keep:
         key = (mmsi[k], time[k], lat[k], lon[k])
-        dup.append(key in seen)
+        repeated.append(key in seen)
         seen.add(key)
-    dup = np.array(dup, dtype=bool)
+    dup = np.array(repeated, dtype=bool)
     rejections.add(
         log.file[first[keep[dup]]],
         "ais_duplicate",

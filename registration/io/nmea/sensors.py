@@ -84,7 +84,10 @@ def check_sensors(frame: pd.DataFrame, source: str = "sensors") -> pd.DataFrame:
         )
     if len(frame) == 0:
         raise ValueError(f"{source}: no rows; give at least one sensor")
-    out = {"sensor": _ids(frame, source, "sensor"), "platform": _ids(frame, source, "platform")}
+    out: dict[str, list] = {
+        "sensor": _ids(frame, source, "sensor"),
+        "platform": _ids(frame, source, "platform"),
+    }
     seen: dict[str, int] = {}
     for row, s in enumerate(out["sensor"]):
         if s in seen:
@@ -113,7 +116,8 @@ def check_sensors(frame: pd.DataFrame, source: str = "sensors") -> pd.DataFrame:
 
 
 def _talkers(values: list, platforms: list[str], source: str) -> list[str]:
-    talkers, seen = [], {}
+    talkers: list[str] = []
+    seen: dict = {}
     for row, v in enumerate(values):
         text = "" if v is None or (isinstance(v, float) and math.isnan(v)) else str(v).strip().upper()
         if text and not _TALKER.match(text):

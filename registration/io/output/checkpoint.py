@@ -103,7 +103,8 @@ def save_checkpoint(path, payload: dict) -> None:
 
 
 def fsync_dir(path: Path) -> None:
-    """Make the renames inside folder ``path`` durable (fsync of the folder), where the file system allows it."""
+    """Make the renames inside folder ``path`` durable (fsync of the folder), where the file system
+    allows it."""
     try:
         fd = os.open(path, os.O_RDONLY)
         try:
@@ -132,7 +133,8 @@ def load_checkpoint(path) -> dict:
         raise CheckpointError(f"checkpoint {path} is not a sensor-registration checkpoint{hint}")
     if doc.get("version") != VERSION:
         raise CheckpointError(
-            f"checkpoint {path} has version {doc.get('version')!r}; this program reads version {VERSION}{hint}"
+            f"checkpoint {path} has version {doc.get('version')!r}; "
+            f"this program reads version {VERSION}{hint}"
         )
     payload = doc.get("payload")
     try:

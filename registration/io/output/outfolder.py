@@ -74,7 +74,8 @@ class OutputFolderError(ValueError):
 
 
 def _is_output(name: str, names: frozenset = OUTPUT_NAMES) -> bool:
-    """A name a run writes (one of ``names``), or one of its temporary files (``*.tmp``, ``paired.*.partial``)."""
+    """A name a run writes (one of ``names``), or one of its temporary files (``*.tmp``,
+    ``paired.*.partial``)."""
     for suffix in (".tmp", ".partial"):
         if name.endswith(suffix):
             name = name[: -len(suffix)]
@@ -253,12 +254,14 @@ def new_run_folder(
         raise OutputFolderError(f"--out {out}: cannot make a run folder in it")
     if checkpoint is None:
         how = (
-            f"checkpoint: none\nWithout --checkpoint this run cannot be resumed; once process {os.getpid()} is gone "
+            "checkpoint: none\nWithout --checkpoint this run cannot be resumed; "
+            f"once process {os.getpid()} is gone "
             f"the folder can be deleted (the next run into {out} deletes it).\n"
         )
     else:
         how = (
-            f"checkpoint: {Path(checkpoint).resolve()}\nTo resume, rerun the same command (same inputs, options, "
+            f"checkpoint: {Path(checkpoint).resolve()}\n"
+            "To resume, rerun the same command (same inputs, options, "
             "--out and --checkpoint); it continues in this folder.\n"
         )
     _write_text(

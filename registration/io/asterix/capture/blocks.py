@@ -107,12 +107,15 @@ def _segment_blocks(
 
 def find_blocks(cap: Capture, rejections: RejectedLedger) -> Blocks:
     """The data blocks of ``cap``; bad headers are set aside in ``rejections``."""
-    mv = memoryview(cap.buf)
+    mv = memoryview(cap.buf)  # type: ignore[arg-type]  # a uint8 array is a buffer
     seg = cap.segments
     raw = cap.kind == "raw"
-    rows, seg_of, seen = [], [], set()
+    rows: list = []
+    seg_of: list = []
+    seen: set[int] = set()
     for k in range(seg.start.size):
-        out, bad = [], []
+        out: list = []
+        bad: list = []
         _segment_blocks(mv, cap.buf, int(seg.start[k]), int(seg.end[k]), raw, seen, out, bad)
         rows += out
         seg_of += [k] * len(out)

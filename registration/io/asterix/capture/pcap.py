@@ -66,7 +66,7 @@ def pcap_packets(data: bytes, path: str, rejections: RejectedLedger) -> Packets:
     """The packets of a pcap file (``data``: its bytes, starting with one of :data:`PCAP_MAGICS`)."""
     order, unit = PCAP_MAGICS[bytes(data[:4])]
     n = len(data)
-    rows = []
+    rows: list[tuple] = []
     if n < 24:
         rejections.add(
             path,
@@ -111,7 +111,7 @@ def pcap_packets(data: bytes, path: str, rejections: RejectedLedger) -> Packets:
 
 def _options(data: bytes, order: str, start: int, end: int) -> dict:
     """pcapng options (code -> first value's bytes) between ``start`` and ``end``."""
-    out = {}
+    out: dict[int, bytes] = {}
     while start + 4 <= end:
         code, length = struct.unpack_from(order + "HH", data, start)
         if code == 0:
@@ -148,7 +148,9 @@ def _packet_block(data: bytes, order: str, btype: int, p: int, length: int, inte
 def pcapng_packets(data: bytes, path: str, rejections: RejectedLedger) -> Packets:
     """The packets of a pcapng file (``data``: its bytes, starting with :data:`PCAPNG_MAGIC`)."""
     n = len(data)
-    rows, interfaces, order = [], [], "<"
+    rows: list[tuple] = []
+    interfaces: list[tuple] = []
+    order = "<"
     p, k = 0, 0
     while p < n:
         if p + 12 > n:

@@ -89,7 +89,7 @@ def _walk_category(
     uap = uap_for(cat, edition)
     wanted = _wanted(cat, edition)
     parts = []
-    mv = memoryview(cap.buf)
+    mv = memoryview(cap.buf)  # type: ignore[arg-type]  # a uint8 array is a buffer
     for chunk in _chunks(blocks.end[sel] - blocks.start[sel]):
         idx = sel[chunk]
         rec = walk_records(cap.buf, blocks.start[idx], blocks.end[idx], uap, wanted)

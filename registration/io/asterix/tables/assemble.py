@@ -60,7 +60,9 @@ def _record_times(dec: DecodedFile, unwrapper: Unwrapper) -> dict:
         given = {48: f.get("has_140"), 34: f.get("has_030"), 21: None}[cat]
         given = (f["time_item"] != "") if cat == 21 else given
         tod = np.where(given & (f["tod"] < 86400 * 128), f["tod"] / 128.0, np.nan)
-        tods.append(tod), offsets.append(rec.offset), captures.append(rec.capture_time)
+        tods.append(tod)
+        offsets.append(rec.offset)
+        captures.append(rec.capture_time)
         cats.append(np.full(rec.size, cat))
     if not tods:
         return {cat: np.zeros(0) for cat in dec.records}

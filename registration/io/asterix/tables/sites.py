@@ -94,6 +94,7 @@ def read_sites(path: str | Path) -> pd.DataFrame:
 
 def _number(source: str, r: int, column: str, cell: object) -> float:
     unit, low, high, strict, required = SITE_COLUMNS[column]
+    assert low is not None and high is not None  # a number column has limits
     text = "" if cell is None or (isinstance(cell, float) and math.isnan(cell)) else str(cell).strip()
     where = f"{source}: row {r}, column {column!r}"
     if text == "":
@@ -135,7 +136,7 @@ def check_sites(frame: pd.DataFrame, source: str = "sites") -> pd.DataFrame:
     if len(frame) == 0:
         raise ValueError(f"{source}: no data rows (the file holds only a header)")
     frame = frame.set_axis(columns, axis=1)
-    out = {}
+    out: dict[str, list] = {}
     for column in columns:
         cells = frame[column].tolist()
         if column == "sensor":
@@ -160,7 +161,7 @@ def check_sites(frame: pd.DataFrame, source: str = "sites") -> pd.DataFrame:
 
 
 def _unique(source: str, values: list, column: str, what: str) -> None:
-    seen = {}
+    seen: dict = {}
     for r, v in enumerate(values):
         if v in seen:
             raise ValueError(
