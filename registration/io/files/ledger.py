@@ -6,7 +6,8 @@ a :class:`RejectedLedger`. Its table has the common columns ``file``, a reason c
 :class:`LedgerColumns`: a byte offset, packet and category for ASTERIX, a line for NMEA, a row
 and column for a table file. Items are added in vectorised batches (:meth:`RejectedLedger.add`);
 :meth:`RejectedLedger.frame` gives the table (the source's ``rejected.csv``),
-:meth:`RejectedLedger.by_code` the counts per reason code.
+:meth:`RejectedLedger.by_code` the counts per reason code. A reader that checks a table row by
+row records each row set aside as a :class:`RejectedRow`.
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ import numpy as np
 if TYPE_CHECKING:
     import pandas as pd
 
-__all__ = ["LOCATION_KINDS", "LedgerColumns", "Location", "RejectedLedger"]
+__all__ = ["LOCATION_KINDS", "LedgerColumns", "Location", "RejectedLedger", "RejectedRow"]
 
 #: How a location column is written: ``int`` (int64), ``nullable`` (Int64), ``positive`` (Int64,
 #: empty where the value is 0 or below: "does not apply"), ``text``.
@@ -54,6 +55,24 @@ class LedgerColumns:
     def names(self) -> tuple[str, ...]:
         """The table's columns, in order."""
         return ("file", *(c.name for c in self.location), self.code, "reason")
+
+
+@dataclass(frozen=True)
+class RejectedRow:
+    """One row of a table file set aside (the fleet's files, ``registration register``'s files):
+    its ``file`` (path as given), ``row`` (from 0, the first data row), the ``column`` of its first
+    problem, the reason ``code``, the ``reason`` in words and, where the reader keeps them, the
+    row's cells as JSON text (``values``)."""
+
+    file: str
+    row: int
+    column: str
+    code: str
+    reason: str
+    values: str = ""
+
+    def text(self) -> str:
+        return f"{self.file}: row {self.row}, column {self.column!r}: {self.reason} [{self.code}]"
 
 
 class RejectedLedger:

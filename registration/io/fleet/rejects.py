@@ -1,9 +1,10 @@
-"""Bad rows of the fleet's input files: the reason codes, the record of a row set aside, and the
-collection of one file's bad rows in either mode of ``on_bad_row``.
+"""Bad rows of the fleet's input files: the reason codes, the fleet's rejected-ledger columns, and
+the collection of one file's bad rows in either mode of ``on_bad_row``.
 
 ``"stop"`` raises a ValueError for the first problem (``FILE: row R, column 'C': reason``);
-``"skip"`` records the first problem of each row as a :class:`RejectedRow` and the caller drops the
-row. Rows are numbered from 0, the first data row (a CSV header line is not a row).
+``"skip"`` records the first problem of each row as a
+:class:`~registration.io.files.ledger.RejectedRow` and the caller drops the row. Rows are
+numbered from 0, the first data row (a CSV header line is not a row).
 
 Reason codes (:data:`FLEET_REASON_CODES`): those of the recorded files
 (:data:`registration.recorded.reading.rowcheck.REASON_CODES`: ``non_numeric``, ``non_finite`` for an
@@ -23,12 +24,11 @@ empty, NaN or infinite number, ``out_of_range``, ``non_positive_range``, ...) an
 from __future__ import annotations
 
 from collections import Counter
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Callable
 
 import numpy as np
 
-from registration.io.files.ledger import LedgerColumns, Location, RejectedLedger
+from registration.io.files.ledger import LedgerColumns, Location, RejectedLedger, RejectedRow
 from registration.io.files.tablefile import REASON_CODES, NoValidRowsError
 
 if TYPE_CHECKING:
@@ -68,21 +68,6 @@ def check_mode(on_bad_row: str) -> str:
     if on_bad_row not in BAD_ROW_MODES:
         raise ValueError(f"on_bad_row: expected 'stop' or 'skip', got {on_bad_row!r}")
     return on_bad_row
-
-
-@dataclass(frozen=True)
-class RejectedRow:
-    """One input row set aside: its ``file`` (path as given), ``row`` (from 0, the first data row),
-    the ``column`` of its first problem, the reason ``code`` and the ``reason`` in words."""
-
-    file: str
-    row: int
-    column: str
-    code: str
-    reason: str
-
-    def text(self) -> str:
-        return f"{self.file}: row {self.row}, column {self.column!r}: {self.reason} [{self.code}]"
 
 
 def rejected_frame(rows) -> "pandas.DataFrame":
