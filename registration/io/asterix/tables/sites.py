@@ -5,7 +5,7 @@ One row per sensor, columns (units in the names, degrees and metres as in the fl
 | column | meaning | accepted |
 |---|---|---|
 | ``sensor`` | the sensor's id in the fleet tables (also its platform's) | text, unique, not empty |
-| ``sac``, ``sic`` | the System Area and Identification Codes of its ASTERIX data source (I048/010, I034/010) | integers 0-255, the pair unique |
+| ``sac``, ``sic`` | its ASTERIX data source's System Area and Identification Codes | 0-255, the pair unique |
 | ``lat_deg``, ``lon_deg`` | WGS-84 latitude, longitude of the antenna | [-90, 90], [-360, 360] deg |
 | ``alt_m`` | antenna height above the WGS-84 ellipsoid (not above mean sea level) | [-12000, 1e6] m |
 | ``sigma_range_m``, ``sigma_bearing_deg`` | plot noise, one sigma | > 0 m; (0, 20] deg |
