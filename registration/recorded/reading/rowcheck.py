@@ -308,11 +308,8 @@ def check_frame(
                 )
         if mode == "stop":
             raise BadRowError(file, first_row + int(i), column, code, reason)
-        rejections.append(
-            RejectedRow(
-                file, first_row + int(i), column, code, reason, _row_values(frame, int(i), layout.columns)
-            )
-        )
+        cells = _row_values(frame, int(i), layout.columns)
+        rejections.append(RejectedRow(file, first_row + int(i), column, code, reason, cells))
     return CheckedBlock(
         first_row=first_row, values=values, accepted=accepted, rejections=rejections, last_time=new_last
     )
