@@ -40,7 +40,10 @@ def build_workers() -> int:
 
 
 def _progress(total_bytes: int, files: int):
-    """A tqdm bar over the bytes of source compiled, on standard error only when it is a terminal."""
+    """A tqdm bar over the bytes of source compiled, on standard error only when it is a terminal.
+
+    The rule of :mod:`registration.core.progress`, drawn at once (the build is the first thing a
+    run does); its own bar because ``_codegen`` is the bottom layer and may not import ``core``."""
     from tqdm import tqdm
 
     try:

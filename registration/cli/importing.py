@@ -17,18 +17,23 @@ from __future__ import annotations
 
 import argparse
 import datetime as dt
-import json
-import sys
 import textwrap
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from registration.cli.errors import EXIT_CODES_EPILOG, CommandError, prepare_out, writing
 from registration.cli.options import HelpFormatter
 from registration.cli.staging import staged_outputs
 
-__all__ = ["HELP", "add_arguments", "run", "IMPORT_OUTPUTS"]
+if TYPE_CHECKING:  # imported when the command runs: `registration --help` loads no importer
+    from registration.io.imports import ImportResult
 
-HELP = "import a recording (ASTERIX, NMEA 0183 with AIS) as the fleet tables that 'fleet register --tables' reads"
+__all__ = ["HELP", "add_arguments", "run"]
+
+HELP = (
+    "import a recording (ASTERIX, NMEA 0183 with AIS) as the fleet tables that "
+    "'fleet register --tables' reads"
+)
 ASTERIX_HELP = (
     "ASTERIX radar plots (CAT048), service messages (CAT034) and ADS-B reports (CAT021) from raw "
     "recordings or pcap/pcapng captures, gzip-compressed or not, into plots, navigation (one row per "
@@ -38,12 +43,6 @@ NMEA_HELP = (
     "an NMEA 0183 bridge log (GGA/RMC/GNS, ZDA, HDT/THS, $PASHR, TTM, !AIVDM) into the platform's "
     "navigation, the ARPA radar's plots (with sensor-local track ids), the AIS vessels as the reference "
     "table, and the sensors and platforms tables"
-)
-
-TABLES = ("plots", "navigation", "sensors", "platforms", "reference", "targets")
-#: Every file an import may write into --out (both formats, so that a new run replaces the other's tables).
-IMPORT_OUTPUTS = frozenset(
-    {f"{t}.{s}" for t in TABLES for s in ("csv", "parquet")} | {"rejected.csv", "import_summary.json"}
 )
 
 
@@ -145,52 +144,26 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         )
 
 
-def _run_importer(args: argparse.Namespace):
-    """(tables: name -> DataFrame in file form, rejected DataFrame, summary dict) of the chosen format."""
-    progress = sys.stderr.isatty()  # a bar on a terminal only
+def _run_importer(args: argparse.Namespace) -> ImportResult:
+    """The import of the chosen format (a bar on a terminal only)."""
     if args.format_name == "asterix":
         from registration.io.asterix import import_asterix, read_sites
 
         sites = read_sites(args.sites)
-        result = import_asterix(args.inputs, sites, date=args.date, progress=progress)
-    else:
-        from registration.io.nmea import import_nmea, read_sensors
+        return import_asterix(args.inputs, sites, date=args.date, progress=True)
+    from registration.io.nmea import import_nmea, read_sensors
 
-        sensors = read_sensors(args.sensors)
-        priors = {f"prior_{a}_deg": getattr(args, f"prior_{a}_deg") for a in ("heading", "pitch", "roll")}
-        result = import_nmea(
-            args.inputs,
-            args.platform,
-            sensors,
-            date=args.date,
-            keep_acquiring=args.keep_acquiring,
-            progress=progress,
-            platform_priors=priors,
-        )
-    return result.tables, result.rejected, result.summary
-
-
-def _write(folder: Path, tables: dict, rejected, summary: dict, fmt: str) -> list[Path]:
-    from registration.io.files.tablefile import write_frame
-
-    written = []
-    for name in TABLES:
-        frame = tables.get(name)
-        if frame is None or len(frame) == 0:
-            continue
-        path = folder / f"{name}.{fmt}"
-        with writing(path):
-            write_frame(frame, path, fmt)
-        written.append(path)
-    path = folder / "rejected.csv"
-    with writing(path):
-        write_frame(rejected, path, "csv")
-    written.append(path)
-    path = folder / "import_summary.json"
-    with writing(path):
-        path.write_text(json.dumps(summary, indent=2, default=str) + "\n")
-    written.append(path)
-    return written
+    sensors = read_sensors(args.sensors)
+    priors = {f"prior_{a}_deg": getattr(args, f"prior_{a}_deg") for a in ("heading", "pitch", "roll")}
+    return import_nmea(
+        args.inputs,
+        args.platform,
+        sensors,
+        date=args.date,
+        keep_acquiring=args.keep_acquiring,
+        progress=True,
+        platform_priors=priors,
+    )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -198,12 +171,15 @@ def run(args: argparse.Namespace) -> int:
     for path in args.inputs:
         if not path.is_file():
             raise CommandError(f"{path}: no such file")
+    from registration.io.imports import IMPORT_FILES  # every file an import may write (both formats)
+
     out = prepare_out(args.out)
-    tables, rejected, summary = _run_importer(args)
-    counts = ", ".join(f"{len(tables[n])} {n} rows" for n in TABLES if tables.get(n) is not None)
-    print(f"imported {counts}; set aside {len(rejected)} records (rejected.csv)")
-    with staged_outputs(out, f"registration import {args.format_name}", IMPORT_OUTPUTS) as folder:
-        written = _write(folder.path, tables, rejected, summary, args.format)
-    print("wrote " + ", ".join(str(folder.final(p)) for p in written))
+    result = _run_importer(args)
+    counts = ", ".join(f"{len(frame)} {name} rows" for name, frame in result.tables.items())
+    print(f"imported {counts}; set aside {len(result.rejected)} records (rejected.csv)")
+    with staged_outputs(out, f"registration import {args.format_name}", IMPORT_FILES) as folder:
+        with writing(folder.path):
+            written = result.write(folder.path, args.format)
+    print("wrote " + ", ".join(str(folder.final(p)) for p in written.values()))
     print(f"next: registration fleet register --tables {out} --out DIR")
     return 0

@@ -10,7 +10,6 @@ or a worker count nothing of it is imported.
 from __future__ import annotations
 
 import contextlib
-import sys
 
 __all__ = ["DASK_MISSING", "chunk_ranges", "dask_client", "map_chunks", "require_distributed"]
 
@@ -100,6 +99,6 @@ def map_chunks(func, items, client=None, *, progress: bool = False, desc: str = 
 
 
 def _bar(total: int, progress: bool, desc: str):
-    from tqdm import tqdm
+    from registration.core.progress import progress_bar
 
-    return tqdm(total=total, desc=desc, unit="chunk", disable=not progress, file=sys.stderr)
+    return progress_bar(progress, desc, total=total, unit="chunk")

@@ -3,8 +3,11 @@
 Layer: beside ``recorded`` and ``interop``, above the capabilities (``fleet``, ``online``, ...),
 below ``cli``. Subpackages:
 
-- ``files``: table files in general (CSV/Parquet by suffix, exact writing, the fields of every CSV
-  line counted from the raw bytes, the reason codes of rejected rows);
+- ``files``: table files in general (CSV/Parquet by suffix, exact writing and the one folder
+  writer, the fields of every CSV line counted from the raw bytes, the reason codes of rejected
+  rows, the rejected ledger, the one error for a file that cannot be read);
+- ``imports``: the import contract, :class:`~registration.io.imports.ImportResult`, that every
+  importer of a recording gives;
 - ``output``: output folders published whole, checkpoints;
 - ``fleet``: the fleet's table files (plots, navigation, sensors, platforms, reference) in degrees
   and metres: :func:`read_fleet_tables`, :func:`write_fleet_tables`;

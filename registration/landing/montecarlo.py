@@ -137,9 +137,9 @@ def _batches(runs: int, runs_per_batch: int, progress: bool):
     batches = [min(runs_per_batch, runs - s) for s in range(0, runs, runs_per_batch)]
     if not progress:
         return batches
-    from tqdm import tqdm
+    from registration.core.progress import progress_bar
 
-    return tqdm(batches, desc="landing Monte Carlo", unit="batch", leave=False)
+    return progress_bar(progress, "landing Monte Carlo", unit="batch", iterable=batches)
 
 
 def monte_carlo(

@@ -24,10 +24,10 @@ def _run_filter(registrar: OnlineRegistrar, time: np.ndarray, rows: np.ndarray, 
     k = len(time)
     if not progress or k <= _PROGRESS_BLOCK:
         return registrar.update_block(rows, time)
-    from tqdm import tqdm
+    from registration.core.progress import progress_bar
 
     parts = []
-    with tqdm(total=k, desc="registering", unit="row") as bar:
+    with progress_bar(progress, "registering", total=k, unit="row") as bar:
         for s in range(0, k, _PROGRESS_BLOCK):
             parts.append(registrar.update_block(rows[s : s + _PROGRESS_BLOCK], time[s : s + _PROGRESS_BLOCK]))
             bar.update(parts[-1]["n"])

@@ -66,9 +66,9 @@ def _observability_counts(
     prior = np.array(prior_sigma)
     iterator = range(len(J))
     if progress:
-        from tqdm import tqdm
+        from registration.core.progress import progress_bar
 
-        iterator = tqdm(iterator, desc="Monte Carlo observability", unit="run")
+        iterator = progress_bar(progress, "Monte Carlo observability", unit="run", iterable=iterator)
     for r in iterator:
         report = observability_report(J[r], prior, STATE_NAMES, STATE_LABELS, STATE_UNITS)
         for name, status in report.status.items():

@@ -104,17 +104,8 @@ class RunOptions:
             self.log(text)
 
     def progress_bar(self, total: int | None, initial: int, desc: str):
-        """A tqdm bar on standard error counting rows (disabled without ``progress``)."""
-        from tqdm import tqdm
+        """A bar on standard error counting rows, with ``progress`` (the rule of
+        :mod:`registration.core.progress`)."""
+        from registration.core.progress import progress_bar
 
-        return tqdm(
-            total=total,
-            initial=initial,
-            desc=desc,
-            unit="row",
-            unit_scale=True,
-            disable=not self.progress,
-            file=sys.stderr,
-            dynamic_ncols=True,
-            mininterval=0.5,
-        )
+        return progress_bar(self.progress, desc, total, "row", initial=initial, unit_scale=True)

@@ -5,12 +5,16 @@ from __future__ import annotations
 
 import argparse
 import errno
+import fcntl
 import os
 import pathlib
+import pty
 import select
 import signal
+import struct
 import subprocess
 import sys
+import termios
 import time
 from pathlib import Path
 
@@ -228,7 +232,27 @@ def _default_sigint() -> None:
     signal.signal(signal.SIGINT, signal.SIG_DFL)
 
 
+def _read_all(fd: int, timeout_s: float) -> bytes:
+    """What is left to read from a pseudo-terminal's master ``fd`` until its other end closes."""
+    out, deadline = b"", time.monotonic() + timeout_s
+    while time.monotonic() < deadline:
+        if not select.select([fd], [], [], 1.0)[0]:
+            continue
+        try:
+            chunk = os.read(fd, 4096)
+        except OSError:  # EIO: the command's end of the terminal is closed
+            break
+        if not chunk:
+            break
+        out += chunk
+    return out
+
+
 def test_a_real_sigint_exits_130_without_traceback(tmp_path):
+    """Standard error a terminal (a pseudo-terminal), so the progress bar shows: once it has moved
+    the run is under way, and SIGINT then stops it with exit code 130."""
+    master, slave = pty.openpty()
+    fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", 24, 100, 0, 0))  # 100 columns for the bar
     proc = cli(
         "landing",
         "--runs",
@@ -238,26 +262,32 @@ def test_a_real_sigint_exits_130_without_traceback(tmp_path):
         "land",
         cwd=tmp_path,
         stdout=subprocess.DEVNULL,
-        stderr=subprocess.PIPE,
+        stderr=slave,
         preexec_fn=_default_sigint,
     )
+    os.close(slave)
     seen, deadline = b"", time.monotonic() + 120
     try:
         while b"batch/s" not in seen and time.monotonic() < deadline:  # the progress bar has moved
-            ready, _, _ = select.select([proc.stderr], [], [], 1.0)
-            if not ready:
+            if not select.select([master], [], [], 1.0)[0]:
                 continue
-            chunk = os.read(proc.stderr.fileno(), 4096)
-            if not chunk:
+            try:
+                chunk = os.read(master, 4096)
+            except OSError:
                 break  # the command ended on its own
+            if not chunk:
+                break
             seen += chunk
         proc.send_signal(signal.SIGINT)
-        _, rest = proc.communicate(timeout=60)
+        rest = _read_all(master, 60)
+        proc.wait(timeout=60)
     except subprocess.TimeoutExpired:
         proc.kill()
-        proc.communicate()
+        proc.wait()
         pytest.fail("the command did not stop within 60 s of SIGINT")
-    err = (seen + rest).decode()
+    finally:
+        os.close(master)
+    err = (seen + rest).decode(errors="replace").replace("\r\n", "\n")  # a terminal ends lines in CRLF
     assert proc.returncode == EXIT_INTERRUPTED, err
     assert "Traceback" not in err and "KeyboardInterrupt" not in err
     assert err.endswith(

@@ -10,9 +10,9 @@ import io
 import numpy as np
 import pytest
 
+import registration.core.progress as progress
 import registration.fleet.association.associate as association
 import registration.fleet.batch.covariance as covariance
-import registration.fleet.batch.solver as solver
 from registration.fleet import (
     AssociationOptions,
     BatchOptions,
@@ -204,7 +204,7 @@ def test_progress_bars_show_on_a_terminal_only(short, monkeypatch, capsys):
     assert capsys.readouterr().err == ""
     terminal = _Terminal()
     monkeypatch.setattr("sys.stderr", terminal)
-    monkeypatch.setattr(solver, "PROGRESS_DELAY_S", 0.0)
+    monkeypatch.setattr(progress, "PROGRESS_DELAY_S", 0.0)
     shown = solve_batch(problem, progress=True)
     assert "fleet batch solve" in terminal.getvalue() and "iteration" in terminal.getvalue()
     np.testing.assert_array_equal(shown.estimate, quiet.estimate)  # the bar changes nothing
@@ -215,7 +215,7 @@ def test_the_association_shows_its_passes_on_a_terminal(monkeypatch):
     plots = {k: v for k, v in sc.plots.items() if k != "target"}
     terminal = _Terminal()
     monkeypatch.setattr("sys.stderr", terminal)
-    monkeypatch.setattr(solver, "PROGRESS_DELAY_S", 0.0)
+    monkeypatch.setattr(progress, "PROGRESS_DELAY_S", 0.0)
     associate_and_register(
         plots,
         sc.sensors,

@@ -40,9 +40,14 @@ def test_run_state_round_trips_through_a_checkpoint_exactly(tmp_path):
     state.add_registered(data["time"], result["nis"], rows[:, :3] * 1e-3, rows[:, 9:12] * 1e-3)
     state.add_rejections(
         [
-            Rejection(7, "*", "filter_non_finite", "step not finite", "{}"),
+            Rejection("f.csv", 7, "*", "filter_non_finite", "step not finite", "{}"),
             Rejection(
-                12, "a_lat_deg", "out_of_range", "value 95.0 is outside [-90, 90] deg (latitude)", "{}"
+                "f.csv",
+                12,
+                "a_lat_deg",
+                "out_of_range",
+                "value 95.0 is outside [-90, 90] deg (latitude)",
+                "{}",
             ),
         ]
     )

@@ -27,6 +27,7 @@ import time
 
 import numpy as np
 
+from registration.core.progress import progress_bar, progress_status
 from registration.fleet.association.grouping.confirm import confirm_targets
 from registration.fleet.association.grouping.geometry import Assigner
 from registration.fleet.association.grouping.units import make_units
@@ -46,7 +47,6 @@ from registration.fleet.association.report import plot_report, track_notes
 from registration.fleet.association.result import AssociationResult
 from registration.fleet.association.solves import Registrar
 from registration.fleet.batch.solve import solve_batch
-from registration.fleet.batch.solver import progress_bar, progress_status
 from registration.fleet.data.known_targets import References
 from registration.fleet.data.problem import FleetProblem
 

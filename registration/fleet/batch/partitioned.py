@@ -31,6 +31,7 @@ import numpy as np
 
 from registration.core.observability import ObservabilityReport
 from registration.core.parallel import map_chunks
+from registration.core.progress import progress_bar
 from registration.fleet.batch.blocks import window_grid
 from registration.fleet.batch.covariance import state_covariance
 from registration.fleet.batch.partitions import DEFAULT_NAV_MARGIN_S, ArchivePlan, make_plan
@@ -49,7 +50,6 @@ from registration.fleet.batch.solver import (
     TARGETS_FIRST,
     BatchOptions,
     NumericalError,
-    progress_bar,
     time_bias_warnings,
 )
 from registration.fleet.batch.spill import make_folder, remove_folder

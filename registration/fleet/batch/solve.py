@@ -62,7 +62,7 @@ def solve_batch(
     ``x0`` (n,; rad, m): starting states, for example an earlier estimate (default zeros); the
     solution is the same optimum to within the stopping tolerance, reached in fewer iterations.
     ``progress``: a bar over the solver's iterations on standard error, shown only on a terminal
-    and after about a second (:func:`registration.fleet.batch.solver.progress_bar`).
+    and after about a second (:func:`registration.core.progress.progress_bar`).
     """
     fit_ = fit(problem, options or BatchOptions(), x0, progress=progress)
     problem = fit_.problem

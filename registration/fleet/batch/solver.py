@@ -21,6 +21,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from registration.core.progress import progress_bar
 from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.initial import initial_coefficients
 from registration.fleet.batch.normal import (
@@ -44,8 +45,6 @@ __all__ = [
     "fit_windows",
     "levenberg_marquardt",
     "outside_when_seen",
-    "progress_bar",
-    "progress_status",
     "singular_blocks",
     "time_bias_warnings",
 ]
@@ -56,47 +55,12 @@ LAMBDA_MAX = 1e16
 SINGULAR_BLOCK = 1e-10
 #: The first phase (targets alone) stops when a step would gain less than this share of the cost.
 TARGETS_FIRST = 1e-2
-#: A progress bar (``progress=True``) appears only after this many seconds, and only on a terminal.
-PROGRESS_DELAY_S = 1.0
 
 
 class NumericalError(ArithmeticError):
     """A numerical failure the solver's checks did not foresee (for example a window's block that
     cannot be inverted at the solution): an internal error, not bad input. The command line exits
     with its own code for it (``registration.cli.errors.EXIT_NUMERICAL``)."""
-
-
-def progress_bar(enabled: bool, desc: str, total: int | None = None, unit: str = "it"):
-    """A tqdm bar on standard error for the long fleet work, or a silent stand-in: shown only with
-    ``enabled``, when standard error is a terminal, and once the work has run PROGRESS_DELAY_S
-    seconds (so tests, pipes and short runs print nothing). Closes with the block it opens."""
-    import sys
-
-    from tqdm import tqdm
-
-    try:
-        terminal = enabled and sys.stderr.isatty()
-    except (AttributeError, ValueError):
-        terminal = False
-    return tqdm(
-        total=total,
-        desc=desc,
-        unit=unit,
-        file=sys.stderr,
-        disable=not terminal,
-        leave=False,
-        delay=PROGRESS_DELAY_S,
-        dynamic_ncols=True,
-        mininterval=0.5,
-    )
-
-
-def progress_status(bar, text: str) -> None:
-    """Show ``text`` beside a :func:`progress_bar`: at once when the bar has been up for
-    PROGRESS_DELAY_S seconds, else with its first drawing (a refresh would draw it early)."""
-    bar.set_postfix_str(text, refresh=False)
-    if not bar.disable and bar.format_dict["elapsed"] >= PROGRESS_DELAY_S:
-        bar.refresh()
 
 
 @dataclass(frozen=True)

@@ -10,10 +10,11 @@ offset and reason, never raised; a file that is not ASTERIX or a capture raises
 
 Subpackages: ``capture`` (``capture``: file, gzip, format; ``pcap``: packets; ``netstack``: UDP
 datagrams; ``blocks``: data blocks), ``decode`` (``uap``: the UAP of each edition; ``walker``: the
-vectorised record walk; ``scalar``: the one-record reference walk; ``fields``; the items per
-category in ``decode48``, ``decode34``, ``decode21``; ``reader``: one file decoded) and ``tables``
+vectorised record walk; ``scalar``: the one-record reference walk; the items per category in
+``decode48``, ``decode34``, ``decode21``; ``reader``: one file decoded) and ``tables``
 (``plots48``, ``adsb21``, ``verdicts``, ``timeofday``, ``service``, ``assemble``, ``sites``,
-``tables``, ``summary``); beside them ``importer`` (the import) and ``errors``.
+``fleetfiles``, ``summary``); beside them ``octets`` (big-endian fields at many byte offsets, read
+by ``capture`` and ``decode``), ``importer`` (the import) and ``errors``.
 """
 
 from registration.io.asterix.decode.reader import DecodedFile, decode_file

@@ -3,22 +3,17 @@
 :class:`AsterixImportError` is raised, with a one-line message naming the file, only for a file
 that is neither an ASTERIX recording nor a pcap/pcapng capture (nor a gzip of one), or that cannot
 be read at all. Everything else bad in a file is set aside and listed in
-:class:`Rejections`: its file, its byte offset (in the decompressed stream for a gzip file), its
+a rejected ledger (:class:`~registration.io.files.ledger.RejectedLedger` of
+:data:`LEDGER_COLUMNS`): its file, its byte offset (in the decompressed stream for a gzip file), its
 packet number (from 1, captures only), its category, a reason code (:data:`REASONS`) and a reason
 in words. The rest of the file is imported.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from registration.io.files.ledger import LedgerColumns, Location
 
-import numpy as np
-
-if TYPE_CHECKING:
-    import pandas as pd
-
-__all__ = ["AsterixImportError", "REASONS", "Rejections", "REJECTED_COLUMNS"]
+__all__ = ["AsterixImportError", "LEDGER_COLUMNS", "REASONS", "REJECTED_COLUMNS"]
 
 #: Reason code -> what it means (docs/asterix.md lists the same).
 REASONS = {
@@ -47,99 +42,18 @@ REASONS = {
     "low_nacp": "a CAT021 report with NACp below 7 (NUCp below 6 for editions 0.2x): EPU of 0.3 NM or more",
     "no_geometric_height": "a CAT021 report without geometric height (I021/140)",
 }
+#: The rejected table's columns: the byte offset in the (decompressed) file, the packet number
+#: from 1 and the category (both empty where they do not apply).
+LEDGER_COLUMNS = LedgerColumns(
+    (Location("offset", "nullable"), Location("packet", "positive"), Location("category", "positive")),
+    "reason_code",
+    REASONS,
+)
 #: The columns of the rejected table.
-REJECTED_COLUMNS = ("file", "offset", "packet", "category", "reason_code", "reason")
+REJECTED_COLUMNS = LEDGER_COLUMNS.names
 
 
 class AsterixImportError(ValueError):
     """A file that is neither an ASTERIX recording nor a pcap/pcapng capture (nor a gzip of one), or
     that cannot be read. The message is one line naming the file (the command line maps it to exit
     code 2)."""
-
-
-@dataclass
-class Rejections:
-    """Records and bytes set aside, gathered as parallel arrays per call of :meth:`add`."""
-
-    parts: list = field(default_factory=list)
-
-    def add(
-        self,
-        file: str,
-        offset: np.ndarray | int,
-        packet: np.ndarray | int,
-        category: np.ndarray | int,
-        code: str,
-        reason: str | np.ndarray,
-    ) -> None:
-        """Set aside N items of one file with one reason code: ``offset`` (N,) byte offsets,
-        ``packet`` (N,) packet numbers from 1 (0: not a capture), ``category`` (N,) or one value
-        (0: unknown), ``reason`` one text or (N,) texts."""
-        if code not in REASONS:
-            raise KeyError(f"unknown reason code {code!r}")
-        offset = np.atleast_1d(np.asarray(offset, dtype=np.int64))
-        n = offset.size
-        if n == 0:
-            return
-        packet = np.broadcast_to(np.asarray(packet, dtype=np.int64), (n,))
-        category = np.broadcast_to(np.asarray(category, dtype=np.int64), (n,))
-        reason = np.broadcast_to(np.asarray(reason, dtype=object), (n,))
-        self.parts.append((file, offset, packet, category, code, reason))
-
-    def count(self) -> int:
-        return int(sum(p[1].size for p in self.parts))
-
-    def by_code(self) -> dict:
-        """Reason code -> number of items set aside, codes in the order of :data:`REASONS`."""
-        counts = {}
-        for part in self.parts:
-            counts[part[4]] = counts.get(part[4], 0) + int(part[1].size)
-        return {code: counts[code] for code in REASONS if code in counts}
-
-    def frame(self) -> "pd.DataFrame":
-        """A DataFrame with :data:`REJECTED_COLUMNS`, in file order then byte offset: ``packet`` and
-        ``category`` empty where they do not apply."""
-        import pandas as pd
-
-        if not self.parts:
-            return pd.DataFrame(
-                {
-                    c: pd.Series(dtype="Int64" if c in ("offset", "packet", "category") else object)
-                    for c in REJECTED_COLUMNS
-                }
-            )
-        cols = [
-            np.concatenate(
-                [
-                    np.broadcast_to(np.asarray(p[k], dtype=object) if k in (0, 4) else p[k], (p[1].size,))
-                    for p in self.parts
-                ]
-            )
-            for k in range(6)
-        ]
-        order = np.lexsort((cols[1].astype(np.int64), _file_order(cols[0], self.parts)))
-        frame = pd.DataFrame(
-            {
-                "file": cols[0][order].astype(str),
-                "offset": pd.array(cols[1][order].astype(np.int64), dtype="Int64"),
-                "packet": pd.array(
-                    np.where(cols[2][order] > 0, cols[2][order], 0).astype(np.int64), dtype="Int64"
-                ),
-                "category": pd.array(cols[3][order].astype(np.int64), dtype="Int64"),
-                "reason_code": cols[4][order].astype(str),
-                "reason": cols[5][order].astype(str),
-            }
-        )
-        frame.loc[frame["packet"] == 0, "packet"] = pd.NA
-        frame.loc[frame["category"] == 0, "category"] = pd.NA
-        return frame
-
-
-def _file_order(files: np.ndarray, parts: list) -> np.ndarray:
-    """Each row's file ranked in the order the files were first added."""
-    import pandas as pd
-
-    rank = {}
-    for p in parts:
-        rank.setdefault(p[0], len(rank))
-    return pd.Series(files).map(rank).to_numpy(dtype=np.int64)

@@ -5,16 +5,17 @@ from __future__ import annotations
 
 import datetime as dt
 from collections import Counter
-from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Iterable, Mapping, Sequence
 
 import numpy as np
 
+from registration.core.progress import progress_bar
 from registration.io.asterix.decode.reader import decode_file
 from registration.io.asterix.decode.uap import check_editions
-from registration.io.asterix.errors import Rejections
+from registration.io.asterix.errors import LEDGER_COLUMNS, REASONS
 from registration.io.asterix.tables.assemble import FileRows, SiteLookup, assemble_file
+from registration.io.asterix.tables.fleetfiles import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
 from registration.io.asterix.tables.sites import check_sites, read_sites
 from registration.io.asterix.tables.summary import (
     file_summary,
@@ -22,8 +23,9 @@ from registration.io.asterix.tables.summary import (
     sources_not_in_sites,
     time_summary,
 )
-from registration.io.asterix.tables.tables import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
 from registration.io.asterix.tables.timeofday import Unwrapper, capture_day
+from registration.io.files.ledger import RejectedLedger
+from registration.io.imports import ImportResult
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -34,44 +36,25 @@ __all__ = ["AsterixImport", "import_asterix", "REFERENCE_TARGETS"]
 REFERENCE_TARGETS = ("plotted", "all")
 
 
-@dataclass
-class AsterixImport:
-    """What :func:`import_asterix` gives: the fleet tables as DataFrames in their file form
-    (docs/fleet.md: ``plots``, ``navigation``, ``sensors``, ``platforms``, ``reference``), the
-    records set aside (``rejected``: ``file``, ``offset``, ``packet``, ``category``,
-    ``reason_code``, ``reason``) and the ``summary`` (a JSON-able dict)."""
-
-    plots: pd.DataFrame
-    navigation: pd.DataFrame
-    sensors: pd.DataFrame
-    platforms: pd.DataFrame
-    reference: pd.DataFrame
-    rejected: pd.DataFrame
-    summary: dict
-
-    @property
-    def tables(self) -> dict:
-        """File name stem -> DataFrame of the five fleet tables."""
-        return {
-            "plots": self.plots,
-            "navigation": self.navigation,
-            "sensors": self.sensors,
-            "platforms": self.platforms,
-            "reference": self.reference,
-        }
+class AsterixImport(ImportResult):
+    """What :func:`import_asterix` gives (:class:`~registration.io.imports.ImportResult`): the fleet
+    tables as DataFrames in their file form (docs/fleet.md: ``plots``, ``navigation``,
+    ``sensors``, ``platforms``, ``reference``; no ``targets``), the records set aside
+    (``rejected``: ``file``, ``offset``, ``packet``, ``category``, ``reason_code``, ``reason``) and
+    the ``summary`` (a JSON-able dict); :meth:`write` writes them into a folder."""
 
 
 class _Progress:
-    """A tqdm bar over the files' sizes on disk, advanced by the octets of the blocks walked, scaled
-    by on-disk over decompressed size (gzip files), or nothing."""
+    """A bar (:func:`registration.core.progress.progress_bar`) over the files' sizes on disk,
+    advanced by the octets of the blocks walked, scaled by on-disk over decompressed size (gzip
+    files); ``bar`` None when it does not show."""
 
     def __init__(self, paths: list, enabled: bool) -> None:
         self.bar, self.on_disk, self.scale, self.done = None, 0, 1.0, 0
         if enabled:
-            from tqdm.auto import tqdm
-
             total = sum(Path(p).stat().st_size for p in paths if Path(p).is_file())
-            self.bar = tqdm(total=total, unit="B", unit_scale=True, desc="ASTERIX")
+            bar = progress_bar(enabled, "ASTERIX", total=total, unit="B", unit_scale=True)
+            self.bar = None if bar.disable else bar
 
     def start(self, path: str | Path) -> None:
         self.on_disk = Path(path).stat().st_size if Path(path).is_file() else 0
@@ -148,7 +131,8 @@ def import_asterix(
     ``sites``: the SITES table (DataFrame, or a path read with
     :func:`~registration.io.asterix.tables.sites.read_sites`). ``date``: the UTC day (datetime.date or
     'YYYY-MM-DD') that ``time_s`` counts from; None: the first capture's packet date, else the
-    recording's first day (the summary says which). ``progress``: a tqdm bar. ``editions``:
+    recording's first day (the summary says which). ``progress``: a bar over the bytes read
+    (:func:`registration.core.progress.progress_bar`). ``editions``:
     category -> edition (default the latest of each, e.g. ``{21: "0.26"}`` for an old ADS-B
     feed). ``ports``: UDP destination ports to read from captures (None: all).
     ``reference_targets``: 'plotted' (default) keeps the ADS-B reports of targets that some plot
@@ -166,7 +150,7 @@ def import_asterix(
     sites = read_sites(sites) if isinstance(sites, (str, Path)) else check_sites(sites, "sites")
     editions = check_editions(editions)
     date = _as_date(date)
-    rejections, bar = Rejections(), _Progress(paths, progress)
+    rejections, bar = RejectedLedger(LEDGER_COLUMNS), _Progress(paths, progress)
     decoded = []
     try:
         for path in paths:
@@ -186,7 +170,7 @@ def _build(
     sites: pd.DataFrame,
     date: dt.date | None,
     editions: dict,
-    rejections: Rejections,
+    rejections: RejectedLedger,
     which: str,
 ) -> AsterixImport:
     first_capture = next(
@@ -208,7 +192,7 @@ def _build(
     reference, ref_info = _reference(
         rows, set(plots["target"].astype(str)) - {""} if plots["target"].size else set(), which
     )
-    decoded_counts = {}
+    decoded_counts: dict[int, int] = {}
     for r in rows:
         for cat, counts in r.decoded.items():
             decoded_counts[cat] = decoded_counts.get(cat, 0) + counts
@@ -230,16 +214,16 @@ def _build(
         "sensors": sensor_summary(sites, plots, service, decoded_counts),
         "sac_sic_not_in_sites": sources_not_in_sites(unknown),
         "reference": ref_info,
-        "rejected": {"total": rejections.count(), "by_reason": rejections.by_code()},
+        "rejected": {"total": rejections.count(), "by_reason": rejections.by_code(tuple(REASONS))},
     }
     plot_frame = _frame({c: plots[c] for c in PLOT_COLUMNS})
     plot_frame["target"] = plot_frame["target"].astype(str)
     return AsterixImport(
-        plot_frame,
-        tables["navigation"],
-        tables["sensors"],
-        tables["platforms"],
-        _frame(reference),
-        rejections.frame(),
-        summary,
+        plots=plot_frame,
+        navigation=tables["navigation"],
+        sensors=tables["sensors"],
+        platforms=tables["platforms"],
+        reference=_frame(reference),
+        rejected=rejections.frame(),
+        summary=summary,
     )

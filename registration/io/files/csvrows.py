@@ -58,13 +58,14 @@ class RowShape:
     def reason(self) -> str:
         if self.fields < self.header:
             return (
-                f"line {self.line} has {self.fields} fields, the header {self.header}: the row is cut short (a "
-                f"truncated or half-written line?); every row needs all {self.header} fields, an empty field "
-                "where a value is not given"
+                f"line {self.line} has {self.fields} fields, the header {self.header}: "
+                "the row is cut short (a truncated or half-written line?); "
+                f"every row needs all {self.header} fields, an empty field where a value is not given"
             )
         return (
-            f"line {self.line} has {self.fields} fields, the header {self.header}: fields that no column is named "
-            "for (a missing line break, or a separator inside an unquoted value?)"
+            f"line {self.line} has {self.fields} fields, the header {self.header}: "
+            "fields that no column is named for (a missing line break, or a separator inside an unquoted "
+            "value?)"
         )
 
 

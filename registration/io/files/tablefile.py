@@ -13,7 +13,17 @@ table files (:mod:`registration.io.fleet`) and the format importers.
 
 from __future__ import annotations
 
-__all__ = ["FileFormatError", "NoValidRowsError", "REASON_CODES", "file_format", "write_frame"]
+from pathlib import Path
+from typing import Mapping
+
+__all__ = [
+    "FileFormatError",
+    "NoValidRowsError",
+    "REASON_CODES",
+    "file_format",
+    "write_frame",
+    "write_tables",
+]
 
 #: Reason codes of a rejected row, common to all readers (readers may add their own beside them).
 REASON_CODES = (
@@ -62,3 +72,23 @@ def write_frame(frame, path, fmt: str | None = None) -> None:
         import pyarrow.parquet as pq
 
         pq.write_table(table, str(path))
+
+
+def write_tables(folder, frames: Mapping, fmt: str = "csv") -> dict[str, Path]:
+    """The folder writer: each DataFrame of ``frames`` (name -> frame) written as ``folder/<name>.<fmt>``
+    with :func:`write_frame` (CSV floats that read back exactly, or Parquet), in the order given;
+    ``folder`` must exist. Returns name -> path. An operating-system error names the file it was
+    writing (its ``filename``)."""
+    if fmt not in ("csv", "parquet"):
+        raise ValueError(f"fmt: expected 'csv' or 'parquet', got {fmt!r}")
+    written = {}
+    for name, frame in frames.items():
+        path = Path(folder) / f"{name}.{fmt}"
+        try:
+            write_frame(frame, path, fmt)
+        except OSError as exc:
+            if exc.filename is None:
+                exc.filename = str(path)
+            raise
+        written[name] = path
+    return written

@@ -1,9 +1,10 @@
-"""Bad rows of the fleet's input files: the reason codes, the record of a row set aside, and the
-collection of one file's bad rows in either mode of ``on_bad_row``.
+"""Bad rows of the fleet's input files: the reason codes, the fleet's rejected-ledger columns, and
+the collection of one file's bad rows in either mode of ``on_bad_row``.
 
 ``"stop"`` raises a ValueError for the first problem (``FILE: row R, column 'C': reason``);
-``"skip"`` records the first problem of each row as a :class:`RejectedRow` and the caller drops the
-row. Rows are numbered from 0, the first data row (a CSV header line is not a row).
+``"skip"`` records the first problem of each row as a
+:class:`~registration.io.files.ledger.RejectedRow` and the caller drops the row. Rows are
+numbered from 0, the first data row (a CSV header line is not a row).
 
 Reason codes (:data:`FLEET_REASON_CODES`): those of the recorded files
 (:data:`registration.recorded.reading.rowcheck.REASON_CODES`: ``non_numeric``, ``non_finite`` for an
@@ -23,11 +24,11 @@ empty, NaN or infinite number, ``out_of_range``, ``non_positive_range``, ...) an
 from __future__ import annotations
 
 from collections import Counter
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Callable
 
 import numpy as np
 
+from registration.io.files.ledger import LedgerColumns, Location, RejectedLedger, RejectedRow
 from registration.io.files.tablefile import REASON_CODES, NoValidRowsError
 
 if TYPE_CHECKING:
@@ -36,6 +37,7 @@ if TYPE_CHECKING:
 __all__ = [
     "BAD_ROW_MODES",
     "FLEET_REASON_CODES",
+    "LEDGER_COLUMNS",
     "REJECTED_COLUMNS",
     "RejectedRow",
     "BadRows",
@@ -53,10 +55,12 @@ FLEET_REASON_CODES = REASON_CODES + (
     "unmeasured_channel",
     "outside_navigation",
 )
-#: Columns of :func:`rejected_frame` (and of the fleet's rejected.csv; named as in the rejected.csv of
-#: ``registration register``, whose rows also carry the raw values).
-REJECTED_COLUMNS = ("file", "row", "column", "reason_code", "reason")
-_ATTRIBUTE = {"reason_code": "code"}
+#: The fleet's rejected ledger: ``file``, ``row`` (from 0), ``column``, ``reason_code``, ``reason``
+#: (named as in the rejected.csv of ``registration register``, whose rows also carry the raw values),
+#: in the order the rows were set aside.
+LEDGER_COLUMNS = LedgerColumns((Location("row", "int"), Location("column", "text")), sort=False)
+#: Columns of :func:`rejected_frame` (and of the fleet's rejected.csv).
+REJECTED_COLUMNS = LEDGER_COLUMNS.names
 
 
 def check_mode(on_bad_row: str) -> str:
@@ -66,35 +70,21 @@ def check_mode(on_bad_row: str) -> str:
     return on_bad_row
 
 
-@dataclass(frozen=True)
-class RejectedRow:
-    """One input row set aside: its ``file`` (path as given), ``row`` (from 0, the first data row),
-    the ``column`` of its first problem, the reason ``code`` and the ``reason`` in words."""
-
-    file: str
-    row: int
-    column: str
-    code: str
-    reason: str
-
-    def text(self) -> str:
-        return f"{self.file}: row {self.row}, column {self.column!r}: {self.reason} [{self.code}]"
-
-
 def rejected_frame(rows) -> "pandas.DataFrame":
-    """The rejected rows as a DataFrame with columns :data:`REJECTED_COLUMNS` (empty frame with
-    those columns when there are none)."""
-    import pandas as pd
-
+    """The rejected rows, in the order given, as the frame of a rejected ledger with columns
+    :data:`REJECTED_COLUMNS` (an empty frame with those columns when there are none)."""
     rows = list(rows)
-    return pd.DataFrame(
-        {
-            c: pd.Series(
-                [getattr(r, _ATTRIBUTE.get(c, c)) for r in rows], dtype="int64" if c == "row" else object
-            )
-            for c in REJECTED_COLUMNS
-        }
+    files = list(dict.fromkeys(r.file for r in rows))
+    rank = {f: i for i, f in enumerate(files)}
+    ledger = RejectedLedger(LEDGER_COLUMNS, files)
+    ledger.add(
+        np.array([rank[r.file] for r in rows], dtype=np.int64),
+        np.array([r.code for r in rows], dtype=object),
+        np.array([r.reason for r in rows], dtype=object),
+        row=np.array([r.row for r in rows], dtype=np.int64),
+        column=np.array([r.column for r in rows], dtype=object),
     )
+    return ledger.frame()
 
 
 class NoValidPlotsError(NoValidRowsError):
@@ -139,17 +129,21 @@ class BadRows:
         hit = np.flatnonzero(bad)
         if hit.size == 0:
             return
-        at = lambda v, i: v if isinstance(v, str) else v(i)
+
+        def at(v: str | Callable[[int], str], i: int) -> str:
+            return v if isinstance(v, str) else v(i)
+
         row = (lambda i: int(i)) if rows is None else (lambda i: int(rows[i]))
         if not self.skip:
-            i = int(hit[0])
+            first = int(hit[0])
             raise ValueError(
-                f"{self.file}: row {self._file_row(row(i))}, column {at(column, i)!r}: {reason(i)}"
+                f"{self.file}: row {self._file_row(row(first))}, column {at(column, first)!r}: "
+                f"{reason(first)}"
             )
-        for i in hit:
+        for i in hit.tolist():
             r = row(i)
             if r not in self.first:
-                self.first[r] = (at(column, int(i)), at(code, int(i)), reason(int(i)))
+                self.first[r] = (at(column, i), at(code, i), reason(i))
 
     def _file_row(self, r: int) -> int:
         return r if self.file_rows is None else int(self.file_rows[r])

@@ -42,25 +42,19 @@ def write_fleet_tables(
 ) -> list[Path]:
     """Write the tables (SI units, radians; as :func:`build_problem` takes them) as files in
     ``folder``: ``plots``, ``navigation``, ``sensors``, ``platforms`` (if given) and ``reference``
-    (if given; ECEF positions are written as lat/lon/alt) and ``targets`` (if given) with suffix ``.csv`` or ``.parquet``
-    (``fmt``). CSV floats are written as their shortest round-trip text. Returns the paths."""
-    from registration.io.files.tablefile import write_frame
+    (if given; ECEF positions are written as lat/lon/alt) and ``targets`` (if given) with suffix
+    ``.csv`` or ``.parquet`` (``fmt``), through the one folder writer
+    (:func:`~registration.io.files.tablefile.write_tables`: CSV floats as their shortest round-trip
+    text). Returns the paths."""
+    from registration.io.files.tablefile import write_tables
 
-    if fmt not in ("csv", "parquet"):
-        raise ValueError(f"fmt: expected 'csv' or 'parquet', got {fmt!r}")
-    folder = Path(folder)
-    written = []
-    for name, table in (
-        ("plots", plots),
-        ("navigation", navigation),
-        ("sensors", sensors),
-        ("platforms", platforms),
-        ("reference", references),
-        ("targets", targets),
-    ):
-        if table is None:
-            continue
-        path = folder / f"{name}.{fmt}"
-        write_frame(_file_frame(name, table), path, fmt)
-        written.append(path)
-    return written
+    tables = {
+        "plots": plots,
+        "navigation": navigation,
+        "sensors": sensors,
+        "platforms": platforms,
+        "reference": references,
+        "targets": targets,
+    }
+    frames = {name: _file_frame(name, table) for name, table in tables.items() if table is not None}
+    return list(write_tables(Path(folder), frames, fmt).values())

@@ -12,10 +12,11 @@ with its line number. The reception time of a message is that of its first part 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
-from registration.io.nmea.errors import Rejections
+from registration.io.files.ledger import RejectedLedger
 from registration.io.nmea.fields import columns, numbers
 from registration.io.nmea.lines import SentenceLog
 
@@ -30,13 +31,13 @@ class AisMessage:
     parts: list[int]
     own: bool
     received: float
-    data: object
+    data: Any  # pyais' decoded message (a class per message type)
 
 
 class _Assembler:
     """Collects fragments per (address, sequential id, count); emits complete messages in order."""
 
-    def __init__(self, log: SentenceLog, rejections: Rejections) -> None:
+    def __init__(self, log: SentenceLog, rejections: RejectedLedger) -> None:
         self.log, self.rejections = log, rejections
         self.open: dict[tuple, list[int]] = {}
         self.complete: list[list[int]] = []
@@ -68,14 +69,14 @@ class _Assembler:
             lines = self.log.line[i]
             self.rejections.add(
                 self.log.file[i],
-                lines,
                 "ais_fragment",
                 "AIS fragment without its other parts (the message is incomplete)",
+                line=lines,
             )
         return self.complete
 
 
-def _decode(log: SentenceLog, parts: list[int]) -> tuple[object, str | None]:
+def _decode(log: SentenceLog, parts: list[int]) -> tuple[Any, str | None]:
     """pyais' decoded message of the sentences ``parts``, or the error text."""
     import pyais
 
@@ -85,7 +86,7 @@ def _decode(log: SentenceLog, parts: list[int]) -> tuple[object, str | None]:
         return None, f"{type(exc).__name__}: {exc}"[:200]
 
 
-def read_ais(log: SentenceLog, rejections: Rejections) -> list[AisMessage]:
+def read_ais(log: SentenceLog, rejections: RejectedLedger) -> list[AisMessage]:
     """The AIS messages of the log, assembled and decoded, in log order of their first part;
     fragments and payloads pyais cannot decode are set aside."""
     c = columns(log, log.where("VDM", "VDO"), 6, 7, rejections, "AIS")
@@ -125,5 +126,5 @@ def read_ais(log: SentenceLog, rejections: Rejections) -> list[AisMessage]:
         )
     if failed:
         i = np.array(failed)
-        rejections.add(log.file[i], log.line[i], "ais_decode", reasons)
+        rejections.add(log.file[i], "ais_decode", reasons, line=log.line[i])
     return out

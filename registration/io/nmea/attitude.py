@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.io.nmea.errors import Rejections
+from registration.io.files.ledger import RejectedLedger
 from registration.io.nmea.fields import columns, numbers, text, time_of_day
 from registration.io.nmea.lines import SentenceLog
 
@@ -63,7 +63,7 @@ def pashr_subtypes(log: SentenceLog) -> tuple[np.ndarray, np.ndarray]:
     return index[att], index[~att]
 
 
-def read_pashr(log: SentenceLog, rejections: Rejections, angles: str = "tait-bryan") -> Attitude:
+def read_pashr(log: SentenceLog, rejections: RejectedLedger, angles: str = "tait-bryan") -> Attitude:
     """The valid ``$PASHR`` attitude samples; ``angles``: ``"tait-bryan"`` (default) or ``"tss"``
     (roll converted by ``roll = asin(sin(roll_tss) / cos(pitch))``)."""
     if angles not in PASHR_ANGLES:
@@ -100,7 +100,7 @@ def read_pashr(log: SentenceLog, rejections: Rejections, angles: str = "tait-bry
     return Attitude("PASHR", c.index, c.talker, tod[keep], heading, pitch, roll)
 
 
-def read_headings(log: SentenceLog, kind: str, rejections: Rejections) -> Attitude:
+def read_headings(log: SentenceLog, kind: str, rejections: RejectedLedger) -> Attitude:
     """The valid true headings of HDT (``heading,T``) or THS (``heading,mode``; mode V: invalid).
     Neither has a time field (``tod`` NaN) nor pitch and roll (NaN)."""
     c = columns(log, log.where(kind), 2, 3, rejections, kind)

@@ -1,5 +1,7 @@
 """What the NMEA reader refuses: :class:`NmeaImportError` for a log that cannot give a navigation
-table at all, and :class:`Rejections`, the lines set aside with a reason (bad input never raises).
+table at all, and :data:`LEDGER_COLUMNS`, the columns of the rejected ledger
+(:class:`~registration.io.files.ledger.RejectedLedger`) of the lines set aside with a reason (bad
+input never raises).
 
 Every line set aside is listed once, with its file, its line number (from 1, as an editor shows
 it), a reason code and a reason in words. The codes are listed in :data:`REASONS`.
@@ -7,15 +9,9 @@ it), a reason code and a reason in words. The codes are listed in :data:`REASONS
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from registration.io.files.ledger import LedgerColumns, Location
 
-import numpy as np
-
-if TYPE_CHECKING:
-    import pandas as pd
-
-__all__ = ["NmeaImportError", "REASONS", "Rejections"]
+__all__ = ["LEDGER_COLUMNS", "NmeaImportError", "REASONS"]
 
 #: Reason code -> what it means (docs/nmea.md lists the same).
 REASONS = {
@@ -52,65 +48,6 @@ class NmeaImportError(ValueError):
     line naming what is missing (the command line maps it to exit code 2)."""
 
 
-@dataclass
-class Rejections:
-    """Lines set aside: parallel lists of file index, line number (from 1), code, reason."""
-
-    files: list[str]
-    file: list[np.ndarray] = field(default_factory=list)
-    line: list[np.ndarray] = field(default_factory=list)
-    code: list[np.ndarray] = field(default_factory=list)
-    reason: list[np.ndarray] = field(default_factory=list)
-
-    def add(self, file, line, code: str, reason) -> None:
-        """Set aside lines: ``file`` (K,) file indices, ``line`` (K,) line numbers, one ``code`` of
-        :data:`REASONS`, ``reason`` a text or (K,) texts."""
-        if code not in REASONS:
-            raise KeyError(f"unknown rejection code {code!r}")
-        file = np.atleast_1d(np.asarray(file, dtype=np.int64))
-        if file.size == 0:
-            return
-        line = np.atleast_1d(np.asarray(line, dtype=np.int64))
-        texts = np.broadcast_to(np.asarray(reason, dtype=object), file.shape)
-        self.file.append(file)
-        self.line.append(line)
-        self.code.append(np.full(file.shape, code, dtype=object))
-        self.reason.append(np.array(texts, dtype=object))
-
-    def count(self) -> int:
-        return int(sum(a.size for a in self.file))
-
-    def counts(self) -> dict[str, int]:
-        """Lines set aside per reason code, most frequent first."""
-        if not self.code:
-            return {}
-        codes, n = np.unique(np.concatenate(self.code).astype(str), return_counts=True)
-        order = np.argsort(-n, kind="stable")
-        return {str(codes[k]): int(n[k]) for k in order}
-
-    def frame(self) -> pd.DataFrame:
-        """The lines set aside as a DataFrame with columns ``file``, ``line``, ``code``, ``reason``,
-        in file order then line order."""
-        import pandas as pd
-
-        if not self.file:
-            return pd.DataFrame(
-                {
-                    "file": pd.Series([], dtype=object),
-                    "line": pd.Series([], dtype=np.int64),
-                    "code": pd.Series([], dtype=object),
-                    "reason": pd.Series([], dtype=object),
-                }
-            )
-        f = np.concatenate(self.file)
-        ln = np.concatenate(self.line)
-        order = np.lexsort((ln, f))
-        names = np.array(self.files, dtype=object)
-        return pd.DataFrame(
-            {
-                "file": names[f[order]],
-                "line": ln[order],
-                "code": np.concatenate(self.code)[order],
-                "reason": np.concatenate(self.reason)[order],
-            }
-        )
+#: The rejected table's columns: ``file``, ``line`` (from 1), ``code``, ``reason``, ordered by file
+#: (in the order given) then line; files are named by their index in the list of paths.
+LEDGER_COLUMNS = LedgerColumns((Location("line", "int"),), "code", REASONS)

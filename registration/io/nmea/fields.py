@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.io.nmea.errors import Rejections
+from registration.io.files.ledger import RejectedLedger
 from registration.io.nmea.lines import SentenceLog
 
 __all__ = ["Columns", "columns", "numbers", "time_of_day", "latitude", "longitude", "text"]
@@ -41,20 +41,20 @@ class Columns:
             [tuple(np.asarray(c, dtype=object)[keep]) for c in self.cols],
         )
 
-    def reject(self, bad: np.ndarray, rejections: Rejections, code: str, reason) -> "Columns":
+    def reject(self, bad: np.ndarray, rejections: RejectedLedger, code: str, reason) -> "Columns":
         """Set aside the sentences where ``bad`` (K,) is true (``reason``: a text or (K,) texts) and
         return the rest."""
         bad = np.asarray(bad, bool)
         if bad.any():
             i = self.index[bad]
             r = reason if isinstance(reason, str) else np.asarray(reason, dtype=object)[bad]
-            rejections.add(self.log.file[i], self.log.line[i], code, r)
+            rejections.add(self.log.file[i], code, r, line=self.log.line[i])
             return self.take(~bad)
         return self
 
 
 def columns(
-    log: SentenceLog, index: np.ndarray, n_required: int, width: int, rejections: Rejections, name: str
+    log: SentenceLog, index: np.ndarray, n_required: int, width: int, rejections: RejectedLedger, name: str
 ) -> Columns:
     """The sentences ``index`` split into ``width`` columns (the address and ``width - 1`` fields);
     those with fewer than ``n_required`` fields (address not counted) are set aside as
@@ -67,7 +67,7 @@ def columns(
         reasons = [
             f"{name} has {k} fields, at least {n_required} expected (a truncated sentence?)" for k in n[short]
         ]
-        rejections.add(log.file[i], log.line[i], "too_few_fields", reasons)
+        rejections.add(log.file[i], "too_few_fields", reasons, line=log.line[i])
         rows = [r for r, s in zip(rows, short) if not s]
         index = index[~short]
     pad = [""] * width

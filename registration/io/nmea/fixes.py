@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.io.nmea.errors import Rejections
+from registration.io.files.ledger import RejectedLedger
 from registration.io.nmea.fields import Columns, columns, latitude, longitude, numbers, text, time_of_day
 from registration.io.nmea.lines import SentenceLog
 
@@ -63,7 +63,7 @@ class Dates:
     day: np.ndarray
 
 
-def _timed(c: Columns, col: int, rejections: Rejections, name: str) -> tuple[Columns, np.ndarray]:
+def _timed(c: Columns, col: int, rejections: RejectedLedger, name: str) -> tuple[Columns, np.ndarray]:
     tod = time_of_day(c.cols[col])
     bad = np.isnan(tod)
     reasons = [f"{name} UTC time {v!r} is not hhmmss[.ss]" for v in c.cols[col]]
@@ -71,7 +71,7 @@ def _timed(c: Columns, col: int, rejections: Rejections, name: str) -> tuple[Col
     return c, tod[~bad]
 
 
-def _position(c: Columns, tod: np.ndarray, lat_col: int, rejections: Rejections, name: str):
+def _position(c: Columns, tod: np.ndarray, lat_col: int, rejections: RejectedLedger, name: str):
     lat = latitude(c.cols[lat_col], c.cols[lat_col + 1])
     lon = longitude(c.cols[lat_col + 2], c.cols[lat_col + 3])
     bad = np.isnan(lat) | np.isnan(lon)
@@ -79,7 +79,7 @@ def _position(c: Columns, tod: np.ndarray, lat_col: int, rejections: Rejections,
     return c, tod[~bad], lat[~bad], lon[~bad]
 
 
-def _gga_like(log: SentenceLog, kind: str, rejections: Rejections) -> Fixes:
+def _gga_like(log: SentenceLog, kind: str, rejections: RejectedLedger) -> Fixes:
     """GGA (fields: time, lat, N/S, lon, E/W, quality, sats, hdop, alt, M, geoid sep, M, ...) or GNS
     (time, lat, N/S, lon, E/W, mode, sats, hdop, alt, geoid sep, ...)."""
     gga = kind == "GGA"
@@ -122,7 +122,7 @@ def _days(day, month, year) -> np.ndarray:
     return out
 
 
-def _rmc(log: SentenceLog, rejections: Rejections) -> tuple[Fixes, Dates]:
+def _rmc(log: SentenceLog, rejections: RejectedLedger) -> tuple[Fixes, Dates]:
     """RMC (time, status, lat, N/S, lon, E/W, speed, course, ddmmyy, ...): fixes and dates."""
     c = columns(log, log.where("RMC"), 9, 10, rejections, "RMC")
     c, tod = _timed(c, 1, rejections, "RMC")
@@ -149,7 +149,7 @@ def _rmc(log: SentenceLog, rejections: Rejections) -> tuple[Fixes, Dates]:
     return fixes, Dates(c.index, tod[keep], day[keep])
 
 
-def _zda(log: SentenceLog, rejections: Rejections) -> Dates:
+def _zda(log: SentenceLog, rejections: RejectedLedger) -> Dates:
     """ZDA (time, day, month, year, zone hours, zone minutes): dates."""
     c = columns(log, log.where("ZDA"), 4, 5, rejections, "ZDA")
     c, tod = _timed(c, 1, rejections, "ZDA")
@@ -159,7 +159,7 @@ def _zda(log: SentenceLog, rejections: Rejections) -> Dates:
     return Dates(c.index, tod[~bad], day[~bad])
 
 
-def read_fixes(log: SentenceLog, rejections: Rejections) -> tuple[dict[str, Fixes], Dates]:
+def read_fixes(log: SentenceLog, rejections: RejectedLedger) -> tuple[dict[str, Fixes], Dates]:
     """The valid fixes per type (``GGA``, ``GNS``, ``RMC``) and the dates of ZDA and valid RMC
     sentences (in log order)."""
     rmc, rmc_dates = _rmc(log, rejections)

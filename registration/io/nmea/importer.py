@@ -8,18 +8,18 @@ The tables are DataFrames in the fleet *file* columns (degrees, metres, seconds;
 from __future__ import annotations
 
 import datetime as dt
-import json
 import math
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Mapping, Sequence
 
 import numpy as np
 
+from registration.io.files.ledger import RejectedLedger
+from registration.io.imports import ImportResult
 from registration.io.nmea.ais import read_ais
 from registration.io.nmea.attitude import PASHR_ANGLES, pashr_subtypes, read_headings, read_pashr
 from registration.io.nmea.clock import fit_clock
-from registration.io.nmea.errors import Rejections
+from registration.io.nmea.errors import LEDGER_COLUMNS
 from registration.io.nmea.fixes import read_fixes
 from registration.io.nmea.lines import SentenceLog, read_log
 from registration.io.nmea.navigation import build_navigation
@@ -45,9 +45,9 @@ USED_TYPES = ("GGA", "GNS", "RMC", "ZDA", "HDT", "THS", "PASHR", "TTM", "VDM", "
 PLATFORM_PRIOR_COLUMNS = ("prior_heading_deg", "prior_pitch_deg", "prior_roll_deg")
 
 
-@dataclass
-class NmeaImport:
-    """The fleet tables of one platform from an NMEA log, as DataFrames in the fleet file columns:
+class NmeaImport(ImportResult):
+    """What :func:`import_nmea` gives (:class:`~registration.io.imports.ImportResult`): the fleet
+    tables of one platform from an NMEA log, as DataFrames in the fleet file columns:
 
     * ``navigation``: ``time_s``, ``platform``, ``lat_deg``, ``lon_deg``, ``alt_m`` (above the
       ellipsoid), ``heading_deg``, ``pitch_deg``, ``roll_deg`` (one row per attitude sample);
@@ -61,52 +61,9 @@ class NmeaImport:
       (mean sea level above the ellipsoid), ``sigma_surface_m``;
     * ``rejected``: the lines set aside: ``file``, ``line`` (from 1), ``code``, ``reason``;
     * ``summary``: a JSON-able dict (docs/nmea.md, "The summary").
+
+    :meth:`write` writes them into a folder.
     """
-
-    navigation: pd.DataFrame
-    plots: pd.DataFrame
-    sensors: pd.DataFrame
-    platforms: pd.DataFrame
-    reference: pd.DataFrame
-    rejected: pd.DataFrame
-    summary: dict = field(default_factory=dict)
-    targets: pd.DataFrame | None = None
-
-    @property
-    def tables(self) -> dict[str, pd.DataFrame]:
-        """The fleet tables by file name (``plots``, ``navigation``, ``sensors``, ``platforms``,
-        ``reference``, ``targets``)."""
-        out = {
-            "plots": self.plots,
-            "navigation": self.navigation,
-            "sensors": self.sensors,
-            "platforms": self.platforms,
-            "reference": self.reference,
-        }
-        if self.targets is not None:
-            out["targets"] = self.targets
-        return out
-
-    def write(self, folder, fmt: str = "csv") -> dict[str, Path]:
-        """Write the tables with rows as ``<name>.csv`` (or ``.parquet``), ``rejected.csv`` and
-        ``import_summary.json`` into ``folder`` (created); a table without rows is not written (a fleet
-        file needs one). Returns name -> path."""
-        if fmt not in ("csv", "parquet"):
-            raise ValueError(f"fmt: expected 'csv' or 'parquet', got {fmt!r}")
-        folder = Path(folder)
-        folder.mkdir(parents=True, exist_ok=True)
-        out = {}
-        for name, frame in self.tables.items():
-            if len(frame):
-                out[name] = folder / f"{name}.{fmt}"
-                frame.to_csv(out[name], index=False) if fmt == "csv" else frame.to_parquet(
-                    out[name], index=False
-                )
-        out["rejected"] = folder / "rejected.csv"
-        self.rejected.to_csv(out["rejected"], index=False)
-        out["summary"] = folder / "import_summary.json"
-        out["summary"].write_text(json.dumps(self.summary, indent=2) + "\n")
-        return out
 
 
 def _known_types() -> set:
@@ -115,7 +72,7 @@ def _known_types() -> set:
     return set(pynmea2.TalkerSentence.sentence_types) | set(USED_TYPES)
 
 
-def _sort_types(log: SentenceLog, rejections: Rejections) -> dict:
+def _sort_types(log: SentenceLog, rejections: RejectedLedger) -> dict:
     """Sentences of types not used: unknown types set aside (``unknown_type``); types pynmea2 knows
     counted (returned: type -> count; Ashtech's other $PASHR messages as ``PASHR (not attitude)``)."""
     import pynmea2
@@ -130,7 +87,7 @@ def _sort_types(log: SentenceLog, rejections: Rejections) -> dict:
             not_used[kind] = int(n)
             continue
         i = log.where(kind)
-        rejections.add(log.file[i], log.line[i], "unknown_type", f"unknown sentence type {kind!r}")
+        rejections.add(log.file[i], "unknown_type", f"unknown sentence type {kind!r}", line=log.line[i])
     other = pashr_subtypes(log)[1]
     if other.size:
         not_used["PASHR (not attitude)"] = int(other.size)
@@ -155,7 +112,7 @@ def _platforms_table(platform: str, priors: Mapping[str, float] | None) -> pd.Da
         raise ValueError(
             f"platform_priors: unknown key(s) {unknown}; expected {list(PLATFORM_PRIOR_COLUMNS)} (deg)"
         )
-    row = {"platform": [str(platform)]}
+    row: dict[str, list] = {"platform": [str(platform)]}
     for column in PLATFORM_PRIOR_COLUMNS:
         v = priors.get(column, math.nan)
         if v is None:
@@ -196,7 +153,8 @@ def import_nmea(
     plus an optional ``talker`` column saying which sensor a TTM talker is (with one sensor on the
     platform and no talker, that sensor); ``date``: ``datetime.date`` or ``'YYYY-MM-DD'``, the UTC
     date the log starts on when it has no ZDA or RMC, and the origin of ``time_s``;
-    ``keep_acquiring``: keep TTM targets in acquisition (status Q); ``progress``: a tqdm bar;
+    ``keep_acquiring``: keep TTM targets in acquisition (status Q); ``progress``: a bar of lines read
+    (:func:`registration.core.progress.progress_bar`);
     ``platform_priors``: the platform's attitude prior sigmas by platforms file column
     (``prior_heading_deg``, ``prior_pitch_deg``, ``prior_roll_deg``; deg; missing or None: free);
     ``ais_sigmas``: the AIS reference sigma model (:class:`AisSigmas`); ``pashr_angles``:
@@ -217,7 +175,7 @@ def import_nmea(
     paths = [paths] if isinstance(paths, (str, Path)) else list(paths)
     if not paths:
         raise ValueError("paths: no log file given")
-    rejections = Rejections([str(Path(p)) for p in paths])
+    rejections = RejectedLedger(LEDGER_COLUMNS, [str(Path(p)) for p in paths])
     log = read_log(paths, rejections, progress)
     not_used = _sort_types(log, rejections)
     fixes, dates = read_fixes(log, rejections)
@@ -233,12 +191,12 @@ def import_nmea(
     refs = read_references(log, messages, clock, nav.sea_level, sigmas, rejections)
     summary = build_summary(ImportParts(log, clock, nav, plots, refs, rejections, not_used, len(messages)))
     return NmeaImport(
-        nav.frame(platform),
-        plots.frame(),
-        sensor_rows.drop(columns=[TALKER_COLUMN], errors="ignore"),
-        platforms,
-        refs.frame(),
-        rejections.frame(),
-        summary,
-        refs.targets_frame(),
+        plots=plots.frame(),
+        navigation=nav.frame(platform),
+        sensors=sensor_rows.drop(columns=[TALKER_COLUMN], errors="ignore"),
+        platforms=platforms,
+        reference=refs.frame(),
+        rejected=rejections.frame(),
+        summary=summary,
+        targets=refs.targets_frame(),
     )

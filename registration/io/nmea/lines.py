@@ -27,7 +27,8 @@ from pathlib import Path
 
 import numpy as np
 
-from registration.io.nmea.errors import Rejections
+from registration.core.progress import progress_bar
+from registration.io.files.ledger import RejectedLedger
 
 __all__ = ["SentenceLog", "read_log", "line_parts", "LineProblem"]
 
@@ -151,7 +152,7 @@ def line_parts(line: str) -> tuple[float, str]:
     return received, rest
 
 
-def _split_file(path: Path, file_index: int, out: dict, rejections: Rejections, bar) -> tuple[int, int]:
+def _split_file(path: Path, file_index: int, out: dict, rejections: RejectedLedger, bar) -> tuple[int, int]:
     """Append one file's sentences to ``out`` (lists); lines that hold none go to ``rejections``.
     Returns (lines, blank lines)."""
     text = path.read_bytes().decode("latin-1")
@@ -191,7 +192,7 @@ def _split_file(path: Path, file_index: int, out: dict, rejections: Rejections, 
     for code in set(bad_codes):
         pick = [k for k, c in enumerate(bad_codes) if c == code]
         rejections.add(
-            [file_index] * len(pick), [bad_lines[k] for k in pick], code, [bad_reasons[k] for k in pick]
+            [file_index] * len(pick), code, [bad_reasons[k] for k in pick], line=[bad_lines[k] for k in pick]
         )
     return len(lines), blank
 
@@ -230,21 +231,17 @@ def _addresses(sentences: list[str]) -> tuple[np.ndarray, np.ndarray]:
     return np.array(talker, dtype=object), np.array(kind, dtype=object)
 
 
-def read_log(paths, rejections: Rejections, progress: bool = False) -> SentenceLog:
+def read_log(paths, rejections: RejectedLedger, progress: bool = False) -> SentenceLog:
     """Read the log files (in the order given; each line's number counts from 1 in its file) into a
     :class:`SentenceLog` of the sentences with a correct checksum. Lines without a sentence, with a
     bad prefix or tag block, without a checksum or with a wrong one go to ``rejections``.
-    ``progress``: a tqdm bar of lines read on standard error."""
+    ``progress``: a bar of lines read (:func:`registration.core.progress.progress_bar`)."""
     files = [Path(p) for p in paths]
     for p in files:
         if not p.is_file():
             raise ValueError(f"{p}: no such file")
-    out = {"file": [], "line": [], "sentence": [], "received": []}
-    bar = None
-    if progress:
-        from tqdm import tqdm
-
-        bar = tqdm(desc="NMEA lines", unit="line", unit_scale=True, leave=False)
+    out: dict[str, list] = {"file": [], "line": [], "sentence": [], "received": []}
+    bar = progress_bar(progress, "NMEA lines", unit="line", unit_scale=True)
     lines = blank = 0
     try:
         for k, p in enumerate(files):
@@ -252,18 +249,17 @@ def read_log(paths, rejections: Rejections, progress: bool = False) -> SentenceL
             lines += n
             blank += b
     finally:
-        if bar is not None:
-            bar.close()
+        bar.close()
     file = np.asarray(out["file"], dtype=np.int64)
     line = np.asarray(out["line"], dtype=np.int64)
     received = np.asarray(out["received"], dtype=np.float64)
     sentences = out["sentence"]
     has, ok = checksums_ok(sentences)
     rejections.add(
-        file[~has], line[~has], "no_checksum", "the sentence does not end in '*hh' (a truncated line?)"
+        file[~has], "no_checksum", "the sentence does not end in '*hh' (a truncated line?)", line=line[~has]
     )
     bad = has & ~ok
-    rejections.add(file[bad], line[bad], "bad_checksum", "the checksum does not match the sentence")
+    rejections.add(file[bad], "bad_checksum", "the checksum does not match the sentence", line=line[bad])
     keep = np.flatnonzero(ok)
     sentences = [sentences[k] for k in keep]
     talker, kind = _addresses(sentences)

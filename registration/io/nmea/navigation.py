@@ -23,9 +23,10 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from registration.core.angles import wrap_angle
+from registration.io.files.ledger import RejectedLedger
 from registration.io.nmea.attitude import Attitude
 from registration.io.nmea.clock import Clock
-from registration.io.nmea.errors import NmeaImportError, Rejections
+from registration.io.nmea.errors import NmeaImportError
 from registration.io.nmea.fixes import Fixes
 from registration.io.nmea.lines import SentenceLog
 
@@ -113,18 +114,20 @@ def _one_talker(sample) -> tuple:
     return sample.take(sample.talker.astype(str) == best), str(best)
 
 
-def _sorted_unique(log: SentenceLog, index: np.ndarray, t: np.ndarray, rejections: Rejections, what: str):
+def _sorted_unique(log: SentenceLog, index: np.ndarray, t: np.ndarray, rejections: RejectedLedger, what: str):
     """Order of the samples by time, without the second and later samples of one time (set aside)."""
     order = np.argsort(t, kind="stable")
     ts = t[order]
     dup = np.zeros(ts.size, bool)
     dup[1:] = ts[1:] == ts[:-1]
     i = index[order[dup]]
-    rejections.add(log.file[i], log.line[i], "duplicate_time", f"a second {what} at the same time")
+    rejections.add(log.file[i], "duplicate_time", f"a second {what} at the same time", line=log.line[i])
     return order[~dup]
 
 
-def _positions(log: SentenceLog, clock: Clock, fixes: dict[str, Fixes], rejections: Rejections, notes: list):
+def _positions(
+    log: SentenceLog, clock: Clock, fixes: dict[str, Fixes], rejections: RejectedLedger, notes: list
+):
     kind = next((k for k in ("GGA", "GNS", "RMC") if fixes[k].index.size), None)
     if kind is None:
         raise NmeaImportError("no valid position in the log: no GGA, GNS or RMC sentence with a valid fix")
@@ -152,7 +155,7 @@ def _positions(log: SentenceLog, clock: Clock, fixes: dict[str, Fixes], rejectio
 
 
 def _attitude(
-    log: SentenceLog, clock: Clock, attitudes: dict[str, Attitude], rejections: Rejections, notes: list
+    log: SentenceLog, clock: Clock, attitudes: dict[str, Attitude], rejections: RejectedLedger, notes: list
 ):
     kind = next((k for k in ("PASHR", "HDT", "THS") if len(attitudes[k])), None)
     if kind is None:
@@ -167,7 +170,10 @@ def _attitude(
         bad = np.isnan(t)
         i = a.index[bad]
         rejections.add(
-            log.file[i], log.line[i], "no_time", f"{kind} has no time field and no timed sentence before it"
+            log.file[i],
+            "no_time",
+            f"{kind} has no time field and no timed sentence before it",
+            line=log.line[i],
         )
         a, t = a.take(~bad), t[~bad]
         a.pitch[:] = 0.0
@@ -185,7 +191,7 @@ def build_navigation(
     clock: Clock,
     fixes: dict[str, Fixes],
     attitudes: dict[str, Attitude],
-    rejections: Rejections,
+    rejections: RejectedLedger,
 ) -> Navigation:
     """The :class:`Navigation` of the log; :class:`NmeaImportError` without a valid position or
     heading, or when no attitude sample lies among the positions."""
@@ -197,10 +203,10 @@ def build_navigation(
     i = a.index[~inside]
     rejections.add(
         log.file[i],
-        log.line[i],
         "outside_positions",
         f"this attitude sample lacks a position fix within {MAX_POSITION_GAP_S:g} s before it or within "
         f"{MAX_POSITION_GAP_S:g} s after it (both are needed to interpolate the position)",
+        line=log.line[i],
     )
     if not inside.any():
         raise NmeaImportError(

@@ -27,9 +27,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from registration.io.files.ledger import RejectedLedger
 from registration.io.nmea.ais import AisMessage
 from registration.io.nmea.clock import Clock
-from registration.io.nmea.errors import Rejections
 from registration.io.nmea.lines import SentenceLog
 
 if TYPE_CHECKING:
@@ -181,7 +181,7 @@ def _position_time(clock: Clock, received: np.ndarray, second: np.ndarray) -> tu
 
 
 def _reports(
-    log: SentenceLog, messages: list[AisMessage], vessels: dict, own: dict, rejections: Rejections
+    log: SentenceLog, messages: list[AisMessage], vessels: dict, own: dict, rejections: RejectedLedger
 ) -> list:
     """The position reports of other vessels as (message, mmsi, lat deg, lon deg); own ship's counted."""
     own_mmsi = {str(m.data.mmsi) for m in messages if m.own}
@@ -197,7 +197,7 @@ def _reports(
         if mmsi in own_mmsi:
             if t in POSITION_TYPES:
                 rejections.add(
-                    log.file[i], log.line[i], "ais_own_ship", f"MMSI {mmsi} is the own ship's (!AIVDO)"
+                    log.file[i], "ais_own_ship", f"MMSI {mmsi} is the own ship's (!AIVDO)", line=log.line[i]
                 )
             continue
         _static(_vessel(vessels, mmsi), m.data)
@@ -207,9 +207,9 @@ def _reports(
         if lat is None or lon is None or not (abs(float(lat)) <= 90.0 and abs(float(lon)) <= 180.0):
             rejections.add(
                 log.file[i],
-                log.line[i],
                 "ais_no_position",
                 f"AIS message {t} of MMSI {mmsi}: position not available ({lat}, {lon})",
+                line=log.line[i],
             )
             continue
         out.append((m, mmsi, float(lat), float(lon)))
@@ -222,11 +222,12 @@ def read_references(
     clock: Clock,
     sea_level: float,
     sigmas: AisSigmas,
-    rejections: Rejections,
+    rejections: RejectedLedger,
 ) -> References:
     """The reference positions of the AIS messages (see the module's text); ``sea_level``: the
     ellipsoid height (m) of mean sea level."""
-    vessels, own = {}, {"mmsi": [], "messages": {}}
+    vessels: dict = {}
+    own: dict = {"mmsi": [], "messages": {}}
     reports = _reports(log, messages, vessels, own, rejections)
     first = np.array([m.parts[0] for m, *_ in reports], dtype=np.int64)
     received = np.array([m.received for m, *_ in reports], dtype=np.float64)
@@ -235,16 +236,16 @@ def read_references(
     no_time = np.isnan(received)
     rejections.add(
         log.file[first[no_time]],
-        log.line[first[no_time]],
         "ais_no_time",
         "AIS position without a reception time (no tag block c: and no timestamp prefix)",
+        line=log.line[first[no_time]],
     )
     no_date = np.isnan(time) & ~no_time
     rejections.add(
         log.file[first[no_date]],
-        log.line[first[no_date]],
         "no_date",
         "the log gives no date to place the AIS reception time",
+        line=log.line[first[no_date]],
     )
     bad = no_time | no_date
     mmsi = np.array([r[1] for r in reports], dtype=object)
@@ -255,17 +256,17 @@ def read_references(
     )
     keep = np.flatnonzero(~bad)
     seen: set = set()
-    dup = []
+    repeated = []
     for k in keep:
         key = (mmsi[k], time[k], lat[k], lon[k])
-        dup.append(key in seen)
+        repeated.append(key in seen)
         seen.add(key)
-    dup = np.array(dup, dtype=bool)
+    dup = np.array(repeated, dtype=bool)
     rejections.add(
         log.file[first[keep[dup]]],
-        log.line[first[keep[dup]]],
         "ais_duplicate",
         "the same AIS report (MMSI, time, position) received again",
+        line=log.line[first[keep[dup]]],
     )
     keep = keep[~dup]
     for k in keep:

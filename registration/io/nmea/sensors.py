@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from registration.io.files.unreadable import read_error
 from registration.io.fleet.cells import FILE_COLUMNS
 
 if TYPE_CHECKING:
@@ -83,7 +84,10 @@ def check_sensors(frame: pd.DataFrame, source: str = "sensors") -> pd.DataFrame:
         )
     if len(frame) == 0:
         raise ValueError(f"{source}: no rows; give at least one sensor")
-    out = {"sensor": _ids(frame, source, "sensor"), "platform": _ids(frame, source, "platform")}
+    out: dict[str, list] = {
+        "sensor": _ids(frame, source, "sensor"),
+        "platform": _ids(frame, source, "platform"),
+    }
     seen: dict[str, int] = {}
     for row, s in enumerate(out["sensor"]):
         if s in seen:
@@ -112,7 +116,8 @@ def check_sensors(frame: pd.DataFrame, source: str = "sensors") -> pd.DataFrame:
 
 
 def _talkers(values: list, platforms: list[str], source: str) -> list[str]:
-    talkers, seen = [], {}
+    talkers: list[str] = []
+    seen: dict = {}
     for row, v in enumerate(values):
         text = "" if v is None or (isinstance(v, float) and math.isnan(v)) else str(v).strip().upper()
         if text and not _TALKER.match(text):
@@ -145,7 +150,7 @@ def read_sensors(path: str | Path) -> pd.DataFrame:
         else:
             frame = pd.read_csv(path, dtype=str, keep_default_na=False, skipinitialspace=True)
     except Exception as exc:  # pandas/pyarrow parse errors of many types
-        raise ValueError(f"{path}: cannot read it as a table: {exc}") from exc
+        raise read_error(path, exc, "cannot read it as a table") from exc
     return check_sensors(frame, str(path))
 
 

@@ -8,8 +8,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from registration.io.files.ledger import RejectedLedger
 from registration.io.nmea.clock import Clock
-from registration.io.nmea.errors import Rejections
 from registration.io.nmea.lines import SentenceLog
 from registration.io.nmea.navigation import Navigation
 from registration.io.nmea.reference import References
@@ -27,7 +27,7 @@ class ImportParts:
     navigation: Navigation
     plots: Plots
     references: References
-    rejections: Rejections
+    rejections: RejectedLedger
     not_used: dict
     ais_messages: int
 
@@ -112,6 +112,6 @@ def build_summary(parts: ImportParts) -> dict:
             "vessels": _vessels(r),
             "own_ship": {"mmsi": list(r.own["mmsi"]), "messages": dict(r.own["messages"])},
         },
-        "rejected": {"lines": parts.rejections.count(), "by_reason": parts.rejections.counts()},
+        "rejected": {"lines": parts.rejections.count(), "by_reason": parts.rejections.by_code()},
         "notes": list(clock.notes) + list(nav.notes),
     }

@@ -28,8 +28,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from registration.core.angles import wrap_angle
+from registration.io.files.ledger import RejectedLedger
 from registration.io.nmea.clock import Clock
-from registration.io.nmea.errors import Rejections
 from registration.io.nmea.fields import Columns, columns, numbers, text, time_of_day
 from registration.io.nmea.lines import SentenceLog
 from registration.io.nmea.navigation import Navigation
@@ -84,7 +84,7 @@ def _track_ids(col) -> np.ndarray:
     return np.array(out, dtype=object)
 
 
-def _sensors(c: Columns, talkers: dict[str, str], only: str | None, rejections: Rejections):
+def _sensors(c: Columns, talkers: dict[str, str], only: str | None, rejections: RejectedLedger):
     """The sensor of each TTM by its talker (or the platform's only sensor); others set aside."""
     talker = c.talker.astype(str)
     sensor = np.array([talkers.get(t, only) for t in talker], dtype=object)
@@ -102,7 +102,7 @@ def _sensors(c: Columns, talkers: dict[str, str], only: str | None, rejections: 
     return c, sensor[~bad]
 
 
-def _status(c: Columns, sensor: np.ndarray, keep_acquiring: bool, rejections: Rejections):
+def _status(c: Columns, sensor: np.ndarray, keep_acquiring: bool, rejections: RejectedLedger):
     status = text(c.cols[12])
     tests = (
         ("ttm_lost", lambda s: s == "L"),
@@ -116,7 +116,7 @@ def _status(c: Columns, sensor: np.ndarray, keep_acquiring: bool, rejections: Re
     return c, sensor, status
 
 
-def _values(c: Columns, rejections: Rejections):
+def _values(c: Columns, rejections: RejectedLedger):
     """(the TTMs with valid values, their kept mask, range m, bearing rad as given, unit, reference)."""
     distance, bearing = numbers(c.cols[2]), numbers(c.cols[3])
     unit, ref = text(c.cols[10]), text(c.cols[4])
@@ -148,7 +148,7 @@ def read_ttm(
     talkers: dict[str, str],
     only: str | None,
     keep_acquiring: bool,
-    rejections: Rejections,
+    rejections: RejectedLedger,
 ) -> Plots:
     """The plots of the log's TTM sentences (see the module's text). ``talkers``: talker -> sensor;
     ``only``: the sensor of TTMs whose talker is not in ``talkers`` (the platform's only sensor),

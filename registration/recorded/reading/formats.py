@@ -24,6 +24,7 @@ import numpy as np
 
 from registration.io.files.csvrows import SHAPE_COLUMN, read_csv_blocks
 from registration.io.files.tablefile import FileFormatError, file_format, write_frame
+from registration.io.files.unreadable import read_error
 from registration.recorded.reading.columns import SYNC_COLUMNS, SYNC_FIELDS
 from registration.recorded.reading.rowcheck import check_frame, sync_layout
 
@@ -131,7 +132,7 @@ def read_columns(path) -> list[str]:
     except FileFormatError:
         raise
     except Exception as exc:  # pandas/pyarrow parse errors of many types
-        raise FileFormatError(f"{path}: cannot read the header as {fmt.upper()}: {exc}") from exc
+        raise read_error(path, exc, f"cannot read the header as {fmt.upper()}", FileFormatError) from exc
 
 
 def count_rows(path) -> int | None:
@@ -189,14 +190,14 @@ def iter_frames(path, columns, chunk_rows: int, start_row: int = 0) -> Iterator[
     except FileFormatError:
         raise
     except (UnicodeDecodeError, pd.errors.ParserError, pd.errors.EmptyDataError) as exc:
-        raise FileFormatError(f"{path}: cannot be read as CSV: {exc}") from exc
+        raise read_error(path, exc, "cannot be read as CSV", FileFormatError) from exc
     except OSError as exc:
         raise FileFormatError(f"{path}: {exc}") from exc
     except ValueError as exc:  # pandas/pyarrow raise plain ValueErrors for some malformed files
-        raise FileFormatError(f"{path}: cannot be read as {fmt.upper()}: {exc}") from exc
+        raise read_error(path, exc, f"cannot be read as {fmt.upper()}", FileFormatError) from exc
     except Exception as exc:
         if type(exc).__module__.startswith(("pyarrow", "pandas")):
-            raise FileFormatError(f"{path}: cannot be read as {fmt.upper()}: {exc}") from exc
+            raise read_error(path, exc, f"cannot be read as {fmt.upper()}", FileFormatError) from exc
         raise
 
 

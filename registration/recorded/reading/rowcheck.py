@@ -38,6 +38,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from registration.io.files.csvrows import SHAPE_COLUMN
+from registration.io.files.ledger import RejectedRow
 from registration.online.contract import (
     LIMITS,
     N_ROW,
@@ -117,13 +118,8 @@ def nav_layout(sensors: tuple[str, ...]) -> Layout:
     return Layout(f"navigation file of ship(s) {', '.join(s.upper() for s in sensors)}", fields, slots)
 
 
-@dataclass
-class Rejection:
-    row: int  # absolute row in the file
-    column: str
-    code: str
-    reason: str
-    values: str  # the row's cells as JSON text
+#: A row set aside: the rejected-row record of every table reader, with the row's cells as JSON text.
+Rejection = RejectedRow
 
 
 @dataclass
@@ -162,8 +158,8 @@ def _to_float(col) -> tuple[np.ndarray, np.ndarray]:
         if getattr(conv.dtype, "kind", "O") not in "iuf":
             raise TypeError("not a real dtype")
         values = np.asarray(conv, dtype=np.float64)
-        for i in np.flatnonzero(np.isnan(values)).tolist():
-            non_numeric[i] = not _is_missing(raw[i]) and not _is_nan_text(raw[i])
+        for k in np.flatnonzero(np.isnan(values)).tolist():
+            non_numeric[k] = not _is_missing(raw[k]) and not _is_nan_text(raw[k])
         for i, v in enumerate(raw):  # booleans and complex numbers hidden in an object column
             if isinstance(v, (bool, np.bool_, complex, np.complexfloating)):
                 values[i], non_numeric[i] = np.nan, True
@@ -287,7 +283,7 @@ def check_frame(
     accepted = ~field_bad & ~order_bad
     new_last = float(t[accepted][-1]) if accepted.any() else last_time
 
-    rejections: list[Rejection] = []
+    rejections: list[RejectedRow] = []
     bad_rows = np.flatnonzero(~accepted)
     for i in bad_rows:
         if shaped[i]:  # the line's fields do not match the header: its cells are not trusted
@@ -312,9 +308,8 @@ def check_frame(
                 )
         if mode == "stop":
             raise BadRowError(file, first_row + int(i), column, code, reason)
-        rejections.append(
-            Rejection(first_row + int(i), column, code, reason, _row_values(frame, int(i), layout.columns))
-        )
+        cells = _row_values(frame, int(i), layout.columns)
+        rejections.append(RejectedRow(file, first_row + int(i), column, code, reason, cells))
     return CheckedBlock(
         first_row=first_row, values=values, accepted=accepted, rejections=rejections, last_time=new_last
     )

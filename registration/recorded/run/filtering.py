@@ -150,7 +150,7 @@ def _register_block(
             row = int(block.first_row + accepted[s])
             if options.on_bad_row != "skip":
                 raise BadRowError(table.label, row, "*", "filter_non_finite", _NON_FINITE_STEP)
-            rejections.append(Rejection(row, "*", "filter_non_finite", _NON_FINITE_STEP, "{}"))
+            rejections.append(Rejection(table.label, row, "*", "filter_non_finite", _NON_FINITE_STEP, "{}"))
             state.filter_rejected.add(row)
             s += 1
     return rejections

@@ -4,12 +4,14 @@ the tables."""
 
 from __future__ import annotations
 
+import io
 import math
 
 import numpy as np
 import pandas as pd
 import pytest
 
+import registration.core.progress as progress
 from registration.io.asterix import import_asterix
 from tests.io.asterix.scenario import ADSB_TARGETS, DURATION, PLOT_TARGETS, RADARS, STAMP_DELAY_S, T0
 
@@ -201,7 +203,20 @@ def test_the_fleet_reader_accepts_the_tables(imported, tmp_path):
     assert problem.n_plots == len(tables["plots"])
 
 
-def test_progress_bar(files, sites, capsys):
+class _Terminal(io.StringIO):
+    def isatty(self) -> bool:
+        return True
+
+
+def test_progress_bar(files, sites, capsys, monkeypatch):
+    """A bar over the bytes read on a terminal (the rule of registration.core.progress); captured,
+    none; the import is the same either way."""
+    quiet = import_asterix([files["raw"], files["pcap.gz"]], sites, progress=True)
+    assert capsys.readouterr().err == ""
+    terminal = _Terminal()
+    monkeypatch.setattr("sys.stderr", terminal)
+    monkeypatch.setattr(progress, "PROGRESS_DELAY_S", 0.0)
     result = import_asterix([files["raw"], files["pcap.gz"]], sites, progress=True)
-    assert "ASTERIX" in capsys.readouterr().err
+    assert "ASTERIX" in terminal.getvalue()
     assert len(result.plots) == 2 * len(import_asterix(files["raw"], sites).plots)
+    pd.testing.assert_frame_equal(result.plots, quiet.plots)

@@ -7,10 +7,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from registration.io.asterix.decode.fields import PAD
 from registration.io.asterix.decode.scalar import RecordProblem, walk_one
 from registration.io.asterix.decode.uap import SUPPORTED_EDITIONS, uap_for
 from registration.io.asterix.decode.walker import walk_records
+from registration.io.asterix.octets import PAD
 from tests.io.asterix.libasterix_help import parse_blocks, random_blocks
 
 EDITIONS = [(cat, e) for cat, editions in SUPPORTED_EDITIONS.items() for e in editions]

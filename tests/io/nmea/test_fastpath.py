@@ -9,8 +9,9 @@ import numpy as np
 import pynmea2
 import pytest
 
+from registration.io.files.ledger import RejectedLedger
 from registration.io.nmea.attitude import read_headings, read_pashr
-from registration.io.nmea.errors import Rejections
+from registration.io.nmea.errors import LEDGER_COLUMNS
 from registration.io.nmea.fixes import EPOCH_ORDINAL, read_fixes
 from registration.io.nmea.lines import read_log
 from tests.io.nmea import encode
@@ -49,7 +50,7 @@ def random_log(tmp_path_factory):
         ]
     path = tmp_path_factory.mktemp("fast") / "random.nmea"
     path.write_text("\n".join(lines) + "\n")
-    rejections = Rejections([str(path)])
+    rejections = RejectedLedger(LEDGER_COLUMNS, [str(path)])
     return lines, read_log([path], rejections), rejections
 
 

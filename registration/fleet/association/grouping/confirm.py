@@ -19,12 +19,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from registration.core.progress import progress_status
 from registration.fleet.association.grouping.geometry import Assigner, PlotGeometry, plot_geometry
 from registration.fleet.association.grouping.groups import group_tracklets
 from registration.fleet.association.grouping.match import chain_groups, make_tracklets
 from registration.fleet.association.grouping.units import make_units
 from registration.fleet.association.options import AssociationOptions
-from registration.fleet.batch.solver import progress_status
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["Confirmed", "confirm_targets", "fixing_sensors", "merge_fragments", "new_names"]
@@ -184,7 +184,7 @@ def confirm_targets(
     ``track_id`` (N,; '' : made by the tracker), from the estimate ``x`` and covariance ``P``;
     ``register(labels, subset) -> (x, P)`` registers the labelled plots (``subset``: only those
     plots, None: all) and returns the estimate and its covariance (the same when nothing is
-    labelled). ``bar``: the progress bar (:func:`~registration.fleet.batch.solver.progress_bar`)."""
+    labelled). ``bar``: the progress bar (:func:`~registration.core.progress.progress_bar`)."""
     free = (given == "") & fixing_sensors(problem)[problem.sensor]
     none = np.full(problem.n_plots, -1, dtype=np.int64)
     if np.unique(problem.sensor[free]).size < 2:

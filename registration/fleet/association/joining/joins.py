@@ -29,6 +29,7 @@ import itertools
 import numpy as np
 from scipy.stats import chi2
 
+from registration.core.progress import progress_status
 from registration.fleet.association.grouping.confirm import fixing_sensors, new_names
 from registration.fleet.association.grouping.units import Units, split_units, unit_conflicts
 from registration.fleet.association.joining.attach import (
@@ -49,7 +50,6 @@ from registration.fleet.association.joining.checks import (
 from registration.fleet.association.joining.passcurves import pass_curves
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.solves import Registrar
-from registration.fleet.batch.solver import progress_status
 
 __all__ = ["DEFER_SHARE", "choose_joins", "join_units"]
 

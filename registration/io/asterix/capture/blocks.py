@@ -18,7 +18,7 @@ from typing import Collection
 import numpy as np
 
 from registration.io.asterix.capture.capture import ASTERIX_CATEGORIES, Capture
-from registration.io.asterix.errors import Rejections
+from registration.io.files.ledger import RejectedLedger
 
 __all__ = ["Blocks", "find_blocks"]
 
@@ -105,18 +105,21 @@ def _segment_blocks(
         p = q
 
 
-def find_blocks(cap: Capture, rejections: Rejections) -> Blocks:
+def find_blocks(cap: Capture, rejections: RejectedLedger) -> Blocks:
     """The data blocks of ``cap``; bad headers are set aside in ``rejections``."""
-    mv = memoryview(cap.buf)
+    mv = memoryview(cap.buf)  # type: ignore[arg-type]  # a uint8 array is a buffer
     seg = cap.segments
     raw = cap.kind == "raw"
-    rows, seg_of, seen = [], [], set()
+    rows: list = []
+    seg_of: list = []
+    seen: set[int] = set()
     for k in range(seg.start.size):
-        out, bad = [], []
+        out: list = []
+        bad: list = []
         _segment_blocks(mv, cap.buf, int(seg.start[k]), int(seg.end[k]), raw, seen, out, bad)
         rows += out
         seg_of += [k] * len(out)
         for offset, code, reason in bad:
-            rejections.add(cap.path, offset, int(seg.packet[k]), 0, code, reason)
+            rejections.add(cap.path, code, reason, offset=offset, packet=int(seg.packet[k]), category=0)
     a = np.array(rows, dtype=np.int64).reshape(-1, 3)
     return Blocks(a[:, 0], a[:, 1], a[:, 2], np.array(seg_of, dtype=np.int64))

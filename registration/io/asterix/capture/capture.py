@@ -19,8 +19,10 @@ import numpy as np
 
 from registration.io.asterix.capture.netstack import Segments, udp_segments
 from registration.io.asterix.capture.pcap import PCAP_MAGICS, PCAPNG_MAGIC, pcap_packets, pcapng_packets
-from registration.io.asterix.decode.fields import PAD
-from registration.io.asterix.errors import AsterixImportError, Rejections
+from registration.io.asterix.errors import AsterixImportError
+from registration.io.asterix.octets import PAD
+from registration.io.files.ledger import RejectedLedger
+from registration.io.files.unreadable import read_error
 
 __all__ = ["Capture", "read_capture", "ASTERIX_CATEGORIES"]
 
@@ -137,14 +139,14 @@ def _raw_check(data: bytes, path: str) -> None:
         )
 
 
-def read_capture(path: str | Path, rejections: Rejections, ports: Iterable[int] | None = None) -> Capture:
+def read_capture(path: str | Path, rejections: RejectedLedger, ports: Iterable[int] | None = None) -> Capture:
     """Read ``path`` and find its data blocks' segments; packets cut short are set aside in
     ``rejections``. ``ports``: UDP destination ports to keep (None: all)."""
     name = str(path)
     try:
         raw = Path(path).read_bytes()
     except OSError as exc:
-        raise AsterixImportError(f"{name}: cannot read the file: {exc.strerror or exc}") from exc
+        raise read_error(name, exc, "cannot read the file", AsterixImportError) from exc
     notes: list = []
     zipped = raw[:2] == b"\x1f\x8b"
     data = _gunzip(raw, name, notes) if zipped else raw

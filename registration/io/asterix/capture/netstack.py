@@ -18,7 +18,7 @@ from typing import Iterable
 import numpy as np
 
 from registration.io.asterix.capture.pcap import Packets
-from registration.io.asterix.decode.fields import u8, u16, u32
+from registration.io.asterix.octets import u8, u16, u32
 
 __all__ = ["LINKTYPES", "Segments", "udp_segments"]
 

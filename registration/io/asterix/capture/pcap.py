@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.io.asterix.errors import Rejections
+from registration.io.files.ledger import RejectedLedger
 
 __all__ = ["PCAP_MAGICS", "PCAPNG_MAGIC", "Packets", "pcap_packets", "pcapng_packets"]
 
@@ -62,14 +62,19 @@ class Packets:
         )
 
 
-def pcap_packets(data: bytes, path: str, rejections: Rejections) -> Packets:
+def pcap_packets(data: bytes, path: str, rejections: RejectedLedger) -> Packets:
     """The packets of a pcap file (``data``: its bytes, starting with one of :data:`PCAP_MAGICS`)."""
     order, unit = PCAP_MAGICS[bytes(data[:4])]
     n = len(data)
-    rows = []
+    rows: list[tuple] = []
     if n < 24:
         rejections.add(
-            path, 0, 0, 0, "truncated_packet", f"the pcap file header needs 24 bytes, the file has {n}"
+            path,
+            "truncated_packet",
+            f"the pcap file header needs 24 bytes, the file has {n}",
+            offset=0,
+            packet=0,
+            category=0,
         )
         return Packets.from_lists(rows)
     linktype = struct.unpack_from(order + "I", data, 20)[0] & 0xFFFF
@@ -80,23 +85,23 @@ def pcap_packets(data: bytes, path: str, rejections: Rejections) -> Packets:
         if p + 16 > n:
             rejections.add(
                 path,
-                p,
-                k,
-                0,
                 "truncated_packet",
                 f"packet {k}: the capture ends inside its 16-byte record header ({n - p} bytes left)",
+                offset=p,
+                packet=k,
+                category=0,
             )
             break
         sec, frac, incl, _ = head.unpack_from(data, p)
         if incl > _MAX_PACKET or p + 16 + incl > n:
             rejections.add(
                 path,
-                p,
-                k,
-                0,
                 "truncated_packet",
                 f"packet {k}: captured length {incl} bytes runs past the end of the file "
                 f"({n - p - 16} bytes left); the rest of the capture is lost",
+                offset=p,
+                packet=k,
+                category=0,
             )
             break
         rows.append((p + 16, incl, sec + frac * unit, linktype, k))
@@ -106,7 +111,7 @@ def pcap_packets(data: bytes, path: str, rejections: Rejections) -> Packets:
 
 def _options(data: bytes, order: str, start: int, end: int) -> dict:
     """pcapng options (code -> first value's bytes) between ``start`` and ``end``."""
-    out = {}
+    out: dict[int, bytes] = {}
     while start + 4 <= end:
         code, length = struct.unpack_from(order + "HH", data, start)
         if code == 0:
@@ -140,20 +145,22 @@ def _packet_block(data: bytes, order: str, btype: int, p: int, length: int, inte
     return p + 28, cap, ((hi << 32) | lo) * interfaces[iface][1], iface
 
 
-def pcapng_packets(data: bytes, path: str, rejections: Rejections) -> Packets:
+def pcapng_packets(data: bytes, path: str, rejections: RejectedLedger) -> Packets:
     """The packets of a pcapng file (``data``: its bytes, starting with :data:`PCAPNG_MAGIC`)."""
     n = len(data)
-    rows, interfaces, order = [], [], "<"
+    rows: list[tuple] = []
+    interfaces: list[tuple] = []
+    order = "<"
     p, k = 0, 0
     while p < n:
         if p + 12 > n:
             rejections.add(
                 path,
-                p,
-                k + 1,
-                0,
                 "truncated_packet",
                 f"the capture ends inside a block header ({n - p} bytes left)",
+                offset=p,
+                packet=k + 1,
+                category=0,
             )
             break
         if bytes(data[p : p + 4]) == PCAPNG_MAGIC:
@@ -162,11 +169,11 @@ def pcapng_packets(data: bytes, path: str, rejections: Rejections) -> Packets:
             if not order:
                 rejections.add(
                     path,
-                    p,
-                    k + 1,
-                    0,
                     "truncated_packet",
                     "a section header with a bad byte-order magic; the rest of the capture is skipped",
+                    offset=p,
+                    packet=k + 1,
+                    category=0,
                 )
                 break
             interfaces = []
@@ -174,12 +181,12 @@ def pcapng_packets(data: bytes, path: str, rejections: Rejections) -> Packets:
         if length < 12 or length % 4 or p + length > n:
             rejections.add(
                 path,
-                p,
-                k + 1,
-                0,
                 "truncated_packet",
                 f"block of type {btype} declares {length} bytes, {n - p} left in the file (not a multiple "
                 "of 4, below 12 or past the end); the rest of the capture is lost",
+                offset=p,
+                packet=k + 1,
+                category=0,
             )
             break
         if btype == 1 and length >= 20:
@@ -191,12 +198,12 @@ def pcapng_packets(data: bytes, path: str, rejections: Rejections) -> Packets:
             if got is None:
                 rejections.add(
                     path,
-                    p,
-                    k,
-                    0,
                     "truncated_packet",
                     f"packet {k}: a packet block whose captured length exceeds the block or whose "
                     "interface was not described; the packet is skipped",
+                    offset=p,
+                    packet=k,
+                    category=0,
                 )
             else:
                 rows.append((got[0], got[1], got[2], interfaces[got[3]][0], k))

@@ -1,3 +1,3 @@
 """The records decoded: UAPs per category and edition (uap), the vectorised walk of FSPEC and items
-(walker) and its plain reference (scalar), fields at many offsets (fields), the items of CAT048,
+(walker) and its plain reference (scalar), the items of CAT048,
 CAT034 and CAT021 (decode48, decode34, decode21), one file decoded (reader)."""

@@ -1,23 +1,26 @@
 """CAT021 (ADS-B target reports) fields, read from the walked records all at once: raw integers
-as transmitted, with their LSBs here. Editions 2.x and 0.2x differ in almost every item:
+as transmitted, with their LSBs here. Editions 2.x and 0.2x differ in almost every item (field:
+editions 2.x; editions 0.2x):
 
-| field | editions 2.x | editions 0.2x |
-|---|---|---|
-| source | I021/010 SAC, SIC | same |
-| address | I021/080, 24 bits | same |
-| RAB, SIM, TST | I021/040 first octet bit 2; first extension bits 6, 5 | I021/040 bits 12, 14, 13 (of 16) |
-| time (1/128 s) | I021/071 (applicability for position), else I021/073 (reception of position), else I021/077 (report transmission) | I021/030 (time of day) |
-| position | I021/131 (2 x 32 bits, 180/2^30 deg), else I021/130 (2 x 24 bits, 180/2^23 deg) | I021/130: 2 x 24 bits, 180/2^23 deg (0.23); 2 x 32 bits, 180/2^25 deg (0.24-0.26) |
-| geometric height | I021/140, 16 bits signed, 6.25 ft, above the WGS-84 ellipsoid | same |
-| quality | I021/090: NACp (first extension bits 4-1), GVA (second extension bits 3-2) | I021/090 PA: NUCp (bits 4-1) |
+* source: I021/010 SAC, SIC; the same;
+* address: I021/080, 24 bits; the same;
+* RAB, SIM, TST: I021/040 first octet bit 2, first extension bits 6, 5; I021/040 bits 12, 14, 13
+  (of 16);
+* time (1/128 s): I021/071 (applicability for position), else I021/073 (reception of position),
+  else I021/077 (report transmission); I021/030 (time of day);
+* position: I021/131 (2 x 32 bits, 180/2^30 deg), else I021/130 (2 x 24 bits, 180/2^23 deg);
+  I021/130: 2 x 24 bits, 180/2^23 deg (0.23), 2 x 32 bits, 180/2^25 deg (0.24-0.26);
+* geometric height: I021/140, 16 bits signed, 6.25 ft, above the WGS-84 ellipsoid; the same;
+* quality: I021/090: NACp (first extension bits 4-1), GVA (second extension bits 3-2); I021/090
+  PA: NUCp (bits 4-1).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from registration.io.asterix.decode.fields import signed, u8, u16, u24, u32
 from registration.io.asterix.decode.walker import Records
+from registration.io.asterix.octets import signed, u8, u16, u24, u32
 
 __all__ = ["wanted", "decode021", "TOD_LSB_S", "HEIGHT_LSB_FT", "FOOT_M"]
 

@@ -5,7 +5,7 @@ are in :mod:`registration.io.asterix.tables.service`.
 | item | field | LSB |
 |---|---|---|
 | I034/010 | SAC, SIC | |
-| I034/000 | message type: 1 north marker, 2 sector crossing, 3 geographical filtering, 4 jamming strobe, ... | |
+| I034/000 | message type: 1 north marker, 2 sector crossing, 3 geographical filtering, ... | |
 | I034/030 | time of day | 1/128 s |
 | I034/020 | sector number: azimuth of the sector's start from north, clockwise | 360/2^8 deg |
 | I034/041 | antenna rotation speed: the antenna rotation period | 1/128 s |
@@ -15,8 +15,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.io.asterix.decode.fields import u8, u16, u24
 from registration.io.asterix.decode.walker import Records
+from registration.io.asterix.octets import u8, u16, u24
 
 __all__ = ["WANTED", "NORTH_MARKER", "SECTOR_CROSSING", "SECTOR_LSB_DEG", "decode034"]
 

@@ -9,7 +9,7 @@ integers as transmitted, with their LSBs here; the physical values and the plot 
 | I048/020 | TYP (bits 8-6), SIM (5), RAB (2) of the first octet; TST (8) of the first extension | |
 | I048/040 | RHO, slant range, unsigned 16 bits | 1/256 NM |
 | I048/040 | THETA, azimuth from north, clockwise, unsigned 16 bits | 360/2^16 deg |
-| I048/070 | V (16, 1 = not validated), G (15, garbled), L (14, smoothed), Mode 3/A code (12 bits, 4 octal digits) | |
+| I048/070 | V (16, 1: not validated), G (15, garbled), L (14, smoothed), Mode 3/A (12 bits) | |
 | I048/220 | aircraft address, 24 bits | |
 """
 
@@ -17,8 +17,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.io.asterix.decode.fields import u8, u16, u24
 from registration.io.asterix.decode.walker import Records
+from registration.io.asterix.octets import u8, u16, u24
 
 __all__ = ["WANTED", "TOD_LSB_S", "RHO_LSB_NM", "THETA_LSB_DEG", "decode048"]
 

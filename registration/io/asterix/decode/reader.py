@@ -23,7 +23,8 @@ from registration.io.asterix.decode.decode48 import decode048
 from registration.io.asterix.decode.scalar import explain_record
 from registration.io.asterix.decode.uap import check_editions, uap_for
 from registration.io.asterix.decode.walker import Records, walk_records
-from registration.io.asterix.errors import Rejections
+from registration.io.asterix.errors import LEDGER_COLUMNS
+from registration.io.files.ledger import RejectedLedger
 
 __all__ = ["CategoryRecords", "DecodedFile", "decode_file", "CHUNK_BYTES"]
 
@@ -82,13 +83,13 @@ def _walk_category(
     sel: np.ndarray,
     cat: int,
     edition: str,
-    rejections: Rejections,
+    rejections: RejectedLedger,
     progress: Any,
 ) -> CategoryRecords:
     uap = uap_for(cat, edition)
     wanted = _wanted(cat, edition)
     parts = []
-    mv = memoryview(cap.buf)
+    mv = memoryview(cap.buf)  # type: ignore[arg-type]  # a uint8 array is a buffer
     for chunk in _chunks(blocks.end[sel] - blocks.start[sel]):
         idx = sel[chunk]
         rec = walk_records(cap.buf, blocks.start[idx], blocks.end[idx], uap, wanted)
@@ -98,12 +99,12 @@ def _walk_category(
             seg = int(blocks.segment[idx[b]])
             rejections.add(
                 cap.path,
-                start,
-                int(cap.segments.packet[seg]),
-                cat,
                 code,
                 f"CAT{cat:03d} record (edition {edition}): {reason}; the rest of the data block "
                 f"({rest} bytes) is skipped",
+                offset=start,
+                packet=int(cap.segments.packet[seg]),
+                category=cat,
             )
         seg = blocks.segment[idx[rec.block]]
         parts.append(
@@ -121,7 +122,7 @@ def _walk_category(
 def decode_file(
     path: str | Path,
     editions: Mapping[int, str] | None = None,
-    rejections: Rejections | None = None,
+    rejections: RejectedLedger | None = None,
     ports: Iterable[int] | None = None,
     progress: Any = None,
 ) -> DecodedFile:
@@ -136,7 +137,7 @@ def decode_file(
     nor a capture; anything bad inside is set aside.
     """
     editions = check_editions(editions)
-    rejections = Rejections() if rejections is None else rejections
+    rejections = RejectedLedger(LEDGER_COLUMNS) if rejections is None else rejections
     cap = read_capture(path, rejections, ports)
     if progress is not None and hasattr(progress, "file_size"):
         progress.file_size(cap.size)
@@ -150,9 +151,6 @@ def decode_file(
     if other.size:
         rejections.add(
             cap.path,
-            blocks.start[other],
-            cap.segments.packet[blocks.segment[other]],
-            blocks.category[other],
             "unknown_category",
             np.array(
                 [
@@ -161,6 +159,9 @@ def decode_file(
                 ],
                 dtype=object,
             ),
+            offset=blocks.start[other],
+            packet=cap.segments.packet[blocks.segment[other]],
+            category=blocks.category[other],
         )
         if progress is not None:
             progress.update(int((blocks.end[other] - blocks.start[other]).sum()))

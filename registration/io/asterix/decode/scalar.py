@@ -93,8 +93,8 @@ def walk_one(data: Sequence[int], pos: int, end: int, uap: Uap, wanted: tuple = 
     label = f"CAT{uap.category:03d}"
     try:
         present, size = _fspec_items(data, pos, len(uap.items), "record")
-    except IndexError:
-        present, size = None, None
+    except IndexError:  # the FSPEC runs past the data
+        present, size = None, 0
     if present is None or pos + size > end:
         raise RecordProblem(
             "fspec_overrun", f"the FSPEC runs past the end of the data block ({end - pos} bytes left)"

@@ -287,7 +287,7 @@ def uap_for(category: int, edition: str) -> Uap:
     return UAPS[(category, edition)]
 
 
-def check_editions(editions: Mapping[int | str, str] | None) -> dict:
+def check_editions(editions: Mapping[int, str] | Mapping[int | str, str] | None) -> dict:
     """The editions to use per category: :data:`DEFAULT_EDITIONS` updated by ``editions`` (a mapping
     of category number to edition text, or None). ValueError naming the category and the editions
     supported for an unknown category or edition."""

@@ -177,8 +177,9 @@ def walk_records(
     all of ``uap``'s category, and the offsets of the ``wanted`` items (names such as "040")."""
     lanes = np.flatnonzero(start + 3 < end)
     pos, stop = start[lanes] + 3, end[lanes]
-    found = {k: [] for k in ("start", "end", "block", *wanted)}
-    bad_start, bad_block = [], []
+    found: dict[str, list[np.ndarray]] = {k: [] for k in ("start", "end", "block", *wanted)}
+    bad_start: list[np.ndarray] = []
+    bad_block: list[np.ndarray] = []
     while lanes.size:
         cursor, bad, offsets = _step(buf, pos, stop, uap, wanted)
         ok = ~bad

@@ -11,11 +11,11 @@ import numpy as np
 
 from registration.io.asterix.decode.decode34 import NORTH_MARKER, SECTOR_LSB_DEG
 from registration.io.asterix.decode.reader import DecodedFile
-from registration.io.asterix.errors import Rejections
 from registration.io.asterix.tables.adsb21 import reference_columns, reference_verdicts
 from registration.io.asterix.tables.plots48 import plot_columns, plot_verdicts, unknown_source_texts
 from registration.io.asterix.tables.timeofday import Unwrapper, midnight_utc
 from registration.io.asterix.tables.verdicts import Verdicts
+from registration.io.files.ledger import RejectedLedger
 
 __all__ = ["FileRows", "SiteLookup", "assemble_file"]
 
@@ -60,7 +60,9 @@ def _record_times(dec: DecodedFile, unwrapper: Unwrapper) -> dict:
         given = {48: f.get("has_140"), 34: f.get("has_030"), 21: None}[cat]
         given = (f["time_item"] != "") if cat == 21 else given
         tod = np.where(given & (f["tod"] < 86400 * 128), f["tod"] / 128.0, np.nan)
-        tods.append(tod), offsets.append(rec.offset), captures.append(rec.capture_time)
+        tods.append(tod)
+        offsets.append(rec.offset)
+        captures.append(rec.capture_time)
         cats.append(np.full(rec.size, cat))
     if not tods:
         return {cat: np.zeros(0) for cat in dec.records}
@@ -102,7 +104,7 @@ def assemble_file(
     sites: SiteLookup,
     names: np.ndarray,
     editions: dict,
-    rejections: Rejections,
+    rejections: RejectedLedger,
 ) -> FileRows:
     """The rows of one decoded file; records set aside go to ``rejections``. ``names``: the SITES
     sensor names; ``editions``: category -> edition used."""

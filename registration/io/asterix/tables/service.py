@@ -25,7 +25,7 @@ def scan_period(north_times: np.ndarray) -> dict:
     """``north_markers`` (count) and ``scan_period_s`` (median, None with fewer than two markers)
     from the north marker times (s)."""
     t = np.sort(np.asarray(north_times, dtype=float))
-    out = {"north_markers": int(t.size), "scan_period_s": None}
+    out: dict[str, int | float | None] = {"north_markers": int(t.size), "scan_period_s": None}
     d = np.diff(t)
     d = d[d > 0]
     if d.size == 0:
@@ -66,7 +66,11 @@ def clock_check(
     ``median_offset_s`` (plot time - time the antenna pointed at the plot's azimuth),
     ``plots_outside_their_sector`` (time stamped before the sector message that opens their sector
     or after the one that closes it)."""
-    out = {"plots_checked": 0, "median_offset_s": None, "plots_outside_their_sector": 0}
+    out: dict[str, int | float | None] = {
+        "plots_checked": 0,
+        "median_offset_s": None,
+        "plots_outside_their_sector": 0,
+    }
     if track_t.size < 2:
         return out
     inside = (plot_t >= track_t[0]) & (plot_t <= track_t[-1])

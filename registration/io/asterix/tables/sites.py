@@ -5,7 +5,7 @@ One row per sensor, columns (units in the names, degrees and metres as in the fl
 | column | meaning | accepted |
 |---|---|---|
 | ``sensor`` | the sensor's id in the fleet tables (also its platform's) | text, unique, not empty |
-| ``sac``, ``sic`` | the System Area and Identification Codes of its ASTERIX data source (I048/010, I034/010) | integers 0-255, the pair unique |
+| ``sac``, ``sic`` | its ASTERIX data source's System Area and Identification Codes | 0-255, the pair unique |
 | ``lat_deg``, ``lon_deg`` | WGS-84 latitude, longitude of the antenna | [-90, 90], [-360, 360] deg |
 | ``alt_m`` | antenna height above the WGS-84 ellipsoid (not above mean sea level) | [-12000, 1e6] m |
 | ``sigma_range_m``, ``sigma_bearing_deg`` | plot noise, one sigma | > 0 m; (0, 20] deg |
@@ -24,6 +24,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
+
+from registration.io.files.unreadable import read_error
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -72,7 +74,7 @@ def read_sites(path: str | Path) -> pd.DataFrame:
         with open(path, newline="", encoding="utf-8-sig") as f:
             lines = [row for row in csv.reader(f)]
     except (OSError, UnicodeDecodeError, csv.Error) as exc:
-        raise ValueError(f"{path}: cannot read it as CSV: {exc}") from exc
+        raise read_error(path, exc, "cannot read it as CSV") from exc
     lines = [row for row in lines if any(cell.strip() for cell in row)]
     if not lines:
         raise ValueError(
@@ -92,6 +94,7 @@ def read_sites(path: str | Path) -> pd.DataFrame:
 
 def _number(source: str, r: int, column: str, cell: object) -> float:
     unit, low, high, strict, required = SITE_COLUMNS[column]
+    assert low is not None and high is not None  # a number column has limits
     text = "" if cell is None or (isinstance(cell, float) and math.isnan(cell)) else str(cell).strip()
     where = f"{source}: row {r}, column {column!r}"
     if text == "":
@@ -133,7 +136,7 @@ def check_sites(frame: pd.DataFrame, source: str = "sites") -> pd.DataFrame:
     if len(frame) == 0:
         raise ValueError(f"{source}: no data rows (the file holds only a header)")
     frame = frame.set_axis(columns, axis=1)
-    out = {}
+    out: dict[str, list] = {}
     for column in columns:
         cells = frame[column].tolist()
         if column == "sensor":
@@ -158,7 +161,7 @@ def check_sites(frame: pd.DataFrame, source: str = "sites") -> pd.DataFrame:
 
 
 def _unique(source: str, values: list, column: str, what: str) -> None:
-    seen = {}
+    seen: dict = {}
     for r, v in enumerate(values):
         if v in seen:
             raise ValueError(

@@ -53,7 +53,7 @@ class Unwrapper:
             if abs(day) <= 1 and abs(since - tod - day * DAY_S) < _CAPTURE_AGREEMENT_S:
                 self.placed_by_capture += 1
                 return int(day)
-        if self.day is None:
+        if self.day is None or self.last_tod is None:  # both set together, after a first file
             return 0
         return self.day + _step(tod - self.last_tod)
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.io.asterix.errors import Rejections
+from registration.io.files.ledger import RejectedLedger
 
 __all__ = ["Verdicts"]
 
@@ -33,9 +33,11 @@ class Verdicts:
         return {str(c): int(k) for c, k in zip(codes, n)}
 
     def report(
-        self, rejections: Rejections, file: str, offset: np.ndarray, packet: np.ndarray, category: int
+        self, rejections: RejectedLedger, file: str, offset: np.ndarray, packet: np.ndarray, category: int
     ) -> None:
         """Add the records set aside to ``rejections``, one call per reason code."""
         for code in np.unique(self.code[self.code != ""].astype(str)):
             m = self.code == code
-            rejections.add(file, offset[m], packet[m], category, str(code), self.reason[m])
+            rejections.add(
+                file, str(code), self.reason[m], offset=offset[m], packet=packet[m], category=category
+            )
