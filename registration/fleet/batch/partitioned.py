@@ -10,7 +10,7 @@ depend on where each partition ran); solve the damped reduced system on the free
 :func:`registration.fleet.batch.schur.damped_step` does; then map each partition's
 back-substitution ``dc_b = V_b^-1 (b_b - W_b dx)`` with its trial sum of squares. The
 Levenberg-Marquardt control, the two phases (windows alone, then everything) and the stopping rule
-are those of :func:`registration.fleet.batch.solver.levenberg_marquardt`, so the estimate is
+are those of :mod:`registration.fleet.batch.levenberg_marquardt`, so the estimate is
 ``solve_batch``'s to rounding. Memory holds one partition at a time (plus the windows'
 coefficients, 3 (d + 1) floats per window) unless partitions are cached in memory; by default
 for files, each partition's design is read and built once, in the setup pass, and kept on local
@@ -43,21 +43,22 @@ from registration.fleet.batch.passes import (
     step_pass,
 )
 from registration.fleet.batch.schur import determined_directions, solve_reduced
-from registration.fleet.batch.solver import (
-    LAMBDA_MAX,
-    LAMBDA_START,
-    TARGETS_FIRST,
-    BatchOptions,
-    NumericalError,
-    progress_bar,
-    time_bias_warnings,
-)
+from registration.fleet.batch.levenberg_marquardt import two_phases
+from registration.fleet.batch.solver import BatchOptions, NumericalError, progress_bar, time_bias_warnings
 from registration.fleet.batch.spill import make_folder, remove_folder
 from registration.fleet.data.layout import StateLayout
 from registration.fleet.observability import fleet_observability
 from registration.fleet.result import ChiSquareCheck, StateEstimates
 
-__all__ = ["PartitionedResult", "run_pass", "solve_batch_partitioned"]
+__all__ = [
+    "PartitionedEquations",
+    "PartitionedResult",
+    "PassPoint",
+    "PassStep",
+    "ReducedSums",
+    "run_pass",
+    "solve_batch_partitioned",
+]
 
 
 def _call(item):
@@ -106,87 +107,101 @@ class PartitionedResult(StateEstimates):
         return tuple(self.layout.names[i] for i in self.layout.free)
 
 
-class _Passes:
-    """The passes of one solve: the tasks, the client, the coefficients and the prior terms."""
+@dataclass(frozen=True)
+class ReducedSums:
+    """The partitions' terms at a point, added in partition order, priors included: the states'
+    block ``U`` (n + 1, n + 1) and right-hand side ``b_x`` (n + 1,) and, per damping ``lam``, the
+    Schur-reduced ``S`` (n + 1, n + 1) and ``r`` (n + 1,) (row/column n: the sink of absent states).
+    ``S`` and ``r`` grow as further damping values are asked for."""
 
-    def __init__(self, tasks, client, layout: StateLayout, coefs: list):
-        self.tasks, self.client, self.coefs = tasks, client, coefs
+    U: np.ndarray
+    b_x: np.ndarray
+    S: dict[float, np.ndarray]
+    r: dict[float, np.ndarray]
+
+
+@dataclass(frozen=True)
+class PassPoint:
+    """A point of the partitioned problem: states ``x`` (n,), each partition's window coefficients
+    (B_p, n_coef, 3) ECEF m, the sum of squares and, once linearized, the reduced sums there."""
+
+    x: np.ndarray
+    coefs: list[np.ndarray]
+    cost: float
+    reduced: ReducedSums | None = None
+
+
+@dataclass(frozen=True)
+class PassStep:
+    """A damped step: states ``dx`` (n,), coefficients per partition, its predicted reduction and
+    the sum of squares at the trial point (the step pass computes both at once)."""
+
+    dx: np.ndarray
+    dcs: list[np.ndarray]
+    predicted: float
+    cost: float
+
+
+class PartitionedEquations:
+    """The normal equations of an archive as sums over its partitions' passes (module docstring), for
+    the Levenberg-Marquardt engine (:class:`registration.fleet.batch.levenberg_marquardt.NormalEquations`):
+    the tasks, the client and the prior terms."""
+
+    def __init__(self, tasks: list[PartitionTask], client, layout: StateLayout):
+        self.tasks, self.client, self.layout = tasks, client, layout
         with np.errstate(divide="ignore"):
             p = layout.prior_sigma
             self.pw2 = np.append(np.where(np.isfinite(p) & (p > 0), 1.0 / p**2, 0.0), 0.0)
 
-    def reduce(self, x: np.ndarray, lams: tuple) -> dict:
-        parts = run_pass(reduce_pass, self.tasks, [(x, c, lams) for c in self.coefs], self.client)
+    def reduce(self, x: np.ndarray, coefs: list[np.ndarray], lams: tuple[float, ...]) -> PassPoint:
+        """The point (x, coefs) with its reduced sums for damping values ``lams`` (one pass)."""
+        parts = run_pass(reduce_pass, self.tasks, [(x, c, lams) for c in coefs], self.client)
         U = sum(p["U"] for p in parts) + np.diag(self.pw2)
         xs = np.append(x, 0.0)
         b_x = sum(p["b_x"] for p in parts) - self.pw2 * xs
         prior = float(np.sum(self.pw2 * xs * xs))
         S = {lam: U + sum(p["S"][i] for p in parts) for i, lam in enumerate(lams)}
         r = {lam: b_x - sum(p["b_x"] - p["r"][i] for p in parts) for i, lam in enumerate(lams)}
-        return {
-            "cost": sum(p["cost"] for p in parts) + prior,
-            "U": U,
-            "b_x": b_x,
-            "S": S,
-            "r": r,
-            "parts": parts,
-        }
+        cost = sum(p["cost"] for p in parts) + prior
+        return PassPoint(x, coefs, cost, ReducedSums(U, b_x, S, r))
 
-    def step(self, x: np.ndarray, point: dict, lam: float, free: np.ndarray, scale, determined) -> tuple:
-        """(dx (n,), dcoefs, predicted reduction, trial cost) of the damped step ``lam`` at ``point``."""
-        if lam not in point["S"]:
-            more = self.reduce(x, (lam,))
-            point["S"][lam], point["r"][lam] = more["S"][lam], more["r"][lam]
-        U = point["U"]
-        S = point["S"][lam] + lam * np.diag(np.diag(U))
+    def scale(self, free: np.ndarray) -> np.ndarray:
+        return self.layout.scale[free]
+
+    def linearize(self, point: PassPoint, lams: tuple[float, ...]) -> PassPoint:
+        return self.reduce(point.x, point.coefs, lams)
+
+    def determined(self, at: PassPoint, free: np.ndarray, scale: np.ndarray) -> np.ndarray:
+        assert at.reduced is not None
+        S0 = at.reduced.S[0.0]
+        return determined_directions(0.5 * (S0 + S0.T)[np.ix_(free, free)], scale)
+
+    def step(
+        self, at: PassPoint, lam: float, free: np.ndarray, scale: np.ndarray, determined: np.ndarray
+    ) -> PassStep:
+        """The damped step ``lam`` at ``at`` and the cost at its trial point (one pass; one more to
+        reduce for ``lam`` if not done yet)."""
+        red, x = at.reduced, at.x
+        assert red is not None
+        if lam not in red.S:
+            more = self.reduce(x, at.coefs, (lam,)).reduced
+            assert more is not None
+            red.S[lam], red.r[lam] = more.S[lam], more.r[lam]
+        U = red.U
+        S = red.S[lam] + lam * np.diag(np.diag(U))
         S = 0.5 * (S + S.T)
         n = x.size
         dx = np.zeros(n + 1)
-        dx[free] = solve_reduced(S[np.ix_(free, free)], point["r"][lam][free], scale, determined)
-        parts = run_pass(step_pass, self.tasks, [(x, c, dx, lam) for c in self.coefs], self.client)
-        b_dot = float(dx[free] @ point["b_x"][free]) + sum(p["b_dot"] for p in parts)
+        dx[free] = solve_reduced(S[np.ix_(free, free)], red.r[lam][free], scale, determined)
+        parts = run_pass(step_pass, self.tasks, [(x, c, dx, lam) for c in at.coefs], self.client)
+        b_dot = float(dx[free] @ red.b_x[free]) + sum(p["b_dot"] for p in parts)
         damp = lam * (float(np.sum(np.diag(U)[free] * dx[free] ** 2)) + sum(p["damp"] for p in parts))
         xs = np.append(x + dx[:n], 0.0)
         cost = sum(p["cost"] for p in parts) + float(np.sum(self.pw2 * xs * xs))
-        return dx[:n], [p["dc"] for p in parts], b_dot + damp, cost
+        return PassStep(dx[:n], [p["dc"] for p in parts], b_dot + damp, cost)
 
-
-def _levenberg_marquardt(
-    passes: _Passes,
-    x: np.ndarray,
-    free: np.ndarray,
-    scale: np.ndarray,
-    options: BatchOptions,
-    relative: float,
-    bar=None,
-):
-    """:func:`registration.fleet.batch.solver.levenberg_marquardt` over the partitions: (x, converged,
-    iterations, cost history); the coefficients are updated in ``passes.coefs``."""
-    lam, nu = LAMBDA_START, 2.0
-    point = passes.reduce(x, (0.0, lam))
-    determined = determined_directions(0.5 * (point["S"][0.0] + point["S"][0.0].T)[np.ix_(free, free)], scale)
-    history, converged, it = [point["cost"]], False, 0
-    for it in range(1, options.max_iterations + 1):
-        accepted = False
-        while lam < LAMBDA_MAX:
-            dx, dcs, pred, cost = passes.step(x, point, lam, free, scale, determined)
-            if pred < max(options.tolerance, relative * point["cost"]) and lam <= 1.0:
-                converged = True
-                break
-            rho = (point["cost"] - cost) / pred if pred > 0 else -1.0
-            if np.isfinite(cost) and rho > 0:
-                lam *= max(1.0 / 3.0, 1.0 - (2.0 * rho - 1.0) ** 3)
-                nu, x, accepted = 2.0, x + dx, True
-                passes.coefs = [c + d for c, d in zip(passes.coefs, dcs)]
-                history.append(cost)
-                break
-            lam, nu = lam * nu, nu * 2.0
-        if bar is not None:
-            bar.update()
-        if converged or not accepted:
-            break
-        point = passes.reduce(x, (lam,))
-    return x, converged, it, history
+    def trial(self, at: PassPoint, step: PassStep) -> PassPoint:
+        return PassPoint(at.x + step.dx, [c + d for c, d in zip(at.coefs, step.dcs)], step.cost)
 
 
 def _setup(
@@ -225,11 +240,11 @@ def _setup(
 
 
 def _final(
-    passes: _Passes, x: np.ndarray, layout: StateLayout, options: BatchOptions, plan: ArchivePlan
+    passes: PartitionedEquations, x: np.ndarray, coefs: list, layout: StateLayout, plan: ArchivePlan
 ) -> tuple:
     """(information with priors (free, free), chi-square check, exclusions) at the solution;
     NumericalError where solve_batch would set windows aside and solve again (module docstring)."""
-    parts = run_pass(final_pass, passes.tasks, [(x, c) for c in passes.coefs], passes.client)
+    parts = run_pass(final_pass, passes.tasks, [(x, c) for c in coefs], passes.client)
     singular, empty = sum(p["singular"] for p in parts), sum(p["empty"] for p in parts)
     if singular or empty:
         raise NumericalError(
@@ -325,16 +340,12 @@ def solve_batch_partitioned(
     folder = make_folder(spill_dir) if spill else None
     try:
         tasks, coefs, n_plots, exclusions, warnings = _setup(plan, source, options, x, client, cache, folder)
-        passes = _Passes(tasks, client, layout, coefs)
+        passes = PartitionedEquations(tasks, client, layout)
         free = layout.free
         with progress_bar(progress, "fleet partitioned solve", unit="iteration") as bar:
-            x, _, it1, h1 = _levenberg_marquardt(
-                passes, x, np.zeros(0, dtype=np.int64), np.zeros(0), options, TARGETS_FIRST, bar
-            )
-            x, converged, it2, h2 = _levenberg_marquardt(
-                passes, x, free, layout.scale[free], options, 0.0, bar
-            )
-        information, chi2, outside = _final(passes, x, layout, options, plan)
+            solved = two_phases(passes, PassPoint(x, coefs, float("nan")), free, options, bar)
+        x, coefs = solved.point.x, solved.point.coefs
+        information, chi2, outside = _final(passes, x, coefs, layout, plan)
     finally:
         if folder is not None:
             _remove_spill(folder, client)
@@ -356,11 +367,11 @@ def solve_batch_partitioned(
         information,
         information_data,
         undetermined,
-        converged,
-        it1 + it2,
-        h1 + h2[1:],
+        solved.converged,
+        solved.iterations,
+        solved.cost_history,
         chi2,
-        passes.coefs,
+        coefs,
         plan.excluded + exclusions + outside,
         warnings + time_bias_warnings(layout, x, options),
         n_plots,

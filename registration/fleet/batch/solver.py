@@ -23,6 +23,7 @@ import numpy as np
 
 from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.initial import initial_coefficients
+from registration.fleet.batch.levenberg_marquardt import levenberg_marquardt, two_phases
 from registration.fleet.batch.normal import (
     Design,
     Evaluation,
@@ -36,13 +37,15 @@ from registration.fleet.data.problem import Exclusion, FleetProblem
 
 __all__ = [
     "BatchOptions",
+    "DesignEquations",
+    "DesignPoint",
+    "DesignStep",
     "Fit",
     "NumericalError",
     "determined_design",
     "exclude_singular",
     "fit",
     "fit_windows",
-    "levenberg_marquardt",
     "outside_when_seen",
     "progress_bar",
     "progress_status",
@@ -50,12 +53,8 @@ __all__ = [
     "time_bias_warnings",
 ]
 
-LAMBDA_START = 1e-3
-LAMBDA_MAX = 1e16
 #: A window whose Jacobi-scaled information has an eigenvalue below this is not determined.
 SINGULAR_BLOCK = 1e-10
-#: The first phase (targets alone) stops when a step would gain less than this share of the cost.
-TARGETS_FIRST = 1e-2
 #: A progress bar (``progress=True``) appears only after this many seconds, and only on a terminal.
 PROGRESS_DELAY_S = 1.0
 
@@ -142,54 +141,57 @@ class Fit:
     warnings: tuple = ()
 
 
-def levenberg_marquardt(
-    design: Design,
-    start: Evaluation,
-    free: np.ndarray,
-    options: BatchOptions,
-    relative: float = 0.0,
-    normal: Normal | None = None,
-    bar=None,
-):
-    """Minimise the sum of squares over the free states and all coefficients from ``start``.
+@dataclass(frozen=True)
+class DesignPoint:
+    """A point of the in-memory problem: its evaluation and, once linearized, its undamped normal
+    equations (None: not yet)."""
 
-    Stops when the predicted reduction is below ``options.tolerance`` or ``relative`` times the
-    sum of squares. Returns (evaluation and normal equations at the solution, converged,
-    iterations, cost per accepted step). ``normal``: the normal equations at ``start`` if known.
-    ``bar``: a :func:`progress_bar`, advanced once per iteration (None: none).
-    """
-    ev = start
-    scale = design.scale[free]
-    determined = None
-    lam, nu = LAMBDA_START, 2.0
-    history, converged, it = [ev.cost], False, 0
-    for it in range(1, options.max_iterations + 1):
-        normal = normal if normal is not None else normal_equations(design, ev)
-        if determined is None:  # structural: found once, at the start
-            determined = determined_directions(
-                reduce(design.blocks, normal, 0.0).S[np.ix_(free, free)], scale
-            )
-        accepted = False
-        while lam < LAMBDA_MAX:
-            dx, dc, pred = damped_step(design.blocks, normal, free, scale, determined, lam)
-            if pred < max(options.tolerance, relative * ev.cost) and lam <= 1.0:
-                converged = True
-                break
-            trial = evaluate(design, ev.x + dx, ev.coef + dc)
-            rho = (ev.cost - trial.cost) / pred if pred > 0 else -1.0
-            if np.isfinite(trial.cost) and rho > 0:
-                lam *= max(1.0 / 3.0, 1.0 - (2.0 * rho - 1.0) ** 3)
-                nu, ev, normal, accepted = 2.0, trial, None, True
-                history.append(ev.cost)
-                break
-            lam, nu = lam * nu, nu * 2.0
-        if bar is not None:
-            bar.set_postfix_str(f"sum of squares {ev.cost:.6g}", refresh=False)
-            bar.update()
-        if converged or not accepted:
-            break
-    normal = normal if normal is not None else normal_equations(design, ev)
-    return ev, normal, converged, it, history
+    evaluation: Evaluation
+    normal: Normal | None = None
+
+    @property
+    def cost(self) -> float:
+        return self.evaluation.cost
+
+
+@dataclass(frozen=True)
+class DesignStep:
+    """A damped step: states ``dx`` (n,; rad, m, 1, s), coefficients ``dc`` (B, n_coef, 3) ECEF m and
+    the predicted reduction of the sum of squares."""
+
+    dx: np.ndarray
+    dc: np.ndarray
+    predicted: float
+
+
+class DesignEquations:
+    """The normal equations of a problem held in memory (:class:`Design`), for the
+    Levenberg-Marquardt engine (:class:`registration.fleet.batch.levenberg_marquardt.NormalEquations`)."""
+
+    def __init__(self, design: Design):
+        self.design = design
+
+    def scale(self, free: np.ndarray) -> np.ndarray:
+        return self.design.scale[free]
+
+    def linearize(self, point: DesignPoint, lams: tuple[float, ...]) -> DesignPoint:
+        if point.normal is not None:
+            return point
+        return DesignPoint(point.evaluation, normal_equations(self.design, point.evaluation))
+
+    def determined(self, at: DesignPoint, free: np.ndarray, scale: np.ndarray) -> np.ndarray:
+        assert at.normal is not None
+        return determined_directions(reduce(self.design.blocks, at.normal, 0.0).S[np.ix_(free, free)], scale)
+
+    def step(
+        self, at: DesignPoint, lam: float, free: np.ndarray, scale: np.ndarray, determined: np.ndarray
+    ) -> DesignStep:
+        assert at.normal is not None
+        return DesignStep(*damped_step(self.design.blocks, at.normal, free, scale, determined, lam))
+
+    def trial(self, at: DesignPoint, step: DesignStep) -> DesignPoint:
+        ev = at.evaluation
+        return DesignPoint(evaluate(self.design, ev.x + step.dx, ev.coef + step.dc))
 
 
 def singular_blocks(design: Design, normal: Normal) -> np.ndarray:
@@ -282,8 +284,11 @@ def fit_windows(
             break
         ev = trial
         normal = normal_equations(design, ev)
-    ev, normal, _, _, _ = levenberg_marquardt(design, ev, np.zeros(0, dtype=np.int64), options, 0.0, normal)
-    return ev, normal
+    solved = levenberg_marquardt(
+        DesignEquations(design), DesignPoint(ev, normal), np.zeros(0, dtype=np.int64), options
+    )
+    assert solved.point.normal is not None
+    return solved.point.evaluation, solved.point.normal
 
 
 #: Solves again after dropping plots that a time bias moves outside their navigation (where
@@ -353,18 +358,6 @@ def _set_aside_outside(problem, design, ev, options):
     return replace(problem, excluded=problem.excluded + _outside_exclusions(problem, outside)), design
 
 
-def _two_phases(
-    design: Design, start: Evaluation, normal: Normal, free: np.ndarray, options: BatchOptions, bar
-):
-    """Levenberg-Marquardt on the target windows alone (states held), then on everything:
-    (evaluation, normal equations, converged, iterations, cost history)."""
-    ev, normal, _, it1, hist1 = levenberg_marquardt(
-        design, start, np.zeros(0, dtype=np.int64), options, TARGETS_FIRST, normal, bar
-    )
-    ev, normal, converged, it2, hist2 = levenberg_marquardt(design, ev, free, options, 0.0, normal, bar)
-    return ev, normal, converged, it1 + it2, hist1 + hist2[1:]
-
-
 def fit(
     problem: FleetProblem,
     options: BatchOptions | None = None,
@@ -399,9 +392,11 @@ def fit(
                     + ")"
                 )
             problem, design, start, normal = found
-            ev, normal, converged, iterations, history = _two_phases(
-                design, start, normal, problem.layout.free, options, bar
+            solved = two_phases(
+                DesignEquations(design), DesignPoint(start, normal), problem.layout.free, options, bar
             )
+            ev, normal = solved.point.evaluation, solved.point.normal
+            assert normal is not None
             last = attempt == MAX_REFITS
             aside = _set_aside_outside(problem, design, ev, options)
             outside = outside_when_seen(design, ev.x)
@@ -432,9 +427,9 @@ def fit(
         design,
         ev.x,
         ev.coef,
-        converged,
-        iterations,
-        history,
+        solved.converged,
+        solved.iterations,
+        solved.cost_history,
         ev,
         normal,
         time_bias_warnings(problem.layout, ev.x, options),
