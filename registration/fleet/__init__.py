@@ -24,13 +24,12 @@ from registration.fleet.association.simulated.clutter import (
     association_scenario,
     association_scores,
 )
-from registration.fleet.batch.covariance import FusedTargets
 from registration.fleet.batch.solve import solve_batch
 from registration.fleet.batch.solver import BatchOptions
 from registration.fleet.data.problem import Exclusion, FleetProblem, build_problem
 from registration.fleet.online.filter import FleetFilter, OnlineOptions, register_online
 from registration.fleet.online.result import OnlineHistory, OnlineResult
-from registration.fleet.result import BatchResult, ChiSquareCheck
+from registration.fleet.result import BatchResult, ChiSquareCheck, FusedTargets
 from registration.fleet.simulation.scenario import FleetScenario, fleet_scenario
 
 __all__ = [

@@ -8,13 +8,34 @@ import numpy as np
 
 from registration.core.consistency import ConsistencyReport
 from registration.core.observability import ObservabilityReport
-from registration.fleet.batch.covariance import FusedTargets
 from registration.fleet.combinations import linear_combination, sigma_text, sum_rows
 from registration.fleet.data.layout import FILE_UNITS, StateLayout
 
-__all__ = ["BatchResult", "ChiSquareCheck", "StateEstimates", "state_lines", "state_rows"]
+__all__ = ["BatchResult", "ChiSquareCheck", "FusedTargets", "StateEstimates", "state_lines", "state_rows"]
 
 _QUANTITY = "squared normalised residual per degree of freedom"
+
+
+@dataclass(frozen=True)
+class FusedTargets:
+    """Fused positions at every instant (target, time) where a target was measured.
+
+    ``target`` (M,) ids, ``time`` (M,) s, ``p_ecef`` (M, 3) m, ``covariance`` (M, 3, 3) m^2,
+    ``n_plots`` (M,) plots at that instant.
+    """
+
+    target: np.ndarray
+    time: np.ndarray
+    p_ecef: np.ndarray
+    covariance: np.ndarray
+    n_plots: np.ndarray
+
+    def of(self, target: str):
+        """(time, p_ecef, covariance) of one target."""
+        sel = self.target == str(target)
+        if not sel.any():
+            raise ValueError(f"no fused positions of target {target!r} (targets: {sorted(set(self.target))})")
+        return self.time[sel], self.p_ecef[sel], self.covariance[sel]
 
 
 @dataclass(frozen=True)

@@ -32,7 +32,7 @@ import numpy as np
 from registration.core.observability import ObservabilityReport
 from registration.core.parallel import map_chunks
 from registration.fleet.batch.blocks import window_grid
-from registration.fleet.batch.covariance import state_covariance
+from registration.fleet.batch.covariance import estimate_from_information
 from registration.fleet.batch.partitions import DEFAULT_NAV_MARGIN_S, ArchivePlan, TablesSource, make_plan
 from registration.fleet.batch.passes import (
     PartitionTask,
@@ -47,7 +47,6 @@ from registration.fleet.batch.levenberg_marquardt import two_phases
 from registration.fleet.batch.solver import BatchOptions, NumericalError, progress_bar, time_bias_warnings
 from registration.fleet.batch.spill import make_folder, remove_folder
 from registration.fleet.data.layout import StateLayout
-from registration.fleet.observability import fleet_observability
 from registration.fleet.result import ChiSquareCheck, StateEstimates
 
 __all__ = [
@@ -349,24 +348,18 @@ def solve_batch_partitioned(
     finally:
         if folder is not None:
             _remove_spill(folder, client)
-    P_free, undetermined = state_covariance(information, layout.scale[free])
-    P = np.zeros((layout.n, layout.n))
-    P[np.ix_(free, free)] = P_free
-    sigma = np.sqrt(np.clip(np.diag(P), 0, None))
-    if undetermined.size:
-        sigma[free[np.linalg.norm(undetermined, axis=1) > 0.1]] = np.inf
     information_data = information - np.diag(passes.pw2[free])
-    report = fleet_observability(information_data, free, layout, sensor_platform, platform_ids, sensor_ids)
-    status = {layout.names[i]: "fixed" for i in layout.fixed}
-    status.update(report.status)
+    known = estimate_from_information(
+        layout, information, information_data, sensor_platform, platform_ids, sensor_ids
+    )
     return PartitionedResult(
         layout,
         x,
-        P,
-        sigma,
+        known.covariance,
+        known.sigma,
         information,
         information_data,
-        undetermined,
+        known.undetermined,
         solved.converged,
         solved.iterations,
         solved.cost_history,
@@ -376,8 +369,8 @@ def solve_batch_partitioned(
         warnings + time_bias_warnings(layout, x, options),
         n_plots,
         plan,
-        report,
-        status,
-        layout.scale[free],
+        known.report,
+        known.status,
+        known.scale,
         tuple(replace(t, spill=None) for t in passes.tasks),
     )
