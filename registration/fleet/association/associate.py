@@ -45,7 +45,7 @@ from registration.fleet.association.references import name_by_references
 from registration.fleet.association.report import plot_report, track_notes
 from registration.fleet.association.result import AssociationResult
 from registration.fleet.association.solves import Registrar
-from registration.fleet.batch.solve import solve_batch
+from registration.fleet.batch.estimate import solve_batch
 from registration.fleet.batch.solver import progress_bar, progress_status
 
 __all__ = ["AssociationOptions", "AssociationResult", "associate_and_register"]

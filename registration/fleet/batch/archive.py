@@ -66,6 +66,8 @@ class ParquetSource:
     """The fleet tables of ``folder`` (module docstring) as a partition source
     (:mod:`registration.fleet.batch.partitions`); ``batch_rows``: rows per batch of the first passes."""
 
+    in_memory = False
+
     def __init__(self, folder, file_columns: dict | None = None, batch_rows: int = 200_000):
         self.folder = Path(folder)
         self.file_columns = file_columns

@@ -35,12 +35,13 @@ import numpy as np
 from registration.core.frames import ecef2geodetic
 from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.covariance import fused_targets
-from registration.fleet.batch.normal import evaluate, make_design, normal_equations
-from registration.fleet.batch.partitioned import run_pass
-from registration.fleet.batch.passes import PartitionTask, partition_problem
+from registration.fleet.batch.design import make_design
+from registration.fleet.batch.normal import evaluate, normal_equations
+from registration.fleet.batch.partitioned.equations import run_pass
+from registration.fleet.batch.partitioned.task import PartitionTask, partition_problem
 from registration.fleet.batch.residuals import chi_square_parts
 from registration.fleet.batch.schur import reduce
-from registration.fleet.batch.solver import outside_when_seen
+from registration.fleet.batch.set_aside import outside_when_seen
 from registration.fleet.corrected import corrected_positions
 
 __all__ = [

@@ -7,7 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.fleet.batch.normal import Design, Evaluation
+from registration.fleet.batch.design import Design
+from registration.fleet.batch.normal import Evaluation
 from registration.fleet.batch.solver import BatchOptions, determined_design, fit_windows
 from registration.fleet.data.problem import FleetProblem
 from registration.fleet.result import ChiSquareCheck

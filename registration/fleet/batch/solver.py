@@ -22,18 +22,19 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from registration.fleet.batch.blocks import make_blocks
+from registration.fleet.batch.design import Design, make_design
 from registration.fleet.batch.initial import initial_coefficients
 from registration.fleet.batch.levenberg_marquardt import levenberg_marquardt, two_phases
-from registration.fleet.batch.normal import (
-    Design,
-    Evaluation,
-    Normal,
-    evaluate,
-    make_design,
-    normal_equations,
-)
+from registration.fleet.batch.normal import Evaluation, Normal, evaluate, normal_equations
 from registration.fleet.batch.schur import damped_step, determined_directions, masked_blocks, reduce
-from registration.fleet.data.problem import Exclusion, FleetProblem
+from registration.fleet.batch.set_aside import (
+    exclude_singular,
+    outside_exclusions,
+    outside_when_seen,
+    set_aside_outside,
+    time_bias_warnings,
+)
+from registration.fleet.data.problem import FleetProblem
 
 __all__ = [
     "BatchOptions",
@@ -43,14 +44,11 @@ __all__ = [
     "Fit",
     "NumericalError",
     "determined_design",
-    "exclude_singular",
     "fit",
     "fit_windows",
-    "outside_when_seen",
     "progress_bar",
     "progress_status",
     "singular_blocks",
-    "time_bias_warnings",
 ]
 
 #: A window whose Jacobi-scaled information has an eigenvalue below this is not determined.
@@ -205,44 +203,6 @@ def singular_blocks(design: Design, normal: Normal) -> np.ndarray:
     return np.flatnonzero(~(w[:, 0] > SINGULAR_BLOCK * w[:, -1]))
 
 
-def exclude_singular(
-    problem: FleetProblem, design: Design, bad: np.ndarray, outside: np.ndarray | None = None
-) -> FleetProblem:
-    """The problem without the plots of the windows ``bad`` (:func:`singular_blocks`), each recorded
-    as an exclusion. ``outside`` (N,) bool, given when the windows were found at the solution: the
-    plots seen outside their platform's navigation there (:func:`outside_when_seen`), which weighed
-    0; a window left undetermined by setting them aside says so."""
-    blk = design.blocks
-    drop = np.zeros(problem.n_plots, dtype=bool)
-    exclusions = []
-    for b in bad:
-        end = blk.block_start[b + 1] if b + 1 < blk.n_blocks else blk.order.size
-        plots = blk.order[blk.block_start[b] : end]
-        drop[plots] = True
-        n_out = int(outside[plots].sum()) if outside is not None else 0
-        held = plots[~outside[plots]] if n_out else plots
-        sensors = sorted({problem.sensor_ids[s] for s in problem.sensor[held]})
-        why = f"its position is not determined by the plots of {', '.join(sensors) or 'no sensor'} in this window"
-        if n_out:
-            why = (
-                f"{why}, once its {n_out} plots seen outside their platform's navigation (reported time - "
-                "time bias) are set aside at the solution"
-            )
-        elif outside is not None:
-            why += " at the solution (its geometry at the estimate; it was determined at the start)"
-        t = problem.time[plots]
-        exclusions.append(
-            Exclusion(
-                problem.target_ids[blk.block_target[b]],
-                f"singular geometry: {why}",
-                int(plots.size),
-                float(t.min()),
-                float(t.max()),
-            )
-        )
-    return problem.drop_plots(drop, exclusions)
-
-
 def determined_design(
     problem: FleetProblem, options: BatchOptions, x0: np.ndarray, priors: bool = True, coefficients=None
 ):
@@ -299,65 +259,6 @@ MAX_TIME_BIAS_REFITS = 3
 MAX_REFITS = 10
 
 
-def outside_when_seen(design: Design, x: np.ndarray) -> np.ndarray:
-    """(N,) bool per plot of the design's problem: seen (reported time minus its sensor's time
-    bias under states ``x``) outside its platform's navigation time span."""
-    blk = design.blocks
-    out = np.zeros(blk.order.size, dtype=bool)
-    if design.time_biased:
-        out[blk.order] = design.seen_at(design.seen_time(x))[2][design.slot]
-    return out
-
-
-def _outside_exclusions(problem: FleetProblem, outside: np.ndarray) -> tuple[Exclusion, ...]:
-    """One exclusion per target of the plots ``outside`` (N,)."""
-    out = []
-    for k in np.unique(problem.target[outside]):
-        sel = outside & (problem.target == k)
-        t = problem.time[sel]
-        out.append(
-            Exclusion(
-                problem.target_ids[k],
-                "seen outside its platform's navigation once its sensor's time "
-                "bias is applied (reported time - time bias)",
-                int(sel.sum()),
-                float(t.min()),
-                float(t.max()),
-            )
-        )
-    return tuple(out)
-
-
-def time_bias_warnings(layout, x: np.ndarray, options: BatchOptions) -> tuple[str, ...]:
-    """A warning per sensor whose time bias estimate exceeds half the window length: the windows'
-    polynomials then extrapolate far and the estimate is not to be trusted."""
-    out = []
-    for s in np.flatnonzero(layout.time_bias_index >= 0):
-        i = int(layout.time_bias_index[s])
-        if options.window_s > 0 and abs(x[i]) > 0.5 * options.window_s:
-            out.append(
-                f"{layout.labels[i]} is {x[i]:+.3g} s, more than half the {options.window_s:g} s windows: "
-                f"not to be trusted; register again with longer windows (window_s >= {4 * abs(x[i]):.3g} s)"
-            )
-    return tuple(out)
-
-
-def _set_aside_outside(problem, design, ev, options):
-    """After a fit with time biases, the plots seen outside their navigation, which weighed 0 in
-    the evaluations (registration.fleet.batch.normal), set aside for good: (problem with their
-    exclusions recorded, design with their weights 0), or None when that would leave a window
-    undetermined (then the caller drops the plots and solves anew)."""
-    outside = outside_when_seen(design, ev.x)
-    if not outside.any():
-        return problem, design
-    rows = np.zeros(design.weight.shape[0], dtype=bool)
-    rows[design.slot] = outside[design.blocks.order]
-    design = replace(design, weight=np.where(rows[:, None], 0.0, design.weight))
-    if np.any(np.add.reduceat(design.weight.any(axis=1).astype(np.int64), design.block_start) == 0):
-        return None
-    return replace(problem, excluded=problem.excluded + _outside_exclusions(problem, outside)), design
-
-
 def fit(
     problem: FleetProblem,
     options: BatchOptions | None = None,
@@ -398,11 +299,11 @@ def fit(
             ev, normal = solved.point.evaluation, solved.point.normal
             assert normal is not None
             last = attempt == MAX_REFITS
-            aside = _set_aside_outside(problem, design, ev, options)
+            aside = set_aside_outside(problem, design, ev.x)
             outside = outside_when_seen(design, ev.x)
             if aside is None and drops < MAX_TIME_BIAS_REFITS and not last:  # a window would be left empty
                 problem, x0, drops = (
-                    problem.drop_plots(outside, _outside_exclusions(problem, outside)),
+                    problem.drop_plots(outside, outside_exclusions(problem, outside)),
                     ev.x,
                     drops + 1,
                 )
@@ -432,5 +333,5 @@ def fit(
         solved.cost_history,
         ev,
         normal,
-        time_bias_warnings(problem.layout, ev.x, options),
+        time_bias_warnings(problem.layout, ev.x, options.window_s),
     )
