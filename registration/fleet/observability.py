@@ -284,12 +284,12 @@ def fleet_observability(
     w, v = np.linalg.eigh(Js) if free.size else (np.zeros(0), np.zeros((0, 0)))
     null, weak = v[:, w < UNOBSERVABLE_BELOW], v[:, (w >= UNOBSERVABLE_BELOW) & (w < WEAK_BELOW)]
     report = ObservabilityReport(singular_values=np.clip(w, 0, None)[::-1])
-    patterns = [
+    found = [
         ((_level_text(layout, pid, sensors, False), _level_text(layout, pid, sensors, True), True), vec)
         for pid, sensors, vec in _level_patterns(layout, free, sensor_platform, platform_ids, sensor_ids)
     ]
-    patterns += [((*texts, False), vec) for texts, vec in _common_clock(layout, free)]
-    patterns = [(texts, vec, vec / d / np.linalg.norm(vec / d)) for texts, vec in patterns]
+    found += [((*texts, False), vec) for texts, vec in _common_clock(layout, free)]
+    patterns = [(texts, vec, vec / d / np.linalg.norm(vec / d)) for texts, vec in found]
     named = _named_structural(Js, null, weak, layout, free, patterns)
     for is_unobs, comb, _ in named:
         (report.unobservable if is_unobs else report.weak).append(comb)

@@ -20,7 +20,7 @@ from registration.core.frames import ecef2geodetic
 from registration.core.plotting import OKABE_ITO, label_style, pyplot, save_figure
 from registration.fleet.combinations import SUM_STATUS
 from registration.fleet.corrected import corrected_positions
-from registration.fleet.data.layout import FILE_UNITS
+from registration.fleet.data.layout import ELEVATION_BIAS_COLUMN, FILE_UNITS
 from registration.fleet.data.problem import FleetProblem
 from registration.fleet.result import BatchResult
 
@@ -56,7 +56,7 @@ def corrected_plot_positions(problem: FleetProblem, x: np.ndarray) -> tuple[np.n
     xs = np.append(np.asarray(x, dtype=np.float64), 0.0)  # the sink (absent state) reads 0
     state = layout.sensor_states(problem.sensor[sel], problem.sensor_platform)
     meas = problem.meas[sel].copy()
-    meas[:, 2] = np.where(problem.mask[sel, 2], meas[:, 2], xs[state[:, 5]])
+    meas[:, 2] = np.where(problem.mask[sel, 2], meas[:, 2], xs[state[:, ELEVATION_BIAS_COLUMN]])
     nav = problem.seen(x, sel)[1]
     p = corrected_positions(nav, state, xs, problem.sensor_lever[problem.sensor[sel]], meas)
     return p, sel
@@ -96,11 +96,14 @@ def _draw_rows(ax, rows: list[dict]) -> None:
 
 
 def _legend_handles(rows: list[dict]) -> list:
+    from matplotlib.artist import Artist
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
     kinds = {_kind(r) for r in rows}
-    handles = [Patch(color=c, alpha=0.7, label=label) for kind, (label, c) in _KINDS.items() if kind in kinds]
+    handles: list[Artist] = [
+        Patch(color=c, alpha=0.7, label=label) for kind, (label, c) in _KINDS.items() if kind in kinds
+    ]
     if "undetermined" in kinds:
         handles.append(
             Patch(

@@ -134,6 +134,14 @@ class StateEstimates:
     ``layout``, ``estimate``, ``covariance``, ``sigma``, ``status``, ``observability``,
     ``undetermined`` and ``scale`` (:class:`BatchResult` and the partitioned solver's result)."""
 
+    layout: StateLayout
+    estimate: np.ndarray  # (n,) rad, m, 1, s
+    covariance: np.ndarray  # (n, n)
+    sigma: np.ndarray  # (n,)
+    status: dict
+    undetermined: np.ndarray  # (n_free, k) scaled
+    scale: np.ndarray  # (n_free,)
+
     def value(self, name: str) -> float:
         return float(self.estimate[self.layout.index(name)])
 

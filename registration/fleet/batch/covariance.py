@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from registration.core.observability import UNOBSERVABLE_BELOW, ObservabilityReport
-from registration.fleet.batch.normal import positions
+from registration.fleet.batch.normal import Evaluation, Normal, positions
 from registration.fleet.batch.schur import Reduced, reduce
 from registration.fleet.batch.solver import NumericalError, singular_blocks
 from registration.fleet.data.layout import StateLayout
@@ -39,8 +39,8 @@ __all__ = [
 class Solution:
     """Residuals, normal equations and their reduction at the estimate (undamped)."""
 
-    evaluation: object
-    normal: object
+    evaluation: Evaluation
+    normal: Normal
     reduced: Reduced
     information_data: np.ndarray  # (n_free, n_free): data only (priors removed)
     information: np.ndarray  # (n_free, n_free): data and priors

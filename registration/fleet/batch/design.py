@@ -12,12 +12,14 @@ used coefficients; :class:`SurfaceRows`).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from numpy.polynomial import legendre
 
 from registration.core.frames import ecef2geodetic, enu2ecef_rotation
 from registration.fleet.batch.blocks import Blocks
+from registration.fleet.data.layout import ATTITUDE_COLUMNS, BIAS_COLUMNS, TIME_BIAS_COLUMN
 from registration.fleet.data.navigation import SeenNavigation
 from registration.fleet.data.problem import FleetProblem
 
@@ -51,13 +53,13 @@ def surface_rows(problem: FleetProblem, blocks: Blocks) -> SurfaceRows | None:
     if on.size == 0:
         return None
     used = blocks.coef_mask[on].sum(axis=1)
-    block, tau = [], []
+    blocks_k, taus_k = [], []
     for k in np.unique(used):
         which = on[used == k]
         nodes = legendre.leggauss(int(k))[0]
-        block.append(np.repeat(which, k))
-        tau.append(np.tile(nodes, which.size))
-    block, tau = np.concatenate(block), np.concatenate(tau)
+        blocks_k.append(np.repeat(which, k))
+        taus_k.append(np.tile(nodes, which.size))
+    block, tau = np.concatenate(blocks_k), np.concatenate(taus_k)
     order = np.argsort(block, kind="stable")
     block, tau = block[order], tau[order]
     time = blocks.block_centre[block] + tau * blocks.block_half[block]
@@ -65,7 +67,7 @@ def surface_rows(problem: FleetProblem, blocks: Blocks) -> SurfaceRows | None:
     return SurfaceRows(block, blocks.basis_at(block, time), alt[target], 1.0 / sigma[target])
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Design:
     """The problem's plots in padded block order, ready for evaluation.
 
@@ -90,18 +92,17 @@ class Design:
     ref_p: np.ndarray  # (R', 3) ECEF m
     ref_weight: np.ndarray  # (R',) 1 / sigma (1/m)
     prior_weight: np.ndarray  # (n,) 1 / prior sigma (0: no prior; fixed states are not free)
-    scale: (
-        np.ndarray
-    )  # (n,) prior or reference sigma of each state (registration.fleet.data.layout.state_scale)
+    # (n,) prior or reference sigma of each state (registration.fleet.data.layout.state_scale)
+    scale: np.ndarray
     time: np.ndarray  # (rows,) reported plot time (s)
-    seen_at: object = (
-        None  # with time biases: times (rows,) -> (nav, rate, outside); navigation.SeenNavigation
-    )
-    seen_cache: dict = field(default_factory=dict)  # the seen basis and navigation of the latest time biases
-    ref_whiten: np.ndarray | None = (
-        None  # (R', 3, 3) 1/m: L of reference_whitening; None: every sigma_up == sigma
-    )
-    surface: SurfaceRows | None = None  # the surface targets' height constraints; None: no surface target
+    # with time biases: times (rows,) -> (nav, rate, outside) (navigation.SeenNavigation); else None
+    seen_at: Any = None
+    # the seen basis and navigation of the latest time biases
+    seen_cache: dict = field(default_factory=dict)
+    # (R', 3, 3) 1/m: L of reference_whitening; None: every sigma_up == sigma
+    ref_whiten: np.ndarray | None = None
+    # the surface targets' height constraints; None: no surface target
+    surface: SurfaceRows | None = None
 
     @property
     def n_reference_values(self) -> int:
@@ -114,12 +115,12 @@ class Design:
     @property
     def att_state(self) -> np.ndarray:
         """(rows, 3) state indices of the platform's attitude errors."""
-        return self.state[:, :3]
+        return self.state[:, ATTITUDE_COLUMNS]
 
     @property
     def bias_state(self) -> np.ndarray:
         """(rows, 3) state indices of the sensor's biases."""
-        return self.state[:, 3:6]
+        return self.state[:, BIAS_COLUMNS]
 
     @property
     def extended(self) -> bool:
@@ -135,7 +136,7 @@ class Design:
         the reported time minus the sensor's time bias."""
         if not self.time_biased:
             return self.time
-        return self.time - np.append(x, 0.0)[self.state[:, 7]]
+        return self.time - np.append(x, 0.0)[self.state[:, TIME_BIAS_COLUMN]]
 
 
 def reference_whitening(p_ecef: np.ndarray, sigma: np.ndarray, sigma_up: np.ndarray) -> np.ndarray:
@@ -178,33 +179,35 @@ def make_design(problem: FleetProblem, blocks: Blocks) -> Design:
                 "windows' polynomials; give window_s > 0 or drop the prior_time_bias column"
             )
 
+        assert problem.tracks is not None  # a problem with time biases has its navigation tracks
         seen_at = SeenNavigation(
             problem.tracks, problem.platform_ids, problem.platform[o], sensor, problem.time[o]
         )
     used = blocks.ref_index
-    sigma, sigma_up = refs.sigma[used], refs.sigma_up[used]
+    sigma = refs.sigma[used]
+    sigma_up = sigma if refs.sigma_up is None else refs.sigma_up[used]
     whiten = (
         None if np.array_equal(sigma, sigma_up) else reference_whitening(refs.p_ecef[used], sigma, sigma_up)
     )
     return Design(
-        blocks,
-        layout.n,
-        blocks.chunk_slot,
-        real,
-        blocks.block[source],
-        blocks.basis[source],
-        blocks.chunk_slot[blocks.block_start],
-        problem.nav[o],
-        problem.meas[o],
-        weight,
-        problem.sensor_lever[sensor],
-        state,
-        refs.p_ecef[used],
-        1.0 / sigma,
-        prior_weight,
-        layout.scale,
-        problem.time[o],
-        seen_at,
+        blocks=blocks,
+        n_state=layout.n,
+        slot=blocks.chunk_slot,
+        real=real,
+        block=blocks.block[source],
+        basis=blocks.basis[source],
+        block_start=blocks.chunk_slot[blocks.block_start],
+        nav=problem.nav[o],
+        meas=problem.meas[o],
+        weight=weight,
+        lever=problem.sensor_lever[sensor],
+        state=state,
+        ref_p=refs.p_ecef[used],
+        ref_weight=1.0 / sigma,
+        prior_weight=prior_weight,
+        scale=layout.scale,
+        time=problem.time[o],
+        seen_at=seen_at,
         ref_whiten=whiten,
         surface=surface_rows(problem, blocks),
     )

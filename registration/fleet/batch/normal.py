@@ -50,6 +50,7 @@ import numpy as np
 from registration import _codegen
 from registration.fleet.batch.blocks import Blocks
 from registration.fleet.batch.design import Design
+from registration.fleet.data.layout import TIME_BIAS_COLUMN
 
 __all__ = ["Evaluation", "Normal", "chunk_positions", "evaluate", "normal_equations", "positions"]
 
@@ -113,7 +114,7 @@ def _extended_rows(design: Design, xs: np.ndarray, coef: np.ndarray) -> np.ndarr
     basis, nav, weight = design.basis, design.nav, design.weight
     v, rate = np.zeros((basis.shape[0], 3)), np.zeros((basis.shape[0], 6))
     if design.time_biased:
-        basis, basis_rate, nav, rate, aside = _seen(design, xs[state[:, 7]])
+        basis, basis_rate, nav, rate, aside = _seen(design, xs[state[:, TIME_BIAS_COLUMN]])
         v = chunk_positions(design, basis_rate, coef)
         if aside.any():
             weight = np.where(aside[:, None], 0.0, weight)

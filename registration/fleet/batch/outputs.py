@@ -43,6 +43,7 @@ from registration.fleet.batch.residuals import chi_square_parts
 from registration.fleet.batch.schur import reduce
 from registration.fleet.batch.set_aside import outside_when_seen
 from registration.fleet.corrected import corrected_positions
+from registration.fleet.data.layout import ELEVATION_BIAS_COLUMN
 
 __all__ = [
     "CHANNELS",
@@ -171,7 +172,7 @@ def _sample(problem, x: np.ndarray, residual: np.ndarray, every: int) -> dict:
     for name, states in (("measured", np.zeros(layout.n)), ("corrected", np.asarray(x, dtype=np.float64))):
         xs = np.append(states, 0.0)
         m = meas.copy()
-        m[:, 2] = np.where(problem.mask[sel, 2], m[:, 2], xs[state[:, 5]])
+        m[:, 2] = np.where(problem.mask[sel, 2], m[:, 2], xs[state[:, ELEVATION_BIAS_COLUMN]])
         nav = problem.seen(states, sel)[1]
         lat, lon, _ = ecef2geodetic(
             corrected_positions(nav, state, xs, problem.sensor_lever[problem.sensor[sel]], m)
@@ -262,7 +263,8 @@ def _reduce(found: list, target_ids: tuple, sample_max: int, every: int, tables)
     S = len(sensor_ids)
     count, total, squares = np.zeros((S, 3), dtype=np.int64), np.zeros((S, 3)), np.zeros((S, 3))
     hist = np.zeros((3, HIST_BINS), dtype=np.int64)
-    by_target, by_reference = {}, {}
+    by_target: dict[str, tuple[float, int]] = {}
+    by_reference: dict[str, tuple[float, int]] = {}
     parts = {
         key: (0.0, 0) for f in found for key in f["parts"]
     }  # plots, references and, with a surface, surface

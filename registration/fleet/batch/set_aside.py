@@ -48,13 +48,13 @@ def exclude_singular(
     0; a window left undetermined by setting them aside says so."""
     blk = design.blocks
     drop = np.zeros(problem.n_plots, dtype=bool)
-    exclusions = []
+    exclusions: list[Exclusion] = []
     for b in bad:
         end = blk.block_start[b + 1] if b + 1 < blk.n_blocks else blk.order.size
         plots = blk.order[blk.block_start[b] : end]
         drop[plots] = True
         n_out = int(outside[plots].sum()) if outside is not None else 0
-        held = plots[~outside[plots]] if n_out else plots
+        held = plots[~outside[plots]] if outside is not None and n_out else plots
         sensors = sorted({problem.sensor_ids[s] for s in problem.sensor[held]})
         why = f"its position is not determined by the plots of {', '.join(sensors) or 'no sensor'} in this window"
         if n_out:

@@ -122,7 +122,7 @@ class BatchOptions:
             raise ValueError("max_iterations must be >= 1 and tolerance > 0")
 
 
-@dataclass
+@dataclass(kw_only=True)
 class Fit:
     """The solution of the least-squares problem and how it was reached; ``evaluation`` and
     ``normal`` are the residuals and the undamped normal equations at the solution."""
@@ -324,14 +324,14 @@ def fit(
                 )
             problem, x0 = exclude_singular(problem, design, bad, outside), ev.x
     return Fit(
-        problem,
-        design,
-        ev.x,
-        ev.coef,
-        solved.converged,
-        solved.iterations,
-        solved.cost_history,
-        ev,
-        normal,
-        time_bias_warnings(problem.layout, ev.x, options.window_s),
+        problem=problem,
+        design=design,
+        x=ev.x,
+        coef=ev.coef,
+        converged=solved.converged,
+        iterations=solved.iterations,
+        cost_history=solved.cost_history,
+        evaluation=ev,
+        normal=normal,
+        warnings=time_bias_warnings(problem.layout, ev.x, options.window_s),
     )

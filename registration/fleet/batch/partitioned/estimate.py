@@ -20,7 +20,7 @@ them aside would empty a window, raise NumericalError (``solve_batch`` solves ag
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -68,9 +68,9 @@ class PartitionedResult(StateEstimates):
     warnings: tuple
     n_plots: int
     plan: ArchivePlan
-    observability: ObservabilityReport | None = None
-    status: dict = field(default_factory=dict)
-    scale: np.ndarray | None = None
+    observability: ObservabilityReport
+    status: dict
+    scale: np.ndarray
     tasks: tuple = ()  # the partitions solved, in the order of ``coefficients`` (without the spill folder, gone)
 
     @property

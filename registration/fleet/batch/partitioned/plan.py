@@ -124,7 +124,11 @@ def _codes(values) -> tuple[np.ndarray, list[str]]:
 def _first_pass(source) -> tuple:
     """Per target in order of first appearance: (ids, first time, last time, plots, sensors seen),
     and the number of plots; ValueError naming the plots file for a time that is not finite."""
-    order, t_min, t_max, count, pairs = {}, {}, {}, {}, set()
+    order: dict[str, int] = {}
+    t_min: dict[str, float] = {}
+    t_max: dict[str, float] = {}
+    count: dict[str, int] = {}
+    pairs: set[tuple[str, str]] = set()
     n = 0
     for batch in source.plot_batches(("time", "sensor", "target")):
         t = np.asarray(batch["time"], dtype=np.float64)
@@ -146,7 +150,7 @@ def _first_pass(source) -> tuple:
         n += t.size
     if n == 0:
         raise ValueError(f"{source.name('plots')}: the table has no rows, so there is nothing to register")
-    ids = sorted(order, key=order.get)
+    ids = sorted(order, key=lambda g: order[g])
     n_sensors = {g: 0 for g in ids}
     for g, _ in pairs:
         n_sensors[g] += 1

@@ -104,10 +104,10 @@ def partition_problem(task: PartitionTask) -> FleetProblem | None:
         w = window_index(plan, np.maximum(target, 0), cols.time)[0]
         gone = np.isin(target * (1 << 32) + w, task.dropped[:, 0] * (1 << 32) + task.dropped[:, 1])
         keep &= ~gone
-    keep = np.flatnonzero(keep)
-    if keep.size == 0:
+    rows = np.flatnonzero(keep)
+    if rows.size == 0:
         return None
-    sensor, time = cols.sensor[keep], cols.time[keep]
+    sensor, time = cols.sensor[rows], cols.time[rows]
     refs = read_references(_read(src, "reference", src.read_references, lo, hi), plan.all_targets)
     ref_target = index_of(refs.target, plan.target_ids)
     ref_keep = ref_target >= 0
@@ -137,11 +137,11 @@ def partition_problem(task: PartitionTask) -> FleetProblem | None:
         layout=layout,
         time=time,
         sensor=sensor,
-        target=target[keep],
-        meas=cols.meas[keep],
-        mask=cols.mask[keep],
+        target=target[rows],
+        meas=cols.meas[rows],
+        mask=cols.mask[rows],
         nav=nav,
-        row=keep,
+        row=rows,
         n_input_plots=int(cols.time.shape[0]),
         references=refs,
         ref_target=index_of(refs.target, plan.target_ids),
