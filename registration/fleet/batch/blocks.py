@@ -146,7 +146,8 @@ def window_grid(t0: np.ndarray, t1: np.ndarray, window_s: float) -> tuple[np.nda
 def window_of(
     t0: np.ndarray, count: np.ndarray, length: np.ndarray, target: np.ndarray, time: np.ndarray
 ) -> np.ndarray:
-    """(M,) index of the window (0 .. count - 1 of its target) that time ``time`` (s) of target ``target`` falls in."""
+    """(M,) index of the window (0 .. count - 1 of its target) that time ``time`` (s) of target
+    ``target`` falls in."""
     return np.clip(np.floor((time - t0[target]) / length[target]), 0, count[target] - 1).astype(np.int64)
 
 

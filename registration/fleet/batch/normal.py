@@ -17,8 +17,9 @@ in their block form:
 A reference position ``y`` (sigma s) of a target adds the residual ``(y - p(t)) / s``; the prior
 of state i adds ``(0 - x_i) / sigma_i``. A reference whose vertical sigma ``s_up`` differs from its
 horizontal one is whitened in its local frame instead: ``e = L (y - p(t))`` with
-``L = diag(1/s, 1/s, 1/s_up) R_enu_ecef(lat, lon of y)`` (:func:`registration.fleet.batch.design.reference_whitening`), so its
-three residuals are east, north and up; its terms are ``V += sum basis_k basis_m L^T L`` and
+``L = diag(1/s, 1/s, 1/s_up) R_enu_ecef(lat, lon of y)``
+(:func:`registration.fleet.batch.design.reference_whitening`), so its three residuals are east,
+north and up; its terms are ``V += sum basis_k basis_m L^T L`` and
 ``b_c += basis_k L^T e``. While every reference used has ``s_up == s`` the scalar weight ``1/s``
 is used as before (the same numbers, bit for bit). All sums over plots are segment sums over the
 (block, sensor) order: no Python loop over plots.

@@ -229,11 +229,11 @@ class ArchiveOutputs:
 
     ``sensor_ids``; ``count`` (S, 3) values per sensor and channel (:data:`CHANNELS`), ``mean`` and
     ``rms`` (S, 3) of their whitened residuals (NaN without values), ``squares`` (S, 3) their sums of
-    squares; ``by_target`` and ``by_reference`` {id: (sum of squares, values)}; ``hist`` (3,
-    HIST_BINS) counts per channel over [-HIST_LIMIT, HIST_LIMIT]; ``parts`` the chi-square parts
-    {"plots", "references", with surface targets "surface": (sum of squares, values)}; ``fused_rows`` rows of fused targets in
-    ``n_parts`` parts; ``sample`` the figures' plots (module docstring), at most ``sample_max``;
-    ``tables`` the fused tables when they were returned rather than written (else None).
+    squares; ``by_target`` and ``by_reference`` {id: (sum of squares, values)}; ``hist`` (3, HIST_BINS)
+    counts per channel over [-HIST_LIMIT, HIST_LIMIT]; ``parts`` the chi-square parts {"plots",
+    "references", with surface targets "surface": (sum of squares, values)}; ``fused_rows`` rows of fused
+    targets in ``n_parts`` parts; ``sample`` the figures' plots (module docstring), at most
+    ``sample_max``; ``tables`` the fused tables when they were returned rather than written (else None).
     """
 
     sensor_ids: tuple

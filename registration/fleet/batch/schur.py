@@ -2,8 +2,8 @@
 Schur complement, as in bundle adjustment.
 
 With ``V_b`` the block of window b, ``W_g`` the coupling of group g (one sensor in one window)
-with its w states (6, or 11 with the extended errors), ``U`` the states' block and damping ``lambda D`` (Marquardt: D the diagonal
-of the normal matrix):
+with its w states (6, or 11 with the extended errors), ``U`` the states' block and damping
+``lambda D`` (Marquardt: D the diagonal of the normal matrix):
 
 * with the groups of block b side by side, ``W_b`` (q x w g) over the states ``local_state[b]``:
   ``Y_b = V_b^-1 W_b``, ``y_b = V_b^-1 b_c,b`` (batched inverses of the small blocks);

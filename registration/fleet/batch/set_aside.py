@@ -56,7 +56,10 @@ def exclude_singular(
         n_out = int(outside[plots].sum()) if outside is not None else 0
         held = plots[~outside[plots]] if outside is not None and n_out else plots
         sensors = sorted({problem.sensor_ids[s] for s in problem.sensor[held]})
-        why = f"its position is not determined by the plots of {', '.join(sensors) or 'no sensor'} in this window"
+        why = (
+            f"its position is not determined by the plots of {', '.join(sensors) or 'no sensor'} "
+            "in this window"
+        )
         if n_out:
             why = (
                 f"{why}, once its {n_out} plots seen outside their platform's navigation (reported time - "

@@ -71,7 +71,8 @@ class PartitionedResult(StateEstimates):
     observability: ObservabilityReport
     status: dict
     scale: np.ndarray
-    tasks: tuple = ()  # the partitions solved, in the order of ``coefficients`` (without the spill folder, gone)
+    # the partitions solved, in the order of ``coefficients`` (without the spill folder, gone)
+    tasks: tuple = ()
 
     @property
     def free_names(self) -> tuple[str, ...]:

@@ -2,10 +2,10 @@
 pass of the partitioned solver (:mod:`registration.fleet.batch.partitioned.estimate`): per pass its
 sums at the current estimate.
 
-Each function takes one :class:`~registration.fleet.batch.partitioned.task.PartitionTask` and the
-current states and coefficients and returns a small typed result of arrays; it is pure (its result depends on its arguments only), so a pass can run in
-this process or on Dask workers, and a lost worker's task run again gives the same result. Two
-caches save time and change no result:
+Each function takes one :class:`~registration.fleet.batch.partitioned.task.PartitionTask` and the current
+states and coefficients and returns a small typed result of arrays; it is pure (its result depends on its
+arguments only), so a pass can run in this process or on Dask workers, and a lost worker's task run again
+gives the same result. Two caches save time and change no result:
 
 * in memory, per process, the design and latest evaluations of ``task.cache`` partitions (0: none);
 * on local disk, in the folder ``task.spill`` (None: none; :mod:`registration.fleet.batch.partitioned.spill`),

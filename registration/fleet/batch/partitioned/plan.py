@@ -16,8 +16,8 @@ time columns finds those times), so the linear and Hermite interpolations at the
 times, also when a time bias of up to ``margin`` seconds moves them, use the same samples as with
 the whole table.
 
-A *source* gives the tables: :class:`registration.fleet.batch.partitions.TablesSource` (in memory, SI units) or
-:class:`registration.fleet.batch.archive.ParquetSource` (files read lazily). Its methods:
+A *source* gives the tables: :class:`registration.fleet.batch.partitions.TablesSource` (in memory,
+SI units) or :class:`registration.fleet.batch.archive.ParquetSource` (files read lazily). Its methods:
 ``plot_batches(columns)``, ``navigation_batches(columns)``, ``reference_batches(columns)``
 (iterators of column dicts: numpy arrays, ids also as ``pandas.Categorical``),
 ``read_plots(lo, hi)``, ``read_navigation(ranges)``, ``read_references(lo, hi)`` (rows with
