@@ -34,6 +34,7 @@ from registration.fleet.batch.set_aside import (
     set_aside_outside,
     time_bias_warnings,
 )
+from registration.fleet.data.layout import StateLayout
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = [
@@ -49,6 +50,7 @@ __all__ = [
     "progress_bar",
     "progress_status",
     "singular_blocks",
+    "starting_states",
 ]
 
 #: A window whose Jacobi-scaled information has an eigenvalue below this is not determined.
@@ -192,6 +194,15 @@ class DesignEquations:
         return DesignPoint(evaluate(self.design, ev.x + step.dx, ev.coef + step.dc))
 
 
+def starting_states(layout: StateLayout, x0: np.ndarray | None) -> np.ndarray:
+    """The starting states (n,; rad, m, 1, s): ``x0`` checked (default zeros), the fixed states at 0."""
+    x = np.zeros(layout.n) if x0 is None else np.array(x0, dtype=np.float64)
+    if x.shape != (layout.n,) or not np.isfinite(x).all():
+        raise ValueError(f"x0: expected {layout.n} finite starting states, got shape {x.shape}")
+    x[layout.fixed] = 0.0
+    return x
+
+
 def singular_blocks(design: Design, normal: Normal) -> np.ndarray:
     """Indices of the windows whose position is not determined by their plots and references:
     the Jacobi-scaled block has an eigenvalue below SINGULAR_BLOCK times its largest."""
@@ -278,10 +289,7 @@ def fit(
     MAX_REFITS solves. ``progress``: a bar over the iterations on standard error
     (:func:`progress_bar`)."""
     options = options or BatchOptions()
-    x0 = np.zeros(problem.layout.n) if x0 is None else np.array(x0, dtype=np.float64)
-    if x0.shape != (problem.layout.n,) or not np.isfinite(x0).all():
-        raise ValueError(f"x0: expected {problem.layout.n} finite starting states, got shape {x0.shape}")
-    x0[problem.layout.fixed] = 0.0
+    x0 = starting_states(problem.layout, x0)
     drops = 0
     with progress_bar(progress, "fleet batch solve", unit="iteration") as bar:
         for attempt in range(MAX_REFITS + 1):

@@ -35,7 +35,7 @@ from registration.fleet.batch.partitioned.plan import DEFAULT_NAV_MARGIN_S, Arch
 from registration.fleet.batch.partitioned.spill import make_folder, remove_folder
 from registration.fleet.batch.partitioned.task import PartitionTask, archive_sensors
 from registration.fleet.batch.set_aside import time_bias_warnings
-from registration.fleet.batch.solver import BatchOptions, NumericalError, progress_bar
+from registration.fleet.batch.solver import BatchOptions, NumericalError, progress_bar, starting_states
 from registration.fleet.data.layout import StateLayout
 from registration.fleet.data.problem import Exclusion
 from registration.fleet.result import ChiSquareCheck, StateEstimates
@@ -188,15 +188,6 @@ def _remove_spill(folder: str, client) -> None:
             pass
 
 
-def _start(layout: StateLayout, x0: np.ndarray | None) -> np.ndarray:
-    """The starting states (n,): ``x0`` checked (default zeros), the fixed states at 0."""
-    x = np.zeros(layout.n) if x0 is None else np.array(x0, dtype=np.float64)
-    if x.shape != (layout.n,) or not np.isfinite(x).all():
-        raise ValueError(f"x0: expected {layout.n} finite starting states, got shape {x.shape}")
-    x[layout.fixed] = 0.0
-    return x
-
-
 def solve_batch_partitioned(
     source,
     options: BatchOptions | None = None,
@@ -231,7 +222,7 @@ def solve_batch_partitioned(
         source, options.window_s, partitions=partitions, partition_s=partition_s, nav_margin_s=nav_margin_s
     )
     layout, platform_ids, sensor_ids, sensor_platform = archive_sensors(source)
-    x = _start(layout, x0)
+    x = starting_states(layout, x0)
     if cache is None:
         cache = plan.n_partitions if source.in_memory and client is None else 0
     if spill is None:
