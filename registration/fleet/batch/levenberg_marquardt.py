@@ -3,7 +3,7 @@ damping update) over a provider of normal equations (:class:`NormalEquations`).
 
 Two providers implement it: the design of a problem held in memory
 (:class:`registration.fleet.batch.solver.DesignEquations`) and the passes over the partitions of an
-archive (:class:`registration.fleet.batch.partitioned.solve.PartitionedEquations`). The engine owns
+archive (:class:`registration.fleet.batch.partitioned.equations.PartitionedEquations`). The engine owns
 the control: the damping ``lam`` and its factor ``nu``, the gain ratio ``rho`` of each trial step,
 the stopping rules, the cost history and the progress bar; the provider owns the arithmetic (the
 Schur-reduced system at a point, a damped step and its predicted reduction, the cost at a trial
@@ -26,6 +26,7 @@ __all__ = [
     "NormalEquations",
     "Predicted",
     "Solved",
+    "StopRules",
     "levenberg_marquardt",
     "two_phases",
 ]
@@ -41,6 +42,17 @@ class Costed(Protocol):
 
     @property
     def cost(self) -> float: ...
+
+
+class StopRules(Protocol):
+    """When a run stops (:class:`registration.fleet.batch.solver.BatchOptions` has them): after
+    ``max_iterations``, or when a step predicts a reduction below ``tolerance`` (chi-square units)."""
+
+    @property
+    def max_iterations(self) -> int: ...
+
+    @property
+    def tolerance(self) -> float: ...
 
 
 class Predicted(Protocol):
@@ -102,15 +114,15 @@ def levenberg_marquardt(
     equations: NormalEquations[PointT, StepT],
     start: PointT,
     free: np.ndarray,
-    options: Any,
+    options: StopRules,
     relative: float = 0.0,
     bar: Any = None,
 ) -> Solved[PointT]:
     """Minimise the sum of squares over the ``free`` states and all coefficients from ``start``.
 
     Stops when the predicted reduction is below ``options.tolerance`` or ``relative`` times the sum
-    of squares (``options``: :class:`registration.fleet.batch.solver.BatchOptions`), or after
-    ``options.max_iterations``. ``bar``: a progress bar, advanced once per iteration (None: none).
+    of squares, or after ``options.max_iterations``. ``bar``: a progress bar, advanced once per
+    iteration (None: none).
     """
     scale = equations.scale(free)
     lam, nu = LAMBDA_START, 2.0
@@ -143,7 +155,11 @@ def levenberg_marquardt(
 
 
 def two_phases(
-    equations: NormalEquations[PointT, StepT], start: PointT, free: np.ndarray, options: Any, bar: Any = None
+    equations: NormalEquations[PointT, StepT],
+    start: PointT,
+    free: np.ndarray,
+    options: StopRules,
+    bar: Any = None,
 ) -> Solved[PointT]:
     """:func:`levenberg_marquardt` on the target windows alone (states held, until a step would gain
     less than TARGETS_FIRST of the cost), then on the ``free`` states and the windows together."""
