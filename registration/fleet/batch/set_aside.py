@@ -18,6 +18,7 @@ from registration.fleet.data.problem import Exclusion, FleetProblem
 __all__ = [
     "PlotsOfTargets",
     "exclude_singular",
+    "singular_exclusions",
     "outside_exclusions",
     "outside_weight",
     "outside_when_seen",
@@ -46,6 +47,15 @@ def exclude_singular(
     as an exclusion. ``outside`` (N,) bool, given when the windows were found at the solution: the
     plots seen outside their platform's navigation there (:func:`outside_when_seen`), which weighed
     0; a window left undetermined by setting them aside says so."""
+    drop, exclusions = singular_exclusions(problem, design, bad, outside)
+    return problem.drop_plots(drop, exclusions)
+
+
+def singular_exclusions(
+    problem: FleetProblem, design: Design, bad: np.ndarray, outside: np.ndarray | None = None
+) -> tuple[np.ndarray, list[Exclusion]]:
+    """(the plots of the windows ``bad`` (N,) bool, one exclusion per window saying why): the
+    reasons of :func:`exclude_singular`."""
     blk = design.blocks
     drop = np.zeros(problem.n_plots, dtype=bool)
     exclusions: list[Exclusion] = []
@@ -77,7 +87,7 @@ def exclude_singular(
                 float(t.max()),
             )
         )
-    return problem.drop_plots(drop, exclusions)
+    return drop, exclusions
 
 
 def outside_when_seen(design: Design, x: np.ndarray) -> np.ndarray:

@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from registration.core.parallel import map_chunks
-from registration.fleet.batch.partitioned.partition_passes import reduce_pass, step_pass
+from registration.fleet.batch.partitioned.partition_passes import ReduceTerms, reduce_pass, step_pass
 from registration.fleet.batch.partitioned.task import PartitionTask
 from registration.fleet.batch.schur import determined_directions, solve_reduced
 from registration.fleet.data.layout import StateLayout
@@ -87,6 +87,13 @@ class PartitionedEquations:
     def reduce(self, x: np.ndarray, coefs: list[np.ndarray], lams: tuple[float, ...]) -> PassPoint:
         """The point (x, coefs) with its reduced sums for damping values ``lams`` (one pass)."""
         parts = run_pass(reduce_pass, self.tasks, [(x, c, lams) for c in coefs], self.client)
+        return self.add(x, coefs, parts, lams)
+
+    def add(
+        self, x: np.ndarray, coefs: list[np.ndarray], parts: list[ReduceTerms], lams: tuple[float, ...]
+    ) -> PassPoint:
+        """The point (x, coefs) with the partitions' reduce terms ``parts`` (for damping values
+        ``lams``) added in partition order, with the priors."""
         U = sum(p.U for p in parts) + np.diag(self.pw2)
         xs = np.append(x, 0.0)
         b_x = sum(p.b_x for p in parts) - self.pw2 * xs

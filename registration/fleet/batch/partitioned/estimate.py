@@ -146,8 +146,9 @@ def _final(
             "solver does not solve again without them: register in memory (solve_batch)"
         )
     free = layout.free
-    U = sum(p.terms.U for p in parts) + np.diag(passes.pw2)
-    S = U + sum(p.terms.S[0] for p in parts)
+    at = passes.add(x, coefs, [p.terms for p in parts], (0.0,))
+    assert at.reduced is not None
+    S = at.reduced.S[0.0]
     information = 0.5 * (S + S.T)[np.ix_(free, free)]
     xs = np.append(x, 0.0)
     prior = (xs * np.sqrt(passes.pw2))[free]
@@ -164,7 +165,6 @@ def _final(
     chi_parts["priors"] = (float(np.sum(prior * prior)), int(np.count_nonzero(passes.pw2[free])))
     n_values = sum(n for _, n in chi_parts.values())
     n_params = free.size + 3 * sum(p.n_coef for p in parts)
-    cost = sum(p.terms.cost for p in parts) + float(np.sum(passes.pw2 * xs * xs))
     tb = layout.time_bias_index[layout.time_bias_index >= 0]
     if tb.size and np.max(np.abs(x[tb])) > plan.nav_margin_s:
         raise ValueError(
@@ -173,7 +173,7 @@ def _final(
         )
     return FinalSums(
         information,
-        ChiSquareCheck(cost, n_values - n_params, chi_parts),
+        ChiSquareCheck(at.cost, n_values - n_params, chi_parts),
         tuple(e for p in parts for e in p.exclusions),
     )
 

@@ -47,7 +47,7 @@ from registration.fleet.batch.partitioned.task import (
 )
 from registration.fleet.batch.residuals import chi_square_parts
 from registration.fleet.batch.schur import Reduced, reduce
-from registration.fleet.batch.set_aside import outside_exclusions, outside_weight
+from registration.fleet.batch.set_aside import outside_exclusions, outside_weight, singular_exclusions
 from registration.fleet.batch.solver import singular_blocks
 from registration.fleet.data.problem import Exclusion
 
@@ -196,27 +196,6 @@ def _reduced(entry: PartitionEntry, pt: PointTerms, lam: float) -> Reduced:
     return red
 
 
-def _singular_exclusions(problem, blk, bad: np.ndarray) -> list[Exclusion]:
-    """One exclusion per window ``bad`` of the partition's problem whose position its plots do not
-    determine."""
-    out = []
-    for b in bad:
-        plots = blk.order[blk.block == b]
-        t = problem.time[plots]
-        sensors = sorted({problem.sensor_ids[s] for s in problem.sensor[plots]})
-        out.append(
-            Exclusion(
-                problem.target_ids[blk.block_target[b]],
-                "singular geometry: its position is "
-                f"not determined by the plots of {', '.join(sensors)} in this window",
-                int(plots.size),
-                float(t.min()),
-                float(t.max()),
-            )
-        )
-    return out
-
-
 def setup_pass(task: PartitionTask, x0: np.ndarray) -> SetupFound | None:
     """The windows whose position their plots do not determine (as determined_design finds them,
     with the archive's windows) and the starting coefficients at states ``x0`` (n,); None: no plot.
@@ -247,7 +226,7 @@ def setup_pass(task: PartitionTask, x0: np.ndarray) -> SetupFound | None:
         first = blk.order[blk.block_start[bad]]
         w = window_index(task.plan, problem.target[first], problem.time[first])[0]
         dropped.append(np.stack([problem.target[first], w], axis=1))
-        exclusions += _singular_exclusions(problem, blk, bad)
+        exclusions += singular_exclusions(problem, design, bad)[1]
 
 
 def _entry(task: PartitionTask) -> PartitionEntry:
