@@ -43,7 +43,7 @@ class PlotsOfTargets(Protocol):
 def exclude_singular(
     problem: FleetProblem, design: Design, bad: np.ndarray, outside: np.ndarray | None = None
 ) -> FleetProblem:
-    """The problem without the plots of the windows ``bad`` (:func:`singular_blocks`), each recorded
+    """The problem without the plots of the windows ``bad`` (``solver.singular_blocks``), each recorded
     as an exclusion. ``outside`` (N,) bool, given when the windows were found at the solution: the
     plots seen outside their platform's navigation there (:func:`outside_when_seen`), which weighed
     0; a window left undetermined by setting them aside says so."""

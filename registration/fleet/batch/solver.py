@@ -1,10 +1,13 @@
-"""Batch maximum-likelihood registration of a fleet (:func:`solve_batch`).
+"""The fit of the batch problem held in memory (:func:`fit`, which
+:func:`registration.fleet.batch.estimate.solve_batch` evaluates), its options and its errors.
 
 Jointly over every registration state (platform attitude errors, sensor biases) and every target
 window's trajectory coefficients (:mod:`registration.fleet.batch.blocks`), the sum of squared whitened
-residuals of all plots, reference positions and priors is minimised by Levenberg-Marquardt
-(Marquardt's diagonal scaling, Nielsen's damping update) with the target blocks eliminated by the
-Schur complement (:mod:`registration.fleet.batch.schur`). Two phases, both from the same code:
+residuals of all plots, reference positions and priors is minimised by the Levenberg-Marquardt
+engine (:mod:`registration.fleet.batch.levenberg_marquardt`; Marquardt's diagonal scaling,
+Nielsen's damping update) over the design's normal equations (:class:`DesignEquations`) with the
+target blocks eliminated by the Schur complement (:mod:`registration.fleet.batch.schur`). Two
+phases, both from the same code:
 
 1. the target windows alone, registration states held at zero, from the window means of the
    plot positions (:mod:`registration.fleet.batch.initial`): the targets move to where the
@@ -218,7 +221,7 @@ def determined_design(
     problem: FleetProblem, options: BatchOptions, x0: np.ndarray, priors: bool = True, coefficients=None
 ):
     """``(problem, design, start, normal)``: the design of ``problem`` with the windows whose position
-    their plots do not determine set aside (:func:`singular_blocks`, :func:`exclude_singular`, again
+    their plots do not determine set aside (:func:`singular_blocks`, ``set_aside.exclude_singular``, again
     until none is left), its evaluation at states ``x0`` (n,) with the window means of the plots
     corrected by ``x0`` and the normal equations there; None when no plot is left. Without
     ``priors`` the states' priors are left out of the sums (a filter carries them itself).
