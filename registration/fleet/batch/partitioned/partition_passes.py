@@ -27,17 +27,18 @@ is ``S_p = -sum_b W_b^T (V_b + lam D_b)^-1 W_b`` and ``r_p = b_x - sum_b W_b^T (
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from registration.fleet.batch.initial import initial_coefficients
-from registration.fleet.batch.normal import Evaluation, Normal, evaluate, normal_equations
+from registration.fleet.batch.normal import evaluate, normal_equations
 from registration.fleet.batch.partitioned import spill
 from registration.fleet.batch.partitioned.plan import window_index
 from registration.fleet.batch.partitioned.task import (
     PartitionEntry,
     PartitionTask,
+    PointTerms,
     keep_entry,
     new_entry,
     partition_design,
@@ -61,18 +62,6 @@ __all__ = [
     "setup_pass",
     "step_pass",
 ]
-
-
-@dataclass
-class PointTerms:
-    """A partition's terms at one point (x, coef), filled as the passes ask: its evaluation, its sum
-    of squares (plots, references, surface; no priors), its normal equations and its latest
-    reduction per damping ``lam``."""
-
-    evaluation: Evaluation | None = None
-    cost: float | None = None
-    normal: Normal | None = None
-    reduced: dict[float, Reduced] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)

@@ -14,8 +14,10 @@ import numpy as np
 
 from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.design import Design, make_design
+from registration.fleet.batch.normal import Evaluation, Normal
 from registration.fleet.batch.partitioned import spill
 from registration.fleet.batch.partitioned.plan import ArchivePlan, partition_of, window_index
+from registration.fleet.batch.schur import Reduced
 from registration.fleet.batch.solver import BatchOptions
 from registration.fleet.data.inputs import (
     index_of,
@@ -34,6 +36,7 @@ __all__ = [
     "PartitionEntry",
     "PartitionPlots",
     "PartitionTask",
+    "PointTerms",
     "archive_layout",
     "archive_sensors",
     "keep_entry",
@@ -191,13 +194,25 @@ class PartitionPlots:
 
 
 @dataclass
+class PointTerms:
+    """A partition's terms at one point (x, coef), filled as the passes ask: its evaluation, its sum
+    of squares (plots, references, surface; no priors), its normal equations and its latest
+    reduction per damping ``lam``."""
+
+    evaluation: Evaluation | None = None
+    cost: float | None = None
+    normal: Normal | None = None
+    reduced: dict[float, Reduced] = field(default_factory=dict)
+
+
+@dataclass
 class PartitionEntry:
-    """A partition's plots, its design (without priors) and its latest points (partition_passes'
-    terms at up to two (x, coef), by their bytes)."""
+    """A partition's plots, its design (without priors) and its terms at its latest points (up to
+    two (x, coef), by their bytes)."""
 
     plots: PartitionPlots
     design: Design
-    points: dict[tuple[bytes, bytes], Any] = field(default_factory=dict)
+    points: dict[tuple[bytes, bytes], PointTerms] = field(default_factory=dict)
 
 
 def new_entry(problem: FleetProblem, design: Design) -> PartitionEntry:
