@@ -59,7 +59,7 @@ SINGLE_SENSOR = (
 )
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class ArchivePlan:
     """The archive's targets, windows and partitions (module docstring).
 
@@ -278,5 +278,16 @@ def make_plan(
     nav = _navigation_ranges(source, sensor_platforms, ranges, float(nav_margin_s))
     token = f"{source.token}:{window_s}:{hash((cuts.tobytes(), t0.tobytes(), t1.tobytes()))}"
     return ArchivePlan(
-        float(window_s), kept, tuple(ids), t0, t1, excluded, cuts, ranges, nav, n, float(nav_margin_s), token
+        window_s=float(window_s),
+        target_ids=kept,
+        all_targets=tuple(ids),
+        t0=t0,
+        t1=t1,
+        excluded=excluded,
+        cuts=cuts,
+        plot_ranges=ranges,
+        nav_ranges=nav,
+        n_input_plots=n,
+        nav_margin_s=float(nav_margin_s),
+        token=token,
     )
