@@ -27,7 +27,7 @@ Runs (each a fresh process):
   memory (the speed path when the archive fits);
 * ``bounded``: the same with no partition kept in memory (memory bounded by a partition): the
   setup pass writes each partition's design to a temporary folder on local disk (the spill cache,
-  ``registration.fleet.batch.spill``) and the later passes read it from there;
+  ``registration.fleet.batch.partitioned.spill``) and the later passes read it from there;
 * ``reread`` (only when asked with ``--modes``): no cache at all, each pass reads and builds every
   partition from the Parquet files again (the bounded mode before the spill cache).
 

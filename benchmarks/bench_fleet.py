@@ -47,8 +47,9 @@ from scipy.optimize import least_squares
 
 from registration.fleet import BatchOptions, fleet_scenario, solve_batch
 from registration.fleet.batch.blocks import make_blocks
+from registration.fleet.batch.design import make_design
 from registration.fleet.batch.initial import initial_coefficients
-from registration.fleet.batch.normal import evaluate, make_design
+from registration.fleet.batch.normal import evaluate
 from registration.fleet.batch.solver import fit
 from registration.fleet.simulation.scenario import SHIPS, SITE, TARGETS, FleetConfig
 from registration.fleet.simulation.tracks import Circle, Line

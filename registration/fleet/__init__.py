@@ -6,7 +6,7 @@ Modules: ``result`` (:class:`BatchResult`), ``observability``, ``combinations``,
 ``plots`` (PNG figures of a result), and the subpackages ``data`` (the input tables, their checks,
 navigation, the state layout, :class:`FleetProblem` built by :func:`build_problem`),
 ``simulation`` (:func:`fleet_scenario`), ``batch`` (target windows, normal equations, the Schur complement,
-Levenberg-Marquardt, covariance, residuals, :func:`solve_batch` in ``batch.solve``), ``online``
+Levenberg-Marquardt, covariance, residuals, :func:`solve_batch` in ``batch.estimate``), ``online``
 (:class:`FleetFilter`, :func:`register_online`: the same model epoch by epoch as plots arrive) and
 ``association`` (:func:`associate_and_register`: plots without target ids associated across sensors
 jointly with the registration, and the simulated clutter scenarios). The table files (CSV/Parquet in
@@ -24,13 +24,12 @@ from registration.fleet.association.simulated.clutter import (
     association_scenario,
     association_scores,
 )
-from registration.fleet.batch.covariance import FusedTargets
-from registration.fleet.batch.solve import solve_batch
+from registration.fleet.batch.estimate import solve_batch
 from registration.fleet.batch.solver import BatchOptions
 from registration.fleet.data.problem import Exclusion, FleetProblem, build_problem
 from registration.fleet.online.filter import FleetFilter, OnlineOptions, register_online
 from registration.fleet.online.result import OnlineHistory, OnlineResult
-from registration.fleet.result import BatchResult, ChiSquareCheck
+from registration.fleet.result import BatchResult, ChiSquareCheck, FusedTargets
 from registration.fleet.simulation.scenario import FleetScenario, fleet_scenario
 
 __all__ = [

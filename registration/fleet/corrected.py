@@ -11,8 +11,10 @@ from __future__ import annotations
 import numpy as np
 
 from registration import _codegen
+from registration.fleet.data.layout import ELEVATION_BIAS_COLUMN
+from registration.fleet.data.problem import FleetProblem
 
-__all__ = ["corrected_positions"]
+__all__ = ["corrected_plot_positions", "corrected_positions"]
 
 
 def corrected_positions(
@@ -61,3 +63,22 @@ def corrected_positions(
             e,
         )[0]
     return np.asarray(p).reshape(-1, 3)
+
+
+def corrected_plot_positions(
+    problem: FleetProblem, x: np.ndarray, plots: np.ndarray | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """ECEF positions (M, 3) m of the plots ``plots`` (indices into the problem's plots; default
+    all) that have a range, corrected by the states ``x`` (n,) (rad, m, 1, s; zeros: as measured),
+    and their indices into the problem's plots (M,). A plot without elevation (2-D radar) is placed
+    in its deck plane (elevation 0 after correction); with a time bias the platform is taken where
+    it was when the plot was seen."""
+    layout = problem.layout
+    sel = np.flatnonzero(problem.mask[:, 0]) if plots is None else plots[problem.mask[plots, 0]]
+    xs = np.append(np.asarray(x, dtype=np.float64), 0.0)  # the sink (absent state) reads 0
+    state = layout.sensor_states(problem.sensor[sel], problem.sensor_platform)
+    meas = problem.meas[sel].copy()
+    meas[:, 2] = np.where(problem.mask[sel, 2], meas[:, 2], xs[state[:, ELEVATION_BIAS_COLUMN]])
+    nav = problem.seen(x, sel)[1]
+    p = corrected_positions(nav, state, xs, problem.sensor_lever[problem.sensor[sel]], meas)
+    return p, sel

@@ -1,29 +1,28 @@
 """Which registration states of a fleet the data determine, named in the user's terms.
 
-Input: the information matrix of the free states with the target trajectories eliminated (the
-Schur complement of the data alone, at the solution). It is scaled, as in
-:mod:`registration.core.observability`, by each state's prior sigma, or by a reference size when
-the state has no prior (:data:`registration.fleet.data.layout.REFERENCE_SCALE`: 1 deg, 1 km), so an eigenvalue ``s`` means a
-posterior sigma of ``1 / sqrt(s)`` in those units; classes and thresholds are the core's
-(unobservable below 0.01, weak below 10).
+Input: the information matrix of the free states with the target trajectories eliminated (the Schur
+complement of the data alone, at the solution). It is scaled, as in
+:mod:`registration.core.observability`, by each state's prior sigma, or by a reference size when the
+state has no prior (:data:`registration.fleet.data.layout.REFERENCE_SCALE`: 1 deg, 1 km), so an
+eigenvalue ``s`` means a posterior sigma of ``1 / sqrt(s)`` in those units; classes and thresholds are
+the core's (unobservable below 0.01, weak below 10).
 
-A known structural degeneracy is named first: on a platform that neither pitches nor rolls, the
-heading error and the bearing biases of its sensors rotate every line of sight about the same
-vertical axis, so only ``heading error + bearing bias`` of each sensor is identifiable. The
-direction ``(+1 on the heading error, -1 on each bearing bias)`` is tested directly: when it lies
-mostly (more than half, in scaled units) in the unobservable and weak eigen-directions, it is
-reported by its own scaled information ``v^T J_s v`` (v the scaled unit vector), the number that
-the report's ``scaled_information`` carries: unobservable below 0.01, "barely separated" (weak)
-below 10, not named at or above 10. Its shares in the unobservable and weak eigen-directions are
-reported beside it (:class:`StructuralCombination`). Lever arms and the earth's curvature give a level platform's heading error a
-little information of its own, so the weak case is common. A second structural direction is tested
-the same way when sensors have time biases: all time biases moving together (a clock common to the
-fleet), which only reference positions and the platforms' own motion fix. Every remaining weak or
-unobservable direction (orthogonal to the named ones) is named by its dominant states and, where
-they are the extended errors of one sensor, explained in the user's terms (:func:`explain`): a
-range gain against a range bias (ranges spanning too little), a time bias against position errors
-or angle biases (targets all moving the same way), position errors against range and bearing
-biases (targets in a narrow sector).
+A known structural degeneracy is named first: on a platform that neither pitches nor rolls, the heading
+error and the bearing biases of its sensors rotate every line of sight about the same vertical axis, so
+only ``heading error + bearing bias`` of each sensor is identifiable. The direction ``(+1 on the heading
+error, -1 on each bearing bias)`` is tested directly: when it lies mostly (more than half, in scaled
+units) in the unobservable and weak eigen-directions, it is reported by its own scaled information
+``v^T J_s v`` (v the scaled unit vector), the number that the report's ``scaled_information`` carries:
+unobservable below 0.01, "barely separated" (weak) below 10, not named at or above 10. Its shares in the
+unobservable and weak eigen-directions are reported beside it (:class:`StructuralCombination`). Lever
+arms and the earth's curvature give a level platform's heading error a little information of its own, so
+the weak case is common. A second structural direction is tested the same way when sensors have time
+biases: all time biases moving together (a clock common to the fleet), which only reference positions and
+the platforms' own motion fix. Every remaining weak or unobservable direction (orthogonal to the named
+ones) is named by its dominant states and, where they are the extended errors of one sensor, explained in
+the user's terms (:func:`explain`): a range gain against a range bias (ranges spanning too little), a
+time bias against position errors or angle biases (targets all moving the same way), position errors
+against range and bearing biases (targets in a narrow sector).
 """
 
 from __future__ import annotations
@@ -63,17 +62,18 @@ _GAIN_BIAS = (
     "times the mean range looks like a bias); ranges farther apart separate them"
 )
 _TIME = (
-    "time bias is barely told apart from position errors or angle biases: the targets all move the same way, so "
-    "a clock offset looks like a shift along their track; targets crossing in other directions, a manoeuvre or a "
-    "reference separate them"
+    "time bias is barely told apart from position errors or angle biases: the targets all move the same "
+    "way, so a clock offset looks like a shift along their track; targets crossing in other directions, "
+    "a manoeuvre or a reference separate them"
 )
 _CLOCK = (
-    "time biases move together (a clock common to these sensors): reference positions, or platforms that move "
-    "or roll, fix it"
+    "time biases move together (a clock common to these sensors): reference positions, or platforms that "
+    "move or roll, fix it"
 )
 _SECTOR = (
-    "position errors are barely told apart from range and bearing biases: the targets lie in a narrow sector, "
-    "where a shift of the sensor looks like range and bearing biases; targets at other bearings separate them"
+    "position errors are barely told apart from range and bearing biases: the targets lie in a narrow "
+    "sector, where a shift of the sensor looks like range and bearing biases; targets at other bearings "
+    "separate them"
 )
 _SHIFT = (
     "position errors move together, so the whole picture shifts with them: a reference position, or a sensor "
@@ -126,17 +126,18 @@ def _level_text(layout, pid: str, sensors: list, weak: bool) -> str:
     h = f"{pid}:heading_error"
     if weak:
         return (
-            f"heading error of platform {pid} and the bearing biases of {', '.join(sensors)} are barely separated; "
-            "better determined are the sums " + ", ".join(f"{h} + {s}:bearing_bias" for s in sensors)
+            f"heading error of platform {pid} and the bearing biases of {', '.join(sensors)} are barely "
+            "separated; better determined are the sums "
+            + ", ".join(f"{h} + {s}:bearing_bias" for s in sensors)
         )
     if len(sensors) == 1:
         return (
-            f"heading error of platform {pid} and bearing bias of sensor {sensors[0]} enter only as their sum "
-            f"{h} + {sensors[0]}:bearing_bias"
+            f"heading error of platform {pid} and bearing bias of sensor {sensors[0]} enter only as their "
+            f"sum {h} + {sensors[0]}:bearing_bias"
         )
     return (
-        f"heading error of platform {pid} and the bearing biases of its sensors {', '.join(sensors)} enter only "
-        "as the sums " + ", ".join(f"{h} + {s}:bearing_bias" for s in sensors)
+        f"heading error of platform {pid} and the bearing biases of its sensors {', '.join(sensors)} enter "
+        "only as the sums " + ", ".join(f"{h} + {s}:bearing_bias" for s in sensors)
     )
 
 
@@ -187,8 +188,8 @@ def _common_clock(layout, free: np.ndarray):
     v = np.zeros(free.size)
     v[idx] = 1.0
     what = (
-        "the time biases of all sensors move together (a clock common to the fleet): only their differences are "
-        "determined; reference positions, or platforms that move, fix the common clock"
+        "the time biases of all sensors move together (a clock common to the fleet): only their differences "
+        "are determined; reference positions, or platforms that move, fix the common clock"
     )
     return [((what, "barely determined: " + what), v)]
 
@@ -284,12 +285,12 @@ def fleet_observability(
     w, v = np.linalg.eigh(Js) if free.size else (np.zeros(0), np.zeros((0, 0)))
     null, weak = v[:, w < UNOBSERVABLE_BELOW], v[:, (w >= UNOBSERVABLE_BELOW) & (w < WEAK_BELOW)]
     report = ObservabilityReport(singular_values=np.clip(w, 0, None)[::-1])
-    patterns = [
+    found = [
         ((_level_text(layout, pid, sensors, False), _level_text(layout, pid, sensors, True), True), vec)
         for pid, sensors, vec in _level_patterns(layout, free, sensor_platform, platform_ids, sensor_ids)
     ]
-    patterns += [((*texts, False), vec) for texts, vec in _common_clock(layout, free)]
-    patterns = [(texts, vec, vec / d / np.linalg.norm(vec / d)) for texts, vec in patterns]
+    found += [((*texts, False), vec) for texts, vec in _common_clock(layout, free)]
+    patterns = [(texts, vec, vec / d / np.linalg.norm(vec / d)) for texts, vec in found]
     named = _named_structural(Js, null, weak, layout, free, patterns)
     for is_unobs, comb, _ in named:
         (report.unobservable if is_unobs else report.weak).append(comb)

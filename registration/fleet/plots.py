@@ -19,13 +19,12 @@ import numpy as np
 from registration.core.frames import ecef2geodetic
 from registration.core.plotting import OKABE_ITO, label_style, pyplot, save_figure
 from registration.fleet.combinations import SUM_STATUS
-from registration.fleet.corrected import corrected_positions
+from registration.fleet.corrected import corrected_plot_positions
 from registration.fleet.data.layout import FILE_UNITS
 from registration.fleet.data.problem import FleetProblem
 from registration.fleet.result import BatchResult
 
 __all__ = [
-    "corrected_plot_positions",
     "estimates_figure",
     "history_figure",
     "map_figure",
@@ -44,22 +43,6 @@ _KINDS = {
 }
 _UNDETERMINED_LABEL = "undetermined (σ = ∞: no bar)"
 _UNDETERMINED_STYLE = {"color": "0.88", "edgecolor": "0.35", "hatch": "///"}
-
-
-def corrected_plot_positions(problem: FleetProblem, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """ECEF positions (M, 3) m of the plots that have a range, corrected by the states ``x`` (n,)
-    (rad, m, 1, s; zeros: as measured), and their indices into the problem's plots (M,). A plot
-    without elevation (2-D radar) is placed in its deck plane (elevation 0 after correction); with
-    a time bias the platform is taken where it was when the plot was seen."""
-    layout = problem.layout
-    sel = np.flatnonzero(problem.mask[:, 0])
-    xs = np.append(np.asarray(x, dtype=np.float64), 0.0)  # the sink (absent state) reads 0
-    state = layout.sensor_states(problem.sensor[sel], problem.sensor_platform)
-    meas = problem.meas[sel].copy()
-    meas[:, 2] = np.where(problem.mask[sel, 2], meas[:, 2], xs[state[:, 5]])
-    nav = problem.seen(x, sel)[1]
-    p = corrected_positions(nav, state, xs, problem.sensor_lever[problem.sensor[sel]], meas)
-    return p, sel
 
 
 def _kind(row: dict) -> str:
@@ -96,11 +79,14 @@ def _draw_rows(ax, rows: list[dict]) -> None:
 
 
 def _legend_handles(rows: list[dict]) -> list:
+    from matplotlib.artist import Artist
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
     kinds = {_kind(r) for r in rows}
-    handles = [Patch(color=c, alpha=0.7, label=label) for kind, (label, c) in _KINDS.items() if kind in kinds]
+    handles: list[Artist] = [
+        Patch(color=c, alpha=0.7, label=label) for kind, (label, c) in _KINDS.items() if kind in kinds
+    ]
     if "undetermined" in kinds:
         handles.append(
             Patch(

@@ -8,13 +8,34 @@ import numpy as np
 
 from registration.core.consistency import ConsistencyReport
 from registration.core.observability import ObservabilityReport
-from registration.fleet.batch.covariance import FusedTargets
 from registration.fleet.combinations import linear_combination, sigma_text, sum_rows
 from registration.fleet.data.layout import FILE_UNITS, StateLayout
 
-__all__ = ["BatchResult", "ChiSquareCheck", "StateEstimates", "state_lines", "state_rows"]
+__all__ = ["BatchResult", "ChiSquareCheck", "FusedTargets", "StateEstimates", "state_lines", "state_rows"]
 
 _QUANTITY = "squared normalised residual per degree of freedom"
+
+
+@dataclass(frozen=True)
+class FusedTargets:
+    """Fused positions at every instant (target, time) where a target was measured.
+
+    ``target`` (M,) ids, ``time`` (M,) s, ``p_ecef`` (M, 3) m, ``covariance`` (M, 3, 3) m^2,
+    ``n_plots`` (M,) plots at that instant.
+    """
+
+    target: np.ndarray
+    time: np.ndarray
+    p_ecef: np.ndarray
+    covariance: np.ndarray
+    n_plots: np.ndarray
+
+    def of(self, target: str):
+        """(time, p_ecef, covariance) of one target."""
+        sel = self.target == str(target)
+        if not sel.any():
+            raise ValueError(f"no fused positions of target {target!r} (targets: {sorted(set(self.target))})")
+        return self.time[sel], self.p_ecef[sel], self.covariance[sel]
 
 
 @dataclass(frozen=True)
@@ -102,8 +123,8 @@ def state_lines(rows: list[dict]) -> list[str]:
     for row in rows:
         _, _, unit, k = FILE_UNITS[row["unit"]]
         out.append(
-            f"  {row['label']:<{width}s} {k * row['estimate']:+12.4f} {unit:<3}  σ {sigma_text(k * row['sigma']):<12}  "
-            f"{row['status']}"
+            f"  {row['label']:<{width}s} {k * row['estimate']:+12.4f} {unit:<3}  "
+            f"σ {sigma_text(k * row['sigma']):<12}  {row['status']}"
         )
     return out
 
@@ -112,6 +133,14 @@ class StateEstimates:
     """What a batch estimate gives per state and per combination of states, for a result with
     ``layout``, ``estimate``, ``covariance``, ``sigma``, ``status``, ``observability``,
     ``undetermined`` and ``scale`` (:class:`BatchResult` and the partitioned solver's result)."""
+
+    layout: StateLayout
+    estimate: np.ndarray  # (n,) rad, m, 1, s
+    covariance: np.ndarray  # (n, n)
+    sigma: np.ndarray  # (n,)
+    status: dict
+    undetermined: np.ndarray  # (n_free, k) scaled
+    scale: np.ndarray  # (n_free,)
 
     def value(self, name: str) -> float:
         return float(self.estimate[self.layout.index(name)])
@@ -138,19 +167,19 @@ class StateEstimates:
 class BatchResult(StateEstimates):
     """Estimates, their covariance, fused targets, residuals and observability.
 
-    ``estimate`` (n,) and ``covariance`` (n, n) in the order of ``layout.names`` (rad, m); fixed
-    states are 0 with zero covariance. ``sigma`` (n,): 0 for fixed states, inf for states that lean
-    on a direction neither the data nor a prior determine (left out of the covariance). ``status``
-    per state, from the data alone (:mod:`registration.fleet.observability`): ``fixed``,
-    ``identifiable``, ``weak`` or ``not identifiable``. ``residuals`` (rows of the input plots table, 3): normalised residuals
-    (measured - predicted) / sigma of range, bearing, elevation; NaN where not measured or where
-    the plot was excluded. ``information``: the free states' information from the data alone
-    (targets eliminated), in the order of ``free_names``. ``reference_residuals`` (R', 3): per
-    reference position used, ``(known - fitted position) / sigma`` per ECEF axis (sigma: the
-    reference's, m per axis), or, for the references of a run where some reference has a vertical
-    sigma (``sigma_up`` not equal to ``sigma``), the east, north and up components of that
-    difference over ``sigma``, ``sigma``, ``sigma_up``; of target ``reference_target`` (R',); ``references_given``: the
-    reference positions of the problem's targets, used or not (a warning names those not used).
+    ``estimate`` (n,) and ``covariance`` (n, n) in the order of ``layout.names`` (rad, m); fixed states
+    are 0 with zero covariance. ``sigma`` (n,): 0 for fixed states, inf for states that lean on a
+    direction neither the data nor a prior determine (left out of the covariance). ``status`` per state,
+    from the data alone (:mod:`registration.fleet.observability`): ``fixed``, ``identifiable``, ``weak``
+    or ``not identifiable``. ``residuals`` (rows of the input plots table, 3): normalised residuals
+    (measured - predicted) / sigma of range, bearing, elevation; NaN where not measured or where the plot
+    was excluded. ``information``: the free states' information from the data alone (targets eliminated),
+    in the order of ``free_names``. ``reference_residuals`` (R', 3): per reference position used,
+    ``(known - fitted position) / sigma`` per ECEF axis (sigma: the reference's, m per axis), or, for the
+    references of a run where some reference has a vertical sigma (``sigma_up`` not equal to ``sigma``),
+    the east, north and up components of that difference over ``sigma``, ``sigma``, ``sigma_up``; of
+    target ``reference_target`` (R',); ``references_given``: the reference positions of the problem's
+    targets, used or not (a warning names those not used).
     """
 
     layout: StateLayout
@@ -179,12 +208,12 @@ class BatchResult(StateEstimates):
 
     def residual_check(self, by: str = "target") -> dict:
         """Mean squared normalised residual of the plots per target (``by="target"``) or per sensor
-        (``by="sensor"``), or of the reference positions used per reference target
-        (``by="reference"``, 3 values per position, one per ECEF axis, or east, north, up): {id: (mean, number of
-        values)}. Where the model fits it is a little below 1 (the fitted trajectory coefficients
-        absorb part of the residuals: for a target about ``1 - 3 x its coefficients / its
-        values``); well above 1 points at that target's track model (a window too long for its
-        manoeuvres), at that sensor's stated noise or an unmodelled error, or at a reference sigma
+        (``by="sensor"``), or of the reference positions used per reference target (``by="reference"``, 3
+        values per position, one per ECEF axis, or east, north, up): {id: (mean, number of values)}.
+        Where the model fits it is a little below 1 (the fitted trajectory coefficients absorb part of
+        the residuals: for a target about ``1 - 3 x its coefficients / its values``); well above 1 points
+        at that target's track model (a window too long for its manoeuvres), at that sensor's stated
+        noise or an unmodelled error, or at a reference sigma
         (``sigma_m``) stated too small; far below 1 at a sigma stated too large."""
         if by not in ("target", "sensor", "reference"):
             raise ValueError(f"by: expected 'target', 'sensor' or 'reference', got {by!r}")

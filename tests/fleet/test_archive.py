@@ -11,8 +11,8 @@ import pytest
 
 from registration.fleet import BatchOptions, fleet_scenario, solve_batch
 from registration.fleet.batch.partitioned import solve_batch_partitioned
-from registration.fleet.batch.partitions import make_plan
-from registration.fleet.batch.passes import PartitionTask, partition_problem
+from registration.fleet.batch.partitioned.plan import make_plan
+from registration.fleet.batch.partitioned.task import PartitionTask, partition_problem
 from registration.io.fleet.memory import TablesSource
 
 EXTENDED = dict(range_gain=1e-3, time_bias=0.3, position_error=20.0)

@@ -1,6 +1,6 @@
 """A worker lost in the middle of a partitioned solve, and again in the output pass, is replaced by
 Dask and its task run again: the estimate and the outputs equal the undisturbed run's bit for bit
-(the passes are pure functions of their arguments, registration.fleet.batch.passes).
+(the passes are pure functions of their arguments, registration.fleet.batch.partitioned.partition_passes).
 
 The loss is made deterministic with files: every read of a partition's plots claims the next call
 number by creating ``call-<n>`` exclusively, and the read that claims KILL_AT (the first reduce pass,

@@ -1,7 +1,7 @@
-"""The disk cache of the partitioned solver (registration.fleet.batch.spill): each partition's design
-and latest normal equations kept in a temporary folder change no bit of the estimate, against
-reading and building every partition in every pass and against the in-memory cache; a file that is
-missing or broken is built again (as on a worker that does not have it) with the same bits; Dask
+"""The disk cache of the partitioned solver (registration.fleet.batch.partitioned.spill): each
+partition's design and latest normal equations kept in a temporary folder change no bit of the estimate,
+against reading and building every partition in every pass and against the in-memory cache; a file that
+is missing or broken is built again (as on a worker that does not have it) with the same bits; Dask
 workers that share or miss the files give the in-process answer; the folder is removed at the end."""
 
 from __future__ import annotations
@@ -11,8 +11,7 @@ import pytest
 
 from registration.core.parallel import dask_client
 from registration.fleet import fleet_scenario
-from registration.fleet.batch import spill
-from registration.fleet.batch.partitioned import solve_batch_partitioned
+from registration.fleet.batch.partitioned import solve_batch_partitioned, spill
 from tests.fleet.test_archive import EXTENDED, source_of
 
 

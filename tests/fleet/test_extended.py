@@ -17,7 +17,7 @@ import pytest
 from registration import _codegen
 from registration.cli import main
 from registration.fleet import BatchOptions, build_problem, fleet_scenario, register_online, solve_batch
-from registration.fleet.batch.solver import time_bias_warnings
+from registration.fleet.batch.set_aside import time_bias_warnings
 from registration.fleet.simulation.scenario import DEFAULT_FLEET, Circle, Line
 
 LAT, LON, ALT = np.radians(36.0), np.radians(14.5), 20.0
@@ -170,13 +170,13 @@ def test_a_time_bias_beyond_half_the_window_is_warned_about(scenario):
     layout = scenario.problem().layout
     x = np.zeros(layout.n)
     x[layout.index("B-3D:time_bias")] = 6.0
-    warnings = time_bias_warnings(layout, x, BatchOptions(window_s=10.0))
+    warnings = time_bias_warnings(layout, x, window_s=10.0)
     assert (
         len(warnings) == 1
         and "time bias of sensor B-3D is +6 s" in warnings[0]
         and "window_s >= 24" in warnings[0]
     )
-    assert time_bias_warnings(layout, x, BatchOptions(window_s=20.0)) == ()
+    assert time_bias_warnings(layout, x, window_s=20.0) == ()
 
 
 # -- observability in the user's terms -----------------------------------------------------------

@@ -23,8 +23,9 @@ from registration.core.frames import ecef2geodetic
 from registration.fleet import build_problem, fleet_scenario, solve_batch
 from registration.fleet.association.joining.curves import anchor_curves
 from registration.fleet.batch.blocks import make_blocks
+from registration.fleet.batch.design import make_design
 from registration.fleet.batch.initial import initial_coefficients
-from registration.fleet.batch.normal import evaluate, make_design, normal_equations
+from registration.fleet.batch.normal import evaluate, normal_equations
 from registration.fleet.batch.partitioned import solve_batch_partitioned
 from registration.fleet.batch.solver import BatchOptions
 from registration.fleet.data.known_targets import read_references

@@ -22,9 +22,10 @@ import pytest
 
 from registration.fleet import build_problem, solve_batch
 from registration.fleet.batch.blocks import make_blocks
+from registration.fleet.batch.design import make_design
+from registration.fleet.batch.estimate import HEIGHT_WARNING
 from registration.fleet.batch.initial import initial_coefficients
-from registration.fleet.batch.normal import evaluate, make_design, normal_equations, positions
-from registration.fleet.batch.solve import HEIGHT_WARNING
+from registration.fleet.batch.normal import evaluate, normal_equations, positions
 from registration.fleet.data.known_targets import read_surface
 from registration.io import read_fleet_tables
 from registration.io.nmea import import_nmea

@@ -46,7 +46,7 @@ from registration.fleet.association.references import name_by_references
 from registration.fleet.association.report import plot_report, track_notes
 from registration.fleet.association.result import AssociationResult
 from registration.fleet.association.solves import Registrar
-from registration.fleet.batch.solve import solve_batch
+from registration.fleet.batch.estimate import solve_batch
 from registration.fleet.data.known_targets import References
 from registration.fleet.data.problem import FleetProblem
 

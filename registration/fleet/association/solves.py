@@ -1,5 +1,5 @@
 """The registrations the association makes on its way (:class:`Registrar`): the labelled plots and
-the references of their targets, solved by :func:`~registration.fleet.batch.solve.solve_batch` from
+the references of their targets, solved by :func:`~registration.fleet.batch.estimate.solve_batch` from
 the latest estimate, and the covariance the next tests use.
 
 A state the labelled plots do not determine yet (a passive sensor's biases before any of its
@@ -25,7 +25,7 @@ import numpy as np
 from registration.fleet.association.joining.windowfit import WindowFit, fit_windows
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.problems import labelled_problem
-from registration.fleet.batch.solve import solve_batch
+from registration.fleet.batch.estimate import solve_batch
 from registration.fleet.data.known_targets import References
 from registration.fleet.data.problem import FleetProblem
 from registration.fleet.result import BatchResult

@@ -1,3 +1,8 @@
-"""The batch solver of fleet registration: target windows (blocks), normal equations, the Schur complement, Levenberg-Marquardt, starting values, covariance and fused targets, residuals, and solve_batch (docs/fleet.md)."""
+"""The batch solver of fleet registration (docs/fleet.md): target windows (``blocks``), the plots laid
+out for evaluation (``design``), residuals and normal equations (``normal``), the Schur complement
+(``schur``), the Levenberg-Marquardt engine (``levenberg_marquardt``), starting values
+(``initial``), what is set aside (``set_aside``), the fit (``solver``), covariance and fused
+targets (``covariance``), residuals (``residuals``), :func:`solve_batch` (``estimate``), the
+partitioned solve of an archive (``partitioned``) and its outputs (``outputs``)."""
 
 __all__: list[str] = []

@@ -55,7 +55,7 @@ def legendre_basis_rate(tau: np.ndarray, n: int) -> np.ndarray:
     return legendre.legvander(tau, n - 2) @ D
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Blocks:
     """The block structure (plots in ``order``, i.e. sorted by block then sensor)."""
 
@@ -146,7 +146,8 @@ def window_grid(t0: np.ndarray, t1: np.ndarray, window_s: float) -> tuple[np.nda
 def window_of(
     t0: np.ndarray, count: np.ndarray, length: np.ndarray, target: np.ndarray, time: np.ndarray
 ) -> np.ndarray:
-    """(M,) index of the window (0 .. count - 1 of its target) that time ``time`` (s) of target ``target`` falls in."""
+    """(M,) index of the window (0 .. count - 1 of its target) that time ``time`` (s) of target
+    ``target`` falls in."""
     return np.clip(np.floor((time - t0[target]) / length[target]), 0, count[target] - 1).astype(np.int64)
 
 
@@ -267,28 +268,28 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) 
     patterns, inverse = np.unique(local_state, axis=0, return_inverse=True)
     pattern_blocks = tuple(np.flatnonzero(inverse.reshape(-1) == k) for k in range(patterns.shape[0]))
     return Blocks(
-        n_coef,
-        order,
-        block_sorted,
-        basis,
-        block_start,
-        b_target,
-        centre,
-        half,
-        coef_mask,
-        group_start,
-        group_block,
-        group_sensor,
-        group_state,
-        rank,
-        local_state,
-        group_block_start,
-        chunk_size,
-        chunk_slot,
-        chunk_group_start,
-        ref_index,
-        ref_block,
-        ref_basis,
-        patterns,
-        pattern_blocks,
+        n_coef=n_coef,
+        order=order,
+        block=block_sorted,
+        basis=basis,
+        block_start=block_start,
+        block_target=b_target,
+        block_centre=centre,
+        block_half=half,
+        coef_mask=coef_mask,
+        group_start=group_start,
+        group_block=group_block,
+        group_sensor=group_sensor,
+        group_state=group_state,
+        group_rank=rank,
+        local_state=local_state,
+        group_block_start=group_block_start,
+        chunk_size=chunk_size,
+        chunk_slot=chunk_slot,
+        chunk_group_start=chunk_group_start,
+        ref_index=ref_index,
+        ref_block=ref_block,
+        ref_basis=ref_basis,
+        patterns=patterns,
+        pattern_blocks=pattern_blocks,
     )

@@ -17,42 +17,30 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.core.observability import UNOBSERVABLE_BELOW
-from registration.fleet.batch.normal import positions
+from registration.core.observability import UNOBSERVABLE_BELOW, ObservabilityReport
+from registration.fleet.batch.normal import Evaluation, Normal, positions
 from registration.fleet.batch.schur import Reduced, reduce
 from registration.fleet.batch.solver import NumericalError, singular_blocks
+from registration.fleet.data.layout import StateLayout
+from registration.fleet.observability import fleet_observability
+from registration.fleet.result import FusedTargets
 
-__all__ = ["FusedTargets", "Solution", "solution_information", "state_covariance", "fused_targets"]
-
-
-@dataclass(frozen=True)
-class FusedTargets:
-    """Fused positions at every instant (target, time) where a target was measured.
-
-    ``target`` (M,) ids, ``time`` (M,) s, ``p_ecef`` (M, 3) m, ``covariance`` (M, 3, 3) m^2,
-    ``n_plots`` (M,) plots at that instant.
-    """
-
-    target: np.ndarray
-    time: np.ndarray
-    p_ecef: np.ndarray
-    covariance: np.ndarray
-    n_plots: np.ndarray
-
-    def of(self, target: str):
-        """(time, p_ecef, covariance) of one target."""
-        sel = self.target == str(target)
-        if not sel.any():
-            raise ValueError(f"no fused positions of target {target!r} (targets: {sorted(set(self.target))})")
-        return self.time[sel], self.p_ecef[sel], self.covariance[sel]
+__all__ = [
+    "Solution",
+    "StateUncertainty",
+    "estimate_from_information",
+    "fused_targets",
+    "solution_information",
+    "state_covariance",
+]
 
 
 @dataclass
 class Solution:
     """Residuals, normal equations and their reduction at the estimate (undamped)."""
 
-    evaluation: object
-    normal: object
+    evaluation: Evaluation
+    normal: Normal
     reduced: Reduced
     information_data: np.ndarray  # (n_free, n_free): data only (priors removed)
     information: np.ndarray  # (n_free, n_free): data and priors
@@ -92,6 +80,51 @@ def state_covariance(information: np.ndarray, scale: np.ndarray) -> tuple[np.nda
     keep = w >= UNOBSERVABLE_BELOW
     P = (v[:, keep] / w[keep]) @ v[:, keep].T
     return scale[:, None] * P * scale[None, :], v[:, ~keep]
+
+
+@dataclass(frozen=True)
+class StateUncertainty:
+    """What the information at an estimate gives of its states (units of the layout: rad, m, 1, s).
+
+    ``covariance`` (n, n) (zero rows and columns for the fixed states), ``sigma`` (n,) (inf: leans on
+    a direction the data do not determine), ``undetermined`` (free, k) the directions left out of the
+    covariance in scaled coordinates, ``scale`` (free,) the free states' scale, ``status`` per state
+    name ("fixed" or the observability report's word) and the observability ``report``.
+    """
+
+    covariance: np.ndarray
+    sigma: np.ndarray
+    undetermined: np.ndarray
+    scale: np.ndarray
+    status: dict[str, str]
+    report: ObservabilityReport
+
+
+def estimate_from_information(
+    layout: StateLayout,
+    information: np.ndarray,
+    information_data: np.ndarray,
+    sensor_platform: np.ndarray,
+    platform_ids: tuple,
+    sensor_ids: tuple,
+) -> StateUncertainty:
+    """The states' covariance, sigma and status from the ``information`` (free, free) of the free
+    states with their priors and ``information_data`` (free, free) of the data alone (the
+    observability report is of that one), for the fleet of ``layout`` (its sensors' platforms
+    ``sensor_platform`` (S,) indices into ``platform_ids``; ``sensor_ids``)."""
+    free = layout.free
+    report = fleet_observability(information_data, free, layout, sensor_platform, platform_ids, sensor_ids)
+    scale = layout.scale[free]
+    P_free, undetermined = state_covariance(information, scale)
+    n = layout.n
+    P = np.zeros((n, n))
+    P[np.ix_(free, free)] = P_free
+    sigma = np.sqrt(np.clip(np.diag(P), 0, None))
+    status = {layout.names[i]: "fixed" for i in layout.fixed}
+    status.update(report.status)
+    if undetermined.size:  # states leaning on a direction left out of the covariance
+        sigma[free[np.linalg.norm(undetermined, axis=1) > 0.1]] = np.inf
+    return StateUncertainty(P, sigma, undetermined, scale, status, report)
 
 
 def _coefficient_covariance(blk, red: Reduced, P_full: np.ndarray) -> np.ndarray:

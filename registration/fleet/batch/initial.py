@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.fleet.batch.normal import Design
+from registration.fleet.batch.design import Design
 from registration.fleet.corrected import corrected_positions
 
 __all__ = ["ASSUMED_RANGE_M", "plot_positions", "initial_coefficients"]

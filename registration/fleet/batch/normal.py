@@ -17,8 +17,9 @@ in their block form:
 A reference position ``y`` (sigma s) of a target adds the residual ``(y - p(t)) / s``; the prior
 of state i adds ``(0 - x_i) / sigma_i``. A reference whose vertical sigma ``s_up`` differs from its
 horizontal one is whitened in its local frame instead: ``e = L (y - p(t))`` with
-``L = diag(1/s, 1/s, 1/s_up) R_enu_ecef(lat, lon of y)`` (:func:`reference_whitening`), so its
-three residuals are east, north and up; its terms are ``V += sum basis_k basis_m L^T L`` and
+``L = diag(1/s, 1/s, 1/s_up) R_enu_ecef(lat, lon of y)``
+(:func:`registration.fleet.batch.design.reference_whitening`), so its three residuals are east,
+north and up; its terms are ``V += sum basis_k basis_m L^T L`` and
 ``b_c += basis_k L^T e``. While every reference used has ``s_up == s`` the scalar weight ``1/s``
 is used as before (the same numbers, bit for bit). All sums over plots are segment sums over the
 (block, sensor) order: no Python loop over plots.
@@ -38,7 +39,7 @@ window's ``K`` Gauss-Legendre nodes ``t_k`` (K its used coefficients), from the 
 of the geodetic position): as many values as the height coefficients they determine, so a window
 whose height the plots do not fix (a 2-D radar's, or references without a height) is determined
 without counting the known surface as measurements. Their terms are those of a reference with
-whitening ``L = -J / s`` (:class:`SurfaceRows`).
+whitening ``L = -J / s`` (:class:`registration.fleet.batch.design.SurfaceRows`).
 """
 
 from __future__ import annotations
@@ -46,213 +47,13 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from numpy.polynomial import legendre
 
 from registration import _codegen
-from registration.core.frames import ecef2geodetic, enu2ecef_rotation
 from registration.fleet.batch.blocks import Blocks
-from registration.fleet.data.navigation import SeenNavigation
-from registration.fleet.data.problem import FleetProblem
+from registration.fleet.batch.design import Design
+from registration.fleet.data.layout import TIME_BIAS_COLUMN
 
-__all__ = [
-    "Design",
-    "Evaluation",
-    "Normal",
-    "SurfaceRows",
-    "chunk_positions",
-    "make_design",
-    "evaluate",
-    "normal_equations",
-    "positions",
-    "reference_whitening",
-    "surface_rows",
-]
-
-
-@dataclass(frozen=True)
-class SurfaceRows:
-    """The height constraints of the surface targets' windows (module docstring): per constraint
-    its block (S,), the masked basis values at its node (S, n_coef), the surface height ``alt``
-    (S,) m above WGS-84 and ``weight`` (S,) 1 / sigma (1/m)."""
-
-    block: np.ndarray
-    basis: np.ndarray
-    alt: np.ndarray
-    weight: np.ndarray
-
-    @property
-    def size(self) -> int:
-        return int(self.block.size)
-
-
-def surface_rows(problem: FleetProblem, blocks: Blocks) -> SurfaceRows | None:
-    """The :class:`SurfaceRows` of the windows of ``problem``'s surface targets: each window's ``K``
-    Gauss-Legendre nodes (K = its used coefficients); None when no window is a surface target's."""
-    surface = problem.surface_of_targets()
-    if surface is None:
-        return None
-    alt, sigma = surface
-    on = np.flatnonzero(np.isfinite(alt[blocks.block_target]))
-    if on.size == 0:
-        return None
-    used = blocks.coef_mask[on].sum(axis=1)
-    block, tau = [], []
-    for k in np.unique(used):
-        which = on[used == k]
-        nodes = legendre.leggauss(int(k))[0]
-        block.append(np.repeat(which, k))
-        tau.append(np.tile(nodes, which.size))
-    block, tau = np.concatenate(block), np.concatenate(tau)
-    order = np.argsort(block, kind="stable")
-    block, tau = block[order], tau[order]
-    time = blocks.block_centre[block] + tau * blocks.block_half[block]
-    target = blocks.block_target[block]
-    return SurfaceRows(block, blocks.basis_at(block, time), alt[target], 1.0 / sigma[target])
-
-
-@dataclass(frozen=True)
-class Design:
-    """The problem's plots in padded block order, ready for evaluation.
-
-    Rows are the plots sorted by (block, sensor), each group's plots cut into chunks of
-    ``blocks.chunk_size`` and padded with copies of a real plot of weight zero (``real`` False),
-    so the products of a chunk are one dense matrix product without any copying. ``slot`` (N,)
-    is the row of each sorted plot; ``block_start`` (B,) the first row of each block.
-    """
-
-    blocks: Blocks
-    n_state: int
-    slot: np.ndarray  # (N,)
-    real: np.ndarray  # (rows,) bool
-    block: np.ndarray  # (rows,)
-    basis: np.ndarray  # (rows, n_coef)
-    block_start: np.ndarray  # (B,)
-    nav: np.ndarray  # (rows, 6)
-    meas: np.ndarray  # (rows, 3)
-    weight: np.ndarray  # (rows, 3) mask / sigma, 1/m and 1/rad; 0 for padding
-    lever: np.ndarray  # (rows, 3)
-    state: np.ndarray  # (rows, w) state indices of each row's sensor (layout.sensor_states; n = none)
-    ref_p: np.ndarray  # (R', 3) ECEF m
-    ref_weight: np.ndarray  # (R',) 1 / sigma (1/m)
-    prior_weight: np.ndarray  # (n,) 1 / prior sigma (0: no prior; fixed states are not free)
-    scale: (
-        np.ndarray
-    )  # (n,) prior or reference sigma of each state (registration.fleet.data.layout.state_scale)
-    time: np.ndarray  # (rows,) reported plot time (s)
-    seen_at: object = (
-        None  # with time biases: times (rows,) -> (nav, rate, outside); navigation.SeenNavigation
-    )
-    seen_cache: dict = field(default_factory=dict)  # the seen basis and navigation of the latest time biases
-    ref_whiten: np.ndarray | None = (
-        None  # (R', 3, 3) 1/m: L of reference_whitening; None: every sigma_up == sigma
-    )
-    surface: SurfaceRows | None = None  # the surface targets' height constraints; None: no surface target
-
-    @property
-    def n_reference_values(self) -> int:
-        """The reference values the design uses: 3 per reference position, 2 for one without a
-        height (``sigma_up`` inf)."""
-        if self.ref_whiten is None:
-            return 3 * int(self.ref_p.shape[0])
-        return int(np.count_nonzero(np.any(self.ref_whiten != 0.0, axis=2)))
-
-    @property
-    def att_state(self) -> np.ndarray:
-        """(rows, 3) state indices of the platform's attitude errors."""
-        return self.state[:, :3]
-
-    @property
-    def bias_state(self) -> np.ndarray:
-        """(rows, 3) state indices of the sensor's biases."""
-        return self.state[:, 3:6]
-
-    @property
-    def extended(self) -> bool:
-        return self.state.shape[1] > 6
-
-    @property
-    def time_biased(self) -> bool:
-        """True when some row's sensor has a time bias that is estimated (not held at 0)."""
-        return self.seen_at is not None
-
-    def seen_time(self, x: np.ndarray) -> np.ndarray:
-        """(rows,) the time (s) each row's target and platform are seen at under states ``x`` (n,):
-        the reported time minus the sensor's time bias."""
-        if not self.time_biased:
-            return self.time
-        return self.time - np.append(x, 0.0)[self.state[:, 7]]
-
-
-def reference_whitening(p_ecef: np.ndarray, sigma: np.ndarray, sigma_up: np.ndarray) -> np.ndarray:
-    """(R, 3, 3) whitening matrices ``L = diag(1/sigma, 1/sigma, 1/sigma_up) R_enu_ecef`` (1/m) of
-    reference positions ``p_ecef`` (R, 3) ECEF m with horizontal sigma ``sigma`` (R,) m (east and
-    north) and vertical sigma ``sigma_up`` (R,) m (along the local geodetic up at the position):
-    ``L (y - p)`` is the east, north, up residual of an ECEF difference, each over its sigma."""
-    p = np.asarray(p_ecef, dtype=np.float64).reshape(-1, 3)
-    if p.shape[0] == 0:
-        return np.zeros((0, 3, 3))
-    lat, lon, _ = ecef2geodetic(p)
-    R_enu_ecef = enu2ecef_rotation(lat, lon).transpose(0, 2, 1)
-    inverse = 1.0 / np.stack([sigma, sigma, sigma_up], axis=1)
-    return inverse[:, :, None] * R_enu_ecef
-
-
-def make_design(problem: FleetProblem, blocks: Blocks) -> Design:
-    n_rows = blocks.n_chunks * blocks.chunk_size
-    source = np.full(n_rows, -1, dtype=np.int64)
-    source[blocks.chunk_slot] = np.arange(blocks.order.size)
-    real = source >= 0
-    chunk_first = source[(np.arange(n_rows) // blocks.chunk_size) * blocks.chunk_size]
-    source = np.where(real, source, chunk_first)  # padding copies its chunk's first plot
-    o = blocks.order[source]
-    layout = problem.layout
-    sensor = problem.sensor[o]
-    state = layout.sensor_states(sensor, problem.sensor_platform)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        weight = np.where(problem.mask[o] & real[:, None], 1.0 / problem.sensor_sigma[sensor], 0.0)
-        prior_weight = np.where(
-            np.isfinite(layout.prior_sigma) & (layout.prior_sigma > 0), 1.0 / layout.prior_sigma, 0.0
-        )
-    refs = problem.references
-    seen_at = None
-    tb = layout.time_bias_index[np.unique(sensor)]
-    if layout.extended and (layout.prior_sigma[tb[tb >= 0]] > 0).any():
-        if blocks.n_coef == 1:
-            raise ValueError(
-                "a time bias needs target windows (window_s > 0): the targets' velocities come from the "
-                "windows' polynomials; give window_s > 0 or drop the prior_time_bias column"
-            )
-
-        seen_at = SeenNavigation(
-            problem.tracks, problem.platform_ids, problem.platform[o], sensor, problem.time[o]
-        )
-    used = blocks.ref_index
-    sigma, sigma_up = refs.sigma[used], refs.sigma_up[used]
-    whiten = (
-        None if np.array_equal(sigma, sigma_up) else reference_whitening(refs.p_ecef[used], sigma, sigma_up)
-    )
-    return Design(
-        blocks,
-        layout.n,
-        blocks.chunk_slot,
-        real,
-        blocks.block[source],
-        blocks.basis[source],
-        blocks.chunk_slot[blocks.block_start],
-        problem.nav[o],
-        problem.meas[o],
-        weight,
-        problem.sensor_lever[sensor],
-        state,
-        refs.p_ecef[used],
-        1.0 / sigma,
-        prior_weight,
-        layout.scale,
-        problem.time[o],
-        seen_at,
-        ref_whiten=whiten,
-        surface=surface_rows(problem, blocks),
-    )
+__all__ = ["Evaluation", "Normal", "chunk_positions", "evaluate", "normal_equations", "positions"]
 
 
 def positions(basis: np.ndarray, block: np.ndarray, coef: np.ndarray) -> np.ndarray:
@@ -314,7 +115,7 @@ def _extended_rows(design: Design, xs: np.ndarray, coef: np.ndarray) -> np.ndarr
     basis, nav, weight = design.basis, design.nav, design.weight
     v, rate = np.zeros((basis.shape[0], 3)), np.zeros((basis.shape[0], 6))
     if design.time_biased:
-        basis, basis_rate, nav, rate, aside = _seen(design, xs[state[:, 7]])
+        basis, basis_rate, nav, rate, aside = _seen(design, xs[state[:, TIME_BIAS_COLUMN]])
         v = chunk_positions(design, basis_rate, coef)
         if aside.any():
             weight = np.where(aside[:, None], 0.0, weight)

@@ -35,13 +35,14 @@ import numpy as np
 from registration.core.frames import ecef2geodetic
 from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.covariance import fused_targets
-from registration.fleet.batch.normal import evaluate, make_design, normal_equations
-from registration.fleet.batch.partitioned import run_pass
-from registration.fleet.batch.passes import PartitionTask, partition_problem
+from registration.fleet.batch.design import make_design
+from registration.fleet.batch.normal import evaluate, normal_equations
+from registration.fleet.batch.partitioned.equations import run_pass
+from registration.fleet.batch.partitioned.task import PartitionTask, partition_problem
 from registration.fleet.batch.residuals import chi_square_parts
 from registration.fleet.batch.schur import reduce
-from registration.fleet.batch.solver import outside_when_seen
-from registration.fleet.corrected import corrected_positions
+from registration.fleet.batch.set_aside import outside_weight
+from registration.fleet.corrected import corrected_plot_positions
 
 __all__ = [
     "CHANNELS",
@@ -50,6 +51,8 @@ __all__ = [
     "HIST_LIMIT",
     "SAMPLE_PLOTS",
     "ArchiveOutputs",
+    "PartitionOutputs",
+    "ResidualSums",
     "archive_outputs",
     "output_pass",
     "part_name",
@@ -110,7 +113,36 @@ def _fused_table(problem, design, x: np.ndarray, coef: np.ndarray, normal, P_sin
     return table
 
 
-def _sums(problem, design, ev, residual: np.ndarray) -> dict:
+@dataclass(frozen=True)
+class ResidualSums:
+    """A partition's residual sums (S sensors, 3 channels: :data:`CHANNELS`): ``count`` (S, 3) values,
+    ``total`` (S, 3) and ``squares`` (S, 3) sums of the whitened residuals and of their squares,
+    ``hist`` (3, HIST_BINS) counts; ``by_target`` (target indices (K,), sums of squares (K,), values
+    (K,)) and ``by_reference`` (reference target ids (K,), sums of squares (K,), values (K,))."""
+
+    count: np.ndarray
+    total: np.ndarray
+    squares: np.ndarray
+    hist: np.ndarray
+    by_target: tuple[np.ndarray, np.ndarray, np.ndarray]
+    by_reference: tuple[np.ndarray, np.ndarray, np.ndarray]
+
+
+@dataclass(frozen=True)
+class PartitionOutputs:
+    """The output pass of one partition: its residual ``sums``, chi-square ``parts`` {name: (sum of
+    squares, values)}, fused ``rows``, its ``sample`` of plots (columns), its ``sensor_ids`` and,
+    when not written as a part, the ``fused`` table (columns)."""
+
+    sums: ResidualSums
+    parts: dict[str, tuple[float, int]]
+    rows: int
+    sample: dict[str, np.ndarray]
+    sensor_ids: tuple[str, ...]
+    fused: dict[str, np.ndarray] | None
+
+
+def _sums(problem, design, ev, residual: np.ndarray) -> ResidualSums:
     """The residual sums of the partition (module docstring); ``residual`` (N, 3) per problem plot,
     NaN where not measured or left out."""
     S = len(problem.sensor_ids)
@@ -142,14 +174,7 @@ def _sums(problem, design, ev, residual: np.ndarray) -> dict:
             for c in range(3)
         ]
     )
-    return {
-        "count": count,
-        "sum": total,
-        "squares": squares,
-        "by_target": by_target,
-        "by_reference": by_reference,
-        "hist": hist.astype(np.int64),
-    }
+    return ResidualSums(count, total, squares, hist.astype(np.int64), by_target, by_reference)
 
 
 def _sample(problem, x: np.ndarray, residual: np.ndarray, every: int) -> dict:
@@ -163,18 +188,9 @@ def _sample(problem, x: np.ndarray, residual: np.ndarray, every: int) -> dict:
         "residual": residual[pick],
     }
     has_range = problem.mask[pick, 0]
-    sel = pick[has_range]
     layout = problem.layout
-    state = layout.sensor_states(problem.sensor[sel], problem.sensor_platform)
-    meas = problem.meas[sel].copy()
     for name, states in (("measured", np.zeros(layout.n)), ("corrected", np.asarray(x, dtype=np.float64))):
-        xs = np.append(states, 0.0)
-        m = meas.copy()
-        m[:, 2] = np.where(problem.mask[sel, 2], m[:, 2], xs[state[:, 5]])
-        nav = problem.seen(states, sel)[1]
-        lat, lon, _ = ecef2geodetic(
-            corrected_positions(nav, state, xs, problem.sensor_lever[problem.sensor[sel]], m)
-        )
+        lat, lon, _ = ecef2geodetic(corrected_plot_positions(problem, states, pick)[0])
         out[f"{name}_lat"] = np.full(pick.size, np.nan)
         out[f"{name}_lon"] = np.full(pick.size, np.nan)
         out[f"{name}_lat"][has_range], out[f"{name}_lon"][has_range] = lat, lon
@@ -183,11 +199,10 @@ def _sample(problem, x: np.ndarray, residual: np.ndarray, every: int) -> dict:
 
 def output_pass(
     task: PartitionTask, x: np.ndarray, coef: np.ndarray, P_sink: np.ndarray, part: int, parts, every: int
-) -> dict:
-    """The outputs of one partition at the solution (module docstring): {sums, parts (chi-square
-    parts), rows (fused rows), sample, fused (the table, when ``parts`` is None)}; part ``part``
-    written into the folder ``parts``. ``P_sink`` (n + 1, n + 1): the states' covariance, the
-    sink's row and column zero."""
+) -> PartitionOutputs:
+    """The outputs of one partition at the solution (module docstring); the fused table written as
+    part ``part`` into the folder ``parts`` (None: returned). ``P_sink`` (n + 1, n + 1): the states'
+    covariance, the sink's row and column zero."""
     problem = partition_problem(task)
     if problem is None:
         raise ValueError(f"partition {task.index} holds no plot at the solution but has coefficients")
@@ -200,38 +215,33 @@ def output_pass(
         )
     ev = evaluate(design, x, coef)
     normal = normal_equations(design, ev)
-    outside = outside_when_seen(design, x)
-    rows = np.zeros(design.weight.shape[0], dtype=bool)
-    rows[design.slot] = outside[design.blocks.order]
-    weight = np.where(rows[:, None], 0.0, design.weight)
+    weight = outside_weight(design, x)[1]
     residual = np.full((problem.n_plots, 3), np.nan)
     residual[design.blocks.order] = np.where(weight > 0, ev.e, np.nan)[design.slot]
     table = _fused_table(problem, design, x, coef, normal, P_sink)
-    out = {
-        "sums": _sums(problem, design, ev, residual),
-        "parts": chi_square_parts(replace(design, weight=weight), ev),
-        "rows": int(table["time_s"].size),
-        "sample": _sample(problem, x, residual, every),
-        "sensor_ids": tuple(problem.sensor_ids),
-    }
-    if parts is None:
-        out["fused"] = table
-    else:
+    if parts is not None:
         write_part(parts, part, table)
-    return out
+    return PartitionOutputs(
+        sums=_sums(problem, design, ev, residual),
+        parts=chi_square_parts(replace(design, weight=weight), ev),
+        rows=int(table["time_s"].size),
+        sample=_sample(problem, x, residual, every),
+        sensor_ids=tuple(problem.sensor_ids),
+        fused=table if parts is None else None,
+    )
 
 
-@dataclass
+@dataclass(kw_only=True)
 class ArchiveOutputs:
     """The outputs of :func:`archive_outputs`, summed over the partitions in partition order.
 
     ``sensor_ids``; ``count`` (S, 3) values per sensor and channel (:data:`CHANNELS`), ``mean`` and
     ``rms`` (S, 3) of their whitened residuals (NaN without values), ``squares`` (S, 3) their sums of
-    squares; ``by_target`` and ``by_reference`` {id: (sum of squares, values)}; ``hist`` (3,
-    HIST_BINS) counts per channel over [-HIST_LIMIT, HIST_LIMIT]; ``parts`` the chi-square parts
-    {"plots", "references", with surface targets "surface": (sum of squares, values)}; ``fused_rows`` rows of fused targets in
-    ``n_parts`` parts; ``sample`` the figures' plots (module docstring), at most ``sample_max``;
-    ``tables`` the fused tables when they were returned rather than written (else None).
+    squares; ``by_target`` and ``by_reference`` {id: (sum of squares, values)}; ``hist`` (3, HIST_BINS)
+    counts per channel over [-HIST_LIMIT, HIST_LIMIT]; ``parts`` the chi-square parts {"plots",
+    "references", with surface targets "surface": (sum of squares, values)}; ``fused_rows`` rows of fused
+    targets in ``n_parts`` parts; ``sample`` the figures' plots (module docstring), at most
+    ``sample_max``; ``tables`` the fused tables when they were returned rather than written (else None).
     """
 
     sensor_ids: tuple
@@ -256,45 +266,48 @@ def _add(total: dict, ids, ss, n) -> None:
         total[key] = (s0 + float(a), n0 + int(b))
 
 
-def _reduce(found: list, target_ids: tuple, sample_max: int, every: int, tables) -> ArchiveOutputs:
-    sensor_ids = found[0]["sensor_ids"]
+def _reduce(
+    found: list[PartitionOutputs], target_ids: tuple, sample_max: int, every: int, tables
+) -> ArchiveOutputs:
+    sensor_ids = found[0].sensor_ids
     S = len(sensor_ids)
     count, total, squares = np.zeros((S, 3), dtype=np.int64), np.zeros((S, 3)), np.zeros((S, 3))
     hist = np.zeros((3, HIST_BINS), dtype=np.int64)
-    by_target, by_reference = {}, {}
+    by_target: dict[str, tuple[float, int]] = {}
+    by_reference: dict[str, tuple[float, int]] = {}
     parts = {
-        key: (0.0, 0) for f in found for key in f["parts"]
+        key: (0.0, 0) for f in found for key in f.parts
     }  # plots, references and, with a surface, surface
     for f in found:  # in partition order
-        s = f["sums"]
-        count += s["count"]
-        total += s["sum"]
-        squares += s["squares"]
-        hist += s["hist"]
-        g, ss, n = s["by_target"]
+        s = f.sums
+        count += s.count
+        total += s.total
+        squares += s.squares
+        hist += s.hist
+        g, ss, n = s.by_target
         _add(by_target, np.asarray(target_ids)[g], ss, n)
-        _add(by_reference, *s["by_reference"])
-        for key, (ss, n) in f["parts"].items():
-            parts[key] = (parts[key][0] + ss, parts[key][1] + n)
+        _add(by_reference, *s.by_reference)
+        for key, (part_ss, part_n) in f.parts.items():
+            parts[key] = (parts[key][0] + part_ss, parts[key][1] + part_n)
     with np.errstate(invalid="ignore", divide="ignore"):
         mean, rms = total / count, np.sqrt(squares / count)
-    sample = {k: np.concatenate([f["sample"][k] for f in found])[:sample_max] for k in found[0]["sample"]}
+    sample = {k: np.concatenate([f.sample[k] for f in found])[:sample_max] for k in found[0].sample}
     order = sorted(by_target, key=list(target_ids).index)
     return ArchiveOutputs(
-        sensor_ids,
-        count,
-        mean,
-        rms,
-        squares,
-        {k: by_target[k] for k in order},
-        by_reference,
-        hist,
-        parts,
-        sum(f["rows"] for f in found),
-        len(found),
-        sample,
-        every,
-        tables,
+        sensor_ids=sensor_ids,
+        count=count,
+        mean=mean,
+        rms=rms,
+        squares=squares,
+        by_target={k: by_target[k] for k in order},
+        by_reference=by_reference,
+        hist=hist,
+        parts=parts,
+        fused_rows=sum(f.rows for f in found),
+        n_parts=len(found),
+        sample=sample,
+        sample_every=every,
+        tables=tables,
     )
 
 
@@ -322,5 +335,5 @@ def archive_outputs(
     folder = None if parts is None else str(parts)
     args = [(result.estimate, c, P_sink, j, folder, every) for j, c in enumerate(coefs)]
     found = run_pass(output_pass, tasks, args, client)
-    tables = None if parts is not None else [f.pop("fused") for f in found]
+    tables = None if parts is not None else [f.fused for f in found]
     return _reduce(found, result.plan.target_ids, int(sample_max), every, tables)

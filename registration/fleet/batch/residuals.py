@@ -7,7 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.fleet.batch.normal import Design, Evaluation
+from registration.fleet.batch.design import Design
+from registration.fleet.batch.normal import Evaluation
 from registration.fleet.batch.solver import BatchOptions, determined_design, fit_windows
 from registration.fleet.data.problem import FleetProblem
 from registration.fleet.result import ChiSquareCheck
@@ -85,9 +86,9 @@ def unused_references(problem: FleetProblem, design: Design) -> str | None:
         + f"; the first at {refs.time[first]:g} s): no "
         "window holds them, as they lie outside their target's plotted time span (with window_s = 0: at no "
         "instant of its plots) or its plots there were set aside, so neither they nor their sigma enter the "
-        "estimate or the chi-square. That is expected where the reference track runs longer than the plots "
-        "(AIS before and after the radar holds a vessel); otherwise check the reference file's time_s against "
-        "the plots' time origin"
+        "estimate or the chi-square. That is expected where the reference track runs longer than the "
+        "plots (AIS before and after the radar holds a vessel); otherwise check the reference file's "
+        "time_s against the plots' time origin"
     )
 
 

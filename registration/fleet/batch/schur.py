@@ -2,8 +2,8 @@
 Schur complement, as in bundle adjustment.
 
 With ``V_b`` the block of window b, ``W_g`` the coupling of group g (one sensor in one window)
-with its w states (6, or 11 with the extended errors), ``U`` the states' block and damping ``lambda D`` (Marquardt: D the diagonal
-of the normal matrix):
+with its w states (6, or 11 with the extended errors), ``U`` the states' block and damping
+``lambda D`` (Marquardt: D the diagonal of the normal matrix):
 
 * with the groups of block b side by side, ``W_b`` (q x w g) over the states ``local_state[b]``:
   ``Y_b = V_b^-1 W_b``, ``y_b = V_b^-1 b_c,b`` (batched inverses of the small blocks);
@@ -84,7 +84,7 @@ def reduce(blk: Blocks, normal: Normal, lam: float = 0.0) -> Reduced:
         WY = np.matmul(W.transpose(0, 2, 1), Y)  # (B, w g, w g)
         idx = blk.local_state
     flat = (idx[:, :, None] * n1 + idx[:, None, :]).reshape(-1)
-    S = normal.U - np.bincount(flat, WY.reshape(-1), n1 * n1).reshape(n1, n1)
+    S: np.ndarray = normal.U - np.bincount(flat, WY.reshape(-1), n1 * n1).reshape(n1, n1)
     S[np.diag_indices(n1)] += lam * np.diag(normal.U)
     Wy = np.matmul(W.transpose(0, 2, 1), y[:, :, None])[:, :, 0]  # (B, w g)
     r = normal.b_x - np.bincount(blk.local_state.reshape(-1), Wy.reshape(-1), n1)

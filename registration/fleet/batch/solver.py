@@ -1,10 +1,13 @@
-"""Batch maximum-likelihood registration of a fleet (:func:`solve_batch`).
+"""The fit of the batch problem held in memory (:func:`fit`, which
+:func:`registration.fleet.batch.estimate.solve_batch` evaluates), its options and its errors.
 
 Jointly over every registration state (platform attitude errors, sensor biases) and every target
 window's trajectory coefficients (:mod:`registration.fleet.batch.blocks`), the sum of squared whitened
-residuals of all plots, reference positions and priors is minimised by Levenberg-Marquardt
-(Marquardt's diagonal scaling, Nielsen's damping update) with the target blocks eliminated by the
-Schur complement (:mod:`registration.fleet.batch.schur`). Two phases, both from the same code:
+residuals of all plots, reference positions and priors is minimised by the Levenberg-Marquardt
+engine (:mod:`registration.fleet.batch.levenberg_marquardt`; Marquardt's diagonal scaling,
+Nielsen's damping update) over the design's normal equations (:class:`DesignEquations`) with the
+target blocks eliminated by the Schur complement (:mod:`registration.fleet.batch.schur`). Two
+phases, both from the same code:
 
 1. the target windows alone, registration states held at zero, from the window means of the
    plot positions (:mod:`registration.fleet.batch.initial`): the targets move to where the
@@ -23,38 +26,37 @@ import numpy as np
 
 from registration.core.progress import progress_bar
 from registration.fleet.batch.blocks import make_blocks
+from registration.fleet.batch.design import Design, make_design
 from registration.fleet.batch.initial import initial_coefficients
-from registration.fleet.batch.normal import (
-    Design,
-    Evaluation,
-    Normal,
-    evaluate,
-    make_design,
-    normal_equations,
-)
+from registration.fleet.batch.levenberg_marquardt import levenberg_marquardt, two_phases
+from registration.fleet.batch.normal import Evaluation, Normal, evaluate, normal_equations
 from registration.fleet.batch.schur import damped_step, determined_directions, masked_blocks, reduce
-from registration.fleet.data.problem import Exclusion, FleetProblem
+from registration.fleet.batch.set_aside import (
+    exclude_singular,
+    outside_exclusions,
+    outside_when_seen,
+    set_aside_outside,
+    time_bias_warnings,
+)
+from registration.fleet.data.layout import StateLayout
+from registration.fleet.data.problem import FleetProblem
 
 __all__ = [
     "BatchOptions",
+    "DesignEquations",
+    "DesignPoint",
+    "DesignStep",
     "Fit",
     "NumericalError",
     "determined_design",
-    "exclude_singular",
     "fit",
     "fit_windows",
-    "levenberg_marquardt",
-    "outside_when_seen",
     "singular_blocks",
-    "time_bias_warnings",
+    "starting_states",
 ]
 
-LAMBDA_START = 1e-3
-LAMBDA_MAX = 1e16
 #: A window whose Jacobi-scaled information has an eigenvalue below this is not determined.
 SINGULAR_BLOCK = 1e-10
-#: The first phase (targets alone) stops when a step would gain less than this share of the cost.
-TARGETS_FIRST = 1e-2
 
 
 class NumericalError(ArithmeticError):
@@ -89,7 +91,7 @@ class BatchOptions:
             raise ValueError("max_iterations must be >= 1 and tolerance > 0")
 
 
-@dataclass
+@dataclass(kw_only=True)
 class Fit:
     """The solution of the least-squares problem and how it was reached; ``evaluation`` and
     ``normal`` are the residuals and the undamped normal equations at the solution."""
@@ -106,54 +108,66 @@ class Fit:
     warnings: tuple = ()
 
 
-def levenberg_marquardt(
-    design: Design,
-    start: Evaluation,
-    free: np.ndarray,
-    options: BatchOptions,
-    relative: float = 0.0,
-    normal: Normal | None = None,
-    bar=None,
-):
-    """Minimise the sum of squares over the free states and all coefficients from ``start``.
+@dataclass(frozen=True)
+class DesignPoint:
+    """A point of the in-memory problem: its evaluation and, once linearized, its undamped normal
+    equations (None: not yet)."""
 
-    Stops when the predicted reduction is below ``options.tolerance`` or ``relative`` times the
-    sum of squares. Returns (evaluation and normal equations at the solution, converged,
-    iterations, cost per accepted step). ``normal``: the normal equations at ``start`` if known.
-    ``bar``: a :func:`progress_bar`, advanced once per iteration (None: none).
-    """
-    ev = start
-    scale = design.scale[free]
-    determined = None
-    lam, nu = LAMBDA_START, 2.0
-    history, converged, it = [ev.cost], False, 0
-    for it in range(1, options.max_iterations + 1):
-        normal = normal if normal is not None else normal_equations(design, ev)
-        if determined is None:  # structural: found once, at the start
-            determined = determined_directions(
-                reduce(design.blocks, normal, 0.0).S[np.ix_(free, free)], scale
-            )
-        accepted = False
-        while lam < LAMBDA_MAX:
-            dx, dc, pred = damped_step(design.blocks, normal, free, scale, determined, lam)
-            if pred < max(options.tolerance, relative * ev.cost) and lam <= 1.0:
-                converged = True
-                break
-            trial = evaluate(design, ev.x + dx, ev.coef + dc)
-            rho = (ev.cost - trial.cost) / pred if pred > 0 else -1.0
-            if np.isfinite(trial.cost) and rho > 0:
-                lam *= max(1.0 / 3.0, 1.0 - (2.0 * rho - 1.0) ** 3)
-                nu, ev, normal, accepted = 2.0, trial, None, True
-                history.append(ev.cost)
-                break
-            lam, nu = lam * nu, nu * 2.0
-        if bar is not None:
-            bar.set_postfix_str(f"sum of squares {ev.cost:.6g}", refresh=False)
-            bar.update()
-        if converged or not accepted:
-            break
-    normal = normal if normal is not None else normal_equations(design, ev)
-    return ev, normal, converged, it, history
+    evaluation: Evaluation
+    normal: Normal | None = None
+
+    @property
+    def cost(self) -> float:
+        return self.evaluation.cost
+
+
+@dataclass(frozen=True)
+class DesignStep:
+    """A damped step: states ``dx`` (n,; rad, m, 1, s), coefficients ``dc`` (B, n_coef, 3) ECEF m and
+    the predicted reduction of the sum of squares."""
+
+    dx: np.ndarray
+    dc: np.ndarray
+    predicted: float
+
+
+class DesignEquations:
+    """The normal equations of a problem held in memory (:class:`Design`), for the
+    Levenberg-Marquardt engine (:class:`registration.fleet.batch.levenberg_marquardt.NormalEquations`)."""
+
+    def __init__(self, design: Design):
+        self.design = design
+
+    def scale(self, free: np.ndarray) -> np.ndarray:
+        return self.design.scale[free]
+
+    def linearize(self, point: DesignPoint, lams: tuple[float, ...]) -> DesignPoint:
+        if point.normal is not None:
+            return point
+        return DesignPoint(point.evaluation, normal_equations(self.design, point.evaluation))
+
+    def determined(self, at: DesignPoint, free: np.ndarray, scale: np.ndarray) -> np.ndarray:
+        assert at.normal is not None
+        return determined_directions(reduce(self.design.blocks, at.normal, 0.0).S[np.ix_(free, free)], scale)
+
+    def step(
+        self, at: DesignPoint, lam: float, free: np.ndarray, scale: np.ndarray, determined: np.ndarray
+    ) -> DesignStep:
+        assert at.normal is not None
+        return DesignStep(*damped_step(self.design.blocks, at.normal, free, scale, determined, lam))
+
+    def trial(self, at: DesignPoint, step: DesignStep) -> DesignPoint:
+        ev = at.evaluation
+        return DesignPoint(evaluate(self.design, ev.x + step.dx, ev.coef + step.dc))
+
+
+def starting_states(layout: StateLayout, x0: np.ndarray | None) -> np.ndarray:
+    """The starting states (n,; rad, m, 1, s): ``x0`` checked (default zeros), the fixed states at 0."""
+    x = np.zeros(layout.n) if x0 is None else np.array(x0, dtype=np.float64)
+    if x.shape != (layout.n,) or not np.isfinite(x).all():
+        raise ValueError(f"x0: expected {layout.n} finite starting states, got shape {x.shape}")
+    x[layout.fixed] = 0.0
+    return x
 
 
 def singular_blocks(design: Design, normal: Normal) -> np.ndarray:
@@ -167,49 +181,11 @@ def singular_blocks(design: Design, normal: Normal) -> np.ndarray:
     return np.flatnonzero(~(w[:, 0] > SINGULAR_BLOCK * w[:, -1]))
 
 
-def exclude_singular(
-    problem: FleetProblem, design: Design, bad: np.ndarray, outside: np.ndarray | None = None
-) -> FleetProblem:
-    """The problem without the plots of the windows ``bad`` (:func:`singular_blocks`), each recorded
-    as an exclusion. ``outside`` (N,) bool, given when the windows were found at the solution: the
-    plots seen outside their platform's navigation there (:func:`outside_when_seen`), which weighed
-    0; a window left undetermined by setting them aside says so."""
-    blk = design.blocks
-    drop = np.zeros(problem.n_plots, dtype=bool)
-    exclusions = []
-    for b in bad:
-        end = blk.block_start[b + 1] if b + 1 < blk.n_blocks else blk.order.size
-        plots = blk.order[blk.block_start[b] : end]
-        drop[plots] = True
-        n_out = int(outside[plots].sum()) if outside is not None else 0
-        held = plots[~outside[plots]] if n_out else plots
-        sensors = sorted({problem.sensor_ids[s] for s in problem.sensor[held]})
-        why = f"its position is not determined by the plots of {', '.join(sensors) or 'no sensor'} in this window"
-        if n_out:
-            why = (
-                f"{why}, once its {n_out} plots seen outside their platform's navigation (reported time - "
-                "time bias) are set aside at the solution"
-            )
-        elif outside is not None:
-            why += " at the solution (its geometry at the estimate; it was determined at the start)"
-        t = problem.time[plots]
-        exclusions.append(
-            Exclusion(
-                problem.target_ids[blk.block_target[b]],
-                f"singular geometry: {why}",
-                int(plots.size),
-                float(t.min()),
-                float(t.max()),
-            )
-        )
-    return problem.drop_plots(drop, exclusions)
-
-
 def determined_design(
     problem: FleetProblem, options: BatchOptions, x0: np.ndarray, priors: bool = True, coefficients=None
 ):
     """``(problem, design, start, normal)``: the design of ``problem`` with the windows whose position
-    their plots do not determine set aside (:func:`singular_blocks`, :func:`exclude_singular`, again
+    their plots do not determine set aside (:func:`singular_blocks`, ``set_aside.exclude_singular``, again
     until none is left), its evaluation at states ``x0`` (n,) with the window means of the plots
     corrected by ``x0`` and the normal equations there; None when no plot is left. Without
     ``priors`` the states' priors are left out of the sums (a filter carries them itself).
@@ -246,8 +222,11 @@ def fit_windows(
             break
         ev = trial
         normal = normal_equations(design, ev)
-    ev, normal, _, _, _ = levenberg_marquardt(design, ev, np.zeros(0, dtype=np.int64), options, 0.0, normal)
-    return ev, normal
+    solved = levenberg_marquardt(
+        DesignEquations(design), DesignPoint(ev, normal), np.zeros(0, dtype=np.int64), options
+    )
+    assert solved.point.normal is not None
+    return solved.point.evaluation, solved.point.normal
 
 
 #: Solves again after dropping plots that a time bias moves outside their navigation (where
@@ -256,77 +235,6 @@ MAX_TIME_BIAS_REFITS = 3
 #: Solves again, from the estimate, after that or after setting aside windows found undetermined
 #: at the solution, at most (each such solve drops at least one window, so this bounds a rare chain).
 MAX_REFITS = 10
-
-
-def outside_when_seen(design: Design, x: np.ndarray) -> np.ndarray:
-    """(N,) bool per plot of the design's problem: seen (reported time minus its sensor's time
-    bias under states ``x``) outside its platform's navigation time span."""
-    blk = design.blocks
-    out = np.zeros(blk.order.size, dtype=bool)
-    if design.time_biased:
-        out[blk.order] = design.seen_at(design.seen_time(x))[2][design.slot]
-    return out
-
-
-def _outside_exclusions(problem: FleetProblem, outside: np.ndarray) -> tuple[Exclusion, ...]:
-    """One exclusion per target of the plots ``outside`` (N,)."""
-    out = []
-    for k in np.unique(problem.target[outside]):
-        sel = outside & (problem.target == k)
-        t = problem.time[sel]
-        out.append(
-            Exclusion(
-                problem.target_ids[k],
-                "seen outside its platform's navigation once its sensor's time "
-                "bias is applied (reported time - time bias)",
-                int(sel.sum()),
-                float(t.min()),
-                float(t.max()),
-            )
-        )
-    return tuple(out)
-
-
-def time_bias_warnings(layout, x: np.ndarray, options: BatchOptions) -> tuple[str, ...]:
-    """A warning per sensor whose time bias estimate exceeds half the window length: the windows'
-    polynomials then extrapolate far and the estimate is not to be trusted."""
-    out = []
-    for s in np.flatnonzero(layout.time_bias_index >= 0):
-        i = int(layout.time_bias_index[s])
-        if options.window_s > 0 and abs(x[i]) > 0.5 * options.window_s:
-            out.append(
-                f"{layout.labels[i]} is {x[i]:+.3g} s, more than half the {options.window_s:g} s windows: "
-                f"not to be trusted; register again with longer windows (window_s >= {4 * abs(x[i]):.3g} s)"
-            )
-    return tuple(out)
-
-
-def _set_aside_outside(problem, design, ev, options):
-    """After a fit with time biases, the plots seen outside their navigation, which weighed 0 in
-    the evaluations (registration.fleet.batch.normal), set aside for good: (problem with their
-    exclusions recorded, design with their weights 0), or None when that would leave a window
-    undetermined (then the caller drops the plots and solves anew)."""
-    outside = outside_when_seen(design, ev.x)
-    if not outside.any():
-        return problem, design
-    rows = np.zeros(design.weight.shape[0], dtype=bool)
-    rows[design.slot] = outside[design.blocks.order]
-    design = replace(design, weight=np.where(rows[:, None], 0.0, design.weight))
-    if np.any(np.add.reduceat(design.weight.any(axis=1).astype(np.int64), design.block_start) == 0):
-        return None
-    return replace(problem, excluded=problem.excluded + _outside_exclusions(problem, outside)), design
-
-
-def _two_phases(
-    design: Design, start: Evaluation, normal: Normal, free: np.ndarray, options: BatchOptions, bar
-):
-    """Levenberg-Marquardt on the target windows alone (states held), then on everything:
-    (evaluation, normal equations, converged, iterations, cost history)."""
-    ev, normal, _, it1, hist1 = levenberg_marquardt(
-        design, start, np.zeros(0, dtype=np.int64), options, TARGETS_FIRST, normal, bar
-    )
-    ev, normal, converged, it2, hist2 = levenberg_marquardt(design, ev, free, options, 0.0, normal, bar)
-    return ev, normal, converged, it1 + it2, hist1 + hist2[1:]
 
 
 def fit(
@@ -348,10 +256,7 @@ def fit(
     MAX_REFITS solves. ``progress``: a bar over the iterations on standard error
     (:func:`progress_bar`)."""
     options = options or BatchOptions()
-    x0 = np.zeros(problem.layout.n) if x0 is None else np.array(x0, dtype=np.float64)
-    if x0.shape != (problem.layout.n,) or not np.isfinite(x0).all():
-        raise ValueError(f"x0: expected {problem.layout.n} finite starting states, got shape {x0.shape}")
-    x0[problem.layout.fixed] = 0.0
+    x0 = starting_states(problem.layout, x0)
     drops = 0
     with progress_bar(progress, "fleet batch solve", unit="iteration") as bar:
         for attempt in range(MAX_REFITS + 1):
@@ -363,15 +268,17 @@ def fit(
                     + ")"
                 )
             problem, design, start, normal = found
-            ev, normal, converged, iterations, history = _two_phases(
-                design, start, normal, problem.layout.free, options, bar
+            solved = two_phases(
+                DesignEquations(design), DesignPoint(start, normal), problem.layout.free, options, bar
             )
+            ev, normal = solved.point.evaluation, solved.point.normal
+            assert normal is not None
             last = attempt == MAX_REFITS
-            aside = _set_aside_outside(problem, design, ev, options)
+            aside = set_aside_outside(problem, design, ev.x)
             outside = outside_when_seen(design, ev.x)
             if aside is None and drops < MAX_TIME_BIAS_REFITS and not last:  # a window would be left empty
                 problem, x0, drops = (
-                    problem.drop_plots(outside, _outside_exclusions(problem, outside)),
+                    problem.drop_plots(outside, outside_exclusions(problem, outside)),
                     ev.x,
                     drops + 1,
                 )
@@ -392,14 +299,14 @@ def fit(
                 )
             problem, x0 = exclude_singular(problem, design, bad, outside), ev.x
     return Fit(
-        problem,
-        design,
-        ev.x,
-        ev.coef,
-        converged,
-        iterations,
-        history,
-        ev,
-        normal,
-        time_bias_warnings(problem.layout, ev.x, options),
+        problem=problem,
+        design=design,
+        x=ev.x,
+        coef=ev.coef,
+        converged=solved.converged,
+        iterations=solved.iterations,
+        cost_history=solved.cost_history,
+        evaluation=ev,
+        normal=normal,
+        warnings=time_bias_warnings(problem.layout, ev.x, options.window_s),
     )

@@ -24,6 +24,12 @@ import numpy as np
 from registration.fleet.data.tables import ATTITUDE_ERRORS, CHANNEL_UNITS, CHANNELS, EXTENDED_ERRORS
 
 __all__ = [
+    "ATTITUDE_COLUMNS",
+    "BIAS_COLUMNS",
+    "ELEVATION_BIAS_COLUMN",
+    "POSITION_ERROR_COLUMNS",
+    "RANGE_GAIN_COLUMN",
+    "TIME_BIAS_COLUMN",
     "EXTENDED_LABELS",
     "EXTENDED_UNITS",
     "FILE_UNITS",
@@ -60,6 +66,18 @@ def state_scale(layout) -> np.ndarray:
     ref = np.array([REFERENCE_SCALE[u] for u in layout.units])
     p = layout.prior_sigma
     return np.where(np.isfinite(p) & (p > 0), p, ref)
+
+
+#: The columns of ``StateLayout.sensor_states`` (and so of ``Design.state``): the platform's attitude
+#: errors (heading, pitch, roll), the sensor's biases (range, bearing, elevation) and, with the
+#: extended errors (EXTENDED_ERRORS order), the range gain, the time bias and the position errors
+#: (east, north, up).
+ATTITUDE_COLUMNS = slice(0, 3)
+BIAS_COLUMNS = slice(3, 6)
+ELEVATION_BIAS_COLUMN = 5
+RANGE_GAIN_COLUMN = 6
+TIME_BIAS_COLUMN = 7
+POSITION_ERROR_COLUMNS = slice(8, 11)
 
 
 @dataclass(frozen=True)

@@ -1,5 +1,6 @@
 """A partition's design and latest normal equations kept on local disk between the passes of the
-partitioned solver (:mod:`registration.fleet.batch.passes`, docs/archive.md): the spill cache.
+partitioned solver (:mod:`registration.fleet.batch.partitioned.partition_passes`, docs/archive.md):
+the spill cache.
 
 A file's name or its tag (checked before its arrays are read) is a digest of what it holds (the
 partition's key; the point's states and coefficients). It is written whole under a temporary name
@@ -45,7 +46,7 @@ def save(folder: str, name: str, value, tag: str = "") -> None:
     """Write ``value`` to ``folder/name`` atomically (the folder is made if missing), labelled ``tag``
     (checked by :func:`load` before the arrays are read). A failure to write (disk full, folder
     removed) is ignored: the value is built again when it is needed."""
-    buffers = []
+    buffers: list[pickle.PickleBuffer] = []
     meta = pickle.dumps(value, protocol=5, buffer_callback=buffers.append)
     raws = [b.raw() for b in buffers]
     offsets, at = [], 0
@@ -94,11 +95,11 @@ def load(folder: str, name: str, tag: str | None = None):
             size = max((off + n for off, n in offsets if n), default=0)
             data = np.empty(size, dtype=np.uint8)  # not zeroed, as a bytearray would be
             f.seek(start)
-            if f.readinto(memoryview(data)) != size:
+            if f.readinto(data.data) != size:
                 return None
     except (OSError, EOFError, pickle.UnpicklingError, struct.error, ValueError, TypeError):
         return None
-    view = memoryview(data)
+    view = data.data
     return pickle.loads(meta, buffers=[view[off : off + n] for off, n in offsets])
 
 

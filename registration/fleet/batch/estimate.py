@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.fleet.batch.covariance import fused_targets, solution_information, state_covariance
+from registration.fleet.batch.covariance import estimate_from_information, fused_targets, solution_information
 from registration.fleet.batch.residuals import (
     chi_square_parts,
     reference_residuals,
@@ -19,7 +19,6 @@ from registration.fleet.batch.residuals import (
 )
 from registration.fleet.batch.solver import BatchOptions, fit
 from registration.fleet.data.problem import FleetProblem
-from registration.fleet.observability import fleet_observability
 from registration.fleet.result import BatchResult, ChiSquareCheck
 
 __all__ = ["HEIGHT_WARNING", "solve_batch"]
@@ -69,21 +68,17 @@ def solve_batch(
     layout = problem.layout
     free = layout.free
     sol = solution_information(fit_)
-    report = fleet_observability(
-        sol.information_data, free, layout, problem.sensor_platform, problem.platform_ids, problem.sensor_ids
+    known = estimate_from_information(
+        layout,
+        sol.information,
+        sol.information_data,
+        problem.sensor_platform,
+        problem.platform_ids,
+        problem.sensor_ids,
     )
-    scale = layout.scale[free]
-    P_free, undetermined = state_covariance(sol.information, scale)
     n = layout.n
-    P = np.zeros((n, n))
-    P[np.ix_(free, free)] = P_free
     P_sink = np.zeros((n + 1, n + 1))
-    P_sink[:n, :n] = P
-    sigma = np.sqrt(np.clip(np.diag(P), 0, None))
-    status = {layout.names[i]: "fixed" for i in layout.fixed}
-    status.update(report.status)
-    if undetermined.size:  # states leaning on a direction left out of the covariance
-        sigma[free[np.linalg.norm(undetermined, axis=1) > 0.1]] = np.inf
+    P_sink[:n, :n] = known.covariance
     ref_target, ref_residuals = reference_residuals(problem, fit_.design, sol.evaluation)
     unused = unused_references(problem, fit_.design)
     flat = problem.targets_without_height()
@@ -95,18 +90,18 @@ def solve_batch(
     return BatchResult(
         layout=layout,
         estimate=fit_.x.copy(),
-        covariance=P,
-        sigma=sigma,
-        status=status,
+        covariance=known.covariance,
+        sigma=known.sigma,
+        status=known.status,
         targets=fused_targets(fit_, sol.reduced, P_sink),
         residuals=residual_table(problem, fit_.design, sol.evaluation),
         chi_square=_chi_square(fit_, sol.evaluation),
-        observability=report,
+        observability=known.report,
         excluded=problem.excluded,
         information=sol.information_data,
         free_names=tuple(layout.names[i] for i in free),
-        scale=scale,
-        undetermined=undetermined,
+        scale=known.scale,
+        undetermined=known.undetermined,
         converged=fit_.converged,
         iterations=fit_.iterations,
         plot_target=_per_input_row(problem, np.array(problem.target_ids, dtype=str)[problem.target]),

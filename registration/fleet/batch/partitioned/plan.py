@@ -1,5 +1,5 @@
 """An archive of fleet tables cut into partitions for the partitioned batch solver
-(:mod:`registration.fleet.batch.partitioned`, docs/archive.md).
+(:mod:`registration.fleet.batch.partitioned.estimate`, docs/archive.md).
 
 The target windows are the whole archive's (:mod:`registration.fleet.batch.blocks`: each target's
 plotted time span cut into equal windows), so a first pass over the plots (time, sensor and target
@@ -16,8 +16,9 @@ time columns finds those times), so the linear and Hermite interpolations at the
 times, also when a time bias of up to ``margin`` seconds moves them, use the same samples as with
 the whole table.
 
-A *source* gives the tables: :class:`TablesSource` (in memory, SI units) or
-:class:`registration.fleet.batch.archive.ParquetSource` (files read lazily). Its methods:
+A *source* gives the tables (:class:`registration.fleet.data.source.FleetSource`): the tables in
+memory (SI units, :class:`registration.io.fleet.memory.TablesSource`) or an archive read lazily
+(:class:`registration.io.fleet.archive.ParquetSource`). Its methods:
 ``plot_batches(columns)``, ``navigation_batches(columns)``, ``reference_batches(columns)``
 (iterators of column dicts: numpy arrays, ids also as ``pandas.Categorical``),
 ``read_plots(lo, hi)``, ``read_navigation(ranges)``, ``read_references(lo, hi)`` (rows with
@@ -38,6 +39,7 @@ from registration.fleet.data.problem import Exclusion
 __all__ = [
     "DEFAULT_NAV_MARGIN_S",
     "NAV_EXTRA_SAMPLES",
+    "SINGLE_SENSOR",
     "SLACK_S",
     "ArchivePlan",
     "make_plan",
@@ -58,7 +60,7 @@ SINGLE_SENSOR = (
 )
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class ArchivePlan:
     """The archive's targets, windows and partitions (module docstring).
 
@@ -123,7 +125,11 @@ def _codes(values) -> tuple[np.ndarray, list[str]]:
 def _first_pass(source) -> tuple:
     """Per target in order of first appearance: (ids, first time, last time, plots, sensors seen),
     and the number of plots; ValueError naming the plots file for a time that is not finite."""
-    order, t_min, t_max, count, pairs = {}, {}, {}, {}, set()
+    order: dict[str, int] = {}
+    t_min: dict[str, float] = {}
+    t_max: dict[str, float] = {}
+    count: dict[str, int] = {}
+    pairs: set[tuple[str, str]] = set()
     n = 0
     for batch in source.plot_batches(("time", "sensor", "target")):
         t = np.asarray(batch["time"], dtype=np.float64)
@@ -145,7 +151,7 @@ def _first_pass(source) -> tuple:
         n += t.size
     if n == 0:
         raise ValueError(f"{source.name('plots')}: the table has no rows, so there is nothing to register")
-    ids = sorted(order, key=order.get)
+    ids = sorted(order, key=lambda g: order[g])
     n_sensors = {g: 0 for g in ids}
     for g, _ in pairs:
         n_sensors[g] += 1
@@ -273,5 +279,16 @@ def make_plan(
     nav = _navigation_ranges(source, sensor_platforms, ranges, float(nav_margin_s))
     token = f"{source.token}:{window_s}:{hash((cuts.tobytes(), t0.tobytes(), t1.tobytes()))}"
     return ArchivePlan(
-        float(window_s), kept, tuple(ids), t0, t1, excluded, cuts, ranges, nav, n, float(nav_margin_s), token
+        window_s=float(window_s),
+        target_ids=kept,
+        all_targets=tuple(ids),
+        t0=t0,
+        t1=t1,
+        excluded=excluded,
+        cuts=cuts,
+        plot_ranges=ranges,
+        nav_ranges=nav,
+        n_input_plots=n,
+        nav_margin_s=float(nav_margin_s),
+        token=token,
     )
