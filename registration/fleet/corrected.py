@@ -10,8 +10,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration import _codegen
-from registration.fleet.data.layout import ELEVATION_BIAS_COLUMN
+from registration._generated import api as generated
+from registration.fleet.data.layout import (
+    ATTITUDE_COLUMNS,
+    BIAS_COLUMNS,
+    ELEVATION_BIAS_COLUMN,
+    POSITION_ERROR_COLUMNS,
+    RANGE_GAIN_COLUMN,
+)
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["corrected_plot_positions", "corrected_positions"]
@@ -29,39 +35,26 @@ def corrected_positions(
     ``meas`` (M, 3): range (m), bearing, elevation (rad), every channel filled (the caller places
     a plot without range or elevation).
     """
-    r, q, e = meas[:, 0], meas[:, 1], meas[:, 2]
-    if state.shape[1] > 6:
-        p = _codegen.get("fleet_plot2ecef_ext")(
-            nav[:, 0],
-            nav[:, 1],
-            nav[:, 2],
-            nav[:, 3],
-            nav[:, 4],
-            nav[:, 5],
-            xs[state[:, :3]],
-            xs[state[:, 3:6]],
-            xs[state[:, 6]],
-            xs[state[:, 8:11]],
-            lever,
-            r,
-            q,
-            e,
-        )[0]
+    lat, lon, alt, heading, pitch, roll = nav.T
+    known = dict(
+        lat=lat,
+        lon=lon,
+        alt=alt,
+        heading=heading,
+        pitch=pitch,
+        roll=roll,
+        att_err=xs[state[:, ATTITUDE_COLUMNS]],
+        bias=xs[state[:, BIAS_COLUMNS]],
+        lever_deck=lever,
+        r=meas[:, 0],
+        q=meas[:, 1],
+        e=meas[:, 2],
+    )
+    if state.shape[1] > BIAS_COLUMNS.stop:  # the extended layout: gain, time bias, position error
+        gain, pos_err = xs[state[:, RANGE_GAIN_COLUMN]], xs[state[:, POSITION_ERROR_COLUMNS]]
+        p = generated.fleet_plot2ecef_ext(**known, gain=gain, pos_err=pos_err).p_ecef
     else:
-        p = _codegen.get("fleet_plot2ecef")(
-            nav[:, 0],
-            nav[:, 1],
-            nav[:, 2],
-            nav[:, 3],
-            nav[:, 4],
-            nav[:, 5],
-            xs[state[:, :3]],
-            xs[state[:, 3:6]],
-            lever,
-            r,
-            q,
-            e,
-        )[0]
+        p = generated.fleet_plot2ecef(**known).p_ecef
     return np.asarray(p).reshape(-1, 3)
 
 

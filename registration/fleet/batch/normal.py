@@ -48,10 +48,16 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from registration import _codegen
+from registration._generated import api as generated
 from registration.fleet.batch.blocks import Blocks
 from registration.fleet.batch.design import Design
-from registration.fleet.data.layout import TIME_BIAS_COLUMN
+from registration.fleet.data.layout import (
+    ATTITUDE_COLUMNS,
+    BIAS_COLUMNS,
+    POSITION_ERROR_COLUMNS,
+    RANGE_GAIN_COLUMN,
+    TIME_BIAS_COLUMN,
+)
 
 __all__ = ["Evaluation", "Normal", "chunk_positions", "evaluate", "normal_equations", "positions"]
 
@@ -120,27 +126,30 @@ def _extended_rows(design: Design, xs: np.ndarray, coef: np.ndarray) -> np.ndarr
         if aside.any():
             weight = np.where(aside[:, None], 0.0, weight)
     p = chunk_positions(design, basis, coef)
-    return _codegen.get(f"fleet_rows_ext_{blk.n_coef}")(
-        p,
-        v,
-        nav[:, 0],
-        nav[:, 1],
-        nav[:, 2],
-        nav[:, 3],
-        nav[:, 4],
-        nav[:, 5],
-        rate,
-        xs[state[:, :3]],
-        xs[state[:, 3:6]],
-        xs[state[:, 6]],
-        xs[state[:, 8:11]],
-        design.lever,
-        design.meas[:, 0],
-        design.meas[:, 1],
-        design.meas[:, 2],
-        weight,
-        basis[:, 0] if blk.n_coef == 1 else basis,
-    )[0]
+    lat, lon, alt, heading, pitch, roll = nav.T
+    known = dict(
+        p_ecef=p,
+        v_ecef=v,
+        lat=lat,
+        lon=lon,
+        alt=alt,
+        heading=heading,
+        pitch=pitch,
+        roll=roll,
+        nav_rate=rate,
+        att_err=xs[state[:, ATTITUDE_COLUMNS]],
+        bias=xs[state[:, BIAS_COLUMNS]],
+        gain=xs[state[:, RANGE_GAIN_COLUMN]],
+        pos_err=xs[state[:, POSITION_ERROR_COLUMNS]],
+        lever_deck=design.lever,
+        r=design.meas[:, 0],
+        q=design.meas[:, 1],
+        e=design.meas[:, 2],
+        weight=weight,
+    )
+    if blk.n_coef == 1:
+        return generated.fleet_rows_ext_1(**known, basis=basis[:, 0]).rows_t
+    return generated.fleet_rows_ext_4(**known, basis=basis).rows_t
 
 
 def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
@@ -153,24 +162,27 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
         rows_t = _extended_rows(design, xs, coef)
     else:
         p = positions(design.basis, design.block, coef)
-        nav = design.nav
-        rows_t = _codegen.get(f"fleet_rows_{blk.n_coef}")(
-            p,
-            nav[:, 0],
-            nav[:, 1],
-            nav[:, 2],
-            nav[:, 3],
-            nav[:, 4],
-            nav[:, 5],
-            xs[design.att_state],
-            xs[design.bias_state],
-            design.lever,
-            design.meas[:, 0],
-            design.meas[:, 1],
-            design.meas[:, 2],
-            design.weight,
-            design.basis[:, 0] if blk.n_coef == 1 else design.basis,
-        )[0]
+        lat, lon, alt, heading, pitch, roll = design.nav.T
+        known = dict(
+            p_ecef=p,
+            lat=lat,
+            lon=lon,
+            alt=alt,
+            heading=heading,
+            pitch=pitch,
+            roll=roll,
+            att_err=xs[design.att_state],
+            bias=xs[design.bias_state],
+            lever_deck=design.lever,
+            r=design.meas[:, 0],
+            q=design.meas[:, 1],
+            e=design.meas[:, 2],
+            weight=design.weight,
+        )
+        if blk.n_coef == 1:
+            rows_t = generated.fleet_rows_1(**known, basis=design.basis[:, 0]).rows_t
+        else:
+            rows_t = generated.fleet_rows_4(**known, basis=design.basis).rows_t
     Z = rows_t.swapaxes(1, 2)  # each plot's 3 rows, contiguous
     e = Z[:, :, -1]
     if design.ref_whiten is None:
@@ -184,7 +196,9 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
     surf = design.surface
     if surf is None:
         return Evaluation(x, coef, Z, e_ref, cost)
-    residual, J = _codegen.get("surface_residual")(positions(surf.basis, surf.block, coef), surf.alt)
+    residual, J = generated.surface_residual(
+        p_ecef=positions(surf.basis, surf.block, coef), alt_surface=surf.alt
+    )
     e_surface = residual * surf.weight
     return Evaluation(
         x,
