@@ -2,7 +2,8 @@
 
 ``deck`` frame: x starboard, y bow, z up along the deck normal. Attitude is the paper's
 Cardan triple (C heading, phi pitch, theta roll), all in radians:
-``R_enu_deck = Rz(C) Rx(phi) Ry(theta)`` (docs/conventions.md). Radar measurement: slant range r (m),
+``R_enu_deck = Rz(C) Rx(phi) Ry(theta)`` (docs/reference/conventions.md). Radar measurement: slant range r
+(m),
 deck bearing q from the bow, starboard positive, and elevation eps above the deck plane.
 """
 

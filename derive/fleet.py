@@ -2,13 +2,13 @@
 
 Built on the two-ship model's expressions (derive/pseudo_measurement.py: ``ecef2plot_expr`` and
 ``plot2ecef_expr``, themselves built from geodesy.py and attitude.py), extended by the sensor's
-lever arm and by the registration errors of the fleet problem (docs/fleet.md):
+lever arm and by the registration errors of the fleet problem (docs/background/fleet-model.md):
 
 * the platform reports navigation (lat, lon rad; alt m) and attitude (heading, pitch, roll rad);
   its true attitude is ``reported - att_err`` (``att_err`` = heading, pitch, roll errors, rad);
 * the sensor sits at ``lever_deck`` (m, deck frame: x starboard, y bow, z up) from the platform's
   navigation point and measures ``[r, q, e] = true + bias + noise`` (``bias`` = range m, bearing
-  rad, elevation rad), the plot of docs/conventions.md in the deck frame.
+  rad, elevation rad), the plot of docs/reference/conventions.md in the deck frame.
 
 With ``u_deck = R_enu_deck^T R_ecef_enu^T (p_ecef - p_nav_ecef) - lever_deck``, the prediction is
 ``ecef2plot(p_ecef - R_ecef_enu R_enu_deck lever_deck)`` (the sensor's position moved to the
@@ -261,7 +261,7 @@ def _rows_spec(residual_spec: FunctionSpec, n_basis: int, extended: bool = False
 
 def extended_specs() -> list:
     """The extended plot model: range gain, time bias and sensor position error besides the
-    attitude errors and biases (docs/fleet.md, "Sensor error model").
+    attitude errors and biases (docs/background/fleet-model.md, "Sensor error model").
 
     ``fleet_residual_ext`` takes the target position ``p_ecef`` and velocity ``v_ecef`` (m, m/s)
     and the platform's navigation and its rates ``nav_rate`` (rad/s, m/s) all at one time, and

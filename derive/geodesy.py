@@ -1,6 +1,6 @@
 """Geodesy: geodetic -> ECEF position and the ENU -> ECEF rotation T (Wang et al. 2011, eqs. (1), (4)).
 
-Frames (docs/conventions.md): ``ecef`` is WGS-84 earth-centred earth-fixed; ``enu`` is the
+Frames (docs/reference/conventions.md): ``ecef`` is WGS-84 earth-centred earth-fixed; ``enu`` is the
 local geographic frame at a platform (x east, y north, z up along the geodetic normal).
 Latitude B, longitude L in radians, height H above the ellipsoid in metres.
 """
@@ -144,7 +144,7 @@ def specs() -> list[FunctionSpec]:
         out.append(
             FunctionSpec(
                 name=f"enu2ecef_rotation_{variant}",
-                doc=f"R_ecef_enu at (lat, lon) in rad, '{variant}' variant (docs/online.md).",
+                doc=f"R_ecef_enu at (lat, lon) in rad, '{variant}' variant (docs/background/online.md).",
                 inputs=(Port("lat", lat, "rad"), Port("lon", lon, "rad")),
                 outputs=(Port("R_ecef_enu", fn(lat, lon), "1"),),
                 domain=GEO_DOMAIN,

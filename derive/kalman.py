@@ -18,7 +18,7 @@ dq_A, de_A, dC_B, ..., de_B] (rad and m), covariance P (12x12), random-walk proc
   weighted by their covariances), which carries only the fused position's small error: H no
   longer shares the angle noise of the innovation. That correlation is an errors-in-variables
   bias of order sigma^2 which the weakly determined range biases amplify to about 1 sigma at
-  the paper's 0.5 deg noise (docs/online.md). While P is large, S >> R and t stays near c
+  the paper's 0.5 deg noise (docs/background/online.md). While P is large, S >> R and t stays near c
   (the ``relinearized`` point): a large misregistration is not mistaken for noise;
 * ``R = M R0 M^T``, ``S = H P- H^T + R``, gain by a linear solve (no explicit inverse),
   ``K = P- H^T S^-1``; Joseph-form covariance update, symmetric by construction (upper triangle

@@ -1,9 +1,9 @@
 """Carrier landing (Wang, Liu and Gao 2017): the radar/camera space alignment chain and its
 Jacobians (eqs. 7-11).
 
-Frames (all right-handed, metres; see docs/landing.md for pictures in words and numeric examples):
+Frames (all right-handed, metres; see docs/background/landing.md for pictures in words and numeric examples):
 
-- ``deck``: ship-fixed (docs/conventions.md): origin at the ship's motion centre (the point the ship
+- ``deck``: ship-fixed (docs/reference/conventions.md): origin at the ship's motion centre (the point the ship
   pitches, rolls and yaws about), x starboard, y bow, z up along the deck normal.
 - ``level``: same origin, not rotating with the ship's oscillations: x starboard and y bow along
   the ship's *mean* heading, z up (vertical). ``R_level_deck = Rz(yaw) Rx(pitch) Ry(roll)``, the

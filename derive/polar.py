@@ -1,4 +1,5 @@
-"""Polar <-> Cartesian transforms and their Jacobians, 2-D and 3-D (docs/fusion.md, docs/landing.md).
+"""Polar <-> Cartesian transforms and their Jacobians, 2-D and 3-D (docs/background/fusion.md,
+docs/background/landing.md).
 
 Convention shared by the fusion (D) and landing (L) capabilities: the angle ``az`` is measured
 counter-clockwise from the +x axis towards +y; ``el`` is above the x-y plane.

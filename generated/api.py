@@ -173,7 +173,7 @@ class Enu2ecefRotationOutputs(NamedTuple):
 
 def enu2ecef_rotation(*, t_variant: str, lat: ArrayLike, lon: ArrayLike) -> Enu2ecefRotationOutputs:
     """The generated function ``enu2ecef_rotation_{t_variant}``, t_variant one of "standard", "paper". That of
-    "standard": R_ecef_enu at (lat, lon) in rad, 'standard' variant (docs/online.md).
+    "standard": R_ecef_enu at (lat, lon) in rad, 'standard' variant (docs/background/online.md).
 
     Inputs, each at this shape or with one more leading axis of N points:
         lat: () [rad]
@@ -677,7 +677,7 @@ def enu2deck_attitude(*, R_enu_deck: ArrayLike) -> Enu2deckAttitudeOutputs:
 
 
 def enu2ecef_rotation_paper(*, lat: ArrayLike, lon: ArrayLike) -> Enu2ecefRotationOutputs:
-    """R_ecef_enu at (lat, lon) in rad, 'paper' variant (docs/online.md).
+    """R_ecef_enu at (lat, lon) in rad, 'paper' variant (docs/background/online.md).
 
     Inputs, each at this shape or with one more leading axis of N points:
         lat: () [rad]
@@ -690,7 +690,7 @@ def enu2ecef_rotation_paper(*, lat: ArrayLike, lon: ArrayLike) -> Enu2ecefRotati
 
 
 def enu2ecef_rotation_standard(*, lat: ArrayLike, lon: ArrayLike) -> Enu2ecefRotationOutputs:
-    """R_ecef_enu at (lat, lon) in rad, 'standard' variant (docs/online.md).
+    """R_ecef_enu at (lat, lon) in rad, 'standard' variant (docs/background/online.md).
 
     Inputs, each at this shape or with one more leading axis of N points:
         lat: () [rad]

@@ -12,7 +12,7 @@ azimuth (rad, from east, counter-clockwise), ``Tar_Phi`` elevation (rad); the no
 ``Range_Error``, ``Theta_Error``, ``Phi_Error``; the site ``Sensor_B``, ``Sensor_L`` (rad),
 ``Sensor_H`` (m) and a zero ``Sensor_Attitude``, so each sensor frame is the local ENU frame.
 
-Conventions mapped to ours (docs/conventions.md):
+Conventions mapped to ours (docs/reference/conventions.md):
 
 * a site is a platform with heading 0 (bow = north), pitch 0, roll 0, so deck = ENU;
 * bearing q (from north, clockwise) = pi/2 - azimuth: a bias b in azimuth is -b in bearing;

@@ -4,7 +4,7 @@
 and writes its input tables as a working example; ``fleet register`` reads such tables (CSV or
 Parquet, degrees and metres; see :mod:`registration.io.fleet.read`) and registers them. Both print
 the estimates per sensor and platform, the observability report and the chi-square check, and
-write ``estimates.csv``, ``summary.json`` and the plots. See docs/fleet.md.
+write ``estimates.csv``, ``summary.json`` and the plots. See docs/howto/register-a-fleet.md.
 """
 
 from __future__ import annotations

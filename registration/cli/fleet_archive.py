@@ -1,5 +1,5 @@
 """``registration fleet register`` on an archive too large for memory: the partitioned batch solver
-(:func:`registration.fleet.batch.partitioned.solve_batch_partitioned`, docs/archive.md) on a
+(:func:`registration.fleet.batch.partitioned.solve_batch_partitioned`, docs/howto/register-an-archive.md) on a
 folder of Parquet tables, or of CSV files converted block by block into a temporary Parquet folder
 (:mod:`registration.io.fleet.csvarchive`), in this process or on Dask workers.
 
@@ -13,7 +13,8 @@ CSV row, leaves ``--out`` as it was, with a one-line error naming the file): ``e
 partition, written by the workers, or with ``--scheduler`` returned to this process and written
 here), ``residuals.csv`` (per sensor and channel: count, mean, RMS of the whitened residuals),
 ``summary.json`` (the partitions, iterations, chi-square, exclusions, residual checks) and the PNGs
-of :mod:`registration.cli.fleet_archive_output` (docs/archive.md, "Outputs of an archive run").
+of :mod:`registration.cli.fleet_archive_output` (docs/howto/register-an-archive.md, "Outputs of an archive
+run").
 """
 
 from __future__ import annotations

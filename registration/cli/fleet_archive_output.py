@@ -1,4 +1,5 @@
-"""What ``registration fleet register --partition-s`` writes besides its estimates (docs/archive.md,
+"""What ``registration fleet register --partition-s`` writes besides its estimates
+(docs/howto/register-an-archive.md,
 "Outputs of an archive run"): ``residuals.csv`` and the residual part of ``summary.json`` from the
 residual sums of :func:`registration.fleet.batch.outputs.archive_outputs`, and the PNG figures:
 ``residuals.png`` (the histogram of every whitened residual per channel, from exact counts),

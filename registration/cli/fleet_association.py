@@ -1,7 +1,7 @@
 """``fleet register`` on plots without target ids for some or all rows (or with a ``track`` column):
 the association (:func:`registration.fleet.associate_and_register`, a batch method), then, with
 ``--method online``, the online filter on the labels it gave; ``associations.csv``; the summary's
-association part. See docs/association.md."""
+association part. See docs/background/association.md."""
 
 from __future__ import annotations
 

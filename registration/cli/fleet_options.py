@@ -23,7 +23,7 @@ SIMULATE_HELP = (
 )
 REGISTER_HELP = (
     "register a fleet from plots, navigation and sensors tables (CSV or Parquet, degrees and metres; "
-    "see docs/fleet.md)"
+    "see docs/reference/fleet-files.md)"
 )
 
 #: The options of `fleet simulate` after --seed, --method, --out and --no-plots: (flag, type, default,
@@ -81,7 +81,8 @@ def _add_method(p: argparse.ArgumentParser) -> None:
         choices=("batch", "online"),
         default="batch",
         help="batch: maximum likelihood over all plots at once; online: the filter, one update per "
-        "window of plots, with the estimates over time in history.csv (docs/fleet-online.md); plots without "
+        "window of plots, with the estimates over time in history.csv (docs/background/fleet-online.md); "
+        "plots without "
         "target ids are first associated by the batch, then filtered with the labels it gave",
     )
 

@@ -1,7 +1,8 @@
 """``registration import asterix|nmea``: a recording in a real format becomes the fleet tables.
 
 Each importer (:mod:`registration.io.asterix`, :mod:`registration.io.nmea`) turns its inputs into
-the fleet tables in their file form (degrees, metres; the columns of docs/fleet.md), a table of
+the fleet tables in their file form (degrees, metres; the columns of docs/reference/fleet-files.md), a table
+of
 the records it set aside and a summary. This command writes them into ``--out`` by the standard
 names, so that ``registration fleet register --tables OUT`` registers them next:
 

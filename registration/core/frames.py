@@ -3,7 +3,7 @@
 Thin numpy wrappers over the generated functions (derive/geodesy.py, derive/attitude.py).
 Vectorised over a leading axis of N points: scalars in give one row out. SI units and radians.
 
-Frames (docs/conventions.md): ``ecef`` WGS-84 earth-centred earth-fixed; ``enu`` x east, y north,
+Frames (docs/reference/conventions.md): ``ecef`` WGS-84 earth-centred earth-fixed; ``enu`` x east, y north,
 z up; ``deck`` x starboard, y bow, z up. Attitude: heading C clockwise from true north, pitch
 phi positive bow up, roll theta positive starboard down; ``R_enu_deck = Rz(C) Rx(phi) Ry(theta)``.
 Radar: range r (m), deck bearing q from the bow, starboard positive, elevation e above the deck.

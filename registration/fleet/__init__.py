@@ -10,8 +10,9 @@ Levenberg-Marquardt, covariance, residuals, :func:`solve_batch` in ``batch.estim
 (:class:`FleetFilter`, :func:`register_online`: the same model epoch by epoch as plots arrive) and
 ``association`` (:func:`associate_and_register`: plots without target ids associated across sensors
 jointly with the registration, and the simulated clutter scenarios). The table files (CSV/Parquet in
-degrees) are read and written by :mod:`registration.io.fleet`. See docs/fleet.md, docs/fleet-online.md,
-docs/association.md.
+degrees) are read and written by :mod:`registration.io.fleet`. See docs/reference/fleet-files.md,
+docs/background/fleet-online.md,
+docs/background/association.md.
 """
 
 from registration.fleet.association.associate import (

@@ -1,5 +1,5 @@
 """Stone Soup interoperation: detections <-> plot and navigation tables, and a feeder that
-corrects detections with a registration result. See docs/stonesoup.md.
+corrects detections with a registration result. See docs/howto/stonesoup.md.
 
 Needs the optional dependency Stone Soup: ``pip install stonesoup``;
 without it, importing this module raises ImportError saying so.

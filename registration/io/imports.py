@@ -2,7 +2,7 @@
 
 An importer (ASTERIX: :func:`registration.io.asterix.import_asterix`; NMEA 0183 with AIS:
 :func:`registration.io.nmea.import_nmea`) turns a recording into the fleet tables in their file
-form (degrees, metres, seconds; the columns of docs/fleet.md), the records it set aside (a
+form (degrees, metres, seconds; the columns of docs/reference/fleet-files.md), the records it set aside (a
 rejected ledger's frame, :mod:`registration.io.files.ledger`) and a JSON-able summary.
 :meth:`ImportResult.write` writes them into a folder by the standard names, through the one folder
 writer (:func:`registration.io.files.tablefile.write_tables`), so that ``registration fleet

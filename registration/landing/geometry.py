@@ -1,7 +1,7 @@
 """Deck geometry and space alignment: the deck-to-touchdown rotation and the radar point in the
 touchdown frame (Wang, Liu & Gao 2017, eqs. 7-8).
 
-Frames (full definitions with sign conventions in ``derive/landing.py`` and ``docs/landing.md``):
+Frames (full definitions with sign conventions in ``derive/landing.py`` and ``docs/background/landing.md``):
 
 - ``deck``: ship-fixed; origin at the ship's motion centre; x starboard, y bow, z deck normal.
 - ``level``: origin at the motion centre, x starboard / y bow along the *mean* heading, z up;

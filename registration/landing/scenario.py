@@ -1,5 +1,5 @@
 """The simulated carrier approach: ship motion, sensor models, glide path, deck layout and the
-noise-free truth seen by each sensor. Every default is an assumption stated in docs/landing.md
+noise-free truth seen by each sensor. Every default is an assumption stated in docs/background/landing.md
 and can be changed through the dataclasses (or the CLI). SI units and radians."""
 
 from __future__ import annotations
@@ -243,7 +243,7 @@ class LandingScenario:
 
 
 def default_scenario() -> LandingScenario:
-    """The default approach (every field at its default; see docs/landing.md, Assumptions)."""
+    """The default approach (every field at its default; see docs/background/landing.md, Assumptions)."""
     return LandingScenario()
 
 

@@ -1,6 +1,6 @@
 """Online ECEF registration of two ship radars: a Kalman filter over attitude errors and radar biases.
 
-Wang et al. 2011 (see docs/online.md): the state, the pseudo-measurement of eqs. (7)-(19) and
+Wang et al. 2011 (see docs/background/online.md): the state, the pseudo-measurement of eqs. (7)-(19) and
 the filter of eqs. (18)-(23), with an observability report and a Monte Carlo against the
 Cramér-Rao bound. Modules: ``contract`` (state, row layout, limits, checks), ``config``,
 ``filter`` (streaming :class:`OnlineRegistrar`), ``dataset`` (:func:`register`), ``result``,

@@ -54,11 +54,11 @@ class RegistrationConfig:
     linearization: ``paper`` (H, Z at the raw measurements, as printed), ``relinearized`` (at
         the measurements corrected by the current estimate: an extended Kalman filter) or
         ``fitted`` (the default: at the most probable noise-free plots given the row and the
-        current estimate with its covariance; see docs/online.md).
+        current estimate with its covariance; see docs/background/online.md).
     t_variant: ``standard`` (orthonormal ENU->ECEF) or ``paper`` (eq. (4) as printed).
     covariance_update: ``joseph`` (the default: Joseph form, ``(I-KH) P (I-KH)^T + K R K^T``) or
         ``carlson`` (the same P from its triangular square root, positive definite by construction,
-        about half the covariance arithmetic; equal to Joseph to rounding; see docs/online.md).
+        about half the covariance arithmetic; equal to Joseph to rounding; see docs/background/online.md).
     """
 
     sigma0: tuple = (50.0, np.radians(0.5), np.radians(0.5), 50.0, np.radians(0.5), np.radians(0.5))

@@ -1,6 +1,6 @@
 """What a Monte Carlo evaluation of the online filter produced (:class:`MonteCarloResult`): RMSE
 against the filter's sigma and the Cramér-Rao bound, NEES and NIS against their chi-square
-intervals, as a table, JSON and a figure (all values in SI units: rad, m; docs/online.md).
+intervals, as a table, JSON and a figure (all values in SI units: rad, m; docs/background/online.md).
 """
 
 from __future__ import annotations

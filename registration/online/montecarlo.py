@@ -1,5 +1,5 @@
 """Monte Carlo evaluation of the online filter on the paper scenario: RMSE against the filter's
-sigma and the Cramér-Rao bound, and NEES/NIS against their chi-square intervals (docs/online.md).
+sigma and the Cramér-Rao bound, and NEES/NIS against their chi-square intervals (docs/background/online.md).
 
 Seeds ``seed0 .. seed0 + runs - 1`` change only the noise, so the scenario's tracks, the true
 plots and the Cramér-Rao bound are computed once; the runs' rows are drawn together and every

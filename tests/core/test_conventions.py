@@ -1,4 +1,4 @@
-"""Sign conventions (docs/conventions.md), one readable check each (deck: x starboard, y bow, z up;
+"""Sign conventions (docs/reference/conventions.md), one readable check each (deck: x starboard, y bow, z up;
 ENU: x east, y north, z up)."""
 
 import numpy as np

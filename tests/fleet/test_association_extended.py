@@ -2,7 +2,7 @@
 bias, sensor position error: 11 states per sensor), on simulated data with known truth.
 
 The comparison with true ids registers the same real plots the association labelled, with their
-true ids (as docs/association.md's "bias vs ids"): it measures what the association itself
+true ids (as docs/background/association.md's "bias vs ids"): it measures what the association itself
 changes. Registering all real plots instead also measures the plots left unassociated; in the
 fixture's draw 26 plots of the 2-D radar on the rolling ship C, most of one target, stay
 unassociated (30 do without the extended errors), and with a range gain beside its range bias

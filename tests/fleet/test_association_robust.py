@@ -4,7 +4,7 @@ down before any run): the issue's fleet of three rolling ships and a shore site,
 5 % clutter, another sensor mix, the extended errors; and deliberately wrong joins, which the checks
 must drop.
 
-Criteria (docs/association.md): every identifiable state and sum within 3.5 sigma of the truth;
+Criteria (docs/background/association.md): every identifiable state and sum within 3.5 sigma of the truth;
 every sigma within 1.3 times that of the registration of all real plots with their true ids; the
 chi-square of the residuals within its 99.9 % band; wrong joins and associated clutter below the
 rates stated in each test.
@@ -82,7 +82,8 @@ def test_other_sensor_mix_level_and_rolling_ships():
     sc = sim.scenario
     result = associate_and_register(sim.plots, sc.sensors, sc.navigation, sc.platforms)
     # the bounds first written here (clutter 0.3 %, unassociated 6 %) failed on this draw: one of its 241
-    # clutter plots was associated (0.41 %), 6.6 % of the real plots stayed unassociated (docs/association.md)
+    # clutter plots was associated (0.41 %), 6.6 % of the real plots stayed unassociated
+    # (docs/background/association.md)
     _check(sim, result, _with_ids(sim), wrong=0.003, clutter=0.01, unassociated=0.08)
 
 

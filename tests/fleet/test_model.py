@@ -1,6 +1,6 @@
 """The generated plot model of fleet registration (derive/fleet.py): declared for the three-way
 Jacobian tests, consistent with the two-ship model's ecef2plot, inverted by fleet_plot2ecef, the
-lever arm and the error signs of docs/conventions.md, and the rows function equal to its NumPy
+lever arm and the error signs of docs/reference/conventions.md, and the rows function equal to its NumPy
 composition."""
 
 from __future__ import annotations

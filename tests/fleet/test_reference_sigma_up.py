@@ -3,7 +3,7 @@
 * without it, or with ``sigma_up == sigma``, every result is the scalar-weight one, bit for bit;
 * with it, the reference residual is whitened in the local frame, ``L (y - p)`` with
   ``L = diag(1/s, 1/s, 1/s_up) R_enu_ecef``: checked against an ENU rotation written out here
-  (docs/conventions.md), the normal equations against finite differences of the cost and a dense
+  (docs/reference/conventions.md), the normal equations against finite differences of the cost and a dense
   least-squares solve;
 * a fleet whose reference has 3 m horizontal and 30 m vertical noise, declared so: the errors within
   3.5 sigma, the chi-square consistent, every bias's sigma below that of sigma = 30 m on all axes;
@@ -40,7 +40,7 @@ NAMES = ("plots", "navigation", "sensors", "platforms", "reference")
 
 
 def _enu_rows(lat: np.ndarray, lon: np.ndarray) -> np.ndarray:
-    """(N, 3, 3) R_enu_ecef written out from docs/conventions.md (rows: east, north, up)."""
+    """(N, 3, 3) R_enu_ecef written out from docs/reference/conventions.md (rows: east, north, up)."""
     sl, cl, sb, cb = np.sin(lon), np.cos(lon), np.sin(lat), np.cos(lat)
     east = np.stack([-sl, cl, np.zeros_like(sl)], axis=1)
     north = np.stack([-sb * cl, -sb * sl, cb], axis=1)

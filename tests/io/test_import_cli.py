@@ -152,7 +152,7 @@ def _assert_surface_run(reg):
     a few iterations (it crept along the unmeasured heights to its 104-iteration limit when the
     AIS positions carried sea level as a measured height), no warning of unmeasured heights, and
     the chi-square no longer counts the known sea level as measured values (0.78 then; the AIS
-    sigmas are bounds, so it stays a little below 1: docs/nmea.md)."""
+    sigmas are bounds, so it stays a little below 1: docs/howto/import-nmea.md)."""
     summary = json.loads((reg / "summary.json").read_text())
     assert summary["converged"] and summary["iterations"] < 30
     assert not any("no measured height" in w for w in summary["warnings"])

@@ -1,4 +1,4 @@
-"""Association of plots without target ids, jointly with the registration (docs/association.md).
+"""Association of plots without target ids, jointly with the registration (docs/background/association.md).
 
 ``associate`` (:func:`associate_and_register`) runs it: ``problems`` (the ids the plots carry, the
 problems of all and of the labelled plots, references), ``options``, ``grouping/`` (targets confirmed

@@ -2,7 +2,7 @@
 
 Which plot of one sensor and which of another are the same target is unknown while the biases are
 unknown, and the biases cannot be estimated until that is known. Both are found together, in
-three stages (docs/association.md):
+three stages (docs/background/association.md):
 
 1. **Anchors**: targets fixed without joining tracks to them: the target ids the plots carry
    (some or all rows of a ``target`` column), the reference targets (ADS-B, AIS), and targets

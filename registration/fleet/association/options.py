@@ -15,7 +15,7 @@ __all__ = ["AssociationOptions"]
 class AssociationOptions:
     """Settings of :func:`~registration.fleet.association.associate.associate_and_register`.
 
-    Anchors and tracklets (docs/association.md): window_s: tracklet window (s), also the batch's
+    Anchors and tracklets (docs/background/association.md): window_s: tracklet window (s), also the batch's
     target window. gate_probability: gates are this quantile of chi-square. max_speed (m/s): a new
     track's velocity sigma. accel_sigma (m/s^2): the tracks' white-acceleration noise. max_missed:
     scans in a row without a plot that close a track. min_track_plots, min_tracklet_plots: shorter

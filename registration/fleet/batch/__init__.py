@@ -1,4 +1,5 @@
-"""The batch solver of fleet registration (docs/fleet.md): target windows (``blocks``), the plots laid
+"""The batch solver of fleet registration (docs/background/fleet-model.md): target windows (``blocks``), the
+plots laid
 out for evaluation (``design``), residuals and normal equations (``normal``), the Schur complement
 (``schur``), the Levenberg-Marquardt engine (``levenberg_marquardt``), starting values
 (``initial``), what is set aside (``set_aside``), the fit (``solver``), covariance and fused

@@ -1,5 +1,5 @@
 """The target model of the batch solver: each target's track cut into time windows, the position
-in each window a polynomial in time (docs/fleet.md, "Asynchronous sensors").
+in each window a polynomial in time (docs/background/fleet-model.md, "Asynchronous sensors").
 
 Window ``b`` of target ``j`` spans ``[t0, t1]``; with ``tau = (t - centre) / half`` in [-1, 1] the
 position is ``p(t) = sum_k P_k(tau) c_bk`` (Legendre polynomials P_0..P_d, c_bk in ECEF m), so

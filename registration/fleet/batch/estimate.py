@@ -57,7 +57,8 @@ def solve_batch(
 ) -> BatchResult:
     """Register a fleet: maximum-likelihood (or, with finite priors, maximum a posteriori)
     estimates of every platform's attitude errors and every sensor's biases, jointly with the
-    target trajectories, from all plots at once. See docs/fleet.md for the model and the method.
+    target trajectories, from all plots at once. See docs/background/fleet-model.md for the model and the
+    method.
     ``x0`` (n,; rad, m): starting states, for example an earlier estimate (default zeros); the
     solution is the same optimum to within the stopping tolerance, reached in fewer iterations.
     ``progress``: a bar over the solver's iterations on standard error, shown only on a terminal

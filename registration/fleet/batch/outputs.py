@@ -1,4 +1,5 @@
-"""The outputs of a partitioned solve (:mod:`registration.fleet.batch.partitioned`, docs/archive.md),
+"""The outputs of a partitioned solve (:mod:`registration.fleet.batch.partitioned`,
+docs/howto/register-an-archive.md),
 made by one more pass over the partitions at the solution: :func:`archive_outputs`.
 
 Each partition, with the states ``x``, its windows' coefficients and the states' covariance ``P``,

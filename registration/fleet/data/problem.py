@@ -252,7 +252,7 @@ def plot_row_problems(plots, sensors, navigation, platforms=None, reference_targ
 
 def build_problem(plots, sensors, navigation, platforms=None, references=None, targets=None) -> FleetProblem:
     """Check the long-form tables (see :mod:`registration.fleet.data.tables`) and build the problem.
-    ``targets``: the optional targets table (the surface targets move on, docs/fleet.md).
+    ``targets``: the optional targets table (the surface targets move on, docs/background/fleet-model.md).
 
     ValueError names the table, row and object for: a missing column, an unknown sensor,
     platform or reference target, a sensor with no measured channel, a negative or zero noise

@@ -1,7 +1,7 @@
 """Long-form input tables of fleet registration: their columns, units and defaults, and the reading
 of a pandas DataFrame or a mapping of column name -> array into checked numpy columns.
 
-Every table is long form, one row per item; SI units and radians (docs/conventions.md):
+Every table is long form, one row per item; SI units and radians (docs/reference/conventions.md):
 
 * ``platforms`` (optional): ``platform`` id; the prior standard deviations of its attitude errors
   ``prior_heading``, ``prior_pitch``, ``prior_roll`` (rad; missing or ``inf`` = no prior, 0 = the

@@ -1,4 +1,4 @@
-"""The online fleet filter (docs/fleet-online.md): FleetFilter and
+"""The online fleet filter (docs/background/fleet-online.md): FleetFilter and
 register_online, the information of one epoch, the Kalman update in information form and its
 starting point, and the result."""
 

@@ -2,7 +2,7 @@
 
 An *epoch* is the plots of the target windows that close together (:mod:`registration.fleet.online.filter`).
 Its information about the states is the batch problem's, restricted to those plots and taken at
-the filter's current estimate ``x-`` (docs/fleet.md, "Online filter"):
+the filter's current estimate ``x-`` (docs/background/fleet-online.md):
 
 1. each target window's trajectory coefficients are fitted to its plots with the states held at
    ``x-`` (:func:`~registration.fleet.batch.solver.fit_windows`: Gauss-Newton on the coefficients alone,

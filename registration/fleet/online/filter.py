@@ -26,7 +26,7 @@ sensor biases; rad and m):
 
 The starting point is either the priors of the tables (a state without prior starts with the
 sigma ``DIFFUSE`` times its reference scale: 10 deg, 10 km) or a batch result (``prior=``:
-its estimate and covariance). See docs/fleet.md, "Online filter".
+its estimate and covariance). See docs/background/fleet-online.md.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
 """The simulated fleet: ships, sites, sensors and targets with
-their true errors, through the generated geometry (docs/fleet.md)."""
+their true errors, through the generated geometry (docs/background/fleet-model.md)."""
 
 __all__: list[str] = []

@@ -335,7 +335,8 @@ def fleet_scenario(
     attitude error; the solver interpolates it linearly, an error of about 0.002 deg in roll at
     10 Hz), one row per site. No priors on the ships' errors and the biases (maximum likelihood).
 
-    Extended errors (docs/fleet.md, "Sensor error model"), each None by default (not simulated and
+    Extended errors (docs/background/fleet-model.md, "Sensor error model"), each None by default (not
+    simulated and
     its column absent from the sensors table, so not modelled): ``range_gain`` (dimensionless,
     sensors with range), ``time_bias`` (s: the sensor reports time = true time + bias) and
     ``position_error`` (m per east, north and up axis: stated sensor position = true + error),

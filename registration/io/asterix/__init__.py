@@ -1,4 +1,4 @@
-"""ASTERIX recordings in, fleet tables out (docs/asterix.md).
+"""ASTERIX recordings in, fleet tables out (docs/howto/import-asterix.md).
 
 :func:`import_asterix` reads raw ASTERIX recordings (data blocks end to end) and pcap/pcapng
 captures of UDP datagrams, gzip-compressed or not, told apart by their content. CAT048 target

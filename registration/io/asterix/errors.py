@@ -15,7 +15,7 @@ from registration.io.files.ledger import LedgerColumns, Location
 
 __all__ = ["AsterixImportError", "LEDGER_COLUMNS", "REASONS", "REJECTED_COLUMNS"]
 
-#: Reason code -> what it means (docs/asterix.md lists the same).
+#: Reason code -> what it means (docs/howto/import-asterix.md lists the same).
 REASONS = {
     "truncated_packet": "the capture ends inside a packet record (the rest of the file is lost)",
     "bad_block_length": "a data block whose length field is below 3 (the header itself)",

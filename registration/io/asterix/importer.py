@@ -1,5 +1,5 @@
 """``import_asterix``: ASTERIX recordings and captures -> the fleet tables in file form (degrees
-and metres), the records set aside, and a summary (docs/asterix.md)."""
+and metres), the records set aside, and a summary (docs/howto/import-asterix.md)."""
 
 from __future__ import annotations
 
@@ -38,7 +38,7 @@ REFERENCE_TARGETS = ("plotted", "all")
 
 class AsterixImport(ImportResult):
     """What :func:`import_asterix` gives (:class:`~registration.io.imports.ImportResult`): the fleet
-    tables as DataFrames in their file form (docs/fleet.md: ``plots``, ``navigation``,
+    tables as DataFrames in their file form (docs/reference/fleet-files.md: ``plots``, ``navigation``,
     ``sensors``, ``platforms``, ``reference``; no ``targets``), the records set aside
     (``rejected``: ``file``, ``offset``, ``packet``, ``category``, ``reason_code``, ``reason``) and
     the ``summary`` (a JSON-able dict); :meth:`write` writes them into a folder."""

@@ -1,7 +1,7 @@
 """An archive of fleet tables as Parquet files, read lazily by time range: :class:`ParquetSource`, a
 :class:`~registration.fleet.data.source.FleetSource` for
 :func:`registration.fleet.batch.partitioned.solve_batch_partitioned` on archives too large for memory
-(docs/archive.md).
+(docs/howto/register-an-archive.md).
 
 The folder holds ``plots``, ``navigation`` and (optional) ``reference`` each as one Parquet file
 (``plots.parquet``) or a folder of them (``plots/``, a dataset: the files together are the table,

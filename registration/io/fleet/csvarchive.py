@@ -1,4 +1,5 @@
-"""A folder of fleet CSV files as an archive for the partitioned solver (docs/archive.md, "Files"):
+"""A folder of fleet CSV files as an archive for the partitioned solver (docs/howto/register-an-archive.md,
+"Files"):
 :func:`parquet_from_csv` converts it, block by block, into a Parquet folder that
 :class:`registration.io.fleet.archive.ParquetSource` reads.
 

@@ -18,7 +18,7 @@ File columns (one row per item; an empty cell is "not given"):
   ``lever_z_m`` (deck frame: starboard, bow, up; default 0); optional extended errors, each
   modelled only when its column is there: ``prior_range_gain`` (dimensionless, at most 0.1),
   ``prior_time_bias_s``, ``prior_position_m`` (one sigma for east, north and up), same meaning
-  (docs/fleet.md, "Sensor error model");
+  (docs/background/fleet-model.md, "Sensor error model");
 * ``platforms`` (optional): ``platform``, ``prior_heading_deg``, ``prior_pitch_deg``,
   ``prior_roll_deg`` (same meaning as the bias priors);
 * ``reference`` (optional): ``time_s``, ``target`` and the known position as ``lat_deg``,

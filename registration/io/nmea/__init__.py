@@ -1,4 +1,4 @@
-"""NMEA 0183 bridge logs and AIS -> the fleet tables of one platform (docs/nmea.md).
+"""NMEA 0183 bridge logs and AIS -> the fleet tables of one platform (docs/howto/import-nmea.md).
 
 :func:`import_nmea` reads the logs: the navigation (GGA/GNS/RMC positions, ``$PASHR``/HDT/THS
 attitude, ZDA/RMC dates), the radar's TTM tracked targets as plots (range and deck bearing), and

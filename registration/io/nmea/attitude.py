@@ -5,10 +5,10 @@ time), HDT and THS (true heading, no time field).
 SPAN, Hemisphere and OxTS receivers write (pynmea2 ``ASHRATT``): ``$PASHR,hhmmss.sss,HHH.HH,T,
 RRR.RR,PPP.PP,heave,roll sigma,pitch sigma,heading sigma,aiding,IMU*hh``. Its signs: heading
 clockwise from true north; roll positive with the starboard side down (the port side up); pitch
-positive with the bow up. These are the package's signs (docs/conventions.md), and with the
+positive with the bow up. These are the package's signs (docs/reference/conventions.md), and with the
 default Tait-Bryan angles (heading, then pitch, then roll) its rotation order too, so the angles
 pass unchanged. A POS MV set to TSS angles gives roll as the athwartship axis's own tilt:
-``sin(roll_tss) = sin(roll) cos(pitch)``; ``angles="tss"`` converts it (docs/nmea.md). Ashtech's
+``sin(roll_tss) = sin(roll) cos(pitch)``; ``angles="tss"`` converts it (docs/howto/import-nmea.md). Ashtech's
 other ``$PASHR`` messages (``$PASHR,POS``, ``$PASHR,HPR``: field 1 is a word, not a time) are not
 used.
 """

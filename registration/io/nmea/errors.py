@@ -13,7 +13,7 @@ from registration.io.files.ledger import LedgerColumns, Location
 
 __all__ = ["LEDGER_COLUMNS", "NmeaImportError", "REASONS"]
 
-#: Reason code -> what it means (docs/nmea.md lists the same).
+#: Reason code -> what it means (docs/howto/import-nmea.md lists the same).
 REASONS = {
     "not_a_sentence": "no '$' or '!' starts a sentence on the line",
     "bad_prefix": "the text before the sentence is not a timestamp the reader knows",

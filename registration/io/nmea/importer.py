@@ -1,6 +1,8 @@
-"""``import_nmea``: an NMEA 0183 bridge log with AIS -> the fleet tables of one platform (docs/nmea.md).
+"""``import_nmea``: an NMEA 0183 bridge log with AIS -> the fleet tables of one platform
+(docs/howto/import-nmea.md).
 
-The tables are DataFrames in the fleet *file* columns (degrees, metres, seconds; docs/fleet.md,
+The tables are DataFrames in the fleet *file* columns (degrees, metres, seconds;
+docs/reference/fleet-files.md,
 "The files"), ready to be written and read back by :func:`registration.fleet.read_fleet_tables`;
 ``time_s`` counts from midnight UTC of the log's first day (or of ``date``) in all of them.
 """
@@ -60,7 +62,7 @@ class NmeaImport(ImportResult):
     * ``targets``: the AIS vessels as surface targets: ``target`` (MMSI), ``name``, ``surface_alt_m``
       (mean sea level above the ellipsoid), ``sigma_surface_m``;
     * ``rejected``: the lines set aside: ``file``, ``line`` (from 1), ``code``, ``reason``;
-    * ``summary``: a JSON-able dict (docs/nmea.md, "The summary").
+    * ``summary``: a JSON-able dict (docs/howto/import-nmea.md, "The summary").
 
     :meth:`write` writes them into a folder.
     """
@@ -146,7 +148,7 @@ def import_nmea(
     ais_sigmas: AisSigmas | None = None,
     pashr_angles: str = "tait-bryan",
 ) -> NmeaImport:
-    """Import NMEA 0183 log files (with AIS) as the fleet tables of ``platform`` (docs/nmea.md).
+    """Import NMEA 0183 log files (with AIS) as the fleet tables of ``platform`` (docs/howto/import-nmea.md).
 
     ``paths``: a log file or a list of them, read in the order given (one log cut into files);
     ``sensors``: the fleet sensors table as a DataFrame in file columns, or a path to its file,

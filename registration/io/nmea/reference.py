@@ -48,7 +48,7 @@ _CLASS = {1: "A", 2: "A", 3: "A", 5: "A", 18: "B", 19: "B", 24: "B", 27: "long r
 
 @dataclass(frozen=True)
 class AisSigmas:
-    """The sigma model of AIS reference positions (docs/nmea.md, "AIS reference positions").
+    """The sigma model of AIS reference positions (docs/howto/import-nmea.md, "AIS reference positions").
 
     ``high_accuracy_m`` (5 m): position sigma per axis with the accuracy flag 1 (better than 10 m,
     taken as 2 sigma); ``low_accuracy_m`` (10 m): flag 0 (worse than 10 m: an unaugmented GNSS);

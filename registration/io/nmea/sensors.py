@@ -1,4 +1,5 @@
-"""The sensors table of an NMEA import: the fleet sensors file (docs/fleet.md, "The files": noise
+"""The sensors table of an NMEA import: the fleet sensors file (docs/reference/fleet-files.md, "The files":
+noise
 sigmas, bias priors, lever arm, in degrees and metres) plus an optional ``talker`` column, the
 two-character NMEA talker of the sensor's TTM sentences (``RA``). Read and checked with errors
 that name the file, the row (from 0, the first data row, as the fleet files count them; and the

@@ -4,7 +4,7 @@ Input: two per-sensor plot files, each with its own timestamps and rate, and eac
 navigation either in its plot file or in a navigation file at its own rate
 (:mod:`registration.recorded.reading.sources`). Output: blocks of the synchronous table
 (:data:`registration.recorded.reading.columns.PAIRED_COLUMNS`) that the registration filter reads like
-any other. Rules (documented in docs/register.md):
+any other. Rules (documented in docs/howto/register-recorded-files.md):
 
 * **Clocks.** Radar A's clock reads reference time + ``clock_offset_a`` (likewise B); a
   navigation file is on the reference clock, navigation inside a plot file on that radar's clock.

@@ -5,7 +5,7 @@ range bias, bearing bias, clock offset and noise.
 The geometry uses the package's frame functions (``registration.core.frames``): the truth may be
 the package's. The *encoding* of the log (bridgelog.py) is pynmea2's and pyais' only.
 
-Conventions as in docs/conventions.md: heading clockwise from north, pitch bow up, roll starboard
+Conventions as in docs/reference/conventions.md: heading clockwise from north, pitch bow up, roll starboard
 down; deck bearing from the bow, starboard positive; measured = true + bias + noise; reported
 plot time = true time + clock offset (the fleet's time bias).
 """

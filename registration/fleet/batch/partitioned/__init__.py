@@ -1,4 +1,5 @@
-"""The partitioned batch solve of an archive (docs/archive.md): :func:`solve_batch_partitioned`.
+"""The partitioned batch solve of an archive (docs/howto/register-an-archive.md):
+:func:`solve_batch_partitioned`.
 
 Modules: ``plan`` (the archive cut into partitions), ``task`` (one partition read and built),
 ``partition_passes`` (what each pass computes on one partition), ``spill`` (the disk cache between

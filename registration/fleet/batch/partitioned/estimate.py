@@ -1,5 +1,5 @@
 """Batch registration of an archive partition by partition: :func:`solve_batch_partitioned`
-(docs/archive.md).
+(docs/howto/register-an-archive.md).
 
 The normal equations are sums over target windows, and every window lies in one partition
 (:mod:`registration.fleet.batch.partitioned.plan`), so the Levenberg-Marquardt engine

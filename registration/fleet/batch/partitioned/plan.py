@@ -1,5 +1,5 @@
 """An archive of fleet tables cut into partitions for the partitioned batch solver
-(:mod:`registration.fleet.batch.partitioned.estimate`, docs/archive.md).
+(:mod:`registration.fleet.batch.partitioned.estimate`, docs/howto/register-an-archive.md).
 
 The target windows are the whole archive's (:mod:`registration.fleet.batch.blocks`: each target's
 plotted time span cut into equal windows), so a first pass over the plots (time, sensor and target

@@ -1,5 +1,6 @@
 """A partition's design and latest normal equations kept on local disk between the passes of the
-partitioned solver (:mod:`registration.fleet.batch.partitioned.partition_passes`, docs/archive.md):
+partitioned solver (:mod:`registration.fleet.batch.partitioned.partition_passes`,
+docs/howto/register-an-archive.md):
 the spill cache.
 
 A file's name or its tag (checked before its arrays are read) is a digest of what it holds (the

@@ -17,7 +17,7 @@ Items written (field reference number in brackets):
 - I063/091 [10] PSR azimuth bias, as I063/081.
 
 An item is written only when its value is known (not None, finite). Values are this package's
-error convention (docs/conventions.md): the error as estimated, reported minus true, so a plot is
+error convention (docs/reference/conventions.md): the error as estimated, reported minus true, so a plot is
 corrected by subtracting it: time bias = reported minus true plot time; range error = bias + gain x
 true range; azimuth error = bias. Inside, SI units and radians; the item units (ms, NM, degrees)
 only here, at the edge. Each value is rounded to the nearest LSB; a value outside what the item

@@ -17,7 +17,7 @@ The EPU (estimated position uncertainty, NACp) is a 95 % bound on the horizontal
 error. For a circular Gaussian of sigma s per axis the radius holding 95 % is
 s sqrt(-2 ln 0.05) = 2.4477 s, so ``sigma_m`` = EPU / 2.4477. The vertical sigma ``sigma_up_m`` is
 the 95 % bound of GVA (I021/090, 1: 150 m, 2: 45 m) over 1.96 when given, else twice the
-horizontal one (GNSS vertical errors run about twice the horizontal per axis) (docs/asterix.md).
+horizontal one (GNSS vertical errors run about twice the horizontal per axis) (docs/howto/import-asterix.md).
 """
 
 from __future__ import annotations

@@ -1,4 +1,5 @@
-"""The fleet files that come from SITES (degrees and metres, the columns of docs/fleet.md): each
+"""The fleet files that come from SITES (degrees and metres, the columns of docs/reference/fleet-files.md):
+each
 site a fixed platform named after its sensor, level and north-aligned (heading, pitch, roll 0),
 its attitude held fixed unless SITES gives attitude priors.
 
