@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from registration._generated import api as generated
+from registration.fleet.batch.design import plot_model_inputs
 from registration.fleet.data.layout import (
     ATTITUDE_COLUMNS,
     BIAS_COLUMNS,
@@ -35,20 +36,8 @@ def corrected_positions(
     ``meas`` (M, 3): range (m), bearing, elevation (rad), every channel filled (the caller places
     a plot without range or elevation).
     """
-    lat, lon, alt, heading, pitch, roll = nav.T
-    known = dict(
-        lat=lat,
-        lon=lon,
-        alt=alt,
-        heading=heading,
-        pitch=pitch,
-        roll=roll,
-        att_err=xs[state[:, ATTITUDE_COLUMNS]],
-        bias=xs[state[:, BIAS_COLUMNS]],
-        lever_deck=lever,
-        r=meas[:, 0],
-        q=meas[:, 1],
-        e=meas[:, 2],
+    known = plot_model_inputs(nav, lever, meas) | dict(
+        att_err=xs[state[:, ATTITUDE_COLUMNS]], bias=xs[state[:, BIAS_COLUMNS]]
     )
     if state.shape[1] > BIAS_COLUMNS.stop:  # the extended layout: gain, time bias, position error
         gain, pos_err = xs[state[:, RANGE_GAIN_COLUMN]], xs[state[:, POSITION_ERROR_COLUMNS]]

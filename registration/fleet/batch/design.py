@@ -23,7 +23,27 @@ from registration.fleet.data.layout import ATTITUDE_COLUMNS, BIAS_COLUMNS, TIME_
 from registration.fleet.data.navigation import SeenNavigation
 from registration.fleet.data.problem import FleetProblem
 
-__all__ = ["Design", "SurfaceRows", "make_design", "reference_whitening", "surface_rows"]
+__all__ = ["Design", "SurfaceRows", "make_design", "plot_model_inputs", "reference_whitening", "surface_rows"]
+
+
+def plot_model_inputs(nav: np.ndarray, lever: np.ndarray, meas: np.ndarray) -> dict[str, np.ndarray]:
+    """The inputs every generated plot model (``fleet_rows_*``, ``fleet_plot2ecef*``) shares, by
+    their names: the platform's navigation ``nav`` (M, 6: lat, lon rad, alt m, heading, pitch,
+    roll rad), the lever arm ``lever`` (M, 3) m in the deck frame and the measurement ``meas``
+    (M, 3): range m, bearing and elevation rad."""
+    lat, lon, alt, heading, pitch, roll = nav.T
+    return dict(
+        lat=lat,
+        lon=lon,
+        alt=alt,
+        heading=heading,
+        pitch=pitch,
+        roll=roll,
+        lever_deck=lever,
+        r=meas[:, 0],
+        q=meas[:, 1],
+        e=meas[:, 2],
+    )
 
 
 @dataclass(frozen=True)

@@ -50,7 +50,7 @@ import numpy as np
 
 from registration._generated import api as generated
 from registration.fleet.batch.blocks import Blocks
-from registration.fleet.batch.design import Design
+from registration.fleet.batch.design import Design, plot_model_inputs
 from registration.fleet.data.layout import (
     ATTITUDE_COLUMNS,
     BIAS_COLUMNS,
@@ -126,25 +126,14 @@ def _extended_rows(design: Design, xs: np.ndarray, coef: np.ndarray) -> np.ndarr
         if aside.any():
             weight = np.where(aside[:, None], 0.0, weight)
     p = chunk_positions(design, basis, coef)
-    lat, lon, alt, heading, pitch, roll = nav.T
-    known = dict(
+    known = plot_model_inputs(nav, design.lever, design.meas) | dict(
         p_ecef=p,
         v_ecef=v,
-        lat=lat,
-        lon=lon,
-        alt=alt,
-        heading=heading,
-        pitch=pitch,
-        roll=roll,
         nav_rate=rate,
         att_err=xs[state[:, ATTITUDE_COLUMNS]],
         bias=xs[state[:, BIAS_COLUMNS]],
         gain=xs[state[:, RANGE_GAIN_COLUMN]],
         pos_err=xs[state[:, POSITION_ERROR_COLUMNS]],
-        lever_deck=design.lever,
-        r=design.meas[:, 0],
-        q=design.meas[:, 1],
-        e=design.meas[:, 2],
         weight=weight,
     )
     if blk.n_coef == 1:
@@ -162,22 +151,8 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
         rows_t = _extended_rows(design, xs, coef)
     else:
         p = positions(design.basis, design.block, coef)
-        lat, lon, alt, heading, pitch, roll = design.nav.T
-        known = dict(
-            p_ecef=p,
-            lat=lat,
-            lon=lon,
-            alt=alt,
-            heading=heading,
-            pitch=pitch,
-            roll=roll,
-            att_err=xs[design.att_state],
-            bias=xs[design.bias_state],
-            lever_deck=design.lever,
-            r=design.meas[:, 0],
-            q=design.meas[:, 1],
-            e=design.meas[:, 2],
-            weight=design.weight,
+        known = plot_model_inputs(design.nav, design.lever, design.meas) | dict(
+            p_ecef=p, att_err=xs[design.att_state], bias=xs[design.bias_state], weight=design.weight
         )
         if blk.n_coef == 1:
             rows_t = generated.fleet_rows_1(**known, basis=design.basis[:, 0]).rows_t
