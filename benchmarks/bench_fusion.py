@@ -1,8 +1,8 @@
 """Benchmark of the fusion: 10^6 radar + bearing pairs (paper scenario 1), library vs plain NumPy.
 
-    python benchmarks/bench_fusion.py [--pairs 1000000] [--repeats 5]
+    python benchmarks/bench_fusion.py [--pairs 1000000] [--repeats 5] [--tiny] [--json FILE]
 
-Prints pairs per second (median of the repeats) for
+Prints pairs per second (median of the repeats, interleaved: common.interleave) for
 
 - ``registration.fusion.fuse_paper``: the general method (any component subset, 2-D or 3-D) with the
   generated C transforms, returning the fused point, the claimed (eq. 13) and the consistent
@@ -14,23 +14,20 @@ Prints pairs per second (median of the repeats) for
 
 The two versions' outputs are compared before timing. The hand-written formulas live here only as
 the baseline; the package reaches its transforms through the generated functions only.
+Figures: benchmarks/results/fusion.json.
 """
 
 from __future__ import annotations
 
 import argparse
 import os
-import statistics
 import sys
-import time
-from pathlib import Path
 
 import numpy as np
+from common import add_arguments, interleave, median, paired_ratio, summary, write
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-
-from registration import _codegen  # noqa: E402
-from registration import fusion as F  # noqa: E402
+from registration import _codegen
+from registration import fusion as F
 
 SIGMA_RADAR = np.array([100.0, 7e-3])
 SIGMA_B = 4e-3
@@ -144,7 +141,10 @@ def main(argv=None) -> int:
     ap.add_argument("--pairs", type=int, default=1_000_000)
     ap.add_argument("--repeats", type=int, default=5)
     ap.add_argument("--seed", type=int, default=0)
+    add_arguments(ap)
     args = ap.parse_args(argv)
+    if args.tiny:
+        args.pairs, args.repeats = 2000, 1
     n = args.pairs
 
     rng = np.random.default_rng(args.seed)
@@ -184,24 +184,33 @@ def main(argv=None) -> int:
         ("optimal (ML): registration.fusion.fuse_optimal", lib_optimal),
         ("optimal (ML): plain NumPy Gauss-Newton", lambda: plain_numpy_optimal(za, zb)),
     ]
-    # interleaved: every repeat runs each version once, so load from other processes hits all alike
-    times = {label: [] for label, _ in rows}
-    for _ in range(args.repeats):
-        for label, fn in rows:
-            t = time.perf_counter()
-            fn()
-            times[label].append(time.perf_counter() - t)
-    med = {label: statistics.median(v) for label, v in times.items()}
+    # interleaved (A B C D, D C B A, ...): load from other processes hits all alike
+    times, _ = interleave(dict(rows), args.repeats, warmup=0)
+    med = {label: median(v) for label, v in times.items()}
     for label, _ in rows:
         print(
             f"  {label:48s} {med[label]:7.3f} s (min {min(times[label]):.3f})  {n / med[label] / 1e6:6.2f} M pairs/s"
         )
-    ratio_paper = statistics.median(a / b for a, b in zip(times[rows[0][0]], times[rows[1][0]]))
-    ratio_opt = statistics.median(a / b for a, b in zip(times[rows[2][0]], times[rows[3][0]]))
+    ratio_paper = paired_ratio(times, rows[0][0], rows[1][0])
+    ratio_opt = paired_ratio(times, rows[2][0], rows[3][0])
     print(
         f"time ratio library / plain NumPy (median of per-repeat ratios): paper method {ratio_paper:.2f}, "
         f"optimal fuser {ratio_opt:.2f}"
     )
+    figures = {
+        "agreement": {
+            "point_m": dx,
+            "claimed": dpc,
+            "consistent": dpk,
+            "ml_point_m": do,
+            "ml_cov": dco,
+            "ok": ok,
+        },
+        "seconds": summary(times),
+        "million_pairs_per_s": {label: n / med[label] / 1e6 for label in med},
+        "ratio_library_over_numpy": {"paper": ratio_paper, "optimal": ratio_opt},
+    }
+    write("fusion", args, {"pairs": n, "repeats": args.repeats}, figures)
     return 0 if ok else 1
 
 

@@ -12,7 +12,8 @@ Run from a checkout (the package installed, editable or not)::
 Data: the paper scenario's 300 rows (``paper_scenario(seed)``), tiled to ``--long`` rows (times
 renumbered). Filters: ``RegistrationConfig(linearization=...)`` with ``paper`` (model at the raw
 measurements) and ``fitted`` (the default), T ``standard``, Q ``fixed``. Contenders per filter,
-at the same rows, best of ``--repeat`` interleaved rounds after one warm-up:
+at the same rows, median of ``--repeat`` interleaved rounds (A B C, C B A, ...) after one warm-up,
+ratios the median of the rounds' ratios:
 
 1. ``register()``, the whole batch call, and the compiled scan alone (its floor);
 2. ``OnlineRegistrar.update(row)`` one call per row on the first ``--stream-rows`` rows, and the
@@ -27,19 +28,20 @@ Every baseline is first checked against ``register()`` to 1e-9 relative. Aims: <
 for ``register()`` amortised and for ``update()``; ``register()`` >= 20x the strongest NumPy
 baseline; the script says whether each is met, prints where ``register()``'s and ``update()``'s
 time goes (cProfile) and, with ``--flags``, the generated step in a plain C loop built with the
-loader's flags and with ``-O3 -march=native``. ``--json`` writes every figure.
+loader's flags and with ``-O3 -march=native``. Every figure goes to benchmarks/results/online.json
+(or ``--json FILE``); ``--tiny`` runs in seconds on 1000 rows, to check the script works.
 """
 
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import platform
 import sys
 import time
 
 import numpy as np
+from common import add_arguments, interleave, median, paired_ratio, write
 from online_baseline import NumpyFilter  # noqa: E402 (a script beside this one)
 
 import registration
@@ -91,20 +93,14 @@ def compare(reference, other) -> dict:
 
 # --------------------------------------------------------------------------- timing
 def measure(contenders: dict, rounds: int, warm: frozenset = frozenset()) -> tuple[dict, dict]:
-    """Best seconds per contender over ``rounds`` interleaved rounds after one untimed warm-up
-    (skipped for the labels in ``warm``: already run just before, by the correctness check), and
-    every round's seconds (the spread: this machine may be shared)."""
-    times: dict = {}
+    """Median seconds per contender over ``rounds`` interleaved rounds (common.interleave) after
+    one untimed warm-up (skipped for the labels in ``warm``: already run just before, by the
+    correctness check), and every round's seconds (the spread: this machine may be shared)."""
     for label, fn in contenders.items():
         if label not in warm:
             fn()
-        times[label] = []
-    for _ in range(rounds):
-        for label, fn in contenders.items():
-            t0 = time.perf_counter()
-            fn()
-            times[label].append(time.perf_counter() - t0)
-    return {label: min(t) for label, t in times.items()}, times
+    times, _ = interleave(contenders, rounds, warmup=0)
+    return {label: median(t) for label, t in times.items()}, times
 
 
 def streaming(config, rows):
@@ -224,8 +220,9 @@ def bench_size(n_rows: int, seed: int, rounds: int, stream_rows: int, config) ->
     contenders[UPDATE] = streaming(config, rows[:n_stream])
     contenders[STEPPER] = stepper_only(config, rows[:n_stream])
     # the baselines' last run (the check) is their warm-up: at 10^5 rows a per-row run takes seconds
-    best, times = measure(contenders, rounds, warm=frozenset([BATCH, *flavours]))
-    per = {k: (n_stream if k in (UPDATE, STEPPER) else n_rows) / 1e6 for k in best}
+    mid, times = measure(contenders, rounds, warm=frozenset([BATCH, *flavours]))
+    per = {k: (n_stream if k in (UPDATE, STEPPER) else n_rows) / 1e6 for k in mid}
+    per_row = {k: [x / per[k] for x in t] for k, t in times.items()}
     spread = {
         k: [float(np.min(t)) / per[k], float(np.median(t)) / per[k], float(np.max(t)) / per[k]]
         for k, t in times.items()
@@ -233,9 +230,11 @@ def bench_size(n_rows: int, seed: int, rounds: int, stream_rows: int, config) ->
     return {
         "rows": n_rows,
         "stream_rows": n_stream,
-        "seconds": best,
-        "us_per_step": {k: v / per[k] for k, v in best.items()},
+        "seconds": mid,
+        "us_per_step": {k: v / per[k] for k, v in mid.items()},
         "us_per_step_best_median_worst": spread,
+        "ratio_over_batch": {k: paired_ratio(per_row, k, BATCH) for k in per_row},
+        "ratio_over_scan": {k: paired_ratio(per_row, k, SCAN) for k in per_row},
         "max_relative_difference_vs_register": diffs,
     }
 
@@ -248,6 +247,8 @@ def aims_of(results: dict, long_n: int, linearization: str) -> dict:
     depends on the state, so its model cannot be evaluated up front)."""
     strongest = VECTORISED if linearization == "paper" else PER_ROW
     long, short = results[str(long_n)]["us_per_step"], results["300"]["us_per_step"]
+    long_ratio, short_ratio = (results[k]["ratio_over_batch"] for k in (str(long_n), "300"))
+    long_scan_ratio = results[str(long_n)]["ratio_over_scan"]
     aims = {
         "strongest_numpy_baseline": strongest,
         "batch_us_per_step_long": long[BATCH],
@@ -256,14 +257,14 @@ def aims_of(results: dict, long_n: int, linearization: str) -> dict:
         "aim_us_per_step": AIM_US_PER_STEP,
         "met_us_per_step_long": long[BATCH] <= AIM_US_PER_STEP,
         "met_us_per_step_300": short[BATCH] <= AIM_US_PER_STEP,
-        "ratio_vs_strongest_numpy_long": long[strongest] / long[BATCH],
-        "ratio_vs_strongest_numpy_300": short[strongest] / short[BATCH],
-        "scan_ratio_vs_strongest_numpy_long": long[strongest] / long[SCAN],
-        "ratio_vs_per_row_numpy_long": long[PER_ROW] / long[BATCH],
-        "scan_ratio_vs_per_row_numpy_long": long[PER_ROW] / long[SCAN],
+        "ratio_vs_strongest_numpy_long": long_ratio[strongest],
+        "ratio_vs_strongest_numpy_300": short_ratio[strongest],
+        "scan_ratio_vs_strongest_numpy_long": long_scan_ratio[strongest],
+        "ratio_vs_per_row_numpy_long": long_ratio[PER_ROW],
+        "scan_ratio_vs_per_row_numpy_long": long_scan_ratio[PER_ROW],
         "aim_ratio": AIM_RATIO,
         "update_us_per_step_long": long[UPDATE],
-        "update_over_scan_long": long[UPDATE] / long[SCAN],
+        "update_over_scan_long": long_scan_ratio[UPDATE],
         "update_python_us_per_step_long": long[UPDATE] - long[STEPPER],
         "met_update_us_per_step_long": long[UPDATE] <= AIM_US_PER_STEP,
     }
@@ -334,13 +335,12 @@ def run_configs(configs: dict, default: str, args) -> dict:
             )
             print(
                 f"  {'contender':<40}{'us/step':>10}{'time / register()':>19}{'time / scan':>13}"
-                f"{'median, worst of ' + str(args.repeat):>24}"
+                f"{'best, worst of ' + str(args.repeat):>24}"
             )
             for label, v in us.items():
-                _, med, worst = r["us_per_step_best_median_worst"][label]
-                print(
-                    f"  {label:<40}{v:10.2f}{v / us[BATCH]:18.1f}x{v / us[SCAN]:12.1f}x{med:14.2f}{worst:10.2f}"
-                )
+                best, _, worst = r["us_per_step_best_median_worst"][label]
+                rb, rs = r["ratio_over_batch"][label], r["ratio_over_scan"][label]
+                print(f"  {label:<40}{v:10.2f}{rb:18.1f}x{rs:12.1f}x{best:14.2f}{worst:10.2f}")
             print()
         aims = aims_of(results, args.long, lin)
         print_aims(aims, args.long, lin)
@@ -401,10 +401,10 @@ def main(argv=None) -> int:
         help="rows fed to OnlineRegistrar.update() in the long run (default 2*10^4)",
     )
     ap.add_argument(
-        "--repeat", type=int, default=3, help="timed rounds per contender; the best is kept (default 3)"
+        "--repeat", type=int, default=3, help="timed rounds per contender, interleaved (default 3)"
     )
     ap.add_argument("--seed", type=int, default=0)
-    ap.add_argument("--json", type=str, default=None, help="also write the figures to this JSON file")
+    add_arguments(ap)
     ap.add_argument(
         "--flags",
         action="store_true",
@@ -412,6 +412,8 @@ def main(argv=None) -> int:
         "flags and with -O3 -march=native",
     )
     args = ap.parse_args(argv)
+    if args.tiny:
+        args.long, args.stream_rows, args.repeat = 1000, 300, 1
     default = RegistrationConfig().linearization
     configs = {
         lin: RegistrationConfig(linearization=lin) for lin in ("paper", "fitted")
@@ -419,7 +421,7 @@ def main(argv=None) -> int:
     print(machine_line())
     print(
         f"configurations: {', '.join(f'{lin} ({c.step_name})' for lin, c in configs.items())}; "
-        f"default RegistrationConfig(): {default}; q_mode fixed; best of {args.repeat} rounds"
+        f"default RegistrationConfig(): {default}; q_mode fixed; median of {args.repeat} interleaved rounds"
     )
     data_long = scenario_data(args.long, args.seed)
     per_config = run_configs(configs, default, args)
@@ -437,28 +439,16 @@ def main(argv=None) -> int:
             )
             for k, v in flags.items():
                 print(f"  {k:<52}{'build failed' if v is None else f'{v:10.2f}'}")
-    if args.json:
-        machine = {
-            "line": machine_line(),
-            "python": platform.python_version(),
-            "machine": platform.machine(),
-            "numpy": np.__version__,
-            "backend": _codegen.backend(),
-            "platform": platform.platform(),
-        }
-        with open(args.json, "w") as fh:
-            json.dump(
-                {
-                    "machine": machine,
-                    "default_linearization": default,
-                    "configs": per_config,
-                    "profile_config": default,
-                    **profile,
-                },
-                fh,
-                indent=1,
-            )
-        print(f"\nwrote {args.json}")
+    sizes = {"rows": [300, args.long], "stream_rows": args.stream_rows, "repeat": args.repeat}
+    figures = {
+        "line": machine_line(),
+        "backend": _codegen.backend(),
+        "default_linearization": default,
+        "configs": per_config,
+        "profile_config": default,
+        **profile,
+    }
+    write("online", args, sizes, figures)
     return 0
 
 
