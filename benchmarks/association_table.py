@@ -149,8 +149,10 @@ def robust_row(name: str, seed: int, scale: float = 1.0) -> str:
     wrong = int(round(association_scores(result.labels, sim.true_target)["error_rate"] * real.sum()))
     reg = registration_scores(result.batch, base, sc.truth_state)
     return (
-        f"| {name} | {seed} | {int(real.sum())} ({int((~real).sum())}) | {wrong} | {int((lab & ~real).sum())} | "
-        f"{100 * np.mean(~lab[real]):.1f} % | {result.n_targets} | {reg['vs_truth']:.2f} | {reg['sigma_ratio']:.3f} | "
+        f"| {name} | {seed} | {int(real.sum())} ({int((~real).sum())}) | {wrong} | "
+        f"{int((lab & ~real).sum())} | "
+        f"{100 * np.mean(~lab[real]):.1f} % | {result.n_targets} | {reg['vs_truth']:.2f} | "
+        f"{reg['sigma_ratio']:.3f} | "
         f"{reg['chi2_mean']:.4f} [{reg['chi2_band'][0]:.3f}, {reg['chi2_band'][1]:.3f}] | "
         f"{'yes' if result.converged else 'no'} | {t_assoc:.1f} / {t_ids:.1f} |"
     )
@@ -159,7 +161,8 @@ def robust_row(name: str, seed: int, scale: float = 1.0) -> str:
 def robust_table(seeds, names=ROBUST, scale: float = 1.0) -> list[str]:
     lines = [
         "| fleet | seed | real plots (clutter) | wrong joins | clutter in | unassoc. | targets | "
-        "max \\|est − truth\\|/σ | σ ratio vs ids | χ² mean [99.9 % band] | converged | time (s): assoc. / ids |",
+        "max \\|est − truth\\|/σ | σ ratio vs ids | χ² mean [99.9 % band] | converged | time (s): assoc. / "
+        "ids |",
         "|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     print("\n".join(lines), flush=True)
@@ -229,9 +232,11 @@ def _row(case, runs: list[dict]) -> str:
     conv = "" if all(r["converged"] for r in runs) else " (not all converged)"
     return (
         f"| {n} | {'yes' if crossing else 'no'} | {bias:g} | {100 * missed:g} % | {clutter:g} | "
-        f"{mean['plots']:.0f} ({mean['clutter']:.0f}) | {100 * mean['error_rate']:.2f} % ({100 * worst['error_rate']:.2f} %) | "
+        f"{mean['plots']:.0f} ({mean['clutter']:.0f}) | {100 * mean['error_rate']:.2f} % "
+        f"({100 * worst['error_rate']:.2f} %) | "
         f"{100 * mean['unassociated_rate']:.1f} % ({100 * worst['unassociated_rate']:.1f} %) | "
-        f"{100 * mean['clutter_associated']:.2f} % | {mean['labels_per_target']:.2f} | {mean['passes']:.1f}{conv} | "
+        f"{100 * mean['clutter_associated']:.2f} % | {mean['labels_per_target']:.2f} | "
+        f"{mean['passes']:.1f}{conv} | "
         f"{mean['vs_ids']:.2f} ({worst['vs_ids']:.2f}) | {mean['vs_truth']:.2f} ({worst['vs_truth']:.2f}) | "
         f"{mean['seconds']:.1f} / {mean['seconds_ids']:.1f} |"
     )
@@ -263,8 +268,10 @@ def main(argv=None) -> list[str]:
     lines = [
         f"{args.runs} runs of {args.duration:g} s per row; mean (worst run)",
         "",
-        "| targets | crossing | angle bias (deg) | missed | clutter / scan | plots (clutter) | error | unassoc. | "
-        "clutter in | labels / target | passes | bias vs ids (σ) | bias vs truth (σ) | time (s): assoc. / ids |",
+        "| targets | crossing | angle bias (deg) | missed | clutter / scan | plots (clutter) | error | "
+        "unassoc. | "
+        "clutter in | labels / target | passes | bias vs ids (σ) | bias vs truth (σ) | time (s): assoc. / "
+        "ids |",
         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     print("\n".join(lines), flush=True)

@@ -284,12 +284,19 @@ def main(argv=None) -> dict:
                 r["seconds"], r["rounds_seconds"] = median(times[m]), times[m]
             base = runs.get("batch")
             print(
-                f"{info['plots']} plots, {info['navigation_rows']} navigation rows, load {os.getloadavg()[0]:.1f}"
+                f"{info['plots']} plots, {info['navigation_rows']} navigation rows, load "
+                f"{os.getloadavg()[0]:.1f}"
             )
             for m, r in runs.items():
-                line = f"  {m:8s} {r['seconds']:8.2f} s {r['peak_mib']:8.0f} MiB peak  {r['iterations']} iterations"
+                line = (
+                    f"  {m:8s} {r['seconds']:8.2f} s {r['peak_mib']:8.0f} MiB peak  "
+                    f"{r['iterations']} iterations"
+                )
                 if r.get("solve_seconds") is not None:
-                    line += f" (reading {r['seconds'] - r['solve_seconds']:.2f} s, solve_batch {r['solve_seconds']:.2f} s)"
+                    line += (
+                        f" (reading {r['seconds'] - r['solve_seconds']:.2f} s, "
+                        f"solve_batch {r['solve_seconds']:.2f} s)"
+                    )
                 if base is not None and m != "batch":
                     r["estimate_rel"] = relative(r["estimate"], base["estimate"])
                     r["sigma_rel"] = relative(r["sigma"], base["sigma"])
@@ -297,7 +304,8 @@ def main(argv=None) -> dict:
                     r["memory_ratio"] = r["peak_mib"] / base["peak_mib"]
                     r["solve_ratio"] = r["seconds"] / base["solve_seconds"]
                     line += (
-                        f"  x{r['time_ratio']:.2f} time (x{r['solve_ratio']:.2f} of solve_batch alone), x{r['memory_ratio']:.2f} memory of batch; estimates "
+                        f"  x{r['time_ratio']:.2f} time (x{r['solve_ratio']:.2f} of solve_batch alone), "
+                        f"x{r['memory_ratio']:.2f} memory of batch; estimates "
                         f"{r['estimate_rel']:.1e}, sigmas {r['sigma_rel']:.1e} relative"
                     )
                 print(line, flush=True)

@@ -15,9 +15,10 @@ of 2 deg, 10 % missed detections and one clutter plot per scan per sensor on ave
 end (checks, tracks per sensor, association passes, the solves between them and the final solve),
 and the baseline :func:`build_problem` + :func:`solve_batch` on the real plots with their true
 ids, interleaved (``--repeats`` rounds; the ratio is the median of the rounds' ratios). Printed
-and written to benchmarks/results/association.json: the times, the share of the association's time spent in ``linear_sum_assignment``,
-the ratio of the two times, the association's scores against the truth and the largest
-difference of the two estimates in units of the baseline's sigma. The machine's load average is
+and written to benchmarks/results/association.json: the times, the share of the association's
+time spent in ``linear_sum_assignment``, the ratio of the two times, the association's scores
+against the truth and the largest difference of the two estimates in units of the baseline's
+sigma. The machine's load average is
 printed too (other work slows both).
 """
 

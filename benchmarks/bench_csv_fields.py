@@ -97,7 +97,8 @@ def main(argv=None) -> None:
             for case, v in cpu.items():
                 print(
                     f"{name}, {args.rows} rows, {size:.0f} MiB: {case}: CPU best {min(v):.3f} s, "
-                    f"median {median(v):.3f} s, over pandas chunks {paired_ratio(cpu, case, 'pandas chunks'):.2f}"
+                    f"median {median(v):.3f} s, over pandas chunks "
+                    f"{paired_ratio(cpu, case, 'pandas chunks'):.2f}"
                 )
             figures[name] = {
                 "mib": size,

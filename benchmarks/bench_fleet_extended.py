@@ -33,16 +33,16 @@ processes, the 2 cores shared) hit every mode alike:
   ``excluded_plots`` and ``fit_attempts`` rows).
 
 Per mode: best and median wall time of :func:`solve_batch`, microseconds per plot, the fit alone
-(:func:`registration.fleet.batch.solver.fit`), the fit attempts (``determined_design`` calls: 2 when
-plots set aside for their time bias would have emptied a window and the problem was solved again), the Levenberg-Marquardt
-calls and iterations summed over every attempt (``BatchResult.iterations`` counts only the last
-attempt), and the number of calls and the time per call of ``evaluate``, ``normal_equations``
-and ``reduce`` (the Schur complement), counted by wrapping those functions wherever the package
-has bound them (a few microseconds per call). A ratio driven by more calls is a different story
-from a ratio per call; both are printed. CPU time (all threads of the process) is printed beside
-the wall time: on a loaded machine it varies less, but BLAS threads count twice (set
-OPENBLAS_NUM_THREADS=1 to compare the two). Peak memory: one extra solve per mode under
-tracemalloc (numpy's allocations included), after the timing.
+(``fit`` of the batch solver), the fit attempts (``determined_design`` calls: 2 when plots set aside
+for their time bias would have emptied a window and the problem was solved again), the
+Levenberg-Marquardt calls and iterations summed over every attempt (``BatchResult.iterations``
+counts only the last attempt), and the number of calls and the time per call of ``evaluate``,
+``normal_equations`` and ``reduce`` (the Schur complement), counted by wrapping those functions
+wherever the package has bound them (a few microseconds per call). A ratio driven by more calls is a
+different story from a ratio per call; both are printed. CPU time (all threads of the process) is
+printed beside the wall time: on a loaded machine it varies less, but BLAS threads count twice (set
+OPENBLAS_NUM_THREADS=1 to compare the two). Peak memory: one extra solve per mode under tracemalloc
+(numpy's allocations included), after the timing.
 """
 
 from __future__ import annotations

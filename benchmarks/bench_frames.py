@@ -248,7 +248,10 @@ def print_table(title: str, rows: list[dict], ref_label: str) -> None:
     ref = next(r for r in rows if r["method"] == ref_label)
     print(f"\n{title}")
     print(f"  (x ref = throughput relative to '{ref_label}'; > 1 is faster; max |diff| vs ours, metres)")
-    head = f"  {'method':<46} {'N':>9} {'median ms':>10} {'ns/pt':>9} {'points/s':>12} {'x ref':>8} {'max |diff|':>11}"
+    head = (
+        f"  {'method':<46} {'N':>9} {'median ms':>10} {'ns/pt':>9} {'points/s':>12} {'x ref':>8} "
+        f"{'max |diff|':>11}"
+    )
     print(head)
     print("  " + "-" * (len(head) - 2))
     for r in rows:

@@ -40,9 +40,10 @@ def wrap(a):
 
 
 def plain_numpy_paper(za: np.ndarray, zb: np.ndarray):
-    """Scenario-1 method by hand: radar (r, a) at the origin, bearing b at (l, 0). Returns X, P_claimed, P_consistent."""
+    """Scenario-1 method by hand: radar (r, a) at the origin, bearing b at (l, 0). Returns X,
+    P_claimed, P_consistent."""
     sr2, sa2, sb2 = SIGMA_RADAR[0] ** 2, SIGMA_RADAR[1] ** 2, SIGMA_B**2
-    l = SITE_B[0]
+    l = SITE_B[0]  # noqa: E741 (the paper's name)
     r, a = za[:, 0], za[:, 1]
     b = zb[:, 0]
     ca, sa = np.cos(a), np.sin(a)
@@ -104,7 +105,7 @@ def plain_numpy_optimal(za: np.ndarray, zb: np.ndarray, tol_m: float = 1e-6, max
     Returns the estimate (N, 2) and its covariance, the inverse information at the estimate (N, 2, 2).
     """
     w = np.array([SIGMA_RADAR[0] ** -2, SIGMA_RADAR[1] ** -2, SIGMA_B**-2])
-    l = SITE_B[0]
+    l = SITE_B[0]  # noqa: E741 (the paper's name)
     x = za[:, 0] * np.cos(za[:, 1])
     y = za[:, 0] * np.sin(za[:, 1])
     active = np.ones(x.size, dtype=bool)
@@ -170,12 +171,14 @@ def main(argv=None) -> int:
     dco = np.abs(opt.P - cov_plain).max() / np.abs(cov_plain).max()
     ok = dx < 1e-6 and dpc < 1e-9 and dpk < 1e-9 and do < 1e-4 and dco < 1e-6  # GN stops at steps < 1e-6 m
     print(
-        f"machine: {os.cpu_count()} CPUs, numpy {np.__version__}, generated-code backend: {_codegen.backend()}"
+        f"machine: {os.cpu_count()} CPUs, numpy {np.__version__}, generated-code backend: "
+        f"{_codegen.backend()}"
     )
     print(f"{n} radar+bearing pairs (paper scenario 1), median (min) of {args.repeats} runs")
     print(
         f"agreement library vs plain NumPy: fused point {dx:.2e} m, claimed cov {dpc:.1e} rel, "
-        f"consistent cov {dpk:.1e} rel, ML point {do:.1e} m, ML cov {dco:.1e} rel -> {'OK' if ok else 'MISMATCH'}"
+        f"consistent cov {dpk:.1e} rel, ML point {do:.1e} m, ML cov {dco:.1e} rel -> "
+        f"{'OK' if ok else 'MISMATCH'}"
     )
 
     rows = [
@@ -189,7 +192,8 @@ def main(argv=None) -> int:
     med = {label: median(v) for label, v in times.items()}
     for label, _ in rows:
         print(
-            f"  {label:48s} {med[label]:7.3f} s (min {min(times[label]):.3f})  {n / med[label] / 1e6:6.2f} M pairs/s"
+            f"  {label:48s} {med[label]:7.3f} s (min {min(times[label]):.3f})  {n / med[label] / 1e6:6.2f} "
+            "M pairs/s"
         )
     ratio_paper = paired_ratio(times, rows[0][0], rows[1][0])
     ratio_opt = paired_ratio(times, rows[2][0], rows[3][0])

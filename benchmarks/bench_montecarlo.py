@@ -235,7 +235,8 @@ def main(argv=None) -> int:
     config = RegistrationConfig()
     n_legacy, n_runs, seed = args.legacy_runs, args.runs, args.seed
     print(
-        f"backend {_codegen.backend()}, numpy {np.__version__}, {os.cpu_count()} CPUs; paper scenario, 300 rows per run; "
+        f"backend {_codegen.backend()}, numpy {np.__version__}, {os.cpu_count()} CPUs; paper scenario, 300 "
+        "rows per run; "
         f"median of {args.repeat} interleaved rounds"
     )
 
@@ -273,15 +274,18 @@ def main(argv=None) -> int:
     )
     print(f"\n  batch vs run by run, {n_legacy} runs: {legacy_ratio:.1f}x faster")
     print(
-        f"  batch / register() over the same rows: {n_legacy} runs {small_ratio:.2f}x, {n_runs} runs {big_ratio:.2f}x"
+        f"  batch / register() over the same rows: {n_legacy} runs {small_ratio:.2f}x, {n_runs} runs "
+        f"{big_ratio:.2f}x"
     )
     cli_s, start_s = mid["command"], mid["python -c pass"]
     cli_ratio = paired_ratio(times, "command", labels[4])
     print(
-        f"\nend to end: `registration montecarlo --runs {n_runs} --no-plot` {cli_s:.2f} s (python -c pass: {start_s:.2f} s)"
+        f"\nend to end: `registration montecarlo --runs {n_runs} --no-plot` {cli_s:.2f} s (python -c pass: "
+        f"{start_s:.2f} s)"
     )
     print(
-        f"  = {cli_ratio:.2f}x one register() call over the same {n_runs * 300} rows; aim <= {AIM_RATIO:.0f}x: "
+        f"  = {cli_ratio:.2f}x one register() call over the same {n_runs * 300} rows; aim <= "
+        f"{AIM_RATIO:.0f}x: "
         f"{'met' if cli_ratio <= AIM_RATIO else 'NOT met'}"
     )
 

@@ -38,7 +38,6 @@ import argparse
 import os
 import platform
 import sys
-import time
 
 import numpy as np
 from common import add_arguments, interleave, median, paired_ratio, write
@@ -278,17 +277,20 @@ def print_aims(aims: dict, long_n: int, linearization: str) -> None:
     why = (
         "model vectorised up front"
         if linearization == "paper"
-        else "per-row model: the fitted linearisation point depends on the state, so no NumPy code can evaluate the model up front"
+        else "per-row model: the fitted linearisation point depends on the state, so no NumPy code "
+        "can evaluate the model up front"
     )
     print(f"Aims, linearization {linearization}:")
     print(
-        f"  <= {AIM_US_PER_STEP} us/step amortised, batch register(): {long_n} rows {aims['batch_us_per_step_long']:.2f} us "
+        f"  <= {AIM_US_PER_STEP} us/step amortised, batch register(): {long_n} rows "
+        f"{aims['batch_us_per_step_long']:.2f} us "
         f"({yes[aims['met_us_per_step_long']]}); 300 rows {aims['batch_us_per_step_300']:.2f} us "
         f"({yes[aims['met_us_per_step_300']]})"
     )
     print(f"  >= {AIM_RATIO:.0f}x the strongest NumPy baseline ({why}):")
     print(
-        f"     register(): {long_n} rows {aims['ratio_vs_strongest_numpy_long']:.1f}x ({yes[aims['met_ratio_long']]}); "
+        f"     register(): {long_n} rows {aims['ratio_vs_strongest_numpy_long']:.1f}x "
+        f"({yes[aims['met_ratio_long']]}); "
         f"300 rows {aims['ratio_vs_strongest_numpy_300']:.1f}x ({yes[aims['met_ratio_300']]}); "
         f"the compiled scan alone {aims['scan_ratio_vs_strongest_numpy_long']:.1f}x"
     )
@@ -299,7 +301,8 @@ def print_aims(aims: dict, long_n: int, linearization: str) -> None:
         )
     print(
         f"  <= {AIM_US_PER_STEP} us/row for update(): {aims['update_us_per_step_long']:.2f} us "
-        f"({yes[aims['met_update_us_per_step_long']]}), {aims['update_over_scan_long']:.2f}x the compiled scan's step; "
+        f"({yes[aims['met_update_us_per_step_long']]}), {aims['update_over_scan_long']:.2f}x the compiled "
+        "scan's step; "
         f"Python around the compiled stepper {aims['update_python_us_per_step_long']:.2f} us"
     )
 
@@ -312,7 +315,8 @@ def machine_line() -> str:
     except OSError:
         pass
     return (
-        f"registration {registration.__version__}, backend {_codegen.backend()} ({cbackend.build_mode()} build), "
+        f"registration {registration.__version__}, backend {_codegen.backend()} ({cbackend.build_mode()} "
+        "build), "
         f"numpy {np.__version__}, "
         f"python {platform.python_version()}, {platform.machine()} {cpu}, {os.cpu_count()} CPUs"
     ).replace("  ", " ")
@@ -331,7 +335,8 @@ def run_configs(configs: dict, default: str, args) -> dict:
             us = r["us_per_step"]
             print(
                 f"{n} rows (NumPy baselines equal register() to "
-                f"{max(max(d.values()) for d in r['max_relative_difference_vs_register'].values()):.1e} relative)"
+                f"{max(max(d.values()) for d in r['max_relative_difference_vs_register'].values()):.1e} "
+                "relative)"
             )
             print(
                 f"  {'contender':<40}{'us/step':>10}{'time / register()':>19}{'time / scan':>13}"
@@ -367,7 +372,8 @@ def run_configs(configs: dict, default: str, args) -> dict:
 
 
 def profiles(config, data_long: dict, seed: int) -> dict:
-    """Where register()'s and update()'s time goes (cProfile; its overhead inflates the Python-heavy parts)."""
+    """Where register()'s and update()'s time goes (cProfile; its overhead inflates the
+    Python-heavy parts)."""
     data300 = scenario_data(300, seed)
     out = {
         "register_profile_us_per_row_300": profile_breakdown(lambda: register(data300, config), 20, 300),

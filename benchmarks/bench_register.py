@@ -13,8 +13,9 @@ in the angles) so that the copies differ, written once per size as CSV and as Pa
 of 100,000). Each measurement runs in a fresh worker process that imports the package, records
 its resident set size (RSS, ``/proc/self/status`` VmRSS), resets the peak mark (``clear_refs``), runs
 :func:`registration.recorded.run_register` exactly as the CLI does (no progress bar; no plots except
-in the ``*-plots`` cases, which draw the three PNGs as the CLI does by default) and reports the wall time and its peak RSS during the run (VmHWM; ``ru_maxrss`` where /proc is missing,
-which also counts the pre-exec image). "Above baseline" subtracts the RSS after the
+in the ``*-plots`` cases, which draw the three PNGs as the CLI does by default) and reports the
+wall time and its peak RSS during the run (VmHWM; ``ru_maxrss`` where /proc is missing, which also
+counts the pre-exec image). "Above baseline" subtracts the RSS after the
 imports (numpy, pandas, pyarrow, casadi, the compiled generated code), which does not depend on
 the input. Rows per second count input rows over the whole command: both passes (filter, then the
 information matrix at the final estimate), validation, the input hash, the output writing.
@@ -193,7 +194,8 @@ def main(argv=None) -> int:
             paths = make_inputs(n, tmp)
             sizes = {k: p.stat().st_size / 2**20 for k, p in paths.items()}
             print(
-                f"# {n} rows: CSV {sizes['csv']:.0f} MiB, Parquet {sizes['parquet']:.0f} MiB (written in {time.perf_counter() - t:.1f} s)",
+                f"# {n} rows: CSV {sizes['csv']:.0f} MiB, Parquet {sizes['parquet']:.0f} MiB (written in "
+                f"{time.perf_counter() - t:.1f} s)",
                 flush=True,
             )
             cases = [("stream", *CASES[name]) for name in args.cases]
@@ -211,8 +213,10 @@ def main(argv=None) -> int:
                 r["rounds_seconds"] = times[label]
                 results.append(r)
                 print(
-                    f"{n:>9} rows  {label:<58} {r['rows'] / r['seconds']:>9.0f} rows/s  {r['seconds']:7.2f} s  "
-                    f"peak RSS {r['peak_mib']:7.0f} MiB ({r['peak_mib'] - r['baseline_mib']:6.0f} above baseline)",
+                    f"{n:>9} rows  {label:<58} {r['rows'] / r['seconds']:>9.0f} rows/s  {r['seconds']:7.2f} "
+                    "s  "
+                    f"peak RSS {r['peak_mib']:7.0f} MiB ({r['peak_mib'] - r['baseline_mib']:6.0f} above "
+                    "baseline)",
                     flush=True,
                 )
     write("register", args, {"rows": args.rows, "cases": args.cases, "repeat": args.repeat}, results)

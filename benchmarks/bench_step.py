@@ -11,9 +11,9 @@ Data: the paper scenario's 300 rows (``paper_scenario(seed)``) tiled to ``--step
 flags, ``registration._codegen.CFLAGS``) with x, P, info carried and only the last outputs kept,
 so the figure is the step itself plus the scan's copies, in us per step: median of ``--repeat``
 interleaved rounds (common.interleave) after one warm-up; ratios are medians of the rounds'
-ratios. Figures: benchmarks/results/step.json; ``--tiny``: 1000 steps, no native builds. Printed per linearisation: us/step for each update, the
-ratio Joseph / Carlson, whether the 1 us aim is met, and the largest difference of the final P
-(relative to its diagonal scale) between the two.
+ratios. Figures: benchmarks/results/step.json; ``--tiny``: 1000 steps, no native builds. Printed
+per linearisation: us/step for each update, the ratio Joseph / Carlson, whether the 1 us aim is
+met, and the largest difference of the final P (relative to its diagonal scale) between the two.
 
 The same steps are then timed in the builds for the local CPU (``REGISTRATION_NATIVE``, see
 ``registration._codegen.cbackend``): ``native`` (-O3 -march=native, within ``NATIVE_RTOL`` of the
@@ -142,7 +142,8 @@ def native_table(rows: np.ndarray, rounds: int) -> dict:
         + "; ".join(f"{m} {' '.join(cbackend.cflags(m))}" for m in cbackend.BUILD_MODES)
     )
     print(
-        f"{'linearisation':14s} {'update':8s} {'portable us':>12s} {'native us':>10s} {'ratio':>6s} {'exact us':>9s} "
+        f"{'linearisation':14s} {'update':8s} {'portable us':>12s} {'native us':>10s} {'ratio':>6s} "
+        f"{'exact us':>9s} "
         f"{'ratio':>6s} {'native d/sigma':>15s} {'exact d':>8s}"
     )
     for lin in _codegen.variants("linearization"):
@@ -228,10 +229,12 @@ def main(argv=None) -> int:
     figures: dict = {"flags": " ".join(_codegen.CFLAGS), "portable": {}}
     rows = tiled_rows(args.steps, args.seed)
     print(
-        f"{platform.machine()} {platform.processor() or ''} flags {' '.join(_codegen.CFLAGS)}; {args.steps} steps"
+        f"{platform.machine()} {platform.processor() or ''} flags {' '.join(_codegen.CFLAGS)}; {args.steps} "
+        "steps"
     )
     print(
-        f"{'linearisation':14s} {'joseph us':>10s} {'carlson us':>11s} {'ratio':>6s} {'aim<=1us':>9s} {'max dP (final)':>15s}"
+        f"{'linearisation':14s} {'joseph us':>10s} {'carlson us':>11s} {'ratio':>6s} {'aim<=1us':>9s} "
+        f"{'max dP (final)':>15s}"
     )
     for lin in _codegen.variants("linearization"):
         cfgs = {u: RegistrationConfig(linearization=lin, covariance_update=u) for u in UPDATES}
