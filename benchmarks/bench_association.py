@@ -84,6 +84,7 @@ def main(argv=None) -> dict:
         "repeats": args.repeats,
     }
     out: dict = {"load_average_before": os.getloadavg()}
+    cpu: dict[str, list[float]] = {}
     times, values = interleave(
         {
             "association": lambda: associate_and_register(sim.plots, sc.sensors, sc.navigation, sc.platforms),
@@ -93,10 +94,13 @@ def main(argv=None) -> dict:
         },
         args.repeats,
         warmup=0,
+        cpu=cpu,
     )
     base, result = values["true_ids"], values["association"]
     out["seconds"] = summary(times)
     out["ratio_over_true_ids"] = paired_ratio(times, "association", "true_ids")
+    out["cpu_seconds"] = summary(cpu)
+    out["cpu_ratio_over_true_ids"] = paired_ratio(cpu, "association", "true_ids")
     out["assignment_s"] = result.seconds_assignment
     out["assignment_share"] = result.assignment_share
     out["registration_share"] = result.seconds_registration / result.seconds_total

@@ -91,14 +91,17 @@ def compare(reference, other) -> dict:
 
 
 # --------------------------------------------------------------------------- timing
-def measure(contenders: dict, rounds: int, warm: frozenset = frozenset()) -> tuple[dict, dict]:
+def measure(
+    contenders: dict, rounds: int, warm: frozenset = frozenset(), cpu: dict | None = None
+) -> tuple[dict, dict]:
     """Median seconds per contender over ``rounds`` interleaved rounds (common.interleave) after
     one untimed warm-up (skipped for the labels in ``warm``: already run just before, by the
-    correctness check), and every round's seconds (the spread: this machine may be shared)."""
+    correctness check), and every round's seconds (the spread: this machine may be shared);
+    ``cpu`` receives every round's CPU seconds."""
     for label, fn in contenders.items():
         if label not in warm:
             fn()
-    times, _ = interleave(contenders, rounds, warmup=0)
+    times, _ = interleave(contenders, rounds, warmup=0, cpu=cpu)
     return {label: median(t) for label, t in times.items()}, times
 
 
@@ -219,7 +222,8 @@ def bench_size(n_rows: int, seed: int, rounds: int, stream_rows: int, config) ->
     contenders[UPDATE] = streaming(config, rows[:n_stream])
     contenders[STEPPER] = stepper_only(config, rows[:n_stream])
     # the baselines' last run (the check) is their warm-up: at 10^5 rows a per-row run takes seconds
-    mid, times = measure(contenders, rounds, warm=frozenset([BATCH, *flavours]))
+    cpu: dict = {}
+    mid, times = measure(contenders, rounds, warm=frozenset([BATCH, *flavours]), cpu=cpu)
     per = {k: (n_stream if k in (UPDATE, STEPPER) else n_rows) / 1e6 for k in mid}
     per_row = {k: [x / per[k] for x in t] for k, t in times.items()}
     spread = {
@@ -232,6 +236,7 @@ def bench_size(n_rows: int, seed: int, rounds: int, stream_rows: int, config) ->
         "seconds": mid,
         "us_per_step": {k: v / per[k] for k, v in mid.items()},
         "us_per_step_best_median_worst": spread,
+        "cpu_us_per_step": {k: median(t) / per[k] for k, t in cpu.items()},
         "ratio_over_batch": {k: paired_ratio(per_row, k, BATCH) for k in per_row},
         "ratio_over_scan": {k: paired_ratio(per_row, k, SCAN) for k in per_row},
         "max_relative_difference_vs_register": diffs,

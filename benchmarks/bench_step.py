@@ -71,11 +71,16 @@ def run(config: RegistrationConfig, rows: np.ndarray, keep_all: bool = False) ->
 
 
 def time_steps(configs: dict, rows: np.ndarray, rounds: int) -> dict:
-    """Median us per step over ``rounds`` interleaved rounds after one warm-up, per label."""
-    times, _ = interleave({label: (lambda c=cfg: run(c, rows)) for label, cfg in configs.items()}, rounds)
-    return {label: median(t) / len(rows) * 1e6 for label, t in times.items()} | {
-        "joseph/carlson": paired_ratio(times, "joseph", "carlson")
-    }
+    """Median us per step over ``rounds`` interleaved rounds after one warm-up, per label, in
+    wall time and (``cpu <label>``) in CPU time; the median of the rounds' ratios Joseph / Carlson."""
+    cpu: dict = {}
+    contenders = {label: (lambda c=cfg: run(c, rows)) for label, cfg in configs.items()}
+    times, _ = interleave(contenders, rounds, cpu=cpu)
+    return (
+        {label: median(t) / len(rows) * 1e6 for label, t in times.items()}
+        | {f"cpu {label}": median(t) / len(rows) * 1e6 for label, t in cpu.items()}
+        | {"joseph/carlson": paired_ratio(times, "joseph", "carlson")}
+    )
 
 
 def kernel_run(config: RegistrationConfig, rows: np.ndarray, lib) -> dict:

@@ -70,11 +70,16 @@ class Timed(NamedTuple):
 
 
 def interleave(
-    contenders: Mapping[str, Callable[[], object]], repeats: int, warmup: int = 1
+    contenders: Mapping[str, Callable[[], object]],
+    repeats: int,
+    warmup: int = 1,
+    cpu: dict[str, list[float]] | None = None,
 ) -> tuple[dict[str, list[float]], dict[str, object]]:
     """Wall seconds of each contender per round, the rounds in alternating order (A B, B A, ...),
     after ``warmup`` untimed calls of each; and the value each returned last. A contender that
-    returns :class:`Timed` gives its own seconds and value."""
+    returns :class:`Timed` gives its own seconds and value. ``cpu``, if given, receives the
+    process CPU seconds of each round too (all threads: less sensitive to other processes than
+    the wall time, but BLAS threads count more than once)."""
     names = list(contenders)
     values: dict[str, object] = {}
     for _ in range(warmup):
@@ -84,9 +89,11 @@ def interleave(
     times: dict[str, list[float]] = {name: [] for name in names}
     for k in range(repeats):
         for name in names if k % 2 == 0 else names[::-1]:
-            t0 = time.perf_counter()
+            t0, c0 = time.perf_counter(), time.process_time()
             value = contenders[name]()
             seconds = time.perf_counter() - t0
+            if cpu is not None:
+                cpu.setdefault(name, []).append(time.process_time() - c0)
             if isinstance(value, Timed):
                 seconds, value = value
             times[name].append(seconds)
@@ -103,7 +110,7 @@ def paired_ratio(times: Mapping[str, Sequence[float]], a: str, b: str) -> float:
     return median([x / y for x, y in zip(times[a], times[b], strict=True)])
 
 
-def summary(times: Mapping[str, Sequence[float]], per: float = 1.0) -> dict[str, dict[str, float]]:
+def summary(times: Mapping[str, Sequence[float]], per: float = 1.0) -> dict[str, dict[str, object]]:
     """Median and best seconds of each contender (divided by ``per``, e.g. the rows), and all
     of its rounds."""
     return {
@@ -130,7 +137,7 @@ def machine() -> dict[str, object]:
 def _plain(value: object) -> object:
     """numpy scalars and arrays, paths and tuples as JSON."""
     if hasattr(value, "tolist"):
-        return value.tolist()  # type: ignore[no-any-return]
+        return value.tolist()
     return str(value)
 
 

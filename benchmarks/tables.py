@@ -16,6 +16,7 @@ import argparse
 import json
 import re
 import sys
+import textwrap
 from collections.abc import Callable
 from pathlib import Path
 
@@ -66,6 +67,17 @@ def measured(doc: dict) -> str:
     )
 
 
+def _cpu(f: dict) -> str:
+    """The CPU-time figures of an association run, if it has them."""
+    if "cpu_seconds" not in f:
+        return ""
+    c = f["cpu_seconds"]
+    return (
+        f"; in CPU time, less sensitive to the load, {num(c['association']['median'])} s against "
+        f"{num(c['true_ids']['median'])} s, {num(f['cpu_ratio_over_true_ids'])}×"
+    )
+
+
 def association(doc: dict) -> str:
     f, s = doc["figures"], doc["sizes"]
     a, ids = f["seconds"]["association"], f["seconds"]["true_ids"]
@@ -76,7 +88,7 @@ def association(doc: dict) -> str:
         f"aim ≤ 10 s), {num(f['ratio_over_true_ids'])}× the registration of the same plots with their "
         f"true ids ({num(ids['median'])} s; the median of the rounds' ratios); `linear_sum_assignment` "
         f"takes {100 * f['assignment_share']:.1f} % of it, the registration about "
-        f"{100 * f['registration_share']:.0f} % ({measured(doc)})"
+        f"{100 * f['registration_share']:.0f} %{_cpu(f)} ({measured(doc)})"
     )
 
 
@@ -86,8 +98,8 @@ def association_prose(doc: dict) -> str:
     return (
         f"{s['sensors']} radars × {s['targets']} targets × {s['duration_s']:g} s with clutter "
         f"({cnt(s['plots'])} plots) takes {num(a['median'])} s against {num(ids['median'])} s with true ids "
-        f"({num(f['ratio_over_true_ids'])}×, the median of {s['repeats']} interleaved rounds' ratios, "
-        f"{measured(doc)}). Its join passes settle ({f['join_passes']} passes); "
+        f"({num(f['ratio_over_true_ids'])}×, the median of {s['repeats']} interleaved rounds' "
+        f"ratios{_cpu(f)}; {measured(doc)}). Its join passes settle ({f['join_passes']} passes); "
         f"{100 * f['error_rate']:.2f} % of the plots are wrong, and the estimates lie within "
         f"{f['max_estimate_difference_in_sigma']:.2f} σ of the ids run."
     )
@@ -107,49 +119,73 @@ def online(doc: dict) -> str:
     s = doc["sizes"]
     f, p = _online_long(doc, "fitted"), _online_long(doc, "paper")
     fa, pa = (doc["figures"]["configs"][lin]["aims"] for lin in ("fitted", "paper"))
-    uf, up = f["us_per_step"], p["us_per_step"]
+    cpu = "cpu_us_per_step" in f
+
+    def cell(r: dict, key: str) -> str:
+        """CPU time (wall time) where the run has both, else the wall time."""
+        wall = num(r["us_per_step"][key])
+        return f"{num(r['cpu_us_per_step'][key])} ({wall})" if cpu else wall
+
+    uf, up = (_Cells(r, cell) for r in (f, p))
     rows = [
-        ("compiled scan (the whole Kalman step in generated C, one loop)", num(uf[SCAN]), num(up[SCAN])),
-        ("whole `register()` call", num(uf[BATCH]), num(up[BATCH])),
-        ("NumPy filter, model per row", num(uf[PER_ROW]), num(up[PER_ROW])),
+        ("compiled scan (the whole Kalman step in generated C, one loop)", uf[SCAN], up[SCAN]),
+        ("whole `register()` call", uf[BATCH], up[BATCH]),
+        ("NumPy filter, model per row", uf[PER_ROW], up[PER_ROW]),
         (
             "NumPy filter, model vectorised up front",
             "– (the linearisation point depends on the state)",
-            num(up[VECTORISED]),
+            up[VECTORISED],
         ),
-        (
-            f"streaming `OnlineRegistrar.update()` ({cnt(s['stream_rows'])} rows)",
-            num(uf[UPDATE]),
-            num(up[UPDATE]),
-        ),
-        ("the compiled stepper `update()` calls, alone", num(uf[STEPPER]), num(up[STEPPER])),
+        (f"streaming `OnlineRegistrar.update()` ({cnt(s['stream_rows'])} rows)", uf[UPDATE], up[UPDATE]),
+        ("the compiled stepper `update()` calls, alone", uf[STEPPER], up[STEPPER]),
     ]
     lines = [
         "",
-        f"  | µs per step, {cnt(s['rows'][-1])} rows (median of {s['repeat']} interleaved rounds) "
-        "| `fitted` (default) | `paper` |",
+        f"  | µs per step, {cnt(s['rows'][-1])} rows (median of {s['repeat']} interleaved rounds"
+        f"{'; CPU time (wall time)' if cpu else ''}) | `fitted` (default) | `paper` |",
         "  |---|---:|---:|",
         *(f"  | {a} | {b} | {c} |" for a, b, c in rows),
         "",
-        "  Ratios (the median of the rounds' ratios): the compiled scan is "
-        f"{num(fa['scan_ratio_vs_per_row_numpy_long'])}× the NumPy filter of the same kind for `fitted`; "
-        f"for `paper` {num(pa['scan_ratio_vs_per_row_numpy_long'])}× the per-row one and "
-        f"{num(pa['scan_ratio_vs_strongest_numpy_long'])}× the one that evaluates the model for all rows "
-        f"up front. The whole `register()` call is {num(fa['ratio_vs_strongest_numpy_long'])}× "
-        f"(`fitted`) and {num(pa['ratio_vs_strongest_numpy_long'])}× (`paper`) the strongest NumPy "
-        f"filter; at 300 rows its fixed costs make it {num(fa['batch_us_per_step_300'])} µs "
-        f"(`fitted`) and {num(pa['batch_us_per_step_300'])} µs (`paper`) per row. `update()` is "
-        f"{num(fa['update_over_scan_long'])}× the scan's step for `fitted`, "
-        f"{num(fa['update_python_us_per_step_long'])} µs of it the Python around the compiled "
-        f"stepper ({measured(doc)}).",
+        textwrap.fill(
+            "Ratios (the median of the rounds' ratios): the compiled scan is "
+            f"{num(fa['scan_ratio_vs_per_row_numpy_long'])}× the NumPy filter of the same kind for `fitted`; "
+            f"for `paper` {num(pa['scan_ratio_vs_per_row_numpy_long'])}× the per-row one and "
+            f"{num(pa['scan_ratio_vs_strongest_numpy_long'])}× the one that evaluates the model for all rows "
+            f"up front. The whole `register()` call is {num(fa['ratio_vs_strongest_numpy_long'])}× "
+            f"(`fitted`) and {num(pa['ratio_vs_strongest_numpy_long'])}× (`paper`) the strongest NumPy "
+            f"filter; at 300 rows its fixed costs make it {num(fa['batch_us_per_step_300'])} µs "
+            f"(`fitted`) and {num(pa['batch_us_per_step_300'])} µs (`paper`) per row. `update()` is "
+            f"{num(fa['update_over_scan_long'])}× the scan's step for `fitted`, "
+            f"{num(fa['update_python_us_per_step_long'])} µs of it the Python around the compiled "
+            f"stepper ({measured(doc)}).",
+            100,
+            initial_indent="  ",
+            subsequent_indent="  ",
+            break_on_hyphens=False,
+        ),
         "",
     ]
     return "\n".join(lines)
 
 
+class _Cells:
+    """r[key] -> the table cell of one contender."""
+
+    def __init__(self, r: dict, cell: Callable[[dict, str], str]):
+        self.r, self.cell = r, cell
+
+    def __getitem__(self, key: str) -> str:
+        return self.cell(self.r, key)
+
+
 def online_step(doc: dict) -> str:
-    us = _online_long(doc, "fitted")["us_per_step"][SCAN]
-    return f"{num(us)} µs per step compiled (median; `benchmarks/results/online.json`)"
+    r = _online_long(doc, "fitted")
+    if "cpu_us_per_step" in r:
+        return (
+            f"{num(r['cpu_us_per_step'][SCAN])} µs per step compiled (CPU time, median of the "
+            f"interleaved rounds; `benchmarks/results/online.json`)"
+        )
+    return f"{num(r['us_per_step'][SCAN])} µs per step compiled (median; `benchmarks/results/online.json`)"
 
 
 def fleet(doc: dict) -> str:

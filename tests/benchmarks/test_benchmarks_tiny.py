@@ -19,7 +19,10 @@ BENCH = ROOT / "benchmarks"
 HELPERS = {"common.py", "tables.py", "online_baseline.py", "online_flags.py"}
 SCRIPTS = sorted(p.name for p in BENCH.glob("*.py") if p.name not in HELPERS)
 #: Other paths of a script worth running: (script, extra arguments).
-VARIANTS = [("association_table.py", ["--table", "robust"]), ("bench_online.py", ["--flags"])]
+VARIANTS: list[tuple[str, list[str]]] = [
+    ("association_table.py", ["--table", "robust"]),
+    ("bench_online.py", ["--flags"]),
+]
 #: Seconds a tiny run may take on a loaded 2-core machine (most take a few seconds).
 TIMEOUT_S = 600
 
@@ -44,7 +47,7 @@ def test_every_script_is_a_benchmark_or_a_named_helper():
 
 @pytest.mark.parametrize(
     ("script", "extra"),
-    [(s, []) for s in SCRIPTS] + VARIANTS,
+    [(s, list[str]()) for s in SCRIPTS] + VARIANTS,
     ids=[s for s in SCRIPTS] + [f"{s} {' '.join(e)}" for s, e in VARIANTS],
 )
 def test_runs_tiny(script, extra, tmp_path):
