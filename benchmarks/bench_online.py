@@ -441,6 +441,9 @@ def main(argv=None) -> int:
         from online_flags import flags_experiment
 
         for lin, cfg in configs.items():
+            if args.tiny and lin != default:
+                print(f"\n--tiny: the flags experiment of {lin} left out (the default's only)")
+                continue
             flags = flags_experiment(
                 cfg, rows_of(data_long), register(data_long, cfg).estimates[-1, 3], args.repeat
             )

@@ -184,8 +184,8 @@ def main(argv=None) -> int:
     ap.add_argument("--repeat", type=int, default=1, help="interleaved rounds of the cases per size")
     add_arguments(ap)
     args = ap.parse_args(argv)
-    if args.tiny:
-        args.rows, args.repeat = [600], 1
+    if args.tiny:  # two cases and the API: each is a fresh process
+        args.rows, args.repeat, args.cases = [600], 1, ["csv", "parquet"]
     results = []
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)

@@ -221,12 +221,20 @@ def fleet_online(doc: dict) -> str:
 
 def step(doc: dict) -> str:
     p = doc["figures"]["portable"]
+    cpu = "cpu carlson" in p["paper"]
+
+    def us(lin: str, update: str) -> str:
+        """CPU time (wall time) where the run has both, else the wall time."""
+        wall = num(p[lin][update])
+        return f"{num(p[lin]['cpu ' + update])} ({wall})" if cpu else wall
+
     parts = [
-        f"{num(p[lin]['carlson'])} against {num(p[lin]['joseph'])} µs per step (`{lin}`)"
+        f"{us(lin, 'carlson')} against {us(lin, 'joseph')} µs per step (`{lin}`)"
         for lin in ("paper", "fitted")
     ]
     text = (
-        f"Carlson against Joseph: {parts[0]}, {parts[1]}; Joseph / Carlson "
+        f"Carlson against Joseph{', CPU time (wall time)' if cpu else ''}: {parts[0]}, {parts[1]}; "
+        f"Joseph / Carlson "
         f"{num(p['paper']['joseph/carlson'])} and {num(p['fitted']['joseph/carlson'])} (medians of "
         f"{doc['sizes']['repeat']} interleaved rounds and of their ratios)"
     )

@@ -18,11 +18,12 @@ BENCH = ROOT / "benchmarks"
 #: NumPy baseline and compiler-flags experiment that bench_online.py imports (run below).
 HELPERS = {"common.py", "tables.py", "online_baseline.py", "online_flags.py"}
 SCRIPTS = sorted(p.name for p in BENCH.glob("*.py") if p.name not in HELPERS)
+#: Arguments of a script's tiny run beyond --tiny: bench_online.py runs its compiler-flags
+#: experiment (online_flags.py) too.
+EXTRA = {"bench_online.py": ["--flags"]}
 #: Other paths of a script worth running: (script, extra arguments).
-VARIANTS: list[tuple[str, list[str]]] = [
-    ("association_table.py", ["--table", "robust"]),
-    ("bench_online.py", ["--flags"]),
-]
+VARIANTS: list[tuple[str, list[str]]] = [("association_table.py", ["--table", "robust"])]
+RUNS = [(s, EXTRA.get(s, [])) for s in SCRIPTS] + VARIANTS
 #: Seconds a tiny run may take on a loaded 2-core machine (most take a few seconds).
 TIMEOUT_S = 600
 
@@ -45,11 +46,7 @@ def test_every_script_is_a_benchmark_or_a_named_helper():
     assert HELPERS <= {p.name for p in BENCH.glob("*.py")}, "a helper named here no longer exists"
 
 
-@pytest.mark.parametrize(
-    ("script", "extra"),
-    [(s, list[str]()) for s in SCRIPTS] + VARIANTS,
-    ids=[s for s in SCRIPTS] + [f"{s} {' '.join(e)}" for s, e in VARIANTS],
-)
+@pytest.mark.parametrize(("script", "extra"), RUNS, ids=[" ".join([s, *e]) for s, e in RUNS])
 def test_runs_tiny(script, extra, tmp_path):
     out = tmp_path / "figures.json"
     proc = run_tiny(script, extra, out)
