@@ -223,13 +223,17 @@ def main(argv=None) -> dict:
             contenders["least_squares"] = run_least_squares
             break
     # the attempt just run is the warm-up of least_squares; solve_batch and fit ran above
-    times, _ = interleave(contenders, args.repeats, warmup=0)
+    cpu: dict[str, list[float]] = {}
+    times, _ = interleave(contenders, args.repeats, warmup=0, cpu=cpu)
     out["seconds"] = summary(times)
+    out["cpu_seconds"] = summary(cpu)
     out["solve_batch_s"] = median(times["solve_batch"])
     out["solver_only_s"] = median(times["fit"])
     if "least_squares" in times:
         out["ratio_least_squares_over_solver"] = paired_ratio(times, "least_squares", "fit")
         out["ratio_least_squares_over_solve_batch"] = paired_ratio(times, "least_squares", "solve_batch")
+        out["cpu_ratio_least_squares_over_solver"] = paired_ratio(cpu, "least_squares", "fit")
+        out["cpu_ratio_least_squares_over_solve_batch"] = paired_ratio(cpu, "least_squares", "solve_batch")
     out["load_average_after"] = os.getloadavg()
     for key, value in {**sizes, **out}.items():
         if key != "least_squares":

@@ -188,6 +188,19 @@ def online_step(doc: dict) -> str:
     return f"{num(r['us_per_step'][SCAN])} µs per step compiled (median; `benchmarks/results/online.json`)"
 
 
+def _fleet_cpu(f: dict) -> str:
+    """The CPU-time figures of a fleet run, if it has them (BLAS threads count more than once)."""
+    if "cpu_seconds" not in f or "cpu_ratio_least_squares_over_solve_batch" not in f:
+        return ""
+    c = f["cpu_seconds"]
+    return (
+        f"; in CPU time {num(c['solve_batch']['median'])} s end to end, "
+        f"{num(c['fit']['median'])} s the solver, {num(c['least_squares']['median'])} s "
+        f"least_squares: {num(f['cpu_ratio_least_squares_over_solve_batch'])}× and "
+        f"{num(f['cpu_ratio_least_squares_over_solver'])}×"
+    )
+
+
 def fleet(doc: dict) -> str:
     f, s = doc["figures"], doc["sizes"]
     sb, fit, ls = (f["seconds"][k] for k in ("solve_batch", "fit", "least_squares"))
@@ -199,7 +212,7 @@ def fleet(doc: dict) -> str:
         f"({num(f['ratio_least_squares_over_solver'])}× the solver alone) than "
         f"`scipy.optimize.least_squares` solving the same residuals to the same optimum "
         f"({num(ls['median'])} s; medians of {s['repeats']} interleaved rounds and of their ratios; "
-        f"sum of squares {f['cost_batch']:.5f}; {measured(doc)})"
+        f"sum of squares {f['cost_batch']:.5f}{_fleet_cpu(f)}; {measured(doc)})"
     )
 
 
@@ -243,10 +256,11 @@ def step(doc: dict) -> str:
         fj, fc = native.get("fitted joseph"), native.get("fitted carlson")
         if fj and fc:
             text += (
-                f". The builds for the local CPU, `fitted`: native {num(fj['us_per_step']['native'])} / "
-                f"{num(fc['us_per_step']['native'])} µs (Joseph / Carlson), exact "
-                f"{num(fj['us_per_step']['native-exact'])} / {num(fc['us_per_step']['native-exact'])} µs; "
-                f"the portable build over native {num(fj['portable_over']['native'])}× for Joseph"
+                f". The builds for the local CPU, `fitted`, wall time: native "
+                f"{num(fj['us_per_step']['native'])} / {num(fc['us_per_step']['native'])} µs (Joseph / "
+                f"Carlson), exact {num(fj['us_per_step']['native-exact'])} / "
+                f"{num(fc['us_per_step']['native-exact'])} µs; native {num(fj['portable_over']['native'])}× "
+                f"and exact {num(fj['portable_over']['native-exact'])}× faster than portable for Joseph"
             )
     return f"{text} ({measured(doc)})"
 
