@@ -330,7 +330,33 @@ def montecarlo(doc: dict) -> str:
     )
 
 
+def asterix(doc: dict) -> str:
+    f, s = doc["figures"], doc["sizes"]
+    rate, over = f["records_per_s"], f["over_libasterix"]
+    return (
+        f"ASTERIX, {cnt(s['records'])} CAT048 records imported at {cnt(rate['raw import_asterix'])} "
+        f"records/s raw and {cnt(rate['pcap import_asterix'])} from pcap, against "
+        f"{cnt(rate['libasterix'])}/s for libasterix's parse alone ({num(over['raw import_asterix'])}×; "
+        f"`benchmarks/bench_asterix.py`, medians of {s['repeat']} interleaved rounds and of their "
+        f"ratios; {measured(doc)})"
+    )
+
+
+def nmea(doc: dict) -> str:
+    f, s = doc["figures"], doc["sizes"]
+    sec = f["seconds"]
+    return (
+        f"NMEA, {s['duration_s']:g} s of a bridge log ({cnt(s['lines'])} lines) in "
+        f"{num(sec['import_nmea']['median'])} s against {num(sec['pynmea2.parse baseline']['median'])} s "
+        f"for a bare `pynmea2.parse` of every line ({num(f['import_over_baseline'])}×; "
+        f"`benchmarks/bench_nmea.py`, medians of {s['repeat']} interleaved rounds and of their "
+        f"ratios; {measured(doc)})"
+    )
+
+
 RENDERERS: dict[str, Callable[[dict], str]] = {
+    "asterix": asterix,
+    "nmea": nmea,
     "association": association,
     "association.prose": association_prose,
     "online": online,
