@@ -45,6 +45,8 @@ def num(x: float) -> str:
         return f"{x:.1f}"
     if abs(x) >= 1:
         return f"{x:.2f}"
+    if abs(x) >= 0.1:
+        return f"{x:.2f}"
     return f"{x:.2g}" if abs(x) >= 0.01 else f"{x:.1g}"
 
 
@@ -354,7 +356,34 @@ def nmea(doc: dict) -> str:
     )
 
 
+def register(doc: dict) -> str:
+    runs = doc["figures"]
+
+    def case(name: str) -> list[dict]:
+        return [r for r in runs if r["case"] == name]
+
+    csv, pq = case("stream csv in -> csv out"), case("stream parquet in -> parquet out")
+    plots = case("stream csv in -> csv out, with plots")
+    sizes = sorted({r["rows"] for r in csv})
+    peak = {k: span([r["peak_mib"] for r in v]) for k, v in (("csv", csv), ("pq", pq))}
+    rate = {k: span([r["rows"] / r["seconds"] / 1e3 for r in v]) for k, v in (("csv", csv), ("pq", pq))}
+    text = (
+        f"measured peak RSS {peak['csv']} MiB (CSV) / {peak['pq']} MiB (Parquet) from {cnt(sizes[0])} to "
+        f"{cnt(sizes[-1])} rows, at {rate['csv']} k rows/s (CSV) and {rate['pq']} k rows/s (Parquet) for "
+        f"the whole command"
+    )
+    if plots:
+        big = max(plots, key=lambda r: r["rows"])
+        without = next(r for r in csv if r["rows"] == big["rows"])
+        text += (
+            f"; with the plots on (the default) the peak is {num(big['peak_mib'])} MiB against "
+            f"{num(without['peak_mib'])} MiB without them at {cnt(big['rows'])} rows (CSV)"
+        )
+    return f"{text} (`benchmarks/bench_register.py`, {measured(doc)})"
+
+
 RENDERERS: dict[str, Callable[[dict], str]] = {
+    "register": register,
     "asterix": asterix,
     "nmea": nmea,
     "association": association,
