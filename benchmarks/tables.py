@@ -56,8 +56,9 @@ def cnt(n: int) -> str:
 
 
 def span(values: list[float]) -> str:
-    """The range of the rounds: lowest–highest."""
-    return f"{num(min(values))}–{num(max(values))}"
+    """The range of the rounds: lowest–highest (one figure when they round alike)."""
+    lo, hi = num(min(values)), num(max(values))
+    return lo if lo == hi else f"{lo}–{hi}"
 
 
 def measured(doc: dict) -> str:
