@@ -31,15 +31,20 @@ brackets where it matters):
 * bias vs ids: the largest difference between the association's estimate and the true-id
   registration's, over all states, in units of the true-id registration's sigma;
 * bias vs truth: the largest |estimate - truth| / sigma of the association's registration;
-* time: seconds of the association + registration, and of the true-id registration.
+* time: seconds of the association + registration, and of the true-id registration (the two
+  interleaved, common.interleave).
+
+The table's lines go to benchmarks/results/association_table.json (``--table robust``:
+association_table_robust.json); ``--tiny``: three short rows (robust: two fleets at a tenth of
+their length, the ATC recording left out), to check the script works.
 """
 
 from __future__ import annotations
 
 import argparse
-import time
 
 import numpy as np
+from common import add_arguments, interleave, write
 
 from registration.fleet import (
     associate_and_register,
@@ -65,17 +70,18 @@ MIX = {
 }
 
 
-def _fleet(name: str, seed: int):
-    """(simulation, references, plots of the ids run) of one robust-table fleet."""
+def _fleet(name: str, seed: int, scale: float = 1.0):
+    """(simulation, references, plots of the ids run) of one robust-table fleet (durations times
+    ``scale``; the ATC recording has its own)."""
     if name == "issue":
-        sim, refs = rolling_fleet(seed, duration_s=600.0), None
+        sim, refs = rolling_fleet(seed, duration_s=600.0 * scale), None
     elif name == "issue, 5 % clutter":
-        sim, refs = rolling_fleet(seed, duration_s=600.0, clutter_share=0.05), None
+        sim, refs = rolling_fleet(seed, duration_s=600.0 * scale, clutter_share=0.05), None
     elif name == "other mix, 5 % clutter":
         sim, refs = (
             rolling_fleet(
                 seed,
-                duration_s=300.0,
+                duration_s=300.0 * scale,
                 n_aircraft=8,
                 sensors=MIX,
                 clutter_share=0.05,
@@ -85,11 +91,11 @@ def _fleet(name: str, seed: int):
         )
     elif name == "issue, time bias + gain, 5 % clutter":
         sim, refs = (
-            rolling_fleet(seed, duration_s=300.0, clutter_share=0.05, time_bias=0.3, range_gain=3e-4),
+            rolling_fleet(seed, duration_s=300.0 * scale, clutter_share=0.05, time_bias=0.3, range_gain=3e-4),
             None,
         )
     elif name == "bridge log (ARPA + AIS)":
-        sim, refs = vessel_fleet(seed, duration_s=600.0)
+        sim, refs = vessel_fleet(seed, duration_s=600.0 * scale)
         keep = np.isin(sim.true_target, np.unique(refs["target"]))
         ids = {k: v[keep] for k, v in sim.plots.items() if k != "track"}
         return sim, refs, dict(ids, target=sim.true_target[keep])
@@ -116,37 +122,53 @@ ROBUST = (
 )
 
 
-def robust_row(name: str, seed: int) -> str:
-    sim, refs, ids = _fleet(name, seed)
+def _both(sim, refs, ids) -> tuple[dict, object, object]:
+    """The association's and the true ids' registration, interleaved (common.interleave): the
+    seconds of each, the association result and the ids run."""
     sc = sim.scenario
-    t0 = time.perf_counter()
-    base = solve_batch(build_problem(ids, sc.sensors, sc.navigation, sc.platforms, refs))
-    t_ids = time.perf_counter() - t0
-    t0 = time.perf_counter()
-    result = associate_and_register(sim.plots, sc.sensors, sc.navigation, sc.platforms, refs)
-    t_assoc = time.perf_counter() - t0
+    times, values = interleave(
+        {
+            "ids": lambda: solve_batch(build_problem(ids, sc.sensors, sc.navigation, sc.platforms, refs)),
+            "association": lambda: associate_and_register(
+                sim.plots, sc.sensors, sc.navigation, sc.platforms, refs
+            ),
+        },
+        1,
+        warmup=0,
+    )
+    return {k: t[0] for k, t in times.items()}, values["association"], values["ids"]
+
+
+def robust_row(name: str, seed: int, scale: float = 1.0) -> str:
+    sim, refs, ids = _fleet(name, seed, scale)
+    sc = sim.scenario
+    seconds, result, base = _both(sim, refs, ids)
+    t_ids, t_assoc = seconds["ids"], seconds["association"]
     real, lab = sim.true_target != "", result.labels != ""
     # each label stands for the true target of most of its plots (ids given and references by name too)
     wrong = int(round(association_scores(result.labels, sim.true_target)["error_rate"] * real.sum()))
     reg = registration_scores(result.batch, base, sc.truth_state)
     return (
-        f"| {name} | {seed} | {int(real.sum())} ({int((~real).sum())}) | {wrong} | {int((lab & ~real).sum())} | "
-        f"{100 * np.mean(~lab[real]):.1f} % | {result.n_targets} | {reg['vs_truth']:.2f} | {reg['sigma_ratio']:.3f} | "
+        f"| {name} | {seed} | {int(real.sum())} ({int((~real).sum())}) | {wrong} | "
+        f"{int((lab & ~real).sum())} | "
+        f"{100 * np.mean(~lab[real]):.1f} % | {result.n_targets} | {reg['vs_truth']:.2f} | "
+        f"{reg['sigma_ratio']:.3f} | "
         f"{reg['chi2_mean']:.4f} [{reg['chi2_band'][0]:.3f}, {reg['chi2_band'][1]:.3f}] | "
         f"{'yes' if result.converged else 'no'} | {t_assoc:.1f} / {t_ids:.1f} |"
     )
 
 
-def robust_table(seeds) -> list[str]:
+def robust_table(seeds, names=ROBUST, scale: float = 1.0) -> list[str]:
     lines = [
         "| fleet | seed | real plots (clutter) | wrong joins | clutter in | unassoc. | targets | "
-        "max \\|est − truth\\|/σ | σ ratio vs ids | χ² mean [99.9 % band] | converged | time (s): assoc. / ids |",
+        "max \\|est − truth\\|/σ | σ ratio vs ids | χ² mean [99.9 % band] | converged | time (s): assoc. / "
+        "ids |",
         "|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     print("\n".join(lines), flush=True)
-    for name in ROBUST:
+    for name in names:
         for seed in seeds:
-            lines.append(robust_row(name, seed))
+            lines.append(robust_row(name, seed, scale))
             print(lines[-1], flush=True)
     return lines
 
@@ -186,10 +208,7 @@ def run_case(
         seed=seed,
     )
     sc = sim.scenario
-    t0 = time.perf_counter()
-    base = solve_batch(build_problem(sim.labelled_plots, sc.sensors, sc.navigation, sc.platforms))
-    t_ids = time.perf_counter() - t0
-    result = associate_and_register(sim.plots, sc.sensors, sc.navigation, sc.platforms)
+    seconds, result, base = _both(sim, None, sim.labelled_plots)
     free = base.layout.free
     truth = sc.truth_vector(base.layout)
     est = result.batch.estimate
@@ -197,8 +216,8 @@ def run_case(
         **association_scores(result.labels, sim.true_target),
         "passes": result.iterations,
         "converged": result.converged,
-        "seconds": result.seconds_total,
-        "seconds_ids": t_ids,
+        "seconds": seconds["association"],
+        "seconds_ids": seconds["ids"],
         "vs_ids": float(np.max(np.abs(est - base.estimate)[free] / base.sigma[free])),
         "vs_truth": float(np.max(np.abs(est - truth)[free] / result.batch.sigma[free])),
         "plots": int(sim.plots["time"].size),
@@ -213,9 +232,11 @@ def _row(case, runs: list[dict]) -> str:
     conv = "" if all(r["converged"] for r in runs) else " (not all converged)"
     return (
         f"| {n} | {'yes' if crossing else 'no'} | {bias:g} | {100 * missed:g} % | {clutter:g} | "
-        f"{mean['plots']:.0f} ({mean['clutter']:.0f}) | {100 * mean['error_rate']:.2f} % ({100 * worst['error_rate']:.2f} %) | "
+        f"{mean['plots']:.0f} ({mean['clutter']:.0f}) | {100 * mean['error_rate']:.2f} % "
+        f"({100 * worst['error_rate']:.2f} %) | "
         f"{100 * mean['unassociated_rate']:.1f} % ({100 * worst['unassociated_rate']:.1f} %) | "
-        f"{100 * mean['clutter_associated']:.2f} % | {mean['labels_per_target']:.2f} | {mean['passes']:.1f}{conv} | "
+        f"{100 * mean['clutter_associated']:.2f} % | {mean['labels_per_target']:.2f} | "
+        f"{mean['passes']:.1f}{conv} | "
         f"{mean['vs_ids']:.2f} ({worst['vs_ids']:.2f}) | {mean['vs_truth']:.2f} ({worst['vs_truth']:.2f}) | "
         f"{mean['seconds']:.1f} / {mean['seconds_ids']:.1f} |"
     )
@@ -234,21 +255,31 @@ def main(argv=None) -> list[str]:
     parser.add_argument(
         "--seeds", type=int, nargs="*", default=[101, 102], help="draws of each robust-table fleet"
     )
+    add_arguments(parser)
     args = parser.parse_args(argv)
+    cases, names, scale = CASES, ROBUST, 1.0
+    if args.tiny:  # a few rows, short: does it still run?
+        args.runs, args.duration, args.seeds = 1, 30.0, args.seeds[:1]
+        cases, names, scale = [CASES[1], CASES[3], CASES[5]], ROBUST[:1] + ROBUST[4:5], 0.1
     if args.table == "robust":
-        return robust_table(args.seeds)
+        lines = robust_table(args.seeds, names, scale)
+        write("association_table_robust", args, {"seeds": args.seeds, "fleets": list(names)}, lines)
+        return lines
     lines = [
         f"{args.runs} runs of {args.duration:g} s per row; mean (worst run)",
         "",
-        "| targets | crossing | angle bias (deg) | missed | clutter / scan | plots (clutter) | error | unassoc. | "
-        "clutter in | labels / target | passes | bias vs ids (σ) | bias vs truth (σ) | time (s): assoc. / ids |",
+        "| targets | crossing | angle bias (deg) | missed | clutter / scan | plots (clutter) | error | "
+        "unassoc. | "
+        "clutter in | labels / target | passes | bias vs ids (σ) | bias vs truth (σ) | time (s): assoc. / "
+        "ids |",
         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     print("\n".join(lines), flush=True)
-    for case in CASES:
+    for case in cases:
         runs = [run_case(*case, seed=seed, duration_s=args.duration) for seed in range(args.runs)]
         lines.append(_row(case, runs))
         print(lines[-1], flush=True)
+    write("association_table", args, {"runs": args.runs, "duration_s": args.duration}, lines)
     return lines
 
 

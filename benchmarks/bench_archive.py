@@ -33,7 +33,10 @@ Runs (each a fresh process):
 
 Printed per run: wall time of the solve (s; reading included), peak RSS (MiB), iterations, and
 the largest relative difference of the estimates and sigmas from the ``batch`` run of the same
-size; then the ratios (time and memory) against ``batch`` in the same invocation.
+size; then the ratios (time and memory) against ``batch`` in the same invocation. The runs of one
+size are interleaved (common.interleave, ``--repeat`` rounds, default 1; times are medians, the
+time ratio the median of the rounds' ratios). Figures: benchmarks/results/archive.json;
+``--tiny``: 1600 plots in 5 s partitions.
 """
 
 from __future__ import annotations
@@ -50,6 +53,7 @@ from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
+from common import Timed, add_arguments, interleave, median, paired_ratio, write
 
 ROW_GROUP = 100_000
 #: Larger archives are this one repeated in time (tile).
@@ -218,6 +222,11 @@ def measure(mode: str, folder: Path, partition_s: float, work: Path) -> dict:
     return figures
 
 
+def timed(figures: dict) -> Timed:
+    """A run's figures, timed by the run itself (reading and solve, not the process start)."""
+    return Timed(figures["seconds"], figures)
+
+
 def relative(a: np.ndarray, b: np.ndarray) -> float:
     fin = np.isfinite(b) & (b != 0)
     return float(np.max(np.abs(a[fin] - b[fin]) / np.abs(b[fin]))) if fin.any() else 0.0
@@ -242,7 +251,8 @@ def main(argv=None) -> dict:
         choices=("batch", "cached", "bounded", "reread"),
         help="runs to make (default: batch, cached, bounded; bounded only above --batch-max)",
     )
-    parser.add_argument("--json", help="write the figures to this file")
+    parser.add_argument("--repeat", type=int, default=1, help="interleaved rounds of the runs per size")
+    add_arguments(parser)
     parser.add_argument("--run", help=argparse.SUPPRESS)
     parser.add_argument("--folder", help=argparse.SUPPRESS)
     parser.add_argument("--out", help=argparse.SUPPRESS)
@@ -250,6 +260,8 @@ def main(argv=None) -> dict:
     if args.run:
         run(args.run, Path(args.folder), args.partition_s, Path(args.out))
         return {}
+    if args.tiny:  # 20 s of data in 5 s partitions
+        args.sizes, args.partition_s, args.repeat = [1600], 5.0, 1
     report = {"load": os.getloadavg(), "partition_s": args.partition_s, "sizes": {}}
     with tempfile.TemporaryDirectory() as tmp:
         work = Path(tmp)
@@ -265,23 +277,34 @@ def main(argv=None) -> dict:
             modes = ["batch", "cached", "bounded"] if size <= args.batch_max else ["bounded"]
             if args.modes:
                 modes = [m for m in ("batch", "cached", "bounded", "reread") if m in args.modes]
-            runs = {m: measure(m, folder, args.partition_s, work) for m in modes}
+            contenders = {m: (lambda m=m: timed(measure(m, folder, args.partition_s, work))) for m in modes}
+            times, runs = interleave(contenders, args.repeat, warmup=0)
+            for m, r in runs.items():
+                r["seconds"], r["rounds_seconds"] = median(times[m]), times[m]
             base = runs.get("batch")
             print(
-                f"{info['plots']} plots, {info['navigation_rows']} navigation rows, load {os.getloadavg()[0]:.1f}"
+                f"{info['plots']} plots, {info['navigation_rows']} navigation rows, load "
+                f"{os.getloadavg()[0]:.1f}"
             )
             for m, r in runs.items():
-                line = f"  {m:8s} {r['seconds']:8.2f} s {r['peak_mib']:8.0f} MiB peak  {r['iterations']} iterations"
+                line = (
+                    f"  {m:8s} {r['seconds']:8.2f} s {r['peak_mib']:8.0f} MiB peak  "
+                    f"{r['iterations']} iterations"
+                )
                 if r.get("solve_seconds") is not None:
-                    line += f" (reading {r['seconds'] - r['solve_seconds']:.2f} s, solve_batch {r['solve_seconds']:.2f} s)"
+                    line += (
+                        f" (reading {r['seconds'] - r['solve_seconds']:.2f} s, "
+                        f"solve_batch {r['solve_seconds']:.2f} s)"
+                    )
                 if base is not None and m != "batch":
                     r["estimate_rel"] = relative(r["estimate"], base["estimate"])
                     r["sigma_rel"] = relative(r["sigma"], base["sigma"])
-                    r["time_ratio"] = r["seconds"] / base["seconds"]
+                    r["time_ratio"] = paired_ratio(times, m, "batch")
                     r["memory_ratio"] = r["peak_mib"] / base["peak_mib"]
                     r["solve_ratio"] = r["seconds"] / base["solve_seconds"]
                     line += (
-                        f"  x{r['time_ratio']:.2f} time (x{r['solve_ratio']:.2f} of solve_batch alone), x{r['memory_ratio']:.2f} memory of batch; estimates "
+                        f"  x{r['time_ratio']:.2f} time (x{r['solve_ratio']:.2f} of solve_batch alone), "
+                        f"x{r['memory_ratio']:.2f} memory of batch; estimates "
                         f"{r['estimate_rel']:.1e}, sigmas {r['sigma_rel']:.1e} relative"
                     )
                 print(line, flush=True)
@@ -291,8 +314,7 @@ def main(argv=None) -> dict:
                     m: {k: v for k, v in r.items() if k not in ("estimate", "sigma")} for m, r in runs.items()
                 },
             }
-    if args.json:
-        Path(args.json).write_text(json.dumps(report, indent=2))
+    write("archive", args, {"sizes": args.sizes, "repeat": args.repeat}, report)
     return report
 
 

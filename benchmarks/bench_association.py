@@ -6,6 +6,7 @@ Run from a checkout::
 
     python3 benchmarks/bench_association.py                  # 10 sensors x 20 targets x 1000 s
     python3 benchmarks/bench_association.py --duration 300 --json out.json
+    python3 benchmarks/bench_association.py --tiny                   # seconds: does it still run?
 
 Problem: the default fleet's three ships and shore site with ten radars (3-D and 2-D, sampling
 once a second at their own time offsets), twenty targets (crossing pairs among them), angle biases
@@ -13,20 +14,21 @@ of 2 deg, 10 % missed detections and one clutter plot per scan per sensor on ave
 (:func:`registration.fleet.association_scenario`). Timed: :func:`associate_and_register` end to
 end (checks, tracks per sensor, association passes, the solves between them and the final solve),
 and the baseline :func:`build_problem` + :func:`solve_batch` on the real plots with their true
-ids. Printed: the times, the share of the association's time spent in ``linear_sum_assignment``,
-the ratio of the two times, the association's scores against the truth and the largest
-difference of the two estimates in units of the baseline's sigma. The machine's load average is
+ids, interleaved (``--repeats`` rounds; the ratio is the median of the rounds' ratios). Printed
+and written to benchmarks/results/association.json: the times, the share of the association's
+time spent in ``linear_sum_assignment``, the ratio of the two times, the association's scores
+against the truth and the largest difference of the two estimates in units of the baseline's
+sigma. The machine's load average is
 printed too (other work slows both).
 """
 
 from __future__ import annotations
 
 import argparse
-import json
 import os
-import time
 
 import numpy as np
+from common import add_arguments, interleave, paired_ratio, summary, write
 
 from registration.fleet import (
     associate_and_register,
@@ -56,8 +58,11 @@ def main(argv=None) -> dict:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--duration", type=float, default=1000.0, help="seconds of data")
     parser.add_argument("--targets", type=int, default=20)
-    parser.add_argument("--json", help="write the figures to this file")
+    parser.add_argument("--repeats", type=int, default=3, help="rounds of the two, interleaved")
+    add_arguments(parser)
     args = parser.parse_args(argv)
+    if args.tiny:
+        args.duration, args.targets, args.repeats = 60.0, 3, 1
 
     sim = association_scenario(
         args.targets,
@@ -70,34 +75,46 @@ def main(argv=None) -> dict:
         sensors=SENSORS_10,
     )
     sc = sim.scenario
-    out = {
+    sizes = {
+        "sensors": len(SENSORS_10),
+        "targets": args.targets,
+        "duration_s": args.duration,
         "plots": int(sim.plots["time"].size),
         "real_plots": int(np.count_nonzero(sim.true_target != "")),
-        "load_average_before": os.getloadavg(),
+        "repeats": args.repeats,
     }
-    t0 = time.perf_counter()
-    base = solve_batch(build_problem(sim.labelled_plots, sc.sensors, sc.navigation, sc.platforms))
-    out["baseline_true_ids_s"] = time.perf_counter() - t0
-    t0 = time.perf_counter()
-    result = associate_and_register(sim.plots, sc.sensors, sc.navigation, sc.platforms)
-    out["association_and_registration_s"] = time.perf_counter() - t0
+    out: dict = {"load_average_before": os.getloadavg()}
+    cpu: dict[str, list[float]] = {}
+    times, values = interleave(
+        {
+            "association": lambda: associate_and_register(sim.plots, sc.sensors, sc.navigation, sc.platforms),
+            "true_ids": lambda: solve_batch(
+                build_problem(sim.labelled_plots, sc.sensors, sc.navigation, sc.platforms)
+            ),
+        },
+        args.repeats,
+        warmup=0,
+        cpu=cpu,
+    )
+    base, result = values["true_ids"], values["association"]
+    out["seconds"] = summary(times)
+    out["ratio_over_true_ids"] = paired_ratio(times, "association", "true_ids")
+    out["cpu_seconds"] = summary(cpu)
+    out["cpu_ratio_over_true_ids"] = paired_ratio(cpu, "association", "true_ids")
     out["assignment_s"] = result.seconds_assignment
     out["assignment_share"] = result.assignment_share
     out["registration_share"] = result.seconds_registration / result.seconds_total
     out["passes"] = result.iterations
     out["join_passes"] = result.join_passes
     out["converged"] = result.converged
-    out["ratio_over_baseline"] = out["association_and_registration_s"] / out["baseline_true_ids_s"]
     out.update(association_scores(result.labels, sim.true_target))
     free = base.layout.free
     diff = np.abs(result.batch.estimate - base.estimate)[free] / base.sigma[free]
     out["max_estimate_difference_in_sigma"] = float(np.max(diff))
     out["load_average_after"] = os.getloadavg()
-    for key, value in out.items():
+    for key, value in {**sizes, **out}.items():
         print(f"{key:36s} {value}")
-    if args.json:
-        with open(args.json, "w") as fh:
-            json.dump(out, fh, indent=2, default=str)
+    write("association", args, sizes, out)
     return out
 
 

@@ -9,12 +9,16 @@ Run from a checkout (the package and libasterix installed)::
 A recording of typical CAT048 plot reports (I048/010, 140, 020, 040, 070, 090, 130, 220, 240,
 250, 161, 042, 200, 170: about 45 bytes each, 20 records per data block) is encoded by
 libasterix (2000 distinct records, repeated) and written once as a raw file and as a pcap of one
-block per UDP datagram, into a temporary folder. Timed (wall clock, best of ``--repeat``):
+block per UDP datagram, into a temporary folder. Timed (wall clock, median of ``--repeat``
+rounds interleaved in alternating order, common.interleave; ratios the median of the rounds'
+ratios of records/s; figures in benchmarks/results/asterix.json):
 
 * ``decode_file``: data blocks found and CAT048 records walked and their fields read;
 * ``import_asterix``: the whole import (plots table, time axis, summary);
 * ``libasterix``: ``RawDatablock.parse`` and ``Cat_048_1_32.cv_uap.parse`` of every block of the
   first ``--lib-records`` records (it is too slow for the whole file), records/s extrapolated.
+
+``--tiny``: 2000 records, to check the script works.
 """
 
 from __future__ import annotations
@@ -22,11 +26,11 @@ from __future__ import annotations
 import argparse
 import struct
 import tempfile
-import time
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
+from common import add_arguments, interleave, median, paired_ratio, write
 
 from registration.io.asterix import decode_file, import_asterix
 
@@ -74,36 +78,29 @@ def _pcap(blocks: list) -> bytes:
     return b"".join(out)
 
 
-def _best(fn, repeat: int) -> float:
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - start)
-    return min(times)
-
-
-def _libasterix_rate(blocks: list, n_records: int) -> float:
+def _libasterix(data: bytes) -> int:
+    """libasterix's parse of every block of ``data``; the records it found."""
     import asterix.generated as gen
     from asterix.base import Bits, RawDatablock
 
-    data = b"".join(blocks[: max(1, n_records // PER_BLOCK)])
-    start = time.perf_counter()
     count = 0
     for block in RawDatablock.parse(Bits.from_bytes(data)):
         count += len(gen.Cat_048_1_32.cv_uap.parse(block.get_raw_records()))
-    return count / (time.perf_counter() - start)
+    return count
 
 
-def main() -> None:
+def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--records", type=int, default=1_000_000, help="CAT048 records in the file (count)")
     parser.add_argument("--repeat", type=int, default=3, help="timed runs of each reader (count)")
     parser.add_argument("--lib-records", type=int, default=4000, help="records libasterix parses (count)")
-    args = parser.parse_args()
+    add_arguments(parser)
+    args = parser.parse_args(argv)
+    if args.tiny:
+        args.records, args.repeat, args.lib_records = 400, 1, 100
     rng = np.random.default_rng(0)
-    distinct = _records(2000, rng)
-    blocks = (distinct * (args.records // 2000 + 1))[: args.records // PER_BLOCK]
+    distinct = _records(min(2000, args.records), rng)  # blocks of PER_BLOCK records
+    blocks = (distinct * (args.records // (len(distinct) * PER_BLOCK) + 1))[: args.records // PER_BLOCK]
     n = len(blocks) * PER_BLOCK
     sites = pd.DataFrame(
         {
@@ -125,16 +122,28 @@ def main() -> None:
             f"{n} CAT048 records, {len(blocks)} data blocks: raw {raw.stat().st_size / 1e6:.1f} MB, "
             f"pcap {pcap.stat().st_size / 1e6:.1f} MB"
         )
-        lib = _libasterix_rate(blocks, args.lib_records)
-        best = {}
+        lib_data = b"".join(blocks[: max(1, args.lib_records // PER_BLOCK)])
+        n_lib = _libasterix(lib_data)
+        contenders = {}
         for name, path in (("raw", raw), ("pcap", pcap)):
-            best[name, "decode_file"] = _best(lambda: decode_file(path), args.repeat)
-            best[name, "import_asterix"] = _best(lambda: import_asterix(path, sites), args.repeat)
-        for (name, what), t in best.items():
-            print(f"{name:5s} {what:15s}{n / t:12,.0f} records/s ({t:.2f} s)")
-        print(f"libasterix           {lib:12,.0f} records/s ({args.lib_records} records)")
-        for what in ("decode_file", "import_asterix"):
-            print(f"ratio {what} (raw) / libasterix: {n / best['raw', what] / lib:,.0f}")
+            contenders[f"{name} decode_file"] = lambda p=path: decode_file(p)
+            contenders[f"{name} import_asterix"] = lambda p=path: import_asterix(p, sites)
+        contenders["libasterix"] = lambda: _libasterix(lib_data)
+        times, _ = interleave(contenders, args.repeat)
+    # seconds per record, so that a ratio compares rates: libasterix parses n_lib records only
+    per_record = {k: [x / (n_lib if k == "libasterix" else n) for x in t] for k, t in times.items()}
+    figures = {"records_per_s": {}, "over_libasterix": {}}
+    for what, t in per_record.items():
+        rate = 1 / median(t)
+        figures["records_per_s"][what] = rate
+        print(f"{what:20s} {rate:12,.0f} records/s ({median(times[what]):.2f} s)")
+    for what in per_record:
+        if what != "libasterix":
+            figures["over_libasterix"][what] = paired_ratio(per_record, "libasterix", what)
+    for what in ("decode_file", "import_asterix"):
+        print(f"ratio {what} (raw) / libasterix: {figures['over_libasterix']['raw ' + what]:,.0f}")
+    sizes = {"records": n, "blocks": len(blocks), "lib_records": n_lib, "repeat": args.repeat}
+    write("asterix", args, sizes, figures)
 
 
 if __name__ == "__main__":

@@ -8,9 +8,10 @@ Run from a checkout (the package installed)::
 
 Two files are written once into a temporary folder: a fleet plots file (``time_s``, quoted
 ``sensor`` and ``target`` ids, ``range_m``, ``bearing_deg``, ``elevation_deg``; about 65 bytes per
-row) and a recorded synchronous table (19 numeric columns, about 245 bytes per row). For each, in
-alternation, best and median of ``--repeat`` runs of the process CPU time (less sensitive than the
-wall time to other work on the machine):
+row) and a recorded synchronous table (19 numeric columns, about 245 bytes per row). For each,
+interleaved in alternating order (common.interleave), best and median of ``--repeat`` runs of the
+process CPU time (less sensitive than the wall time to other work on the machine), ratios the
+median of the rounds' ratios (figures: benchmarks/results/csv_fields.json):
 
 * ``pandas chunks``: ``pandas.read_csv(chunksize=20000)``, the reader before the field count;
 * ``blocks + field count``: :func:`registration.io.files.csvrows.read_csv_blocks` (4 MiB blocks);
@@ -26,6 +27,7 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
+from common import Timed, add_arguments, interleave, median, paired_ratio, summary, write
 
 from registration.io.files.csvrows import BLOCK_BYTES, count_fields, read_csv_blocks
 from registration.io.files.tablefile import write_frame
@@ -68,25 +70,42 @@ CASES = {
 }
 
 
-def main() -> None:
+def _cpu(run, path: Path):
+    """A contender timed in process CPU time (less sensitive to other work on the machine)."""
+
+    def timed() -> Timed:
+        t = time.process_time()
+        value = run(path)
+        return Timed(time.process_time() - t, value)
+
+    return timed
+
+
+def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rows", type=int, default=1_000_000)
     parser.add_argument("--repeat", type=int, default=3)
-    args = parser.parse_args()
+    add_arguments(parser)
+    args = parser.parse_args(argv)
+    if args.tiny:
+        args.rows, args.repeat = 2000, 1
+    figures = {}
     with tempfile.TemporaryDirectory() as tmp:
         for name, path in _files(Path(tmp), args.rows).items():
-            cpu = {case: [] for case in CASES}
-            for _ in range(args.repeat):
-                for case, run in CASES.items():
-                    t = time.process_time()
-                    run(path)
-                    cpu[case].append(time.process_time() - t)
+            cpu, _ = interleave({case: _cpu(run, path) for case, run in CASES.items()}, args.repeat, warmup=0)
             size = path.stat().st_size / 2**20
             for case, v in cpu.items():
                 print(
                     f"{name}, {args.rows} rows, {size:.0f} MiB: {case}: CPU best {min(v):.3f} s, "
-                    f"median {np.median(v):.3f} s"
+                    f"median {median(v):.3f} s, over pandas chunks "
+                    f"{paired_ratio(cpu, case, 'pandas chunks'):.2f}"
                 )
+            figures[name] = {
+                "mib": size,
+                "cpu_seconds": summary(cpu),
+                "over_pandas_chunks": {case: paired_ratio(cpu, case, "pandas chunks") for case in cpu},
+            }
+    write("csv_fields", args, {"rows": args.rows, "repeat": args.repeat}, figures)
 
 
 if __name__ == "__main__":

@@ -5,6 +5,7 @@ Run from a checkout::
 
     python3 benchmarks/bench_fleet.py                 # 8 sensors x 10 targets x 1000 s at 1 Hz
     python3 benchmarks/bench_fleet.py --duration 200 --repeats 5 --json out.json
+    python3 benchmarks/bench_fleet.py --tiny          # seconds: does it still run?
 
 Problem: the default fleet's three ships and shore site with eight sensors, each sampling every
 target once a second at its own time offset (80 000 plots over 1000 s; 3-D and 2-D radars and
@@ -24,24 +25,25 @@ SAME_OPTIMUM_COST):
    to 3e-4 sigma in 5 evaluations, where attempt 1 stops 0.03 sigma away);
 3. tolerances 1e-10 and LSMR to 1e-10.
 
-Every attempt is printed (at most MAX_NFEV evaluations each); the ratio uses the first attempt
-that reached the optimum (its own time only).
+Every attempt is printed (at most MAX_NFEV evaluations each); the first attempt that reached the
+optimum is the one timed against the batch solver.
 
-Timed: :func:`registration.fleet.solve_batch` end to end (checks, windows, both Levenberg-Marquardt
-phases, covariance, fused targets, observability), best of ``--repeats``; and the solver alone
-(the two phases, from the same start as least_squares). least_squares is run once. Before the
-ratio is printed both optima are compared: the costs, and the states in units of the batch sigma.
-The machine's load average is printed too (other work on the machine slows both).
+Timed, interleaved over ``--repeats`` rounds (common.interleave; figures are medians, ratios the
+median of the rounds' ratios): :func:`registration.fleet.solve_batch` end to end (checks,
+windows, both Levenberg-Marquardt phases, covariance, fused targets, observability), the solver
+alone (the two phases, from the same start as least_squares), and least_squares. Before the ratio
+is printed both optima are compared: the costs, and the states in units of the batch sigma. The
+machine's load average is printed too. Figures: benchmarks/results/fleet.json.
 """
 
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import time
 
 import numpy as np
+from common import add_arguments, interleave, median, paired_ratio, summary, write
 from scipy import sparse
 from scipy.optimize import least_squares
 
@@ -142,19 +144,17 @@ def main(argv=None) -> dict:
     parser.add_argument(
         "--duration", type=float, default=1000.0, help="seconds of data (1 Hz per sensor and target)"
     )
-    parser.add_argument("--repeats", type=int, default=3)
-    parser.add_argument("--json", help="write the figures to this file")
+    parser.add_argument("--repeats", type=int, default=3, help="interleaved rounds")
+    add_arguments(parser)
     args = parser.parse_args(argv)
+    if args.tiny:
+        args.duration, args.repeats = 20.0, 1
 
     sc = fleet_scenario(3, duration_s=args.duration, config=CONFIG)
     problem = sc.problem()
     options = BatchOptions()
-    solve_batch(problem, options)  # warm-up: compiled library, scipy.stats import
-    t_batch = min(_timed(lambda: solve_batch(problem, options))[1] for _ in range(args.repeats))
-    result, _ = _timed(lambda: solve_batch(problem, options))
-    fitted, t_fit = min(
-        (_timed(lambda: fit(problem, options)) for _ in range(args.repeats)), key=lambda r: r[1]
-    )
+    result = solve_batch(problem, options)  # warm-up: compiled library, scipy.stats import
+    fitted = fit(problem, options)
 
     design = make_design(problem, make_blocks(problem, options.window_s, options.degree))
     free = problem.layout.free
@@ -168,22 +168,26 @@ def main(argv=None) -> dict:
         ]
     )
     cost_batch = float(fitted.evaluation.cost)
-    out = {
+    sizes = {
+        "duration_s": args.duration,
         "plots": problem.n_plots,
         "states": int(free.size),
         "windows": design.blocks.n_blocks,
+        "repeats": args.repeats,
+    }
+    out = {
         "load_average_before": os.getloadavg(),
         "OPENBLAS_NUM_THREADS": os.environ.get("OPENBLAS_NUM_THREADS"),
-        "solve_batch_s": t_batch,
-        "solver_only_s": t_fit,
         "batch_iterations": fitted.iterations,
         "cost_batch": cost_batch,
         "least_squares": [],
     }
+    contenders = {"solve_batch": lambda: solve_batch(problem, options), "fit": lambda: fit(problem, options)}
     for tol, lsmr_tol in ((1e-8, None), (1e-8, 1e-10), (1e-10, 1e-10)):
         tr_options = {} if lsmr_tol is None else {"atol": lsmr_tol, "btol": lsmr_tol}
-        ls, t_ls = _timed(
-            lambda: least_squares(
+
+        def run_least_squares(tol=tol, tr_options=tr_options):
+            return least_squares(
                 residuals,
                 theta0,
                 jac=jacobian,
@@ -196,7 +200,8 @@ def main(argv=None) -> dict:
                 tr_options=tr_options,
                 max_nfev=MAX_NFEV,
             )
-        )
+
+        ls, t_ls = _timed(run_least_squares)
         x_ls, _ = unpack(ls.x)
         attempt = {
             "tolerance": tol,
@@ -216,16 +221,25 @@ def main(argv=None) -> dict:
         out["least_squares"].append(attempt)
         print("least_squares", attempt, flush=True)
         if attempt["same_optimum"]:
-            out["ratio_least_squares_over_solver"] = t_ls / t_fit
-            out["ratio_least_squares_over_solve_batch"] = t_ls / t_batch
+            contenders["least_squares"] = run_least_squares
             break
+    # the attempt just run is the warm-up of least_squares; solve_batch and fit ran above
+    cpu: dict[str, list[float]] = {}
+    times, _ = interleave(contenders, args.repeats, warmup=0, cpu=cpu)
+    out["seconds"] = summary(times)
+    out["cpu_seconds"] = summary(cpu)
+    out["solve_batch_s"] = median(times["solve_batch"])
+    out["solver_only_s"] = median(times["fit"])
+    if "least_squares" in times:
+        out["ratio_least_squares_over_solver"] = paired_ratio(times, "least_squares", "fit")
+        out["ratio_least_squares_over_solve_batch"] = paired_ratio(times, "least_squares", "solve_batch")
+        out["cpu_ratio_least_squares_over_solver"] = paired_ratio(cpu, "least_squares", "fit")
+        out["cpu_ratio_least_squares_over_solve_batch"] = paired_ratio(cpu, "least_squares", "solve_batch")
     out["load_average_after"] = os.getloadavg()
-    for key, value in out.items():
+    for key, value in {**sizes, **out}.items():
         if key != "least_squares":
             print(f"{key:36s} {value}")
-    if args.json:
-        with open(args.json, "w") as fh:
-            json.dump(out, fh, indent=2)
+    write("fleet", args, sizes, out)
     return out
 
 

@@ -2,10 +2,13 @@
 
     python3 benchmarks/bench_fleet_online.py                 # 8 sensors x 10 targets x 1000 s at 1 Hz
     python3 benchmarks/bench_fleet_online.py --duration 200 --repeats 5
+    python3 benchmarks/bench_fleet_online.py --tiny          # seconds: does it still run?
 
 Problem: the batch benchmark's fleet (benchmarks/bench_fleet.py: eight sensors of four kinds on
 three ships and a shore site, ten targets, 80 000 plots over 1000 s, errors of 1 deg and 300 m),
-20 s windows (one epoch, one update, per window). Timed, best of ``--repeats``:
+20 s windows (one epoch, one update, per window). Timed, median of ``--repeats`` rounds
+interleaved (common.interleave; ratios are medians of the rounds' ratios; figures in
+benchmarks/results/fleet_online.json):
 
 * streaming: plots fed as they would arrive, one ``update()`` per second of data, then ``flush()``;
 * the whole table in one ``update()`` (what :func:`register_online` does, without its final
@@ -24,30 +27,21 @@ from __future__ import annotations
 
 import argparse
 import os
-import sys
-import time
-from pathlib import Path
 
 import numpy as np
+from bench_fleet import CONFIG  # a script beside this one
+from common import add_arguments, interleave, median, paired_ratio, summary, write
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
-
-from bench_fleet import CONFIG  # noqa: E402
-
-from registration.fleet import BatchOptions, FleetFilter, fleet_scenario, solve_batch  # noqa: E402
-from registration.fleet.online.filter import OnlineOptions, register_online  # noqa: E402
-from registration.online import RegistrationConfig, register  # noqa: E402
-from registration.online.scenario import ShipMotion, paper_scenario  # noqa: E402
-
-
-def _best(fn, repeats: int):
-    best, value = np.inf, None
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        value = fn()
-        best = min(best, time.perf_counter() - t0)
-    return value, best
+from registration.fleet import (
+    BatchOptions,
+    FleetFilter,
+    OnlineOptions,
+    fleet_scenario,
+    register_online,
+    solve_batch,
+)
+from registration.online import RegistrationConfig, register
+from registration.online.scenario import ShipMotion, paper_scenario
 
 
 def _stream(sc, plots, step_s: float):
@@ -68,21 +62,29 @@ def _whole(sc, plots):
     return filt
 
 
-def _two_ship(repeats: int) -> dict:
+def _two_ship(repeats: int, rows: int | None = None) -> dict:
+    """The two-ship filter against the fleet filter on the paper scenario (its first ``rows``)."""
     from tests.fleet.two_ship import fleet_tables
 
     sc = paper_scenario(0, ship_motion=ShipMotion())
+    if rows is not None:
+        sc.data = {k: v[:rows] for k, v in sc.data.items()}
     config = RegistrationConfig()
     tables = fleet_tables(sc.data, config.sigma0, config.prior_sigma)
     options = OnlineOptions(window_s=0.0)
     n_plots = 2 * len(sc.data["time"])
-    _, t_reg = _best(lambda: register(sc.data, config), repeats)
-    _, t_fleet = _best(lambda: register_online(**tables, options=options, residuals=False), repeats)
+    times, _ = interleave(
+        {
+            "register": lambda: register(sc.data, config),
+            "fleet_online": lambda: register_online(**tables, options=options, residuals=False),
+        },
+        repeats,
+    )
     return {
         "plots": n_plots,
-        "register_us_per_plot": 1e6 * t_reg / n_plots,
-        "fleet_online_us_per_plot": 1e6 * t_fleet / n_plots,
-        "ratio_fleet_over_register": t_fleet / t_reg,
+        "register_us_per_plot": 1e6 * median(times["register"]) / n_plots,
+        "fleet_online_us_per_plot": 1e6 * median(times["fleet_online"]) / n_plots,
+        "ratio_fleet_over_register": paired_ratio(times, "fleet_online", "register"),
     }
 
 
@@ -91,37 +93,48 @@ def main(argv=None) -> dict:
     parser.add_argument(
         "--duration", type=float, default=1000.0, help="seconds of data (1 Hz per sensor and target)"
     )
-    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--repeats", type=int, default=3, help="interleaved rounds")
+    add_arguments(parser)
     args = parser.parse_args(argv)
+    if args.tiny:
+        args.duration, args.repeats = 30.0, 1
 
     sc = fleet_scenario(3, duration_s=args.duration, config=CONFIG)
     order = np.argsort(sc.plots["time"], kind="stable")
     plots = {k: v[order] for k, v in sc.plots.items()}
     n = order.size
-    _whole(sc, plots)  # warm-up: compiled library
     load_before = os.getloadavg()
-    streamed, t_stream = _best(lambda: _stream(sc, plots, 1.0), args.repeats)
-    whole, t_whole = _best(lambda: _whole(sc, plots), args.repeats)
-    batch, t_batch = _best(lambda: solve_batch(sc.problem(), BatchOptions()), args.repeats)
+    times, values = interleave(
+        {
+            "streaming": lambda: _stream(sc, plots, 1.0),
+            "whole": lambda: _whole(sc, plots),
+            "batch": lambda: solve_batch(sc.problem(), BatchOptions()),
+        },
+        args.repeats,
+    )
+    streamed, whole, batch = values["streaming"], values["whole"], values["batch"]
     free = batch.layout.free
+    sizes = {"duration_s": args.duration, "plots": n, "repeats": args.repeats}
     out = {
-        "plots": n,
         "epochs": int(whole.result().history.time.size),
         "linearisations": whole.n_linearisations,
         "load_average_before": load_before,
-        "streaming_1s_chunks_us_per_plot": 1e6 * t_stream / n,
-        "whole_table_us_per_plot": 1e6 * t_whole / n,
-        "solve_batch_us_per_plot": 1e6 * t_batch / n,
-        "ratio_online_over_batch": t_whole / t_batch,
+        "us_per_plot": summary(times, per=n / 1e6),
+        "streaming_1s_chunks_us_per_plot": 1e6 * median(times["streaming"]) / n,
+        "whole_table_us_per_plot": 1e6 * median(times["whole"]) / n,
+        "solve_batch_us_per_plot": 1e6 * median(times["batch"]) / n,
+        "ratio_online_over_batch": paired_ratio(times, "whole", "batch"),
+        "ratio_streaming_over_batch": paired_ratio(times, "streaming", "batch"),
         "streamed_equals_whole_bit_for_bit": bool(np.array_equal(streamed.estimate, whole.estimate)),
         "max_difference_from_batch_in_batch_sigma": float(
             np.abs((whole.estimate - batch.estimate)[free] / batch.sigma[free]).max()
         ),
-        "two_ship_paper_scenario": _two_ship(args.repeats),
+        "two_ship_paper_scenario": _two_ship(args.repeats, 40 if args.tiny else None),
         "load_average_after": os.getloadavg(),
     }
-    for key, value in out.items():
+    for key, value in {**sizes, **out}.items():
         print(f"{key:42s} {value}")
+    write("fleet_online", args, sizes, out)
     return out
 
 

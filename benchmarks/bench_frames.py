@@ -7,8 +7,10 @@ Run from a checkout (the package installed, editable or not)::
     python3 benchmarks/bench_frames.py --n 200000 --json results.json
 
 Everything is measured in one run, on the same random inputs: one untimed warm-up, then
-``--repeat`` rounds interleaved across the contenders of a section, best time kept. On a shared
-machine the figures move by 10-20 % between runs; read the ratios. Every output is compared with
+``--repeat`` rounds interleaved across the contenders of a section in alternating order
+(common.interleave), median time kept, ratios the median of the rounds' ratios. On a shared
+machine the figures move by 10-20 % between runs; read the ratios. Figures:
+benchmarks/results/frames.json; ``--tiny`` runs in seconds on 2000 points. Every output is compared with
 ours (column ``max |diff|``), so a fast but wrong path would show.
 
 1. ``geodetic2ecef``: ``registration.core.frames.geodetic2ecef`` (input validation included) and
@@ -35,7 +37,6 @@ volatile function pointer, as the runtime's driver (reached by ctypes) must. Nee
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import platform
 import subprocess
@@ -45,6 +46,7 @@ import time
 from pathlib import Path
 
 import numpy as np
+from common import Timed, add_arguments, interleave, median, paired_ratio, write
 
 import registration
 from registration import _codegen
@@ -73,31 +75,25 @@ PLOT_NAMES = ["lat", "lon", "alt", "heading", "pitch", "roll", "r", "q", "e"]
 
 
 def timed(fn):
-    """A contender timed with perf_counter: returns a callable giving (seconds, output)."""
+    """A contender timed by common.interleave (perf_counter around the call)."""
+    return fn
 
-    def run():
-        t0 = time.perf_counter()
-        out = fn()
-        return time.perf_counter() - t0, out
 
-    return run
+def once(fn) -> tuple[float, object]:
+    """(seconds, output) of one call."""
+    t0 = time.perf_counter()
+    out = fn()
+    return time.perf_counter() - t0, out
 
 
 def measure(contenders: dict, rounds: int) -> dict:
-    """Best time of each contender (label -> callable returning (seconds, output)) over ``rounds``
-    rounds after one untimed warm-up, as {label: (best seconds, output)}. Rounds are interleaved
-    across contenders, so a change in machine load is spread over all of them."""
-    best = {}
-    for label, fn in contenders.items():  # warm-up: lazy loading, caches, page faults
-        best[label] = (float("inf"), fn()[1])
-    for _ in range(rounds):
-        for label, fn in contenders.items():
-            t, out = fn()
-            best[label] = (min(t, best[label][0]), out)
-    return best
+    """Median time of each contender over ``rounds`` rounds after one untimed warm-up, as
+    {label: (median seconds, output, every round's seconds)}. Rounds are interleaved across
+    contenders in alternating order (common.interleave), so a change in machine load is spread
+    over all of them."""
+    times, values = interleave(contenders, rounds)
+    return {label: (median(t), values[label], t) for label, t in times.items()}
 
-
-# --------------------------------------------------------------------------- plain C harness
 
 HARNESS = r"""
 /* Benchmark harness (not shipped): plain C loop over one CasADi-generated function. */
@@ -213,7 +209,7 @@ class PlainC:
                 raise RuntimeError(f"harness failed: {proc.stderr.strip()}")
             ns = float(proc.stdout.strip())
             out = np.fromfile(self.out_bin, dtype=np.float64).reshape(self.n, self.width)
-            return ns * 1e-9 * self.n, out
+            return Timed(ns * 1e-9 * self.n, out)
 
         return run
 
@@ -235,11 +231,12 @@ def max_abs_diff(a, b) -> float:
     return float(np.max(np.abs(np.asarray(a).reshape(len(b), -1) - np.asarray(b).reshape(len(b), -1))))
 
 
-def row(label: str, seconds: float, n: int, diff: float | None, note: str = "") -> dict:
+def row(label: str, seconds: float, n: int, diff: float | None, note: str = "", rounds=None) -> dict:
     return {
         "method": label,
         "n": n,
         "seconds": seconds,
+        "rounds": [seconds] if rounds is None else list(rounds),
         "points_per_s": n / seconds,
         "ns_per_point": seconds / n * 1e9,
         "max_abs_diff_m": diff,
@@ -251,7 +248,10 @@ def print_table(title: str, rows: list[dict], ref_label: str) -> None:
     ref = next(r for r in rows if r["method"] == ref_label)
     print(f"\n{title}")
     print(f"  (x ref = throughput relative to '{ref_label}'; > 1 is faster; max |diff| vs ours, metres)")
-    head = f"  {'method':<46} {'N':>9} {'best ms':>10} {'ns/pt':>9} {'points/s':>12} {'x ref':>8} {'max |diff|':>11}"
+    head = (
+        f"  {'method':<46} {'N':>9} {'median ms':>10} {'ns/pt':>9} {'points/s':>12} {'x ref':>8} "
+        f"{'max |diff|':>11}"
+    )
     print(head)
     print("  " + "-" * (len(head) - 2))
     for r in rows:
@@ -263,6 +263,7 @@ def print_table(title: str, rows: list[dict], ref_label: str) -> None:
 
 
 PJ, PC = "pyproj Transformer 4979->4978 (radians)", "plain C loop, direct call (inlinable)"
+PM = "pymap3d.geodetic2ecef (deg=False)"
 OURS_G, RAW_G = "ours: frames.geodetic2ecef (validated)", "ours: _codegen.get('geodetic2ecef') (raw)"
 OURS_P, RAW_P = "ours: frames.plot2ecef (validated)", "ours: _codegen.get('plot2ecef_standard') (raw)"
 
@@ -302,16 +303,14 @@ def bench_geodetic(geo: list[np.ndarray], harness: dict, rep: int) -> list[dict]
     c1 = {
         OURS_G: timed(lambda: frames.geodetic2ecef(*geo)),
         RAW_G: timed(lambda: raw_g(*geo)[0]),
-        "pymap3d.geodetic2ecef (deg=False)": timed(
-            lambda: np.stack(pymap3d.geodetic2ecef(*geo, deg=False), -1)
-        ),
+        PM: timed(lambda: np.stack(pymap3d.geodetic2ecef(*geo, deg=False), -1)),
         PJ: timed(lambda: np.stack(tr.transform(*geo, radians=True), -1)),
     }
     if "geodetic2ecef" in harness:
         c1[PC] = harness["geodetic2ecef"].runner("direct")
     res1 = measure(c1, rep)
     ours = res1[OURS_G][1]
-    return [row(k, t, n, max_abs_diff(out, ours)) for k, (t, out) in res1.items()]
+    return [row(k, t, n, max_abs_diff(out, ours), rounds=r) for k, (t, out, r) in res1.items()]
 
 
 def bench_plot(plot: list[np.ndarray], harness: dict, rep: int) -> tuple[list[dict], np.ndarray]:
@@ -325,7 +324,7 @@ def bench_plot(plot: list[np.ndarray], harness: dict, rep: int) -> tuple[list[di
         c2["plain C loop, via function pointer"] = harness["plot2ecef_standard"].runner("pointer")
     res2 = measure(c2, rep)
     ours_p = res2[OURS_P][1]
-    return [row(k, t, n, max_abs_diff(out, ours_p)) for k, (t, out) in res2.items()], ours_p
+    return [row(k, t, n, max_abs_diff(out, ours_p), rounds=r) for k, (t, out, r) in res2.items()], ours_p
 
 
 def bench_casadi_paths(
@@ -334,7 +333,7 @@ def bench_casadi_paths(
     """Section 2, CasADi paths: the serialized backend (Function.map) and item-by-item casadi.DM."""
     n = plot[0].shape[0]
     cas = _codegen.GeneratedFunction("plot2ecef_standard", force_backend="casadi")
-    first, _ = timed(lambda: cas(*plot)[0])()
+    first, _ = once(lambda: cas(*plot)[0])
     res = measure({"c": timed(lambda: cas(*plot)[0])}, casadi_repeat)["c"]
     rows = [
         row(
@@ -342,11 +341,11 @@ def bench_casadi_paths(
             res[0],
             n,
             max_abs_diff(res[1], ours_p),
-            f"first call incl. map construction {first:.2f} s; best of {casadi_repeat}",
+            f"first call incl. map construction {first:.2f} s; median of {casadi_repeat}",
         )
     ]
     m = min(dm_n, n)
-    t, out = timed(lambda: casadi_item_by_item("plot2ecef_standard", [a[:m] for a in plot]))()
+    t, out = once(lambda: casadi_item_by_item("plot2ecef_standard", [a[:m] for a in plot]))
     rows.append(
         row(
             "casadi.DM item by item, one call per point",
@@ -378,7 +377,7 @@ def bench_per_call(plot: list[np.ndarray], rep: int, calls: int = 2000) -> list[
         },
         rep,
     )
-    return [{"method": k, "calls": calls, "us_per_call": t / calls * 1e6} for k, (t, _) in res3.items()]
+    return [{"method": k, "calls": calls, "us_per_call": t / calls * 1e6} for k, (t, _, _) in res3.items()]
 
 
 def print_report(
@@ -400,14 +399,19 @@ def print_report(
 def report_aims(rows1: list[dict], rows2: list[dict]) -> dict:
     """Print and return the aims: throughput against pyproj (> 1), time against plain C (<= 2)."""
     by1, by2 = ({r["method"]: r for r in rows} for rows in (rows1, rows2))
+    rounds1, rounds2 = ({r["method"]: r["rounds"] for r in rows} for rows in (rows1, rows2))
     aims = {}
-    for key in (OURS_G, RAW_G):
-        aims[f"{key} throughput / pyproj"] = by1[key]["points_per_s"] / by1[PJ]["points_per_s"]
+    for key in (OURS_G, RAW_G):  # throughput ratio: pyproj's time over ours, median of the rounds
+        aims[f"{key} throughput / pyproj"] = paired_ratio(rounds1, PJ, key)
+    aims["pymap3d time / ours (validated)"] = paired_ratio(rounds1, PM, OURS_G)
     if PC in by2:
         for key in (OURS_P, RAW_P):
-            aims[f"{key} time / plain C"] = by2[key]["seconds"] / by2[PC]["seconds"]
+            aims[f"{key} time / plain C"] = paired_ratio(rounds2, key, PC)
     print("\naims:")
     for k, v in aims.items():
+        if k.startswith("pymap3d"):
+            print(f"  {k:<62} {v:6.2f}x")
+            continue
         aim, met = ("> 1", v > 1) if k.endswith("pyproj") else ("<= 2", v <= 2)
         print(f"  {k:<62} {v:6.2f}x  (aim {aim}: {'met' if met else 'NOT met'})")
     return aims
@@ -416,17 +420,19 @@ def report_aims(rows1: list[dict], rows2: list[dict]) -> dict:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--n", type=int, default=1_000_000, help="points per batch (default 10^6)")
-    ap.add_argument("--repeat", type=int, default=7, help="timed rounds, best is kept (default 7)")
+    ap.add_argument("--repeat", type=int, default=7, help="timed rounds, interleaved (default 7)")
     ap.add_argument("--dm-n", type=int, default=10_000, help="points for the item-by-item casadi.DM path")
     ap.add_argument("--casadi-repeat", type=int, default=2, help="repetitions for the CasADi map backend")
     ap.add_argument("--seed", type=int, default=20110101)
-    ap.add_argument("--json", metavar="FILE", help="also write the results as JSON")
+    add_arguments(ap)
     args = ap.parse_args(argv)
+    if args.tiny:
+        args.n, args.repeat, args.dm_n, args.casadi_repeat = 2000, 1, 200, 1
     n, rep = args.n, args.repeat
     machine = machine_info()
     print("machine: " + ", ".join(f"{k}={v}" for k, v in machine.items()))
     print(
-        f"N = {n}, best of {rep} interleaved rounds (perf_counter; the C harness times itself with "
+        f"N = {n}, median of {rep} interleaved rounds (perf_counter; the C harness times itself with "
         "clock_gettime), one untimed warm-up each"
     )
 
@@ -451,24 +457,15 @@ def main(argv=None) -> int:
     print_report(n, rows1, rows2, rows3, harness_cmd)
     aims = report_aims(rows1, rows2)
 
-    if args.json:
-        Path(args.json).write_text(
-            json.dumps(
-                {
-                    "machine": machine,
-                    "n": n,
-                    "repeat": rep,
-                    "seed": args.seed,
-                    "geodetic2ecef": rows1,
-                    "plot2ecef": rows2,
-                    "per_call": rows3,
-                    "aims": aims,
-                },
-                indent=2,
-            )
-            + "\n"
-        )
-        print(f"\nwrote {args.json}")
+    figures = {
+        "machine": machine,
+        "seed": args.seed,
+        "geodetic2ecef": rows1,
+        "plot2ecef": rows2,
+        "per_call": rows3,
+        "aims": aims,
+    }
+    write("frames", args, {"n": n, "repeat": rep, "dm_n": args.dm_n}, figures)
     return 0
 
 

@@ -1,8 +1,8 @@
 """Benchmark of the fusion: 10^6 radar + bearing pairs (paper scenario 1), library vs plain NumPy.
 
-    python benchmarks/bench_fusion.py [--pairs 1000000] [--repeats 5]
+    python benchmarks/bench_fusion.py [--pairs 1000000] [--repeats 5] [--tiny] [--json FILE]
 
-Prints pairs per second (median of the repeats) for
+Prints pairs per second (median of the repeats, interleaved: common.interleave) for
 
 - ``registration.fusion.fuse_paper``: the general method (any component subset, 2-D or 3-D) with the
   generated C transforms, returning the fused point, the claimed (eq. 13) and the consistent
@@ -14,23 +14,20 @@ Prints pairs per second (median of the repeats) for
 
 The two versions' outputs are compared before timing. The hand-written formulas live here only as
 the baseline; the package reaches its transforms through the generated functions only.
+Figures: benchmarks/results/fusion.json.
 """
 
 from __future__ import annotations
 
 import argparse
 import os
-import statistics
 import sys
-import time
-from pathlib import Path
 
 import numpy as np
+from common import add_arguments, interleave, median, paired_ratio, summary, write
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-
-from registration import _codegen  # noqa: E402
-from registration import fusion as F  # noqa: E402
+from registration import _codegen
+from registration import fusion as F
 
 SIGMA_RADAR = np.array([100.0, 7e-3])
 SIGMA_B = 4e-3
@@ -43,9 +40,10 @@ def wrap(a):
 
 
 def plain_numpy_paper(za: np.ndarray, zb: np.ndarray):
-    """Scenario-1 method by hand: radar (r, a) at the origin, bearing b at (l, 0). Returns X, P_claimed, P_consistent."""
+    """Scenario-1 method by hand: radar (r, a) at the origin, bearing b at (l, 0). Returns X,
+    P_claimed, P_consistent."""
     sr2, sa2, sb2 = SIGMA_RADAR[0] ** 2, SIGMA_RADAR[1] ** 2, SIGMA_B**2
-    l = SITE_B[0]
+    l = SITE_B[0]  # noqa: E741 (the paper's name)
     r, a = za[:, 0], za[:, 1]
     b = zb[:, 0]
     ca, sa = np.cos(a), np.sin(a)
@@ -107,7 +105,7 @@ def plain_numpy_optimal(za: np.ndarray, zb: np.ndarray, tol_m: float = 1e-6, max
     Returns the estimate (N, 2) and its covariance, the inverse information at the estimate (N, 2, 2).
     """
     w = np.array([SIGMA_RADAR[0] ** -2, SIGMA_RADAR[1] ** -2, SIGMA_B**-2])
-    l = SITE_B[0]
+    l = SITE_B[0]  # noqa: E741 (the paper's name)
     x = za[:, 0] * np.cos(za[:, 1])
     y = za[:, 0] * np.sin(za[:, 1])
     active = np.ones(x.size, dtype=bool)
@@ -144,7 +142,10 @@ def main(argv=None) -> int:
     ap.add_argument("--pairs", type=int, default=1_000_000)
     ap.add_argument("--repeats", type=int, default=5)
     ap.add_argument("--seed", type=int, default=0)
+    add_arguments(ap)
     args = ap.parse_args(argv)
+    if args.tiny:
+        args.pairs, args.repeats = 2000, 1
     n = args.pairs
 
     rng = np.random.default_rng(args.seed)
@@ -170,12 +171,14 @@ def main(argv=None) -> int:
     dco = np.abs(opt.P - cov_plain).max() / np.abs(cov_plain).max()
     ok = dx < 1e-6 and dpc < 1e-9 and dpk < 1e-9 and do < 1e-4 and dco < 1e-6  # GN stops at steps < 1e-6 m
     print(
-        f"machine: {os.cpu_count()} CPUs, numpy {np.__version__}, generated-code backend: {_codegen.backend()}"
+        f"machine: {os.cpu_count()} CPUs, numpy {np.__version__}, generated-code backend: "
+        f"{_codegen.backend()}"
     )
     print(f"{n} radar+bearing pairs (paper scenario 1), median (min) of {args.repeats} runs")
     print(
         f"agreement library vs plain NumPy: fused point {dx:.2e} m, claimed cov {dpc:.1e} rel, "
-        f"consistent cov {dpk:.1e} rel, ML point {do:.1e} m, ML cov {dco:.1e} rel -> {'OK' if ok else 'MISMATCH'}"
+        f"consistent cov {dpk:.1e} rel, ML point {do:.1e} m, ML cov {dco:.1e} rel -> "
+        f"{'OK' if ok else 'MISMATCH'}"
     )
 
     rows = [
@@ -184,24 +187,34 @@ def main(argv=None) -> int:
         ("optimal (ML): registration.fusion.fuse_optimal", lib_optimal),
         ("optimal (ML): plain NumPy Gauss-Newton", lambda: plain_numpy_optimal(za, zb)),
     ]
-    # interleaved: every repeat runs each version once, so load from other processes hits all alike
-    times = {label: [] for label, _ in rows}
-    for _ in range(args.repeats):
-        for label, fn in rows:
-            t = time.perf_counter()
-            fn()
-            times[label].append(time.perf_counter() - t)
-    med = {label: statistics.median(v) for label, v in times.items()}
+    # interleaved (A B C D, D C B A, ...): load from other processes hits all alike
+    times, _ = interleave(dict(rows), args.repeats, warmup=0)
+    med = {label: median(v) for label, v in times.items()}
     for label, _ in rows:
         print(
-            f"  {label:48s} {med[label]:7.3f} s (min {min(times[label]):.3f})  {n / med[label] / 1e6:6.2f} M pairs/s"
+            f"  {label:48s} {med[label]:7.3f} s (min {min(times[label]):.3f})  {n / med[label] / 1e6:6.2f} "
+            "M pairs/s"
         )
-    ratio_paper = statistics.median(a / b for a, b in zip(times[rows[0][0]], times[rows[1][0]]))
-    ratio_opt = statistics.median(a / b for a, b in zip(times[rows[2][0]], times[rows[3][0]]))
+    ratio_paper = paired_ratio(times, rows[0][0], rows[1][0])
+    ratio_opt = paired_ratio(times, rows[2][0], rows[3][0])
     print(
         f"time ratio library / plain NumPy (median of per-repeat ratios): paper method {ratio_paper:.2f}, "
         f"optimal fuser {ratio_opt:.2f}"
     )
+    figures = {
+        "agreement": {
+            "point_m": dx,
+            "claimed": dpc,
+            "consistent": dpk,
+            "ml_point_m": do,
+            "ml_cov": dco,
+            "ok": ok,
+        },
+        "seconds": summary(times),
+        "million_pairs_per_s": {label: n / med[label] / 1e6 for label in med},
+        "ratio_library_over_numpy": {"paper": ratio_paper, "optimal": ratio_opt},
+    }
+    write("fusion", args, {"pairs": n, "repeats": args.repeats}, figures)
     return 0 if ok else 1
 
 

@@ -8,7 +8,9 @@ Run from a checkout (the package installed, editable or not)::
     python3 benchmarks/bench_montecarlo.py                    # 1000 runs; the baseline at 100 runs
     python3 benchmarks/bench_montecarlo.py --legacy-runs 1000 --json bench_montecarlo.json
 
-Contenders, best of ``--repeat`` interleaved rounds after one warm-up, all in one process:
+Contenders, median of ``--repeat`` rounds interleaved in alternating order (common.interleave)
+after one warm-up, ratios the median of the rounds' ratios, all in one process (figures:
+benchmarks/results/montecarlo.json; ``--tiny``: 4 runs):
 
 1. ``run by run``: the previous implementation, copied below (``legacy_*``): per seed, the paper
    scenario with its per-step dead reckoning, ``register()`` and the Cramér-Rao bound, then the
@@ -30,7 +32,6 @@ machine: compare the ratios, measured in the same run.
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import subprocess
 import sys
@@ -38,6 +39,7 @@ import tempfile
 import time
 
 import numpy as np
+from common import add_arguments, interleave, median, paired_ratio, summary, write
 
 from registration import _codegen
 from registration.core.angles import wrap_angle
@@ -158,19 +160,6 @@ def legacy_collect_runs(runs: int, seed0: int, config: RegistrationConfig) -> di
 
 
 # --------------------------------------------------------------------------- helpers
-def best_of(contenders: dict, rounds: int) -> dict:
-    """Best seconds per contender over ``rounds`` interleaved rounds after one untimed warm-up."""
-    for fn in contenders.values():
-        fn()
-    best = {label: float("inf") for label in contenders}
-    for _ in range(rounds):
-        for label, fn in contenders.items():
-            t0 = time.perf_counter()
-            fn()
-            best[label] = min(best[label], time.perf_counter() - t0)
-    return best
-
-
 def compare(old, new) -> dict:
     """Largest relative difference per array field of two MonteCarloResults (0.0: bit for bit)."""
     out = {}
@@ -192,15 +181,9 @@ def rows_data(runs: int, seed0: int) -> dict:
     return data
 
 
-def command_seconds(argv: list[str], rounds: int) -> float:
-    """Best wall time of a subprocess over ``rounds`` runs after one warm-up."""
-    best = float("inf")
-    for i in range(rounds + 1):
-        t0 = time.perf_counter()
-        subprocess.run(argv, check=True, capture_output=True)
-        if i:
-            best = min(best, time.perf_counter() - t0)
-    return best
+def command(argv: list[str]):
+    """A contender: one run of a subprocess."""
+    return lambda: subprocess.run(argv, check=True, capture_output=True)
 
 
 def stages(runs: int, seed0: int, config) -> dict:
@@ -242,16 +225,19 @@ def main(argv=None) -> int:
         help="runs of the run-by-run baseline (default 100; it is slow)",
     )
     ap.add_argument(
-        "--repeat", type=int, default=3, help="timed rounds per contender; the best is kept (default 3)"
+        "--repeat", type=int, default=3, help="timed rounds per contender, interleaved (default 3)"
     )
     ap.add_argument("--seed", type=int, default=0)
-    ap.add_argument("--json", type=str, default=None, help="also write the figures to this JSON file")
+    add_arguments(ap)
     args = ap.parse_args(argv)
+    if args.tiny:
+        args.runs, args.legacy_runs, args.repeat = 4, 2, 1
     config = RegistrationConfig()
     n_legacy, n_runs, seed = args.legacy_runs, args.runs, args.seed
     print(
-        f"backend {_codegen.backend()}, numpy {np.__version__}, {os.cpu_count()} CPUs; paper scenario, 300 rows per run; "
-        f"best of {args.repeat} rounds"
+        f"backend {_codegen.backend()}, numpy {np.__version__}, {os.cpu_count()} CPUs; paper scenario, 300 "
+        "rows per run; "
+        f"median of {args.repeat} interleaved rounds"
     )
 
     old = summarise_runs(legacy_collect_runs(n_legacy, seed, config), seed)
@@ -262,47 +248,44 @@ def main(argv=None) -> int:
         print(f"  {k:<24}{v}")
 
     data_small, data_big = rows_data(n_legacy, seed), rows_data(n_runs, seed)
-    contenders = {
-        f"run by run (before), {n_legacy} runs": lambda: summarise_runs(
-            legacy_collect_runs(n_legacy, seed, config), seed
-        ),
-        f"batch run_montecarlo, {n_legacy} runs": lambda: run_montecarlo(n_legacy, seed, config),
-        f"register(), {n_legacy * 300} rows": lambda: register(data_small, config),
-        f"batch run_montecarlo, {n_runs} runs": lambda: run_montecarlo(n_runs, seed, config),
-        f"register(), {n_runs * 300} rows": lambda: register(data_big, config),
-    }
-    best = best_of(contenders, args.repeat)
-    labels = list(best)
+    with tempfile.TemporaryDirectory() as tmp:
+        cli = [sys.executable, "-m", "registration", "montecarlo", "--runs", str(n_runs), "--no-plot"]
+        contenders = {
+            f"run by run (before), {n_legacy} runs": lambda: summarise_runs(
+                legacy_collect_runs(n_legacy, seed, config), seed
+            ),
+            f"batch run_montecarlo, {n_legacy} runs": lambda: run_montecarlo(n_legacy, seed, config),
+            f"register(), {n_legacy * 300} rows": lambda: register(data_small, config),
+            f"batch run_montecarlo, {n_runs} runs": lambda: run_montecarlo(n_runs, seed, config),
+            f"register(), {n_runs * 300} rows": lambda: register(data_big, config),
+            "command": command([*cli, "--out", tmp]),
+            "python -c pass": command([sys.executable, "-c", "pass"]),
+        }
+        times, _ = interleave(contenders, args.repeat, warmup=0 if args.tiny else 1)
+    mid = {label: median(t) for label, t in times.items()}
+    labels = list(mid)
     print(f"\n  {'contender':<44}{'seconds':>10}")
-    for label, sec in best.items():
+    for label, sec in mid.items():
         print(f"  {label:<44}{sec:10.3f}")
-    legacy_ratio = best[labels[0]] / best[labels[1]]
-    small_ratio, big_ratio = best[labels[1]] / best[labels[2]], best[labels[3]] / best[labels[4]]
+    legacy_ratio = paired_ratio(times, labels[0], labels[1])
+    small_ratio, big_ratio = (
+        paired_ratio(times, labels[1], labels[2]),
+        paired_ratio(times, labels[3], labels[4]),
+    )
     print(f"\n  batch vs run by run, {n_legacy} runs: {legacy_ratio:.1f}x faster")
     print(
-        f"  batch / register() over the same rows: {n_legacy} runs {small_ratio:.2f}x, {n_runs} runs {big_ratio:.2f}x"
+        f"  batch / register() over the same rows: {n_legacy} runs {small_ratio:.2f}x, {n_runs} runs "
+        f"{big_ratio:.2f}x"
     )
-
-    with tempfile.TemporaryDirectory() as tmp:
-        cli = [
-            sys.executable,
-            "-m",
-            "registration",
-            "montecarlo",
-            "--runs",
-            str(n_runs),
-            "--no-plot",
-            "--out",
-            tmp,
-        ]
-        cli_s = command_seconds(cli, args.repeat)
-        start_s = command_seconds([sys.executable, "-c", "pass"], args.repeat)
-    cli_ratio = cli_s / best[labels[4]]
+    cli_s, start_s = mid["command"], mid["python -c pass"]
+    cli_ratio = paired_ratio(times, "command", labels[4])
     print(
-        f"\nend to end: `registration montecarlo --runs {n_runs} --no-plot` {cli_s:.2f} s (python -c pass: {start_s:.2f} s)"
+        f"\nend to end: `registration montecarlo --runs {n_runs} --no-plot` {cli_s:.2f} s (python -c pass: "
+        f"{start_s:.2f} s)"
     )
     print(
-        f"  = {cli_ratio:.2f}x one register() call over the same {n_runs * 300} rows; aim <= {AIM_RATIO:.0f}x: "
+        f"  = {cli_ratio:.2f}x one register() call over the same {n_runs * 300} rows; aim <= "
+        f"{AIM_RATIO:.0f}x: "
         f"{'met' if cli_ratio <= AIM_RATIO else 'NOT met'}"
     )
 
@@ -311,21 +294,18 @@ def main(argv=None) -> int:
     for k, v in parts.items():
         print(f"  {k:<70}{v:8.3f} s")
 
-    if args.json:
-        payload = {
-            "seconds": best,
-            "batch_vs_run_by_run": legacy_ratio,
-            "batch_over_register": {str(n_legacy): small_ratio, str(n_runs): big_ratio},
-            "cli_seconds": cli_s,
-            "python_start_seconds": start_s,
-            "cli_over_register": cli_ratio,
-            "aim_ratio": AIM_RATIO,
-            "stages_seconds": parts,
-            "max_relative_difference": diff,
-        }
-        with open(args.json, "w") as fh:
-            json.dump(payload, fh, indent=1)
-        print(f"\nwrote {args.json}")
+    payload = {
+        "seconds": summary(times),
+        "batch_vs_run_by_run": legacy_ratio,
+        "batch_over_register": {str(n_legacy): small_ratio, str(n_runs): big_ratio},
+        "cli_seconds": cli_s,
+        "python_start_seconds": start_s,
+        "cli_over_register": cli_ratio,
+        "aim_ratio": AIM_RATIO,
+        "stages_seconds": parts,
+        "max_relative_difference": diff,
+    }
+    write("montecarlo", args, {"runs": n_runs, "legacy_runs": n_legacy, "repeat": args.repeat}, payload)
     return 0
 
 

@@ -10,7 +10,8 @@ The log comes from the test generator (``tests/io/nmea/bridgelog.py``, encoded b
 pyais): 10 Hz ``$PASHR``; 1 Hz GGA, RMC, HDT, ZDA, VTG and three GSV; one TTM per target and
 second (an ARPA's output rate) for 20 targets; AIS of 16 of them in NMEA 4.10 tag blocks (class A
 every 2-10 s, class B every 30 s, static messages every minute) and the own ship's ``!AIVDO``.
-It is written once into a temporary folder. Then, alternated ``--repeat`` times, the wall time of:
+It is written once into a temporary folder. Then, interleaved ``--repeat`` times in alternating
+order (common.interleave), the wall time of:
 
 * ``import_nmea``: the whole import (read, checksums, fields, clock, navigation, plots, AIS via
   pyais, summary);
@@ -18,24 +19,22 @@ It is written once into a temporary folder. Then, alternated ``--repeat`` times,
   sentences are not pynmea2's and count as parse errors), nothing more: the cost of one Python
   object per line, before any table is built.
 
-Printed: lines, best and median seconds, lines per second. The aim: at most 10 s for the hour.
+Printed: lines, best and median seconds, lines per second, the median of the rounds' ratios.
+The aim: at most 10 s for the hour. Figures: benchmarks/results/nmea.json.
 """
 
 from __future__ import annotations
 
 import argparse
-import statistics
-import sys
 import tempfile
 import time
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # the tests' generator
+import pynmea2
+from common import add_arguments, interleave, median, paired_ratio, summary, write
 
-import pynmea2  # noqa: E402
-
-from registration.io.nmea import import_nmea  # noqa: E402
-from tests.io.nmea.bridgelog import PLATFORM, BridgeLogConfig, simulate_bridge_log  # noqa: E402
+from registration.io.nmea import import_nmea
+from tests.io.nmea.bridgelog import PLATFORM, BridgeLogConfig, simulate_bridge_log  # the tests' generator
 
 
 def _baseline(path: Path) -> int:
@@ -54,12 +53,15 @@ def _baseline(path: Path) -> int:
     return ok
 
 
-def main() -> None:
+def main(argv=None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--duration-s", type=float, default=3600.0, help="log length (s), default 3600")
     ap.add_argument("--repeat", type=int, default=3, help="runs of each case, alternated (default 3)")
     ap.add_argument("--progress", action="store_true", help="show the import's progress bar")
-    args = ap.parse_args()
+    add_arguments(ap)
+    args = ap.parse_args(argv)
+    if args.tiny:
+        args.duration_s, args.repeat = 30.0, 1
     config = BridgeLogConfig(
         seed=1, duration_s=args.duration_s, n_vessels=20, n_ais=16, scan_period_s=1.0, extra_sentences=True
     )
@@ -72,29 +74,32 @@ def main() -> None:
             f"log: {n} lines, {path.stat().st_size / 1e6:.1f} MB, {args.duration_s:g} s "
             f"(generated in {time.perf_counter() - t:.1f} s)"
         )
-        times = {"import_nmea": [], "pynmea2.parse baseline": []}
-        result = None
-        for _ in range(args.repeat):
-            t = time.perf_counter()
-            result = import_nmea(path, PLATFORM, log.sensors, progress=args.progress)
-            times["import_nmea"].append(time.perf_counter() - t)
-            t = time.perf_counter()
-            _baseline(path)
-            times["pynmea2.parse baseline"].append(time.perf_counter() - t)
+        times, values = interleave(
+            {
+                "import_nmea": lambda: import_nmea(path, PLATFORM, log.sensors, progress=args.progress),
+                "pynmea2.parse baseline": lambda: _baseline(path),
+            },
+            args.repeat,
+            warmup=0,
+        )
+    result = values["import_nmea"]
     print(
         f"imported: {len(result.navigation)} navigation rows, {len(result.plots)} plots, "
         f"{len(result.reference)} reference positions, {len(result.rejected)} lines set aside"
     )
     for name, ts in times.items():
-        best = min(ts)
         print(
-            f"  {name:24s} best {best:6.2f} s  median {statistics.median(ts):6.2f} s  {n / best:9.0f} lines/s"
+            f"  {name:24s} best {min(ts):6.2f} s  median {median(ts):6.2f} s  {n / median(ts):9.0f} lines/s"
         )
-    ratio = min(times["import_nmea"]) / min(times["pynmea2.parse baseline"])
-    print(
-        f"import / baseline: {ratio:.2f} (aim: the hour in at most 10 s: "
-        f"{'met' if min(times['import_nmea']) <= 10.0 * args.duration_s / 3600.0 else 'NOT met'})"
-    )
+    ratio = paired_ratio(times, "import_nmea", "pynmea2.parse baseline")
+    met = median(times["import_nmea"]) <= 10.0 * args.duration_s / 3600.0
+    print(f"import / baseline: {ratio:.2f} (aim: the hour in at most 10 s: {'met' if met else 'NOT met'})")
+    figures = {
+        "seconds": summary(times),
+        "lines_per_s": {name: n / median(ts) for name, ts in times.items()},
+        "import_over_baseline": ratio,
+    }
+    write("nmea", args, {"duration_s": args.duration_s, "lines": n, "repeat": args.repeat}, figures)
 
 
 if __name__ == "__main__":

@@ -12,7 +12,8 @@ Run from a checkout (the package installed, editable or not)::
 Data: the paper scenario's 300 rows (``paper_scenario(seed)``), tiled to ``--long`` rows (times
 renumbered). Filters: ``RegistrationConfig(linearization=...)`` with ``paper`` (model at the raw
 measurements) and ``fitted`` (the default), T ``standard``, Q ``fixed``. Contenders per filter,
-at the same rows, best of ``--repeat`` interleaved rounds after one warm-up:
+at the same rows, median of ``--repeat`` interleaved rounds (A B C, C B A, ...) after one warm-up,
+ratios the median of the rounds' ratios:
 
 1. ``register()``, the whole batch call, and the compiled scan alone (its floor);
 2. ``OnlineRegistrar.update(row)`` one call per row on the first ``--stream-rows`` rows, and the
@@ -27,19 +28,19 @@ Every baseline is first checked against ``register()`` to 1e-9 relative. Aims: <
 for ``register()`` amortised and for ``update()``; ``register()`` >= 20x the strongest NumPy
 baseline; the script says whether each is met, prints where ``register()``'s and ``update()``'s
 time goes (cProfile) and, with ``--flags``, the generated step in a plain C loop built with the
-loader's flags and with ``-O3 -march=native``. ``--json`` writes every figure.
+loader's flags and with ``-O3 -march=native``. Every figure goes to benchmarks/results/online.json
+(or ``--json FILE``); ``--tiny`` runs in seconds on 1000 rows, to check the script works.
 """
 
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import platform
 import sys
-import time
 
 import numpy as np
+from common import add_arguments, interleave, median, paired_ratio, write
 from online_baseline import NumpyFilter  # noqa: E402 (a script beside this one)
 
 import registration
@@ -90,21 +91,18 @@ def compare(reference, other) -> dict:
 
 
 # --------------------------------------------------------------------------- timing
-def measure(contenders: dict, rounds: int, warm: frozenset = frozenset()) -> tuple[dict, dict]:
-    """Best seconds per contender over ``rounds`` interleaved rounds after one untimed warm-up
-    (skipped for the labels in ``warm``: already run just before, by the correctness check), and
-    every round's seconds (the spread: this machine may be shared)."""
-    times: dict = {}
+def measure(
+    contenders: dict, rounds: int, warm: frozenset = frozenset(), cpu: dict | None = None
+) -> tuple[dict, dict]:
+    """Median seconds per contender over ``rounds`` interleaved rounds (common.interleave) after
+    one untimed warm-up (skipped for the labels in ``warm``: already run just before, by the
+    correctness check), and every round's seconds (the spread: this machine may be shared);
+    ``cpu`` receives every round's CPU seconds."""
     for label, fn in contenders.items():
         if label not in warm:
             fn()
-        times[label] = []
-    for _ in range(rounds):
-        for label, fn in contenders.items():
-            t0 = time.perf_counter()
-            fn()
-            times[label].append(time.perf_counter() - t0)
-    return {label: min(t) for label, t in times.items()}, times
+    times, _ = interleave(contenders, rounds, warmup=0, cpu=cpu)
+    return {label: median(t) for label, t in times.items()}, times
 
 
 def streaming(config, rows):
@@ -224,8 +222,10 @@ def bench_size(n_rows: int, seed: int, rounds: int, stream_rows: int, config) ->
     contenders[UPDATE] = streaming(config, rows[:n_stream])
     contenders[STEPPER] = stepper_only(config, rows[:n_stream])
     # the baselines' last run (the check) is their warm-up: at 10^5 rows a per-row run takes seconds
-    best, times = measure(contenders, rounds, warm=frozenset([BATCH, *flavours]))
-    per = {k: (n_stream if k in (UPDATE, STEPPER) else n_rows) / 1e6 for k in best}
+    cpu: dict = {}
+    mid, times = measure(contenders, rounds, warm=frozenset([BATCH, *flavours]), cpu=cpu)
+    per = {k: (n_stream if k in (UPDATE, STEPPER) else n_rows) / 1e6 for k in mid}
+    per_row = {k: [x / per[k] for x in t] for k, t in times.items()}
     spread = {
         k: [float(np.min(t)) / per[k], float(np.median(t)) / per[k], float(np.max(t)) / per[k]]
         for k, t in times.items()
@@ -233,9 +233,12 @@ def bench_size(n_rows: int, seed: int, rounds: int, stream_rows: int, config) ->
     return {
         "rows": n_rows,
         "stream_rows": n_stream,
-        "seconds": best,
-        "us_per_step": {k: v / per[k] for k, v in best.items()},
+        "seconds": mid,
+        "us_per_step": {k: v / per[k] for k, v in mid.items()},
         "us_per_step_best_median_worst": spread,
+        "cpu_us_per_step": {k: median(t) / per[k] for k, t in cpu.items()},
+        "ratio_over_batch": {k: paired_ratio(per_row, k, BATCH) for k in per_row},
+        "ratio_over_scan": {k: paired_ratio(per_row, k, SCAN) for k in per_row},
         "max_relative_difference_vs_register": diffs,
     }
 
@@ -248,6 +251,8 @@ def aims_of(results: dict, long_n: int, linearization: str) -> dict:
     depends on the state, so its model cannot be evaluated up front)."""
     strongest = VECTORISED if linearization == "paper" else PER_ROW
     long, short = results[str(long_n)]["us_per_step"], results["300"]["us_per_step"]
+    long_ratio, short_ratio = (results[k]["ratio_over_batch"] for k in (str(long_n), "300"))
+    long_scan_ratio = results[str(long_n)]["ratio_over_scan"]
     aims = {
         "strongest_numpy_baseline": strongest,
         "batch_us_per_step_long": long[BATCH],
@@ -256,14 +261,14 @@ def aims_of(results: dict, long_n: int, linearization: str) -> dict:
         "aim_us_per_step": AIM_US_PER_STEP,
         "met_us_per_step_long": long[BATCH] <= AIM_US_PER_STEP,
         "met_us_per_step_300": short[BATCH] <= AIM_US_PER_STEP,
-        "ratio_vs_strongest_numpy_long": long[strongest] / long[BATCH],
-        "ratio_vs_strongest_numpy_300": short[strongest] / short[BATCH],
-        "scan_ratio_vs_strongest_numpy_long": long[strongest] / long[SCAN],
-        "ratio_vs_per_row_numpy_long": long[PER_ROW] / long[BATCH],
-        "scan_ratio_vs_per_row_numpy_long": long[PER_ROW] / long[SCAN],
+        "ratio_vs_strongest_numpy_long": long_ratio[strongest],
+        "ratio_vs_strongest_numpy_300": short_ratio[strongest],
+        "scan_ratio_vs_strongest_numpy_long": long_scan_ratio[strongest],
+        "ratio_vs_per_row_numpy_long": long_ratio[PER_ROW],
+        "scan_ratio_vs_per_row_numpy_long": long_scan_ratio[PER_ROW],
         "aim_ratio": AIM_RATIO,
         "update_us_per_step_long": long[UPDATE],
-        "update_over_scan_long": long[UPDATE] / long[SCAN],
+        "update_over_scan_long": long_scan_ratio[UPDATE],
         "update_python_us_per_step_long": long[UPDATE] - long[STEPPER],
         "met_update_us_per_step_long": long[UPDATE] <= AIM_US_PER_STEP,
     }
@@ -277,17 +282,20 @@ def print_aims(aims: dict, long_n: int, linearization: str) -> None:
     why = (
         "model vectorised up front"
         if linearization == "paper"
-        else "per-row model: the fitted linearisation point depends on the state, so no NumPy code can evaluate the model up front"
+        else "per-row model: the fitted linearisation point depends on the state, so no NumPy code "
+        "can evaluate the model up front"
     )
     print(f"Aims, linearization {linearization}:")
     print(
-        f"  <= {AIM_US_PER_STEP} us/step amortised, batch register(): {long_n} rows {aims['batch_us_per_step_long']:.2f} us "
+        f"  <= {AIM_US_PER_STEP} us/step amortised, batch register(): {long_n} rows "
+        f"{aims['batch_us_per_step_long']:.2f} us "
         f"({yes[aims['met_us_per_step_long']]}); 300 rows {aims['batch_us_per_step_300']:.2f} us "
         f"({yes[aims['met_us_per_step_300']]})"
     )
     print(f"  >= {AIM_RATIO:.0f}x the strongest NumPy baseline ({why}):")
     print(
-        f"     register(): {long_n} rows {aims['ratio_vs_strongest_numpy_long']:.1f}x ({yes[aims['met_ratio_long']]}); "
+        f"     register(): {long_n} rows {aims['ratio_vs_strongest_numpy_long']:.1f}x "
+        f"({yes[aims['met_ratio_long']]}); "
         f"300 rows {aims['ratio_vs_strongest_numpy_300']:.1f}x ({yes[aims['met_ratio_300']]}); "
         f"the compiled scan alone {aims['scan_ratio_vs_strongest_numpy_long']:.1f}x"
     )
@@ -298,7 +306,8 @@ def print_aims(aims: dict, long_n: int, linearization: str) -> None:
         )
     print(
         f"  <= {AIM_US_PER_STEP} us/row for update(): {aims['update_us_per_step_long']:.2f} us "
-        f"({yes[aims['met_update_us_per_step_long']]}), {aims['update_over_scan_long']:.2f}x the compiled scan's step; "
+        f"({yes[aims['met_update_us_per_step_long']]}), {aims['update_over_scan_long']:.2f}x the compiled "
+        "scan's step; "
         f"Python around the compiled stepper {aims['update_python_us_per_step_long']:.2f} us"
     )
 
@@ -311,7 +320,8 @@ def machine_line() -> str:
     except OSError:
         pass
     return (
-        f"registration {registration.__version__}, backend {_codegen.backend()} ({cbackend.build_mode()} build), "
+        f"registration {registration.__version__}, backend {_codegen.backend()} ({cbackend.build_mode()} "
+        "build), "
         f"numpy {np.__version__}, "
         f"python {platform.python_version()}, {platform.machine()} {cpu}, {os.cpu_count()} CPUs"
     ).replace("  ", " ")
@@ -330,17 +340,17 @@ def run_configs(configs: dict, default: str, args) -> dict:
             us = r["us_per_step"]
             print(
                 f"{n} rows (NumPy baselines equal register() to "
-                f"{max(max(d.values()) for d in r['max_relative_difference_vs_register'].values()):.1e} relative)"
+                f"{max(max(d.values()) for d in r['max_relative_difference_vs_register'].values()):.1e} "
+                "relative)"
             )
             print(
                 f"  {'contender':<40}{'us/step':>10}{'time / register()':>19}{'time / scan':>13}"
-                f"{'median, worst of ' + str(args.repeat):>24}"
+                f"{'best, worst of ' + str(args.repeat):>24}"
             )
             for label, v in us.items():
-                _, med, worst = r["us_per_step_best_median_worst"][label]
-                print(
-                    f"  {label:<40}{v:10.2f}{v / us[BATCH]:18.1f}x{v / us[SCAN]:12.1f}x{med:14.2f}{worst:10.2f}"
-                )
+                best, _, worst = r["us_per_step_best_median_worst"][label]
+                rb, rs = r["ratio_over_batch"][label], r["ratio_over_scan"][label]
+                print(f"  {label:<40}{v:10.2f}{rb:18.1f}x{rs:12.1f}x{best:14.2f}{worst:10.2f}")
             print()
         aims = aims_of(results, args.long, lin)
         print_aims(aims, args.long, lin)
@@ -367,7 +377,8 @@ def run_configs(configs: dict, default: str, args) -> dict:
 
 
 def profiles(config, data_long: dict, seed: int) -> dict:
-    """Where register()'s and update()'s time goes (cProfile; its overhead inflates the Python-heavy parts)."""
+    """Where register()'s and update()'s time goes (cProfile; its overhead inflates the
+    Python-heavy parts)."""
     data300 = scenario_data(300, seed)
     out = {
         "register_profile_us_per_row_300": profile_breakdown(lambda: register(data300, config), 20, 300),
@@ -401,10 +412,10 @@ def main(argv=None) -> int:
         help="rows fed to OnlineRegistrar.update() in the long run (default 2*10^4)",
     )
     ap.add_argument(
-        "--repeat", type=int, default=3, help="timed rounds per contender; the best is kept (default 3)"
+        "--repeat", type=int, default=3, help="timed rounds per contender, interleaved (default 3)"
     )
     ap.add_argument("--seed", type=int, default=0)
-    ap.add_argument("--json", type=str, default=None, help="also write the figures to this JSON file")
+    add_arguments(ap)
     ap.add_argument(
         "--flags",
         action="store_true",
@@ -412,6 +423,8 @@ def main(argv=None) -> int:
         "flags and with -O3 -march=native",
     )
     args = ap.parse_args(argv)
+    if args.tiny:
+        args.long, args.stream_rows, args.repeat = 1000, 300, 1
     default = RegistrationConfig().linearization
     configs = {
         lin: RegistrationConfig(linearization=lin) for lin in ("paper", "fitted")
@@ -419,7 +432,7 @@ def main(argv=None) -> int:
     print(machine_line())
     print(
         f"configurations: {', '.join(f'{lin} ({c.step_name})' for lin, c in configs.items())}; "
-        f"default RegistrationConfig(): {default}; q_mode fixed; best of {args.repeat} rounds"
+        f"default RegistrationConfig(): {default}; q_mode fixed; median of {args.repeat} interleaved rounds"
     )
     data_long = scenario_data(args.long, args.seed)
     per_config = run_configs(configs, default, args)
@@ -428,6 +441,9 @@ def main(argv=None) -> int:
         from online_flags import flags_experiment
 
         for lin, cfg in configs.items():
+            if args.tiny and lin != default:
+                print(f"\n--tiny: the flags experiment of {lin} left out (the default's only)")
+                continue
             flags = flags_experiment(
                 cfg, rows_of(data_long), register(data_long, cfg).estimates[-1, 3], args.repeat
             )
@@ -437,28 +453,16 @@ def main(argv=None) -> int:
             )
             for k, v in flags.items():
                 print(f"  {k:<52}{'build failed' if v is None else f'{v:10.2f}'}")
-    if args.json:
-        machine = {
-            "line": machine_line(),
-            "python": platform.python_version(),
-            "machine": platform.machine(),
-            "numpy": np.__version__,
-            "backend": _codegen.backend(),
-            "platform": platform.platform(),
-        }
-        with open(args.json, "w") as fh:
-            json.dump(
-                {
-                    "machine": machine,
-                    "default_linearization": default,
-                    "configs": per_config,
-                    "profile_config": default,
-                    **profile,
-                },
-                fh,
-                indent=1,
-            )
-        print(f"\nwrote {args.json}")
+    sizes = {"rows": [300, args.long], "stream_rows": args.stream_rows, "repeat": args.repeat}
+    figures = {
+        "line": machine_line(),
+        "backend": _codegen.backend(),
+        "default_linearization": default,
+        "configs": per_config,
+        "profile_config": default,
+        **profile,
+    }
+    write("online", args, sizes, figures)
     return 0
 
 

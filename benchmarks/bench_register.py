@@ -13,8 +13,9 @@ in the angles) so that the copies differ, written once per size as CSV and as Pa
 of 100,000). Each measurement runs in a fresh worker process that imports the package, records
 its resident set size (RSS, ``/proc/self/status`` VmRSS), resets the peak mark (``clear_refs``), runs
 :func:`registration.recorded.run_register` exactly as the CLI does (no progress bar; no plots except
-in the ``*-plots`` cases, which draw the three PNGs as the CLI does by default) and reports the wall time and its peak RSS during the run (VmHWM; ``ru_maxrss`` where /proc is missing,
-which also counts the pre-exec image). "Above baseline" subtracts the RSS after the
+in the ``*-plots`` cases, which draw the three PNGs as the CLI does by default) and reports the
+wall time and its peak RSS during the run (VmHWM; ``ru_maxrss`` where /proc is missing, which also
+counts the pre-exec image). "Above baseline" subtracts the RSS after the
 imports (numpy, pandas, pyarrow, casadi, the compiled generated code), which does not depend on
 the input. Rows per second count input rows over the whole command: both passes (filter, then the
 information matrix at the final estimate), validation, the input hash, the output writing.
@@ -23,6 +24,9 @@ For comparison the in-memory API :func:`registration.online.register` is measure
 sizes: it keeps every step's covariance (K x 12 x 12 doubles, 1.15 kB per row), so its memory
 grows with the input, which is exactly what the streaming runner avoids (blocks of
 ``--chunk-rows`` rows, default 20,000).
+
+The cases of one size run interleaved (common.interleave; ``--repeat`` rounds, default 1, times
+are medians). Figures: benchmarks/results/register.json; ``--tiny``: 600 rows.
 """
 
 from __future__ import annotations
@@ -36,7 +40,7 @@ import tempfile
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parent.parent
+from common import ROOT, Timed, add_arguments, interleave, median, write
 
 WORKER = r"""
 import json, resource, sys, time
@@ -132,6 +136,19 @@ def measure(mode: str, path: Path, out: Path, extra: dict) -> dict:
     return json.loads(proc.stdout.strip().splitlines()[-1])
 
 
+def run_case(mode: str, path: Path, out: Path, extra: dict):
+    """A contender: one worker process (its own timing and peak memory, as common.Timed)."""
+
+    def run() -> Timed:
+        ck = extra.get("checkpoint")
+        if ck and Path(ck).exists():
+            Path(ck).unlink()
+        r = measure(mode, path, out, extra)
+        return Timed(r["seconds"], r)
+
+    return run
+
+
 #: name -> (input format, RunOptions fields); "{ckpt}" is replaced by a checkpoint path
 CASES = {
     "csv": ("csv", {"out_format": "csv"}),
@@ -164,8 +181,11 @@ def main(argv=None) -> int:
     ap.add_argument(
         "--api-max-rows", type=int, default=300_000, help="largest size also run through the in-memory API"
     )
-    ap.add_argument("--json", type=Path, default=None, help="also write the results to this JSON file")
+    ap.add_argument("--repeat", type=int, default=1, help="interleaved rounds of the cases per size")
+    add_arguments(ap)
     args = ap.parse_args(argv)
+    if args.tiny:  # two cases and the API: each is a fresh process
+        args.rows, args.repeat, args.cases = [600], 1, ["csv", "parquet"]
     results = []
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
@@ -174,28 +194,32 @@ def main(argv=None) -> int:
             paths = make_inputs(n, tmp)
             sizes = {k: p.stat().st_size / 2**20 for k, p in paths.items()}
             print(
-                f"# {n} rows: CSV {sizes['csv']:.0f} MiB, Parquet {sizes['parquet']:.0f} MiB (written in {time.perf_counter() - t:.1f} s)",
+                f"# {n} rows: CSV {sizes['csv']:.0f} MiB, Parquet {sizes['parquet']:.0f} MiB (written in "
+                f"{time.perf_counter() - t:.1f} s)",
                 flush=True,
             )
             cases = [("stream", *CASES[name]) for name in args.cases]
             if n <= args.api_max_rows:
                 cases.append(("api", "csv", {}))
+            contenders = {}
             for mode, fmt, extra in cases:
                 extra = {k: (str(tmp / "bench.ckpt") if v == "{ckpt}" else v) for k, v in extra.items()}
-                ck = extra.get("checkpoint")
-                if ck and Path(ck).exists():
-                    Path(ck).unlink()
-                r = measure(mode, paths[fmt], tmp / f"out_{n}_{len(results)}", extra)
                 label = "API register (in memory)" if mode == "api" else _label(fmt, extra)
-                r.update({"case": label, "input_mib": sizes[fmt]})
+                contenders[label] = run_case(mode, paths[fmt], tmp / f"out_{n}_{len(contenders)}", extra)
+            times, values = interleave(contenders, args.repeat, warmup=0)
+            for label, r in values.items():
+                fmt = "parquet" if "parquet in" in label else "csv"
+                r.update({"case": label, "input_mib": sizes[fmt], "seconds": median(times[label])})
+                r["rounds_seconds"] = times[label]
                 results.append(r)
                 print(
-                    f"{n:>9} rows  {label:<58} {r['rows'] / r['seconds']:>9.0f} rows/s  {r['seconds']:7.2f} s  "
-                    f"peak RSS {r['peak_mib']:7.0f} MiB ({r['peak_mib'] - r['baseline_mib']:6.0f} above baseline)",
+                    f"{n:>9} rows  {label:<58} {r['rows'] / r['seconds']:>9.0f} rows/s  {r['seconds']:7.2f} "
+                    "s  "
+                    f"peak RSS {r['peak_mib']:7.0f} MiB ({r['peak_mib'] - r['baseline_mib']:6.0f} above "
+                    "baseline)",
                     flush=True,
                 )
-    if args.json:
-        args.json.write_text(json.dumps(results, indent=2) + "\n")
+    write("register", args, {"rows": args.rows, "cases": args.cases, "repeat": args.repeat}, results)
     return 0
 
 

@@ -9,10 +9,11 @@ Run from a checkout (the package installed, editable or not)::
 Data: the paper scenario's 300 rows (``paper_scenario(seed)``) tiled to ``--steps`` rows, T
 ``standard``, the default fixed Q. Each step runs in the compiled scan (the loader's portable
 flags, ``registration._codegen.CFLAGS``) with x, P, info carried and only the last outputs kept,
-so the figure is the step itself plus the scan's copies, in us per step: best of ``--repeat``
-interleaved rounds after one warm-up. Printed per linearisation: us/step for each update, the
-ratio Joseph / Carlson, whether the 1 us aim is met, and the largest difference of the final P
-(relative to its diagonal scale) between the two.
+so the figure is the step itself plus the scan's copies, in us per step: median of ``--repeat``
+interleaved rounds (common.interleave) after one warm-up; ratios are medians of the rounds'
+ratios. Figures: benchmarks/results/step.json; ``--tiny``: 1000 steps, no native builds. Printed
+per linearisation: us/step for each update, the ratio Joseph / Carlson, whether the 1 us aim is
+met, and the largest difference of the final P (relative to its diagonal scale) between the two.
 
 The same steps are then timed in the builds for the local CPU (``REGISTRATION_NATIVE``, see
 ``registration._codegen.cbackend``): ``native`` (-O3 -march=native, within ``NATIVE_RTOL`` of the
@@ -33,6 +34,7 @@ import platform
 import time
 
 import numpy as np
+from common import add_arguments, interleave, median, paired_ratio, write
 
 from registration import _codegen
 from registration._codegen import cbackend, ckernel
@@ -69,16 +71,16 @@ def run(config: RegistrationConfig, rows: np.ndarray, keep_all: bool = False) ->
 
 
 def time_steps(configs: dict, rows: np.ndarray, rounds: int) -> dict:
-    """Best us per step over ``rounds`` interleaved rounds after one warm-up, per label."""
-    best = {label: float("inf") for label in configs}
-    for cfg in configs.values():
-        run(cfg, rows)
-    for _ in range(rounds):
-        for label, cfg in configs.items():
-            t0 = time.perf_counter()
-            run(cfg, rows)
-            best[label] = min(best[label], (time.perf_counter() - t0) / len(rows) * 1e6)
-    return best
+    """Median us per step over ``rounds`` interleaved rounds after one warm-up, per label, in
+    wall time and (``cpu <label>``) in CPU time; the median of the rounds' ratios Joseph / Carlson."""
+    cpu: dict = {}
+    contenders = {label: (lambda c=cfg: run(c, rows)) for label, cfg in configs.items()}
+    times, _ = interleave(contenders, rounds, cpu=cpu)
+    return (
+        {label: median(t) / len(rows) * 1e6 for label, t in times.items()}
+        | {f"cpu {label}": median(t) / len(rows) * 1e6 for label, t in cpu.items()}
+        | {"joseph/carlson": paired_ratio(times, "joseph", "carlson")}
+    )
 
 
 def kernel_run(config: RegistrationConfig, rows: np.ndarray, lib) -> dict:
@@ -100,17 +102,26 @@ def kernel_run(config: RegistrationConfig, rows: np.ndarray, lib) -> dict:
     }
 
 
-def time_builds(configs: dict, rows: np.ndarray, libs: dict, rounds: int) -> dict:
-    """Best us per step over ``rounds`` interleaved rounds after one warm-up, per (label, build)."""
-    best = {(label, mode): float("inf") for label in configs for mode in libs}
-    for label, mode in best:
-        kernel_run(configs[label], rows, libs[mode])
-    for _ in range(rounds):
-        for label, mode in best:
-            t0 = time.perf_counter()
-            kernel_run(configs[label], rows, libs[mode])
-            best[label, mode] = min(best[label, mode], (time.perf_counter() - t0) / len(rows) * 1e6)
-    return best
+def time_builds(configs: dict, rows: np.ndarray, libs: dict, rounds: int) -> tuple[dict, dict]:
+    """Median us per step over ``rounds`` interleaved rounds after one warm-up, per (label,
+    build); and the median ratio portable / build per (label, build)."""
+    contenders = {
+        f"{label} {mode}": (lambda c=configs[label], lib=libs[mode]: kernel_run(c, rows, lib))
+        for label in configs
+        for mode in libs
+    }
+    times, _ = interleave(contenders, rounds)
+    us = {
+        (label, mode): median(times[f"{label} {mode}"]) / len(rows) * 1e6
+        for label in configs
+        for mode in libs
+    }
+    ratio = {
+        (label, mode): paired_ratio(times, f"{label} portable", f"{label} {mode}")
+        for label in configs
+        for mode in libs
+    }
+    return us, ratio
 
 
 def sigma_difference(ref: dict, other: dict) -> float:
@@ -121,12 +132,13 @@ def sigma_difference(ref: dict, other: dict) -> float:
     )
 
 
-def native_table(rows: np.ndarray, rounds: int) -> None:
+def native_table(rows: np.ndarray, rounds: int) -> dict:
     """Portable against the native builds, per step, per linearisation and covariance update."""
     cc = _codegen.compiler()
     if cc is None or cbackend.native_target(cc) is None:
         print("native builds: skipped (no C compiler accepting -march=native)")
-        return
+        return {}
+    figures = {}
     names = sorted(_codegen.manifest()["functions"])
     t0 = time.perf_counter()
     libs = {mode: cbackend.library_of(names, mode) for mode in cbackend.BUILD_MODES}
@@ -135,26 +147,35 @@ def native_table(rows: np.ndarray, rounds: int) -> None:
         + "; ".join(f"{m} {' '.join(cbackend.cflags(m))}" for m in cbackend.BUILD_MODES)
     )
     print(
-        f"{'linearisation':14s} {'update':8s} {'portable us':>12s} {'native us':>10s} {'ratio':>6s} {'exact us':>9s} "
+        f"{'linearisation':14s} {'update':8s} {'portable us':>12s} {'native us':>10s} {'ratio':>6s} "
+        f"{'exact us':>9s} "
         f"{'ratio':>6s} {'native d/sigma':>15s} {'exact d':>8s}"
     )
     for lin in _codegen.variants("linearization"):
         cfgs = {u: RegistrationConfig(linearization=lin, covariance_update=u) for u in UPDATES}
-        us = time_builds(cfgs, rows, libs, rounds)
+        us, ratio = time_builds(cfgs, rows, libs, rounds)
         for u, cfg in cfgs.items():
             ref = kernel_run(cfg, rows, libs["portable"])
             d_native = sigma_difference(ref, kernel_run(cfg, rows, libs["native"]))
             exact = kernel_run(cfg, rows, libs["native-exact"])
             same = all(np.array_equal(exact[k], ref[k]) for k in ref)
             p, n, e = us[u, "portable"], us[u, "native"], us[u, "native-exact"]
+            rn, re = ratio[u, "native"], ratio[u, "native-exact"]
             print(
-                f"{lin:14s} {u:8s} {p:12.3f} {n:10.3f} {p / n:6.2f} {e:9.3f} {p / e:6.2f} {d_native:15.1e} "
+                f"{lin:14s} {u:8s} {p:12.3f} {n:10.3f} {rn:6.2f} {e:9.3f} {re:6.2f} {d_native:15.1e} "
                 f"{'0 (same)' if same else 'DIFFERS':>8s}"
             )
+            figures[f"{lin} {u}"] = {
+                "us_per_step": {"portable": p, "native": n, "native-exact": e},
+                "portable_over": {"native": rn, "native-exact": re},
+                "native_difference_in_sigma": d_native,
+                "exact_same_bits": same,
+            }
     print(
         f"native d/sigma: the last step's largest difference from the portable build after {len(rows)} steps "
         f"(the stated per-step tolerance is {cbackend.NATIVE_RTOL:g}; over a run, differences may accumulate)"
     )
+    return figures
 
 
 def p_difference(a: np.ndarray, b: np.ndarray) -> float:
@@ -206,31 +227,43 @@ def main(argv=None) -> int:
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--ill", action="store_true", help="also the ill-conditioned positive-definiteness check")
     ap.add_argument("--no-native", action="store_true", help="skip the builds for the local CPU")
+    add_arguments(ap)
     args = ap.parse_args(argv)
+    if args.tiny:  # the native builds take minutes to compile on a first run: left out
+        args.steps, args.repeat, args.no_native = 1000, 1, True
+    figures: dict = {"flags": " ".join(_codegen.CFLAGS), "portable": {}}
     rows = tiled_rows(args.steps, args.seed)
     print(
-        f"{platform.machine()} {platform.processor() or ''} flags {' '.join(_codegen.CFLAGS)}; {args.steps} steps"
+        f"{platform.machine()} {platform.processor() or ''} flags {' '.join(_codegen.CFLAGS)}; {args.steps} "
+        "steps"
     )
     print(
-        f"{'linearisation':14s} {'joseph us':>10s} {'carlson us':>11s} {'ratio':>6s} {'aim<=1us':>9s} {'max dP (final)':>15s}"
+        f"{'linearisation':14s} {'joseph us':>10s} {'carlson us':>11s} {'ratio':>6s} {'aim<=1us':>9s} "
+        f"{'max dP (final)':>15s}"
     )
     for lin in _codegen.variants("linearization"):
         cfgs = {u: RegistrationConfig(linearization=lin, covariance_update=u) for u in UPDATES}
         us = time_steps(cfgs, rows, args.repeat)
         dP = p_difference(run(cfgs["joseph"], rows)["P_new"], run(cfgs["carlson"], rows)["P_new"])
         print(
-            f"{lin:14s} {us['joseph']:10.3f} {us['carlson']:11.3f} {us['joseph'] / us['carlson']:6.2f} "
+            f"{lin:14s} {us['joseph']:10.3f} {us['carlson']:11.3f} {us['joseph/carlson']:6.2f} "
             f"{'met' if us['carlson'] <= AIM_US else 'NOT met':>9s} {dP:15.2e}"
         )
-    if not args.no_native:
-        native_table(rows, args.repeat)
+        figures["portable"][lin] = {**us, "max_dP_final": dP}
+    if args.no_native:
+        print("native builds: left out (--no-native or --tiny)")
+    else:
+        figures["native"] = native_table(rows, args.repeat)
     if args.ill:
+        figures["ill"] = {}
         for update in UPDATES:
             ok, cond, sec = ill_run(update, rows)
             print(
                 f"ill-conditioned {update}: {args.steps} steps in {sec:.2f} s, "
                 f"every P finite with a Cholesky factor: {ok}; final cond(P) {cond:.2e}"
             )
+            figures["ill"][update] = {"positive_definite": ok, "final_cond": cond, "seconds": sec}
+    write("step", args, {"steps": args.steps, "repeat": args.repeat}, figures)
     return 0
 
 

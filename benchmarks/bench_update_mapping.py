@@ -4,12 +4,13 @@ the mappings users try first, as ratios measured in one run.
 
 Run from a checkout (the package installed, editable or not)::
 
-    python3 benchmarks/bench_update_mapping.py               # 300 rows, best of 7 rounds
+    python3 benchmarks/bench_update_mapping.py               # 300 rows, 7 rounds
     python3 benchmarks/bench_update_mapping.py --rows 3000 --repeat 11
 
 Rows: the paper scenario's (``paper_scenario(seed)``, tiled to ``--rows``), default configuration
-(``fitted``, fixed Q). Contenders, one fresh registrar each, every row through ``update()``, best
-of ``--repeat`` interleaved rounds after one warm-up:
+(``fitted``, fixed Q). Contenders, one fresh registrar each, every row through ``update()``,
+median of ``--repeat`` rounds interleaved in alternating order (common.interleave) after one
+warm-up, ratios the median of the rounds' ratios (figures: benchmarks/results/update_mapping.json):
 
 1. ``array``: the (18,) float64 array in contract order (the baseline);
 2. ``dict of floats``: ``{"a_lat": ..., ..., "b_elevation": ...}`` with Python floats;
@@ -26,9 +27,9 @@ from __future__ import annotations
 
 import argparse
 import sys
-import time
 
 import numpy as np
+from common import add_arguments, interleave, median, paired_ratio, write
 
 from registration.online import OnlineRegistrar, RegistrationConfig
 from registration.online.contract import DATA_COLUMNS, ROW_COLUMNS
@@ -78,41 +79,40 @@ def check_identical(config: RegistrationConfig, forms: dict) -> None:
 
 
 def measure(config: RegistrationConfig, forms: dict, rounds: int) -> dict:
-    """Best seconds per row of each form over ``rounds`` interleaved rounds (after one warm-up)."""
-    times = {name: [] for name in forms}
-    for name, rows in forms.items():
-        run(config, rows)
-    for _ in range(rounds):
-        for name, rows in forms.items():
-            t0 = time.perf_counter()
-            run(config, rows)
-            times[name].append((time.perf_counter() - t0) / len(rows))
-    return {name: min(t) for name, t in times.items()}
+    """Seconds per row of each form in each of ``rounds`` interleaved rounds (after one warm-up)."""
+    times, _ = interleave({name: (lambda r=rows: run(config, r)) for name, rows in forms.items()}, rounds)
+    return {name: [x / len(forms[name]) for x in t] for name, t in times.items()}
 
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--rows", type=int, default=300, help="rows per contender (default 300)")
-    ap.add_argument("--repeat", type=int, default=7, help="timed rounds; the best is kept (default 7)")
+    ap.add_argument("--repeat", type=int, default=7, help="timed rounds, interleaved (default 7)")
     ap.add_argument("--seed", type=int, default=0)
+    add_arguments(ap)
     args = ap.parse_args(argv)
+    if args.tiny:
+        args.rows, args.repeat = 30, 1
     config = RegistrationConfig()
     forms = row_forms(args.rows, args.seed)
     check_identical(config, forms)
-    best = measure(config, forms, args.repeat)
+    times = measure(config, forms, args.repeat)
     print(
-        f"OnlineRegistrar.update(), {args.rows} rows, linearization {config.linearization}, best of {args.repeat} "
-        "interleaved rounds; every form's results equal the array's bit for bit"
+        f"OnlineRegistrar.update(), {args.rows} rows, linearization {config.linearization}, median of "
+        f"{args.repeat} interleaved rounds; every form's results equal the array's bit for bit"
     )
     print(f"  {'row form':<24}{'us/row':>9}{'/ array':>10}")
-    for name, sec in best.items():
-        ratio = sec / best[BASELINE]
+    figures = {}
+    for name, t in times.items():
+        ratio = paired_ratio(times, name, BASELINE)
         mark = (
             ""
             if name == BASELINE
             else ("  (aim <= 2x: met)" if ratio <= AIM_RATIO else "  (aim <= 2x: NOT met)")
         )
-        print(f"  {name:<24}{sec * 1e6:9.2f}{ratio:9.2f}x{mark}")
+        print(f"  {name:<24}{median(t) * 1e6:9.2f}{ratio:9.2f}x{mark}")
+        figures[name] = {"us_per_row": median(t) * 1e6, "over_array": ratio}
+    write("update_mapping", args, {"rows": args.rows, "repeat": args.repeat}, figures)
     return 0
 
 

@@ -16,12 +16,17 @@ HARNESS = r"""
 #include <string.h>
 #include <time.h>
 #include "@SOURCE@"
-static double now_ns(void) { struct timespec t; clock_gettime(CLOCK_MONOTONIC, &t); return t.tv_sec * 1e9 + t.tv_nsec; }
+static double now_ns(void) {
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec * 1e9 + t.tv_nsec;
+}
 int main(int argc, char **argv) {
     long n = atol(argv[1]); int repeat = atoi(argv[2]);
     double *in = malloc(sizeof(double) * (size_t)(18 * n + 12 + 3 * 144 + 6));
     FILE *f = fopen(argv[3], "rb");
-    if (!in || !f || fread(in, sizeof(double), (size_t)(18 * n + 12 + 3 * 144 + 6), f) != (size_t)(18 * n + 12 + 3 * 144 + 6)) return 1;
+    size_t n_in = (size_t)(18 * n + 12 + 3 * 144 + 6);
+    if (!in || !f || fread(in, sizeof(double), n_in, f) != n_in) return 1;
     fclose(f);
     double *rows = in, *x0 = in + 18 * n, *P0 = x0 + 12, *info0 = P0 + 144, *Q = info0 + 144, *s0 = Q + 144;
     double *xo = malloc(sizeof(double) * 12 * (size_t)n), *Po = malloc(sizeof(double) * 144 * (size_t)n);
@@ -35,7 +40,9 @@ int main(int argc, char **argv) {
             const double *arg[6] = {x, P, info, Q, rows + 18 * i, s0};
             double *res[6] = {xo + 12 * i, Po + 144 * i, info2, nu, S, &nis};
             @FUNC@(arg, res, iw, w, 0);
-            memcpy(x, xo + 12 * i, sizeof x); memcpy(P, Po + 144 * i, sizeof P); memcpy(info, info2, sizeof info);
+            memcpy(x, xo + 12 * i, sizeof x);
+            memcpy(P, Po + 144 * i, sizeof P);
+            memcpy(info, info2, sizeof info);
         }
         double dt = (now_ns() - t0) / (double)n;
         if (rep > 0 && dt < best) best = dt;
