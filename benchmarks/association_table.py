@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The table of docs/association.md: association + registration of plots without target ids on
+"""The table of docs/background/association.md: association + registration of plots without target ids on
 simulated fleets with known truth, printed as markdown.
 
 Run from a checkout::

@@ -10,12 +10,6 @@ import pytest
 
 from tests.docs.links import MOVED, ROOT, anchors, links, markdown_files, new_place, relink, resolve
 
-#: Pages another change is editing while the docs move; their links to moved pages are rewritten by
-#: ``python -m tests.docs.links PAGE...`` once both are in, and then the page leaves this set.
-PENDING_RELINK = {"docs/results.md"}
-#: Pages written by a generator of another change; links to them may precede them.
-PENDING_PAGES: set[str] = set()
-
 
 def _dead(page: Path) -> list[str]:
     out = []
@@ -23,8 +17,7 @@ def _dead(page: Path) -> list[str]:
         path, anchor = resolve(page, target)
         rel = path.relative_to(ROOT).as_posix() if path.is_relative_to(ROOT) else str(path)
         if not path.exists():
-            if rel not in PENDING_PAGES:
-                out.append(f"{target}: no file {rel}")
+            out.append(f"{target}: no file {rel}")
         elif anchor and path.suffix == ".md" and anchor not in anchors(path.read_text(encoding="utf-8")):
             out.append(f"{target}: no heading #{anchor} in {rel}")
     return out
@@ -34,28 +27,7 @@ def _dead(page: Path) -> list[str]:
 def test_every_relative_link_resolves(page):
     rel = page.relative_to(ROOT).as_posix()
     dead = _dead(page)
-    if rel in PENDING_RELINK:  # only links to moved pages may be dead here, and the tool fixes them
-        old = {o for o in MOVED} | {Path(o).name for o in MOVED}
-        dead = [d for d in dead if not any(d.startswith(f"{name}") for name in old)]
     assert not dead, f"{rel}: dead links:\n" + "\n".join(dead)
-
-
-@pytest.mark.parametrize("name", sorted(PENDING_RELINK))
-def test_the_relink_tool_leaves_no_dead_link_in_the_pending_pages(name, tmp_path):
-    page = ROOT / name
-    if not page.exists():
-        pytest.skip(f"{name} is gone")
-    fixed = tmp_path / page.relative_to(ROOT)  # the same place relative to a copy of the root
-    fixed.parent.mkdir(parents=True)
-    fixed.write_text(relink(page), encoding="utf-8")
-    dead = []
-    for target in links(fixed.read_text(encoding="utf-8")):
-        path, anchor = resolve(page, target)  # resolved from the real page's folder
-        if not path.exists():
-            dead.append(target)
-        elif anchor and path.suffix == ".md" and anchor not in anchors(path.read_text(encoding="utf-8")):
-            dead.append(target)
-    assert not dead
 
 
 def test_moved_pages_are_gone_and_their_places_exist():
@@ -89,7 +61,7 @@ def test_the_checker_sees_a_dead_link_and_a_dead_anchor(tmp_path):
 
 
 def test_the_relink_tool_moves_mentions_in_code(tmp_path):
-    """(Its links in Markdown: test_the_relink_tool_leaves_no_dead_link_in_the_pending_pages.)"""
+    """Mentions of moved pages in docstrings and comments are rewritten to the new places."""
     code = tmp_path / "module.py"
     code.write_text(
         '"""See docs/fleet.md, "What is rejected"; docs/nmea.md; the columns of docs/fleet.md."""\n',
@@ -99,13 +71,3 @@ def test_the_relink_tool_moves_mentions_in_code(tmp_path):
         '"""See docs/reference/fleet-files.md, "What is rejected"; docs/howto/import-nmea.md; '
         'the columns of docs/reference/fleet-files.md."""\n'
     )
-
-
-def test_the_pending_sets_hold_only_what_is_still_pending():
-    """Once a page is relinked or a generated page is in, it leaves its set, so the check is whole again."""
-    for name in sorted(PENDING_RELINK):
-        page = ROOT / name
-        dead = _dead(page) if page.exists() else []
-        assert dead, f"{name} has no dead link left: remove it from PENDING_RELINK"
-    for name in sorted(PENDING_PAGES):
-        assert not (ROOT / name).exists(), f"{name} exists now: remove it from PENDING_PAGES"
