@@ -20,11 +20,11 @@ run").
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
 
 from registration.cli.errors import writing
 from registration.cli.fleet_archive_output import PNG_OUTPUTS
+from registration.io.files.jsonfile import json_text
 
 __all__ = [
     "ARCHIVE_FOLDERS",
@@ -144,7 +144,7 @@ def _write_outputs(folder: Path, args: argparse.Namespace, result, outputs, writ
         write_frame(pd.DataFrame(estimate_rows(result)), folder / "estimates.csv", "csv")
     for name, text in (
         ("residuals.csv", "\n".join(residual_lines(outputs))),
-        ("summary.json", json.dumps(summary, indent=2, allow_nan=False)),
+        ("summary.json", json_text(summary).rstrip("\n")),
     ):
         with writing(folder / name):
             (folder / name).write_text(text + "\n")

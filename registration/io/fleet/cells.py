@@ -17,7 +17,7 @@ import numpy as np
 
 from registration.io.fleet.checks import attitude_check, radians_check, sigma_notes
 from registration.io.fleet.rejects import BadRows
-from registration.io.fleet.schema import FLEET_FILES, INF_ALLOWED, POSITIVE
+from registration.io.fleet.schema import FLEET_FILES, HELD, INF_ALLOWED, POSITIVE, held
 
 __all__ = ["FILE_COLUMNS", "OPTIONAL_IDS", "FileRead", "check_frame", "read_file"]
 
@@ -99,6 +99,18 @@ def _number_column(bad: BadRows, frame, column: str, unit: str, required: bool, 
         return "non_positive_range" if column == "range_m" and values[r] <= 0 else "out_of_range"
 
     bad.add(column, code, out, lambda r: f"{values[r]:g} {unit} is outside {span} {unit}")
+    if held(column):
+        size = np.abs(values)
+        beyond = ~out & np.isfinite(values) & (size > 0) & ((size < HELD[0]) | (size > HELD[1]))
+        bad.add(
+            column,
+            "out_of_range",
+            beyond,
+            lambda r: (
+                f"{values[r]:g} {unit} cannot be held: a sigma or prior lies within [{HELD[0]:g}, "
+                f"{HELD[1]:g}] {unit} (a prior may also be 0 or inf), as the solve squares and inverts it"
+            ),
+        )
     return values
 
 
