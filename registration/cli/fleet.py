@@ -213,7 +213,7 @@ def _register_into(path: Path, args: argparse.Namespace, tables):
     if association is not None:
         inputs["association"] = association_summary(association, args.method)
     written = write_outputs(path, problem, result, rows, inputs, plots=not args.no_plots)
-    if args.on_bad_row == "skip":
+    if args.on_bad_row == "skip" or tables.rejected:  # stop mode too: plots that cannot be used
         written.append(write_rejected(path, tables.rejected_frame()))
     if association is not None:
         written.append(_write_associations(path, tables, association))
