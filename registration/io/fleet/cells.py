@@ -15,11 +15,12 @@ from typing import Any
 
 import numpy as np
 
+from registration.io.files.csvrows import NA_TEXTS
 from registration.io.fleet.checks import attitude_check, radians_check, sigma_notes
 from registration.io.fleet.rejects import BadRows
 from registration.io.fleet.schema import FLEET_FILES, HELD, INF_ALLOWED, POSITIVE, held
 
-__all__ = ["FILE_COLUMNS", "OPTIONAL_IDS", "FileRead", "check_frame", "read_file"]
+__all__ = ["FILE_COLUMNS", "MEASURED", "OPTIONAL_IDS", "FileRead", "check_frame", "read_file"]
 
 #: Per table: (file column, table column, unit, required, (low, high) accepted in file units), the
 #: columns of :data:`registration.io.fleet.schema.FLEET_FILES` without their texts. unit "id" = an
@@ -28,6 +29,9 @@ FILE_COLUMNS: dict[str, tuple[tuple[str, str, str, bool, tuple[float, float] | N
     name: tuple((c.file, c.column, c.unit, c.required, c.limits) for c in table.columns)
     for name, table in FLEET_FILES.items()
 }
+#: The measured columns of the plots: an empty cell is "not measured", a NaN (the text ``nan``) a
+#: bad row (``non_finite``).
+MEASURED = ("range_m", "bearing_deg", "elevation_deg")
 #: Id columns of a table whose empty cells mean "no id" (not an error): a plot without a target id is
 #: associated (registration.fleet.association), one without a track id is tracked by the association.
 OPTIONAL_IDS = {"plots": ("target", "track"), "targets": ("name",)}
@@ -49,7 +53,11 @@ def _read_frame(path: Path):
     try:
         if fmt == "csv":
             blocks = list(
-                read_csv_blocks(path, dtype={"sensor": str, "platform": str, "target": str, "track": str})
+                read_csv_blocks(
+                    path,
+                    dtype={"sensor": str, "platform": str, "target": str, "track": str},
+                    nan_text=MEASURED,
+                )
             )
             frame = pd.concat(blocks, ignore_index=True) if len(blocks) > 1 else blocks[0]
         else:
@@ -79,7 +87,18 @@ def _number_column(bad: BadRows, frame, column: str, unit: str, required: bool, 
 
     raw = frame[column]
     values = pd.to_numeric(raw, errors="coerce").to_numpy(dtype=np.float64)
-    given = raw.notna().to_numpy() & ~raw.astype(str).str.strip().isin(["", "nan", "NaN"]).to_numpy()
+    text = raw.astype(str).str.strip()
+    given = raw.notna().to_numpy() & ~text.isin(["", "nan", "NaN"]).to_numpy()
+    if column in MEASURED:
+        bad.add(
+            column,
+            "non_finite",
+            raw.notna().to_numpy() & text.isin(NA_TEXTS).to_numpy(),
+            lambda r: (
+                f"{raw.iloc[r]!r} is not a measurement ({unit}); leave the cell empty where the sensor "
+                "does not measure it"
+            ),
+        )
     bad.add(
         column, "non_numeric", given & np.isnan(values), lambda r: f"{raw.iloc[r]!r} is not a number ({unit})"
     )

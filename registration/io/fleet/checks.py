@@ -38,6 +38,7 @@ __all__ = [
     "attitude_check",
     "sigma_notes",
     "channel_columns_check",
+    "missing_channel_notes",
 ]
 
 #: Fewest values of a bearing column (or of lat/lon) for the radians-in-degrees check.
@@ -188,3 +189,24 @@ def channel_columns_check(
             f"for sensor(s) {which} ({int(given.sum())} rows, the first row {first}): give their {sigma}, "
             f"or leave the plots' {column} cells empty"
         )
+
+
+def missing_channel_notes(
+    plots_path, plot_columns, sensors_path, sigmas: dict, sensor: np.ndarray
+) -> list[str]:
+    """A note per measured column the plots file lacks while the sensors file gives its sigma for
+    some sensors: their biases of that channel are then undetermined, for want of the column, not
+    of the data. ``sigmas``: the sensors file's columns in file units (NaN where empty or bad);
+    ``sensor`` (S,) ids."""
+    notes = []
+    for column, sigma, name in _CHANNEL_COLUMNS:
+        values = sigmas.get(sigma)
+        if column in plot_columns or values is None or not np.isfinite(values).any():
+            continue
+        which = [str(s) for s in sensor[np.isfinite(values)]]
+        listed = ", ".join(which[:5]) + (f" and {len(which) - 5} more" if len(which) > 5 else "")
+        notes.append(
+            f"{plots_path}: no column {column!r}, while {sensors_path} gives {sigma} for {listed}: "
+            f"their {name} biases stay undetermined (add the column, or leave {sigma} empty)"
+        )
+    return notes

@@ -51,17 +51,11 @@ from registration.fleet.data.plot_rows import RowProblem
 from registration.fleet.data.problem import FleetProblem, build_problem, plot_row_problems
 from registration.fleet.data.tables import DEFAULT_REFERENCE_SIGMA
 from registration.io.fleet.cells import FILE_COLUMNS, FileRead, read_file
-from registration.io.fleet.checks import MIN_UNIT_CHECK_VALUES, channel_columns_check
+from registration.io.fleet.checks import MIN_UNIT_CHECK_VALUES, channel_columns_check, missing_channel_notes
 from registration.io.fleet.folder import TABLE_NAMES
 from registration.io.fleet.memory import TablesSource
-from registration.io.fleet.rejects import (
-    SET_ASIDE_CODES,
-    BadRows,
-    NoValidPlotsError,
-    RejectedRow,
-    check_mode,
-    rejected_frame,
-)
+from registration.io.fleet.rejects import BadRows, NoValidPlotsError, RejectedRow, check_mode, rejected_frame
+from registration.io.fleet.setaside import check_duplicates, set_aside_notes, stopping_rows
 
 __all__ = ["FILE_COLUMNS", "FleetTables", "read_fleet_tables", "needs_association", "MIN_UNIT_CHECK_VALUES"]
 
@@ -325,10 +319,17 @@ def read_fleet_tables(
     if "reference" in tables:
         _check_reference_positions(tables["reference"], paths["reference"], bads["reference"])
     _check_ids(tables, paths, bads)
-    _check_duplicates(tables["plots"], bads["plots"])
+    check_duplicates(tables["plots"], bads["plots"])
     left_out = {k: f.file_rows for k, f in files.items() if f.file_rows is not None}  # unused platforms
     out = _skip_rows(tables, paths, bads, left_out)
     out.notes = [n for f in files.values() for n in f.notes] + set_aside_notes(out.rejected, paths["plots"])
+    out.notes += missing_channel_notes(
+        paths["plots"],
+        files["plots"].columns,
+        paths["sensors"],
+        files["sensors"].numbers,
+        tables["sensors"]["sensor"],
+    )
     out.targets = tables.get("targets")
     return out
 
@@ -349,41 +350,6 @@ def _read_files(paths: dict[str, Path]) -> dict[str, FileRead]:
     return files
 
 
-def _check_duplicates(plots: dict, bad: BadRows) -> None:
-    """A plot row equal in every column to an earlier one is set aside (``duplicate``): a recorder
-    that writes each plot twice would count it twice in the solve."""
-    import pandas as pd
-
-    frame = pd.DataFrame({k: np.asarray(v) for k, v in plots.items()})
-    if frame.empty:
-        return
-    twice = frame.duplicated(keep="first").to_numpy()
-    if not twice.any():
-        return
-    first = frame.groupby(list(frame.columns), dropna=False, sort=False).ngroup().to_numpy()
-    earliest = {int(g): int(r) for r, g in reversed(list(enumerate(first)))}
-    bad.add(
-        "*",
-        "duplicate",
-        twice,
-        lambda r: f"the same plot as row {bad.file_row(earliest[int(first[r])])}, in every column",
-    )
-
-
-def set_aside_notes(rejected: list[RejectedRow], plots_path) -> list[str]:
-    """One note per reason of :data:`SET_ASIDE_CODES` with plots set aside, giving their count."""
-    what = {
-        "outside_navigation": "outside their platform's navigation time span",
-        "duplicate": "exactly duplicated (the first of each kept)",
-    }
-    notes = []
-    for code in SET_ASIDE_CODES:
-        n = sum(1 for r in rejected if r.code == code and r.file == str(plots_path))
-        if n:
-            notes.append(f"{plots_path}: {n} plot row(s) {what[code]} set aside ({code}; see rejected.csv)")
-    return notes
-
-
 def _check_reference_positions(ref: dict, path: Path, bad: BadRows) -> None:
     """A reference position as lat/lon/alt or x/y/z, every cell of it given (a bad row else); an
     empty sigma is the default one."""
@@ -397,17 +363,6 @@ def _check_reference_positions(ref: dict, path: Path, bad: BadRows) -> None:
         bad.add(column, "non_finite", np.isnan(ref[key]), _always(reason))
 
 
-def _stopping(rejected: list[RejectedRow]) -> list[RejectedRow]:
-    """The rows set aside that stop a run in stop mode: all but :data:`SET_ASIDE_CODES` (and the
-    references of targets left without plots by them)."""
-    set_aside = any(r.code in SET_ASIDE_CODES for r in rejected)
-    return [
-        r
-        for r in rejected
-        if r.code not in SET_ASIDE_CODES and not (set_aside and r.code == "unknown_target")
-    ]
-
-
 def _first_bad_row_stops(plots, navigation, sensors, platforms, reference, targets=None) -> FleetTables:
     """Stop mode: every row is checked as in skip mode, then the first bad row of the plots file (else
     of the reference file) raises, so the error names the earliest row whatever column is wrong."""
@@ -417,16 +372,16 @@ def _first_bad_row_stops(plots, navigation, sensors, platforms, reference, targe
         )
     except NoValidPlotsError as exc:
         rejected = exc.rejected
-        if not _stopping(rejected):
+        if not stopping_rows(rejected):
             raise
     else:
         rejected = tables.rejected
         if not rejected:
             tables.file_rows = {k: v for k, v in tables.file_rows.items() if k == "navigation"}
             return tables
-        if not _stopping(rejected):
+        if not stopping_rows(rejected):
             return tables  # only plots that cannot be used were set aside, with a note
-    rejected = _stopping(rejected)
+    rejected = stopping_rows(rejected)
     order = {str(Path(p)): k for k, p in enumerate((plots, reference)) if p is not None}
     first = min(rejected, key=lambda r: (order.get(r.file, len(order)), r.row))
     raise ValueError(f"{first.file}: row {first.row}, column {first.column!r}: {first.reason}")
