@@ -314,7 +314,14 @@ def _plots(out: Path, problem, result, truth) -> list[Path]:
 
 def redundancy_check(result, n_plots: int, window_s: float) -> None:
     """A ValueError (exit 2, before any report) when the solve left nothing to check the fit with:
-    the plots fix the states exactly (no degree of freedom), so the estimates mean nothing."""
+    the plots fix the states exactly (no degree of freedom), so the estimates mean nothing; or the
+    online filter used no plot."""
+    if is_online(result) and result.n_plots_used == 0:
+        raise ValueError(
+            f"the online filter used none of the {result.n_plots_read} plots: every target was excluded "
+            "(seen by one sensor only, without a reference, or its position not determined by its plots); "
+            "--method batch names the cause per target"
+        )
     report = chi_square_report(result)
     if report is None or (report.samples >= 1 and np.isfinite(report.mean)):
         return

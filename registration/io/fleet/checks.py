@@ -134,11 +134,9 @@ def attitude_check(path, columns: dict, platform: np.ndarray) -> list[str]:
                 r = int(rows[np.argmax(np.abs(h))])
                 raise ValueError(
                     f"{path}: row {r}, column 'heading_deg': the {rows.size} headings of platform "
-                    f"{str(pid)!r} all lie within +-{peak:.3g}, and read as radians they follow its course "
-                    f"over ground (from lat_deg, lon_deg; median difference {as_radians:.1f} deg over "
-                    f"{course.size} stretches of its track) while read as degrees they do not "
-                    f"({as_degrees:.1f} deg): radians? heading_deg, pitch_deg and roll_deg are in degrees "
-                    "(numpy.degrees converts)"
+                    f"{str(pid)!r} lie within +-{peak:.3g} and follow its course only read as radians "
+                    f"(median miss {as_radians:.1f} deg, as degrees {as_degrees:.1f} deg): radians? "
+                    "heading_deg, pitch_deg and roll_deg are in degrees"
                 )
         pr = np.concatenate([columns["pitch_deg"][rows], columns["roll_deg"][rows]])
         if np.max(np.abs(pr)) <= SMALL_ATTITUDE and np.ptp(pr) > 0:
