@@ -81,12 +81,23 @@ def _id_column(bad: BadRows, frame, column: str, required: bool = True) -> np.nd
     return np.where(missing, "", text) if text.size else text
 
 
+def _float_or_nan(cell: object) -> float:
+    """A cell as float() reads its text (a huge integer is inf), NaN where it is not a number."""
+    try:
+        return float(str(cell).strip())
+    except ValueError:
+        return math.nan
+
+
 def _number_column(bad: BadRows, frame, column: str, unit: str, required: bool, limits) -> np.ndarray:
     """Numbers in file units; NaN for an empty optional cell. Problems name file, row, column, unit."""
     import pandas as pd
 
     raw = frame[column]
-    values = pd.to_numeric(raw, errors="coerce").to_numpy(dtype=np.float64)
+    try:
+        values = pd.to_numeric(raw, errors="coerce").to_numpy(dtype=np.float64)
+    except OverflowError:  # pandas, on an integer of hundreds of digits: cell by cell, as float() reads it
+        values = np.array([_float_or_nan(v) for v in raw], dtype=np.float64)
     text = raw.astype(str).str.strip()
     given = raw.notna().to_numpy() & ~text.isin(["", "nan", "NaN"]).to_numpy()
     if column in MEASURED:
@@ -232,6 +243,8 @@ def check_frame(
         out[key] = np.radians(numbers[column]) if unit == "deg" else numbers[column]
         if column.startswith("prior_"):
             out[key] = np.where(np.isnan(out[key]), np.inf, out[key])  # empty: no prior
+        elif column.startswith("lever_"):
+            out[key] = np.where(np.isnan(out[key]), 0.0, out[key])  # empty: the default, 0
     ok = bad.ok()
     numbers = {c: np.where(ok, v, np.nan) for c, v in numbers.items()}
     if whole_file:

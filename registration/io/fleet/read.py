@@ -170,6 +170,10 @@ def _file_error(exc: ValueError, paths: dict, file_rows: dict | None = None) -> 
             rest = re.sub(rf"^{lib} ", "", text)
             if m.group(2) and file_rows and name in file_rows:
                 rest = re.sub(r"^row \d+", f"row {int(file_rows[name][int(m.group(2))])}", rest)
+            named = re.match(r"^row (\d+): (\w+) ", rest)
+            files = {key: column for column, key, *_ in FILE_COLUMNS[name]}
+            if named and named.group(2) in files:  # the row's column, as the file names it
+                rest = f"row {named.group(1)}, column {files[named.group(2)]!r}: " + rest[named.end(1) + 2 :]
             # the library speaks SI units and radians; say so where its message quotes an angle
             text = (
                 f"{path}: "
