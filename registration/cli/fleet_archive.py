@@ -196,6 +196,11 @@ def run_archive(args: argparse.Namespace) -> int:
             "--partition-s: give the archive as --tables DIR (Parquet or CSV files, or folders of "
             "Parquet files)"
         )
+    if not args.window_s > 0:
+        raise ValueError(
+            f"--window-s {args.window_s:g}: the partitioned solver (--partition-s, --workers, --scheduler) "
+            "needs windows of a length > 0 s"
+        )
     if getattr(args, "on_bad_row", "stop") != "stop":
         raise ValueError(
             "--on-bad-row skip: not with --partition-s (an archive stops at its first bad row); "

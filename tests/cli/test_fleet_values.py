@@ -122,3 +122,11 @@ def test_the_json_writer_writes_nan_and_inf_as_null(tmp_path):
     assert path.read_text() == '{\n  "x": null\n}\n' and not path.with_name("s.json.tmp").exists()
     with pytest.raises(TypeError):
         json_text({"x": object()})
+
+
+def test_window_s_0_with_the_partitioned_solver_names_the_option(simulated, tmp_path, capsys):
+    """Before: 'window_s: the partitioned solver needs target windows', not the option's name."""
+    out = tmp_path / "out"
+    argv = ["fleet", "register", "--tables", str(simulated), "--out", str(out), "--no-plots"]
+    assert main([*argv, "--window-s", "0", "--partition-s", "30"]) == 2
+    assert "--window-s 0" in capsys.readouterr().err and not out.exists()
