@@ -81,13 +81,11 @@ class RowShape:
         if self.fields < self.header:
             return (
                 f"line {self.line} has {self.fields} fields, the header {self.header}: "
-                "the row is cut short (a truncated or half-written line?); "
-                f"every row needs all {self.header} fields, an empty field where a value is not given"
+                "cut short (a truncated or half-written line?); leave a field empty, not out"
             )
         return (
             f"line {self.line} has {self.fields} fields, the header {self.header}: "
-            "fields that no column is named for (a missing line break, or a separator inside an unquoted "
-            "value?)"
+            "fields no column is named for (a missing line break, or a separator in an unquoted value?)"
         )
 
 
