@@ -1,7 +1,8 @@
 """Exit codes and error reporting shared by every ``registration`` sub-command.
 
 Every failure the user can cause or meet (a bad option, an unreadable input, an unwritable output,
-Ctrl-C, a closed pipe) ends with at most one line on standard error and one of these exit codes;
+Ctrl-C, a closed pipe) ends with at most one line on standard error (at most :data:`MAX_MESSAGE`
+characters: a longer message names a file holding the whole) and one of these exit codes;
 ``REGISTRATION_DEBUG=1`` in the environment adds the Python traceback.
 
 ====  ==========================================================================================
@@ -28,6 +29,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 import sys
 import tempfile
 import traceback
@@ -44,6 +46,8 @@ __all__ = [
     "EXIT_BROKEN_PIPE",
     "DEBUG_ENV",
     "EXIT_CODES_EPILOG",
+    "MAX_MESSAGE",
+    "short_message",
     "CODE_OPTIONS",
     "exit_codes_epilog",
     "CommandError",
@@ -250,10 +254,31 @@ def _debug() -> bool:
     return os.environ.get(DEBUG_ENV, "").strip() not in ("", "0")
 
 
+#: The longest error line printed (characters); a longer message (a list of every excluded target)
+#: is cut, and the whole of it written to a file the line names.
+MAX_MESSAGE = 300
+
+
+def short_message(line: str) -> str:
+    """``line`` if at most :data:`MAX_MESSAGE` characters long (a path counted as a word), else its
+    start (cut after a ``;`` or ``,`` where one is near) and the name of a file holding the whole.
+    The file is a new one in the system's temporary folder, so a failed run leaves --out as it was."""
+    paths = sum(len(m) - 4 for m in re.findall(r"(?:[A-Za-z]:)?[/\\][^\s:'\",;()]+", line))
+    if len(line) - paths <= MAX_MESSAGE:
+        return line  # the paths it names are counted as one word: their length is not the message's
+    fd, name = tempfile.mkstemp(prefix="registration-error-", suffix=".txt")
+    with os.fdopen(fd, "w") as f:
+        f.write(line + "\n")
+    tail = f" ... (the whole message, {len(line)} characters: {name})"
+    head = line[: max(MAX_MESSAGE - len(tail), 40) + paths]
+    cut = max(head.rfind("; "), head.rfind(", "))
+    return (head[:cut] if cut > len(head) // 2 else head) + tail
+
+
 def _fail(prog: str, message: str, code: int) -> int:
     if _debug():
         traceback.print_exc()
-    print(f"{prog}: error: {message}", file=sys.stderr)
+    print(short_message(f"{prog}: error: {message}"), file=sys.stderr)
     return code
 
 

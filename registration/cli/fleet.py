@@ -184,7 +184,7 @@ def run_register(args: argparse.Namespace) -> int:
 def _register_into(path: Path, args: argparse.Namespace, tables):
     """Register the tables, print the report and write the outputs into ``path``: (result, files)."""
     from registration.cli.fleet_association import association_summary, online_note
-    from registration.cli.fleet_output import estimate_rows, print_report, write_outputs
+    from registration.cli.fleet_output import estimate_rows, print_report, redundancy_check, write_outputs
     from registration.io.fleet.read import needs_association
 
     association = None
@@ -192,6 +192,7 @@ def _register_into(path: Path, args: argparse.Namespace, tables):
         problem, result = _solve(tables, args.window_s, args.method)
     else:
         association, problem, result = _associate(tables, args.window_s, args.method)
+    redundancy_check(result, problem.n_plots, args.window_s)
     rows = estimate_rows(result)
     header = [
         "Fleet tables " + ", ".join(str(p) for p in tables.paths.values()) + ":",
@@ -212,7 +213,7 @@ def _register_into(path: Path, args: argparse.Namespace, tables):
     if association is not None:
         inputs["association"] = association_summary(association, args.method)
     written = write_outputs(path, problem, result, rows, inputs, plots=not args.no_plots)
-    if args.on_bad_row == "skip":
+    if args.on_bad_row == "skip" or tables.rejected:  # stop mode too: plots that cannot be used
         written.append(write_rejected(path, tables.rejected_frame()))
     if association is not None:
         written.append(_write_associations(path, tables, association))

@@ -20,11 +20,11 @@ run").
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
 
 from registration.cli.errors import writing
 from registration.cli.fleet_archive_output import PNG_OUTPUTS
+from registration.io.files.jsonfile import json_text
 
 __all__ = [
     "ARCHIVE_FOLDERS",
@@ -144,7 +144,7 @@ def _write_outputs(folder: Path, args: argparse.Namespace, result, outputs, writ
         write_frame(pd.DataFrame(estimate_rows(result)), folder / "estimates.csv", "csv")
     for name, text in (
         ("residuals.csv", "\n".join(residual_lines(outputs))),
-        ("summary.json", json.dumps(summary, indent=2, allow_nan=False)),
+        ("summary.json", json_text(summary).rstrip("\n")),
     ):
         with writing(folder / name):
             (folder / name).write_text(text + "\n")
@@ -195,6 +195,11 @@ def run_archive(args: argparse.Namespace) -> int:
         raise ValueError(
             "--partition-s: give the archive as --tables DIR (Parquet or CSV files, or folders of "
             "Parquet files)"
+        )
+    if not args.window_s > 0:
+        raise ValueError(
+            f"--window-s {args.window_s:g}: the partitioned solver (--partition-s, --workers, --scheduler) "
+            "needs windows of a length > 0 s"
         )
     if getattr(args, "on_bad_row", "stop") != "stop":
         raise ValueError(

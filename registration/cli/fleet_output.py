@@ -6,7 +6,6 @@ innovations as information), ``estimates.csv``,
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 import numpy as np
@@ -15,8 +14,17 @@ from registration.cli.errors import consistency_gate, consistency_line, writing
 from registration.core.consistency import ConsistencyReport
 from registration.fleet.combinations import sigma_text
 from registration.fleet.data.layout import FILE_UNITS
+from registration.io.files.jsonfile import write_json
 
-__all__ = ["chi_square_report", "estimate_rows", "estimate_table", "print_report", "write_outputs", "gate"]
+__all__ = [
+    "chi_square_report",
+    "estimate_rows",
+    "estimate_table",
+    "print_report",
+    "write_outputs",
+    "gate",
+    "redundancy_check",
+]
 
 
 def is_online(result) -> bool:
@@ -279,7 +287,7 @@ def write_outputs(
         written.append(out / name)
     path = out / "summary.json"
     with writing(path):
-        path.write_text(json.dumps(_summary(result, rows, inputs), indent=2, allow_nan=False) + "\n")
+        write_json(path, _summary(result, rows, inputs))
     written.append(path)
     if plots:
         written += _plots(out, problem, result, truth)
@@ -302,6 +310,28 @@ def _plots(out: Path, problem, result, truth) -> list[Path]:
         with writing(out / name):
             written.append(draw(out / name))
     return written
+
+
+def redundancy_check(result, n_plots: int, window_s: float) -> None:
+    """A ValueError (exit 2, before any report) when the solve left nothing to check the fit with:
+    the plots fix the states exactly (no degree of freedom), so the estimates mean nothing; or the
+    online filter used no plot."""
+    if is_online(result) and result.n_plots_used == 0:
+        raise ValueError(
+            f"the online filter used none of the {result.n_plots_read} plots: every target was excluded "
+            "(seen by one sensor only, without a reference, or its position not determined by its plots); "
+            "--method batch names the cause per target"
+        )
+    report = chi_square_report(result)
+    if report is None or (report.samples >= 1 and np.isfinite(report.mean)):
+        return
+    cause = (
+        f"--window-s {window_s:g}: a window of {window_s:g} s gives each target a position per window, "
+        "which takes up the plots; give a longer --window-s"
+        if window_s < 1.0
+        else f"{n_plots} plot(s) are too few for the states they must fix; give more plots"
+    )
+    raise ValueError(f"no redundancy: the fit has {report.samples} degrees of freedom left ({cause})")
 
 
 def gate(prog: str, result, allow: bool) -> int:

@@ -12,7 +12,6 @@ Units at this edge: metres, degrees (``_deg``) for positions of the target, mill
 from __future__ import annotations
 
 import argparse
-import json
 
 import numpy as np
 
@@ -22,6 +21,7 @@ from registration.cli.staging import staged_outputs
 from registration.fusion import COMPONENTS, parse_components
 from registration.fusion.evaluation import ROW_LABELS, FusionEvaluation, evaluate
 from registration.fusion.scenarios import paper_scenario
+from registration.io.files.jsonfile import write_json
 
 #: What `registration fuse` writes into --out (the outputs of an earlier run there are replaced whole).
 FUSE_OUTPUTS = frozenset({"summary.json", "measurements.png", "fused.png"})
@@ -323,7 +323,7 @@ def run(args) -> int:
     with staged_outputs(out, "registration fuse", FUSE_OUTPUTS) as folder:
         written = [folder.path / "summary.json"]
         with writing(written[0]):
-            written[0].write_text(json.dumps(ev.to_json(), indent=2) + "\n")
+            write_json(written[0], ev.to_json())
         if not args.no_plots:
             from registration.fusion.plots import write_plots
 

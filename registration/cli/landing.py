@@ -18,7 +18,6 @@ and milliseconds (``_ms``) for clock offsets; SI and radians inside.
 from __future__ import annotations
 
 import argparse
-import json
 import time
 from dataclasses import replace
 
@@ -27,6 +26,7 @@ import numpy as np
 from registration.cli.errors import prepare_out, writing
 from registration.cli.options import add_no_plots, add_out, add_seed
 from registration.cli.staging import staged_outputs
+from registration.io.files.jsonfile import write_json
 from registration.landing import (
     FUSION_METHODS,
     LandingConfig,
@@ -348,7 +348,7 @@ def run(args: argparse.Namespace) -> int:
                 files = write_plots(folder.path, mc, fine)
         summary = _summary(args, sc, config, elapsed, bins, nees, files)
         with writing(folder.path / "summary.json"):
-            (folder.path / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
+            write_json(folder.path / "summary.json", summary)
     plots = f" and {', '.join(files)}" if files else ""
     print(f"wrote {folder.final(folder.path / 'summary.json')}{plots} ({elapsed:.1f} s Monte Carlo)")
     return 0

@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import argparse
 import copy
-import json
 from pathlib import Path
 
 import numpy as np
@@ -34,6 +33,7 @@ from registration.cli.errors import (
 from registration.cli.options import add_dask, add_no_plots, add_out, add_seed, check_dask
 from registration.cli.simulate import add_scenario_arguments, check_scenario_arguments, parse_motion
 from registration.cli.staging import staged_outputs
+from registration.io.files.jsonfile import write_json
 from registration.online.distributed import DEFAULT_CHUNK_RUNS
 
 #: --sweep NAME -> the type of its values (the scenario options of the same name)
@@ -190,7 +190,7 @@ def run(args: argparse.Namespace) -> int:
     with staged_outputs(out, "registration montecarlo", MONTECARLO_OUTPUTS) as folder:
         written = [folder.path / "montecarlo.json"]
         with writing(written[0]):
-            written[0].write_text(json.dumps(summary, indent=1) + "\n")
+            write_json(written[0], summary, indent=1)
         if not args.no_plots:
             with writing(folder.path / "montecarlo.png"):
                 result.plot(folder.path / "montecarlo.png")

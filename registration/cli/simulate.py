@@ -4,7 +4,6 @@ Wang et al. 2011 end to end, with a report and plots."""
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
 
 import numpy as np
@@ -18,6 +17,7 @@ from registration.cli.errors import (
 )
 from registration.cli.options import add_no_plots, add_out, add_seed
 from registration.cli.staging import staged_outputs
+from registration.io.files.jsonfile import write_json
 from registration.online import DEFAULT_LINEARIZATION, LINEARIZATIONS, Q_MODES, T_VARIANTS
 
 HELP = (
@@ -244,7 +244,7 @@ def _write(path: Path, args, scenario, config, result, stats, noise_free, rows) 
     }
     written = [path / "summary.json"]
     with writing(written[0]):
-        written[0].write_text(json.dumps(summary, indent=2) + "\n")
+        write_json(written[0], summary)
     if not args.no_plots:
         from registration.online.plots import plot_differences, plot_estimates, plot_tracks
 

@@ -117,11 +117,6 @@ def _broken(simulated, tmp_path, name, edit):
             lambda f: f.__setitem__("sensor", np.where(f.index == 11, "X1", f["sensor"])),
             ["plots.csv", "row 11", "'sensor'", "unknown sensor 'X1'"],
         ),
-        (
-            "navigation",
-            lambda f: f.__setitem__("time_s", f["time_s"] * 0.5),
-            ["plots.csv", "row", "outside", "navigation"],
-        ),
     ],
 )
 def test_bad_tables_exit_2_naming_file_row_column(simulated, tmp_path, capsys, name, edit, words):

@@ -433,7 +433,8 @@ def test_a_navigation_error_names_the_file_row_with_ignored_rows_before_it(scena
     good.to_csv(paths["navigation"], index=False)
     for mode in ("stop", "skip"):
         with pytest.raises(
-            ValueError, match=rf"navigation.csv: row {n_extra + 4}: time .* does not increase"
+            ValueError,
+            match=rf"navigation.csv: row {n_extra + 4}, column 'time_s': time .* does not increase",
         ):
             read_fleet_tables(*(paths[n] for n in NAMES), on_bad_row=mode).problem()
 

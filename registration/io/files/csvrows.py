@@ -30,8 +30,30 @@ from typing import Iterator
 
 import numpy as np
 
-__all__ = ["SHAPE_COLUMN", "RowShape", "read_csv_blocks", "count_fields", "BLOCK_BYTES"]
+__all__ = ["NA_TEXTS", "SHAPE_COLUMN", "RowShape", "read_csv_blocks", "count_fields", "BLOCK_BYTES"]
 
+#: The texts pandas reads as a missing cell by default (``pandas.read_csv``'s ``na_values``).
+NA_TEXTS = (
+    "",
+    "#N/A",
+    "#N/A N/A",
+    "#NA",
+    "-1.#IND",
+    "-1.#QNAN",
+    "-NaN",
+    "-nan",
+    "1.#IND",
+    "1.#QNAN",
+    "<NA>",
+    "N/A",
+    "NA",
+    "NULL",
+    "NaN",
+    "None",
+    "n/a",
+    "nan",
+    "null",
+)
 #: The column of a frame of :func:`read_csv_blocks` with a bad line: None or the row's :class:`RowShape`.
 SHAPE_COLUMN = "<row shape>"
 #: Bytes read per block (the last line of a block is completed from the next read).
@@ -59,13 +81,11 @@ class RowShape:
         if self.fields < self.header:
             return (
                 f"line {self.line} has {self.fields} fields, the header {self.header}: "
-                "the row is cut short (a truncated or half-written line?); "
-                f"every row needs all {self.header} fields, an empty field where a value is not given"
+                "cut short (a truncated or half-written line?); leave a field empty, not out"
             )
         return (
             f"line {self.line} has {self.fields} fields, the header {self.header}: "
-            "fields that no column is named for (a missing line break, or a separator inside an unquoted "
-            "value?)"
+            "fields no column is named for (a missing line break, or a separator in an unquoted value?)"
         )
 
 
@@ -209,10 +229,14 @@ def _header(data: bytes, lines: _Lines, path) -> tuple[list[str], int]:
     return names, i
 
 
-def read_csv_blocks(path, dtype: dict | None = None, block_bytes: int = BLOCK_BYTES) -> Iterator["object"]:
+def read_csv_blocks(
+    path, dtype: dict | None = None, block_bytes: int = BLOCK_BYTES, nan_text: tuple[str, ...] = ()
+) -> Iterator["object"]:
     """The data rows of a CSV file as DataFrames of whole lines, in file order, with the header's
     columns (``dtype``: pandas dtypes by column name) and, in a block with a line of another
-    number of fields than the header, :data:`SHAPE_COLUMN`. Rows are the
+    number of fields than the header, :data:`SHAPE_COLUMN`. In the columns ``nan_text`` only an
+    empty cell is missing: a text such as ``nan`` is kept as text (pandas reads the texts of
+    :data:`NA_TEXTS` as missing elsewhere). Rows are the
     non-blank lines after the header, one per line (a quoted value may span lines). ValueError
     for a file with no header line; pandas' errors for a file it cannot parse."""
     with open(path, "rb") as f:
@@ -230,17 +254,35 @@ def read_csv_blocks(path, dtype: dict | None = None, block_bytes: int = BLOCK_BY
                 line += int(np.searchsorted(lines.newlines, skip))
                 data, lines = data[skip:], _scan(data[skip:], final=not chunk)
             if lines.cut and (~lines.blank).any():
-                yield _parse(data, lines, names, line, dtype)
+                yield _parse(data, lines, names, line, dtype, nan_text)
                 empty = False
             line += int(np.searchsorted(lines.newlines, lines.cut))
             carry = data[lines.cut :]
             if not chunk:
                 break
     if empty:  # a header and no rows
-        yield _parse(b"", _scan(b"", final=True), names, line, dtype)
+        yield _parse(b"", _scan(b"", final=True), names, line, dtype, nan_text)
 
 
-def _parse(data: bytes, lines: _Lines, names: list[str], line: int, dtype: dict | None):
+def _missing(names: list[str], nan_text: tuple[str, ...]) -> dict:
+    """pandas.read_csv's arguments for the missing cells: its defaults, but in the columns
+    ``nan_text`` only an empty cell."""
+    if not any(n in nan_text for n in names):
+        return {}
+    return {
+        "keep_default_na": False,
+        "na_values": {n: [""] if n in nan_text else list(NA_TEXTS) for n in names},
+    }
+
+
+def _parse(
+    data: bytes,
+    lines: _Lines,
+    names: list[str],
+    line: int,
+    dtype: dict | None,
+    nan_text: tuple[str, ...] = (),
+):
     """One block of whole lines (``line``: the physical line of its first byte) as a DataFrame."""
     import pandas as pd
 
@@ -258,6 +300,7 @@ def _parse(data: bytes, lines: _Lines, names: list[str], line: int, dtype: dict 
         index_col=False,
         skipinitialspace=True,
         dtype={k: v for k, v in (dtype or {}).items() if k in names},
+        **_missing(names + spare, nan_text),
     )
     if len(frame) != fields.size:
         raise ValueError(

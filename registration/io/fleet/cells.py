@@ -15,11 +15,12 @@ from typing import Any
 
 import numpy as np
 
+from registration.io.files.csvrows import NA_TEXTS
 from registration.io.fleet.checks import attitude_check, radians_check, sigma_notes
 from registration.io.fleet.rejects import BadRows
-from registration.io.fleet.schema import FLEET_FILES, INF_ALLOWED, POSITIVE
+from registration.io.fleet.schema import FLEET_FILES, HELD, INF_ALLOWED, POSITIVE, held
 
-__all__ = ["FILE_COLUMNS", "OPTIONAL_IDS", "FileRead", "check_frame", "read_file"]
+__all__ = ["FILE_COLUMNS", "MEASURED", "OPTIONAL_IDS", "FileRead", "check_frame", "read_file"]
 
 #: Per table: (file column, table column, unit, required, (low, high) accepted in file units), the
 #: columns of :data:`registration.io.fleet.schema.FLEET_FILES` without their texts. unit "id" = an
@@ -28,6 +29,9 @@ FILE_COLUMNS: dict[str, tuple[tuple[str, str, str, bool, tuple[float, float] | N
     name: tuple((c.file, c.column, c.unit, c.required, c.limits) for c in table.columns)
     for name, table in FLEET_FILES.items()
 }
+#: The measured columns of the plots: an empty cell is "not measured", a NaN (the text ``nan``) a
+#: bad row (``non_finite``).
+MEASURED = ("range_m", "bearing_deg", "elevation_deg")
 #: Id columns of a table whose empty cells mean "no id" (not an error): a plot without a target id is
 #: associated (registration.fleet.association), one without a track id is tracked by the association.
 OPTIONAL_IDS = {"plots": ("target", "track"), "targets": ("name",)}
@@ -49,7 +53,11 @@ def _read_frame(path: Path):
     try:
         if fmt == "csv":
             blocks = list(
-                read_csv_blocks(path, dtype={"sensor": str, "platform": str, "target": str, "track": str})
+                read_csv_blocks(
+                    path,
+                    dtype={"sensor": str, "platform": str, "target": str, "track": str},
+                    nan_text=MEASURED,
+                )
             )
             frame = pd.concat(blocks, ignore_index=True) if len(blocks) > 1 else blocks[0]
         else:
@@ -73,13 +81,35 @@ def _id_column(bad: BadRows, frame, column: str, required: bool = True) -> np.nd
     return np.where(missing, "", text) if text.size else text
 
 
+def _float_or_nan(cell: object) -> float:
+    """A cell as float() reads its text (a huge integer is inf), NaN where it is not a number."""
+    try:
+        return float(str(cell).strip())
+    except ValueError:
+        return math.nan
+
+
 def _number_column(bad: BadRows, frame, column: str, unit: str, required: bool, limits) -> np.ndarray:
     """Numbers in file units; NaN for an empty optional cell. Problems name file, row, column, unit."""
     import pandas as pd
 
     raw = frame[column]
-    values = pd.to_numeric(raw, errors="coerce").to_numpy(dtype=np.float64)
-    given = raw.notna().to_numpy() & ~raw.astype(str).str.strip().isin(["", "nan", "NaN"]).to_numpy()
+    try:
+        values = pd.to_numeric(raw, errors="coerce").to_numpy(dtype=np.float64)
+    except OverflowError:  # pandas, on an integer of hundreds of digits: cell by cell, as float() reads it
+        values = np.array([_float_or_nan(v) for v in raw], dtype=np.float64)
+    text = raw.astype(str).str.strip()
+    given = raw.notna().to_numpy() & ~text.isin(["", "nan", "NaN"]).to_numpy()
+    if column in MEASURED:
+        bad.add(
+            column,
+            "non_finite",
+            raw.notna().to_numpy() & text.isin(NA_TEXTS).to_numpy(),
+            lambda r: (
+                f"{raw.iloc[r]!r} is not a measurement ({unit}); leave the cell empty where the sensor "
+                "does not measure it"
+            ),
+        )
     bad.add(
         column, "non_numeric", given & np.isnan(values), lambda r: f"{raw.iloc[r]!r} is not a number ({unit})"
     )
@@ -99,6 +129,18 @@ def _number_column(bad: BadRows, frame, column: str, unit: str, required: bool, 
         return "non_positive_range" if column == "range_m" and values[r] <= 0 else "out_of_range"
 
     bad.add(column, code, out, lambda r: f"{values[r]:g} {unit} is outside {span} {unit}")
+    if held(column):
+        size = np.abs(values)
+        beyond = ~out & np.isfinite(values) & (size > 0) & ((size < HELD[0]) | (size > HELD[1]))
+        bad.add(
+            column,
+            "out_of_range",
+            beyond,
+            lambda r: (
+                f"{values[r]:g} {unit} cannot be held: a sigma or prior lies within [{HELD[0]:g}, "
+                f"{HELD[1]:g}] {unit} (a prior may also be 0 or inf), as the solve squares and inverts it"
+            ),
+        )
     return values
 
 
@@ -201,6 +243,8 @@ def check_frame(
         out[key] = np.radians(numbers[column]) if unit == "deg" else numbers[column]
         if column.startswith("prior_"):
             out[key] = np.where(np.isnan(out[key]), np.inf, out[key])  # empty: no prior
+        elif column.startswith("lever_"):
+            out[key] = np.where(np.isnan(out[key]), 0.0, out[key])  # empty: the default, 0
     ok = bad.ok()
     numbers = {c: np.where(ok, v, np.nan) for c, v in numbers.items()}
     if whole_file:

@@ -38,6 +38,7 @@ __all__ = [
     "attitude_check",
     "sigma_notes",
     "channel_columns_check",
+    "missing_channel_notes",
 ]
 
 #: Fewest values of a bearing column (or of lat/lon) for the radians-in-degrees check.
@@ -133,11 +134,9 @@ def attitude_check(path, columns: dict, platform: np.ndarray) -> list[str]:
                 r = int(rows[np.argmax(np.abs(h))])
                 raise ValueError(
                     f"{path}: row {r}, column 'heading_deg': the {rows.size} headings of platform "
-                    f"{str(pid)!r} all lie within +-{peak:.3g}, and read as radians they follow its course "
-                    f"over ground (from lat_deg, lon_deg; median difference {as_radians:.1f} deg over "
-                    f"{course.size} stretches of its track) while read as degrees they do not "
-                    f"({as_degrees:.1f} deg): radians? heading_deg, pitch_deg and roll_deg are in degrees "
-                    "(numpy.degrees converts)"
+                    f"{str(pid)!r} lie within +-{peak:.3g} and follow its course only read as radians "
+                    f"(median miss {as_radians:.1f} deg, as degrees {as_degrees:.1f} deg): radians? "
+                    "heading_deg, pitch_deg and roll_deg are in degrees"
                 )
         pr = np.concatenate([columns["pitch_deg"][rows], columns["roll_deg"][rows]])
         if np.max(np.abs(pr)) <= SMALL_ATTITUDE and np.ptp(pr) > 0:
@@ -188,3 +187,24 @@ def channel_columns_check(
             f"for sensor(s) {which} ({int(given.sum())} rows, the first row {first}): give their {sigma}, "
             f"or leave the plots' {column} cells empty"
         )
+
+
+def missing_channel_notes(
+    plots_path, plot_columns, sensors_path, sigmas: dict, sensor: np.ndarray
+) -> list[str]:
+    """A note per measured column the plots file lacks while the sensors file gives its sigma for
+    some sensors: their biases of that channel are then undetermined, for want of the column, not
+    of the data. ``sigmas``: the sensors file's columns in file units (NaN where empty or bad);
+    ``sensor`` (S,) ids."""
+    notes = []
+    for column, sigma, name in _CHANNEL_COLUMNS:
+        values = sigmas.get(sigma)
+        if column in plot_columns or values is None or not np.isfinite(values).any():
+            continue
+        which = [str(s) for s in sensor[np.isfinite(values)]]
+        listed = ", ".join(which[:5]) + (f" and {len(which) - 5} more" if len(which) > 5 else "")
+        notes.append(
+            f"{plots_path}: no column {column!r}, while {sensors_path} gives {sigma} for {listed}: "
+            f"their {name} biases stay undetermined (add the column, or leave {sigma} empty)"
+        )
+    return notes

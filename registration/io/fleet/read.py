@@ -51,10 +51,11 @@ from registration.fleet.data.plot_rows import RowProblem
 from registration.fleet.data.problem import FleetProblem, build_problem, plot_row_problems
 from registration.fleet.data.tables import DEFAULT_REFERENCE_SIGMA
 from registration.io.fleet.cells import FILE_COLUMNS, FileRead, read_file
-from registration.io.fleet.checks import MIN_UNIT_CHECK_VALUES, channel_columns_check
+from registration.io.fleet.checks import MIN_UNIT_CHECK_VALUES, channel_columns_check, missing_channel_notes
 from registration.io.fleet.folder import TABLE_NAMES
 from registration.io.fleet.memory import TablesSource
 from registration.io.fleet.rejects import BadRows, NoValidPlotsError, RejectedRow, check_mode, rejected_frame
+from registration.io.fleet.setaside import check_duplicates, set_aside_notes, stopping_rows
 
 __all__ = ["FILE_COLUMNS", "FleetTables", "read_fleet_tables", "needs_association", "MIN_UNIT_CHECK_VALUES"]
 
@@ -169,6 +170,10 @@ def _file_error(exc: ValueError, paths: dict, file_rows: dict | None = None) -> 
             rest = re.sub(rf"^{lib} ", "", text)
             if m.group(2) and file_rows and name in file_rows:
                 rest = re.sub(r"^row \d+", f"row {int(file_rows[name][int(m.group(2))])}", rest)
+            named = re.match(r"^row (\d+): (\w+) ", rest)
+            files = {key: column for column, key, *_ in FILE_COLUMNS[name]}
+            if named and named.group(2) in files:  # the row's column, as the file names it
+                rest = f"row {named.group(1)}, column {files[named.group(2)]!r}: " + rest[named.end(1) + 2 :]
             # the library speaks SI units and radians; say so where its message quotes an angle
             text = (
                 f"{path}: "
@@ -318,9 +323,17 @@ def read_fleet_tables(
     if "reference" in tables:
         _check_reference_positions(tables["reference"], paths["reference"], bads["reference"])
     _check_ids(tables, paths, bads)
+    check_duplicates(tables["plots"], bads["plots"])
     left_out = {k: f.file_rows for k, f in files.items() if f.file_rows is not None}  # unused platforms
     out = _skip_rows(tables, paths, bads, left_out)
-    out.notes = [n for f in files.values() for n in f.notes]
+    out.notes = [n for f in files.values() for n in f.notes] + set_aside_notes(out.rejected, paths["plots"])
+    out.notes += missing_channel_notes(
+        paths["plots"],
+        files["plots"].columns,
+        paths["sensors"],
+        files["sensors"].numbers,
+        tables["sensors"]["sensor"],
+    )
     out.targets = tables.get("targets")
     return out
 
@@ -363,11 +376,16 @@ def _first_bad_row_stops(plots, navigation, sensors, platforms, reference, targe
         )
     except NoValidPlotsError as exc:
         rejected = exc.rejected
+        if not stopping_rows(rejected):
+            raise
     else:
         rejected = tables.rejected
         if not rejected:
             tables.file_rows = {k: v for k, v in tables.file_rows.items() if k == "navigation"}
             return tables
+        if not stopping_rows(rejected):
+            return tables  # only plots that cannot be used were set aside, with a note
+    rejected = stopping_rows(rejected)
     order = {str(Path(p)): k for k, p in enumerate((plots, reference)) if p is not None}
     first = min(rejected, key=lambda r: (order.get(r.file, len(order)), r.row))
     raise ValueError(f"{first.file}: row {first.row}, column {first.column!r}: {first.reason}")

@@ -16,6 +16,7 @@ empty, NaN or infinite number, ``out_of_range``, ``non_positive_range``, ...) an
 * ``no_channel``: a plot with no measured value (reported in column ``range_m``);
 * ``unmeasured_channel``: a value in a channel the sensor does not measure (no sigma for it);
 * ``outside_navigation``: a plot outside its platform's navigation time span;
+* ``duplicate``: a plot row equal in every column to an earlier one (reported in column ``*``);
 * ``short_row`` / ``long_row`` (from the recorded files' codes): a CSV line with fewer / more
   fields than the header (a line cut short, a missing line break), reported in the first column
   the line does not reach / in column ``*``.
@@ -39,6 +40,7 @@ __all__ = [
     "FLEET_REASON_CODES",
     "LEDGER_COLUMNS",
     "REJECTED_COLUMNS",
+    "SET_ASIDE_CODES",
     "RejectedRow",
     "BadRows",
     "NoValidPlotsError",
@@ -54,7 +56,11 @@ FLEET_REASON_CODES = REASON_CODES + (
     "no_channel",
     "unmeasured_channel",
     "outside_navigation",
+    "duplicate",
 )
+#: Reason codes of plots set aside in either mode (``on_bad_row="stop"`` too), with a note: no cell
+#: of theirs is wrong, they only cannot be used.
+SET_ASIDE_CODES = ("outside_navigation", "duplicate")
 #: The fleet's rejected ledger: ``file``, ``row`` (from 0), ``column``, ``reason_code``, ``reason``
 #: (named as in the rejected.csv of ``registration register``, whose rows also carry the raw values),
 #: in the order the rows were set aside.
@@ -137,15 +143,15 @@ class BadRows:
         if not self.skip:
             first = int(hit[0])
             raise ValueError(
-                f"{self.file}: row {self._file_row(row(first))}, column {at(column, first)!r}: "
-                f"{reason(first)}"
+                f"{self.file}: row {self.file_row(row(first))}, column {at(column, first)!r}: {reason(first)}"
             )
         for i in hit.tolist():
             r = row(i)
             if r not in self.first:
                 self.first[r] = (at(column, i), at(code, i), reason(i))
 
-    def _file_row(self, r: int) -> int:
+    def file_row(self, r: int) -> int:
+        """The file row (from 0) of row ``r`` checked."""
         return r if self.file_rows is None else int(self.file_rows[r])
 
     def ok(self) -> np.ndarray:
@@ -155,4 +161,4 @@ class BadRows:
         return out
 
     def rejected(self) -> list[RejectedRow]:
-        return [RejectedRow(self.file, self._file_row(r), *self.first[r]) for r in sorted(self.first)]
+        return [RejectedRow(self.file, self.file_row(r), *self.first[r]) for r in sorted(self.first)]

@@ -17,9 +17,11 @@ from typing import NamedTuple
 
 __all__ = [
     "FLEET_FILES",
+    "HELD",
     "INF_ALLOWED",
     "POSITIVE",
     "FileColumn",
+    "held",
     "FileTable",
     "option_help",
     "schema_markdown",
@@ -312,6 +314,15 @@ POSITIVE = frozenset(
 #: Columns where inf is a meaning rather than an error (besides the priors' "no prior"): a reference
 #: without a height.
 INF_ALLOWED = frozenset({"sigma_up_m"})
+#: The smallest positive and the largest finite value of a sigma or a prior sigma (file units) that
+#: float64 arithmetic holds through the solve, which squares and inverts them (1e-300 squared is 0,
+#: 1e308 squared is inf); a prior of 0 (fixed) or inf (none) keeps its meaning.
+HELD = (1e-15, 1e15)
+
+
+def held(column: str) -> bool:
+    """True for the sigma and prior columns, whose values must lie within :data:`HELD`."""
+    return column.startswith(("sigma_", "prior_"))
 
 
 def option_help(name: str) -> str:
@@ -327,6 +338,11 @@ def _accepted(c: FileColumn) -> str:
     if c.limits is None:
         return "text" if c.unit == "id" else "finite"
     lo, hi = c.limits
+    if held(c.file):
+        top = f"{min(hi, HELD[1]):g}]"
+        if lo == 0 and c.file not in POSITIVE:
+            return f"0, [{HELD[0]:g}, {top}" + (", inf" if hi == math.inf else "")
+        return f"[{HELD[0]:g}, {top}" + (", inf" if c.file in INF_ALLOWED else "")
     high = "inf" if hi == math.inf else f"{hi:g}"
     return f"{'(' if c.file in POSITIVE else '['}{lo:g}, {high}]"
 

@@ -10,13 +10,13 @@ from __future__ import annotations
 
 import csv
 import io
-import json
 import os
 from pathlib import Path
 from typing import BinaryIO
 
 import numpy as np
 
+from registration.io.files.jsonfile import write_json
 from registration.io.output.checkpoint import CheckpointError
 
 __all__ = ["CsvAppender", "PartsWriter", "ParquetFileWriter", "open_appender", "write_json_atomic"]
@@ -215,9 +215,4 @@ class ParquetFileWriter:
 
 def write_json_atomic(path: Path, obj) -> None:
     """Write ``obj`` as indented JSON to ``path`` through a fsync'ed temporary file and a rename."""
-    tmp = path.with_name(path.name + ".tmp")
-    with open(tmp, "w") as f:
-        f.write(json.dumps(obj, indent=2) + "\n")
-        f.flush()
-        os.fsync(f.fileno())
-    os.replace(tmp, path)
+    write_json(path, obj, atomic=True)
