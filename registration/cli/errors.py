@@ -202,11 +202,14 @@ def consistency_gate(prog: str, report, allow: bool) -> int:
             file=sys.stderr,
         )
         return EXIT_OK
-    print(
-        f"{prog}: error: {report.message()} Give --allow-inconsistent to accept the run "
-        f"(exit code {EXIT_INCONSISTENT}).",
+    verdict, _, causes = report.message().partition(" Likely causes: ")
+    print(  # on lines of at most MAX_MESSAGE characters
+        f"{prog}: error: {verdict} Give --allow-inconsistent to accept the run (exit code "
+        f"{EXIT_INCONSISTENT}).",
         file=sys.stderr,
     )
+    if causes:
+        print(f"Likely causes: {causes}", file=sys.stderr)
     return EXIT_INCONSISTENT
 
 
