@@ -170,8 +170,12 @@ def _run_importer(args: argparse.Namespace) -> ImportResult:
 def run(args: argparse.Namespace) -> int:
     """Import, print the counts, write the folder whole; exit 2 when the input is no recording at all."""
     for path in args.inputs:
+        if path.is_dir():
+            raise CommandError(f"{path}: a directory; give the recording's files (e.g. {path}/*)")
         if not path.is_file():
-            raise CommandError(f"{path}: no such file")
+            raise CommandError(
+                f"{path}: no such file" if not path.exists() else f"{path}: not a regular file"
+            )
     from registration.io.imports import IMPORT_FILES  # every file an import may write (both formats)
 
     out = prepare_out(args.out)

@@ -11,8 +11,9 @@ from __future__ import annotations
 
 import datetime as dt
 import math
+from contextlib import contextmanager
 from pathlib import Path
-from typing import TYPE_CHECKING, Mapping, Sequence
+from typing import TYPE_CHECKING, Iterator, Mapping, Sequence
 
 import numpy as np
 
@@ -21,7 +22,7 @@ from registration.io.imports import ImportResult
 from registration.io.nmea.ais import read_ais
 from registration.io.nmea.attitude import PASHR_ANGLES, pashr_subtypes, read_headings, read_pashr
 from registration.io.nmea.clock import fit_clock
-from registration.io.nmea.errors import LEDGER_COLUMNS
+from registration.io.nmea.errors import LEDGER_COLUMNS, NmeaImportError
 from registration.io.nmea.fixes import read_fixes
 from registration.io.nmea.lines import SentenceLog, read_log
 from registration.io.nmea.navigation import build_navigation
@@ -136,6 +137,19 @@ def _anchors(fixes: dict, dates, pashr) -> tuple[np.ndarray, np.ndarray]:
     return index, tod[first]
 
 
+@contextmanager
+def _naming_the_log(paths: list) -> Iterator[None]:
+    """A :class:`NmeaImportError` about the log as a whole (no position, no heading) names its files."""
+    try:
+        yield
+    except NmeaImportError as exc:
+        names = [str(p) for p in paths]
+        if str(exc).startswith(tuple(names)):
+            raise
+        where = names[0] if len(names) == 1 else f"{names[0]} (and {len(names) - 1} more files)"
+        raise NmeaImportError(f"{where}: {exc}") from None
+
+
 def import_nmea(
     paths: str | Path | Sequence[str | Path],
     platform: str,
@@ -178,27 +192,30 @@ def import_nmea(
     if not paths:
         raise ValueError("paths: no log file given")
     rejections = RejectedLedger(LEDGER_COLUMNS, [str(Path(p)) for p in paths])
-    log = read_log(paths, rejections, progress)
-    not_used = _sort_types(log, rejections)
-    fixes, dates = read_fixes(log, rejections)
-    attitudes = {
-        "PASHR": read_pashr(log, rejections, pashr_angles),
-        "HDT": read_headings(log, "HDT", rejections),
-        "THS": read_headings(log, "THS", rejections),
-    }
-    clock = fit_clock(*_anchors(fixes, dates, attitudes["PASHR"]), dates, date, log.received)
-    nav = build_navigation(log, clock, fixes, attitudes, rejections)
-    plots = read_ttm(log, clock, nav, talkers, only, keep_acquiring, rejections)
-    messages = read_ais(log, rejections)
-    refs = read_references(log, messages, clock, nav.sea_level, sigmas, rejections)
-    summary = build_summary(ImportParts(log, clock, nav, plots, refs, rejections, not_used, len(messages)))
-    return NmeaImport(
-        plots=plots.frame(),
-        navigation=nav.frame(platform),
-        sensors=sensor_rows.drop(columns=[TALKER_COLUMN], errors="ignore"),
-        platforms=platforms,
-        reference=refs.frame(),
-        rejected=rejections.frame(),
-        summary=summary,
-        targets=refs.targets_frame(),
-    )
+    with _naming_the_log(paths):
+        log = read_log(paths, rejections, progress)
+        not_used = _sort_types(log, rejections)
+        fixes, dates = read_fixes(log, rejections)
+        attitudes = {
+            "PASHR": read_pashr(log, rejections, pashr_angles),
+            "HDT": read_headings(log, "HDT", rejections),
+            "THS": read_headings(log, "THS", rejections),
+        }
+        clock = fit_clock(*_anchors(fixes, dates, attitudes["PASHR"]), dates, date, log.received)
+        nav = build_navigation(log, clock, fixes, attitudes, rejections)
+        plots = read_ttm(log, clock, nav, talkers, only, keep_acquiring, rejections)
+        messages = read_ais(log, rejections)
+        refs = read_references(log, messages, clock, nav.sea_level, sigmas, rejections)
+        summary = build_summary(
+            ImportParts(log, clock, nav, plots, refs, rejections, not_used, len(messages))
+        )
+        return NmeaImport(
+            plots=plots.frame(),
+            navigation=nav.frame(platform),
+            sensors=sensor_rows.drop(columns=[TALKER_COLUMN], errors="ignore"),
+            platforms=platforms,
+            reference=refs.frame(),
+            rejected=rejections.frame(),
+            summary=summary,
+            targets=refs.targets_frame(),
+        )

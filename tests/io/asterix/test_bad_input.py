@@ -232,3 +232,31 @@ def test_random_damage_never_raises_anything_else(tmp_path, sites, recording):
             except AsterixImportError:
                 continue
             assert result.summary["rejected"]["total"] == len(result.rejected)
+
+
+@pytest.mark.parametrize("length", [12, 16, 20])
+def test_pcapng_whose_last_packet_block_is_short(tmp_path, sites, length):
+    """Issue 32: a last Enhanced Packet Block of 12-20 bytes (shorter than its fixed fields) is set
+    aside with its offset; the packet before it is read."""
+    from tests.io.asterix.repro import short_last_epb
+
+    data = short_last_epb(length)
+    result = _run(tmp_path, sites, data, "short.pcapng")
+    assert _reasons(result) == {"truncated_packet": 1}
+    assert result.rejected["offset"].iloc[0] == len(data) - length
+    assert result.summary["files"][0]["packets"] == 1
+
+
+def test_pcapng_packet_time_out_of_range(tmp_path, sites):
+    """Issue 32: a packet time in the year 586524 is ignored with a note naming the file and the
+    packet (the records are placed by their time of day), not a ValueError/OverflowError."""
+    from tests.io.asterix.repro import out_of_range_time
+
+    good = encode_recording(
+        [(5.0, 48, SAC, SIC, cat048_record("1.32", SAC, SIC, 5.0, 100, 0, address=7))], DATE
+    ).raw()
+    result = _run(tmp_path, sites, out_of_range_time(good), "late.pcapng")
+    assert len(result.plots) == 1
+    notes = result.summary["files"][0]["notes"]
+    assert any("late.pcapng" in n and "outside the years 1970-9999" in n and "packet 1" in n for n in notes)
+    assert result.summary["time"]["reference_date"] is None

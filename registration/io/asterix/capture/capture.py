@@ -18,7 +18,13 @@ from typing import Iterable
 import numpy as np
 
 from registration.io.asterix.capture.netstack import Segments, udp_segments
-from registration.io.asterix.capture.pcap import PCAP_MAGICS, PCAPNG_MAGIC, pcap_packets, pcapng_packets
+from registration.io.asterix.capture.pcap import (
+    PCAP_MAGICS,
+    PCAPNG_MAGIC,
+    Packets,
+    pcap_packets,
+    pcapng_packets,
+)
 from registration.io.asterix.errors import AsterixImportError
 from registration.io.asterix.octets import PAD
 from registration.io.files.ledger import RejectedLedger
@@ -139,6 +145,23 @@ def _raw_check(data: bytes, path: str) -> None:
         )
 
 
+#: Packet times (UTC s since 1970) outside [0, this) are no dates (the year 10000 and later).
+_LAST_TIME_S = 253402300800.0
+
+
+def _drop_bad_times(packets: Packets, path: str, notes: list) -> None:
+    """Packet times that are no date (before 1970 or after the year 9999) become NaN, with a note
+    naming the first such packet: its records are then placed by their time of day alone."""
+    bad = np.flatnonzero(~((packets.time >= 0) & (packets.time < _LAST_TIME_S)) & ~np.isnan(packets.time))
+    if bad.size:
+        k = int(bad[0])
+        notes.append(
+            f"{path}: {bad.size} packet time(s) outside the years 1970-9999 ignored, the first in packet "
+            f"{int(packets.number[k])} at offset {int(packets.offset[k])} ({packets.time[k]:.6g} s)"
+        )
+        packets.time[bad] = np.nan
+
+
 def read_capture(path: str | Path, rejections: RejectedLedger, ports: Iterable[int] | None = None) -> Capture:
     """Read ``path`` and find its data blocks' segments; packets cut short are set aside in
     ``rejections``. ``ports``: UDP destination ports to keep (None: all)."""
@@ -162,6 +185,7 @@ def read_capture(path: str | Path, rejections: RejectedLedger, ports: Iterable[i
     if magic in PCAP_MAGICS or magic == PCAPNG_MAGIC:
         kind = "pcap" if magic in PCAP_MAGICS else "pcapng"
         packets = (pcap_packets if kind == "pcap" else pcapng_packets)(data, name, rejections)
+        _drop_bad_times(packets, name, notes)
         segments, counts = udp_segments(buf, packets, ports)
         if packets.number.size and np.isfinite(packets.time).any():
             counts["first_packet_time"] = float(np.nanmin(packets.time))
