@@ -29,7 +29,12 @@ from registration.cli.staging import staged_outputs
 if TYPE_CHECKING:  # imported when the command runs: `registration --help` loads no importer
     from registration.io.imports import ImportResult
 
-__all__ = ["HELP", "add_arguments", "run"]
+__all__ = ["HELP", "CAT021_EDITIONS", "LIMIT_OPTIONS", "add_arguments", "run"]
+
+#: The CAT021 editions ``--cat021-edition`` takes (registration.io.asterix.SUPPORTED_EDITIONS[21]).
+CAT021_EDITIONS = ("0.23", "0.24", "0.25", "0.26", "2.1", "2.2", "2.3", "2.4", "2.5", "2.6", "2.7")
+#: The bounds of an ASTERIX import given as options (keyword arguments of ``import_asterix``).
+LIMIT_OPTIONS = ("max_bytes", "max_records", "max_rejected_rows")
 
 HELP = (
     "import a recording (ASTERIX, NMEA 0183 with AIS) as the fleet tables that "
@@ -90,6 +95,57 @@ def _common(p: argparse.ArgumentParser) -> None:
     p.add_argument("--format", choices=("csv", "parquet"), default="csv", help="file format of the tables")
 
 
+def _positive(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
+    return value
+
+
+def _ports(text: str) -> list[int]:
+    try:
+        ports = [int(p) for p in text.split(",") if p.strip()]
+    except ValueError:
+        ports = []
+    if not ports or not all(0 < p < 65536 for p in ports):
+        raise argparse.ArgumentTypeError(
+            f"expected UDP port numbers 1-65535 separated by commas, got {text!r}"
+        )
+    return ports
+
+
+def _asterix_options(ast: argparse.ArgumentParser) -> None:
+    """The ASTERIX options beyond the common ones: UDP ports, CAT021 edition, the bounds."""
+    ast.add_argument(
+        "--ports",
+        type=_ports,
+        default=None,
+        metavar="PORT[,PORT...]",
+        help="UDP destination ports to read from pcap/pcapng captures (default: all)",
+    )
+    ast.add_argument(
+        "--cat021-edition",
+        choices=CAT021_EDITIONS,
+        default=None,
+        metavar="EDITION",
+        help="the CAT021 (ADS-B) edition of the feed: " + ", ".join(CAT021_EDITIONS) + " (0.2x: old "
+        "feeds; default: the latest). A feed read in the wrong edition gives records that fail to walk "
+        "or lack their address",
+    )
+    for name, what in (
+        ("bytes", "the decompressed bytes read per input (default 8 GiB); the rest is set aside"),
+        ("records", "the records decoded per input (default 10^7); the rest is set aside"),
+        (
+            "rejected-rows",
+            "the rows listed in rejected.csv (default 10^5); the rest is counted in the summary",
+        ),
+    ):
+        ast.add_argument(f"--max-{name}", type=_positive, default=None, metavar="N", help=f"bound on {what}")
+
+
 def add_arguments(p: argparse.ArgumentParser) -> None:
     from registration.cli import CommandParser  # the parser class that names the full command
 
@@ -111,6 +167,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         "prior columns of the sensors file and prior_heading_deg, prior_pitch_deg, prior_roll_deg "
         "(default 0: a surveyed site)",
     )
+    _asterix_options(ast)
     nmea = sub.add_parser(
         "nmea",
         help=NMEA_HELP,
@@ -151,7 +208,15 @@ def _run_importer(args: argparse.Namespace) -> ImportResult:
         from registration.io.asterix import import_asterix, read_sites
 
         sites = read_sites(args.sites)
-        return import_asterix(args.inputs, sites, date=args.date, progress=True)
+        return import_asterix(
+            args.inputs,
+            sites,
+            date=args.date,
+            progress=True,
+            editions=None if args.cat021_edition is None else {21: args.cat021_edition},
+            ports=args.ports,
+            **{k: getattr(args, k) for k in LIMIT_OPTIONS if getattr(args, k) is not None},
+        )
     from registration.io.nmea import import_nmea, read_sensors
 
     sensors = read_sensors(args.sensors)
@@ -181,7 +246,9 @@ def run(args: argparse.Namespace) -> int:
     out = prepare_out(args.out)
     result = _run_importer(args)
     counts = ", ".join(f"{len(frame)} {name} rows" for name, frame in result.tables.items())
-    print(f"imported {counts}; set aside {len(result.rejected)} records (rejected.csv)")
+    rejected = result.summary.get("rejected", {})
+    total = rejected.get("total", rejected.get("lines", len(result.rejected)))
+    print(f"imported {counts}; set aside {total} records (rejected.csv)")
     with staged_outputs(out, f"registration import {args.format_name}", IMPORT_FILES) as folder:
         with writing(folder.path):
             written = result.write(folder.path, args.format)

@@ -10,7 +10,14 @@ import struct
 
 from tests.io.asterix.containers import udp_frame
 
-__all__ = ["pcapng_block", "pcapng_head", "short_last_epb", "out_of_range_time", "empty_cat048_gzip"]
+__all__ = [
+    "pcapng_block",
+    "pcapng_head",
+    "short_last_epb",
+    "out_of_range_time",
+    "empty_cat048_gzip",
+    "source_only_cat048_gzip",
+]
 
 
 def pcapng_block(btype: int, body: bytes) -> bytes:
@@ -48,4 +55,14 @@ def empty_cat048_gzip(records: int = 2_000_000) -> bytes:
     block = bytes([48, 0xFF, 0xFF]) + bytes(per_block)
     count, rest = divmod(records, per_block)
     tail = bytes([48]) + (rest + 3).to_bytes(2, "big") + bytes(rest) if rest else b""
+    return gzip.compress(block * count + tail, compresslevel=9)
+
+
+def source_only_cat048_gzip(records: int = 500_000) -> bytes:
+    """gzip of raw CAT048 blocks of records holding only I048/010 (FSPEC 0x80, SAC 10, SIC 1):
+    each walks, and each is set aside (no time, no position). 500 000 compress to about 1.5 KB."""
+    per_block = (0xFFFF - 3) // 3
+    block = bytes([48]) + (per_block * 3 + 3).to_bytes(2, "big") + bytes([0x80, 10, 1]) * per_block
+    count, rest = divmod(records, per_block)
+    tail = bytes([48]) + (rest * 3 + 3).to_bytes(2, "big") + bytes([0x80, 10, 1]) * rest if rest else b""
     return gzip.compress(block * count + tail, compresslevel=9)

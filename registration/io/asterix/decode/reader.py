@@ -24,6 +24,7 @@ from registration.io.asterix.decode.scalar import explain_record
 from registration.io.asterix.decode.uap import check_editions, uap_for
 from registration.io.asterix.decode.walker import Records, walk_records
 from registration.io.asterix.errors import LEDGER_COLUMNS
+from registration.io.asterix.limits import Limits
 from registration.io.files.ledger import RejectedLedger
 
 __all__ = ["CategoryRecords", "DecodedFile", "decode_file", "CHUNK_BYTES"]
@@ -77,6 +78,39 @@ def _chunks(sizes: np.ndarray) -> list[slice]:
     return [slice(int(a), int(b)) for a, b in zip(bounds[:-1], bounds[1:])]
 
 
+def _cut(rec: Records, keep: int) -> Records:
+    """The first ``keep`` records of ``rec`` (and the bad records of the blocks up to the last kept)."""
+    last = rec.block[keep - 1] if keep else -1
+    bad = rec.bad_block <= last
+    return Records(
+        rec.start[:keep],
+        rec.end[:keep],
+        rec.block[:keep],
+        {k: v[:keep] for k, v in rec.items.items()},
+        rec.bad_start[bad],
+        rec.bad_block[bad],
+    )
+
+
+def _over_limit(
+    cap: Capture, cat: int, rec: Records, keep: int, budget: list, rejections: RejectedLedger
+) -> None:
+    """Set aside, as one row, the records of category ``cat`` from the ``keep``-th on."""
+    rejections.add(
+        cap.path,
+        "over_limit",
+        f"CAT{cat:03d}: the limit of {budget[1]} records per input (max_records, --max-records) is "
+        "reached; the records from here on are not decoded",
+        offset=int(rec.start[keep]),
+        packet=0,
+        category=cat,
+    )
+    cap.notes.append(
+        f"{cap.path}: the limit of {budget[1]} records (max_records, --max-records) is reached; the rest "
+        "is not decoded"
+    )
+
+
 def _walk_category(
     cap: Capture,
     blocks: Blocks,
@@ -85,14 +119,24 @@ def _walk_category(
     edition: str,
     rejections: RejectedLedger,
     progress: Any,
+    budget: list,
 ) -> CategoryRecords:
+    """The records of category ``cat`` in blocks ``sel``; ``budget``: [records left, limit] of the
+    input, spent here."""
     uap = uap_for(cat, edition)
     wanted = _wanted(cat, edition)
     parts = []
     mv = memoryview(cap.buf)  # type: ignore[arg-type]  # a uint8 array is a buffer
     for chunk in _chunks(blocks.end[sel] - blocks.start[sel]):
+        if budget[0] <= 0:
+            break
         idx = sel[chunk]
         rec = walk_records(cap.buf, blocks.start[idx], blocks.end[idx], uap, wanted)
+        if rec.start.size > budget[0]:
+            keep = budget[0]
+            _over_limit(cap, cat, rec, keep, budget, rejections)
+            rec = _cut(rec, keep)
+        budget[0] -= rec.start.size
         for start, b in zip(rec.bad_start.tolist(), rec.bad_block.tolist()):
             code, reason = explain_record(mv, start, int(blocks.end[idx[b]]), uap)
             rest = int(blocks.end[idx[b]]) - start
@@ -125,6 +169,7 @@ def decode_file(
     rejections: RejectedLedger | None = None,
     ports: Iterable[int] | None = None,
     progress: Any = None,
+    limits: Limits | None = None,
 ) -> DecodedFile:
     """Decode the CAT048, CAT034 and CAT021 records of one file (raw, pcap or pcapng, gzip or not).
 
@@ -134,19 +179,22 @@ def decode_file(
     called with the octets of the blocks walked (a tqdm bar, say) and, if it has one,
     ``file_size(octets)`` with the file's (decompressed) size once read. Raises
     :class:`~registration.io.asterix.errors.AsterixImportError` for a file that is neither ASTERIX
-    nor a capture; anything bad inside is set aside.
+    nor a capture; anything bad inside is set aside. ``limits``: the bounds on the decompressed
+    size and the records of the file (:class:`~registration.io.asterix.limits.Limits`).
     """
+    limits = Limits() if limits is None else limits
     editions = check_editions(editions)
     rejections = RejectedLedger(LEDGER_COLUMNS) if rejections is None else rejections
-    cap = read_capture(path, rejections, ports)
+    cap = read_capture(path, rejections, ports, limits.max_bytes)
     if progress is not None and hasattr(progress, "file_size"):
         progress.file_size(cap.size)
     blocks = find_blocks(cap, rejections)
     cats, counts = np.unique(blocks.category, return_counts=True)
     records = {}
+    budget = [limits.max_records, limits.max_records]
     for cat in (48, 34, 21):
         sel = np.flatnonzero(blocks.category == cat)
-        records[cat] = _walk_category(cap, blocks, sel, cat, editions[cat], rejections, progress)
+        records[cat] = _walk_category(cap, blocks, sel, cat, editions[cat], rejections, progress, budget)
     other = np.flatnonzero(~np.isin(blocks.category, (48, 34, 21)))
     if other.size:
         rejections.add(
