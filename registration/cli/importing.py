@@ -135,6 +135,12 @@ def _asterix_options(ast: argparse.ArgumentParser) -> None:
         "feeds; default: the latest). A feed read in the wrong edition gives records that fail to walk "
         "or lack their address",
     )
+    ast.add_argument(
+        "--keep-duplicates",
+        action="store_true",
+        help="keep records that repeat an earlier one (same category, SAC/SIC, time of day and bytes: "
+        "a feed recorded on two LANs, a replayed tail); by default they are set aside as duplicate",
+    )
     for name, what in (
         ("bytes", "the decompressed bytes read per input (default 8 GiB); the rest is set aside"),
         ("records", "the records decoded per input (default 10^7); the rest is set aside"),
@@ -215,6 +221,7 @@ def _run_importer(args: argparse.Namespace) -> ImportResult:
             progress=True,
             editions=None if args.cat021_edition is None else {21: args.cat021_edition},
             ports=args.ports,
+            keep_duplicates=args.keep_duplicates,
             **{k: getattr(args, k) for k in LIMIT_OPTIONS if getattr(args, k) is not None},
         )
     from registration.io.nmea import import_nmea, read_sensors

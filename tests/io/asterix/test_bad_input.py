@@ -204,7 +204,8 @@ def test_datagram_that_is_not_asterix(tmp_path, sites):
         [(5.0, 48, SAC, SIC, cat048_record("1.32", SAC, SIC, 5.0, 100, 0, address=7))], DATE
     ).raw()
     frames = [udp_frame(b"hello, this is not ASTERIX"), udp_frame(good), udp_frame(good + b"\x30\x00")]
-    result = _run(tmp_path, sites, pcap_bytes(frames, [1.7e9, 1.7e9 + 1, 1.7e9 + 2]), "mixed.pcap")
+    data = pcap_bytes(frames, [1.7e9, 1.7e9 + 1, 1.7e9 + 2])
+    result = _run(tmp_path, sites, data, "mixed.pcap", keep_duplicates=True)  # the same record twice
     assert len(result.plots) == 2
     assert _reasons(result) == {"truncated_block": 2}
     assert list(result.rejected["packet"]) == [1, 3]

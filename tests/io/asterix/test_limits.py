@@ -70,7 +70,7 @@ def test_small_gzip_of_empty_records_in_bounded_time_and_memory(tmp_path, build)
 
 def test_rejected_rows_beyond_the_bound_are_counted_with_one_row_saying_so(tmp_path):
     (tmp_path / "b.gz").write_bytes(source_only_cat048_gzip(5000))
-    result = import_asterix(tmp_path / "b.gz", SITES, max_rejected_rows=100)
+    result = import_asterix(tmp_path / "b.gz", SITES, max_rejected_rows=100, keep_duplicates=True)
     assert len(result.rejected) == 101
     assert result.summary["rejected"]["total"] == 5000
     assert result.summary["rejected"]["by_reason"] == {"missing_item": 5000}
@@ -81,7 +81,7 @@ def test_rejected_rows_beyond_the_bound_are_counted_with_one_row_saying_so(tmp_p
 
 def test_records_and_bytes_beyond_the_bounds_are_set_aside(tmp_path):
     (tmp_path / "b.gz").write_bytes(source_only_cat048_gzip(5000))
-    result = import_asterix(tmp_path / "b.gz", SITES, max_records=1000)
+    result = import_asterix(tmp_path / "b.gz", SITES, max_records=1000, keep_duplicates=True)
     assert result.summary["files"][0]["records"]["048"] == 1000
     over = result.rejected[result.rejected["reason_code"] == "over_limit"]
     assert len(over) == 1 and "max_records" in over["reason"].iloc[0]
@@ -90,7 +90,7 @@ def test_records_and_bytes_beyond_the_bounds_are_set_aside(tmp_path):
     (tmp_path / "b.ast").write_bytes(blocks)
     (tmp_path / "c.ast.gz").write_bytes(gzip.compress(blocks))
     for name in ("b.ast", "c.ast.gz"):
-        result = import_asterix(tmp_path / name, SITES, max_bytes=45)
+        result = import_asterix(tmp_path / name, SITES, max_bytes=45, keep_duplicates=True)
         summary = result.summary["files"][0]
         assert summary["bytes"] == 45 and summary["records"]["048"] == 10
         assert "max_bytes" in " ".join(summary["notes"])

@@ -37,12 +37,24 @@ CHUNK_BYTES = 8 << 20
 class CategoryRecords:
     """The records of one category in one file, (R,) each: ``fields`` (raw fields of the
     category's decoder), ``offset`` (of the record's FSPEC in the file), ``packet`` (number from 1,
-    0 for a raw file) and ``capture_time`` (UTC s since 1970, NaN for a raw file)."""
+    0 for a raw file), ``capture_time`` (UTC s since 1970, NaN for a raw file) and ``digest`` (a
+    64-bit hash of the record's octets, within one process: duplicates are found by it)."""
 
     fields: dict
     offset: np.ndarray
     packet: np.ndarray
     capture_time: np.ndarray
+    digest: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+
+    def subset(self, keep: np.ndarray) -> "CategoryRecords":
+        """The records where ``keep`` (R,) bool is True."""
+        return CategoryRecords(
+            {k: v[keep] for k, v in self.fields.items()},
+            self.offset[keep],
+            self.packet[keep],
+            self.capture_time[keep],
+            self.digest[keep] if self.digest.size else self.digest,
+        )
 
     @property
     def size(self) -> int:
@@ -151,15 +163,30 @@ def _walk_category(
                 category=cat,
             )
         seg = blocks.segment[idx[rec.block]]
+        digest = np.fromiter(
+            (hash(mv[a:b].tobytes()) for a, b in zip(rec.start.tolist(), rec.end.tolist())),
+            dtype=np.int64,
+            count=rec.start.size,
+        )
         parts.append(
-            (_decode(cat, edition, cap.buf, rec), rec.start, cap.segments.packet[seg], cap.segments.time[seg])
+            (
+                _decode(cat, edition, cap.buf, rec),
+                rec.start,
+                cap.segments.packet[seg],
+                cap.segments.time[seg],
+                digest,
+            )
         )
         if progress is not None:
             progress.update(int((blocks.end[idx] - blocks.start[idx]).sum()))
     fields = {k: np.concatenate([p[0][k] for p in parts]) for k in parts[0][0]} if parts else {}
     cat_ = (lambda i: np.concatenate([p[i] for p in parts])) if parts else (lambda i: np.zeros(0))
     return CategoryRecords(
-        fields, cat_(1).astype(np.int64), cat_(2).astype(np.int64), cat_(3).astype(np.float64)
+        fields,
+        cat_(1).astype(np.int64),
+        cat_(2).astype(np.int64),
+        cat_(3).astype(np.float64),
+        cat_(4).astype(np.int64),
     )
 
 
