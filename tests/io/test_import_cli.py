@@ -367,3 +367,24 @@ def test_nmea_import_of_a_binary_file(asterix_files, bridge_log, tmp_path, capsy
     assert main([*argv, "--out", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err
     assert f"{files['pcap']}: not a text NMEA log" in err and err.count("\n") == 1
+
+
+def test_a_pcap_without_asterix_exits_2_and_leaves_out_as_it_was(asterix_files, tmp_path, capsys):
+    """Issue 31 item 2: a capture of other UDP traffic exits 2, and a previous good import in
+    --out is kept byte for byte."""
+    import numpy as np
+
+    from tests.io.asterix.containers import pcap_bytes, udp_frame
+
+    files, sites = asterix_files
+    out = tmp_path / "out"
+    assert main(["import", "asterix", str(files["raw"]), "--sites", str(sites), "--out", str(out)]) == 0
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    rng = np.random.default_rng(1)
+    other = tmp_path / "other.pcap"
+    other.write_bytes(pcap_bytes([udp_frame(rng.bytes(60), dport=5353) for _ in range(8)], [1.7e9] * 8))
+    capsys.readouterr()
+    assert main(["import", "asterix", str(other), "--sites", str(sites), "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert f"{other}: not an ASTERIX recording (" in err and err.count("\n") == 1
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before

@@ -261,3 +261,25 @@ def test_pcapng_packet_time_out_of_range(tmp_path, sites):
     notes = result.summary["files"][0]["notes"]
     assert any("late.pcapng" in n and "outside the years 1970-9999" in n and "packet 1" in n for n in notes)
     assert result.summary["time"]["reference_date"] is None
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_random_bytes_behind_a_good_first_header_are_refused(tmp_path, sites, seed):
+    """Issue 31 item 2: random octets walk as data blocks of random categories; a raw file is
+    judged by the share of its octets in blocks of known categories, and refused in one line."""
+    rng = np.random.default_rng(seed)
+    data = bytes([48, 0, 10]) + rng.integers(0, 256, 20000, dtype=np.uint8).tobytes()
+    with pytest.raises(AsterixImportError, match="not an ASTERIX recording \\(only") as info:
+        _run(tmp_path, sites, data, "random.ast")
+    assert str(info.value).startswith(str(tmp_path / "random.ast")) and "\n" not in str(info.value)
+
+
+def test_pcap_without_asterix_datagrams_is_refused(tmp_path, sites):
+    """Issue 31 item 2: UDP traffic of something else (text, DNS-like bytes) is no ASTERIX recording."""
+    from tests.io.asterix.containers import arp_frame, pcap_bytes, udp_frame
+
+    rng = np.random.default_rng(5)
+    frames = [udp_frame(b"GET / HTTP/1.1\r\nHost: x\r\n\r\n"), arp_frame()]
+    frames += [udp_frame(bytes([0x12, 0x34, 0x01, 0x00]) + rng.bytes(40), dport=53) for _ in range(20)]
+    with pytest.raises(AsterixImportError, match="not an ASTERIX recording \\(a pcap capture of 21 UDP"):
+        _run(tmp_path, sites, pcap_bytes(frames, [1.7e9 + k for k in range(len(frames))]), "dns.pcap")

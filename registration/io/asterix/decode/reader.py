@@ -23,11 +23,11 @@ from registration.io.asterix.decode.decode48 import decode048
 from registration.io.asterix.decode.scalar import explain_record
 from registration.io.asterix.decode.uap import check_editions, uap_for
 from registration.io.asterix.decode.walker import Records, walk_records
-from registration.io.asterix.errors import LEDGER_COLUMNS
+from registration.io.asterix.errors import LEDGER_COLUMNS, AsterixImportError
 from registration.io.asterix.limits import Limits
 from registration.io.files.ledger import RejectedLedger
 
-__all__ = ["CategoryRecords", "DecodedFile", "decode_file", "CHUNK_BYTES"]
+__all__ = ["CategoryRecords", "DecodedFile", "decode_file", "CHUNK_BYTES", "MIN_KNOWN_SHARE"]
 
 #: Data blocks are walked in chunks of about this many octets (progress and memory).
 CHUNK_BYTES = 8 << 20
@@ -190,6 +190,31 @@ def _walk_category(
     )
 
 
+#: A raw file is refused when less than this share of its octets walk as data blocks of known
+#: categories (random octets walk as blocks too, of random categories: about 14 % known).
+MIN_KNOWN_SHARE = 0.5
+
+
+def _check_asterix(cap: Capture, blocks: Blocks) -> None:
+    """Raise :class:`AsterixImportError` for a capture without one ASTERIX datagram, or a raw file
+    whose octets mostly do not walk as data blocks of known categories."""
+    what = f"{cap.path}: not an ASTERIX recording"
+    if cap.kind != "raw" and blocks.asterix_segments == 0:
+        n = cap.counts.get("udp_datagrams", cap.segments.start.size)
+        raise AsterixImportError(
+            f"{what} (a {cap.kind} capture of {n} UDP datagrams"
+            + (" on the ports chosen" if cap.counts.get("skipped_packets", {}).get("other_port") else "")
+            + ", none of them ASTERIX data blocks)"
+        )
+    share = blocks.known_share(cap.size)
+    if cap.kind == "raw" and share < MIN_KNOWN_SHARE:
+        cats = np.unique(blocks.category).size
+        raise AsterixImportError(
+            f"{what} (only {100 * share:.0f} % of its {cap.size} bytes walk as data blocks of known "
+            f"categories; {blocks.start.size} blocks of {cats} different categories)"
+        )
+
+
 def decode_file(
     path: str | Path,
     editions: Mapping[int, str] | None = None,
@@ -216,6 +241,7 @@ def decode_file(
     if progress is not None and hasattr(progress, "file_size"):
         progress.file_size(cap.size)
     blocks = find_blocks(cap, rejections)
+    _check_asterix(cap, blocks)
     cats, counts = np.unique(blocks.category, return_counts=True)
     records = {}
     budget = [limits.max_records, limits.max_records]
