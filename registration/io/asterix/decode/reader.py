@@ -21,7 +21,7 @@ from registration.io.asterix.decode.decode34 import decode034
 from registration.io.asterix.decode.decode48 import WANTED as WANTED048
 from registration.io.asterix.decode.decode48 import decode048
 from registration.io.asterix.decode.scalar import explain_record
-from registration.io.asterix.decode.uap import check_editions, uap_for
+from registration.io.asterix.decode.uap import DEFAULT_EDITIONS, check_editions, uap_for
 from registration.io.asterix.decode.walker import Records, walk_records
 from registration.io.asterix.errors import LEDGER_COLUMNS, AsterixImportError
 from registration.io.asterix.limits import Limits
@@ -190,6 +190,18 @@ def _walk_category(
     )
 
 
+def _edition_hint(cap: Capture, blocks: Blocks, sel: np.ndarray, edition: str, failed: int) -> None:
+    """A note when the CAT021 blocks walk better in the other family of editions (0.2x or 2.x)."""
+    other = "0.26" if not edition.startswith("0.") else DEFAULT_EDITIONS[21]
+    rec = walk_records(cap.buf, blocks.start[sel], blocks.end[sel], uap_for(21, other), _wanted(21, other))
+    if rec.bad_start.size < failed:
+        cap.notes.append(
+            f"{cap.path}: {failed} CAT021 records failed to walk in edition {edition}, "
+            f"{rec.bad_start.size} would in edition {other}: the feed may be of edition {other} "
+            f"(--cat021-edition {other}, editions={{21: {other!r}}})"
+        )
+
+
 #: A raw file is refused when less than this share of its octets walk as data blocks of known
 #: categories (random octets walk as blocks too, of random categories: about 14 % known).
 MIN_KNOWN_SHARE = 0.5
@@ -247,7 +259,10 @@ def decode_file(
     budget = [limits.max_records, limits.max_records]
     for cat in (48, 34, 21):
         sel = np.flatnonzero(blocks.category == cat)
+        before = rejections.count()
         records[cat] = _walk_category(cap, blocks, sel, cat, editions[cat], rejections, progress, budget)
+        if cat == 21 and rejections.count() > before:
+            _edition_hint(cap, blocks, sel, editions[21], rejections.count() - before)
     other = np.flatnonzero(~np.isin(blocks.category, (48, 34, 21)))
     if other.size:
         rejections.add(
