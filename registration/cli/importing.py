@@ -118,7 +118,13 @@ def _ports(text: str) -> list[int]:
 
 
 def _asterix_options(ast: argparse.ArgumentParser) -> None:
-    """The ASTERIX options beyond the common ones: UDP ports, CAT021 edition, the bounds."""
+    """The ASTERIX options beyond the common ones: duplicates, UDP ports, CAT021 edition, the bounds."""
+    ast.add_argument(
+        "--keep-duplicates",
+        action="store_true",
+        help="keep records that repeat an earlier one (same category, SAC/SIC, time of day and bytes: "
+        "a feed recorded on two LANs, a replayed tail); by default they are set aside as duplicate",
+    )
     ast.add_argument(
         "--ports",
         type=_ports,
@@ -134,12 +140,6 @@ def _asterix_options(ast: argparse.ArgumentParser) -> None:
         help="the CAT021 (ADS-B) edition of the feed: " + ", ".join(CAT021_EDITIONS) + " (0.2x: old "
         "feeds; default: the latest). A feed read in the wrong edition gives records that fail to walk "
         "or lack their address",
-    )
-    ast.add_argument(
-        "--keep-duplicates",
-        action="store_true",
-        help="keep records that repeat an earlier one (same category, SAC/SIC, time of day and bytes: "
-        "a feed recorded on two LANs, a replayed tail); by default they are set aside as duplicate",
     )
     for name, what in (
         ("bytes", "the decompressed bytes read per input (default 8 GiB); the rest is set aside"),
@@ -191,6 +191,12 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         help="the fleet sensors file of the own ship's sensors, with an optional talker column "
         "(e.g. RA) naming the TTM talker of each",
     )
+    nmea.add_argument(
+        "--keep-duplicates",
+        action="store_true",
+        help="keep identical sentences with the same time (a feed recorded twice); by default they are "
+        "set aside as duplicate",
+    )
     nmea.add_argument("--keep-acquiring", action="store_true", help="keep TTM rows of status Q (acquiring)")
     for angle in ("heading", "pitch", "roll"):
         nmea.add_argument(
@@ -234,6 +240,7 @@ def _run_importer(args: argparse.Namespace) -> ImportResult:
         sensors,
         date=args.date,
         keep_acquiring=args.keep_acquiring,
+        keep_duplicates=args.keep_duplicates,
         progress=True,
         platform_priors=priors,
     )

@@ -22,6 +22,7 @@ from registration.io.imports import ImportResult
 from registration.io.nmea.ais import read_ais
 from registration.io.nmea.attitude import PASHR_ANGLES, pashr_subtypes, read_headings, read_pashr
 from registration.io.nmea.clock import fit_clock
+from registration.io.nmea.duplicates import drop_duplicates
 from registration.io.nmea.errors import LEDGER_COLUMNS, NmeaImportError
 from registration.io.nmea.fixes import read_fixes
 from registration.io.nmea.lines import SentenceLog, read_log
@@ -161,6 +162,7 @@ def import_nmea(
     platform_priors: Mapping[str, float] | None = None,
     ais_sigmas: AisSigmas | None = None,
     pashr_angles: str = "tait-bryan",
+    keep_duplicates: bool = False,
 ) -> NmeaImport:
     """Import NMEA 0183 log files (with AIS) as the fleet tables of ``platform`` (docs/howto/import-nmea.md).
 
@@ -174,7 +176,9 @@ def import_nmea(
     ``platform_priors``: the platform's attitude prior sigmas by platforms file column
     (``prior_heading_deg``, ``prior_pitch_deg``, ``prior_roll_deg``; deg; missing or None: free);
     ``ais_sigmas``: the AIS reference sigma model (:class:`AisSigmas`); ``pashr_angles``:
-    ``"tait-bryan"`` or ``"tss"``, the roll convention of ``$PASHR``.
+    ``"tait-bryan"`` or ``"tss"``, the roll convention of ``$PASHR``; ``keep_duplicates``: keep
+    identical sentences with the same time (by default set aside as ``duplicate``,
+    :mod:`registration.io.nmea.duplicates`).
 
     Bad lines never raise: they are set aside in ``rejected`` with a reason. ValueError for bad
     arguments and a bad sensors table (naming row, column, unit);
@@ -194,6 +198,7 @@ def import_nmea(
     rejections = RejectedLedger(LEDGER_COLUMNS, [str(Path(p)) for p in paths])
     with _naming_the_log(paths):
         log = read_log(paths, rejections, progress)
+        log, duplicates = (log, 0) if keep_duplicates else drop_duplicates(log, rejections)
         not_used = _sort_types(log, rejections)
         fixes, dates = read_fixes(log, rejections)
         attitudes = {
@@ -209,6 +214,8 @@ def import_nmea(
         summary = build_summary(
             ImportParts(log, clock, nav, plots, refs, rejections, not_used, len(messages))
         )
+        if duplicates:
+            summary["duplicates"] = {"sentences": duplicates}
         return NmeaImport(
             plots=plots.frame(),
             navigation=nav.frame(platform),

@@ -49,7 +49,7 @@ def test_a_damaged_log_is_read_without_raising(tmp_path, seed):
     summary = result.summary
     counted = sum(n for per_talker in summary["sentences"].values() for n in per_talker.values())
     set_aside_before_typing = result.rejected.code.isin(
-        ["not_a_sentence", "bad_prefix", "bad_tag_block", "no_checksum", "bad_checksum"]
+        ["not_a_sentence", "bad_prefix", "bad_tag_block", "no_checksum", "bad_checksum", "duplicate"]
     ).sum()
     # every non-blank line is a sentence with a correct checksum, or set aside before it is typed
     assert counted + set_aside_before_typing + summary["blank_lines"] == summary["lines"]
@@ -123,3 +123,22 @@ def test_mutated_logs_never_raise_anything_else(tmp_path):
             outcomes["imported"] += 1
         path.unlink()
     assert sum(outcomes.values()) >= min(N_INPUTS, 50) and outcomes["imported"] > 0
+
+
+def test_a_duplicated_feed_imports_as_the_single_feed(tmp_path):
+    """Issue 31 item 1: every line of the log twice (a feed recorded twice): the same tables as the
+    single log, the copies set aside as ``duplicate`` and counted; ``keep_duplicates`` keeps them."""
+    import pandas as pd
+
+    log = simulate_bridge_log(BridgeLogConfig(seed=2, duration_s=60.0, n_vessels=4, n_ais=3))
+    single, double = tmp_path / "single.nmea", tmp_path / "double.nmea"
+    single.write_text("\n".join(log.lines) + "\n")
+    double.write_text("".join(f"{x}\n{x}\n" for x in log.lines))
+    once, twice = import_nmea(single, PLATFORM, log.sensors), import_nmea(double, PLATFORM, log.sensors)
+    for name in ("plots", "navigation", "reference"):
+        pd.testing.assert_frame_equal(getattr(twice, name), getattr(once, name))
+    timed = sum(1 for x in log.lines if x.split("\\")[-1][3:6] in ("GGA", "RMC", "ZDA", "TTM", "HRA", "SHR"))
+    assert twice.summary["duplicates"]["sentences"] >= timed > 0
+    assert "duplicates" not in once.summary
+    kept = import_nmea(double, PLATFORM, log.sensors, keep_duplicates=True)
+    assert "duplicates" not in kept.summary and "duplicate" not in set(kept.rejected.code)
