@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import argparse
 import datetime as dt
+import sys
 import textwrap
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -143,7 +144,7 @@ def _asterix_options(ast: argparse.ArgumentParser) -> None:
     )
     for name, what in (
         ("bytes", "the decompressed bytes read per input (default 8 GiB); the rest is set aside"),
-        ("records", "the records decoded per input (default 10^7); the rest is set aside"),
+        ("records", "the records decoded per input (default 2*10^6, about 0.8 GB); the rest is set aside"),
         (
             "rejected-rows",
             "the rows listed in rejected.csv (default 10^5); the rest is counted in the summary",
@@ -263,6 +264,10 @@ def run(args: argparse.Namespace) -> int:
     rejected = result.summary.get("rejected", {})
     total = rejected.get("total", rejected.get("lines", len(result.rejected)))
     print(f"imported {counts}; set aside {total} records (rejected.csv)")
+    for entry in result.summary.get("files", []):  # a bound reached: the user must know
+        for note in entry.get("notes", []) if isinstance(entry, dict) else ():
+            if "(max_" in note:
+                print(f"warning: {note}", file=sys.stderr)
     with staged_outputs(out, f"registration import {args.format_name}", IMPORT_FILES) as folder:
         with writing(folder.path):
             written = result.write(folder.path, args.format)

@@ -152,7 +152,7 @@ def import_asterix(
     ``max_bytes``, ``max_records``: the decompressed octets read and the records decoded per input;
     ``max_rejected_rows``: the rows ``rejected`` lists (the rest are counted in the summary, and one
     last row says how many). Beyond a bound the rest is set aside as ``over_limit``
-    (:mod:`registration.io.asterix.limits`; defaults 8 GiB, 10^7 records, 10^5 rows).
+    (:mod:`registration.io.asterix.limits`; defaults 8 GiB, 2*10^6 records, 10^5 rows).
     ``keep_duplicates``: keep records that repeat an earlier one (same category, octets and day);
     by default they are set aside as ``duplicate`` and counted
     (:mod:`registration.io.asterix.tables.duplicates`).

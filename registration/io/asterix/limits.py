@@ -32,7 +32,7 @@ __all__ = ["Limits", "BoundedLedger", "DEFAULT_MAX_BYTES", "DEFAULT_MAX_RECORDS"
 #: Decompressed octets read per input (8 GiB).
 DEFAULT_MAX_BYTES = 8 << 30
 #: Records decoded per input (all categories); the import holds about 400 bytes per record.
-DEFAULT_MAX_RECORDS = 10_000_000
+DEFAULT_MAX_RECORDS = 2_000_000
 #: Rows listed in the rejected table (the rest counted only).
 DEFAULT_MAX_REJECTED_ROWS = 100_000
 

@@ -102,3 +102,18 @@ def test_bounds_must_be_positive_integers(tmp_path, bad):
     (tmp_path / "b.gz").write_bytes(source_only_cat048_gzip(10))
     with pytest.raises(ValueError, match="max_records: expected a positive integer"):
         import_asterix(tmp_path / "b.gz", SITES, max_records=bad)
+
+
+def test_the_command_warns_when_a_bound_is_reached(tmp_path, capsys):
+    from registration.cli import main
+
+    (tmp_path / "b.gz").write_bytes(source_only_cat048_gzip(5000))
+    SITES.to_csv(tmp_path / "sites.csv", index=False)
+    argv = ["import", "asterix", str(tmp_path / "b.gz"), "--sites", str(tmp_path / "sites.csv")]
+    assert (
+        main([*argv, "--out", str(tmp_path / "o"), "--max-records", "1000", "--max-rejected-rows", "10"]) == 0
+    )
+    captured = capsys.readouterr()
+    assert "warning: " in captured.err and "--max-records" in captured.err
+    assert "set aside 1001 records" in captured.out  # the summary total (1000 records, 1 over_limit)
+    assert sum(1 for _ in open(tmp_path / "o" / "rejected.csv")) == 1 + 11
