@@ -49,6 +49,7 @@ def test_a_b_lans_import_to_the_single_feed(recording, single, sites, tmp_path):
     assert result.summary["rejected"]["by_reason"]["duplicate"] == dups["records"]
     assert {e["category"] for e in dups["by_source"]} == {"048", "034", "021"}
     assert dups["by_file"] == [{"file": str(path), "records": dups["records"]}]
+    assert dups["by_port"] == [{"port": 8601, "records": dups["records"]}]  # LAN B repeats LAN A
     assert "time_going_back" not in result.summary
     # with --ports, one LAN alone is the single feed without duplicates
     lan_a = import_asterix(path, sites, ports=[8600])

@@ -37,14 +37,16 @@ CHUNK_BYTES = 8 << 20
 class CategoryRecords:
     """The records of one category in one file, (R,) each: ``fields`` (raw fields of the
     category's decoder), ``offset`` (of the record's FSPEC in the file), ``packet`` (number from 1,
-    0 for a raw file), ``capture_time`` (UTC s since 1970, NaN for a raw file) and ``digest`` (a
-    64-bit hash of the record's octets, within one process: duplicates are found by it)."""
+    0 for a raw file), ``capture_time`` (UTC s since 1970, NaN for a raw file), ``digest`` (a
+    64-bit hash of the record's octets, within one process: duplicates are found by it) and ``port``
+    (UDP destination port, 0 for a raw file)."""
 
     fields: dict
     offset: np.ndarray
     packet: np.ndarray
     capture_time: np.ndarray
     digest: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+    port: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
 
     def subset(self, keep: np.ndarray) -> "CategoryRecords":
         """The records where ``keep`` (R,) bool is True."""
@@ -54,6 +56,7 @@ class CategoryRecords:
             self.packet[keep],
             self.capture_time[keep],
             self.digest[keep] if self.digest.size else self.digest,
+            self.port[keep] if self.port.size else self.port,
         )
 
     @property
@@ -175,6 +178,7 @@ def _walk_category(
                 cap.segments.packet[seg],
                 cap.segments.time[seg],
                 digest,
+                cap.segments.port[seg] if cap.segments.port.size else np.zeros(seg.size, dtype=np.int64),
             )
         )
         if progress is not None:
@@ -187,6 +191,7 @@ def _walk_category(
         cat_(2).astype(np.int64),
         cat_(3).astype(np.float64),
         cat_(4).astype(np.int64),
+        cat_(5).astype(np.int64),
     )
 
 

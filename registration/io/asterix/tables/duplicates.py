@@ -5,7 +5,8 @@ SAC/SIC and time of day) came earlier in the stream on the same day of the time 
 recorded twice (the A and B LANs of a radar network: two UDP ports or two source addresses in one
 capture, or two files) or a recording whose tail replays its beginning. Duplicates are set aside
 (reason ``duplicate``) before any other rule, so that every report counts once in the solve, and
-counted per data source and per file in the summary. ``keep_duplicates`` turns this off.
+counted per data source, per file and per UDP destination port (captures) in the summary.
+``keep_duplicates`` turns this off.
 
 **Time going back**: in stream order, a record of a data source (category, SAC/SIC) whose time
 lies more than :data:`BACK_STEP_S` before the latest time of that source so far (a replayed tail,
@@ -42,6 +43,7 @@ class StreamChecks:
         self.seen: dict[int, np.ndarray] = {}
         self.by_source: Counter = Counter()
         self.by_file: Counter = Counter()
+        self.by_port: Counter = Counter()
         self.latest: dict[tuple, float] = {}
         self.back: dict[tuple, list] = {}
 
@@ -66,6 +68,9 @@ class StreamChecks:
             for p, n in zip(*[a.tolist() for a in np.unique(src, return_counts=True)]):
                 self.by_source[(cat, p >> 8, p & 0xFF) if p >= 0 else (cat, None, None)] += n
             self.by_file[path] += int(dup.sum())
+            if rec.port.size == rec.size:
+                for port, n in zip(*[a.tolist() for a in np.unique(rec.port[dup], return_counts=True)]):
+                    self.by_port[port] += n
         return dup
 
     def time_steps(self, path: str, cat: int, rec: CategoryRecords, times: np.ndarray) -> None:
@@ -101,6 +106,7 @@ class StreamChecks:
                     for (c, s, i), n in sorted(self.by_source.items(), key=lambda kv: (-kv[1], str(kv[0])))
                 ],
                 "by_file": [{"file": p, "records": n} for p, n in self.by_file.items()],
+                "by_port": [{"port": p, "records": n} for p, n in sorted(self.by_port.items()) if p],
             },
             "time_going_back": [
                 {
