@@ -142,15 +142,20 @@ def _asterix_options(ast: argparse.ArgumentParser) -> None:
         "feeds; default: the latest). A feed read in the wrong edition gives records that fail to walk "
         "or lack their address",
     )
-    for name, what in (
-        ("bytes", "the decompressed bytes read per input (default 8 GiB); the rest is set aside"),
-        ("records", "the records decoded per input (default 2*10^6, about 0.8 GB); the rest is set aside"),
-        (
-            "rejected-rows",
-            "the rows listed in rejected.csv (default 10^5); the rest is counted in the summary",
-        ),
-    ):
-        ast.add_argument(f"--max-{name}", type=_positive, default=None, metavar="N", help=f"bound on {what}")
+    _bounds(ast, ("bytes", "records", "rejected-rows"))
+
+
+def _bounds(p: argparse.ArgumentParser, names: tuple) -> None:
+    """The --max-* options (``names`` of :data:`LIMIT_OPTIONS` with hyphens)."""
+    what = {
+        "bytes": "the (decompressed) bytes read per input (default 8 GiB); the rest is set aside",
+        "records": "the records decoded per input (default 2*10^6, about 0.8 GB); the rest is set aside",
+        "rejected-rows": "the rows listed in rejected.csv (default 10^5); the rest is counted in the summary",
+    }
+    for name in names:
+        p.add_argument(
+            f"--max-{name}", type=_positive, default=None, metavar="N", help=f"bound on {what[name]}"
+        )
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -192,6 +197,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         help="the fleet sensors file of the own ship's sensors, with an optional talker column "
         "(e.g. RA) naming the TTM talker of each",
     )
+    _bounds(nmea, ("bytes", "rejected-rows"))
     nmea.add_argument(
         "--keep-duplicates",
         action="store_true",
@@ -242,6 +248,7 @@ def _run_importer(args: argparse.Namespace) -> ImportResult:
         date=args.date,
         keep_acquiring=args.keep_acquiring,
         keep_duplicates=args.keep_duplicates,
+        **{k: getattr(args, k) for k in LIMIT_OPTIONS if getattr(args, k, None) is not None},
         progress=True,
         platform_priors=priors,
     )

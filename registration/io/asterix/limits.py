@@ -103,7 +103,14 @@ class BoundedLedger(RejectedLedger):
             return listed
         total = sum(self.unlisted.values())
         codes = ", ".join(f"{c}: {n}" for c, n in self.unlisted.most_common())
-        row: dict = {name: [pd.NA] for name in listed.columns}
+        row: dict = {
+            name: [
+                0
+                if pd.api.types.is_integer_dtype(t) and not isinstance(t, pd.api.extensions.ExtensionDtype)
+                else pd.NA
+            ]
+            for name, t in listed.dtypes.items()
+        }
         row["file"] = [self.first_unlisted_file]
         row[self.columns.code] = ["not_listed"]
         row["reason"] = [

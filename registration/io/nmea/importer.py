@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Iterator, Mapping, Sequence
 
 import numpy as np
 
+from registration.io.asterix.limits import DEFAULT_MAX_BYTES, DEFAULT_MAX_REJECTED_ROWS, BoundedLedger, Limits
 from registration.io.files.ledger import RejectedLedger
 from registration.io.imports import ImportResult
 from registration.io.nmea.ais import read_ais
@@ -138,6 +139,12 @@ def _anchors(fixes: dict, dates, pashr) -> tuple[np.ndarray, np.ndarray]:
     return index, tod[first]
 
 
+def _ledger(paths: list, max_bytes: int, max_rejected_rows: int) -> BoundedLedger:
+    """The rejected ledger of the import, the bounds checked (positive integers)."""
+    Limits(max_bytes=max_bytes, max_rejected_rows=max_rejected_rows)
+    return BoundedLedger(LEDGER_COLUMNS, max_rejected_rows, [str(Path(p)) for p in paths])
+
+
 @contextmanager
 def _naming_the_log(paths: list) -> Iterator[None]:
     """A :class:`NmeaImportError` about the log as a whole (no position, no heading) names its files."""
@@ -163,6 +170,8 @@ def import_nmea(
     ais_sigmas: AisSigmas | None = None,
     pashr_angles: str = "tait-bryan",
     keep_duplicates: bool = False,
+    max_bytes: int = DEFAULT_MAX_BYTES,
+    max_rejected_rows: int = DEFAULT_MAX_REJECTED_ROWS,
 ) -> NmeaImport:
     """Import NMEA 0183 log files (with AIS) as the fleet tables of ``platform`` (docs/howto/import-nmea.md).
 
@@ -178,7 +187,10 @@ def import_nmea(
     ``ais_sigmas``: the AIS reference sigma model (:class:`AisSigmas`); ``pashr_angles``:
     ``"tait-bryan"`` or ``"tss"``, the roll convention of ``$PASHR``; ``keep_duplicates``: keep
     identical sentences with the same time (by default set aside as ``duplicate``,
-    :mod:`registration.io.nmea.duplicates`).
+    :mod:`registration.io.nmea.duplicates`); ``max_bytes``: the bytes read per file (default 8
+    GiB; the lines beyond are set aside as ``over_limit``); ``max_rejected_rows``: the rows
+    ``rejected`` lists (default 10^5; the rest counted in the summary, one last row ``not_listed``
+    says how many; :mod:`registration.io.asterix.limits`).
 
     Bad lines never raise: they are set aside in ``rejected`` with a reason. ValueError for bad
     arguments and a bad sensors table (naming row, column, unit);
@@ -195,9 +207,9 @@ def import_nmea(
     paths = [paths] if isinstance(paths, (str, Path)) else list(paths)
     if not paths:
         raise ValueError("paths: no log file given")
-    rejections = RejectedLedger(LEDGER_COLUMNS, [str(Path(p)) for p in paths])
+    rejections = _ledger(paths, max_bytes, max_rejected_rows)
     with _naming_the_log(paths):
-        log = read_log(paths, rejections, progress)
+        log = read_log(paths, rejections, progress, max_bytes)
         log, duplicates = (log, 0) if keep_duplicates else drop_duplicates(log, rejections)
         not_used = _sort_types(log, rejections)
         fixes, dates = read_fixes(log, rejections)

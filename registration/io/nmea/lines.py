@@ -178,10 +178,22 @@ def _check_text(data: bytes, path: Path) -> None:
         )
 
 
-def _split_file(path: Path, file_index: int, out: dict, rejections: RejectedLedger, bar) -> tuple[int, int]:
+def _split_file(
+    path: Path, file_index: int, out: dict, rejections: RejectedLedger, bar, max_bytes: int | None = None
+) -> tuple[int, int]:
     """Append one file's sentences to ``out`` (lists); lines that hold none go to ``rejections``.
     Returns (lines, blank lines). :class:`NmeaImportError` for a binary file."""
-    data = path.read_bytes()
+    with open(path, "rb") as f:
+        data = f.read() if max_bytes is None else f.read(max_bytes + 1)
+    if max_bytes is not None and len(data) > max_bytes:
+        data = data[: data.rfind(b"\n", 0, max_bytes) + 1]
+        rejections.add(
+            file_index,
+            "over_limit",
+            f"the file exceeds the limit of {max_bytes} bytes (max_bytes, --max-bytes); the lines from "
+            "here on are not read",
+            line=data.count(b"\n") + 1,
+        )
     _check_text(data, path)
     text = data.decode("latin-1")
     del data
@@ -260,7 +272,9 @@ def _addresses(sentences: list[str]) -> tuple[np.ndarray, np.ndarray]:
     return np.array(talker, dtype=object), np.array(kind, dtype=object)
 
 
-def read_log(paths, rejections: RejectedLedger, progress: bool = False) -> SentenceLog:
+def read_log(
+    paths, rejections: RejectedLedger, progress: bool = False, max_bytes: int | None = None
+) -> SentenceLog:
     """Read the log files (in the order given; each line's number counts from 1 in its file) into a
     :class:`SentenceLog` of the sentences with a correct checksum. Lines without a sentence, with a
     bad prefix or tag block, without a checksum or with a wrong one go to ``rejections``.
@@ -274,7 +288,7 @@ def read_log(paths, rejections: RejectedLedger, progress: bool = False) -> Sente
     lines = blank = 0
     try:
         for k, p in enumerate(files):
-            n, b = _split_file(p, k, out, rejections, bar)
+            n, b = _split_file(p, k, out, rejections, bar, max_bytes)
             lines += n
             blank += b
     finally:
