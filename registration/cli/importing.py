@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import argparse
 import datetime as dt
+import sys
 import textwrap
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -29,7 +30,12 @@ from registration.cli.staging import staged_outputs
 if TYPE_CHECKING:  # imported when the command runs: `registration --help` loads no importer
     from registration.io.imports import ImportResult
 
-__all__ = ["HELP", "add_arguments", "run"]
+__all__ = ["HELP", "CAT021_EDITIONS", "LIMIT_OPTIONS", "add_arguments", "run"]
+
+#: The CAT021 editions ``--cat021-edition`` takes (registration.io.asterix.SUPPORTED_EDITIONS[21]).
+CAT021_EDITIONS = ("0.23", "0.24", "0.25", "0.26", "2.1", "2.2", "2.3", "2.4", "2.5", "2.6", "2.7")
+#: The bounds of an ASTERIX import given as options (keyword arguments of ``import_asterix``).
+LIMIT_OPTIONS = ("max_bytes", "max_records", "max_rejected_rows")
 
 HELP = (
     "import a recording (ASTERIX, NMEA 0183 with AIS) as the fleet tables that "
@@ -90,6 +96,68 @@ def _common(p: argparse.ArgumentParser) -> None:
     p.add_argument("--format", choices=("csv", "parquet"), default="csv", help="file format of the tables")
 
 
+def _positive(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
+    return value
+
+
+def _ports(text: str) -> list[int]:
+    try:
+        ports = [int(p) for p in text.split(",") if p.strip()]
+    except ValueError:
+        ports = []
+    if not ports or not all(0 < p < 65536 for p in ports):
+        raise argparse.ArgumentTypeError(
+            f"expected UDP port numbers 1-65535 separated by commas, got {text!r}"
+        )
+    return ports
+
+
+def _asterix_options(ast: argparse.ArgumentParser) -> None:
+    """The ASTERIX options beyond the common ones: duplicates, UDP ports, CAT021 edition, the bounds."""
+    ast.add_argument(
+        "--keep-duplicates",
+        action="store_true",
+        help="keep records that repeat an earlier one (same category, SAC/SIC, time of day and bytes: "
+        "a feed recorded on two LANs, a replayed tail); by default they are set aside as duplicate",
+    )
+    ast.add_argument(
+        "--ports",
+        type=_ports,
+        default=None,
+        metavar="PORT[,PORT...]",
+        help="UDP destination ports to read from pcap/pcapng captures (default: all)",
+    )
+    ast.add_argument(
+        "--cat021-edition",
+        choices=CAT021_EDITIONS,
+        default=None,
+        metavar="EDITION",
+        help="the CAT021 (ADS-B) edition of the feed: " + ", ".join(CAT021_EDITIONS) + " (0.2x: old "
+        "feeds; default: the latest). A feed read in the wrong edition gives records that fail to walk "
+        "or lack their address",
+    )
+    _bounds(ast, ("bytes", "records", "rejected-rows"))
+
+
+def _bounds(p: argparse.ArgumentParser, names: tuple) -> None:
+    """The --max-* options (``names`` of :data:`LIMIT_OPTIONS` with hyphens)."""
+    what = {
+        "bytes": "the (decompressed) bytes read per input (default 8 GiB); the rest is set aside",
+        "records": "the records decoded per input (default 2*10^6, about 0.8 GB); the rest is set aside",
+        "rejected-rows": "the rows listed in rejected.csv (default 10^5); the rest is counted in the summary",
+    }
+    for name in names:
+        p.add_argument(
+            f"--max-{name}", type=_positive, default=None, metavar="N", help=f"bound on {what[name]}"
+        )
+
+
 def add_arguments(p: argparse.ArgumentParser) -> None:
     from registration.cli import CommandParser  # the parser class that names the full command
 
@@ -111,6 +179,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         "prior columns of the sensors file and prior_heading_deg, prior_pitch_deg, prior_roll_deg "
         "(default 0: a surveyed site)",
     )
+    _asterix_options(ast)
     nmea = sub.add_parser(
         "nmea",
         help=NMEA_HELP,
@@ -127,6 +196,13 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         metavar="FILE",
         help="the fleet sensors file of the own ship's sensors, with an optional talker column "
         "(e.g. RA) naming the TTM talker of each",
+    )
+    _bounds(nmea, ("bytes", "rejected-rows"))
+    nmea.add_argument(
+        "--keep-duplicates",
+        action="store_true",
+        help="keep identical sentences with the same time (a feed recorded twice); by default they are "
+        "set aside as duplicate",
     )
     nmea.add_argument("--keep-acquiring", action="store_true", help="keep TTM rows of status Q (acquiring)")
     for angle in ("heading", "pitch", "roll"):
@@ -151,7 +227,16 @@ def _run_importer(args: argparse.Namespace) -> ImportResult:
         from registration.io.asterix import import_asterix, read_sites
 
         sites = read_sites(args.sites)
-        return import_asterix(args.inputs, sites, date=args.date, progress=True)
+        return import_asterix(
+            args.inputs,
+            sites,
+            date=args.date,
+            progress=True,
+            editions=None if args.cat021_edition is None else {21: args.cat021_edition},
+            ports=args.ports,
+            keep_duplicates=args.keep_duplicates,
+            **{k: getattr(args, k) for k in LIMIT_OPTIONS if getattr(args, k) is not None},
+        )
     from registration.io.nmea import import_nmea, read_sensors
 
     sensors = read_sensors(args.sensors)
@@ -162,6 +247,8 @@ def _run_importer(args: argparse.Namespace) -> ImportResult:
         sensors,
         date=args.date,
         keep_acquiring=args.keep_acquiring,
+        keep_duplicates=args.keep_duplicates,
+        **{k: getattr(args, k) for k in LIMIT_OPTIONS if getattr(args, k, None) is not None},
         progress=True,
         platform_priors=priors,
     )
@@ -170,14 +257,24 @@ def _run_importer(args: argparse.Namespace) -> ImportResult:
 def run(args: argparse.Namespace) -> int:
     """Import, print the counts, write the folder whole; exit 2 when the input is no recording at all."""
     for path in args.inputs:
+        if path.is_dir():
+            raise CommandError(f"{path}: a directory; give the recording's files (e.g. {path}/*)")
         if not path.is_file():
-            raise CommandError(f"{path}: no such file")
+            raise CommandError(
+                f"{path}: no such file" if not path.exists() else f"{path}: not a regular file"
+            )
     from registration.io.imports import IMPORT_FILES  # every file an import may write (both formats)
 
     out = prepare_out(args.out)
     result = _run_importer(args)
     counts = ", ".join(f"{len(frame)} {name} rows" for name, frame in result.tables.items())
-    print(f"imported {counts}; set aside {len(result.rejected)} records (rejected.csv)")
+    rejected = result.summary.get("rejected", {})
+    total = rejected.get("total", rejected.get("lines", len(result.rejected)))
+    print(f"imported {counts}; set aside {total} records (rejected.csv)")
+    for entry in result.summary.get("files", []):  # a bound reached: the user must know
+        for note in entry.get("notes", []) if isinstance(entry, dict) else ():
+            if "(max_" in note:
+                print(f"warning: {note}", file=sys.stderr)
     with staged_outputs(out, f"registration import {args.format_name}", IMPORT_FILES) as folder:
         with writing(folder.path):
             written = result.write(folder.path, args.format)

@@ -306,3 +306,85 @@ def test_heading_error_weak_under_a_gentle_roll_and_the_sum_is_given(tmp_path):
     both = est.loc[("OWN+RADAR", "heading_error+bearing_bias")]
     assert both["status"] == "identifiable combination" and both["sigma"] < 0.01
     assert abs(both["estimate"] - sum(truth.values()) * DEG) < 3.5 * both["sigma"]
+
+
+def _exits_cleanly(capsys, argv: list, path) -> int:
+    """Run the command: exit 0, or 2 with one line naming ``path``; never a traceback, never 4."""
+    code = main(argv)
+    err = capsys.readouterr().err
+    assert code in (0, 2) and "Traceback" not in err, err
+    if code == 2:
+        assert err.count("\n") == 1 and str(path) in err, err
+    return code
+
+
+@pytest.mark.parametrize("case", ["short12", "short16", "short20", "late"])
+def test_pcapng_reproductions_exit_cleanly(asterix_files, tmp_path, capsys, case):
+    """Issue 32: a pcapng whose last Enhanced Packet Block is 12-20 bytes long, or whose packet
+    time is out of range (pcapng blocks built with struct in tests/io/asterix/repro.py)."""
+    from tests.io.asterix.repro import out_of_range_time, short_last_epb
+
+    _, sites = asterix_files
+    path = tmp_path / f"{case}.pcapng"
+    path.write_bytes(out_of_range_time() if case == "late" else short_last_epb(int(case[5:])))
+    argv = ["import", "asterix", str(path), "--sites", str(sites), "--out", str(tmp_path / "o")]
+    _exits_cleanly(capsys, argv, path)
+
+
+@pytest.mark.parametrize(
+    "stamp", ["0001-01-01T00:00:00Z ", "0001-01-01T00:00:00+14:00 ", "9999-12-31T23:59:59-14:00 "]
+)
+def test_nmea_line_stamped_in_the_year_1_never_exits_4(bridge_log, tmp_path, capsys, stamp):
+    """Issue 32: an AIS line (or every line) stamped 0001-01-01: the stamp is set aside as a bad
+    prefix, the import goes on (exit 0), or exit 2 naming the file when nothing is left."""
+    log, path, sensors = bridge_log
+    lines = path.read_text().splitlines()[:400]
+    ais = next(line for line in lines if "AIVDM" in line).split("\\")[-1]
+    for name, text in (("one.log", [*lines, stamp + ais]), ("all.log", [stamp + x for x in lines])):
+        target = tmp_path / name
+        target.write_text("\n".join(text) + "\n")
+        argv = ["import", "nmea", str(target), "--platform", "OWN", "--sensors", str(sensors)]
+        code = _exits_cleanly(capsys, [*argv, "--out", str(tmp_path / "o")], target)
+        assert code == (0 if name == "one.log" else 2)
+
+
+def test_a_directory_is_named_a_directory(asterix_files, tmp_path, capsys):
+    """Issue 31 item 8: `import asterix DIR` says it is a directory, not 'no such file'."""
+    _, sites = asterix_files
+    argv = ["import", "asterix", str(tmp_path), "--sites", str(sites), "--out", str(tmp_path / "o")]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert f"{tmp_path}: a directory" in err and "no such file" not in err
+    assert main([*argv[:2], str(tmp_path / "none.ast"), *argv[3:]]) == 2
+    assert "none.ast: no such file" in capsys.readouterr().err
+
+
+def test_nmea_import_of_a_binary_file(asterix_files, bridge_log, tmp_path, capsys):
+    """Issue 31 item 8: an NMEA import of a binary file (an ASTERIX capture) says 'not a text NMEA log'."""
+    files, _ = asterix_files
+    _, _, sensors = bridge_log
+    argv = ["import", "nmea", str(files["pcap"]), "--platform", "OWN", "--sensors", str(sensors)]
+    assert main([*argv, "--out", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err
+    assert f"{files['pcap']}: not a text NMEA log" in err and err.count("\n") == 1
+
+
+def test_a_pcap_without_asterix_exits_2_and_leaves_out_as_it_was(asterix_files, tmp_path, capsys):
+    """Issue 31 item 2: a capture of other UDP traffic exits 2, and a previous good import in
+    --out is kept byte for byte."""
+    import numpy as np
+
+    from tests.io.asterix.containers import pcap_bytes, udp_frame
+
+    files, sites = asterix_files
+    out = tmp_path / "out"
+    assert main(["import", "asterix", str(files["raw"]), "--sites", str(sites), "--out", str(out)]) == 0
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    rng = np.random.default_rng(1)
+    other = tmp_path / "other.pcap"
+    other.write_bytes(pcap_bytes([udp_frame(rng.bytes(60), dport=5353) for _ in range(8)], [1.7e9] * 8))
+    capsys.readouterr()
+    assert main(["import", "asterix", str(other), "--sites", str(sites), "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert f"{other}: not an ASTERIX recording (" in err and err.count("\n") == 1
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before

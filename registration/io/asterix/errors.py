@@ -41,6 +41,10 @@ REASONS = {
     "no_quality": "a CAT021 report without NACp (I021/090; NUCp for editions 0.2x)",
     "low_nacp": "a CAT021 report with NACp below 7 (NUCp below 6 for editions 0.2x): EPU of 0.3 NM or more",
     "no_geometric_height": "a CAT021 report without geometric height (I021/140)",
+    "duplicate": "a record that repeats an earlier one (same category, SAC/SIC, time of day and octets): "
+    "a duplicated feed or a replayed recording",
+    "over_limit": "what lies beyond a bound of the import (max_bytes, max_records): not read",
+    "not_listed": "the last row of a rejected table cut at max_rejected_rows: how many more were set aside",
 }
 #: The rejected table's columns: the byte offset in the (decompressed) file, the packet number
 #: from 1 and the category (both empty where they do not apply).

@@ -14,7 +14,15 @@ from registration.core.progress import progress_bar
 from registration.io.asterix.decode.reader import decode_file
 from registration.io.asterix.decode.uap import check_editions
 from registration.io.asterix.errors import LEDGER_COLUMNS, REASONS
+from registration.io.asterix.limits import (
+    DEFAULT_MAX_BYTES,
+    DEFAULT_MAX_RECORDS,
+    DEFAULT_MAX_REJECTED_ROWS,
+    BoundedLedger,
+    Limits,
+)
 from registration.io.asterix.tables.assemble import FileRows, SiteLookup, assemble_file
+from registration.io.asterix.tables.duplicates import StreamChecks
 from registration.io.asterix.tables.fleetfiles import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
 from registration.io.asterix.tables.sites import check_sites, read_sites
 from registration.io.asterix.tables.summary import (
@@ -124,6 +132,10 @@ def import_asterix(
     editions: Mapping[int, str] | None = None,
     ports: Iterable[int] | None = None,
     reference_targets: str = "plotted",
+    max_bytes: int = DEFAULT_MAX_BYTES,
+    max_records: int = DEFAULT_MAX_RECORDS,
+    max_rejected_rows: int = DEFAULT_MAX_REJECTED_ROWS,
+    keep_duplicates: bool = False,
 ) -> AsterixImport:
     """Import ASTERIX recordings (raw data blocks, pcap, pcapng; gzip or not; told apart by content).
 
@@ -137,6 +149,13 @@ def import_asterix(
     feed). ``ports``: UDP destination ports to read from captures (None: all).
     ``reference_targets``: 'plotted' (default) keeps the ADS-B reports of targets that some plot
     names (the fleet reader refuses reference targets without plots), 'all' keeps all.
+    ``max_bytes``, ``max_records``: the decompressed octets read and the records decoded per input;
+    ``max_rejected_rows``: the rows ``rejected`` lists (the rest are counted in the summary, and one
+    last row says how many). Beyond a bound the rest is set aside as ``over_limit``
+    (:mod:`registration.io.asterix.limits`; defaults 8 GiB, 2*10^6 records, 10^5 rows).
+    ``keep_duplicates``: keep records that repeat an earlier one (same category, octets and day);
+    by default they are set aside as ``duplicate`` and counted
+    (:mod:`registration.io.asterix.tables.duplicates`).
 
     Raises :class:`~registration.io.asterix.errors.AsterixImportError` (a ValueError) naming the
     file for a file that is neither ASTERIX nor a capture, ValueError for bad arguments or SITES;
@@ -150,19 +169,22 @@ def import_asterix(
     sites = read_sites(sites) if isinstance(sites, (str, Path)) else check_sites(sites, "sites")
     editions = check_editions(editions)
     date = _as_date(date)
-    rejections, bar = RejectedLedger(LEDGER_COLUMNS), _Progress(paths, progress)
+    limits = Limits(max_bytes, max_records, max_rejected_rows)
+    rejections, bar = BoundedLedger(LEDGER_COLUMNS, max_rejected_rows), _Progress(paths, progress)
     decoded = []
     try:
         for path in paths:
             bar.start(path)
             decoded.append(
-                decode_file(path, editions, rejections, ports, bar if bar.bar is not None else None)
+                decode_file(path, editions, rejections, ports, bar if bar.bar is not None else None, limits)
             )
             decoded[-1].capture.buf = np.zeros(0, dtype=np.uint8)  # fields decoded: the file's bytes can go
             bar.finish_file()
     finally:
         bar.close()
-    return _build(decoded, sites, date, editions, rejections, reference_targets)
+    return _build(
+        decoded, sites, date, editions, rejections, reference_targets, StreamChecks(keep_duplicates)
+    )
 
 
 def _build(
@@ -172,6 +194,7 @@ def _build(
     editions: dict,
     rejections: RejectedLedger,
     which: str,
+    checks: StreamChecks,
 ) -> AsterixImport:
     first_capture = next(
         (d.capture.counts["first_packet_time"] for d in decoded if "first_packet_time" in d.capture.counts),
@@ -184,7 +207,9 @@ def _build(
     unwrapper = Unwrapper(reference_day)
     names = sites["sensor"].astype(str).to_numpy()
     lookup = SiteLookup(sites["sac"].to_numpy(), sites["sic"].to_numpy())
-    rows: list[FileRows] = [assemble_file(d, unwrapper, lookup, names, editions, rejections) for d in decoded]
+    rows: list[FileRows] = [
+        assemble_file(d, unwrapper, lookup, names, editions, rejections, checks) for d in decoded
+    ]
     plots = _concat([r.plots for r in rows], (*PLOT_COLUMNS, "kind", "capture_lag_s"))
     service = _concat(
         [r.service for r in rows], ("sensor", "msg_type", "time_s", "azimuth_deg", "rotation_s")
@@ -214,6 +239,7 @@ def _build(
         "sensors": sensor_summary(sites, plots, service, decoded_counts),
         "sac_sic_not_in_sites": sources_not_in_sites(unknown),
         "reference": ref_info,
+        **checks.summary(),
         "rejected": {"total": rejections.count(), "by_reason": rejections.by_code(tuple(REASONS))},
     }
     plot_frame = _frame({c: plots[c] for c in PLOT_COLUMNS})

@@ -96,7 +96,10 @@ class Clock:
         if not self.known or not np.isfinite(time_s):
             return None
         epoch = dt.datetime(1970, 1, 1, tzinfo=dt.timezone.utc)
-        stamp = epoch + dt.timedelta(days=self.origin_day, seconds=float(time_s))
+        try:
+            stamp = epoch + dt.timedelta(days=self.origin_day, seconds=float(time_s))
+        except OverflowError:  # beyond the years 1-9999: no date to give
+            return None
         return stamp.isoformat().replace("+00:00", "Z")
 
     def origin_date(self) -> str | None:

@@ -38,6 +38,9 @@ REASONS = {
     "ais_no_time": "an AIS position without a reception time (tag block c: or timestamp prefix)",
     "ais_no_position": "an AIS position report whose position is not available",
     "ais_own_ship": "an AIS position of the own ship (its MMSI is in !AIVDO)",
+    "over_limit": "the lines of a file beyond max_bytes: not read",
+    "not_listed": "the last row of a rejected table cut at max_rejected_rows: how many more were set aside",
+    "duplicate": "a sentence repeating one of the last 200 with the same time (a duplicated feed)",
     "ais_duplicate": "the same AIS report (MMSI, time and position) received again",
     "no_date": "the log gives no date, so AIS reception times cannot be placed",
 }

@@ -11,17 +11,20 @@ from __future__ import annotations
 
 import datetime as dt
 import math
+from contextlib import contextmanager
 from pathlib import Path
-from typing import TYPE_CHECKING, Mapping, Sequence
+from typing import TYPE_CHECKING, Iterator, Mapping, Sequence
 
 import numpy as np
 
+from registration.io.asterix.limits import DEFAULT_MAX_BYTES, DEFAULT_MAX_REJECTED_ROWS, BoundedLedger, Limits
 from registration.io.files.ledger import RejectedLedger
 from registration.io.imports import ImportResult
 from registration.io.nmea.ais import read_ais
 from registration.io.nmea.attitude import PASHR_ANGLES, pashr_subtypes, read_headings, read_pashr
 from registration.io.nmea.clock import fit_clock
-from registration.io.nmea.errors import LEDGER_COLUMNS
+from registration.io.nmea.duplicates import drop_duplicates
+from registration.io.nmea.errors import LEDGER_COLUMNS, NmeaImportError
 from registration.io.nmea.fixes import read_fixes
 from registration.io.nmea.lines import SentenceLog, read_log
 from registration.io.nmea.navigation import build_navigation
@@ -136,6 +139,25 @@ def _anchors(fixes: dict, dates, pashr) -> tuple[np.ndarray, np.ndarray]:
     return index, tod[first]
 
 
+def _ledger(paths: list, max_bytes: int, max_rejected_rows: int) -> BoundedLedger:
+    """The rejected ledger of the import, the bounds checked (positive integers)."""
+    Limits(max_bytes=max_bytes, max_rejected_rows=max_rejected_rows)
+    return BoundedLedger(LEDGER_COLUMNS, max_rejected_rows, [str(Path(p)) for p in paths])
+
+
+@contextmanager
+def _naming_the_log(paths: list) -> Iterator[None]:
+    """A :class:`NmeaImportError` about the log as a whole (no position, no heading) names its files."""
+    try:
+        yield
+    except NmeaImportError as exc:
+        names = [str(p) for p in paths]
+        if str(exc).startswith(tuple(names)):
+            raise
+        where = names[0] if len(names) == 1 else f"{names[0]} (and {len(names) - 1} more files)"
+        raise NmeaImportError(f"{where}: {exc}") from None
+
+
 def import_nmea(
     paths: str | Path | Sequence[str | Path],
     platform: str,
@@ -147,6 +169,9 @@ def import_nmea(
     platform_priors: Mapping[str, float] | None = None,
     ais_sigmas: AisSigmas | None = None,
     pashr_angles: str = "tait-bryan",
+    keep_duplicates: bool = False,
+    max_bytes: int = DEFAULT_MAX_BYTES,
+    max_rejected_rows: int = DEFAULT_MAX_REJECTED_ROWS,
 ) -> NmeaImport:
     """Import NMEA 0183 log files (with AIS) as the fleet tables of ``platform`` (docs/howto/import-nmea.md).
 
@@ -160,7 +185,12 @@ def import_nmea(
     ``platform_priors``: the platform's attitude prior sigmas by platforms file column
     (``prior_heading_deg``, ``prior_pitch_deg``, ``prior_roll_deg``; deg; missing or None: free);
     ``ais_sigmas``: the AIS reference sigma model (:class:`AisSigmas`); ``pashr_angles``:
-    ``"tait-bryan"`` or ``"tss"``, the roll convention of ``$PASHR``.
+    ``"tait-bryan"`` or ``"tss"``, the roll convention of ``$PASHR``; ``keep_duplicates``: keep
+    identical sentences with the same time (by default set aside as ``duplicate``,
+    :mod:`registration.io.nmea.duplicates`); ``max_bytes``: the bytes read per file (default 8
+    GiB; the lines beyond are set aside as ``over_limit``); ``max_rejected_rows``: the rows
+    ``rejected`` lists (default 10^5; the rest counted in the summary, one last row ``not_listed``
+    says how many; :mod:`registration.io.asterix.limits`).
 
     Bad lines never raise: they are set aside in ``rejected`` with a reason. ValueError for bad
     arguments and a bad sensors table (naming row, column, unit);
@@ -177,28 +207,34 @@ def import_nmea(
     paths = [paths] if isinstance(paths, (str, Path)) else list(paths)
     if not paths:
         raise ValueError("paths: no log file given")
-    rejections = RejectedLedger(LEDGER_COLUMNS, [str(Path(p)) for p in paths])
-    log = read_log(paths, rejections, progress)
-    not_used = _sort_types(log, rejections)
-    fixes, dates = read_fixes(log, rejections)
-    attitudes = {
-        "PASHR": read_pashr(log, rejections, pashr_angles),
-        "HDT": read_headings(log, "HDT", rejections),
-        "THS": read_headings(log, "THS", rejections),
-    }
-    clock = fit_clock(*_anchors(fixes, dates, attitudes["PASHR"]), dates, date, log.received)
-    nav = build_navigation(log, clock, fixes, attitudes, rejections)
-    plots = read_ttm(log, clock, nav, talkers, only, keep_acquiring, rejections)
-    messages = read_ais(log, rejections)
-    refs = read_references(log, messages, clock, nav.sea_level, sigmas, rejections)
-    summary = build_summary(ImportParts(log, clock, nav, plots, refs, rejections, not_used, len(messages)))
-    return NmeaImport(
-        plots=plots.frame(),
-        navigation=nav.frame(platform),
-        sensors=sensor_rows.drop(columns=[TALKER_COLUMN], errors="ignore"),
-        platforms=platforms,
-        reference=refs.frame(),
-        rejected=rejections.frame(),
-        summary=summary,
-        targets=refs.targets_frame(),
-    )
+    rejections = _ledger(paths, max_bytes, max_rejected_rows)
+    with _naming_the_log(paths):
+        log = read_log(paths, rejections, progress, max_bytes)
+        log, duplicates = (log, 0) if keep_duplicates else drop_duplicates(log, rejections)
+        not_used = _sort_types(log, rejections)
+        fixes, dates = read_fixes(log, rejections)
+        attitudes = {
+            "PASHR": read_pashr(log, rejections, pashr_angles),
+            "HDT": read_headings(log, "HDT", rejections),
+            "THS": read_headings(log, "THS", rejections),
+        }
+        clock = fit_clock(*_anchors(fixes, dates, attitudes["PASHR"]), dates, date, log.received)
+        nav = build_navigation(log, clock, fixes, attitudes, rejections)
+        plots = read_ttm(log, clock, nav, talkers, only, keep_acquiring, rejections)
+        messages = read_ais(log, rejections)
+        refs = read_references(log, messages, clock, nav.sea_level, sigmas, rejections)
+        summary = build_summary(
+            ImportParts(log, clock, nav, plots, refs, rejections, not_used, len(messages))
+        )
+        if duplicates:
+            summary["duplicates"] = {"sentences": duplicates}
+        return NmeaImport(
+            plots=plots.frame(),
+            navigation=nav.frame(platform),
+            sensors=sensor_rows.drop(columns=[TALKER_COLUMN], errors="ignore"),
+            platforms=platforms,
+            reference=refs.frame(),
+            rejected=rejections.frame(),
+            summary=summary,
+            targets=refs.targets_frame(),
+        )

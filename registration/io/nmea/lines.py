@@ -29,6 +29,7 @@ import numpy as np
 
 from registration.core.progress import progress_bar
 from registration.io.files.ledger import RejectedLedger
+from registration.io.nmea.errors import NmeaImportError
 
 __all__ = ["SentenceLog", "read_log", "line_parts", "LineProblem"]
 
@@ -100,7 +101,15 @@ def _prefix_time(prefix: str) -> float:
         ) from None
     if stamp.tzinfo is None:
         stamp = stamp.replace(tzinfo=timezone.utc)
-    return stamp.timestamp()
+    try:
+        unix = stamp.timestamp()
+    except (OverflowError, ValueError, OSError):  # e.g. 0001-01-01 with a positive UTC offset
+        unix = math.nan
+    if not 0.0 <= unix <= 1e11:  # as a tag block's time: 1970 to the year 5138
+        raise LineProblem(
+            "bad_prefix", f"timestamp {text[:40]!r} before the sentence is before 1970 or out of range"
+        )
+    return unix
 
 
 def _tag_block(block: str) -> float:
@@ -152,10 +161,42 @@ def line_parts(line: str) -> tuple[float, str]:
     return received, rest
 
 
-def _split_file(path: Path, file_index: int, out: dict, rejections: RejectedLedger, bar) -> tuple[int, int]:
+#: Octets looked at to tell a binary file from a text log, and the share of control octets (other
+#: than tab, CR, LF) above which it is binary.
+_HEAD_OCTETS, _BINARY_SHARE = 65536, 0.05
+
+
+def _check_text(data: bytes, path: Path) -> None:
+    """Raise :class:`NmeaImportError` for a binary file (a capture, an archive, ASTERIX): a text log
+    has few control octets, a damaged one a few lines of them."""
+    head = np.frombuffer(data[:_HEAD_OCTETS], dtype=np.uint8)
+    control = ((head < 32) & ~np.isin(head, (9, 10, 13))) | (head == 127)
+    if head.size and control.mean() > _BINARY_SHARE:
+        raise NmeaImportError(
+            f"{path}: not a text NMEA log ({int(control.sum())} of its first {head.size} bytes are "
+            "binary control codes)"
+        )
+
+
+def _split_file(
+    path: Path, file_index: int, out: dict, rejections: RejectedLedger, bar, max_bytes: int | None = None
+) -> tuple[int, int]:
     """Append one file's sentences to ``out`` (lists); lines that hold none go to ``rejections``.
-    Returns (lines, blank lines)."""
-    text = path.read_bytes().decode("latin-1")
+    Returns (lines, blank lines). :class:`NmeaImportError` for a binary file."""
+    with open(path, "rb") as f:
+        data = f.read() if max_bytes is None else f.read(max_bytes + 1)
+    if max_bytes is not None and len(data) > max_bytes:
+        data = data[: data.rfind(b"\n", 0, max_bytes) + 1]
+        rejections.add(
+            file_index,
+            "over_limit",
+            f"the file exceeds the limit of {max_bytes} bytes (max_bytes, --max-bytes); the lines from "
+            "here on are not read",
+            line=data.count(b"\n") + 1,
+        )
+    _check_text(data, path)
+    text = data.decode("latin-1")
+    del data
     lines = text.split("\n")
     if lines and lines[-1] == "":
         lines.pop()
@@ -231,7 +272,9 @@ def _addresses(sentences: list[str]) -> tuple[np.ndarray, np.ndarray]:
     return np.array(talker, dtype=object), np.array(kind, dtype=object)
 
 
-def read_log(paths, rejections: RejectedLedger, progress: bool = False) -> SentenceLog:
+def read_log(
+    paths, rejections: RejectedLedger, progress: bool = False, max_bytes: int | None = None
+) -> SentenceLog:
     """Read the log files (in the order given; each line's number counts from 1 in its file) into a
     :class:`SentenceLog` of the sentences with a correct checksum. Lines without a sentence, with a
     bad prefix or tag block, without a checksum or with a wrong one go to ``rejections``.
@@ -245,7 +288,7 @@ def read_log(paths, rejections: RejectedLedger, progress: bool = False) -> Sente
     lines = blank = 0
     try:
         for k, p in enumerate(files):
-            n, b = _split_file(p, k, out, rejections, bar)
+            n, b = _split_file(p, k, out, rejections, bar, max_bytes)
             lines += n
             blank += b
     finally:

@@ -204,7 +204,8 @@ def test_datagram_that_is_not_asterix(tmp_path, sites):
         [(5.0, 48, SAC, SIC, cat048_record("1.32", SAC, SIC, 5.0, 100, 0, address=7))], DATE
     ).raw()
     frames = [udp_frame(b"hello, this is not ASTERIX"), udp_frame(good), udp_frame(good + b"\x30\x00")]
-    result = _run(tmp_path, sites, pcap_bytes(frames, [1.7e9, 1.7e9 + 1, 1.7e9 + 2]), "mixed.pcap")
+    data = pcap_bytes(frames, [1.7e9, 1.7e9 + 1, 1.7e9 + 2])
+    result = _run(tmp_path, sites, data, "mixed.pcap", keep_duplicates=True)  # the same record twice
     assert len(result.plots) == 2
     assert _reasons(result) == {"truncated_block": 2}
     assert list(result.rejected["packet"]) == [1, 3]
@@ -232,3 +233,53 @@ def test_random_damage_never_raises_anything_else(tmp_path, sites, recording):
             except AsterixImportError:
                 continue
             assert result.summary["rejected"]["total"] == len(result.rejected)
+
+
+@pytest.mark.parametrize("length", [12, 16, 20])
+def test_pcapng_whose_last_packet_block_is_short(tmp_path, sites, length):
+    """Issue 32: a last Enhanced Packet Block of 12-20 bytes (shorter than its fixed fields) is set
+    aside with its offset; the packet before it is read."""
+    from tests.io.asterix.repro import short_last_epb
+
+    data = short_last_epb(length)
+    result = _run(tmp_path, sites, data, "short.pcapng")
+    assert _reasons(result) == {"truncated_packet": 1}
+    assert result.rejected["offset"].iloc[0] == len(data) - length
+    assert result.summary["files"][0]["packets"] == 1
+
+
+def test_pcapng_packet_time_out_of_range(tmp_path, sites):
+    """Issue 32: a packet time in the year 586524 is ignored with a note naming the file and the
+    packet (the records are placed by their time of day), not a ValueError/OverflowError."""
+    from tests.io.asterix.repro import out_of_range_time
+
+    good = encode_recording(
+        [(5.0, 48, SAC, SIC, cat048_record("1.32", SAC, SIC, 5.0, 100, 0, address=7))], DATE
+    ).raw()
+    result = _run(tmp_path, sites, out_of_range_time(good), "late.pcapng")
+    assert len(result.plots) == 1
+    notes = result.summary["files"][0]["notes"]
+    assert any("late.pcapng" in n and "outside the years 1970-9999" in n and "packet 1" in n for n in notes)
+    assert result.summary["time"]["reference_date"] is None
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_random_bytes_behind_a_good_first_header_are_refused(tmp_path, sites, seed):
+    """Issue 31 item 2: random octets walk as data blocks of random categories; a raw file is
+    judged by the share of its octets in blocks of known categories, and refused in one line."""
+    rng = np.random.default_rng(seed)
+    data = bytes([48, 0, 10]) + rng.integers(0, 256, 20000, dtype=np.uint8).tobytes()
+    with pytest.raises(AsterixImportError, match="not an ASTERIX recording \\(only") as info:
+        _run(tmp_path, sites, data, "random.ast")
+    assert str(info.value).startswith(str(tmp_path / "random.ast")) and "\n" not in str(info.value)
+
+
+def test_pcap_without_asterix_datagrams_is_refused(tmp_path, sites):
+    """Issue 31 item 2: UDP traffic of something else (text, DNS-like bytes) is no ASTERIX recording."""
+    from tests.io.asterix.containers import arp_frame, pcap_bytes, udp_frame
+
+    rng = np.random.default_rng(5)
+    frames = [udp_frame(b"GET / HTTP/1.1\r\nHost: x\r\n\r\n"), arp_frame()]
+    frames += [udp_frame(bytes([0x12, 0x34, 0x01, 0x00]) + rng.bytes(40), dport=53) for _ in range(20)]
+    with pytest.raises(AsterixImportError, match="not an ASTERIX recording \\(a pcap capture of 21 UDP"):
+        _run(tmp_path, sites, pcap_bytes(frames, [1.7e9 + k for k in range(len(frames))]), "dns.pcap")

@@ -211,12 +211,12 @@ class _Terminal(io.StringIO):
 def test_progress_bar(files, sites, capsys, monkeypatch):
     """A bar over the bytes read on a terminal (the rule of registration.core.progress); captured,
     none; the import is the same either way."""
-    quiet = import_asterix([files["raw"], files["pcap.gz"]], sites, progress=True)
+    quiet = import_asterix([files["raw"], files["pcap.gz"]], sites, progress=True, keep_duplicates=True)
     assert capsys.readouterr().err == ""
     terminal = _Terminal()
     monkeypatch.setattr("sys.stderr", terminal)
     monkeypatch.setattr(progress, "PROGRESS_DELAY_S", 0.0)
-    result = import_asterix([files["raw"], files["pcap.gz"]], sites, progress=True)
+    result = import_asterix([files["raw"], files["pcap.gz"]], sites, progress=True, keep_duplicates=True)
     assert "ASTERIX" in terminal.getvalue()
     assert len(result.plots) == 2 * len(import_asterix(files["raw"], sites).plots)
     pd.testing.assert_frame_equal(result.plots, quiet.plots)

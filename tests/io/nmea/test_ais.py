@@ -81,7 +81,7 @@ def test_own_ship_names_and_duplicates(tmp_path):
         encode.tag(MIDNIGHT + T0 + 4) + x
         for x in encode.ais({"msg_type": 24, "mmsi": 244000001, "partno": 0, "shipname": "BRAVO"})
     ]
-    result = import_lines(tmp_path, lines)
+    result = import_lines(tmp_path, lines, keep_duplicates=True)  # the same line twice: an AIS duplicate
     n = len(navigation_lines(n=8))
     assert result.reference.target.tolist() == ["244000001"]
     assert rejected_lines(result, "ais_own_ship") == [n + 2]

@@ -120,3 +120,26 @@ def test_fragments_out_of_order_and_interleaved(tmp_path):
     names = {v["mmsi"]: v["name"] for v in result.summary["ais"]["vessels"]}
     assert names == {"244000001": "ALPHA", "244000002": "BRAVO"}
     assert result.summary["ais"]["vessels"][0]["messages"] == {"5": 2}
+
+
+def test_bounds_on_bytes_and_rejected_rows(tmp_path):
+    """Issue 32: the bytes read per file and the rows listed are bounded (max_bytes,
+    max_rejected_rows); beyond them the lines are set aside as over_limit, the rows counted."""
+    from registration.cli import main
+
+    lines = navigation_lines(n=6) + ["not a sentence"] * 500
+    result = import_lines(tmp_path, lines, max_rejected_rows=50)
+    total = result.summary["rejected"]["lines"]
+    assert result.summary["rejected"]["by_reason"]["not_a_sentence"] == 500 and len(result.rejected) == 51
+    last = result.rejected.iloc[-1]
+    assert last["code"] == "not_listed" and f"{total - 50} more items" in last["reason"]
+    size = len("\n".join(navigation_lines(n=6)).encode()) + 1
+    result = import_lines(tmp_path, lines, max_bytes=size + 20)
+    by_reason = result.summary["rejected"]["by_reason"]
+    assert by_reason["not_a_sentence"] == 1 and by_reason["over_limit"] == 1
+    path = tmp_path / "log.nmea"
+    sensors = tmp_path / "sensors.csv"
+    radar_sensors().to_csv(sensors, index=False)
+    argv = ["import", "nmea", str(path), "--platform", "OWN", "--sensors", str(sensors)]
+    assert main([*argv, "--out", str(tmp_path / "o"), "--max-rejected-rows", "10"]) == 0
+    assert sum(1 for _ in open(tmp_path / "o" / "rejected.csv")) == 1 + 11

@@ -128,7 +128,7 @@ def test_a_second_ttm_of_a_track_at_one_time_is_set_aside(tmp_path):
         + [encode.ttm(1, "2.0", 10.0, t=T0 + 2)] * 2
         + [encode.ttm(2, "2.0", 10.0, t=T0 + 2)]
     )
-    result = import_lines(tmp_path, lines)
+    result = import_lines(tmp_path, lines, keep_duplicates=True)  # the same TTM line twice
     assert result.plots.track.tolist() == ["1", "2"] and rejected_lines(result, "duplicate_time") == [
         len(lines) - 1
     ]

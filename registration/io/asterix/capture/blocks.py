@@ -35,6 +35,12 @@ class Blocks:
     end: np.ndarray
     category: np.ndarray
     segment: np.ndarray
+    asterix_segments: int = 0
+
+    def known_share(self, size: int) -> float:
+        """The share of ``size`` octets that lie in data blocks of known ASTERIX categories."""
+        known = np.isin(self.category, list(ASTERIX_CATEGORIES))
+        return float((self.end[known] - self.start[known]).sum()) / max(size, 1)
 
 
 def _header(mv: memoryview, p: int) -> tuple[int, int]:
@@ -106,20 +112,23 @@ def _segment_blocks(
 
 
 def find_blocks(cap: Capture, rejections: RejectedLedger) -> Blocks:
-    """The data blocks of ``cap``; bad headers are set aside in ``rejections``."""
+    """The data blocks of ``cap``; bad headers are set aside in ``rejections``. ``asterix_segments``
+    counts the segments that are data blocks of known categories end to end, without a bad header."""
     mv = memoryview(cap.buf)  # type: ignore[arg-type]  # a uint8 array is a buffer
     seg = cap.segments
     raw = cap.kind == "raw"
     rows: list = []
     seg_of: list = []
     seen: set[int] = set()
+    good = 0
     for k in range(seg.start.size):
         out: list = []
         bad: list = []
         _segment_blocks(mv, cap.buf, int(seg.start[k]), int(seg.end[k]), raw, seen, out, bad)
+        good += bool(out) and not bad and all(c in ASTERIX_CATEGORIES for _, _, c in out)
         rows += out
         seg_of += [k] * len(out)
         for offset, code, reason in bad:
             rejections.add(cap.path, code, reason, offset=offset, packet=int(seg.packet[k]), category=0)
     a = np.array(rows, dtype=np.int64).reshape(-1, 3)
-    return Blocks(a[:, 0], a[:, 1], a[:, 2], np.array(seg_of, dtype=np.int64))
+    return Blocks(a[:, 0], a[:, 1], a[:, 2], np.array(seg_of, dtype=np.int64), good)

@@ -18,8 +18,15 @@ from typing import Iterable
 import numpy as np
 
 from registration.io.asterix.capture.netstack import Segments, udp_segments
-from registration.io.asterix.capture.pcap import PCAP_MAGICS, PCAPNG_MAGIC, pcap_packets, pcapng_packets
+from registration.io.asterix.capture.pcap import (
+    PCAP_MAGICS,
+    PCAPNG_MAGIC,
+    Packets,
+    pcap_packets,
+    pcapng_packets,
+)
 from registration.io.asterix.errors import AsterixImportError
+from registration.io.asterix.limits import DEFAULT_MAX_BYTES
 from registration.io.asterix.octets import PAD
 from registration.io.files.ledger import RejectedLedger
 from registration.io.files.unreadable import read_error
@@ -86,15 +93,22 @@ class Capture:
     notes: list = field(default_factory=list)
 
 
-def _gunzip(raw: bytes, path: str, notes: list) -> bytes:
+def _gunzip(raw: bytes, path: str, notes: list, max_bytes: int, over: list) -> bytes:
     """All members of a gzip stream decompressed, fed 1 MiB at a time so that a truncated or corrupt
-    stream keeps what came out before the fault."""
-    out, pos, step = [], 0, 1 << 20
+    stream keeps what came out before the fault; at most ``max_bytes`` octets come out (``over``
+    gets a word when there were more)."""
+    out, pos, step, size = [], 0, 1 << 20, 0
     while raw[pos : pos + 2] == b"\x1f\x8b":
         d = zlib.decompressobj(wbits=31)
         try:
             while not d.eof and pos < len(raw):
-                out.append(d.decompress(raw[pos : pos + step]))
+                chunk = d.decompress(raw[pos : pos + step], max_bytes + 1 - size)
+                out.append(chunk)
+                size += len(chunk)
+                if size > max_bytes:
+                    out[-1] = chunk[: len(chunk) - (size - max_bytes)]
+                    over.append("decompressed, the file exceeds")
+                    return b"".join(out)
                 pos = min(pos + step, len(raw))
         except zlib.error as exc:
             notes.append(
@@ -139,18 +153,56 @@ def _raw_check(data: bytes, path: str) -> None:
         )
 
 
-def read_capture(path: str | Path, rejections: RejectedLedger, ports: Iterable[int] | None = None) -> Capture:
-    """Read ``path`` and find its data blocks' segments; packets cut short are set aside in
-    ``rejections``. ``ports``: UDP destination ports to keep (None: all)."""
-    name = str(path)
+#: Packet times (UTC s since 1970) outside [0, this) are no dates (the year 10000 and later).
+_LAST_TIME_S = 253402300800.0
+
+
+def _drop_bad_times(packets: Packets, path: str, notes: list) -> None:
+    """Packet times that are no date (before 1970 or after the year 9999) become NaN, with a note
+    naming the first such packet: its records are then placed by their time of day alone."""
+    bad = np.flatnonzero(~((packets.time >= 0) & (packets.time < _LAST_TIME_S)) & ~np.isnan(packets.time))
+    if bad.size:
+        k = int(bad[0])
+        notes.append(
+            f"{path}: {bad.size} packet time(s) outside the years 1970-9999 ignored, the first in packet "
+            f"{int(packets.number[k])} at offset {int(packets.offset[k])} ({packets.time[k]:.6g} s)"
+        )
+        packets.time[bad] = np.nan
+
+
+def _read(path: str, max_bytes: int, over: list) -> bytes:
+    """The first ``max_bytes`` octets of the file (``over`` gets a word when there are more)."""
     try:
-        raw = Path(path).read_bytes()
+        with open(path, "rb") as f:
+            raw = f.read(max_bytes + 1)
     except OSError as exc:
-        raise read_error(name, exc, "cannot read the file", AsterixImportError) from exc
+        raise read_error(path, exc, "cannot read the file", AsterixImportError) from exc
+    if len(raw) > max_bytes:
+        over.append("the file exceeds")
+        raw = raw[:max_bytes]
+    return raw
+
+
+def read_capture(
+    path: str | Path,
+    rejections: RejectedLedger,
+    ports: Iterable[int] | None = None,
+    max_bytes: int = DEFAULT_MAX_BYTES,
+) -> Capture:
+    """Read ``path`` (at most ``max_bytes`` octets, decompressed) and find its data blocks'
+    segments; packets cut short are set aside in ``rejections``. ``ports``: UDP destination ports
+    to keep (None: all)."""
+    name = str(path)
     notes: list = []
+    over: list = []
+    raw = _read(name, max_bytes, over)
     zipped = raw[:2] == b"\x1f\x8b"
-    data = _gunzip(raw, name, notes) if zipped else raw
+    data = _gunzip(raw, name, notes, max_bytes, over) if zipped else raw
     del raw
+    if over:
+        text = f"{over[0]} the limit of {max_bytes} bytes (max_bytes, --max-bytes); the rest is not read"
+        notes.append(f"{name}: {text}")
+        rejections.add(name, "over_limit", text, offset=max_bytes, packet=0, category=0)
     if not data:
         raise AsterixImportError(
             f"{name}: an empty file, neither a pcap/pcapng capture nor an ASTERIX recording"
@@ -162,6 +214,7 @@ def read_capture(path: str | Path, rejections: RejectedLedger, ports: Iterable[i
     if magic in PCAP_MAGICS or magic == PCAPNG_MAGIC:
         kind = "pcap" if magic in PCAP_MAGICS else "pcapng"
         packets = (pcap_packets if kind == "pcap" else pcapng_packets)(data, name, rejections)
+        _drop_bad_times(packets, name, notes)
         segments, counts = udp_segments(buf, packets, ports)
         if packets.number.size and np.isfinite(packets.time).any():
             counts["first_packet_time"] = float(np.nanmin(packets.time))

@@ -12,7 +12,7 @@ octets captured; its last data block is then set aside as truncated.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Iterable
 
 import numpy as np
@@ -40,12 +40,14 @@ LINKTYPES = {
 @dataclass
 class Segments:
     """Per segment (N,): ``start``, ``end`` (octets of the file), ``packet`` (number from 1; 0 for a
-    raw recording) and ``time`` (capture time, UTC s since 1970; NaN when none)."""
+    raw recording), ``time`` (capture time, UTC s since 1970; NaN when none) and ``port`` (UDP
+    destination port; 0 for a raw recording, or empty: none known)."""
 
     start: np.ndarray
     end: np.ndarray
     packet: np.ndarray
     time: np.ndarray
+    port: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
 
 
 def _network(buf: np.ndarray, p: Packets) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -96,7 +98,9 @@ def udp_segments(
     start = udp + 8
     stop = np.minimum(udp + length, end)
     keep = wanted & (stop >= start)
-    segments = Segments(start[keep], stop[keep], packets.number[keep], packets.time[keep])
+    segments = Segments(
+        start[keep], stop[keep], packets.number[keep], packets.time[keep], port[keep].astype(np.int64)
+    )
     counts = {
         "packets": int(packets.number.size),
         "udp_datagrams": int(keep.sum()),

@@ -132,7 +132,10 @@ def _resolution(opts: dict) -> float:
 
 
 def _packet_block(data: bytes, order: str, btype: int, p: int, length: int, interfaces: list) -> tuple | None:
-    """(data offset, captured length, time, interface) of a packet block, or None when malformed."""
+    """(data offset, captured length, time, interface) of a packet block, or None when malformed
+    (shorter than its fixed fields, a captured length past the block, an undescribed interface)."""
+    if length < (16 if btype == 3 else 32):
+        return None
     if btype == 3:  # simple packet block: no interface id (the first), no time
         orig = struct.unpack_from(order + "I", data, p + 8)[0]
         return p + 12, min(orig, length - 16), np.nan, 0

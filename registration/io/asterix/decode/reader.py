@@ -21,12 +21,13 @@ from registration.io.asterix.decode.decode34 import decode034
 from registration.io.asterix.decode.decode48 import WANTED as WANTED048
 from registration.io.asterix.decode.decode48 import decode048
 from registration.io.asterix.decode.scalar import explain_record
-from registration.io.asterix.decode.uap import check_editions, uap_for
+from registration.io.asterix.decode.uap import DEFAULT_EDITIONS, check_editions, uap_for
 from registration.io.asterix.decode.walker import Records, walk_records
-from registration.io.asterix.errors import LEDGER_COLUMNS
+from registration.io.asterix.errors import LEDGER_COLUMNS, AsterixImportError
+from registration.io.asterix.limits import Limits
 from registration.io.files.ledger import RejectedLedger
 
-__all__ = ["CategoryRecords", "DecodedFile", "decode_file", "CHUNK_BYTES"]
+__all__ = ["CategoryRecords", "DecodedFile", "decode_file", "CHUNK_BYTES", "MIN_KNOWN_SHARE"]
 
 #: Data blocks are walked in chunks of about this many octets (progress and memory).
 CHUNK_BYTES = 8 << 20
@@ -36,12 +37,27 @@ CHUNK_BYTES = 8 << 20
 class CategoryRecords:
     """The records of one category in one file, (R,) each: ``fields`` (raw fields of the
     category's decoder), ``offset`` (of the record's FSPEC in the file), ``packet`` (number from 1,
-    0 for a raw file) and ``capture_time`` (UTC s since 1970, NaN for a raw file)."""
+    0 for a raw file), ``capture_time`` (UTC s since 1970, NaN for a raw file), ``digest`` (a
+    64-bit hash of the record's octets, within one process: duplicates are found by it) and ``port``
+    (UDP destination port, 0 for a raw file)."""
 
     fields: dict
     offset: np.ndarray
     packet: np.ndarray
     capture_time: np.ndarray
+    digest: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+    port: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+
+    def subset(self, keep: np.ndarray) -> "CategoryRecords":
+        """The records where ``keep`` (R,) bool is True."""
+        return CategoryRecords(
+            {k: v[keep] for k, v in self.fields.items()},
+            self.offset[keep],
+            self.packet[keep],
+            self.capture_time[keep],
+            self.digest[keep] if self.digest.size else self.digest,
+            self.port[keep] if self.port.size else self.port,
+        )
 
     @property
     def size(self) -> int:
@@ -77,6 +93,39 @@ def _chunks(sizes: np.ndarray) -> list[slice]:
     return [slice(int(a), int(b)) for a, b in zip(bounds[:-1], bounds[1:])]
 
 
+def _cut(rec: Records, keep: int) -> Records:
+    """The first ``keep`` records of ``rec`` (and the bad records of the blocks up to the last kept)."""
+    last = rec.block[keep - 1] if keep else -1
+    bad = rec.bad_block <= last
+    return Records(
+        rec.start[:keep],
+        rec.end[:keep],
+        rec.block[:keep],
+        {k: v[:keep] for k, v in rec.items.items()},
+        rec.bad_start[bad],
+        rec.bad_block[bad],
+    )
+
+
+def _over_limit(
+    cap: Capture, cat: int, rec: Records, keep: int, budget: list, rejections: RejectedLedger
+) -> None:
+    """Set aside, as one row, the records of category ``cat`` from the ``keep``-th on."""
+    rejections.add(
+        cap.path,
+        "over_limit",
+        f"CAT{cat:03d}: the limit of {budget[1]} records per input (max_records, --max-records) is "
+        "reached; the records from here on are not decoded",
+        offset=int(rec.start[keep]),
+        packet=0,
+        category=cat,
+    )
+    cap.notes.append(
+        f"{cap.path}: the limit of {budget[1]} records (max_records, --max-records) is reached; the rest "
+        "is not decoded"
+    )
+
+
 def _walk_category(
     cap: Capture,
     blocks: Blocks,
@@ -85,14 +134,24 @@ def _walk_category(
     edition: str,
     rejections: RejectedLedger,
     progress: Any,
+    budget: list,
 ) -> CategoryRecords:
+    """The records of category ``cat`` in blocks ``sel``; ``budget``: [records left, limit] of the
+    input, spent here."""
     uap = uap_for(cat, edition)
     wanted = _wanted(cat, edition)
     parts = []
     mv = memoryview(cap.buf)  # type: ignore[arg-type]  # a uint8 array is a buffer
     for chunk in _chunks(blocks.end[sel] - blocks.start[sel]):
+        if budget[0] <= 0:
+            break
         idx = sel[chunk]
         rec = walk_records(cap.buf, blocks.start[idx], blocks.end[idx], uap, wanted)
+        if rec.start.size > budget[0]:
+            keep = budget[0]
+            _over_limit(cap, cat, rec, keep, budget, rejections)
+            rec = _cut(rec, keep)
+        budget[0] -= rec.start.size
         for start, b in zip(rec.bad_start.tolist(), rec.bad_block.tolist()):
             code, reason = explain_record(mv, start, int(blocks.end[idx[b]]), uap)
             rest = int(blocks.end[idx[b]]) - start
@@ -107,16 +166,70 @@ def _walk_category(
                 category=cat,
             )
         seg = blocks.segment[idx[rec.block]]
+        digest = np.fromiter(
+            (hash(mv[a:b].tobytes()) for a, b in zip(rec.start.tolist(), rec.end.tolist())),
+            dtype=np.int64,
+            count=rec.start.size,
+        )
         parts.append(
-            (_decode(cat, edition, cap.buf, rec), rec.start, cap.segments.packet[seg], cap.segments.time[seg])
+            (
+                _decode(cat, edition, cap.buf, rec),
+                rec.start,
+                cap.segments.packet[seg],
+                cap.segments.time[seg],
+                digest,
+                cap.segments.port[seg] if cap.segments.port.size else np.zeros(seg.size, dtype=np.int64),
+            )
         )
         if progress is not None:
             progress.update(int((blocks.end[idx] - blocks.start[idx]).sum()))
     fields = {k: np.concatenate([p[0][k] for p in parts]) for k in parts[0][0]} if parts else {}
     cat_ = (lambda i: np.concatenate([p[i] for p in parts])) if parts else (lambda i: np.zeros(0))
     return CategoryRecords(
-        fields, cat_(1).astype(np.int64), cat_(2).astype(np.int64), cat_(3).astype(np.float64)
+        fields,
+        cat_(1).astype(np.int64),
+        cat_(2).astype(np.int64),
+        cat_(3).astype(np.float64),
+        cat_(4).astype(np.int64),
+        cat_(5).astype(np.int64),
     )
+
+
+def _edition_hint(cap: Capture, blocks: Blocks, sel: np.ndarray, edition: str, failed: int) -> None:
+    """A note when the CAT021 blocks walk better in the other family of editions (0.2x or 2.x)."""
+    other = "0.26" if not edition.startswith("0.") else DEFAULT_EDITIONS[21]
+    rec = walk_records(cap.buf, blocks.start[sel], blocks.end[sel], uap_for(21, other), _wanted(21, other))
+    if rec.bad_start.size < failed:
+        cap.notes.append(
+            f"{cap.path}: {failed} CAT021 records failed to walk in edition {edition}, "
+            f"{rec.bad_start.size} would in edition {other}: the feed may be of edition {other} "
+            f"(--cat021-edition {other}, editions={{21: {other!r}}})"
+        )
+
+
+#: A raw file is refused when less than this share of its octets walk as data blocks of known
+#: categories (random octets walk as blocks too, of random categories: about 14 % known).
+MIN_KNOWN_SHARE = 0.5
+
+
+def _check_asterix(cap: Capture, blocks: Blocks) -> None:
+    """Raise :class:`AsterixImportError` for a capture without one ASTERIX datagram, or a raw file
+    whose octets mostly do not walk as data blocks of known categories."""
+    what = f"{cap.path}: not an ASTERIX recording"
+    if cap.kind != "raw" and blocks.asterix_segments == 0:
+        n = cap.counts.get("udp_datagrams", cap.segments.start.size)
+        raise AsterixImportError(
+            f"{what} (a {cap.kind} capture of {n} UDP datagrams"
+            + (" on the ports chosen" if cap.counts.get("skipped_packets", {}).get("other_port") else "")
+            + ", none of them ASTERIX data blocks)"
+        )
+    share = blocks.known_share(cap.size)
+    if cap.kind == "raw" and share < MIN_KNOWN_SHARE:
+        cats = np.unique(blocks.category).size
+        raise AsterixImportError(
+            f"{what} (only {100 * share:.0f} % of its {cap.size} bytes walk as data blocks of known "
+            f"categories; {blocks.start.size} blocks of {cats} different categories)"
+        )
 
 
 def decode_file(
@@ -125,6 +238,7 @@ def decode_file(
     rejections: RejectedLedger | None = None,
     ports: Iterable[int] | None = None,
     progress: Any = None,
+    limits: Limits | None = None,
 ) -> DecodedFile:
     """Decode the CAT048, CAT034 and CAT021 records of one file (raw, pcap or pcapng, gzip or not).
 
@@ -134,19 +248,26 @@ def decode_file(
     called with the octets of the blocks walked (a tqdm bar, say) and, if it has one,
     ``file_size(octets)`` with the file's (decompressed) size once read. Raises
     :class:`~registration.io.asterix.errors.AsterixImportError` for a file that is neither ASTERIX
-    nor a capture; anything bad inside is set aside.
+    nor a capture; anything bad inside is set aside. ``limits``: the bounds on the decompressed
+    size and the records of the file (:class:`~registration.io.asterix.limits.Limits`).
     """
+    limits = Limits() if limits is None else limits
     editions = check_editions(editions)
     rejections = RejectedLedger(LEDGER_COLUMNS) if rejections is None else rejections
-    cap = read_capture(path, rejections, ports)
+    cap = read_capture(path, rejections, ports, limits.max_bytes)
     if progress is not None and hasattr(progress, "file_size"):
         progress.file_size(cap.size)
     blocks = find_blocks(cap, rejections)
+    _check_asterix(cap, blocks)
     cats, counts = np.unique(blocks.category, return_counts=True)
     records = {}
+    budget = [limits.max_records, limits.max_records]
     for cat in (48, 34, 21):
         sel = np.flatnonzero(blocks.category == cat)
-        records[cat] = _walk_category(cap, blocks, sel, cat, editions[cat], rejections, progress)
+        before = rejections.count()
+        records[cat] = _walk_category(cap, blocks, sel, cat, editions[cat], rejections, progress, budget)
+        if cat == 21 and rejections.count() > before:
+            _edition_hint(cap, blocks, sel, editions[21], rejections.count() - before)
     other = np.flatnonzero(~np.isin(blocks.category, (48, 34, 21)))
     if other.size:
         rejections.add(

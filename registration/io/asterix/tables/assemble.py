@@ -12,6 +12,7 @@ import numpy as np
 from registration.io.asterix.decode.decode34 import NORTH_MARKER, SECTOR_LSB_DEG
 from registration.io.asterix.decode.reader import DecodedFile
 from registration.io.asterix.tables.adsb21 import reference_columns, reference_verdicts
+from registration.io.asterix.tables.duplicates import StreamChecks
 from registration.io.asterix.tables.plots48 import plot_columns, plot_verdicts, unknown_source_texts
 from registration.io.asterix.tables.timeofday import Unwrapper, midnight_utc
 from registration.io.asterix.tables.verdicts import Verdicts
@@ -98,6 +99,29 @@ def _unknown(counter: Counter, cat: int, f: dict, sensor: np.ndarray) -> None:
         counter[(cat, p >> 8, p & 0xFF)] += k
 
 
+def _once(
+    checks: StreamChecks, path: str, cat: int, records: dict, times: dict, rejections: RejectedLedger
+) -> None:
+    """Check the category's records for time going back, and set aside its duplicates (in place
+    in ``records`` and ``times``)."""
+    rec, t = records[cat], times[cat]
+    if rec.size == 0:
+        return
+    checks.time_steps(path, cat, rec, t)
+    dup = checks.duplicates(path, cat, rec, t)
+    if dup.any():
+        rejections.add(
+            path,
+            "duplicate",
+            f"CAT{cat:03d}: the same record (SAC/SIC, time of day and octets) came earlier in the stream "
+            "(a duplicated feed or a replayed recording)",
+            offset=rec.offset[dup],
+            packet=rec.packet[dup],
+            category=cat,
+        )
+        records[cat], times[cat] = rec.subset(~dup), t[~dup]
+
+
 def assemble_file(
     dec: DecodedFile,
     unwrapper: Unwrapper,
@@ -105,14 +129,20 @@ def assemble_file(
     names: np.ndarray,
     editions: dict,
     rejections: RejectedLedger,
+    checks: StreamChecks | None = None,
 ) -> FileRows:
     """The rows of one decoded file; records set aside go to ``rejections``. ``names``: the SITES
-    sensor names; ``editions``: category -> edition used."""
+    sensor names; ``editions``: category -> edition used; ``checks``: the duplicates and backward
+    time steps of the import (None: a new one)."""
     path = dec.capture.path
     times = _record_times(dec, unwrapper)
     midnight = midnight_utc(unwrapper.reference) if unwrapper.reference is not None else np.nan
     rows = FileRows({}, {}, {}, times=np.concatenate([t for t in times.values()]) if times else np.zeros(0))
-    rec = dec.records[48]
+    checks = StreamChecks() if checks is None else checks
+    records = dict(dec.records)
+    for cat in records:
+        _once(checks, path, cat, records, times, rejections)
+    rec = records[48]
     f, sensor = rec.fields, sites(rec.fields) if rec.size else np.zeros(0, dtype=np.int64)
     if rec.size:
         v = plot_verdicts(f, sensor)
@@ -123,7 +153,7 @@ def assemble_file(
         rows.plots = {k: np.asarray(c)[keep] for k, c in cols.items()}
         rows.decoded[48] = np.bincount(sensor[sensor >= 0], minlength=names.size)
         _unknown(rows.unknown, 48, f, sensor)
-    rec = dec.records[34]
+    rec = records[34]
     if rec.size:
         sensor = sites(rec.fields)
         v = Verdicts(rec.size)
@@ -131,7 +161,7 @@ def assemble_file(
         v.report(rejections, path, rec.offset, rec.packet, 34)
         rows.decoded[34] = np.bincount(sensor[sensor >= 0], minlength=names.size)
         _unknown(rows.unknown, 34, rec.fields, sensor)
-    rec = dec.records[21]
+    rec = records[21]
     if rec.size:
         v, epu = reference_verdicts(rec.fields, editions[21].startswith("0."))
         v.report(rejections, path, rec.offset, rec.packet, 21)

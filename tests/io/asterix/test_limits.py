@@ -1,0 +1,119 @@
+"""Issue 32, the decompression blow-up: a small gzip of millions of empty CAT048 records is handled
+within a bounded time and memory (measured in a subprocess), and the bounds of
+:mod:`registration.io.asterix.limits` (decompressed bytes, records per input, rejected rows
+listed) hold and can be overridden."""
+
+from __future__ import annotations
+
+import gzip
+import json
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pandas as pd
+import pytest
+
+from registration.io.asterix import import_asterix
+from tests.io.asterix.repro import empty_cat048_gzip, source_only_cat048_gzip
+
+SITES = pd.DataFrame(
+    {
+        "sensor": ["R1"],
+        "sac": [10],
+        "sic": [1],
+        "lat_deg": [45.0],
+        "lon_deg": [15.0],
+        "alt_m": [100.0],
+        "sigma_range_m": [50.0],
+        "sigma_bearing_deg": [0.1],
+    }
+)
+#: Runs the command and prints its own peak resident memory (MiB) last.
+_MEASURE = (
+    "import resource, sys\n"
+    "from registration.cli import main\n"
+    "code = main(sys.argv[1:])\n"
+    "print('PEAK_MIB', resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024, code)\n"
+)
+
+
+@pytest.mark.parametrize("build", [empty_cat048_gzip, source_only_cat048_gzip])
+def test_small_gzip_of_empty_records_in_bounded_time_and_memory(tmp_path, build):
+    """The 1.5 KB gzip: at most 10 s and 500 MiB (peak RSS of the command's own process), and a
+    rejected.csv of at most 100 001 rows whatever the count."""
+    data = build(1_500_000 if build is empty_cat048_gzip else 500_000)
+    assert len(data) < 2000
+    (tmp_path / "bomb.ast.gz").write_bytes(data)
+    SITES.to_csv(tmp_path / "sites.csv", index=False)
+    out = tmp_path / "out"
+    argv = ["import", "asterix", str(tmp_path / "bomb.ast.gz"), "--sites", str(tmp_path / "sites.csv")]
+    start = time.perf_counter()
+    done = subprocess.run(
+        [sys.executable, "-c", _MEASURE, *argv, "--out", str(out)],
+        capture_output=True,
+        text=True,
+        cwd=Path(__file__).parents[3],
+        timeout=120,
+    )
+    elapsed = time.perf_counter() - start
+    assert "Traceback" not in done.stderr, done.stderr
+    peak, code = done.stdout.split("PEAK_MIB")[-1].split()
+    assert int(code) in (0, 2)
+    assert elapsed < 10.0 and float(peak) < 500.0, (elapsed, peak)
+    if int(code) == 0:
+        rows = sum(1 for _ in open(out / "rejected.csv")) - 1
+        summary = json.loads((out / "import_summary.json").read_text())
+        assert rows <= 100_001 and summary["rejected"]["total"] >= rows - 1
+
+
+def test_rejected_rows_beyond_the_bound_are_counted_with_one_row_saying_so(tmp_path):
+    (tmp_path / "b.gz").write_bytes(source_only_cat048_gzip(5000))
+    result = import_asterix(tmp_path / "b.gz", SITES, max_rejected_rows=100, keep_duplicates=True)
+    assert len(result.rejected) == 101
+    assert result.summary["rejected"]["total"] == 5000
+    assert result.summary["rejected"]["by_reason"] == {"missing_item": 5000}
+    last = result.rejected.iloc[-1]
+    assert last["reason_code"] == "not_listed" and "4900 more items set aside" in last["reason"]
+    assert list(result.rejected["reason_code"][:100].unique()) == ["missing_item"]
+
+
+def test_records_and_bytes_beyond_the_bounds_are_set_aside(tmp_path):
+    (tmp_path / "b.gz").write_bytes(source_only_cat048_gzip(5000))
+    result = import_asterix(tmp_path / "b.gz", SITES, max_records=1000, keep_duplicates=True)
+    assert result.summary["files"][0]["records"]["048"] == 1000
+    over = result.rejected[result.rejected["reason_code"] == "over_limit"]
+    assert len(over) == 1 and "max_records" in over["reason"].iloc[0]
+    assert over["offset"].iloc[0] == 3 + 3 * 1000
+    blocks = bytes([48, 0, 9, 0x80, 10, 1, 0x80, 10, 1]) * 10
+    (tmp_path / "b.ast").write_bytes(blocks)
+    (tmp_path / "c.ast.gz").write_bytes(gzip.compress(blocks))
+    for name in ("b.ast", "c.ast.gz"):
+        result = import_asterix(tmp_path / name, SITES, max_bytes=45, keep_duplicates=True)
+        summary = result.summary["files"][0]
+        assert summary["bytes"] == 45 and summary["records"]["048"] == 10
+        assert "max_bytes" in " ".join(summary["notes"])
+        assert set(result.rejected["reason_code"]) == {"missing_item", "over_limit"}
+
+
+@pytest.mark.parametrize("bad", [0, -1, 1.5, True])
+def test_bounds_must_be_positive_integers(tmp_path, bad):
+    (tmp_path / "b.gz").write_bytes(source_only_cat048_gzip(10))
+    with pytest.raises(ValueError, match="max_records: expected a positive integer"):
+        import_asterix(tmp_path / "b.gz", SITES, max_records=bad)
+
+
+def test_the_command_warns_when_a_bound_is_reached(tmp_path, capsys):
+    from registration.cli import main
+
+    (tmp_path / "b.gz").write_bytes(source_only_cat048_gzip(5000))
+    SITES.to_csv(tmp_path / "sites.csv", index=False)
+    argv = ["import", "asterix", str(tmp_path / "b.gz"), "--sites", str(tmp_path / "sites.csv")]
+    assert (
+        main([*argv, "--out", str(tmp_path / "o"), "--max-records", "1000", "--max-rejected-rows", "10"]) == 0
+    )
+    captured = capsys.readouterr()
+    assert "warning: " in captured.err and "--max-records" in captured.err
+    assert "set aside 1001 records" in captured.out  # the summary total (1000 records, 1 over_limit)
+    assert sum(1 for _ in open(tmp_path / "o" / "rejected.csv")) == 1 + 11
