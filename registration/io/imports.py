@@ -11,11 +11,11 @@ register --tables FOLDER`` reads them next.
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from registration.io.files.jsonfile import write_json
 from registration.io.files.tablefile import write_tables
 
 if TYPE_CHECKING:
@@ -72,6 +72,6 @@ class ImportResult:
         written = write_tables(folder, {n: f for n, f in self.tables.items() if len(f)}, fmt)
         written.update(write_tables(folder, {"rejected": self.rejected}, "csv"))
         path = folder / SUMMARY_FILE
-        path.write_text(json.dumps(self.summary, indent=2, default=str) + "\n")
+        write_json(path, self.summary, default=str)
         written["summary"] = path
         return written

@@ -101,11 +101,6 @@ def test_mutated_sites_give_a_table_or_one_line_naming_the_file(tmp_path):
     assert cases >= 20
 
 
-@pytest.mark.xfail(
-    strict=False,
-    reason="SITES keeps its own limits (registration/io/asterix/tables/sites.py, H1's): "
-    "sigmas and priors beyond float64 (fleet schema HELD) pass it",
-)
 @pytest.mark.parametrize(
     "column, value",
     [("prior_range_bias_m", "1e308"), ("prior_time_bias_s", "1e-300"), ("sigma_range_m", "1e-300")],

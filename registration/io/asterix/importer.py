@@ -14,13 +14,6 @@ from registration.core.progress import progress_bar
 from registration.io.asterix.decode.reader import decode_file
 from registration.io.asterix.decode.uap import check_editions
 from registration.io.asterix.errors import LEDGER_COLUMNS, REASONS
-from registration.io.asterix.limits import (
-    DEFAULT_MAX_BYTES,
-    DEFAULT_MAX_RECORDS,
-    DEFAULT_MAX_REJECTED_ROWS,
-    BoundedLedger,
-    Limits,
-)
 from registration.io.asterix.tables.assemble import FileRows, SiteLookup, assemble_file
 from registration.io.asterix.tables.duplicates import StreamChecks
 from registration.io.asterix.tables.fleetfiles import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
@@ -33,6 +26,13 @@ from registration.io.asterix.tables.summary import (
 )
 from registration.io.asterix.tables.timeofday import Unwrapper, capture_day
 from registration.io.files.ledger import RejectedLedger
+from registration.io.files.limits import (
+    DEFAULT_MAX_BYTES,
+    DEFAULT_MAX_RECORDS,
+    DEFAULT_MAX_REJECTED_ROWS,
+    BoundedLedger,
+    Limits,
+)
 from registration.io.imports import ImportResult
 
 if TYPE_CHECKING:
@@ -152,7 +152,7 @@ def import_asterix(
     ``max_bytes``, ``max_records``: the decompressed octets read and the records decoded per input;
     ``max_rejected_rows``: the rows ``rejected`` lists (the rest are counted in the summary, and one
     last row says how many). Beyond a bound the rest is set aside as ``over_limit``
-    (:mod:`registration.io.asterix.limits`; defaults 8 GiB, 2*10^6 records, 10^5 rows).
+    (:mod:`registration.io.files.limits`; defaults 8 GiB, 2*10^6 records, 10^5 rows).
     ``keep_duplicates``: keep records that repeat an earlier one (same category, octets and day);
     by default they are set aside as ``duplicate`` and counted
     (:mod:`registration.io.asterix.tables.duplicates`).

@@ -33,17 +33,13 @@ from typing import Iterable, Iterator, Mapping
 
 import numpy as np
 
+from registration.io.files.unreadable import read_error
 from registration.io.fleet.cells import FILE_COLUMNS, read_file
 
 __all__ = ["LAZY_TABLES", "ParquetSource"]
 
 #: The tables read by time range; the others are read whole.
 LAZY_TABLES = ("plots", "navigation", "reference")
-
-
-def _unreadable(path, exc: Exception) -> ValueError:
-    """The one-line error of a file that cannot be read (pyarrow and OS errors of many kinds)."""
-    return ValueError(f"{path}: cannot be read ({' '.join(str(exc).split()) or type(exc).__name__})")
 
 
 def _identity(path: str) -> tuple | None:
@@ -135,7 +131,7 @@ class ParquetSource:
             try:
                 cache[name] = ds.dataset(str(self.paths[name]), format="parquet")
             except Exception as exc:  # pyarrow errors of many kinds
-                raise _unreadable(self.paths[name], exc) from exc
+                raise read_error(self.paths[name], exc) from exc
         return cache[name]
 
     def _batches(self, name: str, columns: Iterable[str]) -> Iterator[dict]:
@@ -157,7 +153,7 @@ class ParquetSource:
                 ):
                     yield self._convert(name, {c: _array(batch.column(c)) for c in files})
             except Exception as exc:  # pyarrow errors of many kinds
-                raise _unreadable(fragment.path, exc) from exc
+                raise read_error(fragment.path, exc) from exc
 
     def plot_batches(self, columns: Iterable[str]) -> Iterator[dict]:
         return self._batches("plots", columns)
@@ -184,7 +180,7 @@ class ParquetSource:
                 fragment.ensure_complete_metadata()
                 out.append((fragment, [(g.id, g.statistics) for g in fragment.row_groups], ident))
             except Exception as exc:  # pyarrow and OS errors of many kinds
-                raise _unreadable(fragment.path, exc) from exc
+                raise read_error(fragment.path, exc) from exc
         stats[name] = out
         return out
 
@@ -211,7 +207,7 @@ class ParquetSource:
                             schema=data.schema, use_threads=False
                         )
                     except Exception as exc:  # pyarrow errors of many kinds
-                        raise _unreadable(fragment.path, exc) from exc
+                        raise read_error(fragment.path, exc) from exc
                 used[key] = table
                 tables.append(table)
         self.__dict__["_groups"][name] = used

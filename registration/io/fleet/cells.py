@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from registration.io.files.csvrows import NA_TEXTS
+from registration.io.files.unreadable import read_error
 from registration.io.fleet.checks import attitude_check, radians_check, sigma_notes
 from registration.io.fleet.rejects import BadRows
 from registration.io.fleet.schema import FLEET_FILES, HELD, INF_ALLOWED, POSITIVE, held
@@ -63,10 +64,9 @@ def _read_frame(path: Path):
         else:
             frame = pd.read_parquet(path)
     except Exception as exc:  # pandas/pyarrow parse errors of many types
-        text = str(exc)
-        raise ValueError(
-            text if text.startswith(f"{path}: ") else f"{path}: cannot read it as {fmt.upper()}: {exc}"
-        ) from exc
+        if str(exc).startswith(f"{path}: "):  # our own CSV reader's error names the file already
+            raise ValueError(str(exc)) from exc
+        raise read_error(path, exc, f"cannot read it as {fmt.upper()}") from exc
     frame.columns = [str(c).strip() for c in frame.columns]
     return frame
 

@@ -17,8 +17,8 @@ from typing import TYPE_CHECKING, Iterator, Mapping, Sequence
 
 import numpy as np
 
-from registration.io.asterix.limits import DEFAULT_MAX_BYTES, DEFAULT_MAX_REJECTED_ROWS, BoundedLedger, Limits
 from registration.io.files.ledger import RejectedLedger
+from registration.io.files.limits import DEFAULT_MAX_BYTES, DEFAULT_MAX_REJECTED_ROWS, BoundedLedger, Limits
 from registration.io.imports import ImportResult
 from registration.io.nmea.ais import read_ais
 from registration.io.nmea.attitude import PASHR_ANGLES, pashr_subtypes, read_headings, read_pashr
@@ -190,7 +190,7 @@ def import_nmea(
     :mod:`registration.io.nmea.duplicates`); ``max_bytes``: the bytes read per file (default 8
     GiB; the lines beyond are set aside as ``over_limit``); ``max_rejected_rows``: the rows
     ``rejected`` lists (default 10^5; the rest counted in the summary, one last row ``not_listed``
-    says how many; :mod:`registration.io.asterix.limits`).
+    says how many; :mod:`registration.io.files.limits`).
 
     Bad lines never raise: they are set aside in ``rejected`` with a reason. ValueError for bad
     arguments and a bad sensors table (naming row, column, unit);

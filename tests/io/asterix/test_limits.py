@@ -1,6 +1,6 @@
 """Issue 32, the decompression blow-up: a small gzip of millions of empty CAT048 records is handled
 within a bounded time and memory (measured in a subprocess), and the bounds of
-:mod:`registration.io.asterix.limits` (decompressed bytes, records per input, rejected rows
+:mod:`registration.io.files.limits` (decompressed bytes, records per input, rejected rows
 listed) hold and can be overridden."""
 
 from __future__ import annotations

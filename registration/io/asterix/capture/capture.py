@@ -26,9 +26,9 @@ from registration.io.asterix.capture.pcap import (
     pcapng_packets,
 )
 from registration.io.asterix.errors import AsterixImportError
-from registration.io.asterix.limits import DEFAULT_MAX_BYTES
 from registration.io.asterix.octets import PAD
 from registration.io.files.ledger import RejectedLedger
+from registration.io.files.limits import DEFAULT_MAX_BYTES
 from registration.io.files.unreadable import read_error
 
 __all__ = ["Capture", "read_capture", "ASTERIX_CATEGORIES"]

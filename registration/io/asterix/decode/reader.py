@@ -24,8 +24,8 @@ from registration.io.asterix.decode.scalar import explain_record
 from registration.io.asterix.decode.uap import DEFAULT_EDITIONS, check_editions, uap_for
 from registration.io.asterix.decode.walker import Records, walk_records
 from registration.io.asterix.errors import LEDGER_COLUMNS, AsterixImportError
-from registration.io.asterix.limits import Limits
 from registration.io.files.ledger import RejectedLedger
+from registration.io.files.limits import Limits
 
 __all__ = ["CategoryRecords", "DecodedFile", "decode_file", "CHUNK_BYTES", "MIN_KNOWN_SHARE"]
 
@@ -249,7 +249,7 @@ def decode_file(
     ``file_size(octets)`` with the file's (decompressed) size once read. Raises
     :class:`~registration.io.asterix.errors.AsterixImportError` for a file that is neither ASTERIX
     nor a capture; anything bad inside is set aside. ``limits``: the bounds on the decompressed
-    size and the records of the file (:class:`~registration.io.asterix.limits.Limits`).
+    size and the records of the file (:class:`~registration.io.files.limits.Limits`).
     """
     limits = Limits() if limits is None else limits
     editions = check_editions(editions)

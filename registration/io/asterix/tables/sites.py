@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from registration.io.files.unreadable import read_error
+from registration.io.fleet.schema import HELD, held
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -114,6 +115,11 @@ def _number(source: str, r: int, column: str, cell: object) -> float:
     if value < low or value > high or (strict and value == low):
         span = f"{'(' if strict else '['}{low:g}, {high:g}]"
         raise ValueError(f"{where}: {value:g} {unit} is outside {span} {unit}")
+    if held(column) and value != 0 and math.isfinite(value) and not HELD[0] <= abs(value) <= HELD[1]:
+        raise ValueError(
+            f"{where}: {value:g} {unit} cannot be held in the solve: a sigma or prior lies in "
+            f"[{HELD[0]:g}, {HELD[1]:g}] {unit} (a prior may also be 0: held fixed, or empty or inf: none)"
+        )
     return value
 
 
