@@ -118,6 +118,9 @@ def _fuse(out: Path, seed: int, hook: str | None = None) -> subprocess.Completed
         text=True,
         env=env,
         timeout=120,
+        # a suite started in the background by a shell ignores SIGINT, and a child inherits that:
+        # give the command the default handler, as in a terminal
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
     )
 
 

@@ -30,12 +30,14 @@ SITES = pd.DataFrame(
         "sigma_bearing_deg": [0.1],
     }
 )
-#: Runs the command and prints its own peak resident memory (MiB) last.
+#: Runs the command and prints its own peak resident memory (MiB) last: VmHWM of /proc/self/status,
+#: which starts anew at exec (ru_maxrss carries the parent's peak across fork and exec on Linux).
 _MEASURE = (
-    "import resource, sys\n"
+    "import sys\n"
     "from registration.cli import main\n"
     "code = main(sys.argv[1:])\n"
-    "print('PEAK_MIB', resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024, code)\n"
+    "kib = [l.split()[1] for l in open('/proc/self/status') if l.startswith('VmHWM:')][0]\n"
+    "print('PEAK_MIB', int(kib) / 1024, code)\n"
 )
 
 
