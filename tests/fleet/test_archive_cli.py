@@ -1,4 +1,4 @@
-"""The archive pieces of ``fleet register`` (registration.cli.fleet_archive): --partition-s runs the
+"""The archive pieces of ``fleet register`` (registration.cli.fleet.archive): --partition-s runs the
 partitioned solver on a Parquet folder and writes estimates.csv and summary.json; an archive whose
 file cannot be read leaves --out as it was; --workers alone is refused."""
 
@@ -10,7 +10,7 @@ import json
 import numpy as np
 import pytest
 
-from registration.cli.fleet_archive import add_archive_arguments, archive_requested, run_archive
+from registration.cli.fleet.archive import add_archive_arguments, archive_requested, run_archive
 from registration.fleet import fleet_scenario
 from registration.io import write_fleet_tables
 

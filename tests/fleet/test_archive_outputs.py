@@ -1,4 +1,4 @@
-"""The outputs of an archive run (registration.fleet.batch.outputs, registration.cli.fleet_archive):
+"""The outputs of an archive run (registration.fleet.batch.outputs, registration.cli.fleet.archive):
 the fused targets, streamed as Parquet parts, equal solve_batch's; the residual sums per sensor and
 channel equal its residuals'; the figures' sample is bounded; a folder of CSV files is converted
 block by block into the same archive, and its bad rows are named as the ordinary reader names them."""
@@ -11,7 +11,7 @@ import json
 import numpy as np
 import pytest
 
-from registration.cli.fleet_archive import add_archive_arguments, run_archive
+from registration.cli.fleet.archive import add_archive_arguments, run_archive
 from registration.fleet import BatchOptions, fleet_scenario, solve_batch
 from registration.fleet.batch.outputs import FUSED_COLUMNS, archive_outputs
 from registration.fleet.batch.partitioned import solve_batch_partitioned

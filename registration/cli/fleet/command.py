@@ -15,8 +15,8 @@ from pathlib import Path
 import numpy as np
 
 from registration.cli.errors import prepare_out, writing
-from registration.cli.fleet_options import add_arguments
-from registration.cli.fleet_tables import REGISTER_OUTPUTS, opened_tables, write_rejected
+from registration.cli.fleet.options import add_arguments
+from registration.cli.fleet.tables import REGISTER_OUTPUTS, opened_tables, write_rejected
 from registration.cli.staging import staged_outputs
 
 __all__ = [
@@ -71,15 +71,15 @@ def _solve(tables, window_s: float, method: str):
 def _associate(tables, window_s: float, method: str):
     """Plots without target ids (some or all rows): (association, problem, result) of
     :func:`registration.fleet.associate_and_register`; with --method online, the online filter on
-    its labels (:mod:`registration.cli.fleet_association`)."""
-    from registration.cli.fleet_association import associate
+    its labels (:mod:`registration.cli.fleet.association`)."""
+    from registration.cli.fleet.association import associate
 
     return associate(tables, window_s, method)
 
 
 def _write_associations(out: Path, tables, association) -> Path:
-    """associations.csv (:func:`registration.cli.fleet_association.write_associations`)."""
-    from registration.cli.fleet_association import write_associations
+    """associations.csv (:func:`registration.cli.fleet.association.write_associations`)."""
+    from registration.cli.fleet.association import write_associations
 
     return write_associations(out, tables, association)
 
@@ -104,7 +104,7 @@ def run_simulate(args: argparse.Namespace) -> int:
     on these files gives the same numbers)."""
     from dataclasses import replace
 
-    from registration.cli.fleet_output import estimate_rows, gate, print_report, write_outputs
+    from registration.cli.fleet.output import estimate_rows, gate, print_report, write_outputs
     from registration.fleet import fleet_scenario
     from registration.fleet.simulation.scenario import DEFAULT_FLEET
     from registration.fleet.simulation.tracks import random_targets
@@ -165,11 +165,11 @@ def run_simulate(args: argparse.Namespace) -> int:
 def run_register(args: argparse.Namespace) -> int:
     """Read the tables, register, print and write the outputs (replacing an earlier run's in
     --out only once all are written); exit 3 on a gross misfit."""
-    from registration.cli.fleet_output import gate
+    from registration.cli.fleet.output import gate
 
     if not (args.window_s >= 0 and args.window_s < float("inf")):
         raise ValueError(f"--window-s: expected a length >= 0 s, got {args.window_s}")
-    from registration.cli.fleet_archive import archive_requested, run_archive
+    from registration.cli.fleet.archive import archive_requested, run_archive
 
     if archive_requested(args):
         return run_archive(args)
@@ -183,8 +183,8 @@ def run_register(args: argparse.Namespace) -> int:
 
 def _register_into(path: Path, args: argparse.Namespace, tables):
     """Register the tables, print the report and write the outputs into ``path``: (result, files)."""
-    from registration.cli.fleet_association import association_summary, online_note
-    from registration.cli.fleet_output import estimate_rows, print_report, redundancy_check, write_outputs
+    from registration.cli.fleet.association import association_summary, online_note
+    from registration.cli.fleet.output import estimate_rows, print_report, redundancy_check, write_outputs
     from registration.io.fleet.read import needs_association
 
     association = None

@@ -13,7 +13,7 @@ CSV row, leaves ``--out`` as it was, with a one-line error naming the file): ``e
 partition, written by the workers, or with ``--scheduler`` returned to this process and written
 here), ``residuals.csv`` (per sensor and channel: count, mean, RMS of the whitened residuals),
 ``summary.json`` (the partitions, iterations, chi-square, exclusions, residual checks) and the PNGs
-of :mod:`registration.cli.fleet_archive_output` (docs/howto/register-an-archive.md, "Outputs of an archive
+of :mod:`registration.cli.fleet.archive_output` (docs/howto/register-an-archive.md, "Outputs of an archive
 run").
 """
 
@@ -23,7 +23,7 @@ import argparse
 from pathlib import Path
 
 from registration.cli.errors import writing
-from registration.cli.fleet_archive_output import PNG_OUTPUTS
+from registration.cli.fleet.archive_output import PNG_OUTPUTS
 from registration.io.files.jsonfile import json_text
 
 __all__ = [
@@ -82,7 +82,7 @@ def archive_requested(args: argparse.Namespace) -> bool:
 
 
 def _summary(result, args: argparse.Namespace) -> dict:
-    from registration.cli.fleet_output import estimate_rows, estimates_json
+    from registration.cli.fleet.output import estimate_rows, estimates_json
 
     chi = result.chi_square
     return {
@@ -118,7 +118,7 @@ def _write_parts(parts: Path, tables: list) -> None:
 
 
 def _write_outputs(folder: Path, args: argparse.Namespace, result, outputs, written_by: str) -> None:
-    from registration.cli.fleet_archive_output import residual_lines, residual_summary, write_figures
+    from registration.cli.fleet.archive_output import residual_lines, residual_summary, write_figures
     from registration.fleet.batch.outputs import FUSED_COLUMNS
 
     summary = {
@@ -135,7 +135,7 @@ def _write_outputs(folder: Path, args: argparse.Namespace, result, outputs, writ
     }
     import pandas as pd
 
-    from registration.cli.fleet_output import estimate_rows
+    from registration.cli.fleet.output import estimate_rows
     from registration.io.files.tablefile import write_frame
 
     with writing(
@@ -188,7 +188,7 @@ def _solve_and_write(args: argparse.Namespace, out: Path, source) -> tuple:
 
 def run_archive(args: argparse.Namespace) -> int:
     """Register the archive ``--tables DIR`` partition by partition and write the outputs (module
-    docstring); its tables are opened as the in-memory run's are (:mod:`registration.cli.fleet_tables`)."""
+    docstring); its tables are opened as the in-memory run's are (:mod:`registration.cli.fleet.tables`)."""
     from registration.cli.errors import consistency_gate, consistency_line, prepare_out
 
     if args.tables is None:
@@ -213,7 +213,7 @@ def run_archive(args: argparse.Namespace) -> int:
             "--targets: with --partition-s the surface targets are the --tables folder's targets file "
             "(targets.parquet or targets.csv)"
         )
-    from registration.cli.fleet_tables import opened_tables
+    from registration.cli.fleet.tables import opened_tables
 
     out = prepare_out(args.out)
     with opened_tables(args, out, lazy=True) as source:
@@ -225,7 +225,7 @@ def run_archive(args: argparse.Namespace) -> int:
     print(f"fused targets: {outputs.fused_rows} rows in {outputs.n_parts} Parquet parts")
     for w in result.warnings:
         print(f"warning: {w}")
-    from registration.cli.fleet_output import estimate_rows, estimate_table
+    from registration.cli.fleet.output import estimate_rows, estimate_table
 
     print()
     for line in estimate_table(estimate_rows(result)):

@@ -122,7 +122,7 @@ def _add_tables(reg: argparse.ArgumentParser) -> None:
 
 
 def _add_register(reg: argparse.ArgumentParser) -> None:
-    from registration.cli.fleet_archive import add_archive_arguments
+    from registration.cli.fleet.archive import add_archive_arguments
 
     _add_tables(reg)
     reg.add_argument(
