@@ -28,7 +28,8 @@ from registration.fleet.association.simulated.clutter import (
 from registration.fleet.batch.estimate import solve_batch
 from registration.fleet.batch.solver import BatchOptions
 from registration.fleet.data.problem import Exclusion, FleetProblem, build_problem
-from registration.fleet.online.filter import FleetFilter, OnlineOptions, register_online
+from registration.fleet.online.filter import FleetFilter, OnlineOptions
+from registration.fleet.online.register import register_online
 from registration.fleet.online.result import OnlineHistory, OnlineResult
 from registration.fleet.result import BatchResult, ChiSquareCheck, FusedTargets
 from registration.fleet.simulation.scenario import FleetScenario, fleet_scenario

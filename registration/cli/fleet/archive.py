@@ -82,7 +82,8 @@ def archive_requested(args: argparse.Namespace) -> bool:
 
 
 def _summary(result, args: argparse.Namespace) -> dict:
-    from registration.cli.fleet.output import estimate_rows, estimates_json
+    from registration.cli.fleet.output import estimates_json
+    from registration.io.fleet.estimates import estimate_rows
 
     chi = result.chi_square
     return {
@@ -135,8 +136,8 @@ def _write_outputs(folder: Path, args: argparse.Namespace, result, outputs, writ
     }
     import pandas as pd
 
-    from registration.cli.fleet.output import estimate_rows
     from registration.io.files.tablefile import write_frame
+    from registration.io.fleet.estimates import estimate_rows
 
     with writing(
         folder / "estimates.csv"
@@ -225,7 +226,8 @@ def run_archive(args: argparse.Namespace) -> int:
     print(f"fused targets: {outputs.fused_rows} rows in {outputs.n_parts} Parquet parts")
     for w in result.warnings:
         print(f"warning: {w}")
-    from registration.cli.fleet.output import estimate_rows, estimate_table
+    from registration.cli.fleet.output import estimate_table
+    from registration.io.fleet.estimates import estimate_rows
 
     print()
     for line in estimate_table(estimate_rows(result)):

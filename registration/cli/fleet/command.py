@@ -104,11 +104,12 @@ def run_simulate(args: argparse.Namespace) -> int:
     on these files gives the same numbers)."""
     from dataclasses import replace
 
-    from registration.cli.fleet.output import estimate_rows, gate, print_report, write_outputs
+    from registration.cli.fleet.output import gate, print_report, write_outputs
     from registration.fleet import fleet_scenario
     from registration.fleet.simulation.scenario import DEFAULT_FLEET
     from registration.fleet.simulation.tracks import random_targets
     from registration.io import read_fleet_tables, write_fleet_tables
+    from registration.io.fleet.estimates import estimate_rows
 
     if args.seed < 0:
         raise ValueError(f"--seed: expected an integer >= 0, got {args.seed}")
@@ -184,7 +185,8 @@ def run_register(args: argparse.Namespace) -> int:
 def _register_into(path: Path, args: argparse.Namespace, tables):
     """Register the tables, print the report and write the outputs into ``path``: (result, files)."""
     from registration.cli.fleet.association import association_summary, online_note
-    from registration.cli.fleet.output import estimate_rows, print_report, redundancy_check, write_outputs
+    from registration.cli.fleet.output import print_report, redundancy_check, write_outputs
+    from registration.io.fleet.estimates import estimate_rows
     from registration.io.fleet.read import needs_association
 
     association = None

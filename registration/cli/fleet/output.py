@@ -16,15 +16,7 @@ from registration.fleet.combinations import sigma_text
 from registration.fleet.data.layout import FILE_UNITS
 from registration.io.files.jsonfile import write_json
 
-__all__ = [
-    "chi_square_report",
-    "estimate_rows",
-    "estimate_table",
-    "print_report",
-    "write_outputs",
-    "gate",
-    "redundancy_check",
-]
+__all__ = ["chi_square_report", "estimate_table", "print_report", "write_outputs", "gate", "redundancy_check"]
 
 
 def is_online(result) -> bool:
@@ -41,33 +33,10 @@ def chi_square_report(result) -> ConsistencyReport | None:
     return result.verdict if is_online(result) else result.chi_square.report
 
 
-def estimate_rows(result, truth: dict | None = None) -> list[dict]:
-    """One row per state, then one per sum the observability report names (``result.rows``), in
-    file units: object, state, unit (m, deg, 1 for a range gain, s for a time bias), estimate,
-    sigma (one standard deviation, σ), status (and truth when given). A state fixed by a zero prior
-    has sigma 0 and status ``fixed``; an undetermined sigma is None (an empty CSV cell, JSON null).
-    A sum's object and state join its parts' with ``+``: object ``A+A-3D``, state
-    ``heading_error+bearing_bias``, status ``identifiable combination``."""
-    rows = []
-    for r in result.rows(truth):
-        unit, k, _, _ = FILE_UNITS[r["unit"]]
-        row = {
-            "object": r["object"],
-            "state": r["quantity"],
-            "unit": unit,
-            "estimate": r["estimate"] * k,
-            "sigma": r["sigma"] * k if np.isfinite(r["sigma"]) else None,
-            "status": r["status"],
-        }
-        if truth is not None:
-            row["truth"] = r["truth"] * k
-        rows.append(row)
-    return rows
-
-
 def estimate_table(rows: list[dict]) -> list[str]:
-    """The console table of :func:`estimate_rows`: object, state, estimate, σ (one standard
-    deviation, or ``undetermined``), truth when known, unit, status; range gains in ppm."""
+    """The console table of :func:`~registration.io.fleet.estimates.estimate_rows`: object, state,
+    estimate, σ (one standard deviation, or ``undetermined``), truth when known, unit, status;
+    range gains in ppm."""
     has_truth = bool(rows) and "truth" in rows[0]
     wo = max([8, *(len(r["object"]) + 2 for r in rows)])
     ws = max([16, *(len(r["state"]) + 2 for r in rows)])
@@ -148,8 +117,8 @@ def _finite(v):
 
 
 def estimates_json(rows: list[dict]) -> list[dict]:
-    """The rows of :func:`estimate_rows` for summary.json: non-finite numbers (an undetermined
-    sigma) as null."""
+    """The rows of :func:`~registration.io.fleet.estimates.estimate_rows` for summary.json:
+    non-finite numbers (an undetermined sigma) as null."""
     return [{k: (_finite(v) if isinstance(v, float) else v) for k, v in r.items()} for r in rows]
 
 

@@ -31,27 +31,27 @@ its estimate and covariance). See docs/background/fleet-online.md.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from typing import Callable
 
 import numpy as np
 
 from registration.core.consistency import ConsistencyReport
 from registration.fleet.batch.blocks import SAME_INSTANT_S
-from registration.fleet.batch.residuals import residuals_at
-from registration.fleet.batch.solver import BatchOptions
-from registration.fleet.data.known_targets import read_references, read_surface
+from registration.fleet.data.known_targets import References, read_references, read_surface
 from registration.fleet.data.layout import make_layout
 from registration.fleet.data.navigation import navigation_at, platform_navigation
 from registration.fleet.data.plot_rows import read_plots
-from registration.fleet.data.problem import Exclusion, FleetProblem, build_problem
+from registration.fleet.data.problem import Exclusion, FleetProblem
 from registration.fleet.data.sensor_specs import read_platforms, read_sensors
 from registration.fleet.data.tables import index_of, read_table
 from registration.fleet.observability import fleet_observability
+from registration.fleet.online.checkpoint import Checkpoints
 from registration.fleet.online.epoch import epoch_information
+from registration.fleet.online.options import EpochUpdate, OnlineOptions
 from registration.fleet.online.result import OnlineHistory, OnlineResult
 from registration.fleet.online.update import information_update, start_state
 
-__all__ = ["FleetFilter", "OnlineOptions", "register_online"]
+__all__ = ["EpochUpdate", "FleetFilter", "OnlineOptions"]
 
 #: An epoch is linearised again at its updated estimate while the update moves a state by more
 #: than this share of its reference scale (0.1 deg, 100 m), at most MAX_RELINEARISATIONS times (an
@@ -63,52 +63,7 @@ MAX_RELINEARISATIONS = 10
 _BUFFER = ("time", "sensor", "target", "meas", "mask", "nav", "row")
 
 
-@dataclass(frozen=True)
-class OnlineOptions:
-    """Settings of :class:`FleetFilter`.
-
-    window_s, degree: the target windows, as in the batch
-    (:class:`~registration.fleet.batch.solver.BatchOptions`);
-        an epoch is one window of the absolute time grid. epoch_s: with ``window_s = 0``, the
-        length (s) of an epoch of instants (0: one instant per epoch). q_angle (rad/sqrt(s)), q_range
-        (m/sqrt(s); range biases and position errors), q_gain (1/sqrt(s); range gains), q_time
-        (s/sqrt(s); time biases): random-walk process noise of the states. max_iterations: of each
-        epoch's coefficient fit.
-    """
-
-    window_s: float = 20.0
-    degree: int = 3
-    epoch_s: float = 0.0
-    q_angle: float = 1e-6
-    q_range: float = 0.01
-    q_gain: float = 1e-9
-    q_time: float = 1e-5
-    max_iterations: int = 20
-
-    def __post_init__(self):
-        BatchOptions(window_s=self.window_s, degree=self.degree if self.window_s > 0 else 0)  # same checks
-        for name in ("epoch_s", "q_angle", "q_range", "q_gain", "q_time"):
-            v = getattr(self, name)
-            if not (np.isfinite(v) and v >= 0):
-                raise ValueError(f"{name}: expected a finite value >= 0, got {v}")
-        if not int(self.max_iterations) >= 1:
-            raise ValueError(f"max_iterations: expected >= 1, got {self.max_iterations}")
-
-    def batch(self) -> BatchOptions:
-        return BatchOptions(
-            window_s=self.window_s,
-            degree=self.degree if self.window_s > 0 else 0,
-            max_iterations=int(self.max_iterations),
-        )
-
-    def epoch_key(self, time: np.ndarray) -> np.ndarray:
-        length = self.window_s if self.window_s > 0 else self.epoch_s
-        if length > 0:
-            return np.floor(time / length).astype(np.int64)
-        return np.round(time / SAME_INSTANT_S).astype(np.int64)
-
-
-class FleetFilter:
+class FleetFilter(Checkpoints):
     """Online registration of a fleet (module docstring).
 
     ``sensors``, ``navigation``, ``platforms``, ``references``, ``targets``: the tables of
@@ -167,6 +122,8 @@ class FleetFilter:
         self._history: list[tuple] = []
         self._unused: dict[str, list] = {}
         self.n_linearisations = 0
+        #: Called after each informative epoch with its :class:`EpochUpdate` (None: not called).
+        self.on_epoch: Callable[[EpochUpdate], None] | None = None
 
     # -- input -----------------------------------------------------------------------------------
     def update(self, plots) -> int:
@@ -208,6 +165,38 @@ class FleetFilter:
             return 0  # no epoch closes: the plots wait in the buffer
         self._open_key = int(key.max())
         return self._process(closing_all=False)
+
+    def add_references(self, references) -> int:
+        """Add reference positions (the references table of :func:`registration.fleet.build_problem`,
+        SI) that arrive while the plots stream (a live feed): an epoch uses those of its targets and
+        time span present when it closes, so give them before the plots that close it. Returns the
+        number added."""
+        table = read_table("references", references, ("target", "time"))
+        new = read_references(references, list(dict.fromkeys(table.ids("target"))))
+        old = self.references
+        self.references = References(
+            np.concatenate([old.target.astype(object), new.target.astype(object)]),
+            np.concatenate([old.time, new.time]),
+            np.concatenate([old.p_ecef, new.p_ecef]),
+            np.concatenate([old.sigma, new.sigma]),
+            np.concatenate([old.up_sigma, new.up_sigma]),
+        )
+        return int(new.time.size)
+
+    def late(self, time: np.ndarray) -> np.ndarray:
+        """(N,) bool: the plot times (s) that fall in an epoch already processed (:meth:`update` would
+        refuse them)."""
+        key = self.options.epoch_key(np.asarray(time, dtype=np.float64))
+        return key <= self._closed_key if self._closed_key is not None else np.zeros(key.shape, dtype=bool)
+
+    def forget(self, before_s: float) -> None:
+        """Drop what a stream that never ends no longer needs: the reference positions, the history
+        and the record of unused plots from before ``before_s`` (s). The estimate, covariance and
+        information are kept."""
+        self.references = self.references.subset(self.references.time >= before_s)
+        self._history = [h for h in self._history if h[0] >= before_s]
+        self._unused = {k: [t[t >= before_s] for t in v] for k, v in self._unused.items()}
+        self._unused = {k: v for k, v in self._unused.items() if any(t.size for t in v)}
 
     def flush(self) -> int:
         """Process every buffered epoch (the end of the data). Returns the number processed."""
@@ -257,8 +246,11 @@ class FleetFilter:
             if not moved.max(initial=0.0) > RELINEARISE_ABOVE:
                 break
         if used:
+            x_before, P_before = self.x, self.P
             self.x, self.P = x_lin, P
             self.information += L
+            if self.on_epoch is not None:
+                self.on_epoch(EpochUpdate(t_end, x_before, P_before, L, b, problem, used))
         if used < plots["time"].size:
             for tid in np.unique(plots["target"]):
                 self._unused.setdefault(str(tid), []).append(plots["time"][plots["target"] == tid])
@@ -360,33 +352,3 @@ class FleetFilter:
                 )
             )
         return tuple(out)
-
-
-def register_online(
-    plots,
-    sensors,
-    navigation,
-    platforms=None,
-    references=None,
-    *,
-    options: OnlineOptions | None = None,
-    prior=None,
-    residuals: bool = True,
-    targets=None,
-) -> OnlineResult:
-    """Run :class:`FleetFilter` over a whole plots table (sorted by time here) and return its result;
-    with ``residuals``, also the normalised residuals of every plot at the final estimate
-    (:func:`registration.fleet.batch.residuals.residuals_at`)."""
-    filt = FleetFilter(
-        sensors, navigation, platforms, references, options=options, prior=prior, targets=targets
-    )
-    table = read_table("plots", plots, ("time", "sensor", "target"))
-    order = np.argsort(table.floats("time"), kind="stable")
-    filt.update({k: v[order] for k, v in table.columns.items()})
-    filt.flush()
-    result = filt.result()
-    if residuals and result.n_plots_used:
-        problem = build_problem(plots, sensors, navigation, platforms, references, targets)
-        res, check, _ = residuals_at(problem, result.estimate, filt.options.batch())
-        result = replace(result, residuals=res, fit_check=check)
-    return result

@@ -56,7 +56,7 @@ class OnlineResult:
     registration information, per target. ``residuals`` (input plot rows, 3) and ``fit_check``:
     the normalised residuals of every plot at the final estimate with the trajectories fitted, and
     their chi-square check (:func:`registration.fleet.batch.residuals.residuals_at`; None unless computed,
-    as :func:`~registration.fleet.online.filter.register_online` does).
+    as :func:`~registration.fleet.online.register.register_online` does).
     """
 
     layout: StateLayout
