@@ -28,6 +28,8 @@ COMMANDS = {
     "register": "register",
     "fleet": "fleet",
     "import": "importing",
+    "serve": "serve",
+    "replay": "replay",
 }
 
 

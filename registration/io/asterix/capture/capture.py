@@ -13,7 +13,7 @@ from __future__ import annotations
 import zlib
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Iterable
+from typing import Iterable, Sequence
 
 import numpy as np
 
@@ -31,7 +31,7 @@ from registration.io.files.ledger import RejectedLedger
 from registration.io.files.limits import DEFAULT_MAX_BYTES
 from registration.io.files.unreadable import read_error
 
-__all__ = ["Capture", "read_capture", "ASTERIX_CATEGORIES"]
+__all__ = ["Capture", "capture_from_datagrams", "read_capture", "ASTERIX_CATEGORIES"]
 
 #: Categories assigned by EUROCONTROL (the ASTERIX category list), used to recognise a raw file.
 ASTERIX_CATEGORIES = frozenset(
@@ -223,3 +223,24 @@ def read_capture(
         kind = "raw"
         segments = Segments(np.array([0]), np.array([len(data)]), np.array([0]), np.array([np.nan]))
     return Capture(name, buf, len(data), kind, zipped, segments, counts, notes)
+
+
+def capture_from_datagrams(payloads: Sequence[bytes], ports: Sequence[int], name: str) -> Capture:
+    """Datagrams received (UDP payloads, in arrival order, with their destination ``ports``) as a
+    capture of kind ``udp``: one segment per datagram, numbered from 1 as ``packet`` (their order
+    in this batch), without capture time (NaN: the time of day alone places the records). ``name``
+    stands for the file in what is set aside (``udp://host:port``)."""
+    sizes = np.fromiter((len(p) for p in payloads), dtype=np.int64, count=len(payloads))
+    end = np.cumsum(sizes)
+    start = end - sizes
+    buf = np.zeros(int(end[-1]) + PAD if sizes.size else PAD, dtype=np.uint8)
+    if sizes.size:
+        buf[: end[-1]] = np.frombuffer(b"".join(payloads), dtype=np.uint8)
+    segments = Segments(
+        start,
+        end,
+        np.arange(1, sizes.size + 1, dtype=np.int64),
+        np.full(sizes.size, np.nan),
+        np.asarray(ports, dtype=np.int64),
+    )
+    return Capture(name, buf, int(end[-1]) if sizes.size else 0, "udp", False, segments, {}, [])

@@ -27,7 +27,14 @@ from registration.io.asterix.errors import LEDGER_COLUMNS, AsterixImportError
 from registration.io.files.ledger import RejectedLedger
 from registration.io.files.limits import Limits
 
-__all__ = ["CategoryRecords", "DecodedFile", "decode_file", "CHUNK_BYTES", "MIN_KNOWN_SHARE"]
+__all__ = [
+    "CategoryRecords",
+    "DecodedFile",
+    "decode_capture",
+    "decode_file",
+    "CHUNK_BYTES",
+    "MIN_KNOWN_SHARE",
+]
 
 #: Data blocks are walked in chunks of about this many octets (progress and memory).
 CHUNK_BYTES = 8 << 20
@@ -252,13 +259,31 @@ def decode_file(
     size and the records of the file (:class:`~registration.io.files.limits.Limits`).
     """
     limits = Limits() if limits is None else limits
-    editions = check_editions(editions)
     rejections = RejectedLedger(LEDGER_COLUMNS) if rejections is None else rejections
     cap = read_capture(path, rejections, ports, limits.max_bytes)
     if progress is not None and hasattr(progress, "file_size"):
         progress.file_size(cap.size)
+    return decode_capture(cap, editions, rejections, progress, limits)
+
+
+def decode_capture(
+    cap: Capture,
+    editions: Mapping[int, str] | None,
+    rejections: RejectedLedger,
+    progress: Any = None,
+    limits: Limits | None = None,
+    *,
+    refuse_non_asterix: bool = True,
+) -> DecodedFile:
+    """:func:`decode_file` of a capture already read (a file's, or datagrams received:
+    :func:`~registration.io.asterix.capture.capture.capture_from_datagrams`).
+    ``refuse_non_asterix`` False: a capture without ASTERIX is not an error (a live stream's
+    datagrams that are not ASTERIX are set aside one by one instead)."""
+    limits = Limits() if limits is None else limits
+    editions = check_editions(editions)
     blocks = find_blocks(cap, rejections)
-    _check_asterix(cap, blocks)
+    if refuse_non_asterix:
+        _check_asterix(cap, blocks)
     cats, counts = np.unique(blocks.category, return_counts=True)
     records = {}
     budget = [limits.max_records, limits.max_records]

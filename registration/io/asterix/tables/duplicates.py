@@ -38,9 +38,13 @@ def _has_source(fields: dict) -> np.ndarray:
 class StreamChecks:
     """The duplicates and backward time steps of one import, file after file (stream order)."""
 
-    def __init__(self, keep_duplicates: bool = False) -> None:
+    def __init__(self, keep_duplicates: bool = False, horizon_s: float | None = None) -> None:
+        """``horizon_s``: remember records for this long (s of the time axis) only, so that a
+        stream that never ends holds bounded memory (a live service); None: the whole import."""
         self.keep = keep_duplicates
+        self.horizon_s = horizon_s
         self.seen: dict[int, np.ndarray] = {}
+        self.seen_time: dict[int, np.ndarray] = {}
         self.by_source: Counter = Counter()
         self.by_file: Counter = Counter()
         self.by_port: Counter = Counter()
@@ -61,7 +65,10 @@ class StreamChecks:
         dup[first] = False
         earlier = self.seen.get(cat, np.zeros(0, dtype=np.int64))
         dup |= np.isin(key, earlier)
-        self.seen[cat] = np.union1d(earlier, key)
+        if self.horizon_s is None:
+            self.seen[cat] = np.union1d(earlier, key)
+        else:
+            self._remember(cat, key[~dup], times[~dup])
         if dup.any():
             f = rec.fields
             src = np.where(_has_source(f)[dup], f["sac"][dup] * 256 + f["sic"][dup], -1)
@@ -72,6 +79,15 @@ class StreamChecks:
                 for port, n in zip(*[a.tolist() for a in np.unique(rec.port[dup], return_counts=True)]):
                     self.by_port[port] += n
         return dup
+
+    def _remember(self, cat: int, key: np.ndarray, times: np.ndarray) -> None:
+        """Keep the keys of the last ``horizon_s`` seconds (a record without time: the latest)."""
+        keys = np.concatenate([self.seen.get(cat, np.zeros(0, dtype=np.int64)), key])
+        previous = self.seen_time.get(cat, np.zeros(0))
+        latest = float(np.nanmax(np.concatenate([previous, times]), initial=-np.inf))
+        t = np.concatenate([previous, np.where(np.isfinite(times), times, latest)])
+        keep = t >= latest - float(self.horizon_s or 0.0)
+        self.seen[cat], self.seen_time[cat] = keys[keep], t[keep]
 
     def time_steps(self, path: str, cat: int, rec: CategoryRecords, times: np.ndarray) -> None:
         """Count the records whose time lies more than :data:`BACK_STEP_S` before the latest of

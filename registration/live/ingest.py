@@ -1,0 +1,161 @@
+"""Datagrams to fleet-table rows: the ASTERIX import (``registration import asterix``) applied to a
+stream, batch by batch, with the same decoding, record rules, duplicate check and time axis.
+
+Each batch of UDP payloads becomes a capture of kind ``udp``
+(:func:`~registration.io.asterix.capture.capture.capture_from_datagrams`), is decoded
+(:func:`~registration.io.asterix.decode.reader.decode_capture`) and turned into rows
+(:func:`~registration.io.asterix.tables.assemble.assemble_file`) with a time axis and a duplicate
+check that carry over from batch to batch. The duplicate check remembers the records of the last
+``horizon_s`` seconds only, so that memory stays flat on a stream that never ends. Records set
+aside are counted by the import's reasons (docs/reference/asterix-import.md).
+
+The time axis: seconds since midnight UTC of the day the service started (or ``date``), carried
+across midnight as the import does; the datagrams' arrival times are not used, so that a replay
+faster than real time places its records as the recording did.
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+from collections import Counter
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Mapping, Sequence
+
+import numpy as np
+
+from registration.io.asterix.capture.capture import capture_from_datagrams
+from registration.io.asterix.decode.reader import decode_capture
+from registration.io.asterix.decode.uap import check_editions
+from registration.io.asterix.errors import LEDGER_COLUMNS, REASONS
+from registration.io.asterix.tables.assemble import SiteLookup, assemble_file
+from registration.io.asterix.tables.duplicates import StreamChecks
+from registration.io.asterix.tables.fleetfiles import PLOT_COLUMNS, REFERENCE_COLUMNS
+from registration.io.asterix.tables.timeofday import Unwrapper
+from registration.io.files.ledger import RejectedLedger
+from registration.io.fleet.cells import check_frame
+
+__all__ = ["AsterixStream", "IngestCounters", "StreamBatch", "DUPLICATE_HORIZON_S"]
+
+#: Records are checked for duplicates against those of the last this many seconds.
+DUPLICATE_HORIZON_S = 600.0
+
+
+@dataclass
+class IngestCounters:
+    """What came in since the start: ``datagrams`` and ``bytes``, ``records`` per category
+    (``"048"``: n), ``plots`` kept (with a target id or not), ``plots_without_id``, ``references``
+    kept, ``rejected`` per reason code (the import's), and per sensor its ``sensor_plots`` and the
+    time of its latest plot (``sensor_last_s``, s on the time axis)."""
+
+    datagrams: int = 0
+    bytes: int = 0
+    records: Counter = field(default_factory=Counter)
+    plots: int = 0
+    plots_without_id: int = 0
+    references: int = 0
+    rejected: Counter = field(default_factory=Counter)
+    sensor_plots: Counter = field(default_factory=Counter)
+    sensor_last_s: dict = field(default_factory=dict)
+
+    def to_json(self) -> dict:
+        return {
+            "datagrams": self.datagrams,
+            "bytes": self.bytes,
+            "records_by_category": dict(sorted(self.records.items())),
+            "plots": self.plots,
+            "plots_without_id": self.plots_without_id,
+            "references": self.references,
+            "rejected": dict(sorted(self.rejected.items())),
+        }
+
+
+@dataclass(frozen=True)
+class StreamBatch:
+    """One batch's rows, in the tables of :mod:`registration.fleet.data.tables` (SI, radians):
+    ``plots`` (time, sensor, target, range, bearing) of plots with a target id, sorted by time;
+    ``references`` (time, target, lat, lon, alt, sigma, sigma_up), None when there are none;
+    ``file_plots``: every plot kept, in file form (time_s, sensor, target, range_m, bearing_deg;
+    target '' without id)."""
+
+    plots: dict
+    references: dict | None
+    file_plots: dict
+
+
+def _si(name: str, columns: dict, source: str) -> tuple[dict, np.ndarray]:
+    """File-form columns -> (table columns, rows kept) with the fleet reader's checks."""
+    import pandas as pd
+
+    read = check_frame(name, Path(source), pd.DataFrame(columns), skip=True, whole_file=False)
+    return read.table, read.bad.ok()
+
+
+class AsterixStream:
+    """The import of a stream of ASTERIX datagrams (module docstring). ``sites``: the checked SITES
+    table (:func:`~registration.io.asterix.tables.sites.read_sites`); ``editions``: category ->
+    edition; ``keep_duplicates`` as the import's; ``name``: how the stream is called in what is set
+    aside (``udp://host:port``)."""
+
+    def __init__(
+        self,
+        sites,
+        editions: Mapping[int, str] | None = None,
+        *,
+        keep_duplicates: bool = False,
+        horizon_s: float = DUPLICATE_HORIZON_S,
+        date: dt.date | None = None,
+        name: str = "udp",
+    ) -> None:
+        self.names = sites["sensor"].astype(str).to_numpy()
+        self.lookup = SiteLookup(sites["sac"].to_numpy(), sites["sic"].to_numpy())
+        self.editions = check_editions(editions)
+        self.unwrapper = Unwrapper(date or dt.datetime.now(dt.timezone.utc).date())
+        self.checks = StreamChecks(keep_duplicates, horizon_s=horizon_s)
+        self.name = name
+        self.counters = IngestCounters()
+
+    def decode(self, payloads: Sequence[bytes], ports: Sequence[int]) -> StreamBatch:
+        """The rows of a batch of datagrams (in arrival order); counts what came and what was set
+        aside. Never raises for bad datagrams: they are counted."""
+        c = self.counters
+        c.datagrams += len(payloads)
+        c.bytes += sum(len(p) for p in payloads)
+        rejections = RejectedLedger(LEDGER_COLUMNS)
+        cap = capture_from_datagrams(payloads, ports, self.name)
+        decoded = decode_capture(cap, self.editions, rejections, refuse_non_asterix=False)
+        for cat, rec in decoded.records.items():
+            c.records[f"{cat:03d}"] += rec.size
+        rows = assemble_file(
+            decoded, self.unwrapper, self.lookup, self.names, self.editions, rejections, self.checks
+        )
+        for code, n in rejections.by_code(tuple(REASONS)).items():
+            if n:
+                c.rejected[code] += int(n)
+        file_plots = (
+            {k: rows.plots[k] for k in PLOT_COLUMNS} if rows.plots else {k: np.zeros(0) for k in PLOT_COLUMNS}
+        )
+        file_plots["target"] = file_plots["target"].astype(str)
+        n = int(file_plots["time_s"].size)
+        c.plots += n
+        if n:
+            sensors, counts = np.unique(file_plots["sensor"].astype(str), return_counts=True)
+            for s, k in zip(sensors.tolist(), counts.tolist()):
+                c.sensor_plots[s] += k
+                mine = file_plots["sensor"].astype(str) == s
+                c.sensor_last_s[s] = max(
+                    c.sensor_last_s.get(s, -np.inf), float(file_plots["time_s"][mine].max())
+                )
+        with_id = file_plots["target"] != ""
+        c.plots_without_id += int((~with_id).sum())
+        plots = {"time": np.zeros(0), "sensor": np.zeros(0, dtype=str), "target": np.zeros(0, dtype=str)}
+        if with_id.any():
+            table, ok = _si("plots", {k: v[with_id] for k, v in file_plots.items()}, self.name)
+            order = np.argsort(table["time"][ok], kind="stable")
+            plots = {k: np.asarray(v)[ok][order] for k, v in table.items()}
+        references = None
+        if rows.reference and rows.reference["time_s"].size:
+            table, ok = _si("reference", {k: rows.reference[k] for k in REFERENCE_COLUMNS}, self.name)
+            references = {k: np.asarray(v)[ok] for k, v in table.items()}
+            c.references += int(ok.sum())
+        return StreamBatch(plots, references, file_plots)

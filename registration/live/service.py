@@ -1,0 +1,224 @@
+"""``registration serve``: the live service (docs/howto/serve.md).
+
+Threads: one receives the UDP datagrams of every ``--asterix`` input into a list (nothing else, so
+that the sockets are drained while the rest works; large receive buffers take the bursts); the HTTP
+server answers from the latest snapshot; the main thread runs rounds every ``tick_s``: it takes the
+datagrams received, imports them (:class:`~registration.live.ingest.AsterixStream`), sends the
+corrected plots on, feeds the estimator (:class:`~registration.live.estimator.LiveEstimator`),
+sends CAT063 every ``cat063_period_s``, writes the state every ``checkpoint_s`` and builds the next
+snapshot. SIGTERM and SIGINT end the service after its current round, with a last checkpoint.
+"""
+
+from __future__ import annotations
+
+import selectors
+import signal
+import socket
+import struct
+import threading
+import time
+from collections import Counter, deque
+from typing import Callable
+
+from registration.io.asterix.tables.sites import read_sites
+from registration.live.api import SensorActivity, Snapshot, build_snapshot
+from registration.live.config import Endpoint, ServeConfig
+from registration.live.estimator import LiveEstimator
+from registration.live.http import start_http
+from registration.live.ingest import AsterixStream
+from registration.live.outputs import cat063_message, plot_corrections
+from registration.live.state import load_state, save_state
+
+__all__ = ["Service", "SILENT_S", "RECEIVE_BUFFER"]
+
+#: A sensor without a plot for this long (s of data time) while data flows is reported silent.
+SILENT_S = 60.0
+#: Receive buffer asked for each input socket (octets).
+RECEIVE_BUFFER = 32 << 20
+_RATE_S = 60.0
+
+
+def _listen(endpoint: Endpoint, interface: str) -> socket.socket:
+    """A UDP socket bound to the endpoint (joined to its group when multicast); OSError with the
+    address when the port is taken."""
+    s = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    s.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, RECEIVE_BUFFER)
+    try:
+        if endpoint.multicast:
+            s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+            s.bind(("", endpoint.port))
+            mreq = struct.pack("4s4s", socket.inet_aton(endpoint.host), socket.inet_aton(interface))
+            s.setsockopt(socket.IPPROTO_IP, socket.IP_ADD_MEMBERSHIP, mreq)
+        else:
+            s.bind((endpoint.host, endpoint.port))
+    except OSError as exc:
+        s.close()
+        raise OSError(exc.errno, f"--asterix {endpoint}: cannot listen ({exc.strerror})") from None
+    s.setblocking(False)
+    return s
+
+
+class _Receiver(threading.Thread):
+    """Drains the input sockets into ``take()``'s list of (payload, destination port)."""
+
+    def __init__(self, sockets: list[socket.socket]) -> None:
+        super().__init__(name="receive", daemon=True)
+        self.selector = selectors.DefaultSelector()
+        for s in sockets:
+            self.selector.register(s, selectors.EVENT_READ, s.getsockname()[1])
+        self.lock = threading.Lock()
+        self.items: list[tuple[bytes, int]] = []
+        self.stopping = threading.Event()
+
+    def run(self) -> None:
+        while not self.stopping.is_set():
+            for key, _ in self.selector.select(timeout=0.1):
+                s, port = key.fileobj, key.data
+                got = []
+                while True:
+                    try:
+                        got.append((s.recv(65535), port))  # type: ignore[union-attr]
+                    except BlockingIOError:
+                        break
+                with self.lock:
+                    self.items.extend(got)
+
+    def take(self) -> list[tuple[bytes, int]]:
+        with self.lock:
+            items, self.items = self.items, []
+        return items
+
+
+class Service:
+    """The service of ``config`` (module docstring). Raises ValueError or OSError naming the option
+    or file for a bad sites file, a state that does not fit, or a port already in use."""
+
+    def __init__(self, config: ServeConfig, log: Callable[[str], None] = print) -> None:
+        self.config, self.log = config, log
+        sites = read_sites(config.sites)
+        self.sources = {str(r.sensor): (int(r.sac), int(r.sic)) for r in sites.itertuples()}
+        editions = {21: config.cat021_edition} if config.cat021_edition else None
+        self.stream = AsterixStream(
+            sites, editions, date=config.date, name=",".join(map(str, config.asterix))
+        )
+        self.estimator = LiveEstimator(sites, alarm_window_s=config.alarm_window_s, options=self._options())
+        self.resumed = load_state(config.state, self.estimator) if config.state is not None else False
+        self.sockets = [_listen(e, config.interface) for e in config.asterix]
+        self.out = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        self.receiver = _Receiver(self.sockets)
+        self.started = time.monotonic()
+        self.recent: deque[tuple[float, Counter]] = deque()
+        self._snapshot = Snapshot()
+        self._snapshot = self._build()
+        try:
+            self.http = start_http(*config.http, lambda: self._snapshot)
+        except OSError as exc:
+            self.close()
+            raise OSError(
+                exc.errno, f"--http {config.http[0]}:{config.http[1]}: cannot listen ({exc.strerror})"
+            ) from None
+        self.stop = threading.Event()
+
+    def _options(self):
+        from registration.fleet.online.options import OnlineOptions
+
+        return OnlineOptions(window_s=self.config.window_s)
+
+    @property
+    def http_port(self) -> int:
+        return int(self.http.server_address[1])
+
+    @property
+    def input_ports(self) -> list[int]:
+        return [int(s.getsockname()[1]) for s in self.sockets]
+
+    # -- rounds ----------------------------------------------------------------------------------
+    def run(self) -> int:
+        """Serve until SIGTERM/SIGINT (or ``stop`` set); returns 0."""
+        previous = {s: signal.signal(s, lambda *_: self.stop.set()) for s in (signal.SIGTERM, signal.SIGINT)}
+        self.receiver.start()
+        inputs = ", ".join(f"udp://{e.host}:{p}" for e, p in zip(self.config.asterix, self.input_ports))
+        resumed = " (resumed from the state)" if self.resumed else ""
+        self.log(f"serving: inputs {inputs}; page http://{self.config.http[0]}:{self.http_port}/{resumed}")
+        next_063 = next_checkpoint = time.monotonic()
+        next_checkpoint += self.config.checkpoint_s
+        try:
+            while not self.stop.wait(self.config.tick_s):
+                self.round()
+                now = time.monotonic()
+                if self.config.cat063 is not None and now >= next_063:
+                    self.send_cat063()
+                    next_063 = now + self.config.cat063_period_s
+                if self.config.state is not None and now >= next_checkpoint:
+                    save_state(self.config.state, self.estimator)
+                    next_checkpoint = now + self.config.checkpoint_s
+            self.round()
+            if self.config.state is not None:
+                save_state(self.config.state, self.estimator)
+        finally:
+            for s, handler in previous.items():
+                signal.signal(s, handler)
+            self.close()
+        self.log("stopped")
+        return 0
+
+    def round(self) -> None:
+        """Import what was received, send the corrected plots, estimate, and publish a snapshot."""
+        items = self.receiver.take()
+        if items:
+            payloads, ports = [p for p, _ in items], [q for _, q in items]
+            if self.config.corrected is not None:
+                self.send_corrected(payloads)
+            batch = self.stream.decode(payloads, ports)
+            self.estimator.feed(batch)
+            fp = batch.file_plots
+            if fp["time_s"].size:
+                self.recent.append((float(fp["time_s"].max()), Counter(fp["sensor"].astype(str).tolist())))
+        self._snapshot = self._build()
+
+    def send_corrected(self, payloads: list[bytes]) -> None:
+        from registration.io.asterix.encode.cat048 import correct_cat048
+
+        target = self.config.corrected
+        assert target is not None
+        corrections = plot_corrections(self.estimator.values(), self.sources)
+        for p in payloads:
+            self.out.sendto(correct_cat048(p, corrections).data, (target.host, target.port))
+
+    def send_cat063(self) -> None:
+        target = self.config.cat063
+        assert target is not None
+        t = self.estimator.data_time_s if self.estimator.data_time_s is not None else time.time() % 86400.0
+        silent = frozenset(s for s, a in self.activity().items() if a.silent)
+        message = cat063_message(self.estimator.values(), self.sources, t, self.config.sac_sic, silent)
+        self.out.sendto(message, (target.host, target.port))
+
+    # -- reports ---------------------------------------------------------------------------------
+    def activity(self) -> dict[str, SensorActivity]:
+        now = self.estimator.data_time_s
+        while self.recent and now is not None and self.recent[0][0] < now - _RATE_S:
+            self.recent.popleft()
+        counts = sum((c for _, c in self.recent), Counter())
+        c = self.stream.counters
+        out = {}
+        for name in self.sources:
+            last = c.sensor_last_s.get(name)
+            silent = now is not None and (last is None or now - last > SILENT_S)
+            out[name] = SensorActivity(
+                int(c.sensor_plots.get(name, 0)), counts.get(name, 0) / _RATE_S, last, bool(silent)
+            )
+        return out
+
+    def _build(self) -> Snapshot:
+        return build_snapshot(
+            self.estimator, self.stream.counters, self.activity(), time.monotonic() - self.started
+        )
+
+    def close(self) -> None:
+        self.receiver.stopping.set()
+        if getattr(self, "http", None) is not None:
+            self.http.shutdown()
+            self.http.server_close()
+        for s in self.sockets:
+            s.close()
+        self.out.close()
