@@ -28,6 +28,7 @@ COMMANDS = {
     "register": "register",
     "fleet": "fleet",
     "import": "importing",
+    "replay": "replay",
 }
 
 
