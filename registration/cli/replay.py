@@ -35,7 +35,9 @@ def _speed(text: str) -> float:
     except ValueError:
         value = math.nan
     if not value > 0:
-        raise argparse.ArgumentTypeError(f"expected a factor > 0, or 0 or max (as fast as possible), got {text!r}")
+        raise argparse.ArgumentTypeError(
+            f"expected a factor > 0, or 0 or max (as fast as possible), got {text!r}"
+        )
     return value
 
 
@@ -45,7 +47,9 @@ def _ports(text: str) -> list[int]:
     except ValueError:
         ports = []
     if not ports or not all(0 < p < 65536 for p in ports):
-        raise argparse.ArgumentTypeError(f"expected UDP port numbers 1-65535 separated by commas, got {text!r}")
+        raise argparse.ArgumentTypeError(
+            f"expected UDP port numbers 1-65535 separated by commas, got {text!r}"
+        )
     return ports
 
 
@@ -110,7 +114,9 @@ def run(args: argparse.Namespace) -> int:
         if path.is_dir():
             raise CommandError(f"{path}: a directory; give the recording's files")
         if not path.is_file():
-            raise CommandError(f"{path}: no such file" if not path.exists() else f"{path}: not a regular file")
+            raise CommandError(
+                f"{path}: no such file" if not path.exists() else f"{path}: not a regular file"
+            )
     from registration.live.replay import Replayer
 
     replayer = Replayer(

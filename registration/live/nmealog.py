@@ -64,7 +64,7 @@ def line_times(log: SentenceLog, first_line: int, n_lines: int, timed_by_recepti
     else:
         fixes, dates = read_fixes(log, ledger)
         pashr = read_pashr(log, ledger)
-        kinds = [fixes[k] for k in ("GGA", "GNS", "RMC")] + [dates, pashr]
+        kinds: list = [fixes[k] for k in ("GGA", "GNS", "RMC")] + [dates, pashr]
         index = np.concatenate([k.index for k in kinds]).astype(np.int64)
         tod = np.concatenate([k.tod for k in kinds]).astype(np.float64)
         order = np.argsort(index, kind="stable")

@@ -28,9 +28,8 @@ from registration.io.asterix.decode.decode21 import decode021
 from registration.io.asterix.decode.decode21 import wanted as wanted021
 from registration.io.asterix.decode.decode34 import WANTED as WANTED034
 from registration.io.asterix.decode.decode34 import decode034
-from registration.io.asterix.decode.decode48 import TOD_LSB_S
+from registration.io.asterix.decode.decode48 import TOD_LSB_S, decode048
 from registration.io.asterix.decode.decode48 import WANTED as WANTED048
-from registration.io.asterix.decode.decode48 import decode048
 from registration.io.asterix.decode.reader import MIN_KNOWN_SHARE
 from registration.io.asterix.decode.uap import DEFAULT_EDITIONS, uap_for
 from registration.io.asterix.decode.walker import Records, walk_records
@@ -203,6 +202,8 @@ def _raw(stream: ByteStream, name: str) -> Iterator[Datagrams]:
         used = int(blocks.end.max()) if blocks.end.size else 0
         carry = data[used:] if not final and n - used <= PIECE_BYTES else b""
         if blocks.start.size:
-            yield Datagrams(cap.buf, blocks.start, blocks.end, block_times(cap.buf, blocks), True, stream.position)
+            yield Datagrams(
+                cap.buf, blocks.start, blocks.end, block_times(cap.buf, blocks), True, stream.position
+            )
         if final:
             return

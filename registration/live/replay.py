@@ -63,8 +63,10 @@ def parse_target(text: str) -> Target:
     if scheme not in ("udp", "tcp"):
         raise ReplayError(f"{what}: unknown scheme {scheme!r}; expected udp:// or tcp:// (NMEA logs only)")
     v6 = re.fullmatch(r"\[([^\]]*)\](?::(.*))?", rest)
-    host, sep, port = (v6.group(1), ":" if v6.group(2) is not None else "", v6.group(2) or "") if v6 else (
-        rest.rpartition(":") if ":" in rest else (rest, "", "")
+    host, sep, port = (
+        (v6.group(1), ":" if v6.group(2) is not None else "", v6.group(2) or "")
+        if v6
+        else (rest.rpartition(":") if ":" in rest else (rest, "", ""))
     )
     if not sep or not port:
         raise ReplayError(f"{what}: no port; expected {scheme}://HOST:PORT")
@@ -84,7 +86,8 @@ def parse_target(text: str) -> Target:
 @dataclass
 class ReplayStats:
     """What a replay sent: ``datagrams`` and ``bytes`` (payloads), ``data_s`` the recorded time
-    span replayed (s, summed over the passes), ``wall_s`` the wall time from the first send (s), ``passes`` begun,
+    span replayed (s, summed over the passes), ``wall_s`` the wall time from the first send (s),
+    ``passes`` begun,
     ``went_back`` datagrams sent at once because their time went back, ``too_big`` datagrams over
     the UDP limit (not sent), ``refused`` sends refused by the receiver's host (ICMP port
     unreachable; not sent), ``notes`` about the recordings."""
@@ -296,7 +299,7 @@ class Replayer:
         n = piece.size
         if n == 0:
             return
-        mv = memoryview(piece.buf).cast("B")
+        mv = memoryview(piece.buf).cast("B")  # type: ignore[arg-type]  # a uint8 array is a buffer
         starts, ends = piece.start.tolist(), piece.end.tolist()
         cum = np.concatenate([[0], np.cumsum(piece.end - piece.start)])
         if math.isnan(self._started):

@@ -44,8 +44,8 @@ class Datagrams:
 class ByteStream:
     """The decompressed octets of ``path``: :meth:`read` ``n`` of them (fewer only at the end);
     ``position``: the octets of the file itself read so far (for a progress bar over file sizes);
-    ``gzip``: whether the file is gzip-compressed; ``out``: the octets handed out; ``notes``: what went wrong in a gzip stream.
-    Use it as a context manager (it closes the file)."""
+    ``gzip``: whether the file is gzip-compressed; ``out``: the octets handed out; ``notes``: what
+    went wrong in a gzip stream. Use it as a context manager (it closes the file)."""
 
     def __init__(self, path: str | Path) -> None:
         self.path = str(path)

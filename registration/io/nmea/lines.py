@@ -314,7 +314,9 @@ def read_lines(lines: list[str], name: str, rejections: RejectedLedger, first_li
     return _sentence_log([name], out, rejections, len(lines), blank)
 
 
-def _sentence_log(files: list[str], out: dict, rejections: RejectedLedger, lines: int, blank: int) -> SentenceLog:
+def _sentence_log(
+    files: list[str], out: dict, rejections: RejectedLedger, lines: int, blank: int
+) -> SentenceLog:
     """The :class:`SentenceLog` of the lines split into ``out``: checksums checked (the bad ones
     set aside), talkers and types."""
     file = np.asarray(out["file"], dtype=np.int64)
