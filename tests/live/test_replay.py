@@ -340,3 +340,28 @@ def test_small_pieces_give_the_same_datagrams_and_times(tmp_path, monkeypatch):
         assert got == payloads, path
         np.testing.assert_array_equal(got_times, times)
     assert whole[raw][0] == blocks
+
+
+def test_a_block_too_big_for_udp_is_counted_not_sent(tmp_path):
+    blocks, _ = _raw_recording(2, 1.0)
+    big = bytes([48]) + (65530).to_bytes(2, "big") + bytes(65527)  # over the 65507-byte UDP limit
+    path = tmp_path / "rec.ast"
+    path.write_bytes(blocks[0] + big + blocks[1])
+    with _receiver() as rx:
+        stats = replay([path], f"udp://127.0.0.1:{rx.getsockname()[1]}", np.inf)
+        assert _drain(rx) == blocks
+    assert stats.too_big == 1 and stats.datagrams == 2 and stats.bytes == sum(map(len, blocks))
+
+
+def test_max_rate_caps_the_payload_rate(tmp_path):
+    """100 datagrams of 1000 bytes at 4 Mbit/s: 0.8 Mbit take 0.2 s at least (the first batch of
+    RATE_BATCH goes at once: 0.168 s is the floor)."""
+    from tests.io.asterix.containers import pcap_bytes, udp_frame
+
+    payloads = [bytes([48, 3, 232]) + bytes([k]) * 997 for k in range(100)]
+    path = tmp_path / "cap.pcap"
+    path.write_bytes(pcap_bytes([udp_frame(p) for p in payloads], [1714557600.0] * 100))
+    with _receiver() as rx:
+        stats = replay([path], f"udp://127.0.0.1:{rx.getsockname()[1]}", np.inf, max_rate_mbps=4.0)
+        assert _drain(rx) == payloads
+    assert stats.wall_s > 0.165
