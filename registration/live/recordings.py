@@ -39,10 +39,13 @@ from registration.io.files.limits import BoundedLedger
 from registration.live.nmealog import looks_like_nmea, nmea_datagrams
 from registration.live.stream import ByteStream, Datagrams
 
-__all__ = ["Recording", "ReplayError", "recognise", "datagrams", "PIECE_BYTES", "KINDS"]
+__all__ = ["Recording", "ReplayError", "recognise", "datagrams", "PIECE_BYTES", "NMEA_PIECE_BYTES", "KINDS"]
 
-#: Decompressed octets read at a time (the memory a replay holds is a few times this).
-PIECE_BYTES = 8 << 20
+#: Decompressed octets of a capture or raw recording read at a time (the memory a replay holds is
+#: a few times this, some 100 MB above the interpreter's).
+PIECE_BYTES = 4 << 20
+#: Octets of an NMEA log read at a time (its lines become Python strings: some 20 times this).
+NMEA_PIECE_BYTES = 1 << 20
 #: Octets read to recognise a file.
 HEAD_BYTES = 1 << 16
 #: The kinds of recording.
@@ -116,7 +119,7 @@ def datagrams(rec: Recording, ports: Iterable[int] | None = None) -> Iterator[Da
         elif rec.kind == "raw":
             yield from _raw(stream, rec.path)
         else:
-            yield from nmea_datagrams(stream, rec.path, PIECE_BYTES)
+            yield from nmea_datagrams(stream, rec.path, NMEA_PIECE_BYTES)
 
 
 def _padded(data: bytes) -> np.ndarray:

@@ -335,6 +335,7 @@ def test_small_pieces_give_the_same_datagrams_and_times(tmp_path, monkeypatch):
     cap = SAMPLES / "atc.pcap.gz"
     whole = {p: _all(p) for p in (raw, log, cap)}
     monkeypatch.setattr(recordings, "PIECE_BYTES", 3000)
+    monkeypatch.setattr(recordings, "NMEA_PIECE_BYTES", 3000)
     for path, (payloads, times) in whole.items():
         got, got_times = _all(path)
         assert got == payloads, path
