@@ -129,17 +129,16 @@ class ReplayStats:
 
 class Timeline:
     """Recorded times placed on one axis (s) across the files of a pass: times of day on the day
-    nearest to the time before them, a missing time (NaN) taking the one before; ``first``, ``last``,
-    ``latest`` (the maximum) so far and ``went_back`` (datagrams earlier than one before them)."""
+    nearest to the time before them, a missing time (NaN) taking the one before; ``last`` and
+    ``latest`` (the maximum) so far."""
 
     def __init__(self) -> None:
-        self.first = math.nan
         self.last = math.nan
         self.latest = -math.inf
-        self.went_back = 0
 
-    def place(self, piece: Datagrams) -> np.ndarray:
-        """The times (K,) of ``piece`` on the axis; NaN before the first time of the pass."""
+    def place(self, piece: Datagrams) -> tuple[np.ndarray, np.ndarray]:
+        """The times (K,) of ``piece`` on the axis (NaN before the first time of the pass), and
+        whether each went back (K,) bool: earlier than a time before it."""
         t = np.array(piece.time, dtype=np.float64)
         ok = np.isfinite(t)
         if piece.time_of_day and ok.any():
@@ -149,17 +148,10 @@ class Timeline:
             idx = np.maximum.accumulate(np.where(ok, np.arange(t.size), -1))
             t = np.where(idx >= 0, t[np.maximum(idx, 0)], self.last)
         if not t.size or np.isnan(t).all():
-            return t
-        if math.isnan(self.first):
-            self.first = float(t[np.isfinite(t)][0])
+            return t, np.zeros(t.size, dtype=bool)
         running = np.maximum.accumulate(np.concatenate([[self.latest], np.nan_to_num(t, nan=-math.inf)]))
-        self.went_back += int((t < running[:-1]).sum())
         self.latest, self.last = float(running[-1]), float(t[-1])
-        return t
-
-    @property
-    def span(self) -> float:
-        return self.latest - self.first if not math.isnan(self.first) else 0.0
+        return t, t < running[:-1]
 
 
 class _Sender:
@@ -242,13 +234,13 @@ class Replayer:
         self._t0_wall = self._t0_data = math.nan
         self._rate_next = -math.inf
         self._started = math.nan  # the clock at the first send
+        self._first, self._latest = math.nan, -math.inf  # the times sent in this pass
 
     def run(self) -> ReplayStats:
         """Send the recordings (every pass when looping); returns :attr:`stats`."""
         sender = _Sender(self.target)
         total = sum(Path(r.path).stat().st_size for r in self.recordings)
         bar = progress_bar(self.progress, "replay", total=total, unit="B", unit_scale=True)
-        timeline = Timeline()
         try:
             while True:
                 timeline = Timeline()
@@ -257,23 +249,38 @@ class Replayer:
                 for rec in self.recordings:
                     done = 0
                     for piece in datagrams(rec, self.ports):
-                        self._send_piece(sender, piece, timeline.place(piece))
+                        self._send_piece(sender, piece, *timeline.place(piece))
                         bar.update(piece.position - done)
                         done = piece.position
-                self.stats.data_s += timeline.span
-                self.stats.went_back += timeline.went_back
-                latest, timeline = timeline.latest, Timeline()
+                latest = self._end_pass()
                 if not self.loop or self.stats.datagrams == sent_before:
                     break
                 self._next_pass(latest)
                 bar.reset(total)
         finally:
-            self.stats.data_s += timeline.span  # a pass cut short
-            self.stats.went_back += timeline.went_back
+            self._end_pass()  # a pass cut short
             self.stats.wall_s = self.clock() - self._started if not math.isnan(self._started) else 0.0
             bar.close()
             sender.close()
         return self.stats
+
+    def _end_pass(self) -> float:
+        """Count the recorded time span sent in this pass; returns the latest time sent."""
+        latest = self._latest
+        if not math.isnan(self._first):
+            self.stats.data_s += self._latest - self._first
+        self._first, self._latest = math.nan, -math.inf
+        return latest
+
+    def _sent(self, t: np.ndarray, running: np.ndarray, k: int, j: int) -> None:
+        """Datagrams ``k .. j - 1`` of times ``t`` (running maximum ``running``) were sent."""
+        top = float(running[j - 1])
+        if math.isnan(top):
+            return
+        if math.isnan(self._first):
+            sent = t[k:j]
+            self._first = float(sent[np.isfinite(sent)][0])
+        self._latest = max(self._latest, top)
 
     def _next_pass(self, latest: float) -> None:
         """The next pass starts when the last datagram of this one (recorded at ``latest``) was due."""
@@ -294,15 +301,18 @@ class Replayer:
                 self._t0_wall = self.clock()
         return np.where(ok, self._t0_wall + (t - self._t0_data) / self.speed, -math.inf)
 
-    def _send_piece(self, sender: _Sender, piece: Datagrams, t: np.ndarray) -> None:
-        """Send the datagrams of ``piece``, each when due: those due at once in one batch, then a
-        sleep until the next deadline (the rate limit holds batches of :data:`RATE_BATCH`)."""
+    def _send_piece(self, sender: _Sender, piece: Datagrams, t: np.ndarray, back: np.ndarray) -> None:
+        """Send the datagrams of ``piece`` (times ``t``; ``back``: the time went back), each when
+        due: those due at once in one batch, then a sleep until the next deadline (the rate limit
+        holds batches of :data:`RATE_BATCH`)."""
         n = piece.size
         if n == 0:
             return
         mv = memoryview(piece.buf).cast("B")  # type: ignore[arg-type]  # a uint8 array is a buffer
         starts, ends = piece.start.tolist(), piece.end.tolist()
         cum = np.concatenate([[0], np.cumsum(piece.end - piece.start)])
+        back_cum = np.concatenate([[0], np.cumsum(back)])
+        running = np.fmax.accumulate(t)
         if math.isnan(self._started):
             self._started = self.clock()
         deadlines = self._deadlines(t)
@@ -324,6 +334,8 @@ class Replayer:
                 self._rate_next = max(self._rate_next, now) + size / self.rate
             self.stats.bytes += size - lost
             self.stats.datagrams += j - k - (self.stats.too_big + self.stats.refused - failed)
+            self.stats.went_back += int(back_cum[j] - back_cum[k])
+            self._sent(t, running, k, j)
             k = j
 
 
