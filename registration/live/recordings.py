@@ -1,9 +1,10 @@
 """Recordings as datagrams to replay, a piece at a time: each piece a buffer with the offsets of its
 datagrams and their recorded times (numpy arrays; no Python object per datagram).
 
-* **pcap** (read piece by piece) and **pcapng** (read whole): each UDP datagram's payload as
-  captured, timed by its capture time (UTC s since 1970); ``ports`` keeps only those UDP destination
-  ports (the packets and datagrams are found by :mod:`registration.io.asterix.capture`).
+* **pcap** and **pcapng** captures: each UDP datagram's payload as captured, timed by its capture
+  time (UTC s since 1970); ``ports`` keeps only those UDP destination ports (the packets and
+  datagrams are found by :mod:`registration.io.asterix.capture`; a pcapng piece starts with the
+  section header and interface descriptions read so far).
 * **raw ASTERIX** (data blocks end to end): one datagram per data block, timed by the time of day of
   the first record of the block (I048/140, I034/030, I021/071..077 in the default editions;
   :mod:`registration.io.asterix.decode`); a block without one gets NaN (the previous block's time).
@@ -14,6 +15,7 @@ datagrams and their recorded times (numpy arrays; no Python object per datagram)
 
 from __future__ import annotations
 
+import struct
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterable, Iterator
@@ -23,7 +25,7 @@ import numpy as np
 from registration.io.asterix.capture.blocks import Blocks, find_blocks
 from registration.io.asterix.capture.capture import Capture, read_capture
 from registration.io.asterix.capture.netstack import Segments, udp_segments
-from registration.io.asterix.capture.pcap import pcap_packets
+from registration.io.asterix.capture.pcap import PCAPNG_MAGIC, pcap_packets, pcapng_packets
 from registration.io.asterix.decode.decode21 import decode021
 from registration.io.asterix.decode.decode21 import wanted as wanted021
 from registration.io.asterix.decode.decode34 import WANTED as WANTED034
@@ -108,14 +110,11 @@ def datagrams(rec: Recording, ports: Iterable[int] | None = None) -> Iterator[Da
     """The datagrams of ``rec``, piece after piece; ``ports``: UDP destination ports kept from a
     capture (None: all)."""
     ports = list(ports) if ports else None
-    if rec.kind == "pcapng":  # read whole: its blocks may describe interfaces anywhere
-        cap = read_capture(rec.path, _ledger(), ports)
-        seg = cap.segments
-        yield Datagrams(cap.buf, seg.start, seg.end, seg.time, False, Path(rec.path).stat().st_size)
-        return
     with ByteStream(rec.path) as stream:
         if rec.kind == "pcap":
             yield from _pcap(stream, rec.path, ports)
+        elif rec.kind == "pcapng":
+            yield from _pcapng(stream, rec.path, ports)
         elif rec.kind == "raw":
             yield from _raw(stream, rec.path)
         else:
@@ -148,6 +147,53 @@ def _pcap(stream: ByteStream, name: str, ports: list | None) -> Iterator[Datagra
             yield Datagrams(buf, seg.start, seg.end, seg.time, False, stream.position)
         if final or (not packets.offset.size and len(carry) > _MAX_RECORD + PIECE_BYTES):
             return  # the end, or a corrupt record header: the rest of the capture is lost
+
+
+def _framing(body: bytes, order: str) -> tuple[int, list[bytes], str]:
+    """Where the complete pcapng blocks at the start of ``body`` end, the section headers and
+    interface descriptions among them (from the last section header on), and the byte order."""
+    p, heads = 0, []
+    while p + 12 <= len(body):
+        if body[p : p + 4] == PCAPNG_MAGIC:
+            magic = body[p + 8 : p + 12]
+            order = "<" if magic == b"\x4d\x3c\x2b\x1a" else ">" if magic == b"\x1a\x2b\x3c\x4d" else ""
+            if not order:
+                break
+        btype, length = struct.unpack_from(order + "II", body, p)
+        if length < 12 or length % 4 or p + length > len(body):
+            break
+        if btype == 0x0A0D0D0A:
+            heads = [body[p : p + length]]
+        elif btype == 1:
+            heads.append(body[p : p + length])
+        p += length
+    return p, heads, order
+
+
+def _pcapng(stream: ByteStream, name: str, ports: list | None) -> Iterator[Datagrams]:
+    """The UDP datagrams of a pcapng file, its blocks read a piece at a time: each piece is the
+    section header and interface descriptions read so far (the packets' link types and time
+    resolutions), then the complete blocks of the octets left over and the next
+    :data:`PIECE_BYTES`."""
+    prefix, carry, order = b"", b"", "<"
+    ledger = _ledger()
+    while True:
+        new = stream.read(PIECE_BYTES)
+        final = len(new) < PIECE_BYTES
+        body = carry + new
+        cut, heads, order = _framing(body, order)
+        data = prefix + body[:cut]
+        if cut:
+            packets = pcapng_packets(data, name, ledger)
+            buf = _padded(data)
+            seg, _ = udp_segments(buf, packets, ports)
+            if seg.start.size:
+                yield Datagrams(buf, seg.start, seg.end, seg.time, False, stream.position)
+        has_section = bool(heads) and heads[0][:4] == PCAPNG_MAGIC
+        prefix = b"".join(heads) if has_section else prefix + b"".join(heads)
+        carry = body[cut:]
+        if final or (not cut and len(carry) > _MAX_RECORD + PIECE_BYTES):
+            return  # the end, or a corrupt block header: the rest of the capture is lost
 
 
 def _first_records(rec: Records) -> tuple[np.ndarray, Records]:

@@ -173,7 +173,12 @@ class _Sender:
     def send(self, mv: memoryview, starts: list, ends: list, stats: ReplayStats) -> int:
         """Send datagrams [starts[k], ends[k]) of ``mv``; returns the bytes not sent."""
         if self.target.scheme == "tcp":  # the lines of a piece lie end to end
-            self.sock.sendall(mv[starts[0] : ends[-1]])
+            try:
+                self.sock.sendall(mv[starts[0] : ends[-1]])
+            except OSError as exc:  # not standard output's broken pipe: the receiver hung up
+                raise ReplayError(
+                    f"--to {self.target.text}: the receiver closed the connection ({exc.strerror or exc})"
+                ) from None
             return 0
         send, lost = self.sock.send, 0
         for a, b in zip(starts, ends):

@@ -336,7 +336,12 @@ def test_small_pieces_give_the_same_datagrams_and_times(tmp_path, monkeypatch):
     log = tmp_path / "bridge.log"
     log.write_text("\n".join(_nmea_lines(60)) + "\n")
     cap = SAMPLES / "atc.pcap.gz"
-    whole = {p: _all(p) for p in (raw, log, cap)}
+    from tests.io.asterix.containers import pcapng_bytes, udp_frame
+
+    ng = tmp_path / "cap.pcapng"
+    ng_payloads = [bytes([48, 0, 3 + k % 200]) + bytes(k % 200) for k in range(300)]
+    ng.write_bytes(pcapng_bytes([udp_frame(p) for p in ng_payloads], [1714557600.0 + k for k in range(300)]))
+    whole = {p: _all(p) for p in (raw, log, cap, ng)}
     monkeypatch.setattr(recordings, "PIECE_BYTES", 3000)
     monkeypatch.setattr(recordings, "NMEA_PIECE_BYTES", 3000)
     for path, (payloads, times) in whole.items():
@@ -344,6 +349,8 @@ def test_small_pieces_give_the_same_datagrams_and_times(tmp_path, monkeypatch):
         assert got == payloads, path
         np.testing.assert_array_equal(got_times, times)
     assert whole[raw][0] == blocks
+    assert whole[ng][0] == ng_payloads
+    np.testing.assert_allclose(whole[ng][1], 1714557600.0 + np.arange(300))
 
 
 def test_a_block_too_big_for_udp_is_counted_not_sent(tmp_path):
@@ -369,3 +376,22 @@ def test_max_rate_caps_the_payload_rate(tmp_path):
         stats = replay([path], f"udp://127.0.0.1:{rx.getsockname()[1]}", np.inf, max_rate_mbps=4.0)
         assert _drain(rx) == payloads
     assert stats.wall_s > 0.165
+
+
+def test_a_tcp_receiver_that_hangs_up_ends_the_replay_with_exit_2(tmp_path, capsys):
+    path = tmp_path / "bridge.log"
+    path.write_text("\n".join(_nmea_lines(600)) + "\n")
+    server = socket.create_server(("127.0.0.1", 0))
+
+    def hang_up() -> None:
+        conn, _ = server.accept()
+        conn.setsockopt(socket.SOL_SOCKET, socket.SO_LINGER, struct.pack("ii", 1, 0))  # reset
+        conn.close()
+
+    thread = threading.Thread(target=hang_up)
+    thread.start()
+    to = f"tcp://127.0.0.1:{server.getsockname()[1]}"
+    assert main(["replay", str(path), "--to", to, "--speed", "100"]) == 2
+    thread.join(10)
+    server.close()
+    assert "the receiver closed the connection" in capsys.readouterr().err
