@@ -149,6 +149,9 @@ def test_the_nmea_log_goes_line_by_line_with_crlf(tmp_path):
     lines = _nmea_lines(20)
     path = tmp_path / "bridge.log"
     path.write_text("\n".join(lines[:5]) + "\n\n" + "\n".join(lines[5:]) + "\n")  # a blank line, LF ends
+    zipped = tmp_path / "bridge.log.gz"
+    zipped.write_bytes(gzip.compress(path.read_bytes()))
+    assert recognise(zipped).kind == "nmea"
     piece = next(datagrams(recognise(path)))
     # the HDT before any time has none; then each line at the time of the last GGA/ZDA before it
     assert np.isnan(piece.time[0])
