@@ -31,7 +31,7 @@ from registration.core.progress import progress_bar
 from registration.io.files.ledger import RejectedLedger
 from registration.io.nmea.errors import NmeaImportError
 
-__all__ = ["SentenceLog", "read_log", "line_parts", "LineProblem"]
+__all__ = ["SentenceLog", "read_log", "read_lines", "line_parts", "LineProblem"]
 
 _START = re.compile(r"[$!\\]")
 _UNIX = re.compile(r"^\d{9,11}(\.\d*)?$")
@@ -200,13 +200,22 @@ def _split_file(
     lines = text.split("\n")
     if lines and lines[-1] == "":
         lines.pop()
+    if bar is not None:
+        bar.total = (bar.total or 0) + len(lines)
+    blank = _split_lines(lines, file_index, out, rejections, bar)
+    return len(lines), blank
+
+
+def _split_lines(
+    lines: list[str], file_index: int, out: dict, rejections: RejectedLedger, bar, first_line: int = 1
+) -> int:
+    """Append the sentences of ``lines`` (numbered from ``first_line``) to ``out`` (lists); lines
+    that hold none go to ``rejections``. Returns the number of blank lines."""
     blank = 0
     sentences, numbers, received = out["sentence"], out["line"], out["received"]
     bad_lines, bad_codes, bad_reasons = [], [], []
     nan = math.nan
-    if bar is not None:
-        bar.total = (bar.total or 0) + len(lines)
-    for number, raw in enumerate(lines, 1):
+    for number, raw in enumerate(lines, first_line):
         if bar is not None and number % 20000 == 0:
             bar.update(20000)
         line = raw.strip()
@@ -235,7 +244,7 @@ def _split_file(
         rejections.add(
             [file_index] * len(pick), code, [bad_reasons[k] for k in pick], line=[bad_lines[k] for k in pick]
         )
-    return len(lines), blank
+    return blank
 
 
 def checksums_ok(sentences: list[str]) -> tuple[np.ndarray, np.ndarray]:
@@ -293,6 +302,23 @@ def read_log(
             blank += b
     finally:
         bar.close()
+    return _sentence_log([str(p) for p in files], out, rejections, lines, blank)
+
+
+def read_lines(lines: list[str], name: str, rejections: RejectedLedger, first_line: int = 1) -> SentenceLog:
+    """The :class:`SentenceLog` of some lines of one log file ``name`` (without their line ends),
+    numbered from ``first_line``: a log read piece by piece (a replay of a large file) gives the
+    same sentences, line numbers and rejections as :func:`read_log` of the whole."""
+    out: dict[str, list] = {"file": [], "line": [], "sentence": [], "received": []}
+    blank = _split_lines(lines, 0, out, rejections, None, first_line)
+    return _sentence_log([name], out, rejections, len(lines), blank)
+
+
+def _sentence_log(
+    files: list[str], out: dict, rejections: RejectedLedger, lines: int, blank: int
+) -> SentenceLog:
+    """The :class:`SentenceLog` of the lines split into ``out``: checksums checked (the bad ones
+    set aside), talkers and types."""
     file = np.asarray(out["file"], dtype=np.int64)
     line = np.asarray(out["line"], dtype=np.int64)
     received = np.asarray(out["received"], dtype=np.float64)
@@ -306,6 +332,4 @@ def read_log(
     keep = np.flatnonzero(ok)
     sentences = [sentences[k] for k in keep]
     talker, kind = _addresses(sentences)
-    return SentenceLog(
-        [str(p) for p in files], file[keep], line[keep], sentences, talker, kind, received[keep], lines, blank
-    )
+    return SentenceLog(files, file[keep], line[keep], sentences, talker, kind, received[keep], lines, blank)
