@@ -37,7 +37,15 @@ from registration.io.nmea.navigation import Navigation
 if TYPE_CHECKING:
     import pandas as pd
 
-__all__ = ["Plots", "read_ttm", "DISTANCE_UNITS_M", "MAX_RANGE_M"]
+__all__ = [
+    "Plots",
+    "read_ttm",
+    "value_problems",
+    "DISTANCE_UNITS_M",
+    "MAX_RANGE_M",
+    "TTM_FIELDS",
+    "TTM_MIN_FIELDS",
+]
 
 #: Largest TTM range (m) taken as a measurement (a radar's horizon is far below it).
 MAX_RANGE_M = 1e6
@@ -116,10 +124,17 @@ def _status(c: Columns, sensor: np.ndarray, keep_acquiring: bool, rejections: Re
     return c, sensor, status
 
 
-def _values(c: Columns, rejections: RejectedLedger):
-    """(the TTMs with valid values, their kept mask, range m, bearing rad as given, unit, reference)."""
-    distance, bearing = numbers(c.cols[2]), numbers(c.cols[3])
-    unit, ref = text(c.cols[10]), text(c.cols[4])
+#: Position of each TTM field the importer reads (position 0 is the address, ``RATTM``).
+TTM_FIELDS = {"number": 1, "distance": 2, "bearing": 3, "reference": 4, "unit": 10, "status": 12, "time": 14}
+#: Fields a TTM must have, the address not counted (the rest, up to the time, may be missing).
+TTM_MIN_FIELDS = 12
+
+
+def value_problems(number, distance: np.ndarray, bearing: np.ndarray, unit, reference) -> np.ndarray:
+    """(K,) the reason, naming the field, why each TTM's values cannot be read ('' where they can):
+    ``number`` the target number texts, ``distance`` and ``bearing`` (deg) the numbers
+    (:func:`~registration.io.nmea.fields.numbers`), ``unit`` and ``reference`` the letters
+    (:func:`~registration.io.nmea.fields.text`). The first check failed gives the reason."""
     factor = np.array([DISTANCE_UNITS_M.get(u, np.nan) for u in unit])
     with np.errstate(over="ignore", invalid="ignore"):
         too_far = distance * np.nan_to_num(factor, nan=1.0) > MAX_RANGE_M
@@ -128,17 +143,26 @@ def _values(c: Columns, rejections: RejectedLedger):
         (~(distance > 0) | too_far, far),
         (np.isnan(factor), "TTM distance unit is not K, N or S"),
         (~((bearing >= 0) & (bearing <= 360)), "TTM bearing empty, not a number or outside [0, 360] deg"),
-        (~np.isin(ref, ["T", "R"]), "TTM bearing reference is not T (true) or R (relative)"),
-        (np.array([not v.strip() for v in c.cols[1]], dtype=bool), "TTM target number is empty"),
+        (~np.isin(reference, ["T", "R"]), "TTM bearing reference is not T (true) or R (relative)"),
+        (np.array([not v.strip() for v in number], dtype=bool), "TTM target number is empty"),
     )
-    bad = np.zeros(len(c), bool)
-    reasons = np.full(len(c), "", dtype=object)
+    reasons = np.full(len(unit), "", dtype=object)
     for b, why in checks[::-1]:  # the first check's reason wins
         reasons[b] = why
-        bad |= b
+    return reasons
+
+
+def _values(c: Columns, rejections: RejectedLedger):
+    """(the TTMs with valid values, their kept mask, range m, bearing rad as given, unit, reference)."""
+    f = TTM_FIELDS
+    distance, bearing = numbers(c.cols[f["distance"]]), numbers(c.cols[f["bearing"]])
+    unit, ref = text(c.cols[f["unit"]]), text(c.cols[f["reference"]])
+    reasons = value_problems(c.cols[f["number"]], distance, bearing, unit, ref)
+    bad = reasons != ""
     keep = ~bad
     c = c.reject(bad, rejections, "bad_field", reasons)
-    return c, keep, distance[keep] * factor[keep], np.radians(bearing[keep]), unit[keep], ref[keep]
+    factor = np.array([DISTANCE_UNITS_M.get(u, np.nan) for u in unit[keep]])
+    return c, keep, distance[keep] * factor, np.radians(bearing[keep]), unit[keep], ref[keep]
 
 
 def read_ttm(
@@ -153,7 +177,7 @@ def read_ttm(
     """The plots of the log's TTM sentences (see the module's text). ``talkers``: talker -> sensor;
     ``only``: the sensor of TTMs whose talker is not in ``talkers`` (the platform's only sensor),
     None to set those aside."""
-    c = columns(log, log.where("TTM"), 12, 16, rejections, "TTM")
+    c = columns(log, log.where("TTM"), TTM_MIN_FIELDS, 16, rejections, "TTM")
     c, sensor = _sensors(c, talkers, only, rejections)
     c, sensor, status = _status(c, sensor, keep_acquiring, rejections)
     no_time = np.array([v.strip() == "" for v in c.cols[14]], dtype=bool)

@@ -69,13 +69,18 @@ def _size(data: Sequence[int], at: int, layout: object, name: str) -> int:
     raise TypeError(f"unknown item layout {layout!r}")
 
 
+#: Octet -> the item bits set in it as FSPEC positions from 1 (bit 8 is 1, bit 2 is 7; FX left out).
+_FSPEC_BITS = tuple(tuple(k + 1 for k in range(7) if octet & (0x80 >> k)) for octet in range(256))
+
+
 def _fspec_items(data: Sequence[int], at: int, n: int, what: str) -> tuple[list, int]:
     """(FRNs set, FSPEC octets) of the FSPEC at ``at`` of something with n items."""
     octets = -(-n // 7)
-    present, j = [], 0
+    present: list[int] = []
+    j = 0
     while True:
         octet = data[at + j]
-        present += [7 * j + k + 1 for k in range(7) if octet & (0x80 >> k)]
+        present += [7 * j + k for k in _FSPEC_BITS[octet]]
         j += 1
         if not octet & 1:
             return present, j
@@ -90,7 +95,6 @@ def _fspec_items(data: Sequence[int], at: int, n: int, what: str) -> tuple[list,
 def walk_one(data: Sequence[int], pos: int, end: int, uap: Uap, wanted: tuple = ()) -> tuple[int, dict]:
     """The record of ``uap`` at ``pos`` in a data block ending at ``end``: (its end, the offsets of
     the wanted items present). RecordProblem when it cannot be walked."""
-    label = f"CAT{uap.category:03d}"
     try:
         present, size = _fspec_items(data, pos, len(uap.items), "record")
     except IndexError:  # the FSPEC runs past the data
@@ -102,17 +106,21 @@ def walk_one(data: Sequence[int], pos: int, end: int, uap: Uap, wanted: tuple = 
     if not present:
         raise RecordProblem("empty_record", "the FSPEC names no item")
     cursor, offsets = pos + size, {}
+    items, n_items = uap.items, len(uap.items)
     for k in present:
-        item = uap.items[k - 1] if k <= len(uap.items) else None
+        item = items[k - 1] if k <= n_items else None
         if item is None:
             raise RecordProblem(
-                "spare_frn", f"the FSPEC sets FRN {k}, spare in {label} edition {uap.edition}"
+                "spare_frn", f"the FSPEC sets FRN {k}, spare in CAT{uap.category:03d} edition {uap.edition}"
             )
         name, layout = item
-        try:
-            size = _size(data, cursor, layout, f"I{uap.category:03d}/{name}")
-        except IndexError:
-            size = end - cursor + 1
+        if type(layout) is Fixed:  # most items: no call
+            size = layout.octets
+        else:
+            try:
+                size = _size(data, cursor, layout, f"I{uap.category:03d}/{name}")
+            except IndexError:
+                size = end - cursor + 1
         if cursor + size > end:
             raise RecordProblem(
                 "item_overrun",
