@@ -66,6 +66,12 @@ def _api(version: int) -> dict:
     ]  # fmt: skip
     if version == 2:
         alarms.append(dict(alarms[0], time_s=1460.0, object="R1", before=0.05, after=0.0612, sigma=0.0015))
+    sensors = [
+        {"sensor": "R2", "plots": 800, "rate_per_s": 0.0, "last_time_s": 900.0, "silent": True},
+        {"sensor": "R1", "plots": 1500, "rate_per_s": 10.0, "last_time_s": 1450.0, "silent": False},
+    ]
+    if version == 2:  # a sensor just seen: no plot time yet, no history yet
+        sensors.append({"sensor": "R3", "plots": 0, "rate_per_s": 0.0, "last_time_s": None, "silent": True})
     status = {
         "uptime_s": 3725.0,
         "memory_rss_bytes": 150 * 2**20,
@@ -78,10 +84,7 @@ def _api(version: int) -> dict:
             "references": 150,
             "rejected": {"range_out_of_bounds": 7, "stale_time": 0},
         },
-        "sensors": [
-            {"sensor": "R2", "plots": 800, "rate_per_s": 0.0, "last_time_s": 900.0, "silent": True},
-            {"sensor": "R1", "plots": 1500, "rate_per_s": 10.0, "last_time_s": 1450.0, "silent": False},
-        ],
+        "sensors": sensors,
         "consistency": {"value": 1.02 if version == 1 else 1.31, "band": [0.9, 1.1],
                         "verdict": "consistent" if version == 1 else "outside band"},
         "alarms": alarms,
@@ -131,7 +134,7 @@ class Handler(BaseHTTPRequestHandler):
             name = url.path.removeprefix("/api/")
             if name == "history":
                 sensor = parse_qs(url.query)["sensor"][0]
-                body = {"sensor": sensor, "states": HISTORY[sensor]}
+                body = {"sensor": sensor, "states": HISTORY.get(sensor, [])}  # R3: just seen, no history
             else:
                 body = api[name]
             self._send(200, json.dumps(body).encode(), "application/json")
@@ -247,6 +250,8 @@ def test_the_page_shows_the_api_follows_it_and_survives_its_loss(browser_page, s
     assert page.locator("#alarms li").count() == 2
     assert page.locator("#alarms li").first.get_attribute("data-object") == "R1"  # newest first
     assert page.locator("#consistency").get_attribute("data-verdict") == "outside band"
+    assert page.locator('figure[data-sensor="R3"] .empty').inner_text() == "no history yet"
+    assert page.locator('#sensors tr[data-sensor="R3"] td').nth(3).inner_text() == "—"
     assert seen.foreign == [] and seen.errors == []
 
     stand_in.down = True  # the browser logs the 503s as console errors from here on: expected

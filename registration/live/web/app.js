@@ -94,8 +94,14 @@ async function fetchAll() {
     getJson("api/status"),
     getJson("api/residuals"),
   ]);
-  const names = (status.sensors || []).map((s) => s.sensor);
-  const histories = await Promise.all(names.map((n) => getJson(`api/history?sensor=${encodeURIComponent(n)}`)));
+  // One sensor's history failing (say, a 404 for a sensor just seen) leaves the others drawn.
+  const history = (n) =>
+    getJson(`api/history?sensor=${encodeURIComponent(n)}`).catch((err) => ({
+      sensor: n,
+      states: [],
+      error: err.message,
+    }));
+  const histories = await Promise.all((status.sensors || []).map((s) => history(s.sensor)));
   return { estimates, status, residuals, histories };
 }
 
@@ -127,7 +133,8 @@ function renderAlarms(alarms) {
 function renderConsistency(c) {
   const node = document.getElementById("consistency");
   const verdict = (c && c.verdict) || "no verdict yet";
-  const band = c && Array.isArray(c.band) ? ` in band [${formatSig(c.band[0])}, ${formatSig(c.band[1])}]` : "";
+  const band =
+    c && Array.isArray(c.band) ? ` in band [${formatSig(c.band[0])}, ${formatSig(c.band[1])}]` : "";
   node.textContent = `${formatSig(c ? c.value : null)}${band}: ${verdict}`;
   node.dataset.verdict = verdict;
   node.className = `consistency ${verdict === "consistent" ? "ok" : c && c.verdict ? "bad" : ""}`;
@@ -182,7 +189,11 @@ function renderSensors(sensors) {
     ...rows.map((s) =>
       el(
         "tr",
-        { "data-sensor": s.sensor, "data-silent": String(Boolean(s.silent)), class: s.silent ? "silent" : "" },
+        {
+          "data-sensor": s.sensor,
+          "data-silent": String(Boolean(s.silent)),
+          class: s.silent ? "silent" : "",
+        },
         el("td", {}, s.sensor),
         el("td", { class: "num plots" }, String(s.plots)),
         el("td", { class: "num rate" }, formatFixed(s.rate_per_s, 1)),
@@ -281,14 +292,17 @@ function drawChart(state) {
     "aria-label": `${state.state} (${state.unit}) over data time (s)`,
   });
   for (const tick of niceTicks(y0, y1, 4)) {
-    svg.append(svgEl("line", { class: "grid", x1: left, x2: width - right, y1: y(tick.value), y2: y(tick.value) }));
-    svg.append(svgEl("text", { class: "tick y", x: left - 4, y: y(tick.value) }, tick.label));
+    const yt = y(tick.value);
+    svg.append(svgEl("line", { class: "grid", x1: left, x2: width - right, y1: yt, y2: yt }));
+    svg.append(svgEl("text", { class: "tick y", x: left - 4, y: yt }, tick.label));
   }
   for (const tick of niceTicks(t0, t1, 4)) {
-    svg.append(svgEl("line", { class: "grid", x1: x(tick.value), x2: x(tick.value), y1: top, y2: height - bottom }));
-    svg.append(svgEl("text", { class: "tick x", x: x(tick.value), y: height - bottom + 13 }, tick.label));
+    const xt = x(tick.value);
+    svg.append(svgEl("line", { class: "grid", x1: xt, x2: xt, y1: top, y2: height - bottom }));
+    svg.append(svgEl("text", { class: "tick x", x: xt, y: height - bottom + 13 }, tick.label));
   }
-  svg.append(svgEl("rect", { class: "frame", x: left, y: top, width: width - left - right, height: height - top - bottom }));
+  const plotArea = { x: left, y: top, width: width - left - right, height: height - top - bottom };
+  svg.append(svgEl("rect", { class: "frame", ...plotArea }));
   const band = runs
     .map((r) => {
       const upper = r.map((i) => `${x(time[i])},${y(est[i] + sig[i])}`);
@@ -309,6 +323,7 @@ function renderCharts(histories) {
     .slice()
     .sort((a, b) => byName(a.sensor, b.sensor))
     .map((h) => {
+      const noHistory = h.error ? `no history: ${h.error}` : "no history yet";
       const charts = (h.states || []).map((s) => {
         const has = (s.time_s || []).some(isNum) && (s.estimate || []).some(isNum);
         return el(
@@ -322,7 +337,7 @@ function renderCharts(histories) {
         "figure",
         { "data-sensor": h.sensor },
         el("figcaption", {}, h.sensor),
-        ...(charts.length ? charts : [el("p", { class: "empty" }, "no history yet")]),
+        ...(charts.length ? charts : [el("p", { class: "empty" }, noHistory)]),
       );
     });
   document.getElementById("charts").replaceChildren(...figures);
