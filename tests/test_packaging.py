@@ -34,3 +34,21 @@ def test_the_mit_licence_is_there_and_goes_into_the_wheel():
     text = (REPO / "LICENSE").read_text()
     assert text.startswith("MIT License") and "Copyright (c) 2026 the sensor-registration authors" in text
     assert 'THE SOFTWARE IS PROVIDED "AS IS"' in text
+
+
+def test_the_live_page_goes_into_the_wheel():
+    """The page's three files are package data of registration.live, and every file in its folder is
+    one the service serves (a stray file would ship but never be reachable)."""
+    from registration.live.webassets import CONTENT_TYPES
+
+    cfg = tomllib.loads((REPO / "pyproject.toml").read_text())["tool"]["setuptools"]
+    assert "registration.live" in cfg["packages"]
+    globs = cfg["package-data"]["registration.live"]
+    web = REPO / "registration" / "live" / "web"
+    shipped = {p.relative_to(web.parent).as_posix() for g in globs for p in web.parent.glob(g) if p.is_file()}
+    assert shipped == {f"web/{name}" for name in CONTENT_TYPES}
+
+
+def test_playwright_is_in_the_test_extra():
+    extra = tomllib.loads((REPO / "pyproject.toml").read_text())["project"]["optional-dependencies"]["test"]
+    assert any(d.startswith("playwright") for d in extra)

@@ -23,7 +23,7 @@ from registration.fleet import (
 )
 from registration.fleet.batch.solver import NumericalError
 from registration.fleet.data.layout import state_scale
-from registration.fleet.online.filter import register_online
+from registration.fleet.online.register import register_online
 from registration.fleet.online.result import FINAL_RESIDUALS
 
 

@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 
 from registration.fleet import BatchOptions, build_problem, fleet_scenario, solve_batch
-from registration.fleet.online.filter import FleetFilter, OnlineOptions, register_online
+from registration.fleet.online.filter import FleetFilter, OnlineOptions
+from registration.fleet.online.register import register_online
 from registration.fleet.online.update import information_update
 from registration.online import RegistrationConfig, register
 from registration.online.scenario import ShipMotion, paper_scenario

@@ -29,7 +29,8 @@ from registration.fleet.batch.normal import evaluate, normal_equations
 from registration.fleet.batch.partitioned import solve_batch_partitioned
 from registration.fleet.batch.solver import BatchOptions
 from registration.fleet.data.known_targets import read_references
-from registration.fleet.online.filter import OnlineOptions, register_online
+from registration.fleet.online.filter import OnlineOptions
+from registration.fleet.online.register import register_online
 from registration.io.fleet.memory import TablesSource
 from registration.io.fleet.read import read_fleet_tables
 from registration.io.fleet.write import write_fleet_tables
