@@ -101,7 +101,7 @@ def _unframed(name: str, framed: Framed, path: str, rejections: RejectedLedger) 
         )
     out = Unwrapped(name, _segments(framed), "time_of_day" if framed.clock == "time_of_day" else "utc")
     out.notes += [f"{path}: {note}" for note in framed.notes]
-    out.counts["records"] = int(framed.start.size)
+    out.counts["framing_records"] = int(framed.start.size)
     finite = framed.time[np.isfinite(framed.time)]
     if framed.clock == "utc" and finite.size:
         out.counts["first_packet_time"] = float(finite.min())
