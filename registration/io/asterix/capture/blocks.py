@@ -1,6 +1,6 @@
-"""The data blocks of a file: in each segment (a raw recording whole, one UDP payload, or one record of a
-recorder framing) the data blocks end to end, each a category octet, a 16-bit length counting the 3-octet header, and
-records.
+"""The data blocks of a file: in each segment (a raw recording whole, one UDP payload, or one
+record of a recorder framing) the data blocks end to end, each a category octet, a 16-bit length
+counting the 3-octet header, and records.
 
 A header whose length is below 3 or runs past its segment is set aside (``bad_block_length``,
 ``truncated_block``). In a UDP datagram the rest of the datagram goes with it. In a raw recording
@@ -87,8 +87,7 @@ def _segment_blocks(
                 (
                     p,
                     "truncated_block",
-                    f"{e - p} bytes left at the end of the {where}, "
-                    "too few for a data block header",
+                    f"{e - p} bytes left at the end of the {where}, too few for a data block header",
                 )
             )
             return
@@ -102,8 +101,7 @@ def _segment_blocks(
         what = (
             f"data block of category {cat} with length {length} (below the 3-byte header)"
             if length < 3
-            else f"data block of category {cat} declares {length} bytes, {e - p} left in the "
-            f"{where}"
+            else f"data block of category {cat} declares {length} bytes, {e - p} left in the {where}"
         )
         q = _resync(buf, mv, p, e, seen or ASTERIX_CATEGORIES) if raw else None
         if q is None:

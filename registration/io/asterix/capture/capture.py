@@ -19,7 +19,6 @@ import numpy as np
 
 from registration.io.asterix.capture.model import ASTERIX_CATEGORIES, Capture
 from registration.io.asterix.capture.netstack import udp_segments
-from registration.io.asterix.capture.unwrap import unwrap
 from registration.io.asterix.capture.pcap import (
     PCAP_MAGICS,
     PCAPNG_MAGIC,
@@ -27,6 +26,7 @@ from registration.io.asterix.capture.pcap import (
     pcap_packets,
     pcapng_packets,
 )
+from registration.io.asterix.capture.unwrap import unwrap
 from registration.io.asterix.errors import AsterixImportError
 from registration.io.asterix.octets import PAD
 from registration.io.files.ledger import RejectedLedger
@@ -34,6 +34,7 @@ from registration.io.files.limits import DEFAULT_MAX_BYTES
 from registration.io.files.unreadable import read_error
 
 __all__ = ["Capture", "read_capture", "ASTERIX_CATEGORIES"]
+
 
 def _gunzip(raw: bytes, path: str, notes: list, max_bytes: int, over: list) -> bytes:
     """All members of a gzip stream decompressed, fed 1 MiB at a time so that a truncated or corrupt
@@ -146,6 +147,14 @@ def read_capture(
     notes += unwrapped.notes
     kind = "raw" if unwrapped.framing == "netto" else unwrapped.framing
     return Capture(
-        name, buf, buf.size - PAD, kind, zipped, unwrapped.segments, unwrapped.counts, notes,
-        unwrapped.framing, unwrapped.clock,
+        name,
+        buf,
+        buf.size - PAD,
+        kind,
+        zipped,
+        unwrapped.segments,
+        unwrapped.counts,
+        notes,
+        unwrapped.framing,
+        unwrapped.clock,
     )

@@ -36,7 +36,15 @@ from registration.io.asterix.decode.decode48 import decode048
 from registration.io.asterix.decode.uap import DEFAULT_EDITIONS, uap_for
 from registration.io.asterix.decode.walker import walk_records
 
-__all__ = ["FRAMINGS", "FRAMING_NAMES", "Verdict", "plausible", "framed_verdict", "chain_blocks", "SAMPLE_RECORDS"]
+__all__ = [
+    "FRAMINGS",
+    "FRAMING_NAMES",
+    "Verdict",
+    "plausible",
+    "framed_verdict",
+    "chain_blocks",
+    "SAMPLE_RECORDS",
+]
 
 #: Framing name -> reader, in the order detection tries them ('netto', raw ASTERIX, comes last).
 FRAMINGS: dict[str, Callable[..., Framed]] = {

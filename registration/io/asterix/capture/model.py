@@ -76,5 +76,3 @@ class Capture:
     notes: list = field(default_factory=list)
     framing: str = "netto"
     clock: str = "utc"
-
-
