@@ -243,3 +243,28 @@ def test_the_date_of_the_rff_header_forms(sites, tmp_path, recording):
     for text in ("2024-05-01 12:30:05", "01.05.2024 12:30:05", "2024/05/01T12:30:05.000\0"):
         assert parse_header_time(text) == pytest.approx(want)
     assert parse_header_time("recording of radar 3") is None
+
+
+def _pcap_of(recording, wrap) -> bytes:
+    """A pcap whose datagrams hold the recording's blocks, each wrapped by ``wrap``."""
+    from tests.io.asterix.containers import pcap_bytes, udp_frame
+
+    midnight = dt.datetime.combine(DATE, dt.time(), dt.timezone.utc).timestamp()
+    frames, times = [], []
+    for k, group in enumerate(recording.datagrams):
+        frames.append(udp_frame(b"".join(wrap(recording.blocks[i], i) for i in group), ident=k))
+        times.append(midnight + max(recording.times[i] for i in group) + 0.01)
+    return pcap_bytes(frames, times)
+
+
+@pytest.mark.parametrize("framing", ["auto", "oradis"])
+def test_oradis_records_inside_pcap_datagrams(recording, sites, tmp_path, framing):
+    """The asterix tool's -R: ORADIS records (length, 32-bit time, blocks) as UDP payloads."""
+    plain = _import(tmp_path, sites, _pcap_of(recording, lambda b, i: b), "plain.pcap")
+    wrapped = _pcap_of(recording, lambda b, i: struct.pack(">HI", 6 + len(b), i) + b)
+    result = _import(tmp_path, sites, wrapped, "oradis.pcap", framing=framing)
+    pd.testing.assert_frame_equal(result.plots, plain.plots)
+    file = result.summary["files"][0]
+    assert file["format"] == "pcap" and file["framing"] == "oradis"
+    assert plain.summary["files"][0]["framing"] == "pcap"
+    assert _lag(result) == pytest.approx(_lag(plain))

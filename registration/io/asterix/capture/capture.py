@@ -19,6 +19,7 @@ import numpy as np
 
 from registration.io.asterix.capture.model import ASTERIX_CATEGORIES, Capture
 from registration.io.asterix.capture.netstack import udp_segments
+from registration.io.asterix.capture.oradis import oradis_datagrams
 from registration.io.asterix.capture.pcap import (
     PCAP_MAGICS,
     PCAPNG_MAGIC,
@@ -141,7 +142,11 @@ def read_capture(
         segments, counts = udp_segments(buf, packets, ports)
         if packets.number.size and np.isfinite(packets.time).any():
             counts["first_packet_time"] = float(np.nanmin(packets.time))
-        return Capture(name, buf, len(data), kind, zipped, segments, counts, notes, kind)
+        split = oradis_datagrams(buf, segments, framing)
+        framed = kind if split is None else "oradis"
+        return Capture(
+            name, buf, len(data), kind, zipped, segments if split is None else split, counts, notes, framed
+        )
     del data
     unwrapped = unwrap(buf, buf.size - PAD, name, framing, rejections)
     notes += unwrapped.notes
