@@ -36,6 +36,8 @@ __all__ = ["HELP", "CAT021_EDITIONS", "LIMIT_OPTIONS", "add_arguments", "run"]
 CAT021_EDITIONS = ("0.23", "0.24", "0.25", "0.26", "2.1", "2.2", "2.3", "2.4", "2.5", "2.6", "2.7")
 #: The bounds of an ASTERIX import given as options (keyword arguments of ``import_asterix``).
 LIMIT_OPTIONS = ("max_bytes", "max_records", "max_rejected_rows")
+#: The framings ``--framing`` takes (registration.io.asterix.capture.detect.FRAMING_NAMES, and 'final').
+FRAMINGS = ("auto", "netto", "gps", "rff", "ioss", "final", "ioss_seq", "oradis", "hdlc")
 
 HELP = (
     "import a recording (ASTERIX, NMEA 0183 with AIS) as the fleet tables that "
@@ -142,6 +144,15 @@ def _asterix_options(ast: argparse.ArgumentParser) -> None:
         "feeds; default: the latest). A feed read in the wrong edition gives records that fail to walk "
         "or lack their address",
     )
+    ast.add_argument(
+        "--framing",
+        choices=FRAMINGS,
+        default="auto",
+        metavar="NAME",
+        help="how a file that is no pcap/pcapng capture wraps its data blocks: auto (default: told by "
+        "content), netto (raw data blocks end to end), gps (Croatia Control GPS recording), rff, ioss "
+        "(= final), ioss_seq, oradis, hdlc (docs/reference/asterix-framings.md)",
+    )
     _bounds(ast, ("bytes", "records", "rejected-rows"))
 
 
@@ -235,6 +246,7 @@ def _run_importer(args: argparse.Namespace) -> ImportResult:
             editions=None if args.cat021_edition is None else {21: args.cat021_edition},
             ports=args.ports,
             keep_duplicates=args.keep_duplicates,
+            framing=args.framing,
             **{k: getattr(args, k) for k in LIMIT_OPTIONS if getattr(args, k) is not None},
         )
     from registration.io.nmea import import_nmea, read_sensors

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Iterable, Mapping, Sequence
 import numpy as np
 
 from registration.core.progress import progress_bar
+from registration.io.asterix.capture.unwrap import check_framing
 from registration.io.asterix.decode.reader import decode_file
 from registration.io.asterix.decode.uap import check_editions
 from registration.io.asterix.errors import LEDGER_COLUMNS, REASONS
@@ -136,6 +137,7 @@ def import_asterix(
     max_records: int = DEFAULT_MAX_RECORDS,
     max_rejected_rows: int = DEFAULT_MAX_REJECTED_ROWS,
     keep_duplicates: bool = False,
+    framing: str = "auto",
 ) -> AsterixImport:
     """Import ASTERIX recordings (raw data blocks, pcap, pcapng; gzip or not; told apart by content).
 
@@ -155,7 +157,10 @@ def import_asterix(
     (:mod:`registration.io.files.limits`; defaults 8 GiB, 2*10^6 records, 10^5 rows).
     ``keep_duplicates``: keep records that repeat an earlier one (same category, octets and day);
     by default they are set aside as ``duplicate`` and counted
-    (:mod:`registration.io.asterix.tables.duplicates`).
+    (:mod:`registration.io.asterix.tables.duplicates`). ``framing``: how a file that is no capture
+    wraps its data blocks: 'auto' (default: told by content), 'netto' (raw data blocks end to end),
+    or a recorder framing, 'gps', 'rff', 'ioss' ('final'), 'ioss_seq', 'oradis', 'hdlc'
+    (docs/reference/asterix-framings.md).
 
     Raises :class:`~registration.io.asterix.errors.AsterixImportError` (a ValueError) naming the
     file for a file that is neither ASTERIX nor a capture, ValueError for bad arguments or SITES;
@@ -168,6 +173,7 @@ def import_asterix(
         raise ValueError(f"reference_targets: {reference_targets!r}; expected one of {REFERENCE_TARGETS}")
     sites = read_sites(sites) if isinstance(sites, (str, Path)) else check_sites(sites, "sites")
     editions = check_editions(editions)
+    framing = check_framing(framing)
     date = _as_date(date)
     limits = Limits(max_bytes, max_records, max_rejected_rows)
     rejections, bar = BoundedLedger(LEDGER_COLUMNS, max_rejected_rows), _Progress(paths, progress)
@@ -176,7 +182,9 @@ def import_asterix(
         for path in paths:
             bar.start(path)
             decoded.append(
-                decode_file(path, editions, rejections, ports, bar if bar.bar is not None else None, limits)
+                decode_file(
+                    path, editions, rejections, ports, bar if bar.bar is not None else None, limits, framing
+                )
             )
             decoded[-1].capture.buf = np.zeros(0, dtype=np.uint8)  # fields decoded: the file's bytes can go
             bar.finish_file()

@@ -1,6 +1,6 @@
-"""The data blocks of a file: in each segment (a raw recording whole, or one UDP payload) the data
-blocks end to end, each a category octet, a 16-bit length counting the 3-octet header, and
-records.
+"""The data blocks of a file: in each segment (a raw recording whole, one UDP payload, or one
+record of a recorder framing) the data blocks end to end, each a category octet, a 16-bit length
+counting the 3-octet header, and records.
 
 A header whose length is below 3 or runs past its segment is set aside (``bad_block_length``,
 ``truncated_block``). In a UDP datagram the rest of the datagram goes with it. In a raw recording
@@ -17,10 +17,10 @@ from typing import Collection
 
 import numpy as np
 
-from registration.io.asterix.capture.capture import ASTERIX_CATEGORIES, Capture
+from registration.io.asterix.capture.model import ASTERIX_CATEGORIES, Capture
 from registration.io.files.ledger import RejectedLedger
 
-__all__ = ["Blocks", "find_blocks"]
+__all__ = ["Blocks", "find_blocks", "walk_raw"]
 
 #: Octets searched at a time when resynchronising a raw recording.
 _WINDOW = 1 << 20
@@ -74,10 +74,12 @@ def _resync(buf: np.ndarray, mv: memoryview, p: int, n: int, cats: Collection[in
 
 
 def _segment_blocks(
-    mv: memoryview, buf: np.ndarray, s: int, e: int, raw: bool, seen: set, out: list, bad: list
+    mv: memoryview, buf: np.ndarray, s: int, e: int, where: str, seen: set, out: list, bad: list
 ) -> None:
     """Append (start, end, category) of the blocks in [s, e) to ``out``; problems to ``bad`` as
-    (offset, code, reason)."""
+    (offset, code, reason). ``where``: 'file' (a raw recording: resynchronise after a bad header),
+    'datagram' or 'record' (of a framing)."""
+    raw = where == "file"
     p = s
     while p < e:
         if p + 3 > e:
@@ -85,8 +87,7 @@ def _segment_blocks(
                 (
                     p,
                     "truncated_block",
-                    f"{e - p} bytes left at the end of the {'file' if raw else 'datagram'}, "
-                    "too few for a data block header",
+                    f"{e - p} bytes left at the end of the {where}, too few for a data block header",
                 )
             )
             return
@@ -100,8 +101,7 @@ def _segment_blocks(
         what = (
             f"data block of category {cat} with length {length} (below the 3-byte header)"
             if length < 3
-            else f"data block of category {cat} declares {length} bytes, {e - p} left in the "
-            f"{'file' if raw else 'datagram'}"
+            else f"data block of category {cat} declares {length} bytes, {e - p} left in the {where}"
         )
         q = _resync(buf, mv, p, e, seen or ASTERIX_CATEGORIES) if raw else None
         if q is None:
@@ -116,7 +116,7 @@ def find_blocks(cap: Capture, rejections: RejectedLedger) -> Blocks:
     counts the segments that are data blocks of known categories end to end, without a bad header."""
     mv = memoryview(cap.buf)  # type: ignore[arg-type]  # a uint8 array is a buffer
     seg = cap.segments
-    raw = cap.kind == "raw"
+    where = {"raw": "file", "pcap": "datagram", "pcapng": "datagram"}.get(cap.kind, "record")
     rows: list = []
     seg_of: list = []
     seen: set[int] = set()
@@ -124,7 +124,7 @@ def find_blocks(cap: Capture, rejections: RejectedLedger) -> Blocks:
     for k in range(seg.start.size):
         out: list = []
         bad: list = []
-        _segment_blocks(mv, cap.buf, int(seg.start[k]), int(seg.end[k]), raw, seen, out, bad)
+        _segment_blocks(mv, cap.buf, int(seg.start[k]), int(seg.end[k]), where, seen, out, bad)
         good += bool(out) and not bad and all(c in ASTERIX_CATEGORIES for _, _, c in out)
         rows += out
         seg_of += [k] * len(out)
@@ -132,3 +132,13 @@ def find_blocks(cap: Capture, rejections: RejectedLedger) -> Blocks:
             rejections.add(cap.path, code, reason, offset=offset, packet=int(seg.packet[k]), category=0)
     a = np.array(rows, dtype=np.int64).reshape(-1, 3)
     return Blocks(a[:, 0], a[:, 1], a[:, 2], np.array(seg_of, dtype=np.int64), good)
+
+
+def walk_raw(buf: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(start, end, category) of the data blocks of the first ``n`` octets of ``buf`` read as a raw
+    recording (resynchronising after a bad header, as :func:`find_blocks` does)."""
+    mv = memoryview(buf)  # type: ignore[arg-type]  # a uint8 array is a buffer
+    out: list = []
+    _segment_blocks(mv, buf, 0, n, "file", set(), out, [])
+    a = np.array(out, dtype=np.int64).reshape(-1, 3)
+    return a[:, 0], a[:, 1], a[:, 2]

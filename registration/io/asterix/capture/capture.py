@@ -2,22 +2,24 @@
 first, a truncated or corrupt stream keeping what came out), pcap, pcapng, or a raw ASTERIX
 recording (data blocks end to end: category, 16-bit length counting the 3-octet header, records).
 
-A file that is none of these raises :class:`~registration.io.asterix.errors.AsterixImportError`
-naming the file. A raw recording is recognised when its first data block is complete, of a known
-ASTERIX category, and the file is not text; a cut-off tail or corrupt stretches later in the file
-are set aside by :mod:`registration.io.asterix.capture.blocks`, not refused.
+A file that is no capture is unwrapped by :mod:`registration.io.asterix.capture.unwrap`: a
+recorder framing (GPS, IOSS/FINAL, RFF, ORADIS, HDLC) or raw ASTERIX, told by content. A file that
+is none of these raises :class:`~registration.io.asterix.errors.AsterixImportError` naming the
+file; a cut-off tail or corrupt stretches later in the file are set aside by
+:mod:`registration.io.asterix.capture.blocks`, not refused.
 """
 
 from __future__ import annotations
 
 import zlib
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Iterable, Sequence
 
 import numpy as np
 
+from registration.io.asterix.capture.model import ASTERIX_CATEGORIES, Capture
 from registration.io.asterix.capture.netstack import Segments, udp_segments
+from registration.io.asterix.capture.oradis import oradis_datagrams
 from registration.io.asterix.capture.pcap import (
     PCAP_MAGICS,
     PCAPNG_MAGIC,
@@ -25,6 +27,7 @@ from registration.io.asterix.capture.pcap import (
     pcap_packets,
     pcapng_packets,
 )
+from registration.io.asterix.capture.unwrap import unwrap
 from registration.io.asterix.errors import AsterixImportError
 from registration.io.asterix.octets import PAD
 from registration.io.files.ledger import RejectedLedger
@@ -32,65 +35,6 @@ from registration.io.files.limits import DEFAULT_MAX_BYTES
 from registration.io.files.unreadable import read_error
 
 __all__ = ["Capture", "capture_from_datagrams", "read_capture", "ASTERIX_CATEGORIES"]
-
-#: Categories assigned by EUROCONTROL (the ASTERIX category list), used to recognise a raw file.
-ASTERIX_CATEGORIES = frozenset(
-    (
-        1,
-        2,
-        3,
-        4,
-        7,
-        8,
-        9,
-        10,
-        11,
-        15,
-        16,
-        17,
-        18,
-        19,
-        20,
-        21,
-        22,
-        23,
-        24,
-        25,
-        30,
-        31,
-        32,
-        34,
-        48,
-        62,
-        63,
-        65,
-        150,
-        151,
-        152,
-        205,
-        238,
-        240,
-        247,
-        252,
-    )
-)
-
-
-@dataclass
-class Capture:
-    """A file read: ``buf`` its (decompressed) octets followed by zero padding, ``size`` the number of
-    octets without padding, ``kind`` 'raw', 'pcap' or 'pcapng', ``segments`` the stretches of
-    ``buf`` holding ASTERIX data blocks (the whole file, or each UDP payload), ``counts`` of packets
-    (captures) and ``notes`` about the file."""
-
-    path: str
-    buf: np.ndarray
-    size: int
-    kind: str
-    gzip: bool
-    segments: Segments
-    counts: dict = field(default_factory=dict)
-    notes: list = field(default_factory=list)
 
 
 def _gunzip(raw: bytes, path: str, notes: list, max_bytes: int, over: list) -> bytes:
@@ -130,29 +74,6 @@ def _gunzip(raw: bytes, path: str, notes: list, max_bytes: int, over: list) -> b
     return data
 
 
-def _looks_like_text(data: bytes) -> bool:
-    head = data[:512]
-    return all(32 <= c < 127 or c in (9, 10, 13) for c in head)
-
-
-def _raw_check(data: bytes, path: str) -> None:
-    """Raise unless ``data`` starts with a complete data block of a known category (and is not text)."""
-    n = len(data)
-    if n < 3:
-        raise AsterixImportError(f"{path}: {n} bytes, too short for an ASTERIX data block or a capture")
-    cat, length = data[0], int.from_bytes(data[1:3], "big")
-    what = "neither a pcap/pcapng capture nor an ASTERIX recording"
-    if _looks_like_text(data):
-        raise AsterixImportError(f"{path}: a text file, {what}")
-    if cat not in ASTERIX_CATEGORIES:
-        raise AsterixImportError(f"{path}: {what} (the first byte, {cat}, is no ASTERIX category)")
-    if length < 3 or length > n:
-        raise AsterixImportError(
-            f"{path}: {what} (the first data block, category {cat}, declares {length} bytes; "
-            f"the file has {n})"
-        )
-
-
 #: Packet times (UTC s since 1970) outside [0, this) are no dates (the year 10000 and later).
 _LAST_TIME_S = 253402300800.0
 
@@ -188,10 +109,13 @@ def read_capture(
     rejections: RejectedLedger,
     ports: Iterable[int] | None = None,
     max_bytes: int = DEFAULT_MAX_BYTES,
+    framing: str = "auto",
 ) -> Capture:
     """Read ``path`` (at most ``max_bytes`` octets, decompressed) and find its data blocks'
     segments; packets cut short are set aside in ``rejections``. ``ports``: UDP destination ports
-    to keep (None: all)."""
+    to keep (None: all). ``framing``: of a file that is no capture, 'auto' (told by content),
+    'netto' (raw data blocks) or a recorder framing
+    (:data:`~registration.io.asterix.capture.detect.FRAMING_NAMES`)."""
     name = str(path)
     notes: list = []
     over: list = []
@@ -218,11 +142,27 @@ def read_capture(
         segments, counts = udp_segments(buf, packets, ports)
         if packets.number.size and np.isfinite(packets.time).any():
             counts["first_packet_time"] = float(np.nanmin(packets.time))
-    else:
-        _raw_check(data, name)
-        kind = "raw"
-        segments = Segments(np.array([0]), np.array([len(data)]), np.array([0]), np.array([np.nan]))
-    return Capture(name, buf, len(data), kind, zipped, segments, counts, notes)
+        split = oradis_datagrams(buf, segments, framing)
+        framed = kind if split is None else "oradis"
+        return Capture(
+            name, buf, len(data), kind, zipped, segments if split is None else split, counts, notes, framed
+        )
+    del data
+    unwrapped = unwrap(buf, buf.size - PAD, name, framing, rejections)
+    notes += unwrapped.notes
+    kind = "raw" if unwrapped.framing == "netto" else unwrapped.framing
+    return Capture(
+        name,
+        buf,
+        buf.size - PAD,
+        kind,
+        zipped,
+        unwrapped.segments,
+        unwrapped.counts,
+        notes,
+        unwrapped.framing,
+        unwrapped.clock,
+    )
 
 
 def capture_from_datagrams(payloads: Sequence[bytes], ports: Sequence[int], name: str) -> Capture:
@@ -243,4 +183,4 @@ def capture_from_datagrams(payloads: Sequence[bytes], ports: Sequence[int], name
         np.full(sizes.size, np.nan),
         np.asarray(ports, dtype=np.int64),
     )
-    return Capture(name, buf, int(end[-1]) if sizes.size else 0, "udp", False, segments, {}, [])
+    return Capture(name, buf, int(end[-1]) if sizes.size else 0, "udp", False, segments, {}, [], "udp")

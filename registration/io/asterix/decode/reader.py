@@ -246,6 +246,7 @@ def decode_file(
     ports: Iterable[int] | None = None,
     progress: Any = None,
     limits: Limits | None = None,
+    framing: str = "auto",
 ) -> DecodedFile:
     """Decode the CAT048, CAT034 and CAT021 records of one file (raw, pcap or pcapng, gzip or not).
 
@@ -256,11 +257,12 @@ def decode_file(
     ``file_size(octets)`` with the file's (decompressed) size once read. Raises
     :class:`~registration.io.asterix.errors.AsterixImportError` for a file that is neither ASTERIX
     nor a capture; anything bad inside is set aside. ``limits``: the bounds on the decompressed
-    size and the records of the file (:class:`~registration.io.files.limits.Limits`).
+    size and the records of the file (:class:`~registration.io.files.limits.Limits`). ``framing``:
+    'auto' (told by content), 'netto' (raw data blocks) or a recorder framing (gps, ioss, ...).
     """
     limits = Limits() if limits is None else limits
     rejections = RejectedLedger(LEDGER_COLUMNS) if rejections is None else rejections
-    cap = read_capture(path, rejections, ports, limits.max_bytes)
+    cap = read_capture(path, rejections, ports, limits.max_bytes, framing)
     if progress is not None and hasattr(progress, "file_size"):
         progress.file_size(cap.size)
     return decode_capture(cap, editions, rejections, progress, limits)

@@ -14,7 +14,7 @@ from registration.io.asterix.decode.reader import DecodedFile
 from registration.io.asterix.tables.adsb21 import reference_columns, reference_verdicts
 from registration.io.asterix.tables.duplicates import StreamChecks
 from registration.io.asterix.tables.plots48 import plot_columns, plot_verdicts, unknown_source_texts
-from registration.io.asterix.tables.timeofday import Unwrapper, midnight_utc
+from registration.io.asterix.tables.timeofday import Unwrapper, midnight_utc, recorder_times
 from registration.io.asterix.tables.verdicts import Verdicts
 from registration.io.files.ledger import RejectedLedger
 
@@ -63,7 +63,8 @@ def _record_times(dec: DecodedFile, unwrapper: Unwrapper) -> dict:
         tod = np.where(given & (f["tod"] < 86400 * 128), f["tod"] / 128.0, np.nan)
         tods.append(tod)
         offsets.append(rec.offset)
-        captures.append(rec.capture_time)
+        recorder_tod = dec.capture.clock == "time_of_day"  # no date: not for placing the file's day
+        captures.append(np.full(rec.size, np.nan) if recorder_tod else rec.capture_time)
         cats.append(np.full(rec.size, cat))
     if not tods:
         return {cat: np.zeros(0) for cat in dec.records}
@@ -142,6 +143,11 @@ def assemble_file(
     records = dict(dec.records)
     for cat in records:
         _once(checks, path, cat, records, times, rejections)
+    recorded = {cat: rec.capture_time - midnight for cat, rec in records.items()}
+    if dec.capture.clock == "time_of_day":
+        recorded = {cat: recorder_times(rec.capture_time, times[cat]) for cat, rec in records.items()}
+        for cat, rec in records.items():
+            rec.capture_time = recorded[cat] + midnight
     rec = records[48]
     f, sensor = rec.fields, sites(rec.fields) if rec.size else np.zeros(0, dtype=np.int64)
     if rec.size:
@@ -149,7 +155,7 @@ def assemble_file(
         v.report(rejections, path, rec.offset, rec.packet, 48)
         keep = v.kept()
         cols = plot_columns(f, times[48], names[np.maximum(sensor, 0)])
-        cols["capture_lag_s"] = rec.capture_time - midnight - times[48]
+        cols["capture_lag_s"] = recorded[48] - times[48]
         rows.plots = {k: np.asarray(c)[keep] for k, c in cols.items()}
         rows.decoded[48] = np.bincount(sensor[sensor >= 0], minlength=names.size)
         _unknown(rows.unknown, 48, f, sensor)

@@ -27,11 +27,13 @@ def _median(values: np.ndarray) -> float | None:
 
 
 def file_summary(dec: DecodedFile, blocks_seen: dict) -> dict:
-    """One file: name, format, gzip, octets, packet counts (captures), data blocks per category."""
+    """One file: name, format, framing, gzip, octets, packet counts (captures) or records (recorder
+    framings), data blocks per category."""
     cap = dec.capture
     out = {
         "file": cap.path,
         "format": cap.kind,
+        "framing": cap.framing,
         "gzip": cap.gzip,
         "bytes": cap.size,
         "data_blocks": {f"{c:03d}": n for c, n in sorted(blocks_seen.items())},

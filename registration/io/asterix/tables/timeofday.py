@@ -17,7 +17,7 @@ import datetime as dt
 
 import numpy as np
 
-__all__ = ["DAY_S", "midnight_utc", "capture_day", "Unwrapper"]
+__all__ = ["DAY_S", "midnight_utc", "capture_day", "Unwrapper", "recorder_times"]
 
 DAY_S = 86400.0
 _HALF_DAY_S = DAY_S / 2
@@ -33,6 +33,13 @@ def midnight_utc(date: dt.date) -> float:
 def capture_day(capture_time: float) -> dt.date:
     """The UTC date of a capture time (s since 1970)."""
     return dt.datetime.fromtimestamp(capture_time, dt.timezone.utc).date()
+
+
+def recorder_times(recorder_tod_s: np.ndarray, times_s: np.ndarray) -> np.ndarray:
+    """A recorder's time stamps that are times of day (s since midnight UTC, no date: the GPS and
+    IOSS framings) placed on the time axis, each on the day that brings it nearest its record's
+    time ``times_s`` (s since midnight of the reference day); NaN where either is NaN."""
+    return recorder_tod_s + DAY_S * np.round((times_s - recorder_tod_s) / DAY_S)
 
 
 class Unwrapper:
