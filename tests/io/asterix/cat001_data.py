@@ -29,10 +29,12 @@ EMIT_DELAY_S = 0.4
 
 
 def sites() -> pd.DataFrame:
-    rows = [(n, s, i, 48.0 + k * 0.1, 11.0, 500.0, 30.0, 0.1) for k, (n, (s, i, _, _)) in enumerate(RADARS.items())]
-    return pd.DataFrame(
-        rows, columns=["sensor", "sac", "sic", "lat_deg", "lon_deg", "alt_m", "sigma_range_m", "sigma_bearing_deg"]
-    )
+    rows = [
+        (n, s, i, 48.0 + k * 0.1, 11.0, 500.0, 30.0, 0.1)
+        for k, (n, (s, i, _, _)) in enumerate(RADARS.items())
+    ]
+    columns = ["sensor", "sac", "sic", "lat_deg", "lon_deg", "alt_m", "sigma_range_m", "sigma_bearing_deg"]
+    return pd.DataFrame(rows, columns=columns)
 
 
 def cat001_plot(edition: str, sac: int, sic: int, t_s: float, rho_raw: int, theta_raw: int, **kw):
@@ -71,7 +73,8 @@ def cat001_track(edition: str, sac: int, sic: int, t_s: float, rho_raw: int, the
     return spec(1, edition).cv_uap.cv_uaps["track"].create(items)
 
 
-def cat002_record(edition: str, sac: int, sic: int, msg_type: int, t_s: float, sector: int | None, period=None):
+def cat002_record(edition: str, sac: int, sic: int, msg_type: int, t_s: float, sector=None, period=None):
+    """A CAT002 message (``msg_type`` 1 north marker, 2 sector crossing) at ``t_s``."""
     items = {"010": (("SAC", sac), ("SIC", sic)), "000": msg_type, "030": tod_raw(t_s)}
     if sector is not None:
         items["020"] = sector

@@ -6,7 +6,7 @@ once. Raw integers as transmitted, with their LSBs here; the plot rules are in
 | item | field | LSB |
 |---|---|---|
 | I001/010 | SAC, SIC | |
-| I001/020 | TYP (bit 8: 0 plot, 1 track), SIM (7), SSR/PSR (6-5), ANT (4), SPI (3), RAB (2); TST (8) of the extension | |
+| I001/020 | TYP (8: 0 plot, 1 track), SIM (7), SSR/PSR (6-5), SPI (3), RAB (2); extension: TST (8) | |
 | I001/040 | RHO, slant range, unsigned 16 bits | 1/128 NM |
 | I001/040 | THETA, azimuth from north, clockwise, unsigned 16 bits | 360/2^16 deg |
 | I001/070 | V (16, 1: not validated), G (15, garbled), L (14, smoothed), Mode 3/A (12 bits) | |

@@ -5,7 +5,7 @@ integers as transmitted, with their LSBs here, under the names of
 | item | field | LSB |
 |---|---|---|
 | I002/010 | SAC, SIC | |
-| I002/000 | message type: 1 north marker, 2 sector crossing, 3 south marker, 8 and 9 blind zone filtering on and off | |
+| I002/000 | message type: 1 north marker, 2 sector crossing, 3 south marker, 8/9 blind zone filter on/off | |
 | I002/020 | sector number: azimuth of the sector's start from north, clockwise | 360/2^8 deg |
 | I002/030 | time of day | 1/128 s |
 | I002/041 | antenna rotation period | 1/128 s |

@@ -1,7 +1,8 @@
-"""One file decoded: its data blocks found (:mod:`registration.io.asterix.capture.blocks`), the records of
-CAT048, CAT034, CAT021, CAT001 and CAT002 walked (:mod:`registration.io.asterix.decode.walker`) in the editions chosen
-and their fields read (``decode048``, ``decode034``, ``decode021``, ``decode001``, ``decode002``). Blocks of other categories
-and records that cannot be walked are set aside with their file offsets.
+"""One file decoded: its data blocks found (:mod:`registration.io.asterix.capture.blocks`), the records
+of CAT048, CAT034, CAT021, CAT001 and CAT002 walked (:mod:`registration.io.asterix.decode.walker`) in
+the editions chosen and their fields read (``decode048``, ``decode034``, ``decode021``,
+``decode001``, ``decode002``). Blocks of other categories and records that cannot be walked are set
+aside with their file offsets.
 """
 
 from __future__ import annotations
@@ -252,7 +253,8 @@ def decode_file(
     progress: Any = None,
     limits: Limits | None = None,
 ) -> DecodedFile:
-    """Decode the CAT048, CAT034, CAT021, CAT001 and CAT002 records of one file (raw, pcap or pcapng, gzip or not).
+    """Decode the CAT048, CAT034, CAT021, CAT001 and CAT002 records of one file (raw, pcap or
+    pcapng, gzip or not).
 
     ``editions``: category -> edition (default :data:`~registration.io.asterix.decode.uap.DEFAULT_EDITIONS`);
     ``rejections``: where what is set aside goes (a new one if None); ``ports``: UDP destination

@@ -104,7 +104,8 @@ def select_uap(data: Sequence[int], pos: int, end: int, uap: MultiUap) -> Uap:
     if frn not in present:
         raise RecordProblem(
             "missing_item",
-            f"no I{uap.category:03d}/{uap.selector}: the record's UAP ({' or '.join(uap.names)}) is not known",
+            f"no I{uap.category:03d}/{uap.selector}: the record's UAP "
+            f"({' or '.join(uap.names)}) is not known",
         )
     at = pos + size + sum(first.items[k - 1][1].octets for k in present if k < frn)
     return uap.variants[1 if at < end and data[at] & uap.selector_mask else 0]

@@ -35,11 +35,11 @@ MAX_REPETITIONS = 1 << 16
 @dataclass
 class Records:
     """The records found, in block order then record order, (R,) each: ``start`` (offset of the
-    FSPEC), ``end`` (one past the last octet), ``block`` (index into the blocks walked), and per
-    wanted item name its offset (-1: absent) in ``items``. ``bad_start``, ``bad_block``: the
-    records found bad (one at most per block; the rest of that block is not walked). ``variant``:
-per record the index of its UAP in a :class:`~registration.io.asterix.decode.uap.MultiUap` (CAT001:
-0 plot, 1 track), all 0 for a category of one UAP."""
+        FSPEC), ``end`` (one past the last octet), ``block`` (index into the blocks walked), and per
+        wanted item name its offset (-1: absent) in ``items``. ``bad_start``, ``bad_block``: the
+        records found bad (one at most per block; the rest of that block is not walked). ``variant``:
+    per record the index of its UAP in a :class:`~registration.io.asterix.decode.uap.MultiUap` (CAT001:
+    0 plot, 1 track), all 0 for a category of one UAP."""
 
     start: np.ndarray
     end: np.ndarray

@@ -41,9 +41,9 @@ class SiteLookup:
 class FileRows:
     """Rows of one file: ``plots`` and ``reference`` (file columns, kept rows; plots also ``kind``
     and ``capture_lag_s``), ``service`` (CAT034 and CAT002 of known radars: ``sensor`` index,
-    ``category``, ``msg_type``, ``time_s``, ``azimuth_deg`` (NaN: none), ``rotation_s`` (NaN: none)), ``decoded`` (category ->
-    records per SITES row), ``unknown`` (category, sac, sic) -> records, ``adsb_sources``
-    (sac, sic) -> reports kept, ``times`` all record times (s)."""
+    ``category``, ``msg_type``, ``time_s``, ``azimuth_deg`` (NaN: none), ``rotation_s`` (NaN:
+    none)), ``decoded`` (category -> records per SITES row), ``unknown`` (category, sac, sic) ->
+    records, ``adsb_sources`` (sac, sic) -> reports kept, ``times`` all record times (s)."""
 
     plots: dict
     reference: dict
@@ -100,7 +100,9 @@ def _service(f: dict, t: np.ndarray, sensor: np.ndarray, v: Verdicts, cat: int) 
 
 def _joined(rows: dict, more: dict) -> dict:
     """The columns of ``rows`` (empty: none yet) followed by those of ``more``."""
-    return {k: np.concatenate([np.asarray(rows[k]), np.asarray(c)]) for k, c in more.items()} if rows else more
+    if not rows:
+        return more
+    return {k: np.concatenate([np.asarray(rows[k]), np.asarray(c)]) for k, c in more.items()}
 
 
 def _unknown(counter: Counter, cat: int, f: dict, sensor: np.ndarray) -> None:

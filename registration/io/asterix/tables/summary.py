@@ -78,9 +78,9 @@ def _service_of(service: dict, k: int, plots_t: np.ndarray, plots_b: np.ndarray)
 
 def sensor_summary(sites: pd.DataFrame, plots: dict, service: dict, decoded: dict) -> dict:
     """Per SITES sensor: SAC/SIC, records decoded per category, plots kept by kind of id, CAT034
-    (and CAT002, when any) counts, scan period, antenna rotation period (I034/041), clock check, and the median of
-    capture time - plot time (captures with a known date; transport delay plus the radar's clock
-    offset)."""
+    (and CAT002, when any) counts, scan period, antenna rotation period (I034/041, I002/041),
+    clock check, and the median of capture time - plot time (captures with a known date;
+    transport delay plus the radar's clock offset)."""
     out = {}
     for k, row in enumerate(sites.itertuples(index=False)):
         mine = plots["sensor"] == row.sensor

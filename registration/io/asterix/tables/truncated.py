@@ -103,7 +103,8 @@ class TruncatedClock:
         src2, off2, tod2 = cat002
         carried = np.array(sorted(self.by_source), dtype=np.int64)
         keys = np.concatenate([carried * _SHIFT, src2 * _SHIFT + off2 + 1])
-        values = np.concatenate([np.array([self.by_source[s] for s in carried.tolist()], dtype=np.int64), tod2])
+        before = np.array([self.by_source[s] for s in carried.tolist()], dtype=np.int64)
+        values = np.concatenate([before, tod2])
         order = np.argsort(keys, kind="stable")
         keys, values = keys[order], values[order]
         src1 = f["sac"] * 256 + f["sic"]
