@@ -14,8 +14,9 @@ datagrams; ``blocks``: data blocks), ``decode`` (``layouts``: item and UAP layou
 of each edition; ``walker``: the vectorised record walk; ``scalar``: the one-record reference walk;
 the items per category in ``decode48``, ``decode34``, ``decode21``, ``decode001``, ``decode002``;
 ``reader``: one file decoded) and ``tables`` (``plots48``, ``plots01``, ``adsb21``, ``verdicts``,
-``timeofday``, ``truncated``, ``service``, ``assemble``, ``sites``, ``fleetfiles``, ``summary``); beside them ``octets`` (big-endian fields at many byte offsets, read
-by ``capture`` and ``decode``), ``importer`` (the import) and ``errors``.
+``timeofday``, ``truncated``, ``service``, ``assemble``, ``sites``, ``fleetfiles``, ``summary``);
+beside them ``octets`` (big-endian fields at many byte offsets, read by ``capture`` and ``decode``),
+``importer`` (the import) and ``errors``.
 """
 
 from registration.io.asterix.decode.reader import DecodedFile, decode_file
