@@ -340,6 +340,24 @@ def test_the_bases_carry_across_files(recorded, result, tmp_path):
     pd.testing.assert_frame_equal(both.plots, result.plots)
 
 
+def test_same_octets_512_s_apart_are_no_duplicates(tmp_path):
+    """A fixed clutter plot seen again 512 s later has the same octets (I001/141 wrapped): kept;
+    the same block recorded twice: a duplicate."""
+    plot = cat001_plot("1.4", 30, 1, 1000.0, 700, 900)
+    msgs = [
+        (999.0, 2, 30, 1, cat002_record("1.2", 30, 1, 1, 999.0)),
+        (1000.0, 1, 30, 1, plot),
+        (1511.0, 2, 30, 1, cat002_record("1.2", 30, 1, 1, 1511.0)),
+        (1512.0, 1, 30, 1, plot),
+    ]
+    blocks = encode_recording(msgs, DATE, editions=EDITIONS).blocks
+    path = tmp_path / "clutter.ast"
+    path.write_bytes(b"".join(blocks) + blocks[-1])
+    res = import_asterix(path, sites(), date=DATE)
+    assert res.plots["time_s"].tolist() == [1000.0, 1512.0]
+    assert res.summary["rejected"]["by_reason"] == {"duplicate": 1}
+
+
 @pytest.mark.parametrize("editions", [{1: "1.2", 2: "1.0"}, {1: "1.3", 2: "1.1"}])
 def test_older_editions(tmp_path, editions):
     msgs = [(1.0, 2, 30, 1, cat002_record(editions[2], 30, 1, 1, 1.0, None, 4.0))]
