@@ -58,11 +58,10 @@ def _full_times(records: dict) -> tuple[np.ndarray, np.ndarray]:
     return offset[order], tod[order].astype(np.int64)
 
 
-def _last_before(keys: np.ndarray, values: np.ndarray, query: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(value of the last key below each query, found) of ``keys`` sorted ascending."""
+def _last_before(keys: np.ndarray, query: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(index of the last key below each query, 0 where none; found) in ``keys`` sorted ascending."""
     idx = np.searchsorted(keys, query, side="left") - 1
-    found = idx >= 0
-    return np.where(found, values[np.maximum(idx, 0)] if values.size else 0, 0), found
+    return np.maximum(idx, 0), idx >= 0
 
 
 class TruncatedClock:
@@ -114,16 +113,16 @@ class TruncatedClock:
         keys, values = keys[order], values[order]
         src1 = f["sac"] * 256 + f["sic"]
         query = src1 * _SHIFT + offset + 1
-        base, found = _last_before(keys, values, query)
-        idx = np.maximum(np.searchsorted(keys, query, side="left") - 1, 0)
-        same = found & (keys[idx] // _SHIFT == src1) if keys.size else np.zeros(src1.size, dtype=bool)
-        same &= f["has_010"]
+        idx, found = _last_before(keys, query)
+        same = found & f["has_010"]
+        if keys.size:
+            same &= keys[idx] // _SHIFT == src1  # the last key below is of the plot's own radar
         a_off, a_tod = anything
         if self.last_any is not None:
             a_off = np.concatenate([[-1], a_off])
             a_tod = np.concatenate([[self.last_any], a_tod])
-        other, other_found = _last_before(a_off, a_tod, offset)
-        base = np.where(same, base, other)
+        other, other_found = _last_before(a_off, offset)
+        base = np.where(same, values[idx] if values.size else 0, a_tod[other] if a_tod.size else 0)
         kind = np.where(same, BASE_CAT002, np.where(other_found, BASE_OTHER, BASE_NONE))
         kind = np.where(f["has_141"], kind, BASE_NONE)
         half = TRUNCATED_TOD_WRAP // 2
