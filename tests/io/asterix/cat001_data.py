@@ -16,9 +16,25 @@ import datetime as dt
 import numpy as np
 import pandas as pd
 
+from registration.io.asterix.octets import PAD
 from tests.io.asterix.encode import encode_recording, service_messages, spec, tod_raw
+from tests.io.asterix.libasterix_help import random_items
 
-__all__ = ["DATE", "RADARS", "EDITIONS", "cat001_messages", "cat001_recording", "parse_cat001", "sites"]
+__all__ = [
+    "DATE",
+    "RADARS",
+    "EDITIONS",
+    "cat001_messages",
+    "cat001_recording",
+    "parse_cat001",
+    "sites",
+    "buffer_of",
+    "block_bounds",
+    "item_value",
+    "item_quantity",
+    "random_cat001",
+    "mutate",
+]
 
 DATE = dt.date(2024, 5, 1)
 #: name -> (sac, sic, sends CAT002, scan period s)
@@ -157,3 +173,74 @@ def parse_cat001(data: bytes, edition: str) -> list:
             pos += len(chosen[2].unparse()) // 8
         offset += size
     return out
+
+
+def buffer_of(data: bytes) -> np.ndarray:
+    """``data`` as the reader's padded uint8 buffer."""
+    buf = np.zeros(len(data) + PAD, dtype=np.uint8)
+    buf[: len(data)] = np.frombuffer(data, dtype=np.uint8)
+    return buf
+
+
+def block_bounds(data: bytes) -> tuple[np.ndarray, np.ndarray]:
+    """(starts, ends) of the data blocks of a raw recording."""
+    starts, p = [], 0
+    while p < len(data):
+        starts.append(p)
+        p += int.from_bytes(data[p + 1 : p + 3], "big")
+    s = np.array(starts, dtype=np.int64)
+    return s, np.append(s[1:], len(data))
+
+
+def item_value(rec, *path):
+    """The raw value of an item (or a subitem along ``path``) of a libasterix record, None if absent."""
+    item = rec.get_item(path[0])
+    if item is None:
+        return None
+    var = item.variation
+    for name in path[1:]:
+        var = var.get_item(name).variation
+    return var.unparse().to_uinteger()
+
+
+def item_quantity(rec, unit, *path):
+    """The value in ``unit`` of an item or subitem of a libasterix record (libasterix's scaling)."""
+    var = rec.get_item(path[0]).variation
+    for name in path[1:]:
+        var = var.get_item(name).variation
+    return var.content.as_quantity(unit)
+
+
+def random_cat001(edition: str, rng: np.random.Generator, blocks: int) -> bytes:
+    """Data blocks of random plots and tracks (random items and contents, TYP set to the UAP)."""
+    uap = spec(1, edition).cv_uap
+    out = []
+    for _ in range(blocks):
+        records = []
+        for _ in range(int(rng.integers(1, 9))):
+            typ = int(rng.integers(0, 2))
+            record = uap.cv_uaps[("plot", "track")[typ]]
+            items = random_items(record, rng)
+            first = items["020"][0] if "020" in items else int(rng.integers(0, 128))
+            items["020"] = ((first & 0x3F) | (typ << 6), *items.get("020", (0,))[1:])
+            records.append(record.create(items))
+        out.append(spec(1, edition).create(records).unparse().to_bytes())
+    return b"".join(out)
+
+
+def mutate(data: bytes, rng: np.random.Generator) -> bytes:
+    """One to three mutations: octets overwritten, a stretch cut or inserted, an FSPEC-like octet."""
+    out = bytearray(data)
+    for _ in range(int(rng.integers(1, 4))):
+        n, kind = len(out), int(rng.integers(0, 4))
+        at, span = int(rng.integers(0, n)), int(rng.integers(1, 32))
+        if kind == 0:
+            for k in rng.integers(0, n, size=int(rng.integers(1, 12))):
+                out[int(k)] = int(rng.integers(0, 256))
+        elif kind == 1:
+            del out[at : at + span]
+        elif kind == 2:
+            out[at:at] = rng.bytes(span)
+        else:
+            out[at : at + 1] = bytes([int(rng.choice([0x80, 0xC0, 0xFF, 0x01]))])
+    return bytes(out)

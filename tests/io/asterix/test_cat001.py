@@ -17,57 +17,30 @@ from registration.io.asterix import AsterixImportError, decode_file, import_aste
 from registration.io.asterix.decode.scalar import RecordProblem, walk_one
 from registration.io.asterix.decode.uap import SUPPORTED_EDITIONS, UAPS, check_editions, uap_for
 from registration.io.asterix.decode.walker import walk_records
-from registration.io.asterix.octets import PAD
 from registration.io.asterix.tables.plots48 import SHARED_MODE_A
 from tests.io.asterix.cat001_data import (
     DATE,
     EDITIONS,
     RADARS,
+    block_bounds,
+    buffer_of,
     cat001_plot,
     cat001_recording,
     cat002_record,
+    item_quantity,
+    item_value,
+    mutate,
     parse_cat001,
+    random_cat001,
     sites,
 )
 from tests.io.asterix.encode import encode_recording, spec
-from tests.io.asterix.libasterix_help import parse_blocks, random_items
+from tests.io.asterix.libasterix_help import parse_blocks
 from tests.io.asterix.test_uap import libasterix_layout
 
 LIBASTERIX_001 = ("1.2", "1.3", "1.4")
 FUZZ_N = int(os.environ.get("REGISTRATION_FUZZ_N", "300"))
 FUZZ_S = float(os.environ.get("REGISTRATION_FUZZ_S", "8"))
-
-
-def _buffer(data: bytes) -> np.ndarray:
-    buf = np.zeros(len(data) + PAD, dtype=np.uint8)
-    buf[: len(data)] = np.frombuffer(data, dtype=np.uint8)
-    return buf
-
-
-def _bounds(data: bytes) -> tuple[np.ndarray, np.ndarray]:
-    starts, p = [], 0
-    while p < len(data):
-        starts.append(p)
-        p += int.from_bytes(data[p + 1 : p + 3], "big")
-    s = np.array(starts, dtype=np.int64)
-    return s, np.append(s[1:], len(data))
-
-
-def _value(rec, *path):
-    item = rec.get_item(path[0])
-    if item is None:
-        return None
-    var = item.variation
-    for name in path[1:]:
-        var = var.get_item(name).variation
-    return var.unparse().to_uinteger()
-
-
-def _quantity(rec, unit, *path):
-    var = rec.get_item(path[0]).variation
-    for name in path[1:]:
-        var = var.get_item(name).variation
-    return var.content.as_quantity(unit)
 
 
 @pytest.fixture(scope="module")
@@ -120,33 +93,16 @@ def test_editions_of_cat001_and_cat002():
         check_editions({1: "1.5"})
 
 
-def _random_cat001(edition: str, rng: np.random.Generator, blocks: int) -> bytes:
-    """Data blocks of random plots and tracks (random items and contents, TYP set to the UAP)."""
-    uap = spec(1, edition).cv_uap
-    out = []
-    for _ in range(blocks):
-        records = []
-        for _ in range(int(rng.integers(1, 9))):
-            typ = int(rng.integers(0, 2))
-            record = uap.cv_uaps[("plot", "track")[typ]]
-            items = random_items(record, rng)
-            first = items["020"][0] if "020" in items else int(rng.integers(0, 128))
-            items["020"] = ((first & 0x3F) | (typ << 6), *items.get("020", (0,))[1:])
-            records.append(record.create(items))
-        out.append(spec(1, edition).create(records).unparse().to_bytes())
-    return b"".join(out)
-
-
 @pytest.mark.parametrize("edition", LIBASTERIX_001)
 def test_cat001_records_and_items_match_libasterix(edition):
     """Random plots and tracks: every record's bounds, its UAP and every item's bytes as libasterix
     (choosing the UAP by TYP) has them; the one-record walk agrees."""
     rng = np.random.default_rng(int(edition.replace(".", "")))
-    data = _random_cat001(edition, rng, 12)
+    data = random_cat001(edition, rng, 12)
     multi = uap_for(1, edition)
     names = tuple(sorted({i[0] for u in multi.variants for i in u.items if i is not None}))
-    starts, ends = _bounds(data)
-    rec = walk_records(_buffer(data), starts, ends, multi, names)
+    starts, ends = block_bounds(data)
+    rec = walk_records(buffer_of(data), starts, ends, multi, names)
     ref = parse_cat001(data, edition)
     assert rec.bad_start.size == 0 and len(ref) > 40
     assert rec.start.tolist() == [p for p, _, _ in ref]
@@ -175,8 +131,8 @@ def test_cat001_vector_and_scalar_walks_agree_on_random_bytes():
         body = rng.bytes(int(rng.integers(1, 40)))
         blocks.append(bytes([1]) + (len(body) + 3).to_bytes(2, "big") + body)
     data = b"".join(blocks)
-    buf = _buffer(data)
-    starts, ends = _bounds(data)
+    buf = buffer_of(data)
+    starts, ends = block_bounds(data)
     rec = walk_records(buf, starts, ends, multi)
     found, bad, mv = [], [], memoryview(buf)
     for s, e in zip(starts.tolist(), ends.tolist()):
@@ -216,34 +172,34 @@ def test_decoded_fields_match_libasterix(recorded):
     f, ref = dec.records[1].fields, parse_cat001(data, "1.4")
     assert dec.records[1].offset.tolist() == [p for p, _, _ in ref]
     for k, (_, name, r) in enumerate(ref):
-        assert f["typ"][k] == ("plot", "track").index(name) == _value(r, "020", "TYP")
-        assert (f["sac"][k], f["sic"][k]) == (_value(r, "010", "SAC"), _value(r, "010", "SIC"))
-        assert f["ttod"][k] == _value(r, "141")
-        assert f["ttod"][k] / 128 == _quantity(r, "s", "141")
-        assert f["rho"][k] / 128 == _quantity(r, "NM", "040", "RHO")
-        assert f["theta"][k] * 360 / 65536 == pytest.approx(_quantity(r, "°", "040", "THETA"), abs=1e-12)
+        assert f["typ"][k] == ("plot", "track").index(name) == item_value(r, "020", "TYP")
+        assert (f["sac"][k], f["sic"][k]) == (item_value(r, "010", "SAC"), item_value(r, "010", "SIC"))
+        assert f["ttod"][k] == item_value(r, "141")
+        assert f["ttod"][k] / 128 == item_quantity(r, "s", "141")
+        assert f["rho"][k] / 128 == item_quantity(r, "NM", "040", "RHO")
+        assert f["theta"][k] * 360 / 65536 == pytest.approx(item_quantity(r, "°", "040", "THETA"), abs=1e-12)
         assert [f[x][k] for x in ("sim", "ssrpsr", "rab")] == [
-            _value(r, "020", x) for x in ("SIM", "SSRPSR", "RAB")
+            item_value(r, "020", x) for x in ("SIM", "SSRPSR", "RAB")
         ]
         if f["has_070"][k]:
             assert [f[x][k] for x in ("m3a_v", "m3a_g", "m3a")] == [
-                _value(r, "070", x) for x in ("V", "G", "MODE3A")
+                item_value(r, "070", x) for x in ("V", "G", "MODE3A")
             ]
         assert f["has_090"][k] == (r.get_item("090") is not None)
         if f["has_090"][k]:
-            assert f["mode_c"][k] / 4 == _quantity(r, "FL", "090", "HGT")
+            assert f["mode_c"][k] / 4 == item_quantity(r, "FL", "090", "HGT")
     assert f["has_090"].sum() > 50 and (f["mode_c"] < 0).any()
     f2 = dec.records[2].fields
     ref2 = parse_blocks(2, "1.2", bytes(b for b in _only(data, 2)))
     assert len(ref2) == f2["tod"].size > 100
     for k, (_, _, _, r) in enumerate(ref2):
-        assert (f2["msg_type"][k], f2["tod"][k]) == (_value(r, "000"), _value(r, "030"))
-        assert f2["sector"][k] == (_value(r, "020") or 0) and f2["rotation"][k] == _value(r, "041")
+        assert (f2["msg_type"][k], f2["tod"][k]) == (item_value(r, "000"), item_value(r, "030"))
+        assert f2["sector"][k] == (item_value(r, "020") or 0) and f2["rotation"][k] == item_value(r, "041")
 
 
 def _only(data: bytes, cat: int) -> bytes:
     """The data blocks of category ``cat`` of a raw recording, end to end."""
-    starts, ends = _bounds(data)
+    starts, ends = block_bounds(data)
     return b"".join(data[s:e] for s, e in zip(starts.tolist(), ends.tolist()) if data[s] == cat)
 
 
@@ -257,11 +213,11 @@ def test_every_plot_equals_libasterix_decoding(recorded, result):
         [
             {
                 "sensor": {(s, i): n for n, (s, i, _, _) in RADARS.items()}[
-                    (_value(r, "010", "SAC"), _value(r, "010", "SIC"))
+                    (item_value(r, "010", "SAC"), item_value(r, "010", "SIC"))
                 ],
-                "ttod": _quantity(r, "s", "141"),
-                "range_m": _quantity(r, "NM", "040", "RHO") * 1852.0,
-                "bearing_deg": _quantity(r, "°", "040", "THETA"),
+                "ttod": item_quantity(r, "s", "141"),
+                "range_m": item_quantity(r, "NM", "040", "RHO") * 1852.0,
+                "bearing_deg": item_quantity(r, "°", "040", "THETA"),
                 **_ids(r),
             }
             for _, name, r in parse_cat001(data, "1.4")
@@ -296,8 +252,8 @@ def test_every_plot_equals_libasterix_decoding(recorded, result):
 def _ids(r) -> dict:
     if r.get_item("070") is None:
         return {"target_ref": "", "kind": "none"}
-    code = _value(r, "070", "MODE3A")
-    ok = _value(r, "070", "V") == 0 and _value(r, "070", "G") == 0 and code not in SHARED_MODE_A
+    code = item_value(r, "070", "MODE3A")
+    ok = item_value(r, "070", "V") == 0 and item_value(r, "070", "G") == 0 and code not in SHARED_MODE_A
     return {"target_ref": f"A{code:04o}" if ok else "", "kind": "mode_a" if ok else "none"}
 
 
@@ -401,23 +357,6 @@ def test_command_line_end_to_end(recorded, result, tmp_path, capsys):
     assert "invalid choice: '1.9'" in capsys.readouterr().err
 
 
-def _mutate(data: bytes, rng: np.random.Generator) -> bytes:
-    out = bytearray(data)
-    for _ in range(int(rng.integers(1, 4))):
-        n, kind = len(out), int(rng.integers(0, 4))
-        at, span = int(rng.integers(0, n)), int(rng.integers(1, 32))
-        if kind == 0:
-            for k in rng.integers(0, n, size=int(rng.integers(1, 12))):
-                out[int(k)] = int(rng.integers(0, 256))
-        elif kind == 1:
-            del out[at : at + span]
-        elif kind == 2:
-            out[at:at] = rng.bytes(span)
-        else:
-            out[at : at + 1] = bytes([int(rng.choice([0x80, 0xC0, 0xFF, 0x01]))])
-    return bytes(out)
-
-
 def test_fuzz_smoke_of_mutated_cat001_blocks(recorded, tmp_path):
     """A few hundred mutations of CAT001/CAT002 blocks: an import whose totals add up, or an
     AsterixImportError naming the file; never another exception."""
@@ -429,7 +368,7 @@ def test_fuzz_smoke_of_mutated_cat001_blocks(recorded, tmp_path):
         if time.perf_counter() - start > FUZZ_S:
             break
         target = tmp_path / f"m{k}.ast"
-        target.write_bytes(_mutate(seed, rng))
+        target.write_bytes(mutate(seed, rng))
         try:
             res = import_asterix(target, frame, date=DATE, max_rejected_rows=1000)
         except AsterixImportError as exc:
