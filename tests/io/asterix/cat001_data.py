@@ -6,7 +6,8 @@ The recording: radars A and B send CAT002 north markers and sector crossings and
 (and A tracks); radar C sends CAT001 plots only (its full time comes from the others' messages).
 It runs from 23:53:20 across the 512 s wrap of I001/141 at 86016 s and across midnight; plots
 are emitted 0.4 s after their time stamp, so a plot stamped just before north comes after the
-north marker in the stream.
+north marker in the stream. Beside it the helpers of ``test_cat001.py`` (buffers, block bounds,
+libasterix item values, random plots and tracks, mutations).
 """
 
 from __future__ import annotations
