@@ -30,10 +30,24 @@ from registration.cli.staging import staged_outputs
 if TYPE_CHECKING:  # imported when the command runs: `registration --help` loads no importer
     from registration.io.imports import ImportResult
 
-__all__ = ["HELP", "CAT021_EDITIONS", "LIMIT_OPTIONS", "add_arguments", "run"]
+__all__ = [
+    "HELP",
+    "CAT021_EDITIONS",
+    "CAT001_EDITIONS",
+    "CAT002_EDITIONS",
+    "EDITION_OPTIONS",
+    "LIMIT_OPTIONS",
+    "add_arguments",
+    "run",
+]
 
 #: The CAT021 editions ``--cat021-edition`` takes (registration.io.asterix.SUPPORTED_EDITIONS[21]).
 CAT021_EDITIONS = ("0.23", "0.24", "0.25", "0.26", "2.1", "2.2", "2.3", "2.4", "2.5", "2.6", "2.7")
+#: The CAT001 and CAT002 editions ``--cat001-edition``, ``--cat002-edition`` take (SUPPORTED_EDITIONS).
+CAT001_EDITIONS = ("1.1", "1.2", "1.3", "1.4")
+CAT002_EDITIONS = ("1.0", "1.1", "1.2")
+#: Category -> the ``--catNNN-edition`` option's attribute name.
+EDITION_OPTIONS = {21: "cat021_edition", 1: "cat001_edition", 2: "cat002_edition"}
 #: The bounds of an ASTERIX import given as options (keyword arguments of ``import_asterix``).
 LIMIT_OPTIONS = ("max_bytes", "max_records", "max_rejected_rows")
 #: The framings ``--framing`` takes (registration.io.asterix.capture.detect.FRAMING_NAMES, and 'final').
@@ -44,9 +58,9 @@ HELP = (
     "'fleet register --tables' reads"
 )
 ASTERIX_HELP = (
-    "ASTERIX radar plots (CAT048), service messages (CAT034) and ADS-B reports (CAT021) from raw "
-    "recordings or pcap/pcapng captures, gzip-compressed or not, into plots, navigation (one row per "
-    "site), sensors, platforms and reference tables"
+    "ASTERIX radar plots (CAT048, CAT001), service messages (CAT034, CAT002) and ADS-B reports "
+    "(CAT021) from raw recordings or pcap/pcapng captures, gzip-compressed or not, into plots, "
+    "navigation (one row per site), sensors, platforms and reference tables"
 )
 NMEA_HELP = (
     "an NMEA 0183 bridge log (GGA/RMC/GNS, ZDA, HDT/THS, $PASHR, TTM, !AIVDM) into the platform's "
@@ -153,6 +167,16 @@ def _asterix_options(ast: argparse.ArgumentParser) -> None:
         "content), netto (raw data blocks end to end), gps (Croatia Control GPS recording), rff, ioss "
         "(= final), ioss_seq, oradis, hdlc (docs/reference/asterix-framings.md)",
     )
+    legacy = ((1, CAT001_EDITIONS, "radar plots"), (2, CAT002_EDITIONS, "service messages"))
+    for cat, editions, what in legacy:
+        ast.add_argument(
+            f"--cat{cat:03d}-edition",
+            choices=editions,
+            default=None,
+            metavar="EDITION",
+            help=f"the CAT{cat:03d} ({what}) edition of the feed: {', '.join(editions)} (default: the "
+            "latest; the editions share their UAPs)",
+        )
     _bounds(ast, ("bytes", "records", "rejected-rows"))
 
 
@@ -243,7 +267,7 @@ def _run_importer(args: argparse.Namespace) -> ImportResult:
             sites,
             date=args.date,
             progress=True,
-            editions=None if args.cat021_edition is None else {21: args.cat021_edition},
+            editions={c: getattr(args, a) for c, a in EDITION_OPTIONS.items() if getattr(args, a)},
             ports=args.ports,
             keep_duplicates=args.keep_duplicates,
             framing=args.framing,

@@ -49,7 +49,7 @@ PIECE_BYTES = 4 << 20
 #: Octets of an NMEA log read at a time (its lines become Python strings: some 20 times this).
 NMEA_PIECE_BYTES = 1 << 20
 #: Octets read to recognise a file.
-HEAD_BYTES = 1 << 16
+HEAD_BYTES = 1 << 20
 #: The kinds of recording.
 KINDS = ("pcap", "pcapng", "raw", "nmea")
 #: The longest pcap packet record (octets): a longer captured length is a corrupt header.
@@ -103,6 +103,11 @@ def recognise(path: str | Path) -> Recording:
                 f"(only {100 * share:.0f} % of its first {cap.size} bytes walk as ASTERIX data blocks of "
                 "known categories)"
             )
+    if cap.kind not in KINDS:
+        raise ReplayError(
+            f"{name}: a recording in the {cap.kind} framing; replay sends pcap/pcapng captures, raw "
+            "ASTERIX and NMEA logs (import it with 'registration import asterix', which reads the framing)"
+        )
     return Recording(name, cap.kind)
 
 

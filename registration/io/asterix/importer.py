@@ -26,6 +26,7 @@ from registration.io.asterix.tables.summary import (
     time_summary,
 )
 from registration.io.asterix.tables.timeofday import Unwrapper, capture_day
+from registration.io.asterix.tables.truncated import TruncatedClock
 from registration.io.files.ledger import RejectedLedger
 from registration.io.files.limits import (
     DEFAULT_MAX_BYTES,
@@ -215,12 +216,13 @@ def _build(
     unwrapper = Unwrapper(reference_day)
     names = sites["sensor"].astype(str).to_numpy()
     lookup = SiteLookup(sites["sac"].to_numpy(), sites["sic"].to_numpy())
+    clock = TruncatedClock()
     rows: list[FileRows] = [
-        assemble_file(d, unwrapper, lookup, names, editions, rejections, checks) for d in decoded
+        assemble_file(d, unwrapper, lookup, names, editions, rejections, checks, clock) for d in decoded
     ]
     plots = _concat([r.plots for r in rows], (*PLOT_COLUMNS, "kind", "capture_lag_s"))
     service = _concat(
-        [r.service for r in rows], ("sensor", "msg_type", "time_s", "azimuth_deg", "rotation_s")
+        [r.service for r in rows], ("sensor", "category", "msg_type", "time_s", "azimuth_deg", "rotation_s")
     )
     reference, ref_info = _reference(
         rows, set(plots["target"].astype(str)) - {""} if plots["target"].size else set(), which
@@ -245,6 +247,7 @@ def _build(
             "without_id": int((plots["kind"] == "none").sum()),
         },
         "sensors": sensor_summary(sites, plots, service, decoded_counts),
+        **({"cat001_time": clock.summary()} if decoded_counts.get(1) is not None else {}),
         "sac_sic_not_in_sites": sources_not_in_sites(unknown),
         "reference": ref_info,
         **checks.summary(),

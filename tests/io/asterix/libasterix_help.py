@@ -8,7 +8,7 @@ import numpy as np
 
 from tests.io.asterix.encode import spec
 
-__all__ = ["random_record", "random_blocks", "parse_blocks"]
+__all__ = ["random_items", "random_record", "random_blocks", "parse_blocks"]
 
 
 def _random_value(var, rng: np.random.Generator, depth: int = 0):
@@ -45,14 +45,20 @@ def _variation(nsp):
     return rule.cv_variation if hasattr(rule, "cv_variation") else rule.cv_default_variation
 
 
-def random_record(cat: int, edition: str, rng: np.random.Generator, p_item: float = 0.4):
-    """A record of random items (each present with probability ``p_item``, at least one) and contents."""
+def random_items(record, rng: np.random.Generator, p_item: float = 0.4) -> dict:
+    """Random items of the libasterix record class ``record`` (each present with probability
+    ``p_item``, at least one) and contents: the argument of ``record.create``."""
     from asterix.base import UapItem
 
-    record = spec(cat, edition).cv_uap.cv_record
     names = [i.cv_non_spare for i in record.cv_items_list if issubclass(i, UapItem)]
     chosen = [n for n in names if rng.random() < p_item] or names[:1]
-    return record.create({n.cv_name: _random_value(_variation(n), rng) for n in chosen})
+    return {n.cv_name: _random_value(_variation(n), rng) for n in chosen}
+
+
+def random_record(cat: int, edition: str, rng: np.random.Generator, p_item: float = 0.4):
+    """A record of random items (each present with probability ``p_item``, at least one) and contents."""
+    record = spec(cat, edition).cv_uap.cv_record
+    return record.create(random_items(record, rng, p_item))
 
 
 def random_blocks(cat: int, edition: str, rng: np.random.Generator, blocks: int, per_block: int) -> bytes:

@@ -132,13 +132,13 @@ def test_spare_frn_and_unknown_categories(tmp_path, sites, blocks):
     good21 = encode_recording([(1000.0, 21, 1, 1, cat021)], DATE).blocks[0]
     spare = _with_record(good21, bytes([1, 1, 1, 1, 1, 1, 0x80]))
     cat062 = bytes([62, 0, 6, 0x80, 1, 2])
-    cat001 = bytes([1, 0, 5, 0x80, 9])
-    result = _run(tmp_path, sites, b"".join([blocks[0], spare, cat062, cat001, *blocks[1:]]))
+    cat010 = bytes([10, 0, 5, 0x80, 9])  # CAT010: not decoded
+    result = _run(tmp_path, sites, b"".join([blocks[0], spare, cat062, cat010, *blocks[1:]]))
     assert len(result.plots) == 15
     assert _reasons(result) == {"spare_frn": 1, "unknown_category": 2}
     rows = result.rejected.set_index("reason_code")
     assert "FRN 43, spare in CAT021 edition 2.7" in rows.loc["spare_frn", "reason"]
-    assert result.summary["files"][0]["data_blocks"] == {"001": 1, "021": 1, "048": 5, "062": 1}
+    assert result.summary["files"][0]["data_blocks"] == {"010": 1, "021": 1, "048": 5, "062": 1}
 
 
 def test_records_without_what_the_reader_needs(tmp_path, sites):

@@ -19,10 +19,12 @@ from registration.io.asterix.decode.uap import (
 )
 from tests.io.asterix.encode import spec
 
-EDITIONS = [(cat, e) for cat, editions in SUPPORTED_EDITIONS.items() for e in editions]
+#: The categories of one UAP (CAT001's two are checked in test_cat001.py).
+EDITIONS = [(cat, e) for cat, editions in SUPPORTED_EDITIONS.items() for e in editions if cat != 1]
 
 
-def _layout(var):
+def libasterix_layout(var):
+    """The reader's layout (registration.io.asterix.decode.layouts) of a libasterix variation."""
     from asterix.base import Compound as C
     from asterix.base import Element, Group
     from asterix.base import Explicit as E
@@ -41,12 +43,12 @@ def _layout(var):
     if issubclass(var, R):
         if var.cv_rep_bytes is None:
             return RepetitiveFx((var.cv_variation.cv_bit_size + 1) // 8)
-        return Repetitive(var.cv_rep_bytes, _layout(var.cv_variation).octets)
+        return Repetitive(var.cv_rep_bytes, libasterix_layout(var.cv_variation).octets)
     if issubclass(var, E):
         return Explicit()
     if issubclass(var, C):
         return Compound(
-            tuple(None if n is None else _layout(n.cv_rule.cv_variation) for n in var.cv_items_list)
+            tuple(None if n is None else libasterix_layout(n.cv_rule.cv_variation) for n in var.cv_items_list)
         )
     raise TypeError(var)
 
@@ -60,7 +62,7 @@ def test_uap_matches_libasterix(cat, edition):
     for item in record.cv_items_list:
         if issubclass(item, UapItem):
             nsp = item.cv_non_spare
-            theirs.append((nsp.cv_name, _layout(nsp.cv_rule.cv_variation)))
+            theirs.append((nsp.cv_name, libasterix_layout(nsp.cv_rule.cv_variation)))
         else:
             theirs.append(None)
     mine = uap_for(cat, edition)

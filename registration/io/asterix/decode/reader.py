@@ -1,7 +1,8 @@
-"""One file decoded: its data blocks found (:mod:`registration.io.asterix.capture.blocks`), the records of
-CAT048, CAT034 and CAT021 walked (:mod:`registration.io.asterix.decode.walker`) in the editions chosen
-and their fields read (``decode048``, ``decode034``, ``decode021``). Blocks of other categories
-and records that cannot be walked are set aside with their file offsets.
+"""One file decoded: its data blocks found (:mod:`registration.io.asterix.capture.blocks`), the records
+of CAT048, CAT034, CAT021, CAT001 and CAT002 walked (:mod:`registration.io.asterix.decode.walker`) in
+the editions chosen and their fields read (``decode048``, ``decode034``, ``decode021``,
+``decode001``, ``decode002``). Blocks of other categories and records that cannot be walked are set
+aside with their file offsets.
 """
 
 from __future__ import annotations
@@ -14,6 +15,10 @@ import numpy as np
 
 from registration.io.asterix.capture.blocks import Blocks, find_blocks
 from registration.io.asterix.capture.capture import Capture, read_capture
+from registration.io.asterix.decode.decode001 import WANTED as WANTED001
+from registration.io.asterix.decode.decode001 import decode001
+from registration.io.asterix.decode.decode002 import WANTED as WANTED002
+from registration.io.asterix.decode.decode002 import decode002
 from registration.io.asterix.decode.decode21 import decode021
 from registration.io.asterix.decode.decode21 import wanted as wanted021
 from registration.io.asterix.decode.decode34 import WANTED as WANTED034
@@ -32,9 +37,13 @@ __all__ = [
     "DecodedFile",
     "decode_capture",
     "decode_file",
+    "CATEGORIES",
     "CHUNK_BYTES",
     "MIN_KNOWN_SHARE",
 ]
+
+#: The categories decoded, in the order walked.
+CATEGORIES = (48, 34, 21, 1, 2)
 
 #: Data blocks are walked in chunks of about this many octets (progress and memory).
 CHUNK_BYTES = 8 << 20
@@ -73,7 +82,7 @@ class CategoryRecords:
 
 @dataclass
 class DecodedFile:
-    """A file decoded: the capture read (``capture``), per category (48, 34, 21) its records, the
+    """A file decoded: the capture read (``capture``), per category (:data:`CATEGORIES`) its records, the
     data blocks per category seen (all categories, decoded or not)."""
 
     capture: Capture
@@ -86,11 +95,15 @@ def _decode(cat: int, edition: str, buf: np.ndarray, rec: Records) -> dict:
         return decode048(buf, rec)
     if cat == 34:
         return decode034(buf, rec)
+    if cat == 1:
+        return decode001(buf, rec)
+    if cat == 2:
+        return decode002(buf, rec)
     return decode021(buf, rec, edition)
 
 
 def _wanted(cat: int, edition: str) -> tuple:
-    return {48: WANTED048, 34: WANTED034}.get(cat) or wanted021(edition)
+    return {48: WANTED048, 34: WANTED034, 1: WANTED001, 2: WANTED002}.get(cat) or wanted021(edition)
 
 
 def _chunks(sizes: np.ndarray) -> list[slice]:
@@ -111,6 +124,7 @@ def _cut(rec: Records, keep: int) -> Records:
         {k: v[:keep] for k, v in rec.items.items()},
         rec.bad_start[bad],
         rec.bad_block[bad],
+        rec.variant[:keep],
     )
 
 
@@ -248,7 +262,8 @@ def decode_file(
     limits: Limits | None = None,
     framing: str = "auto",
 ) -> DecodedFile:
-    """Decode the CAT048, CAT034 and CAT021 records of one file (raw, pcap or pcapng, gzip or not).
+    """Decode the CAT048, CAT034, CAT021, CAT001 and CAT002 records of one file (raw, pcap or
+    pcapng, gzip or not).
 
     ``editions``: category -> edition (default :data:`~registration.io.asterix.decode.uap.DEFAULT_EDITIONS`);
     ``rejections``: where what is set aside goes (a new one if None); ``ports``: UDP destination
@@ -289,13 +304,13 @@ def decode_capture(
     cats, counts = np.unique(blocks.category, return_counts=True)
     records = {}
     budget = [limits.max_records, limits.max_records]
-    for cat in (48, 34, 21):
+    for cat in CATEGORIES:
         sel = np.flatnonzero(blocks.category == cat)
         before = rejections.count()
         records[cat] = _walk_category(cap, blocks, sel, cat, editions[cat], rejections, progress, budget)
         if cat == 21 and rejections.count() > before:
             _edition_hint(cap, blocks, sel, editions[21], rejections.count() - before)
-    other = np.flatnonzero(~np.isin(blocks.category, (48, 34, 21)))
+    other = np.flatnonzero(~np.isin(blocks.category, CATEGORIES))
     if other.size:
         rejections.add(
             cap.path,

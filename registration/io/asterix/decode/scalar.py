@@ -12,12 +12,13 @@ from registration.io.asterix.decode.uap import (
     Explicit,
     Extended,
     Fixed,
+    MultiUap,
     Repetitive,
     RepetitiveFx,
     Uap,
 )
 
-__all__ = ["RecordProblem", "walk_one", "explain_record"]
+__all__ = ["RecordProblem", "select_uap", "walk_one", "explain_record"]
 
 
 class RecordProblem(Exception):
@@ -92,9 +93,36 @@ def _fspec_items(data: Sequence[int], at: int, n: int, what: str) -> tuple[list,
             )
 
 
-def walk_one(data: Sequence[int], pos: int, end: int, uap: Uap, wanted: tuple = ()) -> tuple[int, dict]:
+def select_uap(data: Sequence[int], pos: int, end: int, uap: MultiUap) -> Uap:
+    """The variant of ``uap`` the record at ``pos`` names by its selecting item (CAT001: I001/020
+    TYP, 0 plot, 1 track); RecordProblem without that item."""
+    first = uap.variants[0]
+    try:
+        present, size = _fspec_items(data, pos, max(len(u.items) for u in uap.variants), "record")
+    except IndexError:
+        present, size = None, 0
+    if present is None or pos + size > end:
+        raise RecordProblem(
+            "fspec_overrun", f"the FSPEC runs past the end of the data block ({end - pos} bytes left)"
+        )
+    frn = first.frn(uap.selector)
+    if frn not in present:
+        raise RecordProblem(
+            "missing_item",
+            f"no I{uap.category:03d}/{uap.selector}: the record's UAP "
+            f"({' or '.join(uap.names)}) is not known",
+        )
+    at = pos + size + sum(first.items[k - 1][1].octets for k in present if k < frn)
+    return uap.variants[1 if at < end and data[at] & uap.selector_mask else 0]
+
+
+def walk_one(
+    data: Sequence[int], pos: int, end: int, uap: Uap | MultiUap, wanted: tuple = ()
+) -> tuple[int, dict]:
     """The record of ``uap`` at ``pos`` in a data block ending at ``end``: (its end, the offsets of
     the wanted items present). RecordProblem when it cannot be walked."""
+    if isinstance(uap, MultiUap):
+        uap = select_uap(data, pos, end, uap)
     try:
         present, size = _fspec_items(data, pos, len(uap.items), "record")
     except IndexError:  # the FSPEC runs past the data
@@ -133,7 +161,7 @@ def walk_one(data: Sequence[int], pos: int, end: int, uap: Uap, wanted: tuple = 
     return cursor, offsets
 
 
-def explain_record(data: Sequence[int], pos: int, end: int, uap: Uap) -> tuple[str, str]:
+def explain_record(data: Sequence[int], pos: int, end: int, uap: Uap | MultiUap) -> tuple[str, str]:
     """(reason code, reason) of a record found bad; the reason names the first problem."""
     try:
         walk_one(data, pos, end, uap)

@@ -15,16 +15,30 @@ definitions):
 * ``Compound(subitems)``: its own FSPEC (FX chained, one bit per subitem, 7 per octet), then the
   subitems present, each Fixed, Extended or Repetitive; None for a spare subfield bit.
 
-A spare FRN of a UAP is None. The editions are those of the asterix-specs definitions that the
-libasterix package is generated from; ``tests/io/asterix/test_uap.py`` checks every table here
-against libasterix's. The data blocks carry no edition, so the caller chooses one per category
-(:data:`DEFAULT_EDITIONS`, the latest of each).
+A spare FRN of a UAP is None; so is the random field sequencing (RFS) FRN of CAT001 and CAT002:
+a record that uses it is set aside (``spare_frn``). CAT001 has two UAPs, plot and track, chosen
+per record by the TYP bit of I001/020 (:class:`MultiUap`). The editions are those of the
+asterix-specs definitions that the libasterix package is generated from;
+``tests/io/asterix/test_uap.py`` and ``test_cat001.py`` check every table here against
+libasterix's (CAT001 edition 1.1, which libasterix lacks, has the UAPs of 1.2). The data blocks
+carry no edition, so the caller chooses one per category (:data:`DEFAULT_EDITIONS`, the latest of
+each).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Mapping
+
+from registration.io.asterix.decode.layouts import (
+    Compound,
+    Explicit,
+    Extended,
+    Fixed,
+    MultiUap,
+    Repetitive,
+    RepetitiveFx,
+    Uap,
+)
 
 __all__ = [
     "Fixed",
@@ -34,74 +48,14 @@ __all__ = [
     "Explicit",
     "Compound",
     "Uap",
+    "MultiUap",
     "UAPS",
+    "MULTI_UAPS",
     "DEFAULT_EDITIONS",
     "SUPPORTED_EDITIONS",
     "uap_for",
     "check_editions",
 ]
-
-
-@dataclass(frozen=True)
-class Fixed:
-    """``octets`` octets."""
-
-    octets: int
-
-
-@dataclass(frozen=True)
-class Extended:
-    """Groups of (octets, has FX), read while the previous group's FX bit is set."""
-
-    groups: tuple
-
-
-@dataclass(frozen=True)
-class Repetitive:
-    """A count of ``rep`` octets, then count x ``octets``."""
-
-    rep: int
-    octets: int
-
-
-@dataclass(frozen=True)
-class RepetitiveFx:
-    """Elements of ``octets`` octets, each ending in an FX bit set when another follows."""
-
-    octets: int
-
-
-@dataclass(frozen=True)
-class Explicit:
-    """A length octet that counts itself, then the data."""
-
-
-@dataclass(frozen=True)
-class Compound:
-    """Its own FSPEC (one bit per subitem, FX chained), then the subitems present (None: spare bit)."""
-
-    subitems: tuple
-
-
-@dataclass(frozen=True)
-class Uap:
-    """One category and edition: ``items[frn - 1]`` = (item name, layout) or None for a spare FRN."""
-
-    category: int
-    edition: str
-    items: tuple
-
-    @property
-    def fspec_octets(self) -> int:
-        """The most FSPEC octets a record of this UAP can have (7 FRNs per octet)."""
-        return -(-len(self.items) // 7)
-
-    def frn(self, name: str) -> int:
-        """The FRN (from 1) of item ``name``."""
-        for k, item in enumerate(self.items, 1):
-            if item is not None and item[0] == name:
-                return k
-        raise KeyError(f"CAT{self.category:03d} edition {self.edition} has no item {name}")
 
 
 def _x(n: int, last_fx: bool = True) -> Extended:
@@ -252,6 +206,81 @@ def _cat021_v2(n040: int, n090: int, last271_fx: bool) -> tuple:
     )
 
 
+def _cat001_plot() -> tuple:
+    f, r = Fixed, RepetitiveFx(1)
+    return (
+        ("010", f(2)),
+        ("020", _x(2)),
+        ("040", f(4)),
+        ("070", f(2)),
+        ("090", f(2)),
+        ("130", r),
+        ("141", f(2)),
+        ("050", f(2)),
+        ("120", f(1)),
+        ("131", f(1)),
+        ("080", f(2)),
+        ("100", f(4)),
+        ("060", f(2)),
+        ("030", r),
+        ("150", f(1)),
+        None,
+        None,
+        None,
+        None,
+        ("SP", Explicit()),
+        None,  # random field sequencing: not decoded
+    )
+
+
+def _cat001_track() -> tuple:
+    f, r = Fixed, RepetitiveFx(1)
+    return (
+        ("010", f(2)),
+        ("020", _x(2)),
+        ("161", f(2)),
+        ("040", f(4)),
+        ("042", f(4)),
+        ("200", f(4)),
+        ("070", f(2)),
+        ("090", f(2)),
+        ("141", f(2)),
+        ("130", r),
+        ("131", f(1)),
+        ("120", f(1)),
+        ("170", _x(2)),
+        ("210", r),
+        ("050", f(2)),
+        ("080", f(2)),
+        ("100", f(4)),
+        ("060", f(2)),
+        ("030", r),
+        ("SP", Explicit()),
+        None,  # random field sequencing: not decoded
+        ("150", f(1)),
+    )
+
+
+def _cat002() -> tuple:
+    f, r = Fixed, RepetitiveFx(1)
+    return (
+        ("010", f(2)),
+        ("000", f(1)),
+        ("020", f(1)),
+        ("030", f(3)),
+        ("041", f(2)),
+        ("050", r),
+        ("060", r),
+        ("070", Repetitive(1, 2)),
+        ("100", f(8)),
+        ("090", f(2)),
+        ("080", r),
+        None,
+        ("SP", Explicit()),
+        None,  # random field sequencing: not decoded
+    )
+
+
 def _table() -> dict:
     out = {}
     for edition, n020 in (("1.27", 2), ("1.28", 2), ("1.29", 2), ("1.30", 2), ("1.31", 3), ("1.32", 6)):
@@ -269,22 +298,35 @@ def _table() -> dict:
         n040 = 5 if edition in ("2.6", "2.7") else 3
         n090 = 9 if edition == "2.7" else 4
         out[(21, edition)] = Uap(21, edition, _cat021_v2(n040, n090, edition != "2.1"))
+    for edition in ("1.1", "1.2", "1.3", "1.4"):  # the same UAPs in all four
+        out[(1, edition)] = Uap(1, edition, _cat001_plot())
+    for edition in ("1.0", "1.1", "1.2"):
+        out[(2, edition)] = Uap(2, edition, _cat002())
     return out
 
 
-#: (category, edition) -> :class:`Uap`.
+#: (category, edition) -> :class:`Uap`; for CAT001 the plot UAP (its FRNs 1 and 2, I001/010 and
+#: I001/020, are those of the track UAP too), the pair is in :data:`MULTI_UAPS`.
 UAPS = _table()
+#: (category, edition) -> :class:`MultiUap` of the categories with a UAP per record (CAT001).
+MULTI_UAPS = {
+    (1, e): MultiUap(1, e, (UAPS[(1, e)], Uap(1, e, _cat001_track())), ("plot", "track"), "020", 0x80)
+    for c, e in UAPS
+    if c == 1
+}
 #: Category -> the editions supported, oldest first.
-SUPPORTED_EDITIONS = {cat: tuple(e for c, e in UAPS if c == cat) for cat in (48, 34, 21)}
+SUPPORTED_EDITIONS = {cat: tuple(e for c, e in UAPS if c == cat) for cat in (48, 34, 21, 1, 2)}
 #: The edition used for each category unless the caller says otherwise: the latest. Each is a
 #: superset of the earlier ones of its family (more extension octets allowed), except that CAT021
-#: editions 0.2x and 2.x differ throughout: a 0.2x feed needs ``editions={21: "0.26"}``.
+#: editions 0.2x and 2.x differ throughout: a 0.2x feed needs ``editions={21: "0.26"}``. CAT001
+#: editions 1.1 to 1.4 share their UAPs, as do CAT002 editions 1.0 to 1.2.
 DEFAULT_EDITIONS = {cat: editions[-1] for cat, editions in SUPPORTED_EDITIONS.items()}
 
 
-def uap_for(category: int, edition: str) -> Uap:
-    """The :class:`Uap` of ``category`` (48, 34 or 21) and ``edition`` (e.g. "1.32")."""
-    return UAPS[(category, edition)]
+def uap_for(category: int, edition: str) -> Uap | MultiUap:
+    """The :class:`Uap` of ``category`` (48, 34, 21 or 2) and ``edition`` (e.g. "1.32"); the
+    :class:`MultiUap` of CAT001."""
+    return MULTI_UAPS.get((category, edition)) or UAPS[(category, edition)]
 
 
 def check_editions(editions: Mapping[int, str] | Mapping[int | str, str] | None) -> dict:

@@ -11,7 +11,7 @@ says why) ends the walk of its block: the records after it cannot be found.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -20,6 +20,7 @@ from registration.io.asterix.decode.uap import (
     Explicit,
     Extended,
     Fixed,
+    MultiUap,
     Repetitive,
     RepetitiveFx,
     Uap,
@@ -34,9 +35,11 @@ MAX_REPETITIONS = 1 << 16
 @dataclass
 class Records:
     """The records found, in block order then record order, (R,) each: ``start`` (offset of the
-    FSPEC), ``end`` (one past the last octet), ``block`` (index into the blocks walked), and per
-    wanted item name its offset (-1: absent) in ``items``. ``bad_start``, ``bad_block``: the
-    records found bad (one at most per block; the rest of that block is not walked)."""
+        FSPEC), ``end`` (one past the last octet), ``block`` (index into the blocks walked), and per
+        wanted item name its offset (-1: absent) in ``items``. ``bad_start``, ``bad_block``: the
+        records found bad (one at most per block; the rest of that block is not walked). ``variant``:
+    per record the index of its UAP in a :class:`~registration.io.asterix.decode.uap.MultiUap` (CAT001:
+    0 plot, 1 track), all 0 for a category of one UAP."""
 
     start: np.ndarray
     end: np.ndarray
@@ -44,6 +47,7 @@ class Records:
     items: dict
     bad_start: np.ndarray
     bad_block: np.ndarray
+    variant: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
 
 
 def _fspec(buf: np.ndarray, at: np.ndarray, octets: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -170,22 +174,59 @@ def _step(buf: np.ndarray, pos: np.ndarray, end: np.ndarray, uap: Uap, wanted: t
     return cursor, bad, offsets
 
 
+def _selected(buf: np.ndarray, pos: np.ndarray, uap: MultiUap) -> tuple[np.ndarray, np.ndarray]:
+    """(variant index, no selecting item) per record at ``pos``: the selecting item's offset from
+    the FSPEC and the FRNs before it, which are Fixed and the same in every variant."""
+    octets = uap.fspec_octets
+    first = uap.variants[0]
+    frn = first.frn(uap.selector)
+    bits, length, _ = _fspec(buf, pos, octets)
+    cursor = pos + length
+    for k in range(1, frn):
+        present = ((bits >> np.uint64(_bit(k, octets))) & np.uint64(1)).astype(np.int64)
+        cursor += first.items[k - 1][1].octets * present
+    has = ((bits >> np.uint64(_bit(frn, octets))) & np.uint64(1)).astype(bool)
+    return np.where(has & (buf[cursor] & uap.selector_mask).astype(bool), 1, 0), ~has
+
+
+def _step_any(buf: np.ndarray, pos: np.ndarray, end: np.ndarray, uap: Uap | MultiUap, wanted: tuple) -> tuple:
+    """:func:`_step` with each record's UAP: (its end, bad, offsets, variant index)."""
+    if isinstance(uap, Uap):
+        return (*_step(buf, pos, end, uap, wanted), np.zeros(pos.size, dtype=np.int64))
+    variant, unknown = _selected(buf, pos, uap)
+    cursor, bad = np.zeros(pos.size, dtype=np.int64), unknown.copy()
+    offsets = {name: np.full(pos.size, -1, dtype=np.int64) for name in wanted}
+    for k, one in enumerate(uap.variants):
+        idx = np.flatnonzero((variant == k) & ~unknown)
+        if idx.size == 0:
+            continue
+        names = tuple(n for n in wanted if any(i is not None and i[0] == n for i in one.items))
+        c, b, o = _step(buf, pos[idx], end[idx], one, names)
+        cursor[idx], bad[idx] = c, b
+        for name in names:
+            offsets[name][idx] = o[name]
+    return cursor, bad, offsets, variant
+
+
 def walk_records(
-    buf: np.ndarray, start: np.ndarray, end: np.ndarray, uap: Uap, wanted: tuple = ()
+    buf: np.ndarray, start: np.ndarray, end: np.ndarray, uap: Uap | MultiUap, wanted: tuple = ()
 ) -> Records:
     """The records of the data blocks [start, end) (offsets of their headers and ends in ``buf``),
-    all of ``uap``'s category, and the offsets of the ``wanted`` items (names such as "040")."""
+    all of ``uap``'s category, and the offsets of the ``wanted`` items (names such as "040"). A
+    :class:`~registration.io.asterix.decode.uap.MultiUap` walks each record with the UAP its
+    selecting item names; a record without that item is bad."""
     lanes = np.flatnonzero(start + 3 < end)
     pos, stop = start[lanes] + 3, end[lanes]
-    found: dict[str, list[np.ndarray]] = {k: [] for k in ("start", "end", "block", *wanted)}
+    found: dict[str, list[np.ndarray]] = {k: [] for k in ("start", "end", "block", "variant", *wanted)}
     bad_start: list[np.ndarray] = []
     bad_block: list[np.ndarray] = []
     while lanes.size:
-        cursor, bad, offsets = _step(buf, pos, stop, uap, wanted)
+        cursor, bad, offsets, variant = _step_any(buf, pos, stop, uap, wanted)
         ok = ~bad
         found["start"].append(pos[ok])
         found["end"].append(cursor[ok])
         found["block"].append(lanes[ok])
+        found["variant"].append(variant[ok])
         for name in wanted:
             found[name].append(offsets[name][ok])
         bad_start.append(pos[bad])
@@ -201,4 +242,5 @@ def walk_records(
         {name: cat[name][order] for name in wanted},
         np.concatenate(bad_start) if bad_start else np.zeros(0, dtype=np.int64),
         np.concatenate(bad_block) if bad_block else np.zeros(0, dtype=np.int64),
+        cat["variant"][order].astype(np.int64),
     )

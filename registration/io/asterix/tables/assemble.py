@@ -1,6 +1,7 @@
-"""One decoded file turned into rows: its records placed on the time axis, CAT048 plots and
-CAT021 reference positions kept or set aside, CAT034 service messages of the known radars kept
-for the scan periods and the clock check, and the sources seen."""
+"""One decoded file turned into rows: its records placed on the time axis, CAT048 and CAT001 plots and
+CAT021 reference positions kept or set aside, CAT034 and CAT002 service messages of the known radars
+kept for the scan periods and the clock check, and the sources seen. CAT001's truncated times are
+made whole first (:mod:`registration.io.asterix.tables.truncated`)."""
 
 from __future__ import annotations
 
@@ -13,8 +14,10 @@ from registration.io.asterix.decode.decode34 import NORTH_MARKER, SECTOR_LSB_DEG
 from registration.io.asterix.decode.reader import DecodedFile
 from registration.io.asterix.tables.adsb21 import reference_columns, reference_verdicts
 from registration.io.asterix.tables.duplicates import StreamChecks
+from registration.io.asterix.tables.plots01 import plot_columns01, plot_verdicts01
 from registration.io.asterix.tables.plots48 import plot_columns, plot_verdicts, unknown_source_texts
 from registration.io.asterix.tables.timeofday import Unwrapper, midnight_utc, recorder_times
+from registration.io.asterix.tables.truncated import TruncatedClock
 from registration.io.asterix.tables.verdicts import Verdicts
 from registration.io.files.ledger import RejectedLedger
 
@@ -37,10 +40,10 @@ class SiteLookup:
 @dataclass
 class FileRows:
     """Rows of one file: ``plots`` and ``reference`` (file columns, kept rows; plots also ``kind``
-    and ``capture_lag_s``), ``service`` (CAT034 of known radars: ``sensor`` index, ``msg_type``,
-    ``time_s``, ``azimuth_deg`` (NaN: none), ``rotation_s`` (NaN: none)), ``decoded`` (category ->
-    records per SITES row), ``unknown`` (category, sac, sic) -> records, ``adsb_sources``
-    (sac, sic) -> reports kept, ``times`` all record times (s)."""
+    and ``capture_lag_s``), ``service`` (CAT034 and CAT002 of known radars: ``sensor`` index,
+    ``category``, ``msg_type``, ``time_s``, ``azimuth_deg`` (NaN: none), ``rotation_s`` (NaN:
+    none)), ``decoded`` (category -> records per SITES row), ``unknown`` (category, sac, sic) ->
+    records, ``adsb_sources`` (sac, sic) -> reports kept, ``times`` all record times (s)."""
 
     plots: dict
     reference: dict
@@ -58,8 +61,10 @@ def _record_times(dec: DecodedFile, unwrapper: Unwrapper) -> dict:
         f = rec.fields
         if rec.size == 0:
             continue
-        given = {48: f.get("has_140"), 34: f.get("has_030"), 21: None}[cat]
-        given = (f["time_item"] != "") if cat == 21 else given
+        if cat == 21:
+            given = f["time_item"] != ""
+        else:
+            given = f["time_base"] > 0 if cat == 1 else f["has_140" if cat == 48 else "has_030"]
         tod = np.where(given & (f["tod"] < 86400 * 128), f["tod"] / 128.0, np.nan)
         tods.append(tod)
         offsets.append(rec.offset)
@@ -75,10 +80,10 @@ def _record_times(dec: DecodedFile, unwrapper: Unwrapper) -> dict:
     return {c: times[cat == c] if (cat == c).any() else np.zeros(0) for c in dec.records}
 
 
-def _service(f: dict, t: np.ndarray, sensor: np.ndarray, v: Verdicts) -> dict:
+def _service(f: dict, t: np.ndarray, sensor: np.ndarray, v: Verdicts, cat: int) -> dict:
     for item, what in (("010", "data source identifier"), ("000", "message type"), ("030", "time of day")):
-        v.rule(~f[f"has_{item}"], "missing_item", f"no I034/{item} ({what})")
-    v.rule(f["tod"] >= 86400 * 128, "bad_time", "I034/030 time of day is 24 h or more")
+        v.rule(~f[f"has_{item}"], "missing_item", f"no I{cat:03d}/{item} ({what})")
+    v.rule(f["tod"] >= 86400 * 128, "bad_time", f"I{cat:03d}/030 time of day is 24 h or more")
     v.rule(sensor < 0, "unknown_sac_sic", unknown_source_texts(f["sac"], f["sic"], sensor < 0))
     keep = v.kept()
     azimuth = np.where(
@@ -86,11 +91,19 @@ def _service(f: dict, t: np.ndarray, sensor: np.ndarray, v: Verdicts) -> dict:
     )
     return {
         "sensor": sensor[keep],
+        "category": np.full(int(keep.sum()), cat, dtype=np.int64),
         "msg_type": f["msg_type"][keep],
         "time_s": t[keep],
         "azimuth_deg": azimuth[keep],
         "rotation_s": np.where(f["has_041"], f["rotation"] / 128.0, np.nan)[keep],
     }
+
+
+def _joined(rows: dict, more: dict) -> dict:
+    """The columns of ``rows`` (empty: none yet) followed by those of ``more``."""
+    if not rows:
+        return more
+    return {k: np.concatenate([np.asarray(rows[k]), np.asarray(c)]) for k, c in more.items()}
 
 
 def _unknown(counter: Counter, cat: int, f: dict, sensor: np.ndarray) -> None:
@@ -131,11 +144,14 @@ def assemble_file(
     editions: dict,
     rejections: RejectedLedger,
     checks: StreamChecks | None = None,
+    clock: TruncatedClock | None = None,
 ) -> FileRows:
     """The rows of one decoded file; records set aside go to ``rejections``. ``names``: the SITES
     sensor names; ``editions``: category -> edition used; ``checks``: the duplicates and backward
-    time steps of the import (None: a new one)."""
+    time steps of the import (None: a new one); ``clock``: the bases of the CAT001 times of the
+    import (None: a new one)."""
     path = dec.capture.path
+    (TruncatedClock() if clock is None else clock).place(dec.records)
     times = _record_times(dec, unwrapper)
     midnight = midnight_utc(unwrapper.reference) if unwrapper.reference is not None else np.nan
     rows = FileRows({}, {}, {}, times=np.concatenate([t for t in times.values()]) if times else np.zeros(0))
@@ -159,14 +175,27 @@ def assemble_file(
         rows.plots = {k: np.asarray(c)[keep] for k, c in cols.items()}
         rows.decoded[48] = np.bincount(sensor[sensor >= 0], minlength=names.size)
         _unknown(rows.unknown, 48, f, sensor)
-    rec = records[34]
-    if rec.size:
+    rec = records.get(1)
+    if rec is not None and rec.size:
+        f, sensor = rec.fields, sites(rec.fields)
+        v = plot_verdicts01(f, sensor)
+        v.report(rejections, path, rec.offset, rec.packet, 1)
+        keep = v.kept()
+        cols = plot_columns01(f, times[1], names[np.maximum(sensor, 0)])
+        cols["capture_lag_s"] = rec.capture_time - midnight - times[1]
+        rows.plots = _joined(rows.plots, {k: np.asarray(c)[keep] for k, c in cols.items()})
+        rows.decoded[1] = np.bincount(sensor[sensor >= 0], minlength=names.size)
+        _unknown(rows.unknown, 1, f, sensor)
+    for cat in (34, 2):
+        rec = records.get(cat)
+        if rec is None or not rec.size:
+            continue
         sensor = sites(rec.fields)
         v = Verdicts(rec.size)
-        rows.service = _service(rec.fields, times[34], sensor, v)
-        v.report(rejections, path, rec.offset, rec.packet, 34)
-        rows.decoded[34] = np.bincount(sensor[sensor >= 0], minlength=names.size)
-        _unknown(rows.unknown, 34, rec.fields, sensor)
+        rows.service = _joined(rows.service, _service(rec.fields, times[cat], sensor, v, cat))
+        v.report(rejections, path, rec.offset, rec.packet, cat)
+        rows.decoded[cat] = np.bincount(sensor[sensor >= 0], minlength=names.size)
+        _unknown(rows.unknown, cat, rec.fields, sensor)
     rec = records[21]
     if rec.size:
         v, epu = reference_verdicts(rec.fields, editions[21].startswith("0."))

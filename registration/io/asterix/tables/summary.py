@@ -65,7 +65,10 @@ def _service_of(service: dict, k: int, plots_t: np.ndarray, plots_b: np.ndarray)
     mine = service["sensor"] == k if service else np.zeros(0, dtype=bool)
     t, kind = service["time_s"][mine], service["msg_type"][mine]
     out = scan_period(t[kind == NORTH_MARKER])
-    out["cat034_messages"] = int(mine.sum())
+    category = service["category"][mine] if service else np.zeros(0, dtype=np.int64)
+    out["cat034_messages"] = int((category == 34).sum())
+    if (category == 2).any():
+        out["cat002_messages"] = int((category == 2).sum())
     out["sector_messages"] = int((kind == 2).sum())
     out["antenna_rotation_period_s"] = _median(service["rotation_s"][mine]) if mine.any() else None
     az = service["azimuth_deg"][mine]
@@ -77,9 +80,9 @@ def _service_of(service: dict, k: int, plots_t: np.ndarray, plots_b: np.ndarray)
 
 def sensor_summary(sites: pd.DataFrame, plots: dict, service: dict, decoded: dict) -> dict:
     """Per SITES sensor: SAC/SIC, records decoded per category, plots kept by kind of id, CAT034
-    counts, scan period, antenna rotation period (I034/041), clock check, and the median of
-    capture time - plot time (captures with a known date; transport delay plus the radar's clock
-    offset)."""
+    (and CAT002, when any) counts, scan period, antenna rotation period (I034/041, I002/041),
+    clock check, and the median of capture time - plot time (captures with a known date;
+    transport delay plus the radar's clock offset)."""
     out = {}
     for k, row in enumerate(sites.itertuples(index=False)):
         mine = plots["sensor"] == row.sensor
