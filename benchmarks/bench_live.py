@@ -1,0 +1,217 @@
+#!/usr/bin/env python3
+"""The live service (``registration serve``) under load: ingest rate, how far its estimates lag
+the data at 20 times real time, memory over a day of data, and its estimates against the batch
+run's on the same recordings.
+
+Run from a checkout::
+
+    python3 benchmarks/bench_live.py           # a day of data; the live-against-batch comparison
+    python3 benchmarks/bench_live.py --tiny    # seconds: checks the script runs
+
+The recordings are the sample's (``examples/recordings/atc.pcap.gz``, written by libasterix: 300 s
+of three radars and ADS-B), and held-out ATC simulations written by libasterix
+(``tests/io/asterix/atc.py``) for the comparison with ``fleet register``. A day of data is the
+sample repeated, each repetition's CAT048 time of day moved on by the sample's length with
+``correct_cat048`` (a time correction; nothing else changes; the CAT021 and CAT034 copies are
+duplicates, counted and set aside). Parts:
+
+1. **ingest**: the repeated recording sent by ``registration replay --speed max``; the service's
+   count of datagrams against those sent (no drops) and the plots it imports per second of wall
+   time, beside the replay's own rate;
+2. **lag at 20x**: the sample replayed at 20x; ``/api/status`` polled every 50 ms; the lag is the
+   data time sent minus the data time the service shows, in wall seconds;
+3. **memory**: the service's resident memory at 1 h, 12 h and 24 h of data time (the day sent at
+   full speed);
+4. **live against batch**: per held-out seed, each live estimate's distance to ``fleet register``'s
+   in batch σ, and the ratio of the σ.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+from common import ROOT, add_arguments, write
+
+from registration.io.asterix.encode import PlotCorrection, correct_cat048
+from tests.io.asterix.containers import pcap_bytes, udp_frame
+from tests.live.running import datagrams, serving
+
+SAMPLES = ROOT / "examples" / "recordings"
+SAMPLE_S = 300.0
+SOURCES = [(30, 1), (30, 2), (30, 3)]
+
+
+def _day(folder: Path, repeats: int) -> tuple[Path, int, int]:
+    """The sample repeated, CAT048 times moved on: (pcap, datagrams, CAT048 plots expected)."""
+    base = datagrams(SAMPLES / "atc.pcap.gz")
+    frames, times = [], []
+    for k in range(repeats):
+        shift = {s: PlotCorrection(time_bias_s=-k * SAMPLE_S) for s in SOURCES}
+        for j, d in enumerate(base):
+            frames.append(udp_frame(correct_cat048(d, shift).data if k and d[0] == 48 else d))
+            times.append(1714557600.0 + k * SAMPLE_S + j * SAMPLE_S / len(base))
+    path = folder / "day.pcap"
+    path.write_bytes(pcap_bytes(frames, times))
+    return path, len(frames), 3692 * repeats
+
+
+def _replay(path: Path, port: int, speed: str) -> subprocess.Popen:
+    cmd = [sys.executable, "-m", "registration", "replay", str(path), "--to", f"udp://127.0.0.1:{port}"]
+    return subprocess.Popen(cmd + ["--speed", speed], stderr=subprocess.PIPE, text=True)
+
+
+def ingest_and_memory(folder: Path, repeats: int) -> dict:
+    path, n_datagrams, n_plots = _day(folder, repeats)
+    marks = {3600.0: None, 43200.0: None, 86400.0: None}
+    with serving("--date", "2024-05-01") as svc:
+        t0 = time.monotonic()
+        rep = _replay(path, svc.input_port, "max")
+        first = None
+        while True:
+            s = svc.get("/api/status")
+            if first is None and s["data_time_s"] is not None:
+                first = s["data_time_s"]
+            for mark in marks:
+                if marks[mark] is None and first is not None and s["data_time_s"] - first >= mark - SAMPLE_S:
+                    marks[mark] = s["memory_rss_bytes"]
+            if s["ingest"]["datagrams"] >= n_datagrams and s["ingest"]["plots"] >= n_plots:
+                break
+            if time.monotonic() - t0 > 3600:
+                break
+            time.sleep(0.2)
+        wall = time.monotonic() - t0
+        _, replay_line = rep.communicate(timeout=60)
+        svc.stop()
+    return {
+        "datagrams_sent": n_datagrams,
+        "datagrams_received": s["ingest"]["datagrams"],
+        "plots": s["ingest"]["plots"],
+        "plots_per_s": s["ingest"]["plots"] / wall,
+        "datagrams_per_s": s["ingest"]["datagrams"] / wall,
+        "wall_s": wall,
+        "replay": replay_line.strip().splitlines()[-1] if replay_line.strip() else "",
+        "rss_bytes_at_data_h": {f"{m / 3600:g}": v for m, v in marks.items()},
+        "epochs": s["epochs"],
+        "late_plots": s["ingest"]["late_plots"],
+    }
+
+
+def lag_at_20x() -> dict:
+    lags = []
+    with serving("--date", "2024-05-01") as svc:
+        rep = _replay(SAMPLES / "atc.pcap.gz", svc.input_port, "20")
+        t0, first = time.monotonic(), None
+        while rep.poll() is None:
+            s = svc.get("/api/status")
+            if s["data_time_s"] is not None:
+                if first is None:
+                    first, t0 = s["data_time_s"], time.monotonic()
+                sent = first + 20.0 * (time.monotonic() - t0)
+                lags.append(max(sent - s["data_time_s"], 0.0) / 20.0)
+            time.sleep(0.05)
+        svc.stop()
+    lags.sort()
+    return {
+        "polls": len(lags),
+        "median_s": lags[len(lags) // 2] if lags else None,
+        "max_s": max(lags, default=None),
+    }
+
+
+def against_batch(folder: Path, seeds: list[int], duration_s: float) -> dict:
+    import numpy as np
+    import pandas as pd
+
+    from registration.live.estimator import LiveEstimator
+    from registration.live.ingest import AsterixStream
+    from tests.io.asterix.atc import atc_truth, encode_atc
+
+    out = {}
+    for seed in seeds:
+        atc = atc_truth(seed, duration_s=duration_s)
+        pcap = folder / f"atc{seed}.pcap"
+        pcap.write_bytes(encode_atc(atc.plots, atc.adsb, atc.sites, atc.date, atc.scans).pcap())
+        atc.sites.to_csv(folder / "SITES.csv", index=False)
+        payloads = datagrams(pcap)
+        stream, est = AsterixStream(atc.sites, date=atc.date), LiveEstimator(atc.sites)
+        for i in range(0, len(payloads), 300):
+            est.feed(stream.decode(payloads[i : i + 300], [1] * len(payloads[i : i + 300])))
+        est.flush()
+        live = {f"{r['object']}:{r['state']}": r for r in est.rows() if r["status"] == "identifiable"}
+        tables, result = folder / f"t{seed}", folder / f"r{seed}"
+        run = [sys.executable, "-m", "registration"]
+        subprocess.run(
+            run
+            + ["import", "asterix", str(pcap), "--sites", str(folder / "SITES.csv"), "--out", str(tables)],
+            check=True,
+            capture_output=True,
+        )
+        subprocess.run(
+            run + ["fleet", "register", "--tables", str(tables), "--out", str(result), "--no-plots"],
+            check=True,
+            capture_output=True,
+        )
+        batch = pd.read_csv(result / "estimates.csv")
+        z, ratio = [], []
+        for row in batch.itertuples():
+            key = f"{row.object}:{row.state}"
+            if key in live:
+                z.append(abs(live[key]["estimate"] - row.estimate) / row.sigma)
+                ratio.append(live[key]["sigma"] / row.sigma)
+        out[str(seed)] = {
+            "max_distance_in_batch_sigma": float(np.max(z)),
+            "max_sigma_ratio": float(np.max(ratio)),
+            "states": len(z),
+        }
+        print(
+            f"  seed {seed}: {len(z)} states, live within {np.max(z):.2f} batch σ, "
+            f"σ ratio at most {np.max(ratio):.2f}"
+        )
+    return out
+
+
+def main(argv=None) -> None:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument(
+        "--hours", type=float, default=24.0, help="hours of data for ingest and memory (default 24)"
+    )
+    ap.add_argument("--seeds", type=int, default=3, help="held-out seeds against the batch run (default 3)")
+    add_arguments(ap)
+    args = ap.parse_args(argv)
+    if args.tiny:
+        args.hours, args.seeds = 0.25, 1
+    repeats = max(int(round(args.hours * 3600 / SAMPLE_S)), 1)
+    with tempfile.TemporaryDirectory() as temp:
+        folder = Path(temp)
+        ingest = ingest_and_memory(folder, repeats)
+        print(
+            f"ingest: {ingest['datagrams_received']} of {ingest['datagrams_sent']} datagrams received, "
+            f"{ingest['plots']} plots in {ingest['wall_s']:.1f} s: {ingest['plots_per_s']:.0f} plots/s "
+            f"({ingest['datagrams_per_s']:.0f} datagrams/s); the replay: {ingest['replay']}"
+        )
+        rss = ", ".join(
+            f"{h} h {v / 2**20:.0f} MiB" if v else f"{h} h -"
+            for h, v in ingest["rss_bytes_at_data_h"].items()
+        )
+        print(f"resident memory at data time {rss}")
+        lag = lag_at_20x()
+        print(
+            f"lag at 20x: median {lag['median_s']:.2f} s, max {lag['max_s']:.2f} s of wall time "
+            f"({lag['polls']} polls)"
+        )
+        seeds = list(range(101, 101 + args.seeds))
+        print("live against fleet register (held-out simulations):")
+        batch = against_batch(folder, seeds, 300.0 if args.tiny else 900.0)
+    figures = {"ingest": ingest, "lag_at_20x": lag, "against_batch": batch}
+    write("live", args, {"hours": args.hours, "seeds": seeds}, figures)
+    print(json.dumps(figures["lag_at_20x"]))
+
+
+if __name__ == "__main__":
+    main()
