@@ -108,7 +108,9 @@ def period_rows(bias_periods) -> list[dict]:
 def change_rows(bias_periods) -> list[dict]:
     """The rows of changes.csv in file units (deg, m, 1, s): the changes declared."""
     changes = bias_periods.changes
-    layout = bias_periods.periods[0].result.layout if bias_periods.periods else None
+    if not bias_periods.periods:
+        return []
+    layout = bias_periods.periods[0].result.layout
     rows = []
     for j in changes.found:
         i = int(changes.state[j])

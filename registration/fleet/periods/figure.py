@@ -1,8 +1,8 @@
 """The figure of a per-period registration (matplotlib, Agg): each state's estimate per period with its
 ±σ bar (one standard deviation), one panel per state group (heading errors, range biases, bearing
-biases, ...), one colour and marker per sensor or platform; the boundaries where a change was declared
-as dashed vertical lines. Angles in degrees, ranges and positions in metres, range gains in ppm, time
-biases in seconds."""
+biases, ...), one colour and marker per sensor or platform; a boundary where a change was declared
+dashed in the panel of the state that changed. Angles in degrees, ranges and positions in
+metres, range gains in ppm, time biases in seconds."""
 
 from __future__ import annotations
 
@@ -41,7 +41,7 @@ def bias_periods_figure(bias_periods: BiasPeriods, truth: dict | None = None):
     mid = np.array([(p.start_s + p.end_s) / 2 for p in periods])
     half = np.array([(p.end_s - p.start_s) / 2 for p in periods])
     changes = bias_periods.changes
-    boundaries = np.unique(changes.time_s[changes.found])
+    found = changes.found
     for ax, (group, states) in zip(axes.flat, groups.items()):
         _, _, unit, k = FILE_UNITS[layout.units[states[0]]]
         offsets = (np.arange(len(states)) - (len(states) - 1) / 2) * 0.6 * half.min() / max(len(states), 1)
@@ -65,8 +65,8 @@ def bias_periods_figure(bias_periods: BiasPeriods, truth: dict | None = None):
                 ax.axhline(truth[layout.names[i]] * k, color=colour, ls=":", lw=0.8)
         for p in periods[1:]:
             ax.axvline(p.start_s, color="0.8", lw=0.6)
-        for t in boundaries:
-            ax.axvline(t, color="k", ls="--", lw=0.8)
+        for t in np.unique(changes.time_s[found[np.isin(changes.state[found], states)]]):
+            ax.axvline(t, color="k", ls="--", lw=0.8)  # a change of a state of this panel
         ax.set_xlim(periods[0].start_s, periods[-1].end_s)
         ax.set_title(f"{group} ({unit})", fontsize=9)
         ax.set_xlabel("time (s)", fontsize=8)
@@ -77,7 +77,7 @@ def bias_periods_figure(bias_periods: BiasPeriods, truth: dict | None = None):
         ax.set_visible(False)
     fig.suptitle(
         f"Estimates per period of {bias_periods.period_s:g} s with ± 1σ bars"
-        + (" (dashed: changes found)" if boundaries.size else "")
+        + (" (dashed: a change found)" if found.size else "")
     )
     return fig
 
