@@ -160,7 +160,8 @@ def change_lines(bias_periods) -> list[str]:
     changes = bias_periods.changes
     n = len(bias_periods.periods)
     out = [
-        f"\nBiases per period of {bias_periods.period_s:g} s: {n} periods, {changes.n_tests} tests "
+        f"\nBiases per period of {bias_periods.period_s:g} s: {n} period{'s' if n != 1 else ''}, "
+        f"{changes.n_tests} tests "
         f"between consecutive periods, |z| > {changes.test.threshold:.2f} (1 % false alarms over the run)"
     ]
     out += [f"  note: {note}" for note in bias_periods.notes()]
