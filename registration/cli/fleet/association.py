@@ -11,7 +11,14 @@ import numpy as np
 
 from registration.cli.errors import writing
 
-__all__ = ["ASSOCIATION_COLUMNS", "associate", "association_summary", "online_note", "write_associations"]
+__all__ = [
+    "ASSOCIATION_COLUMNS",
+    "associate",
+    "labelled_tables",
+    "association_summary",
+    "online_note",
+    "write_associations",
+]
 
 #: Columns of associations.csv (``track`` only when the plots file has one).
 ASSOCIATION_COLUMNS = ("row", "time_s", "sensor", "track", "target", "join", "reason")
@@ -22,7 +29,7 @@ ONLINE_NOTE = (
 )
 
 
-def _labelled_tables(tables, association) -> tuple[dict, dict | None]:
+def labelled_tables(tables, association) -> tuple[dict, dict | None]:
     """The plots the association labelled, the labels as their target ids, and the references of
     those targets."""
     keep = association.labels != ""
@@ -57,7 +64,7 @@ def associate(tables, window_s: float, method: str):
     )
     if method != "online":
         return association, association.problem, association.batch
-    plots, refs = _labelled_tables(tables, association)
+    plots, refs = labelled_tables(tables, association)
     result = register_online(
         plots,
         tables.sensors,

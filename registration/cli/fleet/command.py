@@ -171,7 +171,9 @@ def run_register(args: argparse.Namespace) -> int:
     if not (args.window_s >= 0 and args.window_s < float("inf")):
         raise ValueError(f"--window-s: expected a length >= 0 s, got {args.window_s}")
     from registration.cli.fleet.archive import archive_requested, run_archive
+    from registration.cli.fleet.periods import check_period_options
 
+    check_period_options(args, archive_requested(args))
     if archive_requested(args):
         return run_archive(args)
     out = prepare_out(args.out)
@@ -186,6 +188,12 @@ def _register_into(path: Path, args: argparse.Namespace, tables):
     """Register the tables, print the report and write the outputs into ``path``: (result, files)."""
     from registration.cli.fleet.association import association_summary, online_note
     from registration.cli.fleet.output import print_report, redundancy_check, write_outputs
+    from registration.cli.fleet.periods import (
+        change_lines,
+        periods_summary,
+        solve_bias_periods,
+        write_period_outputs,
+    )
     from registration.io.fleet.estimates import estimate_rows
     from registration.io.fleet.read import needs_association
 
@@ -195,6 +203,7 @@ def _register_into(path: Path, args: argparse.Namespace, tables):
     else:
         association, problem, result = _associate(tables, args.window_s, args.method)
     redundancy_check(result, problem.n_plots, args.window_s)
+    periods = None if args.bias_period_s is None else solve_bias_periods(tables, association, result, args)
     rows = estimate_rows(result)
     header = [
         "Fleet tables " + ", ".join(str(p) for p in tables.paths.values()) + ":",
@@ -204,6 +213,8 @@ def _register_into(path: Path, args: argparse.Namespace, tables):
         _run_line(result),
     ]
     print_report(result, rows, header)
+    if periods is not None:
+        print("\n".join(change_lines(periods)))
     inputs = {
         **_inputs(tables, problem, args.window_s),
         "method": args.method,
@@ -214,7 +225,10 @@ def _register_into(path: Path, args: argparse.Namespace, tables):
     }
     if association is not None:
         inputs["association"] = association_summary(association, args.method)
-    written = write_outputs(path, problem, result, rows, inputs, plots=not args.no_plots)
+    extra = None if periods is None else {"bias_periods": periods_summary(periods)}
+    written = write_outputs(path, problem, result, rows, inputs, plots=not args.no_plots, extra=extra)
+    if periods is not None:
+        written += write_period_outputs(path, periods, plots=not args.no_plots)
     if args.on_bad_row == "skip" or tables.rejected:  # stop mode too: plots that cannot be used
         written.append(write_rejected(path, tables.rejected_frame()))
     if association is not None:

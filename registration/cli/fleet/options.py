@@ -123,6 +123,7 @@ def _add_tables(reg: argparse.ArgumentParser) -> None:
 
 def _add_register(reg: argparse.ArgumentParser) -> None:
     from registration.cli.fleet.archive import add_archive_arguments
+    from registration.cli.fleet.periods import add_period_argument
 
     _add_tables(reg)
     reg.add_argument(
@@ -134,6 +135,7 @@ def _add_register(reg: argparse.ArgumentParser) -> None:
         "online filter updates once per window",
     )
     _add_method(reg)
+    add_period_argument(reg)
     reg.add_argument(
         "--on-bad-row",
         choices=["stop", "skip"],

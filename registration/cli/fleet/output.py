@@ -237,10 +237,18 @@ def _history_frame(result):
 
 
 def write_outputs(
-    out: Path, problem, result, rows: list[dict], inputs: dict, *, plots: bool, truth: dict | None = None
+    out: Path,
+    problem,
+    result,
+    rows: list[dict],
+    inputs: dict,
+    *,
+    plots: bool,
+    truth: dict | None = None,
+    extra: dict | None = None,
 ) -> list[Path]:
-    """estimates.csv, summary.json, history.csv (online) and (with ``plots``) estimates.png,
-    map.png, residuals.png in ``out``."""
+    """estimates.csv, summary.json (with the parts ``extra`` adds), history.csv (online) and (with
+    ``plots``) estimates.png, map.png, residuals.png in ``out``."""
     import pandas as pd
 
     from registration.io.files.tablefile import write_frame
@@ -256,7 +264,7 @@ def write_outputs(
         written.append(out / name)
     path = out / "summary.json"
     with writing(path):
-        write_json(path, _summary(result, rows, inputs))
+        write_json(path, {**_summary(result, rows, inputs), **(extra or {})})
     written.append(path)
     if plots:
         written += _plots(out, problem, result, truth)

@@ -28,6 +28,9 @@ REGISTER_OUTPUTS = frozenset(
         "estimates.png",
         "map.png",
         "residuals.png",
+        "estimates_by_period.csv",
+        "changes.csv",
+        "bias_periods.png",
     }
 )
 
