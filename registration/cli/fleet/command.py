@@ -185,6 +185,7 @@ def run_register(args: argparse.Namespace) -> int:
 def _register_into(path: Path, args: argparse.Namespace, tables):
     """Register the tables, print the report and write the outputs into ``path``: (result, files)."""
     from registration.cli.fleet.association import association_summary, online_note
+    from registration.cli.fleet.diagnostics import kinds_by_row
     from registration.cli.fleet.output import print_report, redundancy_check, write_outputs
     from registration.io.fleet.estimates import estimate_rows
     from registration.io.fleet.read import needs_association
@@ -214,7 +215,9 @@ def _register_into(path: Path, args: argparse.Namespace, tables):
     }
     if association is not None:
         inputs["association"] = association_summary(association, args.method)
-    written = write_outputs(path, problem, result, rows, inputs, plots=not args.no_plots)
+    written = write_outputs(
+        path, problem, result, rows, inputs, plots=not args.no_plots, kinds=kinds_by_row(tables)
+    )
     if args.on_bad_row == "skip" or tables.rejected:  # stop mode too: plots that cannot be used
         written.append(write_rejected(path, tables.rejected_frame()))
     if association is not None:
