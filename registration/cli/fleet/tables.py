@@ -28,6 +28,7 @@ REGISTER_OUTPUTS = frozenset(
         "estimates.png",
         "map.png",
         "residuals.png",
+        "diagnostics_*.png",  # one per sensor
     }
 )
 

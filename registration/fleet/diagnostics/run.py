@@ -45,7 +45,8 @@ class Diagnostics:
     def finding_lines(self) -> list[str]:
         """One line per finding: sensor, what, size with unit, z, hint."""
         return [
-            f"{f.sensor}: {f.what} {f.size:+.4g} {f.unit} (z {f.z:+.1f}, threshold {self.threshold:.2f}): {f.hint}"
+            f"{f.sensor}: {f.what} {f.size:+.4g} {f.unit} (z {f.z:+.1f}, threshold {self.threshold:.2f}): "
+            f"{f.hint}"
             for f in self.findings
         ]
 
@@ -85,8 +86,8 @@ class Diagnostics:
         out = ["consistency outside its band; the chi-square's excess by sensor: " + ", ".join(parts)]
         for b in self.worst_bins():
             out.append(
-                f"  worst bin: {b['sensor']} {b['channel']} by {b['binning']} {b['bin']}: mean {b['mean']:+.4g} "
-                f"{b['unit']} over {b['n']} plots (z {b['z']:+.1f})"
+                f"  worst bin: {b['sensor']} {b['channel']} by {b['binning']} {b['bin']}: "
+                f"mean {b['mean']:+.4g} {b['unit']} over {b['n']} plots (z {b['z']:+.1f})"
             )
         return out
 
