@@ -187,6 +187,7 @@ def run_register(args: argparse.Namespace) -> int:
 def _register_into(path: Path, args: argparse.Namespace, tables):
     """Register the tables, print the report and write the outputs into ``path``: (result, files)."""
     from registration.cli.fleet.association import association_summary, online_note
+    from registration.cli.fleet.diagnostics import kinds_by_row
     from registration.cli.fleet.output import print_report, redundancy_check, write_outputs
     from registration.cli.fleet.periods import (
         change_lines,
@@ -226,7 +227,9 @@ def _register_into(path: Path, args: argparse.Namespace, tables):
     if association is not None:
         inputs["association"] = association_summary(association, args.method)
     extra = None if periods is None else {"bias_periods": periods_summary(periods)}
-    written = write_outputs(path, problem, result, rows, inputs, plots=not args.no_plots, extra=extra)
+    written = write_outputs(
+        path, problem, result, rows, inputs, plots=not args.no_plots, extra=extra, kinds=kinds_by_row(tables)
+    )
     if periods is not None:
         written += write_period_outputs(path, periods, plots=not args.no_plots)
     if args.on_bad_row == "skip" or tables.rejected:  # stop mode too: plots that cannot be used

@@ -246,13 +246,21 @@ def write_outputs(
     plots: bool,
     truth: dict | None = None,
     extra: dict | None = None,
+    kinds: np.ndarray | None = None,
 ) -> list[Path]:
     """estimates.csv, summary.json (with the parts ``extra`` adds), history.csv (online) and (with
-    ``plots``) estimates.png, map.png, residuals.png in ``out``."""
+    ``plots``) estimates.png, map.png, residuals.png, diagnostics_<sensor>.png in ``out``; the
+    residual diagnostics printed (:mod:`registration.cli.fleet.diagnostics`; ``kinds``: the plot
+    kind per plots-file row)."""
     import pandas as pd
 
+    from registration.cli.fleet.diagnostics import run_diagnostics, write_diagnostics_figures
     from registration.io.files.tablefile import write_frame
 
+    report = chi_square_report(result)
+    diagnostics = run_diagnostics(
+        problem, result, kinds, consistent=report is None or report.status == "consistent"
+    )
     online = is_online(result)
     frames = [("estimates.csv", pd.DataFrame(rows))] + (
         [("history.csv", _history_frame(result))] if online else []
@@ -264,10 +272,15 @@ def write_outputs(
         written.append(out / name)
     path = out / "summary.json"
     with writing(path):
-        write_json(path, {**_summary(result, rows, inputs), **(extra or {})})
+        summary = {**_summary(result, rows, inputs), **(extra or {})}
+        if diagnostics is not None:
+            summary["diagnostics"] = diagnostics.to_json()
+        write_json(path, summary)
     written.append(path)
     if plots:
         written += _plots(out, problem, result, truth)
+        if diagnostics is not None:
+            written += write_diagnostics_figures(out, diagnostics)
     return written
 
 

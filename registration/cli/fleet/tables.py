@@ -31,6 +31,7 @@ REGISTER_OUTPUTS = frozenset(
         "estimates_by_period.csv",
         "changes.csv",
         "bias_periods.png",
+        "diagnostics_*.png",  # one per sensor
     }
 )
 

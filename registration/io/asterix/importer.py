@@ -18,6 +18,7 @@ from registration.io.asterix.errors import LEDGER_COLUMNS, REASONS
 from registration.io.asterix.tables.assemble import FileRows, SiteLookup, assemble_file
 from registration.io.asterix.tables.duplicates import StreamChecks
 from registration.io.asterix.tables.fleetfiles import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
+from registration.io.asterix.tables.plots48 import file_kinds
 from registration.io.asterix.tables.sites import check_sites, read_sites
 from registration.io.asterix.tables.summary import (
     file_summary,
@@ -220,7 +221,7 @@ def _build(
     rows: list[FileRows] = [
         assemble_file(d, unwrapper, lookup, names, editions, rejections, checks, clock) for d in decoded
     ]
-    plots = _concat([r.plots for r in rows], (*PLOT_COLUMNS, "kind", "capture_lag_s"))
+    plots = _concat([r.plots for r in rows], (*PLOT_COLUMNS, "kind", "primary", "capture_lag_s"))
     service = _concat(
         [r.service for r in rows], ("sensor", "category", "msg_type", "time_s", "azimuth_deg", "rotation_s")
     )
@@ -253,7 +254,12 @@ def _build(
         **checks.summary(),
         "rejected": {"total": rejections.count(), "by_reason": rejections.by_code(tuple(REASONS))},
     }
-    plot_frame = _frame({c: plots[c] for c in PLOT_COLUMNS})
+    plot_frame = _frame(
+        {
+            **{c: plots[c] for c in PLOT_COLUMNS},
+            "kind": file_kinds(plots["kind"], plots["primary"]).astype(str),
+        }
+    )
     plot_frame["target"] = plot_frame["target"].astype(str)
     return AsterixImport(
         plots=plot_frame,

@@ -37,7 +37,7 @@ from registration.io.fleet.folder import tables_in_folder
 
 __all__ = ["csv_tables", "parquet_from_csv"]
 
-_IDS = {"sensor": str, "platform": str, "target": str, "track": str}
+_IDS = {"sensor": str, "platform": str, "target": str, "track": str, "kind": str}
 #: Per table: the degree columns whose values are checked together for radians, and their bound.
 _RADIANS = {
     "plots": (("bearing_deg", 2 * math.pi),),

@@ -78,6 +78,15 @@ FLEET_FILES = {
                 None,
                 "a sensor-local track id (an ARPA target number); empty: none",
             ),
+            _C(
+                "kind",
+                "kind",
+                "id",
+                False,
+                None,
+                "the plot's kind, e.g. mode_s, mode_a, primary (primary-only: PSR); empty: not known; "
+                "the residual diagnostics compare the kinds (docs/background/diagnostics.md)",
+            ),
             _C("range_m", "range", "m", False, (0.0, 1e8), "slant range, > 0; empty: not measured"),
             _C(
                 "bearing_deg",

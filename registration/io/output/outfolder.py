@@ -27,6 +27,7 @@ ones when the process stops; after a SIGKILL the marker stays, and the next run 
 
 from __future__ import annotations
 
+import fnmatch
 import json
 import os
 import re
@@ -85,12 +86,13 @@ class OutputFolderError(ValueError):
 
 
 def _is_output(name: str, names: frozenset = OUTPUT_NAMES) -> bool:
-    """A name a run writes (one of ``names``), or one of its temporary files (``*.tmp``,
+    """A name a run writes (one of ``names``, or matching one of them that holds a ``*``, such as
+    ``diagnostics_*.png``: one file per sensor), or one of its temporary files (``*.tmp``,
     ``paired.*.partial``)."""
     for suffix in (".tmp", ".partial"):
         if name.endswith(suffix):
             name = name[: -len(suffix)]
-    return name in names
+    return name in names or any("*" in n and fnmatch.fnmatchcase(name, n) for n in names)
 
 
 @dataclass(frozen=True)

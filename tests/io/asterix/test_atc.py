@@ -56,6 +56,7 @@ def test_plots_are_the_truth_to_the_asterix_resolution(atc):
         np.where(p["kind"] == "mode_a", [f"A{m:04o}" if m >= 0 else "" for m in p["mode_a"]], ""),
     )
     assert (got["target"].to_numpy() == ids).all()
+    assert (got["kind"].to_numpy() == p["kind"].to_numpy()).all()  # mode_s, mode_a, primary (TYP 1)
 
 
 def test_references_and_summary(atc):

@@ -29,6 +29,7 @@ __all__ = [
     "target_ids",
     "plot_verdicts",
     "plot_columns",
+    "file_kinds",
 ]
 
 #: The international nautical mile (m), exact.
@@ -94,7 +95,8 @@ def plot_verdicts(f: dict, sensor: np.ndarray) -> Verdicts:
 
 def plot_columns(f: dict, time_s: np.ndarray, sensor_name: np.ndarray) -> dict:
     """The plots file columns of records (all of them; select the kept ones after): ``time_s``,
-    ``sensor``, ``target``, ``range_m``, ``bearing_deg``, and ``kind`` ('mode_s', 'mode_a', 'none')."""
+    ``sensor``, ``target``, ``range_m``, ``bearing_deg``, ``kind`` ('mode_s', 'mode_a', 'none') and
+    ``primary`` (I048/020 TYP 1: a primary-only plot)."""
     ids, kind = target_ids(f)
     return {
         "time_s": time_s,
@@ -103,4 +105,12 @@ def plot_columns(f: dict, time_s: np.ndarray, sensor_name: np.ndarray) -> dict:
         "range_m": f["rho"] * (RHO_LSB_NM * NM_M),
         "bearing_deg": f["theta"] * THETA_LSB_DEG,
         "kind": kind,
+        "primary": f["has_020"] & (f["typ"] == 1),
     }
+
+
+def file_kinds(kind: np.ndarray, primary: np.ndarray) -> np.ndarray:
+    """The plots file's ``kind`` column: 'mode_s' or 'mode_a' (the id's kind), else 'primary' for a
+    primary-only plot, else 'other' (a secondary plot without a usable id)."""
+    kind = np.asarray(kind, dtype=object)
+    return np.where(kind != "none", kind, np.where(np.asarray(primary, dtype=bool), "primary", "other"))
