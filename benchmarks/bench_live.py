@@ -54,7 +54,7 @@ def _day(folder: Path, repeats: int) -> tuple[Path, int, int]:
     for k in range(repeats):
         shift = {s: PlotCorrection(time_bias_s=-k * SAMPLE_S) for s in SOURCES}
         for j, d in enumerate(base):
-            frames.append(udp_frame(correct_cat048(d, shift).data if k and d[0] == 48 else d))
+            frames.append(udp_frame(correct_cat048(d, shift).data if k else d))  # CAT048 records only
             times.append(1714557600.0 + k * SAMPLE_S + j * SAMPLE_S / len(base))
     path = folder / "day.pcap"
     path.write_bytes(pcap_bytes(frames, times))
@@ -72,7 +72,7 @@ def ingest_and_memory(folder: Path, repeats: int) -> dict:
     with serving("--date", "2024-05-01") as svc:
         t0 = time.monotonic()
         rep = _replay(path, svc.input_port, "max")
-        first = None
+        first, last = None, None
         while True:
             s = svc.get("/api/status")
             if first is None and s["data_time_s"] is not None:
@@ -82,9 +82,11 @@ def ingest_and_memory(folder: Path, repeats: int) -> dict:
                     marks[mark] = s["memory_rss_bytes"]
             if s["ingest"]["datagrams"] >= n_datagrams and s["ingest"]["plots"] >= n_plots:
                 break
-            if time.monotonic() - t0 > 3600:
+            moved = (s["ingest"], s["epochs"])
+            if rep.poll() is not None and moved == last:  # the replay ended and nothing moved for 1 s
                 break
-            time.sleep(0.2)
+            last = moved if rep.poll() is not None else None
+            time.sleep(1.0 if rep.poll() is not None else 0.2)
         wall = time.monotonic() - t0
         _, replay_line = rep.communicate(timeout=60)
         svc.stop()

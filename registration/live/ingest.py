@@ -19,7 +19,6 @@ from __future__ import annotations
 import datetime as dt
 from collections import Counter
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Mapping, Sequence
 
 import numpy as np
@@ -33,9 +32,9 @@ from registration.io.asterix.tables.duplicates import StreamChecks
 from registration.io.asterix.tables.fleetfiles import PLOT_COLUMNS, REFERENCE_COLUMNS
 from registration.io.asterix.tables.timeofday import Unwrapper
 from registration.io.files.ledger import RejectedLedger
-from registration.io.fleet.cells import check_frame
+from registration.io.fleet.cells import FILE_COLUMNS
 
-__all__ = ["AsterixStream", "IngestCounters", "StreamBatch", "DUPLICATE_HORIZON_S"]
+__all__ = ["AsterixStream", "IngestCounters", "StreamBatch", "DUPLICATE_HORIZON_S", "split_batch"]
 
 #: Records are checked for duplicates against those of the last this many seconds.
 DUPLICATE_HORIZON_S = 600.0
@@ -62,7 +61,7 @@ class IngestCounters:
         return {
             "datagrams": self.datagrams,
             "bytes": self.bytes,
-            "records_by_category": dict(sorted(self.records.items())),
+            "records_by_category": {k: n for k, n in sorted(self.records.items()) if n},
             "plots": self.plots,
             "plots_without_id": self.plots_without_id,
             "references": self.references,
@@ -83,12 +82,21 @@ class StreamBatch:
     file_plots: dict
 
 
-def _si(name: str, columns: dict, source: str) -> tuple[dict, np.ndarray]:
-    """File-form columns -> (table columns, rows kept) with the fleet reader's checks."""
-    import pandas as pd
-
-    read = check_frame(name, Path(source), pd.DataFrame(columns), skip=True, whole_file=False)
-    return read.table, read.bad.ok()
+def _si(name: str, columns: dict) -> dict:
+    """File-form columns of the import (rows its rules kept) -> the table's columns (SI, radians),
+    by the fleet files' one schema: renamed, degrees to radians."""
+    out = {}
+    for column, key, unit, _, _ in FILE_COLUMNS[name]:
+        if column in columns:
+            v = np.asarray(columns[column])
+            out[key] = (
+                v.astype(str)
+                if unit == "id"
+                else np.radians(v.astype(np.float64))
+                if unit == "deg"
+                else v.astype(np.float64)
+            )
+    return out
 
 
 class AsterixStream:
@@ -150,12 +158,28 @@ class AsterixStream:
         c.plots_without_id += int((~with_id).sum())
         plots = {"time": np.zeros(0), "sensor": np.zeros(0, dtype=str), "target": np.zeros(0, dtype=str)}
         if with_id.any():
-            table, ok = _si("plots", {k: v[with_id] for k, v in file_plots.items()}, self.name)
-            order = np.argsort(table["time"][ok], kind="stable")
-            plots = {k: np.asarray(v)[ok][order] for k, v in table.items()}
+            table = _si("plots", {k: v[with_id] for k, v in file_plots.items()})
+            order = np.argsort(table["time"], kind="stable")
+            plots = {k: v[order] for k, v in table.items()}
         references = None
         if rows.reference and rows.reference["time_s"].size:
-            table, ok = _si("reference", {k: rows.reference[k] for k in REFERENCE_COLUMNS}, self.name)
-            references = {k: np.asarray(v)[ok] for k, v in table.items()}
-            c.references += int(ok.sum())
+            references = _si("reference", {k: rows.reference[k] for k in REFERENCE_COLUMNS})
+            c.references += int(references["time"].size)
         return StreamBatch(plots, references, file_plots)
+
+
+def split_batch(batch: StreamBatch, plots: int) -> list[StreamBatch]:
+    """``batch`` in pieces of at most ``plots`` plots (time order kept), the references all with the
+    first piece (an epoch finds them when it closes); ``file_plots`` stays with the first."""
+    n = int(batch.plots["time"].size)
+    if n <= plots:
+        return [batch]
+    empty_refs = None
+    pieces = []
+    for a in range(0, n, plots):
+        part = {k: v[a : a + plots] for k, v in batch.plots.items()}
+        first = a == 0
+        pieces.append(
+            StreamBatch(part, batch.references if first else empty_refs, batch.file_plots if first else {})
+        )
+    return pieces

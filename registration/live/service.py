@@ -15,6 +15,7 @@ import selectors
 import signal
 import socket
 import struct
+import sys
 import threading
 import time
 from collections import Counter, deque
@@ -25,7 +26,7 @@ from registration.live.api import SensorActivity, Snapshot, build_snapshot
 from registration.live.config import Endpoint, ServeConfig
 from registration.live.estimator import LiveEstimator
 from registration.live.http import start_http
-from registration.live.ingest import AsterixStream
+from registration.live.ingest import AsterixStream, StreamBatch, split_batch
 from registration.live.outputs import cat063_message, plot_corrections
 from registration.live.state import load_state, save_state
 
@@ -33,16 +34,27 @@ __all__ = ["Service", "SILENT_S", "RECEIVE_BUFFER"]
 
 #: A sensor without a plot for this long (s of data time) while data flows is reported silent.
 SILENT_S = 60.0
+#: A round feeds the estimator for at most this long (s), so that the inputs are drained and
+#: imported on time when the estimator lags (a replay at full speed); the rest waits its turn.
+ESTIMATE_BUDGET_S = 0.5
+#: The estimator takes a round's plots in pieces of about this many.
+CHUNK_PLOTS = 2000
 #: Receive buffer asked for each input socket (octets).
 RECEIVE_BUFFER = 32 << 20
 _RATE_S = 60.0
+#: The interpreter's thread switch interval while serving (s; Python's default is 0.005): the
+#: receiving thread drains the sockets at least this often while the main thread computes.
+SWITCH_INTERVAL_S = 0.0005
 
 
 def _listen(endpoint: Endpoint, interface: str) -> socket.socket:
     """A UDP socket bound to the endpoint (joined to its group when multicast); OSError with the
     address when the port is taken."""
     s = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-    s.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, RECEIVE_BUFFER)
+    try:  # beyond the system's cap (net.core.rmem_max) where allowed (CAP_NET_ADMIN)
+        s.setsockopt(socket.SOL_SOCKET, getattr(socket, "SO_RCVBUFFORCE", 33), RECEIVE_BUFFER)
+    except OSError:
+        s.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, RECEIVE_BUFFER)
     try:
         if endpoint.multicast:
             s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
@@ -108,6 +120,8 @@ class Service:
         self.receiver = _Receiver(self.sockets)
         self.started = time.monotonic()
         self.recent: deque[tuple[float, Counter]] = deque()
+        self.backlog: deque[StreamBatch] = deque()
+        self.stop = threading.Event()
         self._snapshot = Snapshot()
         self._snapshot = self._build()
         try:
@@ -135,6 +149,7 @@ class Service:
     # -- rounds ----------------------------------------------------------------------------------
     def run(self) -> int:
         """Serve until SIGTERM/SIGINT (or ``stop`` set); returns 0."""
+        sys.setswitchinterval(SWITCH_INTERVAL_S)  # the receiving thread gets its turn often
         previous = {s: signal.signal(s, lambda *_: self.stop.set()) for s in (signal.SIGTERM, signal.SIGINT)}
         self.receiver.start()
         inputs = ", ".join(f"udp://{e.host}:{p}" for e, p in zip(self.config.asterix, self.input_ports))
@@ -170,10 +185,13 @@ class Service:
             if self.config.corrected is not None:
                 self.send_corrected(payloads)
             batch = self.stream.decode(payloads, ports)
-            self.estimator.feed(batch)
+            self.backlog.extend(split_batch(batch, CHUNK_PLOTS))
             fp = batch.file_plots
             if fp["time_s"].size:
                 self.recent.append((float(fp["time_s"].max()), Counter(fp["sensor"].astype(str).tolist())))
+        deadline = time.monotonic() + ESTIMATE_BUDGET_S
+        while self.backlog and not self.stop.is_set() and time.monotonic() < deadline:
+            self.estimator.feed(self.backlog.popleft())
         self._snapshot = self._build()
 
     def send_corrected(self, payloads: list[bytes]) -> None:

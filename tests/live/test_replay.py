@@ -388,6 +388,7 @@ def test_a_tcp_receiver_that_hangs_up_ends_the_replay_with_exit_2(tmp_path, caps
 
     def hang_up() -> None:
         conn, _ = server.accept()
+        conn.recv(100)  # the replay has connected and is sending: now hang up mid-stream
         conn.setsockopt(socket.SOL_SOCKET, socket.SO_LINGER, struct.pack("ii", 1, 0))  # reset
         conn.close()
 

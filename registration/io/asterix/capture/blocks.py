@@ -111,17 +111,52 @@ def _segment_blocks(
         p = q
 
 
+def _datagram_blocks(buf: np.ndarray, start: np.ndarray, end: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The data blocks of many segments at once, each walked header by header in step (a datagram
+    holds one or a few): (rows (B, 4): start, end, category, segment; in segment and file order),
+    and per segment whether a header was bad (those segments' rows are left out: the caller walks
+    them one by one for the reasons)."""
+    n = start.size
+    p, bad = start.astype(np.int64).copy(), np.zeros(n, dtype=bool)
+    active = p < end
+    parts = []
+    while active.any():
+        k = np.flatnonzero(active)
+        q, e = p[k], end[k]
+        short = q + 3 > e
+        safe = np.where(short, 0, q)  # a short tail's header is not read
+        cat = buf[safe].astype(np.int64)
+        length = (buf[safe + 1].astype(np.int64) << 8) | buf[safe + 2]
+        ok = ~short & (length >= 3) & (length <= e - q)
+        bad[k[~ok]] = True
+        parts.append(np.stack([q[ok], q[ok] + length[ok], cat[ok], k[ok]], axis=1))
+        p[k[ok]] += length[ok]
+        active[k[~ok]] = False
+        active[k[ok]] = p[k[ok]] < e[ok]
+    rows = np.concatenate(parts) if parts else np.zeros((0, 4), dtype=np.int64)
+    rows = rows[~bad[rows[:, 3]]]
+    return rows[np.lexsort((rows[:, 0], rows[:, 3]))], bad
+
+
 def find_blocks(cap: Capture, rejections: RejectedLedger) -> Blocks:
     """The data blocks of ``cap``; bad headers are set aside in ``rejections``. ``asterix_segments``
-    counts the segments that are data blocks of known categories end to end, without a bad header."""
+    counts the segments that are data blocks of known categories end to end, without a bad header.
+    Datagrams are walked all at once (:func:`_datagram_blocks`); a raw recording, a framing's
+    records and any segment with a bad header one by one, so that the reasons name each."""
     mv = memoryview(cap.buf)  # type: ignore[arg-type]  # a uint8 array is a buffer
     seg = cap.segments
-    where = {"raw": "file", "pcap": "datagram", "pcapng": "datagram"}.get(cap.kind, "record")
+    where = {"raw": "file", "pcap": "datagram", "pcapng": "datagram", "udp": "datagram"}.get(
+        cap.kind, "record"
+    )
+    if where == "datagram":
+        fast, slow = _datagram_blocks(cap.buf, seg.start, seg.end)
+    else:
+        fast, slow = np.zeros((0, 4), dtype=np.int64), np.ones(seg.start.size, dtype=bool)
     rows: list = []
     seg_of: list = []
-    seen: set[int] = set()
+    seen: set[int] = set(np.unique(fast[:, 2]).tolist())
     good = 0
-    for k in range(seg.start.size):
+    for k in np.flatnonzero(slow).tolist():
         out: list = []
         bad: list = []
         _segment_blocks(mv, cap.buf, int(seg.start[k]), int(seg.end[k]), where, seen, out, bad)
@@ -130,8 +165,15 @@ def find_blocks(cap: Capture, rejections: RejectedLedger) -> Blocks:
         seg_of += [k] * len(out)
         for offset, code, reason in bad:
             rejections.add(cap.path, code, reason, offset=offset, packet=int(seg.packet[k]), category=0)
-    a = np.array(rows, dtype=np.int64).reshape(-1, 3)
-    return Blocks(a[:, 0], a[:, 1], a[:, 2], np.array(seg_of, dtype=np.int64), good)
+    if fast.size:  # a datagram walked at once counts when it holds blocks of known categories only
+        unknown = ~np.isin(fast[:, 2], list(ASTERIX_CATEGORIES))
+        good += int(np.setdiff1d(np.unique(fast[:, 3]), fast[unknown, 3]).size)
+    one_by_one = np.column_stack(
+        [np.array(rows, dtype=np.int64).reshape(-1, 3), np.array(seg_of, dtype=np.int64)]
+    )
+    a = np.concatenate([fast, one_by_one])
+    a = a[np.lexsort((a[:, 0], a[:, 3]))]
+    return Blocks(a[:, 0], a[:, 1], a[:, 2], a[:, 3], good)
 
 
 def walk_raw(buf: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
