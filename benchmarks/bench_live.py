@@ -29,7 +29,6 @@ duplicates, counted and set aside). Parts:
 from __future__ import annotations
 
 import argparse
-import json
 import subprocess
 import sys
 import tempfile
@@ -66,56 +65,88 @@ def _replay(path: Path, port: int, speed: str) -> subprocess.Popen:
     return subprocess.Popen(cmd + ["--speed", speed], stderr=subprocess.PIPE, text=True)
 
 
-def ingest_and_memory(folder: Path, repeats: int) -> dict:
-    path, n_datagrams, n_plots = _day(folder, repeats)
-    marks = {3600.0: None, 43200.0: None, 86400.0: None}
-    with serving("--date", "2024-05-01") as svc:
-        t0 = time.monotonic()
-        rep = _replay(path, svc.input_port, "max")
-        first, last = None, None
-        while True:
-            s = svc.get("/api/status")
-            if first is None and s["data_time_s"] is not None:
-                first = s["data_time_s"]
-            for mark in marks:
-                if marks[mark] is None and first is not None and s["data_time_s"] - first >= mark - SAMPLE_S:
-                    marks[mark] = s["memory_rss_bytes"]
-            if s["ingest"]["datagrams"] >= n_datagrams and s["ingest"]["plots"] >= n_plots:
+def _until_done(svc, rep: subprocess.Popen, n_datagrams: int, n_plots: int, marks: dict) -> dict:
+    """Poll the service until every datagram sent is imported and estimated (or the replay ended
+    and nothing moved for 1 s); fills ``marks`` (data hours -> RSS) on the way."""
+    t0, t_first, imported, first, last = time.monotonic(), None, None, None, None
+    while True:
+        s = svc.get("/api/status")
+        now = time.monotonic()
+        if t_first is None and s["ingest"]["datagrams"]:
+            t_first = now
+        if first is None and s["data_time_s"] is not None:
+            first = s["data_time_s"]
+        for mark in marks:
+            if marks[mark] is None and first is not None and s["data_time_s"] - first >= mark - SAMPLE_S:
+                marks[mark] = s["memory_rss_bytes"]
+        if s["ingest"]["datagrams"] >= n_datagrams and s["ingest"]["plots"] >= n_plots:
+            imported = imported or now
+            if s["ingest"]["backlog_plots"] == 0:
                 break
-            moved = (s["ingest"], s["epochs"])
-            if rep.poll() is not None and moved == last:  # the replay ended and nothing moved for 1 s
-                break
-            last = moved if rep.poll() is not None else None
-            time.sleep(1.0 if rep.poll() is not None else 0.2)
-        wall = time.monotonic() - t0
-        _, replay_line = rep.communicate(timeout=60)
-        svc.stop()
+        moved = (s["ingest"], s["epochs"])
+        if rep.poll() is not None and moved == last:  # the replay ended and nothing moved for 1 s
+            break
+        last = moved if rep.poll() is not None else None
+        time.sleep(1.0 if rep.poll() is not None else 0.1)
+    t_first = t_first or t0
     return {
-        "datagrams_sent": n_datagrams,
-        "datagrams_received": s["ingest"]["datagrams"],
-        "plots": s["ingest"]["plots"],
-        "plots_per_s": s["ingest"]["plots"] / wall,
-        "datagrams_per_s": s["ingest"]["datagrams"] / wall,
-        "wall_s": wall,
-        "replay": replay_line.strip().splitlines()[-1] if replay_line.strip() else "",
-        "rss_bytes_at_data_h": {f"{m / 3600:g}": v for m, v in marks.items()},
-        "epochs": s["epochs"],
-        "late_plots": s["ingest"]["late_plots"],
+        "status": s,
+        "import_s": (imported or now) - t_first,
+        "estimate_s": now - t_first,
+        "replay": rep.communicate(timeout=60)[1].strip().splitlines()[-1:],
     }
 
 
-def lag_at_20x() -> dict:
+def ingest(folder: Path, hours: float) -> dict:
+    """The recording sent at full speed: datagrams lost, import and estimation rates."""
+    path, n_datagrams, n_plots = _day(folder, max(int(round(hours * 3600 / SAMPLE_S)), 1))
+    with serving("--date", "2024-05-01") as svc:
+        done = _until_done(svc, _replay(path, svc.input_port, "max"), n_datagrams, n_plots, {})
+        stopped = svc.stop()
+    s = done["status"]
+    received = s["ingest"]["datagrams"] + s["ingest"]["waiting_datagrams"]
+    return {
+        "datagrams_sent": n_datagrams,
+        "datagrams_received": received,
+        "plots": s["ingest"]["plots"],
+        "plots_per_s": s["ingest"]["plots"] / done["import_s"],
+        "datagrams_per_s": s["ingest"]["datagrams"] / done["import_s"],
+        "estimated_plots_per_s": s["ingest"]["plots"] / done["estimate_s"],
+        "replay": done["replay"],
+        "sigterm_s": stopped[1],
+    }
+
+
+def memory(folder: Path, hours: float, speed: float) -> dict:
+    """The resident memory at 1 h, 12 h and 24 h of data time, the day replayed at ``speed``."""
+    path, n_datagrams, n_plots = _day(folder, max(int(round(hours * 3600 / SAMPLE_S)), 1))
+    marks: dict = {h * 3600.0: None for h in (1.0, 12.0, 24.0) if h <= hours}
+    with serving("--date", "2024-05-01") as svc:
+        done = _until_done(svc, _replay(path, svc.input_port, f"{speed:g}"), n_datagrams, n_plots, marks)
+        svc.stop()
+    s = done["status"]
+    return {
+        "rss_bytes_at_data_h": {f"{m / 3600:g}": v for m, v in marks.items()},
+        "plots": s["ingest"]["plots"],
+        "epochs": s["epochs"],
+        "late_plots": s["ingest"]["late_plots"],
+        "alarms": len(s["alarms"]),
+        "speed": speed,
+    }
+
+
+def lag_at_20x(speed: float = 20.0) -> dict:
     lags = []
     with serving("--date", "2024-05-01") as svc:
-        rep = _replay(SAMPLES / "atc.pcap.gz", svc.input_port, "20")
+        rep = _replay(SAMPLES / "atc.pcap.gz", svc.input_port, f"{speed:g}")
         t0, first = time.monotonic(), None
         while rep.poll() is None:
             s = svc.get("/api/status")
             if s["data_time_s"] is not None:
                 if first is None:
                     first, t0 = s["data_time_s"], time.monotonic()
-                sent = first + 20.0 * (time.monotonic() - t0)
-                lags.append(max(sent - s["data_time_s"], 0.0) / 20.0)
+                sent = first + speed * (time.monotonic() - t0)
+                lags.append(max(sent - s["data_time_s"], 0.0) / speed)
             time.sleep(0.05)
         svc.stop()
     lags.sort()
@@ -187,32 +218,32 @@ def main(argv=None) -> None:
     add_arguments(ap)
     args = ap.parse_args(argv)
     if args.tiny:
-        args.hours, args.seeds = 0.25, 1
-    repeats = max(int(round(args.hours * 3600 / SAMPLE_S)), 1)
+        args.hours, args.seeds, args.ingest_hours, args.memory_speed = 0.25, 1, 0.1, 400.0
     with tempfile.TemporaryDirectory() as temp:
         folder = Path(temp)
-        ingest = ingest_and_memory(folder, repeats)
+        flow = ingest(folder, args.ingest_hours)
         print(
-            f"ingest: {ingest['datagrams_received']} of {ingest['datagrams_sent']} datagrams received, "
-            f"{ingest['plots']} plots in {ingest['wall_s']:.1f} s: {ingest['plots_per_s']:.0f} plots/s "
-            f"({ingest['datagrams_per_s']:.0f} datagrams/s); the replay: {ingest['replay']}"
+            f"ingest at full speed: {flow['datagrams_received']} of {flow['datagrams_sent']} datagrams "
+            f"received; imported at {flow['plots_per_s']:.0f} plots/s ({flow['datagrams_per_s']:.0f} "
+            f"datagrams/s), estimated at {flow['estimated_plots_per_s']:.0f} plots/s; SIGTERM took "
+            f"{flow['sigterm_s']:.1f} s; the replay: {' '.join(flow['replay'])}"
         )
-        rss = ", ".join(
-            f"{h} h {v / 2**20:.0f} MiB" if v else f"{h} h -"
-            for h, v in ingest["rss_bytes_at_data_h"].items()
-        )
-        print(f"resident memory at data time {rss}")
-        lag = lag_at_20x()
+        lag = lag_at_20x(100.0 if args.tiny else 20.0)
         print(
             f"lag at 20x: median {lag['median_s']:.2f} s, max {lag['max_s']:.2f} s of wall time "
             f"({lag['polls']} polls)"
         )
+        mem = memory(folder, args.hours, args.memory_speed)
+        rss = ", ".join(
+            f"{h} h {v / 2**20:.0f} MiB" if v else f"{h} h -" for h, v in mem["rss_bytes_at_data_h"].items()
+        )
+        print(f"resident memory at data time {rss} ({mem['plots']} plots at {mem['speed']:g}x)")
         seeds = list(range(101, 101 + args.seeds))
         print("live against fleet register (held-out simulations):")
-        batch = against_batch(folder, seeds, 300.0 if args.tiny else 900.0)
-    figures = {"ingest": ingest, "lag_at_20x": lag, "against_batch": batch}
-    write("live", args, {"hours": args.hours, "seeds": seeds}, figures)
-    print(json.dumps(figures["lag_at_20x"]))
+        batch = against_batch(folder, seeds, 120.0 if args.tiny else 900.0)
+    figures = {"ingest": flow, "lag_at_20x": lag, "memory": mem, "against_batch": batch}
+    sizes = {"hours": args.hours, "memory_speed": args.memory_speed, "ingest_hours": args.ingest_hours}
+    write("live", args, {**sizes, "seeds": seeds}, figures)
 
 
 if __name__ == "__main__":

@@ -151,12 +151,18 @@ def _metrics(rows: list[dict], counters: IngestCounters, activity: dict, status:
 
 
 def build_snapshot(
-    estimator: LiveEstimator, counters: IngestCounters, activity: dict[str, SensorActivity], uptime_s: float
+    estimator: LiveEstimator,
+    counters: IngestCounters,
+    activity: dict[str, SensorActivity],
+    uptime_s: float,
+    backlog_plots: int = 0,
 ) -> Snapshot:
-    """The answers of the current state (module docstring)."""
+    """The answers of the current state (module docstring); ``backlog_plots``: plots imported and
+    not yet given to the estimator."""
     rows = estimator.rows()
     ingest = counters.to_json()
     ingest["late_plots"] = estimator.late_plots
+    ingest["backlog_plots"] = backlog_plots
     status = {
         "uptime_s": uptime_s,
         "memory_rss_bytes": rss_bytes(),

@@ -35,6 +35,9 @@ __all__ = ["Alarm", "LiveEstimator", "HISTORY_S"]
 HISTORY_S = 3600.0
 #: Reference positions are kept this long (s) before the latest plot: late epochs still find them.
 KEEP_REFERENCES_S = 300.0
+#: The residuals are computed on one epoch in this many (they cost a second fit of its windows):
+#: a sample for the page, not every plot.
+RESIDUALS_EVERY = 5
 _CHANNELS = (("range", "m", 1.0), ("bearing", "deg", float(np.degrees(1.0))))
 
 
@@ -119,7 +122,8 @@ class LiveEstimator:
         self.history.append((update.t_end, self.filter.x.copy(), sigma))
         while self.history and self.history[0][0] < update.t_end - HISTORY_S:
             self.history.popleft()
-        self.residuals.append((update.t_end, self._residual_sums(update)))
+        if self.epochs % RESIDUALS_EVERY == 1 or RESIDUALS_EVERY == 1:
+            self.residuals.append((update.t_end, self._residual_sums(update)))
         while self.residuals and self.residuals[0][0] < update.t_end - HISTORY_S:
             self.residuals.popleft()
 

@@ -42,10 +42,11 @@ DUPLICATE_HORIZON_S = 600.0
 
 @dataclass
 class IngestCounters:
-    """What came in since the start: ``datagrams`` and ``bytes``, ``records`` per category
-    (``"048"``: n), ``plots`` kept (with a target id or not), ``plots_without_id``, ``references``
-    kept, ``rejected`` per reason code (the import's), and per sensor its ``sensor_plots`` and the
-    time of its latest plot (``sensor_last_s``, s on the time axis)."""
+    """What came in since the start: ``datagrams`` and ``bytes`` imported, ``waiting_datagrams``
+    received and not yet imported, ``records`` per category (``"048"``: n), ``plots`` kept (with a
+    target id or not), ``plots_without_id``, ``references`` kept, ``rejected`` per reason code
+    (the import's), and per sensor its ``sensor_plots`` and the time of its latest plot
+    (``sensor_last_s``, s on the time axis)."""
 
     datagrams: int = 0
     bytes: int = 0
@@ -56,10 +57,12 @@ class IngestCounters:
     rejected: Counter = field(default_factory=Counter)
     sensor_plots: Counter = field(default_factory=Counter)
     sensor_last_s: dict = field(default_factory=dict)
+    waiting_datagrams: int = 0
 
     def to_json(self) -> dict:
         return {
             "datagrams": self.datagrams,
+            "waiting_datagrams": self.waiting_datagrams,
             "bytes": self.bytes,
             "records_by_category": {k: n for k, n in sorted(self.records.items()) if n},
             "plots": self.plots,

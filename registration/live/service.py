@@ -37,8 +37,12 @@ SILENT_S = 60.0
 #: A round feeds the estimator for at most this long (s), so that the inputs are drained and
 #: imported on time when the estimator lags (a replay at full speed); the rest waits its turn.
 ESTIMATE_BUDGET_S = 0.5
+#: The answers are built again at most this often (s of wall time).
+SNAPSHOT_S = 0.25
+#: A round imports at most this many datagrams (the rest wait for the next rounds).
+ROUND_DATAGRAMS = 20000
 #: The estimator takes a round's plots in pieces of about this many.
-CHUNK_PLOTS = 2000
+CHUNK_PLOTS = 500
 #: Receive buffer asked for each input socket (octets).
 RECEIVE_BUFFER = 32 << 20
 _RATE_S = 60.0
@@ -95,10 +99,15 @@ class _Receiver(threading.Thread):
                 with self.lock:
                     self.items.extend(got)
 
-    def take(self) -> list[tuple[bytes, int]]:
+    def take(self, most: int) -> list[tuple[bytes, int]]:
+        """The first ``most`` datagrams received and not taken yet."""
         with self.lock:
-            items, self.items = self.items, []
+            items, self.items = self.items[:most], self.items[most:]
         return items
+
+    def waiting(self) -> int:
+        with self.lock:
+            return len(self.items)
 
 
 class Service:
@@ -121,6 +130,7 @@ class Service:
         self.started = time.monotonic()
         self.recent: deque[tuple[float, Counter]] = deque()
         self.backlog: deque[StreamBatch] = deque()
+        self._next_snapshot = 0.0
         self.stop = threading.Event()
         self._snapshot = Snapshot()
         self._snapshot = self._build()
@@ -167,8 +177,7 @@ class Service:
                 if self.config.state is not None and now >= next_checkpoint:
                     save_state(self.config.state, self.estimator)
                     next_checkpoint = now + self.config.checkpoint_s
-            self.round()
-            if self.config.state is not None:
+            if self.config.state is not None:  # what is still waiting is not imported: exit on time
                 save_state(self.config.state, self.estimator)
         finally:
             for s, handler in previous.items():
@@ -179,7 +188,7 @@ class Service:
 
     def round(self) -> None:
         """Import what was received, send the corrected plots, estimate, and publish a snapshot."""
-        items = self.receiver.take()
+        items = self.receiver.take(ROUND_DATAGRAMS)
         if items:
             payloads, ports = [p for p, _ in items], [q for _, q in items]
             if self.config.corrected is not None:
@@ -189,10 +198,14 @@ class Service:
             fp = batch.file_plots
             if fp["time_s"].size:
                 self.recent.append((float(fp["time_s"].max()), Counter(fp["sensor"].astype(str).tolist())))
-        deadline = time.monotonic() + ESTIMATE_BUDGET_S
+        hurry = self.receiver.waiting() >= ROUND_DATAGRAMS  # datagrams pile up: import them first
+        now = time.monotonic()
+        deadline = now + (ESTIMATE_BUDGET_S / 5 if hurry else ESTIMATE_BUDGET_S)
         while self.backlog and not self.stop.is_set() and time.monotonic() < deadline:
             self.estimator.feed(self.backlog.popleft())
-        self._snapshot = self._build()
+        if now >= self._next_snapshot:
+            self._snapshot = self._build()
+            self._next_snapshot = time.monotonic() + SNAPSHOT_S
 
     def send_corrected(self, payloads: list[bytes]) -> None:
         from registration.io.asterix.encode.cat048 import correct_cat048
@@ -228,9 +241,10 @@ class Service:
         return out
 
     def _build(self) -> Snapshot:
-        return build_snapshot(
-            self.estimator, self.stream.counters, self.activity(), time.monotonic() - self.started
-        )
+        backlog = sum(int(b.plots["time"].size) for b in self.backlog)
+        self.stream.counters.waiting_datagrams = self.receiver.waiting()
+        uptime = time.monotonic() - self.started
+        return build_snapshot(self.estimator, self.stream.counters, self.activity(), uptime, backlog)
 
     def close(self) -> None:
         self.receiver.stopping.set()

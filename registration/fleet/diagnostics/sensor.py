@@ -119,96 +119,84 @@ def analyse(p: SensorPlots) -> tuple[dict, list[Candidate]]:
         p.scale[c] = max(1.0, float(np.std(col))) if col.size >= MIN_VALUES else 1.0
     channels = p.channels()
     out: dict = {"plots": int(p.time.size), "scale": {CHANNEL_NAMES[c]: float(p.scale[c]) for c in channels}}
-    found: list[Candidate] = []
     net = p.e.copy()  # the residuals net of the fitted sinusoid, slope and step, for the group tests
+    found = _azimuth(p, channels, net, out) + _range(p, channels, net, out) + _time(p, channels, net, out)
+    found += _kinds(p, net, out) + _targets(p, net, out)
+    return out, found
+
+
+def _azimuth(p: SensorPlots, channels: list, net: np.ndarray, out: dict) -> list[Candidate]:
+    """The bins by measured azimuth and the sinusoid of the bearing residuals (eccentricity)."""
     az = np.mod(p.bearing, 2 * np.pi)
     has_az = np.isfinite(az)
     az_bin = np.where(has_az, np.minimum((np.nan_to_num(az) / (2 * np.pi) * AZIMUTH_BINS).astype(int), 11), 0)
     if has_az.all():
         out["by_azimuth"] = _bins_json(p, az_bin, AZIMUTH_BINS, edges_deg=np.linspace(0, 360, 13).tolist())
-    if 1 in channels:
-        ok = np.isfinite(p.e[:, 1]) & has_az
-        fit = sinusoid_fit(p.e[ok, 1], az[ok], p.scale[1])
-        if np.isfinite(fit.value):
-            net[ok, 1] -= fit.value * np.sin(az[ok] + fit.phase)
-        k = p.display(1)
-        out["azimuth_sinusoid"] = {
-            "amplitude_deg": fit.value * k,
-            "sigma_deg": fit.sigma * k,
-            "phase_deg": float(np.degrees(fit.phase)),
-            "z": fit.z,
-        }
-        found.append(
-            Candidate(
-                p.sensor,
-                "eccentricity",
-                "bearing",
-                "bearing residual a sinusoid of azimuth, amplitude",
-                fit.value * k,
-                "deg",
-                fit.z,
-                1,
-                "eccentricity?",
-            )
-        )
-    if 0 in channels:
-        ok = np.isfinite(p.e[:, 0]) & np.isfinite(p.range)
-        edges = _edges_quantile(p.range[ok], RANGE_BINS)
-        r_bin = np.clip(np.searchsorted(edges, np.nan_to_num(p.range), side="right") - 1, 0, RANGE_BINS - 1)
-        out["by_range"] = _bins_json(p, r_bin, RANGE_BINS, edges_m=edges.tolist())
-        if not p.gain_estimated:
-            fit = slope_fit(p.e[ok, 0], p.range[ok], p.scale[0])
-            if np.isfinite(fit.value):
-                net[ok, 0] -= fit.value * (p.range[ok] - np.mean(p.range[ok]))
-            ppm = p.sigma[0] * 1e6
-            out["range_slope"] = {"ppm": fit.value * ppm, "sigma_ppm": fit.sigma * ppm, "z": fit.z}
-            found.append(
-                Candidate(
-                    p.sensor,
-                    "range_gain",
-                    "range",
-                    "range residual grows with range,",
-                    fit.value * ppm,
-                    "ppm",
-                    fit.z,
-                    1,
-                    "range gain?",
-                )
-            )
+    if 1 not in channels:
+        return []
+    ok = np.isfinite(p.e[:, 1]) & has_az
+    fit = sinusoid_fit(p.e[ok, 1], az[ok], p.scale[1])
+    if np.isfinite(fit.value):
+        net[ok, 1] -= fit.value * np.sin(az[ok] + fit.phase)
+    k = p.display(1)
+    out["azimuth_sinusoid"] = {
+        "amplitude_deg": fit.value * k,
+        "sigma_deg": fit.sigma * k,
+        "phase_deg": float(np.degrees(fit.phase)),
+        "z": fit.z,
+    }
+    what = "bearing residual a sinusoid of azimuth, amplitude"
+    return [
+        Candidate(p.sensor, "eccentricity", "bearing", what, fit.value * k, "deg", fit.z, 1, "eccentricity?")
+    ]
+
+
+def _range(p: SensorPlots, channels: list, net: np.ndarray, out: dict) -> list[Candidate]:
+    """The bins by range and, when no range gain is estimated, the slope of the range residuals."""
+    if 0 not in channels:
+        return []
+    ok = np.isfinite(p.e[:, 0]) & np.isfinite(p.range)
+    edges = _edges_quantile(p.range[ok], RANGE_BINS)
+    r_bin = np.clip(np.searchsorted(edges, np.nan_to_num(p.range), side="right") - 1, 0, RANGE_BINS - 1)
+    out["by_range"] = _bins_json(p, r_bin, RANGE_BINS, edges_m=edges.tolist())
+    if p.gain_estimated:
+        return []
+    fit = slope_fit(p.e[ok, 0], p.range[ok], p.scale[0])
+    if np.isfinite(fit.value):
+        net[ok, 0] -= fit.value * (p.range[ok] - np.mean(p.range[ok]))
+    ppm = p.sigma[0] * 1e6
+    out["range_slope"] = {"ppm": fit.value * ppm, "sigma_ppm": fit.sigma * ppm, "z": fit.z}
+    what = "range residual grows with range,"
+    return [Candidate(p.sensor, "range_gain", "range", what, fit.value * ppm, "ppm", fit.z, 1, "range gain?")]
+
+
+def _time(p: SensorPlots, channels: list, net: np.ndarray, out: dict) -> list[Candidate]:
+    """The bins by time and the best single step of each channel (a bias change)."""
     t_edges = np.linspace(p.time.min(), p.time.max(), TIME_BINS + 1)
     t_bin = np.clip(np.searchsorted(t_edges, p.time, side="right") - 1, 0, TIME_BINS - 1)
     out["by_time"] = _bins_json(p, t_bin, TIME_BINS, edges_s=t_edges.tolist())
-    steps = {}
+    steps, found = {}, []
     for c in channels:
         ok = np.isfinite(p.e[:, c])
         step = best_step(p.e[ok, c], p.time[ok], t_edges, p.scale[c])
         if np.isfinite(step.size):
             net[ok, c] -= step.size * (p.time[ok] >= step.time)
         net[ok, c] -= np.mean(net[ok, c])
-        k = p.display(c)
-        steps[CHANNEL_NAMES[c]] = {
+        k, name, unit = p.display(c), CHANNEL_NAMES[c], DISPLAY_UNITS[c]
+        steps[name] = {
             "time_s": step.time,
             "size": step.size * k,
-            "unit": DISPLAY_UNITS[c],
+            "unit": unit,
             "z": step.z,
             "candidates": step.candidates,
         }
+        what = f"{name} bias step at {step.time:.0f} s,"
+        hint = "bias change: try --bias-period-s"
         found.append(
-            Candidate(
-                p.sensor,
-                "step",
-                CHANNEL_NAMES[c],
-                f"{CHANNEL_NAMES[c]} bias step at {step.time:.0f} s,",
-                step.size * k,
-                DISPLAY_UNITS[c],
-                step.z,
-                step.candidates,
-                "bias change: try --bias-period-s",
-            )
+            Candidate(p.sensor, "step", name, what, step.size * k, unit, step.z, step.candidates, hint)
         )
     out["time_step"] = steps
-    found += _kinds(p, net, out) + _targets(p, net, out)
-    return out, found
+    return found
 
 
 def _kinds(p: SensorPlots, net: np.ndarray, out: dict) -> list[Candidate]:
