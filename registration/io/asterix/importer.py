@@ -18,7 +18,7 @@ from registration.io.asterix.errors import LEDGER_COLUMNS, REASONS
 from registration.io.asterix.tables.assemble import FileRows, SiteLookup, assemble_file
 from registration.io.asterix.tables.duplicates import StreamChecks
 from registration.io.asterix.tables.fleetfiles import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
-from registration.io.asterix.tables.sites import check_sites, read_sites
+from registration.io.asterix.tables.sites import PSR_SUFFIX, check_sites, read_sites
 from registration.io.asterix.tables.summary import (
     file_summary,
     sensor_summary,
@@ -220,7 +220,7 @@ def _build(
     rows: list[FileRows] = [
         assemble_file(d, unwrapper, lookup, names, editions, rejections, checks, clock) for d in decoded
     ]
-    plots = _concat([r.plots for r in rows], (*PLOT_COLUMNS, "kind", "capture_lag_s"))
+    plots = _concat([r.plots for r in rows], (*PLOT_COLUMNS, "kind", "psr_only", "capture_lag_s"))
     service = _concat(
         [r.service for r in rows], ("sensor", "category", "msg_type", "time_s", "azimuth_deg", "rotation_s")
     )
@@ -254,6 +254,10 @@ def _build(
         "rejected": {"total": rejections.count(), "by_reason": rejections.by_code(tuple(REASONS))},
     }
     plot_frame = _frame({c: plots[c] for c in PLOT_COLUMNS})
+    if "psr_channel" in sites and plots["time_s"].size:  # the radars' primary-only plots: their channels
+        own = sites["sensor"].astype(str).to_numpy()[sites["psr_channel"].astype(str).to_numpy() == "own"]
+        psr = np.asarray(plots["psr_only"], dtype=bool) & np.isin(plot_frame["sensor"].to_numpy(str), own)
+        plot_frame.loc[psr, "sensor"] = plot_frame.loc[psr, "sensor"].astype(str) + PSR_SUFFIX
     plot_frame["target"] = plot_frame["target"].astype(str)
     return AsterixImport(
         plots=plot_frame,

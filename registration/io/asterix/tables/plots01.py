@@ -53,7 +53,8 @@ def plot_verdicts01(f: dict, sensor: np.ndarray) -> Verdicts:
 
 def plot_columns01(f: dict, time_s: np.ndarray, sensor_name: np.ndarray) -> dict:
     """The plots file columns of CAT001 records (all of them; select the kept ones after):
-    ``time_s``, ``sensor``, ``target``, ``range_m``, ``bearing_deg``, ``kind`` ('mode_a', 'none')."""
+    ``time_s``, ``sensor``, ``target``, ``range_m``, ``bearing_deg``, ``kind`` ('mode_a', 'none') and
+    ``psr_only`` (I001/020 SSR/PSR 1: sole primary detection)."""
     ids, kind = target_ids(f)
     return {
         "time_s": time_s,
@@ -62,4 +63,5 @@ def plot_columns01(f: dict, time_s: np.ndarray, sensor_name: np.ndarray) -> dict
         "range_m": f["rho"] * (RHO_LSB_NM * NM_M),
         "bearing_deg": f["theta"] * THETA_LSB_DEG,
         "kind": kind,
+        "psr_only": f["has_020"] & (f["ssrpsr"] == 1),
     }

@@ -94,7 +94,8 @@ def plot_verdicts(f: dict, sensor: np.ndarray) -> Verdicts:
 
 def plot_columns(f: dict, time_s: np.ndarray, sensor_name: np.ndarray) -> dict:
     """The plots file columns of records (all of them; select the kept ones after): ``time_s``,
-    ``sensor``, ``target``, ``range_m``, ``bearing_deg``, and ``kind`` ('mode_s', 'mode_a', 'none')."""
+    ``sensor``, ``target``, ``range_m``, ``bearing_deg``, ``kind`` ('mode_s', 'mode_a', 'none') and
+    ``psr_only`` (I048/020 TYP 1: a single primary detection)."""
     ids, kind = target_ids(f)
     return {
         "time_s": time_s,
@@ -103,4 +104,5 @@ def plot_columns(f: dict, time_s: np.ndarray, sensor_name: np.ndarray) -> dict:
         "range_m": f["rho"] * (RHO_LSB_NM * NM_M),
         "bearing_deg": f["theta"] * THETA_LSB_DEG,
         "kind": kind,
+        "psr_only": f["has_020"] & (f["typ"] == 1),
     }
