@@ -44,7 +44,7 @@ VARIANT = "standard"  # the orthonormal ENU -> ECEF rotation; the paper's eq. (4
 ROW_BASIS_SIZES = (1, 4)
 
 
-def _vec(prefix: str, names: list[str]) -> sp.Matrix:
+def vec(prefix: str, names: list[str]) -> sp.Matrix:
     return sp.Matrix(sp.symbols([f"{prefix}_{n}" for n in names], real=True))
 
 
@@ -65,14 +65,16 @@ def sensor_offset_expr(p_ecef, nav, att, lever_deck, pos_err_enu=None) -> sp.Mat
 
 
 def predicted_plot_expr(
-    p_ecef, nav, att_reported, att_err, bias, lever_deck, gain=None, pos_err_enu=None
+    p_ecef, nav, att_reported, att_err, bias, lever_deck, gain=None, pos_err_enu=None, ecc=None, theta=None
 ) -> sp.Matrix:
     """Plot [r m, q rad, e rad] the sensor reports for a target at p_ecef: true plot + bias (q unwrapped).
 
     ``gain`` (dimensionless, optional): the range is ``(1 + gain)`` times the true slant range
     before the range bias is added. ``pos_err_enu`` (m, optional): the stated sensor position
-    minus the true one, in ENU at the navigation point. Without them the expression is the
-    original three-error model, term for term.
+    minus the true one, in ENU at the navigation point. ``ecc`` (2, rad, optional) with ``theta``
+    (rad, the measured bearing): the azimuth eccentricity, ``ecc[0] sin theta + ecc[1] cos theta``
+    added to the bearing. Without them the expression is the original three-error model, term for
+    term.
     """
     att = [att_reported[i] - att_err[i] for i in range(3)]
     p_shifted = sensor_offset_expr(p_ecef, nav, att, lever_deck, pos_err_enu)
@@ -81,16 +83,28 @@ def predicted_plot_expr(
     slant = sp.sqrt(offset_ecef.dot(offset_ecef))  # = plot[0], without rotating first (see module doc)
     if gain is not None:
         slant = (1 + gain) * slant
-    return sp.Matrix([slant, plot[1], plot[2]]) + sp.Matrix(bias)
+    bearing = plot[1]
+    if ecc is not None:
+        bearing = bearing + _eccentricity(ecc, theta)
+    return sp.Matrix([slant, bearing, plot[2]]) + sp.Matrix(bias)
+
+
+def _eccentricity(ecc, theta):
+    """The bearing error (rad) of an eccentric antenna, ``a sin theta + b cos theta``, at the
+    measured bearing ``theta`` (rad); ``ecc = [a, b]`` (rad)."""
+    return ecc[0] * sp.sin(theta) + ecc[1] * sp.cos(theta)
 
 
 def corrected_plot2ecef_expr(
-    nav, att_reported, att_err, bias, lever_deck, meas, gain=None, pos_err_enu=None
+    nav, att_reported, att_err, bias, lever_deck, meas, gain=None, pos_err_enu=None, ecc=None
 ) -> sp.Matrix:
-    """Target ECEF (m) from a plot corrected by the biases (and range gain) and an attitude
-    corrected by its errors, seen from the true sensor position (the inverse of predicted_plot_expr)."""
+    """Target ECEF (m) from a plot corrected by the biases (and range gain, and eccentricity at the
+    measured bearing) and an attitude corrected by its errors, seen from the true sensor position
+    (the inverse of predicted_plot_expr)."""
     att = [att_reported[i] - att_err[i] for i in range(3)]
     plot = [meas[i] - bias[i] for i in range(3)]
+    if ecc is not None:
+        plot[1] = plot[1] - _eccentricity(ecc, meas[1])
     if gain is not None:
         plot[0] = plot[0] / (1 + gain)
     p = plot2ecef_expr(nav, att, plot, VARIANT) + lever_ecef_expr(nav, att, lever_deck)
@@ -99,7 +113,7 @@ def corrected_plot2ecef_expr(
     return p
 
 
-def _wrap(x):
+def wrap(x):
     """x wrapped to (-pi, pi] (differentiable away from the cut, derivative 1)."""
     return sp.atan2(sp.sin(x), sp.cos(x))
 
@@ -120,7 +134,7 @@ FLEET_DOMAIN = {
 }
 
 
-def _nav_ports(lat, lon, alt, heading, pitch, roll) -> tuple:
+def make_nav_ports(lat, lon, alt, heading, pitch, roll) -> tuple:
     return (
         Port("lat", lat, "rad"),
         Port("lon", lon, "rad"),
@@ -136,17 +150,17 @@ def specs() -> list[FunctionSpec]:
     heading, pitch, roll = sp.symbols("heading pitch roll", real=True)
     r, q, e = sp.symbols("r q e", real=True)
     p_ecef = sp.Matrix(sp.symbols("x y z", real=True))
-    att_err = _vec("d", ["heading", "pitch", "roll"])
-    bias = _vec("b", ["r", "q", "e"])
-    lever = _vec("lever", ["x", "y", "z"])
+    att_err = vec("d", ["heading", "pitch", "roll"])
+    bias = vec("b", ["r", "q", "e"])
+    lever = vec("lever", ["x", "y", "z"])
     nav, att = [lat, lon, alt], [heading, pitch, roll]
 
     predicted = predicted_plot_expr(p_ecef, nav, att, att_err, bias, lever)
     difference = sp.Matrix([r, q, e]) - predicted
-    residual = sp.Matrix([difference[0], _wrap(difference[1]), difference[2]])
+    residual = sp.Matrix([difference[0], wrap(difference[1]), difference[2]])
     J = jacobian(difference, p_ecef, att_err, bias)
-    plot = sp.Matrix([predicted[0], _wrap(predicted[1]), predicted[2]])
-    nav_ports = _nav_ports(lat, lon, alt, heading, pitch, roll)
+    plot = sp.Matrix([predicted[0], wrap(predicted[1]), predicted[2]])
+    nav_ports = make_nav_ports(lat, lon, alt, heading, pitch, roll)
     residual_spec = FunctionSpec(
         name="fleet_residual",
         doc=(
@@ -199,23 +213,25 @@ def specs() -> list[FunctionSpec]:
     return [
         residual_spec,
         plot2ecef_spec,
-        *[_rows_spec(residual_spec, n) for n in ROW_BASIS_SIZES],
+        *[rows_spec(residual_spec, n) for n in ROW_BASIS_SIZES],
         *extended_specs(),
     ]
 
 
-def _rows_spec(residual_spec: FunctionSpec, n_basis: int, extended: bool = False) -> CasadiSpec:
-    """The rows function of ``residual_spec`` (fleet_residual, or fleet_residual_ext with ``extended``:
-    then the input ``dt`` is held at 0, its Jacobian column being the time bias's)."""
+def rows_spec(residual_spec: FunctionSpec, n_basis: int, family: str = "") -> CasadiSpec:
+    """The rows function of ``residual_spec``: fleet_residual (``family`` ""), fleet_residual_ext
+    ("ext") or fleet_residual_ecc ("ecc"); in the last two the input ``dt`` is held at 0, its
+    Jacobian column being the time bias's."""
+    extended = bool(family)
     ports = [p for p in residual_spec.inputs if p.name != "dt"]
     scalar = {p.name for p in ports if p.shape == (1, 1)}
     inputs = tuple(CasadiPort(p.name, p.shape, p.unit) for p in ports) + (
         CasadiPort("weight", (3, 1), "1/m, 1/rad, 1/rad"),
         CasadiPort("basis", (n_basis, 1), "1"),
     )
-    n_state = 11 if extended else 6
+    n_state = {"": 6, "ext": 11, "ecc": 13}[family]
     m = 3 * n_basis + n_state + 1
-    name = f"fleet_rows_ext_{n_basis}" if extended else f"fleet_rows_{n_basis}"
+    name = f"fleet_rows_{family}_{n_basis}" if extended else f"fleet_rows_{n_basis}"
 
     def build():
         import casadi as ca
@@ -234,16 +250,21 @@ def _rows_spec(residual_spec: FunctionSpec, n_basis: int, extended: bool = False
         return ca.Function(name, args, [Z.T], [p.name for p in inputs], ["rows_t"], {"cse": True})
 
     domain = {
-        **FLEET_DOMAIN,
+        **residual_spec.domain,
         "weight": [(0.0, 0.1), (0.0, 3000.0), (0.0, 3000.0)],
         "basis": [(-1.0, 1.0)] * n_basis,
     }
-    state_doc = (
-        "J_x over the 11 states (attitude errors, biases, range gain, time bias, position errors; the "
-        "time bias's column is d residual / d dt at dt = 0)"
-        if extended
-        else "J_x over the 6 states"
-    )
+    state_doc = {
+        "": "J_x over the 6 states",
+        "ext": (
+            "J_x over the 11 states (attitude errors, biases, range gain, time bias, position errors; the "
+            "time bias's column is d residual / d dt at dt = 0)"
+        ),
+        "ecc": (
+            "J_x over the 13 states (attitude errors, biases, range gain, time bias, position errors, "
+            "eccentricity sin and cos; the time bias's column is d residual / d dt at dt = 0)"
+        ),
+    }[family]
     return CasadiSpec(
         name=name,
         doc=(
@@ -275,21 +296,21 @@ def extended_specs() -> list:
     r, q, e = sp.symbols("r q e", real=True)
     gain, dt = sp.symbols("gain dt", real=True)
     p_ecef = sp.Matrix(sp.symbols("x y z", real=True))
-    v_ecef = _vec("v", ["x", "y", "z"])
-    rate = _vec("rate", ["lat", "lon", "alt", "heading", "pitch", "roll"])
-    att_err = _vec("d", ["heading", "pitch", "roll"])
-    bias = _vec("b", ["r", "q", "e"])
-    lever = _vec("lever", ["x", "y", "z"])
-    pos_err = _vec("pos", ["east", "north", "up"])
+    v_ecef = vec("v", ["x", "y", "z"])
+    rate = vec("rate", ["lat", "lon", "alt", "heading", "pitch", "roll"])
+    att_err = vec("d", ["heading", "pitch", "roll"])
+    bias = vec("b", ["r", "q", "e"])
+    lever = vec("lever", ["x", "y", "z"])
+    pos_err = vec("pos", ["east", "north", "up"])
     nav6 = [lat, lon, alt, heading, pitch, roll]
     seen = [nav6[i] - rate[i] * dt for i in range(6)]
     p_seen = p_ecef - v_ecef * dt
     predicted = predicted_plot_expr(p_seen, seen[:3], seen[3:], att_err, bias, lever, gain, pos_err)
     difference = sp.Matrix([r, q, e]) - predicted
-    residual = sp.Matrix([difference[0], _wrap(difference[1]), difference[2]])
+    residual = sp.Matrix([difference[0], wrap(difference[1]), difference[2]])
     J = jacobian(difference, p_ecef, att_err, bias, gain, dt, pos_err)
-    plot = sp.Matrix([predicted[0], _wrap(predicted[1]), predicted[2]])
-    nav_ports = _nav_ports(*nav6)
+    plot = sp.Matrix([predicted[0], wrap(predicted[1]), predicted[2]])
+    nav_ports = make_nav_ports(*nav6)
     error_ports = (
         Port("att_err", att_err, "rad"),
         Port("bias", bias, "m, rad, rad"),
@@ -348,8 +369,4 @@ def extended_specs() -> list:
         outputs=(Port("p_ecef", p_target, "m"),),
         domain=FLEET_DOMAIN,
     )
-    return [
-        residual_spec,
-        plot2ecef_spec,
-        *[_rows_spec(residual_spec, n, extended=True) for n in ROW_BASIS_SIZES],
-    ]
+    return [residual_spec, plot2ecef_spec, *[rows_spec(residual_spec, n, "ext") for n in ROW_BASIS_SIZES]]

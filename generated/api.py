@@ -58,16 +58,24 @@ __all__ = [
     "enu2ecef_rotation_standard",
     "FleetPlot2ecefOutputs",
     "fleet_plot2ecef",
+    "FleetPlot2ecefEccOutputs",
+    "fleet_plot2ecef_ecc",
     "FleetPlot2ecefExtOutputs",
     "fleet_plot2ecef_ext",
     "FleetResidualOutputs",
     "fleet_residual",
+    "FleetResidualEccOutputs",
+    "fleet_residual_ecc",
     "FleetResidualExtOutputs",
     "fleet_residual_ext",
     "FleetRows1Outputs",
     "fleet_rows_1",
     "FleetRows4Outputs",
     "fleet_rows_4",
+    "FleetRowsEcc1Outputs",
+    "fleet_rows_ecc_1",
+    "FleetRowsEcc4Outputs",
+    "fleet_rows_ecc_4",
     "FleetRowsExt1Outputs",
     "fleet_rows_ext_1",
     "FleetRowsExt4Outputs",
@@ -749,6 +757,60 @@ def fleet_plot2ecef(
     return FleetPlot2ecefOutputs(*outputs)
 
 
+class FleetPlot2ecefEccOutputs(NamedTuple):
+    """The outputs of :func:`fleet_plot2ecef_ecc`, by name."""
+
+    p_ecef: Array
+    """(N, 3) [m]"""
+
+
+def fleet_plot2ecef_ecc(
+    *,
+    lat: ArrayLike,
+    lon: ArrayLike,
+    alt: ArrayLike,
+    heading: ArrayLike,
+    pitch: ArrayLike,
+    roll: ArrayLike,
+    att_err: ArrayLike,
+    bias: ArrayLike,
+    gain: ArrayLike,
+    pos_err: ArrayLike,
+    ecc: ArrayLike,
+    lever_deck: ArrayLike,
+    r: ArrayLike,
+    q: ArrayLike,
+    e: ArrayLike,
+) -> FleetPlot2ecefEccOutputs:
+    """Target ECEF (m) of one plot corrected by the extended registration errors and the azimuth eccentricity:
+    the inputs of fleet_plot2ecef_ext and ecc = [a, b] (rad) after pos_err. The inverse of
+    fleet_residual_ecc's predicted plot at dt = 0.
+
+    Inputs, each at this shape or with one more leading axis of N points:
+        lat: () [rad]
+        lon: () [rad]
+        alt: () [m]
+        heading: () [rad]
+        pitch: () [rad]
+        roll: () [rad]
+        att_err: (3,) [rad]
+        bias: (3,) [m, rad, rad]
+        gain: () [1]
+        pos_err: (3,) [m]
+        ecc: (2,) [rad]
+        lever_deck: (3,) [m]
+        r: () [m]
+        q: () [rad]
+        e: () [rad]
+    Outputs, over the N points (N = 1 when no input has the leading axis):
+        p_ecef: (N, 3) [m]
+    """
+    outputs = get("fleet_plot2ecef_ecc")(
+        lat, lon, alt, heading, pitch, roll, att_err, bias, gain, pos_err, ecc, lever_deck, r, q, e
+    )
+    return FleetPlot2ecefEccOutputs(*outputs)
+
+
 class FleetPlot2ecefExtOutputs(NamedTuple):
     """The outputs of :func:`fleet_plot2ecef_ext`, by name."""
 
@@ -858,6 +920,93 @@ def fleet_residual(
         p_ecef, lat, lon, alt, heading, pitch, roll, att_err, bias, lever_deck, r, q, e
     )
     return FleetResidualOutputs(*outputs)
+
+
+class FleetResidualEccOutputs(NamedTuple):
+    """The outputs of :func:`fleet_residual_ecc`, by name."""
+
+    residual: Array
+    """(N, 3) [m, rad, rad]"""
+    J: Array
+    """(N, 3, 16) [m/m, m/rad, 1, m, m/s, 1, m/rad; rad/m, 1, 1, rad, rad/s, rad/m, 1]"""
+    plot: Array
+    """(N, 3) [m, rad, rad]"""
+
+
+def fleet_residual_ecc(
+    *,
+    p_ecef: ArrayLike,
+    v_ecef: ArrayLike,
+    lat: ArrayLike,
+    lon: ArrayLike,
+    alt: ArrayLike,
+    heading: ArrayLike,
+    pitch: ArrayLike,
+    roll: ArrayLike,
+    nav_rate: ArrayLike,
+    att_err: ArrayLike,
+    bias: ArrayLike,
+    gain: ArrayLike,
+    dt: ArrayLike,
+    pos_err: ArrayLike,
+    ecc: ArrayLike,
+    lever_deck: ArrayLike,
+    r: ArrayLike,
+    q: ArrayLike,
+    e: ArrayLike,
+) -> FleetResidualEccOutputs:
+    """One plot of fleet registration with the extended sensor errors and the azimuth eccentricity: the inputs
+    of fleet_residual_ext and ecc = [a, b] (rad), the bearing seen with the error a sin q + b cos q at the
+    measured bearing q. Outputs residual = measured - predicted (bearing wrapped), J = d residual /
+    d(p_ecef, att_err, bias, gain, dt, pos_err, ecc) (3x16) and the predicted plot.
+
+    Inputs, each at this shape or with one more leading axis of N points:
+        p_ecef: (3,) [m]
+        v_ecef: (3,) [m/s]
+        lat: () [rad]
+        lon: () [rad]
+        alt: () [m]
+        heading: () [rad]
+        pitch: () [rad]
+        roll: () [rad]
+        nav_rate: (6,) [rad/s, rad/s, m/s, rad/s, rad/s, rad/s]
+        att_err: (3,) [rad]
+        bias: (3,) [m, rad, rad]
+        gain: () [1]
+        dt: () [s]
+        pos_err: (3,) [m]
+        ecc: (2,) [rad]
+        lever_deck: (3,) [m]
+        r: () [m]
+        q: () [rad]
+        e: () [rad]
+    Outputs, over the N points (N = 1 when no input has the leading axis):
+        residual: (N, 3) [m, rad, rad]
+        J: (N, 3, 16) [m/m, m/rad, 1, m, m/s, 1, m/rad; rad/m, 1, 1, rad, rad/s, rad/m, 1]
+        plot: (N, 3) [m, rad, rad]
+    """
+    outputs = get("fleet_residual_ecc")(
+        p_ecef,
+        v_ecef,
+        lat,
+        lon,
+        alt,
+        heading,
+        pitch,
+        roll,
+        nav_rate,
+        att_err,
+        bias,
+        gain,
+        dt,
+        pos_err,
+        ecc,
+        lever_deck,
+        r,
+        q,
+        e,
+    )
+    return FleetResidualEccOutputs(*outputs)
 
 
 class FleetResidualExtOutputs(NamedTuple):
@@ -1055,6 +1204,176 @@ def fleet_rows_4(
         p_ecef, lat, lon, alt, heading, pitch, roll, att_err, bias, lever_deck, r, q, e, weight, basis
     )
     return FleetRows4Outputs(*outputs)
+
+
+class FleetRowsEcc1Outputs(NamedTuple):
+    """The outputs of :func:`fleet_rows_ecc_1`, by name."""
+
+    rows_t: Array
+    """(N, 17, 3) [1/m, 1/rad]"""
+
+
+def fleet_rows_ecc_1(
+    *,
+    p_ecef: ArrayLike,
+    v_ecef: ArrayLike,
+    lat: ArrayLike,
+    lon: ArrayLike,
+    alt: ArrayLike,
+    heading: ArrayLike,
+    pitch: ArrayLike,
+    roll: ArrayLike,
+    nav_rate: ArrayLike,
+    att_err: ArrayLike,
+    bias: ArrayLike,
+    gain: ArrayLike,
+    pos_err: ArrayLike,
+    ecc: ArrayLike,
+    lever_deck: ArrayLike,
+    r: ArrayLike,
+    q: ArrayLike,
+    e: ArrayLike,
+    weight: ArrayLike,
+    basis: ArrayLike,
+) -> FleetRowsEcc1Outputs:
+    """Rows of the batch normal equations for one plot, polynomial basis of size 1: the inputs of
+    fleet_residual_ecc (without dt), channel weights w = mask / sigma (1/m, 1/rad, 1/rad) and the basis
+    values at the plot time. Output rows_t (17x3) = Z^T, Z = [basis^T (x) diag(w) J_p | diag(w) J_x | w *
+    residual], J_x over the 13 states (attitude errors, biases, range gain, time bias, position errors,
+    eccentricity sin and cos; the time bias's column is d residual / d dt at dt = 0).
+
+    Inputs, each at this shape or with one more leading axis of N points:
+        p_ecef: (3,) [m]
+        v_ecef: (3,) [m/s]
+        lat: () [rad]
+        lon: () [rad]
+        alt: () [m]
+        heading: () [rad]
+        pitch: () [rad]
+        roll: () [rad]
+        nav_rate: (6,) [rad/s, rad/s, m/s, rad/s, rad/s, rad/s]
+        att_err: (3,) [rad]
+        bias: (3,) [m, rad, rad]
+        gain: () [1]
+        pos_err: (3,) [m]
+        ecc: (2,) [rad]
+        lever_deck: (3,) [m]
+        r: () [m]
+        q: () [rad]
+        e: () [rad]
+        weight: (3,) [1/m, 1/rad, 1/rad]
+        basis: () [1]
+    Outputs, over the N points (N = 1 when no input has the leading axis):
+        rows_t: (N, 17, 3) [1/m, 1/rad]
+    """
+    outputs = get("fleet_rows_ecc_1")(
+        p_ecef,
+        v_ecef,
+        lat,
+        lon,
+        alt,
+        heading,
+        pitch,
+        roll,
+        nav_rate,
+        att_err,
+        bias,
+        gain,
+        pos_err,
+        ecc,
+        lever_deck,
+        r,
+        q,
+        e,
+        weight,
+        basis,
+    )
+    return FleetRowsEcc1Outputs(*outputs)
+
+
+class FleetRowsEcc4Outputs(NamedTuple):
+    """The outputs of :func:`fleet_rows_ecc_4`, by name."""
+
+    rows_t: Array
+    """(N, 26, 3) [1/m, 1/rad]"""
+
+
+def fleet_rows_ecc_4(
+    *,
+    p_ecef: ArrayLike,
+    v_ecef: ArrayLike,
+    lat: ArrayLike,
+    lon: ArrayLike,
+    alt: ArrayLike,
+    heading: ArrayLike,
+    pitch: ArrayLike,
+    roll: ArrayLike,
+    nav_rate: ArrayLike,
+    att_err: ArrayLike,
+    bias: ArrayLike,
+    gain: ArrayLike,
+    pos_err: ArrayLike,
+    ecc: ArrayLike,
+    lever_deck: ArrayLike,
+    r: ArrayLike,
+    q: ArrayLike,
+    e: ArrayLike,
+    weight: ArrayLike,
+    basis: ArrayLike,
+) -> FleetRowsEcc4Outputs:
+    """Rows of the batch normal equations for one plot, polynomial basis of size 4: the inputs of
+    fleet_residual_ecc (without dt), channel weights w = mask / sigma (1/m, 1/rad, 1/rad) and the basis
+    values at the plot time. Output rows_t (26x3) = Z^T, Z = [basis^T (x) diag(w) J_p | diag(w) J_x | w *
+    residual], J_x over the 13 states (attitude errors, biases, range gain, time bias, position errors,
+    eccentricity sin and cos; the time bias's column is d residual / d dt at dt = 0).
+
+    Inputs, each at this shape or with one more leading axis of N points:
+        p_ecef: (3,) [m]
+        v_ecef: (3,) [m/s]
+        lat: () [rad]
+        lon: () [rad]
+        alt: () [m]
+        heading: () [rad]
+        pitch: () [rad]
+        roll: () [rad]
+        nav_rate: (6,) [rad/s, rad/s, m/s, rad/s, rad/s, rad/s]
+        att_err: (3,) [rad]
+        bias: (3,) [m, rad, rad]
+        gain: () [1]
+        pos_err: (3,) [m]
+        ecc: (2,) [rad]
+        lever_deck: (3,) [m]
+        r: () [m]
+        q: () [rad]
+        e: () [rad]
+        weight: (3,) [1/m, 1/rad, 1/rad]
+        basis: (4,) [1]
+    Outputs, over the N points (N = 1 when no input has the leading axis):
+        rows_t: (N, 26, 3) [1/m, 1/rad]
+    """
+    outputs = get("fleet_rows_ecc_4")(
+        p_ecef,
+        v_ecef,
+        lat,
+        lon,
+        alt,
+        heading,
+        pitch,
+        roll,
+        nav_rate,
+        att_err,
+        bias,
+        gain,
+        pos_err,
+        ecc,
+        lever_deck,
+        r,
+        q,
+        e,
+        weight,
+        basis,
+    )
+    return FleetRowsEcc4Outputs(*outputs)
 
 
 class FleetRowsExt1Outputs(NamedTuple):

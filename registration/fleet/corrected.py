@@ -1,6 +1,7 @@
 """Plot positions corrected by a registration estimate: the one place the runtime turns plots into
 ECEF positions (generated ``fleet_plot2ecef``, or ``fleet_plot2ecef_ext`` with the extended
-errors), shared by the solver's starting values, the association and the map of the plots.
+errors, ``fleet_plot2ecef_ecc`` with an azimuth eccentricity), shared by the solver's starting
+values, the association and the map of the plots.
 
 With a time bias ``dt`` the plot was seen at ``t - dt``: the caller passes the navigation of the
 platform at that time (:meth:`registration.fleet.data.problem.FleetProblem.navigation_at`).
@@ -15,6 +16,7 @@ from registration.fleet.batch.design import plot_model_inputs
 from registration.fleet.data.layout import (
     ATTITUDE_COLUMNS,
     BIAS_COLUMNS,
+    ECCENTRICITY_COLUMNS,
     ELEVATION_BIAS_COLUMN,
     POSITION_ERROR_COLUMNS,
     RANGE_GAIN_COLUMN,
@@ -30,7 +32,7 @@ def corrected_positions(
     """(M, 3) ECEF positions (m) of plots corrected by the states.
 
     ``nav`` (M, 6): navigation (lat, lon rad, alt m, heading, pitch, roll rad as reported) at the
-    time the plot was seen; ``state`` (M, 6 or 11): each plot's state indices
+    time the plot was seen; ``state`` (M, 6, 11 or 13): each plot's state indices
     (:meth:`~registration.fleet.data.layout.StateLayout.sensor_states`, the sink last); ``xs`` (n + 1,):
     the states (rad, m, 1, s) with 0 appended for the sink; ``lever`` (M, 3) m, deck frame;
     ``meas`` (M, 3): range (m), bearing, elevation (rad), every channel filled (the caller places
@@ -39,7 +41,11 @@ def corrected_positions(
     known = plot_model_inputs(nav, lever, meas) | dict(
         att_err=xs[state[:, ATTITUDE_COLUMNS]], bias=xs[state[:, BIAS_COLUMNS]]
     )
-    if state.shape[1] > BIAS_COLUMNS.stop:  # the extended layout: gain, time bias, position error
+    if state.shape[1] > ECCENTRICITY_COLUMNS.start:  # and the eccentricity
+        gain, pos_err = xs[state[:, RANGE_GAIN_COLUMN]], xs[state[:, POSITION_ERROR_COLUMNS]]
+        ecc = xs[state[:, ECCENTRICITY_COLUMNS]]
+        p = generated.fleet_plot2ecef_ecc(**known, gain=gain, pos_err=pos_err, ecc=ecc).p_ecef
+    elif state.shape[1] > BIAS_COLUMNS.stop:  # the extended layout: gain, time bias, position error
         gain, pos_err = xs[state[:, RANGE_GAIN_COLUMN]], xs[state[:, POSITION_ERROR_COLUMNS]]
         p = generated.fleet_plot2ecef_ext(**known, gain=gain, pos_err=pos_err).p_ecef
     else:

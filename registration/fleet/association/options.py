@@ -117,7 +117,8 @@ class AssociationOptions:
             )
 
     def initial_sigma(self) -> dict:
-        """The starting sigma of each state quantity without a finite prior (rad, m, 1, s)."""
+        """The starting sigma of each state quantity without a finite prior (rad, m, 1, s); the
+        eccentricity terms start with the angle biases' sigma."""
         return {
             "heading_error": self.initial_sigma_attitude,
             "pitch_error": self.initial_sigma_attitude,
@@ -128,4 +129,6 @@ class AssociationOptions:
             "range_gain": self.initial_sigma_range_gain,
             "time_bias": self.initial_sigma_time_bias,
             **{f"position_{a}": self.initial_sigma_position for a in ("east", "north", "up")},
+            "eccentricity_sin": self.initial_sigma_angle_bias,
+            "eccentricity_cos": self.initial_sigma_angle_bias,
         }

@@ -24,7 +24,8 @@ north and up; its terms are ``V += sum basis_k basis_m L^T L`` and
 is used as before (the same numbers, bit for bit). All sums over plots are segment sums over the
 (block, sensor) order: no Python loop over plots.
 
-With the extended errors the rows come from ``fleet_rows_ext_<n_coef>``. A sensor with a time
+With the extended errors the rows come from ``fleet_rows_ext_<n_coef>`` (``fleet_rows_ecc_<n_coef>``,
+13 state columns, when some sensor has an azimuth eccentricity). A sensor with a time
 bias ``dt`` sees its target and its platform at ``t - dt``: each evaluation takes the window
 polynomial, its velocity (the polynomial's derivative) and the platform's navigation and its rate
 at that time (the navigation tracks interpolated again), so the residual is exact and the time
@@ -54,6 +55,7 @@ from registration.fleet.batch.design import Design, plot_model_inputs
 from registration.fleet.data.layout import (
     ATTITUDE_COLUMNS,
     BIAS_COLUMNS,
+    ECCENTRICITY_COLUMNS,
     POSITION_ERROR_COLUMNS,
     RANGE_GAIN_COLUMN,
     TIME_BIAS_COLUMN,
@@ -115,8 +117,8 @@ def _seen(design: Design, time_bias: np.ndarray) -> tuple:
 
 
 def _extended_rows(design: Design, xs: np.ndarray, coef: np.ndarray) -> np.ndarray:
-    """(rows, 3 n_coef + 12, 3) rows of the extended model at states ``xs`` (n + 1,, sink last); a row
-    seen outside its platform's navigation weighs 0 (module docstring)."""
+    """(rows, 3 n_coef + 12 or 14, 3) rows of the extended (or eccentric) model at states ``xs``
+    (n + 1,, sink last); a row seen outside its platform's navigation weighs 0 (module docstring)."""
     blk, state = design.blocks, design.state
     basis, nav, weight = design.basis, design.nav, design.weight
     v, rate = np.zeros((basis.shape[0], 3)), np.zeros((basis.shape[0], 6))
@@ -136,6 +138,11 @@ def _extended_rows(design: Design, xs: np.ndarray, coef: np.ndarray) -> np.ndarr
         pos_err=xs[state[:, POSITION_ERROR_COLUMNS]],
         weight=weight,
     )
+    if state.shape[1] > ECCENTRICITY_COLUMNS.start:  # some sensor has an eccentricity
+        known["ecc"] = xs[state[:, ECCENTRICITY_COLUMNS]]
+        if blk.n_coef == 1:
+            return generated.fleet_rows_ecc_1(**known, basis=basis[:, 0]).rows_t
+        return generated.fleet_rows_ecc_4(**known, basis=basis).rows_t
     if blk.n_coef == 1:
         return generated.fleet_rows_ext_1(**known, basis=basis[:, 0]).rows_t
     return generated.fleet_rows_ext_4(**known, basis=basis).rows_t

@@ -1,7 +1,7 @@
 """The registration state of a fleet: per platform the heading, pitch and roll errors, per sensor
 one bias per measured channel and, where the sensors table switches them on, the extended errors
-(range gain, time bias, position error east/north/up), with names, labels and units in the user's
-terms.
+(range gain, time bias, position error east/north/up) and the azimuth eccentricity (its sin and
+cos terms), with names, labels and units in the user's terms.
 
 State ``i`` is named ``<object>:<quantity>`` (``A:heading_error``, ``A1:range_bias``,
 ``A1:range_gain``, ``A1:time_bias``, ``A1:position_east``) and labelled ``heading error of
@@ -11,8 +11,12 @@ standard deviation of 0 holds a state fixed at zero; ``inf`` means no prior.
 
 Each sensor's states as the plot model takes them (``sensor_states``) are its platform's three
 attitude errors and its three biases (6 slots) or, when any sensor has an extended error, those
-and the five extended errors (11 slots, the order of ``EXTENDED_ERRORS``); an absent state's slot
-holds the sink index ``n``.
+and the five extended errors (11 slots, the order of ``EXTENDED_ERRORS``) or, when any sensor has an
+eccentricity, those and its two terms (13 slots); an absent state's slot holds the sink index ``n``.
+
+A *channel* (the sensors table's ``channel_of``: a radar's primary-only plots beside its secondary
+ones) has its own biases and range gain; its time bias, position errors and eccentricity slots
+hold the indices of its sensor's states: one state, seen through both.
 """
 
 from __future__ import annotations
@@ -21,11 +25,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.fleet.data.tables import ATTITUDE_ERRORS, CHANNEL_UNITS, CHANNELS, EXTENDED_ERRORS
+from registration.fleet.data.tables import (
+    ATTITUDE_ERRORS,
+    CHANNEL_UNITS,
+    CHANNELS,
+    ECCENTRICITY_ERRORS,
+    EXTENDED_ERRORS,
+    SHARED_EXTENDED,
+)
 
 __all__ = [
     "ATTITUDE_COLUMNS",
     "BIAS_COLUMNS",
+    "ECCENTRICITY_COLUMNS",
     "ELEVATION_BIAS_COLUMN",
     "POSITION_ERROR_COLUMNS",
     "RANGE_GAIN_COLUMN",
@@ -51,6 +63,8 @@ EXTENDED_LABELS = (
     "north position error",
     "up position error",
 )
+#: Label words of the eccentricity terms, in ECCENTRICITY_ERRORS order.
+ECCENTRICITY_LABELS = ("azimuth eccentricity (sin term)", "azimuth eccentricity (cos term)")
 #: Unit of each state unit in files (estimates.csv, history.csv) and on the console, with the factor
 #: from the SI value: (file unit, factor, console unit, factor).
 FILE_UNITS = {
@@ -78,6 +92,8 @@ ELEVATION_BIAS_COLUMN = 5
 RANGE_GAIN_COLUMN = 6
 TIME_BIAS_COLUMN = 7
 POSITION_ERROR_COLUMNS = slice(8, 11)
+#: With an eccentricity (width 13): its sin and cos terms.
+ECCENTRICITY_COLUMNS = slice(11, 13)
 
 
 @dataclass(frozen=True)
@@ -88,7 +104,9 @@ class StateLayout:
     ``bias_index`` (S, 3): the state index of each sensor's range, bearing and elevation bias, -1
     for a channel the sensor does not measure. ``extended_index`` (S, 5): the index of each
     sensor's range gain, time bias and east, north, up position errors, -1 where not modelled.
-    ``prior_sigma`` (n,): 0 = fixed, inf = no prior.
+    ``prior_sigma`` (n,): 0 = fixed, inf = no prior. ``eccentricity_index`` (S, 2): the index of
+    each sensor's eccentricity terms (sin, cos), -1 where not modelled (None: no sensor has one).
+    A channel's shared slots hold its sensor's indices (module docstring).
     """
 
     names: tuple[str, ...]
@@ -100,6 +118,7 @@ class StateLayout:
     att_index: np.ndarray
     bias_index: np.ndarray
     extended_index: np.ndarray
+    eccentricity_index: np.ndarray | None = None
 
     @property
     def n(self) -> int:
@@ -107,13 +126,19 @@ class StateLayout:
 
     @property
     def extended(self) -> bool:
-        """True when any sensor has an extended error (range gain, time bias, position)."""
-        return bool((self.extended_index >= 0).any())
+        """True when the plot model is the extended one: any sensor has an extended error (range
+        gain, time bias, position) or an eccentricity."""
+        return bool((self.extended_index >= 0).any()) or self.eccentric
+
+    @property
+    def eccentric(self) -> bool:
+        """True when any sensor has an azimuth eccentricity (estimated or fixed)."""
+        return self.eccentricity_index is not None and bool((self.eccentricity_index >= 0).any())
 
     @property
     def width(self) -> int:
-        """States per sensor in the plot model: 6, or 11 with the extended errors."""
-        return 11 if self.extended else 6
+        """States per sensor in the plot model: 6, 11 with the extended errors, 13 with an eccentricity."""
+        return 13 if self.eccentric else 11 if self.extended else 6
 
     @property
     def time_bias_index(self) -> np.ndarray:
@@ -131,8 +156,11 @@ class StateLayout:
         """(M, width) state indices of sensors ``sensor`` (M,) as the plot model takes them
         (module docstring); where a state is absent ``absent``, by default ``n`` (the sink)."""
         parts = [self.att_index[sensor_platform[sensor]], self.bias_index[sensor]]
-        if self.extended:
+        if self.extended or self.eccentric:
             parts.append(self.extended_index[sensor])
+        if self.eccentric:
+            assert self.eccentricity_index is not None
+            parts.append(self.eccentricity_index[sensor])
         idx = np.concatenate(parts, axis=1)
         return np.where(idx < 0, self.n if absent is None else absent, idx)
 
@@ -165,10 +193,15 @@ def make_layout(
     sensor_channels: np.ndarray,
     sensor_priors: np.ndarray,
     extended_priors: np.ndarray | None = None,
+    eccentricity_priors: np.ndarray | None = None,
+    channel_of: np.ndarray | None = None,
 ) -> StateLayout:
     """The layout for platforms (priors (P, 3), rad) and sensors (channels (S, 3) bool, priors (S, 3));
     ``extended_priors`` (S, 5) the priors of the extended errors (EXTENDED_ERRORS order; NaN = not
-    modelled). A sensor without range has no range gain."""
+    modelled); ``eccentricity_priors`` (S,) rad, the prior of both eccentricity terms (NaN or None:
+    not modelled); ``channel_of`` (S,) the sensor each one is a channel of (-1 or None: none), whose
+    time bias, position errors and eccentricity it shares (its own priors for them are not used). A
+    sensor without range has no range gain."""
     names, labels, units, objects, quantities, prior = [], [], [], [], [], []
 
     def add(kind, obj, quantity, label, unit, sigma) -> int:
@@ -180,28 +213,45 @@ def make_layout(
         prior.append(sigma)
         return len(names) - 1
 
+    n_sensors = len(sensor_ids)
+    parent = np.full(n_sensors, -1, dtype=np.int64) if channel_of is None else np.asarray(channel_of)
     att_index = np.zeros((len(platform_ids), 3), dtype=np.int64)
     for p, pid in enumerate(platform_ids):
         for k, what in enumerate(ATTITUDE_ERRORS):
             att_index[p, k] = add(
                 "platform", pid, f"{what}_error", f"{what} error", "rad", platform_priors[p, k]
             )
-    bias_index = np.full((len(sensor_ids), 3), -1, dtype=np.int64)
-    extended_index = np.full((len(sensor_ids), len(EXTENDED_ERRORS)), -1, dtype=np.int64)
+    bias_index = np.full((n_sensors, 3), -1, dtype=np.int64)
+    extended_index = np.full((n_sensors, len(EXTENDED_ERRORS)), -1, dtype=np.int64)
+    ecc_index = np.full((n_sensors, len(ECCENTRICITY_ERRORS)), -1, dtype=np.int64)
     if extended_priors is None:
-        extended_priors = np.full((len(sensor_ids), len(EXTENDED_ERRORS)), np.nan)
+        extended_priors = np.full((n_sensors, len(EXTENDED_ERRORS)), np.nan)
+    if eccentricity_priors is None:
+        eccentricity_priors = np.full(n_sensors, np.nan)
     for s, sid in enumerate(sensor_ids):
-        for k, channel in enumerate(CHANNELS):
+        channel = parent[s] >= 0
+        for k, what in enumerate(CHANNELS):
             if sensor_channels[s, k]:
                 bias_index[s, k] = add(
-                    "sensor", sid, f"{channel}_bias", f"{channel} bias", CHANNEL_UNITS[k], sensor_priors[s, k]
+                    "sensor", sid, f"{what}_bias", f"{what} bias", CHANNEL_UNITS[k], sensor_priors[s, k]
                 )
         for k, what in enumerate(EXTENDED_ERRORS):
             if np.isnan(extended_priors[s, k]) or (what == "range_gain" and not sensor_channels[s, 0]):
                 continue
+            if channel and SHARED_EXTENDED[k]:
+                continue
             extended_index[s, k] = add(
                 "sensor", sid, what, EXTENDED_LABELS[k], EXTENDED_UNITS[k], extended_priors[s, k]
             )
+        if not channel and not np.isnan(eccentricity_priors[s]):
+            for k, what in enumerate(ECCENTRICITY_ERRORS):
+                ecc_index[s, k] = add(
+                    "sensor", sid, what, ECCENTRICITY_LABELS[k], "rad", eccentricity_priors[s]
+                )
+    channels = np.flatnonzero(parent >= 0)
+    shared = np.flatnonzero(SHARED_EXTENDED)
+    extended_index[channels[:, None], shared] = extended_index[parent[channels][:, None], shared]
+    ecc_index[channels] = ecc_index[parent[channels]]
     return StateLayout(
         tuple(names),
         tuple(labels),
@@ -212,4 +262,5 @@ def make_layout(
         att_index,
         bias_index,
         extended_index,
+        ecc_index if (ecc_index >= 0).any() else None,
     )

@@ -282,7 +282,14 @@ def build_problem(plots, sensors, navigation, platforms=None, references=None, t
 
     nav = navigation_at(tracks, platform_ids, specs.platform[sensor], time, describe)
     layout = make_layout(
-        platform_ids, platform_priors, specs.ids, specs.channels, specs.prior, specs.extended_prior
+        platform_ids,
+        platform_priors,
+        specs.ids,
+        specs.channels,
+        specs.prior,
+        specs.extended_prior,
+        specs.eccentricity_prior,
+        specs.channel_of,
     )
     ref_keep = np.isin(refs.target, target_ids)
     refs = refs.subset(ref_keep)

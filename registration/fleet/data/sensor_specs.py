@@ -13,6 +13,7 @@ from registration.core.validation import check_range
 from registration.fleet.data.tables import (
     ATTITUDE_ERRORS,
     CHANNELS,
+    ECCENTRICITY_PRIOR_COLUMN,
     EXTENDED_PRIOR_COLUMNS,
     Table,
     read_table,
@@ -69,7 +70,9 @@ class SensorSpecs:
     """Sensors in table order: platform index (S,), measured channels (S, 3) bool, noise sigma
     (S, 3) m/rad (NaN where not measured), bias priors (S, 3), lever arm (S, 3) m (deck frame),
     priors of the extended errors (S, 5) in EXTENDED_ERRORS order (NaN = not modelled);
-    ``sigma_columns``: per channel, whether the table has its sigma column at all."""
+    ``sigma_columns``: per channel, whether the table has its sigma column at all;
+    ``eccentricity_prior`` (S,) rad, the prior of both eccentricity terms (NaN = not modelled);
+    ``channel_of`` (S,) the index of the sensor each one is a channel of (-1: none)."""
 
     ids: tuple[str, ...]
     platform: np.ndarray
@@ -79,6 +82,8 @@ class SensorSpecs:
     lever: np.ndarray
     extended_prior: np.ndarray
     sigma_columns: tuple[bool, ...] = (True, True, True)
+    eccentricity_prior: np.ndarray | None = None
+    channel_of: np.ndarray | None = None
 
 
 def read_sensors(table: Table, platform_ids) -> SensorSpecs:
@@ -131,7 +136,66 @@ def read_sensors(table: Table, platform_ids) -> SensorSpecs:
         lever,
         _extended_priors(table, ids),
         tuple(table.has(f"sigma_{c}") for c in CHANNELS),
+        _eccentricity_priors(table, ids),
+        _channel_of(table, ids, plat, lever),
     )
+
+
+def _eccentricity_priors(table: Table, ids) -> np.ndarray:
+    """(S,) prior sigma (rad) of each sensor's eccentricity terms: NaN without the column (not
+    modelled), inf for an empty cell or inf (no prior); a negative one names the row."""
+    if not table.has(ECCENTRICITY_PRIOR_COLUMN):
+        return np.full(table.n_rows, np.nan)
+    values = _sigma_column(table, ECCENTRICITY_PRIOR_COLUMN, ids, allow_missing=False, what="sensor")
+    big = np.flatnonzero(np.isfinite(values) & (values > MAX_ANGLE_SIGMA))
+    if big.size:
+        row = int(big[0])
+        raise table.error(
+            row,
+            f"{ECCENTRICITY_PRIOR_COLUMN} of sensor {str(ids[row])!r} is {values[row]}; expected a sigma "
+            f"of at most {MAX_ANGLE_SIGMA} rad (20 deg)",
+        )
+    return values
+
+
+def _channel_of(table: Table, ids, platform, lever: np.ndarray) -> np.ndarray:
+    """(S,) index of the sensor each one is a channel of (``channel_of``; -1: none). A channel must
+    name another sensor of the table that is not itself a channel, on the same platform with the
+    same lever arm (one antenna); errors name the row."""
+    out = np.full(table.n_rows, -1, dtype=np.int64)
+    if not table.has("channel_of"):
+        return out
+    raw = table.require("channel_of")
+    index = {str(s): i for i, s in enumerate(ids)}
+    for row, value in enumerate(raw):
+        name = "" if value is None or (isinstance(value, float) and np.isnan(value)) else str(value).strip()
+        if name in ("", "nan"):
+            continue
+        sid = str(ids[row])
+        if name not in index or name == sid:
+            raise table.error(
+                row,
+                f"channel_of of sensor {sid!r} is {name!r}; expected the id of another sensor "
+                f"(sensors: {list(map(str, ids))})",
+            )
+        out[row] = index[name]
+    for row in np.flatnonzero(out >= 0).tolist():
+        parent, sid = int(out[row]), str(ids[row])
+        if out[parent] >= 0:
+            raise table.error(
+                row,
+                f"channel_of of sensor {sid!r} names {str(ids[parent])!r}, itself a channel of "
+                f"{str(ids[out[parent]])!r}; name the sensor itself",
+            )
+    for row in np.flatnonzero(out >= 0).tolist():
+        parent, sid = int(out[row]), str(ids[row])
+        if str(platform[row]) != str(platform[parent]) or not np.array_equal(lever[row], lever[parent]):
+            raise table.error(
+                row,
+                f"sensor {sid!r} is a channel of {str(ids[parent])!r} but its platform or lever arm "
+                "differs; a channel shares its sensor's antenna: give the same platform and lever",
+            )
+    return out
 
 
 def _extended_priors(table: Table, ids) -> np.ndarray:

@@ -13,8 +13,13 @@ Every table is long form, one row per item; SI units and radians (docs/reference
   ``lever_x``, ``lever_y``, ``lever_z`` (m, deck frame: starboard, bow, up; default 0); optional
   extended errors, each switched on by its column: ``prior_range_gain`` (dimensionless),
   ``prior_time_bias`` (s), ``prior_position`` (m, one sigma for the east, north and up position
-  errors). A missing column leaves the error out of the model; an empty cell (NaN) or ``inf``
-  estimates it without a prior, a number is its prior sigma, 0 holds it at zero (listed as fixed).
+  errors), ``prior_eccentricity`` (rad, one sigma for both terms a, b of the azimuth eccentricity:
+  the bearing error ``a sin q + b cos q`` at the measured bearing q). A missing column leaves the
+  error out of the model; an empty cell (NaN) or ``inf`` estimates it without a prior, a number is
+  its prior sigma, 0 holds it at zero (listed as fixed). Optional ``channel_of``: the id of the
+  sensor this one is a channel of (a radar's primary-only plots beside its secondary ones; empty:
+  none): the channel has its own biases and range gain and shares the other sensor's platform,
+  lever arm, position error, time bias and eccentricity (one state for both).
 * ``navigation``: ``platform``, ``time`` (s), ``lat``, ``lon`` (rad), ``alt`` (m), ``heading``,
   ``pitch``, ``roll`` (rad) as reported (true + attitude error). A platform with one row is a
   fixed site (its time is not used); otherwise the rows are interpolated to the plot times.
@@ -48,6 +53,9 @@ __all__ = [
     "ATTITUDE_ERRORS",
     "EXTENDED_ERRORS",
     "EXTENDED_PRIOR_COLUMNS",
+    "ECCENTRICITY_ERRORS",
+    "ECCENTRICITY_PRIOR_COLUMN",
+    "SHARED_EXTENDED",
     "NAV_COLUMNS",
     "DEFAULT_REFERENCE_SIGMA",
     "index_of",
@@ -68,6 +76,13 @@ EXTENDED_PRIOR_COLUMNS = (
     "prior_position",
     "prior_position",
 )
+#: The azimuth eccentricity of a sensor, in state order (after the extended errors): the terms a and b
+#: of the bearing error a sin q + b cos q (rad); the sensors-table column of their prior.
+ECCENTRICITY_ERRORS = ("eccentricity_sin", "eccentricity_cos")
+ECCENTRICITY_PRIOR_COLUMN = "prior_eccentricity"
+#: Which extended errors (EXTENDED_ERRORS order) a channel (``channel_of``) shares with its sensor:
+#: all but the range gain.
+SHARED_EXTENDED = (False, True, True, True, True)
 #: Navigation columns, in the order the generated functions take them.
 NAV_COLUMNS = ("lat", "lon", "alt", "heading", "pitch", "roll")
 #: Standard deviation per axis (m) of a reference position when the table gives none.

@@ -104,6 +104,8 @@ class FleetFilter(Checkpoints):
             self.specs.channels,
             self.specs.prior,
             self.specs.extended_prior,
+            self.specs.eccentricity_prior,
+            self.specs.channel_of,
         )
         self.x, self.P = start_state(self.layout, prior)
         self.information = np.zeros((self.layout.n, self.layout.n))

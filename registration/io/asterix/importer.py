@@ -19,7 +19,7 @@ from registration.io.asterix.tables.assemble import FileRows, SiteLookup, assemb
 from registration.io.asterix.tables.duplicates import StreamChecks
 from registration.io.asterix.tables.fleetfiles import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
 from registration.io.asterix.tables.plots48 import file_kinds
-from registration.io.asterix.tables.sites import check_sites, read_sites
+from registration.io.asterix.tables.sites import PSR_SUFFIX, check_sites, read_sites
 from registration.io.asterix.tables.summary import (
     file_summary,
     sensor_summary,
@@ -258,8 +258,14 @@ def _build(
         {
             **{c: plots[c] for c in PLOT_COLUMNS},
             "kind": file_kinds(plots["kind"], plots["primary"]).astype(str),
+            "primary": np.asarray(plots["primary"], dtype=bool),  # sorted with the rows, then dropped
         }
     )
+    primary = plot_frame.pop("primary").to_numpy(bool)
+    if "psr_channel" in sites and primary.size:  # the radars' primary-only plots: their channels
+        own = sites["sensor"].astype(str).to_numpy()[sites["psr_channel"].astype(str).to_numpy() == "own"]
+        psr = primary & np.isin(plot_frame["sensor"].to_numpy(str), own)
+        plot_frame.loc[psr, "sensor"] = plot_frame.loc[psr, "sensor"].astype(str) + PSR_SUFFIX
     plot_frame["target"] = plot_frame["target"].astype(str)
     return AsterixImport(
         plots=plot_frame,

@@ -35,7 +35,7 @@ FILE_COLUMNS: dict[str, tuple[tuple[str, str, str, bool, tuple[float, float] | N
 MEASURED = ("range_m", "bearing_deg", "elevation_deg")
 #: Id columns of a table whose empty cells mean "no id" (not an error): a plot without a target id is
 #: associated (registration.fleet.association), one without a track id is tracked by the association.
-OPTIONAL_IDS = {"plots": ("target", "track", "kind"), "targets": ("name",)}
+OPTIONAL_IDS = {"plots": ("target", "track", "kind"), "targets": ("name",), "sensors": ("channel_of",)}
 
 
 def _read_frame(path: Path):
@@ -56,7 +56,14 @@ def _read_frame(path: Path):
             blocks = list(
                 read_csv_blocks(
                     path,
-                    dtype={"sensor": str, "platform": str, "target": str, "track": str, "kind": str},
+                    dtype={
+                        "sensor": str,
+                        "platform": str,
+                        "target": str,
+                        "track": str,
+                        "kind": str,
+                        "channel_of": str,
+                    },
                     nan_text=MEASURED,
                 )
             )

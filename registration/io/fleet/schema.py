@@ -133,8 +133,8 @@ FLEET_FILES = {
         True,
         f"one row per sensor; an empty sigma: the channel is not measured; bias priors ({_NO_PRIOR}); "
         "lever arm in the deck frame (starboard, bow, up; default 0); the extended errors "
-        "(prior_range_gain, prior_time_bias_s, prior_position_m) are modelled only when their column "
-        "is there",
+        "(prior_range_gain, prior_time_bias_s, prior_position_m, prior_eccentricity_deg) are modelled "
+        "only when their column is there",
         (
             _C("sensor", "sensor", "id", True, None, "the sensor's id"),
             _C("platform", "platform", "id", True, None, "the platform it is on (listed in navigation)"),
@@ -219,6 +219,25 @@ FLEET_FILES = {
                 False,
                 (0.0, math.inf),
                 "prior sigma of the position error, east, north and up; no column: not modelled",
+            ),
+            _C(
+                "prior_eccentricity_deg",
+                "prior_eccentricity",
+                "deg",
+                False,
+                (0.0, math.inf),
+                "prior sigma of the azimuth eccentricity a, b (bearing error a sin q + b cos q at the "
+                "measured bearing q), each; no column: not modelled",
+            ),
+            _C(
+                "channel_of",
+                "channel_of",
+                "id",
+                False,
+                None,
+                "the sensor this one is a channel of (a radar's primary-only plots): it shares that "
+                "sensor's platform, lever arm, position error, time bias and eccentricity, and has its "
+                "own biases and range gain; empty: none",
             ),
         ),
     ),

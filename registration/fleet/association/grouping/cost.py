@@ -128,10 +128,24 @@ def measurement_cost(
         nav, rate = tl.rep_nav[b].reshape(-1, 6), tl.rep_rate[b].reshape(-1, 6)
         gain, pos_err = xs[cols[6]], xs[cols[8:11]]  # range gain, position error (ENU); the time bias is in t
         nav_ports = dict(zip(NAV_COLUMNS, nav.T))
-        fit_ext = generated.fleet_residual_ext(
-            p_ecef=p, v_ecef=v, **nav_ports, nav_rate=rate, gain=gain, dt=0.0, pos_err=pos_err, **ports
-        )
-        res, J = fit_ext.residual, fit_ext.J
+        if cols.size > 11:  # and the eccentricity
+            fit_ecc = generated.fleet_residual_ecc(
+                p_ecef=p,
+                v_ecef=v,
+                **nav_ports,
+                nav_rate=rate,
+                gain=gain,
+                dt=0.0,
+                pos_err=pos_err,
+                ecc=np.tile(xs[cols[11:13]], (plot.size, 1)),
+                **ports,
+            )
+            res, J = fit_ecc.residual, fit_ecc.J
+        else:
+            fit_ext = generated.fleet_residual_ext(
+                p_ecef=p, v_ecef=v, **nav_ports, nav_rate=rate, gain=gain, dt=0.0, pos_err=pos_err, **ports
+            )
+            res, J = fit_ext.residual, fit_ext.J
     res, J = np.asarray(res).reshape(-1, 3), np.asarray(J).reshape(-1, 3, 3 + cols.size)
     res, J = np.where(mask, res, 0.0), np.where(mask[..., None], J, 0.0)
     W = np.concatenate([J[:, :, :3] @ basis, J[:, :, 3:]], axis=2).reshape(k_pairs, 9, N_LINE + cols.size)

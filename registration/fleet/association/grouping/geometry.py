@@ -127,6 +127,18 @@ def _positions(
         return p, np.asarray(J).reshape(-1, 3, 9)
     gain, pos_err = xs[cols[:, 6]], xs[cols[:, 8:11]]
     # the target velocity 0: the time bias's column is the platform's motion (module docstring)
+    if cols.shape[1] > 11:  # and the eccentricity
+        J = generated.fleet_residual_ecc(
+            p_ecef=p,
+            v_ecef=np.zeros(3),
+            nav_rate=rate,
+            gain=gain,
+            dt=0.0,
+            pos_err=pos_err,
+            ecc=xs[cols[:, 11:13]],
+            **ports,
+        ).J
+        return p, np.asarray(J).reshape(-1, 3, 16)
     J = generated.fleet_residual_ext(
         p_ecef=p, v_ecef=np.zeros(3), nav_rate=rate, gain=gain, dt=0.0, pos_err=pos_err, **ports
     ).J

@@ -143,8 +143,11 @@ def _residuals(problem: FleetProblem, x: np.ndarray, plots: np.ndarray, p: np.nd
         _, nav, rate = problem.seen(x, plots)
         gain, pos_err = xs[cols[:, 6]], xs[cols[:, 8:11]]
         nav_ports = dict(zip(NAV_COLUMNS, nav.T))
-        fit_ext = generated.fleet_residual_ext(
-            p_ecef=p, v_ecef=v, **nav_ports, nav_rate=rate, gain=gain, dt=0.0, pos_err=pos_err, **ports
+        ext = dict(v_ecef=v, nav_rate=rate, gain=gain, dt=0.0, pos_err=pos_err)
+        fit_ext = (
+            generated.fleet_residual_ecc(p_ecef=p, **nav_ports, **ext, ecc=xs[cols[:, 11:13]], **ports)
+            if cols.shape[1] > 11  # and the eccentricity
+            else generated.fleet_residual_ext(p_ecef=p, **nav_ports, **ext, **ports)
         )
         res, J = fit_ext.residual, fit_ext.J
     return np.asarray(res).reshape(-1, 3), np.asarray(J).reshape(-1, 3, 3 + cols.shape[1]), cols

@@ -123,7 +123,14 @@ def partition_problem(task: PartitionTask) -> FleetProblem | None:
 
     nav = navigation_at(tracks, platform_ids, specs.platform[sensor], time, describe)
     layout = make_layout(
-        platform_ids, platform_priors, specs.ids, specs.channels, specs.prior, specs.extended_prior
+        platform_ids,
+        platform_priors,
+        specs.ids,
+        specs.channels,
+        specs.prior,
+        specs.extended_prior,
+        specs.eccentricity_prior,
+        specs.channel_of,
     )
     return FleetProblem(
         platform_ids=tuple(platform_ids),
@@ -160,7 +167,14 @@ def archive_sensors(source) -> tuple:
     platform_ids, platform_priors = read_platforms(source.platforms, sensors_t.ids("platform"))
     specs = read_sensors(sensors_t, platform_ids)
     layout = make_layout(
-        platform_ids, platform_priors, specs.ids, specs.channels, specs.prior, specs.extended_prior
+        platform_ids,
+        platform_priors,
+        specs.ids,
+        specs.channels,
+        specs.prior,
+        specs.extended_prior,
+        specs.eccentricity_prior,
+        specs.channel_of,
     )
     return layout, tuple(platform_ids), tuple(specs.ids), specs.platform
 

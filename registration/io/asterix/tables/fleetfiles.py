@@ -7,6 +7,8 @@ its attitude held fixed unless SITES gives attitude priors.
   ``pitch_deg``, ``roll_deg``: one row per site (a fixed site), at any time of the span;
 * ``sensors``: ``sensor``, ``platform``, ``sigma_range_m``, ``sigma_bearing_deg`` (no elevation
   channel) and the prior columns SITES gives (:data:`~registration.io.asterix.tables.sites.SENSOR_PRIORS`);
+  a site with ``psr_channel`` ``own`` adds the row of its channel ``<sensor>.psr`` (same platform,
+  noise and priors; ``channel_of`` the site's sensor; the column only when some site has a channel);
 * ``platforms``: ``platform``, ``prior_heading_deg``, ``prior_pitch_deg``, ``prior_roll_deg``
   (SITES' values, an empty cell meaning no prior as in the fleet files; without the column 0:
   held fixed).
@@ -21,7 +23,7 @@ import numpy as np
 if TYPE_CHECKING:
     import pandas as pd
 
-from registration.io.asterix.tables.sites import PLATFORM_PRIORS, SENSOR_PRIORS
+from registration.io.asterix.tables.sites import PLATFORM_PRIORS, PSR_SUFFIX, SENSOR_PRIORS
 
 __all__ = ["PLOT_COLUMNS", "REFERENCE_COLUMNS", "site_tables"]
 
@@ -61,6 +63,15 @@ def site_tables(sites: pd.DataFrame, time_s: float) -> dict:
     for column in SENSOR_PRIORS:
         if column in sites:
             sensors[column] = sites[column].to_numpy(float)
+    own = (
+        sites["psr_channel"].astype(str).to_numpy() == "own" if "psr_channel" in sites else np.zeros(n, bool)
+    )
+    if own.any():
+        channels = sensors[own].copy()
+        channels["sensor"] = channels["sensor"] + PSR_SUFFIX
+        channels["channel_of"] = name[own]
+        sensors["channel_of"] = ""
+        sensors = pd.concat([sensors, channels], ignore_index=True)
     platforms = pd.DataFrame({"platform": name})
     for column in PLATFORM_PRIORS:
         platforms[column] = sites[column].to_numpy(float) if column in sites else np.zeros(n)

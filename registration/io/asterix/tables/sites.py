@@ -12,8 +12,15 @@ One row per sensor, columns (units in the names, degrees and metres as in the fl
 
 Optional (empty cell: no prior; ``inf``: no prior; 0: held fixed), passed on to the fleet
 sensors file: ``prior_range_bias_m``, ``prior_bearing_bias_deg``, ``prior_range_gain`` (at most
-0.1), ``prior_time_bias_s``, ``prior_position_m``; to the platforms file: ``prior_heading_deg``,
-``prior_pitch_deg``, ``prior_roll_deg`` (default 0: a surveyed site's attitude is held fixed).
+0.1), ``prior_time_bias_s``, ``prior_position_m``, ``prior_eccentricity_deg`` (the azimuth
+eccentricity's two terms); to the platforms file: ``prior_heading_deg``, ``prior_pitch_deg``,
+``prior_roll_deg`` (default 0: a surveyed site's attitude is held fixed).
+
+Optional ``psr_channel``: ``own`` makes the radar's primary-only plots (CAT048 I048/020 TYP 1,
+CAT001 I001/020 SSR/PSR 1) a sensor of their own, ``<sensor>.psr``, a channel of the radar
+(``channel_of`` in the sensors file: own range and bearing biases and range gain; the radar's
+position, clock and eccentricity); empty: one sensor for all plots. Any other value is an error
+naming the row and the column.
 """
 
 from __future__ import annotations
@@ -31,7 +38,15 @@ from registration.io.fleet.schema import HELD, held
 if TYPE_CHECKING:
     import pandas as pd
 
-__all__ = ["SITE_COLUMNS", "SENSOR_PRIORS", "PLATFORM_PRIORS", "read_sites", "check_sites"]
+__all__ = [
+    "SITE_COLUMNS",
+    "SENSOR_PRIORS",
+    "PLATFORM_PRIORS",
+    "PSR_CHANNEL_VALUES",
+    "PSR_SUFFIX",
+    "read_sites",
+    "check_sites",
+]
 
 #: Column -> (unit, low, high, low excluded, required).
 SITE_COLUMNS = {
@@ -48,6 +63,8 @@ SITE_COLUMNS = {
     "prior_range_gain": ("dimensionless", 0.0, 0.1, False, False),
     "prior_time_bias_s": ("s", 0.0, math.inf, False, False),
     "prior_position_m": ("m", 0.0, math.inf, False, False),
+    "prior_eccentricity_deg": ("deg", 0.0, math.inf, False, False),
+    "psr_channel": ("text", None, None, False, False),
     "prior_heading_deg": ("deg", 0.0, math.inf, False, False),
     "prior_pitch_deg": ("deg", 0.0, math.inf, False, False),
     "prior_roll_deg": ("deg", 0.0, math.inf, False, False),
@@ -59,7 +76,11 @@ SENSOR_PRIORS = (
     "prior_range_gain",
     "prior_time_bias_s",
     "prior_position_m",
+    "prior_eccentricity_deg",
 )
+#: The values of ``psr_channel`` (besides empty: none) and the suffix of a channel's sensor id.
+PSR_CHANNEL_VALUES = ("own",)
+PSR_SUFFIX = ".psr"
 #: Prior columns of the fleet platforms file (0 when SITES does not give them).
 PLATFORM_PRIORS = ("prior_heading_deg", "prior_pitch_deg", "prior_roll_deg")
 
@@ -155,15 +176,35 @@ def check_sites(frame: pd.DataFrame, source: str = "sites") -> pd.DataFrame:
                         f"{source}: row {r}, column 'sensor': empty; every site needs a sensor id"
                     )
             out[column] = names
+        elif column == "psr_channel":
+            out[column] = [_psr_channel(source, r, c) for r, c in enumerate(cells)]
         else:
             out[column] = [_number(source, r, column, c) for r, c in enumerate(cells)]
     _unique(source, out["sensor"], "sensor", "sensor")
     _unique(source, [f"{int(a)}/{int(b)}" for a, b in zip(out["sac"], out["sic"])], "sic", "SAC/SIC")
+    for r, (name, channel) in enumerate(zip(out["sensor"], out.get("psr_channel", [""] * len(frame)))):
+        if channel and name + PSR_SUFFIX in out["sensor"]:
+            raise ValueError(
+                f"{source}: row {r}, column 'psr_channel': the PSR channel's id {name + PSR_SUFFIX!r} is "
+                "also a sensor of SITES; rename that sensor"
+            )
     typed = pd.DataFrame(
         {c: np.asarray(v, dtype=np.int64 if c in ("sac", "sic") else None) for c, v in out.items()}
     )
     typed["sensor"] = typed["sensor"].astype(str)
     return typed
+
+
+def _psr_channel(source: str, r: int, cell: object) -> str:
+    """A ``psr_channel`` cell: '' (none) or one of PSR_CHANNEL_VALUES; ValueError naming the row."""
+    text = "" if cell is None or (isinstance(cell, float) and math.isnan(cell)) else str(cell).strip()
+    if text and text not in PSR_CHANNEL_VALUES:
+        raise ValueError(
+            f"{source}: row {r}, column 'psr_channel': {text!r} is not a PSR channel; expected "
+            f"{' or '.join(repr(v) for v in PSR_CHANNEL_VALUES)} (the radar's primary-only plots as a "
+            "sensor of their own) or empty (none)"
+        )
+    return text
 
 
 def _unique(source: str, values: list, column: str, what: str) -> None:
