@@ -30,6 +30,7 @@ from registration.io.asterix.errors import LEDGER_COLUMNS, REASONS
 from registration.io.asterix.tables.assemble import SiteLookup, assemble_file
 from registration.io.asterix.tables.duplicates import StreamChecks
 from registration.io.asterix.tables.fleetfiles import PLOT_COLUMNS, REFERENCE_COLUMNS
+from registration.io.asterix.tables.sites import channel_sensors
 from registration.io.asterix.tables.timeofday import Unwrapper
 from registration.io.files.ledger import RejectedLedger
 from registration.io.fleet.cells import FILE_COLUMNS
@@ -118,6 +119,7 @@ class AsterixStream:
         date: dt.date | None = None,
         name: str = "udp",
     ) -> None:
+        self.sites = sites
         self.names = sites["sensor"].astype(str).to_numpy()
         self.lookup = SiteLookup(sites["sac"].to_numpy(), sites["sic"].to_numpy())
         self.editions = check_editions(editions)
@@ -147,6 +149,8 @@ class AsterixStream:
             {k: rows.plots[k] for k in PLOT_COLUMNS} if rows.plots else {k: np.zeros(0) for k in PLOT_COLUMNS}
         )
         file_plots["target"] = file_plots["target"].astype(str)
+        if rows.plots:  # the primary-only plots of radars whose PSR channel is its own sensor
+            file_plots["sensor"] = channel_sensors(self.sites, file_plots["sensor"], rows.plots["primary"])
         n = int(file_plots["time_s"].size)
         c.plots += n
         if n:

@@ -124,3 +124,30 @@ def test_a_saved_state_restores_the_same_estimates(tmp_path):
     (tmp_path / STATE_FILE).symlink_to(tmp_path / "elsewhere")
     with pytest.raises(StateError, match="symbolic link"):
         load_state(tmp_path, LiveEstimator(sites))
+
+
+def test_a_radar_with_its_own_psr_channel_streams_two_sensors_and_cat063_carries_both():
+    from asterix.base import Bits, RawDatablock
+    from asterix.generated import Cat_063_1_7
+
+    from registration.io.asterix.tables.sites import read_sites
+    from registration.live.outputs import cat063_message
+
+    sites = read_sites(SAMPLES / "SITES.csv")
+    sites["psr_channel"] = ["own", "", ""]
+    stream, est = AsterixStream(sites), LiveEstimator(sites)
+    payloads = datagrams(SAMPLES / "atc.pcap.gz")
+    batch = stream.decode(payloads, [1] * len(payloads))
+    result = import_asterix(SAMPLES / "atc.pcap.gz", sites)
+    assert sorted(batch.file_plots["sensor"].tolist()) == sorted(result.plots["sensor"].tolist())
+    assert (batch.file_plots["sensor"] == "R1.psr").sum() > 0
+    assert "R1.psr:bearing_bias" in est.layout.names
+    est.feed(batch)
+    values = est.values()
+    values["R1.psr"] = {"range_bias": 100.0, "bearing_bias": 0.001, "range_gain": 2e-4}
+    message = cat063_message(values, {"R1": (30, 1), "R2": (30, 2)}, 36000.0, (25, 200))
+    records = Cat_063_1_7.cv_uap.parse(RawDatablock.parse(Bits.from_bytes(message))[0].get_raw_records())
+    first = records[0].items_regular
+    assert "090" in first and "091" in first and "090" not in records[1].items_regular
+    raw = int.from_bytes(first["091"].unparse().to_bytes(), "big", signed=True)
+    assert abs(raw * 360.0 / 65536.0 - np.degrees(0.001)) <= 360.0 / 65536.0 / 2

@@ -19,7 +19,7 @@ from registration.io.asterix.tables.assemble import FileRows, SiteLookup, assemb
 from registration.io.asterix.tables.duplicates import StreamChecks
 from registration.io.asterix.tables.fleetfiles import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
 from registration.io.asterix.tables.plots48 import file_kinds
-from registration.io.asterix.tables.sites import PSR_SUFFIX, check_sites, read_sites
+from registration.io.asterix.tables.sites import channel_sensors, check_sites, read_sites
 from registration.io.asterix.tables.summary import (
     file_summary,
     sensor_summary,
@@ -262,10 +262,7 @@ def _build(
         }
     )
     primary = plot_frame.pop("primary").to_numpy(bool)
-    if "psr_channel" in sites and primary.size:  # the radars' primary-only plots: their channels
-        own = sites["sensor"].astype(str).to_numpy()[sites["psr_channel"].astype(str).to_numpy() == "own"]
-        psr = primary & np.isin(plot_frame["sensor"].to_numpy(str), own)
-        plot_frame.loc[psr, "sensor"] = plot_frame.loc[psr, "sensor"].astype(str) + PSR_SUFFIX
+    plot_frame["sensor"] = channel_sensors(sites, plot_frame["sensor"].to_numpy(), primary)
     plot_frame["target"] = plot_frame["target"].astype(str)
     return AsterixImport(
         plots=plot_frame,

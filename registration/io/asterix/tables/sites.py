@@ -44,6 +44,7 @@ __all__ = [
     "PLATFORM_PRIORS",
     "PSR_CHANNEL_VALUES",
     "PSR_SUFFIX",
+    "channel_sensors",
     "read_sites",
     "check_sites",
 ]
@@ -216,3 +217,14 @@ def _unique(source: str, values: list, column: str, what: str) -> None:
                 "each must be unique"
             )
         seen[v] = r
+
+
+def channel_sensors(sites: pd.DataFrame, sensor: np.ndarray, primary: np.ndarray) -> np.ndarray:
+    """The plots' sensor ids (S,) with the primary-only plots (``primary`` (S,) bool) of the radars
+    whose ``psr_channel`` is ``own`` moved to their channel ``<sensor>.psr``."""
+    sensor = np.asarray(sensor).astype(str)
+    if "psr_channel" not in sites or sensor.size == 0:
+        return sensor
+    own = sites["sensor"].astype(str).to_numpy()[sites["psr_channel"].astype(str).to_numpy() == "own"]
+    psr = np.asarray(primary, dtype=bool) & np.isin(sensor, own)
+    return np.where(psr, np.char.add(sensor, PSR_SUFFIX), sensor)
