@@ -175,17 +175,26 @@ def run_register(args: argparse.Namespace) -> int:
 
     check_period_options(args, archive_requested(args))
     if archive_requested(args):
+        if getattr(args, "cat063", None) is not None:
+            raise ValueError("--cat063: not with an archive read by parts (--partition-s, --workers)")
         return run_archive(args)
+    from registration.cli.fleet.cat063 import cat063_sources, write_cat063
+
+    sources = cat063_sources(args)  # before the solve: a missing summary is found at once
     out = prepare_out(args.out)
     with opened_tables(args, out) as tables:
         with staged_outputs(out, "registration fleet register", REGISTER_OUTPUTS) as folder:
-            result, written = _register_into(folder.path, args, tables)
-    print("\nwrote " + ", ".join(str(folder.final(p)) for p in written))
+            result, written, t_end = _register_into(folder.path, args, tables)
+    finals = [folder.final(p) for p in written]
+    if sources is not None:
+        finals.append(write_cat063(args.cat063, result, sources, t_end, (25, 200)))
+    print("\nwrote " + ", ".join(str(p) for p in finals))
     return gate("registration fleet register", result, args.allow_inconsistent)
 
 
 def _register_into(path: Path, args: argparse.Namespace, tables):
-    """Register the tables, print the report and write the outputs into ``path``: (result, files)."""
+    """Register the tables, print the report and write the outputs into ``path``: (result, files,
+    the time of the last plot used, s)."""
     from registration.cli.fleet.association import association_summary, online_note
     from registration.cli.fleet.diagnostics import kinds_by_row
     from registration.cli.fleet.output import print_report, redundancy_check, write_outputs
@@ -236,7 +245,7 @@ def _register_into(path: Path, args: argparse.Namespace, tables):
         written.append(write_rejected(path, tables.rejected_frame()))
     if association is not None:
         written.append(_write_associations(path, tables, association))
-    return result, written
+    return result, written, float(np.max(problem.time))
 
 
 def run(args: argparse.Namespace) -> int:

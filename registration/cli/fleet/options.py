@@ -127,6 +127,13 @@ def _add_register(reg: argparse.ArgumentParser) -> None:
 
     _add_tables(reg)
     reg.add_argument(
+        "--cat063",
+        type=Path,
+        metavar="FILE.ast",
+        help="also write the estimates as ASTERIX CAT063 sensor status messages (one record per radar, "
+        "SAC/SIC 25/200 as sender; the radars' SAC/SIC from the import_summary.json of --tables DIR)",
+    )
+    reg.add_argument(
         "--window-s",
         type=float,
         default=20.0,

@@ -27,13 +27,14 @@ can hold is a ValueError naming the sensor and the item.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import TypeGuard
 
 from registration.io.asterix.encode.blocks import data_blocks, fspec, signed_item, unsigned_item
+from registration.io.asterix.tables.sites import PSR_SUFFIX
 
-__all__ = ["CAT063_EDITIONS", "NM_M", "SensorStatus", "encode_cat063", "status_record"]
+__all__ = ["CAT063_EDITIONS", "NM_M", "SensorStatus", "encode_cat063", "estimates_cat063", "status_record"]
 
 #: The editions whose layout of these items this encoder writes (identical for the items used).
 CAT063_EDITIONS = ("1.6", "1.7")
@@ -124,3 +125,38 @@ def status_record(status: SensorStatus, sac: int, sic: int, service_id: int = 1)
 def encode_cat063(statuses: Sequence[SensorStatus], sac: int, sic: int, service_id: int = 1) -> bytes:
     """CAT063 data blocks holding one record per status, sent by the service ``sac``/``sic``."""
     return data_blocks(63, [status_record(s, sac, sic, service_id) for s in statuses])
+
+
+def estimates_cat063(
+    estimates: Mapping[str, Mapping[str, float]],
+    sources: Mapping[str, tuple[int, int]],
+    time_of_day_s: float,
+    service: tuple[int, int],
+    silent: frozenset[str] = frozenset(),
+) -> bytes:
+    """CAT063 data blocks, one record per sensor of ``sources`` (sensor -> SAC/SIC) with its
+    estimates (``estimates``: sensor -> state -> value, SI: ``range_bias``, ``range_gain``,
+    ``bearing_bias``, ``time_bias``; those of ``<sensor>.psr``, its PSR channel, in I063/090 and
+    091) at ``time_of_day_s`` (s since midnight UTC); ``silent`` sensors are reported ``not
+    connected``, the others operational. ``service``: the SAC/SIC of the sender."""
+    statuses = []
+    for name, (sac, sic) in sources.items():
+        v = estimates.get(name, {})
+        psr = estimates.get(name + PSR_SUFFIX, {})  # its PSR channel, when it is a sensor of its own
+        statuses.append(
+            SensorStatus(
+                name=name,
+                sac=sac,
+                sic=sic,
+                time_of_day_s=time_of_day_s % 86400.0,
+                state="not_connected" if name in silent else "operational",
+                time_bias_s=v.get("time_bias"),
+                ssr_range_gain=v.get("range_gain"),
+                ssr_range_bias_m=v.get("range_bias"),
+                ssr_azimuth_bias_rad=v.get("bearing_bias"),
+                psr_range_gain=psr.get("range_gain"),
+                psr_range_bias_m=psr.get("range_bias"),
+                psr_azimuth_bias_rad=psr.get("bearing_bias"),
+            )
+        )
+    return encode_cat063(statuses, *service)
