@@ -10,7 +10,8 @@ from pathlib import Path
 
 from registration.cli import build_parser
 from registration.io.fleet.cells import FILE_COLUMNS
-from registration.io.fleet.schema import FLEET_FILES, option_help, schema_markdown
+from registration.io.fleet.schema import FLEET_FILES
+from registration.io.fleet.schemadoc import option_help, schema_markdown
 
 PAGE = Path(__file__).resolve().parents[2] / "docs" / "reference" / "fleet-tables.md"
 

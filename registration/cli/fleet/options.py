@@ -12,7 +12,7 @@ from pathlib import Path
 from registration.cli.errors import EXIT_CODES_EPILOG, add_allow_inconsistent
 from registration.cli.options import HelpFormatter, add_no_plots, add_out, add_seed
 from registration.io.fleet.folder import TABLE_NAMES
-from registration.io.fleet.schema import option_help
+from registration.io.fleet.schemadoc import option_help
 
 __all__ = ["REGISTER_HELP", "SIMULATE_HELP", "add_arguments"]
 

@@ -2,7 +2,7 @@
 (:func:`registration.io.fleet.schema.schema_markdown`), as docs/reference/fleet-tables.md holds it:
 ``python -m registration.io.fleet > docs/reference/fleet-tables.md``."""
 
-from registration.io.fleet.schema import schema_markdown
+from registration.io.fleet.schemadoc import schema_markdown
 
 __all__: list[str] = []
 
