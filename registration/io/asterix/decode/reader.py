@@ -25,6 +25,7 @@ from registration.io.asterix.decode.decode34 import WANTED as WANTED034
 from registration.io.asterix.decode.decode34 import decode034
 from registration.io.asterix.decode.decode48 import WANTED as WANTED048
 from registration.io.asterix.decode.decode48 import decode048
+from registration.io.asterix.decode.digest import record_digests
 from registration.io.asterix.decode.scalar import explain_record
 from registration.io.asterix.decode.uap import DEFAULT_EDITIONS, check_editions, uap_for
 from registration.io.asterix.decode.walker import Records, walk_records
@@ -187,11 +188,7 @@ def _walk_category(
                 category=cat,
             )
         seg = blocks.segment[idx[rec.block]]
-        digest = np.fromiter(
-            (hash(mv[a:b].tobytes()) for a, b in zip(rec.start.tolist(), rec.end.tolist())),
-            dtype=np.int64,
-            count=rec.start.size,
-        )
+        digest = record_digests(cap.buf, rec.start, rec.end)
         parts.append(
             (
                 _decode(cat, edition, cap.buf, rec),
