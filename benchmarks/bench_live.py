@@ -20,8 +20,11 @@ duplicates, counted and set aside). Parts:
    time, beside the replay's own rate;
 2. **lag at 20x**: the sample replayed at 20x; ``/api/status`` polled every 50 ms; the lag is the
    data time sent minus the data time the service shows, in wall seconds;
-3. **memory**: the service's resident memory at 1 h, 12 h and 24 h of data time (the day sent at
-   full speed);
+3. **memory**: the service's resident memory at 1 h, 12 h and 24 h of data time, a day of held-out
+   ATC traffic (``atc_truth``: the same three radars' errors all day, other aircraft every hour,
+   across midnight, written by libasterix; about 45 s of encoding per hour, kept with ``--cache``)
+   replayed at 150x, with the plots the estimator found late and the alarms it raised (none is
+   due: nothing changes);
 4. **live against batch**: per held-out seed, each live estimate's distance to ``fleet register``'s
    in batch σ, and the ratio of the σ.
 """
@@ -29,12 +32,15 @@ duplicates, counted and set aside). Parts:
 from __future__ import annotations
 
 import argparse
+import json
+import math
 import subprocess
 import sys
 import tempfile
 import time
 from pathlib import Path
 
+import numpy as np
 from common import ROOT, add_arguments, write
 
 from registration.io.asterix.encode import PlotCorrection, correct_cat048
@@ -46,6 +52,8 @@ SAMPLE_S = 300.0
 SOURCES = [(30, 1), (30, 2), (30, 3)]
 #: The service's answers are rebuilt every 0.25 s: no time is measured finer than that.
 POLL_RESOLUTION_S = 0.25
+#: The day of the memory part starts at 12:00 UTC: it crosses midnight.
+DAY_START_S = 43200.0
 
 
 def _day(folder: Path, repeats: int) -> tuple[Path, int, int]:
@@ -60,6 +68,35 @@ def _day(folder: Path, repeats: int) -> tuple[Path, int, int]:
     path = folder / "day.pcap"
     path.write_bytes(pcap_bytes(frames, times))
     return path, len(frames), 3692 * repeats
+
+
+def _atc_day(folder: Path, hours: float, cache: Path | None) -> tuple[Path, Path, int, int]:
+    """A day of ATC traffic from 12:00 UTC, hour after hour: (pcap, SITES.csv, datagrams, plots)."""
+    from tests.io.asterix.atc import atc_truth, encode_atc
+
+    where = cache or folder
+    where.mkdir(parents=True, exist_ok=True)
+    pieces, n_datagrams, n_plots = [], 0, 0
+    for k in range(math.ceil(hours)):
+        duration = min(3600.0, hours * 3600.0 - k * 3600.0)
+        path = where / f"atc_hour{k:02d}_{duration:g}s.pcap"
+        counts = path.with_suffix(".json")
+        if not (path.exists() and counts.exists()):
+            s = atc_truth(seed=1000 + k, duration_s=duration, t0=DAY_START_S + 3600.0 * k, errors_seed=7)
+            # other aircraft every hour: other addresses and Mode 3/A codes
+            s.plots["address"] = s.plots["address"] + 0x10000 * k
+            s.plots["mode_a"] = np.where(s.plots["mode_a"] >= 0, s.plots["mode_a"] + 0o100 * k, -1)
+            s.adsb["address"] = s.adsb["address"] + 0x10000 * k
+            path.write_bytes(encode_atc(s.plots, s.adsb, s.sites, s.date, s.scans).pcap())
+            counts.write_text(json.dumps({"plots": len(s.plots["time_s"])}))
+            s.sites.to_csv(where / "SITES.csv", index=False)
+        data = path.read_bytes()
+        pieces.append(data if not pieces else data[24:])  # one pcap: the later global headers dropped
+        n_datagrams += len(datagrams(path))
+        n_plots += json.loads(counts.read_text())["plots"]
+    out = folder / "atc_day.pcap"
+    out.write_bytes(b"".join(pieces))
+    return out, where / "SITES.csv", n_datagrams, n_plots
 
 
 def _replay(path: Path, port: int, speed: str) -> subprocess.Popen:
@@ -119,11 +156,11 @@ def ingest(folder: Path, hours: float) -> dict:
     }
 
 
-def memory(folder: Path, hours: float, speed: float) -> dict:
+def memory(folder: Path, hours: float, speed: float, cache: Path | None) -> dict:
     """The resident memory at 1 h, 12 h and 24 h of data time, the day replayed at ``speed``."""
-    path, n_datagrams, n_plots = _day(folder, max(int(round(hours * 3600 / SAMPLE_S)), 1))
+    path, sites, n_datagrams, n_plots = _atc_day(folder, hours, cache)
     marks: dict = {h * 3600.0: None for h in (1.0, 12.0, 24.0) if h <= hours}
-    with serving("--date", "2024-05-01") as svc:
+    with serving("--date", "2024-05-01", sites=sites) as svc:
         done = _until_done(svc, _replay(path, svc.input_port, f"{speed:g}"), n_datagrams, n_plots, marks)
         svc.stop()
     s = done["status"]
@@ -131,8 +168,10 @@ def memory(folder: Path, hours: float, speed: float) -> dict:
         "rss_bytes_at_data_h": {f"{m / 3600:g}": v for m, v in marks.items()},
         "plots": s["ingest"]["plots"],
         "epochs": s["epochs"],
+        "plots_sent": n_plots,
         "late_plots": s["ingest"]["late_plots"],
         "alarms": len(s["alarms"]),
+        "alarm_list": s["alarms"][:20],
         "speed": speed,
     }
 
@@ -160,7 +199,6 @@ def lag_at_20x(speed: float = 20.0) -> dict:
 
 
 def against_batch(folder: Path, seeds: list[int], duration_s: float) -> dict:
-    import numpy as np
     import pandas as pd
 
     from registration.live.estimator import LiveEstimator
@@ -216,11 +254,12 @@ def main(argv=None) -> None:
     ap.add_argument("--hours", type=float, default=24.0, help="hours of data, memory part (default 24)")
     ap.add_argument("--memory-speed", type=float, default=150.0, help="its replay speed (default 150)")
     ap.add_argument("--ingest-hours", type=float, default=2.0, help="hours sent at full speed (default 2)")
+    ap.add_argument("--cache", type=Path, help="keep the day's hourly recordings here and reuse them")
     ap.add_argument("--seeds", type=int, default=3, help="held-out seeds against the batch run (default 3)")
     add_arguments(ap)
     args = ap.parse_args(argv)
     if args.tiny:
-        args.hours, args.seeds, args.ingest_hours, args.memory_speed = 0.25, 1, 0.1, 400.0
+        args.hours, args.seeds, args.ingest_hours, args.memory_speed = 0.05, 1, 0.1, 400.0
     with tempfile.TemporaryDirectory() as temp:
         folder = Path(temp)
         flow = ingest(folder, args.ingest_hours)
@@ -235,11 +274,14 @@ def main(argv=None) -> None:
             f"lag at 20x: median {lag['median_s']:.2f} s, max {lag['max_s']:.2f} s of wall time "
             f"({lag['polls']} polls)"
         )
-        mem = memory(folder, args.hours, args.memory_speed)
+        mem = memory(folder, args.hours, args.memory_speed, args.cache)
         rss = ", ".join(
             f"{h} h {v / 2**20:.0f} MiB" if v else f"{h} h -" for h, v in mem["rss_bytes_at_data_h"].items()
         )
-        print(f"resident memory at data time {rss} ({mem['plots']} plots at {mem['speed']:g}x)")
+        print(
+            f"resident memory at data time {rss} ({mem['plots']} of {mem['plots_sent']} plots at "
+            f"{mem['speed']:g}x; {mem['late_plots']} late, {mem['alarms']} alarms)"
+        )
         seeds = list(range(101, 101 + args.seeds))
         print("live against fleet register (held-out simulations):")
         batch = against_batch(folder, seeds, 120.0 if args.tiny else 900.0)

@@ -195,10 +195,12 @@ def atc_truth(
     t0: float = 36000.0,
     n_aircraft: int = 20,
     date: dt.date = dt.date(2024, 5, 1),
+    errors_seed: int | None = None,
 ) -> AtcTruth:
     """A simulated scenario; aircraft 0-13 are Mode S (0-11 with ADS-B at 1 Hz, NACp 8-10), 14-16
     Mode A/C only, the rest primary only. Errors of random sign: range bias 80-200 m, gain 200-600
-    ppm, azimuth bias 0.15-0.4 deg, clock offset 0.3-1.0 s."""
+    ppm, azimuth bias 0.15-0.4 deg, clock offset 0.3-1.0 s, drawn from ``seed`` or, when given,
+    from ``errors_seed`` (the same radars' errors under other traffic)."""
     from registration.core.frames import enu2ecef_rotation
 
     rng = np.random.default_rng(seed)
@@ -208,14 +210,15 @@ def atc_truth(
     tracks = [lambda t, j=j: origin + R @ (start[j] + v[j] * (t - t0)) for j in range(n_aircraft)]
     tracks = np.array(tracks, dtype=object)
     truth, plots, scans = {}, [], {}
-    sign = lambda: rng.choice([-1.0, 1.0])  # noqa: E731
+    erng = rng if errors_seed is None else np.random.default_rng(errors_seed)
+    sign = lambda: erng.choice([-1.0, 1.0])  # noqa: E731
     for name, site in zip(RADAR_LAYOUT, sites.itertuples()):
         errors = {
-            "range_bias": sign() * rng.uniform(80, 200),
-            "range_gain": sign() * rng.uniform(200e-6, 600e-6),
-            "bearing_bias": np.radians(sign() * rng.uniform(0.15, 0.4)),
-            "time_bias": sign() * rng.uniform(0.3, 1.0),
-            "phase": rng.uniform(0, RADAR_LAYOUT[name][5]),
+            "range_bias": sign() * erng.uniform(80, 200),
+            "range_gain": sign() * erng.uniform(200e-6, 600e-6),
+            "bearing_bias": np.radians(sign() * erng.uniform(0.15, 0.4)),
+            "time_bias": sign() * erng.uniform(0.3, 1.0),
+            "phase": erng.uniform(0, RADAR_LAYOUT[name][5]),
         }
         truth.update(
             {f"{name}:{k}": errors[k] for k in ("range_bias", "range_gain", "bearing_bias", "time_bias")}
