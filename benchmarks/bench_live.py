@@ -105,8 +105,8 @@ def _replay(path: Path, port: int, speed: str) -> subprocess.Popen:
 
 
 def _until_done(svc, rep: subprocess.Popen, n_datagrams: int, n_plots: int, marks: dict) -> dict:
-    """Poll the service until every datagram sent is imported and estimated (or the replay ended
-    and nothing moved for 1 s); fills ``marks`` (data hours -> RSS) on the way."""
+    """Poll the service until every datagram sent is imported and estimated (or the replay ended,
+    nothing waits and nothing moved for 1 s); fills ``marks`` (data hours -> RSS) on the way."""
     t0, t_first, imported, first, last = time.monotonic(), None, None, None, None
     while True:
         s = svc.get("/api/status")
@@ -123,7 +123,8 @@ def _until_done(svc, rep: subprocess.Popen, n_datagrams: int, n_plots: int, mark
             if s["ingest"]["backlog_plots"] == 0:
                 break
         moved = (s["ingest"], s["epochs"])
-        if rep.poll() is not None and moved == last:  # the replay ended and nothing moved for 1 s
+        idle = s["ingest"]["waiting_datagrams"] == 0 and s["ingest"]["backlog_plots"] == 0
+        if rep.poll() is not None and idle and moved == last:  # replay ended, nothing waits or moved for 1 s
             break
         last = moved if rep.poll() is not None else None
         time.sleep(1.0 if rep.poll() is not None else 0.1)

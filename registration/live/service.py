@@ -2,7 +2,7 @@
 
 Threads: one receives the UDP datagrams of every ``--asterix`` input into a list (nothing else, so
 that the sockets are drained while the rest works; large receive buffers take the bursts); the HTTP
-server answers from the latest snapshot; the main thread runs rounds every ``tick_s``: it takes the
+server answers from the latest snapshot; the main thread runs rounds every ``tick_s`` (back to back while work waits): it takes the
 datagrams received, imports them (:class:`~registration.live.ingest.AsterixStream`), sends the
 corrected plots on, feeds the estimator (:class:`~registration.live.estimator.LiveEstimator`),
 sends CAT063 every ``cat063_period_s``, writes the state every ``checkpoint_s`` and builds the next
@@ -168,7 +168,7 @@ class Service:
         next_063 = next_checkpoint = time.monotonic()
         next_checkpoint += self.config.checkpoint_s
         try:
-            while not self.stop.wait(self.config.tick_s):
+            while not self.stop.wait(0.0 if self.busy() else self.config.tick_s):
                 self.round()
                 now = time.monotonic()
                 if self.config.cat063 is not None and now >= next_063:
@@ -185,6 +185,11 @@ class Service:
             self.close()
         self.log("stopped")
         return 0
+
+    def busy(self) -> bool:
+        """Work is waiting (plots in the backlog, or a quarter of a round's datagrams): the next
+        round starts at once instead of after ``tick_s``."""
+        return bool(self.backlog) or self.receiver.waiting() >= ROUND_DATAGRAMS // 4
 
     def round(self) -> None:
         """Import what was received, send the corrected plots, estimate, and publish a snapshot."""

@@ -49,11 +49,16 @@ class Running:
             body = r.read()
         return json.loads(body) if r.headers.get_content_type() == "application/json" else body.decode()
 
-    def wait_for_plots(self, n: int, timeout_s: float = 30.0) -> dict:
+    def wait_for_plots(self, n: int, timeout_s: float = 60.0) -> dict:
+        """The status once ``n`` plots are imported and every one of them estimated (nothing waits:
+        no datagram, no plot in the backlog; on a loaded machine the estimator may trail the
+        import by seconds), or at ``timeout_s``."""
         deadline = time.monotonic() + timeout_s
         while True:
             status = self.get("/api/status")
-            if status["ingest"]["plots"] >= n or time.monotonic() > deadline:
+            ingest = status["ingest"]
+            done = ingest["plots"] >= n and ingest["backlog_plots"] == 0 and ingest["waiting_datagrams"] == 0
+            if done or time.monotonic() > deadline:
                 return status
             time.sleep(0.2)
 

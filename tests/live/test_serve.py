@@ -43,7 +43,7 @@ def run(tmp_path_factory, expected):
     with serving(*options, "--state", str(state), "--date", "2024-05-01") as svc:
         svc.send(datagrams(SAMPLES / "atc.pcap.gz"))
         status = svc.wait_for_plots(expected["plots"])
-        time.sleep(1.0)  # the last round done: nothing changes from here on
+        time.sleep(1.0)  # every plot estimated, the last snapshot built: nothing changes from here on
         estimates = svc.get("/api/estimates")
         messages = []
         deadline = time.monotonic() + 3.0
