@@ -42,7 +42,14 @@ from registration.io.nmea.ttm import read_ttm
 if TYPE_CHECKING:
     import pandas as pd
 
-__all__ = ["NmeaImport", "import_nmea", "USED_TYPES", "PLATFORM_PRIOR_COLUMNS"]
+__all__ = [
+    "NmeaImport",
+    "import_nmea",
+    "read_sentences",
+    "platforms_table",
+    "USED_TYPES",
+    "PLATFORM_PRIOR_COLUMNS",
+]
 
 #: The sentence types the reader uses.
 USED_TYPES = ("GGA", "GNS", "RMC", "ZDA", "HDT", "THS", "PASHR", "TTM", "VDM", "VDO")
@@ -108,7 +115,9 @@ def _sensors_table(sensors: pd.DataFrame | str | Path, platform: str) -> pd.Data
     return platform_sensors(table, platform, source)
 
 
-def _platforms_table(platform: str, priors: Mapping[str, float] | None) -> pd.DataFrame:
+def platforms_table(platform: str, priors: Mapping[str, float] | None) -> pd.DataFrame:
+    """The platforms table (file columns) of ``platform`` with its attitude prior sigmas (deg by
+    column of :data:`PLATFORM_PRIOR_COLUMNS`; missing or None: free); ValueError naming the key."""
     import pandas as pd
 
     priors = dict(priors or {})
@@ -202,39 +211,59 @@ def import_nmea(
     platform = str(platform)
     sensor_rows = _sensors_table(sensors, platform)
     talkers, only = talker_map(sensor_rows)
-    platforms = _platforms_table(platform, platform_priors)
-    sigmas = ais_sigmas if ais_sigmas is not None else AisSigmas()
+    platforms = platforms_table(platform, platform_priors)
     paths = [paths] if isinstance(paths, (str, Path)) else list(paths)
     if not paths:
         raise ValueError("paths: no log file given")
     rejections = _ledger(paths, max_bytes, max_rejected_rows)
     with _naming_the_log(paths):
         log = read_log(paths, rejections, progress, max_bytes)
-        log, duplicates = (log, 0) if keep_duplicates else drop_duplicates(log, rejections)
-        not_used = _sort_types(log, rejections)
-        fixes, dates = read_fixes(log, rejections)
-        attitudes = {
-            "PASHR": read_pashr(log, rejections, pashr_angles),
-            "HDT": read_headings(log, "HDT", rejections),
-            "THS": read_headings(log, "THS", rejections),
-        }
-        clock = fit_clock(*_anchors(fixes, dates, attitudes["PASHR"]), dates, date, log.received)
-        nav = build_navigation(log, clock, fixes, attitudes, rejections)
-        plots = read_ttm(log, clock, nav, talkers, only, keep_acquiring, rejections)
-        messages = read_ais(log, rejections)
-        refs = read_references(log, messages, clock, nav.sea_level, sigmas, rejections)
-        summary = build_summary(
-            ImportParts(log, clock, nav, plots, refs, rejections, not_used, len(messages))
+        parts, duplicates = read_sentences(
+            log, rejections, talkers, only, date, keep_acquiring, ais_sigmas, pashr_angles, keep_duplicates
         )
+        summary = build_summary(parts)
         if duplicates:
             summary["duplicates"] = {"sentences": duplicates}
         return NmeaImport(
-            plots=plots.frame(),
-            navigation=nav.frame(platform),
+            plots=parts.plots.frame(),
+            navigation=parts.navigation.frame(platform),
             sensors=sensor_rows.drop(columns=[TALKER_COLUMN], errors="ignore"),
             platforms=platforms,
-            reference=refs.frame(),
+            reference=parts.references.frame(),
             rejected=rejections.frame(),
             summary=summary,
-            targets=refs.targets_frame(),
+            targets=parts.references.targets_frame(),
         )
+
+
+def read_sentences(
+    log: SentenceLog,
+    rejections: RejectedLedger,
+    talkers: dict[str, str],
+    only: str | None,
+    date=None,
+    keep_acquiring: bool = False,
+    sigmas: AisSigmas | None = None,
+    pashr_angles: str = "tait-bryan",
+    keep_duplicates: bool = False,
+) -> tuple[ImportParts, int]:
+    """The import of the sentences of ``log`` (the steps of :func:`import_nmea` after reading the
+    lines; the live service runs them on each piece of a stream): (the parts, the number of
+    duplicate sentences set aside). ``talkers``, ``only``: :func:`~registration.io.nmea.sensors.talker_map`
+    of the platform's sensors; the other arguments as :func:`import_nmea`'s.
+    :class:`~registration.io.nmea.errors.NmeaImportError` without a valid position or heading."""
+    sigmas = sigmas if sigmas is not None else AisSigmas()
+    log, duplicates = (log, 0) if keep_duplicates else drop_duplicates(log, rejections)
+    not_used = _sort_types(log, rejections)
+    fixes, dates = read_fixes(log, rejections)
+    attitudes = {
+        "PASHR": read_pashr(log, rejections, pashr_angles),
+        "HDT": read_headings(log, "HDT", rejections),
+        "THS": read_headings(log, "THS", rejections),
+    }
+    clock = fit_clock(*_anchors(fixes, dates, attitudes["PASHR"]), dates, date, log.received)
+    nav = build_navigation(log, clock, fixes, attitudes, rejections)
+    plots = read_ttm(log, clock, nav, talkers, only, keep_acquiring, rejections)
+    messages = read_ais(log, rejections)
+    refs = read_references(log, messages, clock, nav.sea_level, sigmas, rejections)
+    return ImportParts(log, clock, nav, plots, refs, rejections, not_used, len(messages)), duplicates

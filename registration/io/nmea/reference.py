@@ -86,7 +86,8 @@ class References:
     (inf: AIS gives no height); ``vessels``: MMSI -> what the log says of it (name, call sign, class,
     positions); ``own``: the own ship's MMSIs and its ``!AIVDO`` messages per type; ``sea_level``: the
     ellipsoid height (m) of mean sea level; ``surface_sigma``: the sigma (m) of a vessel's height
-    about it."""
+    about it; ``index`` (K,) the position in the :class:`~registration.io.nmea.lines.SentenceLog`
+    of each report's first sentence."""
 
     time: np.ndarray
     target: np.ndarray
@@ -99,6 +100,7 @@ class References:
     own: dict
     sea_level: float = 0.0
     surface_sigma: float = 10.0
+    index: np.ndarray | None = None
 
     def frame(self) -> pd.DataFrame:
         """The reference file table: ``time_s``, ``target``, ``lat_deg``, ``lon_deg``, ``alt_m``, ``sigma_m``,
@@ -283,4 +285,5 @@ def read_references(
         own,
         float(sea_level),
         float(sigmas.height_m),
+        first[keep],
     )

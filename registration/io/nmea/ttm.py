@@ -57,7 +57,8 @@ DISTANCE_UNITS_M = {"N": 1852.0, "K": 1000.0, "S": 1609.344}
 class Plots:
     """TTM plots (K,): ``time`` s, ``sensor``, ``track`` (ids), ``range`` m, ``bearing`` rad (deck,
     (-pi, pi]); ``reference`` (K,) the TTM's bearing reference (T or R); ``unit`` (K,) its distance
-    unit letter; ``status`` (K,) T or Q."""
+    unit letter; ``status`` (K,) T or Q; ``index`` (K,) the TTM's position in the
+    :class:`~registration.io.nmea.lines.SentenceLog`."""
 
     time: np.ndarray
     sensor: np.ndarray
@@ -67,6 +68,7 @@ class Plots:
     reference: np.ndarray
     unit: np.ndarray
     status: np.ndarray
+    index: np.ndarray | None = None
 
     def frame(self) -> pd.DataFrame:
         """The plots file table: ``time_s``, ``sensor``, ``track``, ``range_m``, ``bearing_deg``."""
@@ -220,6 +222,7 @@ def read_ttm(
         ref[keep],
         unit[keep],
         status[keep],
+        c.index,
     )
 
 
