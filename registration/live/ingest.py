@@ -35,7 +35,7 @@ from registration.io.asterix.tables.timeofday import Unwrapper
 from registration.io.files.ledger import RejectedLedger
 from registration.io.fleet.cells import FILE_COLUMNS
 
-__all__ = ["AsterixStream", "IngestCounters", "StreamBatch", "DUPLICATE_HORIZON_S", "split_batch"]
+__all__ = ["AsterixStream", "IngestCounters", "StreamBatch", "DUPLICATE_HORIZON_S", "si_columns", "split_batch"]
 
 #: Records are checked for duplicates against those of the last this many seconds.
 DUPLICATE_HORIZON_S = 600.0
@@ -86,7 +86,7 @@ class StreamBatch:
     file_plots: dict
 
 
-def _si(name: str, columns: dict) -> dict:
+def si_columns(name: str, columns: dict) -> dict:
     """File-form columns of the import (rows its rules kept) -> the table's columns (SI, radians),
     by the fleet files' one schema: renamed, degrees to radians."""
     out = {}
@@ -165,12 +165,12 @@ class AsterixStream:
         c.plots_without_id += int((~with_id).sum())
         plots = {"time": np.zeros(0), "sensor": np.zeros(0, dtype=str), "target": np.zeros(0, dtype=str)}
         if with_id.any():
-            table = _si("plots", {k: v[with_id] for k, v in file_plots.items()})
+            table = si_columns("plots", {k: v[with_id] for k, v in file_plots.items()})
             order = np.argsort(table["time"], kind="stable")
             plots = {k: v[order] for k, v in table.items()}
         references = None
         if rows.reference and rows.reference["time_s"].size:
-            references = _si("reference", {k: rows.reference[k] for k in REFERENCE_COLUMNS})
+            references = si_columns("reference", {k: rows.reference[k] for k in REFERENCE_COLUMNS})
             c.references += int(references["time"].size)
         return StreamBatch(plots, references, file_plots)
 

@@ -47,6 +47,7 @@ from registration.fleet.data.tables import index_of, read_table
 from registration.fleet.observability import fleet_observability
 from registration.fleet.online.checkpoint import Checkpoints
 from registration.fleet.online.epoch import epoch_information
+from registration.fleet.online.live import LiveInputs
 from registration.fleet.online.options import EpochUpdate, OnlineOptions
 from registration.fleet.online.result import OnlineHistory, OnlineResult
 from registration.fleet.online.update import information_update, start_state
@@ -63,13 +64,14 @@ MAX_RELINEARISATIONS = 10
 _BUFFER = ("time", "sensor", "target", "meas", "mask", "nav", "row")
 
 
-class FleetFilter(Checkpoints):
+class FleetFilter(Checkpoints, LiveInputs):
     """Online registration of a fleet (module docstring).
 
     ``sensors``, ``navigation``, ``platforms``, ``references``, ``targets``: the tables of
     :func:`registration.fleet.build_problem` (SI units, radians), given once; plots arrive with
     :meth:`update`. ``prior``: a batch result (or anything with ``layout``, ``estimate`` and
-    ``covariance`` over the same states) to start from.
+    ``covariance`` over the same states) to start from. A live feed adds navigation and surface
+    targets as they arrive (:class:`~registration.fleet.online.live.LiveInputs`).
     """
 
     def __init__(
