@@ -59,11 +59,46 @@ class Alarm:
         return dict(self.__dict__)
 
 
-def _tables(sites) -> dict:
-    """The SITES tables (navigation, sensors, platforms) in the fleet tables' SI form."""
+def _tables(sites, ship=None) -> dict:
+    """The SITES tables (navigation, sensors, platforms) and the ship's (``ship``: its sensors and
+    platforms file tables; its navigation comes with the stream, a placeholder row until then) in
+    the fleet tables' SI form, merged (a column one of them lacks: 0 for a lever arm, NaN else,
+    which the fleet tables read as not given)."""
+    import pandas as pd
+
+    parts = []
+    if sites is not None:
+        parts.append(site_tables(sites, 0.0))
+    if ship is not None:
+        sensors, platforms = ship
+        platform = str(platforms["platform"].iloc[0])
+        nav = pd.DataFrame({c: [0.0] for c in _NAV_FILE})
+        nav.insert(1, "platform", [platform])
+        parts.append({"sensors": sensors, "platforms": platforms, "navigation": nav})
     out = {}
-    for name, frame in site_tables(sites, 0.0).items():
-        out[name] = check_frame(name, Path("SITES"), frame, skip=False, whole_file=False).table
+    for name in ("sensors", "navigation", "platforms"):
+        tables = [check_frame(name, Path("SITES"), p[name], skip=False, whole_file=False).table for p in parts]
+        out[name] = _merge(tables)
+    return out
+
+
+_NAV_FILE = ("time_s", "lat_deg", "lon_deg", "alt_m", "heading_deg", "pitch_deg", "roll_deg")
+
+
+def _merge(tables: list[dict]) -> dict:
+    keys = list(dict.fromkeys(k for t in tables for k in t))
+    out = {}
+    for k in keys:
+        cols = []
+        for t in tables:
+            n = len(next(iter(t.values())))
+            if k in t:
+                cols.append(np.asarray(t[k]))
+            elif any(np.asarray(u[k]).dtype.kind in "US" for u in tables if k in u):
+                cols.append(np.full(n, ""))
+            else:
+                cols.append(np.full(n, 0.0 if k.startswith("lever") else np.nan))
+        out[k] = np.concatenate(cols)
     return out
 
 
@@ -72,9 +107,11 @@ class LiveEstimator:
     ``options``: the filter's (epochs, process noise); ``alarm_window_s``: the data a change test
     looks at."""
 
-    def __init__(self, sites, options: OnlineOptions | None = None, alarm_window_s: float = 60.0) -> None:
+    def __init__(
+        self, sites, options: OnlineOptions | None = None, alarm_window_s: float = 60.0, ship=None
+    ) -> None:
         self.options = options or OnlineOptions()
-        t = _tables(sites)
+        t = _tables(sites, ship)
         self.filter = FleetFilter(t["sensors"], t["navigation"], t["platforms"], None, options=self.options)
         self.layout = self.filter.layout
         epoch_s = self.options.window_s if self.options.window_s > 0 else max(self.options.epoch_s, 1.0)
@@ -84,6 +121,7 @@ class LiveEstimator:
         self.history: deque[tuple[float, np.ndarray, np.ndarray]] = deque()
         self.residuals: deque[tuple[float, dict]] = deque()
         self.late_plots = 0
+        self.plots_outside_navigation = 0
         self.epochs = 0
         self.data_time_s: float | None = None
         self._rows_cache: tuple[int, list[dict]] | None = None
@@ -96,6 +134,7 @@ class LiveEstimator:
         plots = batch.plots
         if plots["time"].size == 0:
             return 0
+        plots = self.within_navigation(plots)
         late = self.filter.late(plots["time"])
         self.late_plots += int(late.sum())
         if late.any():
@@ -106,7 +145,24 @@ class LiveEstimator:
         t = float(plots["time"].max())
         self.data_time_s = t if self.data_time_s is None else max(self.data_time_s, t)
         self.filter.forget(self.data_time_s - KEEP_REFERENCES_S)
+        self.filter.forget_navigation(self.data_time_s - KEEP_REFERENCES_S)
         return done
+
+    def add_ship_data(self, navigation, references, targets) -> None:
+        """A ship's navigation, AIS references and surface targets (SI tables; None: none), given
+        before the plots they serve."""
+        if navigation is not None:
+            self.filter.add_navigation(navigation)
+        if targets is not None:
+            self.filter.add_surface(targets)
+        if references is not None and references["time"].size:
+            self.filter.add_references(references)
+
+    def within_navigation(self, plots: dict) -> dict:
+        """``plots`` without those outside their platform's navigation (counted)."""
+        outside = self.filter.outside_navigation(plots["sensor"], plots["time"])
+        self.plots_outside_navigation += int(outside.sum())
+        return {k: v[~outside] for k, v in plots.items()} if outside.any() else plots
 
     def flush(self) -> int:
         """Process the epoch still open (at the end of a replay, or before a checkpoint)."""

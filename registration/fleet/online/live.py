@@ -17,7 +17,7 @@ import numpy as np
 
 from registration.fleet.data.known_targets import SurfaceTargets, read_surface
 from registration.fleet.data.navigation import outside_navigation, platform_navigation
-from registration.fleet.data.tables import NAV_COLUMNS, read_table
+from registration.fleet.data.tables import NAV_COLUMNS, index_of, read_table
 
 __all__ = ["LiveInputs"]
 
@@ -66,10 +66,12 @@ class LiveInputs:
 
     def outside_navigation(self, sensor_ids: np.ndarray, time: np.ndarray) -> np.ndarray:
         """(N,) bool: the plots (sensor ids, times s) outside their platform's navigation span."""
-        index = {s: k for k, s in enumerate(self.specs.ids)}
-        sensor = np.array([index.get(str(s), -1) for s in np.asarray(sensor_ids)], dtype=np.int64)
-        platform = np.where(sensor >= 0, self.specs.platform[np.maximum(sensor, 0)], -1)
-        return outside_navigation(self.tracks, self.platform_ids, platform, np.asarray(time, dtype=np.float64))
+        time = np.asarray(time, dtype=np.float64)
+        if all(t.size == 1 for t, _ in self.tracks.values()):  # fixed sites only
+            return np.zeros(time.shape, dtype=bool)
+        sensor = index_of(np.asarray(sensor_ids).astype(str), list(self.specs.ids))
+        platform = np.where(sensor >= 0, np.asarray(self.specs.platform)[np.maximum(sensor, 0)], -1)
+        return outside_navigation(self.tracks, self.platform_ids, platform, time)
 
     def add_surface(self, targets) -> int:
         """Add surface targets (the targets table of :func:`registration.fleet.build_problem`: target,
