@@ -11,8 +11,8 @@ from pathlib import Path
 __all__ = ["HELP", "add_arguments", "run", "config_from_args"]
 
 HELP = (
-    "live registration: listen to ASTERIX over UDP, estimate the radars' biases as the plots stream, "
-    "serve a page and a JSON API, send CAT063 and corrected plots"
+    "live registration: listen to ASTERIX over UDP and a ship's NMEA (UDP or TCP), estimate the radars' "
+    "biases as the plots stream, serve a page and a JSON API, send CAT063 and corrected plots"
 )
 
 #: option dest -> default, where the TOML file may give the value instead
@@ -43,6 +43,19 @@ _OPTIONS = {
         "an ASTERIX input (CAT048 plots, CAT034, CAT021 ADS-B); repeat for several; a multicast HOST is "
         "joined; port 0: any free port, printed",
     ),
+    "--nmea": (
+        "udp://HOST:PORT|tcp://HOST:PORT|tcp-listen://HOST:PORT",
+        "one ship's bridge: NMEA 0183 lines with TTM, navigation and AIS, listened to over UDP, read from "
+        "a multiplexer's TCP server that the service connects to (tcp://, again when it drops), or from "
+        "TCP clients that connect to the service (tcp-listen://, e.g. 'replay --to tcp://'); needs "
+        "--platform and --sensors",
+    ),
+    "--platform": ("NAME", "the ship of --nmea (its platform name, as 'import nmea --platform')"),
+    "--sensors": (
+        "SENSORS.csv",
+        "the ship's sensors file with an optional talker column naming each radar's TTM talker "
+        "(as 'import nmea --sensors')",
+    ),
     "--interface": (
         "ADDRESS",
         "the IPv4 address of the interface that joins multicast groups (default 0.0.0.0: the system's)",
@@ -57,7 +70,8 @@ _OPTIONS = {
     "--corrected": (
         "udp://HOST:PORT",
         "send every datagram received on, its CAT048 plots' range, azimuth and time corrected by the "
-        "current estimates",
+        "current estimates; with --nmea also every NMEA line, one per datagram, TTM range and bearing "
+        "corrected",
     ),
     "--state": (
         "DIR",
@@ -70,7 +84,7 @@ _OPTIONS = {
     "--date": ("YYYY-MM-DD", "the UTC day the time axis counts from (default: today)"),
 }
 _TYPES = {"--config": Path, "--state": Path, "--cat063-period-s": float, "--checkpoint-s": float}
-_TYPES.update({"--window-s": float, "--alarm-window-s": float, "--sites": Path})
+_TYPES.update({"--window-s": float, "--alarm-window-s": float, "--sites": Path, "--sensors": Path})
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -106,15 +120,16 @@ def config_from_args(args: argparse.Namespace):
         return value if value is not None else given.get(dest, _DEFAULTS.get(dest))
 
     sites = pick("sites")
-    if sites is None:
-        raise ValueError("--sites: give the SITES.csv of the radars")
     asterix = pick("asterix") or []
     asterix = [asterix] if isinstance(asterix, str) else asterix
     date = pick("date")
     optional = {k: pick(k) for k in ("cat063", "corrected")}
     return ServeConfig(
-        sites=Path(sites),
+        sites=Path(sites) if sites is not None else None,
         asterix=tuple(Endpoint.parse(a, "--asterix") for a in asterix),
+        nmea=Endpoint.parse(pick("nmea"), "--nmea", ("udp", "tcp", "tcp-listen")) if pick("nmea") else None,
+        platform=str(pick("platform")) if pick("platform") is not None else None,
+        sensors=Path(pick("sensors")) if pick("sensors") is not None else None,
         interface=str(pick("interface")),
         http=parse_host_port(pick("http"), "--http"),
         cat063=Endpoint.parse(optional["cat063"], "--cat063") if optional["cat063"] else None,

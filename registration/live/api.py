@@ -84,7 +84,7 @@ def _csv(rows: list[dict]) -> bytes:
     return out.getvalue().encode()
 
 
-def _metrics(rows: list[dict], counters: IngestCounters, activity: dict, status: dict) -> bytes:
+def _metrics(rows: list[dict], counters: IngestCounters, activity: dict, status: dict, nmea: dict | None) -> bytes:
     """Prometheus text exposition format 0.0.4."""
     lines = []
 
@@ -144,6 +144,15 @@ def _metrics(rows: list[dict], counters: IngestCounters, activity: dict, status:
             for r in est
         ],
     )
+    if nmea is not None:
+        metric("nmea_lines_total", "counter", "NMEA lines imported.", [("", nmea["lines"])])
+        metric(
+            "nmea_rejected_total",
+            "counter",
+            "NMEA lines set aside, by reason.",
+            [(f'{{reason="{esc(r)}"}}', n) for r, n in sorted(nmea["rejected"].items())],
+        )
+        metric("nmea_references_total", "counter", "AIS reference positions kept.", [("", nmea["references"])])
     metric("alarms_total", "counter", "Change alarms raised.", [("", len(status["alarms"]))])
     metric("uptime_seconds", "gauge", "Seconds since the service started.", [("", status["uptime_s"])])
     metric("resident_memory_bytes", "gauge", "Resident memory.", [("", status["memory_rss_bytes"])])
@@ -156,9 +165,10 @@ def build_snapshot(
     activity: dict[str, SensorActivity],
     uptime_s: float,
     backlog_plots: int = 0,
+    nmea: dict | None = None,
 ) -> Snapshot:
     """The answers of the current state (module docstring); ``backlog_plots``: plots imported and
-    not yet given to the estimator."""
+    not yet given to the estimator; ``nmea``: a ship's NMEA stream's counters (status ``nmea``)."""
     rows = estimator.rows()
     ingest = counters.to_json()
     ingest["late_plots"] = estimator.late_plots
@@ -169,6 +179,7 @@ def build_snapshot(
         "data_time_s": estimator.data_time_s,
         "epochs": estimator.epochs,
         "ingest": ingest,
+        **({"nmea": nmea} if nmea is not None else {}),
         "sensors": [{"sensor": s, **a.__dict__} for s, a in activity.items()],
         "consistency": {
             k: _finite(v) if not isinstance(v, list) else v for k, v in estimator.consistency().items()
@@ -181,6 +192,6 @@ def build_snapshot(
         estimates_csv=_csv(rows),
         status=_json(status),
         residuals=_json({"sensors": estimator.residual_summary()}),
-        metrics=_metrics(rows, counters, activity, status),
+        metrics=_metrics(rows, counters, activity, status, nmea),
         history=history,
     )

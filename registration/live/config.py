@@ -61,8 +61,11 @@ def parse_host_port(text: str, what: str) -> tuple[str, int]:
 class ServeConfig:
     """Settings of ``registration serve`` (docs/howto/serve.md); times in s of data unless said."""
 
-    sites: Path
-    asterix: tuple[Endpoint, ...]
+    sites: Path | None = None
+    asterix: tuple[Endpoint, ...] = ()
+    nmea: Endpoint | None = None  # udp:// listened to, tcp:// connected to (a multiplexer's server)
+    platform: str | None = None  # the ship of the NMEA stream
+    sensors: Path | None = None  # its sensors file (optional talker column)
     interface: str = "0.0.0.0"
     http: tuple[str, int] = ("127.0.0.1", 8063)
     cat063: Endpoint | None = None
@@ -88,8 +91,14 @@ class ServeConfig:
                 f"--alarm-window-s {self.alarm_window_s:g}: shorter than one epoch "
                 f"(--window-s {self.window_s:g})"
             )
-        if not self.asterix:
-            raise ValueError("--asterix: give at least one udp://HOST:PORT to listen on")
+        if not self.asterix and self.nmea is None:
+            raise ValueError(
+                "--asterix, --nmea: give at least one input (--asterix udp://HOST:PORT, --nmea udp:// or tcp://)"
+            )
+        if self.asterix and self.sites is None:
+            raise ValueError("--sites: give the SITES.csv of the radars of --asterix")
+        if self.nmea is not None and (self.platform is None or self.sensors is None):
+            raise ValueError("--nmea: give the ship's --platform NAME and its --sensors SENSORS.csv")
         sac, sic = self.sac_sic
         if not (0 <= sac <= 255 and 0 <= sic <= 255):
             raise ValueError(f"--sac-sic: {sac}/{sic}: SAC and SIC are 0 to 255")

@@ -137,25 +137,30 @@ class NmeaStream:
         self._targets: set[str] = set()
 
     # -- input -----------------------------------------------------------------------------------
-    def add_datagrams(self, payloads: Sequence[bytes]) -> None:
-        """UDP datagrams, each one or more whole lines."""
+    def add_datagrams(self, payloads: Sequence[bytes]) -> list[str]:
+        """UDP datagrams, each one or more whole lines; returns the lines (without line ends)."""
+        added: list[str] = []
         for p in payloads:
             lines = _split(p)
             if lines and lines[-1] == "":
                 lines.pop()
-            self._pending.extend(lines)
+            added.extend(lines)
+        self._pending.extend(added)
         self.counters.datagrams += len(payloads)
         self.counters.bytes += sum(len(p) for p in payloads)
         self._waiting()
+        return added
 
-    def add_bytes(self, data: bytes) -> None:
-        """Octets of a TCP stream: lines end at LF; a partial last line waits for its end."""
+    def add_bytes(self, data: bytes) -> list[str]:
+        """Octets of a TCP stream: lines end at LF; a partial last line waits for its end. Returns
+        the lines completed (without line ends)."""
         lines = _split(data)
         lines[0] = self._carry + lines[0]
         self._carry = lines.pop()
         self._pending.extend(lines)
         self.counters.bytes += len(data)
         self._waiting()
+        return lines
 
     def _waiting(self) -> None:
         if self._pending and self._waiting_since is None:

@@ -1,10 +1,13 @@
 """``registration serve``: the live service (docs/howto/serve.md).
 
-Threads: one receives the UDP datagrams of every ``--asterix`` input into a list (nothing else, so
-that the sockets are drained while the rest works; large receive buffers take the bursts); the HTTP
-server answers from the latest snapshot; the main thread runs rounds every ``tick_s`` (back to back while work waits): it takes the
+Threads: one receives the UDP datagrams of every ``--asterix`` input (and of a ``--nmea udp://``
+input) into a list (nothing else, so that the sockets are drained while the rest works; large
+receive buffers take the bursts); one reads a ``--nmea tcp://`` or ``tcp-listen://`` input
+(:mod:`registration.live.tcpinput`); the HTTP server answers from the latest snapshot; the main
+thread runs rounds every ``tick_s`` (back to back while work waits): it takes the
 datagrams received, imports them (:class:`~registration.live.ingest.AsterixStream`), sends the
-corrected plots on, feeds the estimator (:class:`~registration.live.estimator.LiveEstimator`),
+corrected plots on, imports the ship's NMEA lines (:class:`~registration.live.bridge.Bridge`),
+feeds the estimator (:class:`~registration.live.estimator.LiveEstimator`),
 sends CAT063 every ``cat063_period_s``, writes the state every ``checkpoint_s`` and builds the next
 snapshot. SIGTERM and SIGINT end the service after its current round, with a last checkpoint.
 """
@@ -23,12 +26,14 @@ from typing import Callable
 
 from registration.io.asterix.tables.sites import read_sites
 from registration.live.api import SensorActivity, Snapshot, build_snapshot
+from registration.live.bridge import Bridge
 from registration.live.config import Endpoint, ServeConfig
 from registration.live.estimator import LiveEstimator
 from registration.live.http import start_http
-from registration.live.ingest import AsterixStream, StreamBatch, split_batch
-from registration.live.outputs import cat063_message, plot_corrections
+from registration.live.ingest import AsterixStream, IngestCounters, StreamBatch, split_batch
+from registration.live.outputs import cat063_message, corrected_lines, plot_corrections, ttm_corrections
 from registration.live.state import load_state, save_state
+from registration.live.tcpinput import TcpClient, TcpServer
 
 __all__ = ["Service", "SILENT_S", "RECEIVE_BUFFER"]
 
@@ -51,7 +56,7 @@ _RATE_S = 60.0
 SWITCH_INTERVAL_S = 0.0005
 
 
-def _listen(endpoint: Endpoint, interface: str) -> socket.socket:
+def _listen(endpoint: Endpoint, interface: str, option: str = "--asterix") -> socket.socket:
     """A UDP socket bound to the endpoint (joined to its group when multicast); OSError with the
     address when the port is taken."""
     s = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
@@ -69,7 +74,7 @@ def _listen(endpoint: Endpoint, interface: str) -> socket.socket:
             s.bind((endpoint.host, endpoint.port))
     except OSError as exc:
         s.close()
-        raise OSError(exc.errno, f"--asterix {endpoint}: cannot listen ({exc.strerror})") from None
+        raise OSError(exc.errno, f"{option} {endpoint}: cannot listen ({exc.strerror})") from None
     s.setblocking(False)
     return s
 
@@ -116,17 +121,39 @@ class Service:
 
     def __init__(self, config: ServeConfig, log: Callable[[str], None] = print) -> None:
         self.config, self.log = config, log
-        sites = read_sites(config.sites)
-        self.sources = {str(r.sensor): (int(r.sac), int(r.sic)) for r in sites.itertuples()}
+        sites = read_sites(config.sites) if config.sites is not None else None
+        self.sources = {str(r.sensor): (int(r.sac), int(r.sic)) for r in sites.itertuples()} if sites is not None else {}
         editions = {21: config.cat021_edition} if config.cat021_edition else None
-        self.stream = AsterixStream(
-            sites, editions, date=config.date, name=",".join(map(str, config.asterix))
+        self.stream = (
+            AsterixStream(sites, editions, date=config.date, name=",".join(map(str, config.asterix)))
+            if sites is not None
+            else None
         )
-        self.estimator = LiveEstimator(sites, alarm_window_s=config.alarm_window_s, options=self._options())
+        self.counters = self.stream.counters if self.stream is not None else IngestCounters()
+        self.bridge = (
+            Bridge(config.platform, config.sensors, config.window_s, date=config.date, name=str(config.nmea))
+            if config.nmea is not None and config.platform is not None and config.sensors is not None
+            else None
+        )
+        ship = self.bridge.file_tables if self.bridge is not None else None
+        self.estimator = LiveEstimator(
+            sites, alarm_window_s=config.alarm_window_s, options=self._options(), ship=ship
+        )
         self.resumed = load_state(config.state, self.estimator) if config.state is not None else False
         self.sockets = [_listen(e, config.interface) for e in config.asterix]
+        nmea = config.nmea
+        self.nmea_socket = (
+            _listen(nmea, config.interface, "--nmea") if nmea is not None and nmea.scheme == "udp" else None
+        )
+        self.tcp = (
+            TcpClient(nmea)
+            if nmea is not None and nmea.scheme == "tcp"
+            else TcpServer(nmea)
+            if nmea is not None and nmea.scheme == "tcp-listen"
+            else None
+        )
         self.out = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-        self.receiver = _Receiver(self.sockets)
+        self.receiver = _Receiver(self.sockets + ([self.nmea_socket] if self.nmea_socket else []))
         self.started = time.monotonic()
         self.recent: deque[tuple[float, Counter]] = deque()
         self.backlog: deque[StreamBatch] = deque()
@@ -162,7 +189,14 @@ class Service:
         sys.setswitchinterval(SWITCH_INTERVAL_S)  # the receiving thread gets its turn often
         previous = {s: signal.signal(s, lambda *_: self.stop.set()) for s in (signal.SIGTERM, signal.SIGINT)}
         self.receiver.start()
+        if self.tcp is not None:
+            self.tcp.start()
         inputs = ", ".join(f"udp://{e.host}:{p}" for e, p in zip(self.config.asterix, self.input_ports))
+        if self.config.nmea is not None:
+            n = self.config.nmea
+            port = self.nmea_socket.getsockname()[1] if self.nmea_socket is not None else n.port
+            port = self.tcp.port if isinstance(self.tcp, TcpServer) else port
+            inputs = ", ".join(x for x in (inputs, f"nmea {n.scheme}://{n.host}:{port}") if x)
         resumed = " (resumed from the state)" if self.resumed else ""
         self.log(f"serving: inputs {inputs}; page http://{self.config.http[0]}:{self.http_port}/{resumed}")
         next_063 = next_checkpoint = time.monotonic()
@@ -194,7 +228,9 @@ class Service:
     def round(self) -> None:
         """Import what was received, send the corrected plots, estimate, and publish a snapshot."""
         items = self.receiver.take(ROUND_DATAGRAMS)
-        if items:
+        if self.bridge is not None:
+            items = self._nmea_round(items)
+        if items and self.stream is not None:
             payloads, ports = [p for p, _ in items], [q for _, q in items]
             if self.config.corrected is not None:
                 self.send_corrected(payloads)
@@ -211,6 +247,38 @@ class Service:
         if now >= self._next_snapshot:
             self._snapshot = self._build()
             self._next_snapshot = time.monotonic() + SNAPSHOT_S
+
+    def _nmea_round(self, items: list[tuple[bytes, int]]) -> list[tuple[bytes, int]]:
+        """Import the NMEA lines received (passing them on corrected first), queue the ship's
+        associated plots; returns the other datagrams."""
+        bridge = self.bridge
+        assert bridge is not None
+        if self.nmea_socket is not None:
+            port = self.nmea_socket.getsockname()[1]
+            mine = [p for p, q in items if q == port]
+            items = [(p, q) for p, q in items if q != port]
+            if mine:
+                self.send_corrected_nmea(bridge.stream.add_datagrams(mine))
+        if self.tcp is not None:
+            data = self.tcp.take()
+            if data:
+                self.send_corrected_nmea(bridge.stream.add_bytes(data))
+        batch = bridge.take(self.estimator)
+        if batch is not None:
+            self.backlog.append(batch)
+            t = batch.plots["time"]
+            self.recent.append((float(t.max()), Counter(batch.plots["sensor"].astype(str).tolist())))
+        return items
+
+    def send_corrected_nmea(self, lines: list[str]) -> None:
+        """The lines on to ``--corrected``, each a datagram, TTMs corrected by the estimates."""
+        target = self.config.corrected
+        if target is None or not lines or self.bridge is None:
+            return
+        s = self.bridge.stream
+        by_talker, other = ttm_corrections(self.estimator.values(), s.talkers, s.only)
+        for line in corrected_lines(lines, by_talker, other):
+            self.out.sendto((line + "\r\n").encode("latin-1"), (target.host, target.port))
 
     def send_corrected(self, payloads: list[bytes]) -> None:
         from registration.io.asterix.encode.cat048 import correct_cat048
@@ -235,9 +303,12 @@ class Service:
         while self.recent and now is not None and self.recent[0][0] < now - _RATE_S:
             self.recent.popleft()
         counts = sum((c for _, c in self.recent), Counter())
-        c = self.stream.counters
+        c = self.counters
         out = {}
-        for name in self.sources:
+        ship = self.bridge.stream.sensors["sensor"].astype(str).tolist() if self.bridge is not None else []
+        for name in [*self.sources, *ship]:
+            if name in ship and self.bridge is not None:
+                c = self.bridge.stream.counters  # type: ignore[assignment]
             last = c.sensor_last_s.get(name)
             silent = now is not None and (last is None or now - last > SILENT_S)
             out[name] = SensorActivity(
@@ -247,12 +318,22 @@ class Service:
 
     def _build(self) -> Snapshot:
         backlog = sum(int(b.plots["time"].size) for b in self.backlog)
-        self.stream.counters.waiting_datagrams = self.receiver.waiting()
+        self.counters.waiting_datagrams = self.receiver.waiting()
         uptime = time.monotonic() - self.started
-        return build_snapshot(self.estimator, self.stream.counters, self.activity(), uptime, backlog)
+        nmea = None
+        if self.bridge is not None:
+            nmea = self.bridge.to_json()
+            nmea["plots_outside_navigation"] = self.estimator.plots_outside_navigation
+            if self.tcp is not None:
+                nmea["tcp"] = self.tcp.to_json()
+        return build_snapshot(self.estimator, self.counters, self.activity(), uptime, backlog, nmea)
 
     def close(self) -> None:
         self.receiver.stopping.set()
+        if getattr(self, "tcp", None) is not None:
+            self.tcp.stopping.set()  # type: ignore[union-attr]
+        if getattr(self, "nmea_socket", None) is not None:
+            self.nmea_socket.close()  # type: ignore[union-attr]
         if getattr(self, "http", None) is not None:
             self.http.shutdown()
             self.http.server_close()
