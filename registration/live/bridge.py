@@ -2,11 +2,15 @@
 (:class:`~registration.live.nmeaingest.NmeaStream`), its TTM tracks associated with the AIS
 vessels (:class:`~registration.live.tracks.TrackLabels`), and what the estimator needs: the
 navigation, the AIS references and surface targets given to it at once, the associated plots
-handed back as a :class:`~registration.live.ingest.StreamBatch` for the estimator's queue."""
+handed back as a :class:`~registration.live.ingest.StreamBatch` for the estimator's queue after
+:data:`HOLD_S` seconds of data (the estimates lag the data by that much; the plots of a track
+before its vessel is known are used too). Plots of tracks still without a vessel then are counted
+(``plots_unassociated``), not used."""
 
 from __future__ import annotations
 
 import datetime as dt
+import time as wall
 from pathlib import Path
 
 import numpy as np
@@ -15,7 +19,16 @@ from registration.live.ingest import StreamBatch
 from registration.live.nmeaingest import NmeaStream
 from registration.live.tracks import TrackLabels
 
-__all__ = ["Bridge"]
+__all__ = ["Bridge", "HOLD_S"]
+
+#: The ship's plots wait this many seconds of data before the estimator gets them, so that the
+#: association runs of that time can name their tracks' vessels (a track's first plots included).
+HOLD_S = 60.0
+
+
+def _cat(parts: list) -> dict | None:
+    parts = [p for p in parts if p is not None]
+    return {k: np.concatenate([p[k] for p in parts]) for k in parts[0]} if parts else None
 
 
 class Bridge:
@@ -24,7 +37,14 @@ class Bridge:
     ``window_s``: the estimator's epochs; ``name``: the stream's address, for notes."""
 
     def __init__(
-        self, platform: str, sensors: str | Path, window_s: float, *, date: dt.date | None = None, name: str = "nmea"
+        self,
+        platform: str,
+        sensors: str | Path,
+        window_s: float,
+        *,
+        date: dt.date | None = None,
+        name: str = "nmea",
+        hold_s: float = HOLD_S,
     ) -> None:
         priors = {c: 0.0 for c in ("prior_heading_deg", "prior_pitch_deg", "prior_roll_deg")}
         self.stream = NmeaStream(platform, sensors, platform_priors=priors, date=date, name=name)
@@ -32,7 +52,9 @@ class Bridge:
         self.labels = TrackLabels(ship["sensors"], ship["platforms"], window_s)
         self.unassociated = 0
         self._nav_end = -np.inf
-        self._later: dict | None = None  # plots after the navigation so far: they wait for it
+        self._queue: dict | None = None  # plots not yet due
+        self._last_batch = wall.monotonic()
+        self.hold_s = hold_s
 
     def ship_tables(self) -> dict:
         """The ship's sensors and platforms tables in the fleet tables' SI form."""
@@ -51,26 +73,34 @@ class Bridge:
     def take(self, estimator, force: bool = False) -> StreamBatch | None:
         """Import what waits (:meth:`NmeaStream.take`), give the navigation, references and
         targets to ``estimator``, associate when due, and return the plots of tracks with a vessel
-        (sorted by time; None without any)."""
+        that are due (sorted by time; None without any): those ``hold_s`` seconds of data older
+        than the latest navigation, all of them when ``force`` or when nothing came for
+        ``hold_s`` seconds of wall time (the end of a feed)."""
         batch = self.stream.take(force)
-        if batch is None:
-            return None
-        estimator.add_ship_data(batch.navigation, batch.references, batch.targets)
-        self.labels.add(batch.plots, batch.navigation, batch.references, batch.targets)
-        if self.labels.due():
-            self.labels.run()
-        if batch.navigation is not None:
-            self._nav_end = max(self._nav_end, float(batch.navigation["time"].max()))
-        p = self._later if batch.plots is None else batch.plots
-        if self._later is not None and batch.plots is not None:
-            p = {k: np.concatenate([self._later[k], batch.plots[k]]) for k in p}
-        self._later = None
+        now = wall.monotonic()
+        if batch is not None:
+            self._last_batch = now
+            estimator.add_ship_data(batch.navigation, batch.references, batch.targets)
+            self.labels.add(batch.plots, batch.navigation, batch.references, batch.targets)
+            if self.labels.due():
+                self.labels.run()
+            if batch.navigation is not None:
+                self._nav_end = max(self._nav_end, float(batch.navigation["time"].max()))
+            if batch.plots is not None:
+                self._queue = _cat([self._queue, batch.plots])
+        p = self._queue
         if p is None:
             return None
-        wait = p["time"] > self._nav_end
-        if wait.any() and not force:
-            self._later = {k: v[wait] for k, v in p.items()}
-            p = {k: v[~wait] for k, v in p.items()}
+        quiet = now - self._last_batch >= self.stream.hold_s
+        due = p["time"] <= min(self._nav_end - self.hold_s, self._nav_end) if not (force or quiet) else (
+            p["time"] <= self._nav_end
+        )
+        if force:
+            due[:] = True
+        if not due.any():
+            return None
+        self._queue = {k: v[~due] for k, v in p.items()} if not due.all() else None
+        p = {k: v[due] for k, v in p.items()}
         target = self.labels.label(p["sensor"], p["track"])
         used = target != ""
         self.unassociated += int((~used).sum())

@@ -31,7 +31,9 @@ def datagrams(path: Path) -> list[bytes]:
 class Running:
     def __init__(self, proc: subprocess.Popen, line: str) -> None:
         self.proc = proc
-        m = re.search(r"inputs udp://127\.0\.0\.1:(\d+).*page http://127\.0\.0\.1:(\d+)/", line)
+        m = re.search(
+            r"inputs (?:nmea )?(?:udp|tcp|tcp-listen)://127\.0\.0\.1:(\d+).*page http://127\.0\.0\.1:(\d+)/", line
+        )
         assert m, line
         self.input_port, self.http_port = int(m.group(1)), int(m.group(2))
         self.line = line
@@ -70,17 +72,10 @@ class Running:
 
 
 @contextmanager
-def serving(*options: str, sites: Path = SAMPLES / "SITES.csv"):
-    cmd = [
-        sys.executable,
-        "-m",
-        "registration",
-        "serve",
-        "--sites",
-        str(sites),
-        "--asterix",
-        "udp://127.0.0.1:0",
-    ]
+def serving(*options: str, sites: Path = SAMPLES / "SITES.csv", inputs: tuple[str, ...] | None = None):
+    """The service with ``options``; ``inputs`` instead of the sample's SITES and one ASTERIX input."""
+    inputs = ("--sites", str(sites), "--asterix", "udp://127.0.0.1:0") if inputs is None else inputs
+    cmd = [sys.executable, "-m", "registration", "serve", *inputs]
     cmd += ["--http", "127.0.0.1:0", *options]
     proc = subprocess.Popen(cmd, stderr=subprocess.PIPE, text=True)
     try:
