@@ -84,7 +84,9 @@ def _csv(rows: list[dict]) -> bytes:
     return out.getvalue().encode()
 
 
-def _metrics(rows: list[dict], counters: IngestCounters, activity: dict, status: dict, nmea: dict | None) -> bytes:
+def _metrics(
+    rows: list[dict], counters: IngestCounters, activity: dict, status: dict, nmea: dict | None
+) -> bytes:
     """Prometheus text exposition format 0.0.4."""
     lines = []
 
@@ -152,7 +154,9 @@ def _metrics(rows: list[dict], counters: IngestCounters, activity: dict, status:
             "NMEA lines set aside, by reason.",
             [(f'{{reason="{esc(r)}"}}', n) for r, n in sorted(nmea["rejected"].items())],
         )
-        metric("nmea_references_total", "counter", "AIS reference positions kept.", [("", nmea["references"])])
+        metric(
+            "nmea_references_total", "counter", "AIS reference positions kept.", [("", nmea["references"])]
+        )
     metric("alarms_total", "counter", "Change alarms raised.", [("", len(status["alarms"]))])
     metric("uptime_seconds", "gauge", "Seconds since the service started.", [("", status["uptime_s"])])
     metric("resident_memory_bytes", "gauge", "Resident memory.", [("", status["memory_rss_bytes"])])

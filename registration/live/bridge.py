@@ -92,8 +92,10 @@ class Bridge:
         if p is None:
             return None
         quiet = now - self._last_batch >= self.stream.hold_s
-        due = p["time"] <= min(self._nav_end - self.hold_s, self._nav_end) if not (force or quiet) else (
-            p["time"] <= self._nav_end
+        due = (
+            p["time"] <= min(self._nav_end - self.hold_s, self._nav_end)
+            if not (force or quiet)
+            else (p["time"] <= self._nav_end)
         )
         if force:
             due[:] = True

@@ -77,7 +77,9 @@ def _tables(sites, ship=None) -> dict:
         parts.append({"sensors": sensors, "platforms": platforms, "navigation": nav})
     out = {}
     for name in ("sensors", "navigation", "platforms"):
-        tables = [check_frame(name, Path("SITES"), p[name], skip=False, whole_file=False).table for p in parts]
+        tables = [
+            check_frame(name, Path("SITES"), p[name], skip=False, whole_file=False).table for p in parts
+        ]
         out[name] = _merge(tables)
     return out
 

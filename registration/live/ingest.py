@@ -35,7 +35,14 @@ from registration.io.asterix.tables.timeofday import Unwrapper
 from registration.io.files.ledger import RejectedLedger
 from registration.io.fleet.cells import FILE_COLUMNS
 
-__all__ = ["AsterixStream", "IngestCounters", "StreamBatch", "DUPLICATE_HORIZON_S", "si_columns", "split_batch"]
+__all__ = [
+    "AsterixStream",
+    "IngestCounters",
+    "StreamBatch",
+    "DUPLICATE_HORIZON_S",
+    "si_columns",
+    "split_batch",
+]
 
 #: Records are checked for duplicates against those of the last this many seconds.
 DUPLICATE_HORIZON_S = 600.0

@@ -3,8 +3,8 @@ of one ship's bridge, piece by piece, with the same steps
 (:func:`~registration.io.nmea.lines.read_lines`, :func:`~registration.io.nmea.importer.read_sentences`).
 
 The lines wait until a position fix (GGA, GNS or RMC) follows them, since navigation is never
-extrapolated; lines that wait longer than ``hold_s`` of wall time without one (the end of a feed)
-are imported anyway, as the import takes the end of its log. Each piece is imported together with
+extrapolated; when no line has come for ``hold_s`` of wall time (the end of a feed), the lines
+waiting are imported anyway, as the import takes the end of its log. Each piece is imported together with
 the lines of the ``context_s`` seconds before it (the previous fixes and headings to interpolate
 from, the time of day to unwrap, the last sentences the duplicate check looks at); only what comes
 from the piece's own lines is kept and counted, so that each line is counted once, with the
@@ -39,7 +39,7 @@ __all__ = ["NmeaBatch", "NmeaCounters", "NmeaStream", "CONTEXT_S", "HOLD_S"]
 CONTEXT_S = 12.0
 #: At least this many sentences before a piece are imported with it (the duplicate check's 200).
 CONTEXT_LINES = 250
-#: Lines without a position fix after them are imported after this many seconds of wall time.
+#: When no line has come for this many seconds of wall time, the lines waiting are imported.
 HOLD_S = 2.0
 #: Lines waiting beyond this many are imported without waiting for a fix.
 MAX_WAITING_LINES = 20000
@@ -131,7 +131,7 @@ class NmeaStream:
         self._carry = ""  # a TCP stream's partial last line
         self._pending: list[str] = []
         self._pending_line = 1  # the line number of the first pending line
-        self._waiting_since: float | None = None
+        self._last_arrival = wall.monotonic()
         self._context: list[str] = []
         self._last_nav = -np.inf
         self._targets: set[str] = set()
@@ -163,18 +163,17 @@ class NmeaStream:
         return lines
 
     def _waiting(self) -> None:
-        if self._pending and self._waiting_since is None:
-            self._waiting_since = wall.monotonic()
+        self._last_arrival = wall.monotonic()
         self.counters.waiting_lines = len(self._pending)
 
     # -- import ----------------------------------------------------------------------------------
     def take(self, force: bool = False) -> NmeaBatch | None:
         """Import the lines up to the last position fix received (all of them when ``force``, or
-        when they waited ``hold_s``); None when nothing was imported."""
+        when no line came for ``hold_s``); None when nothing was imported."""
         if not self._pending:
             return None
         cut = next((k + 1 for k in range(len(self._pending) - 1, -1, -1) if _FIX.search(self._pending[k])), 0)
-        late = self._waiting_since is not None and wall.monotonic() - self._waiting_since >= self.hold_s
+        late = wall.monotonic() - self._last_arrival >= self.hold_s  # the feed went quiet
         if force or late or len(self._pending) > MAX_WAITING_LINES:
             cut = len(self._pending)
         if cut == 0:
@@ -182,7 +181,6 @@ class NmeaStream:
         piece, self._pending = self._pending[:cut], self._pending[cut:]
         first = self._pending_line
         self._pending_line += cut
-        self._waiting_since = wall.monotonic() if self._pending else None
         self.counters.waiting_lines = len(self._pending)
         self.counters.lines += cut
         return self._import(piece, first)

@@ -68,7 +68,7 @@ def corrected_lines(lines: Sequence[str], by_talker: Mapping[str, object], other
     out = []
     for line in lines:
         m = _TTM_TALKER.search(line)
-        c = (by_talker.get(m.group(1), other) if m else None)
+        c = by_talker.get(m.group(1), other) if m else None
         if c is not None:
             try:
                 line = correct_ttm(line, c)  # type: ignore[arg-type]

@@ -122,7 +122,9 @@ class Service:
     def __init__(self, config: ServeConfig, log: Callable[[str], None] = print) -> None:
         self.config, self.log = config, log
         sites = read_sites(config.sites) if config.sites is not None else None
-        self.sources = {str(r.sensor): (int(r.sac), int(r.sic)) for r in sites.itertuples()} if sites is not None else {}
+        self.sources = (
+            {str(r.sensor): (int(r.sac), int(r.sic)) for r in sites.itertuples()} if sites is not None else {}
+        )
         editions = {21: config.cat021_edition} if config.cat021_edition else None
         self.stream = (
             AsterixStream(sites, editions, date=config.date, name=",".join(map(str, config.asterix)))

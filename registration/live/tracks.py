@@ -47,7 +47,9 @@ class TrackLabels:
     """The labels of the tracks of one ship's sensors (module docstring). ``sensors``, ``platforms``:
     the ship's tables (SI); ``window_s`` the association's windows (the filter's epochs)."""
 
-    def __init__(self, sensors, platforms, window_s: float, every_s: float = EVERY_S, span_s: float = WINDOW_S):
+    def __init__(
+        self, sensors, platforms, window_s: float, every_s: float = EVERY_S, span_s: float = WINDOW_S
+    ):
         self.sensors, self.platforms = sensors, platforms
         self.window_s, self.every_s, self.span_s = window_s, every_s, span_s
         self.labels: dict[tuple[str, str], str] = {}
@@ -80,7 +82,11 @@ class TrackLabels:
 
     def due(self) -> bool:
         """Whether the data reached the time of the next run."""
-        return self._plots is not None and self._next is not None and float(self._plots["time"].max()) >= self._next
+        return (
+            self._plots is not None
+            and self._next is not None
+            and float(self._plots["time"].max()) >= self._next
+        )
 
     def run(self) -> int:
         """Associate the recent data and update the labels; returns the tracks labelled."""
@@ -111,7 +117,9 @@ class TrackLabels:
             self.failures[type(exc).__name__] += 1
             self.note = f"association of the last {self.span_s:g} s: {exc}"
             return 0
-        self._learn(plots, result.labels.astype(str), set(np.asarray(self._refs["target"]).astype(str).tolist()))
+        self._learn(
+            plots, result.labels.astype(str), set(np.asarray(self._refs["target"]).astype(str).tolist())
+        )
         return len(self.labels)
 
     def _learn(self, plots: dict, labels: np.ndarray, vessels: set) -> None:
@@ -132,6 +140,9 @@ class TrackLabels:
     def label(self, sensor: np.ndarray, track: np.ndarray) -> np.ndarray:
         """(N,) the target of each plot's (sensor, track); '' where the track has none yet."""
         return np.array(
-            [self.labels.get((s, k), "") for s, k in zip(sensor.astype(str).tolist(), track.astype(str).tolist())],
+            [
+                self.labels.get((s, k), "")
+                for s, k in zip(sensor.astype(str).tolist(), track.astype(str).tolist())
+            ],
             dtype=object,
         ).astype(str)

@@ -32,7 +32,8 @@ class Running:
     def __init__(self, proc: subprocess.Popen, line: str) -> None:
         self.proc = proc
         m = re.search(
-            r"inputs (?:nmea )?(?:udp|tcp|tcp-listen)://127\.0\.0\.1:(\d+).*page http://127\.0\.0\.1:(\d+)/", line
+            r"inputs (?:nmea )?(?:udp|tcp|tcp-listen)://127\.0\.0\.1:(\d+).*page http://127\.0\.0\.1:(\d+)/",
+            line,
         )
         assert m, line
         self.input_port, self.http_port = int(m.group(1)), int(m.group(2))

@@ -43,7 +43,13 @@ def _with_bad_lines(lines: list[str], seed: int) -> list[str]:
     for ch in body.encode():
         x ^= ch
     unknown = f"${body}*{x:02X}"
-    bad = [gga[:-2] + ("00" if gga[-2:] != "00" else "11"), ttm[:25], "hello bridge", "\x01\x02\x7f junk", unknown]
+    bad = [
+        gga[:-2] + ("00" if gga[-2:] != "00" else "11"),
+        ttm[:25],
+        "hello bridge",
+        "\x01\x02\x7f junk",
+        unknown,
+    ]
     out = list(lines)
     step = len(lines) // (len(bad) + 1)
     for k, line in enumerate(reversed(bad)):
@@ -125,7 +131,9 @@ def _batch_register(tmp: Path, path: Path, sensors: Path) -> subprocess.Popen:
         f"{py} import nmea --out {tmp / 'tables'} --platform {PLATFORM} --sensors {sensors} {path} && "
         f"{py} fleet register --tables {tmp / 'tables'} --out {tmp / 'batch'} --no-plots"
     )
-    return subprocess.Popen(["bash", "-c", script], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    return subprocess.Popen(
+        ["bash", "-c", script], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True
+    )
 
 
 @pytest.fixture(scope="module")
@@ -219,7 +227,12 @@ def test_corrected_ttm_lines_carry_the_correction(run):
     pairs = [(_ttm(o), _ttm(s)) for o, s, t in zip(original, sent, is_ttm) if t]
     assert len(pairs) == run["expected"]["sentences_by_type"]["TTM"]
     for o, s in pairs:  # every other field as it was
-        assert (s.target_number, s.timestamp, s.brg_ref, s.dist_unit) == (o.target_number, o.timestamp, o.brg_ref, o.dist_unit)
+        assert (s.target_number, s.timestamp, s.brg_ref, s.dist_unit) == (
+            o.target_number,
+            o.timestamp,
+            o.brg_ref,
+            o.dist_unit,
+        )
     live = run["estimates"]
     range_bias, bearing_bias = live["RADAR:range_bias"], live["RADAR:bearing_bias"]
     # the last lines were corrected by (nearly) the final estimates: within 3 sigma and a unit of
@@ -283,7 +296,16 @@ def test_tcp_input_taking_a_replay_that_connects(tmp_path):
 
 
 def test_nmea_without_platform_exits_2_with_one_line(tmp_path):
-    cmd = [sys.executable, "-m", "registration", "serve", "--nmea", "udp://127.0.0.1:0", "--http", "127.0.0.1:0"]
+    cmd = [
+        sys.executable,
+        "-m",
+        "registration",
+        "serve",
+        "--nmea",
+        "udp://127.0.0.1:0",
+        "--http",
+        "127.0.0.1:0",
+    ]
     done = subprocess.run(cmd, capture_output=True, text=True, timeout=30)
     assert done.returncode == 2
     assert done.stderr.strip().count("\n") == 0 and "--platform" in done.stderr, done.stderr
