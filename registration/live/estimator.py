@@ -21,6 +21,7 @@ import numpy as np
 
 from registration.fleet.batch.residuals import residuals_at
 from registration.fleet.data.layout import FILE_UNITS
+from registration.fleet.data.tables import EXTENDED_PRIOR_COLUMNS
 from registration.fleet.online.alarms import Change, ChangeDetector, open_states
 from registration.fleet.online.filter import FleetFilter
 from registration.fleet.online.options import EpochUpdate, OnlineOptions
@@ -62,8 +63,7 @@ class Alarm:
 def _tables(sites, ship=None) -> dict:
     """The SITES tables (navigation, sensors, platforms) and the ship's (``ship``: its sensors and
     platforms file tables; its navigation comes with the stream, a placeholder row until then) in
-    the fleet tables' SI form, merged (a column one of them lacks: 0 for a lever arm, NaN else,
-    which the fleet tables read as not given)."""
+    the fleet tables' SI form, merged (a column one of them lacks: :func:`_absent`)."""
     import pandas as pd
 
     parts = []
@@ -87,6 +87,14 @@ def _tables(sites, ship=None) -> dict:
 _NAV_FILE = ("time_s", "lat_deg", "lon_deg", "alt_m", "heading_deg", "pitch_deg", "roll_deg")
 
 
+def _absent(column: str) -> float:
+    """The value of a column one table lacks: an extended error it does not model held at 0 (an
+    empty cell would estimate it), a lever arm 0, no prior (inf) for the others."""
+    if column in EXTENDED_PRIOR_COLUMNS or column.startswith("lever"):
+        return 0.0
+    return np.inf if column.startswith("prior") else np.nan
+
+
 def _merge(tables: list[dict]) -> dict:
     keys = list(dict.fromkeys(k for t in tables for k in t))
     out = {}
@@ -99,7 +107,7 @@ def _merge(tables: list[dict]) -> dict:
             elif any(np.asarray(u[k]).dtype.kind in "US" for u in tables if k in u):
                 cols.append(np.full(n, ""))
             else:
-                cols.append(np.full(n, 0.0 if k.startswith("lever") else np.nan))
+                cols.append(np.full(n, _absent(k)))
         out[k] = np.concatenate(cols)
     return out
 

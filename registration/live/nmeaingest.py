@@ -2,12 +2,13 @@
 of one ship's bridge, piece by piece, with the same steps
 (:func:`~registration.io.nmea.lines.read_lines`, :func:`~registration.io.nmea.importer.read_sentences`).
 
-The lines wait until a position fix (GGA, GNS or RMC) follows them, since navigation is never
+The lines wait until position fixes (GGA, GNS or RMC) follow them, since navigation is never
 extrapolated; when no line has come for ``hold_s`` of wall time (the end of a feed), the lines
 waiting are imported anyway, as the import takes the end of its log. Each piece is imported together with
-the lines of the ``context_s`` seconds before it (the previous fixes and headings to interpolate
-from, the time of day to unwrap, the last sentences the duplicate check looks at); only what comes
-from the piece's own lines is kept and counted, so that each line is counted once, with the
+the lines of the :data:`CONTEXT_S` seconds before it (the previous fixes and headings to interpolate
+from, the time of day to unwrap, the last sentences the duplicate check looks at) and the lines
+received after it (the headings after a TTM's own time); only what comes from the piece's own
+lines is kept and counted, so that each line is counted once, with the
 import's reasons when set aside (docs/reference/nmea-import.md).
 
 The time axis is the import's: seconds since midnight UTC of ``date``, or of the day of the first
@@ -39,6 +40,10 @@ __all__ = ["NmeaBatch", "NmeaCounters", "NmeaStream", "CONTEXT_S", "HOLD_S"]
 CONTEXT_S = 12.0
 #: At least this many sentences before a piece are imported with it (the duplicate check's 200).
 CONTEXT_LINES = 250
+#: A piece ends at a position fix this many fixes (GGA, GNS, RMC lines) before the last one
+#: received: the lines after it, imported with the piece, give the fixes and headings after the
+#: piece's last attitude samples and TTM times (a radar clock ahead of the navigation by seconds).
+LOOKAHEAD_FIXES = 10
 #: When no line has come for this many seconds of wall time, the lines waiting are imported.
 HOLD_S = 2.0
 #: Lines waiting beyond this many are imported without waiting for a fix.
@@ -168,11 +173,13 @@ class NmeaStream:
 
     # -- import ----------------------------------------------------------------------------------
     def take(self, force: bool = False) -> NmeaBatch | None:
-        """Import the lines up to the last position fix received (all of them when ``force``, or
-        when no line came for ``hold_s``); None when nothing was imported."""
+        """Import the lines up to the position fix :data:`LOOKAHEAD_FIXES` fixes before the last one
+        received (all of them when ``force``, or when no line came for ``hold_s``); None when
+        nothing was imported."""
         if not self._pending:
             return None
-        cut = next((k + 1 for k in range(len(self._pending) - 1, -1, -1) if _FIX.search(self._pending[k])), 0)
+        fixes = [k for k, line in enumerate(self._pending) if _FIX.search(line)]
+        cut = fixes[-1 - LOOKAHEAD_FIXES] + 1 if len(fixes) > LOOKAHEAD_FIXES else 0
         late = wall.monotonic() - self._last_arrival >= self.hold_s  # the feed went quiet
         if force or late or len(self._pending) > MAX_WAITING_LINES:
             cut = len(self._pending)
@@ -186,52 +193,57 @@ class NmeaStream:
         return self._import(piece, first)
 
     def _import(self, piece: list[str], first: int) -> NmeaBatch | None:
-        window = self._context + piece
-        start = first - len(self._context)
+        """The rows of lines ``first`` .. ``end - 1`` (``piece``), imported with the context before
+        them and the lines waiting after them (the headings after a TTM's time, for its true
+        bearing); only what comes from the piece's lines is kept and counted."""
+        window = self._context + piece + self._pending
+        start, end = first - len(self._context), first + len(piece)
         rejections = RejectedLedger(LEDGER_COLUMNS, [self.name])
         log = read_lines(window, self.name, rejections, start)
         try:
             parts, _ = read_sentences(log, rejections, self.talkers, self.only, self.date)
         except NmeaImportError as exc:
-            self._count_rejections(rejections, first)
-            self._context = window[-CONTEXT_LINES:]
+            self._count_rejections(rejections, first, end)
+            self._context = (self._context + piece)[-CONTEXT_LINES:]
             self.counters.pieces_without_navigation += 1
             self.counters.lines_without_navigation += len(piece)
             self.counters.note = f"{self.name}: lines {first}-{first + len(piece) - 1}: {exc}"
             return None
-        self._count_rejections(rejections, first)
+        self._count_rejections(rejections, first, end)
         clock, log = parts.clock, parts.log
         if self.date is None and clock.known:
             self.date = dt.date.fromisoformat(str(clock.origin_date()))
-        mine = log.line >= first
+        mine = (log.line >= first) & (log.line < end)
         self.counters.sentences.update(log.kind[mine].astype(str).tolist())
-        self._context = self._next_context(window, start, log, clock)
+        self._context = self._next_context(self._context + piece, start, end, log, clock)
+        after = np.flatnonzero(log.line >= end)  # the lines after the piece: navigation up to its last fix
+        t_cut = float(clock.previous_anchor_time(after[:1])[0]) if after.size else np.inf
         return NmeaBatch(
-            self._plots(parts.plots, log, first),
-            self._navigation(parts.navigation),
-            self._references(parts.references, log, first),
+            self._plots(parts.plots, log, first, end),
+            self._navigation(parts.navigation, t_cut),
+            self._references(parts.references, log, first, end),
             self._new_targets(parts.references),
         )
 
-    def _count_rejections(self, rejections: RejectedLedger, first: int) -> None:
+    def _count_rejections(self, rejections: RejectedLedger, first: int, end: int) -> None:
         frame = rejections.frame()
         if len(frame):
-            codes = frame.loc[frame["line"] >= first, "code"]
+            codes = frame.loc[(frame["line"] >= first) & (frame["line"] < end), "code"]
             self.counters.rejected.update(c for c in codes.tolist() if c in REASONS)
 
-    def _next_context(self, window: list[str], start: int, log, clock) -> list[str]:
-        """The lines of the last ``CONTEXT_S`` seconds of the window (by its timed sentences), and
-        at least the last ``CONTEXT_LINES``."""
+    def _next_context(self, lines: list[str], start: int, end: int, log, clock) -> list[str]:
+        """The last ``CONTEXT_S`` seconds of ``lines`` (numbered from ``start`` up to ``end``, by
+        their timed sentences), and at least the last ``CONTEXT_LINES``."""
         keep = CONTEXT_LINES
-        if clock.anchor_u.size:
-            t_end = float(clock.anchor_u.max())
-            recent = clock.anchor_index[clock.anchor_u >= t_end - CONTEXT_S]
-            if recent.size:
-                keep = max(keep, len(window) - int(log.line[recent.min()] - start))
-        return window[-keep:]
+        before = log.line[clock.anchor_index] < end
+        if before.any():
+            u, index = clock.anchor_u[before], clock.anchor_index[before]
+            recent = index[u >= float(u.max()) - CONTEXT_S]
+            keep = max(keep, len(lines) - int(log.line[recent.min()] - start))
+        return lines[-keep:]
 
-    def _plots(self, plots, log, first: int) -> dict | None:
-        sel = log.line[plots.index] >= first
+    def _plots(self, plots, log, first: int, end: int) -> dict | None:
+        sel = (log.line[plots.index] >= first) & (log.line[plots.index] < end)
         if not sel.any():
             return None
         out = {
@@ -249,8 +261,8 @@ class NmeaStream:
             c.sensor_last_s[s] = max(c.sensor_last_s.get(s, -np.inf), float(out["time"][mine].max()))
         return out
 
-    def _navigation(self, nav) -> dict | None:
-        sel = nav.time > self._last_nav
+    def _navigation(self, nav, t_cut: float) -> dict | None:
+        sel = (nav.time > self._last_nav) & (nav.time <= t_cut)
         if not sel.any():
             return None
         self._last_nav = float(nav.time[sel].max())
@@ -260,8 +272,8 @@ class NmeaStream:
             out[k] = getattr(nav, k)[sel].astype(np.float64)
         return out
 
-    def _references(self, refs, log, first: int) -> dict | None:
-        sel = log.line[refs.index] >= first
+    def _references(self, refs, log, first: int, end: int) -> dict | None:
+        sel = (log.line[refs.index] >= first) & (log.line[refs.index] < end)
         if not sel.any():
             return None
         self.counters.references += int(sel.sum())
