@@ -5,8 +5,9 @@ that runs the reader in-process on one batch and returns the outcomes it counted
 raises for anything the reader must never do (an exception other than its one-line ValueError, a
 total that does not add up). :func:`run_campaign` runs it in ``python -m tests.fuzzing``:
 
-* each batch runs under ``signal.setitimer``: ``per_input_s`` times the inputs of the batch (a
-  reader that takes many inputs at once, ASTERIX datagrams say, gets them in one call);
+* each batch runs under ``signal.setitimer``: ``per_input_s`` times its inputs, at most
+  :data:`BATCH_S` (a reader that takes many inputs at once, ASTERIX datagrams say, gets them in
+  one call; a batch takes well under a second);
 * a batch that fails or runs out of time is run again input by input, each under ``per_input_s``,
   to name the input (its label says how to make it again: the campaign's seed and its index);
 * the whole child runs under ``total_s`` (``subprocess.run(timeout=...)``): a hang that a Python
@@ -39,6 +40,8 @@ N_INPUTS = int(os.environ.get("REGISTRATION_FUZZ_N", "10000"))
 SEED = int(os.environ.get("REGISTRATION_FUZZ_SEED", "20261207"))
 #: The time one input may take before it counts as a hang (s); the machine may be loaded.
 PER_INPUT_S = float(os.environ.get("REGISTRATION_FUZZ_INPUT_S", "5"))
+#: The time one batch may take (s), whatever its size.
+BATCH_S = 60.0
 
 
 class Hang(Exception):
@@ -120,7 +123,7 @@ def child(spec: str, n: int, seed: int, per_input_s: float) -> dict:
     done, start = 0, time.perf_counter()
     for batch in campaign.batches(n):
         try:
-            outcomes += _timed(campaign.check, batch, per_input_s * len(batch))
+            outcomes += _timed(campaign.check, batch, min(per_input_s * len(batch), BATCH_S))
         except Exception as exc:  # noqa: BLE001 - isolated and reported
             error = "hang" if isinstance(exc, Hang) else f"{type(exc).__name__}: {exc}"
             failures.append(_isolate(campaign, batch, per_input_s, error))
