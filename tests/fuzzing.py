@@ -138,12 +138,14 @@ def child(spec: str, n: int, seed: int, per_input_s: float) -> dict:
     }
 
 
-def run_campaign(spec: str, n: int = N_INPUTS, seed: int = SEED, total_s: float = 600.0) -> dict:
+def run_campaign(
+    spec: str, n: int = N_INPUTS, seed: int = SEED, total_s: float = 600.0, per_input_s: float = PER_INPUT_S
+) -> dict:
     """Run the campaign ``spec`` (``module:function``) in a child process; its report. A child
     that outlives ``total_s`` is a hang (AssertionError)."""
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")]))
     env["MPLBACKEND"] = "Agg"
-    argv = [sys.executable, "-m", "tests.fuzzing", spec, str(n), str(seed), str(PER_INPUT_S)]
+    argv = [sys.executable, "-m", "tests.fuzzing", spec, str(n), str(seed), str(per_input_s)]
     t0, cpu0 = time.perf_counter(), _children_cpu()
     try:
         done = subprocess.run(argv, cwd=ROOT, env=env, capture_output=True, text=True, timeout=total_s)
