@@ -75,6 +75,21 @@ def _check_windows(problem, options: AssociationOptions) -> None:
         )
 
 
+def _checked_inputs(plots, sensors, navigation, platforms, references, targets, options):
+    """(problem of all plots, ids given (N,), track ids (N,), references, anchors); the cause named
+    when nothing can anchor a target (one sensor, no references, no ids), before the windows'."""
+    ids = plot_ids(plots)
+    problem = all_plots_problem(plots, sensors, navigation, platforms, targets)
+    given, track_id = ids.target[problem.row], ids.track[problem.row]
+    refs = anchor_references(references)
+    anchors = anchors_of(problem, given, ids.has_target, refs)
+    error = no_anchor_error(anchors)
+    if error is not None:
+        raise error
+    _check_windows(problem, options)
+    return problem, given, track_id, refs, anchors
+
+
 def _single_plots_stage(
     reg: Registrar,
     problem: FleetProblem,
@@ -127,24 +142,17 @@ def associate_and_register(
     names (its plots are associated to it). ``joins``: for tests, joins to start from, {(sensor id,
     track id): target}; a wrong one is dropped by the checks. ``targets``: the optional targets table
     (targets on a surface of known height, by the ids the association gives: the plots' and the
-    references'). ValueError for an empty plots table,
-    any error of :func:`~registration.fleet.data.problem.build_problem` (unknown sensor, bad values;
-    the message names the table and row), and when nothing can be associated (the message names the
-    cause: one sensor, no references, no target ids; :mod:`.causes`). ``progress``: bars on
+    references'). ValueError for an empty plots table, any error of
+    :func:`~registration.fleet.data.problem.build_problem` (unknown sensor, bad values; the message
+    names the table and row), and when nothing can be associated (:mod:`.causes`). ``progress``: bars on
     standard error on a terminal. Returns an :class:`AssociationResult`; the method is in the
     module docstring.
     """
     t0 = time.perf_counter()
     options = options or AssociationOptions()
-    ids = plot_ids(plots)
-    problem = all_plots_problem(plots, sensors, navigation, platforms, targets)
-    given, track_id = ids.target[problem.row], ids.track[problem.row]
-    refs = anchor_references(references)
-    anchors = anchors_of(problem, given, ids.has_target, refs)
-    error = no_anchor_error(anchors)  # one sensor, no references, no ids: before any window advice
-    if error is not None:
-        raise error
-    _check_windows(problem, options)
+    problem, given, track_id, refs, anchors = _checked_inputs(
+        plots, sensors, navigation, platforms, references, targets, options
+    )
     reg = Registrar(problem, refs, initial_covariance(problem, options), options, progress, solver=_solve)
     assigner = Assigner()
     total = options.max_iterations + options.max_join_passes
@@ -173,12 +181,8 @@ def associate_and_register(
     report = plot_report(
         problem, labels, given != "", outliers, units, state, conf.track, result, single != ""
     )
-    notes = (
-        *units.notes,
-        *state.notes,
-        *track_notes(problem, track_id, given != "", labels),
-        *unanchored_notes(anchors, report["by_sensor"]),
-    )
+    notes = (*units.notes, *state.notes, *track_notes(problem, track_id, given != "", labels))
+    notes += tuple(unanchored_notes(anchors, report["by_sensor"]))
     assert reg.problem_solved is not None  # the final solve registered the labelled plots
     return AssociationResult(
         batch=result,
