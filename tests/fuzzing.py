@@ -172,5 +172,10 @@ def assert_clean(report: dict, n: int = N_INPUTS) -> None:
 
 
 if __name__ == "__main__":
+    import tempfile
+
     spec, n, seed, per_input = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), float(sys.argv[4])
-    print(json.dumps(child(spec, n, seed, per_input)))
+    with tempfile.TemporaryDirectory(prefix="fuzz-") as scratch:
+        tempfile.tempdir = scratch  # the campaigns' files go here, and are removed with it
+        report = child(spec, n, seed, per_input)
+    print(json.dumps(report))
