@@ -56,6 +56,9 @@ class StructuralCombination(Combination):
         }
 
 
+#: States a joint change names in words, the largest first (a terminal line stays under 300
+#: characters; the coefficients list them all).
+TERMS_SHOWN = 4
 #: Why a weak or unobservable direction dominated by these states is hard to see.
 _GAIN_BIAS = (
     "range gain and range bias are barely told apart: the plots span too narrow a range of ranges (a gain "
@@ -174,7 +177,9 @@ def _name_states(
             f"{labels[i]} and {labels[j]} {verb} {kind} {names[i]} {sign} {names[j]}",
             (names[i], names[j]) if kind == "sum" else None,
         )
-    terms = ", ".join(f"{labels[k]} ({own[k]:+.3g})" for k in idx)
+    terms = ", ".join(f"{labels[k]} ({own[k]:+.3g})" for k in idx[:TERMS_SHOWN])
+    if len(idx) > TERMS_SHOWN:  # the line stays short; the coefficients hold them all
+        terms += f" and {len(idx) - TERMS_SHOWN} smaller"
     head = "the data do not see a joint change of" if unobservable else "poorly determined joint change of"
     return Combination(coeffs, float(eigenvalue), f"{head} {terms} (relative sizes in the states' units)")
 

@@ -22,6 +22,7 @@ from registration.cli import main
 from registration.fleet import fleet_scenario
 from registration.io.fleet.read import read_fleet_tables
 from registration.io.fleet.write import write_fleet_tables
+from tests.fuzzing import assert_clean, run_campaign
 
 #: Wall time of each campaign (s), and its first seed (a longer or another campaign:
 #: REGISTRATION_FUZZ_S=600 REGISTRATION_FUZZ_SEED=1 python -m pytest tests/fleet/test_fuzz_tables.py).
@@ -150,3 +151,11 @@ def test_mutated_fleet_tables_through_fleet_register(base, tmp_path, capsys):
             assert len(lines) == 1, (seed, err)
         seed, cases = seed + 1, cases + 1
     assert cases >= 3
+
+
+def test_ten_thousand_mutated_plot_and_reference_rows():
+    """``REGISTRATION_FUZZ_N`` (default 10 000) mutated rows of the plots and reference files, 250
+    to a read in skip mode, in a child process with a time bound per input (tests/fuzzing.py)."""
+    report = run_campaign("tests.fleet.fuzz_campaigns:tables")
+    assert_clean(report)
+    assert report["outcomes"]["rows"] == report["inputs"] and report["outcomes"].get("set_aside", 0) > 0

@@ -19,6 +19,7 @@ import pytest
 
 from registration.io.asterix.tables.sites import read_sites
 from registration.io.fleet.schema import HELD
+from tests.fuzzing import assert_clean, run_campaign
 
 BUDGET_S = float(os.environ.get("REGISTRATION_FUZZ_S", "5"))
 SEED = int(os.environ.get("REGISTRATION_FUZZ_SEED", "20261203"))
@@ -113,3 +114,24 @@ def test_sites_refuse_values_beyond_float64(tmp_path, column, value):
     assert not HELD[0] <= abs(float(value)) <= HELD[1] and math.isfinite(float(value))
     with pytest.raises(ValueError, match=rf"row 0, column '{column}'"):
         read_sites(Path(path))
+
+
+def test_a_repeated_column_is_named(tmp_path):
+    """Found by the 10 000-input campaign (tests/io/fuzz_campaigns.py): a header naming a column
+    twice raised AttributeError ('DataFrame' object has no attribute 'tolist')."""
+    frame = base()
+    path = tmp_path / "SITES.csv"
+    path.write_text(frame.to_csv(index=False).replace("sac,", "sac,sac,", 1).replace("R1,", "R1,1,", 1)
+                    .replace("R2,", "R2,1,", 1).replace("R3,", "R3,2,", 1))  # fmt: skip
+    with pytest.raises(
+        ValueError, match=r"^" + re.escape(f"{path}: column(s) ['sac'] appear more than once")
+    ):
+        read_sites(path)
+
+
+def test_ten_thousand_mutated_sites_tables():
+    """``REGISTRATION_FUZZ_N`` (default 10 000) mutated SITES tables, each read alone, in a child
+    process with a time bound per input (tests/fuzzing.py)."""
+    report = run_campaign("tests.io.fuzz_campaigns:sites")
+    assert_clean(report)
+    assert report["outcomes"].get("read", 0) > 0 and report["outcomes"].get("refused", 0) > 0

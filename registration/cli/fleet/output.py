@@ -16,7 +16,15 @@ from registration.fleet.combinations import sigma_text
 from registration.fleet.data.layout import FILE_UNITS
 from registration.io.files.jsonfile import write_json
 
-__all__ = ["chi_square_report", "estimate_table", "print_report", "write_outputs", "gate", "redundancy_check"]
+__all__ = [
+    "chi_square_report",
+    "estimate_table",
+    "excluded_lines",
+    "print_report",
+    "write_outputs",
+    "gate",
+    "redundancy_check",
+]
 
 
 def is_online(result) -> bool:
@@ -55,6 +63,21 @@ def estimate_table(rows: list[dict]) -> list[str]:
     return out
 
 
+#: Excluded targets listed on the terminal; the rest are counted (summary.json lists every one).
+EXCLUDED_SHOWN = 10
+
+
+def excluded_lines(excluded) -> list[str]:
+    """One line per excluded target, at most :data:`EXCLUDED_SHOWN`, then one that counts the rest."""
+    out = [f"  excluded: {e.text()}" for e in excluded[:EXCLUDED_SHOWN]]
+    if len(excluded) > EXCLUDED_SHOWN:
+        out.append(
+            f"  excluded: {len(excluded) - EXCLUDED_SHOWN} more targets (summary.json lists all "
+            f"{len(excluded)} under 'excluded')"
+        )
+    return out
+
+
 def print_report(result, rows: list[dict], header: list[str]) -> None:
     """Header lines, the estimate table (:func:`estimate_table`), the observability report and the
     chi-square/consistency lines."""
@@ -68,8 +91,8 @@ def print_report(result, rows: list[dict], header: list[str]) -> None:
     print("\nObservability:")
     for line in result.observability.lines():
         print(line)
-    for e in result.excluded:
-        print(f"  excluded: {e.text()}")
+    for line in excluded_lines(result.excluded):
+        print(line)
     check = result.fit_check if is_online(result) else result.chi_square
     if is_online(result):
         print()  # the epochs and plots used are in the header (the run line)

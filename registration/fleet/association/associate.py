@@ -28,6 +28,12 @@ import time
 import numpy as np
 
 from registration.core.progress import progress_bar, progress_status
+from registration.fleet.association.causes import (
+    anchors_of,
+    no_anchor_error,
+    nothing_associated,
+    unanchored_notes,
+)
 from registration.fleet.association.grouping.confirm import confirm_targets
 from registration.fleet.association.grouping.geometry import Assigner
 from registration.fleet.association.grouping.units import make_units
@@ -53,21 +59,6 @@ from registration.fleet.data.problem import FleetProblem
 __all__ = ["AssociationOptions", "AssociationResult", "associate_and_register"]
 
 
-def _nothing_associated(problem, given, refs, options) -> ValueError:
-    sensors = np.unique(problem.sensor)
-    if sensors.size == 1 and not (given != "").any() and refs.time.size == 0:
-        return ValueError(
-            f"plots: association needs plots of at least two sensors, or target ids, or references; all "
-            f"{problem.n_plots} plots are of sensor {problem.sensor_ids[sensors[0]]!r}"
-        )
-    return ValueError(
-        "association: no plots could be associated: no target has ids given, a reference or plots of "
-        "two position-fixing sensors that match; with windows of a few seconds a target's pieces of "
-        "track are too short to match: give longer windows (--window-s, AssociationOptions.window_s; "
-        f"{options.window_s:g} s now), or check the gate and the initial sigmas (AssociationOptions)"
-    )
-
-
 def _check_windows(problem, options: AssociationOptions) -> None:
     """ValueError naming the window option when no sensor puts ``min_tracklet_plots`` plots in one
     window (its median interval between scans): neither a tracklet nor a target window forms."""
@@ -82,6 +73,21 @@ def _check_windows(problem, options: AssociationOptions) -> None:
             f"any sensor, too few to match a target's pieces of track: give longer windows (--window-s, "
             f"AssociationOptions.window_s; 20 s by default)"
         )
+
+
+def _checked_inputs(plots, sensors, navigation, platforms, references, targets, options):
+    """(problem of all plots, ids given (N,), track ids (N,), references, anchors); the cause named
+    when nothing can anchor a target (one sensor, no references, no ids), before the windows'."""
+    ids = plot_ids(plots)
+    problem = all_plots_problem(plots, sensors, navigation, platforms, targets)
+    given, track_id = ids.target[problem.row], ids.track[problem.row]
+    refs = anchor_references(references)
+    anchors = anchors_of(problem, given, ids.has_target, refs)
+    error = no_anchor_error(anchors)
+    if error is not None:
+        raise error
+    _check_windows(problem, options)
+    return problem, given, track_id, refs, anchors
 
 
 def _single_plots_stage(
@@ -136,19 +142,17 @@ def associate_and_register(
     names (its plots are associated to it). ``joins``: for tests, joins to start from, {(sensor id,
     track id): target}; a wrong one is dropped by the checks. ``targets``: the optional targets table
     (targets on a surface of known height, by the ids the association gives: the plots' and the
-    references'). ValueError for an empty plots table,
-    any error of :func:`~registration.fleet.data.problem.build_problem` (unknown sensor, bad values;
-    the message names the table and row), and when nothing can be associated. ``progress``: bars on
+    references'). ValueError for an empty plots table, any error of
+    :func:`~registration.fleet.data.problem.build_problem` (unknown sensor, bad values; the message
+    names the table and row), and when nothing can be associated (:mod:`.causes`). ``progress``: bars on
     standard error on a terminal. Returns an :class:`AssociationResult`; the method is in the
     module docstring.
     """
     t0 = time.perf_counter()
     options = options or AssociationOptions()
-    ids = plot_ids(plots)
-    problem = all_plots_problem(plots, sensors, navigation, platforms, targets)
-    given, track_id = ids.target[problem.row], ids.track[problem.row]
-    _check_windows(problem, options)
-    refs = anchor_references(references)
+    problem, given, track_id, refs, anchors = _checked_inputs(
+        plots, sensors, navigation, platforms, references, targets, options
+    )
     reg = Registrar(problem, refs, initial_covariance(problem, options), options, progress, solver=_solve)
     assigner = Assigner()
     total = options.max_iterations + options.max_join_passes
@@ -173,11 +177,12 @@ def associate_and_register(
         progress_status(bar, "final registration")
         result = reg.solve(labels, final=True)
         if result is None or result.chi_square.dof < 1:  # nothing, or more trajectory terms than values
-            raise _nothing_associated(problem, given, refs, options)
+            raise nothing_associated(anchors, options.window_s)
     report = plot_report(
         problem, labels, given != "", outliers, units, state, conf.track, result, single != ""
     )
     notes = (*units.notes, *state.notes, *track_notes(problem, track_id, given != "", labels))
+    notes += tuple(unanchored_notes(anchors, report["by_sensor"]))
     assert reg.problem_solved is not None  # the final solve registered the labelled plots
     return AssociationResult(
         batch=result,

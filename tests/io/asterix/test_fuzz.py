@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 from registration.io.asterix import AsterixImportError, import_asterix
+from tests.fuzzing import assert_clean, run_campaign
 from tests.io.asterix.repro import (
     empty_cat048_gzip,
     out_of_range_time,
@@ -113,3 +114,24 @@ def test_mutated_recordings_never_raise_anything_else(tmp_path, sites, seeds):
         path.unlink()
     assert sum(outcomes.values()) >= min(N_INPUTS, 50)
     assert outcomes.get("imported", 0) > 0
+
+
+#: Mutated whole recordings (every framing) per run of the campaign below; each is one call of the
+#: reader (about 10 ms), where the datagrams go 250 to a call.
+N_RECORDINGS = int(os.environ.get("REGISTRATION_FUZZ_FILES", "2000"))
+
+
+def test_ten_thousand_mutated_datagrams_of_every_category():
+    """CAT048, CAT034, CAT021, CAT001 and CAT002 datagrams (``REGISTRATION_FUZZ_N``, default 10 000),
+    in a child process with a time bound per input (tests/fuzzing.py)."""
+    report = run_campaign("tests.io.asterix.fuzz_campaigns:datagrams")
+    assert_clean(report)
+    assert report["outcomes"]["datagrams"] == report["inputs"] and report["outcomes"]["records"] > 0
+
+
+def test_mutated_recordings_of_every_framing():
+    """Raw, pcap, pcapng, gzip, GPS, IOSS, ORADIS, RFF, HDLC and CAT001 recordings
+    (``REGISTRATION_FUZZ_FILES``, default 2000), each read alone under its time bound."""
+    report = run_campaign("tests.io.asterix.fuzz_campaigns:recordings", N_RECORDINGS)
+    assert_clean(report, N_RECORDINGS)
+    assert report["outcomes"].get("read", 0) > 0 and report["outcomes"].get("refused", 0) > 0

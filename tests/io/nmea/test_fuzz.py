@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from registration.io.nmea import import_nmea
+from tests.fuzzing import assert_clean, run_campaign
 from tests.io.nmea.bridgelog import PLATFORM, BridgeLogConfig, simulate_bridge_log
 
 
@@ -142,3 +143,11 @@ def test_a_duplicated_feed_imports_as_the_single_feed(tmp_path):
     assert "duplicates" not in once.summary
     kept = import_nmea(double, PLATFORM, log.sensors, keep_duplicates=True)
     assert "duplicates" not in kept.summary and "duplicate" not in set(kept.rejected.code)
+
+
+def test_ten_thousand_mutated_sentences():
+    """``REGISTRATION_FUZZ_N`` (default 10 000) mutated lines of every sentence type, 100 to a log,
+    in a child process with a time bound per input (tests/fuzzing.py)."""
+    report = run_campaign("tests.io.nmea.fuzz_campaigns:sentences")
+    assert_clean(report)
+    assert report["outcomes"]["lines"] == report["inputs"] and report["outcomes"].get("imported", 0) > 0

@@ -90,8 +90,6 @@ def read_sites(path: str | Path) -> pd.DataFrame:
     """Read and check SITES.csv (see the module docstring) into a DataFrame: ``sensor`` text,
     ``sac``, ``sic`` integers, the other columns floats (NaN: empty optional cell). ValueError
     naming the file, the row (from 0, the first data row), the column and its unit."""
-    import pandas as pd
-
     path = Path(path)
     try:
         with open(path, newline="", encoding="utf-8-sig") as f:
@@ -111,8 +109,8 @@ def read_sites(path: str | Path) -> pd.DataFrame:
                 f"{path}: row {r}: {len(row)} fields, the header {len(header)} "
                 f"({'cut short' if len(row) < len(header) else 'an extra field'}?)"
             )
-    frame = pd.DataFrame([[c.strip() for c in row] for row in lines[1:]], columns=header, dtype=object)
-    return check_sites(frame, str(path))
+    rows = [[c.strip() for c in row] for row in lines[1:]]
+    return _checked(header, [[row[k] for row in rows] for k in range(len(header))], len(rows), str(path))
 
 
 def _number(source: str, r: int, column: str, cell: object) -> float:
@@ -149,9 +147,17 @@ def check_sites(frame: pd.DataFrame, source: str = "sites") -> pd.DataFrame:
     """Check a SITES table (a DataFrame with the columns of the module docstring, cells as text or
     numbers) and return it typed: ``sensor`` str, ``sac``, ``sic`` int, the others float. ValueError
     naming ``source``, the row (from 0), the column and its unit."""
+    columns = [str(c).strip() for c in frame.columns]
+    return _checked(columns, [frame.iloc[:, k].tolist() for k in range(len(columns))], len(frame), source)
+
+
+def _checked(columns: list[str], cells_by_column: list[list], n_rows: int, source: str) -> pd.DataFrame:
+    """:func:`check_sites` of the cells of each column (text or numbers), in the columns' order."""
     import pandas as pd
 
-    columns = [str(c).strip() for c in frame.columns]
+    repeated = sorted({c for c in columns if columns.count(c) > 1})
+    if repeated:
+        raise ValueError(f"{source}: column(s) {repeated} appear more than once in the header")
     unknown = [c for c in columns if c not in SITE_COLUMNS]
     if unknown:
         raise ValueError(f"{source}: unknown column(s) {unknown}; the columns are {list(SITE_COLUMNS)}")
@@ -161,12 +167,10 @@ def check_sites(frame: pd.DataFrame, source: str = "sites") -> pd.DataFrame:
             f"{source}: missing column(s) {missing} (required: "
             f"{[c for c, v in SITE_COLUMNS.items() if v[4]]})"
         )
-    if len(frame) == 0:
+    if n_rows == 0:
         raise ValueError(f"{source}: no data rows (the file holds only a header)")
-    frame = frame.set_axis(columns, axis=1)
     out: dict[str, list] = {}
-    for column in columns:
-        cells = frame[column].tolist()
+    for column, cells in zip(columns, cells_by_column):
         if column == "sensor":
             names = [
                 "" if c is None or (isinstance(c, float) and math.isnan(c)) else str(c).strip() for c in cells
@@ -183,7 +187,7 @@ def check_sites(frame: pd.DataFrame, source: str = "sites") -> pd.DataFrame:
             out[column] = [_number(source, r, column, c) for r, c in enumerate(cells)]
     _unique(source, out["sensor"], "sensor", "sensor")
     _unique(source, [f"{int(a)}/{int(b)}" for a, b in zip(out["sac"], out["sic"])], "sic", "SAC/SIC")
-    for r, (name, channel) in enumerate(zip(out["sensor"], out.get("psr_channel", [""] * len(frame)))):
+    for r, (name, channel) in enumerate(zip(out["sensor"], out.get("psr_channel", [""] * n_rows))):
         if channel and name + PSR_SUFFIX in out["sensor"]:
             raise ValueError(
                 f"{source}: row {r}, column 'psr_channel': the PSR channel's id {name + PSR_SUFFIX!r} is "
