@@ -20,7 +20,7 @@ __all__ = ["References", "SurfaceTargets", "read_references", "read_surface"]
 @dataclass(frozen=True)
 class References:
     """Known target positions: target id (R,), time (R,) s, p_ecef (R, 3) m, sigma (R,) m and
-    sigma_up (R,) m. ``sigma`` is the standard deviation of each ECEF axis when ``sigma_up`` equals
+    sigma_up (R,) m (``sigma`` inf: a height only, the position giving the local up). ``sigma`` is the standard deviation of each ECEF axis when ``sigma_up`` equals
     it (the default: None gives a copy of ``sigma``); otherwise ``sigma`` is the horizontal one
     (east and north) and ``sigma_up`` the one along the local geodetic up at the position."""
 
@@ -73,24 +73,24 @@ def read_references(references, target_ids) -> References:
             "references: give the known position as ECEF x, y, z (m) or as lat, lon (rad), alt (m)"
         )
     sigma = table.floats("sigma", default=DEFAULT_REFERENCE_SIGMA)
-    bad = np.flatnonzero(~(np.isfinite(time) & (sigma > 0) & np.isfinite(sigma)))
+    bad = np.flatnonzero(~(np.isfinite(time) & (sigma > 0) & ~np.isnan(sigma)))
     if bad.size:
         r = int(bad[0])
         raise table.error(
             r,
-            f"reference of target {str(target[r])!r}: time {time[r]} s and sigma {sigma[r]} m must be "
-            "finite and sigma > 0 (the accuracy of the known position)",
+            f"reference of target {str(target[r])!r}: time {time[r]} s must be finite and sigma "
+            f"{sigma[r]} m > 0 (the accuracy of the known position; inf: a height only)",
         )
     sigma_up = table.floats("sigma_up", default=np.nan)
     sigma_up = np.where(np.isnan(sigma_up), sigma, sigma_up)  # not given: the same as sigma
-    bad = np.flatnonzero(~(sigma_up > 0))
+    bad = np.flatnonzero(~(sigma_up > 0) | (np.isinf(sigma) & ~np.isfinite(sigma_up)))
     if bad.size:
         r = int(bad[0])
         raise table.error(
             r,
-            f"reference of target {str(target[r])!r}: sigma_up {sigma_up[r]} m must be > 0 "
-            "(the accuracy of the known position along the local up; NaN: the same as sigma; "
-            "inf: no height known)",
+            f"reference of target {str(target[r])!r}: sigma_up {sigma_up[r]} m must be > 0, and finite "
+            f"when sigma is inf (the accuracy of the known position along the local up; NaN: the same as "
+            "sigma; inf: no height known; sigma inf with a finite sigma_up: a height only)",
         )
     return References(target, time, p.reshape(-1, 3), sigma, sigma_up)
 

@@ -1,0 +1,110 @@
+"""Mode C / Mode S flight levels as heights: the acceptance scenario (tests/io/asterix/atc.py) with
+flight levels that are pressure altitudes under ISA + 12 K and QNH 1025 hPa, encoded by
+libasterix, through ``registration import asterix`` and ``fleet register --tables``. The aircraft
+with ADS-B give the relation of flight level to height; the Mode S and Mode A/C aircraft without
+ADS-B then have measured heights, the solver converges, and every error comes back within 3.5
+sigma. Seeds 21 and 22 were not used while building the relation (seed 3 was)."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from registration.cli import main
+from registration.core.atmosphere import pressure_altitude2height
+from registration.fleet.batch.estimate import HEIGHT_WARNING
+from registration.io.asterix.tables.flightlevels import learn_relation
+from tests.io.asterix.atc import GEOID_M, atc_truth, encode_atc
+
+DAY = (12.0, 102500.0)  # ISA + 12 K, QNH 1025 hPa
+Z_LIMIT = 3.5
+
+
+def _truth_offset(fl: float) -> float:
+    hp = fl * 30.48
+    return float(pressure_altitude2height(hp, *DAY)) + GEOID_M - hp
+
+
+def _run(tmp_path, seed: int, adsb_levels: bool = True):
+    truth = atc_truth(seed, 300.0, flight_levels=DAY)
+    if not adsb_levels:
+        del truth.adsb["fl_raw"]
+    rec = encode_atc(truth.plots, truth.adsb, truth.sites, truth.date, truth.scans)
+    (tmp_path / "atc.ast").write_bytes(rec.raw())
+    truth.sites.to_csv(tmp_path / "SITES.csv", index=False)
+    tables, out = tmp_path / "tables", tmp_path / "out"
+    argv = ["import", "asterix", str(tmp_path / "atc.ast"), "--sites", str(tmp_path / "SITES.csv")]
+    assert main([*argv, "--out", str(tables), "--date", truth.date.isoformat()]) == 0
+    summary = json.loads((tables / "import_summary.json").read_text())
+    return truth, tables, out, summary
+
+
+@pytest.mark.parametrize("seed", [21, 22])
+def test_flight_levels_give_heights_and_the_registration_converges(tmp_path, capsys, seed):
+    truth, tables, out, summary = _run(tmp_path, seed)
+    levels = summary["flight_levels"]
+    relation = levels["relation"]
+    assert relation["aircraft"] == 12 and relation["reports"] > 3000
+    for name, offset in relation["height_minus_pressure_altitude_m"].items():
+        assert abs(offset - _truth_offset(float(name[2:]))) < 5.0, (name, offset)
+    assert sorted(levels["targets_with_heights"]) == sorted(
+        {f"{0x400000 + 0x1234 * j:06X}" for j in (12, 13)} | {f"A{0o4000 + 0o11 * j:04o}" for j in (14, 15, 16)}
+    )
+    reference = pd.read_csv(tables / "reference.csv")
+    heights = reference[np.isinf(reference["sigma_m"])]
+    assert len(heights) == levels["heights_written"] > 500
+    capsys.readouterr()
+    assert main(["fleet", "register", "--tables", str(tables), "--out", str(out), "--no-plots"]) == 0
+    printed = capsys.readouterr().out
+    assert "converged: True" in printed
+    assert HEIGHT_WARNING.split("{}")[1].strip() not in printed  # "targets have no measured height"
+    est = pd.read_csv(out / "estimates.csv")
+    for name, value in truth.truth.items():
+        obj, state = name.split(":")
+        row = est[(est["object"] == obj) & (est["state"] == state)].iloc[0]
+        k = np.degrees(1.0) if row["unit"] == "deg" else 1.0
+        assert abs(row["estimate"] - value * k) <= Z_LIMIT * row["sigma"], (name, row.to_dict(), value)
+
+
+def test_without_adsb_flight_levels_nothing_is_learned_and_no_height_is_written(tmp_path):
+    _, tables, _, summary = _run(tmp_path, 23, adsb_levels=False)
+    levels = summary["flight_levels"]
+    assert levels["relation"] is None and levels["heights_written"] == 0 and "not known" in levels["note"]
+    assert levels["plots_of_targets_without_adsb"] > 0
+    assert np.isfinite(pd.read_csv(tables / "reference.csv")["sigma_m"]).all()
+
+
+def test_the_relation_follows_the_atmosphere_and_sets_outliers_aside():
+    rng = np.random.default_rng(5)
+    hp = rng.uniform(2000.0, 11500.0, 4000)
+    h = pressure_altitude2height(hp, *DAY) + GEOID_M + rng.normal(0.0, 8.0, hp.size)
+    h[:20] += 2000.0  # a wrong geometric height now and then
+    rel = learn_relation(hp, h, np.repeat(np.arange(40), 100).astype(str))
+    assert rel is not None and rel.outliers == 20 and rel.coef.size == 4 and rel.aircraft == 40
+    grid = np.linspace(2500.0, 11000.0, 30)
+    truth = pressure_altitude2height(grid, *DAY) + GEOID_M
+    assert np.abs(rel.height(grid) - truth).max() < 4.0
+    assert 7.5 < rel.sigma_m < 9.0
+    assert learn_relation(hp[:9], h[:9], np.zeros(9).astype(str)) is None
+
+
+def test_a_height_only_reference_is_read_and_both_sigmas_inf_is_an_error():
+    from registration.fleet.data.known_targets import read_references
+
+    table = {
+        "target": np.array(["A", "A"]),
+        "time": np.array([0.0, 1.0]),
+        "lat": np.radians([45.0, 45.0]),
+        "lon": np.radians([5.0, 5.0]),
+        "alt": np.array([9000.0, 9010.0]),
+        "sigma": np.array([np.inf, np.inf]),
+        "sigma_up": np.array([20.0, 20.0]),
+    }
+    refs = read_references(table, ["A"])
+    assert np.isinf(refs.sigma).all() and (refs.up_sigma == 20.0).all()
+    table["sigma_up"] = np.array([20.0, np.inf])
+    with pytest.raises(ValueError, match="references row 1: .*sigma_up inf m must be > 0, and finite"):
+        read_references(table, ["A"])
