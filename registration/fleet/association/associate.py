@@ -24,6 +24,7 @@ a sensor with a time bias is placed at the time it was seen, from its platform's
 from __future__ import annotations
 
 import time
+from dataclasses import replace
 
 import numpy as np
 
@@ -48,6 +49,7 @@ from registration.fleet.association.result import AssociationResult
 from registration.fleet.association.solves import Registrar
 from registration.fleet.batch.estimate import solve_batch
 from registration.fleet.data.known_targets import References
+from registration.fleet.data.layout import with_height_offset
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["AssociationOptions", "AssociationResult", "associate_and_register"]
@@ -149,6 +151,7 @@ def associate_and_register(
     given, track_id = ids.target[problem.row], ids.track[problem.row]
     _check_windows(problem, options)
     refs = anchor_references(references)
+    problem = replace(problem, layout=with_height_offset(problem.layout, refs.offset_prior))
     reg = Registrar(problem, refs, initial_covariance(problem, options), options, progress, solver=_solve)
     assigner = Assigner()
     total = options.max_iterations + options.max_join_passes

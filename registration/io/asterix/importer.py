@@ -265,6 +265,9 @@ def _build(
         c: np.concatenate([np.asarray(reference[c]), np.asarray(heights[c])]) if heights else reference[c]
         for c in REFERENCE_COLUMNS
     }
+    if "height_offset_prior_m" in heights:  # the ISA's heights, sharing one offset state
+        n_adsb = reference["time_s"].size - heights["time_s"].size
+        reference["height_offset_prior_m"] = np.r_[np.full(n_adsb, np.nan), heights["height_offset_prior_m"]]
     decoded_counts: dict[int, int] = {}
     for r in rows:
         for cat, counts in r.decoded.items():

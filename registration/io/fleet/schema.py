@@ -290,6 +290,16 @@ FLEET_FILES = {
                 (0.0, math.inf),
                 "sigma along the local up, > 0; inf: no height; empty: sigma_m",
             ),
+            _C(
+                "height_offset_prior_m",
+                "height_offset_prior",
+                "m",
+                False,
+                (0.0, math.inf),
+                "on heights alone (flight levels turned into heights without a learned relation): they "
+                "share one unknown offset, the state flight_levels:height_offset, estimated with this prior "
+                "sigma (the same on every such row; inf: no prior); empty: the height has no such offset",
+            ),
         ),
     ),
     "targets": FileTable(
@@ -333,7 +343,7 @@ POSITIVE = frozenset(
 )
 #: Columns where inf is a meaning rather than an error (besides the priors' "no prior"): a reference
 #: without a height, and one with a height only.
-INF_ALLOWED = frozenset({"sigma_up_m", "sigma_m"})
+INF_ALLOWED = frozenset({"sigma_up_m", "sigma_m", "height_offset_prior_m"})
 #: The smallest positive and the largest finite value of a sigma or a prior sigma (file units) that
 #: float64 arithmetic holds through the solve, which squares and inverts them (1e-300 squared is 0,
 #: 1e308 squared is inf); a prior of 0 (fixed) or inf (none) keeps its meaning.

@@ -3,7 +3,9 @@ flight levels that are pressure altitudes under ISA + 12 K and QNH 1025 hPa, enc
 libasterix, through ``registration import asterix`` and ``fleet register --tables``. The aircraft
 with ADS-B give the relation of flight level to height; the Mode S and Mode A/C aircraft without
 ADS-B then have measured heights, the solver converges, and every error comes back within 3.5
-sigma. Seeds 21 and 22 were not used while building the relation (seed 3 was)."""
+sigma. Without ADS-B flight levels the heights are the ISA's, sharing one offset state: it comes
+back within 3.5 sigma of the day's, and so do the errors. Seeds 21 to 24 were not used while
+building either (seed 3 was)."""
 
 from __future__ import annotations
 
@@ -16,7 +18,7 @@ import pytest
 from registration.cli import main
 from registration.core.atmosphere import pressure_altitude2height
 from registration.fleet.batch.estimate import HEIGHT_WARNING
-from registration.io.asterix.tables.flightlevels import learn_relation
+from registration.io.asterix.tables.flightlevels import learn_relation, offset_prior_m
 from tests.io.asterix.atc import GEOID_M, atc_truth, encode_atc
 
 DAY = (12.0, 102500.0)  # ISA + 12 K, QNH 1025 hPa
@@ -69,12 +71,34 @@ def test_flight_levels_give_heights_and_the_registration_converges(tmp_path, cap
         assert abs(row["estimate"] - value * k) <= Z_LIMIT * row["sigma"], (name, row.to_dict(), value)
 
 
-def test_without_adsb_flight_levels_nothing_is_learned_and_no_height_is_written(tmp_path):
-    _, tables, _, summary = _run(tmp_path, 23, adsb_levels=False)
+@pytest.mark.parametrize("seed", [23, 24])
+def test_without_adsb_flight_levels_the_heights_share_an_offset_state_with_its_prior(tmp_path, capsys, seed):
+    truth, tables, out, summary = _run(tmp_path, seed, adsb_levels=False)
     levels = summary["flight_levels"]
-    assert levels["relation"] is None and levels["heights_written"] == 0 and "not known" in levels["note"]
-    assert levels["plots_of_targets_without_adsb"] > 0
-    assert np.isfinite(pd.read_csv(tables / "reference.csv")["sigma_m"]).all()
+    assert levels["relation"] is None and levels["heights_written"] > 500
+    offset = levels["height_offset"]
+    hp0 = offset["reference_pressure_altitude_m"]
+    assert offset["reference_flight_level"] == pytest.approx(hp0 / 30.48, abs=0.01)
+    assert offset["prior_sigma_m"] == pytest.approx(offset_prior_m(hp0), abs=0.05)
+    reference = pd.read_csv(tables / "reference.csv")
+    heights = reference[np.isfinite(reference["height_offset_prior_m"])]
+    assert len(heights) == levels["heights_written"] and np.isinf(heights["sigma_m"]).all()
+    capsys.readouterr()
+    assert main(["fleet", "register", "--tables", str(tables), "--out", str(out), "--no-plots"]) == 0
+    printed = capsys.readouterr().out
+    assert "converged: True" in printed
+    assert HEIGHT_WARNING.split("{}")[1].strip() not in printed
+    est = pd.read_csv(out / "estimates.csv")
+    row = est[(est["object"] == "flight_levels") & (est["state"] == "height_offset")].iloc[0]
+    # the day's offset at hp0: ISA + 12 K, QNH 1025 hPa and the geoid, less the ISA's
+    true_offset = float(pressure_altitude2height(hp0, *DAY) + GEOID_M - pressure_altitude2height(hp0))
+    assert row["sigma"] < 0.2 * offset["prior_sigma_m"]  # the plots determine it, not the prior
+    assert abs(row["estimate"] - true_offset) <= Z_LIMIT * row["sigma"], (row.to_dict(), true_offset)
+    for name, value in truth.truth.items():
+        obj, state = name.split(":")
+        r = est[(est["object"] == obj) & (est["state"] == state)].iloc[0]
+        k = np.degrees(1.0) if r["unit"] == "deg" else 1.0
+        assert abs(r["estimate"] - value * k) <= Z_LIMIT * r["sigma"], (name, r.to_dict(), value)
 
 
 def test_the_relation_follows_the_atmosphere_and_sets_outliers_aside():

@@ -23,8 +23,15 @@ above the WGS-84 ellipsoid (I021/140) measure that relation over the recording's
 
 Each row is taken as an independent measurement of the height at the plot's time; the relation's
 own error is common to every row (with thousands of ADS-B reports it is small next to its sigma).
-Without ADS-B reports that give both, nothing is learned and no height is written (the summary
-says so).
+
+Without ADS-B reports that give both, the flight levels are converted by the ISA itself
+(:func:`registration.core.atmosphere.pressure_altitude2height`) and every such height shares one
+unknown offset, the registration state ``flight_levels:height_offset`` (the reference file's
+``height_offset_prior_m``), estimated with the prior :func:`offset_prior_m` at the median pressure
+altitude ``Hp0`` of those plots: the QNH (15 hPa x 8.3 m/hPa), the geoid (50 m) and the temperature
+(15 K, so a height scale error of 15 / 288.15 = 5.2 %, times ``Hp0``) in quadrature. The offset takes
+the day's shift at ``Hp0``; away from it the temperature's scale error remains, so each row's
+``sigma_up_m`` adds 5.2 % of ``|Hp - Hp0|`` to its rounding.
 """
 
 from __future__ import annotations
@@ -33,14 +40,34 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from registration.core.atmosphere import pressure_altitude2height
 from registration.core.frames import ecef2geodetic, enu2ecef_rotation, geodetic2ecef
 
-__all__ = ["FlightLevelRelation", "learn_relation", "height_rows", "MARGIN_M", "OUTLIER_SIGMAS"]
+__all__ = [
+    "FlightLevelRelation",
+    "learn_relation",
+    "height_rows",
+    "offset_prior_m",
+    "MARGIN_M",
+    "OUTLIER_SIGMAS",
+    "QNH_SIGMA_HPA",
+    "M_PER_HPA",
+    "GEOID_SIGMA_M",
+    "SLOPE_SIGMA",
+]
 
 #: How far outside the fitted pressure altitudes (m) a flight level is still converted.
 MARGIN_M = 600.0
 #: Reports further than this many sigmas from the first fit are set aside before the second.
 OUTLIER_SIGMAS = 5.0
+#: Without a learned relation, the prior of the offset: the day's QNH about the standard 1013.25 hPa
+#: (sigma, hPa; ICAO's extremes run from about 950 to 1050), the height of one hPa near the ground
+#: (m, the ISA: 8.3 m at sea level), the geoid undulation not known (sigma, m) and the day's
+#: temperature about the ISA's (sigma 15 K: the height scales by about dT / 288.15 K).
+QNH_SIGMA_HPA = 15.0
+M_PER_HPA = 8.3
+GEOID_SIGMA_M = 50.0
+SLOPE_SIGMA = 15.0 / 288.15
 _FL_M = 30.48
 _MEAN_EARTH_M = 6371000.0
 
@@ -164,21 +191,63 @@ def height_rows(
         "plots_of_targets_without_adsb": int(candidate.sum()),
     }
     if relation is None:
-        info["relation"] = None
-        info["heights_written"] = 0
-        info["note"] = (
-            "no ADS-B report gives both a flight level (I021/145) and a geometric height (I021/140): "
-            "the relation of flight levels to heights is not known, so the flight levels are not used"
-        )
-        return {}, info
+        return _offset_rows(plots, site_lla, np.flatnonzero(candidate), info)
     inside = (hp >= relation.lo - MARGIN_M) & (hp <= relation.hi + MARGIN_M)
     use = np.flatnonzero(candidate & inside)
     height = relation.height(hp[use])
     sigma_up = np.hypot(relation.sigma_m, _rounding_sigma(target[use], hp[use]))
+    rows = _rows(plots, site_lla, use, height, sigma_up)
+    info["relation"] = relation.summary()
+    info["heights_written"] = int(use.size)
+    info["targets_with_heights"] = sorted(set(target[use].tolist()))
+    info["plots_outside_the_levels_fitted"] = int((candidate & ~inside).sum())
+    return rows, info
+
+
+def offset_prior_m(hp_ref_m: float) -> float:
+    """The prior sigma (m) of the common height offset of flight levels converted by the ISA alone
+    around pressure altitude ``hp_ref_m`` (m): the QNH (:data:`QNH_SIGMA_HPA` at
+    :data:`M_PER_HPA`), the geoid undulation (:data:`GEOID_SIGMA_M`) and the temperature
+    (:data:`SLOPE_SIGMA` of the height) together."""
+    return float(np.sqrt((QNH_SIGMA_HPA * M_PER_HPA) ** 2 + GEOID_SIGMA_M**2 + (SLOPE_SIGMA * hp_ref_m) ** 2))
+
+
+def _offset_rows(plots: dict, site_lla: np.ndarray, use: np.ndarray, info: dict) -> tuple[dict, dict]:
+    """Without a learned relation: the ISA's heights of the flight levels, sharing one unknown offset
+    (module docstring)."""
+    target = np.asarray(plots["target"]).astype(str)[use]
+    hp = np.asarray(plots["pressure_alt_m"], dtype=np.float64)[use]
+    info["relation"] = None
+    info["note"] = (
+        "no ADS-B report gives both a flight level (I021/145) and a geometric height (I021/140): the "
+        "flight levels are converted by the ISA, their heights sharing one unknown offset "
+        "(flight_levels:height_offset) estimated with its prior"
+    )
+    info["heights_written"] = int(use.size)
+    if not use.size:
+        return {}, info
+    hp_ref = float(np.median(hp))
+    prior = offset_prior_m(hp_ref)
+    sigma_up = np.hypot(_rounding_sigma(target, hp), SLOPE_SIGMA * np.abs(hp - hp_ref))
+    rows = _rows(plots, site_lla, use, pressure_altitude2height(hp), sigma_up)
+    rows["height_offset_prior_m"] = np.full(use.size, prior)
+    info["height_offset"] = {
+        "model": "h = the ISA's height of FL x 100 ft + one unknown offset (flight_levels:height_offset)",
+        "prior_sigma_m": round(prior, 1),
+        "reference_flight_level": round(hp_ref / _FL_M, 2),
+        "reference_pressure_altitude_m": round(hp_ref, 3),
+        "slope_sigma": round(SLOPE_SIGMA, 4),
+    }
+    info["targets_with_heights"] = sorted(set(target.tolist()))
+    return rows, info
+
+
+def _rows(plots: dict, site_lla: np.ndarray, use: np.ndarray, height: np.ndarray, sigma_up: np.ndarray) -> dict:
+    target = np.asarray(plots["target"]).astype(str)
     lat, lon = _plot_positions(
         site_lla[use], np.asarray(plots["range_m"])[use], np.asarray(plots["bearing_deg"])[use], height
     )
-    rows = {
+    return {
         "time_s": np.asarray(plots["time_s"], dtype=np.float64)[use],
         "target": target[use],
         "lat_deg": lat,
@@ -187,8 +256,3 @@ def height_rows(
         "sigma_m": np.full(use.size, np.inf),
         "sigma_up_m": sigma_up,
     }
-    info["relation"] = relation.summary()
-    info["heights_written"] = int(use.size)
-    info["targets_with_heights"] = sorted(set(target[use].tolist()))
-    info["plots_outside_the_levels_fitted"] = int((candidate & ~inside).sum())
-    return rows, info
