@@ -132,3 +132,44 @@ def test_a_height_only_reference_is_read_and_both_sigmas_inf_is_an_error():
     table["sigma_up"] = np.array([20.0, np.inf])
     with pytest.raises(ValueError, match="references row 1: .*sigma_up inf m must be > 0, and finite"):
         read_references(table, ["A"])
+
+
+def test_the_offset_terms_are_the_derivatives_of_the_cost(tmp_path):
+    """The normal equations' offset terms (b_x of the offset, the blocks' coupling H) against central
+    differences of the cost and of b_c in the offset, at a point off the optimum."""
+    from registration.fleet.batch.blocks import make_blocks
+    from registration.fleet.batch.design import make_design
+    from registration.fleet.batch.normal import evaluate, normal_equations
+    from registration.io.fleet.read import read_fleet_tables
+
+    truth = atc_truth(25, 60.0, flight_levels=DAY)
+    del truth.adsb["fl_raw"]
+    rec = encode_atc(truth.plots, truth.adsb, truth.sites, truth.date, truth.scans)
+    (tmp_path / "atc.ast").write_bytes(rec.raw())
+    from registration.io.asterix import import_asterix
+
+    tables = import_asterix(tmp_path / "atc.ast", truth.sites, date=truth.date).tables
+    plots = tables["plots"][tables["plots"]["target"] != ""]
+    for name, frame in {**tables, "plots": plots}.items():
+        frame.to_csv(tmp_path / f"{name}.csv", index=False)
+    paths = [tmp_path / f"{n}.csv" for n in ("plots", "navigation", "sensors", "platforms", "reference")]
+    problem = read_fleet_tables(*paths).problem()
+    k = problem.layout.index("flight_levels:height_offset")
+    design = make_design(problem, make_blocks(problem, 20.0, 3))
+    rng = np.random.default_rng(1)
+    coef0 = rng.normal(0.0, 1.0, (design.blocks.n_blocks, design.blocks.n_coef, 3))
+    from registration.fleet.batch.initial import initial_coefficients
+
+    coef = initial_coefficients(design) + coef0 * 50.0
+    x = np.zeros(problem.layout.n)
+    x[k] = 120.0
+    normal = normal_equations(design, evaluate(design, x, coef))
+    h = 1.0
+    lo, hi = x.copy(), x.copy()
+    lo[k] -= h
+    hi[k] += h
+    ev_lo, ev_hi = evaluate(design, lo, coef), evaluate(design, hi, coef)
+    assert normal.b_x[k] == pytest.approx(-(ev_hi.cost - ev_lo.cost) / (4 * h), rel=1e-6)
+    b_lo, b_hi = normal_equations(design, ev_lo).b_c, normal_equations(design, ev_hi).b_c
+    assert normal.H is not None and np.abs(normal.H).max() > 0
+    np.testing.assert_allclose(normal.H, -(b_hi - b_lo) / (2 * h), atol=1e-9 * np.abs(normal.H).max())
