@@ -27,7 +27,9 @@ def test_troposphere_is_the_straight_line_of_the_docstring(dt, qnh):
     k = (atm.P0_PA / qnh) ** (atm.R_AIR * atm.LAPSE_K_PER_M / atm.G0)
     t0 = atm.T0_K + dt
     H = t0 / atm.LAPSE_K_PER_M * (1 - k) + k * t0 / atm.T0_K * hp
-    np.testing.assert_allclose(atm.pressure_altitude2height(hp, dt, qnh), atm.geopotential2geometric(H), atol=1e-6)
+    np.testing.assert_allclose(
+        atm.pressure_altitude2height(hp, dt, qnh), atm.geopotential2geometric(H), atol=1e-6
+    )
 
 
 def test_isa_plus_12_qnh_1025_is_hundreds_of_metres_above_the_flight_level_and_inverts():

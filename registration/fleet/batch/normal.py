@@ -175,7 +175,9 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
         )
     prior = x * design.prior_weight
     if design.ref_offset_up is not None:  # the flight levels' heights carry the common offset
-        e_ref = e_ref + np.einsum("rij,rj->ri", design.ref_whiten, design.ref_offset_up) * x[design.offset_state]
+        assert design.ref_whiten is not None  # heights alone are whitened in their local frame
+        a = np.einsum("rij,rj->ri", design.ref_whiten, design.ref_offset_up)
+        e_ref = e_ref + a * x[design.offset_state]
     cost = float(np.sum(e * e) + np.sum(e_ref * e_ref) + np.sum(prior * prior))
     surf = design.surface
     if surf is None:

@@ -20,7 +20,8 @@ __all__ = ["References", "SurfaceTargets", "read_references", "read_surface"]
 @dataclass(frozen=True)
 class References:
     """Known target positions: target id (R,), time (R,) s, p_ecef (R, 3) m, sigma (R,) m and
-    sigma_up (R,) m (``sigma`` inf: a height only, the position giving the local up). ``sigma`` is the standard deviation of each ECEF axis when ``sigma_up`` equals
+    sigma_up (R,) m (``sigma`` inf: a height only, the position giving the local up). ``sigma``
+    is the standard deviation of each ECEF axis when ``sigma_up`` equals
     it (the default: None gives a copy of ``sigma``); otherwise ``sigma`` is the horizontal one
     (east and north) and ``sigma_up`` the one along the local geodetic up at the position."""
 

@@ -156,8 +156,9 @@ def cat021_record(
     fl_raw: int | None = None,
     extras: bool = False,
 ):
-    """A CAT021 edition 2.x ADS-B report (``fl_raw``: I021/145's flight level in 1/4 FL, None: none) (``nacp`` None: no I021/090; ``height_ft_raw`` None: no
-    I021/140), or edition 0.2x with ``nacp`` read as the NUCp of I021/090."""
+    """A CAT021 edition 2.x ADS-B report (``nacp`` None: no I021/090; ``height_ft_raw`` None: no
+    I021/140; ``fl_raw``: I021/145's flight level in 1/4 FL, None: none), or edition 0.2x with
+    ``nacp`` read as the NUCp of I021/090."""
     items = {"010": (("SAC", sac), ("SIC", sic))}
     old = edition.startswith("0.")
     if old:

@@ -20,7 +20,9 @@ def _decoded(tmp_path, cat: int, edition: str, seed: int):
     data = random_blocks(cat, edition, np.random.default_rng(seed), blocks=12, per_block=8)
     path = tmp_path / f"cat{cat}.ast"
     path.write_bytes(data)
-    return decode_file(path, {cat: edition}, framing="netto").records[cat].fields, parse_blocks(cat, edition, data)
+    return decode_file(path, {cat: edition}, framing="netto").records[cat].fields, parse_blocks(
+        cat, edition, data
+    )
 
 
 def _signed(r) -> bool:

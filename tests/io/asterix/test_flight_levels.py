@@ -53,7 +53,8 @@ def test_flight_levels_give_heights_and_the_registration_converges(tmp_path, cap
     for name, offset in relation["height_minus_pressure_altitude_m"].items():
         assert abs(offset - _truth_offset(float(name[2:]))) < 5.0, (name, offset)
     assert sorted(levels["targets_with_heights"]) == sorted(
-        {f"{0x400000 + 0x1234 * j:06X}" for j in (12, 13)} | {f"A{0o4000 + 0o11 * j:04o}" for j in (14, 15, 16)}
+        {f"{0x400000 + 0x1234 * j:06X}" for j in (12, 13)}
+        | {f"A{0o4000 + 0o11 * j:04o}" for j in (14, 15, 16)}
     )
     reference = pd.read_csv(tables / "reference.csv")
     heights = reference[np.isinf(reference["sigma_m"])]

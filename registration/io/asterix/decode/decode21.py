@@ -95,8 +95,9 @@ def _quality_v2(buf: np.ndarray, o090: np.ndarray, h: np.ndarray, out: dict) -> 
 def decode021(buf: np.ndarray, rec: Records, edition: str) -> dict:
     """Per record (R,): ``address`` (``has_080``), ``sac``, ``sic``, ``rab``, ``sim``, ``tst``,
     ``tod`` (1/128 s) and ``time_item`` (the item it came from, '' for none), ``lat_deg``,
-    ``lon_deg`` (``has_position``), ``height`` (6.25 ft, ``has_140``), ``flight_level`` (1/4 FL, ``has_145``), ``nacp`` (``has_nacp``),
-    ``gva`` (``has_gva``), ``nucp`` (``has_nucp``, editions 0.2x); 0 where absent."""
+    ``lon_deg`` (``has_position``), ``height`` (6.25 ft, ``has_140``), ``flight_level`` (1/4 FL,
+    ``has_145``), ``nacp`` (``has_nacp``), ``gva`` (``has_gva``), ``nucp`` (``has_nucp``, editions
+    0.2x); 0 where absent."""
     items = rec.items
     has = {name: items[name] >= 0 for name in wanted(edition)}
     at = {name: np.where(has[name], items[name], 0) for name in has}

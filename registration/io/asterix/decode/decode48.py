@@ -10,7 +10,7 @@ integers as transmitted, with their LSBs here; the physical values and the plot 
 | I048/040 | RHO, slant range, unsigned 16 bits | 1/256 NM |
 | I048/040 | THETA, azimuth from north, clockwise, unsigned 16 bits | 360/2^16 deg |
 | I048/070 | V (16, 1: not validated), G (15, garbled), L (14, smoothed), Mode 3/A (12 bits) | |
-| I048/090 | V (16, 1: not validated), G (15, garbled), flight level, two's complement 14 bits | 1/4 FL (25 ft) |
+| I048/090 | V (16, 1: not validated), G (15, garbled), flight level (two's complement, 14 bits) | 1/4 FL |
 | I048/220 | aircraft address, 24 bits | |
 """
 

@@ -118,5 +118,7 @@ def reference_columns(f: dict, time_s: np.ndarray, epu_m: np.ndarray) -> dict:
         "alt_m": f["height"] * (HEIGHT_LSB_FT * FOOT_M),
         "sigma_m": horizontal,
         "sigma_up_m": vertical,
-        "pressure_alt_m": np.where(f["has_145"], f["flight_level"] * (FLIGHT_LEVEL_LSB_FL * 100.0 * FOOT_M), np.nan),
+        "pressure_alt_m": np.where(
+            f["has_145"], f["flight_level"] * (FLIGHT_LEVEL_LSB_FL * 100.0 * FOOT_M), np.nan
+        ),
     }

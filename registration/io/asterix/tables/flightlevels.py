@@ -186,7 +186,7 @@ def height_rows(
     target = np.asarray(plots["target"]).astype(str)
     hp = np.asarray(plots["pressure_alt_m"], dtype=np.float64)
     candidate = (target != "") & np.isfinite(hp) & ~np.isin(target, list(adsb_targets))
-    info = {
+    info: dict = {
         "plots_with_flight_level": int(np.isfinite(hp).sum()),
         "plots_of_targets_without_adsb": int(candidate.sum()),
     }
@@ -242,7 +242,9 @@ def _offset_rows(plots: dict, site_lla: np.ndarray, use: np.ndarray, info: dict)
     return rows, info
 
 
-def _rows(plots: dict, site_lla: np.ndarray, use: np.ndarray, height: np.ndarray, sigma_up: np.ndarray) -> dict:
+def _rows(
+    plots: dict, site_lla: np.ndarray, use: np.ndarray, height: np.ndarray, sigma_up: np.ndarray
+) -> dict:
     target = np.asarray(plots["target"]).astype(str)
     lat, lon = _plot_positions(
         site_lla[use], np.asarray(plots["range_m"])[use], np.asarray(plots["bearing_deg"])[use], height
