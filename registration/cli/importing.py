@@ -290,6 +290,27 @@ def _run_importer(args: argparse.Namespace) -> ImportResult:
     )
 
 
+def flight_level_line(levels: dict) -> str:
+    """One line on the flight levels turned into heights (the import summary's ``flight_levels``)."""
+    written = levels.get("heights_written", 0)
+    rel = levels.get("relation")
+    if rel:
+        offsets = ", ".join(f"{k} {v:+.0f} m" for k, v in rel["height_minus_pressure_altitude_m"].items())
+        return (
+            f"flight levels: {written} heights of aircraft without ADS-B, by the relation learned from "
+            f"{rel['reports']} ADS-B reports of {rel['aircraft']} aircraft (height minus FL x 100 ft: "
+            f"{offsets}; sigma {rel['sigma_m']:.1f} m)"
+        )
+    offset = levels.get("height_offset")
+    if offset:
+        return (
+            f"flight levels: {written} heights by the ISA, sharing one offset state "
+            f"(flight_levels:height_offset, prior sigma {offset['prior_sigma_m']:.0f} m at "
+            f"FL{offset['reference_flight_level']:.0f}): no ADS-B report gives both flight level and height"
+        )
+    return "flight levels: none used (no plot of an aircraft without ADS-B has a valid flight level)"
+
+
 def run(args: argparse.Namespace) -> int:
     """Import, print the counts, write the folder whole; exit 2 when the input is no recording at all."""
     for path in args.inputs:
@@ -307,6 +328,9 @@ def run(args: argparse.Namespace) -> int:
     rejected = result.summary.get("rejected", {})
     total = rejected.get("total", rejected.get("lines", len(result.rejected)))
     print(f"imported {counts}; set aside {total} records (rejected.csv)")
+    levels = result.summary.get("flight_levels")
+    if levels:
+        print(flight_level_line(levels))
     for entry in result.summary.get("files", []):  # a bound reached: the user must know
         for note in entry.get("notes", []) if isinstance(entry, dict) else ():
             if "(max_" in note:

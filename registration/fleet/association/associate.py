@@ -24,6 +24,7 @@ a sensor with a time bias is placed at the time it was seen, from its platform's
 from __future__ import annotations
 
 import time
+from dataclasses import replace
 
 import numpy as np
 
@@ -54,6 +55,7 @@ from registration.fleet.association.result import AssociationResult
 from registration.fleet.association.solves import Registrar
 from registration.fleet.batch.estimate import solve_batch
 from registration.fleet.data.known_targets import References
+from registration.fleet.data.layout import with_height_offset
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["AssociationOptions", "AssociationResult", "associate_and_register"]
@@ -82,6 +84,7 @@ def _checked_inputs(plots, sensors, navigation, platforms, references, targets, 
     problem = all_plots_problem(plots, sensors, navigation, platforms, targets)
     given, track_id = ids.target[problem.row], ids.track[problem.row]
     refs = anchor_references(references)
+    problem = replace(problem, layout=with_height_offset(problem.layout, refs.offset_prior))
     anchors = anchors_of(problem, given, ids.has_target, refs)
     error = no_anchor_error(anchors)
     if error is not None:

@@ -11,6 +11,7 @@ import numpy as np
 
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.data.known_targets import References, read_references
+from registration.fleet.data.layout import REFERENCE_SCALE
 from registration.fleet.data.problem import Exclusion, FleetProblem, build_problem
 from registration.fleet.data.tables import read_table
 
@@ -103,7 +104,8 @@ def initial_covariance(problem: FleetProblem, options: AssociationOptions) -> np
     layout = problem.layout
     default = options.initial_sigma()
     prior = layout.prior_sigma
-    sigma = np.where(np.isfinite(prior), prior, [default[q] for q in layout.quantities])
+    start = [default.get(q, REFERENCE_SCALE[u]) for q, u in zip(layout.quantities, layout.units)]
+    sigma = np.where(np.isfinite(prior), prior, start)
     return np.diag(sigma**2)
 
 

@@ -83,6 +83,9 @@ class Blocks:
     ref_basis: np.ndarray  # (R', n_coef)
     patterns: np.ndarray  # (K, w max_groups) the distinct rows of local_state
     pattern_blocks: tuple  # (K,) the blocks of each pattern (index arrays)
+    # states after the groups' in local_state, coupled to every block through the references (the
+    # flight levels' height offset): 0 or 1
+    extra_states: int = 0
 
     @property
     def n_blocks(self) -> int:
@@ -259,6 +262,9 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) 
     tau = (problem.time[order] - centre[block_sorted]) / half[block_sorted]
     basis = legendre_basis(tau, n_coef) * coef_mask[block_sorted]
     rank, local_state = _local_states(group_block, group_state, n_blocks, layout.n)
+    extra = int(layout.height_offset_index >= 0)
+    if extra:  # the height offset, coupled to each block by its flight-level heights (Normal.H)
+        local_state = np.column_stack([local_state, np.full(n_blocks, layout.height_offset_index)])
     ref_index = np.flatnonzero(ref_block >= 0)
     ref_block = ref_block[ref_index]
     ref_tau = (problem.references.time[ref_index] - centre[ref_block]) / half[ref_block]
@@ -292,4 +298,5 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) 
         ref_basis=ref_basis,
         patterns=patterns,
         pattern_blocks=pattern_blocks,
+        extra_states=extra,
     )

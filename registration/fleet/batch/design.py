@@ -123,6 +123,10 @@ class Design:
     ref_whiten: np.ndarray | None = None
     # the surface targets' height constraints; None: no surface target
     surface: SurfaceRows | None = None
+    # (R', 3) the local geodetic up (ECEF) of each reference whose height carries the flight levels'
+    # common height offset, zeros for the others; None: no offset state
+    ref_offset_up: np.ndarray | None = None
+    offset_state: int = -1  # the offset's state index (layout.height_offset_index)
 
     @property
     def n_reference_values(self) -> int:
@@ -209,6 +213,12 @@ def make_design(problem: FleetProblem, blocks: Blocks) -> Design:
     whiten = (
         None if np.array_equal(sigma, sigma_up) else reference_whitening(refs.p_ecef[used], sigma, sigma_up)
     )
+    offset_up = None
+    if layout.height_offset_index >= 0 and whiten is not None:
+        assert refs.offset is not None
+        lat, lon, _ = ecef2geodetic(refs.p_ecef[used])
+        up = enu2ecef_rotation(lat, lon)[:, :, 2] if used.size else np.zeros((0, 3))
+        offset_up = up * refs.offset[used][:, None]
     return Design(
         blocks=blocks,
         n_state=layout.n,
@@ -230,4 +240,6 @@ def make_design(problem: FleetProblem, blocks: Blocks) -> Design:
         seen_at=seen_at,
         ref_whiten=whiten,
         surface=surface_rows(problem, blocks),
+        ref_offset_up=offset_up,
+        offset_state=layout.height_offset_index,
     )

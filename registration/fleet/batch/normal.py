@@ -174,6 +174,10 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
             "rij,rj->ri", design.ref_whiten, design.ref_p - positions(blk.ref_basis, blk.ref_block, coef)
         )
     prior = x * design.prior_weight
+    if design.ref_offset_up is not None:  # the flight levels' heights carry the common offset
+        assert design.ref_whiten is not None  # heights alone are whitened in their local frame
+        a = np.einsum("rij,rj->ri", design.ref_whiten, design.ref_offset_up)
+        e_ref = e_ref + a * x[design.offset_state]
     cost = float(np.sum(e * e) + np.sum(e_ref * e_ref) + np.sum(prior * prior))
     surf = design.surface
     if surf is None:
@@ -202,6 +206,7 @@ class Normal:
     U: np.ndarray  # (n + 1, n + 1)
     b_c: np.ndarray  # (B, q)
     b_x: np.ndarray  # (n + 1,)
+    H: np.ndarray | None = None  # (B, q) coupling of each block with the flight levels' height offset
 
 
 def _whitened_terms(
@@ -281,4 +286,24 @@ def normal_equations(design: Design, ev: Evaluation) -> Normal:
     pw = np.append(design.prior_weight, 0.0)
     U[np.diag_indices(n1)] += pw**2
     b_x -= pw**2 * np.append(ev.x, 0.0)
-    return Normal(V, np.ascontiguousarray(G[:, :q, q : q + w]), U, b_c, b_x)
+    H = None if design.ref_offset_up is None else _offset_terms(design, ev, U, b_x)
+    return Normal(V, np.ascontiguousarray(G[:, :q, q : q + w]), U, b_c, b_x, H)
+
+
+def _offset_terms(design: Design, ev: Evaluation, U: np.ndarray, b_x: np.ndarray) -> np.ndarray:
+    """Add in place to ``U`` and ``b_x`` the terms of the flight levels' height offset ``o`` (its
+    heights' whitened residuals ``e = L (y + o up - p(t))``, so ``de/do = a = L up``) and return its
+    coupling with the blocks ``H`` (B, q): ``U_oo += sum a.a``, ``b_o -= sum a.e``,
+    ``H_b,k += -basis_k L^T a``."""
+    blk, k = design.blocks, design.offset_state
+    assert design.ref_whiten is not None and design.ref_offset_up is not None
+    a = np.einsum("rij,rj->ri", design.ref_whiten, design.ref_offset_up)  # (R', 3)
+    U[k, k] += float(np.sum(a * a))
+    b_x[k] -= float(np.sum(a * ev.e_ref))
+    La = np.einsum("rij,ri->rj", design.ref_whiten, a)  # L^T a (R', 3)
+    B, K = blk.n_blocks, blk.n_coef
+    H = np.zeros((B, K, 3))
+    at3 = (blk.ref_block[:, None] * 3 + np.arange(3)).reshape(-1)
+    for c in range(K):
+        H[:, c, :] -= np.bincount(at3, (blk.ref_basis[:, c, None] * La).reshape(-1), 3 * B).reshape(B, 3)
+    return H.reshape(B, 3 * K)

@@ -20,7 +20,8 @@ __all__ = ["References", "SurfaceTargets", "read_references", "read_surface"]
 @dataclass(frozen=True)
 class References:
     """Known target positions: target id (R,), time (R,) s, p_ecef (R, 3) m, sigma (R,) m and
-    sigma_up (R,) m. ``sigma`` is the standard deviation of each ECEF axis when ``sigma_up`` equals
+    sigma_up (R,) m (``sigma`` inf: a height only, the position giving the local up). ``sigma``
+    is the standard deviation of each ECEF axis when ``sigma_up`` equals
     it (the default: None gives a copy of ``sigma``); otherwise ``sigma`` is the horizontal one
     (east and north) and ``sigma_up`` the one along the local geodetic up at the position."""
 
@@ -29,10 +30,16 @@ class References:
     p_ecef: np.ndarray
     sigma: np.ndarray
     sigma_up: np.ndarray | None = None
+    # (R,) bool: the height carries the common height offset of the flight levels (None: none does)
+    offset: np.ndarray | None = None
+    # the prior sigma (m) of that offset (inf: none); None when no reference carries it
+    offset_prior: float | None = None
 
     def __post_init__(self) -> None:
         if self.sigma_up is None:
             object.__setattr__(self, "sigma_up", np.array(self.sigma, dtype=np.float64, copy=True))
+        if self.offset is None:
+            object.__setattr__(self, "offset", np.zeros(np.shape(self.time), dtype=bool))
 
     @staticmethod
     def empty() -> "References":
@@ -41,8 +48,15 @@ class References:
     def subset(self, which: np.ndarray) -> "References":
         """The references selected by ``which``: an (R,) bool mask or an array of indices (in the
         order given), every field taken alike."""
+        assert self.offset is not None
         return References(
-            self.target[which], self.time[which], self.p_ecef[which], self.sigma[which], self.up_sigma[which]
+            self.target[which],
+            self.time[which],
+            self.p_ecef[which],
+            self.sigma[which],
+            self.up_sigma[which],
+            self.offset[which],
+            self.offset_prior,
         )
 
     @property
@@ -73,26 +87,56 @@ def read_references(references, target_ids) -> References:
             "references: give the known position as ECEF x, y, z (m) or as lat, lon (rad), alt (m)"
         )
     sigma = table.floats("sigma", default=DEFAULT_REFERENCE_SIGMA)
-    bad = np.flatnonzero(~(np.isfinite(time) & (sigma > 0) & np.isfinite(sigma)))
+    bad = np.flatnonzero(~(np.isfinite(time) & (sigma > 0) & ~np.isnan(sigma)))
     if bad.size:
         r = int(bad[0])
         raise table.error(
             r,
-            f"reference of target {str(target[r])!r}: time {time[r]} s and sigma {sigma[r]} m must be "
-            "finite and sigma > 0 (the accuracy of the known position)",
+            f"reference of target {str(target[r])!r}: time {time[r]} s must be finite and sigma "
+            f"{sigma[r]} m > 0 (the accuracy of the known position; inf: a height only)",
         )
     sigma_up = table.floats("sigma_up", default=np.nan)
     sigma_up = np.where(np.isnan(sigma_up), sigma, sigma_up)  # not given: the same as sigma
-    bad = np.flatnonzero(~(sigma_up > 0))
+    bad = np.flatnonzero(~(sigma_up > 0) | (np.isinf(sigma) & ~np.isfinite(sigma_up)))
     if bad.size:
         r = int(bad[0])
         raise table.error(
             r,
-            f"reference of target {str(target[r])!r}: sigma_up {sigma_up[r]} m must be > 0 "
-            "(the accuracy of the known position along the local up; NaN: the same as sigma; "
-            "inf: no height known)",
+            f"reference of target {str(target[r])!r}: sigma_up {sigma_up[r]} m must be > 0, and finite "
+            f"when sigma is inf (the accuracy of the known position along the local up; NaN: the same as "
+            "sigma; inf: no height known; sigma inf with a finite sigma_up: a height only)",
         )
-    return References(target, time, p.reshape(-1, 3), sigma, sigma_up)
+    offset, prior = _height_offset(table, target, sigma, sigma_up)
+    return References(target, time, p.reshape(-1, 3), sigma, sigma_up, offset, prior)
+
+
+def _height_offset(table, target: np.ndarray, sigma: np.ndarray, sigma_up: np.ndarray):
+    """(offset (R,) bool, prior sigma m or None) of the optional ``height_offset_prior`` column: a
+    number (inf: no prior) on the heights that carry the flight levels' common offset, one value for
+    all of them and only on heights alone (``sigma`` inf, finite ``sigma_up``)."""
+    if not table.has("height_offset_prior"):
+        return None, None
+    prior = table.floats("height_offset_prior")
+    offset = ~np.isnan(prior)
+    if not offset.any():
+        return None, None
+    bad = np.flatnonzero(offset & ~(np.isinf(sigma) & np.isfinite(sigma_up)))
+    if bad.size:
+        r = int(bad[0])
+        raise table.error(
+            r,
+            f"reference of target {str(target[r])!r}: a height_offset_prior belongs to a height alone "
+            "(sigma inf and a finite sigma_up): the flight level's height that carries the common offset",
+        )
+    values = np.unique(prior[offset])
+    if values.size > 1 or not values[0] >= 0:
+        r = int(np.flatnonzero(offset & (prior != prior[offset][0]))[0]) if values.size > 1 else 0
+        raise table.error(
+            r,
+            f"height_offset_prior {prior[r]} m: the prior sigma of the one height offset of the flight "
+            f"levels must be >= 0 and the same on every row (got {values.tolist()})",
+        )
+    return offset, float(values[0])
 
 
 @dataclass(frozen=True)

@@ -45,9 +45,11 @@ __all__ = [
     "EXTENDED_LABELS",
     "EXTENDED_UNITS",
     "FILE_UNITS",
+    "HEIGHT_OFFSET_OBJECT",
     "REFERENCE_SCALE",
     "StateLayout",
     "make_layout",
+    "with_height_offset",
     "state_scale",
 ]
 
@@ -63,6 +65,9 @@ EXTENDED_LABELS = (
     "north position error",
     "up position error",
 )
+#: The object of the flight levels' common height offset (the state ``flight_levels:height_offset``):
+#: the heights that flight levels give without a learned relation all share one unknown offset.
+HEIGHT_OFFSET_OBJECT = "flight_levels"
 #: Label words of the eccentricity terms, in ECCENTRICITY_ERRORS order.
 ECCENTRICITY_LABELS = ("azimuth eccentricity (sin term)", "azimuth eccentricity (cos term)")
 #: Unit of each state unit in files (estimates.csv, history.csv) and on the console, with the factor
@@ -119,6 +124,8 @@ class StateLayout:
     bias_index: np.ndarray
     extended_index: np.ndarray
     eccentricity_index: np.ndarray | None = None
+    # the index of the flight levels' common height offset (HEIGHT_OFFSET_OBJECT), -1: not modelled
+    height_offset_index: int = -1
 
     @property
     def n(self) -> int:
@@ -195,13 +202,16 @@ def make_layout(
     extended_priors: np.ndarray | None = None,
     eccentricity_priors: np.ndarray | None = None,
     channel_of: np.ndarray | None = None,
+    height_offset_prior: float | None = None,
 ) -> StateLayout:
     """The layout for platforms (priors (P, 3), rad) and sensors (channels (S, 3) bool, priors (S, 3));
     ``extended_priors`` (S, 5) the priors of the extended errors (EXTENDED_ERRORS order; NaN = not
     modelled); ``eccentricity_priors`` (S,) rad, the prior of both eccentricity terms (NaN or None:
     not modelled); ``channel_of`` (S,) the sensor each one is a channel of (-1 or None: none), whose
     time bias, position errors and eccentricity it shares (its own priors for them are not used). A
-    sensor without range has no range gain."""
+    sensor without range has no range gain. ``height_offset_prior`` (m; None: not modelled): the prior
+    of the one height offset that the references' flight-level heights share, the last state
+    (``flight_levels:height_offset``)."""
     names, labels, units, objects, quantities, prior = [], [], [], [], [], []
 
     def add(kind, obj, quantity, label, unit, sigma) -> int:
@@ -252,6 +262,10 @@ def make_layout(
     shared = np.flatnonzero(SHARED_EXTENDED)
     extended_index[channels[:, None], shared] = extended_index[parent[channels][:, None], shared]
     ecc_index[channels] = ecc_index[parent[channels]]
+    offset_index = -1
+    if height_offset_prior is not None:
+        offset_index = add("", HEIGHT_OFFSET_OBJECT, "height_offset", "", "m", height_offset_prior)
+        labels[-1] = "common height offset of the flight levels"
     return StateLayout(
         tuple(names),
         tuple(labels),
@@ -263,4 +277,25 @@ def make_layout(
         bias_index,
         extended_index,
         ecc_index if (ecc_index >= 0).any() else None,
+        offset_index,
+    )
+
+
+def with_height_offset(layout: StateLayout, prior: float | None) -> StateLayout:
+    """``layout`` with the flight levels' common height offset (prior sigma ``prior`` m) as its last
+    state; ``layout`` itself when ``prior`` is None or it has the state already."""
+    if prior is None or layout.height_offset_index >= 0:
+        return layout
+    return StateLayout(
+        (*layout.names, f"{HEIGHT_OFFSET_OBJECT}:height_offset"),
+        (*layout.labels, "common height offset of the flight levels"),
+        (*layout.units, "m"),
+        (*layout.objects, HEIGHT_OFFSET_OBJECT),
+        (*layout.quantities, "height_offset"),
+        np.append(layout.prior_sigma, prior),
+        layout.att_index,
+        layout.bias_index,
+        layout.extended_index,
+        layout.eccentricity_index,
+        layout.n,
     )

@@ -290,6 +290,7 @@ def build_problem(plots, sensors, navigation, platforms=None, references=None, t
         specs.extended_prior,
         specs.eccentricity_prior,
         specs.channel_of,
+        refs.offset_prior,
     )
     ref_keep = np.isin(refs.target, target_ids)
     refs = refs.subset(ref_keep)

@@ -30,7 +30,8 @@ Every table is long form, one row per item; SI units and radians (docs/reference
   deviation per axis of the known position, default :data:`DEFAULT_REFERENCE_SIGMA`); optional
   ``sigma_up`` (m, standard deviation along the local geodetic up at the position; missing or NaN:
   equal to ``sigma``, which then is the horizontal one, east and north; ``inf``: the reference gives
-  no height, only the horizontal position).
+  no height, only the horizontal position); ``sigma`` ``inf`` with a finite ``sigma_up``: a height
+  alone (a flight level turned into a height), the position giving only the local up.
 * ``targets`` (optional): ``target`` id; ``surface_alt`` (m above the WGS-84 ellipsoid) and
   ``sigma_surface`` (m): the target moves on a surface of that height, such as a ship on the sea
   (empty: not a surface target); optional ``name`` (free text, for reports). Targets without plots

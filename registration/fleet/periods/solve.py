@@ -127,6 +127,9 @@ def _mark_unseen(problem: FleetProblem, result: BatchResult) -> BatchResult:
     for index in (layout.att_index[platforms], layout.bias_index[sensors], layout.extended_index[sensors]):
         i = index.ravel()
         seen[i[i >= 0]] = True
+    offset = problem.references.offset
+    if layout.height_offset_index >= 0 and offset is not None and offset.any():
+        seen[layout.height_offset_index] = True  # the flight levels' heights of the period hold it
     unseen = [i for i in np.flatnonzero(~seen) if result.status.get(layout.names[i]) != "fixed"]
     if not unseen:
         return result

@@ -18,6 +18,7 @@ from registration.io.asterix.errors import LEDGER_COLUMNS, REASONS
 from registration.io.asterix.tables.assemble import FileRows, SiteLookup, assemble_file
 from registration.io.asterix.tables.duplicates import StreamChecks
 from registration.io.asterix.tables.fleetfiles import PLOT_COLUMNS, REFERENCE_COLUMNS, site_tables
+from registration.io.asterix.tables.flightlevels import height_rows, learn_relation
 from registration.io.asterix.tables.plots48 import file_kinds
 from registration.io.asterix.tables.sites import channel_sensors, check_sites, read_sites
 from registration.io.asterix.tables.summary import (
@@ -111,7 +112,7 @@ def _frame(columns: dict, order_by: str = "time_s") -> pd.DataFrame:
 
 
 def _reference(rows: list, plot_targets: set, which: str) -> tuple[dict, dict]:
-    ref = _concat([r.reference for r in rows], REFERENCE_COLUMNS)
+    ref = _concat([r.reference for r in rows], (*REFERENCE_COLUMNS, "pressure_alt_m"))
     targets = ref["target"].astype(str) if ref["target"].size else np.zeros(0, dtype=str)
     plotted = np.isin(targets, list(plot_targets)) if targets.size else np.zeros(0, dtype=bool)
     info = {
@@ -124,6 +125,34 @@ def _reference(rows: list, plot_targets: set, which: str) -> tuple[dict, dict]:
     if which == "plotted":
         ref = {c: v[plotted] for c, v in ref.items()}
     return ref, info
+
+
+def _flight_levels(plots: dict, sites: pd.DataFrame, reference: dict) -> tuple[dict, dict]:
+    """The reference rows of the plots' flight levels and their summary
+    (:mod:`registration.io.asterix.tables.flightlevels`), the relation learned from every ADS-B
+    report kept (``reference`` before the plotted targets are chosen)."""
+    relation = learn_relation(
+        np.asarray(reference["pressure_alt_m"], dtype=float),
+        np.asarray(reference["alt_m"], dtype=float),
+        np.asarray(reference["target"]).astype(str),
+    )
+    row = _site_rows(sites["sensor"].astype(str).to_numpy(), np.asarray(plots["sensor"]).astype(str))
+    site_lla = np.stack(
+        [
+            np.radians(sites["lat_deg"].to_numpy(float))[row],
+            np.radians(sites["lon_deg"].to_numpy(float))[row],
+            sites["alt_m"].to_numpy(float)[row],
+        ],
+        axis=1,
+    ).reshape(-1, 3)
+    return height_rows(plots, site_lla, relation, set(np.asarray(reference["target"]).astype(str).tolist()))
+
+
+def _site_rows(names: np.ndarray, values: np.ndarray) -> np.ndarray:
+    """Index of each of ``values`` in ``names`` (every value is there)."""
+    lookup = {n: k for k, n in enumerate(names.tolist())}
+    unique, inverse = np.unique(values, return_inverse=True) if values.size else (values, values)
+    return np.array([lookup[u] for u in unique.tolist()], dtype=np.int64)[inverse.astype(np.int64)]
 
 
 def import_asterix(
@@ -221,13 +250,24 @@ def _build(
     rows: list[FileRows] = [
         assemble_file(d, unwrapper, lookup, names, editions, rejections, checks, clock) for d in decoded
     ]
-    plots = _concat([r.plots for r in rows], (*PLOT_COLUMNS, "kind", "primary", "capture_lag_s"))
+    plots = _concat(
+        [r.plots for r in rows], (*PLOT_COLUMNS, "kind", "primary", "capture_lag_s", "pressure_alt_m")
+    )
     service = _concat(
         [r.service for r in rows], ("sensor", "category", "msg_type", "time_s", "azimuth_deg", "rotation_s")
     )
+    every_adsb, _ = _reference(rows, set(), "all")
     reference, ref_info = _reference(
         rows, set(plots["target"].astype(str)) - {""} if plots["target"].size else set(), which
     )
+    heights, level_info = _flight_levels(plots, sites, every_adsb)
+    reference = {
+        c: np.concatenate([np.asarray(reference[c]), np.asarray(heights[c])]) if heights else reference[c]
+        for c in REFERENCE_COLUMNS
+    }
+    if "height_offset_prior_m" in heights:  # the ISA's heights, sharing one offset state
+        n_adsb = reference["time_s"].size - heights["time_s"].size
+        reference["height_offset_prior_m"] = np.r_[np.full(n_adsb, np.nan), heights["height_offset_prior_m"]]
     decoded_counts: dict[int, int] = {}
     for r in rows:
         for cat, counts in r.decoded.items():
@@ -251,6 +291,7 @@ def _build(
         **({"cat001_time": clock.summary()} if decoded_counts.get(1) is not None else {}),
         "sac_sic_not_in_sites": sources_not_in_sites(unknown),
         "reference": ref_info,
+        "flight_levels": level_info,
         **checks.summary(),
         "rejected": {"total": rejections.count(), "by_reason": rejections.by_code(tuple(REASONS))},
     }

@@ -262,7 +262,8 @@ FLEET_FILES = {
         "reference",
         False,
         "known target positions, as lat_deg, lon_deg, alt_m or as ECEF x_m, y_m, z_m, with sigma_m (m "
-        "per axis, default 1 m; horizontal with sigma_up_m) and sigma_up_m (m, vertical); default: none",
+        "per axis, default 1 m; horizontal with sigma_up_m) and sigma_up_m (m, vertical); a height alone "
+        "(sigma_m inf), such as a flight level turned into a height; default: none",
         (
             _C("time_s", "time", "s", True, None, "time of the known position"),
             _C("target", "target", "id", True, None, "the target's id"),
@@ -277,8 +278,9 @@ FLEET_FILES = {
                 "sigma",
                 "m",
                 False,
-                (0.0, 1e6),
-                "sigma per axis, > 0 (the horizontal one with sigma_up_m); empty: 1 m",
+                (0.0, math.inf),
+                "sigma per axis, > 0 (the horizontal one with sigma_up_m); inf: a height only (with a "
+                "finite sigma_up_m; lat_deg, lon_deg give the local up); empty: 1 m",
             ),
             _C(
                 "sigma_up_m",
@@ -287,6 +289,16 @@ FLEET_FILES = {
                 False,
                 (0.0, math.inf),
                 "sigma along the local up, > 0; inf: no height; empty: sigma_m",
+            ),
+            _C(
+                "height_offset_prior_m",
+                "height_offset_prior",
+                "m",
+                False,
+                (0.0, math.inf),
+                "on heights alone (flight levels turned into heights without a learned relation): they "
+                "share one unknown offset, the state flight_levels:height_offset, estimated with this prior "
+                "sigma (the same on every such row; inf: no prior); empty: the height has no such offset",
             ),
         ),
     ),
@@ -330,8 +342,8 @@ POSITIVE = frozenset(
     }
 )
 #: Columns where inf is a meaning rather than an error (besides the priors' "no prior"): a reference
-#: without a height.
-INF_ALLOWED = frozenset({"sigma_up_m"})
+#: without a height, and one with a height only.
+INF_ALLOWED = frozenset({"sigma_up_m", "sigma_m", "height_offset_prior_m"})
 #: The smallest positive and the largest finite value of a sigma or a prior sigma (file units) that
 #: float64 arithmetic holds through the solve, which squares and inverts them (1e-300 squared is 0,
 #: 1e308 squared is inf); a prior of 0 (fixed) or inf (none) keeps its meaning.

@@ -41,6 +41,10 @@ RADAR_LAYOUT = {
 }
 ADSB_SOURCE = (40, 1)
 _FT = 0.3048
+#: ``fl_raw`` of a plot without a flight level.
+NO_FL = -(1 << 20)
+#: The geoid undulation (m) of the scenario's area: the ellipsoid height of mean sea level.
+GEOID_M = 48.0
 
 
 @dataclass
@@ -79,6 +83,8 @@ def encode_atc(plots: dict, adsb: dict, sites: pd.DataFrame, date: dt.date, scan
             if kind == "mode_a"
             else {"typ": 1}
         )
+        if "fl_raw" in plots and plots["fl_raw"][k] != NO_FL:
+            kw["fl_raw"] = int(plots["fl_raw"][k])
         messages.append((t, 48, sac, sic, cat048_record("1.32", sac, sic, t, rho, theta, **kw)))
     for radar, (t0, period, sectors, t1) in (scans or {}).items():
         sac, sic = src[radar]
@@ -113,6 +119,7 @@ def encode_atc(plots: dict, adsb: dict, sites: pd.DataFrame, date: dt.date, scan
             height_ft_raw=int(round(adsb["height_m"][k] / _FT / 6.25)),
             nacp=int(adsb["nacp"][k]),
             gva=int(gva[k]),
+            fl_raw=int(adsb["fl_raw"][k]) if "fl_raw" in adsb else None,
         )
         messages.append((t, 21, *ADSB_SOURCE, rec))
     return encode_recording(messages, date)
@@ -196,11 +203,16 @@ def atc_truth(
     n_aircraft: int = 20,
     date: dt.date = dt.date(2024, 5, 1),
     errors_seed: int | None = None,
+    flight_levels: tuple[float, float] | None = None,
 ) -> AtcTruth:
     """A simulated scenario; aircraft 0-13 are Mode S (0-11 with ADS-B at 1 Hz, NACp 8-10), 14-16
     Mode A/C only, the rest primary only. Errors of random sign: range bias 80-200 m, gain 200-600
     ppm, azimuth bias 0.15-0.4 deg, clock offset 0.3-1.0 s, drawn from ``seed`` or, when given,
-    from ``errors_seed`` (the same radars' errors under other traffic)."""
+    from ``errors_seed`` (the same radars' errors under other traffic). ``flight_levels``
+    (temperature offset K, QNH Pa): the Mode S and Mode A/C plots carry I048/090 and the ADS-B
+    reports I021/145, the pressure altitude of the aircraft's height above mean sea level
+    (:data:`GEOID_M` below its ellipsoid height) in that atmosphere (registration.core.atmosphere),
+    in 25 ft steps (Mode S, ADS-B) or 100 ft (Mode A/C)."""
     from registration.core.frames import enu2ecef_rotation
 
     rng = np.random.default_rng(seed)
@@ -246,7 +258,23 @@ def atc_truth(
         "mode_a": np.where(kind == "mode_a", 0o4000 + 0o11 * j, -1),
         "aircraft": j,
     }
-    return AtcTruth(plot_arrays, _adsb(rng, tracks, start, t0, duration_s), sites, scans, truth, date)
+    adsb = _adsb(rng, tracks, start, t0, duration_s)
+    if flight_levels is not None:
+        seen = plot_arrays["time_s"] - np.array([truth[f"{r}:time_bias"] for r in plot_arrays["radar"]])
+        height = np.array([_to_geodetic(tracks[a](t))[2][0] for a, t in zip(j, seen)])
+        step = np.where(kind == "mode_s", 1, 4)  # in 1/4 FL: 25 ft, 100 ft
+        raw = _fl_raw(height, flight_levels, step)
+        plot_arrays["fl_raw"] = np.where(kind == "primary", NO_FL, raw)
+        adsb["fl_raw"] = _fl_raw(adsb["true_height_m"], flight_levels, 1)
+    return AtcTruth(plot_arrays, adsb, sites, scans, truth, date)
+
+
+def _fl_raw(height_m: np.ndarray, flight_levels: tuple[float, float], step: int) -> np.ndarray:
+    """The flight level in 1/4 FL, rounded to ``step`` of them, of ellipsoid heights ``height_m``."""
+    from registration.core.atmosphere import height2pressure_altitude
+
+    hp = height2pressure_altitude(np.asarray(height_m) - GEOID_M, *flight_levels)
+    return (np.round(hp / (_FT * 25.0) / step) * step).astype(np.int64)
 
 
 def _adsb(rng, tracks, start, t0: float, duration_s: float) -> dict:
@@ -267,6 +295,7 @@ def _adsb(rng, tracks, start, t0: float, duration_s: float) -> dict:
                     lon[0] + np.degrees(east / (6.371e6 * np.cos(np.radians(lat[0])))),
                     h[0] + rng.normal(0, min(2 * sigma_h, 20.0)),
                     nacp,
+                    h[0],
                 )
             )
     a = list(zip(*rows))
@@ -277,6 +306,7 @@ def _adsb(rng, tracks, start, t0: float, duration_s: float) -> dict:
         "lon_deg": np.array(a[3]),
         "height_m": np.array(a[4]),
         "nacp": np.array(a[5]),
+        "true_height_m": np.array(a[6]),
     }
 
 

@@ -68,10 +68,12 @@ def cat048_record(
     sim: int = 0,
     rab: int = 0,
     tst: int | None = None,
+    fl_raw: int | None = None,
     extras: bool = False,
 ):
-    """A CAT048 target report; ``extras`` adds items the reader skips (compound, repetitive,
-    extended, explicit) around the ones it reads."""
+    """A CAT048 target report; ``fl_raw``: I048/090's flight level in 1/4 FL (V, G 0; None: no
+    I048/090); ``extras`` adds items the reader skips (compound, repetitive, extended, explicit)
+    around the ones it reads."""
     items = {
         "010": (("SAC", sac), ("SIC", sic)),
         "140": tod_raw(t_s),
@@ -83,6 +85,8 @@ def cat048_record(
         items["070"] = (("V", v), ("G", g), ("L", m3a_l), 0, ("MODE3A", mode_a))
     if address is not None:
         items["220"] = address
+    if fl_raw is not None:
+        items["090"] = (("V", 0), ("G", 0), ("FL", fl_raw % (1 << 14)))
     if extras:
         items.update(
             {
@@ -149,10 +153,12 @@ def cat021_record(
     sim: int = 0,
     tst: int = 0,
     rab: int = 0,
+    fl_raw: int | None = None,
     extras: bool = False,
 ):
     """A CAT021 edition 2.x ADS-B report (``nacp`` None: no I021/090; ``height_ft_raw`` None: no
-    I021/140), or edition 0.2x with ``nacp`` read as the NUCp of I021/090."""
+    I021/140; ``fl_raw``: I021/145's flight level in 1/4 FL, None: none), or edition 0.2x with
+    ``nacp`` read as the NUCp of I021/090."""
     items = {"010": (("SAC", sac), ("SIC", sic))}
     old = edition.startswith("0.")
     if old:
@@ -182,6 +188,8 @@ def cat021_record(
         items["080"] = address
     if height_ft_raw is not None:
         items["140"] = height_ft_raw % 65536
+    if fl_raw is not None:
+        items["145"] = fl_raw % 65536
     if extras and not old:
         items.update(
             {

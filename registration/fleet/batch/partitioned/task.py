@@ -107,6 +107,12 @@ def partition_problem(task: PartitionTask) -> FleetProblem | None:
         return None
     sensor, time = cols.sensor[rows], cols.time[rows]
     refs = read_references(_read(src, "reference", src.read_references, lo, hi), plan.all_targets)
+    if refs.offset_prior is not None:
+        raise ValueError(
+            "reference: heights with a height_offset_prior_m (flight levels sharing one unknown offset) "
+            "are registered in memory only; drop --partition-s, or import the flight levels with ADS-B "
+            "that gives both flight level and geometric height"
+        )
     ref_target = index_of(refs.target, plan.target_ids)
     ref_keep = ref_target >= 0
     ref_keep[ref_keep] = partition_of(plan, ref_target[ref_keep], refs.time[ref_keep]) == k

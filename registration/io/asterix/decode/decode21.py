@@ -11,6 +11,8 @@ editions 2.x; editions 0.2x):
 * position: I021/131 (2 x 32 bits, 180/2^30 deg), else I021/130 (2 x 24 bits, 180/2^23 deg);
   I021/130: 2 x 24 bits, 180/2^23 deg (0.23), 2 x 32 bits, 180/2^25 deg (0.24-0.26);
 * geometric height: I021/140, 16 bits signed, 6.25 ft, above the WGS-84 ellipsoid; the same;
+* flight level: I021/145, 16 bits signed, 1/4 FL (25 ft), the barometric (pressure) altitude; the
+  same;
 * quality: I021/090: NACp (first extension bits 4-1), GVA (second extension bits 3-2); I021/090
   PA: NUCp (bits 4-1).
 """
@@ -22,10 +24,11 @@ import numpy as np
 from registration.io.asterix.decode.walker import Records
 from registration.io.asterix.octets import signed, u8, u16, u24, u32
 
-__all__ = ["wanted", "decode021", "TOD_LSB_S", "HEIGHT_LSB_FT", "FOOT_M"]
+__all__ = ["wanted", "decode021", "TOD_LSB_S", "HEIGHT_LSB_FT", "FLIGHT_LEVEL_LSB_FL", "FOOT_M"]
 
 TOD_LSB_S = 1.0 / 128.0
 HEIGHT_LSB_FT = 6.25
+FLIGHT_LEVEL_LSB_FL = 0.25
 #: The international foot (m).
 FOOT_M = 0.3048
 
@@ -33,8 +36,8 @@ FOOT_M = 0.3048
 def wanted(edition: str) -> tuple:
     """The items read for ``edition``; the others are skipped."""
     if edition.startswith("0."):
-        return ("010", "040", "030", "130", "080", "140", "090")
-    return ("010", "040", "071", "073", "077", "130", "131", "140", "080", "090")
+        return ("010", "040", "030", "130", "080", "140", "145", "090")
+    return ("010", "040", "071", "073", "077", "130", "131", "140", "145", "080", "090")
 
 
 def _time(buf: np.ndarray, rec: Records, names: tuple) -> tuple[np.ndarray, np.ndarray]:
@@ -92,8 +95,9 @@ def _quality_v2(buf: np.ndarray, o090: np.ndarray, h: np.ndarray, out: dict) -> 
 def decode021(buf: np.ndarray, rec: Records, edition: str) -> dict:
     """Per record (R,): ``address`` (``has_080``), ``sac``, ``sic``, ``rab``, ``sim``, ``tst``,
     ``tod`` (1/128 s) and ``time_item`` (the item it came from, '' for none), ``lat_deg``,
-    ``lon_deg`` (``has_position``), ``height`` (6.25 ft, ``has_140``), ``nacp`` (``has_nacp``),
-    ``gva`` (``has_gva``), ``nucp`` (``has_nucp``, editions 0.2x); 0 where absent."""
+    ``lon_deg`` (``has_position``), ``height`` (6.25 ft, ``has_140``), ``flight_level`` (1/4 FL,
+    ``has_145``), ``nacp`` (``has_nacp``), ``gva`` (``has_gva``), ``nucp`` (``has_nucp``, editions
+    0.2x); 0 where absent."""
     items = rec.items
     has = {name: items[name] >= 0 for name in wanted(edition)}
     at = {name: np.where(has[name], items[name], 0) for name in has}
@@ -102,6 +106,7 @@ def decode021(buf: np.ndarray, rec: Records, edition: str) -> dict:
     out["sic"] = np.where(has["010"], u8(buf, at["010"] + 1), 0)
     out["address"] = np.where(has["080"], u24(buf, at["080"]), 0)
     out["height"] = np.where(has["140"], signed(u16(buf, at["140"]), 16), 0)
+    out["flight_level"] = np.where(has["145"], signed(u16(buf, at["145"]), 16), 0)
     out["lat_deg"], out["lon_deg"], out["has_position"] = _position(buf, rec, edition)
     if edition.startswith("0."):
         flags = u16(buf, at["040"])

@@ -10,6 +10,7 @@ integers as transmitted, with their LSBs here; the physical values and the plot 
 | I048/040 | RHO, slant range, unsigned 16 bits | 1/256 NM |
 | I048/040 | THETA, azimuth from north, clockwise, unsigned 16 bits | 360/2^16 deg |
 | I048/070 | V (16, 1: not validated), G (15, garbled), L (14, smoothed), Mode 3/A (12 bits) | |
+| I048/090 | V (16, 1: not validated), G (15, garbled), flight level (two's complement, 14 bits) | 1/4 FL |
 | I048/220 | aircraft address, 24 bits | |
 """
 
@@ -18,22 +19,24 @@ from __future__ import annotations
 import numpy as np
 
 from registration.io.asterix.decode.walker import Records
-from registration.io.asterix.octets import u8, u16, u24
+from registration.io.asterix.octets import signed, u8, u16, u24
 
-__all__ = ["WANTED", "TOD_LSB_S", "RHO_LSB_NM", "THETA_LSB_DEG", "decode048"]
+__all__ = ["WANTED", "TOD_LSB_S", "RHO_LSB_NM", "THETA_LSB_DEG", "FLIGHT_LEVEL_LSB_FL", "decode048"]
 
 #: The items read; the others are skipped.
-WANTED = ("010", "140", "020", "040", "070", "220")
+WANTED = ("010", "140", "020", "040", "070", "090", "220")
 TOD_LSB_S = 1.0 / 128.0
 RHO_LSB_NM = 1.0 / 256.0
 THETA_LSB_DEG = 360.0 / 65536.0
+FLIGHT_LEVEL_LSB_FL = 0.25
 
 
 def decode048(buf: np.ndarray, rec: Records) -> dict:
     """Per record (R,): ``has_<item>`` (bool) for each of :data:`WANTED` and the raw fields ``sac``,
     ``sic``, ``tod`` (1/128 s), ``typ``, ``sim``, ``rab``, ``tst`` (0 when I048/020 has no first
     extension), ``rho`` (1/256 NM), ``theta`` (360/2^16 deg), ``m3a_v``, ``m3a_g``, ``m3a_l``,
-    ``m3a`` (12-bit code), ``address``; 0 where the item is absent."""
+    ``m3a`` (12-bit code), ``mc_v``, ``mc_g``, ``mode_c`` (1/4 FL, signed), ``address``; 0 where the
+    item is absent."""
     has = {name: rec.items[name] >= 0 for name in WANTED}
     at = {name: np.where(has[name], rec.items[name], 0) for name in WANTED}
     out = {f"has_{name}": h for name, h in has.items()}
@@ -51,6 +54,8 @@ def decode048(buf: np.ndarray, rec: Records) -> dict:
         (m3a >> 13) & 1,
         m3a & 0x0FFF,
     )
+    mc = u16(buf, at["090"])
+    out["mc_v"], out["mc_g"], out["mode_c"] = mc >> 15, (mc >> 14) & 1, signed(mc & 0x3FFF, 14)
     out["address"] = u24(buf, at["220"])
     for name, h in has.items():  # absent items read as 0
         for key in _FIELDS[name]:
@@ -64,5 +69,6 @@ _FIELDS = {
     "020": ("typ", "sim", "rab", "tst"),
     "040": ("rho", "theta"),
     "070": ("m3a_v", "m3a_g", "m3a_l", "m3a"),
+    "090": ("mc_v", "mc_g", "mode_c"),
     "220": ("address",),
 }

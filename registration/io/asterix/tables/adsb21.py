@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 
-from registration.io.asterix.decode.decode21 import FOOT_M, HEIGHT_LSB_FT
+from registration.io.asterix.decode.decode21 import FLIGHT_LEVEL_LSB_FL, FOOT_M, HEIGHT_LSB_FT
 from registration.io.asterix.tables.plots48 import format_ids
 from registration.io.asterix.tables.verdicts import Verdicts
 
@@ -106,7 +106,9 @@ def reference_verdicts(f: dict, old_edition: bool) -> tuple[Verdicts, np.ndarray
 
 
 def reference_columns(f: dict, time_s: np.ndarray, epu_m: np.ndarray) -> dict:
-    """The reference file columns of records (all; select the kept ones after)."""
+    """The reference file columns of records (all; select the kept ones after), and
+    ``pressure_alt_m``: the I021/145 flight level as a pressure altitude (1/4 FL x 30.48 m; NaN
+    where absent), for the relation of flight levels to heights (not written)."""
     horizontal, vertical = adsb_sigma_m(epu_m, np.where(f["has_gva"], f["gva"], 0))
     return {
         "time_s": time_s,
@@ -116,4 +118,7 @@ def reference_columns(f: dict, time_s: np.ndarray, epu_m: np.ndarray) -> dict:
         "alt_m": f["height"] * (HEIGHT_LSB_FT * FOOT_M),
         "sigma_m": horizontal,
         "sigma_up_m": vertical,
+        "pressure_alt_m": np.where(
+            f["has_145"], f["flight_level"] * (FLIGHT_LEVEL_LSB_FL * 100.0 * FOOT_M), np.nan
+        ),
     }

@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from registration.io.asterix.decode.decode001 import RHO_LSB_NM, THETA_LSB_DEG
-from registration.io.asterix.tables.plots48 import NM_M, target_ids, unknown_source_texts
+from registration.io.asterix.tables.plots48 import NM_M, pressure_altitude_m, target_ids, unknown_source_texts
 from registration.io.asterix.tables.truncated import BASE_NONE
 from registration.io.asterix.tables.verdicts import Verdicts
 
@@ -54,7 +54,8 @@ def plot_verdicts01(f: dict, sensor: np.ndarray) -> Verdicts:
 def plot_columns01(f: dict, time_s: np.ndarray, sensor_name: np.ndarray) -> dict:
     """The plots file columns of CAT001 records (all of them; select the kept ones after):
     ``time_s``, ``sensor``, ``target``, ``range_m``, ``bearing_deg``, ``kind`` ('mode_a', 'none'),
-    ``primary`` (I001/020 SSR/PSR 1: sole primary detection)."""
+    ``primary`` (I001/020 SSR/PSR 1: sole primary detection), ``pressure_alt_m`` (I001/090, as
+    :func:`~registration.io.asterix.tables.plots48.pressure_altitude_m`)."""
     ids, kind = target_ids(f)
     return {
         "time_s": time_s,
@@ -64,4 +65,5 @@ def plot_columns01(f: dict, time_s: np.ndarray, sensor_name: np.ndarray) -> dict
         "bearing_deg": f["theta"] * THETA_LSB_DEG,
         "kind": kind,
         "primary": f["has_020"] & (f["ssrpsr"] == 1),
+        "pressure_alt_m": pressure_altitude_m(f),
     }

@@ -18,11 +18,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.io.asterix.decode.decode48 import RHO_LSB_NM, THETA_LSB_DEG
+from registration.io.asterix.decode.decode48 import FLIGHT_LEVEL_LSB_FL, RHO_LSB_NM, THETA_LSB_DEG
 from registration.io.asterix.tables.verdicts import Verdicts
 
 __all__ = [
     "NM_M",
+    "FL_M",
+    "pressure_altitude_m",
     "SHARED_MODE_A",
     "format_ids",
     "unknown_source_texts",
@@ -34,6 +36,8 @@ __all__ = [
 
 #: The international nautical mile (m), exact.
 NM_M = 1852.0
+#: A flight level: 100 ft of pressure altitude (m).
+FL_M = 30.48
 #: Mode 3/A codes shared by many aircraft (conspicuity, VFR, emergency, radio failure, unlawful
 #: interference): they give no id.
 SHARED_MODE_A = frozenset(int(code, 8) for code in ("1000", "1200", "2000", "7000", "7500", "7600", "7700"))
@@ -73,6 +77,13 @@ def target_ids(f: dict) -> tuple[np.ndarray, np.ndarray]:
     return ids, kind
 
 
+def pressure_altitude_m(f: dict) -> np.ndarray:
+    """(N,) the pressure altitude (m) of each record's flight level (I048/090 or I001/090: 1/4 FL x
+    30.48 m), NaN where the item is absent, not validated (V) or garbled (G)."""
+    valid = f["has_090"] & (f["mc_v"] == 0) & (f["mc_g"] == 0)
+    return np.where(valid, f["mode_c"] * (FLIGHT_LEVEL_LSB_FL * FL_M), np.nan)
+
+
 def plot_verdicts(f: dict, sensor: np.ndarray) -> Verdicts:
     """Why each CAT048 record is set aside (''  when kept); ``sensor`` (N,) index of its SITES row
     (-1: SAC/SIC not in SITES)."""
@@ -96,7 +107,8 @@ def plot_verdicts(f: dict, sensor: np.ndarray) -> Verdicts:
 def plot_columns(f: dict, time_s: np.ndarray, sensor_name: np.ndarray) -> dict:
     """The plots file columns of records (all of them; select the kept ones after): ``time_s``,
     ``sensor``, ``target``, ``range_m``, ``bearing_deg``, ``kind`` ('mode_s', 'mode_a', 'none') and
-    ``primary`` (I048/020 TYP 1: a primary-only plot)."""
+    ``primary`` (I048/020 TYP 1: a primary-only plot) and ``pressure_alt_m``
+    (:func:`pressure_altitude_m`)."""
     ids, kind = target_ids(f)
     return {
         "time_s": time_s,
@@ -106,6 +118,7 @@ def plot_columns(f: dict, time_s: np.ndarray, sensor_name: np.ndarray) -> dict:
         "bearing_deg": f["theta"] * THETA_LSB_DEG,
         "kind": kind,
         "primary": f["has_020"] & (f["typ"] == 1),
+        "pressure_alt_m": pressure_altitude_m(f),
     }
 
 
