@@ -145,19 +145,27 @@ class RejectedLedger:
         if self.columns.sort and self.columns.location and ranks.size:
             first = self.columns.location[0].name
             order = np.lexsort((_join([p[3][first] for p in self._parts], np.int64), ranks))
-        out: dict[str, object] = {"file": names[ranks[order]].astype(str) if ranks.size else _empty("text")}
+        # text columns stay object arrays of str: a fixed-width copy (astype(str)) takes N times the
+        # longest text times 4 bytes, 200 MB for half a million reasons
+        out: dict[str, object] = {"file": _texts(names[ranks[order]]) if ranks.size else _empty("text")}
         for c in self.columns.location:
             dtype = object if c.kind == "text" else np.int64
             out[c.name] = _column(_join([p[3][c.name] for p in self._parts], dtype)[order], c.kind)
         codes = _join([p[1] for p in self._parts], object)
-        out[self.columns.code] = codes[order].astype(str) if ranks.size else _empty("text")
+        out[self.columns.code] = _texts(codes[order]) if ranks.size else _empty("text")
         texts = _join([p[2] for p in self._parts], object)
-        out["reason"] = texts[order].astype(str) if ranks.size else _empty("text")
+        out["reason"] = _texts(texts[order]) if ranks.size else _empty("text")
         return pd.DataFrame(out)
 
 
 def _join(parts: list, dtype) -> np.ndarray:
     return np.concatenate(parts).astype(dtype, copy=False) if parts else np.zeros(0, dtype=dtype)
+
+
+def _texts(values: np.ndarray) -> np.ndarray:
+    """(N,) object array of the texts (``str`` or numpy's ``str_``, a subclass), not copied to a
+    fixed-width unicode array."""
+    return np.asarray(values, dtype=object)
 
 
 def _empty(kind: str):
