@@ -117,6 +117,7 @@ def choose_partitions(args: argparse.Namespace, source) -> None:
     from registration.fleet.batch.partitioned.sizing import (
         MemoryLimitError,
         choose_partition_s,
+        in_memory_bytes,
         partition_bytes,
     )
 
@@ -126,9 +127,20 @@ def choose_partitions(args: argparse.Namespace, source) -> None:
     profile = source.plot_profile()
     limit = memory_limit(args)
     if given is None:
-        choice = choose_partition_s(
-            profile.most_rows, profile.rows, profile.t1 - profile.t0, limit, args.window_s
-        )
+        try:
+            choice = choose_partition_s(
+                profile.most_rows, profile.rows, profile.t1 - profile.t0, limit, args.window_s
+            )
+        except MemoryLimitError as exc:
+            whole = in_memory_bytes(profile.rows)
+            if whole >= exc.smallest:
+                raise
+            raise MemoryLimitError(  # in memory needs less than one partition: that is the smallest
+                f"--memory-limit {_size(limit)}: the {profile.rows} plots need about {_size(whole)} in "
+                f"memory, and one partition at least {_size(exc.smallest)}; the smallest limit that "
+                f"works is {-(-whole // (1 << 20))}MiB",
+                whole,
+            ) from None
         args.partition_s = choice.partition_s
         args.partition_chosen = True
         print(f"memory limit {_size(limit)}: {choice.text()}")

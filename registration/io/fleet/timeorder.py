@@ -141,14 +141,15 @@ def needs_copy(dataset, column: str = "time_s") -> bool:
     return spans > OVERLAP_FACTOR * max(hi - lo, 0.0)
 
 
-def write_buckets(dataset, folder: Path, column: str = "time_s", rows_per_bucket: int = BUCKET_ROWS) -> Path:
+def write_buckets(dataset, folder: Path, column: str = "time_s", rows_per_bucket: int | None = None) -> Path:
     """Copy the table ``dataset`` into ``folder`` (made; returned) as files ``bucket-00000.parquet``
     ..., one per time bucket, by streaming, each row with its original row number in ROW_COLUMN
-    (module docstring). Rows whose time is not finite go to the first bucket."""
+    (module docstring), buckets of about ``rows_per_bucket`` rows (default BUCKET_ROWS). Rows
+    whose time is not finite go to the first bucket."""
     import pyarrow as pa
     import pyarrow.parquet as pq
 
-    edges = time_profile(dataset, column).edges(rows_per_bucket)
+    edges = time_profile(dataset, column).edges(rows_per_bucket or BUCKET_ROWS)
     schema = dataset.schema.append(pa.field(ROW_COLUMN, pa.int64()))
     folder.mkdir(parents=True, exist_ok=True)
     writers: dict[int, pq.ParquetWriter] = {}
