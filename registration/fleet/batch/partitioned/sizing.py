@@ -2,8 +2,8 @@
 a limit (docs/howto/register-an-archive.md, "Memory"): :func:`in_memory_bytes`,
 :func:`choose_partition_s`.
 
-The figures are measured peaks of the resident memory of ``fleet register`` (benchmarks/
-bench_archive_workers.py; 8 sensors, 3 navigation rows per plot): in memory, a base of
+The figures are measured peaks of the resident memory of ``fleet register --no-plots`` (the
+archive of benchmarks/bench_archive_workers.py: 8 sensors, 3 navigation rows per plot): in memory, a base of
 IN_MEMORY_BASE plus IN_MEMORY_PER_PLOT per plot; partitioned, a base of PARTITION_BASE (imports,
 the plan, the windows' coefficients, the solver's sums) plus PARTITION_PER_PLOT per plot of the
 largest partition (its rows read, its design, its normal equations and their reduction). Each
@@ -30,12 +30,14 @@ __all__ = [
 ]
 
 MiB = 1 << 20
-#: In memory (read_fleet_tables + solve_batch): bytes before the first plot and per plot.
+#: In memory (read_fleet_tables + solve_batch): bytes before the first plot and per plot (measured:
+#: 616 MiB for 10^5 plots, 976 MiB for 2 * 10^5).
 IN_MEMORY_BASE = 260 * MiB
 IN_MEMORY_PER_PLOT = 3_800
-#: Partitioned: bytes before the first partition and per plot of the largest partition.
-PARTITION_BASE = 330 * MiB
-PARTITION_PER_PLOT = 4_500
+#: Partitioned: bytes before the first partition and per plot of the largest partition (measured on
+#: 10^6 plots in process: 502 MiB with partitions of 27 000 plots, 662 MiB with 99 000; rounded up).
+PARTITION_BASE = 480 * MiB
+PARTITION_PER_PLOT = 2_600
 
 
 class MemoryLimitError(ValueError):
