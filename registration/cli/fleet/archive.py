@@ -186,37 +186,50 @@ def _solve_and_write(args: argparse.Namespace, out: Path, source) -> tuple:
 
 
 def _solve_in(args: argparse.Namespace, out: Path, source, work: str) -> tuple:
-    from registration.cli.staging import staged_outputs
     from registration.core.parallel import dask_client
     from registration.fleet import BatchOptions
-    from registration.fleet.batch.outputs import archive_outputs
-    from registration.fleet.batch.partitioned import solve_batch_partitioned
+    from registration.fleet.batch.partitioned import remove_spill, solve_batch_partitioned
 
     options = BatchOptions(window_s=args.window_s)
     with dask_client(args.scheduler, args.workers) as client:
         result = solve_batch_partitioned(
-            source, options, partition_s=args.partition_s, client=client, progress=True, spill_dir=work
+            source,
+            options,
+            partition_s=args.partition_s,
+            client=client,
+            progress=True,
+            spill_dir=work,
+            keep_spill=True,  # the output pass reads each partition from it rather than building it again
         )
-        with staged_outputs(
-            out, "registration fleet register", ARCHIVE_OUTPUTS, folders=ARCHIVE_FOLDERS
-        ) as folder:
-            parts = folder.path / FUSED_FOLDER
-            with writing(parts):
-                parts.mkdir()
-            remote = bool(
-                args.scheduler
-            )  # a remote cluster may not see this disk: its workers return the parts
-            outputs = archive_outputs(result, source, options, parts=None if remote else parts, client=client)
-            if remote:
-                _write_parts(parts, outputs.tables or [])
-            _write_outputs(
-                folder.path,
-                args,
-                result,
-                outputs,
-                "client" if remote else ("workers" if client is not None else "this process"),
-            )
+        try:
+            outputs = _outputs(args, out, result, source, options, client)
+        finally:
+            if result.spill_folder is not None:
+                remove_spill(result.spill_folder, client)
     return result, outputs
+
+
+def _outputs(args: argparse.Namespace, out: Path, result, source, options, client):
+    """The output pass and the outputs written into ``out`` (staged: all or none)."""
+    from registration.cli.staging import staged_outputs
+    from registration.fleet.batch.outputs import archive_outputs
+
+    with staged_outputs(out, "registration fleet register", ARCHIVE_OUTPUTS, folders=ARCHIVE_FOLDERS) as folder:
+        parts = folder.path / FUSED_FOLDER
+        with writing(parts):
+            parts.mkdir()
+        remote = bool(args.scheduler)  # a remote cluster may not see this disk: its workers return the parts
+        outputs = archive_outputs(result, source, options, parts=None if remote else parts, client=client)
+        if remote:
+            _write_parts(parts, outputs.tables or [])
+        _write_outputs(
+            folder.path,
+            args,
+            result,
+            outputs,
+            "client" if remote else ("workers" if client is not None else "this process"),
+        )
+    return outputs
 
 
 def run_archive(args: argparse.Namespace) -> int:

@@ -8,10 +8,12 @@ The folder holds ``plots``, ``navigation`` and (optional) ``reference`` each as 
 in any order), and ``sensors``, (optional) ``platforms`` and (optional) ``targets`` (the surface
 targets) as Parquet or CSV files (small: read whole). A partition's plots, references and
 navigation are read row group by row group: only the groups whose statistics on ``time_s`` (and
-``platform``) overlap the partition, then filtered; the groups of the latest partition are kept
-(per process, while the file is unchanged) for the next one, which mostly reads the same. Memory
-is bounded by the partition when the files' row groups follow time (write the plots sorted by
-time, in row groups of 10^5 rows or so). The first passes get text columns as
+``platform``) overlap the partition, each streamed in batches of BATCH_ROWS rows and filtered batch
+by batch, so memory holds the partition's rows and one batch whatever the size of a row group.
+Nothing read is kept for the next call (row groups once kept on the copies of the source that
+Dask workers unpickle per task piled up there: 9.6 GiB per worker on plots in one row group). Tables whose row groups do not follow
+time are read through a copy by time buckets (:meth:`ParquetSource.time_ordered`,
+:mod:`registration.io.fleet.timeorder`). The first passes get text columns as
 ``pandas.Categorical`` (no Python string per row). Plots of one target window may lie in several
 files in any order: a partition reads them from every file, so the answer is the same. Navigation
 rows are sorted by time per platform after reading.
