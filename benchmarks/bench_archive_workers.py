@@ -104,6 +104,8 @@ def _status(pid: int) -> tuple[float | None, str]:
 def _role(pid: int, root: int, cmd: str) -> str:
     if pid == root:
         return "command"
+    if "resource_tracker" in cmd:
+        return "resource tracker"
     if "multiprocessing" in cmd or "spawn_main" in cmd or "forkserver" in cmd:
         return "worker"
     return "other"

@@ -96,7 +96,10 @@ def too_large(args: argparse.Namespace) -> bool:
     from registration.fleet.batch.partitioned.sizing import in_memory_bytes
     from registration.io.fleet.sources import plot_count
 
-    rows, ids = plot_count(args.tables)
+    try:
+        rows, ids = plot_count(args.tables)
+    except ValueError:  # a folder or file the reader will name with its own error
+        return False
     need, limit = in_memory_bytes(rows), memory_limit(args)
     if need <= limit:
         return False

@@ -3,7 +3,9 @@ docs/howto/register-an-archive.md),
 made by one more pass over the partitions at the solution: :func:`archive_outputs`.
 
 Each partition, with the states ``x``, its windows' coefficients and the states' covariance ``P``,
-evaluates (a pure function, :func:`output_pass`, run by ``run_pass`` here or on Dask workers):
+evaluates (a pure function, :func:`output_pass`, run by ``run_pass`` here or on Dask workers; its
+problem and design read from the solve's spill folder when the solve kept it, ``keep_spill``, else
+read from the source and built again, the same bits either way):
 
 * its **fused targets**, as :func:`registration.fleet.batch.covariance.fused_targets` makes them for
   ``solve_batch``: per measured instant of each target (time corrected by any time bias) the
