@@ -165,7 +165,10 @@ def main(argv=None) -> dict:
     parser.add_argument("--partition-s", type=float, default=600.0, help="partition length, s")
     parser.add_argument("--memory-limit", default="1GiB", help="the limit of the 'limit' run")
     parser.add_argument(
-        "--modes", nargs="+", choices=("in_process", "workers", "limit"), default=["in_process", "workers", "limit"]
+        "--modes",
+        nargs="+",
+        choices=("in_process", "workers", "limit"),
+        default=["in_process", "workers", "limit"],
     )
     parser.add_argument("--archive", help="keep the prepared archive in this folder and reuse it")
     add_arguments(parser)
@@ -220,7 +223,9 @@ def main(argv=None) -> dict:
                     f"  {m}: x{r['time_ratio']:.2f} the in-process time; estimates {r['estimate_rel']:.1e}, "
                     f"sigmas {r['sigma_rel']:.1e} relative to the in-process run's"
                 )
-        report["runs"] = {m: {k: v for k, v in r.items() if k not in ("estimate", "sigma")} for m, r in runs.items()}
+        report["runs"] = {
+            m: {k: v for k, v in r.items() if k not in ("estimate", "sigma")} for m, r in runs.items()
+        }
     report["load_after"] = os.getloadavg()
     write(
         "archive_workers",

@@ -26,7 +26,9 @@ from registration.io import write_fleet_tables
 def tables(tmp_path_factory):
     sc = fleet_scenario(0)
     folder = tmp_path_factory.mktemp("tables")
-    write_fleet_tables(folder, sc.plots, sc.navigation, sc.sensors, sc.platforms, sc.references, fmt="parquet")
+    write_fleet_tables(
+        folder, sc.plots, sc.navigation, sc.sensors, sc.platforms, sc.references, fmt="parquet"
+    )
     return folder, int(sc.plots["time"].size)
 
 

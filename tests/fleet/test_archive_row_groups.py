@@ -6,6 +6,9 @@ reads give the original's rows in the original's order."""
 
 from __future__ import annotations
 
+import pickle
+import shutil
+
 import numpy as np
 import pytest
 
@@ -74,9 +77,8 @@ def test_a_copy_the_worker_cannot_see_falls_back_to_the_original(folders, tmp_pa
     monkeypatch.setattr(timeorder, "MAX_GROUP_ROWS", 1000)
     copied = ParquetSource(one).time_ordered(tmp_path / "copy")
     lo, hi = 30.0, 90.0
-    import shutil
-
     shutil.rmtree(tmp_path / "copy")
-    fresh = __import__("pickle").loads(__import__("pickle").dumps(copied))  # as a worker gets it
+    fresh = pickle.loads(pickle.dumps(copied))  # as a worker on another machine gets it
     a, b = ParquetSource(one).read_plots(lo, hi), fresh.read_plots(lo, hi)
-    assert all(np.array_equal(np.asarray(a[k]), np.asarray(b[k]), equal_nan=a[k].dtype.kind == "f") for k in a)
+    for k in a:
+        assert np.array_equal(np.asarray(a[k]), np.asarray(b[k]), equal_nan=a[k].dtype.kind == "f")

@@ -214,7 +214,9 @@ def _outputs(args: argparse.Namespace, out: Path, result, source, options, clien
     from registration.cli.staging import staged_outputs
     from registration.fleet.batch.outputs import archive_outputs
 
-    with staged_outputs(out, "registration fleet register", ARCHIVE_OUTPUTS, folders=ARCHIVE_FOLDERS) as folder:
+    with staged_outputs(
+        out, "registration fleet register", ARCHIVE_OUTPUTS, folders=ARCHIVE_FOLDERS
+    ) as folder:
         parts = folder.path / FUSED_FOLDER
         with writing(parts):
             parts.mkdir()

@@ -11,12 +11,12 @@ navigation are read row group by row group: only the groups whose statistics on 
 ``platform``) overlap the partition, each streamed in batches of BATCH_ROWS rows and filtered batch
 by batch, so memory holds the partition's rows and one batch whatever the size of a row group.
 Nothing read is kept for the next call (row groups once kept on the copies of the source that
-Dask workers unpickle per task piled up there: 9.6 GiB per worker on plots in one row group). Tables whose row groups do not follow
-time are read through a copy by time buckets (:meth:`ParquetSource.time_ordered`,
-:mod:`registration.io.fleet.timeorder`). The first passes get text columns as
-``pandas.Categorical`` (no Python string per row). Plots of one target window may lie in several
-files in any order: a partition reads them from every file, so the answer is the same. Navigation
-rows are sorted by time per platform after reading.
+Dask workers unpickle per task piled up there: 9.6 GiB per worker on plots in one row group).
+Tables whose row groups do not follow time are read through a copy by time buckets
+(:meth:`ParquetSource.time_ordered`, :mod:`registration.io.fleet.timeorder`). The first passes
+get text columns as ``pandas.Categorical`` (no Python string per row). Plots of one target
+window may lie in several files in any order: a partition reads them from every file, so the answer
+is the same. Navigation rows are sorted by time per platform after reading.
 
 The files hold the fleet files' columns in file units
 (:data:`registration.io.fleet.cells.FILE_COLUMNS`: degrees, metres, seconds); the source gives the

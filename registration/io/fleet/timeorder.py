@@ -96,9 +96,7 @@ def _time_batches(dataset, column: str):
     for fragment in _fragments(dataset):
         try:
             reader = pq.ParquetFile(fragment.path, pre_buffer=False)
-            for batch in reader.iter_batches(
-                batch_size=COPY_BATCH_ROWS, columns=[column], use_threads=False
-            ):
+            for batch in reader.iter_batches(batch_size=COPY_BATCH_ROWS, columns=[column], use_threads=False):
                 yield fragment.path, batch.column(0).to_numpy(zero_copy_only=False).astype(np.float64)
         except Exception as exc:  # pyarrow errors of many kinds
             raise read_error(fragment.path, exc) from exc
