@@ -213,10 +213,10 @@ def output_pass(
     if spilled is not None:
         problem, design = spilled
     else:
-        problem = partition_problem(task)
-        if problem is None:
+        built = partition_problem(task)
+        if built is None:
             raise ValueError(f"partition {task.index} holds no plot at the solution but has coefficients")
-        design = partition_design(task, problem)
+        problem, design = built, partition_design(task, built)
     if design.blocks.n_blocks != coef.shape[0]:
         raise ValueError(
             f"partition {task.index}: {design.blocks.n_blocks} windows, but {coef.shape[0]} "

@@ -168,7 +168,7 @@ def write_buckets(dataset, folder: Path, column: str = "time_s", rows_per_bucket
                     bucket = np.searchsorted(edges, np.nan_to_num(t, nan=-np.inf), side="right")
                     order = np.argsort(bucket, kind="stable")
                     bounds = np.searchsorted(bucket[order], np.arange(edges.size + 2))
-                    for b in np.flatnonzero(np.diff(bounds)):
+                    for b in np.flatnonzero(np.diff(bounds)).tolist():
                         if b not in writers:
                             writers[b] = pq.ParquetWriter(str(folder / f"bucket-{b:05d}.parquet"), schema)
                         writers[b].write_table(table.take(order[bounds[b] : bounds[b + 1]]))
