@@ -164,8 +164,9 @@ class ParquetSource:
             if self.paths[name] is None:
                 continue
             data, column = self._dataset(name), self._file_column(name, "time")
+            key = self._file_column(name, "platform") if name == "navigation" else None
             try:
-                needed = needs_copy(data, column)
+                needed = needs_copy(data, column, key)
             except Exception as exc:  # pyarrow errors of many kinds
                 raise read_error(self.paths[name], exc) from exc
             if needed:

@@ -119,24 +119,31 @@ def time_profile(dataset, column: str = "time_s") -> TimeProfile:
     return TimeProfile(rows, float(t0) if rows else 0.0, float(t1) if rows else 0.0, counts)
 
 
-def needs_copy(dataset, column: str = "time_s") -> bool:
+def needs_copy(dataset, column: str = "time_s", key: str | None = None) -> bool:
     """True when the table's row groups are too large (MAX_GROUP_ROWS) or overlap too much in time
-    (OVERLAP_FACTOR) for partitions to read only their part (module docstring)."""
-    rows, spans, lo, hi = 0, 0.0, np.inf, -np.inf
+    (OVERLAP_FACTOR) for partitions to read only their part (module docstring). With ``key`` (the
+    navigation's ``platform``), groups of one key value are compared with the other groups of that
+    value only: a file sorted by platform, then time, is in order."""
+    rows, unknown = 0, False
+    spans: dict = {}  # key value (None: several or unknown) -> [sum of spans, first, last]
     for fragment in _fragments(dataset):
         fragment.ensure_complete_metadata()
         for g in fragment.row_groups:
             rows += g.num_rows
             if g.num_rows > MAX_GROUP_ROWS:
                 return True
-            s = (g.statistics or {}).get(column)
+            stats = g.statistics or {}
+            s, k = stats.get(column), stats.get(key) if key is not None else None
             if s is None or s.get("min") is None:
-                return True
-            spans += float(s["max"]) - float(s["min"])
-            lo, hi = min(lo, float(s["min"])), max(hi, float(s["max"]))
+                unknown = True
+                continue
+            one = k["min"] if k is not None and k.get("min") is not None and k["min"] == k["max"] else None
+            acc = spans.setdefault(one, [0.0, np.inf, -np.inf])
+            acc[0] += float(s["max"]) - float(s["min"])
+            acc[1], acc[2] = min(acc[1], float(s["min"])), max(acc[2], float(s["max"]))
     if rows <= MAX_GROUP_ROWS:
         return False
-    return spans > OVERLAP_FACTOR * max(hi - lo, 0.0)
+    return unknown or any(a[0] > OVERLAP_FACTOR * max(a[2] - a[1], 0.0) for a in spans.values())
 
 
 def write_buckets(dataset, folder: Path, column: str = "time_s", rows_per_bucket: int | None = None) -> Path:
