@@ -82,3 +82,29 @@ def test_a_copy_the_worker_cannot_see_falls_back_to_the_original(folders, tmp_pa
     a, b = ParquetSource(one).read_plots(lo, hi), fresh.read_plots(lo, hi)
     for k in a:
         assert np.array_equal(np.asarray(a[k]), np.asarray(b[k]), equal_nan=a[k].dtype.kind == "f")
+
+
+def test_which_layouts_are_copied(folders, tmp_path, monkeypatch):
+    """Copied: one large row group, or groups that each span most of the time; not copied: groups
+    in time order, or (navigation) sorted by platform, then time."""
+    import pyarrow.dataset as ds
+    import pyarrow.parquet as pq
+
+    one, _ = folders
+    monkeypatch.setattr(timeorder, "MAX_GROUP_ROWS", 1000)
+    nav = pq.read_table(one / "navigation.parquet")
+    plots = pq.read_table(one / "plots.parquet")
+    layouts = {
+        "one group": (plots, None, True),
+        "time order": (plots.sort_by("time_s"), None, False),
+        "shuffled": (plots.take(np.random.default_rng(1).permutation(plots.num_rows)), None, True),
+        "platform, then time": (
+            nav.sort_by([("platform", "ascending"), ("time_s", "ascending")]),
+            "platform",
+            False,
+        ),
+    }
+    for name, (table, key, copied) in layouts.items():
+        path = tmp_path / f"{name}.parquet"
+        pq.write_table(table, path, row_group_size=table.num_rows if name == "one group" else 400)
+        assert timeorder.needs_copy(ds.dataset(path), "time_s", key) is copied, name
