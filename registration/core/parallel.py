@@ -61,7 +61,11 @@ def dask_client(scheduler: str | None = None, workers: int | None = None):
             yield client
         return
     assert workers is not None  # neither a scheduler nor workers: returned above
+    import dask
+
     with (
+        # the workers' statistical profiler samples their threads every 10 ms; nothing here reads it
+        dask.config.set({"distributed.worker.profile.enabled": False}),
         distributed.LocalCluster(
             n_workers=int(workers), threads_per_worker=1, processes=True, dashboard_address="127.0.0.1:0"
         ) as cluster,

@@ -1,6 +1,6 @@
 """The archive pieces of ``fleet register`` (registration.cli.fleet.archive): --partition-s runs the
 partitioned solver on a Parquet folder and writes estimates.csv and summary.json; an archive whose
-file cannot be read leaves --out as it was; --workers alone is refused."""
+file cannot be read leaves --out as it was; --workers without --tables is refused."""
 
 from __future__ import annotations
 
@@ -64,9 +64,12 @@ def test_archive_run_writes_estimates_and_leaves_out_on_error(tmp_path):
     assert {p.relative_to(out): p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
 
 
-def test_workers_without_partitions_is_refused():
-    with pytest.raises(ValueError, match="--partition-s"):
+def test_workers_without_an_archive_folder_is_refused():
+    """--workers without --partition-s maps partitions of a length the run chooses; without --tables
+    DIR there is no archive to map."""
+    with pytest.raises(ValueError, match="--tables DIR"):
         archive_requested(parse(["--workers", "2"]))
+    assert archive_requested(parse(["--workers", "2", "--tables", "somewhere"]))
     assert not archive_requested(parse([]))
 
 

@@ -94,3 +94,39 @@ def test_dask_workers_with_spill_equal_in_process(fleet, tmp_path):
         assert np.max(np.abs(runs[0].estimate - bare.estimate) / scale) < 1e-9
     else:
         same_bits(runs[0], bare)
+
+
+def test_the_output_pass_reads_the_kept_spill_instead_of_the_archive(fleet, tmp_path):
+    """With keep_spill the output pass takes each partition's problem and design from the solve's
+    folder: no plot is read, and the outputs equal those of a pass that reads and builds every
+    partition again, bit for bit; remove_spill removes the folder."""
+    from dataclasses import replace
+
+    from registration.fleet import BatchOptions
+    from registration.fleet.batch.outputs import archive_outputs
+    from registration.fleet.batch.partitioned import remove_spill
+
+    src, _ = fleet
+    kept = solve_batch_partitioned(
+        src, partitions=3, cache=0, spill=True, spill_dir=str(tmp_path), keep_spill=True
+    )
+    assert kept.spill_folder and all(t.spill == kept.spill_folder for t in kept.tasks)
+    reads = []
+    spy = type(src).__new__(type(src))  # the same tables, every read of plots counted
+    spy.__dict__.update(src.__dict__)
+    spy.read_plots = lambda lo, hi: reads.append(lo) or src.read_plots(lo, hi)
+    fast = archive_outputs(kept, spy, BatchOptions())
+    assert reads == []
+    slow = archive_outputs(
+        replace(kept, tasks=tuple(replace(t, spill=None) for t in kept.tasks)), spy, BatchOptions()
+    )
+    assert len(reads) == len(kept.tasks)
+    for name in ("count", "squares", "hist", "mean", "rms"):
+        assert np.array_equal(getattr(fast, name), getattr(slow, name), equal_nan=True)
+    assert fast.parts == slow.parts and fast.by_target == slow.by_target
+    for a, b in zip(fast.tables, slow.tables):
+        assert all(np.array_equal(a[k], b[k]) for k in a)
+    for k in fast.sample:
+        assert np.array_equal(fast.sample[k], slow.sample[k], equal_nan=True)
+    remove_spill(kept.spill_folder, None)
+    assert not list(tmp_path.iterdir())

@@ -4,9 +4,13 @@ folder of Parquet tables, or of CSV files converted block by block into a tempor
 (:mod:`registration.io.fleet.csvarchive`), in this process or on Dask workers.
 
 Options (:func:`add_archive_arguments`): ``--partition-s S`` (the archive is read and solved in
-partitions of S seconds of target windows; this switches the archive path on), ``--workers N`` (a
-local Dask cluster of N worker processes), ``--scheduler ADDRESS`` (a running dask.distributed
-scheduler). The estimates equal the in-process run's for any number of workers. Outputs, replacing
+partitions of S seconds of target windows; this switches the archive path on), ``--memory-limit
+SIZE`` (without ``--partition-s``: tables whose registration in memory would need more are
+registered by partitions, of a length chosen from the plot rate, :mod:`registration.cli.fleet.memory`),
+``--workers N`` (a local Dask cluster of N worker processes), ``--scheduler ADDRESS`` (a running
+dask.distributed scheduler). A table whose row groups do not follow time is first copied by time
+buckets into a temporary folder (:mod:`registration.io.fleet.timeorder`), so every process reads
+only its partition. The estimates equal the in-process run's for any number of workers. Outputs, replacing
 an earlier run's in ``--out`` only once all are written (a partition that cannot be read, or a bad
 CSV row, leaves ``--out`` as it was, with a one-line error naming the file): ``estimates.csv``
 (state, unit in file units, estimate, sigma), ``fused_targets/`` (Parquet parts, one per
@@ -24,6 +28,7 @@ from pathlib import Path
 
 from registration.cli.errors import writing
 from registration.cli.fleet.archive_output import PNG_OUTPUTS
+from registration.cli.fleet.memory import choose_partitions, memory_limit, parse_size, too_large
 from registration.io.files.jsonfile import json_text
 
 __all__ = [
@@ -51,34 +56,49 @@ def add_archive_arguments(p: argparse.ArgumentParser) -> None:
         default=None,
         metavar="S",
         help="solve partition by partition, S seconds of target windows each (memory bounded by a "
-        "partition; default: not partitioned, the whole archive in memory); the plots need their "
-        "target ids (plots without ids are associated in memory)",
+        "partition; default: chosen from --memory-limit: in memory when the tables fit, else "
+        "partitions whose length follows from the plot rate); the plots need their target ids "
+        "(plots without ids are associated in memory)",
+    )
+    g.add_argument(
+        "--memory-limit",
+        type=parse_size,
+        default=None,
+        metavar="SIZE",
+        help="the memory a process of the run may use, e.g. 1GiB or 512MiB (default: a quarter of "
+        "this machine's memory): tables that need more in memory are registered by partitions short "
+        "enough for it; a limit below what one partition needs stops the run, naming the smallest "
+        "that works",
     )
     g.add_argument(
         "--workers",
         type=int,
         default=None,
         metavar="N",
-        help="map the partitions on a local Dask cluster of N worker processes (with --partition-s)",
+        help="map the partitions on a local Dask cluster of N worker processes (the partition length: "
+        "--partition-s, else chosen from --memory-limit)",
     )
     g.add_argument(
         "--scheduler",
         default=None,
         metavar="ADDRESS",
         help="map the partitions on the dask.distributed scheduler at ADDRESS, e.g. tcp://host:8786 "
-        "(with --partition-s)",
+        "(the partition length: --partition-s, else chosen from --memory-limit)",
     )
 
 
 def archive_requested(args: argparse.Namespace) -> bool:
-    """True when the options ask for the archive path (ValueError for --workers/--scheduler alone)."""
-    if getattr(args, "partition_s", None) is None:
-        if getattr(args, "workers", None) is not None or getattr(args, "scheduler", None):
+    """True when the run takes the archive path: --partition-s, --workers or --scheduler given, or
+    tables too large for --memory-limit in memory (:func:`registration.cli.fleet.memory.too_large`)."""
+    if getattr(args, "partition_s", None) is not None:
+        return True
+    if getattr(args, "workers", None) is not None or getattr(args, "scheduler", None):
+        if getattr(args, "tables", None) is None:
             raise ValueError(
-                "--workers and --scheduler map the partitions of an archive: give --partition-s S too"
+                "--workers and --scheduler map the partitions of an archive: give it as --tables DIR"
             )
-        return False
-    return True
+        return True
+    return too_large(args)
 
 
 def _summary(result, args: argparse.Namespace) -> dict:
@@ -92,6 +112,8 @@ def _summary(result, args: argparse.Namespace) -> dict:
         "tables": str(args.tables),
         "window_s": args.window_s,
         "partition_s": args.partition_s,
+        "partition_s_chosen": bool(getattr(args, "partition_chosen", False)),
+        "memory_limit_bytes": memory_limit(args),
         "partitions": result.plan.n_partitions,
         "plots_used": result.n_plots,
         "plots_read": result.plan.n_input_plots,
@@ -154,37 +176,62 @@ def _write_outputs(folder: Path, args: argparse.Namespace, result, outputs, writ
 
 
 def _solve_and_write(args: argparse.Namespace, out: Path, source) -> tuple:
-    from registration.cli.staging import staged_outputs
+    import tempfile
+
+    with tempfile.TemporaryDirectory(prefix="registration-archive-") as work:
+        ordered = source.time_ordered(work)  # tables out of time order copied by time buckets
+        for name in ordered.copies:
+            print(f"{source.name(name)}: its row groups do not follow time; read through a copy by time")
+        return _solve_in(args, out, ordered, work)
+
+
+def _solve_in(args: argparse.Namespace, out: Path, source, work: str) -> tuple:
     from registration.core.parallel import dask_client
     from registration.fleet import BatchOptions
-    from registration.fleet.batch.outputs import archive_outputs
-    from registration.fleet.batch.partitioned import solve_batch_partitioned
+    from registration.fleet.batch.partitioned import remove_spill, solve_batch_partitioned
 
     options = BatchOptions(window_s=args.window_s)
     with dask_client(args.scheduler, args.workers) as client:
         result = solve_batch_partitioned(
-            source, options, partition_s=args.partition_s, client=client, progress=True
+            source,
+            options,
+            partition_s=args.partition_s,
+            client=client,
+            progress=True,
+            spill_dir=work,
+            keep_spill=True,  # the output pass reads each partition from it rather than building it again
         )
-        with staged_outputs(
-            out, "registration fleet register", ARCHIVE_OUTPUTS, folders=ARCHIVE_FOLDERS
-        ) as folder:
-            parts = folder.path / FUSED_FOLDER
-            with writing(parts):
-                parts.mkdir()
-            remote = bool(
-                args.scheduler
-            )  # a remote cluster may not see this disk: its workers return the parts
-            outputs = archive_outputs(result, source, options, parts=None if remote else parts, client=client)
-            if remote:
-                _write_parts(parts, outputs.tables or [])
-            _write_outputs(
-                folder.path,
-                args,
-                result,
-                outputs,
-                "client" if remote else ("workers" if client is not None else "this process"),
-            )
+        try:
+            outputs = _outputs(args, out, result, source, options, client)
+        finally:
+            if result.spill_folder is not None:
+                remove_spill(result.spill_folder, client)
     return result, outputs
+
+
+def _outputs(args: argparse.Namespace, out: Path, result, source, options, client):
+    """The output pass and the outputs written into ``out`` (staged: all or none)."""
+    from registration.cli.staging import staged_outputs
+    from registration.fleet.batch.outputs import archive_outputs
+
+    with staged_outputs(
+        out, "registration fleet register", ARCHIVE_OUTPUTS, folders=ARCHIVE_FOLDERS
+    ) as folder:
+        parts = folder.path / FUSED_FOLDER
+        with writing(parts):
+            parts.mkdir()
+        remote = bool(args.scheduler)  # a remote cluster may not see this disk: its workers return the parts
+        outputs = archive_outputs(result, source, options, parts=None if remote else parts, client=client)
+        if remote:
+            _write_parts(parts, outputs.tables or [])
+        _write_outputs(
+            folder.path,
+            args,
+            result,
+            outputs,
+            "client" if remote else ("workers" if client is not None else "this process"),
+        )
+    return outputs
 
 
 def run_archive(args: argparse.Namespace) -> int:
@@ -218,6 +265,7 @@ def run_archive(args: argparse.Namespace) -> int:
 
     out = prepare_out(args.out)
     with opened_tables(args, out, lazy=True) as source:
+        choose_partitions(args, source)  # exit 2 before the solve when the limit is too small
         result, outputs = _solve_and_write(args, out, source)
     print(
         f"{result.n_plots} plots in {result.plan.n_partitions} partitions, {result.iterations} iterations, "

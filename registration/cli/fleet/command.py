@@ -173,8 +173,9 @@ def run_register(args: argparse.Namespace) -> int:
     from registration.cli.fleet.archive import archive_requested, run_archive
     from registration.cli.fleet.periods import check_period_options
 
-    check_period_options(args, archive_requested(args))
-    if archive_requested(args):
+    archive = archive_requested(args)
+    check_period_options(args, archive)
+    if archive:
         if getattr(args, "cat063", None) is not None:
             raise ValueError("--cat063: not with an archive read by parts (--partition-s, --workers)")
         return run_archive(args)

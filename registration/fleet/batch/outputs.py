@@ -3,7 +3,9 @@ docs/howto/register-an-archive.md),
 made by one more pass over the partitions at the solution: :func:`archive_outputs`.
 
 Each partition, with the states ``x``, its windows' coefficients and the states' covariance ``P``,
-evaluates (a pure function, :func:`output_pass`, run by ``run_pass`` here or on Dask workers):
+evaluates (a pure function, :func:`output_pass`, run by ``run_pass`` here or on Dask workers; its
+problem and design read from the solve's spill folder when the solve kept it, ``keep_spill``, else
+read from the source and built again, the same bits either way):
 
 * its **fused targets**, as :func:`registration.fleet.batch.covariance.fused_targets` makes them for
   ``solve_batch``: per measured instant of each target (time corrected by any time bias) the
@@ -34,12 +36,15 @@ from types import SimpleNamespace
 import numpy as np
 
 from registration.core.frames import ecef2geodetic
-from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.covariance import fused_targets
-from registration.fleet.batch.design import make_design
 from registration.fleet.batch.normal import evaluate, normal_equations
 from registration.fleet.batch.partitioned.equations import run_pass
-from registration.fleet.batch.partitioned.task import PartitionTask, partition_problem
+from registration.fleet.batch.partitioned.task import (
+    PartitionTask,
+    partition_design,
+    partition_problem,
+    spilled_problem,
+)
 from registration.fleet.batch.residuals import chi_square_parts
 from registration.fleet.batch.schur import reduce
 from registration.fleet.batch.set_aside import outside_weight
@@ -204,11 +209,14 @@ def output_pass(
     """The outputs of one partition at the solution (module docstring); the fused table written as
     part ``part`` into the folder ``parts`` (None: returned). ``P_sink`` (n + 1, n + 1): the states'
     covariance, the sink's row and column zero."""
-    problem = partition_problem(task)
-    if problem is None:
-        raise ValueError(f"partition {task.index} holds no plot at the solution but has coefficients")
-    options = task.options
-    design = make_design(problem, make_blocks(problem, options.window_s, options.degree, task.plan.span))
+    spilled = spilled_problem(task)  # the solve's spill folder, when kept: nothing read or built
+    if spilled is not None:
+        problem, design = spilled
+    else:
+        built = partition_problem(task)
+        if built is None:
+            raise ValueError(f"partition {task.index} holds no plot at the solution but has coefficients")
+        problem, design = built, partition_design(task, built)
     if design.blocks.n_blocks != coef.shape[0]:
         raise ValueError(
             f"partition {task.index}: {design.blocks.n_blocks} windows, but {coef.shape[0]} "

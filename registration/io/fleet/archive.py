@@ -8,13 +8,15 @@ The folder holds ``plots``, ``navigation`` and (optional) ``reference`` each as 
 in any order), and ``sensors``, (optional) ``platforms`` and (optional) ``targets`` (the surface
 targets) as Parquet or CSV files (small: read whole). A partition's plots, references and
 navigation are read row group by row group: only the groups whose statistics on ``time_s`` (and
-``platform``) overlap the partition, then filtered; the groups of the latest partition are kept
-(per process, while the file is unchanged) for the next one, which mostly reads the same. Memory
-is bounded by the partition when the files' row groups follow time (write the plots sorted by
-time, in row groups of 10^5 rows or so). The first passes get text columns as
-``pandas.Categorical`` (no Python string per row). Plots of one target window may lie in several
-files in any order: a partition reads them from every file, so the answer is the same. Navigation
-rows are sorted by time per platform after reading.
+``platform``) overlap the partition, each streamed in batches of BATCH_ROWS rows and filtered batch
+by batch, so memory holds the partition's rows and one batch whatever the size of a row group.
+Nothing read is kept for the next call (row groups once kept on the copies of the source that
+Dask workers unpickle per task piled up there: 9.6 GiB per worker on plots in one row group).
+Tables whose row groups do not follow time are read through a copy by time buckets
+(:meth:`ParquetSource.time_ordered`, :mod:`registration.io.fleet.timeorder`). The first passes
+get text columns as ``pandas.Categorical`` (no Python string per row). Plots of one target
+window may lie in several files in any order: a partition reads them from every file, so the answer
+is the same. Navigation rows are sorted by time per platform after reading.
 
 The files hold the fleet files' columns in file units
 (:data:`registration.io.fleet.cells.FILE_COLUMNS`: degrees, metres, seconds); the source gives the
@@ -26,6 +28,7 @@ middle of it, is a one-line ValueError naming it.
 
 from __future__ import annotations
 
+import copy
 import os
 import uuid
 from pathlib import Path
@@ -35,11 +38,14 @@ import numpy as np
 
 from registration.io.files.unreadable import read_error
 from registration.io.fleet.cells import FILE_COLUMNS, read_file
+from registration.io.fleet.timeorder import ROW_COLUMN, TimeProfile, needs_copy, time_profile, write_buckets
 
 __all__ = ["LAZY_TABLES", "ParquetSource"]
 
 #: The tables read by time range; the others are read whole.
 LAZY_TABLES = ("plots", "navigation", "reference")
+#: Rows per batch when a partition's rows are streamed out of a row group.
+BATCH_ROWS = 65_536
 
 
 def _identity(path: str) -> tuple | None:
@@ -89,9 +95,10 @@ class ParquetSource:
         self.platforms = self._whole("platforms")
         self.targets = self._whole("targets")
         self.token = uuid.uuid4().hex
+        self.copies: dict[str, Path] = {}
 
     def __getstate__(self):
-        return {k: v for k, v in self.__dict__.items() if k not in ("_datasets", "_groups", "_stats")}
+        return {k: v for k, v in self.__dict__.items() if k not in ("_datasets", "_stats")}
 
     def _find(self, name: str) -> Path | None:
         for candidate in (self.folder / f"{name}.parquet", self.folder / name, self.folder / f"{name}.csv"):
@@ -123,16 +130,54 @@ class ParquetSource:
         path = self.paths[name]
         return None if path is None else read_file(name, path, False).table
 
-    def _dataset(self, name: str):
+    def _dataset(self, name: str, path: Path | None = None):
+        """The Parquet dataset of table ``name`` (``path``: of its time-ordered copy)."""
         import pyarrow.dataset as ds
 
+        path = self.paths[name] if path is None else path
         cache = self.__dict__.setdefault("_datasets", {})
-        if name not in cache:
+        if str(path) not in cache:
             try:
-                cache[name] = ds.dataset(str(self.paths[name]), format="parquet")
+                cache[str(path)] = ds.dataset(str(path), format="parquet")
+            except Exception as exc:  # pyarrow errors of many kinds
+                raise read_error(path, exc) from exc
+        return cache[str(path)]
+
+    def _copy(self, name: str) -> Path | None:
+        """The time-ordered copy of table ``name`` when there is one and this process sees it."""
+        path = self.copies.get(name)
+        return path if path is not None and path.is_dir() else None
+
+    def plot_profile(self) -> TimeProfile:
+        """The plots' times: rows, first and last time, histogram (streamed; module
+        registration.io.fleet.timeorder)."""
+        return time_profile(self._dataset("plots"), self._file_column("plots", "time"))
+
+    def time_ordered(self, folder) -> ParquetSource:
+        """This archive with each of its plots, navigation and reference tables whose row groups do
+        not follow time (one large group, or groups that overlap in time) copied by time buckets into
+        ``folder`` (registration.io.fleet.timeorder): partitions then read only their buckets, and get
+        the same rows in the same order. The first passes still read the original files. ``self``
+        when no table needs it; the caller removes ``folder``."""
+        copies = {}
+        for name in LAZY_TABLES:
+            if self.paths[name] is None:
+                continue
+            data, column = self._dataset(name), self._file_column(name, "time")
+            key = self._file_column(name, "platform") if name == "navigation" else None
+            try:
+                needed = needs_copy(data, column, key)
             except Exception as exc:  # pyarrow errors of many kinds
                 raise read_error(self.paths[name], exc) from exc
-        return cache[name]
+            if needed:
+                copies[name] = write_buckets(data, Path(folder) / name, column)
+        if not copies:
+            return self
+        out = copy.copy(self)
+        out.__dict__.pop("_datasets", None)
+        out.__dict__.pop("_stats", None)
+        out.copies = {**self.copies, **copies}
+        return out
 
     def _batches(self, name: str, columns: Iterable[str]) -> Iterator[dict]:
         """Batches of ``columns`` (table names) as dicts of arrays; text columns without nulls as
@@ -167,52 +212,53 @@ class ParquetSource:
     def _row_groups(self, name: str) -> list:
         """[(fragment, [(row group id, statistics)])] of table ``name``, kept per process while no file
         of the table changes (size and modification time)."""
+        copied = self._copy(name)
+        path = self.paths[name] if copied is None else copied
         stats = self.__dict__.setdefault("_stats", {})
-        found = stats.get(name)
+        found = stats.get(str(path))
         if found is not None and all(_identity(f.path) == ident for f, _, ident in found):
             return found  # (_identity of a removed file is None: read the table again)
-        self.__dict__.get("_datasets", {}).pop(name, None)
-        self.__dict__.get("_groups", {}).pop(name, None)
+        self.__dict__.get("_datasets", {}).pop(str(path), None)
         out = []
-        for fragment in self._dataset(name).get_fragments():
+        for fragment in self._dataset(name, path).get_fragments():
             try:
                 ident = _identity(fragment.path)
                 fragment.ensure_complete_metadata()
                 out.append((fragment, [(g.id, g.statistics) for g in fragment.row_groups], ident))
             except Exception as exc:  # pyarrow and OS errors of many kinds
                 raise read_error(fragment.path, exc) from exc
-        stats[name] = out
+        stats[str(path)] = out
         return out
 
     def _read_groups(self, name: str, overlaps, expression) -> dict:
-        """The rows of table ``name`` matching ``expression``, file columns, read row group by row group:
-        the groups whose statistics ``overlaps(stats)`` accepts (stats: file column -> {min, max}; None
-        when the file has none). The groups read by the latest call per table are kept, so the next
-        partition, which mostly reads the same groups, decodes only its new ones."""
+        """The rows of table ``name`` matching ``expression``, file columns: the row groups whose
+        statistics ``overlaps(stats)`` accepts (stats: file column -> {min, max}; None when the file
+        has none), each streamed in batches of BATCH_ROWS rows and filtered batch by batch, so
+        memory holds the rows kept and one batch, whatever the size of a row group. Nothing is
+        kept for the next call."""
         import pyarrow as pa
+        import pyarrow.parquet as pq
 
-        fragments = self._row_groups(name)  # first: a changed file drops the groups kept
-        data = self._dataset(name)
-        kept = self.__dict__.setdefault("_groups", {}).get(name, {})
-        used, tables = {}, []
+        fragments = self._row_groups(name)  # first: a changed file is opened again
+        copied = self._copy(name)
+        schema = self._dataset(name, copied).schema
+        tables = []
         for fragment, groups, _ in fragments:
-            for gid, stats in groups:
-                if not overlaps(stats or {}):
-                    continue
-                key = (fragment.path, gid)
-                table = kept.get(key)
-                if table is None:
-                    try:
-                        table = fragment.subset(row_group_ids=[gid]).to_table(
-                            schema=data.schema, use_threads=False
-                        )
-                    except Exception as exc:  # pyarrow errors of many kinds
-                        raise read_error(fragment.path, exc) from exc
-                used[key] = table
-                tables.append(table)
-        self.__dict__["_groups"][name] = used
-        table = pa.concat_tables(tables) if tables else data.schema.empty_table()
-        table = table.filter(expression)
+            ids = [gid for gid, stats in groups if overlaps(stats or {})]
+            if not ids:
+                continue
+            try:
+                reader = pq.ParquetFile(fragment.path, pre_buffer=False, buffer_size=1 << 20)
+                for batch in reader.iter_batches(batch_size=BATCH_ROWS, row_groups=ids, use_threads=False):
+                    part = pa.Table.from_batches([batch]).filter(expression)
+                    if part.num_rows:
+                        tables.append(part if part.schema == schema else part.cast(schema))
+            except Exception as exc:  # pyarrow errors of many kinds
+                raise read_error(fragment.path, exc) from exc
+        table = pa.concat_tables(tables) if tables else schema.empty_table()
+        if copied is not None:  # the original's row order (module registration.io.fleet.timeorder)
+            table = table.take(np.argsort(table.column(ROW_COLUMN).to_numpy(), kind="stable"))
+            table = table.drop_columns([ROW_COLUMN])
         return {c: table.column(c).to_numpy(zero_copy_only=False) for c in table.column_names}
 
     def _time_range(self, name: str, lo: float, hi: float) -> dict:

@@ -7,6 +7,10 @@ passes), ``equations`` (the partitions' sums as the Levenberg-Marquardt engine's
 and ``estimate`` (the solve and its result).
 """
 
-from registration.fleet.batch.partitioned.estimate import PartitionedResult, solve_batch_partitioned
+from registration.fleet.batch.partitioned.estimate import (
+    PartitionedResult,
+    remove_spill,
+    solve_batch_partitioned,
+)
 
-__all__ = ["PartitionedResult", "solve_batch_partitioned"]
+__all__ = ["PartitionedResult", "remove_spill", "solve_batch_partitioned"]

@@ -41,7 +41,7 @@ from registration.fleet.data.layout import StateLayout
 from registration.fleet.data.problem import Exclusion
 from registration.fleet.result import ChiSquareCheck, StateEstimates
 
-__all__ = ["PartitionedResult", "solve_batch_partitioned"]
+__all__ = ["PartitionedResult", "remove_spill", "solve_batch_partitioned"]
 
 
 @dataclass(kw_only=True)
@@ -72,8 +72,10 @@ class PartitionedResult(StateEstimates):
     observability: ObservabilityReport
     status: dict
     scale: np.ndarray
-    # the partitions solved, in the order of ``coefficients`` (without the spill folder, gone)
+    # the partitions solved, in the order of ``coefficients`` (with the spill folder when it was kept)
     tasks: tuple = ()
+    # the spill folder kept for the output pass (``keep_spill``; the caller removes it: remove_spill)
+    spill_folder: str | None = None
 
     @property
     def free_names(self) -> tuple[str, ...]:
@@ -179,7 +181,7 @@ def _final(
     )
 
 
-def _remove_spill(folder: str, client) -> None:
+def remove_spill(folder: str, client) -> None:
     """Remove the spill folder here and, with a client, on every worker (they may be on other machines)."""
     remove_folder(folder)
     if client is not None:
@@ -200,6 +202,7 @@ def solve_batch_partitioned(
     cache: int | None = None,
     spill: bool | None = None,
     spill_dir: str | None = None,
+    keep_spill: bool = False,
     nav_margin_s: float = DEFAULT_NAV_MARGIN_S,
     progress: bool = False,
 ) -> PartitionedResult:
@@ -215,7 +218,11 @@ def solve_batch_partitioned(
     partition's design (and its normal equations at the latest point) in a temporary folder on local
     disk after the setup pass, so the later passes read neither the archive nor build the partition
     again (default: on for files when not every partition is kept in memory; the folder is made in
-    ``spill_dir``, default the system's temp folder, and removed at the end); ``nav_margin_s``: the
+    ``spill_dir``, default the system's temp folder, and removed at the end; with ``keep_spill``
+    it is kept, in ``result.spill_folder`` and the result's tasks, so that the output pass
+    (:func:`registration.fleet.batch.outputs.archive_outputs`) reads each partition's problem and
+    design from it instead of building them again; the caller then removes it with
+    :func:`remove_spill`); ``nav_margin_s``: the
     navigation read around each partition (s), the largest time bias followed exactly; ``x0``
     (n,; rad, m): starting states.
     """
@@ -230,6 +237,7 @@ def solve_batch_partitioned(
     if spill is None:
         spill = cache < plan.n_partitions and not source.in_memory
     folder = make_folder(spill_dir) if spill else None
+    solved_ok = False
     try:
         setup = _setup(plan, source, options, x, client, cache, folder)
         passes = PartitionedEquations(setup.tasks, client, layout)
@@ -238,9 +246,11 @@ def solve_batch_partitioned(
             solved = two_phases(passes, PassPoint(x, setup.coefs, float("nan")), free, options, bar)
         x, coefs = solved.point.x, solved.point.coefs
         final = _final(passes, x, coefs, layout, plan)
+        solved_ok = True
     finally:
         if folder is not None:
-            _remove_spill(folder, client)
+            if not (keep_spill and solved_ok):
+                remove_spill(folder, client)
     information_data = final.information - np.diag(passes.pw2[free])
     known = estimate_from_information(
         layout, final.information, information_data, sensor_platform, platform_ids, sensor_ids
@@ -265,5 +275,6 @@ def solve_batch_partitioned(
         observability=known.report,
         status=known.status,
         scale=known.scale,
-        tasks=tuple(replace(t, spill=None) for t in passes.tasks),
+        tasks=tuple(replace(t, spill=folder if keep_spill else None) for t in passes.tasks),
+        spill_folder=folder if keep_spill else None,
     )

@@ -205,7 +205,7 @@ def setup_pass(task: PartitionTask, x0: np.ndarray) -> SetupFound | None:
             if task.cache > 0 or task.spill is not None:
                 entry = new_entry(problem, design)
                 if task.spill is not None:
-                    spill_entry(task_k, entry)
+                    spill_entry(task_k, entry, problem)
                 pt = PointTerms(ev, ev.cost, normal)
                 entry.points[(x0.tobytes(), coef.tobytes())] = pt
                 _spill_point(task_k, x0, coef, pt)

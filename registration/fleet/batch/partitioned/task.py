@@ -40,6 +40,7 @@ __all__ = [
     "partition_entry",
     "partition_problem",
     "spill_entry",
+    "spilled_problem",
 ]
 
 
@@ -243,11 +244,23 @@ def keep_entry(task: PartitionTask, entry: PartitionEntry | None) -> None:
             _CACHE.popitem(last=False)
 
 
-def spill_entry(task: PartitionTask, entry: PartitionEntry) -> None:
-    """Write the entry's design to the disk cache (without the evaluations it has cached)."""
+def spill_entry(task: PartitionTask, entry: PartitionEntry, problem: FleetProblem | None = None) -> None:
+    """Write the entry's design to the disk cache (without the evaluations it has cached) and, when
+    given, the partition's problem (for the output pass: :func:`spilled_problem`)."""
     assert task.spill is not None
     design = replace(entry.design, seen_cache={})
     spill.save(task.spill, task.spill_name, {"plots": entry.plots, "design": design})
+    if problem is not None:
+        spill.save(task.spill, f"{task.spill_name}-problem", problem)
+
+
+def spilled_problem(task: PartitionTask) -> tuple[FleetProblem, Design] | None:
+    """The partition's problem and design from the disk cache (None: not there, or no cache)."""
+    if task.spill is None:
+        return None
+    problem = spill.load(task.spill, f"{task.spill_name}-problem")
+    found = spill.load(task.spill, task.spill_name) if problem is not None else None
+    return None if found is None else (problem, found["design"])
 
 
 def partition_entry(task: PartitionTask) -> PartitionEntry | None:

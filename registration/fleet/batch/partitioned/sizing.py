@@ -1,0 +1,113 @@
+"""How much memory a registration of an archive needs, and the partition length that keeps it under
+a limit (docs/howto/register-an-archive.md, "Memory"): :func:`in_memory_bytes`,
+:func:`choose_partition_s`.
+
+The figures are measured peaks of the resident memory of ``fleet register --no-plots`` (the
+archive of benchmarks/bench_archive_workers.py: 8 sensors, 3 navigation rows per plot): in memory, a base of
+IN_MEMORY_BASE plus IN_MEMORY_PER_PLOT per plot; partitioned, a base of PARTITION_BASE (imports,
+the plan, the windows' coefficients, the solver's sums) plus PARTITION_PER_PLOT per plot of the
+largest partition (its rows read, its design, its normal equations and their reduction). Each
+process of a run on workers holds one partition at a time, so the same figures bound each worker.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+import numpy as np
+
+__all__ = [
+    "IN_MEMORY_BASE",
+    "IN_MEMORY_PER_PLOT",
+    "MiB",
+    "PARTITION_BASE",
+    "PARTITION_PER_PLOT",
+    "MemoryLimitError",
+    "PartitionChoice",
+    "choose_partition_s",
+    "in_memory_bytes",
+    "partition_bytes",
+]
+
+MiB = 1 << 20
+#: In memory (read_fleet_tables + solve_batch): bytes before the first plot and per plot (measured:
+#: 616 MiB for 10^5 plots, 976 MiB for 2 * 10^5).
+IN_MEMORY_BASE = 260 * MiB
+IN_MEMORY_PER_PLOT = 3_800
+#: Partitioned: bytes before the first partition and per plot of the largest partition (measured on
+#: 10^6 plots in process: 502 MiB with partitions of 27 000 plots, 662 MiB with 99 000; rounded up).
+PARTITION_BASE = 480 * MiB
+PARTITION_PER_PLOT = 2_600
+
+
+class MemoryLimitError(ValueError):
+    """A memory limit below what one partition needs; ``smallest``: the smallest limit that works (bytes)."""
+
+    def __init__(self, text: str, smallest: int):
+        super().__init__(text)
+        self.smallest = int(smallest)
+
+
+def in_memory_bytes(plots: int) -> int:
+    """The peak memory (bytes) of registering ``plots`` plots in memory."""
+    return int(IN_MEMORY_BASE + IN_MEMORY_PER_PLOT * int(plots))
+
+
+def partition_bytes(plots: int) -> int:
+    """The peak memory (bytes) of a partitioned run whose largest partition holds ``plots`` plots."""
+    return int(PARTITION_BASE + PARTITION_PER_PLOT * int(plots))
+
+
+def _text(n: float) -> str:
+    """Bytes as MiB or GiB, rounded up."""
+    return f"{np.ceil(n / (1 << 30) * 10) / 10:.1f} GiB" if n >= 1 << 30 else f"{int(np.ceil(n / MiB))} MiB"
+
+
+class PartitionChoice:
+    """A partition length ``partition_s`` (s), the most plots one partition may hold ``plots`` and the
+    peak memory that gives ``bytes``."""
+
+    def __init__(self, partition_s: float, plots: int):
+        self.partition_s, self.plots, self.bytes = float(partition_s), int(plots), partition_bytes(plots)
+
+    def text(self) -> str:
+        return (
+            f"partitions of {self.partition_s:g} s (at most about {self.plots} plots each, "
+            f"about {_text(self.bytes)} per process)"
+        )
+
+
+def _nice(seconds: float) -> float:
+    """``seconds`` rounded down to 1, 2 or 5 times a power of ten."""
+    p = 10.0 ** np.floor(np.log10(seconds))
+    return float(max(m * p for m in (1.0, 2.0, 5.0) if m * p <= seconds))
+
+
+def choose_partition_s(
+    most_rows: Callable[[float], int], rows: int, span_s: float, limit: int, window_s: float
+) -> PartitionChoice:
+    """The longest partition length (1, 2 or 5 times a power of ten seconds, at least ``window_s``)
+    whose busiest partition fits in ``limit`` bytes (:func:`partition_bytes`); ``most_rows(L)``: the
+    most plots in any L seconds, ``rows`` plots over ``span_s`` seconds. A partition reaches a
+    window beyond its length on each side (the target windows that start in it).
+    MemoryLimitError naming the smallest limit that works when even ``window_s`` is too long."""
+    window_s = max(float(window_s), 1e-3)
+
+    def plots_of(length: float) -> int:
+        return int(most_rows(length + 2.0 * window_s))
+
+    smallest = partition_bytes(plots_of(window_s))
+    if smallest > limit:
+        raise MemoryLimitError(
+            f"--memory-limit {_text(limit)}: one partition of the shortest length (a target window, "
+            f"{window_s:g} s) needs about {_text(smallest)}; the smallest limit that works is "
+            f"{int(np.ceil(smallest / MiB))}MiB",
+            smallest,
+        )
+    budget = (limit - PARTITION_BASE) / PARTITION_PER_PLOT
+    rate = rows / span_s if span_s > 0 else float(rows)
+    length = max(window_s, _nice(max(budget / max(rate, 1e-9), window_s)))
+    length = min(length, max(_nice(max(span_s, window_s)), window_s))
+    while length > window_s and plots_of(length) > budget:
+        length = max(window_s, _nice(length * 0.999))
+    return PartitionChoice(length, plots_of(length))
