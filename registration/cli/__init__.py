@@ -93,8 +93,13 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     """Run the command line ``argv`` (default: ``sys.argv[1:]``); return the exit code (see ``--help``)."""
+    argv = sys.argv[1:] if argv is None else list(argv)
+    parser = build_parser()
+    if not argv:  # no command: the commands, then exit 2 (a command is required)
+        parser.print_help(sys.stderr)
+        return 2
     try:
-        args = build_parser().parse_args(argv)
+        args = parser.parse_args(argv)
     except SystemExit as exc:  # --help, --version, or an option argparse rejected (its message is printed)
         return exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 2)
     return run_guarded(args._prog, args._run, args, args._hint)
