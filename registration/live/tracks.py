@@ -29,11 +29,11 @@ MIN_PLOTS = 5
 _NAV = ("time", "platform", "lat", "lon", "alt", "heading", "pitch", "roll")
 
 
-def _cat(parts: list[dict]) -> dict | None:
-    parts = [p for p in parts if p is not None and p["time"].size]
-    if not parts:
+def _cat(parts: list[dict | None]) -> dict | None:
+    kept: list[dict] = [p for p in parts if p is not None and p["time"].size]
+    if not kept:
         return None
-    return {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
+    return {k: np.concatenate([p[k] for p in kept]) for k in kept[0]}
 
 
 def _since(table: dict | None, t0: float) -> dict | None:

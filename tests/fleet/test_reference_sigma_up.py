@@ -290,9 +290,7 @@ def test_the_table_refuses_a_bad_sigma_up_naming_the_row():
         "sigma": [3.0, 3.0],
         "sigma_up": [30.0, -1.0],
     }
-    with pytest.raises(
-        ValueError, match=r"references row 1: reference of target 'T1': sigma_up -1.0 m must be > 0"
-    ):
+    with pytest.raises(ValueError, match=r"references row 1: sigma_up -1.0 m of target 'T1' must be > 0"):
         read_references(refs, ["T1"])
     ok = read_references({**refs, "sigma_up": [np.nan, 7.0]}, ["T1"])
     np.testing.assert_array_equal(ok.sigma_up, [3.0, 7.0])

@@ -102,9 +102,9 @@ def read_references(references, target_ids) -> References:
         r = int(bad[0])
         raise table.error(
             r,
-            f"reference of target {str(target[r])!r}: sigma_up {sigma_up[r]} m must be > 0, and finite "
-            f"when sigma is inf (the accuracy of the known position along the local up; NaN: the same as "
-            "sigma; inf: no height known; sigma inf with a finite sigma_up: a height only)",
+            f"sigma_up {sigma_up[r]} m of target {str(target[r])!r} must be > 0, and finite when sigma is "
+            "inf (the accuracy of the known position along the local up; NaN: the same as sigma; inf: no "
+            "height known; sigma inf with a finite sigma_up: a height only)",
         )
     offset, prior = _height_offset(table, target, sigma, sigma_up)
     return References(target, time, p.reshape(-1, 3), sigma, sigma_up, offset, prior)

@@ -193,6 +193,43 @@ class StateLayout:
             raise ValueError(f"unknown state {name!r}; states are {list(self.names)}") from None
 
 
+class _States:
+    """The states in the order they are added: names, labels, units, objects, quantities, priors."""
+
+    def __init__(self) -> None:
+        self.names: list[str] = []
+        self.labels: list[str] = []
+        self.units: list[str] = []
+        self.objects: list[str] = []
+        self.quantities: list[str] = []
+        self.prior: list[float] = []
+
+    def add(self, kind: str, obj: str, quantity: str, label: str, unit: str, sigma: float) -> int:
+        """Index of the new state ``obj:quantity`` (prior sigma ``sigma`` in ``unit``)."""
+        self.names.append(f"{obj}:{quantity}")
+        self.labels.append(f"{label} of {kind} {obj}")
+        self.units.append(unit)
+        self.objects.append(obj)
+        self.quantities.append(quantity)
+        self.prior.append(sigma)
+        return len(self.names) - 1
+
+    def layout(self, att_index, bias_index, extended_index, ecc_index, offset_index: int) -> StateLayout:
+        return StateLayout(
+            tuple(self.names),
+            tuple(self.labels),
+            tuple(self.units),
+            tuple(self.objects),
+            tuple(self.quantities),
+            np.array(self.prior, dtype=np.float64),
+            att_index,
+            bias_index,
+            extended_index,
+            ecc_index,
+            offset_index,
+        )
+
+
 def make_layout(
     platform_ids,
     platform_priors: np.ndarray,
@@ -212,17 +249,8 @@ def make_layout(
     sensor without range has no range gain. ``height_offset_prior`` (m; None: not modelled): the prior
     of the one height offset that the references' flight-level heights share, the last state
     (``flight_levels:height_offset``)."""
-    names, labels, units, objects, quantities, prior = [], [], [], [], [], []
-
-    def add(kind, obj, quantity, label, unit, sigma) -> int:
-        names.append(f"{obj}:{quantity}")
-        labels.append(f"{label} of {kind} {obj}")
-        units.append(unit)
-        objects.append(obj)
-        quantities.append(quantity)
-        prior.append(sigma)
-        return len(names) - 1
-
+    states = _States()
+    add = states.add
     n_sensors = len(sensor_ids)
     parent = np.full(n_sensors, -1, dtype=np.int64) if channel_of is None else np.asarray(channel_of)
     att_index = np.zeros((len(platform_ids), 3), dtype=np.int64)
@@ -265,20 +293,9 @@ def make_layout(
     offset_index = -1
     if height_offset_prior is not None:
         offset_index = add("", HEIGHT_OFFSET_OBJECT, "height_offset", "", "m", height_offset_prior)
-        labels[-1] = "common height offset of the flight levels"
-    return StateLayout(
-        tuple(names),
-        tuple(labels),
-        tuple(units),
-        tuple(objects),
-        tuple(quantities),
-        np.array(prior, dtype=np.float64),
-        att_index,
-        bias_index,
-        extended_index,
-        ecc_index if (ecc_index >= 0).any() else None,
-        offset_index,
-    )
+        states.labels[-1] = "common height offset of the flight levels"
+    ecc = ecc_index if (ecc_index >= 0).any() else None
+    return states.layout(att_index, bias_index, extended_index, ecc, offset_index)
 
 
 def with_height_offset(layout: StateLayout, prior: float | None) -> StateLayout:

@@ -256,18 +256,7 @@ def _build(
     service = _concat(
         [r.service for r in rows], ("sensor", "category", "msg_type", "time_s", "azimuth_deg", "rotation_s")
     )
-    every_adsb, _ = _reference(rows, set(), "all")
-    reference, ref_info = _reference(
-        rows, set(plots["target"].astype(str)) - {""} if plots["target"].size else set(), which
-    )
-    heights, level_info = _flight_levels(plots, sites, every_adsb)
-    reference = {
-        c: np.concatenate([np.asarray(reference[c]), np.asarray(heights[c])]) if heights else reference[c]
-        for c in REFERENCE_COLUMNS
-    }
-    if "height_offset_prior_m" in heights:  # the ISA's heights, sharing one offset state
-        n_adsb = reference["time_s"].size - heights["time_s"].size
-        reference["height_offset_prior_m"] = np.r_[np.full(n_adsb, np.nan), heights["height_offset_prior_m"]]
+    reference, ref_info, level_info = _references_with_heights(rows, plots, sites, which)
     decoded_counts: dict[int, int] = {}
     for r in rows:
         for cat, counts in r.decoded.items():
@@ -295,6 +284,41 @@ def _build(
         **checks.summary(),
         "rejected": {"total": rejections.count(), "by_reason": rejections.by_code(tuple(REASONS))},
     }
+    return AsterixImport(
+        plots=_plot_frame(plots, sites),
+        navigation=tables["navigation"],
+        sensors=tables["sensors"],
+        platforms=tables["platforms"],
+        reference=_frame(reference),
+        rejected=rejections.frame(),
+        summary=summary,
+    )
+
+
+def _references_with_heights(
+    rows: list, plots: dict, sites: pd.DataFrame, which: str
+) -> tuple[dict, dict, dict]:
+    """(reference columns, the reference summary, the flight levels' summary): the ADS-B reports
+    ``which`` kept, then the heights of the flight levels of aircraft without ADS-B (height-only
+    rows; with ``height_offset_prior_m`` where they share one offset state)."""
+    every_adsb, _ = _reference(rows, set(), "all")
+    reference, ref_info = _reference(
+        rows, set(plots["target"].astype(str)) - {""} if plots["target"].size else set(), which
+    )
+    heights, level_info = _flight_levels(plots, sites, every_adsb)
+    reference = {
+        c: np.concatenate([np.asarray(reference[c]), np.asarray(heights[c])]) if heights else reference[c]
+        for c in REFERENCE_COLUMNS
+    }
+    if "height_offset_prior_m" in heights:  # the ISA's heights, sharing one offset state
+        n_adsb = reference["time_s"].size - heights["time_s"].size
+        reference["height_offset_prior_m"] = np.r_[np.full(n_adsb, np.nan), heights["height_offset_prior_m"]]
+    return reference, ref_info, level_info
+
+
+def _plot_frame(plots: dict, sites: pd.DataFrame) -> pd.DataFrame:
+    """The plots file's rows: the primary-only plots of radars whose PSR channel is their own
+    sensor moved to ``<radar>.psr``."""
     plot_frame = _frame(
         {
             **{c: plots[c] for c in PLOT_COLUMNS},
@@ -305,12 +329,4 @@ def _build(
     primary = plot_frame.pop("primary").to_numpy(bool)
     plot_frame["sensor"] = channel_sensors(sites, plot_frame["sensor"].to_numpy(), primary)
     plot_frame["target"] = plot_frame["target"].astype(str)
-    return AsterixImport(
-        plots=plot_frame,
-        navigation=tables["navigation"],
-        sensors=tables["sensors"],
-        platforms=tables["platforms"],
-        reference=_frame(reference),
-        rejected=rejections.frame(),
-        summary=summary,
-    )
+    return plot_frame

@@ -50,4 +50,5 @@ def test_the_position_in_the_buffer_does_not_matter():
     buf = np.frombuffer(b"xx" + rec + b"yyy" + rec + b"z", dtype=np.uint8)
     d = record_digests(buf, np.array([2, 2 + 29 + 3]), np.array([31, 2 + 29 + 3 + 29]))
     assert d[0] == d[1]
-    assert record_digests(buf, np.array([2]), np.array([2]))[0] == record_digests(buf, np.array([5]), np.array([5]))[0]
+    empty_here, empty_there = (record_digests(buf, np.array([a]), np.array([a]))[0] for a in (2, 5))
+    assert empty_here == empty_there

@@ -251,6 +251,19 @@ def solve_batch_partitioned(
         if folder is not None:
             if not (keep_spill and solved_ok):
                 remove_spill(folder, client)
+    kept = folder if keep_spill else None
+    return _result(
+        layout, (platform_ids, sensor_ids, sensor_platform), solved, final, passes, plan, setup, options, kept
+    )
+
+
+def _result(
+    layout, ids: tuple, solved, final, passes, plan, setup, options: BatchOptions, kept
+) -> PartitionedResult:
+    """The result of the solve: the covariance from the final information, ``kept`` the spill
+    folder kept for the output pass (None: removed)."""
+    platform_ids, sensor_ids, sensor_platform = ids
+    x, coefs, free = solved.point.x, solved.point.coefs, layout.free
     information_data = final.information - np.diag(passes.pw2[free])
     known = estimate_from_information(
         layout, final.information, information_data, sensor_platform, platform_ids, sensor_ids
@@ -275,6 +288,6 @@ def solve_batch_partitioned(
         observability=known.report,
         status=known.status,
         scale=known.scale,
-        tasks=tuple(replace(t, spill=folder if keep_spill else None) for t in passes.tasks),
-        spill_folder=folder if keep_spill else None,
+        tasks=tuple(replace(t, spill=kept) for t in passes.tasks),
+        spill_folder=kept,
     )
