@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from registration.io.asterix import AsterixImportError, import_asterix
-from tests.fuzzing import assert_clean, run_campaign
+from tests.fuzzing import assert_clean, mutate_octets, run_campaign
 from tests.io.asterix.repro import (
     empty_cat048_gzip,
     out_of_range_time,
@@ -29,35 +29,8 @@ TIME_BOUND_S = float(os.environ.get("REGISTRATION_FUZZ_S", "20"))
 
 
 def _mutate(data: bytes, rng: np.random.Generator) -> bytes:
-    """One to three mutations: octets overwritten, a stretch cut, inserted, repeated or moved, a
-    16-bit field set to an extreme, the file cut short."""
-    out = bytearray(data)
-    for _ in range(int(rng.integers(1, 4))):
-        n = len(out)
-        if n < 4:
-            break
-        kind = int(rng.integers(0, 7))
-        at = int(rng.integers(0, n))
-        span = int(rng.integers(1, min(64, n) + 1))
-        if kind == 0:
-            for k in rng.integers(0, n, size=int(rng.integers(1, 16))):
-                out[int(k)] = int(rng.integers(0, 256))
-        elif kind == 1:
-            del out[at : at + span]
-        elif kind == 2:
-            out[at:at] = rng.bytes(span)
-        elif kind == 3:
-            out[at:at] = out[max(at - span, 0) : at]
-        elif kind == 4 and at + 2 <= n:
-            out[at : at + 2] = bytes(rng.choice([b"\x00\x00", b"\x00\x03", b"\xff\xff", b"\x80\x00"]))
-        elif kind == 5:
-            del out[int(rng.integers(n // 2, n + 1)) :]
-        else:
-            piece = bytes(out[at : at + span])
-            del out[at : at + span]
-            to = int(rng.integers(0, len(out) + 1))
-            out[to:to] = piece
-    return bytes(out)
+    """The campaigns' octet mutations (:func:`tests.fuzzing.mutate_octets`), stretches up to 64 octets."""
+    return mutate_octets(data, rng, max_span=64)
 
 
 @pytest.fixture(scope="module")
