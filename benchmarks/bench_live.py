@@ -203,7 +203,7 @@ def against_batch(folder: Path, seeds: list[int], duration_s: float) -> dict:
     import pandas as pd
 
     from registration.live.estimator import LiveEstimator
-    from registration.live.ingest import AsterixStream
+    from registration.live.inputs.asterix import AsterixStream
     from tests.io.asterix.atc import atc_truth, encode_atc
 
     out = {}

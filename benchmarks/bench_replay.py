@@ -31,8 +31,8 @@ from pathlib import Path
 
 from common import ROOT, Timed, add_arguments, interleave, median, paired_ratio, summary, write
 
-from registration.live.recordings import datagrams, recognise
 from registration.live.replay import replay
+from registration.live.replay.recordings import datagrams, recognise
 from tests.io.asterix.containers import pcap_bytes, udp_frame  # the tests' struct writer
 
 SAMPLES = ROOT / "examples" / "recordings"

@@ -39,7 +39,7 @@ def test_the_mit_licence_is_there_and_goes_into_the_wheel():
 def test_the_live_page_goes_into_the_wheel():
     """The page's three files are package data of registration.live, and every file in its folder is
     one the service serves (a stray file would ship but never be reachable)."""
-    from registration.live.webassets import CONTENT_TYPES
+    from registration.live.http.assets import CONTENT_TYPES
 
     cfg = tomllib.loads((REPO / "pyproject.toml").read_text())["tool"]["setuptools"]
     assert "registration.live" in cfg["packages"]

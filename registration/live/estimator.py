@@ -28,7 +28,7 @@ from registration.fleet.online.options import EpochUpdate, OnlineOptions
 from registration.io.asterix.tables.fleetfiles import site_tables
 from registration.io.fleet.cells import check_frame
 from registration.io.fleet.estimates import estimate_rows
-from registration.live.ingest import StreamBatch
+from registration.live.inputs.asterix import StreamBatch
 
 __all__ = ["Alarm", "LiveEstimator", "HISTORY_S"]
 

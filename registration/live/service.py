@@ -3,10 +3,10 @@
 Threads: one receives the UDP datagrams of every ``--asterix`` input (and of a ``--nmea udp://``
 input) into a list (nothing else, so that the sockets are drained while the rest works; large
 receive buffers take the bursts); one reads a ``--nmea tcp://`` or ``tcp-listen://`` input
-(:mod:`registration.live.tcpinput`); the HTTP server answers from the latest snapshot; the main
+(:mod:`registration.live.inputs.tcp`); the HTTP server answers from the latest snapshot; the main
 thread runs rounds every ``tick_s`` (back to back while work waits): it takes the
-datagrams received, imports them (:class:`~registration.live.ingest.AsterixStream`), sends the
-corrected plots on, imports the ship's NMEA lines (:class:`~registration.live.bridge.Bridge`),
+datagrams received, imports them (:class:`~registration.live.inputs.asterix.AsterixStream`), sends the
+corrected plots on, imports the ship's NMEA lines (:class:`~registration.live.inputs.bridge.Bridge`),
 feeds the estimator (:class:`~registration.live.estimator.LiveEstimator`),
 sends CAT063 every ``cat063_period_s``, writes the state every ``checkpoint_s`` and builds the next
 snapshot. SIGTERM and SIGINT end the service after its current round, with a last checkpoint.
@@ -25,15 +25,15 @@ from collections import Counter, deque
 from typing import Callable
 
 from registration.io.asterix.tables.sites import read_sites
-from registration.live.api import SensorActivity, Snapshot, build_snapshot
-from registration.live.bridge import Bridge
 from registration.live.config import Endpoint, ServeConfig
 from registration.live.estimator import LiveEstimator
-from registration.live.http import start_http
-from registration.live.ingest import AsterixStream, IngestCounters, StreamBatch, split_batch
+from registration.live.http.api import SensorActivity, Snapshot, build_snapshot
+from registration.live.http.server import start_http
+from registration.live.inputs.asterix import AsterixStream, IngestCounters, StreamBatch, split_batch
+from registration.live.inputs.bridge import Bridge
+from registration.live.inputs.tcp import TcpClient, TcpServer
 from registration.live.outputs import cat063_message, corrected_lines, plot_corrections, ttm_corrections
 from registration.live.state import load_state, save_state
-from registration.live.tcpinput import TcpClient, TcpServer
 
 __all__ = ["Service", "SILENT_S", "RECEIVE_BUFFER"]
 

@@ -11,9 +11,9 @@ import pytest
 from registration.fleet.online.filter import FleetFilter
 from registration.io.asterix.tables.sites import read_sites
 from registration.io.nmea import import_nmea
-from registration.live.bridge import Bridge
 from registration.live.estimator import LiveEstimator
-from registration.live.nmeaingest import NmeaStream
+from registration.live.inputs.bridge import Bridge
+from registration.live.inputs.nmea import NmeaStream
 from tests.io.nmea.bridgelog import PLATFORM, BridgeLogConfig, simulate_bridge_log
 from tests.live.running import SAMPLES
 

@@ -11,7 +11,7 @@ import pytest
 
 from registration.io.asterix import import_asterix
 from registration.live.estimator import LiveEstimator
-from registration.live.ingest import AsterixStream
+from registration.live.inputs.asterix import AsterixStream
 from registration.live.state import STATE_FILE, StateError, load_state, save_state
 from tests.live.running import SAMPLES, datagrams
 

@@ -1,5 +1,5 @@
 """The live page in headless Chromium against a stand-in of the service's JSON API: a tiny
-``http.server`` on 127.0.0.1 serving the packaged page (through ``registration.live.webassets``) and
+``http.server`` on 127.0.0.1 serving the packaged page (through ``registration.live.http.assets``) and
 fixtures with known numbers, then changed numbers, then no service at all. The expected texts are
 worked out by hand from the fixtures, not by the page's code."""
 
@@ -14,7 +14,7 @@ from urllib.parse import parse_qs, urlsplit
 
 import pytest
 
-from registration.live.webassets import asset
+from registration.live.http.assets import asset
 from tests.live.browser import watch
 
 PAGE_FILES = {"/": "index.html", "/app.js": "app.js", "/style.css": "style.css"}

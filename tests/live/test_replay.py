@@ -25,8 +25,8 @@ import numpy as np
 import pytest
 
 from registration.cli import main
-from registration.live.recordings import ReplayError, datagrams, recognise
 from registration.live.replay import Timeline, parse_target, replay
+from registration.live.replay.recordings import ReplayError, datagrams, recognise
 
 pytest.importorskip("asterix")  # libasterix encodes the raw recording
 pynmea2 = pytest.importorskip("pynmea2")
@@ -331,7 +331,7 @@ def _all(path) -> tuple[list[bytes], np.ndarray]:
 def test_small_pieces_give_the_same_datagrams_and_times(tmp_path, monkeypatch):
     """A file read in pieces of 3000 bytes (packets, blocks and lines cut by a piece's end) gives
     what it gives read whole."""
-    import registration.live.recordings as recordings
+    import registration.live.replay.recordings as recordings
 
     blocks, _ = _raw_recording(60, 0.5)
     raw = tmp_path / "rec.ast.gz"

@@ -7,7 +7,7 @@ import re
 
 import pytest
 
-from registration.live.webassets import CONTENT_TYPES, asset
+from registration.live.http.assets import CONTENT_TYPES, asset
 
 
 @pytest.mark.parametrize(

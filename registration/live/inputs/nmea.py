@@ -32,7 +32,7 @@ from registration.io.nmea.errors import LEDGER_COLUMNS, REASONS, NmeaImportError
 from registration.io.nmea.importer import platforms_table, read_sentences
 from registration.io.nmea.lines import read_lines
 from registration.io.nmea.sensors import TALKER_COLUMN, platform_sensors, read_sensors, talker_map
-from registration.live.ingest import si_columns
+from registration.live.inputs.asterix import si_columns
 
 __all__ = ["NmeaBatch", "NmeaCounters", "NmeaStream", "CONTEXT_S", "HOLD_S"]
 

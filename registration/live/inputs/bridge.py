@@ -1,8 +1,8 @@
 """One ship's bridge as an input of the live service: its NMEA stream imported piece by piece
-(:class:`~registration.live.nmeaingest.NmeaStream`), its TTM tracks associated with the AIS
-vessels (:class:`~registration.live.tracks.TrackLabels`), and what the estimator needs: the
+(:class:`~registration.live.inputs.nmea.NmeaStream`), its TTM tracks associated with the AIS
+vessels (:class:`~registration.live.inputs.tracks.TrackLabels`), and what the estimator needs: the
 navigation, the AIS references and surface targets given to it at once, the associated plots
-handed back as a :class:`~registration.live.ingest.StreamBatch` for the estimator's queue after
+handed back as a :class:`~registration.live.inputs.asterix.StreamBatch` for the estimator's queue after
 :data:`HOLD_S` seconds of data (the estimates lag the data by that much; the plots of a track
 before its vessel is known are used too). Plots of tracks still without a vessel then are counted
 (``plots_unassociated``), not used."""
@@ -15,9 +15,9 @@ from pathlib import Path
 
 import numpy as np
 
-from registration.live.ingest import StreamBatch
-from registration.live.nmeaingest import NmeaStream
-from registration.live.tracks import TrackLabels
+from registration.live.inputs.asterix import StreamBatch
+from registration.live.inputs.nmea import NmeaStream
+from registration.live.inputs.tracks import TrackLabels
 
 __all__ = ["Bridge", "HOLD_S"]
 

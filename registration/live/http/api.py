@@ -13,7 +13,7 @@ import math
 from dataclasses import dataclass, field
 
 from registration.live.estimator import LiveEstimator
-from registration.live.ingest import IngestCounters
+from registration.live.inputs.asterix import IngestCounters
 
 __all__ = ["Snapshot", "SensorActivity", "build_snapshot", "rss_bytes"]
 

@@ -8,7 +8,7 @@ datagrams and their recorded times (numpy arrays; no Python object per datagram)
 * **raw ASTERIX** (data blocks end to end): one datagram per data block, timed by the time of day of
   the first record of the block (I048/140, I034/030, I021/071..077 in the default editions;
   :mod:`registration.io.asterix.decode`); a block without one gets NaN (the previous block's time).
-* **NMEA 0183 logs**: :mod:`registration.live.nmealog`.
+* **NMEA 0183 logs**: :mod:`registration.live.replay.nmealog`.
 
 :func:`recognise` tells them apart by content, as the importers do (gzip or not).
 """
@@ -38,8 +38,8 @@ from registration.io.asterix.decode.walker import Records, walk_records
 from registration.io.asterix.errors import LEDGER_COLUMNS, AsterixImportError
 from registration.io.asterix.octets import PAD
 from registration.io.files.limits import BoundedLedger
-from registration.live.nmealog import looks_like_nmea, nmea_datagrams
-from registration.live.stream import ByteStream, Datagrams
+from registration.live.replay.nmealog import looks_like_nmea, nmea_datagrams
+from registration.live.replay.stream import ByteStream, Datagrams
 
 __all__ = ["Recording", "ReplayError", "recognise", "datagrams", "PIECE_BYTES", "NMEA_PIECE_BYTES", "KINDS"]
 

@@ -1,6 +1,6 @@
-"""The live service's HTTP server: the page and the API of :mod:`registration.live.api`, read-only
+"""The live service's HTTP server: the page and the API of :mod:`registration.live.http.api`, read-only
 (``GET`` and ``HEAD``; every other method is refused with 405, so that no request changes state).
-It serves what the latest :class:`~registration.live.api.Snapshot` holds, handed over by
+It serves what the latest :class:`~registration.live.http.api.Snapshot` holds, handed over by
 ``snapshot()``; it binds 127.0.0.1 unless told otherwise."""
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from typing import Callable
 from urllib.parse import parse_qs, urlsplit
 
-from registration.live.api import Snapshot
+from registration.live.http.api import Snapshot
 
 __all__ = ["ApiServer", "start_http"]
 
@@ -45,7 +45,7 @@ class _Handler(BaseHTTPRequestHandler):
         snap = self.server.snapshot()
         path = url.path
         if path in _PAGES:
-            from registration.live.webassets import asset
+            from registration.live.http.assets import asset
 
             body, kind = asset(_PAGES[path])
             return self._send(200, body, kind, head)

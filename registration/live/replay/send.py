@@ -1,7 +1,7 @@
 """Replay recordings to the network at their recorded pace (``registration replay``,
 docs/howto/replay.md).
 
-The recordings (:mod:`registration.live.recordings`: pcap/pcapng captures, raw ASTERIX, NMEA 0183
+The recordings (:mod:`registration.live.replay.recordings`: pcap/pcapng captures, raw ASTERIX, NMEA 0183
 logs) are sent in the order given as one stream: each datagram at ``t0_wall + (t - t0) / speed`` on
 a monotonic clock, ``t`` its recorded time and ``t0`` the first one's, every deadline counted from
 the start (no drift). Times of day are placed on the day nearest to the time before them, across
@@ -27,8 +27,8 @@ import numpy as np
 
 from registration.core.progress import progress_bar
 from registration.io.nmea.clock import unwrap_days
-from registration.live.recordings import Recording, ReplayError, datagrams, recognise
-from registration.live.stream import Datagrams
+from registration.live.replay.recordings import Recording, ReplayError, datagrams, recognise
+from registration.live.replay.stream import Datagrams
 
 __all__ = ["Target", "parse_target", "ReplayStats", "Timeline", "Replayer", "replay", "RATE_BATCH"]
 
@@ -359,7 +359,7 @@ def replay(
     possible); ``loop``: again and again until interrupted; ``ports``: UDP destination ports kept
     from captures (None: all); ``max_rate_mbps``: a cap on the payload rate (Mbit/s);
     ``progress``: a bar over the files' sizes (:func:`registration.core.progress.progress_bar`).
-    :class:`~registration.live.recordings.ReplayError` (a ValueError) naming the file or option for
+    :class:`~registration.live.replay.recordings.ReplayError` (a ValueError) naming the file or option for
     a recording that is none of the kinds read or a bad target."""
     return Replayer(
         recordings, target, speed, loop=loop, ports=ports, max_rate_mbps=max_rate_mbps, progress=progress

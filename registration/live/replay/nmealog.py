@@ -21,7 +21,7 @@ from registration.io.nmea.attitude import read_pashr
 from registration.io.nmea.errors import LEDGER_COLUMNS
 from registration.io.nmea.fixes import read_fixes
 from registration.io.nmea.lines import SentenceLog, read_lines
-from registration.live.stream import ByteStream, Datagrams
+from registration.live.replay.stream import ByteStream, Datagrams
 
 __all__ = ["nmea_datagrams", "looks_like_nmea", "line_times"]
 
@@ -74,7 +74,7 @@ def line_times(log: SentenceLog, first_line: int, n_lines: int, timed_by_recepti
 
 
 def nmea_datagrams(stream: ByteStream, name: str, piece_bytes: int) -> Iterator[Datagrams]:
-    """The lines of the log ``stream`` as :class:`~registration.live.stream.Datagrams`, about
+    """The lines of the log ``stream`` as :class:`~registration.live.replay.stream.Datagrams`, about
     ``piece_bytes`` octets of lines at a time."""
     carry, first_line, anchored = b"", 1, False
     ledger = BoundedLedger(LEDGER_COLUMNS, 1, [name])
