@@ -96,6 +96,10 @@ def chain_blocks(buf: np.ndarray, start: np.ndarray, end: np.ndarray) -> tuple[n
     return np.array(starts, dtype=np.int64), np.array(ends, dtype=np.int64)
 
 
+#: The octets of a data block read for its first record's time of day (records are far shorter).
+_FIRST_RECORD_OCTETS = 1024
+
+
 def _first_times(buf: np.ndarray, start: np.ndarray, end: np.ndarray, cats: np.ndarray) -> np.ndarray:
     """(offset, time of day s) of the first record of up to _TIME_SAMPLE blocks each of CAT048,
     CAT034, CAT021 that has a time of day item (it may be 24 h or more), ordered by offset."""
@@ -109,7 +113,10 @@ def _first_times(buf: np.ndarray, start: np.ndarray, end: np.ndarray, cats: np.n
         if not sel.size:
             continue
         edition = DEFAULT_EDITIONS[cat]
-        rec = walk_records(buf, start[sel], end[sel], uap_for(cat, edition), wanted)
+        # the first record of each block is all that is read: the walk stops _FIRST_RECORD_OCTETS in
+        # (a block of 65 000 one-octet records would otherwise be walked whole, file after file)
+        cut = np.minimum(end[sel], start[sel] + _FIRST_RECORD_OCTETS)
+        rec = walk_records(buf, start[sel], cut, uap_for(cat, edition), wanted)
         if not rec.start.size:
             continue
         f = decode(buf, rec) if decode is not None else decode021(buf, rec, edition)
