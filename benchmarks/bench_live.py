@@ -260,7 +260,7 @@ def main(argv=None) -> None:
     add_arguments(ap)
     args = ap.parse_args(argv)
     if args.tiny:
-        args.hours, args.seeds, args.ingest_hours, args.memory_speed = 0.05, 1, 0.1, 400.0
+        args.hours, args.seeds, args.ingest_hours, args.memory_speed = 0.02, 1, 0.05, 400.0
     with tempfile.TemporaryDirectory() as temp:
         folder = Path(temp)
         flow = ingest(folder, args.ingest_hours)
@@ -270,7 +270,7 @@ def main(argv=None) -> None:
             f"datagrams/s), estimated at {flow['estimated_plots_per_s']:.0f} plots/s; SIGTERM took "
             f"{flow['sigterm_s']:.1f} s; the replay: {' '.join(flow['replay'])}"
         )
-        lag = lag_at_20x(100.0 if args.tiny else 20.0)
+        lag = lag_at_20x(300.0 if args.tiny else 20.0)
         print(
             f"lag at 20x: median {lag['median_s']:.2f} s, max {lag['max_s']:.2f} s of wall time "
             f"({lag['polls']} polls)"
@@ -285,7 +285,7 @@ def main(argv=None) -> None:
         )
         seeds = list(range(101, 101 + args.seeds))
         print("live against fleet register (held-out simulations):")
-        batch = against_batch(folder, seeds, 120.0 if args.tiny else 900.0)
+        batch = against_batch(folder, seeds, 60.0 if args.tiny else 900.0)
     figures = {"ingest": flow, "lag_at_20x": lag, "memory": mem, "against_batch": batch}
     sizes = {"hours": args.hours, "memory_speed": args.memory_speed, "ingest_hours": args.ingest_hours}
     write("live", args, {**sizes, "seeds": seeds}, figures)
