@@ -26,7 +26,9 @@ from tests.io.nmea.bridgelog import PLATFORM, BridgeLogConfig, simulate_bridge_l
 from tests.live.running import serving
 
 SEED = 11  # not a seed the service was developed on
-SPEED = "40"  # twice the 20x of the acceptance; the service names tracks on its data time, but imports a quiet feed's tail after 2 s of wall time
+#: Twice the acceptance's 20x: the service names tracks on its data time, but imports a quiet
+#: feed's tail after 2 s of wall time.
+SPEED = "40"
 NM_M = 1852.0
 
 
