@@ -82,16 +82,18 @@ class Bridge:
             self._last_batch = now
             estimator.add_ship_data(batch.navigation, batch.references, batch.targets)
             self.labels.add(batch.plots, batch.navigation, batch.references, batch.targets)
-            if self.labels.due():
+            while self.labels.due():  # every run of the grid the piece passed, in order
                 self.labels.run()
             if batch.navigation is not None:
                 self._nav_end = max(self._nav_end, float(batch.navigation["time"].max()))
             if batch.plots is not None:
                 self._queue = _cat([self._queue, batch.plots])
+        quiet = now - self._last_batch >= self.stream.hold_s
+        if (force or quiet) and self.labels.behind():  # the feed's end: a last run on its tail
+            self.labels.run(final=True)
         p = self._queue
         if p is None:
             return None
-        quiet = now - self._last_batch >= self.stream.hold_s
         due = (
             p["time"] <= min(self._nav_end - self.hold_s, self._nav_end)
             if not (force or quiet)
