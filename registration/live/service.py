@@ -241,9 +241,11 @@ class Service:
             fp = batch.file_plots
             if fp["time_s"].size:
                 self.recent.append((float(fp["time_s"].max()), Counter(fp["sensor"].astype(str).tolist())))
-        hurry = self.receiver.waiting() >= ROUND_DATAGRAMS  # datagrams pile up: import them first
+        # Datagrams pile up: import them first, and estimate once they are (one epoch of the
+        # estimator can take longer than a budget, so even a small one would slow the import).
+        hurry = self.receiver.waiting() >= ROUND_DATAGRAMS
         now = time.monotonic()
-        deadline = now + (ESTIMATE_BUDGET_S / 5 if hurry else ESTIMATE_BUDGET_S)
+        deadline = now if hurry else now + ESTIMATE_BUDGET_S
         while self.backlog and not self.stop.is_set() and time.monotonic() < deadline:
             self.estimator.feed(self.backlog.popleft())
         if now >= self._next_snapshot:
