@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import numpy as np
-from scipy import stats
 
 from registration.core.distributions import chi2_logsf, chi2_ppf, chi2_sf, norm_isf
 
@@ -13,6 +12,8 @@ X = np.array([0.0, 1e-8, 0.3, 1.0, 3.84, 9.21, 40.0, 400.0, 5000.0])
 
 
 def test_chi2_quantiles_and_tails_equal_scipy_stats():
+    from scipy import stats  # here, not at collection: it takes a second to import
+
     q, dof = np.meshgrid(Q, DOF)
     np.testing.assert_allclose(chi2_ppf(q, dof), stats.chi2.ppf(q, dof), rtol=1e-14, atol=0)
     x, dofx = np.meshgrid(X, DOF)
@@ -22,5 +23,7 @@ def test_chi2_quantiles_and_tails_equal_scipy_stats():
 
 
 def test_normal_upper_quantile_equals_scipy_stats():
+    from scipy import stats
+
     q = np.array([1e-300, 1e-12, 0.0013, 0.025, 0.5, 0.975, 1.0])
     np.testing.assert_allclose(norm_isf(q), stats.norm.isf(q), rtol=1e-14, atol=0)
