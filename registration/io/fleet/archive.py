@@ -180,9 +180,9 @@ class ParquetSource:
         return out
 
     def _batches(self, name: str, columns: Iterable[str]) -> Iterator[dict]:
-        """Batches of ``columns`` (table names; those of them the table has) as dicts of arrays; text columns without nulls as
-        ``pandas.Categorical`` (no Python string per row: the first passes over 10^7 rows would
-        otherwise leave their memory fragmented)."""
+        """Batches of ``columns`` (table names; those of them the table has) as dicts of arrays;
+        text columns without nulls as ``pandas.Categorical`` (no Python string per row: the first
+        passes over 10^7 rows would otherwise leave their memory fragmented)."""
         if self.paths[name] is None:
             return
         data = self._dataset(name)
