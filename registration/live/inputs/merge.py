@@ -20,17 +20,17 @@ from registration.live.inputs.asterix import StreamBatch
 __all__ = ["TimeMerge"]
 
 
-def _cat(tables: list[dict]) -> dict | None:
+def _cat(tables: list[dict | None]) -> dict | None:
     """The rows of ``tables`` (columns a table lacks: NaN, or '' for text) in one table."""
-    tables = [t for t in tables if t is not None and t["time"].size]
-    if not tables:
+    kept: list[dict] = [t for t in tables if t is not None and t["time"].size]
+    if not kept:
         return None
-    keys = list(dict.fromkeys(k for t in tables for k in t))
+    keys = list(dict.fromkeys(k for t in kept for k in t))
     out = {}
     for k in keys:
-        text = any(t[k].dtype.kind in "US" for t in tables if k in t)
+        text = any(t[k].dtype.kind in "US" for t in kept if k in t)
         fill = "" if text else np.nan
-        out[k] = np.concatenate([t[k] if k in t else np.full(t["time"].size, fill) for t in tables])
+        out[k] = np.concatenate([t[k] if k in t else np.full(t["time"].size, fill) for t in kept])
     return out
 
 
@@ -68,7 +68,7 @@ class TimeMerge:
         if self._held is not None:
             radar, self._held = _split(self._held, self._held["time"] <= horizon)
         plots = _cat([radar, None if ship is None else ship.plots])
-        references = _cat(self._references + ([ship.references] if ship and ship.references else []))
+        references = _cat([*self._references, None if ship is None else ship.references])
         self._references = []
         if plots is None and references is None:
             return None
