@@ -213,7 +213,8 @@ def atc_truth(
     (temperature offset K, QNH Pa): the Mode S and Mode A/C plots carry I048/090 and the ADS-B
     reports I021/145, the pressure altitude of the aircraft's height above mean sea level
     (:data:`GEOID_M` below its ellipsoid height) in that atmosphere (registration.core.atmosphere),
-    in 25 ft steps (Mode S, ADS-B) or 100 ft (Mode A/C). ``overfly`` (radar, miss m, height m): the first
+    in 25 ft steps (Mode S, ADS-B) or 100 ft (Mode A/C); the plots' ``true_height_m`` then holds the
+    aircraft's ellipsoid height where each plot saw it. ``overfly`` (radar, miss m, height m): the first
     Mode A/C aircraft (14) passes that radar at the middle of the recording, ``miss`` from it
     horizontally, at that height (ENU up of the scenario's centre) with its drawn speed, heading and
     climb rate (nothing else changes: the same draws)."""
@@ -274,6 +275,7 @@ def atc_truth(
         step = np.where(kind == "mode_s", 1, 4)  # in 1/4 FL: 25 ft, 100 ft
         raw = _fl_raw(height, flight_levels, step)
         plot_arrays["fl_raw"] = np.where(kind == "primary", NO_FL, raw)
+        plot_arrays["true_height_m"] = height  # ellipsoid height where the plot saw it (not encoded)
         adsb["fl_raw"] = _fl_raw(adsb["true_height_m"], flight_levels, 1)
     return AtcTruth(plot_arrays, adsb, sites, scans, truth, date)
 
