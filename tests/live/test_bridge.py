@@ -131,22 +131,27 @@ class _Ship:
         pass
 
 
-def _labels(path, sensors, size: int) -> tuple[dict, int]:
-    bridge = Bridge(PLATFORM, sensors, 20.0, hold_s=1e9)
+def _labels(path, sensors, size: int) -> tuple[dict, int, list]:
+    bridge = Bridge(PLATFORM, sensors, 20.0, hold_s=30.0)  # plots handed over during the log
     bridge.stream.hold_s = 1e9  # the feed never goes quiet by wall time: the test decides the end
     lines = path.read_bytes().split(b"\n")
+    given = []
     for a in range(0, len(lines), size):
         bridge.stream.add_datagrams([line + b"\n" for line in lines[a : a + size] if line.strip()])
-        bridge.take(_Ship())
-    bridge.take(_Ship(), force=True)
-    return dict(bridge.labels.labels), bridge.labels.runs
+        given.append(bridge.take(_Ship()))
+    given.append(bridge.take(_Ship(), force=True))
+    used = sorted((t, x) for b in given if b is not None for t, x in zip(b.plots["time"], b.plots["target"]))
+    return dict(bridge.labels.labels), bridge.labels.runs, used
 
 
 def test_track_names_do_not_depend_on_how_the_stream_was_cut(bridge_log):
     """A loaded service imports bigger pieces: the association must run at the same data times
-    (a grid) on the same data, so that every track gets the same vessel, and at the end once more."""
+    (a grid) on the same data, so that every track gets the same vessel, and at the end once more;
+    and the plots it hands over must be labelled by the same runs: the same plots used, with the
+    same targets."""
     path, sensors, _ = bridge_log
-    small, runs_small = _labels(path, sensors, 40)
-    big, runs_big = _labels(path, sensors, 2000)
+    small, runs_small, used_small = _labels(path, sensors, 40)
+    big, runs_big, used_big = _labels(path, sensors, 100000)  # one piece
     assert small and small == big
     assert runs_small == runs_big >= 4  # 120 s of data: the grid's runs (every 30 s) and the final one
+    assert used_small and used_small == used_big

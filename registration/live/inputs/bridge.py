@@ -59,6 +59,7 @@ class Bridge:
         self._queue: dict | None = None  # plots not yet due
         self._last_batch = self._started = wall.monotonic()
         self._seen = False
+        self._cut = -np.inf  # the ship's plots up to this data time (s) were handed over
         self.hold_s = hold_s
         #: The data time (s) up to which the ship's plots were handed over (or will be, once their
         #: tracks are named): +inf once the feed went quiet, or when nothing came in the first
@@ -83,42 +84,54 @@ class Bridge:
     def take(self, estimator, force: bool = False) -> StreamBatch | None:
         """Import what waits (:meth:`NmeaStream.take`), give the navigation, references and
         targets to ``estimator``, associate when due, and return the plots of tracks with a vessel
-        that are due (sorted by time; None without any): those ``hold_s`` seconds of data older
-        than the latest navigation, all of them when ``force`` or when nothing came for
-        ``hold_s`` seconds of wall time (the end of a feed)."""
+        that are due (sorted by time; None without any). After the association's run at data time
+        ``g`` the plots up to ``g - hold_s`` are due, labelled as that run left the labels: which
+        plots are used does not depend on how the stream was cut into pieces. All of them are due
+        after a last run when ``force``, or when nothing came for the stream's ``hold_s`` seconds
+        of wall time (the end of a feed)."""
         batch = self.stream.take(force)
         now = wall.monotonic()
+        out: list[dict | None] = []
         if batch is not None:
             self._last_batch, self._seen = now, True
             estimator.add_ship_data(batch.navigation, batch.references, batch.targets)
             self.labels.add(batch.plots, batch.navigation, batch.references, batch.targets)
-            while self.labels.due():  # every run of the grid the piece passed, in order
-                self.labels.run()
             if batch.navigation is not None:
                 self._nav_end = max(self._nav_end, float(batch.navigation["time"].max()))
             if batch.plots is not None:
                 self._queue = _cat([self._queue, batch.plots])
+            while self.labels.due():  # every run of the grid the piece passed, in order
+                at = self.labels.next_time
+                self.labels.run()
+                self._cut = max(self._cut, min(at - self.hold_s, self._nav_end))
+                out.append(self._release(self._queue_due(self._cut)))
         quiet = now - self._last_batch >= self.stream.hold_s
         if force or (quiet and self._seen) or (not self._seen and now - self._started >= STARTUP_S):
             self.horizon = np.inf
         else:
-            self.horizon = self._nav_end - self.hold_s
-        if (force or quiet) and self.labels.behind():  # the feed's end: a last run on its tail
-            self.labels.run(final=True)
+            self.horizon = self._cut
+        if (force or quiet) and self._seen:  # the feed's end: a last run on its tail, all due
+            if self.labels.behind():
+                self.labels.run(final=True)
+            self._cut = max(self._cut, self._nav_end)
+            out.append(self._release(None if force else self._queue_due(self._nav_end)))
+        plots = _cat(out)
+        return None if plots is None else StreamBatch(plots, None, {})
+
+    def _queue_due(self, cut: float) -> np.ndarray | None:
+        return None if self._queue is None else self._queue["time"] <= cut
+
+    def _release(self, due: np.ndarray | None) -> dict | None:
+        """The queued plots where ``due`` (all of them for None), labelled now: those of tracks
+        with a vessel, sorted by time (None without any); the others are counted."""
         p = self._queue
-        if p is None:
+        if p is None or (due is not None and not due.any()):
             return None
-        due = (
-            p["time"] <= min(self._nav_end - self.hold_s, self._nav_end)
-            if not (force or quiet)
-            else (p["time"] <= self._nav_end)
-        )
-        if force:
-            due[:] = True
-        if not due.any():
-            return None
-        self._queue = {k: v[~due] for k, v in p.items()} if not due.all() else None
-        p = {k: v[due] for k, v in p.items()}
+        if due is None or due.all():
+            self._queue = None
+        else:
+            self._queue = {k: v[~due] for k, v in p.items()}
+            p = {k: v[due] for k, v in p.items()}
         target = self.labels.label(p["sensor"], p["track"])
         used = target != ""
         self.unassociated += int((~used).sum())
@@ -127,7 +140,7 @@ class Bridge:
         order = np.argsort(p["time"][used], kind="stable")
         plots = {k: v[used][order] for k, v in p.items() if k != "track"}
         plots["target"] = target[used][order]
-        return StreamBatch(plots, None, {})
+        return plots
 
     def to_json(self) -> dict:
         """The stream's counters, with the association's."""

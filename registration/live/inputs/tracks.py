@@ -90,6 +90,11 @@ class TrackLabels:
             and float(self._plots["time"].max()) >= self._next
         )
 
+    @property
+    def next_time(self) -> float:
+        """The data time (s) of the next run of the grid (inf before any plot)."""
+        return np.inf if self._next is None else self._next
+
     def behind(self) -> bool:
         """Whether plots came after the last run's time (a final run at a feed's end would see them)."""
         return self._plots is not None and float(self._plots["time"].max()) > self._ran_to
