@@ -52,10 +52,20 @@ class Run:
     step_s: float
 
 
-def make_run(folder: Path, seed: int, periods: int = 3, n_aircraft: int = 20, step_boundary: int = 2) -> Run:
-    """Simulate ``periods`` periods of :data:`PERIOD_S` from :data:`START_S`, the step of R3 at the
-    ``step_boundary``-th boundary; write the dual-feed pcap and both SITES files into ``folder``."""
-    step_s = START_S + step_boundary * PERIOD_S
+def make_run(
+    folder: Path,
+    seed: int,
+    periods: int = 3,
+    period_s: float = PERIOD_S,
+    step_boundary: int = 2,
+    n_aircraft: int = 20,
+    mix: tuple[int, int, int] = (12, 14, 17),
+    adsb_period_s: float = 1.0,
+) -> Run:
+    """Simulate ``periods`` periods of ``period_s`` from :data:`START_S`, the step of R3 at the
+    ``step_boundary``-th boundary, ``n_aircraft`` of ``mix`` (tests/io/asterix/atc.py); write the
+    dual-feed pcap and both SITES files into ``folder``."""
+    step_s = START_S + step_boundary * period_s
     model = RadarModel(
         psr_errors=True,
         missed_ssr=MISSED_SSR,
@@ -64,9 +74,11 @@ def make_run(folder: Path, seed: int, periods: int = 3, n_aircraft: int = 20, st
     )
     truth = atc_truth(
         seed,
-        duration_s=periods * PERIOD_S - 3.0,
+        duration_s=periods * period_s - 3.0,
         t0=START_S + 1.0,
         n_aircraft=n_aircraft,
+        mix=mix,
+        adsb_period_s=adsb_period_s,
         flight_levels=DAY,
         model=model,
     )
