@@ -13,8 +13,8 @@ flight levels of a warm day (ISA + 12 K, QNH 1025 hPa).
   difference and the step of R3.
 
 Seed 41 was chosen before any run of this file (the development runs used seed 100; seeds 42 to 44
-are the full-size benchmark's, benchmarks/bench_radar_model.py). 12 aircraft (6 with ADS-B every
-2 s, 2 more Mode S, 2 Mode A/C, 2 primary only), three periods of 120 s.
+are the full-size benchmark's, benchmarks/bench_radar_model.py). 10 aircraft (5 with ADS-B every
+2 s, 2 more Mode S, 2 Mode A/C, 1 primary only), three periods of 120 s.
 """
 
 from __future__ import annotations
@@ -32,7 +32,7 @@ pytest.importorskip("asterix")  # libasterix, the independent encoder (the test 
 
 Z_LIMIT = 3.5
 PERIOD_S = 120.0
-SIZE = {"periods": 3, "period_s": PERIOD_S, "n_aircraft": 12, "mix": (6, 8, 10), "adsb_period_s": 2.0}
+SIZE = {"periods": 3, "period_s": PERIOD_S, "n_aircraft": 10, "mix": (5, 7, 9), "adsb_period_s": 2.0}
 
 
 @pytest.fixture(scope="module", params=[41])
@@ -83,7 +83,7 @@ def test_the_dual_feed_and_the_flight_levels_were_used(with_model):
     run, _, _, out = with_model
     summary = json.loads((run.folder / "tables_model" / "import_summary.json").read_text())
     assert summary["duplicates"]["records"] > 0 and summary["duplicates"]["by_port"][0]["port"] == 8601
-    assert summary["flight_levels"]["relation"]["aircraft"] == 6
+    assert summary["flight_levels"]["relation"]["aircraft"] == 5
     assert summary["flight_levels"]["heights_written"] > 0
     assert summary_of(out)["converged"]
 
