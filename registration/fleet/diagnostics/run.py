@@ -180,7 +180,8 @@ def diagnose(problem, result, kind_by_row: np.ndarray | None = None) -> Diagnost
 _TERMS = {"eccentricity": "the eccentricity", "range_gain": "the range gain", "step": "the bias step"}
 
 
-#: The terms of azimuth or range that a step test over time can see (``_annotated``).
+#: The terms of azimuth or range that a step test over time can see, and that can see a step
+#: (``_annotated``).
 _AZIMUTH_RANGE_TERMS = ("eccentricity", "range_gain")
 
 
@@ -189,9 +190,11 @@ def _annotated(findings: list[Candidate]) -> list[Candidate]:
     range gain or step finding, their hints completed: the unmodelled term also bends the targets'
     fitted tracks, which the group tests then see (the tests use the residuals net of the fitted term,
     not of its effect on the tracks). Likewise a step beside a larger eccentricity or range gain
-    finding of the same sensor and channel: as the traffic moves in azimuth and range, an unmodelled
-    term of azimuth or range changes the residuals' mean over time. The term named is the sensor's
-    largest (findings come largest |z| first)."""
+    finding of the same sensor and channel, and an eccentricity or range gain beside a larger step:
+    as the traffic moves in azimuth and range, an unmodelled term of azimuth or range changes the
+    residuals' mean over time, and a step changes their mean over the azimuths and ranges the
+    traffic held before and after it. The term named is the sensor's largest (findings come largest
+    |z| first)."""
     terms: dict = {}
     for f in findings:
         if f.test in _TERMS:
@@ -199,8 +202,10 @@ def _annotated(findings: list[Candidate]) -> list[Candidate]:
     out = []
     for f in findings:
         term = terms.get((f.sensor, f.channel))
-        follows = f.test in ("kind", "target") or (
-            f.test == "step" and term in ("eccentricity", "range_gain")
+        follows = (
+            f.test in ("kind", "target")
+            or (f.test == "step" and term in _AZIMUTH_RANGE_TERMS)
+            or (f.test in _AZIMUTH_RANGE_TERMS and term == "step")
         )
         if follows and term is not None and term != f.test:
             f = replace(f, hint=f"{f.hint} (or a consequence of {_TERMS[term]} above)")
