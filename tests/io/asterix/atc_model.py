@@ -12,7 +12,8 @@ The terms, on a plot of radar ``R`` at true bearing θ, stamped time t:
 * bearing += ``a sin θ + b cos θ`` (``eccentricity_deg[R] = (a, b)``; states ``R:eccentricity_sin``,
   ``R:eccentricity_cos``, rad; every radar of the scenario has them, 0 where not given); θ is the
   true bearing, where the registration's model takes the measured one: they differ by the azimuth
-  bias and noise (0.3 deg: 0.0006 deg of a 0.12 deg term, a tenth of its sigma at the test's size),
+  bias and noise, which moves b by a times the bias (0.0008 deg at most here, about a fifth of a
+  600 s period's sigma or less),
 * bearing += ``size`` for t >= T (t as encoded, in 1/128 s) on both channels of ``bearing_step =
   (R, T, size)`` (the antenna's azimuth reference: ``R:bearing_bias`` and ``R.psr:bearing_bias``
   step at T, reported time),
