@@ -5,9 +5,9 @@ Window ``b`` of target ``j`` spans ``[t0, t1]``; with ``tau = (t - centre) / hal
 position is ``p(t) = sum_k P_k(tau) c_bk`` (Legendre polynomials P_0..P_d, c_bk in ECEF m), so
 a window is a block of ``3 (d + 1)`` nuisance parameters: the small blocks that the Schur
 complement eliminates. A window whose plots and full reference positions fall at fewer than
-``d + 1`` distinct instants gets the degree those instants can carry (the unused coefficients are masked; degrees 1 to 3 share
-the cubic's four coefficients, the higher ones masked). ``window_s = 0`` makes
-one block per distinct (target, time) with degree 0: the target position at every instant where
+``d + 1`` distinct instants gets the degree those instants can carry (the unused coefficients
+are masked; degrees 1 to 3 share the cubic's four coefficients, the higher ones masked).
+``window_s = 0`` makes one block per distinct (target, time) with degree 0: the target position at every instant where
 it is measured (synchronous sensors).
 
 Plots are ordered by (block, sensor); a *group* is the plots of one sensor in one block. The
