@@ -7,8 +7,8 @@ a window is a block of ``3 (d + 1)`` nuisance parameters: the small blocks that 
 complement eliminates. A window whose plots and full reference positions fall at fewer than
 ``d + 1`` distinct instants gets the degree those instants can carry (the unused coefficients
 are masked; degrees 1 to 3 share the cubic's four coefficients, the higher ones masked).
-``window_s = 0`` makes one block per distinct (target, time) with degree 0: the target position at every instant where
-it is measured (synchronous sensors).
+``window_s = 0`` makes one block per distinct (target, time) with degree 0: the target position
+at every instant where it is measured (synchronous sensors).
 
 Plots are ordered by (block, sensor); a *group* is the plots of one sensor in one block. The
 coupling of a block with the registration states is held per group (a ``3 (d + 1) x w`` matrix
