@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import json
 from functools import lru_cache
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -10,9 +12,21 @@ import pytest
 
 @lru_cache(maxsize=1)
 def all_specs():
+    """Every derive spec by name: the whole sympy derivation (about 16 s of CPU), so only in a test,
+    never while collecting (parametrize over :func:`emitted` instead)."""
     from derive.registry import all_specs as _all
 
     return {s.name: s for s in _all()}
+
+
+@lru_cache(maxsize=1)
+def emitted() -> dict:
+    """The functions generated/manifest.json records, by name (inputs, outputs, jacobians): the
+    names to parametrize over without deriving. test_every_spec_is_emitted checks they are the
+    derive specs' (and tests/codegen/test_freshness.py that generated/ is fresh)."""
+    return json.loads((Path(__file__).resolve().parents[1] / "generated" / "manifest.json").read_text())[
+        "functions"
+    ]
 
 
 def port_size(port) -> int:

@@ -28,18 +28,16 @@ LIKELY_CAUSES = (
 def nees_interval(runs: int, dof: int, level: float = 0.95) -> tuple[float, float]:
     """Two-sided ``level`` interval of the average of ``runs`` independent chi-square(``dof``) values.
 
-    ``runs * avg ~ chi2(runs * dof)``, so the interval is ``chi2.ppf((1 -+ level) / 2, runs * dof) / runs``,
-    computed as ``2 gammaincinv(n / 2, q)`` (the same values; scipy.special loads far less than scipy.stats).
+    ``runs * avg ~ chi2(runs * dof)``, so the interval is ``chi2.ppf((1 -+ level) / 2, runs * dof) / runs``
+    (:func:`registration.core.distributions.chi2_ppf`).
     """
-    from scipy.special import gammaincinv
+    from registration.core.distributions import chi2_ppf
 
     if runs < 1 or dof < 1:
         raise ValueError(f"nees_interval: need runs >= 1 and dof >= 1, got runs={runs}, dof={dof}")
     alpha = 1.0 - level
     n = runs * dof
-    return float(2.0 * gammaincinv(n / 2, alpha / 2) / runs), float(
-        2.0 * gammaincinv(n / 2, 1 - alpha / 2) / runs
-    )
+    return float(chi2_ppf(alpha / 2, n) / runs), float(chi2_ppf(1 - alpha / 2, n) / runs)
 
 
 @dataclass(frozen=True)

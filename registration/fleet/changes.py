@@ -16,7 +16,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.stats import norm
+
+from registration.core.distributions import norm_isf
 
 __all__ = ["FALSE_ALARM", "ChangeTest", "change_threshold", "change_test"]
 
@@ -29,7 +30,7 @@ def change_threshold(n_tests: int, false_alarm: float = FALSE_ALARM) -> float:
     ``false_alarm`` of one false alarm or more (two-sided, Bonferroni)."""
     if not (0.0 < false_alarm < 1.0):
         raise ValueError(f"false_alarm: expected a probability in (0, 1), got {false_alarm}")
-    return float(norm.isf(false_alarm / (2.0 * max(int(n_tests), 1))))
+    return float(norm_isf(false_alarm / (2.0 * max(int(n_tests), 1))))
 
 
 @dataclass(frozen=True)

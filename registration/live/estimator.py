@@ -7,8 +7,14 @@ The filter is the batch problem's model processed epoch by epoch (docs/backgroun
 biases follow a random walk (its process noise lets them drift), ADS-B reports are reference
 positions, and plots need a target id (Mode S address or Mode 3/A code); plots without one are
 counted, not used (association of plots without ids runs in the batch path only). A plot that
-arrives after its epoch was processed is counted as late and not used. When a state moves beyond
-its uncertainty an alarm is raised and its variance opened, so the filter follows the new value.
+arrives after its epoch was processed is counted as late and not used. Each target window of an
+epoch is fitted on its own (:mod:`registration.fleet.batch.window_fit`): a Mode A/C aircraft
+without a measured height flying over a radar starts far from its minimum, and fitted together
+with the others its window once ended in a wrong minimum whose gradient raised three false
+alarms. A window whose fit has not converged is not used, and its plots are counted
+(``filter.n_unconverged_plots``, ``/api/status`` ``ingest.unconverged_plots``). When a state
+moves beyond its uncertainty an alarm is raised and its variance opened, so the filter follows
+the new value.
 """
 
 from __future__ import annotations

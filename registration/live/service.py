@@ -31,6 +31,7 @@ from registration.live.http.api import SensorActivity, Snapshot, build_snapshot
 from registration.live.http.server import start_http
 from registration.live.inputs.asterix import AsterixStream, IngestCounters, StreamBatch, split_batch
 from registration.live.inputs.bridge import Bridge
+from registration.live.inputs.merge import TimeMerge
 from registration.live.inputs.tcp import TcpClient, TcpServer
 from registration.live.outputs import cat063_message, corrected_lines, plot_corrections, ttm_corrections
 from registration.live.state import load_state, save_state
@@ -159,6 +160,7 @@ class Service:
         self.started = time.monotonic()
         self.recent: deque[tuple[float, Counter]] = deque()
         self.backlog: deque[StreamBatch] = deque()
+        self.merge = TimeMerge()  # with a ship: the radar plots wait for its plots of the same time
         self._next_snapshot = 0.0
         self.stop = threading.Event()
         self._snapshot = Snapshot()
@@ -230,29 +232,41 @@ class Service:
     def round(self) -> None:
         """Import what was received, send the corrected plots, estimate, and publish a snapshot."""
         items = self.receiver.take(ROUND_DATAGRAMS)
+        ship = None
         if self.bridge is not None:
-            items = self._nmea_round(items)
+            items, ship = self._nmea_round(items)
         if items and self.stream is not None:
             payloads, ports = [p for p, _ in items], [q for _, q in items]
             if self.config.corrected is not None:
                 self.send_corrected(payloads)
             batch = self.stream.decode(payloads, ports)
-            self.backlog.extend(split_batch(batch, CHUNK_PLOTS))
+            if self.bridge is None:
+                self.backlog.extend(split_batch(batch, CHUNK_PLOTS))
+            else:  # held until the ship's plots of the same time are handed over
+                self.merge.add(batch)
             fp = batch.file_plots
             if fp["time_s"].size:
                 self.recent.append((float(fp["time_s"].max()), Counter(fp["sensor"].astype(str).tolist())))
-        hurry = self.receiver.waiting() >= ROUND_DATAGRAMS  # datagrams pile up: import them first
+        if self.bridge is not None:
+            merged = self.merge.release(self.bridge.horizon, ship)
+            if merged is not None:
+                self.backlog.extend(split_batch(merged, CHUNK_PLOTS))
+        # Datagrams pile up: import them first, and estimate once they are (one epoch of the
+        # estimator can take longer than a budget, so even a small one would slow the import).
+        hurry = self.receiver.waiting() >= ROUND_DATAGRAMS
         now = time.monotonic()
-        deadline = now + (ESTIMATE_BUDGET_S / 5 if hurry else ESTIMATE_BUDGET_S)
+        deadline = now if hurry else now + ESTIMATE_BUDGET_S
         while self.backlog and not self.stop.is_set() and time.monotonic() < deadline:
             self.estimator.feed(self.backlog.popleft())
         if now >= self._next_snapshot:
             self._snapshot = self._build()
             self._next_snapshot = time.monotonic() + SNAPSHOT_S
 
-    def _nmea_round(self, items: list[tuple[bytes, int]]) -> list[tuple[bytes, int]]:
-        """Import the NMEA lines received (passing them on corrected first), queue the ship's
-        associated plots; returns the other datagrams."""
+    def _nmea_round(
+        self, items: list[tuple[bytes, int]]
+    ) -> tuple[list[tuple[bytes, int]], StreamBatch | None]:
+        """Import the NMEA lines received (passing them on corrected first); returns the other
+        datagrams and the ship's associated plots now due (None: none)."""
         bridge = self.bridge
         assert bridge is not None
         if self.nmea_socket is not None:
@@ -267,10 +281,9 @@ class Service:
                 self.send_corrected_nmea(bridge.stream.add_bytes(data))
         batch = bridge.take(self.estimator)
         if batch is not None:
-            self.backlog.append(batch)
             t = batch.plots["time"]
             self.recent.append((float(t.max()), Counter(batch.plots["sensor"].astype(str).tolist())))
-        return items
+        return items, batch
 
     def send_corrected_nmea(self, lines: list[str]) -> None:
         """The lines on to ``--corrected``, each a datagram, TTMs corrected by the estimates."""
@@ -319,7 +332,7 @@ class Service:
         return out
 
     def _build(self) -> Snapshot:
-        backlog = sum(int(b.plots["time"].size) for b in self.backlog)
+        backlog = sum(int(b.plots["time"].size) for b in self.backlog) + self.merge.held
         self.counters.waiting_datagrams = self.receiver.waiting()
         uptime = time.monotonic() - self.started
         nmea = None

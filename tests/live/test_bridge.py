@@ -122,3 +122,31 @@ def test_a_ship_beside_radar_sites_adds_its_states_and_leaves_theirs(bridge_log)
         "RADAR:range_gain": 0.0,
         "RADAR:time_bias": np.inf,
     }
+
+
+class _Ship:
+    """An estimator's ship inputs, ignored: the labels alone are looked at."""
+
+    def add_ship_data(self, navigation, references, targets) -> None:
+        pass
+
+
+def _labels(path, sensors, size: int) -> tuple[dict, int]:
+    bridge = Bridge(PLATFORM, sensors, 20.0, hold_s=1e9)
+    bridge.stream.hold_s = 1e9  # the feed never goes quiet by wall time: the test decides the end
+    lines = path.read_bytes().split(b"\n")
+    for a in range(0, len(lines), size):
+        bridge.stream.add_datagrams([line + b"\n" for line in lines[a : a + size] if line.strip()])
+        bridge.take(_Ship())
+    bridge.take(_Ship(), force=True)
+    return dict(bridge.labels.labels), bridge.labels.runs
+
+
+def test_track_names_do_not_depend_on_how_the_stream_was_cut(bridge_log):
+    """A loaded service imports bigger pieces: the association must run at the same data times
+    (a grid) on the same data, so that every track gets the same vessel, and at the end once more."""
+    path, sensors, _ = bridge_log
+    small, runs_small = _labels(path, sensors, 40)
+    big, runs_big = _labels(path, sensors, 2000)
+    assert small and small == big
+    assert runs_small == runs_big >= 4  # 120 s of data: the grid's runs (every 30 s) and the final one

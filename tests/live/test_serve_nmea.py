@@ -248,13 +248,15 @@ def test_corrected_ttm_lines_carry_the_correction(run):
     assert (first[1].distance, first[1].bearing) == (first[0].distance, first[0].bearing)
 
 
-def _tcp_expected(tmp: Path) -> tuple:
-    log, path, sensors, lines = _log(tmp, SEED + 1, 120.0, bad=True)
+@pytest.fixture(scope="module")
+def tcp_log(tmp_path_factory) -> tuple:
+    """A shorter log for the TCP inputs, and what the import finds in it."""
+    log, path, sensors, lines = _log(tmp_path_factory.mktemp("tcp"), SEED + 1, 90.0, bad=True)
     return path, sensors, lines, _expected(path, sensors)
 
 
-def test_tcp_input_connecting_to_a_multiplexer(tmp_path):
-    path, sensors, lines, expected = _tcp_expected(tmp_path)
+def test_tcp_input_connecting_to_a_multiplexer(tcp_log):
+    path, sensors, lines, expected = tcp_log
     server = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
     server.bind(("127.0.0.1", 0))
     server.listen(1)
@@ -283,8 +285,8 @@ def test_tcp_input_connecting_to_a_multiplexer(tmp_path):
     assert stopped[0] == 0, stopped[2]
 
 
-def test_tcp_input_taking_a_replay_that_connects(tmp_path):
-    path, sensors, lines, expected = _tcp_expected(tmp_path)
+def test_tcp_input_taking_a_replay_that_connects(tcp_log):
+    path, sensors, lines, expected = tcp_log
     inputs = ("--nmea", "tcp-listen://127.0.0.1:0", "--platform", PLATFORM, "--sensors", str(sensors))
     with serving(inputs=inputs) as svc:
         sent = _replay(path, f"tcp://127.0.0.1:{svc.input_port}")

@@ -28,7 +28,7 @@ from registration.core.progress import progress_bar
 from registration.fleet.batch.blocks import make_blocks
 from registration.fleet.batch.design import Design, make_design
 from registration.fleet.batch.initial import initial_coefficients
-from registration.fleet.batch.levenberg_marquardt import levenberg_marquardt, two_phases
+from registration.fleet.batch.levenberg_marquardt import two_phases
 from registration.fleet.batch.normal import Evaluation, Normal, evaluate, normal_equations
 from registration.fleet.batch.schur import damped_step, determined_directions, masked_blocks, reduce
 from registration.fleet.batch.set_aside import (
@@ -38,6 +38,7 @@ from registration.fleet.batch.set_aside import (
     set_aside_outside,
     time_bias_warnings,
 )
+from registration.fleet.batch.window_fit import fit_each_window
 from registration.fleet.data.layout import StateLayout
 from registration.fleet.data.problem import FleetProblem
 
@@ -207,26 +208,11 @@ def determined_design(
 def fit_windows(
     design: Design, start: Evaluation, normal: Normal, options: BatchOptions
 ) -> tuple[Evaluation, Normal]:
-    """The window coefficients fitted with the states held (Gauss-Newton, each window's step
-    ``V_b^-1 b_c,b``), until the predicted reduction of the sum of squares is below
-    ``options.tolerance``; Levenberg-Marquardt from there if a step does not lower it."""
-    blk = design.blocks
-    mask = np.repeat(blk.coef_mask, 3, axis=1)
-    ev = start
-    for _ in range(options.max_iterations):
-        dc = np.linalg.solve(masked_blocks(blk, normal.V), normal.b_c[:, :, None])[:, :, 0] * mask
-        if not float(np.sum(dc * normal.b_c)) > options.tolerance:
-            return ev, normal
-        trial = evaluate(design, ev.x, ev.coef + dc.reshape(ev.coef.shape))
-        if not trial.cost < ev.cost:
-            break
-        ev = trial
-        normal = normal_equations(design, ev)
-    solved = levenberg_marquardt(
-        DesignEquations(design), DesignPoint(ev, normal), np.zeros(0, dtype=np.int64), options
-    )
-    assert solved.point.normal is not None
-    return solved.point.evaluation, solved.point.normal
+    """The window coefficients fitted with the states held, each window on its own
+    (:func:`~registration.fleet.batch.window_fit.fit_each_window`), until each window's predicted
+    reduction of its sum of squares is below ``options.tolerance``."""
+    ev, normal, _ = fit_each_window(design, start, normal, options)
+    return ev, normal
 
 
 #: Solves again after dropping plots that a time bias moves outside their navigation (where

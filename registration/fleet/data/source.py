@@ -76,7 +76,8 @@ class FleetSource(Protocol):
         ...
 
     def reference_batches(self, columns: Iterable[str]) -> Iterator[Columns]:
-        """Every reference row, in batches of rows, only ``columns``; none without references."""
+        """Every reference row, in batches of rows, only ``columns`` (those of them the table has:
+        the optional ``height_offset_prior`` may be missing); none without references."""
         ...
 
     def read_plots(self, lo: float, hi: float) -> Columns:

@@ -19,8 +19,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.stats import chi2 as chi2_dist
-from scipy.stats import norm
+
+from registration.core.distributions import chi2_sf, norm_isf
 
 __all__ = [
     "BinMeans",
@@ -41,7 +41,7 @@ MIN_VALUES = 10
 def p_to_z(p: float) -> float:
     """The two-sided standard normal ``|z|`` of tail probability ``p`` (so a chi-square test and a z
     test share one threshold)."""
-    return float(norm.isf(max(float(p), 1e-300) / 2.0))
+    return float(norm_isf(max(float(p), 1e-300) / 2.0))
 
 
 @dataclass(frozen=True)
@@ -65,7 +65,7 @@ def bin_means(e: np.ndarray, bins: np.ndarray, n_bins: int, s: float) -> BinMean
     z = np.where(n >= MIN_VALUES, mean * np.sqrt(n) / s, np.nan)
     tested = np.isfinite(z)
     q, dof = float(np.sum(z[tested] ** 2)), int(tested.sum()) - 1
-    p = float(chi2_dist.sf(q, dof)) if dof > 0 else float("nan")
+    p = float(chi2_sf(q, dof)) if dof > 0 else float("nan")
     return BinMeans(n.astype(int), mean, z, q, dof, p)
 
 
@@ -108,7 +108,7 @@ def sinusoid_fit(e: np.ndarray, theta: np.ndarray, s: float) -> Fit:
     q = float(ab @ np.linalg.solve(cab, ab))
     u = ab / amplitude if amplitude > 0 else np.array([1.0, 0.0])
     sigma = float(np.sqrt(u @ cab @ u))
-    return Fit(amplitude, sigma, p_to_z(chi2_dist.sf(q, 2)), int(e.size), float(np.arctan2(ab[1], ab[0])))
+    return Fit(amplitude, sigma, p_to_z(float(chi2_sf(q, 2))), int(e.size), float(np.arctan2(ab[1], ab[0])))
 
 
 def slope_fit(e: np.ndarray, x: np.ndarray, s: float) -> Fit:

@@ -24,6 +24,7 @@ class Checkpoints:
     _open_key: int | None
     _t_last: float | None
     _n_read: int
+    n_unconverged_plots: int
     _history: list
     _buffer: dict
 
@@ -31,7 +32,8 @@ class Checkpoints:
         """The filter's state as named arrays (for ``numpy.savez``, no pickle): the estimate ``x``,
         covariance ``P``, ``information``, the last epoch processed and its time, the history
         (``history_time``, ``history_x``, ``history_sigma``, ``history_nis``, ``history_dof``,
-        ``history_plots``), the plots read and the state names. Plots of the epoch still open are
+        ``history_plots``), the plots read, those set aside in windows whose fit did not converge
+        (``n_unconverged``) and the state names. Plots of the epoch still open are
         not part of it."""
         h, n = self._history, self.layout.n
         return {
@@ -44,6 +46,7 @@ class Checkpoints:
             ),
             "t_last": np.array(np.nan if self._t_last is None else self._t_last),
             "n_read": np.array(self._n_read, dtype=np.int64),
+            "n_unconverged": np.array(self.n_unconverged_plots, dtype=np.int64),
             "history_time": np.array([e[0] for e in h], dtype=np.float64),
             "history_x": np.array([e[1] for e in h], dtype=np.float64).reshape(len(h), n),
             "history_sigma": np.array([e[2] for e in h], dtype=np.float64).reshape(len(h), n),
@@ -71,6 +74,7 @@ class Checkpoints:
         t_last = float(state["t_last"])
         self._t_last = None if not np.isfinite(t_last) else t_last
         self._n_read = int(state["n_read"])
+        self.n_unconverged_plots = int(state.get("n_unconverged", 0))  # absent before it was counted
         self._history = list(
             zip(
                 state["history_time"].tolist(),

@@ -15,7 +15,12 @@ the filter's current estimate ``x-`` (docs/background/fleet-online.md):
 
 Windows that carry no registration information are set aside before that: a target seen by one
 sensor only in the epoch (and no reference position in it), and a window whose position its plots
-do not determine (:func:`registration.fleet.batch.solver.determined_design`).
+do not determine (:func:`registration.fleet.batch.solver.determined_design`). After the fit
+(:func:`~registration.fleet.batch.window_fit.fit_each_window`, each window on its own), a window
+still more than one of its own standard deviations from its minimum (its remaining predicted
+reduction above ``UNCONVERGED_REMAINING``, one chi-square unit) is set aside too, and its plots
+counted (``EpochInformation.n_unconverged``): its gradient is not that of a minimum and would
+enter the filter as if it were data.
 """
 
 from __future__ import annotations
@@ -25,7 +30,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from registration.fleet.batch.schur import reduce
-from registration.fleet.batch.solver import BatchOptions, determined_design, fit_windows
+from registration.fleet.batch.solver import BatchOptions, determined_design
+from registration.fleet.batch.window_fit import UNCONVERGED_REMAINING, fit_each_window
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = ["EpochInformation", "epoch_information", "informative_plots"]
@@ -34,11 +40,13 @@ __all__ = ["EpochInformation", "epoch_information", "informative_plots"]
 @dataclass(frozen=True)
 class EpochInformation:
     """The epoch's information ``L`` (n, n) and gradient ``b`` (n,) over all states (rad, m), at
-    the estimate it was linearised at, from ``n_plots`` plots."""
+    the estimate it was linearised at, from ``n_plots`` plots; ``n_unconverged``: the plots of
+    windows set aside because their fit did not converge."""
 
     L: np.ndarray
     b: np.ndarray
     n_plots: int
+    n_unconverged: int = 0
 
 
 def informative_plots(target: np.ndarray, sensor: np.ndarray, ref_target: np.ndarray) -> np.ndarray:
@@ -59,13 +67,28 @@ def epoch_information(problem: FleetProblem, x: np.ndarray, options: BatchOption
     keep = informative_plots(problem.target, problem.sensor, problem.ref_target)
     if not keep.any():
         return None
-    found = determined_design(
-        problem.drop_plots(~keep, ()), options, x, priors=False
-    )  # the filter carries the prior
-    if found is None:
-        return None
-    problem, design, start, normal = found
-    _, normal = fit_windows(design, start, normal, options)
+    problem = problem.drop_plots(~keep, ())
+    n_unconverged = 0
+    for _ in range(2):  # once more without the windows whose fit did not converge, if any
+        found = determined_design(problem, options, x, priors=False)  # the filter carries the prior
+        if found is None:
+            return None
+        problem, design, start, normal = found
+        _, normal, remaining = fit_each_window(design, start, normal, options)
+        converged = ~(remaining > UNCONVERGED_REMAINING)
+        if converged.all():
+            break
+        blk = design.blocks
+        drop = np.zeros(problem.n_plots, dtype=bool)
+        drop[blk.order[~converged[blk.block]]] = True
+        n_unconverged += int(drop.sum())
+        problem = problem.drop_plots(drop, ())
+        keep = informative_plots(problem.target, problem.sensor, problem.ref_target)
+        if not keep.any():
+            return None
+        problem = problem.drop_plots(~keep, ())
+    else:
+        return None  # a window that converged alone did not the second time: nothing trustworthy
     red = reduce(design.blocks, normal, 0.0)
     n = design.n_state
-    return EpochInformation(red.S[:n, :n], red.r[:n], problem.n_plots)
+    return EpochInformation(red.S[:n, :n], red.r[:n], problem.n_plots, n_unconverged)

@@ -126,6 +126,8 @@ class FleetFilter(Checkpoints, LiveInputs):
         self._history: list[tuple] = []
         self._unused: dict[str, list] = {}
         self.n_linearisations = 0
+        #: Plots of windows whose fit did not converge, set aside (epoch.py), over every epoch.
+        self.n_unconverged_plots = 0
         #: Called after each informative epoch with its :class:`EpochUpdate` (None: not called).
         self.on_epoch: Callable[[EpochUpdate], None] | None = None
 
@@ -232,7 +234,7 @@ class FleetFilter(Checkpoints, LiveInputs):
             )
         self._t_last = t_end
         problem = self._problem(plots)
-        nis, dof, used = 0.0, 0, 0
+        nis, dof, used, unconverged = 0.0, 0, 0, 0
         x_lin = self.x
         for _ in range(MAX_RELINEARISATIONS):
             info = epoch_information(problem, x_lin, self.options.batch())
@@ -246,9 +248,10 @@ class FleetFilter(Checkpoints, LiveInputs):
             )
             moved = np.abs(x - x_lin)[self.layout.free] / self.layout.scale[self.layout.free]
             self.n_linearisations += 1
-            x_lin, L, used = x, info.L, info.n_plots
+            x_lin, L, used, unconverged = x, info.L, info.n_plots, info.n_unconverged
             if not moved.max(initial=0.0) > RELINEARISE_ABOVE:
                 break
+        self.n_unconverged_plots += unconverged
         if used:
             x_before, P_before = self.x, self.P
             self.x, self.P = x_lin, P

@@ -180,13 +180,14 @@ class ParquetSource:
         return out
 
     def _batches(self, name: str, columns: Iterable[str]) -> Iterator[dict]:
-        """Batches of ``columns`` (table names) as dicts of arrays; text columns without nulls as
-        ``pandas.Categorical`` (no Python string per row: the first passes over 10^7 rows would
-        otherwise leave their memory fragmented)."""
+        """Batches of ``columns`` (table names; those of them the table has) as dicts of arrays;
+        text columns without nulls as ``pandas.Categorical`` (no Python string per row: the first
+        passes over 10^7 rows would otherwise leave their memory fragmented)."""
         if self.paths[name] is None:
             return
         data = self._dataset(name)
-        files = [self._file_column(name, c) for c in columns]
+        have = set(data.schema.names)
+        files = [f for f in (self._file_column(name, c) for c in columns) if f in have]
         for fragment in data.get_fragments():
             try:
                 for batch in fragment.to_batches(

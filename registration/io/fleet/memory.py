@@ -73,7 +73,7 @@ class TablesSource:
             return
         n = len(next(iter(table.values())))
         for a in range(0, n, self.batch_rows):
-            yield {c: table[c][a : a + self.batch_rows] for c in columns}
+            yield {c: table[c][a : a + self.batch_rows] for c in columns if c in table}
 
     def plot_batches(self, columns: Iterable[str]) -> Iterator[dict]:
         return self._batches(self.plots, columns)

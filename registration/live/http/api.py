@@ -176,6 +176,7 @@ def build_snapshot(
     rows = estimator.rows()
     ingest = counters.to_json()
     ingest["late_plots"] = estimator.late_plots
+    ingest["unconverged_plots"] = estimator.filter.n_unconverged_plots
     ingest["backlog_plots"] = backlog_plots
     status = {
         "uptime_s": uptime_s,

@@ -9,6 +9,10 @@ check that carry over from batch to batch. The duplicate check remembers the rec
 ``horizon_s`` seconds only, so that memory stays flat on a stream that never ends. Records set
 aside are counted by the import's reasons (docs/reference/asterix-import.md).
 
+The flight levels of aircraft without ADS-B become height-only references, with the relation of
+flight level to height learned on the stream's recent ADS-B reports
+(:mod:`registration.live.inputs.flightlevels`).
+
 The time axis: seconds since midnight UTC of the day the service started (or ``date``), carried
 across midnight as the import does; the datagrams' arrival times are not used, so that a replay
 faster than real time places its records as the recording did.
@@ -34,6 +38,7 @@ from registration.io.asterix.tables.sites import channel_sensors
 from registration.io.asterix.tables.timeofday import Unwrapper
 from registration.io.files.ledger import RejectedLedger
 from registration.io.fleet.cells import FILE_COLUMNS
+from registration.live.inputs.flightlevels import StreamFlightLevels
 
 __all__ = [
     "AsterixStream",
@@ -52,7 +57,10 @@ DUPLICATE_HORIZON_S = 600.0
 class IngestCounters:
     """What came in since the start: ``datagrams`` and ``bytes`` imported, ``waiting_datagrams``
     received and not yet imported, ``records`` per category (``"048"``: n), ``plots`` kept (with a
-    target id or not), ``plots_without_id``, ``references`` kept, ``rejected`` per reason code
+    target id or not), ``plots_without_id``, ``references`` kept (ADS-B reports),
+    ``flight_level_heights`` (height-only references made of the flight levels of aircraft without
+    ADS-B) and ``flight_levels_unused`` (such flight levels without a relation yet, or outside the
+    levels it was learned on), ``rejected`` per reason code
     (the import's), and per sensor its ``sensor_plots`` and the time of its latest plot
     (``sensor_last_s``, s on the time axis)."""
 
@@ -62,6 +70,8 @@ class IngestCounters:
     plots: int = 0
     plots_without_id: int = 0
     references: int = 0
+    flight_level_heights: int = 0
+    flight_levels_unused: int = 0
     rejected: Counter = field(default_factory=Counter)
     sensor_plots: Counter = field(default_factory=Counter)
     sensor_last_s: dict = field(default_factory=dict)
@@ -76,6 +86,8 @@ class IngestCounters:
             "plots": self.plots,
             "plots_without_id": self.plots_without_id,
             "references": self.references,
+            "flight_level_heights": self.flight_level_heights,
+            "flight_levels_unused": self.flight_levels_unused,
             "rejected": dict(sorted(self.rejected.items())),
         }
 
@@ -132,6 +144,7 @@ class AsterixStream:
         self.editions = check_editions(editions)
         self.unwrapper = Unwrapper(date or dt.datetime.now(dt.timezone.utc).date())
         self.checks = StreamChecks(keep_duplicates, horizon_s=horizon_s)
+        self.flight_levels = StreamFlightLevels(sites)
         self.name = name
         self.counters = IngestCounters()
 
@@ -175,10 +188,20 @@ class AsterixStream:
             table = si_columns("plots", {k: v[with_id] for k, v in file_plots.items()})
             order = np.argsort(table["time"], kind="stable")
             plots = {k: v[order] for k, v in table.items()}
-        references = None
+        parts = []
         if rows.reference and rows.reference["time_s"].size:
-            references = si_columns("reference", {k: rows.reference[k] for k in REFERENCE_COLUMNS})
-            c.references += int(references["time"].size)
+            self.flight_levels.add_reports(rows.reference)
+            parts.append({k: rows.reference[k] for k in REFERENCE_COLUMNS})
+            c.references += int(rows.reference["time_s"].size)
+        heights = self.flight_levels.height_rows(rows.plots) if rows.plots else None
+        c.flight_level_heights, c.flight_levels_unused = self.flight_levels.heights, self.flight_levels.unused
+        if heights is not None:
+            parts.append({k: heights[k] for k in REFERENCE_COLUMNS})
+        references = None
+        if parts:
+            references = si_columns(
+                "reference", {k: np.concatenate([np.asarray(p[k]) for p in parts]) for k in REFERENCE_COLUMNS}
+            )
         return StreamBatch(plots, references, file_plots)
 
 

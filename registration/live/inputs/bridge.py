@@ -19,11 +19,15 @@ from registration.live.inputs.asterix import StreamBatch
 from registration.live.inputs.nmea import NmeaStream
 from registration.live.inputs.tracks import TrackLabels
 
-__all__ = ["Bridge", "HOLD_S"]
+__all__ = ["Bridge", "HOLD_S", "STARTUP_S"]
 
 #: The ship's plots wait this many seconds of data before the estimator gets them, so that the
 #: association runs of that time can name their tracks' vessels (a track's first plots included).
 HOLD_S = 60.0
+
+#: Seconds of wall time the other inputs wait, at the start, for the ship's first lines (a feed that
+#: starts later loses its plots of the epochs processed meanwhile: they are late).
+STARTUP_S = 10.0
 
 
 def _cat(parts: list) -> dict | None:
@@ -53,8 +57,14 @@ class Bridge:
         self.unassociated = 0
         self._nav_end = -np.inf
         self._queue: dict | None = None  # plots not yet due
-        self._last_batch = wall.monotonic()
+        self._last_batch = self._started = wall.monotonic()
+        self._seen = False
         self.hold_s = hold_s
+        #: The data time (s) up to which the ship's plots were handed over (or will be, once their
+        #: tracks are named): +inf once the feed went quiet, or when nothing came in the first
+        #: :data:`STARTUP_S` seconds, so that other inputs held back for it
+        #: (:class:`~registration.live.inputs.merge.TimeMerge`) go on.
+        self.horizon = -np.inf
 
     def ship_tables(self) -> dict:
         """The ship's sensors and platforms tables in the fleet tables' SI form."""
@@ -79,19 +89,25 @@ class Bridge:
         batch = self.stream.take(force)
         now = wall.monotonic()
         if batch is not None:
-            self._last_batch = now
+            self._last_batch, self._seen = now, True
             estimator.add_ship_data(batch.navigation, batch.references, batch.targets)
             self.labels.add(batch.plots, batch.navigation, batch.references, batch.targets)
-            if self.labels.due():
+            while self.labels.due():  # every run of the grid the piece passed, in order
                 self.labels.run()
             if batch.navigation is not None:
                 self._nav_end = max(self._nav_end, float(batch.navigation["time"].max()))
             if batch.plots is not None:
                 self._queue = _cat([self._queue, batch.plots])
+        quiet = now - self._last_batch >= self.stream.hold_s
+        if force or (quiet and self._seen) or (not self._seen and now - self._started >= STARTUP_S):
+            self.horizon = np.inf
+        else:
+            self.horizon = self._nav_end - self.hold_s
+        if (force or quiet) and self.labels.behind():  # the feed's end: a last run on its tail
+            self.labels.run(final=True)
         p = self._queue
         if p is None:
             return None
-        quiet = now - self._last_batch >= self.stream.hold_s
         due = (
             p["time"] <= min(self._nav_end - self.hold_s, self._nav_end)
             if not (force or quiet)

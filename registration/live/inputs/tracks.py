@@ -2,8 +2,10 @@
 (:func:`~registration.fleet.associate_and_register`, as ``fleet register`` runs it on imported
 tables) run again and again on the recent data of a stream.
 
-Every ``every_s`` seconds of data, the association runs on the plots, navigation and references of
-the last ``window_s`` seconds. A track whose plots there it labelled with one vessel (at least
+Every ``every_s`` seconds of data (a grid from the first plot's time, so that the runs, and the
+labels, do not depend on how the stream was cut into pieces), the association runs on the plots,
+navigation and references of the ``span_s`` seconds up to that time; at a feed's end (no line for
+a while) once more on its tail. A track whose plots there it labelled with one vessel (at least
 :data:`MIN_SHARE` of them) is that vessel from then on; a track it left without a vessel (with at
 least :data:`MIN_PLOTS` plots there) loses its label, so that a track number the radar gives to
 another target later is associated anew. The plots of a track are used by the estimator once the
@@ -58,6 +60,7 @@ class TrackLabels:
         self._refs: dict | None = None
         self._targets: dict | None = None
         self._next: float | None = None
+        self._ran_to = -np.inf
         self.runs = 0
         self.failures: Counter = Counter()
         self.note = ""
@@ -71,14 +74,13 @@ class TrackLabels:
             self._targets = _cat([self._targets, {**targets, "time": np.zeros(len(targets["target"]))}])
         if self._plots is None:
             return
-        t = float(self._plots["time"].max())
-        t0 = t - self.span_s
+        if self._next is None:  # the first run: a grid of data time from the first plot
+            self._next = float(self._plots["time"].min()) + min(self.every_s, self.span_s / 2)
+        t0 = min(float(self._plots["time"].max()), self._next) - self.span_s  # what the next run needs
         self._plots, self._refs = _since(self._plots, t0), _since(self._refs, t0)
         if self._nav is not None and self._nav["time"].size > 1:
             first = max(int(np.searchsorted(self._nav["time"], t0 - 10.0)) - 1, 0)
             self._nav = {k: v[first:] for k, v in self._nav.items()}
-        if self._next is None:
-            self._next = t + min(self.every_s, self.span_s / 2)
 
     def due(self) -> bool:
         """Whether the data reached the time of the next run."""
@@ -88,19 +90,31 @@ class TrackLabels:
             and float(self._plots["time"].max()) >= self._next
         )
 
-    def run(self) -> int:
-        """Associate the recent data and update the labels; returns the tracks labelled."""
+    def behind(self) -> bool:
+        """Whether plots came after the last run's time (a final run at a feed's end would see them)."""
+        return self._plots is not None and float(self._plots["time"].max()) > self._ran_to
+
+    def run(self, final: bool = False) -> int:
+        """Associate the data of the ``span_s`` seconds up to the next run's time (up to the latest
+        plot when ``final``: the end of a feed) and update the labels; returns the tracks labelled.
+        The runs' times are a grid of data time, so the labels do not depend on how the stream was
+        cut into pieces (on the machine's load)."""
         from registration.fleet import AssociationOptions, associate_and_register
 
         plots = self._plots
         assert plots is not None and self._next is not None
-        self._next = float(plots["time"].max()) + self.every_s
+        at = float(plots["time"].max()) if final else self._next
+        self._next = max(self._next, at) + self.every_s if final else self._next + self.every_s
+        self._ran_to = at
         if self._nav is None or self._refs is None:
             return 0
-        inside = (plots["time"] >= self._nav["time"][0]) & (plots["time"] <= self._nav["time"][-1])
+        inside = (plots["time"] >= at - self.span_s) & (plots["time"] <= at)
+        inside &= (plots["time"] >= self._nav["time"][0]) & (plots["time"] <= self._nav["time"][-1])
         plots = {k: v[inside] for k, v in plots.items()}
         if plots["time"].size == 0:
             return 0
+        refs = self._refs
+        refs = {k: v[refs["time"] <= at] for k, v in refs.items()}
         targets = None if self._targets is None else {k: v for k, v in self._targets.items() if k != "time"}
         self.runs += 1
         try:
@@ -109,7 +123,7 @@ class TrackLabels:
                 self.sensors,
                 self._nav,
                 self.platforms,
-                self._refs,
+                refs,
                 AssociationOptions(window_s=self.window_s),
                 targets=targets,
             )
@@ -117,9 +131,7 @@ class TrackLabels:
             self.failures[type(exc).__name__] += 1
             self.note = f"association of the last {self.span_s:g} s: {exc}"
             return 0
-        self._learn(
-            plots, result.labels.astype(str), set(np.asarray(self._refs["target"]).astype(str).tolist())
-        )
+        self._learn(plots, result.labels.astype(str), set(np.asarray(refs["target"]).astype(str).tolist()))
         return len(self.labels)
 
     def _learn(self, plots: dict, labels: np.ndarray, vessels: set) -> None:

@@ -218,6 +218,7 @@ def atc_truth(
     date: dt.date = dt.date(2024, 5, 1),
     errors_seed: int | None = None,
     flight_levels: tuple[float, float] | None = None,
+    overfly: tuple[str, float, float] | None = None,
     model: RadarModel | None = None,
     mix: tuple[int, int, int] = (12, 14, 17),
     adsb_period_s: float = 1.0,
@@ -230,7 +231,11 @@ def atc_truth(
     traffic). ``flight_levels`` (temperature offset K, QNH Pa): the Mode S and Mode A/C plots carry
     I048/090 and the ADS-B reports I021/145, the pressure altitude of the aircraft's height above
     mean sea level (:data:`GEOID_M` below its ellipsoid height) in that atmosphere
-    (registration.core.atmosphere), in 25 ft steps (Mode S, ADS-B) or 100 ft (Mode A/C). ``model``:
+    (registration.core.atmosphere), in 25 ft steps (Mode S, ADS-B) or 100 ft (Mode A/C); the plots'
+    ``true_height_m`` then holds the aircraft's ellipsoid height where each plot saw it. ``overfly``
+    (radar, miss m, height m): the first Mode A/C aircraft (14) passes that radar at the middle of
+    the recording, ``miss`` from it horizontally, at that height (ENU up of the scenario's centre)
+    with its drawn speed, heading and climb rate (nothing else changes: the same draws). ``model``:
     the further terms of tests/io/asterix/atc_model.py (PSR channels' biases, missed SSR replies,
     eccentricity, a bias step), drawn from generators of their own: without it the scenario is as it
     was."""
@@ -240,6 +245,11 @@ def atc_truth(
     origin, R = _geometry()
     sites, site_ecef = _sites(origin, R)
     start, v = _aircraft(rng, n_aircraft, duration_s)
+    if overfly is not None:
+        radar, miss, height = overfly
+        across = np.array([v[14, 1], -v[14, 0]]) / np.hypot(v[14, 0], v[14, 1])
+        mid = np.array([*(np.array(RADAR_LAYOUT[radar][2:4]) + miss * across), height])
+        start[14] = mid - v[14] * duration_s / 2
     tracks = [lambda t, j=j: origin + R @ (start[j] + v[j] * (t - t0)) for j in range(n_aircraft)]
     tracks = np.array(tracks, dtype=object)
     truth, plots, scans = {}, [], {}
@@ -295,6 +305,7 @@ def atc_truth(
         step = np.where(kind == "mode_s", 1, 4)  # in 1/4 FL: 25 ft, 100 ft
         raw = _fl_raw(height, flight_levels, step)
         plot_arrays["fl_raw"] = np.where(kind == "primary", NO_FL, raw)
+        plot_arrays["true_height_m"] = height  # ellipsoid height where the plot saw it (not encoded)
         adsb["fl_raw"] = _fl_raw(adsb["true_height_m"], flight_levels, 1)
     return AtcTruth(plot_arrays, adsb, sites, scans, truth, date, steps)
 

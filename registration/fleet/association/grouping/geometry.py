@@ -35,7 +35,6 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import linear_sum_assignment
 
 from registration._generated import api as generated
 from registration.fleet.batch.initial import ASSUMED_RANGE_M
@@ -185,6 +184,8 @@ class Assigner:
         full = np.full((n_rows, n_cols + n_rows), FORBIDDEN)
         full[:, :n_cols] = np.where(np.isfinite(cost), cost, FORBIDDEN)
         full[np.arange(n_rows), n_cols + np.arange(n_rows)] = no_match
+        from scipy.optimize import linear_sum_assignment  # scipy.optimize: a second to import
+
         t0 = time.perf_counter()
         rows, cols = linear_sum_assignment(full)
         self.seconds += time.perf_counter() - t0

@@ -10,8 +10,8 @@ A group's curve is the information-weighted fusion of its members that measure t
 from __future__ import annotations
 
 import numpy as np
-from scipy.stats import chi2
 
+from registration.core.distributions import chi2_ppf
 from registration.fleet.association.grouping.cost import (
     group_covariances,
     joint_covariance,
@@ -137,7 +137,7 @@ def group_tracklets(
         if bi.size:
             full = bool(rank[s] == 3)
             d2, logdet = _costs(problem, x, tl, b[bi], gi, groups.curves(), P, full)
-            gate = float(chi2.ppf(gate_probability, N_LINE if full else 3 * int(rank[s])))
+            gate = float(chi2_ppf(gate_probability, N_LINE if full else 3 * int(rank[s])))
             cost = np.where(d2 < gate, 0.5 * (d2 + logdet), np.inf)
             best = np.full(b.size, np.inf)
             np.minimum.at(best, bi, logdet)

@@ -27,8 +27,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.stats import chi2
 
+from registration.core.distributions import chi2_ppf
 from registration.fleet.association.grouping.geometry import (
     N_COEF,
     N_LINE,
@@ -142,7 +142,7 @@ def make_tracklets(
     keep = np.ones(start.size, dtype=bool)
     full = problem.mask[order[start]].all(axis=1)  # a 2-D radar's deck-plane positions wobble with the roll
     if gate_probability is not None:
-        keep &= ~full | (dof < 1) | (chi < chi2.ppf(gate_probability, np.maximum(dof, 1)))
+        keep &= ~full | (dof < 1) | (chi < chi2_ppf(gate_probability, np.maximum(dof, 1)))
     line, cov, local = line[keep], cov[keep], local[keep]
     cols = state_columns(problem, order[start[keep]])
     if cols.shape[1] > TIME_BIAS_SLOT:  # the time stamps move with the time bias: the curve's own motion

@@ -18,8 +18,8 @@ pair is its own optimum, so the result is that of one assignment over the whole 
 from __future__ import annotations
 
 import numpy as np
-from scipy.stats import chi2
 
+from registration.core.distributions import chi2_ppf
 from registration.fleet.association.grouping.geometry import Assigner, PlotGeometry
 
 __all__ = ["sensor_tracks", "track_breaks"]
@@ -203,7 +203,7 @@ def sensor_tracks(
 ) -> np.ndarray:
     """(N,) track id of each plot (ids unique over all sensors), -1 for plots in no track of at
     least ``min_plots`` plots (clutter). ``time`` (N,) s, ``sensor`` (N,) sensor index."""
-    gate = float(chi2.ppf(gate_probability, 3))
+    gate = float(chi2_ppf(gate_probability, 3))
     track = np.full(time.size, -1, dtype=np.int64)
     tracks = _Tracks()
     n_sensors = int(sensor.max()) + 1
@@ -249,7 +249,7 @@ def track_breaks(
     of freedom) of the prediction starts a new piece, the filter starting again there. Returns
     ((M,) bool: the plot starts a new piece after a jump, (M,) its squared distance, 0 elsewhere).
     The tracks advance together, the k-th plot of every track in one step."""
-    gate = float(chi2.ppf(1.0 - probability, 3))
+    gate = float(chi2_ppf(1.0 - probability, 3))
     order = np.lexsort((time, track))
     key = track[order]
     first = np.r_[True, key[1:] != key[:-1]]

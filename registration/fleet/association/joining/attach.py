@@ -22,9 +22,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.stats import chi2
 
 from registration._generated import api as generated
+from registration.core.distributions import chi2_ppf
 from registration.fleet.association.grouping.geometry import state_columns
 from registration.fleet.association.joining.curves import Curves
 from registration.fleet.data.problem import FleetProblem
@@ -390,4 +390,4 @@ def verify_plots(
     if plots.size == 0:
         return np.zeros(0, dtype=bool)
     d2, dof = pair_statistics(problem, x, curves, unit, target, plots[:, None], dx, P)
-    return (dof > 0) & (d2 < chi2.ppf(1.0 - probability, np.maximum(dof, 1)))
+    return (dof > 0) & (d2 < chi2_ppf(1.0 - probability, np.maximum(dof, 1)))

@@ -7,8 +7,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.stats import chi2
 
+from registration.core.distributions import chi2_ppf
 from registration.fleet.association.grouping.units import Units
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.solves import Registrar
@@ -121,7 +121,7 @@ def failing_joins(reg: Registrar, state: JoinState, units: Units, options: Assoc
         return np.zeros(0, dtype=np.int64), np.zeros(0), outliers
     e = reg.plot_residuals()[plots]
     ss, cnt = np.nansum(e * e, axis=1), np.isfinite(e).sum(axis=1)
-    out = (cnt > 0) & (ss > chi2.ppf(1.0 - options.outlier_probability, np.maximum(cnt, 1)))
+    out = (cnt > 0) & (ss > chi2_ppf(1.0 - options.outlier_probability, np.maximum(cnt, 1)))
     u = units.of_plot[plots]
     n = np.bincount(u, cnt > 0, minlength=units.n)
     n_out = np.bincount(u, out, minlength=units.n)
@@ -131,7 +131,7 @@ def failing_joins(reg: Registrar, state: JoinState, units: Units, options: Assoc
     joined = (state.target != "") & (n > 0)
     fail = joined & (
         (n_out > MAX_OUTLIER_SHARE * n)
-        | (ss_in > chi2.ppf(1.0 - options.drop_probability, np.maximum(cnt_in, 1)))
+        | (ss_in > chi2_ppf(1.0 - options.drop_probability, np.maximum(cnt_in, 1)))
     )
     bad = np.flatnonzero(fail)
     outliers[plots[out & ~fail[u]]] = True
@@ -185,5 +185,5 @@ def outlier_stage(
     e = reg.plot_residuals()
     cnt = np.isfinite(e).sum(axis=1)
     ss = np.nansum(e * e, axis=1)
-    limit = chi2.ppf(1.0 - options.outlier_probability, np.maximum(cnt, 1))
+    limit = chi2_ppf(1.0 - options.outlier_probability, np.maximum(cnt, 1))
     return (labels != "") & (given == "") & (cnt > 0) & (ss > limit)

@@ -27,8 +27,8 @@ from __future__ import annotations
 import itertools
 
 import numpy as np
-from scipy.stats import chi2
 
+from registration.core.distributions import chi2_logsf, chi2_ppf
 from registration.core.progress import progress_status
 from registration.fleet.association.grouping.confirm import fixing_sensors, new_names
 from registration.fleet.association.grouping.units import Units, split_units, unit_conflicts
@@ -87,7 +87,7 @@ def _margins(pairs: Pairs, cand: np.ndarray, lp: np.ndarray, conflicts: np.ndarr
 
 def _outlier_limits(probability: float) -> np.ndarray:
     """(4,) the deletion statistic's limit per number of channels (0: none)."""
-    return np.r_[np.inf, chi2.ppf(1.0 - probability, [1, 2, 3])]
+    return np.r_[np.inf, chi2_ppf(1.0 - probability, [1, 2, 3])]
 
 
 def choose_joins(
@@ -127,17 +127,17 @@ def choose_joins(
         if round_ == 0:  # the outlying plots of each pair, found once; the later rounds test the rest
             d2, _, keep, dof = evaluate(pairs.take(active), dx, Pk, outlier_limit=limits, max_trim=max_trim)
             trimmed[active] = keep
-            hopeless = d2 > FAR_OFF * chi2.ppf(options.gate_probability, np.maximum(dof, 1))
+            hopeless = d2 > FAR_OFF * chi2_ppf(options.gate_probability, np.maximum(dof, 1))
             np.minimum.at(state.best, unit[active[hopeless]], d2[hopeless] / np.maximum(dof[hopeless], 1))
             active = active[~hopeless]
             if active.size == 0:
                 break
         d2, _, keep, dof = evaluate(pairs.take(active), dx, Pk, keep=trimmed[active])
         np.minimum.at(state.best, unit[active], d2 / np.maximum(dof, 1))
-        passed = (dof > 0) & (d2 < chi2.ppf(options.gate_probability, np.maximum(dof, 1)))
+        passed = (dof > 0) & (d2 < chi2_ppf(options.gate_probability, np.maximum(dof, 1)))
         state.gated[unit[active[passed]]] = True
         at = np.flatnonzero(passed)
-        cand, lp = active[at], chi2.logsf(d2[at], dof[at])
+        cand, lp = active[at], chi2_logsf(d2[at], dof[at])
         if cand.size == 0:
             break
         order = np.lexsort((-lp, unit[cand]))
@@ -274,7 +274,7 @@ def _prescreen(
         outlier_limit=_outlier_limits(options.outlier_probability),
         max_trim=1,
     )
-    return (dof > 0) & (d2 < FAR_OFF * chi2.ppf(options.gate_probability, np.maximum(dof, 1)))
+    return (dof > 0) & (d2 < FAR_OFF * chi2_ppf(options.gate_probability, np.maximum(dof, 1)))
 
 
 def _pass_joins(

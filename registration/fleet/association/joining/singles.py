@@ -15,8 +15,8 @@ has registered plots: its errors start from the radar's (association/channels.py
 from __future__ import annotations
 
 import numpy as np
-from scipy.stats import chi2
 
+from registration.core.distributions import chi2_logsf, chi2_ppf
 from registration.fleet.association.joining.attach import pair_statistics
 from registration.fleet.association.joining.curves import Curves
 from registration.fleet.association.options import AssociationOptions
@@ -71,8 +71,8 @@ def join_single_plots(
     d2, dof = pair_statistics(
         problem, reg.x, curves, plot, target, plot[:, None], np.zeros(reg.x.size), reg.P
     )
-    ok = (dof > 0) & (d2 < chi2.ppf(options.gate_probability, np.maximum(dof, 1)))
-    lp = np.where(ok, chi2.logsf(d2, np.maximum(dof, 1)), -np.inf)
+    ok = (dof > 0) & (d2 < chi2_ppf(options.gate_probability, np.maximum(dof, 1)))
+    lp = np.where(ok, chi2_logsf(d2, np.maximum(dof, 1)), -np.inf)
     order = np.lexsort((-lp, plot))
     plot, target, lp = plot[order], target[order], lp[order]
     first = np.flatnonzero(np.r_[True, plot[1:] != plot[:-1]])

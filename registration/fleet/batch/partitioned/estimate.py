@@ -230,7 +230,7 @@ def solve_batch_partitioned(
     plan = make_plan(
         source, options.window_s, partitions=partitions, partition_s=partition_s, nav_margin_s=nav_margin_s
     )
-    layout, platform_ids, sensor_ids, sensor_platform = archive_sensors(source)
+    layout, platform_ids, sensor_ids, sensor_platform = archive_sensors(source, plan.height_offset_prior)
     x = starting_states(layout, x0)
     if cache is None:
         cache = plan.n_partitions if source.in_memory and client is None else 0

@@ -16,11 +16,18 @@ time columns finds those times), so the linear and Hermite interpolations at the
 times, also when a time bias of up to ``margin`` seconds moves them, use the same samples as with
 the whole table.
 
+The references are read by partition too; the pass that finds the reference targets also reads
+their ``height_offset_prior`` column: when some rows carry it (flight levels' heights sharing one
+unknown offset, :mod:`registration.fleet.data.known_targets`), the state
+``flight_levels:height_offset`` is in every partition's layout, coupled to the windows of the
+partitions whose heights carry it, and its prior is added once, with the other priors.
+
 A *source* gives the tables (:class:`registration.fleet.data.source.FleetSource`): the tables in
 memory (SI units, :class:`registration.io.fleet.memory.TablesSource`) or an archive read lazily
 (:class:`registration.io.fleet.archive.ParquetSource`). Its methods:
 ``plot_batches(columns)``, ``navigation_batches(columns)``, ``reference_batches(columns)``
-(iterators of column dicts: numpy arrays, ids also as ``pandas.Categorical``),
+(iterators of column dicts: numpy arrays, ids also as ``pandas.Categorical``; a column the
+table does not have is left out),
 ``read_plots(lo, hi)``, ``read_navigation(ranges)``, ``read_references(lo, hi)`` (rows with
 ``lo <= time <= hi``; ranges: platform -> (first, last) time), ``sensors``, ``platforms`` (small
 tables), ``token`` (a string naming the data, for caches) and ``name(table)`` (what errors call
@@ -69,7 +76,8 @@ class ArchivePlan:
     ``excluded`` the targets set aside; ``cuts`` (P - 1,) s the partitions' boundaries on the
     windows' start times; ``plot_ranges`` (P, 2) s the time range each partition's plots are read
     from (NaN: the partition holds no window); ``nav_ranges`` per partition, platform -> (first,
-    last) navigation time (s) to read.
+    last) navigation time (s) to read; ``height_offset_prior`` the prior sigma (m) of the flight
+    levels' common height offset (module docstring).
     """
 
     window_s: float
@@ -84,6 +92,9 @@ class ArchivePlan:
     n_input_plots: int
     nav_margin_s: float
     token: str
+    # the prior sigma (m; inf: none) of the flight levels' common height offset, a state of every
+    # partition's layout; None: no reference carries it
+    height_offset_prior: float | None = None
 
     @property
     def n_partitions(self) -> int:
@@ -158,11 +169,28 @@ def _first_pass(source) -> tuple:
     return ids, t_min, t_max, count, n_sensors, n
 
 
-def _reference_targets(source) -> set:
-    out = set()
-    for batch in source.reference_batches(("target",)) or ():
+def _reference_pass(source) -> tuple[set, float | None]:
+    """(the reference targets, the prior sigma (m) of the flight levels' common height offset or
+    None when no reference carries it): one pass over the references' target and
+    ``height_offset_prior`` columns. ValueError naming the reference file when the prior differs
+    between rows or is negative (as the in-memory reader's check; each partition checks its rows'
+    other rules)."""
+    out: set = set()
+    priors: list[np.ndarray] = []
+    for batch in source.reference_batches(("target", "height_offset_prior")) or ():
         out |= set(_codes(batch["target"])[1])
-    return out
+        if "height_offset_prior" in batch:
+            prior = np.asarray(batch["height_offset_prior"], dtype=np.float64)
+            priors.append(np.unique(prior[~np.isnan(prior)]))
+    values = np.unique(np.concatenate(priors)) if priors else np.zeros(0)
+    if values.size == 0:
+        return out, None
+    if values.size > 1 or not values[0] >= 0:
+        raise ValueError(
+            f"{source.name('reference')}: height_offset_prior {values.tolist()} m: the prior sigma of the "
+            "one height offset of the flight levels must be >= 0 and the same on every row"
+        )
+    return out, float(values[0])
 
 
 def _cuts(t0: np.ndarray, t1: np.ndarray, window_s: float, partitions: int | None, partition_s: float | None):
@@ -253,7 +281,7 @@ def make_plan(
             f"window_s: the partitioned solver needs target windows (window_s > 0), got {window_s}"
         )
     ids, t_min, t_max, count, n_sensors, n = _first_pass(source)
-    refs = _reference_targets(source)
+    refs, offset_prior = _reference_pass(source)
     excluded = tuple(
         Exclusion(g, SINGLE_SENSOR, count[g], float(t_min[g]), float(t_max[g]))
         for g in ids
@@ -291,4 +319,5 @@ def make_plan(
         n_input_plots=n,
         nav_margin_s=float(nav_margin_s),
         token=token,
+        height_offset_prior=offset_prior,
     )

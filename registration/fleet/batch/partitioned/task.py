@@ -108,12 +108,6 @@ def partition_problem(task: PartitionTask) -> FleetProblem | None:
         return None
     sensor, time = cols.sensor[rows], cols.time[rows]
     refs = read_references(_read(src, "reference", src.read_references, lo, hi), plan.all_targets)
-    if refs.offset_prior is not None:
-        raise ValueError(
-            "reference: heights with a height_offset_prior_m (flight levels sharing one unknown offset) "
-            "are registered in memory only; drop --partition-s, or import the flight levels with ADS-B "
-            "that gives both flight level and geometric height"
-        )
     ref_target = index_of(refs.target, plan.target_ids)
     ref_keep = ref_target >= 0
     ref_keep[ref_keep] = partition_of(plan, ref_target[ref_keep], refs.time[ref_keep]) == k
@@ -138,6 +132,7 @@ def partition_problem(task: PartitionTask) -> FleetProblem | None:
         specs.extended_prior,
         specs.eccentricity_prior,
         specs.channel_of,
+        plan.height_offset_prior,
     )
     return FleetProblem(
         platform_ids=tuple(platform_ids),
@@ -162,14 +157,17 @@ def partition_problem(task: PartitionTask) -> FleetProblem | None:
     )
 
 
-def archive_layout(source) -> StateLayout:
-    """The state layout of a source's sensors and platforms tables (as build_problem lays it out)."""
-    return archive_sensors(source)[0]
+def archive_layout(source, height_offset_prior: float | None = None) -> StateLayout:
+    """The state layout of a source's sensors and platforms tables (as build_problem lays it out),
+    with the flight levels' common height offset when ``height_offset_prior`` (m) is given
+    (:attr:`ArchivePlan.height_offset_prior`)."""
+    return archive_sensors(source, height_offset_prior)[0]
 
 
-def archive_sensors(source) -> tuple:
+def archive_sensors(source, height_offset_prior: float | None = None) -> tuple:
     """(layout, platform ids, sensor ids, each sensor's platform index) of a source's sensors and
-    platforms tables, as build_problem reads them."""
+    platforms tables, as build_problem reads them; the layout with the flight levels' common height
+    offset when ``height_offset_prior`` (m) is given (:attr:`ArchivePlan.height_offset_prior`)."""
     sensors_t = read_table("sensors", source.sensors, ("sensor", "platform"))
     platform_ids, platform_priors = read_platforms(source.platforms, sensors_t.ids("platform"))
     specs = read_sensors(sensors_t, platform_ids)
@@ -182,6 +180,7 @@ def archive_sensors(source) -> tuple:
         specs.extended_prior,
         specs.eccentricity_prior,
         specs.channel_of,
+        height_offset_prior,
     )
     return layout, tuple(platform_ids), tuple(specs.ids), specs.platform
 
