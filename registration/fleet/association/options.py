@@ -23,7 +23,11 @@ class AssociationOptions:
     position-fixing sensors' plots, the last one included. initial_sigma_attitude,
     initial_sigma_angle_bias (rad), initial_sigma_range_bias (m), initial_sigma_range_gain (1),
     initial_sigma_time_bias (s), initial_sigma_position (m per axis): the covariance of a state
-    without a finite prior before any data determine it. iteration_plots: the grouping passes before
+    without a finite prior before any data determine it. channel_sigma_range_bias (m),
+    channel_sigma_angle_bias (rad), channel_sigma_range_gain (1): how far a channel's (a radar's
+    primary-only plots, ``channel_of``) biases and range gain may differ from its radar's, the
+    covariance its states start with while none of its plots is joined
+    (:mod:`~registration.fleet.association.channels`). iteration_plots: the grouping passes before
     the last, and the solves between them, use every k-th window, k such that these hold about this
     many plots.
 
@@ -58,6 +62,9 @@ class AssociationOptions:
     initial_sigma_range_gain: float = 1.0e-3
     initial_sigma_time_bias: float = 1.0
     initial_sigma_position: float = 100.0
+    channel_sigma_range_bias: float = 300.0
+    channel_sigma_angle_bias: float = float(np.radians(0.5))
+    channel_sigma_range_gain: float = 1.0e-4
     iteration_plots: int = 20_000
     track_gap_s: float = 60.0
     jump_probability: float = 1.0e-6
@@ -83,6 +90,9 @@ class AssociationOptions:
             "initial_sigma_range_gain",
             "initial_sigma_time_bias",
             "initial_sigma_position",
+            "channel_sigma_range_bias",
+            "channel_sigma_angle_bias",
+            "channel_sigma_range_gain",
             "track_gap_s",
             "reference_gap_s",
             "reference_accel_sigma",
@@ -131,4 +141,13 @@ class AssociationOptions:
             **{f"position_{a}": self.initial_sigma_position for a in ("east", "north", "up")},
             "eccentricity_sin": self.initial_sigma_angle_bias,
             "eccentricity_cos": self.initial_sigma_angle_bias,
+        }
+
+    def channel_sigma(self) -> dict:
+        """The sigma of a channel's difference from its radar per quantity (rad, m, 1)."""
+        return {
+            "range_bias": self.channel_sigma_range_bias,
+            "bearing_bias": self.channel_sigma_angle_bias,
+            "elevation_bias": self.channel_sigma_angle_bias,
+            "range_gain": self.channel_sigma_range_gain,
         }

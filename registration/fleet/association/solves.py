@@ -6,7 +6,8 @@ A state the labelled plots do not determine yet (a passive sensor's biases befor
 tracks is joined, say) has no finite sigma in the batch's covariance, which leaves such directions
 out (a pseudo-inverse). The tests need its uncertainty, not zero: along the directions left out,
 the covariance gets the starting covariance ``P0`` (the tables' priors or the options' starting
-sigmas) projected on them (:func:`usable_covariance`).
+sigmas) projected on them (:func:`usable_covariance`); a channel without plots yet starts from its
+radar's states (:mod:`~registration.fleet.association.channels`).
 
 At scale, a solve between passes registers every k-th plot of each target and sensor (its first
 and last kept), about SOLVE_PLOTS plots (:func:`thin_labels`): its estimate only sets the next
@@ -22,6 +23,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from registration.fleet.association.channels import channel_start
 from registration.fleet.association.joining.windowfit import WindowFit, fit_windows
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.problems import labelled_problem
@@ -107,6 +109,7 @@ class Registrar:
             max_iterations=min(self.final_options.max_iterations, INTERMEDIATE_ITERATIONS),
         )
         self.margin_s = options.window_s
+        self.channel_sigma = options.channel_sigma()
         self.progress = progress
         self.x, self.P = np.zeros(problem.layout.n), P0.copy()
         self.problem_solved: FleetProblem | None = None
@@ -143,7 +146,13 @@ class Registrar:
         finally:
             self.seconds += time.perf_counter() - t0
         self.solves += 1
-        self.x, self.P = result.estimate.copy(), usable_covariance(result, self.P0)
+        self.x, self.P = channel_start(
+            result.estimate,
+            usable_covariance(result, self.P0),
+            problem.layout,
+            np.unique(problem.sensor),
+            self.channel_sigma,
+        )
         self.problem_solved, self.result = problem, result
         self.labels, self.thinned, self._fit = np.array(lab, dtype=object), few is not lab, None
         return result

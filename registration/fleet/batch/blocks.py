@@ -4,11 +4,11 @@ in each window a polynomial in time (docs/background/fleet-model.md, "Asynchrono
 Window ``b`` of target ``j`` spans ``[t0, t1]``; with ``tau = (t - centre) / half`` in [-1, 1] the
 position is ``p(t) = sum_k P_k(tau) c_bk`` (Legendre polynomials P_0..P_d, c_bk in ECEF m), so
 a window is a block of ``3 (d + 1)`` nuisance parameters: the small blocks that the Schur
-complement eliminates. A window whose plots fall at fewer than ``d + 1`` distinct instants gets
-the degree those instants can carry (the unused coefficients are masked; degrees 1 to 3 share
-the cubic's four coefficients, the higher ones masked). ``window_s = 0`` makes
-one block per distinct (target, time) with degree 0: the target position at every instant where
-it is measured (synchronous sensors).
+complement eliminates. A window whose plots and full reference positions fall at fewer than
+``d + 1`` distinct instants gets the degree those instants can carry (the unused coefficients
+are masked; degrees 1 to 3 share the cubic's four coefficients, the higher ones masked).
+``window_s = 0`` makes one block per distinct (target, time) with degree 0: the target position
+at every instant where it is measured (synchronous sensors).
 
 Plots are ordered by (block, sensor); a *group* is the plots of one sensor in one block. The
 coupling of a block with the registration states is held per group (a ``3 (d + 1) x w`` matrix
@@ -206,10 +206,15 @@ def _block_geometry(problem: FleetProblem, window_s: float, degree: int, span=No
     b_target = target[first]
     w = uniq - offset[b_target]
     centre = t0[b_target] + (w + 0.5) * length[b_target]
-    ticks = np.round(time / SAME_INSTANT_S).astype(np.int64)
-    order = np.lexsort((ticks, block))
-    first_of_instant = np.r_[True, (np.diff(block[order]) != 0) | (np.diff(ticks[order]) != 0)]
-    n_times = np.bincount(block[order][first_of_instant], minlength=uniq.size)
+    # the instants of the window's plots and of its full reference positions (a height alone
+    # fixes one axis only): a window whose plots miss scans but whose target reports its position
+    # every second keeps its cubic, else a constant over the window misfits those reports by km
+    full = (ref_block >= 0) & np.isfinite(problem.references.sigma)
+    b_all = np.r_[block, ref_block[full]]
+    ticks = np.round(np.r_[time, ref_time[full]] / SAME_INSTANT_S).astype(np.int64)
+    order = np.lexsort((ticks, b_all))
+    first_of_instant = np.r_[True, (np.diff(b_all[order]) != 0) | (np.diff(ticks[order]) != 0)]
+    n_times = np.bincount(b_all[order][first_of_instant], minlength=uniq.size)
     return block, ref_block, b_target, centre, 0.5 * length[b_target], np.minimum(degree, n_times - 1)
 
 

@@ -111,7 +111,8 @@ class StateLayout:
     sensor's range gain, time bias and east, north, up position errors, -1 where not modelled.
     ``prior_sigma`` (n,): 0 = fixed, inf = no prior. ``eccentricity_index`` (S, 2): the index of
     each sensor's eccentricity terms (sin, cos), -1 where not modelled (None: no sensor has one).
-    A channel's shared slots hold its sensor's indices (module docstring).
+    A channel's shared slots hold its sensor's indices (module docstring); ``channel_of`` (S,) the
+    sensor each sensor is a channel of (-1: none; None: no sensor is a channel).
     """
 
     names: tuple[str, ...]
@@ -126,6 +127,8 @@ class StateLayout:
     eccentricity_index: np.ndarray | None = None
     # the index of the flight levels' common height offset (HEIGHT_OFFSET_OBJECT), -1: not modelled
     height_offset_index: int = -1
+    # (S,) the sensor each sensor is a channel of (-1: none; None: no sensor is a channel)
+    channel_of: np.ndarray | None = None
 
     @property
     def n(self) -> int:
@@ -214,7 +217,9 @@ class _States:
         self.prior.append(sigma)
         return len(self.names) - 1
 
-    def layout(self, att_index, bias_index, extended_index, ecc_index, offset_index: int) -> StateLayout:
+    def layout(
+        self, att_index, bias_index, extended_index, ecc_index, offset_index: int, channel_of=None
+    ) -> StateLayout:
         return StateLayout(
             tuple(self.names),
             tuple(self.labels),
@@ -227,6 +232,7 @@ class _States:
             extended_index,
             ecc_index,
             offset_index,
+            channel_of,
         )
 
 
@@ -295,7 +301,9 @@ def make_layout(
         offset_index = add("", HEIGHT_OFFSET_OBJECT, "height_offset", "", "m", height_offset_prior)
         states.labels[-1] = "common height offset of the flight levels"
     ecc = ecc_index if (ecc_index >= 0).any() else None
-    return states.layout(att_index, bias_index, extended_index, ecc, offset_index)
+    return states.layout(
+        att_index, bias_index, extended_index, ecc, offset_index, parent if (parent >= 0).any() else None
+    )
 
 
 def with_height_offset(layout: StateLayout, prior: float | None) -> StateLayout:
@@ -315,4 +323,5 @@ def with_height_offset(layout: StateLayout, prior: float | None) -> StateLayout:
         layout.extended_index,
         layout.eccentricity_index,
         layout.n,
+        layout.channel_of,
     )

@@ -180,16 +180,34 @@ def diagnose(problem, result, kind_by_row: np.ndarray | None = None) -> Diagnost
 _TERMS = {"eccentricity": "the eccentricity", "range_gain": "the range gain", "step": "the bias step"}
 
 
+#: The terms of azimuth or range that a step test over time can see, and that can see a step
+#: (``_annotated``).
+_AZIMUTH_RANGE_TERMS = ("eccentricity", "range_gain")
+
+
 def _annotated(findings: list[Candidate]) -> list[Candidate]:
     """Findings of a plot kind or a target in a channel where the same sensor has an eccentricity,
     range gain or step finding, their hints completed: the unmodelled term also bends the targets'
     fitted tracks, which the group tests then see (the tests use the residuals net of the fitted term,
-    not of its effect on the tracks)."""
-    terms = {(f.sensor, f.channel): f.test for f in findings if f.test in _TERMS}
+    not of its effect on the tracks). Likewise a step beside a larger eccentricity or range gain
+    finding of the same sensor and channel, and an eccentricity or range gain beside a larger step:
+    as the traffic moves in azimuth and range, an unmodelled term of azimuth or range changes the
+    residuals' mean over time, and a step changes their mean over the azimuths and ranges the
+    traffic held before and after it. The term named is the sensor's largest (findings come largest
+    |z| first)."""
+    terms: dict = {}
+    for f in findings:
+        if f.test in _TERMS:
+            terms.setdefault((f.sensor, f.channel), f.test)
     out = []
     for f in findings:
         term = terms.get((f.sensor, f.channel))
-        if f.test in ("kind", "target") and term is not None:
+        follows = (
+            f.test in ("kind", "target")
+            or (f.test == "step" and term in _AZIMUTH_RANGE_TERMS)
+            or (f.test in _AZIMUTH_RANGE_TERMS and term == "step")
+        )
+        if follows and term is not None and term != f.test:
             f = replace(f, hint=f"{f.hint} (or a consequence of {_TERMS[term]} above)")
         out.append(f)
     return out

@@ -124,7 +124,10 @@ def _mark_unseen(problem: FleetProblem, result: BatchResult) -> BatchResult:
     sensors = np.unique(problem.sensor)
     platforms = np.unique(problem.sensor_platform[sensors])
     seen = np.zeros(layout.n, dtype=bool)
-    for index in (layout.att_index[platforms], layout.bias_index[sensors], layout.extended_index[sensors]):
+    indices = [layout.att_index[platforms], layout.bias_index[sensors], layout.extended_index[sensors]]
+    if layout.eccentricity_index is not None:  # the azimuth eccentricity's terms too
+        indices.append(layout.eccentricity_index[sensors])
+    for index in indices:
         i = index.ravel()
         seen[i[i >= 0]] = True
     offset = problem.references.offset

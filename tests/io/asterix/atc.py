@@ -16,12 +16,13 @@ from __future__ import annotations
 
 import datetime as dt
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
+from tests.io.asterix.atc_model import RadarModel, apply_model
 from tests.io.asterix.encode import (
     cat021_record,
     cat034_record,
@@ -30,7 +31,7 @@ from tests.io.asterix.encode import (
     service_messages,
 )
 
-__all__ = ["AtcTruth", "atc_truth", "encode_atc", "CENTRE_DEG", "RADAR_LAYOUT"]
+__all__ = ["AtcTruth", "RadarModel", "atc_truth", "encode_atc", "CENTRE_DEG", "RADAR_LAYOUT"]
 
 CENTRE_DEG = (45.0, 5.0)
 #: name -> (sac, sic, east m, north m, antenna height m, scan period s, sigma range m, sigma bearing deg)
@@ -50,7 +51,8 @@ GEOID_M = 48.0
 @dataclass
 class AtcTruth:
     """The arrays :func:`encode_atc` takes, the SITES table, the scans, and the true errors
-    (``truth``: 'R1:range_bias' m, 'R1:bearing_bias' rad, 'R1:range_gain', 'R1:time_bias' s, ...)."""
+    (``truth``: 'R1:range_bias' m, 'R1:bearing_bias' rad, 'R1:range_gain', 'R1:time_bias' s, ...,
+    at the start; ``steps``: state -> (time s as stamped, size SI) of a state that steps)."""
 
     plots: dict
     adsb: dict
@@ -58,6 +60,18 @@ class AtcTruth:
     scans: dict
     truth: dict
     date: dt.date
+    steps: dict = field(default_factory=dict)
+
+    def truth_in(self, name: str, start_s: float, end_s: float) -> float:
+        """The true value (SI) of state ``name`` over ``[start_s, end_s)`` (stamped time); NaN when
+        it steps inside the span."""
+        value = self.truth[name]
+        if name in self.steps:
+            t, size = self.steps[name]
+            if start_s < t < end_s:
+                return float("nan")
+            value += size if start_s >= t else 0.0
+        return value
 
 
 def encode_atc(plots: dict, adsb: dict, sites: pd.DataFrame, date: dt.date, scans: dict | None = None):
@@ -173,7 +187,7 @@ def _aircraft(rng, n: int, duration: float):
 
 
 def _radar_plots(name, p_site, R_enu_site, track, t0, duration, errors, rng) -> list:
-    """Per (aircraft, scan): (stamped time, range, bearing) measured by radar ``name``."""
+    """Per (aircraft, scan): (aircraft, stamped time, range, bearing, true bearing) of radar ``name``."""
     _, _, _, _, _, period, sr, sb = RADAR_LAYOUT[name]
     phase = errors["phase"]
     out = []
@@ -192,7 +206,7 @@ def _radar_plots(name, p_site, R_enu_site, track, t0, duration, errors, rng) -> 
             meas_r = (1 + errors["range_gain"]) * r + errors["range_bias"] + rng.normal(0, sr)
             meas_b = (bearing + np.degrees(errors["bearing_bias"]) + rng.normal(0, sb)) % 360.0
             if r < 250e3:
-                out.append((j, t + errors["time_bias"], meas_r, meas_b))
+                out.append((j, t + errors["time_bias"], meas_r, meas_b, bearing))
     return out
 
 
@@ -205,19 +219,26 @@ def atc_truth(
     errors_seed: int | None = None,
     flight_levels: tuple[float, float] | None = None,
     overfly: tuple[str, float, float] | None = None,
+    model: RadarModel | None = None,
+    mix: tuple[int, int, int] = (12, 14, 17),
+    adsb_period_s: float = 1.0,
 ) -> AtcTruth:
     """A simulated scenario; aircraft 0-13 are Mode S (0-11 with ADS-B at 1 Hz, NACp 8-10), 14-16
-    Mode A/C only, the rest primary only. Errors of random sign: range bias 80-200 m, gain 200-600
-    ppm, azimuth bias 0.15-0.4 deg, clock offset 0.3-1.0 s, drawn from ``seed`` or, when given,
-    from ``errors_seed`` (the same radars' errors under other traffic). ``flight_levels``
-    (temperature offset K, QNH Pa): the Mode S and Mode A/C plots carry I048/090 and the ADS-B
-    reports I021/145, the pressure altitude of the aircraft's height above mean sea level
-    (:data:`GEOID_M` below its ellipsoid height) in that atmosphere (registration.core.atmosphere),
-    in 25 ft steps (Mode S, ADS-B) or 100 ft (Mode A/C); the plots' ``true_height_m`` then holds the
-    aircraft's ellipsoid height where each plot saw it. ``overfly`` (radar, miss m, height m): the first
-    Mode A/C aircraft (14) passes that radar at the middle of the recording, ``miss`` from it
-    horizontally, at that height (ENU up of the scenario's centre) with its drawn speed, heading and
-    climb rate (nothing else changes: the same draws)."""
+    Mode A/C only, the rest primary only (``mix``: the first aircraft without ADS-B, without Mode S,
+    without transponder; ``adsb_period_s``: the ADS-B reports' interval). Errors of random sign:
+    range bias 80-200 m, gain 200-600 ppm, azimuth bias 0.15-0.4 deg, clock offset 0.3-1.0 s, drawn
+    from ``seed`` or, when given, from ``errors_seed`` (the same radars' errors under other
+    traffic). ``flight_levels`` (temperature offset K, QNH Pa): the Mode S and Mode A/C plots carry
+    I048/090 and the ADS-B reports I021/145, the pressure altitude of the aircraft's height above
+    mean sea level (:data:`GEOID_M` below its ellipsoid height) in that atmosphere
+    (registration.core.atmosphere), in 25 ft steps (Mode S, ADS-B) or 100 ft (Mode A/C); the plots'
+    ``true_height_m`` then holds the aircraft's ellipsoid height where each plot saw it. ``overfly``
+    (radar, miss m, height m): the first Mode A/C aircraft (14) passes that radar at the middle of
+    the recording, ``miss`` from it horizontally, at that height (ENU up of the scenario's centre)
+    with its drawn speed, heading and climb rate (nothing else changes: the same draws). ``model``:
+    the further terms of tests/io/asterix/atc_model.py (PSR channels' biases, missed SSR replies,
+    eccentricity, a bias step), drawn from generators of their own: without it the scenario is as it
+    was."""
     from registration.core.frames import enu2ecef_rotation
 
     rng = np.random.default_rng(seed)
@@ -246,8 +267,10 @@ def atc_truth(
             {f"{name}:{k}": errors[k] for k in ("range_bias", "range_gain", "bearing_bias", "time_bias")}
         )
         R_site = enu2ecef_rotation(np.radians(site.lat_deg), np.radians(site.lon_deg))[0]
-        for j, t, r, b in _radar_plots(name, site_ecef[name], R_site, tracks, t0, duration_s, errors, rng):
-            plots.append((t, name, r, b, j))
+        for j, t, r, b, b_true in _radar_plots(
+            name, site_ecef[name], R_site, tracks, t0, duration_s, errors, rng
+        ):
+            plots.append((t, name, r, b, j, b_true))
         period = RADAR_LAYOUT[name][5]
         scans[name] = (
             t0 + errors["phase"] + errors["time_bias"],
@@ -256,7 +279,7 @@ def atc_truth(
             t0 + duration_s + errors["time_bias"],
         )
     j = np.array([p[4] for p in plots])
-    kind = np.where(j < 14, "mode_s", np.where(j < 17, "mode_a", "primary"))
+    kind = np.where(j < mix[1], "mode_s", np.where(j < mix[2], "mode_a", "primary"))
     address = 0x400000 + 0x1234 * j
     plot_arrays = {
         "time_s": np.array([p[0] for p in plots]),
@@ -268,7 +291,14 @@ def atc_truth(
         "mode_a": np.where(kind == "mode_a", 0o4000 + 0o11 * j, -1),
         "aircraft": j,
     }
-    adsb = _adsb(rng, tracks, start, t0, duration_s)
+    steps = {}
+    if model is not None:
+        true_bearing = np.array([p[5] for p in plots])
+        steps = apply_model(
+            plot_arrays, true_bearing, truth, model, seed, seed if errors_seed is None else errors_seed
+        )
+        kind = plot_arrays["kind"]
+    adsb = _adsb(rng, tracks, t0, duration_s, mix[0], adsb_period_s)
     if flight_levels is not None:
         seen = plot_arrays["time_s"] - np.array([truth[f"{r}:time_bias"] for r in plot_arrays["radar"]])
         height = np.array([_to_geodetic(tracks[a](t))[2][0] for a, t in zip(j, seen)])
@@ -277,7 +307,7 @@ def atc_truth(
         plot_arrays["fl_raw"] = np.where(kind == "primary", NO_FL, raw)
         plot_arrays["true_height_m"] = height  # ellipsoid height where the plot saw it (not encoded)
         adsb["fl_raw"] = _fl_raw(adsb["true_height_m"], flight_levels, 1)
-    return AtcTruth(plot_arrays, adsb, sites, scans, truth, date)
+    return AtcTruth(plot_arrays, adsb, sites, scans, truth, date, steps)
 
 
 def _fl_raw(height_m: np.ndarray, flight_levels: tuple[float, float], step: int) -> np.ndarray:
@@ -288,13 +318,13 @@ def _fl_raw(height_m: np.ndarray, flight_levels: tuple[float, float], step: int)
     return (np.round(hp / (_FT * 25.0) / step) * step).astype(np.int64)
 
 
-def _adsb(rng, tracks, start, t0: float, duration_s: float) -> dict:
+def _adsb(rng, tracks, t0: float, duration_s: float, n: int, period_s: float) -> dict:
     rows = []
     nacp_of = {8: 92.6, 9: 30.0, 10: 10.0}
-    for j in range(12):
+    for j in range(n):
         nacp = int(rng.choice([8, 9, 10]))
         sigma_h = nacp_of[nacp] / 2.4477
-        for t in np.arange(t0 + rng.uniform(0, 1), t0 + duration_s, 1.0):
+        for t in np.arange(t0 + rng.uniform(0, 1), t0 + duration_s, period_s):
             p = tracks[j](t)
             lat, lon, h = _to_geodetic(p)
             north, east = rng.normal(0, sigma_h, 2)

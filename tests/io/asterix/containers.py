@@ -4,9 +4,10 @@ reader must skip and count."""
 
 from __future__ import annotations
 
+import datetime as dt
 import struct
 
-__all__ = ["udp_frame", "arp_frame", "tcp_frame", "pcap_bytes", "pcapng_bytes", "ASTERIX_PORT"]
+__all__ = ["udp_frame", "arp_frame", "tcp_frame", "pcap_bytes", "pcapng_bytes", "two_lans", "ASTERIX_PORT"]
 
 ASTERIX_PORT = 8600
 _MACS = bytes.fromhex("01005e000001") + bytes.fromhex("020000000001")
@@ -91,3 +92,17 @@ def pcapng_bytes(frames: list[bytes], times: list[float], nanosecond: bool = Tru
             arp = arp_frame()
             out.append(_block(3, struct.pack("<I", len(arp)) + arp))
     return b"".join(out)
+
+
+def two_lans(recording) -> bytes:
+    """A pcap of every datagram of ``recording`` (:class:`~tests.io.asterix.encode.Recording`) twice,
+    on UDP ports 8600 (LAN A) and 8601 (LAN B, 0.4 ms later), as a dual feed records it."""
+    midnight = dt.datetime.combine(recording.date, dt.time(), dt.timezone.utc).timestamp()
+    frames, times = [], []
+    for k, group in enumerate(recording.datagrams):
+        payload = b"".join(recording.blocks[i] for i in group)
+        t = midnight + max(recording.times[i] for i in group) + 0.01
+        for port, lag in ((8600, 0.0), (8601, 0.0004)):
+            frames.append(udp_frame(payload, dport=port, ident=k))
+            times.append(t + lag)
+    return pcap_bytes(frames, times)

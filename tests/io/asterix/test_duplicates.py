@@ -6,31 +6,16 @@ The recordings are encoded by libasterix (tests/io/asterix/encode.py)."""
 
 from __future__ import annotations
 
-import datetime as dt
-
 import pandas as pd
 import pytest
 
 from registration.cli import main
 from registration.io.asterix import import_asterix
-from tests.io.asterix.containers import pcap_bytes, udp_frame
+from tests.io.asterix.containers import two_lans as _two_lans
 
 
 def _records(result) -> int:
     return sum(sum(f["records"].values()) for f in result.summary["files"])
-
-
-def _two_lans(recording) -> bytes:
-    """Every datagram of ``recording`` twice, on UDP ports 8600 (LAN A) and 8601 (LAN B)."""
-    midnight = dt.datetime.combine(recording.date, dt.time(), dt.timezone.utc).timestamp()
-    frames, times = [], []
-    for k, group in enumerate(recording.datagrams):
-        payload = b"".join(recording.blocks[i] for i in group)
-        t = midnight + max(recording.times[i] for i in group) + 0.01
-        for port, lag in ((8600, 0.0), (8601, 0.0004)):
-            frames.append(udp_frame(payload, dport=port, ident=k))
-            times.append(t + lag)
-    return pcap_bytes(frames, times)
 
 
 @pytest.fixture(scope="module")

@@ -8,7 +8,8 @@ every anchor whose span holds it (:func:`~registration.fleet.association.joining
 with one plot), under the estimate and its covariance. It is joined when it passes its gate and its
 chi-square tail probability is at least ``ambiguity_ratio`` times that of any other target, and
 when its sensor has no other plot of that target in the same scan. Sensors without any registered
-plot yet are left out (their errors are still unknown).
+plot yet are left out (their errors are still unknown), except a radar's channel when the radar
+has registered plots: its errors start from the radar's (association/channels.py).
 """
 
 from __future__ import annotations
@@ -58,6 +59,9 @@ def join_single_plots(
     problem = reg.problem
     out = np.full(problem.n_plots, "", dtype=object)
     registered = np.bincount(problem.sensor[labels != ""], minlength=len(problem.sensor_ids)) > 0
+    parent = problem.layout.channel_of
+    if parent is not None:  # a channel's states start from its radar's (association/channels.py)
+        registered |= (parent >= 0) & registered[np.maximum(parent, 0)]
     free = free & registered[problem.sensor]
     if not free.any() or curves.n_targets == 0:
         return out
