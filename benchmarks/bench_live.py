@@ -257,37 +257,54 @@ def main(argv=None) -> None:
     ap.add_argument("--ingest-hours", type=float, default=2.0, help="hours sent at full speed (default 2)")
     ap.add_argument("--cache", type=Path, help="keep the day's hourly recordings here and reuse them")
     ap.add_argument("--seeds", type=int, default=3, help="held-out seeds against the batch run (default 3)")
+    ap.add_argument(
+        "--parts",
+        default="ingest,lag,memory,batch",
+        help="which parts to run, comma separated (default all: ingest,lag,memory,batch)",
+    )
     add_arguments(ap)
     args = ap.parse_args(argv)
     if args.tiny:
         args.hours, args.seeds, args.ingest_hours, args.memory_speed = 0.02, 1, 0.05, 400.0
+    parts = set(args.parts.split(","))
+    unknown = parts - {"ingest", "lag", "memory", "batch"}
+    if unknown:
+        ap.error(f"--parts: unknown {sorted(unknown)}")
+    flow = lag = mem = batch = None
+    seeds = list(range(101, 101 + args.seeds))
     with tempfile.TemporaryDirectory() as temp:
         folder = Path(temp)
-        flow = ingest(folder, args.ingest_hours)
-        print(
-            f"ingest at full speed: {flow['datagrams_received']} of {flow['datagrams_sent']} datagrams "
-            f"received; imported at {flow['plots_per_s']:.0f} plots/s ({flow['datagrams_per_s']:.0f} "
-            f"datagrams/s), estimated at {flow['estimated_plots_per_s']:.0f} plots/s; SIGTERM took "
-            f"{flow['sigterm_s']:.1f} s; the replay: {' '.join(flow['replay'])}"
-        )
-        lag = lag_at_20x(300.0 if args.tiny else 20.0)
-        print(
-            f"lag at 20x: median {lag['median_s']:.2f} s, max {lag['max_s']:.2f} s of wall time "
-            f"({lag['polls']} polls)"
-        )
-        mem = memory(folder, args.hours, args.memory_speed, args.cache)
-        rss = ", ".join(
-            f"{h} h {v / 2**20:.0f} MiB" if v else f"{h} h -" for h, v in mem["rss_bytes_at_data_h"].items()
-        )
-        print(
-            f"resident memory at data time {rss} ({mem['plots']} of {mem['plots_sent']} plots at "
-            f"{mem['speed']:g}x; {mem['late_plots']} late, {mem['alarms']} alarms)"
-        )
-        seeds = list(range(101, 101 + args.seeds))
-        print("live against fleet register (held-out simulations):")
-        batch = against_batch(folder, seeds, 60.0 if args.tiny else 900.0)
+        if "ingest" in parts:
+            flow = ingest(folder, args.ingest_hours)
+            print(
+                f"ingest at full speed: {flow['datagrams_received']} of {flow['datagrams_sent']} datagrams "
+                f"received; imported at {flow['plots_per_s']:.0f} plots/s ({flow['datagrams_per_s']:.0f} "
+                f"datagrams/s), estimated at {flow['estimated_plots_per_s']:.0f} plots/s; SIGTERM took "
+                f"{flow['sigterm_s']:.1f} s; the replay: {' '.join(flow['replay'])}"
+            )
+        if "lag" in parts:
+            lag = lag_at_20x(300.0 if args.tiny else 20.0)
+            print(
+                f"lag at 20x: median {lag['median_s']:.2f} s, max {lag['max_s']:.2f} s of wall time "
+                f"({lag['polls']} polls)"
+            )
+        if "memory" in parts:
+            mem = memory(folder, args.hours, args.memory_speed, args.cache)
+            rss = ", ".join(
+                f"{h} h {v / 2**20:.0f} MiB" if v else f"{h} h -"
+                for h, v in mem["rss_bytes_at_data_h"].items()
+            )
+            print(
+                f"resident memory at data time {rss} ({mem['plots']} of {mem['plots_sent']} plots at "
+                f"{mem['speed']:g}x; {mem['late_plots']} late, {mem['alarms']} alarms)"
+            )
+        if "batch" in parts:
+            print("live against fleet register (held-out simulations):")
+            batch = against_batch(folder, seeds, 60.0 if args.tiny else 900.0)
     figures = {"ingest": flow, "lag_at_20x": lag, "memory": mem, "against_batch": batch}
+    figures = {k: v for k, v in figures.items() if v is not None}
     sizes = {"hours": args.hours, "memory_speed": args.memory_speed, "ingest_hours": args.ingest_hours}
+    sizes["parts"] = sorted(parts)
     write("live", args, {**sizes, "seeds": seeds}, figures)
 
 

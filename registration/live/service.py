@@ -47,6 +47,9 @@ ESTIMATE_BUDGET_S = 0.5
 SNAPSHOT_S = 0.25
 #: A round imports at most this many datagrams (the rest wait for the next rounds).
 ROUND_DATAGRAMS = 20000
+#: With at least this many datagrams waiting (a burst: a live feed brings tens a second), a round
+#: imports and does not estimate; the estimator catches up once the inputs are drained.
+HURRY_DATAGRAMS = 1000
 #: The estimator takes a round's plots in pieces of about this many.
 CHUNK_PLOTS = 500
 #: Receive buffer asked for each input socket (octets).
@@ -253,12 +256,18 @@ class Service:
                 self.backlog.extend(split_batch(merged, CHUNK_PLOTS))
         # Datagrams pile up: import them first, and estimate once they are (one epoch of the
         # estimator can take longer than a budget, so even a small one would slow the import).
-        hurry = self.receiver.waiting() >= ROUND_DATAGRAMS
+        hurry = self.receiver.waiting() >= HURRY_DATAGRAMS
         now = time.monotonic()
         deadline = now if hurry else now + ESTIMATE_BUDGET_S
+        if items and self.backlog and deadline > now:  # the import's counters published before
+            self._publish(force=True)  # the estimator takes its time (an epoch can take a second)
         while self.backlog and not self.stop.is_set() and time.monotonic() < deadline:
             self.estimator.feed(self.backlog.popleft())
-        if now >= self._next_snapshot:
+        self._publish()
+
+    def _publish(self, force: bool = False) -> None:
+        """Build the answers again (every ``SNAPSHOT_S`` at most, unless ``force``)."""
+        if force or time.monotonic() >= self._next_snapshot:
             self._snapshot = self._build()
             self._next_snapshot = time.monotonic() + SNAPSHOT_S
 
