@@ -305,7 +305,8 @@ def main(argv=None) -> None:
     figures = {k: v for k, v in figures.items() if v is not None}
     sizes = {"hours": args.hours, "memory_speed": args.memory_speed, "ingest_hours": args.ingest_hours}
     sizes["parts"] = sorted(parts)
-    write("live", args, {**sizes, "seeds": seeds}, figures)
+    name = "live" if len(parts) == 4 else "live_" + "_".join(sorted(parts))  # a part: its own results file
+    write(name, args, {**sizes, "seeds": seeds}, figures)
 
 
 if __name__ == "__main__":
