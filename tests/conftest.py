@@ -53,3 +53,30 @@ def sample_inputs(spec, n: int, rng: np.random.Generator) -> list[np.ndarray]:
 @pytest.fixture(scope="session")
 def specs():
     return all_specs()
+
+
+#: The files that take longest on one test process (20 s to over a minute each), run first: the two
+#: processes take files one at a time, so a long file taken last leaves the other process idle.
+LONGEST_FIRST = (
+    "tests/benchmarks/test_benchmarks_tiny_slow.py",
+    "tests/benchmarks/test_benchmarks_tiny.py",
+    "tests/live/test_serve_nmea.py",
+    "tests/test_lint.py",
+    "tests/fleet/test_archive_spill.py",
+    "tests/fleet/test_fuzz_tables.py",
+    "tests/io/asterix/test_fuzz.py",
+    "tests/fleet/test_archive_flight_levels.py",
+    "tests/io/asterix/test_flight_levels.py",
+    "tests/codegen/test_freshness.py",
+    "tests/fleet/test_extended_montecarlo.py",
+    "tests/live/test_serve_both.py",
+    "tests/cli/test_fleet.py",
+    "tests/live/test_estimator.py",
+)
+
+
+def pytest_collection_modifyitems(session, config, items) -> None:
+    rank = {name: k for k, name in enumerate(LONGEST_FIRST)}
+    items.sort(
+        key=lambda item: rank.get(item.nodeid.split("::")[0], len(rank))
+    )  # stable: the rest keeps its order
