@@ -17,6 +17,7 @@ import numpy as np
 
 from registration.live.inputs.asterix import StreamBatch
 from registration.live.inputs.nmea import NmeaStream
+from registration.live.inputs.rows import concat_rows
 from registration.live.inputs.tracks import TrackLabels
 
 __all__ = ["Bridge", "HOLD_S", "STARTUP_S"]
@@ -28,11 +29,6 @@ HOLD_S = 60.0
 #: Seconds of wall time the other inputs wait, at the start, for the ship's first lines (a feed that
 #: starts later loses its plots of the epochs processed meanwhile: they are late).
 STARTUP_S = 10.0
-
-
-def _cat(parts: list) -> dict | None:
-    parts = [p for p in parts if p is not None]
-    return {k: np.concatenate([p[k] for p in parts]) for k in parts[0]} if parts else None
 
 
 class Bridge:
@@ -99,7 +95,7 @@ class Bridge:
             if batch.navigation is not None:
                 self._nav_end = max(self._nav_end, float(batch.navigation["time"].max()))
             if batch.plots is not None:
-                self._queue = _cat([self._queue, batch.plots])
+                self._queue = concat_rows([self._queue, batch.plots])
             while self.labels.due():  # every run of the grid the piece passed, in order
                 at = self.labels.next_time
                 self.labels.run()
@@ -115,7 +111,7 @@ class Bridge:
                 self.labels.run(final=True)
             self._cut = max(self._cut, self._nav_end)
             out.append(self._release(None if force else self._queue_due(self._nav_end)))
-        plots = _cat(out)
+        plots = concat_rows(out)
         return None if plots is None else StreamBatch(plots, None, {})
 
     def _queue_due(self, cut: float) -> np.ndarray | None:

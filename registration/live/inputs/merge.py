@@ -16,22 +16,9 @@ from __future__ import annotations
 import numpy as np
 
 from registration.live.inputs.asterix import StreamBatch
+from registration.live.inputs.rows import concat_rows
 
 __all__ = ["TimeMerge"]
-
-
-def _cat(tables: list[dict | None]) -> dict | None:
-    """The rows of ``tables`` (columns a table lacks: NaN, or '' for text) in one table."""
-    kept: list[dict] = [t for t in tables if t is not None and t["time"].size]
-    if not kept:
-        return None
-    keys = list(dict.fromkeys(k for t in kept for k in t))
-    out = {}
-    for k in keys:
-        text = any(t[k].dtype.kind in "US" for t in kept if k in t)
-        fill = "" if text else np.nan
-        out[k] = np.concatenate([t[k] if k in t else np.full(t["time"].size, fill) for t in kept])
-    return out
 
 
 def _split(table: dict, keep: np.ndarray) -> tuple[dict | None, dict | None]:
@@ -57,7 +44,7 @@ class TimeMerge:
 
     def add(self, batch: StreamBatch) -> None:
         """Hold a radar batch's plots; keep its references for the next release."""
-        self._held = _cat([self._held, batch.plots])
+        self._held = concat_rows([self._held, batch.plots])
         if batch.references is not None and batch.references["time"].size:
             self._references.append(batch.references)
 
@@ -67,8 +54,8 @@ class TimeMerge:
         radar = None
         if self._held is not None:
             radar, self._held = _split(self._held, self._held["time"] <= horizon)
-        plots = _cat([radar, None if ship is None else ship.plots])
-        references = _cat([*self._references, None if ship is None else ship.references])
+        plots = concat_rows([radar, None if ship is None else ship.plots])
+        references = concat_rows([*self._references, None if ship is None else ship.references])
         self._references = []
         if plots is None and references is None:
             return None

@@ -18,6 +18,8 @@ from collections import Counter
 
 import numpy as np
 
+from registration.live.inputs.rows import concat_rows
+
 __all__ = ["TrackLabels", "WINDOW_S", "EVERY_S", "MIN_SHARE", "MIN_PLOTS"]
 
 #: Seconds of data the association looks at.
@@ -29,13 +31,6 @@ MIN_SHARE = 0.8
 #: A track with at least this many plots in the window and no label loses the one it had.
 MIN_PLOTS = 5
 _NAV = ("time", "platform", "lat", "lon", "alt", "heading", "pitch", "roll")
-
-
-def _cat(parts: list[dict | None]) -> dict | None:
-    kept: list[dict] = [p for p in parts if p is not None and p["time"].size]
-    if not kept:
-        return None
-    return {k: np.concatenate([p[k] for p in kept]) for k in kept[0]}
 
 
 def _since(table: dict | None, t0: float) -> dict | None:
@@ -67,11 +62,13 @@ class TrackLabels:
 
     def add(self, plots, navigation, references, targets) -> None:
         """A piece's tables (SI; None where empty): kept for the last ``span_s`` seconds."""
-        self._plots = _cat([self._plots, plots])
-        self._nav = _cat([self._nav, navigation])
-        self._refs = _cat([self._refs, references])
+        self._plots = concat_rows([self._plots, plots])
+        self._nav = concat_rows([self._nav, navigation])
+        self._refs = concat_rows([self._refs, references])
         if targets is not None:
-            self._targets = _cat([self._targets, {**targets, "time": np.zeros(len(targets["target"]))}])
+            self._targets = concat_rows(
+                [self._targets, {**targets, "time": np.zeros(len(targets["target"]))}]
+            )
         if self._plots is None:
             return
         if self._next is None:  # the first run: a grid of data time from the first plot
