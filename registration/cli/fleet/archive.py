@@ -57,8 +57,8 @@ def add_archive_arguments(p: argparse.ArgumentParser) -> None:
         metavar="S",
         help="solve partition by partition, S seconds of target windows each (memory bounded by a "
         "partition; default: chosen from --memory-limit: in memory when the tables fit, else "
-        "partitions whose length follows from the plot rate); the plots need their target ids "
-        "(plots without ids are associated in memory)",
+        "partitions whose length follows from the plot rate); plots without target ids are "
+        "associated partition by partition first",
     )
     g.add_argument(
         "--memory-limit",
@@ -129,6 +129,7 @@ def _summary(result, args: argparse.Namespace) -> dict:
         "warnings": list(result.warnings),
         "workers": args.workers,
         "scheduler": args.scheduler,
+        "association": getattr(args, "association_summary", None),
     }
 
 
@@ -186,12 +187,15 @@ def _solve_and_write(args: argparse.Namespace, out: Path, source) -> tuple:
 
 
 def _solve_in(args: argparse.Namespace, out: Path, source, work: str) -> tuple:
+    from registration.cli.fleet.archive_association import associated_source
     from registration.core.parallel import dask_client
     from registration.fleet import BatchOptions
     from registration.fleet.batch.partitioned import remove_spill, solve_batch_partitioned
 
     options = BatchOptions(window_s=args.window_s)
     with dask_client(args.scheduler, args.workers) as client:
+        source, association = associated_source(args, source, work, client)
+        args.association_summary = None if association is None else association.summary()
         result = solve_batch_partitioned(
             source,
             options,

@@ -7,7 +7,8 @@ estimated (:func:`registration.fleet.batch.partitioned.sizing.in_memory_bytes`).
 (default: a quarter of this machine's memory) the run takes the archive path, and the partition
 length is chosen from the plot rate so that the busiest partition fits
 (:func:`~registration.fleet.batch.partitioned.sizing.choose_partition_s`); the run says what it
-chose. A run that cannot take the archive path (plots without target ids, ``--on-bad-row skip``,
+chose (plots without target ids are associated by partitions too). A run that cannot take the
+archive path (``--on-bad-row skip``,
 ``--method online``, ...) is registered in memory all the same, with a warning. A limit below what
 one partition needs (the chosen length, or ``--partition-s``) stops the run with exit 2 before
 the solve, naming the smallest limit that works.
@@ -70,12 +71,10 @@ def _size(n: float) -> str:
     return f"{n / (1 << 30):.1f} GiB" if n >= 1 << 30 else f"{n / (1 << 20):.0f} MiB"
 
 
-def _in_memory_only(args: argparse.Namespace, ids: bool) -> str | None:
+def _in_memory_only(args: argparse.Namespace) -> str | None:
     """Why the run cannot take the archive path (None: it can)."""
     from registration.io.fleet.folder import TABLE_NAMES
 
-    if not ids:
-        return "the plots lack target ids (they are associated in memory)"
     reasons = (
         (getattr(args, "on_bad_row", "stop") != "stop", "--on-bad-row skip"),
         (getattr(args, "method", "batch") != "batch", "--method online"),
@@ -97,13 +96,13 @@ def too_large(args: argparse.Namespace) -> bool:
     from registration.io.fleet.sources import plot_count
 
     try:
-        rows, ids = plot_count(args.tables)
+        rows, _ = plot_count(args.tables)
     except ValueError:  # a folder or file the reader will name with its own error
         return False
     need, limit = in_memory_bytes(rows), memory_limit(args)
     if need <= limit:
         return False
-    why = _in_memory_only(args, ids)
+    why = _in_memory_only(args)
     head = f"{rows} plots need about {_size(need)} in memory, above the memory limit of {_size(limit)}"
     if why is not None:
         print(f"warning: {head}; registering in memory all the same: {why}", file=sys.stderr)

@@ -262,7 +262,7 @@ class ParquetSource:
             table = table.drop_columns([ROW_COLUMN])
         return {c: table.column(c).to_numpy(zero_copy_only=False) for c in table.column_names}
 
-    def _time_range(self, name: str, lo: float, hi: float) -> dict:
+    def _time_range(self, name: str, lo: float, hi: float, convert: bool = True) -> dict:
         import pyarrow.dataset as ds
 
         col = self._file_column(name, "time")
@@ -272,10 +272,33 @@ class ParquetSource:
             s = stats.get(col)
             return s is None or s["min"] is None or (s["max"] >= lo and s["min"] <= hi)
 
-        return self._convert(name, self._read_groups(name, overlaps, (t >= float(lo)) & (t <= float(hi))))
+        rows = self._read_groups(name, overlaps, (t >= float(lo)) & (t <= float(hi)))
+        return self._convert(name, rows) if convert else rows
 
     def read_plots(self, lo: float, hi: float) -> dict:
         return self._time_range("plots", lo, hi)
+
+    def read_file_rows(self, table: str, lo: float, hi: float) -> dict:
+        """The rows of ``table`` (``plots`` or ``reference``) with ``lo <= time <= hi`` (s), as
+        :meth:`read_plots` reads them, but the file's columns in file units (degrees): for copying
+        rows exactly. Empty without the table."""
+        return {} if self.paths[table] is None else self._time_range(table, lo, hi, convert=False)
+
+    def file_schema(self, table: str):
+        """The pyarrow schema of ``table``'s files (None without the table)."""
+        return None if self.paths[table] is None else self._dataset(table).schema
+
+    def with_tables(self, **folders) -> ParquetSource:
+        """This archive with the tables ``folders`` (name -> a Parquet file or folder of them, time
+        ordered by row group, e.g. ``plots=...``) instead of its own: a new token, the other tables
+        and copies shared."""
+        out = copy.copy(self)
+        for cache in ("_datasets", "_stats"):
+            out.__dict__.pop(cache, None)
+        out.paths = {**self.paths, **{k: Path(v) for k, v in folders.items()}}
+        out.copies = {k: v for k, v in self.copies.items() if k not in folders}
+        out.token = uuid.uuid4().hex
+        return out
 
     def read_references(self, lo: float, hi: float) -> dict | None:
         return None if self.paths["reference"] is None else self._time_range("reference", lo, hi)

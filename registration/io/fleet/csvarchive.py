@@ -14,9 +14,9 @@ file stops the run, as ``--on-bad-row stop`` does) and written as one row group 
 The checks that need a whole file are made on what the blocks leave: the radians-in-degree-columns
 check (:func:`~registration.io.fleet.checks.radians_check`, on the largest value per column and
 the count), unknown sensors and platforms. The heading check runs per block (a block holds
-thousands of navigation rows). Plots without a target id cannot be registered in partitions
-(they need the association, which holds every plot): an error says so. Row groups follow the file's
-order, so a plots file in time order keeps each partition's reads small.
+thousands of navigation rows). Plots without a target id keep an empty ``target`` (they are
+associated partition by partition, :mod:`registration.fleet.association.partitioned`). Row groups
+follow the file's order, so a plots file in time order keeps each partition's reads small.
 """
 
 from __future__ import annotations
@@ -196,11 +196,6 @@ def _convert(name: str, path: Path, target: Path, context: dict, block_bytes: in
             extra = []
             if name == "plots":
                 extra = _unknown(path, read, "sensor", context["sensors"], context["sensors_path"], first_row)
-                if "target" not in read.table or np.any(read.table["target"] == ""):
-                    raise ValueError(
-                        f"{path}: plots without a target id (row {first_row}'s block): they need the "
-                        "association, which holds every plot in memory; register without --partition-s"
-                    )
             if name == "reference":
                 extra = _reference_rows(path, read)
             _first_bad(read, extra)

@@ -50,6 +50,7 @@ __all__ = [
     "SLACK_S",
     "ArchivePlan",
     "make_plan",
+    "navigation_ranges",
     "partition_of",
     "window_index",
 ]
@@ -215,7 +216,7 @@ def _cuts(t0: np.ndarray, t1: np.ndarray, window_s: float, partitions: int | Non
     return cuts[cuts <= hi] if cuts.size else cuts, starts, ends
 
 
-def _navigation_ranges(source, platforms: list[str], plot_ranges: np.ndarray, margin: float) -> tuple:
+def navigation_ranges(source, platforms: list[str], plot_ranges: np.ndarray, margin: float) -> tuple:
     """Per partition: platform -> (first, last) navigation time (s) to read (module docstring).
 
     Per platform, the sample NAV_EXTRA_SAMPLES before the last one at or before ``start - margin``
@@ -304,7 +305,7 @@ def make_plan(
     np.maximum.at(hi, part, ends)
     ranges = np.where(np.isfinite(lo)[:, None], np.stack([lo - SLACK_S, hi + SLACK_S], axis=1), np.nan)
     sensor_platforms = list(dict.fromkeys(np.asarray(source.sensors["platform"]).astype(str).tolist()))
-    nav = _navigation_ranges(source, sensor_platforms, ranges, float(nav_margin_s))
+    nav = navigation_ranges(source, sensor_platforms, ranges, float(nav_margin_s))
     token = f"{source.token}:{window_s}:{hash((cuts.tobytes(), t0.tobytes(), t1.tobytes()))}"
     return ArchivePlan(
         window_s=float(window_s),
