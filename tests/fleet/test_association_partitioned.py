@@ -120,3 +120,11 @@ def test_register_by_partitions_equals_the_run_in_memory(tmp_path, fmt, capsys):
     assert summary["association"]["partitions"] == 3
     assert summary["association"]["plots_without_id"] == int((plots["target"] == "").sum())
     assert summary["chi_square"]["dof"] == memory["chi_square"]["dof"]
+    by_time = ["time_s", "sensor"]
+    labelled = pd.read_parquet(tmp_path / "parts" / "labelled_plots").sort_values(by_time, kind="stable")
+    memory_csv = tmp_path / "memory" / "associations.csv"
+    found = pd.read_csv(memory_csv, dtype={"target": str}, keep_default_na=False)
+    found = found[found["target"] != ""].sort_values(by_time, kind="stable")
+    assert len(labelled) == len(found) and "track" not in labelled.columns
+    np.testing.assert_array_equal(labelled["target"].to_numpy(), found["target"].to_numpy())
+    np.testing.assert_array_equal(labelled["time_s"].to_numpy(), found["time_s"].to_numpy())

@@ -16,7 +16,9 @@ CSV row, leaves ``--out`` as it was, with a one-line error naming the file): ``e
 (state, unit in file units, estimate, sigma), ``fused_targets/`` (Parquet parts, one per
 partition, written by the workers, or with ``--scheduler`` returned to this process and written
 here), ``residuals.csv`` (per sensor and channel: count, mean, RMS of the whitened residuals),
-``summary.json`` (the partitions, iterations, chi-square, exclusions, residual checks) and the PNGs
+``summary.json`` (the partitions, iterations, chi-square, exclusions, residual checks, the
+association's figures), ``labelled_plots/`` (when plots lacked target ids: the plots the
+association labelled, Parquet parts, the label as ``target``) and the PNGs
 of :mod:`registration.cli.fleet.archive_output` (docs/howto/register-an-archive.md, "Outputs of an archive
 run").
 """
@@ -44,7 +46,9 @@ __all__ = [
 FUSED_FOLDER = "fused_targets"
 #: The files an archive run writes into --out (the PNGs unless --no-plots), and its folders.
 ARCHIVE_OUTPUTS = frozenset({"estimates.csv", "residuals.csv", "summary.json", *PNG_OUTPUTS})
-ARCHIVE_FOLDERS = frozenset({FUSED_FOLDER})
+#: The folder of the plots the association labelled (Parquet parts: the plots with their targets).
+LABELLED_FOLDER = "labelled_plots"
+ARCHIVE_FOLDERS = frozenset({FUSED_FOLDER, LABELLED_FOLDER})
 
 
 def add_archive_arguments(p: argparse.ArgumentParser) -> None:
@@ -235,6 +239,11 @@ def _outputs(args: argparse.Namespace, out: Path, result, source, options, clien
             outputs,
             "client" if remote else ("workers" if client is not None else "this process"),
         )
+        if getattr(args, "association_summary", None) is not None:
+            import shutil
+
+            with writing(folder.path / LABELLED_FOLDER):
+                shutil.copytree(source.paths["plots"], folder.path / LABELLED_FOLDER)
     return outputs
 
 
