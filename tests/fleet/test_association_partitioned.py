@@ -128,3 +128,18 @@ def test_register_by_partitions_equals_the_run_in_memory(tmp_path, fmt, capsys):
     assert len(labelled) == len(found) and "track" not in labelled.columns
     np.testing.assert_array_equal(labelled["target"].to_numpy(), found["target"].to_numpy())
     np.testing.assert_array_equal(labelled["time_s"].to_numpy(), found["time_s"].to_numpy())
+
+
+def test_dask_workers_give_the_same_labels():
+    pytest.importorskip("distributed")
+    from registration.core.parallel import dask_client
+
+    sim, plots = _scenario(31, 0.2)
+    sc = sim.scenario
+    source = TablesSource(plots, sc.sensors, sc.navigation, sc.platforms)
+    here = associate_partitioned(source, partition_s=200.0)
+    with dask_client(None, 2) as client:
+        there = associate_partitioned(source, partition_s=200.0, client=client)
+    assert here is not None and there is not None
+    for a, b in zip(here.owned, there.owned, strict=True):
+        np.testing.assert_array_equal(a, b)
