@@ -143,3 +143,29 @@ def test_dask_workers_give_the_same_labels():
     assert here is not None and there is not None
     for a, b in zip(here.owned, there.owned, strict=True):
         np.testing.assert_array_equal(a, b)
+
+
+def test_a_memory_limit_partitions_plots_without_ids_by_their_association(tmp_path, monkeypatch, capsys):
+    """The association's memory per plot made large: tables without ids that the limit cannot hold
+    in memory are associated and registered by partitions the run chooses for the association."""
+    from registration.fleet.batch.partitioned import sizing
+
+    sim, plots = _scenario(41, 0.2)
+    sc = sim.scenario
+    folder = tmp_path / "tables"
+    folder.mkdir()
+    write_fleet_tables(folder, plots, sc.navigation, sc.sensors, sc.platforms, None, fmt="parquet")
+    n = plots["time"].size
+    monkeypatch.setattr(sizing, "ASSOCIATION_PER_PLOT", 3 * (1 << 29) // n)  # the whole: 1.5 GiB
+    out = tmp_path / "auto"
+    run = ["fleet", "register", "--tables", str(folder), "--no-plots", "--memory-limit", "1.5GiB"]
+    assert main([*run, "--out", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "registering the archive by partitions" in text and "association:" in text
+    summary = json.loads((out / "summary.json").read_text())
+    chosen = summary["partition_s"]
+    # the chosen partitions and their overlaps fit the association's limit; twice as long would not
+    per_s = n / (plots["time"].max() - plots["time"].min())
+    assert sizing.association_bytes(int(per_s * (chosen + 240.0) * 0.8)) <= 3 << 29
+    assert summary["association"]["partitions"] == summary["partitions"] > 1
+    assert summary["association"]["plots_labelled"] > 0.7 * n

@@ -96,10 +96,10 @@ def too_large(args: argparse.Namespace) -> bool:
     from registration.io.fleet.sources import plot_count
 
     try:
-        rows, _ = plot_count(args.tables)
+        rows, ids = plot_count(args.tables)
     except ValueError:  # a folder or file the reader will name with its own error
         return False
-    need, limit = in_memory_bytes(rows), memory_limit(args)
+    need, limit = in_memory_bytes(rows, association=not ids), memory_limit(args)
     if need <= limit:
         return False
     why = _in_memory_only(args)
@@ -112,12 +112,24 @@ def too_large(args: argparse.Namespace) -> bool:
     return True
 
 
+def _lacks_ids(args: argparse.Namespace) -> bool:
+    """True when some plot of --tables DIR has no target id (they are associated by partitions)."""
+    from registration.io.fleet.sources import plot_count
+
+    try:
+        return not plot_count(args.tables)[1]
+    except ValueError:  # a folder or file the reader names with its own error
+        return False
+
+
 def choose_partitions(args: argparse.Namespace, source) -> None:
     """Set ``args.partition_s`` from the memory limit and the plot rate when it is not given, and say
     so; with --memory-limit and --partition-s both given, check that one partition fits.
     MemoryLimitError (a ValueError: exit 2) naming the smallest limit that works."""
+    from registration.fleet.association.partitioned.parts import DEFAULT_OVERLAP_S
     from registration.fleet.batch.partitioned.sizing import (
         MemoryLimitError,
+        association_bytes,
         choose_partition_s,
         in_memory_bytes,
         partition_bytes,
@@ -128,13 +140,14 @@ def choose_partitions(args: argparse.Namespace, source) -> None:
         return
     profile = source.plot_profile()
     limit = memory_limit(args)
+    overlap = DEFAULT_OVERLAP_S if _lacks_ids(args) else None
     if given is None:
         try:
             choice = choose_partition_s(
-                profile.most_rows, profile.rows, profile.t1 - profile.t0, limit, args.window_s
+                profile.most_rows, profile.rows, profile.t1 - profile.t0, limit, args.window_s, overlap
             )
         except MemoryLimitError as exc:
-            whole = in_memory_bytes(profile.rows)
+            whole = in_memory_bytes(profile.rows, association=overlap is not None)
             if whole >= exc.smallest:
                 raise
             raise MemoryLimitError(  # in memory needs less than one partition: that is the smallest
@@ -148,6 +161,8 @@ def choose_partitions(args: argparse.Namespace, source) -> None:
         print(f"memory limit {_size(limit)}: {choice.text()}")
         return
     need = partition_bytes(profile.most_rows(float(given) + 2.0 * args.window_s))
+    if overlap is not None:
+        need = max(need, association_bytes(profile.most_rows(float(given) + 2.0 * overlap)))
     if need > limit:
         raise MemoryLimitError(
             f"--memory-limit {_size(limit)}: a partition of --partition-s {given:g} s needs about "

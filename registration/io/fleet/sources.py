@@ -69,8 +69,8 @@ def open_fleet_tables(
 def plot_count(folder: Path | str, given: Mapping[str, Path | None] | None = None) -> tuple[int, bool]:
     """(rows of the plots table of ``folder`` (or ``given["plots"]``), whether every row has a
     target id) without reading the table: a Parquet file's or folder's metadata (the ids: the
-    ``target`` column's null counts; an empty id counts as given), or one streamed pass over a CSV
-    file's ``target`` column. For choosing between a run in memory and by partitions."""
+    ``target`` column's null counts and smallest value, an empty text being no id), or one streamed
+    pass over a CSV file's ``target`` column. For choosing between a run in memory and by partitions."""
     import pyarrow.parquet as pq
 
     path = table_paths(folder, given or {})["plots"] if folder is not None or given else None
@@ -97,6 +97,8 @@ def plot_count(folder: Path | str, given: Mapping[str, Path | None] | None = Non
         for g in range(meta.num_row_groups):
             stats = meta.row_group(g).column(col).statistics
             if stats is None or not stats.has_null_count or stats.null_count > 0:
+                ids = False
+            elif stats.has_min_max and stats.min in ("", b""):  # an empty id is no id
                 ids = False
     return rows, ids
 
