@@ -136,12 +136,11 @@ def choose_partition_s(
             f"{int(np.ceil(smallest / MiB))}MiB",
             smallest,
         )
-    base, per_plot = PARTITION_BASE, PARTITION_PER_PLOT
+    rate = max(rows / span_s if span_s > 0 else float(rows), 1e-9)
+    longest = (limit - PARTITION_BASE) / PARTITION_PER_PLOT / rate  # s, at the mean rate
     if overlap_s is not None:
-        base, per_plot = max(base, ASSOCIATION_BASE), max(per_plot, ASSOCIATION_PER_PLOT)
-    budget = (limit - base) / per_plot
-    rate = rows / span_s if span_s > 0 else float(rows)
-    length = max(window_s, _nice(max(budget / max(rate, 1e-9), window_s)))
+        longest = min(longest, (limit - ASSOCIATION_BASE) / ASSOCIATION_PER_PLOT / rate - 2.0 * overlap_s)
+    length = max(window_s, _nice(max(longest, window_s)))
     length = min(length, max(_nice(max(span_s, window_s)), window_s))
     while length > window_s and need(length) > limit:
         length = max(window_s, _nice(length * 0.999))
