@@ -22,6 +22,7 @@ import numpy as np
 from registration.fleet.association.associate import associate_and_register
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.partitioned.parts import AssociationPlan, id_mask
+from registration.fleet.batch.partitioned.task import read_source
 
 __all__ = ["PartLabels", "associate_part"]
 
@@ -44,17 +45,6 @@ class PartLabels:
     notes: tuple[str, ...]
 
 
-def _read(source, what: str, read, *args):
-    """``read(*args)``; a failure other than a ValueError becomes one naming the file."""
-    try:
-        return read(*args)
-    except ValueError:
-        raise
-    except Exception as exc:  # pyarrow and OS errors of many kinds
-        text = " ".join(str(exc).split()) or type(exc).__name__
-        raise ValueError(f"{source.name(what)}: cannot be read ({text})") from exc
-
-
 def _given_labels(target, n: int) -> tuple[np.ndarray, np.ndarray]:
     """(the ids as labels (n,) str, '' none; which rows carry one (n,))."""
     if target is None:
@@ -69,15 +59,15 @@ def associate_part(source: Any, plan: AssociationPlan, k: int, options: Associat
     :class:`~registration.fleet.data.source.FleetSource`."""
     t_start = clock.perf_counter()
     lo, hi = plan.read_ranges[k]
-    plots = dict(_read(source, "plots", source.read_plots, lo, hi))
+    plots = dict(read_source(source, "plots", source.read_plots, lo, hi))
     t = np.asarray(plots["time"], dtype=np.float64)
     labels, given = _given_labels(plots.get("target"), t.size)
     if given.all():
         return PartLabels(k, t, labels, given, False, True, clock.perf_counter() - t_start, ())
-    refs = _read(source, "reference", source.read_references, lo, hi)
+    refs = read_source(source, "reference", source.read_references, lo, hi)
     if refs is not None and np.asarray(refs["time"]).size == 0:
         refs = None
-    navigation = _read(source, "navigation", source.read_navigation, plan.nav_ranges[k])
+    navigation = read_source(source, "navigation", source.read_navigation, plan.nav_ranges[k])
     try:
         result = associate_and_register(
             plots, source.sensors, navigation, source.platforms, refs, options, targets=source.targets

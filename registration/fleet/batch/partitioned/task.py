@@ -39,6 +39,7 @@ __all__ = [
     "partition_design",
     "partition_entry",
     "partition_problem",
+    "read_source",
     "spill_entry",
     "spilled_problem",
 ]
@@ -71,7 +72,7 @@ class PartitionTask:
 _CACHE: OrderedDict[tuple, PartitionEntry | None] = OrderedDict()
 
 
-def _read(source, what: str, read, *args):
+def read_source(source, what: str, read, *args):
     """``read(*args)``; a failure becomes a one-line ValueError naming the file."""
     try:
         return read(*args)
@@ -93,7 +94,7 @@ def partition_problem(task: PartitionTask) -> FleetProblem | None:
     platform_ids, platform_priors = read_platforms(src.platforms, sensors_t.ids("platform"))
     specs = read_sensors(sensors_t, platform_ids)
     plots_t = read_table(
-        src.name("plots"), _read(src, "plots", src.read_plots, lo, hi), ("time", "sensor", "target")
+        src.name("plots"), read_source(src, "plots", src.read_plots, lo, hi), ("time", "sensor", "target")
     )
     cols = read_plots(plots_t, specs)
     target = index_of(cols.target, plan.target_ids)
@@ -107,14 +108,14 @@ def partition_problem(task: PartitionTask) -> FleetProblem | None:
     if rows.size == 0:
         return None
     sensor, time = cols.sensor[rows], cols.time[rows]
-    refs = read_references(_read(src, "reference", src.read_references, lo, hi), plan.all_targets)
+    refs = read_references(read_source(src, "reference", src.read_references, lo, hi), plan.all_targets)
     ref_target = index_of(refs.target, plan.target_ids)
     ref_keep = ref_target >= 0
     ref_keep[ref_keep] = partition_of(plan, ref_target[ref_keep], refs.time[ref_keep]) == k
     refs = refs.subset(ref_keep)
     nav_t = read_table(
         src.name("navigation"),
-        _read(src, "navigation", src.read_navigation, plan.nav_ranges[k]),
+        read_source(src, "navigation", src.read_navigation, plan.nav_ranges[k]),
         ("platform",),
     )
     tracks = platform_navigation(nav_t, platform_ids)
