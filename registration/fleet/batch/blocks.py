@@ -31,6 +31,7 @@ from registration.fleet.data.problem import FleetProblem
 __all__ = [
     "Blocks",
     "make_blocks",
+    "used_state_columns",
     "legendre_basis",
     "legendre_basis_rate",
     "target_spans",
@@ -71,7 +72,7 @@ class Blocks:
     group_start: np.ndarray  # (G,) first sorted plot of each (block, sensor) group
     group_block: np.ndarray  # (G,)
     group_sensor: np.ndarray  # (G,)
-    group_state: np.ndarray  # (G, w) state indices (layout.sensor_states); n_state = none
+    group_state: np.ndarray  # (G, w) state indices (layout.sensor_states, state_columns); n_state = none
     group_rank: np.ndarray  # (G,) position of the group among its block's groups
     local_state: np.ndarray  # (B, w max_groups) state indices of each block's groups (n = padding)
     group_block_start: np.ndarray  # (B,) first group of each block
@@ -86,6 +87,9 @@ class Blocks:
     # states after the groups' in local_state, coupled to every block through the references (the
     # flight levels' height offset): 0 or 1
     extra_states: int = 0
+    # (w,) the columns of layout.sensor_states that some sensor has a state in (the others hold
+    # only the sink: their Jacobian columns are left out of the sums); None: all of them
+    state_columns: np.ndarray | None = None
 
     @property
     def n_blocks(self) -> int:
@@ -97,7 +101,8 @@ class Blocks:
 
     @property
     def width(self) -> int:
-        """States per group (6, or 11 with the extended errors)."""
+        """States per group (6, or 11 with the extended errors, 13 with the eccentricity; fewer
+        by the columns no sensor has a state in)."""
         return int(self.group_state.shape[1])
 
     def basis_at(self, block: np.ndarray, time: np.ndarray) -> np.ndarray:
@@ -247,6 +252,16 @@ def _chunks(group_start: np.ndarray, n: int):
     return size, slot, chunk_group_start
 
 
+def used_state_columns(problem: FleetProblem) -> np.ndarray | None:
+    """The columns of ``layout.sensor_states`` in which some sensor of ``problem`` has a state (the
+    eccentric model's extended columns hold only the sink when no sensor has extended errors);
+    None when every column has one."""
+    layout = problem.layout
+    every = layout.sensor_states(np.arange(len(problem.sensor_ids)), problem.sensor_platform)
+    used = np.flatnonzero((every != layout.n).any(axis=0))
+    return None if used.size == every.shape[1] else used
+
+
 def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) -> Blocks:
     """The block structure of ``problem`` for windows of ``window_s`` s and polynomials of ``degree``.
     ``span``: (first, last) time (s) per target of ``problem.target_ids`` to cut the windows from
@@ -261,7 +276,10 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) 
     group_start = np.flatnonzero(change)
     group_block, group_sensor = block_sorted[group_start], sensor_sorted[group_start]
     layout = problem.layout
+    columns = used_state_columns(problem)
     group_state = layout.sensor_states(group_sensor, problem.sensor_platform)
+    if columns is not None:
+        group_state = group_state[:, columns]
     n_coef = 1 if degree == 0 else 4  # the basis sizes of the generated rows functions
     coef_mask = np.arange(n_coef)[None, :] <= b_degree[:, None]
     tau = (problem.time[order] - centre[block_sorted]) / half[block_sorted]
@@ -304,4 +322,5 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) 
         patterns=patterns,
         pattern_blocks=pattern_blocks,
         extra_states=extra,
+        state_columns=columns,
     )

@@ -52,6 +52,7 @@ import numpy as np
 from registration._generated import api as generated
 from registration.fleet.batch.blocks import Blocks
 from registration.fleet.batch.design import Design, plot_model_inputs
+from registration.fleet.batch.segments import segment_sums
 from registration.fleet.data.layout import (
     ATTITUDE_COLUMNS,
     BIAS_COLUMNS,
@@ -148,6 +149,16 @@ def _extended_rows(design: Design, xs: np.ndarray, coef: np.ndarray) -> np.ndarr
     return generated.fleet_rows_ext_4(**known, basis=basis).rows_t
 
 
+def _used_columns(blk: Blocks, Z: np.ndarray) -> np.ndarray:
+    """``Z`` (rows, 3, q + w' + 1) without the state columns that no sensor has a state in
+    (``Blocks.state_columns``): (rows, 3, q + w + 1)."""
+    if blk.state_columns is None:
+        return Z
+    q = 3 * blk.n_coef
+    keep = np.concatenate([np.arange(q), q + blk.state_columns, [Z.shape[2] - 1]])
+    return np.take(Z, keep, axis=2)
+
+
 def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
     """Residuals at states ``x`` (n,) and coefficients ``coef`` (B, n_coef, 3): one call of the
     generated ``fleet_rows_<n_coef>`` (``fleet_rows_ext_<n_coef>`` with the extended errors) for
@@ -165,7 +176,7 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
             rows_t = generated.fleet_rows_1(**known, basis=design.basis[:, 0]).rows_t
         else:
             rows_t = generated.fleet_rows_4(**known, basis=design.basis).rows_t
-    Z = rows_t.swapaxes(1, 2)  # each plot's 3 rows, contiguous
+    Z = _used_columns(blk, rows_t.swapaxes(1, 2))  # each plot's 3 rows, contiguous
     e = Z[:, :, -1]
     if design.ref_whiten is None:
         e_ref = (design.ref_p - positions(blk.ref_basis, blk.ref_block, coef)) * design.ref_weight[:, None]
@@ -263,7 +274,7 @@ def _chunk_products(design: Design, ev: Evaluation) -> np.ndarray:
     gram = np.matmul(np.ascontiguousarray(Z.transpose(0, 2, 1)), Z)
     if gram.shape[0] == blk.group_start.size:  # one chunk per group
         return gram
-    return np.add.reduceat(gram, blk.chunk_group_start, axis=0)
+    return segment_sums(gram, blk.chunk_group_start)
 
 
 def normal_equations(design: Design, ev: Evaluation) -> Normal:
@@ -271,7 +282,7 @@ def normal_equations(design: Design, ev: Evaluation) -> Normal:
     blk = design.blocks
     K, n1, q, w = blk.n_coef, design.n_state + 1, 3 * blk.n_coef, blk.width
     G = _chunk_products(design, ev)
-    V = np.add.reduceat(G[:, :q, :q], blk.group_block_start, axis=0)
+    V = segment_sums(G[:, :q, :q], blk.group_block_start)
     b_c = -np.add.reduceat(G[:, :q, -1], blk.group_block_start, axis=0)
     V5, b_c3 = V.reshape(-1, K, 3, K, 3), b_c.reshape(-1, K, 3)
     _reference_terms(blk, ev, design.ref_weight, V5, b_c3, design.ref_whiten)

@@ -1,0 +1,55 @@
+"""The batch solver's sums: the segment sums of the normal equations against ``np.add.reduceat``,
+and the state columns that only the sink holds (the eccentric model's extended columns when no
+sensor has extended errors) left out of the sums without changing the solution."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from registration.fleet import solve_batch
+from registration.fleet.batch import blocks as blocks_module
+from registration.fleet.batch.blocks import make_blocks, used_state_columns
+from registration.fleet.batch.segments import segment_sums
+from registration.fleet.simulation.channels import atc_channel_scenario
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_segment_sums_are_reduceat_and_add_first_to_last(seed):
+    rng = np.random.default_rng(seed)
+    lengths = rng.integers(1, 7, size=40)
+    starts = np.r_[0, np.cumsum(lengths)[:-1]]
+    a = rng.normal(size=(int(lengths.sum()), 5, 4))
+    for stack in (a, a[:, 1:4, :3]):  # contiguous and a strided view, as normal_equations passes
+        got = segment_sums(stack, starts)
+        np.testing.assert_allclose(got, np.add.reduceat(stack, starts, axis=0), rtol=1e-13, atol=1e-13)
+        first_to_last = np.stack([np.cumsum(stack[s : s + n], axis=0)[-1] for s, n in zip(starts, lengths)])
+        np.testing.assert_array_equal(got, first_to_last)
+    assert segment_sums(a, np.zeros(0, dtype=np.int64)).shape == (0, 5, 4)
+
+
+@pytest.fixture(scope="module")
+def scenario():
+    return atc_channel_scenario(7, duration_s=150.0)
+
+
+def test_the_sink_only_columns_are_left_out(scenario):
+    problem = scenario.problem()
+    assert problem.layout.width == 13  # the eccentric model: attitude, biases, 5 extended, 2 terms
+    columns = used_state_columns(problem)
+    np.testing.assert_array_equal(columns, [0, 1, 2, 3, 4, 5, 11, 12])
+    blk = make_blocks(problem, 20.0, 3)
+    assert blk.width == 8 and blk.group_state.shape[1] == 8
+    assert not (blk.group_state == problem.layout.n).all(axis=0).any()
+
+
+def test_leaving_them_out_changes_no_estimate(scenario, monkeypatch):
+    problem = scenario.problem()
+    fewer = solve_batch(problem)
+    monkeypatch.setattr(blocks_module, "used_state_columns", lambda problem: None)
+    every = solve_batch(problem)
+    assert fewer.iterations == every.iterations
+    scale = np.abs(every.estimate).max()
+    np.testing.assert_allclose(fewer.estimate, every.estimate, rtol=1e-9, atol=1e-9 * scale)
+    np.testing.assert_allclose(fewer.sigma, every.sigma, rtol=1e-9)
+    np.testing.assert_allclose(fewer.covariance, every.covariance, rtol=1e-9, atol=1e-15)
