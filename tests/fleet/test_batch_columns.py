@@ -1,6 +1,7 @@
 """The batch solver's sums: the segment sums of the normal equations against ``np.add.reduceat``,
-and the state columns that only the sink holds (the eccentric model's extended columns when no
-sensor has extended errors) left out of the sums without changing the solution."""
+the state columns that only the sink holds (the eccentric model's extended columns when no sensor
+has extended errors) left out of the sums without changing the solution, and the Schur
+complement's sums per pattern of states (in super-blocks) against the per-block scatter."""
 
 from __future__ import annotations
 
@@ -9,8 +10,11 @@ import pytest
 
 from registration.fleet import solve_batch
 from registration.fleet.batch import blocks as blocks_module
+from registration.fleet.batch import schur
 from registration.fleet.batch.blocks import make_blocks, used_state_columns
+from registration.fleet.batch.schur import super_blocks
 from registration.fleet.batch.segments import segment_sums
+from registration.fleet.batch.solver import BatchOptions, determined_design
 from registration.fleet.simulation.channels import atc_channel_scenario
 
 
@@ -53,3 +57,27 @@ def test_leaving_them_out_changes_no_estimate(scenario, monkeypatch):
     np.testing.assert_allclose(fewer.estimate, every.estimate, rtol=1e-9, atol=1e-9 * scale)
     np.testing.assert_allclose(fewer.sigma, every.sigma, rtol=1e-9)
     np.testing.assert_allclose(fewer.covariance, every.covariance, rtol=1e-9, atol=1e-15)
+
+
+@pytest.mark.parametrize("k", [1, 3, 7])
+def test_super_blocks_hold_every_block_once_and_one_pattern_each(k):
+    rng = np.random.default_rng(k)
+    block_pattern = rng.integers(0, 5, size=60)
+    place, first = super_blocks(block_pattern, 5, k)
+    assert np.array_equal(np.sort(place[place >= 0]), np.arange(60))
+    assert first[-1] * k == place.size
+    for p in range(5):  # pattern p's super-blocks hold its blocks and padding only
+        mine = place[first[p] * k : first[p + 1] * k]
+        assert np.array_equal(np.sort(mine[mine >= 0]), np.flatnonzero(block_pattern == p))
+        assert np.count_nonzero(mine < 0) < k
+
+
+def test_pattern_sums_equal_the_per_block_scatter(scenario, monkeypatch):
+    problem = scenario.problem()
+    _, design, start, normal = determined_design(problem, BatchOptions(), np.zeros(problem.layout.n))
+    assert design.blocks.width > 6 and design.blocks.patterns.shape[0] > 1
+    by_pattern = schur.reduce(design.blocks, normal, 0.1)
+    monkeypatch.setattr(schur, "MAX_PATTERNS", 0)  # every block's product scattered on its own
+    by_block = schur.reduce(design.blocks, normal, 0.1)
+    np.testing.assert_allclose(by_pattern.S, by_block.S, rtol=1e-12, atol=1e-12 * np.abs(by_block.S).max())
+    np.testing.assert_array_equal(by_pattern.r, by_block.r)

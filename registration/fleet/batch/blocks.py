@@ -83,7 +83,7 @@ class Blocks:
     ref_block: np.ndarray  # (R',)
     ref_basis: np.ndarray  # (R', n_coef)
     patterns: np.ndarray  # (K, w max_groups) the distinct rows of local_state
-    pattern_blocks: tuple  # (K,) the blocks of each pattern (index arrays)
+    block_pattern: np.ndarray  # (B,) the pattern (row of patterns) of each block
     # states after the groups' in local_state, coupled to every block through the references (the
     # flight levels' height offset): 0 or 1
     extra_states: int = 0
@@ -295,7 +295,6 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) 
     chunk_size, chunk_slot, chunk_group_start = _chunks(group_start, order.size)
     group_block_start = np.flatnonzero(np.r_[True, np.diff(group_block) != 0])
     patterns, inverse = np.unique(local_state, axis=0, return_inverse=True)
-    pattern_blocks = tuple(np.flatnonzero(inverse.reshape(-1) == k) for k in range(patterns.shape[0]))
     return Blocks(
         n_coef=n_coef,
         order=order,
@@ -320,7 +319,7 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) 
         ref_block=ref_block,
         ref_basis=ref_basis,
         patterns=patterns,
-        pattern_blocks=pattern_blocks,
+        block_pattern=inverse.reshape(-1),
         extra_states=extra,
         state_columns=columns,
     )

@@ -73,7 +73,8 @@ def positions(basis: np.ndarray, block: np.ndarray, coef: np.ndarray) -> np.ndar
 @dataclass(frozen=True)
 class Evaluation:
     """At (x, coef): the whitened rows ``Z`` (rows, 3, q + w + 1) = [A_c | A_x | e] of every plot (A_c:
-    Jacobian w.r.t. its window's coefficients, A_x: w.r.t. its w states, e: whitened residual),
+    Jacobian w.r.t. its window's coefficients, A_x: w.r.t. the w states of the model's rows, e:
+    whitened residual),
     the whitened reference residuals ``e_ref`` (R', 3) (per ECEF axis; east, north, up with
     ``Design.ref_whiten``), the total sum of squares and, with surface targets, the whitened
     height residuals ``e_surface`` (S,) and their whitening rows ``surface_whiten`` (S, 1, 3) 1/m."""
@@ -149,16 +150,6 @@ def _extended_rows(design: Design, xs: np.ndarray, coef: np.ndarray) -> np.ndarr
     return generated.fleet_rows_ext_4(**known, basis=basis).rows_t
 
 
-def _used_columns(blk: Blocks, Z: np.ndarray) -> np.ndarray:
-    """``Z`` (rows, 3, q + w' + 1) without the state columns that no sensor has a state in
-    (``Blocks.state_columns``): (rows, 3, q + w + 1)."""
-    if blk.state_columns is None:
-        return Z
-    q = 3 * blk.n_coef
-    keep = np.concatenate([np.arange(q), q + blk.state_columns, [Z.shape[2] - 1]])
-    return np.take(Z, keep, axis=2)
-
-
 def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
     """Residuals at states ``x`` (n,) and coefficients ``coef`` (B, n_coef, 3): one call of the
     generated ``fleet_rows_<n_coef>`` (``fleet_rows_ext_<n_coef>`` with the extended errors) for
@@ -176,7 +167,7 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
             rows_t = generated.fleet_rows_1(**known, basis=design.basis[:, 0]).rows_t
         else:
             rows_t = generated.fleet_rows_4(**known, basis=design.basis).rows_t
-    Z = _used_columns(blk, rows_t.swapaxes(1, 2))  # each plot's 3 rows, contiguous
+    Z = rows_t.swapaxes(1, 2)  # each plot's 3 rows, contiguous
     e = Z[:, :, -1]
     if design.ref_whiten is None:
         e_ref = (design.ref_p - positions(blk.ref_basis, blk.ref_block, coef)) * design.ref_weight[:, None]
@@ -265,13 +256,20 @@ def _reference_terms(
 
 
 def _chunk_products(design: Design, ev: Evaluation) -> np.ndarray:
-    """(G, m, m) sums over each group of Z^T Z (m = q + w + 1 columns of Evaluation.Z).
+    """(G, m, m) sums over each group of Z^T Z (m = q + w + 1: the columns of Evaluation.Z without
+    the state columns that only the sink holds, Blocks.state_columns).
 
     The rows are in chunks (Design), so each chunk's product is one small dense matrix product.
     """
     blk = design.blocks
-    Z = ev.Z.reshape(-1, 3 * blk.chunk_size, ev.Z.shape[2])
-    gram = np.matmul(np.ascontiguousarray(Z.transpose(0, 2, 1)), Z)
+    C, n = blk.chunk_size, ev.Z.shape[2]
+    # each chunk's Z^T (chunks, n, 3 C) in one copy from the generated layout (rows, n, 3)
+    ZT = np.ascontiguousarray(ev.Z.swapaxes(1, 2).reshape(-1, C, n, 3).transpose(0, 2, 1, 3))
+    ZT = ZT.reshape(-1, n, 3 * C)
+    if blk.state_columns is not None:
+        q = 3 * blk.n_coef
+        ZT = ZT[:, np.concatenate([np.arange(q), q + blk.state_columns, [n - 1]])]
+    gram = np.matmul(ZT, ZT.transpose(0, 2, 1))
     if gram.shape[0] == blk.group_start.size:  # one chunk per group
         return gram
     return segment_sums(gram, blk.chunk_group_start)
