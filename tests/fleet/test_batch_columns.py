@@ -1,17 +1,20 @@
 """The batch solver's sums: the segment sums of the normal equations against ``np.add.reduceat``,
 the state columns that only the sink holds (the eccentric model's extended columns when no sensor
 has extended errors) left out of the sums without changing the solution, and the Schur
-complement's sums per pattern of states (in super-blocks) against the per-block scatter."""
+complement's sums per pattern of states (in super-blocks) against the per-block scatter, and the
+eccentric rows without the extended errors (``fleet_rows_ecc3_4``) against the full ones."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
+from registration._generated import api as generated
 from registration.fleet import solve_batch
 from registration.fleet.batch import blocks as blocks_module
 from registration.fleet.batch import schur
 from registration.fleet.batch.blocks import make_blocks, used_state_columns
+from registration.fleet.batch.normal import ECC3_COLUMNS
 from registration.fleet.batch.schur import super_blocks
 from registration.fleet.batch.segments import segment_sums
 from registration.fleet.batch.solver import BatchOptions, determined_design
@@ -81,3 +84,35 @@ def test_pattern_sums_equal_the_per_block_scatter(scenario, monkeypatch):
     by_block = schur.reduce(design.blocks, normal, 0.1)
     np.testing.assert_allclose(by_pattern.S, by_block.S, rtol=1e-12, atol=1e-12 * np.abs(by_block.S).max())
     np.testing.assert_array_equal(by_pattern.r, by_block.r)
+
+
+def test_the_rows_without_extended_errors_are_the_eccentric_rows_at_zero():
+    """fleet_rows_ecc3_4 equals fleet_rows_ecc_4's coefficient, attitude, bias, eccentricity and
+    residual columns with the velocity, navigation rate, gain and position error at 0."""
+    rng = np.random.default_rng(5)
+    n = 50
+    shared = dict(
+        p_ecef=rng.normal(4.4e6, 1e5, (n, 3)),
+        lat=rng.uniform(0.7, 0.9, n),
+        lon=rng.uniform(0.05, 0.2, n),
+        alt=rng.uniform(0, 500, n),
+        heading=rng.uniform(-3, 3, n),
+        pitch=rng.normal(0, 0.02, n),
+        roll=rng.normal(0, 0.02, n),
+        att_err=rng.normal(0, 1e-3, (n, 3)),
+        bias=rng.normal(0, [30, 1e-3, 1e-3], (n, 3)),
+        ecc=rng.normal(0, 3e-3, (n, 2)),
+        lever_deck=rng.normal(0, 5, (n, 3)),
+        r=rng.uniform(5e3, 1e5, n),
+        q=rng.uniform(-3, 3, n),
+        e=rng.uniform(0, 0.1, n),
+        weight=np.tile([0.01, 500.0, 500.0], (n, 1)),
+        basis=rng.uniform(-1, 1, (n, 4)),
+    )
+    ecc3 = generated.fleet_rows_ecc3_4(**shared).rows_t
+    zeros = np.zeros
+    held = dict(v_ecef=zeros((n, 3)), nav_rate=zeros((n, 6)), gain=zeros(n), pos_err=zeros((n, 3)))
+    full = generated.fleet_rows_ecc_4(**shared, **held).rows_t
+    assert ecc3.shape == (n, 21, 3) and full.shape == (n, 26, 3)
+    columns = np.r_[0:12, 12 + ECC3_COLUMNS, 25]
+    np.testing.assert_allclose(ecc3, full[:, columns], rtol=1e-12, atol=1e-15)

@@ -86,6 +86,8 @@ class Evaluation:
     cost: float  # sum of squares of every whitened residual, references, surface heights and priors included
     e_surface: np.ndarray = field(default_factory=lambda: np.zeros(0))
     surface_whiten: np.ndarray = field(default_factory=lambda: np.zeros((0, 1, 3)))
+    # the columns of layout.sensor_states that Z's state columns are (ECC3_COLUMNS); None: all
+    columns: np.ndarray | None = None
 
     @property
     def e(self) -> np.ndarray:
@@ -116,6 +118,35 @@ def _seen(design: Design, time_bias: np.ndarray) -> tuple:
     value = (*design.blocks.basis_and_rate_at(design.block, t_seen), nav, rate, outside)
     design.seen_cache.update(key=time_bias, value=value)
     return value
+
+
+#: The columns of layout.sensor_states of the eccentric rows without the extended errors
+#: (``fleet_rows_ecc3_<n>``): the attitude errors, the biases and the eccentricity terms.
+ECC3_COLUMNS = np.r_[ATTITUDE_COLUMNS, BIAS_COLUMNS, ECCENTRICITY_COLUMNS]
+
+
+def _eccentric_only(design: Design) -> bool:
+    """True when some sensor has an eccentricity and none has an extended error: the states used
+    (Blocks.state_columns) are all among ECC3_COLUMNS."""
+    used = design.blocks.state_columns
+    eccentric = design.state.shape[1] > ECCENTRICITY_COLUMNS.start
+    return eccentric and used is not None and bool(np.isin(used, ECC3_COLUMNS).all())
+
+
+def _eccentric_rows(design: Design, xs: np.ndarray, coef: np.ndarray) -> np.ndarray:
+    """(rows, 3 n_coef + 9, 3) rows of the eccentric model with the extended errors held at 0
+    (``fleet_rows_ecc3_<n_coef>``) at states ``xs`` (n + 1,, sink last)."""
+    state = design.state
+    known = plot_model_inputs(design.nav, design.lever, design.meas) | dict(
+        p_ecef=chunk_positions(design, design.basis, coef),
+        att_err=xs[state[:, ATTITUDE_COLUMNS]],
+        bias=xs[state[:, BIAS_COLUMNS]],
+        ecc=xs[state[:, ECCENTRICITY_COLUMNS]],
+        weight=design.weight,
+    )
+    if design.blocks.n_coef == 1:
+        return generated.fleet_rows_ecc3_1(**known, basis=design.basis[:, 0]).rows_t
+    return generated.fleet_rows_ecc3_4(**known, basis=design.basis).rows_t
 
 
 def _extended_rows(design: Design, xs: np.ndarray, coef: np.ndarray) -> np.ndarray:
@@ -156,7 +187,10 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
     all plots."""
     blk = design.blocks
     xs = np.append(x, 0.0)
-    if design.extended:
+    columns = None
+    if design.extended and _eccentric_only(design):
+        rows_t, columns = _eccentric_rows(design, xs, coef), ECC3_COLUMNS
+    elif design.extended:
         rows_t = _extended_rows(design, xs, coef)
     else:
         p = positions(design.basis, design.block, coef)
@@ -183,7 +217,7 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
     cost = float(np.sum(e * e) + np.sum(e_ref * e_ref) + np.sum(prior * prior))
     surf = design.surface
     if surf is None:
-        return Evaluation(x, coef, Z, e_ref, cost)
+        return Evaluation(x, coef, Z, e_ref, cost, columns=columns)
     residual, J = generated.surface_residual(
         p_ecef=positions(surf.basis, surf.block, coef), alt_surface=surf.alt
     )
@@ -196,6 +230,7 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
         cost + float(np.sum(e_surface * e_surface)),
         e_surface,
         -J * surf.weight[:, None, None],
+        columns,
     )
 
 
@@ -255,21 +290,29 @@ def _reference_terms(
             V[:, k, np.arange(3), m, np.arange(3)] += ref[:, None]
 
 
+def _used_columns(blk: Blocks, ev: Evaluation) -> np.ndarray | None:
+    """The columns of Evaluation.Z that the sums use, without the state columns that only the sink
+    holds (Blocks.state_columns); None: all of them."""
+    if blk.state_columns is None:
+        return None
+    n, q = ev.Z.shape[2], 3 * blk.n_coef
+    held = np.arange(n - q - 1) if ev.columns is None else ev.columns
+    if np.array_equal(held, blk.state_columns):
+        return None
+    return np.concatenate([np.arange(q), q + np.searchsorted(held, blk.state_columns), [n - 1]])
+
+
 def _chunk_products(design: Design, ev: Evaluation) -> np.ndarray:
-    """(G, m, m) sums over each group of Z^T Z (m = q + w + 1: the columns of Evaluation.Z without
-    the state columns that only the sink holds, Blocks.state_columns).
+    """(G, m, m) sums over each group of Z^T Z (m = q + w + 1 columns of Evaluation.Z, the state
+    columns that only the sink holds left out: :func:`_used_columns`).
 
     The rows are in chunks (Design), so each chunk's product is one small dense matrix product.
     """
     blk = design.blocks
-    C, n = blk.chunk_size, ev.Z.shape[2]
-    # each chunk's Z^T (chunks, n, 3 C) in one copy from the generated layout (rows, n, 3)
-    ZT = np.ascontiguousarray(ev.Z.swapaxes(1, 2).reshape(-1, C, n, 3).transpose(0, 2, 1, 3))
-    ZT = ZT.reshape(-1, n, 3 * C)
-    if blk.state_columns is not None:
-        q = 3 * blk.n_coef
-        ZT = ZT[:, np.concatenate([np.arange(q), q + blk.state_columns, [n - 1]])]
-    gram = np.matmul(ZT, ZT.transpose(0, 2, 1))
+    keep = _used_columns(blk, ev)
+    Z = ev.Z if keep is None else np.take(ev.Z, keep, axis=2)
+    Z = Z.reshape(-1, 3 * blk.chunk_size, Z.shape[2])
+    gram = np.matmul(np.ascontiguousarray(Z.transpose(0, 2, 1)), Z)
     if gram.shape[0] == blk.group_start.size:  # one chunk per group
         return gram
     return segment_sums(gram, blk.chunk_group_start)
