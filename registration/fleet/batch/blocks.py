@@ -236,14 +236,31 @@ def _local_states(group_block: np.ndarray, group_state: np.ndarray, n_blocks: in
     return rank, local.reshape(n_blocks, -1)
 
 
-def _chunks(group_start: np.ndarray, n: int):
-    """Cut each group's plots into chunks of C plots: C, each plot's padded row, each group's first chunk.
+#: The cost of a chunk beyond that of its rows, in rows: a chunk's product is one call of a small
+#: matrix product, and a group of several chunks is summed afterwards.
+CHUNK_COST_ROWS = 4
+#: The largest chunk (plots).
+MAX_CHUNK = 32
 
-    C is the median group size, clipped to [1, 32]: the products of a chunk are one small dense
-    matrix product, and padding wastes fewer than C plots per group.
-    """
+
+def chunk_size(sizes: np.ndarray) -> int:
+    """The chunk size C (1 to MAX_CHUNK) for groups of ``sizes`` plots that makes the fewest padded
+    rows plus CHUNK_COST_ROWS per chunk (a group of s plots takes ceil(s / C) chunks of C rows)."""
+    if sizes.size == 0:
+        return 1
+    counts = np.bincount(sizes)  # groups of each size
+    size = np.flatnonzero(counts)
+    C = np.arange(1, MAX_CHUNK + 1)
+    chunks = (-(-size[None, :] // C[:, None]) * counts[size]).sum(axis=1)
+    return int(C[np.argmin(chunks * (C + CHUNK_COST_ROWS))])
+
+
+def _chunks(group_start: np.ndarray, n: int):
+    """Cut each group's plots into chunks of C plots (:func:`chunk_size`): C, each plot's padded
+    row, each group's first chunk. The products of a chunk are one small dense matrix product;
+    padding wastes fewer than C plots per group."""
     sizes = np.diff(np.r_[group_start, n])
-    size = int(np.clip(np.median(sizes), 1, 32)) if sizes.size else 1
+    size = chunk_size(sizes)
     per_group = -(-sizes // size)
     chunk_group_start = np.r_[0, np.cumsum(per_group)[:-1]]
     group_of = np.repeat(np.arange(sizes.size), sizes)
