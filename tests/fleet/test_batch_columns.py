@@ -15,12 +15,12 @@ from registration.fleet.batch import blocks as blocks_module
 from registration.fleet.batch import schur
 from registration.fleet.batch.blocks import (
     CHUNK_COST_ROWS,
+    ECC3_COLUMNS,
     MAX_CHUNK,
     chunk_size,
     make_blocks,
     used_state_columns,
 )
-from registration.fleet.batch.normal import ECC3_COLUMNS
 from registration.fleet.batch.schur import super_blocks
 from registration.fleet.batch.segments import segment_sums
 from registration.fleet.batch.solver import BatchOptions, determined_design

@@ -26,12 +26,15 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.polynomial import legendre
 
+from registration.fleet.data.layout import ATTITUDE_COLUMNS, BIAS_COLUMNS, ECCENTRICITY_COLUMNS
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = [
     "Blocks",
     "make_blocks",
     "used_state_columns",
+    "row_columns",
+    "ECC3_COLUMNS",
     "legendre_basis",
     "legendre_basis_rate",
     "target_spans",
@@ -39,6 +42,9 @@ __all__ = [
     "window_of",
 ]
 
+#: The columns of layout.sensor_states of the eccentric rows without the extended errors
+#: (``fleet_rows_ecc3_<n>``): the attitude errors, the biases and the eccentricity terms.
+ECC3_COLUMNS = np.r_[ATTITUDE_COLUMNS, BIAS_COLUMNS, ECCENTRICITY_COLUMNS]
 #: Two reference/plot times closer than this (s) are the same instant (window_s = 0).
 SAME_INSTANT_S = 1e-6
 
@@ -87,9 +93,12 @@ class Blocks:
     # states after the groups' in local_state, coupled to every block through the references (the
     # flight levels' height offset): 0 or 1
     extra_states: int = 0
-    # (w,) the columns of layout.sensor_states that some sensor has a state in (the others hold
-    # only the sink: their Jacobian columns are left out of the sums); None: all of them
+    # (w,) the columns of layout.sensor_states that the generated rows hold (ECC3_COLUMNS: the
+    # eccentric rows without the extended errors); None: all of them
     state_columns: np.ndarray | None = None
+    # the columns of group_state that some sensor has a state in, the only ones coupled to the
+    # blocks in the Schur complement (Normal.W, local_state; the others hold only the sink); None: all
+    coupled: np.ndarray | None = None
 
     @property
     def n_blocks(self) -> int:
@@ -101,9 +110,14 @@ class Blocks:
 
     @property
     def width(self) -> int:
-        """States per group (6, or 11 with the extended errors, 13 with the eccentricity; fewer
-        by the columns no sensor has a state in)."""
+        """States per group in the rows (6, or 11 with the extended errors, 13 with the
+        eccentricity, 8 with the eccentricity alone)."""
         return int(self.group_state.shape[1])
+
+    @property
+    def coupled_width(self) -> int:
+        """States per group coupled to the blocks (``width`` without the sink-only columns)."""
+        return self.width if self.coupled is None else int(self.coupled.size)
 
     def basis_at(self, block: np.ndarray, time: np.ndarray) -> np.ndarray:
         """(M, n_coef) masked basis values of times ``time`` (s) in blocks ``block``."""
@@ -279,6 +293,21 @@ def used_state_columns(problem: FleetProblem) -> np.ndarray | None:
     return None if used.size == every.shape[1] else used
 
 
+def row_columns(problem: FleetProblem) -> tuple[np.ndarray | None, np.ndarray | None]:
+    """(Blocks.state_columns, Blocks.coupled) of ``problem``: the rows without the extended errors
+    (ECC3_COLUMNS) when some sensor has an eccentricity and none has an extended error, and the
+    columns among the rows' that some sensor has a state in (:func:`used_state_columns`)."""
+    used = used_state_columns(problem)
+    if used is None:
+        return None, None
+    rows = None
+    if problem.layout.eccentric and np.isin(used, ECC3_COLUMNS).all():
+        rows = ECC3_COLUMNS
+    held = np.arange(problem.layout.width) if rows is None else rows
+    coupled = np.searchsorted(held, used)
+    return rows, None if coupled.size == held.size else coupled
+
+
 def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) -> Blocks:
     """The block structure of ``problem`` for windows of ``window_s`` s and polynomials of ``degree``.
     ``span``: (first, last) time (s) per target of ``problem.target_ids`` to cut the windows from
@@ -293,7 +322,7 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) 
     group_start = np.flatnonzero(change)
     group_block, group_sensor = block_sorted[group_start], sensor_sorted[group_start]
     layout = problem.layout
-    columns = used_state_columns(problem)
+    columns, coupled = row_columns(problem)
     group_state = layout.sensor_states(group_sensor, problem.sensor_platform)
     if columns is not None:
         group_state = group_state[:, columns]
@@ -301,7 +330,9 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) 
     coef_mask = np.arange(n_coef)[None, :] <= b_degree[:, None]
     tau = (problem.time[order] - centre[block_sorted]) / half[block_sorted]
     basis = legendre_basis(tau, n_coef) * coef_mask[block_sorted]
-    rank, local_state = _local_states(group_block, group_state, n_blocks, layout.n)
+    rank, local_state = _local_states(
+        group_block, group_state if coupled is None else group_state[:, coupled], n_blocks, layout.n
+    )
     extra = int(layout.height_offset_index >= 0)
     if extra:  # the height offset, coupled to each block by its flight-level heights (Normal.H)
         local_state = np.column_stack([local_state, np.full(n_blocks, layout.height_offset_index)])
@@ -339,4 +370,5 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) 
         block_pattern=inverse.reshape(-1),
         extra_states=extra,
         state_columns=columns,
+        coupled=coupled,
     )

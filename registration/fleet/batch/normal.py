@@ -86,8 +86,6 @@ class Evaluation:
     cost: float  # sum of squares of every whitened residual, references, surface heights and priors included
     e_surface: np.ndarray = field(default_factory=lambda: np.zeros(0))
     surface_whiten: np.ndarray = field(default_factory=lambda: np.zeros((0, 1, 3)))
-    # the columns of layout.sensor_states that Z's state columns are (ECC3_COLUMNS); None: all
-    columns: np.ndarray | None = None
 
     @property
     def e(self) -> np.ndarray:
@@ -118,19 +116,6 @@ def _seen(design: Design, time_bias: np.ndarray) -> tuple:
     value = (*design.blocks.basis_and_rate_at(design.block, t_seen), nav, rate, outside)
     design.seen_cache.update(key=time_bias, value=value)
     return value
-
-
-#: The columns of layout.sensor_states of the eccentric rows without the extended errors
-#: (``fleet_rows_ecc3_<n>``): the attitude errors, the biases and the eccentricity terms.
-ECC3_COLUMNS = np.r_[ATTITUDE_COLUMNS, BIAS_COLUMNS, ECCENTRICITY_COLUMNS]
-
-
-def _eccentric_only(design: Design) -> bool:
-    """True when some sensor has an eccentricity and none has an extended error: the states used
-    (Blocks.state_columns) are all among ECC3_COLUMNS."""
-    used = design.blocks.state_columns
-    eccentric = design.state.shape[1] > ECCENTRICITY_COLUMNS.start
-    return eccentric and used is not None and bool(np.isin(used, ECC3_COLUMNS).all())
 
 
 def _eccentric_rows(design: Design, xs: np.ndarray, coef: np.ndarray) -> np.ndarray:
@@ -187,9 +172,8 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
     all plots."""
     blk = design.blocks
     xs = np.append(x, 0.0)
-    columns = None
-    if design.extended and _eccentric_only(design):
-        rows_t, columns = _eccentric_rows(design, xs, coef), ECC3_COLUMNS
+    if blk.state_columns is not None:  # the eccentricity without the extended errors
+        rows_t = _eccentric_rows(design, xs, coef)
     elif design.extended:
         rows_t = _extended_rows(design, xs, coef)
     else:
@@ -217,7 +201,7 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
     cost = float(np.sum(e * e) + np.sum(e_ref * e_ref) + np.sum(prior * prior))
     surf = design.surface
     if surf is None:
-        return Evaluation(x, coef, Z, e_ref, cost, columns=columns)
+        return Evaluation(x, coef, Z, e_ref, cost)
     residual, J = generated.surface_residual(
         p_ecef=positions(surf.basis, surf.block, coef), alt_surface=surf.alt
     )
@@ -230,7 +214,6 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
         cost + float(np.sum(e_surface * e_surface)),
         e_surface,
         -J * surf.weight[:, None, None],
-        columns,
     )
 
 
@@ -239,7 +222,7 @@ class Normal:
     """The normal equations in block form (module docstring)."""
 
     V: np.ndarray  # (B, q, q)
-    W: np.ndarray  # (G, q, w)
+    W: np.ndarray  # (G, q, w): over the coupled columns of the groups (Blocks.coupled)
     U: np.ndarray  # (n + 1, n + 1)
     b_c: np.ndarray  # (B, q)
     b_x: np.ndarray  # (n + 1,)
@@ -290,28 +273,13 @@ def _reference_terms(
             V[:, k, np.arange(3), m, np.arange(3)] += ref[:, None]
 
 
-def _used_columns(blk: Blocks, ev: Evaluation) -> np.ndarray | None:
-    """The columns of Evaluation.Z that the sums use, without the state columns that only the sink
-    holds (Blocks.state_columns); None: all of them."""
-    if blk.state_columns is None:
-        return None
-    n, q = ev.Z.shape[2], 3 * blk.n_coef
-    held = np.arange(n - q - 1) if ev.columns is None else ev.columns
-    if np.array_equal(held, blk.state_columns):
-        return None
-    return np.concatenate([np.arange(q), q + np.searchsorted(held, blk.state_columns), [n - 1]])
-
-
 def _chunk_products(design: Design, ev: Evaluation) -> np.ndarray:
-    """(G, m, m) sums over each group of Z^T Z (m = q + w + 1 columns of Evaluation.Z, the state
-    columns that only the sink holds left out: :func:`_used_columns`).
+    """(G, m, m) sums over each group of Z^T Z (m = q + w + 1 columns of Evaluation.Z).
 
     The rows are in chunks (Design), so each chunk's product is one small dense matrix product.
     """
     blk = design.blocks
-    keep = _used_columns(blk, ev)
-    Z = ev.Z if keep is None else np.take(ev.Z, keep, axis=2)
-    Z = Z.reshape(-1, 3 * blk.chunk_size, Z.shape[2])
+    Z = ev.Z.reshape(-1, 3 * blk.chunk_size, ev.Z.shape[2])
     gram = np.matmul(np.ascontiguousarray(Z.transpose(0, 2, 1)), Z)
     if gram.shape[0] == blk.group_start.size:  # one chunk per group
         return gram
@@ -339,7 +307,8 @@ def normal_equations(design: Design, ev: Evaluation) -> Normal:
     U[np.diag_indices(n1)] += pw**2
     b_x -= pw**2 * np.append(ev.x, 0.0)
     H = None if design.ref_offset_up is None else _offset_terms(design, ev, U, b_x)
-    return Normal(V, np.ascontiguousarray(G[:, :q, q : q + w]), U, b_c, b_x, H)
+    W = G[:, :q, q : q + w] if blk.coupled is None else G[:, :q, q + blk.coupled]  # sink-only left out
+    return Normal(V, np.ascontiguousarray(W), U, b_c, b_x, H)
 
 
 def _offset_terms(design: Design, ev: Evaluation, U: np.ndarray, b_x: np.ndarray) -> np.ndarray:

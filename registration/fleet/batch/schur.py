@@ -84,7 +84,7 @@ def reduce(blk: Blocks, normal: Normal, lam: float = 0.0) -> Reduced:
     Y = np.matmul(V_inv, W)
     y = np.matmul(V_inv, normal.b_c[:, :, None])[:, :, 0]
     n1 = normal.U.shape[0]
-    if blk.width > 6:
+    if blk.coupled_width > 6:
         WY, idx = _pattern_sums(blk, W, Y)
     else:
         WY = np.matmul(W.transpose(0, 2, 1), Y)  # (B, w g, w g)
