@@ -11,8 +11,11 @@ exactly invertible (``fleet_plot2ecef_ecc`` subtracts the same term at the same 
 ``fleet_residual_ecc`` has the inputs of ``fleet_residual_ext`` and ``ecc = [a, b]`` after the
 position error; its Jacobian has two more columns (d residual / d ecc = [0, -sin q, 0] and
 [0, -cos q, 0]). The rows functions ``fleet_rows_ecc_<n>`` have 13 state columns: the 11 of the
-extended model, then ``a`` and ``b``. The runtime uses this family only when some sensor has an
-eccentricity, so every run without one evaluates the extended or three-error functions as before.
+extended model, then ``a`` and ``b``; ``fleet_rows_ecc3_<n>`` hold the extended errors at 0 and
+have 8: the attitude errors, the biases, ``a`` and ``b`` (the rows of a run whose sensors have no
+extended error: the sums over the 5 columns that only the sink holds are not formed). The
+runtime uses these families only when some sensor has an eccentricity, so every run without one
+evaluates the extended or three-error functions as before.
 """
 
 import sympy as sp
@@ -27,7 +30,13 @@ from .fleet import (
     vec,
     wrap,
 )
-from .spec import FunctionSpec, JacobianDecl, Port, jacobian
+from .spec import CasadiPort, CasadiSpec, FunctionSpec, JacobianDecl, Port, jacobian
+
+#: The inputs of fleet_residual_ecc that its rows without the extended errors hold at 0.
+ECC3_HELD = ("dt", "v_ecef", "nav_rate", "gain", "pos_err")
+#: The state columns of those rows among the 16 columns of fleet_residual_ecc's J (p_ecef, att_err,
+#: bias, gain, dt, pos_err, ecc): the attitude errors, the biases and the eccentricity terms.
+ECC3_STATES = (3, 4, 5, 6, 7, 8, 14, 15)
 
 
 def specs() -> list:
@@ -117,4 +126,59 @@ def specs() -> list:
         outputs=(Port("p_ecef", p_target, "m"),),
         domain=domain,
     )
-    return [residual_spec, plot2ecef_spec, *[rows_spec(residual_spec, n, "ecc") for n in ROW_BASIS_SIZES]]
+    return [
+        residual_spec,
+        plot2ecef_spec,
+        *[rows_spec(residual_spec, n, "ecc") for n in ROW_BASIS_SIZES],
+        *[ecc3_rows_spec(residual_spec, n) for n in ROW_BASIS_SIZES],
+    ]
+
+
+def ecc3_rows_spec(residual_spec: FunctionSpec, n_basis: int) -> CasadiSpec:
+    """``fleet_rows_ecc3_<n_basis>``: the rows of ``fleet_residual_ecc`` (as ``rows_spec`` builds
+    them) with the extended errors held at 0 (ECC3_HELD) and 8 state columns (ECC3_STATES)."""
+    ports = [p for p in residual_spec.inputs if p.name not in ECC3_HELD]
+    inputs = tuple(CasadiPort(p.name, p.shape, p.unit) for p in ports) + (
+        CasadiPort("weight", (3, 1), "1/m, 1/rad, 1/rad"),
+        CasadiPort("basis", (n_basis, 1), "1"),
+    )
+    m = 3 * n_basis + len(ECC3_STATES) + 1
+    name = f"fleet_rows_ecc3_{n_basis}"
+
+    def build():
+        import casadi as ca
+
+        from .emit import to_casadi_function
+
+        residual = to_casadi_function(residual_spec)
+        args = [ca.SX.sym(p.name, *p.shape) for p in inputs]
+        given = {p.name: a for p, a in zip(inputs, args, strict=True)}
+        res, J, _ = residual(*[given.get(p.name, ca.SX.zeros(*p.shape)) for p in residual_spec.inputs])
+        w, basis = args[-2], args[-1]
+        A = ca.diag(w) @ J
+        Z = ca.horzcat(
+            *[basis[k] * A[:, 0:3] for k in range(n_basis)], *[A[:, c] for c in ECC3_STATES], w * res
+        )
+        return ca.Function(name, args, [Z.T], [p.name for p in inputs], ["rows_t"], {"cse": True})
+
+    domain = {
+        **residual_spec.domain,
+        "weight": [(0.0, 0.1), (0.0, 3000.0), (0.0, 3000.0)],
+        "basis": [(-1.0, 1.0)] * n_basis,
+    }
+    scalar = {p.name for p in ports if p.shape == (1, 1)}
+    return CasadiSpec(
+        name=name,
+        doc=(
+            f"Rows of the batch normal equations for one plot, polynomial basis of size {n_basis}, of "
+            f"{residual_spec.name} with the extended errors held at 0 (v_ecef, nav_rate, gain, dt, "
+            "pos_err): its other inputs, channel weights w = mask / sigma (1/m, 1/rad, 1/rad) and the "
+            f"basis values at the plot time. Output rows_t ({m}x3) = Z^T, Z = [basis^T (x) diag(w) J_p | "
+            "diag(w) J_x | w * residual], J_x over the 8 states (attitude errors, biases, eccentricity "
+            "sin and cos)."
+        ),
+        inputs=inputs,
+        outputs=(CasadiPort("rows_t", (m, 3), "1/m, 1/rad"),),
+        builder=build,
+        domain={k: v for k, v in domain.items() if k in {p.name for p in inputs} | scalar},
+    )

@@ -72,6 +72,10 @@ __all__ = [
     "fleet_rows_1",
     "FleetRows4Outputs",
     "fleet_rows_4",
+    "FleetRowsEcc31Outputs",
+    "fleet_rows_ecc3_1",
+    "FleetRowsEcc34Outputs",
+    "fleet_rows_ecc3_4",
     "FleetRowsEcc1Outputs",
     "fleet_rows_ecc_1",
     "FleetRowsEcc4Outputs",
@@ -1204,6 +1208,122 @@ def fleet_rows_4(
         p_ecef, lat, lon, alt, heading, pitch, roll, att_err, bias, lever_deck, r, q, e, weight, basis
     )
     return FleetRows4Outputs(*outputs)
+
+
+class FleetRowsEcc31Outputs(NamedTuple):
+    """The outputs of :func:`fleet_rows_ecc3_1`, by name."""
+
+    rows_t: Array
+    """(N, 12, 3) [1/m, 1/rad]"""
+
+
+def fleet_rows_ecc3_1(
+    *,
+    p_ecef: ArrayLike,
+    lat: ArrayLike,
+    lon: ArrayLike,
+    alt: ArrayLike,
+    heading: ArrayLike,
+    pitch: ArrayLike,
+    roll: ArrayLike,
+    att_err: ArrayLike,
+    bias: ArrayLike,
+    ecc: ArrayLike,
+    lever_deck: ArrayLike,
+    r: ArrayLike,
+    q: ArrayLike,
+    e: ArrayLike,
+    weight: ArrayLike,
+    basis: ArrayLike,
+) -> FleetRowsEcc31Outputs:
+    """Rows of the batch normal equations for one plot, polynomial basis of size 1, of fleet_residual_ecc with
+    the extended errors held at 0 (v_ecef, nav_rate, gain, dt, pos_err): its other inputs, channel weights
+    w = mask / sigma (1/m, 1/rad, 1/rad) and the basis values at the plot time. Output rows_t (12x3) = Z^T,
+    Z = [basis^T (x) diag(w) J_p | diag(w) J_x | w * residual], J_x over the 8 states (attitude errors,
+    biases, eccentricity sin and cos).
+
+    Inputs, each at this shape or with one more leading axis of N points:
+        p_ecef: (3,) [m]
+        lat: () [rad]
+        lon: () [rad]
+        alt: () [m]
+        heading: () [rad]
+        pitch: () [rad]
+        roll: () [rad]
+        att_err: (3,) [rad]
+        bias: (3,) [m, rad, rad]
+        ecc: (2,) [rad]
+        lever_deck: (3,) [m]
+        r: () [m]
+        q: () [rad]
+        e: () [rad]
+        weight: (3,) [1/m, 1/rad, 1/rad]
+        basis: () [1]
+    Outputs, over the N points (N = 1 when no input has the leading axis):
+        rows_t: (N, 12, 3) [1/m, 1/rad]
+    """
+    outputs = get("fleet_rows_ecc3_1")(
+        p_ecef, lat, lon, alt, heading, pitch, roll, att_err, bias, ecc, lever_deck, r, q, e, weight, basis
+    )
+    return FleetRowsEcc31Outputs(*outputs)
+
+
+class FleetRowsEcc34Outputs(NamedTuple):
+    """The outputs of :func:`fleet_rows_ecc3_4`, by name."""
+
+    rows_t: Array
+    """(N, 21, 3) [1/m, 1/rad]"""
+
+
+def fleet_rows_ecc3_4(
+    *,
+    p_ecef: ArrayLike,
+    lat: ArrayLike,
+    lon: ArrayLike,
+    alt: ArrayLike,
+    heading: ArrayLike,
+    pitch: ArrayLike,
+    roll: ArrayLike,
+    att_err: ArrayLike,
+    bias: ArrayLike,
+    ecc: ArrayLike,
+    lever_deck: ArrayLike,
+    r: ArrayLike,
+    q: ArrayLike,
+    e: ArrayLike,
+    weight: ArrayLike,
+    basis: ArrayLike,
+) -> FleetRowsEcc34Outputs:
+    """Rows of the batch normal equations for one plot, polynomial basis of size 4, of fleet_residual_ecc with
+    the extended errors held at 0 (v_ecef, nav_rate, gain, dt, pos_err): its other inputs, channel weights
+    w = mask / sigma (1/m, 1/rad, 1/rad) and the basis values at the plot time. Output rows_t (21x3) = Z^T,
+    Z = [basis^T (x) diag(w) J_p | diag(w) J_x | w * residual], J_x over the 8 states (attitude errors,
+    biases, eccentricity sin and cos).
+
+    Inputs, each at this shape or with one more leading axis of N points:
+        p_ecef: (3,) [m]
+        lat: () [rad]
+        lon: () [rad]
+        alt: () [m]
+        heading: () [rad]
+        pitch: () [rad]
+        roll: () [rad]
+        att_err: (3,) [rad]
+        bias: (3,) [m, rad, rad]
+        ecc: (2,) [rad]
+        lever_deck: (3,) [m]
+        r: () [m]
+        q: () [rad]
+        e: () [rad]
+        weight: (3,) [1/m, 1/rad, 1/rad]
+        basis: (4,) [1]
+    Outputs, over the N points (N = 1 when no input has the leading axis):
+        rows_t: (N, 21, 3) [1/m, 1/rad]
+    """
+    outputs = get("fleet_rows_ecc3_4")(
+        p_ecef, lat, lon, alt, heading, pitch, roll, att_err, bias, ecc, lever_deck, r, q, e, weight, basis
+    )
+    return FleetRowsEcc34Outputs(*outputs)
 
 
 class FleetRowsEcc1Outputs(NamedTuple):

@@ -222,10 +222,16 @@ def test_without_the_columns_no_new_function_is_evaluated(scenario, monkeypatch)
     solve_batch(
         build_problem(scenario.plots, sensors, scenario.navigation, scenario.platforms, scenario.references)
     )
-    assert called and not any(n.endswith("_ecc") or "_ecc_" in n for n in called)
+    assert called and not any("_ecc" in n for n in called)
     called.clear()
-    solve_batch(scenario.problem())
-    assert "fleet_rows_ecc_4" in called
+    solve_batch(scenario.problem())  # no extended errors: the eccentric rows without them
+    assert "fleet_rows_ecc3_4" in called and "fleet_rows_ecc_4" not in called
+    called.clear()
+    gains = _with(scenario.sensors, prior_range_gain=np.full(4, 1e-3))
+    solve_batch(
+        build_problem(scenario.plots, gains, scenario.navigation, scenario.platforms, scenario.references)
+    )
+    assert "fleet_rows_ecc_4" in called and "fleet_rows_ecc3_4" not in called
 
 
 def test_primary_only_plots_without_ids_are_associated(scenario):

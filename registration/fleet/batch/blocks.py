@@ -26,11 +26,15 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.polynomial import legendre
 
+from registration.fleet.data.layout import ATTITUDE_COLUMNS, BIAS_COLUMNS, ECCENTRICITY_COLUMNS
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = [
     "Blocks",
     "make_blocks",
+    "used_state_columns",
+    "row_columns",
+    "ECC3_COLUMNS",
     "legendre_basis",
     "legendre_basis_rate",
     "target_spans",
@@ -38,6 +42,9 @@ __all__ = [
     "window_of",
 ]
 
+#: The columns of layout.sensor_states of the eccentric rows without the extended errors
+#: (``fleet_rows_ecc3_<n>``): the attitude errors, the biases and the eccentricity terms.
+ECC3_COLUMNS = np.r_[ATTITUDE_COLUMNS, BIAS_COLUMNS, ECCENTRICITY_COLUMNS]
 #: Two reference/plot times closer than this (s) are the same instant (window_s = 0).
 SAME_INSTANT_S = 1e-6
 
@@ -71,7 +78,7 @@ class Blocks:
     group_start: np.ndarray  # (G,) first sorted plot of each (block, sensor) group
     group_block: np.ndarray  # (G,)
     group_sensor: np.ndarray  # (G,)
-    group_state: np.ndarray  # (G, w) state indices (layout.sensor_states); n_state = none
+    group_state: np.ndarray  # (G, w) state indices (layout.sensor_states, state_columns); n_state = none
     group_rank: np.ndarray  # (G,) position of the group among its block's groups
     local_state: np.ndarray  # (B, w max_groups) state indices of each block's groups (n = padding)
     group_block_start: np.ndarray  # (B,) first group of each block
@@ -82,10 +89,16 @@ class Blocks:
     ref_block: np.ndarray  # (R',)
     ref_basis: np.ndarray  # (R', n_coef)
     patterns: np.ndarray  # (K, w max_groups) the distinct rows of local_state
-    pattern_blocks: tuple  # (K,) the blocks of each pattern (index arrays)
+    block_pattern: np.ndarray  # (B,) the pattern (row of patterns) of each block
     # states after the groups' in local_state, coupled to every block through the references (the
     # flight levels' height offset): 0 or 1
     extra_states: int = 0
+    # (w,) the columns of layout.sensor_states that the generated rows hold (ECC3_COLUMNS: the
+    # eccentric rows without the extended errors); None: all of them
+    state_columns: np.ndarray | None = None
+    # the columns of group_state that some sensor has a state in, the only ones coupled to the
+    # blocks in the Schur complement (Normal.W, local_state; the others hold only the sink); None: all
+    coupled: np.ndarray | None = None
 
     @property
     def n_blocks(self) -> int:
@@ -97,8 +110,14 @@ class Blocks:
 
     @property
     def width(self) -> int:
-        """States per group (6, or 11 with the extended errors)."""
+        """States per group in the rows (6, or 11 with the extended errors, 13 with the
+        eccentricity, 8 with the eccentricity alone)."""
         return int(self.group_state.shape[1])
+
+    @property
+    def coupled_width(self) -> int:
+        """States per group coupled to the blocks (``width`` without the sink-only columns)."""
+        return self.width if self.coupled is None else int(self.coupled.size)
 
     def basis_at(self, block: np.ndarray, time: np.ndarray) -> np.ndarray:
         """(M, n_coef) masked basis values of times ``time`` (s) in blocks ``block``."""
@@ -231,20 +250,62 @@ def _local_states(group_block: np.ndarray, group_state: np.ndarray, n_blocks: in
     return rank, local.reshape(n_blocks, -1)
 
 
-def _chunks(group_start: np.ndarray, n: int):
-    """Cut each group's plots into chunks of C plots: C, each plot's padded row, each group's first chunk.
+#: The cost of a chunk beyond that of its rows, in rows: a chunk's product is one call of a small
+#: matrix product, and a group of several chunks is summed afterwards.
+CHUNK_COST_ROWS = 4
+#: The largest chunk (plots).
+MAX_CHUNK = 32
 
-    C is the median group size, clipped to [1, 32]: the products of a chunk are one small dense
-    matrix product, and padding wastes fewer than C plots per group.
-    """
+
+def chunk_size(sizes: np.ndarray) -> int:
+    """The chunk size C (1 to MAX_CHUNK) for groups of ``sizes`` plots that makes the fewest padded
+    rows plus CHUNK_COST_ROWS per chunk (a group of s plots takes ceil(s / C) chunks of C rows)."""
+    if sizes.size == 0:
+        return 1
+    counts = np.bincount(sizes)  # groups of each size
+    size = np.flatnonzero(counts)
+    C = np.arange(1, MAX_CHUNK + 1)
+    chunks = (-(-size[None, :] // C[:, None]) * counts[size]).sum(axis=1)
+    return int(C[np.argmin(chunks * (C + CHUNK_COST_ROWS))])
+
+
+def _chunks(group_start: np.ndarray, n: int):
+    """Cut each group's plots into chunks of C plots (:func:`chunk_size`): C, each plot's padded
+    row, each group's first chunk. The products of a chunk are one small dense matrix product;
+    padding wastes fewer than C plots per group."""
     sizes = np.diff(np.r_[group_start, n])
-    size = int(np.clip(np.median(sizes), 1, 32)) if sizes.size else 1
+    size = chunk_size(sizes)
     per_group = -(-sizes // size)
     chunk_group_start = np.r_[0, np.cumsum(per_group)[:-1]]
     group_of = np.repeat(np.arange(sizes.size), sizes)
     pos = np.arange(n) - group_start[group_of]
     slot = (chunk_group_start[group_of] + pos // size) * size + pos % size
     return size, slot, chunk_group_start
+
+
+def used_state_columns(problem: FleetProblem) -> np.ndarray | None:
+    """The columns of ``layout.sensor_states`` in which some sensor of ``problem`` has a state (the
+    eccentric model's extended columns hold only the sink when no sensor has extended errors);
+    None when every column has one."""
+    layout = problem.layout
+    every = layout.sensor_states(np.arange(len(problem.sensor_ids)), problem.sensor_platform)
+    used = np.flatnonzero((every != layout.n).any(axis=0))
+    return None if used.size == every.shape[1] else used
+
+
+def row_columns(problem: FleetProblem) -> tuple[np.ndarray | None, np.ndarray | None]:
+    """(Blocks.state_columns, Blocks.coupled) of ``problem``: the rows without the extended errors
+    (ECC3_COLUMNS) when some sensor has an eccentricity and none has an extended error, and the
+    columns among the rows' that some sensor has a state in (:func:`used_state_columns`)."""
+    used = used_state_columns(problem)
+    if used is None:
+        return None, None
+    rows = None
+    if problem.layout.eccentric and np.isin(used, ECC3_COLUMNS).all():
+        rows = ECC3_COLUMNS
+    held = np.arange(problem.layout.width) if rows is None else rows
+    coupled = np.searchsorted(held, used)
+    return rows, None if coupled.size == held.size else coupled
 
 
 def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) -> Blocks:
@@ -261,12 +322,17 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) 
     group_start = np.flatnonzero(change)
     group_block, group_sensor = block_sorted[group_start], sensor_sorted[group_start]
     layout = problem.layout
+    columns, coupled = row_columns(problem)
     group_state = layout.sensor_states(group_sensor, problem.sensor_platform)
+    if columns is not None:
+        group_state = group_state[:, columns]
     n_coef = 1 if degree == 0 else 4  # the basis sizes of the generated rows functions
     coef_mask = np.arange(n_coef)[None, :] <= b_degree[:, None]
     tau = (problem.time[order] - centre[block_sorted]) / half[block_sorted]
     basis = legendre_basis(tau, n_coef) * coef_mask[block_sorted]
-    rank, local_state = _local_states(group_block, group_state, n_blocks, layout.n)
+    rank, local_state = _local_states(
+        group_block, group_state if coupled is None else group_state[:, coupled], n_blocks, layout.n
+    )
     extra = int(layout.height_offset_index >= 0)
     if extra:  # the height offset, coupled to each block by its flight-level heights (Normal.H)
         local_state = np.column_stack([local_state, np.full(n_blocks, layout.height_offset_index)])
@@ -277,7 +343,6 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) 
     chunk_size, chunk_slot, chunk_group_start = _chunks(group_start, order.size)
     group_block_start = np.flatnonzero(np.r_[True, np.diff(group_block) != 0])
     patterns, inverse = np.unique(local_state, axis=0, return_inverse=True)
-    pattern_blocks = tuple(np.flatnonzero(inverse.reshape(-1) == k) for k in range(patterns.shape[0]))
     return Blocks(
         n_coef=n_coef,
         order=order,
@@ -302,6 +367,8 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) 
         ref_block=ref_block,
         ref_basis=ref_basis,
         patterns=patterns,
-        pattern_blocks=pattern_blocks,
+        block_pattern=inverse.reshape(-1),
         extra_states=extra,
+        state_columns=columns,
+        coupled=coupled,
     )

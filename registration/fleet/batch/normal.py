@@ -52,6 +52,7 @@ import numpy as np
 from registration._generated import api as generated
 from registration.fleet.batch.blocks import Blocks
 from registration.fleet.batch.design import Design, plot_model_inputs
+from registration.fleet.batch.segments import segment_sums
 from registration.fleet.data.layout import (
     ATTITUDE_COLUMNS,
     BIAS_COLUMNS,
@@ -72,7 +73,8 @@ def positions(basis: np.ndarray, block: np.ndarray, coef: np.ndarray) -> np.ndar
 @dataclass(frozen=True)
 class Evaluation:
     """At (x, coef): the whitened rows ``Z`` (rows, 3, q + w + 1) = [A_c | A_x | e] of every plot (A_c:
-    Jacobian w.r.t. its window's coefficients, A_x: w.r.t. its w states, e: whitened residual),
+    Jacobian w.r.t. its window's coefficients, A_x: w.r.t. the w states of the model's rows, e:
+    whitened residual),
     the whitened reference residuals ``e_ref`` (R', 3) (per ECEF axis; east, north, up with
     ``Design.ref_whiten``), the total sum of squares and, with surface targets, the whitened
     height residuals ``e_surface`` (S,) and their whitening rows ``surface_whiten`` (S, 1, 3) 1/m."""
@@ -116,6 +118,22 @@ def _seen(design: Design, time_bias: np.ndarray) -> tuple:
     return value
 
 
+def _eccentric_rows(design: Design, xs: np.ndarray, coef: np.ndarray) -> np.ndarray:
+    """(rows, 3 n_coef + 9, 3) rows of the eccentric model with the extended errors held at 0
+    (``fleet_rows_ecc3_<n_coef>``) at states ``xs`` (n + 1,, sink last)."""
+    state = design.state
+    known = plot_model_inputs(design.nav, design.lever, design.meas) | dict(
+        p_ecef=chunk_positions(design, design.basis, coef),
+        att_err=xs[state[:, ATTITUDE_COLUMNS]],
+        bias=xs[state[:, BIAS_COLUMNS]],
+        ecc=xs[state[:, ECCENTRICITY_COLUMNS]],
+        weight=design.weight,
+    )
+    if design.blocks.n_coef == 1:
+        return generated.fleet_rows_ecc3_1(**known, basis=design.basis[:, 0]).rows_t
+    return generated.fleet_rows_ecc3_4(**known, basis=design.basis).rows_t
+
+
 def _extended_rows(design: Design, xs: np.ndarray, coef: np.ndarray) -> np.ndarray:
     """(rows, 3 n_coef + 12 or 14, 3) rows of the extended (or eccentric) model at states ``xs``
     (n + 1,, sink last); a row seen outside its platform's navigation weighs 0 (module docstring)."""
@@ -154,7 +172,9 @@ def evaluate(design: Design, x: np.ndarray, coef: np.ndarray) -> Evaluation:
     all plots."""
     blk = design.blocks
     xs = np.append(x, 0.0)
-    if design.extended:
+    if blk.state_columns is not None:  # the eccentricity without the extended errors
+        rows_t = _eccentric_rows(design, xs, coef)
+    elif design.extended:
         rows_t = _extended_rows(design, xs, coef)
     else:
         p = positions(design.basis, design.block, coef)
@@ -202,7 +222,7 @@ class Normal:
     """The normal equations in block form (module docstring)."""
 
     V: np.ndarray  # (B, q, q)
-    W: np.ndarray  # (G, q, w)
+    W: np.ndarray  # (G, q, w): over the coupled columns of the groups (Blocks.coupled)
     U: np.ndarray  # (n + 1, n + 1)
     b_c: np.ndarray  # (B, q)
     b_x: np.ndarray  # (n + 1,)
@@ -263,7 +283,7 @@ def _chunk_products(design: Design, ev: Evaluation) -> np.ndarray:
     gram = np.matmul(np.ascontiguousarray(Z.transpose(0, 2, 1)), Z)
     if gram.shape[0] == blk.group_start.size:  # one chunk per group
         return gram
-    return np.add.reduceat(gram, blk.chunk_group_start, axis=0)
+    return segment_sums(gram, blk.chunk_group_start)
 
 
 def normal_equations(design: Design, ev: Evaluation) -> Normal:
@@ -271,7 +291,7 @@ def normal_equations(design: Design, ev: Evaluation) -> Normal:
     blk = design.blocks
     K, n1, q, w = blk.n_coef, design.n_state + 1, 3 * blk.n_coef, blk.width
     G = _chunk_products(design, ev)
-    V = np.add.reduceat(G[:, :q, :q], blk.group_block_start, axis=0)
+    V = segment_sums(G[:, :q, :q], blk.group_block_start)
     b_c = -np.add.reduceat(G[:, :q, -1], blk.group_block_start, axis=0)
     V5, b_c3 = V.reshape(-1, K, 3, K, 3), b_c.reshape(-1, K, 3)
     _reference_terms(blk, ev, design.ref_weight, V5, b_c3, design.ref_whiten)
@@ -287,7 +307,8 @@ def normal_equations(design: Design, ev: Evaluation) -> Normal:
     U[np.diag_indices(n1)] += pw**2
     b_x -= pw**2 * np.append(ev.x, 0.0)
     H = None if design.ref_offset_up is None else _offset_terms(design, ev, U, b_x)
-    return Normal(V, np.ascontiguousarray(G[:, :q, q : q + w]), U, b_c, b_x, H)
+    W = G[:, :q, q : q + w] if blk.coupled is None else G[:, :q, q + blk.coupled]  # sink-only left out
+    return Normal(V, np.ascontiguousarray(W), U, b_c, b_x, H)
 
 
 def _offset_terms(design: Design, ev: Evaluation, U: np.ndarray, b_x: np.ndarray) -> np.ndarray:

@@ -34,6 +34,7 @@ __all__ = [
     "reduce",
     "solve_reduced",
     "damped_step",
+    "super_blocks",
 ]
 
 
@@ -83,7 +84,7 @@ def reduce(blk: Blocks, normal: Normal, lam: float = 0.0) -> Reduced:
     Y = np.matmul(V_inv, W)
     y = np.matmul(V_inv, normal.b_c[:, :, None])[:, :, 0]
     n1 = normal.U.shape[0]
-    if blk.width > 6:
+    if blk.coupled_width > 6:
         WY, idx = _pattern_sums(blk, W, Y)
     else:
         WY = np.matmul(W.transpose(0, 2, 1), Y)  # (B, w g, w g)
@@ -98,18 +99,48 @@ def reduce(blk: Blocks, normal: Normal, lam: float = 0.0) -> Reduced:
 
 #: Above this many distinct patterns of states the blocks' products are scattered one by one.
 MAX_PATTERNS = 64
+#: Multiply-adds of one matrix product up to which OpenBLAS computes it on one thread (its
+#: GEMM_MULTITHREAD_THRESHOLD, 4 x 65536). Above it the product waits for threads on other cores:
+#: on a machine whose cores are busy with other work, the one product of a whole pattern took 50 to
+#: 100 times as long as the same sums in products below it.
+ONE_THREAD_PRODUCT = 4 * 65536
+
+
+def super_blocks(block_pattern: np.ndarray, n_patterns: int, k: int) -> tuple[np.ndarray, np.ndarray]:
+    """The blocks in pattern order, cut into *super-blocks* of ``k`` blocks of one pattern each:
+    (the block of each place (S k,), -1 where a pattern's last super-block is padded; the first
+    super-block of each pattern (n_patterns + 1,), the last entry S)."""
+    counts = np.bincount(block_pattern, minlength=n_patterns)
+    first = np.r_[0, np.cumsum(-(-counts // k))]
+    order = np.argsort(block_pattern, kind="stable")
+    pattern = block_pattern[order]
+    rank = np.arange(order.size) - np.r_[0, np.cumsum(counts)[:-1]][pattern]
+    place = np.full(first[-1] * k, -1, dtype=np.int64)
+    place[first[pattern] * k + rank] = order
+    return place, first
 
 
 def _pattern_sums(blk: Blocks, W: np.ndarray, Y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """(sum over the blocks of each pattern of W_b^T Y_b (K, L, L), the patterns' state indices
-    (K, L)): the blocks whose groups hold the same states side by side (Blocks.patterns) summed by
-    one (L x B q)(B q x L) product each, so the scatter into the states is per pattern, not per
-    block. Used with the extended errors (w = 11), where the per-block scatter of (11 g)^2 entries
-    dominated; the three-error path keeps its per-block sums (and so its results, bit for bit)."""
-    L = W.shape[2]
-    if blk.patterns.shape[0] > MAX_PATTERNS:
+    (K, L)): the blocks whose groups hold the same states side by side (Blocks.patterns) summed
+    before the scatter into the states, so that it is per pattern, not per block. Used with the
+    extended errors (w = 11) and the eccentricity, where the per-block scatter of (w g)^2 entries
+    dominated; the three-error path keeps its per-block sums (and so its results, bit for bit).
+
+    The blocks of a pattern are taken ``k`` at a time (:func:`super_blocks`): one (L x k q)(k q x L)
+    product each, with ``k`` as large as keeps a product on one thread (ONE_THREAD_PRODUCT) and
+    the padding under a quarter of the blocks."""
+    B, q, L = W.shape
+    K = blk.patterns.shape[0]
+    if K > MAX_PATTERNS:
         return np.matmul(W.transpose(0, 2, 1), Y), blk.local_state
-    WY = np.stack([W[m].reshape(-1, L).T @ Y[m].reshape(-1, L) for m in blk.pattern_blocks])
+    k = max(1, min(ONE_THREAD_PRODUCT // (L * L * q), B // (4 * K)))
+    place, first = super_blocks(blk.block_pattern, K, k)
+    pad = place < 0
+    Ws, Ys = W[place], Y[place]
+    Ws[pad], Ys[pad] = 0.0, 0.0
+    P = np.matmul(Ws.reshape(-1, k * q, L).transpose(0, 2, 1), Ys.reshape(-1, k * q, L))
+    WY = np.stack([P[a:b].sum(axis=0) for a, b in zip(first[:-1], first[1:], strict=True)])
     return WY, blk.patterns
 
 
