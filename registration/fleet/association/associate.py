@@ -111,7 +111,7 @@ def _single_plots_stage(
         reg.between,
         gap_s=options.reference_gap_s,
         accel_sigma=options.reference_accel_sigma,
-        fit=reg.labelled_fit() if reg.thinned else None,
+        fit=reg.labelled_fit() if reg.thinned else reg.cold_fit(reg.problem_solved),
         surface=problem.surface,
     )
     single = join_single_plots(reg, curves, labels, free, options)
@@ -165,8 +165,9 @@ def associate_and_register(
             reg.solve(given)
         conf = confirm_targets(problem, given, track_id, reg.x, reg.P, options, assigner, reg.register, bar)
         base = name_by_references(reg, conf.labels, given != "", options)
-        progress_status(bar, "registering the anchors")
-        reg.solve(base)
+        if not reg.solved(base):  # the anchors are more than the targets of the ids registered
+            progress_status(bar, "registering the anchors")
+            reg.solve(base)
         units = make_units(problem, track_id, base == "", reg.x, options, assigner)
         state = _start_joins(problem, units, joins)
         state, units, join_passes, joined_ok = join_units(reg, units, base, options, bar, state)
