@@ -165,9 +165,8 @@ def associate_and_register(
             reg.solve(given)
         conf = confirm_targets(problem, given, track_id, reg.x, reg.P, options, assigner, reg.register, bar)
         base = name_by_references(reg, conf.labels, given != "", options)
-        if not reg.solved(base):  # the anchors are more than the targets of the ids registered
-            progress_status(bar, "registering the anchors")
-            reg.solve(base)
+        progress_status(bar, "registering the anchors")
+        reg.solve(base)
         units = make_units(problem, track_id, base == "", reg.x, options, assigner)
         state = _start_joins(problem, units, joins)
         state, units, join_passes, joined_ok = join_units(reg, units, base, options, bar, state)

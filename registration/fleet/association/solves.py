@@ -158,11 +158,6 @@ class Registrar:
         self.labels, self.thinned, self._fit = np.array(lab, dtype=object), few is not lab, None
         return result
 
-    def solved(self, labels: np.ndarray) -> bool:
-        """True when the last solve registered exactly the plots labelled in ``labels`` (N,), with
-        those labels: solving them again would only restart from its estimate."""
-        return self.labels is not None and bool(np.array_equal(self.labels, np.asarray(labels, dtype=object)))
-
     def labelled_fit(self):
         """The windows of the last solve's targets fitted to all their plots (the problem the solve would
         have had without its subsample) under its estimate
