@@ -223,9 +223,12 @@ def _whitened_terms(
     at9 = (block[:, None] * 9 + np.arange(9)).reshape(-1)
     for k in range(K):
         b_c[:, k, :] += np.bincount(at3, (basis[:, k, None] * grad).reshape(-1), 3 * B).reshape(B, 3)
-        for m in range(K):
+        for m in range(k, K):  # the (m, k) term is the (k, m) one, number for number
             w = (basis[:, k] * basis[:, m])[:, None] * gram
-            V[:, k, :, m, :] += np.bincount(at9, w.reshape(-1), 9 * B).reshape(B, 3, 3)
+            term = np.bincount(at9, w.reshape(-1), 9 * B).reshape(B, 3, 3)
+            V[:, k, :, m, :] += term
+            if m != k:
+                V[:, m, :, k, :] += term
 
 
 def _reference_terms(
@@ -248,9 +251,11 @@ def _reference_terms(
     for k in range(K):
         for a in range(3):
             b_c[:, k, a] += np.bincount(blk.ref_block, blk.ref_basis[:, k] * ref_weight * ev.e_ref[:, a], B)
-        for m in range(K):
+        for m in range(k, K):  # the (m, k) term is the (k, m) one, number for number
             ref = np.bincount(blk.ref_block, blk.ref_basis[:, k] * blk.ref_basis[:, m] * w2, B)
             V[:, k, np.arange(3), m, np.arange(3)] += ref[:, None]
+            if m != k:
+                V[:, m, np.arange(3), k, np.arange(3)] += ref[:, None]
 
 
 def _chunk_products(design: Design, ev: Evaluation) -> np.ndarray:
@@ -263,7 +268,26 @@ def _chunk_products(design: Design, ev: Evaluation) -> np.ndarray:
     gram = np.matmul(np.ascontiguousarray(Z.transpose(0, 2, 1)), Z)
     if gram.shape[0] == blk.group_start.size:  # one chunk per group
         return gram
-    return np.add.reduceat(gram, blk.chunk_group_start, axis=0)
+    return _segment_sums(gram, blk.chunk_group_start)
+
+
+#: Chunks per group above which :func:`_segment_sums` leaves the sums to ``np.add.reduceat``.
+MAX_SEGMENT_ROUNDS = 16
+
+
+def _segment_sums(a: np.ndarray, starts: np.ndarray) -> np.ndarray:
+    """``np.add.reduceat(a, starts, axis=0)`` (``starts`` increasing from 0, no empty segment): each
+    segment's rows added in order, the k-th rows of all segments at once. reduceat's cost is per
+    segment, and most groups (a sensor in a window) hold one or two chunks: this costs a few array
+    operations per chunk of the longest group instead."""
+    length = np.diff(np.append(starts, a.shape[0]))
+    if length.max() > MAX_SEGMENT_ROUNDS:
+        return np.add.reduceat(a, starts, axis=0)
+    out = a[starts]
+    for k in range(1, int(length.max())):
+        more = np.flatnonzero(length > k)
+        out[more] += a[starts[more] + k]
+    return out
 
 
 def normal_equations(design: Design, ev: Evaluation) -> Normal:
