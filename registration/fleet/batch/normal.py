@@ -217,14 +217,18 @@ def _whitened_terms(
     ``basis`` (R, K) and whitening rows ``whiten`` (R, a, 3): ``V += basis_k basis_m L^T L``,
     ``b_c += basis_k L^T e``."""
     K, B = V.shape[1], V.shape[0]
-    gram = np.einsum("rai,raj->rij", whiten, whiten).reshape(-1, 9)  # L^T L
+    rows = np.ascontiguousarray(whiten.transpose(1, 2, 0))  # (a, 3, R)
+    gram = np.zeros((3, 3, block.size))  # L^T L, (3, 3, R): sums over a in order, as einsum's
+    for row in rows:
+        gram += row[:, None, :] * row[None, :, :]
+    gram = gram.reshape(9, -1)
     grad = np.einsum("rai,ra->ri", whiten, e)  # L^T e
     at3 = (block[:, None] * 3 + np.arange(3)).reshape(-1)
-    at9 = (block[:, None] * 9 + np.arange(9)).reshape(-1)
+    at9 = (block[None, :] * 9 + np.arange(9)[:, None]).reshape(-1)  # gram's order; each bin's terms by r
     for k in range(K):
         b_c[:, k, :] += np.bincount(at3, (basis[:, k, None] * grad).reshape(-1), 3 * B).reshape(B, 3)
         for m in range(k, K):  # the (m, k) term is the (k, m) one, number for number
-            w = (basis[:, k] * basis[:, m])[:, None] * gram
+            w = (basis[:, k] * basis[:, m])[None, :] * gram
             term = np.bincount(at9, w.reshape(-1), 9 * B).reshape(B, 3, 3)
             V[:, k, :, m, :] += term
             if m != k:
