@@ -272,25 +272,31 @@ def _chunk_products(design: Design, ev: Evaluation) -> np.ndarray:
     gram = np.matmul(np.ascontiguousarray(Z.transpose(0, 2, 1)), Z)
     if gram.shape[0] == blk.group_start.size:  # one chunk per group
         return gram
-    return _segment_sums(gram, blk.chunk_group_start)
+    return segment_sums(gram, blk.chunk_group_start)
 
 
-#: Chunks per group above which :func:`_segment_sums` leaves the sums to ``np.add.reduceat``.
-MAX_SEGMENT_ROUNDS = 16
+#: Rows per segment up to which :func:`segment_sums` adds them itself (longer: ``np.add.reduceat``,
+#: which then sums a segment's rows after its first pairwise).
+MAX_SEGMENT_ROWS = 8
 
 
-def _segment_sums(a: np.ndarray, starts: np.ndarray) -> np.ndarray:
-    """``np.add.reduceat(a, starts, axis=0)`` (``starts`` increasing from 0, no empty segment): each
-    segment's rows added in order, the k-th rows of all segments at once. reduceat's cost is per
-    segment, and most groups (a sensor in a window) hold one or two chunks: this costs a few array
-    operations per chunk of the longest group instead."""
+def segment_sums(a: np.ndarray, starts: np.ndarray) -> np.ndarray:
+    """``np.add.reduceat(a, starts, axis=0)`` for ``starts`` increasing from 0, the same numbers bit
+    for bit: each segment's first row plus the sum, in order, of its other rows (as reduceat adds
+    them), the k-th rows of all segments at once. reduceat's cost is per segment, and most groups
+    (a sensor in a window) hold one or two chunks, most windows two or three groups: this costs a
+    few array operations per row of the longest segment instead."""
     length = np.diff(np.append(starts, a.shape[0]))
-    if length.max() > MAX_SEGMENT_ROUNDS:
+    if length.size == 0 or length.max() > MAX_SEGMENT_ROWS:
         return np.add.reduceat(a, starts, axis=0)
     out = a[starts]
-    for k in range(1, int(length.max())):
-        more = np.flatnonzero(length > k)
-        out[more] += a[starts[more] + k]
+    more = np.flatnonzero(length > 1)
+    if more.size:
+        tail = a[starts[more] + 1]
+        for k in range(2, int(length.max())):
+            longer = np.flatnonzero(length[more] > k)
+            tail[longer] += a[starts[more[longer]] + k]
+        out[more] += tail
     return out
 
 
@@ -299,8 +305,8 @@ def normal_equations(design: Design, ev: Evaluation) -> Normal:
     blk = design.blocks
     K, n1, q, w = blk.n_coef, design.n_state + 1, 3 * blk.n_coef, blk.width
     G = _chunk_products(design, ev)
-    V = np.add.reduceat(G[:, :q, :q], blk.group_block_start, axis=0)
-    b_c = -np.add.reduceat(G[:, :q, -1], blk.group_block_start, axis=0)
+    V = segment_sums(G[:, :q, :q], blk.group_block_start)
+    b_c = -segment_sums(G[:, :q, -1], blk.group_block_start)
     V5, b_c3 = V.reshape(-1, K, 3, K, 3), b_c.reshape(-1, K, 3)
     _reference_terms(blk, ev, design.ref_weight, V5, b_c3, design.ref_whiten)
     if design.surface is not None:
