@@ -218,10 +218,10 @@ def _whitened_terms(
     ``b_c += basis_k L^T e``."""
     K, B = V.shape[1], V.shape[0]
     rows = np.ascontiguousarray(whiten.transpose(1, 2, 0))  # (a, 3, R)
-    gram = np.zeros((3, 3, block.size))  # L^T L, (3, 3, R): sums over a in order, as einsum's
+    products = np.zeros((3, 3, block.size))  # L^T L, (3, 3, R): sums over a in order, as einsum's
     for row in rows:
-        gram += row[:, None, :] * row[None, :, :]
-    gram = gram.reshape(9, -1)
+        products += row[:, None, :] * row[None, :, :]
+    gram = products.reshape(9, -1)
     grad = np.einsum("rai,ra->ri", whiten, e)  # L^T e
     at3 = (block[:, None] * 3 + np.arange(3)).reshape(-1)
     at9 = (block[None, :] * 9 + np.arange(9)[:, None]).reshape(-1)  # gram's order; each bin's terms by r

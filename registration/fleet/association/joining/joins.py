@@ -193,9 +193,9 @@ def _label_verified(
     # a position-fixing sensor's plots fix the target themselves: its whole track is the target's,
     # the part outside the target's span extends it (those plots are checked once registered)
     fixing = fixing_sensors(problem)
-    order, start = unit_plots(units.of_plot, units.n)
+    order, bound = unit_plots(units.of_plot, units.n)
     extra = [
-        np.setdiff1d(order[start[u] : start[u + 1]], p) if fixing[units.sensor[u]] else np.zeros(0, dtype=int)
+        np.setdiff1d(order[bound[u] : bound[u + 1]], p) if fixing[units.sensor[u]] else np.zeros(0, dtype=int)
         for (u, _, _), p in zip(taken, plots)
     ]
     u_rep = np.concatenate([np.full(p.size, u) for (u, _, _), p in zip(taken, plots)])
