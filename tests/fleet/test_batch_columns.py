@@ -28,16 +28,14 @@ from registration.fleet.simulation.channels import atc_channel_scenario
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2])
-def test_segment_sums_are_reduceat_and_add_first_to_last(seed):
+def test_segment_sums_are_reduceat_bit_for_bit(seed):
     rng = np.random.default_rng(seed)
     lengths = rng.integers(1, 7, size=40)
     starts = np.r_[0, np.cumsum(lengths)[:-1]]
     a = rng.normal(size=(int(lengths.sum()), 5, 4))
     for stack in (a, a[:, 1:4, :3]):  # contiguous and a strided view, as normal_equations passes
         got = segment_sums(stack, starts)
-        np.testing.assert_allclose(got, np.add.reduceat(stack, starts, axis=0), rtol=1e-13, atol=1e-13)
-        first_to_last = np.stack([np.cumsum(stack[s : s + n], axis=0)[-1] for s, n in zip(starts, lengths)])
-        np.testing.assert_array_equal(got, first_to_last)
+        np.testing.assert_array_equal(got, np.add.reduceat(stack, starts, axis=0))
     assert segment_sums(a, np.zeros(0, dtype=np.int64)).shape == (0, 5, 4)
 
 

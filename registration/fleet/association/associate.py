@@ -111,7 +111,7 @@ def _single_plots_stage(
         reg.between,
         gap_s=options.reference_gap_s,
         accel_sigma=options.reference_accel_sigma,
-        fit=reg.labelled_fit() if reg.thinned else None,
+        fit=reg.labelled_fit() if reg.thinned else reg.cold_fit(reg.problem_solved),
         surface=problem.surface,
     )
     single = join_single_plots(reg, curves, labels, free, options)

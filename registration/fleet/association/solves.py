@@ -119,6 +119,7 @@ class Registrar:
         self.thinned = False
         self._fit: WindowFit | None = None
         self._last_fit: WindowFit | None = None
+        self._cold: tuple | None = None
 
     def solve(self, labels: np.ndarray, subset: np.ndarray | None = None, final: bool = False):
         """Register the plots labelled in ``labels`` (N,; only those in ``subset`` (N,) bool if given)
@@ -171,6 +172,18 @@ class Registrar:
             )
             self._last_fit = self._fit
         return self._fit
+
+    def cold_fit(self, problem: FleetProblem | None) -> WindowFit:
+        """:func:`~registration.fleet.association.joining.windowfit.fit_windows` of ``problem`` (labelled
+        plots; None: none) under the latest estimate, from the plots' means; kept while the estimate
+        and the problem's plots and targets stay the same (the join passes' curves and the single
+        plots' curves often fit the same targets under the same estimate)."""
+        if problem is None:
+            return fit_windows(None, self.x, self.between)
+        key = (self.solves, problem.target_ids, problem.row.tobytes(), problem.target.tobytes())
+        if self._cold is None or self._cold[0] != key:
+            self._cold = (key, fit_windows(problem, self.x, self.between))
+        return self._cold[1]
 
     def plot_residuals(self) -> np.ndarray:
         """(N, 3) normalised residuals of the plots under the last solve (NaN where not measured, not

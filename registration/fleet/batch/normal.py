@@ -237,15 +237,22 @@ def _whitened_terms(
     ``basis`` (R, K) and whitening rows ``whiten`` (R, a, 3): ``V += basis_k basis_m L^T L``,
     ``b_c += basis_k L^T e``."""
     K, B = V.shape[1], V.shape[0]
-    gram = np.einsum("rai,raj->rij", whiten, whiten).reshape(-1, 9)  # L^T L
+    rows = np.ascontiguousarray(whiten.transpose(1, 2, 0))  # (a, 3, R)
+    products = np.zeros((3, 3, block.size))  # L^T L, (3, 3, R): sums over a in order, as einsum's
+    for row in rows:
+        products += row[:, None, :] * row[None, :, :]
+    gram = products.reshape(9, -1)
     grad = np.einsum("rai,ra->ri", whiten, e)  # L^T e
     at3 = (block[:, None] * 3 + np.arange(3)).reshape(-1)
-    at9 = (block[:, None] * 9 + np.arange(9)).reshape(-1)
+    at9 = (block[None, :] * 9 + np.arange(9)[:, None]).reshape(-1)  # gram's order; each bin's terms by r
     for k in range(K):
         b_c[:, k, :] += np.bincount(at3, (basis[:, k, None] * grad).reshape(-1), 3 * B).reshape(B, 3)
-        for m in range(K):
-            w = (basis[:, k] * basis[:, m])[:, None] * gram
-            V[:, k, :, m, :] += np.bincount(at9, w.reshape(-1), 9 * B).reshape(B, 3, 3)
+        for m in range(k, K):  # the (m, k) term is the (k, m) one, number for number
+            w = (basis[:, k] * basis[:, m])[None, :] * gram
+            term = np.bincount(at9, w.reshape(-1), 9 * B).reshape(B, 3, 3)
+            V[:, k, :, m, :] += term
+            if m != k:
+                V[:, m, :, k, :] += term
 
 
 def _reference_terms(
@@ -268,9 +275,11 @@ def _reference_terms(
     for k in range(K):
         for a in range(3):
             b_c[:, k, a] += np.bincount(blk.ref_block, blk.ref_basis[:, k] * ref_weight * ev.e_ref[:, a], B)
-        for m in range(K):
+        for m in range(k, K):  # the (m, k) term is the (k, m) one, number for number
             ref = np.bincount(blk.ref_block, blk.ref_basis[:, k] * blk.ref_basis[:, m] * w2, B)
             V[:, k, np.arange(3), m, np.arange(3)] += ref[:, None]
+            if m != k:
+                V[:, m, np.arange(3), k, np.arange(3)] += ref[:, None]
 
 
 def _chunk_products(design: Design, ev: Evaluation) -> np.ndarray:
@@ -292,7 +301,7 @@ def normal_equations(design: Design, ev: Evaluation) -> Normal:
     K, n1, q, w = blk.n_coef, design.n_state + 1, 3 * blk.n_coef, blk.width
     G = _chunk_products(design, ev)
     V = segment_sums(G[:, :q, :q], blk.group_block_start)
-    b_c = -np.add.reduceat(G[:, :q, -1], blk.group_block_start, axis=0)
+    b_c = -segment_sums(G[:, :q, -1], blk.group_block_start)
     V5, b_c3 = V.reshape(-1, K, 3, K, 3), b_c.reshape(-1, K, 3)
     _reference_terms(blk, ev, design.ref_weight, V5, b_c3, design.ref_whiten)
     if design.surface is not None:

@@ -22,7 +22,7 @@ from registration.fleet.association.grouping.tracks import sensor_tracks, track_
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.data.problem import FleetProblem
 
-__all__ = ["Units", "make_units", "split_units", "unit_conflicts"]
+__all__ = ["Units", "make_units", "split_units", "unit_conflicts", "unit_plots"]
 
 
 @dataclass(frozen=True)
@@ -46,6 +46,13 @@ class Units:
     @property
     def n(self) -> int:
         return int(self.sensor.size)
+
+
+def unit_plots(of_plot: np.ndarray, n_units: int) -> tuple[np.ndarray, np.ndarray]:
+    """(order (N,), start (U + 1,)): the plots of unit u, ascending, are ``order[start[u]:start[u + 1]]``
+    (``np.flatnonzero(of_plot == u)`` for all units in one sort; -1 is no unit)."""
+    order = np.argsort(of_plot, kind="stable")
+    return order, np.searchsorted(of_plot[order], np.arange(n_units + 1))
 
 
 def _pieces(key: np.ndarray, time: np.ndarray, breaks: np.ndarray) -> np.ndarray:
@@ -300,8 +307,9 @@ def split_units(
         list(v) for v in (units.sensor, units.name, units.t0, units.t1, units.given)
     )
     halves, notes = [], []
+    order, start = unit_plots(units.of_plot, units.n)  # the units of ``which`` are distinct
     for u in which:
-        plots = np.flatnonzero(of_plot == u)
+        plots = order[start[u] : start[u + 1]]
         t = problem.time[plots]
         cut = np.median(t)
         first = t <= cut

@@ -31,7 +31,7 @@ import numpy as np
 from registration.core.distributions import chi2_logsf, chi2_ppf
 from registration.core.progress import progress_status
 from registration.fleet.association.grouping.confirm import fixing_sensors, new_names
-from registration.fleet.association.grouping.units import Units, split_units, unit_conflicts
+from registration.fleet.association.grouping.units import Units, split_units, unit_conflicts, unit_plots
 from registration.fleet.association.joining.attach import (
     Pairs,
     candidate_plots,
@@ -186,14 +186,16 @@ def _label_verified(
     if not taken:
         return []
     problem = reg.problem
-    plots = [covered[j][units.of_plot[covered[j]] == u] for u, j, _ in taken]
+    plots = []
+    for u, j, _ in taken:  # a target's covered plots are in the order of their units
+        lo, hi = np.searchsorted(units.of_plot[covered[j]], [u, u + 1])
+        plots.append(covered[j][lo:hi])
     # a position-fixing sensor's plots fix the target themselves: its whole track is the target's,
     # the part outside the target's span extends it (those plots are checked once registered)
     fixing = fixing_sensors(problem)
+    order, bound = unit_plots(units.of_plot, units.n)
     extra = [
-        np.setdiff1d(np.flatnonzero(units.of_plot == u), p)
-        if fixing[units.sensor[u]]
-        else np.zeros(0, dtype=int)
+        np.setdiff1d(order[bound[u] : bound[u + 1]], p) if fixing[units.sensor[u]] else np.zeros(0, dtype=int)
         for (u, _, _), p in zip(taken, plots)
     ]
     u_rep = np.concatenate([np.full(p.size, u) for (u, _, _), p in zip(taken, plots)])
@@ -241,10 +243,9 @@ def _provisional(units: Units, state: JoinState, problem, labels: np.ndarray, op
     which = np.flatnonzero(
         (state.target == "") & fixing[units.sensor] & (count >= 2 * options.min_join_plots)
     )
-    prov = np.full(problem.n_plots, "", dtype=object)
-    for u, name in zip(which, new_names(which.size, set(labels) | set(state.target))):
-        prov[units.of_plot == u] = name
-    return prov, which
+    name = np.full(units.n + 1, "", dtype=object)  # the last: no unit
+    name[which] = new_names(which.size, set(labels) | set(state.target))
+    return name[units.of_plot], which
 
 
 def _prescreen(
@@ -373,10 +374,12 @@ def join_units(
                 continue
         converged = True
         break
+    order, start = unit_plots(units.of_plot, units.n)
+    joined = set(state.target)
     for u in sources if sources is not None else []:  # provisional targets some track joined
-        name = prov[units.of_plot == u][0]
-        if name in set(state.target):
-            state.join(int(u), str(name), np.flatnonzero(units.of_plot == u), np.nan)
+        plots = order[start[u] : start[u + 1]]
+        if prov[plots[0]] in joined:
+            state.join(int(u), str(prov[plots[0]]), plots, np.nan)
     if deferred:
         reg.solve(registered_labels(base, state, prov))
         drop_failing(reg, state, units, base, prov, options)

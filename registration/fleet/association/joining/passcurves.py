@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from registration.fleet.association.joining.curves import Curves, anchor_curves
-from registration.fleet.association.joining.windowfit import WindowFit, fit_windows, join_fits
+from registration.fleet.association.joining.windowfit import WindowFit, join_fits
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.problems import labelled_problem
 from registration.fleet.association.solves import Registrar
@@ -72,4 +72,4 @@ def _fit_windows(reg: Registrar, lab: np.ndarray) -> WindowFit:
     problem = None
     if (lab != "").any():
         problem = labelled_problem(reg.problem, lab, reg.refs, reg.margin_s, keep_lone=True)
-    return fit_windows(problem, reg.x, reg.between)
+    return reg.cold_fit(problem)

@@ -1,0 +1,56 @@
+"""The batch normal equations' faster sums give the numbers of the plain numpy forms, bit for bit
+(the association's labels depend on them through every solve)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from registration.fleet.association.grouping.units import unit_plots
+from registration.fleet.batch.normal import _whitened_terms
+from registration.fleet.batch.segments import MAX_SEGMENT_ROWS, segment_sums
+
+
+@pytest.mark.parametrize("longest", [1, 2, 3, 5, MAX_SEGMENT_ROWS, MAX_SEGMENT_ROWS + 3])
+@pytest.mark.parametrize("width", [7, 24])
+def test_segment_sums_are_reduceat_bit_for_bit(longest, width):
+    rng = np.random.default_rng([longest, width])
+    length = rng.integers(1, longest + 1, size=300)
+    n = int(length.sum())
+    a = rng.normal(size=(n, width, width)) * 10.0 ** rng.integers(-8, 8, size=(n, 1, 1))
+    a[rng.random(a.shape) < 0.05] = -0.0  # signed zeros too
+    starts = np.r_[0, np.cumsum(length)[:-1]]
+    for view in (a, a[:, :5, :5], a[:, :5, -1]):  # and strided slices, as the normal equations take
+        want = np.add.reduceat(view, starts, axis=0)
+        got = segment_sums(view, starts)
+        assert np.array_equal(got, want) and np.array_equal(np.signbit(got), np.signbit(want))
+
+
+@pytest.mark.parametrize("a_rows", [1, 3])
+def test_whitened_terms_are_the_einsum_forms_bit_for_bit(a_rows):
+    rng = np.random.default_rng(a_rows)
+    R, B, K = 500, 40, 4
+    block = np.sort(rng.integers(0, B, size=R))
+    basis = rng.normal(size=(R, K))
+    whiten = rng.normal(size=(R, a_rows, 3)) * np.where(rng.random((R, a_rows, 3)) < 0.1, 0.0, 1.0)
+    e = rng.normal(size=(R, a_rows))
+    V, b_c = np.zeros((B, K, 3, K, 3)), np.zeros((B, K, 3))
+    _whitened_terms(block, basis, whiten, e, V, b_c)
+    gram = np.einsum("rai,raj->rij", whiten, whiten).reshape(-1, 9)
+    grad = np.einsum("rai,ra->ri", whiten, e)
+    at3 = (block[:, None] * 3 + np.arange(3)).reshape(-1)
+    at9 = (block[:, None] * 9 + np.arange(9)).reshape(-1)
+    V0, b0 = np.zeros_like(V), np.zeros_like(b_c)
+    for k in range(K):
+        b0[:, k, :] += np.bincount(at3, (basis[:, k, None] * grad).reshape(-1), 3 * B).reshape(B, 3)
+        for m in range(K):
+            w = (basis[:, k] * basis[:, m])[:, None] * gram
+            V0[:, k, :, m, :] += np.bincount(at9, w.reshape(-1), 9 * B).reshape(B, 3, 3)
+    assert np.array_equal(V, V0) and np.array_equal(b_c, b0)
+
+
+def test_unit_plots_are_each_units_plots_in_order():
+    of_plot = np.random.default_rng(3).integers(-1, 50, size=2000)
+    order, start = unit_plots(of_plot, 52)  # two units without plots at the end
+    for u in range(52):
+        assert np.array_equal(order[start[u] : start[u + 1]], np.flatnonzero(of_plot == u))
