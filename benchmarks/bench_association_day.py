@@ -18,7 +18,8 @@ Runs, each ``python -m registration fleet register`` in its own process tree (pe
 of every process, ``VmHWM``, as ``bench_archive_workers.py`` reads it):
 
 * ``day``: the whole import with ``--memory-limit`` (default 2GiB): the run chooses the partitions
-  and associates them one by one. Printed: plots, the share without id, wall time, peak memory.
+  and associates them one by one (``--workers N``: on a local Dask cluster). Printed: plots, the
+  share without id, wall time, peak memory.
 * ``first_hours`` (``--compare-hours``, default 2): the first hours cut out of the import,
   registered in memory and with ``--partition-s`` (default 1800 s): the labels (associations.csv
   against labelled_plots/) and the estimates in units of the in-memory sigma.
@@ -147,6 +148,7 @@ def main(argv=None) -> dict:
     ap.add_argument("--hours", type=float, default=24.0)
     ap.add_argument("--aircraft", type=int, default=40, help="aircraft per hour")
     ap.add_argument("--memory-limit", default="2GiB")
+    ap.add_argument("--workers", type=int, help="the day's run on a local Dask cluster of N workers")
     ap.add_argument("--compare-hours", type=float, default=2.0)
     ap.add_argument("--partition-s", type=float, default=1800.0, help="of the first hours' run by parts")
     ap.add_argument("--cache", type=Path, help="keep the hourly recordings here and reuse them")
@@ -168,7 +170,10 @@ def main(argv=None) -> dict:
 
         target = pd.read_csv(tables / "plots.csv", usecols=["target"], dtype=str, keep_default_na=False)
         n, without = len(target), int((target["target"] == "").sum())
-        day = measure("day", tables, folder / "day", ["--memory-limit", args.memory_limit])
+        extra = ["--memory-limit", args.memory_limit]
+        day = measure(
+            "day", tables, folder / "day", extra + (["--workers", str(args.workers)] if args.workers else [])
+        )
         summary = json.loads((folder / "day" / "summary.json").read_text())
         figures = {
             "plots": n,
@@ -193,7 +198,8 @@ def main(argv=None) -> dict:
         f"{f['max_estimate_difference_sigma']:.3g} sigma of the run in memory (aim 0.1); "
         f"in memory {f['memory']['seconds']:.0f} s, by parts {f['parts']['seconds']:.0f} s"
     )
-    write("association_day", args, {"hours": args.hours, "aircraft": args.aircraft}, figures)
+    sizes = {"hours": args.hours, "aircraft": args.aircraft, "workers": args.workers}
+    write("association_day", args, sizes, figures)
     return figures
 
 
