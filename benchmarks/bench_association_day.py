@@ -156,7 +156,7 @@ def main(argv=None) -> dict:
     add_arguments(ap)
     args = ap.parse_args(argv)
     if args.tiny:
-        args.hours, args.aircraft, args.compare_hours, args.partition_s = 0.1, 8, 0.1, 120.0
+        args.hours, args.aircraft, args.compare_hours, args.partition_s = 0.05, 6, 0.05, 90.0
     import tempfile
 
     with tempfile.TemporaryDirectory(prefix="bench-association-day-") as temp:
