@@ -9,14 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-
-@lru_cache(maxsize=1)
-def all_specs():
-    """Every derive spec by name: the whole sympy derivation (about 16 s of CPU), so only in a test,
-    never while collecting (parametrize over :func:`emitted` instead)."""
-    from derive.registry import all_specs as _all
-
-    return {s.name: s for s in _all()}
+from tests import shared
 
 
 @lru_cache(maxsize=1)
@@ -51,8 +44,18 @@ def sample_inputs(spec, n: int, rng: np.random.Generator) -> list[np.ndarray]:
 
 
 @pytest.fixture(scope="session")
-def specs():
-    return all_specs()
+def derivation(tmp_path_factory) -> shared.Derivation:
+    """``python -m derive --check`` on this tree, run once for the session's test processes: its
+    exit code and output, its fresh generation of generated/ and the specs it derived."""
+    return shared.derivation(tmp_path_factory)
+
+
+@pytest.fixture(scope="session")
+def specs(derivation) -> dict:
+    """Every derive spec by name: the whole sympy derivation (about 16 s of CPU), made once per
+    session (:func:`derivation`), so only in a test, never while collecting (parametrize over
+    :func:`emitted` instead)."""
+    return derivation.specs()
 
 
 #: The files that take longest on one test process (20 s to over a minute each), run first: the two
