@@ -58,23 +58,30 @@ def specs(derivation) -> dict:
     return derivation.specs()
 
 
-#: The files that take longest on one test process (20 s to over a minute each), run first: the two
-#: processes take files one at a time, so a long file taken last leaves the other process idle.
+#: The files that take longest on one test process (30 s to two minutes each on the loaded 2-core
+#: machine), run first: the two processes take files one at a time, so a long file taken last leaves
+#: the other process idle. test_freshness.py makes the session's derivation (tests/shared.py) that
+#: the codegen tests, collected later, read.
 LONGEST_FIRST = (
-    "tests/benchmarks/test_benchmarks_tiny_slow.py",
     "tests/benchmarks/test_benchmarks_tiny.py",
+    "tests/benchmarks/test_benchmarks_tiny_slow.py",
     "tests/live/test_serve_nmea.py",
+    "tests/cli/test_fleet.py",
+    "tests/io/asterix/test_flight_levels.py",
+    "tests/live/test_estimator.py",
+    "tests/io/asterix/test_fuzz.py",
+    "tests/fleet/test_fuzz_tables.py",
+    "tests/codegen/test_freshness.py",
+    "tests/io/test_publication.py",
     "tests/test_lint.py",
     "tests/fleet/test_archive_spill.py",
-    "tests/fleet/test_fuzz_tables.py",
-    "tests/io/asterix/test_fuzz.py",
-    "tests/fleet/test_archive_flight_levels.py",
-    "tests/io/asterix/test_flight_levels.py",
-    "tests/codegen/test_freshness.py",
-    "tests/fleet/test_extended_montecarlo.py",
-    "tests/live/test_serve_both.py",
-    "tests/cli/test_fleet.py",
-    "tests/live/test_estimator.py",
+    "tests/io/test_import_cli.py",
+    "tests/recorded/test_register_outfolder.py",
+    "tests/io/test_acceptance_asterix.py",
+    "tests/io/test_fuzz_sites.py",
+    "tests/fleet/test_association_robust.py",
+    "tests/recorded/test_register.py",
+    "tests/live/test_serve.py",
 )
 
 
