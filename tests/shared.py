@@ -1,7 +1,8 @@
 """Work done once per test session and shared by the suite's test processes (pytest-xdist workers):
 each result is made by the first process that asks for it, under a file lock, in a folder of the
-session's temporary base that every worker of this session sees (and no other session does), and
-read from there by the others.
+session's temporary base that every worker of this session sees (and no other session does: pytest
+makes a new base per session, or empties the one --basetemp names), and read from there by the
+others.
 
 :func:`derivation` is one: ``python -m derive --check`` on this tree (the sympy derivation, about
 16 s of CPU), keeping its fresh generation and its specs for the codegen tests."""
@@ -12,6 +13,7 @@ import fcntl
 import json
 import os
 import pickle
+import shutil
 import subprocess
 import sys
 from contextlib import contextmanager
@@ -49,6 +51,7 @@ def once(folder: Path, name: str, make: Callable[[Path], None]) -> Path:
     with _locked(folder / f"{name}.lock"):
         if not done.exists():
             scratch = folder / f".{name}-{os.getpid()}"
+            shutil.rmtree(scratch, ignore_errors=True)  # what an earlier attempt that raised left
             scratch.mkdir()
             make(scratch)
             scratch.rename(done)
