@@ -9,14 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-
-@lru_cache(maxsize=1)
-def all_specs():
-    """Every derive spec by name: the whole sympy derivation (about 16 s of CPU), so only in a test,
-    never while collecting (parametrize over :func:`emitted` instead)."""
-    from derive.registry import all_specs as _all
-
-    return {s.name: s for s in _all()}
+from tests import shared
 
 
 @lru_cache(maxsize=1)
@@ -51,27 +44,44 @@ def sample_inputs(spec, n: int, rng: np.random.Generator) -> list[np.ndarray]:
 
 
 @pytest.fixture(scope="session")
-def specs():
-    return all_specs()
+def derivation(tmp_path_factory) -> shared.Derivation:
+    """``python -m derive --check`` on this tree, run once for the session's test processes: its
+    exit code and output, its fresh generation of generated/ and the specs it derived."""
+    return shared.derivation(tmp_path_factory)
 
 
-#: The files that take longest on one test process (20 s to over a minute each), run first: the two
-#: processes take files one at a time, so a long file taken last leaves the other process idle.
+@pytest.fixture(scope="session")
+def specs(derivation) -> dict:
+    """Every derive spec by name: the whole sympy derivation (about 16 s of CPU), made once per
+    session (:func:`derivation`), so only in a test, never while collecting (parametrize over
+    :func:`emitted` instead)."""
+    return derivation.specs()
+
+
+#: The files that take longest on one test process (30 s to two minutes each on the loaded 2-core
+#: machine), run first: the two processes take files one at a time, so a long file taken last leaves
+#: the other process idle. test_freshness.py makes the session's derivation (tests/shared.py) that
+#: the codegen tests, collected later, read.
 LONGEST_FIRST = (
-    "tests/benchmarks/test_benchmarks_tiny_slow.py",
     "tests/benchmarks/test_benchmarks_tiny.py",
+    "tests/benchmarks/test_benchmarks_tiny_slow.py",
     "tests/live/test_serve_nmea.py",
+    "tests/cli/test_fleet.py",
+    "tests/io/asterix/test_flight_levels.py",
+    "tests/live/test_estimator.py",
+    "tests/io/asterix/test_fuzz.py",
+    "tests/fleet/test_fuzz_tables.py",
+    "tests/codegen/test_freshness.py",
+    "tests/io/test_publication.py",
     "tests/test_lint.py",
     "tests/fleet/test_archive_spill.py",
-    "tests/fleet/test_fuzz_tables.py",
-    "tests/io/asterix/test_fuzz.py",
-    "tests/fleet/test_archive_flight_levels.py",
-    "tests/io/asterix/test_flight_levels.py",
-    "tests/codegen/test_freshness.py",
-    "tests/fleet/test_extended_montecarlo.py",
-    "tests/live/test_serve_both.py",
-    "tests/cli/test_fleet.py",
-    "tests/live/test_estimator.py",
+    "tests/io/test_import_cli.py",
+    "tests/recorded/test_register_outfolder.py",
+    "tests/io/test_acceptance_asterix.py",
+    "tests/io/test_fuzz_sites.py",
+    "tests/fleet/test_association_robust.py",
+    "tests/recorded/test_register.py",
+    "tests/live/test_serve.py",
 )
 
 

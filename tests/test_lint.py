@@ -35,7 +35,10 @@ def test_the_tree_is_formatted():
     assert done.returncode == 0, done.stdout + done.stderr
 
 
-def test_mypy_finds_nothing_in_the_package(tmp_path):
+def test_mypy_finds_nothing_in_the_package():
+    """mypy keeps its incremental cache where it does when run by hand (.mypy_cache, ignored by
+    git): a first run checks the whole package (about 22 s of CPU), a run after small changes
+    re-checks what they touch (about 3 s)."""
     pytest.importorskip("mypy", reason="mypy is in the test extra: pip install -e '.[test]'")
-    done = _run(sys.executable, "-m", "mypy", "--cache-dir", str(tmp_path / "mypy"))
+    done = _run(sys.executable, "-m", "mypy")
     assert done.returncode == 0, done.stdout + done.stderr

@@ -13,7 +13,7 @@ import pytest
 import sympy as sp
 
 from registration import _codegen
-from tests.conftest import all_specs, emitted, sample_inputs
+from tests.conftest import emitted, sample_inputs
 
 SCALE_FROM = {"Z": ("p_a_ecef", "p_b_ecef")}
 
@@ -34,8 +34,8 @@ def _sympy_eval(spec, inputs, n):
 
 
 @pytest.mark.parametrize("name", sorted(emitted()))
-def test_c_casadi_and_sympy_agree(name):
-    spec = all_specs()[name]
+def test_c_casadi_and_sympy_agree(name, specs):
+    spec = specs[name]
     n = 40
     inputs = sample_inputs(spec, n, np.random.default_rng(7))
     c_out = _codegen.GeneratedFunction(name, force_backend="c")(*inputs)
@@ -56,9 +56,9 @@ def test_c_casadi_and_sympy_agree(name):
             assert (np.abs(a - s) <= 1e-12 * scale).all(), f"{name}.{port.name}: C vs sympy"
 
 
-def test_vectorised_call_equals_pointwise_calls():
+def test_vectorised_call_equals_pointwise_calls(specs):
     fn = _codegen.get("plot2ecef_standard")
-    spec = all_specs()["plot2ecef_standard"]
+    spec = specs["plot2ecef_standard"]
     inputs = sample_inputs(spec, 5, np.random.default_rng(3))
     batch = fn(*inputs)[0]
     for i in range(5):
@@ -79,8 +79,8 @@ def test_mismatched_lengths_are_refused():
 
 
 @pytest.mark.parametrize("name", ["kalman_step_paper_standard", "deck2enu_jacobians", "cartesian2polar3"])
-def test_bound_single_point_call_equals_vectorised_call(name):
-    spec = all_specs()[name]
+def test_bound_single_point_call_equals_vectorised_call(name, specs):
+    spec = specs[name]
     inputs = sample_inputs(spec, 3, np.random.default_rng(11))
     fn = _codegen.get(name)
     bound = fn.bind()

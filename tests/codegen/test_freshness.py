@@ -1,6 +1,7 @@
 """generated/ is fresh, deterministic, and protected against tampering.
 
-One full regeneration per test run (``python -m derive --check --fresh``, a module fixture) serves
+One full regeneration per test session (``python -m derive --check --fresh``, the ``derivation``
+fixture of tests/conftest.py, shared with the codegen tests that need the derived specs) serves
 the freshness check and the determinism check; the stale-source test emits only the derive
 module it changes.
 """
@@ -36,12 +37,6 @@ def _derive_env(root: Path) -> dict:
     return dict(os.environ, PYTHONPATH=str(root), PYTHONHASHSEED="0")
 
 
-def _run_derive(args, cwd):
-    return subprocess.run(
-        [sys.executable, "-m", "derive", *args], cwd=cwd, capture_output=True, text=True, env=_derive_env(cwd)
-    )
-
-
 def _emit_modules(jobs: list[tuple[Path, str, Path]]) -> None:
     """Emit the specs of one derive module per job (derive root, module, output folder), in parallel
     subprocesses under the hash seed ``python -m derive`` uses."""
@@ -59,14 +54,6 @@ def _emit_modules(jobs: list[tuple[Path, str, Path]]) -> None:
     for proc in procs:
         _, err = proc.communicate()
         assert proc.returncode == 0, err
-
-
-@pytest.fixture(scope="module")
-def fresh_check(tmp_path_factory):
-    """``python -m derive --check`` on this tree, keeping its fresh generation: (process, folder)."""
-    fresh = tmp_path_factory.mktemp("fresh") / "generated"
-    proc = _run_derive(["--check", "--fresh", str(fresh)], REPO)
-    return proc, fresh
 
 
 def test_manifest_matches_derive_sources():
@@ -97,17 +84,16 @@ def test_manifest_records_tools_and_artifacts():
         assert b"DO NOT EDIT" in path.read_bytes()[:400]
 
 
-def test_full_check_passes_on_this_tree(fresh_check):
-    proc, fresh = fresh_check
-    assert proc.returncode == 0, proc.stdout + proc.stderr
-    assert "generated/ is fresh" in proc.stdout
-    assert (fresh / "manifest.json").exists()  # the fresh generation was kept for the tests below
+def test_full_check_passes_on_this_tree(derivation):
+    assert derivation.returncode == 0, derivation.stdout + derivation.stderr
+    assert "generated/ is fresh" in derivation.stdout
+    assert (derivation.fresh / "manifest.json").exists()  # the fresh generation was kept for the tests below
 
 
-def test_regeneration_is_deterministic(fresh_check):
+def test_regeneration_is_deterministic(derivation):
     """The checked-in generated/ was written by an earlier, independent run of ``python -m derive``:
     byte equality with the fixture's fresh run shows two runs give the same bytes."""
-    _, fresh = fresh_check
+    fresh = derivation.fresh
     files = sorted(p.name for p in fresh.iterdir() if p.is_file())
     assert "manifest.json" in files and len(files) > 2
     assert files == sorted(p.name for p in (REPO / "generated").iterdir() if p.is_file())

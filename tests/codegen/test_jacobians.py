@@ -28,7 +28,7 @@ import numpy as np
 import pytest
 
 from registration import _codegen
-from tests.conftest import all_specs, emitted, sample_inputs
+from tests.conftest import emitted, sample_inputs
 
 from ._edges import with_edges
 
@@ -115,8 +115,8 @@ def _port_scale(spec, decl, j_sym: np.ndarray) -> np.ndarray:
 
 
 @pytest.mark.parametrize("name,output", list(_jacobian_cases()))
-def test_jacobian_three_ways(name, output):
-    spec = all_specs()[name]
+def test_jacobian_three_ways(name, output, specs):
+    spec = specs[name]
     decl = next(d for d in spec.jacobians if d.output == output)
     rng = np.random.default_rng(12345)
     inputs = with_edges(spec, sample_inputs(spec, N_POINTS, rng), rng)
@@ -142,17 +142,17 @@ def test_jacobian_three_ways(name, output):
     )
 
 
-def test_every_spec_is_emitted():
+def test_every_spec_is_emitted(specs):
     """The names the tests are parametrized over (the manifest's) are the derive specs', with the
     same Jacobians."""
-    specs = {name: sorted(d.output for d in s.jacobians) for name, s in all_specs().items()}
+    derived = {name: sorted(d.output for d in s.jacobians) for name, s in specs.items()}
     recorded = {name: sorted(j["output"] for j in f["jacobians"]) for name, f in emitted().items()}
-    assert recorded == specs
+    assert recorded == derived
 
 
-def test_every_jacobian_is_declared():
+def test_every_jacobian_is_declared(specs):
     """The Jacobians the runtime relies on exist and are declared for checking."""
-    declared = {(s.name, d.output) for s in all_specs().values() for d in s.jacobians}
+    declared = {(s.name, d.output) for s in specs.values() for d in s.jacobians}
     for need in [
         ("deck2enu_jacobians", "Psi"),
         ("deck2enu_jacobians", "Gamma"),
@@ -170,9 +170,9 @@ def test_every_jacobian_is_declared():
         assert need in declared
 
 
-def test_a_wrong_jacobian_is_caught():
+def test_a_wrong_jacobian_is_caught(specs):
     """The check can fail: a Jacobian with one column sign-flipped is far outside tolerance."""
-    spec = all_specs()["deck2enu_jacobians"]
+    spec = specs["deck2enu_jacobians"]
     decl = spec.jacobians[0]
     rng = np.random.default_rng(1)
     inputs = sample_inputs(spec, 50, rng)
