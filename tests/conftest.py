@@ -67,6 +67,7 @@ LONGEST_FIRST = (
     "tests/benchmarks/test_benchmarks_tiny_slow.py",
     "tests/live/test_serve_nmea.py",
     "tests/cli/test_fleet.py",
+    "tests/fleet/test_association_partitioned.py",
     "tests/io/asterix/test_flight_levels.py",
     "tests/live/test_estimator.py",
     "tests/io/asterix/test_fuzz.py",
