@@ -431,10 +431,20 @@ def test_without_extended_columns_results_are_unchanged(baseline, monkeypatch):
     assert not any(_kind(n) in NEW_KINDS for n in result.layout.names)
     assert result.layout.width == 6
     golden = np.array([float.fromhex(h) for h in GOLDEN_ESTIMATE])
-    assert result.estimate.shape == golden.shape and np.allclose(
-        result.estimate, golden, rtol=1e-12, atol=0.0
-    ), "estimate differs from the pre-extension code's:\n" + "\n".join(
-        f"{n}: {a!r} vs {b!r}" for n, a, b in zip(result.layout.names, result.estimate, golden) if a != b
+    # The golden values are the pre-extension code's. Later speed work changed the order in
+    # which the normal equations are summed (segment sums, Schur super-blocks), which moves
+    # the estimate at the 1e-12 relative level, i.e. about 1e-10 of its sigma. A model change
+    # moves it by far more than the 1e-8 sigma allowed here.
+    # Fixed states (sigma 0) must be equal exactly.
+    moved = np.abs(result.estimate - golden)
+    moved_sigma = np.divide(moved, result.sigma, out=np.where(moved > 0, np.inf, 0.0), where=result.sigma > 0)
+    assert result.estimate.shape == golden.shape and np.all(moved_sigma < 1e-8), (
+        "estimate differs from the pre-extension code's:\n"
+        + "\n".join(
+            f"{n}: {a!r} vs {b!r} ({m:.2g} sigma)"
+            for n, a, b, m in zip(result.layout.names, result.estimate, golden, moved_sigma)
+            if m >= 1e-8
+        )
     )
     # and the extended generated functions are not even called
     called = []
