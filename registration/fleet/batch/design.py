@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 from numpy.polynomial import legendre
+from numpy.typing import ArrayLike
 
 from registration.core.frames import ecef2geodetic, enu2ecef_rotation
 from registration.fleet.batch.blocks import Blocks
@@ -91,8 +92,8 @@ def surface_rows(problem: FleetProblem, blocks: Blocks) -> SurfaceRows | None:
 class Design:
     """The problem's plots in padded rows, ready for evaluation.
 
-    Rows are the plots sorted by (block, sensor), each group's plots cut into chunks
-    (``blocks.chunks``, :mod:`registration.fleet.batch.chunks`) and padded with copies of a real
+    Rows are the plots of each group (a sensor in a block) cut into chunks, in the order of
+    ``blocks.chunks`` (:mod:`registration.fleet.batch.chunks`), and padded with copies of a real
     plot of weight zero (``real`` False), so the products of a chunk are one dense matrix product
     without any copying. ``slot`` (N,) is the row of each sorted plot; ``chunk_block`` the block of
     each chunk. A block's rows need not be adjacent (the chunks are in classes of one size): sum
@@ -138,11 +139,11 @@ class Design:
             return 3 * int(self.ref_p.shape[0])
         return int(np.count_nonzero(np.any(self.ref_whiten != 0.0, axis=2)))
 
-    def block_sums(self, values: np.ndarray) -> np.ndarray:
+    def block_sums(self, values: ArrayLike) -> np.ndarray:
         """(B, ...) sums over each block's plots of ``values`` (rows, ...) in the rows' order: the
         plots' in block order, so the sums are those over the blocks' rows when the rows were in
         block order (padding left out: it weighs 0 in every sum the solver takes)."""
-        return np.add.reduceat(values[self.slot], self.blocks.block_start, axis=0)
+        return np.add.reduceat(np.asarray(values)[self.slot], self.blocks.block_start, axis=0)
 
     @property
     def att_state(self) -> np.ndarray:

@@ -293,8 +293,9 @@ def _group_products(design: Design, ev: Evaluation) -> tuple[np.ndarray, np.ndar
     The rows are in chunks (Design), so each chunk's product is one small dense matrix product,
     those of a class of chunks (:mod:`registration.fleet.batch.chunks`) one batched product. When
     every group is one chunk the chunks' products are the groups' sums, left in the classes' order:
-    copying them into the groups' order would take a second stack of that size, whose fresh pages
-    cost more than the products (the sums below take their parts by row instead).
+    copying them into the groups' order takes a second stack as large, which cost as much as the
+    products themselves (a fresh allocation each time); the sums below take their parts by row
+    instead, as they copy them anyway.
     """
     chunks = design.blocks.chunks
     m = ev.Z.shape[2]
