@@ -26,6 +26,24 @@ def test_segment_sums_are_reduceat_bit_for_bit(longest, width):
         assert np.array_equal(got, want) and np.array_equal(np.signbit(got), np.signbit(want))
 
 
+@pytest.mark.parametrize("seed", [1, 2])
+def test_a_few_long_segments_among_short_ones_are_reduceat_bit_for_bit(seed):
+    """The long segments go through reduceat alone, the short ones through the fast path: the
+    numbers stay reduceat's on the whole stack, with and without an index."""
+    rng = np.random.default_rng(seed)
+    length = rng.integers(1, 4, size=400)
+    length[rng.choice(400, 5, replace=False)] = rng.integers(MAX_SEGMENT_ROWS + 1, 60, size=5)
+    n = int(length.sum())
+    a = rng.normal(size=(n, 9, 9)) * 10.0 ** rng.integers(-8, 8, size=(n, 1, 1))
+    starts = np.r_[0, np.cumsum(length)[:-1]]
+    index = rng.permutation(n)
+    for view in (a, a[:, :5, -1]):
+        assert np.array_equal(segment_sums(view, starts), np.add.reduceat(view, starts, axis=0))
+        want = np.add.reduceat(view[index], starts, axis=0)
+        assert np.array_equal(segment_sums(view, starts, index), want)
+    assert np.array_equal(segment_sums(a, starts[:1]), np.add.reduceat(a, starts[:1], axis=0))
+
+
 @pytest.mark.parametrize("a_rows", [1, 3])
 def test_whitened_terms_are_the_einsum_forms_bit_for_bit(a_rows):
     rng = np.random.default_rng(a_rows)

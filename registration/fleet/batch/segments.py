@@ -13,8 +13,8 @@ import numpy as np
 __all__ = ["MAX_SEGMENT_ROWS", "segment_sums"]
 
 
-#: Rows per segment up to which :func:`segment_sums` adds them itself (longer: ``np.add.reduceat``,
-#: which then sums a segment's rows after its first pairwise).
+#: Rows per segment up to which :func:`segment_sums` adds them itself (longer segments, and only
+#: those: ``np.add.reduceat`` over their rows).
 MAX_SEGMENT_ROWS = 8
 
 
@@ -33,12 +33,30 @@ def segment_sums(a: np.ndarray, starts: np.ndarray, index: np.ndarray | None = N
     if starts.size == 0:
         return a[starts]
     length = np.diff(np.append(starts, rows))
-    if length.max() > MAX_SEGMENT_ROWS:
-        return np.add.reduceat(a if index is None else a[index], starts, axis=0)
 
     def take(i: np.ndarray) -> np.ndarray:
         return a[i] if index is None else a[index[i]]
 
+    long = length > MAX_SEGMENT_ROWS
+    if not long.any():
+        return _short_sums(take, starts, length)
+    # The few long segments by reduceat over their own rows (a segment's sum does not depend on
+    # the others'), the many short ones as below: one long group no longer sends every other
+    # group to reduceat's per-segment loop.
+    out = np.empty((starts.size, *a.shape[1:]), dtype=a.dtype)
+    first, size = starts[long], length[long]
+    offset = np.r_[0, np.cumsum(size)[:-1]]
+    rows_long = np.repeat(first - offset, size) + np.arange(int(size.sum()))
+    out[long] = np.add.reduceat(take(rows_long), offset, axis=0)
+    short = ~long
+    if short.any():
+        out[short] = _short_sums(take, starts[short], length[short])
+    return out
+
+
+def _short_sums(take, starts: np.ndarray, length: np.ndarray) -> np.ndarray:
+    """The sums of the segments of ``length`` (S,) rows from ``starts`` (S,) (rows given by
+    ``take``), each its first row plus the sum, in order, of its other rows."""
     out = take(starts)
     more = np.flatnonzero(length > 1)
     if more.size:
