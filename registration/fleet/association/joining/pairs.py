@@ -66,6 +66,22 @@ def _masked(r: np.ndarray, D: np.ndarray, Sc: np.ndarray, keep: np.ndarray, vali
     return r, D, Sc
 
 
+def _drop_plots(r: np.ndarray, S: np.ndarray, keep: np.ndarray, valid: np.ndarray):
+    """:func:`_masked` applied after the product: (r, S) with ``S = Sc + D P D^T`` (changed in place)
+    of pairs with the plots not in ``keep`` taken out. A value of S between two plots kept does not
+    depend on the rows taken out, and those rows become the identity's either way, so S needs no
+    product again when plots are taken out (nor copies of D and Sc)."""
+    out = np.flatnonzero((valid & ~keep).any(axis=1))
+    if out.size == 0:
+        return r, S
+    rows = np.repeat(keep[out], 3, axis=1)
+    eye = np.where(rows, 0.0, 1.0)[:, :, None] * np.eye(rows.shape[1])
+    S[out] = np.where(rows[:, :, None] & rows[:, None, :], S[out], 0.0) + eye
+    r = r.copy()
+    r[out] = np.where(rows, r[out], 0.0)
+    return r, S
+
+
 def _deletion(S_chol: np.ndarray, r: np.ndarray, k: int) -> np.ndarray:
     """(c, k) for each plot, how much d^2 falls when it is taken out: ``z_i^T (Q_ii)^-1 z_i`` with
     ``Q = S^-1``, ``z = Q r`` and ``i`` the plot's three rows (chi-square with its channels under the
@@ -117,9 +133,10 @@ def evaluate(
         D0 = pairs.D[s]
         r0 = pairs.r[s] + D0 @ dx
         keep = keep_all[s].copy()
+        S = pairs.Sc[s] + D0 @ P @ np.swapaxes(D0, 1, 2)
         for it in range(max_trim + 1):
-            r, D, Sc = _masked(r0, D0, pairs.Sc[s], keep, pairs.plots[s] >= 0)
-            L = _cholesky(Sc + D @ P @ np.swapaxes(D, 1, 2))
+            r, S = _drop_plots(r0, S, keep, pairs.plots[s] >= 0)
+            L = _cholesky(S)
             y = np.linalg.solve(L, r[..., None])[..., 0]
             d2[s], logdet[s] = (
                 np.einsum("ki,ki->k", y, y),
