@@ -129,10 +129,12 @@ def choose_joins(
             trimmed[active] = keep
             hopeless = d2 > FAR_OFF * chi2_ppf(options.gate_probability, np.maximum(dof, 1))
             np.minimum.at(state.best, unit[active[hopeless]], d2[hopeless] / np.maximum(dof[hopeless], 1))
-            active = active[~hopeless]
+            # d2 is that of the plots kept, under this round's dx and Pk: the round's test
+            active, d2, keep, dof = (v[~hopeless] for v in (active, d2, keep, dof))
             if active.size == 0:
                 break
-        d2, _, keep, dof = evaluate(pairs.take(active), dx, Pk, keep=trimmed[active])
+        else:
+            d2, _, keep, dof = evaluate(pairs.take(active), dx, Pk, keep=trimmed[active])
         np.minimum.at(state.best, unit[active], d2 / np.maximum(dof, 1))
         passed = (dof > 0) & (d2 < chi2_ppf(options.gate_probability, np.maximum(dof, 1)))
         state.gated[unit[active[passed]]] = True
