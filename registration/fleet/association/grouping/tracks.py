@@ -90,66 +90,37 @@ def _solve3(L: tuple[np.ndarray, ...], b: np.ndarray) -> np.ndarray:
 
 
 class _Tracks:
-    """Tracks of all sensors in the order they were opened: sensor (K,), id (K,), state (K, 6),
-    covariance (K, 6, 6), time of the last plot (K,), scans missed in a row (K,), open (K,) bool.
-    Rows live in buffers grown by doubling; closed tracks stay (not open) until they are half the
-    rows, then are dropped in one copy (a step opens and closes a few tracks: copying every array
-    at every step cost more than the filter)."""
-
-    FIELDS = ("sensor", "id", "x", "P", "t", "missed", "open_")
+    """Open tracks of all sensors: sensor (K,), id (K,), state (K, 6), covariance (K, 6, 6),
+    time of the last plot (K,), scans missed in a row (K,)."""
 
     def __init__(self):
-        self.n, self.closed, self.next_id = 0, 0, 0
-        self.buf = self._buffers(64)
+        self.sensor = np.zeros(0, dtype=np.int64)
+        self.id = np.zeros(0, dtype=np.int64)
+        self.x = np.zeros((0, 6))
+        self.P = np.zeros((0, 6, 6))
+        self.t = np.zeros(0)
+        self.missed = np.zeros(0, dtype=np.int64)
+        self.next_id = 0
 
-    @staticmethod
-    def _buffers(size: int) -> dict:
-        return {
-            "sensor": np.zeros(size, dtype=np.int64),
-            "id": np.zeros(size, dtype=np.int64),
-            "x": np.zeros((size, 6)),
-            "P": np.zeros((size, 6, 6)),
-            "t": np.zeros(size),
-            "missed": np.zeros(size, dtype=np.int64),
-            "open_": np.zeros(size, dtype=bool),
-        }
-
-    def __getattr__(self, name: str) -> np.ndarray:  # the K rows of a field (a view)
-        if name in _Tracks.FIELDS:
-            return self.buf[name][: self.n]
-        raise AttributeError(name)
-
-    def close(self, sel: np.ndarray) -> None:
-        """Close the open tracks not in ``sel`` (K,) bool."""
-        self.open_[:] &= sel
-        self.closed = self.n - int(np.count_nonzero(self.open_))
-        if self.closed > max(self.n // 2, 32):
-            keep = np.flatnonzero(self.open_)
-            for name in _Tracks.FIELDS:
-                self.buf[name][: keep.size] = self.buf[name][keep]
-            self.n, self.closed = keep.size, 0
+    def keep(self, sel: np.ndarray) -> None:
+        for name in ("sensor", "id", "x", "P", "t", "missed"):
+            setattr(self, name, getattr(self, name)[sel])
 
     def open(
         self, sensor: np.ndarray, z: np.ndarray, R: np.ndarray, t: np.ndarray, max_speed: float
     ) -> np.ndarray:
-        k = sensor.size
-        ids = self.next_id + np.arange(k)
-        self.next_id += k
-        if self.n + k > self.buf["t"].size:
-            grown = self._buffers(2 * (self.n + k))
-            for name in _Tracks.FIELDS:
-                grown[name][: self.n] = self.buf[name][: self.n]
-            self.buf = grown
-        new = slice(self.n, self.n + k)
-        self.n += k
-        P = self.buf["P"][new]
-        P[:] = 0.0
+        n = sensor.size
+        ids = self.next_id + np.arange(n)
+        self.next_id += n
+        P = np.zeros((n, 6, 6))
         P[:, :3, :3] = R
         P[:, 3:, 3:] = max_speed**2 * np.eye(3)
-        x = self.buf["x"][new]
-        x[:, :3], x[:, 3:] = z, 0.0
-        self.buf["sensor"][new], self.buf["id"][new], self.buf["t"][new] = sensor, ids, t
-        self.buf["missed"][new], self.buf["open_"][new] = 0, True
+        self.sensor = np.r_[self.sensor, sensor]
+        self.id = np.r_[self.id, ids]
+        self.x = np.concatenate([self.x, np.concatenate([z, np.zeros((n, 3))], axis=1)])
+        self.P = np.concatenate([self.P, P])
+        self.t = np.r_[self.t, t]
+        self.missed = np.r_[self.missed, np.zeros(n, dtype=np.int64)]
         return ids
 
 
@@ -201,7 +172,7 @@ def _match_scan(
         matrix[r_idx, c_idx] = cost[~alone]
         col = assigner.assign(matrix, no_match[rows])
         ok = col >= 0
-        ti, pp = np.concatenate([ti, rows[ok]]), np.concatenate([pp, cols[col[ok]]])
+        ti, pp = np.r_[ti, rows[ok]], np.r_[pp, cols[col[ok]]]
     return live[ti], pp
 
 
@@ -241,7 +212,7 @@ def sensor_tracks(
     for idx, sen in _scan_steps(time, sensor):
         stepping = np.zeros(n_sensors, dtype=bool)
         stepping[sen] = True
-        live = np.flatnonzero(stepping[tracks.sensor] & tracks.open_)
+        live = np.flatnonzero(stepping[tracks.sensor])
         scan_time[sen] = time[idx]
         dt = scan_time[tracks.sensor[live]] - tracks.t[live]
         xp, Pp = _predict(tracks.x[live], tracks.P[live], dt, accel_sigma)
@@ -257,7 +228,7 @@ def sensor_tracks(
             fresh[pj] = False
         tracks.missed[live[missed]] += 1
         track[idx[fresh]] = tracks.open(sen[fresh], p[fresh], cov[fresh], time[idx[fresh]], max_speed)
-        tracks.close(tracks.missed <= max_missed)
+        tracks.keep(tracks.missed <= max_missed)
     ids, counts = np.unique(track, return_counts=True)
     track[np.isin(track, ids[counts < min_plots])] = -1
     return track
