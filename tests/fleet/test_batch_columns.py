@@ -13,14 +13,7 @@ from registration._generated import api as generated
 from registration.fleet import solve_batch
 from registration.fleet.batch import blocks as blocks_module
 from registration.fleet.batch import schur
-from registration.fleet.batch.blocks import (
-    CHUNK_COST_ROWS,
-    ECC3_COLUMNS,
-    MAX_CHUNK,
-    chunk_size,
-    make_blocks,
-    used_state_columns,
-)
+from registration.fleet.batch.blocks import ECC3_COLUMNS, make_blocks, used_state_columns
 from registration.fleet.batch.schur import super_blocks
 from registration.fleet.batch.segments import segment_sums
 from registration.fleet.batch.solver import BatchOptions, determined_design
@@ -120,17 +113,3 @@ def test_the_rows_without_extended_errors_are_the_eccentric_rows_at_zero():
     assert ecc3.shape == (n, 21, 3) and full.shape == (n, 26, 3)
     columns = np.r_[0:12, 12 + ECC3_COLUMNS, 25]
     np.testing.assert_allclose(ecc3, full[:, columns], rtol=1e-12, atol=1e-15)
-
-
-def test_the_chunk_size_makes_the_fewest_rows_and_chunks():
-    """Groups of 4 and 5 plots: chunks of 5 (one per group, 5 rows each) rather than the median 4
-    (two chunks for a group of 5); groups of one size: that size; the size is at most MAX_CHUNK."""
-    assert chunk_size(np.array([4] * 60 + [5] * 55)) == 5
-    assert chunk_size(np.array([7] * 10)) == 7
-    assert chunk_size(np.array([1] * 10)) == 1
-    assert 16 <= chunk_size(np.array([500, 600])) <= MAX_CHUNK
-    assert chunk_size(np.zeros(0, dtype=np.int64)) == 1
-    sizes = np.random.default_rng(3).integers(1, 40, 300)
-    C = np.arange(1, MAX_CHUNK + 1)
-    cost = [(-(-sizes // c)).sum() * (c + CHUNK_COST_ROWS) for c in C]
-    assert chunk_size(sizes) == C[int(np.argmin(cost))]

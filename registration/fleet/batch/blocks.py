@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.polynomial import legendre
 
+from registration.fleet.batch.chunks import ChunkLayout, chunk_layout
 from registration.fleet.data.layout import ATTITUDE_COLUMNS, BIAS_COLUMNS, ECCENTRICITY_COLUMNS
 from registration.fleet.data.problem import FleetProblem
 
@@ -82,9 +83,7 @@ class Blocks:
     group_rank: np.ndarray  # (G,) position of the group among its block's groups
     local_state: np.ndarray  # (B, w max_groups) state indices of each block's groups (n = padding)
     group_block_start: np.ndarray  # (B,) first group of each block
-    chunk_size: int  # plots per chunk: a group's plots are cut into chunks of this many (zero padded)
-    chunk_slot: np.ndarray  # (N,) row of each sorted plot in the padded chunk array
-    chunk_group_start: np.ndarray  # (G,) first chunk of each group
+    chunks: ChunkLayout  # the padded rows of the sorted plots, the groups cut into chunks
     ref_index: np.ndarray  # (R',) references used (index into problem.references)
     ref_block: np.ndarray  # (R',)
     ref_basis: np.ndarray  # (R', n_coef)
@@ -103,10 +102,6 @@ class Blocks:
     @property
     def n_blocks(self) -> int:
         return int(self.block_start.shape[0])
-
-    @property
-    def n_chunks(self) -> int:
-        return int(self.chunk_slot.max()) // self.chunk_size + 1 if self.chunk_slot.size else 0
 
     @property
     def width(self) -> int:
@@ -250,39 +245,6 @@ def _local_states(group_block: np.ndarray, group_state: np.ndarray, n_blocks: in
     return rank, local.reshape(n_blocks, -1)
 
 
-#: The cost of a chunk beyond that of its rows, in rows: a chunk's product is one call of a small
-#: matrix product, and a group of several chunks is summed afterwards.
-CHUNK_COST_ROWS = 4
-#: The largest chunk (plots).
-MAX_CHUNK = 32
-
-
-def chunk_size(sizes: np.ndarray) -> int:
-    """The chunk size C (1 to MAX_CHUNK) for groups of ``sizes`` plots that makes the fewest padded
-    rows plus CHUNK_COST_ROWS per chunk (a group of s plots takes ceil(s / C) chunks of C rows)."""
-    if sizes.size == 0:
-        return 1
-    counts = np.bincount(sizes)  # groups of each size
-    size = np.flatnonzero(counts)
-    C = np.arange(1, MAX_CHUNK + 1)
-    chunks = (-(-size[None, :] // C[:, None]) * counts[size]).sum(axis=1)
-    return int(C[np.argmin(chunks * (C + CHUNK_COST_ROWS))])
-
-
-def _chunks(group_start: np.ndarray, n: int):
-    """Cut each group's plots into chunks of C plots (:func:`chunk_size`): C, each plot's padded
-    row, each group's first chunk. The products of a chunk are one small dense matrix product;
-    padding wastes fewer than C plots per group."""
-    sizes = np.diff(np.r_[group_start, n])
-    size = chunk_size(sizes)
-    per_group = -(-sizes // size)
-    chunk_group_start = np.r_[0, np.cumsum(per_group)[:-1]]
-    group_of = np.repeat(np.arange(sizes.size), sizes)
-    pos = np.arange(n) - group_start[group_of]
-    slot = (chunk_group_start[group_of] + pos // size) * size + pos % size
-    return size, slot, chunk_group_start
-
-
 def used_state_columns(problem: FleetProblem) -> np.ndarray | None:
     """The columns of ``layout.sensor_states`` in which some sensor of ``problem`` has a state (the
     eccentric model's extended columns hold only the sink when no sensor has extended errors);
@@ -340,7 +302,6 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) 
     ref_block = ref_block[ref_index]
     ref_tau = (problem.references.time[ref_index] - centre[ref_block]) / half[ref_block]
     ref_basis = legendre_basis(ref_tau, n_coef) * coef_mask[ref_block]
-    chunk_size, chunk_slot, chunk_group_start = _chunks(group_start, order.size)
     group_block_start = np.flatnonzero(np.r_[True, np.diff(group_block) != 0])
     patterns, inverse = np.unique(local_state, axis=0, return_inverse=True)
     return Blocks(
@@ -360,9 +321,7 @@ def make_blocks(problem: FleetProblem, window_s: float, degree: int, span=None) 
         group_rank=rank,
         local_state=local_state,
         group_block_start=group_block_start,
-        chunk_size=chunk_size,
-        chunk_slot=chunk_slot,
-        chunk_group_start=chunk_group_start,
+        chunks=chunk_layout(group_start, order.size),
         ref_index=ref_index,
         ref_block=ref_block,
         ref_basis=ref_basis,

@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 from numpy.polynomial import legendre
+from numpy.typing import ArrayLike
 
 from registration.core.frames import ecef2geodetic, enu2ecef_rotation
 from registration.fleet.batch.blocks import Blocks
@@ -89,12 +90,14 @@ def surface_rows(problem: FleetProblem, blocks: Blocks) -> SurfaceRows | None:
 
 @dataclass(frozen=True, kw_only=True)
 class Design:
-    """The problem's plots in padded block order, ready for evaluation.
+    """The problem's plots in padded rows, ready for evaluation.
 
-    Rows are the plots sorted by (block, sensor), each group's plots cut into chunks of
-    ``blocks.chunk_size`` and padded with copies of a real plot of weight zero (``real`` False),
-    so the products of a chunk are one dense matrix product without any copying. ``slot`` (N,)
-    is the row of each sorted plot; ``block_start`` (B,) the first row of each block.
+    Rows are the plots of each group (a sensor in a block) cut into chunks, in the order of
+    ``blocks.chunks`` (:mod:`registration.fleet.batch.chunks`), and padded with copies of a real
+    plot of weight zero (``real`` False), so the products of a chunk are one dense matrix product
+    without any copying. ``slot`` (N,) is the row of each sorted plot; ``chunk_block`` the block of
+    each chunk. A block's rows need not be adjacent (the chunks are in classes of one size): sum
+    over blocks with :meth:`block_sums`.
     """
 
     blocks: Blocks
@@ -103,7 +106,7 @@ class Design:
     real: np.ndarray  # (rows,) bool
     block: np.ndarray  # (rows,)
     basis: np.ndarray  # (rows, n_coef)
-    block_start: np.ndarray  # (B,)
+    chunk_block: np.ndarray  # (n_chunks,)
     nav: np.ndarray  # (rows, 6)
     meas: np.ndarray  # (rows, 3)
     weight: np.ndarray  # (rows, 3) mask / sigma, 1/m and 1/rad; 0 for padding
@@ -135,6 +138,12 @@ class Design:
         if self.ref_whiten is None:
             return 3 * int(self.ref_p.shape[0])
         return int(np.count_nonzero(np.any(self.ref_whiten != 0.0, axis=2)))
+
+    def block_sums(self, values: ArrayLike) -> np.ndarray:
+        """(B, ...) sums over each block's plots of ``values`` (rows, ...) in the rows' order: the
+        plots' in block order, so the sums are those over the blocks' rows when the rows were in
+        block order (padding left out: it weighs 0 in every sum the solver takes)."""
+        return np.add.reduceat(np.asarray(values)[self.slot], self.blocks.block_start, axis=0)
 
     @property
     def att_state(self) -> np.ndarray:
@@ -178,12 +187,12 @@ def reference_whitening(p_ecef: np.ndarray, sigma: np.ndarray, sigma_up: np.ndar
 
 
 def make_design(problem: FleetProblem, blocks: Blocks) -> Design:
-    n_rows = blocks.n_chunks * blocks.chunk_size
-    source = np.full(n_rows, -1, dtype=np.int64)
-    source[blocks.chunk_slot] = np.arange(blocks.order.size)
+    """The :class:`Design` of ``problem``'s plots in the padded rows of ``blocks.chunks``."""
+    chunks = blocks.chunks
+    source = np.full(chunks.n_rows, -1, dtype=np.int64)
+    source[chunks.slot] = np.arange(blocks.order.size)
     real = source >= 0
-    chunk_first = source[(np.arange(n_rows) // blocks.chunk_size) * blocks.chunk_size]
-    source = np.where(real, source, chunk_first)  # padding copies its chunk's first plot
+    source = np.where(real, source, source[chunks.chunk_first_of_rows()])  # padding: its chunk's first plot
     o = blocks.order[source]
     layout = problem.layout
     sensor = problem.sensor[o]
@@ -222,11 +231,11 @@ def make_design(problem: FleetProblem, blocks: Blocks) -> Design:
     return Design(
         blocks=blocks,
         n_state=layout.n,
-        slot=blocks.chunk_slot,
+        slot=chunks.slot,
         real=real,
         block=blocks.block[source],
         basis=blocks.basis[source],
-        block_start=blocks.chunk_slot[blocks.block_start],
+        chunk_block=blocks.block[source[chunks.first_rows()]],
         nav=problem.nav[o],
         meas=problem.meas[o],
         weight=weight,

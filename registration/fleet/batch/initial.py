@@ -41,11 +41,10 @@ def initial_coefficients(design: Design, x: np.ndarray | None = None) -> np.ndar
     p = plot_positions(design, x)
     ranged = (design.weight[:, 0] > 0).astype(np.float64)
     real = design.real.astype(np.float64)
-    starts = design.block_start
-    n_ranged = np.add.reduceat(ranged, starts)
-    n_all = np.add.reduceat(real, starts)
-    sum_ranged = np.add.reduceat(p * ranged[:, None], starts, axis=0)
-    sum_all = np.add.reduceat(p * real[:, None], starts, axis=0)
+    n_ranged = design.block_sums(ranged)
+    n_all = design.block_sums(real)
+    sum_ranged = design.block_sums(p * ranged[:, None])
+    sum_all = design.block_sums(p * real[:, None])
     mean = np.where(
         (n_ranged > 0)[:, None], sum_ranged / np.maximum(n_ranged, 1)[:, None], sum_all / n_all[:, None]
     )

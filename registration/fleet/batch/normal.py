@@ -95,9 +95,13 @@ class Evaluation:
 
 def chunk_positions(design: Design, basis: np.ndarray, coef: np.ndarray) -> np.ndarray:
     """(rows, 3) ECEF sum_k basis[:, k] coef[block, k] (m), one (C x n_coef)(n_coef x 3) product per
-    chunk of C rows (a chunk lies in one block)."""
-    C = design.blocks.chunk_size
-    return np.matmul(basis.reshape(-1, C, basis.shape[1]), coef[design.block[::C]]).reshape(-1, 3)
+    chunk of C rows (a chunk lies in one block), one batched product per class of chunks."""
+    out = np.empty((basis.shape[0], 3))
+    K = basis.shape[1]
+    for C, rows, chunks in design.blocks.chunks.classes():
+        at = coef[design.chunk_block[chunks]]
+        np.matmul(basis[rows].reshape(-1, C, K), at, out=out[rows].reshape(-1, C, 3))
+    return out
 
 
 def _seen(design: Design, time_bias: np.ndarray) -> tuple:
@@ -111,7 +115,7 @@ def _seen(design: Design, time_bias: np.ndarray) -> tuple:
     t_seen = design.time - time_bias
     nav, rate, outside = design.seen_at(t_seen)
     if outside.any():
-        left = np.add.reduceat((design.weight.any(axis=1) & ~outside).astype(np.int64), design.block_start)
+        left = design.block_sums((design.weight.any(axis=1) & ~outside).astype(np.int64))
         outside = outside & (left > 0)[design.block]
     value = (*design.blocks.basis_and_rate_at(design.block, t_seen), nav, rate, outside)
     design.seen_cache.update(key=time_bias, value=value)
@@ -282,26 +286,41 @@ def _reference_terms(
                 V[:, m, np.arange(3), k, np.arange(3)] += ref[:, None]
 
 
-def _chunk_products(design: Design, ev: Evaluation) -> np.ndarray:
-    """(G, m, m) sums over each group of Z^T Z (m = q + w + 1 columns of Evaluation.Z).
+def _group_products(design: Design, ev: Evaluation) -> tuple[np.ndarray, np.ndarray | None]:
+    """The sums over each group of Z^T Z (m = q + w + 1 columns of Evaluation.Z), stacked (S, m, m),
+    and the row of each group in that stack (G,) (None: row g is group g's).
 
-    The rows are in chunks (Design), so each chunk's product is one small dense matrix product.
+    The rows are in chunks (Design), so each chunk's product is one small dense matrix product,
+    those of a class of chunks (:mod:`registration.fleet.batch.chunks`) one batched product. When
+    every group is one chunk the chunks' products are the groups' sums, left in the classes' order:
+    copying them into the groups' order takes a second stack as large, which cost as much as the
+    products themselves (a fresh allocation each time); the sums below take their parts by row
+    instead, as they copy them anyway.
     """
-    blk = design.blocks
-    Z = ev.Z.reshape(-1, 3 * blk.chunk_size, ev.Z.shape[2])
-    gram = np.matmul(np.ascontiguousarray(Z.transpose(0, 2, 1)), Z)
-    if gram.shape[0] == blk.group_start.size:  # one chunk per group
-        return gram
-    return segment_sums(gram, blk.chunk_group_start)
+    chunks = design.blocks.chunks
+    m = ev.Z.shape[2]
+    gram = np.empty((chunks.n_chunks, m, m))
+    for C, rows, at in chunks.classes():
+        Z = ev.Z[rows].reshape(-1, 3 * C, m)
+        np.matmul(np.ascontiguousarray(Z.transpose(0, 2, 1)), Z, out=gram[at])
+    order = None if chunks.in_group_order else chunks.group_chunks
+    if chunks.one_per_group:
+        return gram, order
+    return segment_sums(gram, chunks.group_first, order), None
+
+
+def _by_group(a: np.ndarray, row: np.ndarray | None) -> np.ndarray:
+    """The rows ``row`` (G,) of ``a`` (the groups' in turn), or ``a`` itself when ``row`` is None."""
+    return a if row is None else a[row]
 
 
 def normal_equations(design: Design, ev: Evaluation) -> Normal:
     """The block normal equations at an evaluation (undamped)."""
     blk = design.blocks
     K, n1, q, w = blk.n_coef, design.n_state + 1, 3 * blk.n_coef, blk.width
-    G = _chunk_products(design, ev)
-    V = segment_sums(G[:, :q, :q], blk.group_block_start)
-    b_c = -segment_sums(G[:, :q, -1], blk.group_block_start)
+    G, row = _group_products(design, ev)
+    V = segment_sums(G[:, :q, :q], blk.group_block_start, row)
+    b_c = -segment_sums(G[:, :q, -1], blk.group_block_start, row)
     V5, b_c3 = V.reshape(-1, K, 3, K, 3), b_c.reshape(-1, K, 3)
     _reference_terms(blk, ev, design.ref_weight, V5, b_c3, design.ref_whiten)
     if design.surface is not None:
@@ -310,13 +329,15 @@ def normal_equations(design: Design, ev: Evaluation) -> Normal:
         )
     idx = blk.group_state
     flat = (idx[:, :, None] * n1 + idx[:, None, :]).reshape(-1)
-    U = np.bincount(flat, G[:, q : q + w, q : q + w].reshape(-1), n1 * n1).reshape(n1, n1)
-    b_x = -np.bincount(idx.reshape(-1), G[:, q : q + w, -1].reshape(-1), n1)
+    U = np.bincount(flat, _by_group(G[:, q : q + w, q : q + w], row).reshape(-1), n1 * n1).reshape(n1, n1)
+    b_x = -np.bincount(idx.reshape(-1), _by_group(G[:, q : q + w, -1], row).reshape(-1), n1)
     pw = np.append(design.prior_weight, 0.0)
     U[np.diag_indices(n1)] += pw**2
     b_x -= pw**2 * np.append(ev.x, 0.0)
     H = None if design.ref_offset_up is None else _offset_terms(design, ev, U, b_x)
-    W = G[:, :q, q : q + w] if blk.coupled is None else G[:, :q, q + blk.coupled]  # sink-only left out
+    W = _by_group(G[:, :q, q : q + w], row)
+    if blk.coupled is not None:
+        W = W[:, :, blk.coupled]  # the sink-only columns left out
     return Normal(V, np.ascontiguousarray(W), U, b_c, b_x, H)
 
 

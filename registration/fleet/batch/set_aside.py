@@ -154,6 +154,6 @@ def set_aside_outside(
     if not outside.any():
         return problem, design
     design = replace(design, weight=weight)
-    if np.any(np.add.reduceat(design.weight.any(axis=1).astype(np.int64), design.block_start) == 0):
+    if np.any(design.block_sums(design.weight.any(axis=1).astype(np.int64)) == 0):
         return None
     return replace(problem, excluded=problem.excluded + outside_exclusions(problem, outside)), design

@@ -277,7 +277,7 @@ def final_pass(task: PartitionTask, x: np.ndarray, coef: np.ndarray) -> FinalTer
     assert pt.evaluation is not None and pt.normal is not None
     terms = _reduce_terms(entry, pt, (0.0,))
     outside, weight = outside_weight(design, x)
-    empty = np.add.reduceat(weight.any(axis=1).astype(np.int64), design.block_start) == 0
+    empty = design.block_sums(weight.any(axis=1).astype(np.int64)) == 0
     return FinalTerms(
         terms,
         chi_square_parts(replace(design, weight=weight), pt.evaluation),
