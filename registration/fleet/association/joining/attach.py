@@ -155,9 +155,9 @@ def _chunk_tests(problem: FleetProblem, x: np.ndarray, curves: Curves, unit, tar
         # some 100 MB, written and read once (the same products, row by row)
         at = np.flatnonzero(batch)
         for a in range(0, at.size, WINDOW_ROWS):
-            i = at[a : a + WINDOW_ROWS]
-            D[i] -= JA[i] @ curves.Y_states[block[i]]
-            G[i] = JA[i] @ curves.V_inv[block[i]]
+            part = at[a : a + WINDOW_ROWS]
+            D[part] -= JA[part] @ curves.Y_states[block[part]]
+            G[part] = JA[part] @ curves.V_inv[block[part]]
     sigma = np.nan_to_num(problem.sensor_sigma[problem.sensor[flat]], nan=1.0)
     same = (block.reshape(c, k)[:, :, None] == block.reshape(c, k)[:, None, :]) & batch.reshape(c, k)[
         :, :, None
