@@ -63,11 +63,13 @@ def _join_values(
         problem.sensor,
         np.where(kind == 1, units.of_plot, np.where(kind == 3, np.arange(labels.size), track)),
     )
-    key = np.stack([kind, a, np.where(kind == 1, 0, target)])
+    t = np.where(kind == 1, 0, target.reshape(-1))
     out = np.full(labels.size, np.nan)
     if not lab.any():
         return out
-    _, piece = np.unique(key[:, lab], axis=1, return_inverse=True)
+    # one integer per (kind, a, target), in their lexicographic order (a may be -1)
+    key = (kind.astype(np.int64) * (int(a.max()) + 2) + (a + 1)) * (int(t.max()) + 1) + t
+    _, piece = np.unique(key[lab], return_inverse=True)
     piece = piece.reshape(-1)
     ss = np.bincount(piece, np.nansum(e[lab] ** 2, axis=1))
     cnt = np.bincount(piece, np.isfinite(e[lab]).sum(axis=1))
@@ -110,16 +112,16 @@ def plot_report(
         return out
 
     unl = labels == ""
-    by_sensor = {}
-    for s, sid in enumerate(problem.sensor_ids):
-        mine = problem.sensor == s
-        counts = {
-            "given": int((mine & given).sum()),
-            "associated": int((mine & ~given & ~unl).sum()),
-            "unassociated": int((mine & unl).sum()),
-        }
-        counts.update({k: int((mine & (reasons == k)).sum()) for k in REASONS})
-        by_sensor[sid] = counts
+    n_sensors = len(problem.sensor_ids)
+    per_sensor = {
+        "given": np.bincount(problem.sensor[given], minlength=n_sensors),
+        "associated": np.bincount(problem.sensor[~given & ~unl], minlength=n_sensors),
+        "unassociated": np.bincount(problem.sensor[unl], minlength=n_sensors),
+    }
+    per_sensor.update({k: np.bincount(problem.sensor[reasons == k], minlength=n_sensors) for k in REASONS})
+    by_sensor = {
+        sid: {k: int(v[s]) for k, v in per_sensor.items()} for s, sid in enumerate(problem.sensor_ids)
+    }
     clutter = int(np.isin(reasons[unl], CLUTTER_REASONS).sum())
     return {
         "labels": rows(labels, "", object).astype(str),

@@ -13,13 +13,11 @@ shared by several plots correlate them), ``P`` the registration covariance throu
 attitude, gain, time-bias and position Jacobians of the sensor **and** of the sensors that fixed the
 target's curve. A constant offset that the states explain costs little; a shape that they do not
 explain costs much. The statistic ``d^2 = r^T S^-1 r`` is gated at the chi-square quantile of m
-degrees of freedom. :func:`pair_tests` forms r, D and ``R + A C A^T`` once; :func:`evaluate`
+degrees of freedom. :func:`pair_tests` forms r, D and ``R + A C A^T`` once; :func:`.pairs.evaluate`
 gives d^2 under any later (x + dx, P') by the linearisation ``r(x + dx) = r + D dx``.
 """
 
 from __future__ import annotations
-
-from dataclasses import dataclass
 
 import numpy as np
 
@@ -27,6 +25,7 @@ from registration._generated import api as generated
 from registration.core.distributions import chi2_ppf
 from registration.fleet.association.grouping.geometry import state_columns
 from registration.fleet.association.joining.curves import Curves
+from registration.fleet.association.joining.pairs import Pairs, chunk_size, evaluate, kalman_update
 from registration.fleet.data.problem import FleetProblem
 from registration.fleet.data.tables import NAV_COLUMNS
 
@@ -40,42 +39,8 @@ __all__ = [
     "verify_plots",
 ]
 
-#: Pairs of ``test_plots`` (20) plots whose tests are formed in one batch (bounds the memory: about
-#: 60 kB per pair); pairs of fewer plots are batched by more, for about the same memory, up to
-#: MAX_PAIR_CHUNK (one plot: the single plots' tests; three: the prescreen).
-PAIR_CHUNK = 256
-MAX_PAIR_CHUNK = 8192
-
-
-def _chunk(k: int) -> int:
-    """Pairs per batch for pairs of ``k`` plots."""
-    return int(min(MAX_PAIR_CHUNK, max(PAIR_CHUNK, PAIR_CHUNK * 400 // max(k * k, 1))))
-
-
-@dataclass(frozen=True)
-class Pairs:
-    """Per pair (C,): ``unit``, ``target`` (index into the curves' names), ``r`` (C, m) residuals
-    (m/rad, 0 in padding), ``D`` (C, m, n) d r / d states, ``Sc`` (C, m, m) R + A C A^T (1 on the
-    diagonal of padding), ``dof`` (C,) values compared, ``plots`` (C, k) the plots tested (-1:
-    padding), ``mask`` (C, m) the values measured."""
-
-    unit: np.ndarray
-    target: np.ndarray
-    r: np.ndarray
-    D: np.ndarray
-    Sc: np.ndarray
-    dof: np.ndarray
-    plots: np.ndarray
-    mask: np.ndarray
-
-    @property
-    def size(self) -> int:
-        return int(self.unit.size)
-
-    def take(self, sel: np.ndarray) -> "Pairs":
-        return Pairs(
-            *(getattr(self, f)[sel] for f in ("unit", "target", "r", "D", "Sc", "dof", "plots", "mask"))
-        )
+#: Rows (plots) whose windows' ``Y`` over the states are gathered at once in :func:`_chunk_tests`.
+WINDOW_ROWS = 512
 
 
 def candidate_plots(
@@ -177,14 +142,22 @@ def _chunk_tests(problem: FleetProblem, x: np.ndarray, curves: Curves, unit, tar
     D = np.zeros((m, 3, n + 1))  # J_x - J_p dp/dc Y (the window's Y over all the states, curves.Y_states)
     rows = np.arange(m)
     cols = np.where(cols < 0, n, cols)
-    for i in range(cols.shape[1]):
-        D[rows, :, cols[:, i]] += Jx[:, :, i]
+    ordered = np.sort(cols, axis=1)
+    if ((ordered[:, 1:] == ordered[:, :-1]) & (ordered[:, 1:] < n)).any():  # a state in two groups
+        for i in range(cols.shape[1]):
+            D[rows, :, cols[:, i]] += Jx[:, :, i]
+    else:  # each state once per plot (index n: none, dropped): 0 + J, in one write
+        D[rows[:, None], :, cols] = np.swapaxes(Jx, 1, 2) + 0.0
     batch = block >= 0
     G = np.zeros((m, 3, q))
     if batch.any():
-        b = block[batch]
-        D[batch] -= JA[batch] @ curves.Y_states[b]
-        G[batch] = JA[batch] @ curves.V_inv[b]
+        # a few hundred rows at a time: the windows' Y gathered for a whole chunk of short pairs is
+        # some 100 MB, written and read once (the same products, row by row)
+        at = np.flatnonzero(batch)
+        for a in range(0, at.size, WINDOW_ROWS):
+            part = at[a : a + WINDOW_ROWS]
+            D[part] -= JA[part] @ curves.Y_states[block[part]]
+            G[part] = JA[part] @ curves.V_inv[block[part]]
     sigma = np.nan_to_num(problem.sensor_sigma[problem.sensor[flat]], nan=1.0)
     same = (block.reshape(c, k)[:, :, None] == block.reshape(c, k)[:, None, :]) & batch.reshape(c, k)[
         :, :, None
@@ -216,7 +189,7 @@ def pair_tests(
 ) -> Pairs:
     """The tests of the pairs (``unit`` (C,), ``target`` (C,), their ``plots`` (C, k), -1 padding) under
     the estimate ``x`` (n,): residuals, their Jacobian D and ``R + A C A^T`` (module docstring)."""
-    c = _chunk(plots.shape[1])
+    c = chunk_size(plots.shape[1])
     parts = [
         _chunk_tests(problem, x, curves, unit[a : a + c], target[a : a + c], plots[a : a + c])
         for a in range(0, unit.size, c)
@@ -255,121 +228,13 @@ def pair_statistics(
 ) -> tuple[np.ndarray, np.ndarray]:
     """(d2 (C,), values compared (C,)) of the pairs: :func:`pair_tests` and :func:`evaluate` (with its
     ``options``) one batch at a time, the tests not kept (the single plots' many pairs)."""
-    c = _chunk(plots.shape[1])
+    c = chunk_size(plots.shape[1])
     d2, dof = np.zeros(unit.size), np.zeros(unit.size, dtype=np.int64)
     for a in range(0, unit.size, c):
         s = slice(a, a + c)
         pairs = _chunk_tests(problem, x, curves, unit[s], target[s], plots[s])
         d2[s], _, _, dof[s] = evaluate(pairs, dx, P, **options)
     return d2, dof
-
-
-def _masked(r: np.ndarray, D: np.ndarray, Sc: np.ndarray, keep: np.ndarray):
-    """(r, D, Sc) of pairs with the plots not in ``keep`` (c, k) taken out (as padding: r and D 0, Sc
-    the identity in their rows and columns)."""
-    c, k = keep.shape
-    rows = np.repeat(keep, 3, axis=1)
-    both = rows[:, :, None] & rows[:, None, :]
-    eye = np.where(rows, 0.0, 1.0)[:, :, None] * np.eye(3 * k)
-    return np.where(rows, r, 0.0), np.where(rows[..., None], D, 0.0), np.where(both, Sc, 0.0) + eye
-
-
-def _deletion(S_chol: np.ndarray, r: np.ndarray, k: int) -> np.ndarray:
-    """(c, k) for each plot, how much d^2 falls when it is taken out: ``z_i^T (Q_ii)^-1 z_i`` with
-    ``Q = S^-1``, ``z = Q r`` and ``i`` the plot's three rows (chi-square with its channels under the
-    model: the outlier test of one plot against all the others)."""
-    c, m = r.shape
-    L_inv = np.linalg.solve(S_chol, np.broadcast_to(np.eye(m), (c, m, m)))
-    Q = np.swapaxes(L_inv, 1, 2) @ L_inv
-    z = (Q @ r[..., None])[..., 0].reshape(c, k, 3)
-    blocks = Q.reshape(c, k, 3, k, 3)[:, np.arange(k), :, np.arange(k), :].transpose(1, 0, 2, 3)
-    return np.einsum("cki,cki->ck", z, np.linalg.solve(blocks, z[..., None])[..., 0])
-
-
-def _cholesky(S: np.ndarray) -> np.ndarray:
-    """Cholesky factors of symmetric (c, m, m) matrices that should be positive definite; one that
-    rounding made indefinite (a covariance after many updates) gets its eigenvalues raised to a
-    small positive floor first."""
-    S = 0.5 * (S + np.swapaxes(S, 1, 2))
-    try:
-        return np.linalg.cholesky(S)
-    except np.linalg.LinAlgError:
-        w, v = np.linalg.eigh(S)
-        floor = 1e-12 * np.maximum(np.abs(w).max(axis=1, keepdims=True), 1e-300)
-        return np.linalg.cholesky((v * np.maximum(w, floor)[:, None, :]) @ np.swapaxes(v, 1, 2))
-
-
-def evaluate(
-    pairs: Pairs,
-    dx: np.ndarray,
-    P: np.ndarray,
-    *,
-    outlier_limit: np.ndarray | None = None,
-    max_trim: int = 0,
-    keep: np.ndarray | None = None,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """(d2 (C,), log det S (C,), plots kept (C, k) bool, values compared (C,)) of the pairs with the
-    states moved by ``dx`` (n,) and covariance P (n, n): ``r + D dx`` against ``Sc + D P D^T``. With
-    ``outlier_limit`` (per number of channels 0..3, the limit of the deletion statistic) up to
-    ``max_trim`` plots of each pair are taken out, worst first, while one exceeds its limit (a
-    clutter plot or a stray plot a tracker took does not decide the test). ``keep`` (C, k): the plots
-    to use (default all; e.g. those an earlier call kept)."""
-    C, m = pairs.r.shape
-    k = m // 3
-    d2, logdet = np.zeros(C), np.zeros(C)
-    keep_all = (pairs.plots >= 0) if keep is None else (keep & (pairs.plots >= 0))
-    channels = pairs.mask.reshape(C, k, 3).sum(axis=2)  # measured channels per plot (0 for padding)
-    chunk = _chunk(k)
-    for a in range(0, C, chunk):
-        s = slice(a, a + chunk)
-        D0 = pairs.D[s]
-        r0 = pairs.r[s] + D0 @ dx
-        keep = keep_all[s].copy()
-        for it in range(max_trim + 1):
-            r, D, Sc = _masked(r0, D0, pairs.Sc[s], keep)
-            L = _cholesky(Sc + D @ P @ np.swapaxes(D, 1, 2))
-            y = np.linalg.solve(L, r[..., None])[..., 0]
-            d2[s], logdet[s] = (
-                np.einsum("ki,ki->k", y, y),
-                2.0 * np.log(np.diagonal(L, axis1=1, axis2=2)).sum(axis=1),
-            )
-            if outlier_limit is None or it == max_trim:
-                break
-            # only a pair well above its mean can hold a plot beyond the outlier limit
-            dof = np.where(keep, channels[s], 0).sum(axis=1)
-            rows = np.flatnonzero(d2[s] > dof + 0.5 * outlier_limit[1])
-            if rows.size == 0:
-                break
-            delta = np.where(keep[rows], _deletion(L[rows], r[rows], k), 0.0)
-            worst = np.argmax(delta, axis=1)
-            hit = delta[np.arange(rows.size), worst] > outlier_limit[channels[s][rows, worst]]
-            if not hit.any():
-                break
-            keep[rows[hit], worst[hit]] = False
-        keep_all[s] = keep
-    dof = np.where(keep_all, channels, 0).sum(axis=1)
-    return d2, logdet, keep_all, dof
-
-
-def kalman_update(
-    pairs: Pairs, i: int, dx: np.ndarray, P: np.ndarray, keep: np.ndarray | None = None
-) -> tuple[np.ndarray, np.ndarray]:
-    """The states' correction and covariance after taking pair ``i`` (its plots ``keep`` (k,) bool) as
-    a join: the linear Gaussian update ``dx - K (r + D dx)``, ``P - K D P`` with ``K = P D^T S^-1``."""
-    keep = pairs.plots[i] >= 0 if keep is None else keep
-    r, D, Sc = (
-        v[0]
-        for v in _masked(
-            pairs.r[i : i + 1] + pairs.D[i : i + 1] @ dx,
-            pairs.D[i : i + 1],
-            pairs.Sc[i : i + 1],
-            keep[None, :],
-        )
-    )
-    L = _cholesky((Sc + D @ P @ D.T)[None])[0]
-    K = np.linalg.solve(L.T, np.linalg.solve(L, D @ P)).T
-    P = P - K @ D @ P
-    return dx - K @ r, 0.5 * (P + P.T)
 
 
 def verify_plots(

@@ -129,10 +129,12 @@ def choose_joins(
             trimmed[active] = keep
             hopeless = d2 > FAR_OFF * chi2_ppf(options.gate_probability, np.maximum(dof, 1))
             np.minimum.at(state.best, unit[active[hopeless]], d2[hopeless] / np.maximum(dof[hopeless], 1))
-            active = active[~hopeless]
+            # d2 is that of the plots kept, under this round's dx and Pk: the round's test
+            active, d2, keep, dof = (v[~hopeless] for v in (active, d2, keep, dof))
             if active.size == 0:
                 break
-        d2, _, keep, dof = evaluate(pairs.take(active), dx, Pk, keep=trimmed[active])
+        else:
+            d2, _, keep, dof = evaluate(pairs.take(active), dx, Pk, keep=trimmed[active])
         np.minimum.at(state.best, unit[active], d2 / np.maximum(dof, 1))
         passed = (dof > 0) & (d2 < chi2_ppf(options.gate_probability, np.maximum(dof, 1)))
         state.gated[unit[active[passed]]] = True
@@ -147,23 +149,21 @@ def choose_joins(
         if not ok.any():
             break
         rank = best[ok][np.lexsort((-lp[best[ok]], -margin[ok]))]
-        now: list[tuple[int, int]] = []
+        claimed = np.zeros((conflicts.shape[0], len(names)), dtype=bool)  # (unit, target): a rival took it
         sensors_now: set[int] = set()
         for b in rank:
             c = int(cand[b])
             u, j = int(unit[c]), int(pairs.target[c])
             s = int(units.sensor[u])
-            if (fresh[s] and s in sensors_now) or any(j == j2 and conflicts[u, u2] for u2, j2 in now):
+            if (fresh[s] and s in sensors_now) or claimed[u, j]:
                 continue
             dx, Pk = kalman_update(pairs, c, dx, Pk, keep[at[b]])
             state.target[u] = str(target_names[j])  # taken; labelled once its plots are verified
             out.append((u, j, float(d2[at[b]] / dof[at[b]])))
-            now.append((u, j))
+            claimed[:, j] |= conflicts[:, u]
             sensors_now.add(s)
         fresh[list(sensors_now)] = False
-        remove = state.target[unit[active]] != ""
-        for u2, j in now:
-            remove |= (pairs.target[active] == j) & conflicts[unit[active], u2]
+        remove = (state.target[unit[active]] != "") | claimed[unit[active], pairs.target[active]]
         active = active[~remove]
     return out, dx, Pk
 
