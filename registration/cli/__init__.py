@@ -10,12 +10,22 @@ lists the exit codes it can give (:class:`CommandParser`).
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
+import signal
 import sys
 import textwrap
+import threading
+from collections.abc import Iterator
 
 from registration import __version__
-from registration.cli.errors import CODE_OPTIONS, EXIT_CODES_EPILOG, exit_codes_epilog, run_guarded
+from registration.cli.errors import (
+    CODE_OPTIONS,
+    EXIT_CODES_EPILOG,
+    EXIT_TERMINATED,
+    exit_codes_epilog,
+    run_guarded,
+)
 from registration.cli.options import HelpFormatter
 
 #: sub-command name -> module of registration.cli (listed in the order shown in --help)
@@ -102,7 +112,29 @@ def main(argv: list[str] | None = None) -> int:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help, --version, or an option argparse rejected (its message is printed)
         return exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 2)
-    return run_guarded(args._prog, args._run, args, args._hint)
+    with _terminate_cleanly():
+        return run_guarded(args._prog, args._run, args, args._hint)
+
+
+@contextlib.contextmanager
+def _terminate_cleanly() -> Iterator[None]:
+    """SIGTERM ends the command by ``SystemExit(EXIT_TERMINATED)`` rather than at once, so that its
+    temporary folders (spilled partitions, converted archives: gigabytes on a long run) are
+    removed, local Dask workers stopped and no output half-written (publication holds the signal
+    until its renames are done). Commands that stop gracefully on SIGTERM (``serve``, ``replay``)
+    set their own handler inside. The previous handler comes back afterwards."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def stop(signum, frame) -> None:
+        raise SystemExit(EXIT_TERMINATED)
+
+    previous = signal.signal(signal.SIGTERM, stop)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous if previous is not None else signal.SIG_DFL)
 
 
 if __name__ == "__main__":

@@ -22,6 +22,7 @@ code  meaning
 130   interrupted (Ctrl-C); --out is left as it was (a new one is not left behind)
 141   standard output was closed early (e.g. piped into ``head``): the command stops quietly,
       like a program ended by SIGPIPE (128 + 13)
+143   terminated (SIGTERM, 128 + 15): temporary folders removed, --out left as it was
 ====  ==========================================================================================
 """
 
@@ -44,6 +45,7 @@ __all__ = [
     "EXIT_NUMERICAL",
     "EXIT_INTERRUPTED",
     "EXIT_BROKEN_PIPE",
+    "EXIT_TERMINATED",
     "DEBUG_ENV",
     "EXIT_CODES_EPILOG",
     "MAX_MESSAGE",
@@ -70,6 +72,7 @@ EXIT_INCONSISTENT = 3
 EXIT_NUMERICAL = 4
 EXIT_INTERRUPTED = 130
 EXIT_BROKEN_PIPE = 141
+EXIT_TERMINATED = 143
 
 #: Set this environment variable to 1 to see the traceback behind an error message.
 DEBUG_ENV = "REGISTRATION_DEBUG"
@@ -86,6 +89,7 @@ EXIT_CODES_EPILOG = f"""exit codes:
        report it with the traceback {DEBUG_ENV}=1 shows
   {EXIT_INTERRUPTED:<4} interrupted (Ctrl-C)
   {EXIT_BROKEN_PIPE:<4} standard output closed early (e.g. piped into head)
+  {EXIT_TERMINATED:<4} terminated (SIGTERM): temporary folders removed, outputs not half-written
 {DEBUG_ENV}=1 in the environment shows the traceback behind an error message."""
 #: Exit codes only some commands can give, with the option (its argparse dest) of those that can.
 CODE_OPTIONS = {EXIT_BAD_ROWS: "validate_only", EXIT_INCONSISTENT: "allow_inconsistent"}

@@ -35,6 +35,7 @@ def test_the_exit_code_table_is_the_one_help_prints():
         errors.EXIT_NUMERICAL,
         errors.EXIT_INTERRUPTED,
         errors.EXIT_BROKEN_PIPE,
+        errors.EXIT_TERMINATED,
     ]
     assert [code for code, _ in rows] == codes
     assert all(meaning for _, meaning in rows)
