@@ -163,7 +163,7 @@ def peak_mib() -> float:
 def run(mode: str, folder: Path, partition_s: float, out: Path) -> None:
     """One measured run (in this process): writes its figures and estimate to ``out``."""
     from registration.fleet.batch.partitioned import solve_batch_partitioned
-    from registration.io.fleet.archive import ParquetSource
+    from registration.io.fleet.archive.parquet import ParquetSource
 
     t = time.perf_counter()
     if mode == "batch":

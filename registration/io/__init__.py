@@ -16,7 +16,7 @@ below ``cli``. Subpackages:
 - ``nmea``: NMEA 0183 bridge logs and AIS.
 """
 
-from registration.io.fleet.read import FleetTables, read_fleet_tables
+from registration.io.fleet.reading.read import FleetTables, read_fleet_tables
 from registration.io.fleet.write import write_fleet_tables
 
 __all__ = ["FleetTables", "read_fleet_tables", "write_fleet_tables"]

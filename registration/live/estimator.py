@@ -32,8 +32,8 @@ from registration.fleet.online.alarms import Change, ChangeDetector, open_states
 from registration.fleet.online.filter import FleetFilter
 from registration.fleet.online.options import EpochUpdate, OnlineOptions
 from registration.io.asterix.tables.fleetfiles import site_tables
-from registration.io.fleet.cells import check_frame
 from registration.io.fleet.estimates import estimate_rows
+from registration.io.fleet.reading.cells import check_frame
 from registration.live.inputs.asterix import StreamBatch
 
 __all__ = ["Alarm", "LiveEstimator", "HISTORY_S"]

@@ -22,7 +22,7 @@ import warnings
 from collections import Counter
 from pathlib import Path
 
-from registration.io.fleet.read import needs_association, read_fleet_tables
+from registration.io.fleet.reading.read import needs_association, read_fleet_tables
 from tests.fuzzing import Campaign
 
 #: Rows mutated per read.

@@ -1,4 +1,4 @@
-"""Archives as Parquet files read lazily by the partitioned solver (registration.io.fleet.archive),
+"""Archives as Parquet files read lazily by the partitioned solver (registration.io.fleet.archive.parquet),
 and the partitions mapped on Dask workers: the same estimate as solve_batch on the same files, also
 when the plots are a folder of files out of time order; a file that breaks mid-run is a one-line
 ValueError naming it; 1, 2 and 3 workers give the in-process answer."""
@@ -12,7 +12,7 @@ from registration.core.parallel import dask_client
 from registration.fleet import fleet_scenario, solve_batch
 from registration.fleet.batch.partitioned import solve_batch_partitioned
 from registration.io import read_fleet_tables, write_fleet_tables
-from registration.io.fleet.archive import ParquetSource
+from registration.io.fleet.archive.parquet import ParquetSource
 from registration.io.fleet.memory import TablesSource
 from tests.fleet.test_archive import EXTENDED, assert_same
 
@@ -98,7 +98,7 @@ def test_every_source_keeps_the_contract_and_opens_one_way(archive, tmp_path):
     the checked folder (in memory) or the archive (lazy) of the same folder, and a CSV archive's
     temporary Parquet folder is gone when the context ends."""
     from registration.fleet.data.source import FleetSource
-    from registration.io.fleet.read import FleetTables
+    from registration.io.fleet.reading.read import FleetTables
     from registration.io.fleet.sources import open_fleet_tables
 
     sc, folder, _, _ = archive

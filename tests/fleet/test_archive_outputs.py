@@ -16,7 +16,7 @@ from registration.fleet import BatchOptions, fleet_scenario, solve_batch
 from registration.fleet.batch.outputs import FUSED_COLUMNS, archive_outputs
 from registration.fleet.batch.partitioned import solve_batch_partitioned
 from registration.io import read_fleet_tables, write_fleet_tables
-from registration.io.fleet.csvarchive import parquet_from_csv
+from registration.io.fleet.archive.csvfolder import parquet_from_csv
 from tests.fleet.test_archive import EXTENDED, source_of
 
 NAMES = ("plots", "navigation", "sensors", "platforms", "reference")

@@ -1,7 +1,7 @@
 """Parquet archives of one row group (as pandas writes them, rows not in time order) and of many
 small row groups give the same estimates on two Dask workers as in process: each partition is
-streamed out of the row groups it overlaps (registration.io.fleet.archive), or out of the copy by
-time buckets made when the row groups do not follow time (registration.io.fleet.timeorder), whose
+streamed out of the row groups it overlaps (registration.io.fleet.archive.parquet), or out of the copy by
+time buckets made when the row groups do not follow time (registration.io.fleet.archive.timeorder), whose
 reads give the original's rows in the original's order."""
 
 from __future__ import annotations
@@ -15,8 +15,8 @@ import pytest
 from registration.fleet import fleet_scenario
 from registration.fleet.batch.partitioned import solve_batch_partitioned
 from registration.io import write_fleet_tables
-from registration.io.fleet import timeorder
-from registration.io.fleet.archive import ParquetSource
+from registration.io.fleet.archive import timeorder
+from registration.io.fleet.archive.parquet import ParquetSource
 
 NAMES = ("plots", "navigation", "sensors", "platforms", "reference")
 

@@ -1,5 +1,5 @@
 """Plots files with a ``track`` column and empty ``target`` cells (read by
-registration.io.fleet.read), and ``registration fleet register`` on them: the association runs,
+registration.io.fleet.reading.read), and ``registration fleet register`` on them: the association runs,
 associations.csv says per plot its target, the join's distance and why a plot was left out, the
 counts per sensor are printed, and ``--method online`` runs the filter on the association's labels."""
 
@@ -12,7 +12,7 @@ import pytest
 from registration.cli import main
 from registration.fleet.association.simulated.fleets import vessel_fleet
 from registration.io import read_fleet_tables, write_fleet_tables
-from registration.io.fleet.read import needs_association
+from registration.io.fleet.reading.read import needs_association
 
 NAMES = ("plots", "navigation", "sensors", "platforms", "reference")
 

@@ -13,7 +13,7 @@ from registration import _codegen
 from registration._generated import api as generated
 from registration.fleet import build_problem, solve_batch
 from registration.fleet.simulation.channels import atc_channel_scenario
-from registration.io.fleet.read import read_fleet_tables
+from registration.io.fleet.reading.read import read_fleet_tables
 from registration.io.fleet.write import write_fleet_tables
 
 LAT, LON, ALT = np.radians(46.0), np.radians(6.5), 400.0

@@ -8,7 +8,7 @@ import pytest
 
 from registration.core.frames import ecef2geodetic, geodetic2ecef
 from registration.fleet import build_problem, fleet_scenario
-from registration.io.fleet.read import read_fleet_tables
+from registration.io.fleet.reading.read import read_fleet_tables
 from registration.io.fleet.write import write_fleet_tables
 
 NAMES = ("plots", "navigation", "sensors", "platforms", "reference")
@@ -209,7 +209,7 @@ def spoiled(scenario, tmp_path):
 
 def test_skip_mode_sets_bad_rows_aside_with_their_reason(spoiled):
     from registration.io.files.tablefile import REASON_CODES
-    from registration.io.fleet.rejects import FLEET_REASON_CODES
+    from registration.io.fleet.reading.rejects import FLEET_REASON_CODES
 
     paths, _, want = spoiled
     first = min(want)
@@ -261,7 +261,7 @@ def test_skip_mode_on_good_files_sets_nothing_aside(scenario, tmp_path):
 
 
 def test_every_plot_row_bad_is_a_clear_error(scenario, tmp_path):
-    from registration.io.fleet.rejects import NoValidPlotsError
+    from registration.io.fleet.reading.rejects import NoValidPlotsError
 
     paths = _write(scenario, tmp_path)
     plots = _frame(paths["plots"])
@@ -484,7 +484,7 @@ def _track(heading_deg, speed=8.0, course_deg=None, n=600, dt=1.0, pitch=None, r
     ],
 )
 def test_headings_in_radians_are_refused_only_when_the_track_says_so(columns, refused):
-    from registration.io.fleet.checks import attitude_check
+    from registration.io.fleet.reading.checks import attitude_check
 
     platform = np.full(columns["time_s"].size, "A")
     if refused:
@@ -497,7 +497,7 @@ def test_headings_in_radians_are_refused_only_when_the_track_says_so(columns, re
 
 
 def test_pitch_and_roll_that_look_like_radians_are_noted_not_refused():
-    from registration.io.fleet.checks import attitude_check
+    from registration.io.fleet.reading.checks import attitude_check
 
     wave = np.sin(np.arange(600) / 8.0)
     platform = np.full(600, "A")

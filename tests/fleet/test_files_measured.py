@@ -9,7 +9,7 @@ import pandas as pd
 import pytest
 
 from registration.fleet import fleet_scenario
-from registration.io.fleet.read import read_fleet_tables
+from registration.io.fleet.reading.read import read_fleet_tables
 from registration.io.fleet.schema import HELD
 from registration.io.fleet.write import write_fleet_tables
 

@@ -20,7 +20,7 @@ import pytest
 
 from registration.cli import main
 from registration.fleet import fleet_scenario
-from registration.io.fleet.read import read_fleet_tables
+from registration.io.fleet.reading.read import read_fleet_tables
 from registration.io.fleet.write import write_fleet_tables
 from tests.fuzzing import assert_clean, run_campaign
 

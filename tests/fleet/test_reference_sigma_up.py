@@ -32,7 +32,7 @@ from registration.fleet.data.known_targets import read_references
 from registration.fleet.online.filter import OnlineOptions
 from registration.fleet.online.register import register_online
 from registration.io.fleet.memory import TablesSource
-from registration.io.fleet.read import read_fleet_tables
+from registration.io.fleet.reading.read import read_fleet_tables
 from registration.io.fleet.write import write_fleet_tables
 from tests.fleet.test_archive import assert_same
 

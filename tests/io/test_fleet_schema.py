@@ -9,7 +9,7 @@ import argparse
 from pathlib import Path
 
 from registration.cli import build_parser
-from registration.io.fleet.cells import FILE_COLUMNS
+from registration.io.fleet.reading.cells import FILE_COLUMNS
 from registration.io.fleet.schema import FLEET_FILES
 from registration.io.fleet.schemadoc import option_help, schema_markdown
 

@@ -1,7 +1,7 @@
 """``registration fleet register`` on an archive too large for memory: the partitioned batch solver
 (:func:`registration.fleet.batch.partitioned.solve_batch_partitioned`, docs/howto/register-an-archive.md) on a
 folder of Parquet tables, or of CSV files converted block by block into a temporary Parquet folder
-(:mod:`registration.io.fleet.csvarchive`), in this process or on Dask workers.
+(:mod:`registration.io.fleet.archive.csvfolder`), in this process or on Dask workers.
 
 Options (:func:`add_archive_arguments`): ``--partition-s S`` (the archive is read and solved in
 partitions of S seconds of target windows; this switches the archive path on), ``--memory-limit
@@ -9,7 +9,7 @@ SIZE`` (without ``--partition-s``: tables whose registration in memory would nee
 registered by partitions, of a length chosen from the plot rate, :mod:`registration.cli.fleet.memory`),
 ``--workers N`` (a local Dask cluster of N worker processes), ``--scheduler ADDRESS`` (a running
 dask.distributed scheduler). A table whose row groups do not follow time is first copied by time
-buckets into a temporary folder (:mod:`registration.io.fleet.timeorder`), so every process reads
+buckets into a temporary folder (:mod:`registration.io.fleet.archive.timeorder`), so every process reads
 only its partition. The estimates equal the in-process run's for any number of workers. Outputs, replacing
 an earlier run's in ``--out`` only once all are written (a partition that cannot be read, or a bad
 CSV row, leaves ``--out`` as it was, with a one-line error naming the file): ``estimates.csv``

@@ -1,7 +1,7 @@
 """``fleet register`` on an archive whose plots lack target ids for some rows: the association by
 partitions (:mod:`registration.fleet.association.partitioned`) before the partitioned solve, its
 labelled plots written into the run's work folder
-(:func:`registration.io.fleet.labelled.write_labelled_tables`) and its figures in ``summary.json``
+(:func:`registration.io.fleet.archive.labelled.write_labelled_tables`) and its figures in ``summary.json``
 (docs/howto/register-an-archive.md, "Plots without target ids")."""
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ def associated_source(args: argparse.Namespace, source, work: str, client) -> tu
     ``--partition-s``, on the Dask ``client``'s workers when there is one)."""
     from registration.fleet import AssociationOptions
     from registration.fleet.association.partitioned import associate_partitioned
-    from registration.io.fleet.labelled import write_labelled_tables
+    from registration.io.fleet.archive.labelled import write_labelled_tables
 
     association = associate_partitioned(
         source,

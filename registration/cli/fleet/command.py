@@ -2,7 +2,7 @@
 
 ``fleet simulate`` runs the built-in fleet (three ships, a shore site, six sensors, five targets)
 and writes its input tables as a working example; ``fleet register`` reads such tables (CSV or
-Parquet, degrees and metres; see :mod:`registration.io.fleet.read`) and registers them. Both print
+Parquet, degrees and metres; see :mod:`registration.io.fleet.reading.read`) and registers them. Both print
 the estimates per sensor and platform, the observability report and the chi-square check, and
 write ``estimates.csv``, ``summary.json`` and the plots. See docs/howto/register-a-fleet.md.
 """
@@ -206,7 +206,7 @@ def _register_into(path: Path, args: argparse.Namespace, tables):
         write_period_outputs,
     )
     from registration.io.fleet.estimates import estimate_rows
-    from registration.io.fleet.read import needs_association
+    from registration.io.fleet.reading.read import needs_association
 
     association = None
     if not needs_association(tables.plots):

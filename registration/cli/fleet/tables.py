@@ -10,9 +10,9 @@ from pathlib import Path
 from typing import Iterator
 
 from registration.cli.errors import writing
-from registration.io.fleet.archive import ParquetSource
+from registration.io.fleet.archive.parquet import ParquetSource
 from registration.io.fleet.folder import TABLE_NAMES
-from registration.io.fleet.read import FleetTables
+from registration.io.fleet.reading.read import FleetTables
 from registration.io.fleet.sources import open_fleet_tables
 
 __all__ = ["REGISTER_OUTPUTS", "opened_tables", "warn_unfinished", "write_rejected"]

@@ -2,7 +2,7 @@
 :class:`TablesSource`, the tables of :mod:`registration.fleet.data.tables` (SI units, radians) given
 as pandas DataFrames or mappings of column -> array, for the partitioned solver
 (:func:`registration.fleet.batch.partitioned.solve_batch_partitioned`). The tables read from checked
-files, :class:`registration.io.fleet.read.FleetTables`, are such a source too."""
+files, :class:`registration.io.fleet.reading.read.FleetTables`, are such a source too."""
 
 from __future__ import annotations
 

@@ -2,7 +2,7 @@
 (degrees, metres, seconds), the table column each becomes (:mod:`registration.fleet.data.tables`:
 SI units, radians), whether a file must have it, the values accepted, and what it holds.
 
-The reader checks cells against it (:data:`registration.io.fleet.cells.FILE_COLUMNS` is its
+The reader checks cells against it (:data:`registration.io.fleet.reading.cells.FILE_COLUMNS` is its
 columns without the texts); the ``fleet register`` options' help and the reference page
 docs/reference/fleet-tables.md are written from it (:mod:`registration.io.fleet.schemadoc`):
 ``python -m registration.io.fleet > docs/reference/fleet-tables.md`` (a test fails when the

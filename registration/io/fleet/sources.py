@@ -3,11 +3,12 @@
 ``fleet register --tables DIR`` (or ``--plots FILE`` ...) to the solver, in memory or by parts.
 
 In memory, the files are read whole and checked cell by cell (a
-:class:`~registration.io.fleet.read.FleetTables`, for :func:`~registration.fleet.batch.solve.solve_batch`
+:class:`~registration.io.fleet.reading.read.FleetTables`, for
+:func:`~registration.fleet.batch.solve.solve_batch`
 through its problem). Lazily (``lazy=True``, the partitioned solve of an archive too large for
-memory), the folder is a :class:`~registration.io.fleet.archive.ParquetSource`; CSV files in it are
+memory), the folder is a :class:`~registration.io.fleet.archive.parquet.ParquetSource`; CSV files in it are
 first converted block by block into a temporary Parquet folder
-(:func:`~registration.io.fleet.csvarchive.parquet_from_csv`), removed when the context ends.
+(:func:`~registration.io.fleet.archive.csvfolder.parquet_from_csv`), removed when the context ends.
 """
 
 from __future__ import annotations
@@ -17,10 +18,10 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Iterator, Mapping
 
-from registration.io.fleet.archive import ParquetSource
-from registration.io.fleet.csvarchive import csv_tables, parquet_from_csv
+from registration.io.fleet.archive.csvfolder import csv_tables, parquet_from_csv
+from registration.io.fleet.archive.parquet import ParquetSource
 from registration.io.fleet.folder import REQUIRED_TABLES, TABLE_NAMES, tables_in_folder
-from registration.io.fleet.read import FleetTables, read_fleet_tables
+from registration.io.fleet.reading.read import FleetTables, read_fleet_tables
 
 __all__ = ["open_fleet_tables", "plot_count", "table_paths"]
 

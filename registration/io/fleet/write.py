@@ -1,6 +1,6 @@
 """Fleet tables written as files: the long-form tables of :mod:`registration.fleet.data.tables` (SI
-units, radians) as CSV or Parquet in the file units of :mod:`registration.io.fleet.read` (degrees,
-metres, seconds), so that :func:`~registration.io.fleet.read.read_fleet_tables` reads them back."""
+units, radians) as CSV or Parquet in the file units of :mod:`registration.io.fleet.reading.read` (degrees,
+metres, seconds), so that :func:`~registration.io.fleet.reading.read.read_fleet_tables` reads them back."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from registration.core.frames import ecef2geodetic
-from registration.io.fleet.read import FILE_COLUMNS
+from registration.io.fleet.reading.read import FILE_COLUMNS
 
 __all__ = ["write_fleet_tables"]
 

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from registration.io.files.unreadable import read_error
-from registration.io.fleet.cells import FILE_COLUMNS
+from registration.io.fleet.reading.cells import FILE_COLUMNS
 
 if TYPE_CHECKING:
     import pandas as pd

@@ -37,7 +37,7 @@ from registration.io.asterix.tables.fleetfiles import PLOT_COLUMNS, REFERENCE_CO
 from registration.io.asterix.tables.sites import channel_sensors
 from registration.io.asterix.tables.timeofday import Unwrapper
 from registration.io.files.ledger import RejectedLedger
-from registration.io.fleet.cells import FILE_COLUMNS
+from registration.io.fleet.reading.cells import FILE_COLUMNS
 from registration.live.inputs.flightlevels import StreamFlightLevels
 
 __all__ = [

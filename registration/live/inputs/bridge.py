@@ -65,7 +65,7 @@ class Bridge:
 
     def ship_tables(self) -> dict:
         """The ship's sensors and platforms tables in the fleet tables' SI form."""
-        from registration.io.fleet.cells import check_frame
+        from registration.io.fleet.reading.cells import check_frame
 
         return {
             name: check_frame(name, Path("--sensors"), frame, skip=False, whole_file=False).table

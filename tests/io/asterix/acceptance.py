@@ -31,7 +31,7 @@ Z_LIMIT = 3.5
 
 def _read_fleet_tables():
     try:
-        from registration.io.fleet.read import read_fleet_tables
+        from registration.io.fleet.reading.read import read_fleet_tables
     except ImportError:  # before the fleet files moved to registration.io.fleet
         from registration.fleet import read_fleet_tables
     return read_fleet_tables

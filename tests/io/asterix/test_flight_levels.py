@@ -143,7 +143,7 @@ def test_the_offset_terms_are_the_derivatives_of_the_cost(tmp_path):
     from registration.fleet.batch.blocks import make_blocks
     from registration.fleet.batch.design import make_design
     from registration.fleet.batch.normal import evaluate, normal_equations
-    from registration.io.fleet.read import read_fleet_tables
+    from registration.io.fleet.reading.read import read_fleet_tables
 
     truth = atc_truth(25, 60.0, flight_levels=DAY)
     del truth.adsb["fl_raw"]

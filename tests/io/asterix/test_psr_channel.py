@@ -12,7 +12,7 @@ import pytest
 
 from registration.cli import main
 from registration.io.asterix import import_asterix
-from registration.io.fleet.read import read_fleet_tables
+from registration.io.fleet.reading.read import read_fleet_tables
 from tests.io.asterix.atc import atc_truth, encode_atc
 
 

@@ -211,7 +211,7 @@ def solve_batch_partitioned(
 
     ``source``: a :class:`~registration.fleet.data.source.FleetSource` (the tables in memory,
     :class:`registration.io.fleet.memory.TablesSource`, or an archive read lazily,
-    :class:`registration.io.fleet.archive.ParquetSource`); ``partitions`` equal time ranges or
+    :class:`registration.io.fleet.archive.parquet.ParquetSource`); ``partitions`` equal time ranges or
     ranges of ``partition_s`` seconds (default one); ``client``: a ``dask.distributed.Client`` to
     map the partitions on (None: this process); ``cache``: partitions whose design each process
     keeps (default: all for tables in memory without a client, else none); ``spill``: keep every

@@ -24,7 +24,7 @@ partitions whose heights carry it, and its prior is added once, with the other p
 
 A *source* gives the tables (:class:`registration.fleet.data.source.FleetSource`): the tables in
 memory (SI units, :class:`registration.io.fleet.memory.TablesSource`) or an archive read lazily
-(:class:`registration.io.fleet.archive.ParquetSource`). Its methods:
+(:class:`registration.io.fleet.archive.parquet.ParquetSource`). Its methods:
 ``plot_batches(columns)``, ``navigation_batches(columns)``, ``reference_batches(columns)``
 (iterators of column dicts: numpy arrays, ids also as ``pandas.Categorical``; a column the
 table does not have is left out),

@@ -18,8 +18,8 @@ from pathlib import Path
 import numpy as np
 
 from registration.core.progress import progress_bar
-from registration.io.fleet.archive import ParquetSource
-from registration.io.fleet.cells import FILE_COLUMNS
+from registration.io.fleet.archive.parquet import ParquetSource
+from registration.io.fleet.reading.cells import FILE_COLUMNS
 
 __all__ = ["write_labelled_tables"]
 

@@ -1,18 +1,19 @@
 """A folder of fleet CSV files as an archive for the partitioned solver (docs/howto/register-an-archive.md,
 "Files"):
 :func:`parquet_from_csv` converts it, block by block, into a Parquet folder that
-:class:`registration.io.fleet.archive.ParquetSource` reads.
+:class:`registration.io.fleet.archive.parquet.ParquetSource` reads.
 
 The plots, navigation and reference CSV files are read in blocks of whole lines
 (:func:`registration.io.files.csvrows.read_csv_blocks`, ``block_bytes`` each), every block checked
-cell by cell as the ordinary reader checks a whole file (:func:`registration.io.fleet.cells.check_frame`:
+cell by cell as the ordinary reader checks a whole file
+(:func:`registration.io.fleet.reading.cells.check_frame`:
 the same errors naming the file, the file row, the column and its unit; the first bad row of a
 file stops the run, as ``--on-bad-row stop`` does) and written as one row group of
 ``<table>.parquet`` in file units. Memory is bounded by a block. The sensors, platforms and targets files
 (small) are read whole by the ordinary reader and copied. Tables given as Parquet are linked.
 
 The checks that need a whole file are made on what the blocks leave: the radians-in-degree-columns
-check (:func:`~registration.io.fleet.checks.radians_check`, on the largest value per column and
+check (:func:`~registration.io.fleet.reading.checks.radians_check`, on the largest value per column and
 the count), unknown sensors and platforms. The heading check runs per block (a block holds
 thousands of navigation rows). Plots without a target id keep an empty ``target`` (they are
 associated partition by partition, :mod:`registration.fleet.association.partitioned`). Row groups
@@ -31,9 +32,9 @@ from typing import Any
 import numpy as np
 
 from registration.fleet.data.tables import DEFAULT_REFERENCE_SIGMA
-from registration.io.fleet.cells import FILE_COLUMNS, check_frame, read_file
-from registration.io.fleet.checks import attitude_check
 from registration.io.fleet.folder import tables_in_folder
+from registration.io.fleet.reading.cells import FILE_COLUMNS, check_frame, read_file
+from registration.io.fleet.reading.checks import attitude_check
 
 __all__ = ["csv_tables", "parquet_from_csv"]
 
@@ -58,7 +59,7 @@ def csv_tables(folder) -> bool:
 
 
 class _Radians:
-    """The radians check of :func:`~registration.io.fleet.checks.radians_check` over a file's blocks:
+    """The radians check of :func:`~registration.io.fleet.reading.checks.radians_check` over a file's blocks:
     per column the values given, the largest magnitude and its file row, whether some value is not 0."""
 
     def __init__(self, table: str):
@@ -81,7 +82,7 @@ class _Radians:
                 self.nonzero |= bool(np.any(v[finite] != 0))
 
     def check(self, path: Path) -> None:
-        from registration.io.fleet.checks import MIN_UNIT_CHECK_VALUES
+        from registration.io.fleet.reading.checks import MIN_UNIT_CHECK_VALUES
 
         cols = [c for c, _ in self.columns]
         if not cols or min(self.n.values()) < MIN_UNIT_CHECK_VALUES or not self.nonzero:
@@ -111,7 +112,7 @@ def _first_bad(read, extra: list) -> None:
 
 
 def _unknown(path: Path, read, column: str, known: set, other: Path, first_row: int) -> list:
-    from registration.io.fleet.rejects import RejectedRow
+    from registration.io.fleet.reading.rejects import RejectedRow
 
     values = np.asarray(read.table[column]).astype(str)
     bad = np.flatnonzero(~np.isin(values, list(known)) & read.bad.ok())
@@ -131,7 +132,7 @@ def _unknown(path: Path, read, column: str, known: set, other: Path, first_row: 
 def _reference_rows(path: Path, read) -> list:
     """The reference file's own rules (as the ordinary reader's): a position as lat/lon/alt or x/y/z,
     every cell of it given."""
-    from registration.io.fleet.rejects import RejectedRow
+    from registration.io.fleet.reading.rejects import RejectedRow
 
     columns = set(read.columns)
     if not ({"lat_deg", "lon_deg", "alt_m"} <= columns or {"x_m", "y_m", "z_m"} <= columns):

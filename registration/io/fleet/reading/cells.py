@@ -1,8 +1,8 @@
 """One fleet file read: its columns checked cell by cell in file units (degrees, metres, seconds)
 and converted to the columns of :mod:`registration.fleet.data.tables` (SI units, radians), with its bad
-rows (:class:`~registration.io.fleet.rejects.BadRows`) and what it notes. The files, their columns
-and the rules: :mod:`registration.io.fleet.read`; the whole-file checks:
-:mod:`registration.io.fleet.checks`. A CSV line with fewer or more fields than the header is a
+rows (:class:`~registration.io.fleet.reading.rejects.BadRows`) and what it notes. The files, their columns
+and the rules: :mod:`registration.io.fleet.reading.read`; the whole-file checks:
+:mod:`registration.io.fleet.reading.checks`. A CSV line with fewer or more fields than the header is a
 bad row (``short_row``, ``long_row``) before any of its cells is looked at.
 """
 
@@ -17,8 +17,8 @@ import numpy as np
 
 from registration.io.files.csvrows import NA_TEXTS
 from registration.io.files.unreadable import read_error
-from registration.io.fleet.checks import attitude_check, radians_check, sigma_notes
-from registration.io.fleet.rejects import BadRows
+from registration.io.fleet.reading.checks import attitude_check, radians_check, sigma_notes
+from registration.io.fleet.reading.rejects import BadRows
 from registration.io.fleet.schema import FLEET_FILES, HELD, INF_ALLOWED, POSITIVE, held
 
 __all__ = ["FILE_COLUMNS", "MEASURED", "OPTIONAL_IDS", "FileRead", "check_frame", "read_file"]

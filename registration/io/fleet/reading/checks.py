@@ -2,7 +2,8 @@
 in degree columns, angle sigmas that look like radians, and plots with values in a channel for
 which the sensors file has no sigma column. Errors are ValueErrors naming the file, a row (from 0,
 the first data row) and the column; the weaker findings come back as notes (text) for
-:attr:`registration.io.fleet.read.FleetTables.notes`. See docs/reference/fleet-files.md, "What is rejected".
+:attr:`registration.io.fleet.reading.read.FleetTables.notes`. See docs/reference/fleet-files.md,
+"What is rejected".
 
 Refused (radians look like degrees of nearly nothing, so only a pattern that degrees would not
 show is refused):

@@ -28,13 +28,13 @@ File columns (one row per item; an empty cell is "not given"):
 
 Every cell problem raises a ValueError naming the file, the row (from 0, the first data row), the
 column and its unit; a CSV line with fewer or more fields than the header is a bad row too
-(``short_row``, ``long_row``; :mod:`registration.io.fleet.cells`). Rows keep their file order, so
+(``short_row``, ``long_row``; :mod:`registration.io.fleet.reading.cells`). Rows keep their file order, so
 the row numbers of the errors of :func:`~registration.fleet.data.problem.build_problem` are file rows
 too (:meth:`FleetTables.problem` names the file in them). With ``on_bad_row="skip"`` the bad rows
 of the plots and reference files are set aside instead, each with a reason code
-(:mod:`registration.io.fleet.rejects`). Navigation rows of platforms that carry no sensor are left
+(:mod:`registration.io.fleet.reading.rejects`). Navigation rows of platforms that carry no sensor are left
 out with a note (:attr:`FleetTables.notes`), as are findings that look like radians without
-proof (:mod:`registration.io.fleet.checks`).
+proof (:mod:`registration.io.fleet.reading.checks`).
 """
 
 from __future__ import annotations
@@ -50,12 +50,22 @@ import numpy as np
 from registration.fleet.data.plot_rows import RowProblem
 from registration.fleet.data.problem import FleetProblem, build_problem, plot_row_problems
 from registration.fleet.data.tables import DEFAULT_REFERENCE_SIGMA
-from registration.io.fleet.cells import FILE_COLUMNS, FileRead, read_file
-from registration.io.fleet.checks import MIN_UNIT_CHECK_VALUES, channel_columns_check, missing_channel_notes
 from registration.io.fleet.folder import TABLE_NAMES
 from registration.io.fleet.memory import TablesSource
-from registration.io.fleet.rejects import BadRows, NoValidPlotsError, RejectedRow, check_mode, rejected_frame
-from registration.io.fleet.setaside import check_duplicates, set_aside_notes, stopping_rows
+from registration.io.fleet.reading.cells import FILE_COLUMNS, FileRead, read_file
+from registration.io.fleet.reading.checks import (
+    MIN_UNIT_CHECK_VALUES,
+    channel_columns_check,
+    missing_channel_notes,
+)
+from registration.io.fleet.reading.rejects import (
+    BadRows,
+    NoValidPlotsError,
+    RejectedRow,
+    check_mode,
+    rejected_frame,
+)
+from registration.io.fleet.reading.setaside import check_duplicates, set_aside_notes, stopping_rows
 
 __all__ = ["FILE_COLUMNS", "FleetTables", "read_fleet_tables", "needs_association", "MIN_UNIT_CHECK_VALUES"]
 
@@ -302,7 +312,7 @@ def read_fleet_tables(
     than in :meth:`FleetTables.problem`, as do file-level problems (a missing or unknown column,
     radians in a degree column); so do the optional ``targets`` file's (``target``, ``name``,
     ``surface_alt_m``, ``sigma_surface_m``: targets on a surface of known height).
-    :class:`~registration.io.fleet.rejects.NoValidPlotsError` (a
+    :class:`~registration.io.fleet.reading.rejects.NoValidPlotsError` (a
     ValueError carrying the rejected rows) when no plot row is left. ``FleetTables.notes``: the
     navigation rows left out (platforms without sensors) and what looks like radians without proof.
     """

@@ -1,5 +1,6 @@
 """Plots the fleet reader sets aside in both ``on_bad_row`` modes, with a note giving their count:
-no cell of theirs is wrong, they only cannot be used (:data:`~registration.io.fleet.rejects.SET_ASIDE_CODES`):
+no cell of theirs is wrong, they only cannot be used
+(:data:`~registration.io.fleet.reading.rejects.SET_ASIDE_CODES`):
 a plot outside its platform's navigation time span (``outside_navigation``: a bridge log cut after
 a TTM ends so) and a plot row equal in every column to an earlier one (``duplicate``: a recorder
 that writes each plot twice would count it twice in the solve). A run stops only when no plot is
@@ -9,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from registration.io.fleet.rejects import SET_ASIDE_CODES, BadRows, RejectedRow
+from registration.io.fleet.reading.rejects import SET_ASIDE_CODES, BadRows, RejectedRow
 
 __all__ = ["check_duplicates", "set_aside_notes", "stopping_rows"]
 

@@ -2,7 +2,7 @@
 (docs/howto/register-an-archive.md, "Row groups and memory").
 
 A partition reads the row groups of the plots, navigation and reference files whose ``time_s``
-statistics overlap its time range (:class:`~registration.io.fleet.archive.ParquetSource`), streamed
+statistics overlap its time range (:class:`~registration.io.fleet.archive.parquet.ParquetSource`), streamed
 batch by batch, so memory is bounded whatever the files' layout. Time is another matter: a file
 written in one row group (as pandas writes it), or whose row groups each span the whole archive
 (rows not in time order), is read whole by every partition, and the run's reading time grows with

@@ -13,15 +13,15 @@ by batch, so memory holds the partition's rows and one batch whatever the size o
 Nothing read is kept for the next call (row groups once kept on the copies of the source that
 Dask workers unpickle per task piled up there: 9.6 GiB per worker on plots in one row group).
 Tables whose row groups do not follow time are read through a copy by time buckets
-(:meth:`ParquetSource.time_ordered`, :mod:`registration.io.fleet.timeorder`). The first passes
+(:meth:`ParquetSource.time_ordered`, :mod:`registration.io.fleet.archive.timeorder`). The first passes
 get text columns as ``pandas.Categorical`` (no Python string per row). Plots of one target
 window may lie in several files in any order: a partition reads them from every file, so the answer
 is the same. Navigation rows are sorted by time per platform after reading.
 
 The files hold the fleet files' columns in file units
-(:data:`registration.io.fleet.cells.FILE_COLUMNS`: degrees, metres, seconds); the source gives the
+(:data:`registration.io.fleet.reading.cells.FILE_COLUMNS`: degrees, metres, seconds); the source gives the
 tables' columns (SI units, radians). The small tables are read and checked cell by cell by the
-reader of every fleet file (:func:`registration.io.fleet.cells.read_file`), so a bad cell there is
+reader of every fleet file (:func:`registration.io.fleet.reading.cells.read_file`), so a bad cell there is
 the error the in-memory run gives. A file that cannot be read, when the run starts or in the
 middle of it, is a one-line ValueError naming it.
 """
@@ -37,8 +37,14 @@ from typing import Iterable, Iterator, Mapping
 import numpy as np
 
 from registration.io.files.unreadable import read_error
-from registration.io.fleet.cells import FILE_COLUMNS, read_file
-from registration.io.fleet.timeorder import ROW_COLUMN, TimeProfile, needs_copy, time_profile, write_buckets
+from registration.io.fleet.archive.timeorder import (
+    ROW_COLUMN,
+    TimeProfile,
+    needs_copy,
+    time_profile,
+    write_buckets,
+)
+from registration.io.fleet.reading.cells import FILE_COLUMNS, read_file
 
 __all__ = ["LAZY_TABLES", "ParquetSource"]
 
@@ -150,13 +156,13 @@ class ParquetSource:
 
     def plot_profile(self) -> TimeProfile:
         """The plots' times: rows, first and last time, histogram (streamed; module
-        registration.io.fleet.timeorder)."""
+        registration.io.fleet.archive.timeorder)."""
         return time_profile(self._dataset("plots"), self._file_column("plots", "time"))
 
     def time_ordered(self, folder) -> ParquetSource:
         """This archive with each of its plots, navigation and reference tables whose row groups do
         not follow time (one large group, or groups that overlap in time) copied by time buckets into
-        ``folder`` (registration.io.fleet.timeorder): partitions then read only their buckets, and get
+        ``folder`` (registration.io.fleet.archive.timeorder): partitions then read only their buckets, and get
         the same rows in the same order. The first passes still read the original files. ``self``
         when no table needs it; the caller removes ``folder``."""
         copies = {}
@@ -257,7 +263,7 @@ class ParquetSource:
             except Exception as exc:  # pyarrow errors of many kinds
                 raise read_error(fragment.path, exc) from exc
         table = pa.concat_tables(tables) if tables else schema.empty_table()
-        if copied is not None:  # the original's row order (module registration.io.fleet.timeorder)
+        if copied is not None:  # the original's row order (module registration.io.fleet.archive.timeorder)
             table = table.take(np.argsort(table.column(ROW_COLUMN).to_numpy(), kind="stable"))
             table = table.drop_columns([ROW_COLUMN])
         return {c: table.column(c).to_numpy(zero_copy_only=False) for c in table.column_names}
