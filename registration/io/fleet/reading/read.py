@@ -28,13 +28,12 @@ File columns (one row per item; an empty cell is "not given"):
 
 Every cell problem raises a ValueError naming the file, the row (from 0, the first data row), the
 column and its unit; a CSV line with fewer or more fields than the header is a bad row too
-(``short_row``, ``long_row``; :mod:`registration.io.fleet.reading.cells`). Rows keep their file order, so
-the row numbers of the errors of :func:`~registration.fleet.data.problem.build_problem` are file rows
-too (:meth:`FleetTables.problem` names the file in them). With ``on_bad_row="skip"`` the bad rows
-of the plots and reference files are set aside instead, each with a reason code
-(:mod:`registration.io.fleet.reading.rejects`). Navigation rows of platforms that carry no sensor are left
-out with a note (:attr:`FleetTables.notes`), as are findings that look like radians without
-proof (:mod:`registration.io.fleet.reading.checks`).
+(``short_row``, ``long_row``; the ``cells`` module). Rows keep their file order, so the row numbers
+of the errors of :func:`~registration.fleet.data.problem.build_problem` are file rows too
+(:meth:`FleetTables.problem` names the file in them). With ``on_bad_row="skip"`` the bad rows of
+the plots and reference files are set aside instead, each with a reason code (``rejects``).
+Navigation rows of platforms that carry no sensor are left out with a note
+(:attr:`FleetTables.notes`), as are findings that look like radians without proof (``checks``).
 """
 
 from __future__ import annotations
