@@ -5,7 +5,7 @@ a pair taken out by the deletion statistic."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -44,9 +44,7 @@ class Pairs:
         return int(self.unit.size)
 
     def take(self, sel: np.ndarray) -> "Pairs":
-        return Pairs(
-            *(getattr(self, f)[sel] for f in ("unit", "target", "r", "D", "Sc", "dof", "plots", "mask"))
-        )
+        return Pairs(**{f.name: getattr(self, f.name)[sel] for f in fields(self)})
 
 
 def _masked(r: np.ndarray, D: np.ndarray, Sc: np.ndarray, keep: np.ndarray, valid: np.ndarray):
