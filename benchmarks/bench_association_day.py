@@ -44,6 +44,8 @@ from common import add_arguments, write
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
 DATE = "2024-05-01"
+#: Records an import of the day may decode (a day of three radars with ADS-B is about 4 million).
+MAX_RECORDS = 20_000_000
 #: ISA + 12 K, QNH 1025 hPa: the flight levels' atmosphere.
 ATMOSPHERE = (12.0, 102500.0)
 
@@ -94,7 +96,12 @@ def recording(folder: Path, hours: float, aircraft: int, cache: Path | None) -> 
 def imported(folder: Path, ast: Path, sites: Path) -> Path:
     out = folder / "imported"
     cmd = [sys.executable, "-m", "registration", "import", "asterix", str(ast), "--sites", str(sites)]
-    subprocess.run([*cmd, "--out", str(out), "--date", DATE], check=True, capture_output=True)
+    cmd += ["--max-records", str(MAX_RECORDS)]  # a day is more than the default bound of an import
+    done = subprocess.run(
+        [*cmd, "--out", str(out), "--date", DATE], check=True, capture_output=True, text=True
+    )
+    if "warning" in done.stderr:
+        raise SystemExit(f"the day's import is not whole:\n{done.stderr}")
     return out
 
 

@@ -3,13 +3,15 @@ records, a decompression bomb) cannot take the machine's memory, time or disk:
 
 * ``max_bytes``: the decompressed size read of each input (gzip or not); beyond it the rest of the
   file is not read (reason ``over_limit``, one row, and a note in the summary);
-* ``max_records``: the records walked per input, all categories together; beyond it the rest of
-  the file's data blocks are set aside (``over_limit``, one row per category);
+* ``max_records``: the records walked per input, all categories together, in file order; beyond it
+  the rest of the file, of every category, is set aside (``over_limit``, one row per category), so
+  an import cut by it covers one span of the recording;
 * ``max_rejected_rows``: the rows the rejected table lists; every item set aside beyond it is
   still counted in the summary (per reason), and one last row (reason ``not_listed``) says how
   many more were set aside.
 
-The defaults hold real recordings of a day of many radars; :func:`~registration.io.asterix.import_asterix`
+The defaults hold a few hours of a few radars with ADS-B (a day of three radars with ADS-B is
+about 4 million records: raise ``max_records`` for it); :func:`~registration.io.asterix.import_asterix`
 takes each as a keyword argument, ``registration import asterix`` as an option
 (``--max-bytes``, ``--max-records``, ``--max-rejected-rows``).
 """

@@ -119,3 +119,20 @@ def test_the_command_warns_when_a_bound_is_reached(tmp_path, capsys):
     assert "warning: " in captured.err and "--max-records" in captured.err
     assert "set aside 1001 records" in captured.out  # the summary total (1000 records, 1 over_limit)
     assert sum(1 for _ in open(tmp_path / "o" / "rejected.csv")) == 1 + 11
+
+
+def test_the_record_bound_cuts_every_category_at_the_same_place_in_the_file(tmp_path):
+    """A recording interleaves categories (plots, sector messages, ADS-B): the bound keeps the
+    first records of the file, all categories together, so the import covers one span of the
+    recording; before, CAT048 was decoded to the end and the later categories lost."""
+    cat048 = bytes([48, 0, 9, 0x80, 10, 1, 0x80, 10, 1])  # two records (I048/010 only)
+    cat034 = bytes([34, 0, 6, 0x80, 10, 1])  # one record
+    (tmp_path / "b.ast").write_bytes((cat048 + cat034) * 10)
+    result = import_asterix(tmp_path / "b.ast", SITES, max_records=15, keep_duplicates=True)
+    records = result.summary["files"][0]["records"]
+    assert (records["048"], records["034"]) == (10, 5)
+    over = result.rejected[result.rejected["reason_code"] == "over_limit"]
+    assert sorted(over["category"]) == [34, 48]
+    block = len(cat048 + cat034)
+    assert dict(zip(over["category"], over["offset"])) == {48: 5 * block + 3, 34: 5 * block + len(cat048) + 3}
+    assert "of every category" in " ".join(result.summary["files"][0]["notes"])

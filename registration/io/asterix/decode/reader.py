@@ -114,10 +114,10 @@ def _chunks(sizes: np.ndarray) -> list[slice]:
     return [slice(int(a), int(b)) for a, b in zip(bounds[:-1], bounds[1:])]
 
 
-def _cut(rec: Records, keep: int) -> Records:
-    """The first ``keep`` records of ``rec`` (and the bad records of the blocks up to the last kept)."""
-    last = rec.block[keep - 1] if keep else -1
-    bad = rec.bad_block <= last
+def _cut(rec: Records, offset: int) -> Records:
+    """The records of ``rec`` that start before file ``offset`` (and the bad records before it)."""
+    keep = int(np.searchsorted(rec.start, offset))
+    bad = rec.bad_start < offset
     return Records(
         rec.start[:keep],
         rec.end[:keep],
@@ -129,88 +129,108 @@ def _cut(rec: Records, keep: int) -> Records:
     )
 
 
-def _over_limit(
-    cap: Capture, cat: int, rec: Records, keep: int, budget: list, rejections: RejectedLedger
-) -> None:
-    """Set aside, as one row, the records of category ``cat`` from the ``keep``-th on."""
-    rejections.add(
-        cap.path,
-        "over_limit",
-        f"CAT{cat:03d}: the limit of {budget[1]} records per input (max_records, --max-records) is "
-        "reached; the records from here on are not decoded",
-        offset=int(rec.start[keep]),
-        packet=0,
-        category=cat,
-    )
-    cap.notes.append(
-        f"{cap.path}: the limit of {budget[1]} records (max_records, --max-records) is reached; the rest "
-        "is not decoded"
-    )
-
-
-def _walk_category(
-    cap: Capture,
-    blocks: Blocks,
-    sel: np.ndarray,
-    cat: int,
-    edition: str,
-    rejections: RejectedLedger,
-    progress: Any,
-    budget: list,
-) -> CategoryRecords:
-    """The records of category ``cat`` in blocks ``sel``; ``budget``: [records left, limit] of the
-    input, spent here."""
-    uap = uap_for(cat, edition)
-    wanted = _wanted(cat, edition)
-    parts = []
-    mv = memoryview(cap.buf)  # type: ignore[arg-type]  # a uint8 array is a buffer
-    for chunk in _chunks(blocks.end[sel] - blocks.start[sel]):
-        if budget[0] <= 0:
-            break
-        idx = sel[chunk]
-        rec = walk_records(cap.buf, blocks.start[idx], blocks.end[idx], uap, wanted)
-        if rec.start.size > budget[0]:
-            keep = budget[0]
-            _over_limit(cap, cat, rec, keep, budget, rejections)
-            rec = _cut(rec, keep)
-        budget[0] -= rec.start.size
-        for start, b in zip(rec.bad_start.tolist(), rec.bad_block.tolist()):
-            code, reason = explain_record(mv, start, int(blocks.end[idx[b]]), uap)
-            rest = int(blocks.end[idx[b]]) - start
-            seg = int(blocks.segment[idx[b]])
-            rejections.add(
-                cap.path,
-                code,
-                f"CAT{cat:03d} record (edition {edition}): {reason}; the rest of the data block "
-                f"({rest} bytes) is skipped",
-                offset=start,
-                packet=int(cap.segments.packet[seg]),
-                category=cat,
-            )
-        seg = blocks.segment[idx[rec.block]]
-        digest = record_digests(cap.buf, rec.start, rec.end)
-        parts.append(
-            (
-                _decode(cat, edition, cap.buf, rec),
-                rec.start,
-                cap.segments.packet[seg],
-                cap.segments.time[seg],
-                digest,
-                cap.segments.port[seg] if cap.segments.port.size else np.zeros(seg.size, dtype=np.int64),
-            )
+def _over_limit(cap: Capture, blocks: Blocks, walked: dict, offset: int, limit: int, rejections) -> None:
+    """Set aside, one row per category, what of the file lies from ``offset`` on (the first record
+    beyond the limit of ``limit`` records): a category's first record cut there, or its first data
+    block after it."""
+    beyond = blocks.start >= offset
+    for cat in CATEGORIES:
+        cut = walked[cat][1].start if cat in walked else np.zeros(0, dtype=np.int64)
+        cut = cut[cut >= offset]
+        later = np.flatnonzero(beyond & (blocks.category == cat))
+        if not (cut.size or later.size):
+            continue
+        rejections.add(
+            cap.path,
+            "over_limit",
+            f"CAT{cat:03d}: the limit of {limit} records per input (max_records, --max-records) is "
+            "reached; the records from here on in the file are not decoded",
+            offset=int(cut[0]) if cut.size else int(blocks.start[later[0]]),
+            packet=0,
+            category=cat,
         )
-        if progress is not None:
-            progress.update(int((blocks.end[idx] - blocks.start[idx]).sum()))
-    fields = {k: np.concatenate([p[0][k] for p in parts]) for k in parts[0][0]} if parts else {}
-    cat_ = (lambda i: np.concatenate([p[i] for p in parts])) if parts else (lambda i: np.zeros(0))
-    return CategoryRecords(
-        fields,
-        cat_(1).astype(np.int64),
-        cat_(2).astype(np.int64),
-        cat_(3).astype(np.float64),
-        cat_(4).astype(np.int64),
-        cat_(5).astype(np.int64),
+    cap.notes.append(
+        f"{cap.path}: the limit of {limit} records (max_records, --max-records) is reached at byte "
+        f"{offset}; the rest of the file, of every category, is not decoded"
     )
+
+
+def _set_aside_bad(
+    cap: Capture, blocks: Blocks, idx: np.ndarray, rec: Records, cat: int, edition: str, uap, rejections
+):
+    """One rejected row per record of ``rec`` that failed to walk (blocks ``idx``)."""
+    mv = memoryview(cap.buf)  # type: ignore[arg-type]  # a uint8 array is a buffer
+    for start, b in zip(rec.bad_start.tolist(), rec.bad_block.tolist()):
+        code, reason = explain_record(mv, start, int(blocks.end[idx[b]]), uap)
+        rest = int(blocks.end[idx[b]]) - start
+        seg = int(blocks.segment[idx[b]])
+        rejections.add(
+            cap.path,
+            code,
+            f"CAT{cat:03d} record (edition {edition}): {reason}; the rest of the data block "
+            f"({rest} bytes) is skipped",
+            offset=start,
+            packet=int(cap.segments.packet[seg]),
+            category=cat,
+        )
+
+
+def _walk_file(
+    cap: Capture, blocks: Blocks, editions: Mapping[int, str], rejections, progress: Any, limit: int
+) -> tuple[dict, int]:
+    """The records of each of :data:`CATEGORIES` (category -> :class:`CategoryRecords`) and the
+    CAT021 records that failed to walk. The blocks are walked in file order, in chunks of about
+    :data:`CHUNK_BYTES`; the first ``limit`` records of the file, all categories together, are
+    decoded, the rest set aside (:func:`_over_limit`): an import cut by the limit covers the
+    same span of the recording in every category."""
+    known = np.flatnonzero(np.isin(blocks.category, CATEGORIES))
+    uaps = {cat: uap_for(cat, editions[cat]) for cat in CATEGORIES}
+    parts: dict = {cat: [] for cat in CATEGORIES}
+    left, failed21 = limit, 0
+    for chunk in _chunks(blocks.end[known] - blocks.start[known]):
+        here = known[chunk]
+        walked = {}
+        for cat in CATEGORIES:
+            idx = here[blocks.category[here] == cat]
+            if idx.size:
+                wanted = _wanted(cat, editions[cat])
+                walked[cat] = (
+                    idx,
+                    walk_records(cap.buf, blocks.start[idx], blocks.end[idx], uaps[cat], wanted),
+                )
+        n = sum(rec.start.size for _, rec in walked.values())
+        over = n > left
+        if over:
+            offset = int(np.sort(np.concatenate([rec.start for _, rec in walked.values()]))[left])
+            _over_limit(cap, blocks, walked, offset, limit, rejections)
+            walked = {cat: (idx, _cut(rec, offset)) for cat, (idx, rec) in walked.items()}
+        for cat, (idx, rec) in walked.items():
+            left -= rec.start.size
+            failed21 += rec.bad_start.size if cat == 21 else 0
+            _set_aside_bad(cap, blocks, idx, rec, cat, editions[cat], uaps[cat], rejections)
+            seg = blocks.segment[idx[rec.block]]
+            port = cap.segments.port[seg] if cap.segments.port.size else np.zeros(seg.size, dtype=np.int64)
+            digest = record_digests(cap.buf, rec.start, rec.end)
+            decoded = _decode(cat, editions[cat], cap.buf, rec)
+            parts[cat].append(
+                (decoded, rec.start, cap.segments.packet[seg], cap.segments.time[seg], digest, port)
+            )
+        if progress is not None:
+            progress.update(int((blocks.end[here] - blocks.start[here]).sum()))
+        if over:
+            break
+    return {cat: _joined(p) for cat, p in parts.items()}, failed21
+
+
+def _joined(parts: list) -> CategoryRecords:
+    """The :class:`CategoryRecords` of one category's chunks (none: an empty one)."""
+    fields = {k: np.concatenate([p[0][k] for p in parts]) for k in parts[0][0]} if parts else {}
+    kinds = (np.int64, np.int64, np.float64, np.int64, np.int64)
+    columns = [
+        np.concatenate([p[i] for p in parts]).astype(t) if parts else np.zeros(0, dtype=t)
+        for i, t in enumerate(kinds, start=1)
+    ]
+    return CategoryRecords(fields, *columns)
 
 
 def _edition_hint(cap: Capture, blocks: Blocks, sel: np.ndarray, edition: str, failed: int) -> None:
@@ -299,14 +319,10 @@ def decode_capture(
     if refuse_non_asterix:
         _check_asterix(cap, blocks)
     cats, counts = np.unique(blocks.category, return_counts=True)
-    records = {}
-    budget = [limits.max_records, limits.max_records]
-    for cat in CATEGORIES:
-        sel = np.flatnonzero(blocks.category == cat)
-        before = rejections.count()
-        records[cat] = _walk_category(cap, blocks, sel, cat, editions[cat], rejections, progress, budget)
-        if cat == 21 and rejections.count() > before:
-            _edition_hint(cap, blocks, sel, editions[21], rejections.count() - before)
+    records, failed21 = _walk_file(cap, blocks, editions, rejections, progress, limits.max_records)
+    if failed21:
+        sel = np.flatnonzero(blocks.category == 21)
+        _edition_hint(cap, blocks, sel, editions[21], failed21)
     other = np.flatnonzero(~np.isin(blocks.category, CATEGORIES))
     if other.size:
         rejections.add(
