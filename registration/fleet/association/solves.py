@@ -38,6 +38,7 @@ __all__ = [
     "SOLVE_PLOTS",
     "Registrar",
     "thin_labels",
+    "thin_references",
     "usable_covariance",
 ]
 
@@ -52,6 +53,18 @@ INTERMEDIATE_ITERATIONS = 25
 SOLVE_PLOTS = 40_000
 
 
+def _every_kth(group: np.ndarray, time: np.ndarray, k: int) -> np.ndarray:
+    """(M,) bool: every k-th item of each ``group`` (M,) in ``time`` (M,) order kept, and its last."""
+    order = np.lexsort((time, group))
+    g = group[order]
+    first = np.r_[True, g[1:] != g[:-1]]
+    last = np.r_[g[1:] != g[:-1], True]
+    rank = np.arange(g.size) - np.maximum.accumulate(np.where(first, np.arange(g.size), 0))
+    keep = np.zeros(g.size, dtype=bool)
+    keep[order] = (rank % k == 0) | last
+    return keep
+
+
 def thin_labels(labels: np.ndarray, problem: FleetProblem, cap: int = SOLVE_PLOTS) -> np.ndarray:
     """(N,) ``labels`` with every k-th plot of each (label, sensor) in time order kept, and its first
     and last (the targets keep their spans, so their windows), k = ceil(labelled / cap); the others
@@ -62,14 +75,23 @@ def thin_labels(labels: np.ndarray, problem: FleetProblem, cap: int = SOLVE_PLOT
         return labels
     _, group = np.unique(np.asarray(labels[at], dtype=str), return_inverse=True)
     group = group.reshape(-1) * len(problem.sensor_ids) + problem.sensor[at]
-    order = np.lexsort((problem.time[at], group))
-    g = group[order]
-    first = np.r_[True, g[1:] != g[:-1]]
-    last = np.r_[g[1:] != g[:-1], True]
-    rank = np.arange(g.size) - np.maximum.accumulate(np.where(first, np.arange(g.size), 0))
     out = np.array(labels, dtype=object)
-    out[at[order[~((rank % k == 0) | last)]]] = ""
+    out[at[~_every_kth(group, problem.time[at], k)]] = ""
     return out
+
+
+def thin_references(refs: References, labels: np.ndarray, cap: int = SOLVE_PLOTS) -> References:
+    """``refs`` with, of the targets labelled in ``labels`` (N,), every k-th reference position of
+    each target in time order kept, and its first and last, k = ceil(their positions / cap) (a
+    reference such as ADS-B reports every second, more often than the radars see it); ``refs``
+    itself when they are no more than ``cap``."""
+    mine = np.isin(refs.target.astype(str), np.unique(np.asarray(labels[labels != ""], dtype=str)))
+    at = np.flatnonzero(mine)
+    k = -(-at.size // cap)
+    if k <= 1:
+        return refs
+    _, group = np.unique(refs.target[at].astype(str), return_inverse=True)
+    return refs.subset(np.sort(at[_every_kth(group.reshape(-1), refs.time[at], k)]))
 
 
 def usable_covariance(result, P0: np.ndarray) -> np.ndarray:
@@ -130,8 +152,9 @@ class Registrar:
         if not (lab != "").any():
             return None
         few = lab if final else thin_labels(lab, self.problem, SOLVE_PLOTS)
+        refs = self.refs if final else thin_references(self.refs, lab, SOLVE_PLOTS)
         try:
-            problem = labelled_problem(self.problem, few, self.refs, self.margin_s)
+            problem = labelled_problem(self.problem, few, refs, self.margin_s)
         except ValueError:
             return None
         t0 = time.perf_counter()
