@@ -169,3 +169,28 @@ def test_a_memory_limit_partitions_plots_without_ids_by_their_association(tmp_pa
     assert sizing.association_bytes(int(per_s * (chosen + 240.0) * 0.8)) <= 3 << 29
     assert summary["association"]["partitions"] == summary["partitions"] > 1
     assert summary["association"]["plots_labelled"] > 0.7 * n
+
+
+def test_partitions_leave_the_final_registration_to_the_partitioned_solver(monkeypatch):
+    """A partition's association stops at its labels: the full registration of its accepted plots
+    (the longest solve of a partition of an imported day) would be done again by the partitioned
+    solver. In memory the association still ends with it."""
+    import registration.fleet.association.associate as associate_module
+    from registration.fleet.association.solves import INTERMEDIATE_ITERATIONS
+
+    seen = []
+    solve = associate_module.solve_batch
+
+    def watched(problem, options=None, x0=None, **kwargs):
+        seen.append(options.max_iterations)
+        return solve(problem, options, x0, **kwargs)
+
+    monkeypatch.setattr(associate_module, "solve_batch", watched)
+    sim, plots = _scenario(11)
+    sc = sim.scenario
+    whole = associate_and_register(plots, sc.sensors, sc.navigation, sc.platforms, None, AssociationOptions())
+    assert whole.batch is not None and seen[-1] > INTERMEDIATE_ITERATIONS  # the full solve
+    seen.clear()
+    source = TablesSource(plots, sc.sensors, sc.navigation, sc.platforms)
+    parts = associate_partitioned(source, AssociationOptions(), partition_s=200.0)
+    assert parts is not None and seen and max(seen) <= INTERMEDIATE_ITERATIONS

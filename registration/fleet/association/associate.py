@@ -133,6 +133,7 @@ def associate_and_register(
     progress: bool = False,
     joins: dict | None = None,
     targets=None,
+    final_registration: bool = True,
 ) -> AssociationResult:
     """Associate the plots without target ids with targets, and register the fleet with them.
 
@@ -148,8 +149,11 @@ def associate_and_register(
     references'). ValueError for an empty plots table, any error of
     :func:`~registration.fleet.data.problem.build_problem` (unknown sensor, bad values; the message
     names the table and row), and when nothing can be associated (:mod:`.causes`). ``progress``: bars on
-    standard error on a terminal. Returns an :class:`AssociationResult`; the method is in the
-    module docstring.
+    standard error on a terminal. ``final_registration`` False: the last registration is one of
+    the solves between passes (a subsample of the accepted plots and looser stops) instead of the
+    full one, for a caller that registers the labelled plots itself (the association by partitions,
+    whose labels the partitioned solver registers): the labels are the same, ``batch`` is that
+    solve's. Returns an :class:`AssociationResult`; the method is in the module docstring.
     """
     t0 = time.perf_counter()
     options = options or AssociationOptions()
@@ -178,7 +182,7 @@ def associate_and_register(
         outliers = outlier_stage(reg, labels, given, options) | state.outlier
         labels[outliers] = ""
         progress_status(bar, "final registration")
-        result = reg.solve(labels, final=True)
+        result = reg.solve(labels, final=final_registration)
         if result is None or result.chi_square.dof < 1:  # nothing, or more trajectory terms than values
             raise nothing_associated(anchors, options.window_s)
     report = plot_report(

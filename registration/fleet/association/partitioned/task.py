@@ -5,7 +5,8 @@ again after a lost worker, with the same answer).
 The partition's plots (its own and the overlaps, :mod:`.parts`), the navigation and the references
 of that time range are read from the source and associated in memory by
 :func:`~registration.fleet.association.associate.associate_and_register`, exactly as a run in
-memory associates a recording of that length. A partition whose plots all carry a target id keeps
+memory associates a recording of that length, except for its last registration of the accepted
+plots, which the partitioned solver does for all partitions at once (the labels are set before it). A partition whose plots all carry a target id keeps
 them, unread by the association. A partition that cannot be associated (its plots without an id
 meet no anchor: one sensor, no reference, no id in that time) keeps the ids its plots carry, and
 says why.
@@ -70,7 +71,14 @@ def associate_part(source: Any, plan: AssociationPlan, k: int, options: Associat
     navigation = read_source(source, "navigation", source.read_navigation, plan.nav_ranges[k])
     try:
         result = associate_and_register(
-            plots, source.sensors, navigation, source.platforms, refs, options, targets=source.targets
+            plots,
+            source.sensors,
+            navigation,
+            source.platforms,
+            refs,
+            options,
+            targets=source.targets,
+            final_registration=False,  # the partitioned solver registers the labels of all partitions
         )
     except ValueError as exc:
         note = (
