@@ -194,3 +194,31 @@ def test_partitions_leave_the_final_registration_to_the_partitioned_solver(monke
     source = TablesSource(plots, sc.sensors, sc.navigation, sc.platforms)
     parts = associate_partitioned(source, AssociationOptions(), partition_s=200.0)
     assert parts is not None and seen and max(seen) <= INTERMEDIATE_ITERATIONS
+
+
+def test_the_association_partitions_are_at_most_their_longest_length(tmp_path, monkeypatch):
+    """Registration partitions longer than MAX_ASSOCIATION_PARTITION_S are associated in shorter
+    ones (an association's time grows faster than its length); the labels stay those of memory."""
+    from registration.fleet.association.partitioned import parts
+
+    sim, plots = _scenario(12)
+    sc = sim.scenario
+    folder = tmp_path / "tables"
+    folder.mkdir()
+    write_fleet_tables(folder, plots, sc.navigation, sc.sensors, sc.platforms, None, fmt="parquet")
+    monkeypatch.setattr(parts, "MAX_ASSOCIATION_PARTITION_S", 150.0)
+    out = tmp_path / "parts"
+    run = ["fleet", "register", "--tables", str(folder), "--no-plots", "--partition-s", "300"]
+    assert main([*run, "--out", str(out)]) == 0
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["partitions"] == 2 and summary["partition_s"] == 300.0
+    assert summary["association"]["partition_s"] == 150.0 and summary["association"]["partitions"] == 4
+    whole = associate_and_register(plots, sc.sensors, sc.navigation, sc.platforms, None, AssociationOptions())
+    labelled = pd.read_parquet(out / "labelled_plots").sort_values(["time_s", "sensor"], kind="stable")
+    keep = whole.labels != ""
+    memory = pd.DataFrame(
+        {"time_s": np.asarray(plots["time"])[keep], "sensor": np.asarray(plots["sensor"])[keep]}
+    ).assign(target=whole.labels[keep].astype(str))
+    memory = memory.sort_values(["time_s", "sensor"], kind="stable")
+    assert len(labelled) == len(memory) > 0
+    np.testing.assert_array_equal(labelled["target"].to_numpy(), memory["target"].to_numpy())

@@ -15,15 +15,16 @@ __all__ = ["associated_source"]
 def associated_source(args: argparse.Namespace, source, work: str, client) -> tuple:
     """(the source to register, the association or None): ``source`` itself when every plot carries a
     target id, else the archive with the plots the association labelled (partitions of
-    ``--partition-s``, on the Dask ``client``'s workers when there is one)."""
+    ``--partition-s``, at most MAX_ASSOCIATION_PARTITION_S, on the Dask ``client``'s workers when
+    there is one)."""
     from registration.fleet import AssociationOptions
-    from registration.fleet.association.partitioned import associate_partitioned
+    from registration.fleet.association.partitioned import associate_partitioned, parts
     from registration.io.fleet.archive.labelled import write_labelled_tables
 
     association = associate_partitioned(
         source,
         AssociationOptions(window_s=args.window_s),
-        partition_s=args.partition_s,
+        partition_s=min(args.partition_s, parts.MAX_ASSOCIATION_PARTITION_S),
         client=client,
         progress=True,
     )

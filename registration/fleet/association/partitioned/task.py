@@ -6,10 +6,10 @@ The partition's plots (its own and the overlaps, :mod:`.parts`), the navigation 
 of that time range are read from the source and associated in memory by
 :func:`~registration.fleet.association.associate.associate_and_register`, exactly as a run in
 memory associates a recording of that length, except for its last registration of the accepted
-plots, which the partitioned solver does for all partitions at once (the labels are set before it). A partition whose plots all carry a target id keeps
-them, unread by the association. A partition that cannot be associated (its plots without an id
-meet no anchor: one sensor, no reference, no id in that time) keeps the ids its plots carry, and
-says why.
+plots, which the partitioned solver does for all partitions at once (the labels are set before
+it). A partition whose plots all carry a target id keeps them, unread by the association. A
+partition that cannot be associated (its plots without an id meet no anchor: one sensor, no
+reference, no id in that time) keeps the ids its plots carry, and says why.
 """
 
 from __future__ import annotations
