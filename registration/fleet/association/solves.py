@@ -9,11 +9,11 @@ the covariance gets the starting covariance ``P0`` (the tables' priors or the op
 sigmas) projected on them (:func:`usable_covariance`); a channel without plots yet starts from its
 radar's states (:mod:`~registration.fleet.association.channels`).
 
-At scale, a solve between passes registers every k-th plot of each target and sensor (its first
-and last kept), about SOLVE_PLOTS plots (:func:`thin_labels`): its estimate only sets the next
-gates, and its covariance is that of the plots it used. The checks still see every labelled plot:
-their residuals come from the targets' windows fitted to all of them under that estimate
-(:meth:`Registrar.plot_residuals`). The final registration uses every accepted plot.
+At scale, a solve between passes registers every k-th window of each target (its last kept), with
+all their plots and reference positions, about SOLVE_PLOTS of each (:func:`thin_windows`): its
+estimate only sets the next gates, and its covariance is that of the plots it used. The checks
+still see every labelled plot: their residuals come from the targets' windows fitted to all of
+them under that estimate (:meth:`Registrar.plot_residuals`). The final registration uses every accepted plot.
 """
 
 from __future__ import annotations
@@ -27,6 +27,7 @@ from registration.fleet.association.channels import channel_start
 from registration.fleet.association.joining.windowfit import WindowFit, fit_windows
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.problems import labelled_problem
+from registration.fleet.batch.blocks import target_spans, window_grid, window_of
 from registration.fleet.batch.estimate import solve_batch
 from registration.fleet.data.known_targets import References
 from registration.fleet.data.problem import FleetProblem
@@ -37,8 +38,7 @@ __all__ = [
     "INTERMEDIATE_ITERATIONS",
     "SOLVE_PLOTS",
     "Registrar",
-    "thin_labels",
-    "thin_references",
+    "thin_windows",
     "usable_covariance",
 ]
 
@@ -53,45 +53,39 @@ INTERMEDIATE_ITERATIONS = 25
 SOLVE_PLOTS = 40_000
 
 
-def _every_kth(group: np.ndarray, time: np.ndarray, k: int) -> np.ndarray:
-    """(M,) bool: every k-th item of each ``group`` (M,) in ``time`` (M,) order kept, and its last."""
-    order = np.lexsort((time, group))
-    g = group[order]
-    first = np.r_[True, g[1:] != g[:-1]]
-    last = np.r_[g[1:] != g[:-1], True]
-    rank = np.arange(g.size) - np.maximum.accumulate(np.where(first, np.arange(g.size), 0))
-    keep = np.zeros(g.size, dtype=bool)
-    keep[order] = (rank % k == 0) | last
-    return keep
+def thin_windows(
+    labels: np.ndarray, problem: FleetProblem, refs: References, window_s: float, cap: int = SOLVE_PLOTS
+) -> tuple[np.ndarray, References]:
+    """(labels (N,), references): of each target labelled in ``labels``, the plots and reference
+    positions of every k-th of its windows of ``window_s`` s (the batch's grid: its labelled plots'
+    span cut into equal windows), and of its last window; the other plots' labels '' and the
+    references of the targets not labelled left out. k = ceil(n / ``cap``), n the larger of the
+    labelled plots and their targets' reference positions; ``labels`` and ``refs`` themselves when
+    both are no more than ``cap``.
 
-
-def thin_labels(labels: np.ndarray, problem: FleetProblem, cap: int = SOLVE_PLOTS) -> np.ndarray:
-    """(N,) ``labels`` with every k-th plot of each (label, sensor) in time order kept, and its first
-    and last (the targets keep their spans, so their windows), k = ceil(labelled / cap); the others
-    ''. The labels themselves when no more than ``cap`` plots are labelled."""
+    Whole windows, not every k-th plot: a window keeps all its plots and references, so its
+    trajectory is as well determined as in the full solve. Every k-th plot left windows of two or
+    three plots of 2-D radars, their heights hanging on a thinned height reference, and the solves
+    crawled (to their iteration cap, 0.5 sigma from their minimum).
+    """
     at = np.flatnonzero(labels != "")
-    k = -(-at.size // cap)
+    names, tg = np.unique(np.asarray(labels[at], dtype=str), return_inverse=True)
+    tg = tg.reshape(-1)
+    mine = np.flatnonzero(np.isin(refs.target.astype(str), names))
+    k = -(-max(at.size, mine.size) // cap)
     if k <= 1:
-        return labels
-    _, group = np.unique(np.asarray(labels[at], dtype=str), return_inverse=True)
-    group = group.reshape(-1) * len(problem.sensor_ids) + problem.sensor[at]
+        return labels, refs
+    t0, t1 = target_spans(tg, problem.time[at], names.size)
+    count, length, _ = window_grid(t0, t1, window_s)
+    w = window_of(t0, count, length, tg, problem.time[at])
     out = np.array(labels, dtype=object)
-    out[at[~_every_kth(group, problem.time[at], k)]] = ""
-    return out
-
-
-def thin_references(refs: References, labels: np.ndarray, cap: int = SOLVE_PLOTS) -> References:
-    """``refs`` with, of the targets labelled in ``labels`` (N,), every k-th reference position of
-    each target in time order kept, and its first and last, k = ceil(their positions / cap) (a
-    reference such as ADS-B reports every second, more often than the radars see it); ``refs``
-    itself when they are no more than ``cap``."""
-    mine = np.isin(refs.target.astype(str), np.unique(np.asarray(labels[labels != ""], dtype=str)))
-    at = np.flatnonzero(mine)
-    k = -(-at.size // cap)
-    if k <= 1:
-        return refs
-    _, group = np.unique(refs.target[at].astype(str), return_inverse=True)
-    return refs.subset(np.sort(at[_every_kth(group.reshape(-1), refs.time[at], k)]))
+    out[at[~((w % k == 0) | (w == count[tg] - 1))]] = ""
+    rt = np.searchsorted(names, refs.target[mine].astype(str))
+    time = refs.time[mine]
+    rw = window_of(t0, count, length, rt, time)
+    inside = (time >= t0[rt]) & (time <= t1[rt])
+    keep = ~inside | (rw % k == 0) | (rw == count[rt] - 1)
+    return out, refs.subset(mine[keep])
 
 
 def usable_covariance(result, P0: np.ndarray) -> np.ndarray:
@@ -151,8 +145,9 @@ class Registrar:
         lab = labels if subset is None else np.where(subset, labels, "")
         if not (lab != "").any():
             return None
-        few = lab if final else thin_labels(lab, self.problem, SOLVE_PLOTS)
-        refs = self.refs if final else thin_references(self.refs, lab, SOLVE_PLOTS)
+        few, refs = (
+            (lab, self.refs) if final else thin_windows(lab, self.problem, self.refs, self.between.window_s)
+        )
         try:
             problem = labelled_problem(self.problem, few, refs, self.margin_s)
         except ValueError:
