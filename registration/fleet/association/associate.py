@@ -149,11 +149,9 @@ def associate_and_register(
     references'). ValueError for an empty plots table, any error of
     :func:`~registration.fleet.data.problem.build_problem` (unknown sensor, bad values; the message
     names the table and row), and when nothing can be associated (:mod:`.causes`). ``progress``: bars on
-    standard error on a terminal. ``final_registration`` False: the last registration is one of
-    the solves between passes (a subsample of the accepted plots and looser stops) instead of the
-    full one, for a caller that registers the labelled plots itself (the association by partitions,
-    whose labels the partitioned solver registers): the labels are the same, ``batch`` is that
-    solve's. Returns an :class:`AssociationResult`; the method is in the module docstring.
+    standard error on a terminal. ``final_registration`` False: ``batch`` is a solve between passes
+    (a subsample, looser stops), not the full registration, for a caller that registers the labels
+    itself (the association by partitions); the labels are the same. The method: module docstring.
     """
     t0 = time.perf_counter()
     options = options or AssociationOptions()
