@@ -12,6 +12,7 @@ import sys
 import time
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 import pytest
 
@@ -136,3 +137,27 @@ def test_the_record_bound_cuts_every_category_at_the_same_place_in_the_file(tmp_
     block = len(cat048 + cat034)
     assert dict(zip(over["category"], over["offset"])) == {48: 5 * block + 3, 34: 5 * block + len(cat048) + 3}
     assert "of every category" in " ".join(result.summary["files"][0]["notes"])
+
+
+@pytest.mark.parametrize("form", ["raw", "pcap.gz", "pcapng"])
+def test_the_record_bound_keeps_the_first_records_of_a_libasterix_recording(files, form):
+    """The standard recording (CAT048 plots, CAT034 sector messages, CAT021 reports interleaved,
+    encoded by libasterix; raw, or in capture wrappers): with the bound at half its records, what is
+    decoded is exactly the records of the whole decode that come first in the file, of every
+    category together."""
+    from registration.io.asterix.decode.reader import decode_file
+    from registration.io.files.limits import Limits
+
+    whole = decode_file(files[form])
+    offsets = {cat: r.offset for cat, r in whole.records.items()}
+    total = sum(o.size for o in offsets.values())
+    bound = total // 2
+    cut = decode_file(files[form], limits=Limits(max_records=bound))
+    first = np.sort(np.concatenate(list(offsets.values())))[:bound]
+    kept = 0
+    for cat, o in offsets.items():
+        np.testing.assert_array_equal(cut.records[cat].offset, o[np.isin(o, first)])
+        kept += cut.records[cat].size
+    assert kept == bound
+    assert sum(cut.records[c].size > 0 for c in (48, 34, 21)) == 3  # every category, not only the first
+    assert "of every category" in " ".join(cut.capture.notes)
