@@ -13,7 +13,8 @@ At scale, a solve between passes registers every k-th window of each target (its
 all their plots and reference positions, about SOLVE_PLOTS of each (:func:`thin_windows`): its
 estimate only sets the next gates, and its covariance is that of the plots it used. The checks
 still see every labelled plot: their residuals come from the targets' windows fitted to all of
-them under that estimate (:meth:`Registrar.plot_residuals`). The final registration uses every accepted plot.
+them under that estimate (:meth:`Registrar.plot_residuals`). The final registration uses every
+accepted plot (a caller that registers them itself may end with a solve between passes instead).
 """
 
 from __future__ import annotations

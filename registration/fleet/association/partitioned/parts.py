@@ -37,10 +37,10 @@ __all__ = [
 DEFAULT_OVERLAP_S = 120.0
 
 #: The longest association partition ``fleet register`` makes (s), whatever its registration's
-#: partitions: an association's time grows faster than its length (more targets at once make more
-#: Levenberg-Marquardt iterations). On the imported ATC day, 2000 s (2240 s read) took 18.7 s and
-#: 10 600 s took 144.5 s, 1.5 times as much per second; with the overlaps read twice, partitions of
-#: 800 to 2000 s cost about the same per second.
+#: partitions: an association's time grows faster than its length (more targets at once). On cuts of
+#: the imported ATC day, 2000 s took 7.7 s and 10 600 s took 63.6 s, 1.6 times as much per second
+#: (time ~ length^1.27); with 240 s of overlaps read per partition, partitions of 800 to 2000 s cost
+#: about the same per second.
 MAX_ASSOCIATION_PARTITION_S = 1800.0
 
 
