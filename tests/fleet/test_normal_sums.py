@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from registration.fleet.association.grouping.units import unit_plots
-from registration.fleet.batch.normal import _whitened_terms
+from registration.fleet.batch.reference_terms import add_whitened_terms
 from registration.fleet.batch.segments import MAX_SEGMENT_ROWS, segment_sums
 
 
@@ -53,7 +53,7 @@ def test_whitened_terms_are_the_einsum_forms_bit_for_bit(a_rows):
     whiten = rng.normal(size=(R, a_rows, 3)) * np.where(rng.random((R, a_rows, 3)) < 0.1, 0.0, 1.0)
     e = rng.normal(size=(R, a_rows))
     V, b_c = np.zeros((B, K, 3, K, 3)), np.zeros((B, K, 3))
-    _whitened_terms(block, basis, whiten, e, V, b_c)
+    add_whitened_terms(block, basis, whiten, e, V, b_c)
     gram = np.einsum("rai,raj->rij", whiten, whiten).reshape(-1, 9)
     grad = np.einsum("rai,ra->ri", whiten, e)
     at3 = (block[:, None] * 3 + np.arange(3)).reshape(-1)
@@ -72,3 +72,34 @@ def test_unit_plots_are_each_units_plots_in_order():
     order, start = unit_plots(of_plot, 52)  # two units without plots at the end
     for u in range(52):
         assert np.array_equal(order[start[u] : start[u + 1]], np.flatnonzero(of_plot == u))
+
+
+@pytest.mark.parametrize("whitened", [False, True])
+def test_the_designs_reference_information_is_the_one_computed_at_each_evaluation(whitened):
+    """The references' share of the window blocks, computed once when the design is made, gives the
+    normal equations of computing it at every evaluation, bit for bit, with scalar weights and
+    with whitening in the local frame (a vertical sigma of its own)."""
+    from dataclasses import replace
+
+    from registration.fleet import build_problem
+    from registration.fleet.batch.blocks import make_blocks
+    from registration.fleet.batch.design import make_design
+    from registration.fleet.batch.initial import initial_coefficients
+    from registration.fleet.batch.normal import evaluate, normal_equations
+    from registration.fleet.simulation.scenario import fleet_scenario
+
+    sc = fleet_scenario(5, duration_s=120.0)
+    refs = dict(sc.references)
+    if whitened:
+        refs["sigma_up"] = 4.0 * np.asarray(refs["sigma"], dtype=np.float64)
+    problem = build_problem(sc.plots, sc.sensors, sc.navigation, sc.platforms, refs)
+    design = make_design(problem, make_blocks(problem, 20.0, 3))
+    assert design.ref_information is not None and (design.ref_whiten is not None) == whitened
+    x = np.random.default_rng(5).normal(size=problem.layout.n) * 1e-3
+    ev = evaluate(design, x, initial_coefficients(design, x))
+    cached, fresh = normal_equations(design, ev), normal_equations(replace(design, ref_information=None), ev)
+    assert np.array_equal(cached.V, fresh.V) and np.array_equal(cached.b_c, fresh.b_c)
+    assert np.array_equal(cached.U, fresh.U) and np.array_equal(cached.W, fresh.W)
+    # and the references do weigh: without them the blocks differ
+    bare = normal_equations(replace(design, ref_information=np.zeros_like(design.ref_information)), ev)
+    assert not np.array_equal(bare.V, cached.V)

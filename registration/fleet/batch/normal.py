@@ -50,8 +50,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from registration._generated import api as generated
-from registration.fleet.batch.blocks import Blocks
 from registration.fleet.batch.design import Design, plot_model_inputs
+from registration.fleet.batch.reference_terms import add_reference_terms, add_whitened_terms
 from registration.fleet.batch.segments import segment_sums
 from registration.fleet.data.layout import (
     ATTITUDE_COLUMNS,
@@ -233,59 +233,6 @@ class Normal:
     H: np.ndarray | None = None  # (B, q) coupling of each block with the flight levels' height offset
 
 
-def _whitened_terms(
-    block: np.ndarray, basis: np.ndarray, whiten: np.ndarray, e: np.ndarray, V: np.ndarray, b_c: np.ndarray
-) -> None:
-    """Add to V (B, K, 3, K, 3) and b_c (B, K, 3) in place the terms of residuals ``e`` (R, a) =
-    ``L (y - p(t))`` (up to a constant) of positions in blocks ``block`` (R,) with basis values
-    ``basis`` (R, K) and whitening rows ``whiten`` (R, a, 3): ``V += basis_k basis_m L^T L``,
-    ``b_c += basis_k L^T e``."""
-    K, B = V.shape[1], V.shape[0]
-    rows = np.ascontiguousarray(whiten.transpose(1, 2, 0))  # (a, 3, R)
-    products = np.zeros((3, 3, block.size))  # L^T L, (3, 3, R): sums over a in order, as einsum's
-    for row in rows:
-        products += row[:, None, :] * row[None, :, :]
-    gram = products.reshape(9, -1)
-    grad = np.einsum("rai,ra->ri", whiten, e)  # L^T e
-    at3 = (block[:, None] * 3 + np.arange(3)).reshape(-1)
-    at9 = (block[None, :] * 9 + np.arange(9)[:, None]).reshape(-1)  # gram's order; each bin's terms by r
-    for k in range(K):
-        b_c[:, k, :] += np.bincount(at3, (basis[:, k, None] * grad).reshape(-1), 3 * B).reshape(B, 3)
-        for m in range(k, K):  # the (m, k) term is the (k, m) one, number for number
-            w = (basis[:, k] * basis[:, m])[None, :] * gram
-            term = np.bincount(at9, w.reshape(-1), 9 * B).reshape(B, 3, 3)
-            V[:, k, :, m, :] += term
-            if m != k:
-                V[:, m, :, k, :] += term
-
-
-def _reference_terms(
-    blk: Blocks,
-    ev: Evaluation,
-    ref_weight: np.ndarray,
-    V: np.ndarray,
-    b_c: np.ndarray,
-    whiten: np.ndarray | None = None,
-) -> None:
-    """Add the reference positions' terms to V (B, K, 3, K, 3) and b_c (B, K, 3) in place: with the
-    scalar weights ``ref_weight`` (R',), or with the whitening matrices ``whiten`` (R', 3, 3)."""
-    if blk.ref_block.size == 0:
-        return
-    K, B = blk.n_coef, blk.n_blocks
-    if whiten is not None:
-        _whitened_terms(blk.ref_block, blk.ref_basis, whiten, ev.e_ref, V, b_c)
-        return
-    w2 = ref_weight**2
-    for k in range(K):
-        for a in range(3):
-            b_c[:, k, a] += np.bincount(blk.ref_block, blk.ref_basis[:, k] * ref_weight * ev.e_ref[:, a], B)
-        for m in range(k, K):  # the (m, k) term is the (k, m) one, number for number
-            ref = np.bincount(blk.ref_block, blk.ref_basis[:, k] * blk.ref_basis[:, m] * w2, B)
-            V[:, k, np.arange(3), m, np.arange(3)] += ref[:, None]
-            if m != k:
-                V[:, m, np.arange(3), k, np.arange(3)] += ref[:, None]
-
-
 def _group_products(design: Design, ev: Evaluation) -> tuple[np.ndarray, np.ndarray | None]:
     """The sums over each group of Z^T Z (m = q + w + 1 columns of Evaluation.Z), stacked (S, m, m),
     and the row of each group in that stack (G,) (None: row g is group g's).
@@ -322,9 +269,9 @@ def normal_equations(design: Design, ev: Evaluation) -> Normal:
     V = segment_sums(G[:, :q, :q], blk.group_block_start, row)
     b_c = -segment_sums(G[:, :q, -1], blk.group_block_start, row)
     V5, b_c3 = V.reshape(-1, K, 3, K, 3), b_c.reshape(-1, K, 3)
-    _reference_terms(blk, ev, design.ref_weight, V5, b_c3, design.ref_whiten)
+    add_reference_terms(blk, ev.e_ref, design.ref_weight, V5, b_c3, design.ref_whiten, design.ref_information)
     if design.surface is not None:
-        _whitened_terms(
+        add_whitened_terms(
             design.surface.block, design.surface.basis, ev.surface_whiten, ev.e_surface[:, None], V5, b_c3
         )
     idx = blk.group_state
