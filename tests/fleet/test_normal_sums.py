@@ -101,5 +101,16 @@ def test_the_designs_reference_information_is_the_one_computed_at_each_evaluatio
     assert np.array_equal(cached.V, fresh.V) and np.array_equal(cached.b_c, fresh.b_c)
     assert np.array_equal(cached.U, fresh.U) and np.array_equal(cached.W, fresh.W)
     # and the references do weigh: without them the blocks differ
-    bare = normal_equations(replace(design, ref_information=np.zeros_like(design.ref_information)), ev)
+    info = design.ref_information
+    bare = normal_equations(replace(design, ref_information=replace(info, V=np.zeros_like(info.V))), ev)
     assert not np.array_equal(bare.V, cached.V)
+    # a design whose references are replaced does not use the share of the old ones
+    half = replace(
+        design,
+        ref_weight=design.ref_weight * 0.5,
+        ref_whiten=None if not whitened else design.ref_whiten * 0.5,
+    )
+    assert not np.array_equal(normal_equations(half, ev).V, cached.V)
+    assert np.array_equal(
+        normal_equations(half, ev).V, normal_equations(replace(half, ref_information=None), ev).V
+    )

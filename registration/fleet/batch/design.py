@@ -20,7 +20,7 @@ from numpy.typing import ArrayLike
 
 from registration.core.frames import ecef2geodetic, enu2ecef_rotation
 from registration.fleet.batch.blocks import Blocks
-from registration.fleet.batch.reference_terms import reference_information
+from registration.fleet.batch.reference_terms import ReferenceInformation
 from registration.fleet.data.layout import ATTITUDE_COLUMNS, BIAS_COLUMNS, TIME_BIAS_COLUMN
 from registration.fleet.data.navigation import SeenNavigation
 from registration.fleet.data.problem import FleetProblem
@@ -131,9 +131,9 @@ class Design:
     # common height offset, zeros for the others; None: no offset state
     ref_offset_up: np.ndarray | None = None
     offset_state: int = -1  # the offset's state index (layout.height_offset_index)
-    # (B, n_coef, 3, n_coef, 3) the references' share of the window blocks, the same at every point
-    # (reference_terms.reference_information); None: none used, or computed at each normal equations
-    ref_information: np.ndarray | None = None
+    # the references' share of the window blocks, the same at every point, with the arrays it holds
+    # for (reference_terms.ReferenceInformation); None: computed at each normal equations
+    ref_information: ReferenceInformation | None = None
 
     @property
     def n_reference_values(self) -> int:
@@ -256,5 +256,5 @@ def make_design(problem: FleetProblem, blocks: Blocks) -> Design:
         surface=surface_rows(problem, blocks),
         ref_offset_up=offset_up,
         offset_state=layout.height_offset_index,
-        ref_information=reference_information(blocks, ref_weight, whiten),
+        ref_information=ReferenceInformation.of(blocks, ref_weight, whiten),
     )

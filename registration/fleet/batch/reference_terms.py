@@ -18,11 +18,19 @@ are computed whole at each evaluation (:func:`add_whitened_terms`).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from registration.fleet.batch.blocks import Blocks
 
-__all__ = ["add_reference_terms", "add_whitened_terms", "reference_information", "whitened_information"]
+__all__ = [
+    "ReferenceInformation",
+    "add_reference_terms",
+    "add_whitened_terms",
+    "reference_information",
+    "whitened_information",
+]
 
 
 def whitened_information(
@@ -92,6 +100,26 @@ def reference_information(
     return out
 
 
+@dataclass(frozen=True)
+class ReferenceInformation:
+    """The references' share of the window blocks ``V`` (B, K, 3, K, 3; None: no reference used) and
+    the arrays it was computed from (:func:`reference_information`). It holds for a design only while
+    those are the design's own: a design replaced with other reference weights or other blocks (a
+    test that drops the references, say) has its share computed anew."""
+
+    blocks: Blocks
+    weight: np.ndarray
+    whiten: np.ndarray | None
+    V: np.ndarray | None
+
+    @classmethod
+    def of(cls, blocks: Blocks, weight: np.ndarray, whiten: np.ndarray | None) -> ReferenceInformation:
+        return cls(blocks, weight, whiten, reference_information(blocks, weight, whiten))
+
+    def holds_for(self, blocks: Blocks, weight: np.ndarray, whiten: np.ndarray | None) -> bool:
+        return self.blocks is blocks and self.weight is weight and self.whiten is whiten
+
+
 def add_reference_terms(
     blk: Blocks,
     e_ref: np.ndarray,
@@ -99,15 +127,19 @@ def add_reference_terms(
     V: np.ndarray,
     b_c: np.ndarray,
     whiten: np.ndarray | None = None,
-    information: np.ndarray | None = None,
+    information: ReferenceInformation | None = None,
 ) -> None:
     """Add the reference positions' terms to V (B, K, 3, K, 3) and b_c (B, K, 3) in place, for their
     residuals ``e_ref`` (R', 3): with the scalar weights ``ref_weight`` (R',), or with the whitening
-    matrices ``whiten`` (R', 3, 3). ``information``: their share of V
-    (:func:`reference_information` of the same references; None: computed here)."""
+    matrices ``whiten`` (R', 3, 3). ``information``: their share of V computed before (used when it
+    holds for these arrays; else computed here)."""
     if blk.ref_block.size == 0:
         return
-    V += reference_information(blk, ref_weight, whiten) if information is None else information
+    if information is not None and information.holds_for(blk, ref_weight, whiten):
+        assert information.V is not None
+        V += information.V
+    else:
+        V += reference_information(blk, ref_weight, whiten)
     if whiten is not None:
         _whitened_gradient(blk.ref_block, blk.ref_basis, whiten, e_ref, b_c)
         return
