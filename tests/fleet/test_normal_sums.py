@@ -3,12 +3,20 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
+from registration.fleet import build_problem
 from registration.fleet.association.grouping.units import unit_plots
+from registration.fleet.batch.blocks import make_blocks
+from registration.fleet.batch.design import make_design
+from registration.fleet.batch.initial import initial_coefficients
+from registration.fleet.batch.normal import evaluate, normal_equations
 from registration.fleet.batch.reference_terms import add_whitened_terms
 from registration.fleet.batch.segments import MAX_SEGMENT_ROWS, segment_sums
+from registration.fleet.simulation.scenario import fleet_scenario
 
 
 @pytest.mark.parametrize("longest", [1, 2, 3, 5, MAX_SEGMENT_ROWS, MAX_SEGMENT_ROWS + 3])
@@ -79,15 +87,6 @@ def test_the_designs_reference_information_is_the_one_computed_at_each_evaluatio
     """The references' share of the window blocks, computed once when the design is made, gives the
     normal equations of computing it at every evaluation, bit for bit, with scalar weights and
     with whitening in the local frame (a vertical sigma of its own)."""
-    from dataclasses import replace
-
-    from registration.fleet import build_problem
-    from registration.fleet.batch.blocks import make_blocks
-    from registration.fleet.batch.design import make_design
-    from registration.fleet.batch.initial import initial_coefficients
-    from registration.fleet.batch.normal import evaluate, normal_equations
-    from registration.fleet.simulation.scenario import fleet_scenario
-
     sc = fleet_scenario(5, duration_s=120.0)
     refs = dict(sc.references)
     if whitened:
@@ -102,6 +101,8 @@ def test_the_designs_reference_information_is_the_one_computed_at_each_evaluatio
     assert np.array_equal(cached.U, fresh.U) and np.array_equal(cached.W, fresh.W)
     # and the references do weigh: without them the blocks differ
     info = design.ref_information
+    # only the windows of the reference target are held (one target among the scenario's several)
+    assert 0 < info.rows.size < design.blocks.n_blocks
     bare = normal_equations(replace(design, ref_information=replace(info, V=np.zeros_like(info.V))), ev)
     assert not np.array_equal(bare.V, cached.V)
     # a design whose references are replaced does not use the share of the old ones

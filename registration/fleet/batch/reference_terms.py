@@ -102,19 +102,25 @@ def reference_information(
 
 @dataclass(frozen=True)
 class ReferenceInformation:
-    """The references' share of the window blocks ``V`` (B, K, 3, K, 3; None: no reference used) and
-    the arrays it was computed from (:func:`reference_information`). It holds for a design only while
-    those are the design's own: a design replaced with other reference weights or other blocks (a
-    test that drops the references, say) has its share computed anew."""
+    """The references' share ``V`` (B_r, K, 3, K, 3) of the window blocks ``rows`` (B_r,) that have
+    reference positions (the others have none: kept out, so a design with one reference target
+    among many holds only that target's windows), and the arrays it was computed from
+    (:func:`reference_information`). It holds for a design only while those are the design's own:
+    a design replaced with other reference weights or other blocks (a test that drops the
+    references, say) has its share computed anew."""
 
     blocks: Blocks
     weight: np.ndarray
     whiten: np.ndarray | None
-    V: np.ndarray | None
+    rows: np.ndarray
+    V: np.ndarray
 
     @classmethod
     def of(cls, blocks: Blocks, weight: np.ndarray, whiten: np.ndarray | None) -> ReferenceInformation:
-        return cls(blocks, weight, whiten, reference_information(blocks, weight, whiten))
+        rows = np.unique(blocks.ref_block)
+        dense = reference_information(blocks, weight, whiten)
+        V = np.zeros((0, blocks.n_coef, 3, blocks.n_coef, 3)) if dense is None else dense[rows]
+        return cls(blocks, weight, whiten, rows, V)
 
     def holds_for(self, blocks: Blocks, weight: np.ndarray, whiten: np.ndarray | None) -> bool:
         return self.blocks is blocks and self.weight is weight and self.whiten is whiten
@@ -136,8 +142,7 @@ def add_reference_terms(
     if blk.ref_block.size == 0:
         return
     if information is not None and information.holds_for(blk, ref_weight, whiten):
-        assert information.V is not None
-        V += information.V
+        V[information.rows] += information.V  # rows are distinct: one addition per entry, as below
     else:
         V += reference_information(blk, ref_weight, whiten)
     if whiten is not None:
