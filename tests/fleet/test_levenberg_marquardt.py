@@ -7,7 +7,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from registration.fleet.batch.levenberg_marquardt import levenberg_marquardt, two_phases
+from registration.fleet.batch.levenberg_marquardt import (
+    DECREASE_FLOOR,
+    LAMBDA_START,
+    levenberg_marquardt,
+    two_phases,
+)
 from registration.fleet.batch.solver import BatchOptions
 
 
@@ -110,3 +115,29 @@ def test_it_stops_after_max_iterations():
         problem, problem.point(np.array([1.0, 0.5])), np.arange(2), BatchOptions(max_iterations=1)
     )
     assert solved.iterations == 1 and not solved.converged and len(solved.cost_history) == 2
+
+
+class Exact(Decay):
+    """A provider whose every step gains what it predicts (gain ratio 1), its damping recorded."""
+
+    def __init__(self, t: np.ndarray, y: np.ndarray):
+        super().__init__(t, y)
+        self.lams: list[float] = []
+
+    def step(self, at: Point, lam: float, free: np.ndarray, scale: np.ndarray, determined) -> Step:
+        self.lams.append(lam)
+        return Step(np.zeros(at.x.size), 1.0)
+
+    def trial(self, at: Point, step: Step) -> Point:
+        return Point(at.x, at.cost - step.predicted)
+
+
+def test_the_damping_falls_by_the_floor_factor_while_steps_gain_what_they_predict():
+    """Nielsen's factor max(floor, 1 - (2 rho - 1)^3) at rho = 1 is the floor: 0.1 here (Nielsen's
+    1/3 took three times the steps to come back from a raised damping)."""
+    base = _problem()
+    problem = Exact(base.t, base.y)
+    levenberg_marquardt(problem, Point(np.ones(2), 1e6), np.arange(2), BatchOptions(max_iterations=5))
+    assert DECREASE_FLOOR == 0.1
+    np.testing.assert_allclose(np.array(problem.lams[1:]) / problem.lams[:-1], DECREASE_FLOOR)
+    assert problem.lams[0] == LAMBDA_START and len(problem.lams) == 5

@@ -1,5 +1,5 @@
 """The one Levenberg-Marquardt engine of the batch solvers (Marquardt's diagonal scaling, Nielsen's
-damping update) over a provider of normal equations (:class:`NormalEquations`).
+damping update with a lower floor, DECREASE_FLOOR) over a provider of normal equations (:class:`NormalEquations`).
 
 Two providers implement it: the design of a problem held in memory
 (:class:`registration.fleet.batch.solver.DesignEquations`) and the passes over the partitions of an
@@ -19,6 +19,7 @@ from typing import Any, Generic, Protocol, TypeVar
 import numpy as np
 
 __all__ = [
+    "DECREASE_FLOOR",
     "LAMBDA_MAX",
     "LAMBDA_START",
     "TARGETS_FIRST",
@@ -33,6 +34,9 @@ __all__ = [
 
 LAMBDA_START = 1e-3
 LAMBDA_MAX = 1e16
+#: The most an accepted step lowers the damping by (Nielsen's rule takes 1/3): a run that raised the
+#: damping on a curved stretch comes back to Gauss-Newton steps in half the iterations.
+DECREASE_FLOOR = 0.1
 #: The first phase (targets alone) stops when a step would gain less than this share of the cost.
 TARGETS_FIRST = 1e-2
 
@@ -140,7 +144,7 @@ def levenberg_marquardt(
             trial = equations.trial(point, step)
             rho = (point.cost - trial.cost) / pred if pred > 0 else -1.0
             if np.isfinite(trial.cost) and rho > 0:
-                lam *= max(1.0 / 3.0, 1.0 - (2.0 * rho - 1.0) ** 3)
+                lam *= max(DECREASE_FLOOR, 1.0 - (2.0 * rho - 1.0) ** 3)
                 nu, point, accepted = 2.0, trial, True
                 history.append(trial.cost)
                 break
