@@ -35,3 +35,29 @@ def test_a_window_started_far_off_does_not_steer_the_others():
     assert np.all(remaining <= options.tolerance)
     cost, cost_near = window_costs(design, ev), window_costs(design, near)
     assert abs(cost[far] - cost_near[far]) < 1e-6 * max(cost_near[far], 1.0)
+
+
+def test_window_steps_equal_the_pseudo_inverse_steps():
+    """The association's window fit solves each regular block by LU and a singular one (a window whose
+    plots do not determine it) by the pseudo-inverse: the steps all blocks' pseudo-inverse gave."""
+    from registration.fleet.association.joining.windowfit import window_steps
+    from registration.fleet.batch.solver import SINGULAR_BLOCK
+
+    rng = np.random.default_rng(7)
+    A = rng.normal(size=(5, 12, 20))
+    V = A @ A.transpose(0, 2, 1)
+    V[3] = A[3, :, :4] @ A[3, :, :4].T  # rank 4
+    b = rng.normal(size=(5, 12))
+    b[3] = V[3] @ rng.normal(size=12)  # in its range
+    w = np.linalg.eigvalsh(V)
+    singular = np.flatnonzero(~(w[:, 0] > SINGULAR_BLOCK * w[:, -1]))
+    assert singular.tolist() == [3]
+    expected = (np.linalg.pinv(V) @ b[:, :, None])[:, :, 0]
+    np.testing.assert_allclose(window_steps(V, b, singular), expected, rtol=1e-8, atol=1e-12)
+    # told nothing, the LU solve gives block 3 another solution (its null space is free), not the
+    # smallest one: that is why the singular blocks are named
+    assert np.abs(window_steps(V, b, np.zeros(0, dtype=np.int64))[3] - expected[3]).max() > 1e-6
+    V[1] = 0.0  # exactly singular and not named: the solve of the batch fails, every block falls back
+    dc = window_steps(V, b, singular)
+    assert np.all(dc[1] == 0.0) and np.all(np.isfinite(dc))
+    np.testing.assert_allclose(dc[0], expected[0], rtol=1e-8, atol=1e-12)

@@ -20,7 +20,15 @@ from registration.fleet.batch.schur import masked_blocks, reduce
 from registration.fleet.batch.solver import BatchOptions, determined_design, singular_blocks
 from registration.fleet.data.problem import FleetProblem
 
-__all__ = ["WINDOW_ITERATIONS", "WINDOW_TOLERANCE", "WindowFit", "Windows", "fit_windows", "join_fits"]
+__all__ = [
+    "WINDOW_ITERATIONS",
+    "WINDOW_TOLERANCE",
+    "WindowFit",
+    "Windows",
+    "fit_windows",
+    "join_fits",
+    "window_steps",
+]
 
 #: Gauss-Newton steps on the target windows at most when their curves are fitted with the states held.
 WINDOW_ITERATIONS = 10
@@ -205,6 +213,25 @@ def _warm_design(problem: FleetProblem, options: BatchOptions, x: np.ndarray, pr
     )
 
 
+def window_steps(V: np.ndarray, b_c: np.ndarray, singular: np.ndarray) -> np.ndarray:
+    """The Gauss-Newton steps ``V_b^+ b_b`` (B, q) of the blocks ``V`` (B, q, q), ``b_c`` (B, q): the
+    pseudo-inverse's step for the blocks ``singular`` (indices: windows their plots do not determine,
+    :func:`~registration.fleet.batch.solver.singular_blocks`), one batched LU solve for the others (the
+    same step; a batched SVD of every block cost 30 times as much). A block the solve cannot invert
+    exactly, or that gives no finite step, takes the pseudo-inverse's step too."""
+    dc = np.zeros_like(b_c)
+    regular = np.ones(V.shape[0], dtype=bool)
+    regular[singular] = False
+    try:
+        dc[regular] = np.linalg.solve(V[regular], b_c[regular, :, None])[:, :, 0]
+        regular &= np.isfinite(dc).all(axis=1)
+    except np.linalg.LinAlgError:  # an exactly singular block stops the whole batch
+        regular[:] = False
+    if not regular.all():
+        dc[~regular] = (np.linalg.pinv(V[~regular]) @ b_c[~regular, :, None])[:, :, 0]
+    return dc
+
+
 def fit_windows(
     problem: FleetProblem | None, x: np.ndarray, options: BatchOptions, prior: WindowFit | None = None
 ) -> WindowFit:
@@ -222,14 +249,14 @@ def fit_windows(
     problem, design, ev, normal = found
     blk = design.blocks
     mask = np.repeat(blk.coef_mask, 3, axis=1)
+    bad = np.zeros(0, dtype=np.int64)  # determined_design leaves no singular window at its start
     for _ in range(WINDOW_ITERATIONS):  # Gauss-Newton on the windows alone (nearly linear in them)
-        V = masked_blocks(blk, normal.V)
-        dc = (np.linalg.pinv(V) @ normal.b_c[:, :, None])[:, :, 0] * mask
+        dc = window_steps(masked_blocks(blk, normal.V), normal.b_c, bad) * mask
         if not float(np.sum(dc * normal.b_c)) > WINDOW_TOLERANCE:
             break
         ev = evaluate(design, ev.x, ev.coef + dc.reshape(ev.coef.shape))
         normal = normal_equations(design, ev)
-    bad = singular_blocks(design, normal)  # windows the plots do not determine here: they predict nothing
+        bad = singular_blocks(design, normal)  # windows the plots do not determine here: they predict nothing
     V = normal.V.copy()
     q = V.shape[1]
     V[bad] += np.eye(q) * np.maximum(np.abs(V[bad]).max(axis=(1, 2)), 1.0)[:, None, None]
