@@ -25,7 +25,7 @@ from dataclasses import replace
 import numpy as np
 
 from registration.fleet.association.channels import channel_start
-from registration.fleet.association.joining.windowfit import WindowFit, fit_windows
+from registration.fleet.association.joining.windowfit import WindowFit, fit_windows, start_coefficients
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.problems import labelled_problem
 from registration.fleet.batch.blocks import target_spans, window_grid, window_of
@@ -142,10 +142,14 @@ class Registrar:
         """Register the plots labelled in ``labels`` (N,; only those in ``subset`` (N,) bool if given)
         from the latest estimate; ``final``: the caller's batch options (else the looser ones of the
         solves between passes). Returns the result, or None (estimate unchanged) when no target is
-        seen by two sensors or is a reference."""
+        seen by two sensors or is a reference. A solve between passes of the plots the last solve
+        registered is not made again: its result stands (the same optimum, within the tolerance)."""
         lab = labels if subset is None else np.where(subset, labels, "")
         if not (lab != "").any():
             return None
+        same = self.labels is not None and np.array_equal(lab, self.labels)
+        if same and not final and self.result is not None:
+            return self.result
         few, refs = (
             (lab, self.refs) if final else thin_windows(lab, self.problem, self.refs, self.between.window_s)
         )
@@ -160,6 +164,7 @@ class Registrar:
                 self.final_options if final else self.between,
                 x0=self._start(problem),
                 progress=self.progress,
+                coefficients=self._windows_start(),
             )
         except ValueError:  # every window set aside: nothing to register yet
             return None
@@ -223,6 +228,20 @@ class Registrar:
         keep = np.unique(seen[seen < layout.n])
         x0[keep] = self.x[keep]
         return x0
+
+    def _windows_start(self):
+        """The solver's starting windows: where the last :meth:`labelled_fit` has a window (same
+        target, centre, length and degree), its coefficients, fitted to all the target's plots under
+        an estimate of the passes (the plots' means start the solve far off: phase 1 then spends half
+        the iterations of a solve between passes bringing the windows back); None before any fit."""
+        prior = self._last_fit
+        if prior is None:
+            return None
+
+        def coefficients(problem: FleetProblem, design, x0: np.ndarray) -> np.ndarray:
+            return start_coefficients(design, tuple(str(t) for t in problem.target_ids), x0, prior)
+
+        return coefficients
 
     def register(self, labels: np.ndarray, subset: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
         """:meth:`solve` between passes; (estimate, covariance)."""

@@ -54,6 +54,7 @@ def solve_batch(
     x0: np.ndarray | None = None,
     *,
     progress: bool = False,
+    coefficients=None,
 ) -> BatchResult:
     """Register a fleet: maximum-likelihood (or, with finite priors, maximum a posteriori)
     estimates of every platform's attitude errors and every sensor's biases, jointly with the
@@ -61,10 +62,13 @@ def solve_batch(
     method.
     ``x0`` (n,; rad, m): starting states, for example an earlier estimate (default zeros); the
     solution is the same optimum to within the stopping tolerance, reached in fewer iterations.
+    ``coefficients(problem, design, x0)``: starting window coefficients (B, n_coef, 3) m, for
+    example an earlier fit's windows (default None: the window means of the plots); a warm start
+    too.
     ``progress``: a bar over the solver's iterations on standard error, shown only on a terminal
     and after about a second (:func:`registration.core.progress.progress_bar`).
     """
-    fit_ = fit(problem, options or BatchOptions(), x0, progress=progress)
+    fit_ = fit(problem, options or BatchOptions(), x0, progress=progress, coefficients=coefficients)
     problem = fit_.problem
     layout = problem.layout
     free = layout.free

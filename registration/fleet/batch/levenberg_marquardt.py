@@ -1,5 +1,6 @@
 """The one Levenberg-Marquardt engine of the batch solvers (Marquardt's diagonal scaling, Nielsen's
-damping update with a lower floor, DECREASE_FLOOR) over a provider of normal equations (:class:`NormalEquations`).
+damping update with a lower floor, DECREASE_FLOOR) over a provider of normal equations
+(:class:`NormalEquations`).
 
 Two providers implement it: the design of a problem held in memory
 (:class:`registration.fleet.batch.solver.DesignEquations`) and the passes over the partitions of an

@@ -229,9 +229,12 @@ def fit(
     x0: np.ndarray | None = None,
     *,
     progress: bool = False,
+    coefficients=None,
 ) -> Fit:
     """Solve the batch problem (module docstring) from states ``x0`` (n,; rad, m; default zeros: a
-    warm start only saves iterations); windows of singular geometry are set aside, and so are plots
+    warm start only saves iterations) and window coefficients ``coefficients(problem, design, x0)``
+    ((B, n_coef, 3) m; default None: the window means of the plots, as :func:`determined_design`);
+    windows of singular geometry are set aside, and so are plots
     that their sensor's estimated time bias moves outside their platform's navigation (they weigh
     0 in every evaluation where they are; at the solution they stay in ``Fit.problem``, listed in
     its exclusions, with no residual; if that would empty a window they are dropped and the
@@ -246,7 +249,7 @@ def fit(
     drops = 0
     with progress_bar(progress, "fleet batch solve", unit="iteration") as bar:
         for attempt in range(MAX_REFITS + 1):
-            found = determined_design(problem, options, x0)
+            found = determined_design(problem, options, x0, coefficients=coefficients)
             if found is None:
                 raise ValueError(
                     "no plots to register (every target was excluded: "

@@ -27,6 +27,7 @@ __all__ = [
     "Windows",
     "fit_windows",
     "join_fits",
+    "start_coefficients",
     "window_steps",
 ]
 
@@ -186,7 +187,7 @@ def _window_keys(names: tuple, windows) -> list:
     return [(names[t], c, h) for t, c, h in zip(windows.block_target.tolist(), centre, half)]
 
 
-def _start_coefficients(design, names: tuple, x: np.ndarray, prior: WindowFit) -> np.ndarray:
+def start_coefficients(design, names: tuple, x: np.ndarray, prior: WindowFit) -> np.ndarray:
     """(B, K, 3) starting coefficients: the plots' window means (the batch's start), and for each
     window that ``prior`` determined (same target, centre, length and degree) its coefficients there."""
     blk = design.blocks
@@ -202,12 +203,12 @@ def _start_coefficients(design, names: tuple, x: np.ndarray, prior: WindowFit) -
 
 
 def _warm_design(problem: FleetProblem, options: BatchOptions, x: np.ndarray, prior: WindowFit):
-    """:func:`~registration.fleet.batch.solver.determined_design` started from :func:`_start_coefficients`."""
+    """:func:`~registration.fleet.batch.solver.determined_design` started from :func:`start_coefficients`."""
     return determined_design(
         problem,
         options,
         x,
-        coefficients=lambda p, design, x0: _start_coefficients(
+        coefficients=lambda p, design, x0: start_coefficients(
             design, tuple(str(t) for t in p.target_ids), x0, prior
         ),
     )
