@@ -17,7 +17,7 @@ from registration.fleet.batch.residuals import (
     residual_table,
     unused_references,
 )
-from registration.fleet.batch.solver import BatchOptions, fit
+from registration.fleet.batch.solver import BatchOptions, StartCoefficients, fit
 from registration.fleet.data.problem import FleetProblem
 from registration.fleet.result import BatchResult, ChiSquareCheck
 
@@ -54,7 +54,7 @@ def solve_batch(
     x0: np.ndarray | None = None,
     *,
     progress: bool = False,
-    coefficients=None,
+    coefficients: StartCoefficients | None = None,
 ) -> BatchResult:
     """Register a fleet: maximum-likelihood (or, with finite priors, maximum a posteriori)
     estimates of every platform's attitude errors and every sensor's biases, jointly with the

@@ -20,6 +20,7 @@ The solver stops when the predicted reduction of the sum of squares falls below 
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -49,6 +50,7 @@ __all__ = [
     "DesignStep",
     "Fit",
     "NumericalError",
+    "StartCoefficients",
     "determined_design",
     "fit",
     "fit_windows",
@@ -162,6 +164,11 @@ class DesignEquations:
         return DesignPoint(evaluate(self.design, ev.x + step.dx, ev.coef + step.dc))
 
 
+#: Starting window coefficients of a solve: ``(problem, design, x0) -> (B, n_coef, 3)`` m (ECEF), the
+#: windows of ``design``'s blocks at the states ``x0`` (default: :func:`initial_coefficients`).
+StartCoefficients = Callable[[FleetProblem, Design, np.ndarray], np.ndarray]
+
+
 def starting_states(layout: StateLayout, x0: np.ndarray | None) -> np.ndarray:
     """The starting states (n,; rad, m, 1, s): ``x0`` checked (default zeros), the fixed states at 0."""
     x = np.zeros(layout.n) if x0 is None else np.array(x0, dtype=np.float64)
@@ -183,7 +190,11 @@ def singular_blocks(design: Design, normal: Normal) -> np.ndarray:
 
 
 def determined_design(
-    problem: FleetProblem, options: BatchOptions, x0: np.ndarray, priors: bool = True, coefficients=None
+    problem: FleetProblem,
+    options: BatchOptions,
+    x0: np.ndarray,
+    priors: bool = True,
+    coefficients: StartCoefficients | None = None,
 ):
     """``(problem, design, start, normal)``: the design of ``problem`` with the windows whose position
     their plots do not determine set aside (:func:`singular_blocks`, ``set_aside.exclude_singular``, again
@@ -229,7 +240,7 @@ def fit(
     x0: np.ndarray | None = None,
     *,
     progress: bool = False,
-    coefficients=None,
+    coefficients: StartCoefficients | None = None,
 ) -> Fit:
     """Solve the batch problem (module docstring) from states ``x0`` (n,; rad, m; default zeros: a
     warm start only saves iterations) and window coefficients ``coefficients(problem, design, x0)``
