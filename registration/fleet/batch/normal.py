@@ -9,8 +9,10 @@ polynomial basis) in one batched call. With whitened residuals ``e`` and Jacobia
 in their block form:
 
 * ``V`` (B, q, q), q = 3 n_coef: the target-window blocks (plots and reference positions);
-* ``W`` (G, q, w): coupling of a block with the w states of one sensor's group (platform attitude
-  errors, sensor biases and, with the extended model, range gain, time bias, position errors);
+* ``W`` (B, q, w g [+ 1]): coupling of each block with its local states (``Blocks.local_state``):
+  the w states of each of its sensors' groups side by side (platform attitude errors, sensor
+  biases and, with the extended model, range gain, time bias, position errors), then, with flight
+  levels, the height offset;
 * ``U`` (n + 1, n + 1): the states' block (index n collects the absent biases and is dropped);
 * ``b_c`` (B, q) and ``b_x`` (n + 1,).
 
@@ -50,6 +52,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from registration._generated import api as generated
+from registration.fleet.batch.blocks import Blocks
 from registration.fleet.batch.design import Design, plot_model_inputs
 from registration.fleet.batch.reference_terms import add_reference_terms, add_whitened_terms
 from registration.fleet.batch.segments import segment_sums
@@ -62,7 +65,15 @@ from registration.fleet.data.layout import (
     TIME_BIAS_COLUMN,
 )
 
-__all__ = ["Evaluation", "Normal", "chunk_positions", "evaluate", "normal_equations", "positions"]
+__all__ = [
+    "Evaluation",
+    "Normal",
+    "chunk_positions",
+    "evaluate",
+    "local_coupling",
+    "normal_equations",
+    "positions",
+]
 
 
 def positions(basis: np.ndarray, block: np.ndarray, coef: np.ndarray) -> np.ndarray:
@@ -226,11 +237,11 @@ class Normal:
     """The normal equations in block form (module docstring)."""
 
     V: np.ndarray  # (B, q, q)
-    W: np.ndarray  # (G, q, w): over the coupled columns of the groups (Blocks.coupled)
+    # (B, q, L): each block's coupling with its local states (Blocks.local_state; local_coupling)
+    W: np.ndarray
     U: np.ndarray  # (n + 1, n + 1)
     b_c: np.ndarray  # (B, q)
     b_x: np.ndarray  # (n + 1,)
-    H: np.ndarray | None = None  # (B, q) coupling of each block with the flight levels' height offset
 
 
 def _group_products(design: Design, ev: Evaluation) -> tuple[np.ndarray, np.ndarray | None]:
@@ -282,10 +293,28 @@ def normal_equations(design: Design, ev: Evaluation) -> Normal:
     U[np.diag_indices(n1)] += pw**2
     b_x -= pw**2 * np.append(ev.x, 0.0)
     H = None if design.ref_offset_up is None else _offset_terms(design, ev, U, b_x)
-    W = _by_group(G[:, :q, q : q + w], row)
-    if blk.coupled is not None:
-        W = W[:, :, blk.coupled]  # the sink-only columns left out
-    return Normal(V, np.ascontiguousarray(W), U, b_c, b_x, H)
+    W_group = G[:, :q, q : q + w] if blk.coupled is None else G[:, :q, q + blk.coupled]
+    return Normal(V, local_coupling(blk, W_group, row, H), U, b_c, b_x)
+
+
+def local_coupling(blk: Blocks, W: np.ndarray, row: np.ndarray | None, H: np.ndarray | None) -> np.ndarray:
+    """(B, q, w g [+ 1]): each block's coupling with its local states (``blk.local_state``): the
+    couplings ``W`` (S, q, w) of its groups (group g's in row ``row[g]``, or row g when ``row`` is
+    None) side by side, zeros for padding, then, with the flight levels' height offset
+    (``blk.extra_states``), its coupling ``H`` (B, q) (zeros when None). Scattered from the rows
+    as they lie: no copy of the groups' couplings into group order first."""
+    q, w = W.shape[1], W.shape[2]
+    g = (blk.local_state.shape[1] - blk.extra_states) // w
+    block, rank = blk.group_block, blk.group_rank
+    if row is not None:  # the block and rank of each row
+        block, rank = np.empty_like(block), np.empty_like(rank)
+        block[row], rank[row] = blk.group_block, blk.group_rank
+    out = np.zeros((blk.n_blocks, q, g * w))
+    # one scatter into the (B, q, g, w) view: its advanced indices (block, rank) come first
+    out.reshape(blk.n_blocks, q, g, w)[block, :, rank, :] = W
+    if not blk.extra_states:
+        return out
+    return np.concatenate([out, np.zeros((blk.n_blocks, q, 1)) if H is None else H[:, :, None]], axis=2)
 
 
 def _offset_terms(design: Design, ev: Evaluation, U: np.ndarray, b_x: np.ndarray) -> np.ndarray:

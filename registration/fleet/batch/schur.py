@@ -29,7 +29,6 @@ from registration.fleet.batch.normal import Normal
 __all__ = [
     "Reduced",
     "determined_directions",
-    "local_coupling",
     "masked_blocks",
     "reduce",
     "solve_reduced",
@@ -49,20 +48,6 @@ class Reduced:
     y: np.ndarray  # (B, q)
 
 
-def local_coupling(blk: Blocks, W: np.ndarray, H: np.ndarray | None = None) -> np.ndarray:
-    """(B, q, w g [+ 1]): each block's group couplings W (G, q, w) side by side (zeros for padding),
-    then, with the flight levels' height offset (``blk.extra_states``), its coupling ``H`` (B, q)
-    (zeros when None)."""
-    q, w = W.shape[1], W.shape[2]
-    g = (blk.local_state.shape[1] - blk.extra_states) // w
-    out = np.zeros((blk.n_blocks, g, q, w))
-    out[blk.group_block, blk.group_rank] = W
-    out = out.transpose(0, 2, 1, 3).reshape(blk.n_blocks, q, w * g)
-    if not blk.extra_states:
-        return out
-    return np.concatenate([out, np.zeros((blk.n_blocks, q, 1)) if H is None else H[:, :, None]], axis=2)
-
-
 def masked_blocks(blk: Blocks, V: np.ndarray) -> np.ndarray:
     """Put 1 on the diagonal of masked (unused) coefficients so the blocks can be inverted."""
     unused = np.repeat(~blk.coef_mask, 3, axis=1).astype(np.float64)  # (B, q), coefficient-major
@@ -80,7 +65,7 @@ def reduce(blk: Blocks, normal: Normal, lam: float = 0.0) -> Reduced:
     V[:, np.arange(q), np.arange(q)] += lam * diag_V
     V_inv = np.linalg.inv(V)
     V_inv = 0.5 * (V_inv + V_inv.transpose(0, 2, 1))
-    W = local_coupling(blk, normal.W, normal.H)  # (B, q, w g [+ 1])
+    W = normal.W  # (B, q, w g [+ 1])
     Y = np.matmul(V_inv, W)
     y = np.matmul(V_inv, normal.b_c[:, :, None])[:, :, 0]
     n1 = normal.U.shape[0]

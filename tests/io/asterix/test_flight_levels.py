@@ -138,7 +138,8 @@ def test_a_height_only_reference_is_read_and_both_sigmas_inf_is_an_error():
 
 
 def test_the_offset_terms_are_the_derivatives_of_the_cost(tmp_path):
-    """The normal equations' offset terms (b_x of the offset, the blocks' coupling H) against central
+    """The normal equations' offset terms (b_x of the offset, the blocks' coupling H: the last column of
+    each block's coupling, the offset being every block's last local state) against central
     differences of the cost and of b_c in the offset, at a point off the optimum."""
     from registration.fleet.batch.blocks import make_blocks
     from registration.fleet.batch.design import make_design
@@ -174,5 +175,7 @@ def test_the_offset_terms_are_the_derivatives_of_the_cost(tmp_path):
     ev_lo, ev_hi = evaluate(design, lo, coef), evaluate(design, hi, coef)
     assert normal.b_x[k] == pytest.approx(-(ev_hi.cost - ev_lo.cost) / (4 * h), rel=1e-6)
     b_lo, b_hi = normal_equations(design, ev_lo).b_c, normal_equations(design, ev_hi).b_c
-    assert normal.H is not None and np.abs(normal.H).max() > 0
-    np.testing.assert_allclose(normal.H, -(b_hi - b_lo) / (2 * h), atol=1e-9 * np.abs(normal.H).max())
+    assert np.all(design.blocks.local_state[:, -1] == k)
+    H = normal.W[:, :, -1]
+    assert np.abs(H).max() > 0
+    np.testing.assert_allclose(H, -(b_hi - b_lo) / (2 * h), atol=1e-9 * np.abs(H).max())
