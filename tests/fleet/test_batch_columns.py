@@ -13,7 +13,7 @@ from registration._generated import api as generated
 from registration.fleet import solve_batch
 from registration.fleet.batch import blocks as blocks_module
 from registration.fleet.batch import schur
-from registration.fleet.batch.blocks import ECC3_COLUMNS, make_blocks, used_state_columns
+from registration.fleet.batch.blocks import ECC3_COLUMNS, make_blocks, unique_rows, used_state_columns
 from registration.fleet.batch.schur import super_blocks
 from registration.fleet.batch.segments import segment_sums
 from registration.fleet.batch.solver import BatchOptions, determined_design
@@ -113,3 +113,13 @@ def test_the_rows_without_extended_errors_are_the_eccentric_rows_at_zero():
     assert ecc3.shape == (n, 21, 3) and full.shape == (n, 26, 3)
     columns = np.r_[0:12, 12 + ECC3_COLUMNS, 25]
     np.testing.assert_allclose(ecc3, full[:, columns], rtol=1e-12, atol=1e-15)
+
+
+@pytest.mark.parametrize("shape", [(0, 4), (1, 3), (60, 5), (425, 32)])
+def test_unique_rows_is_numpys_unique_on_rows(shape):
+    rng = np.random.default_rng(shape[0])
+    a = rng.integers(0, 4, size=(6, shape[1]))[rng.integers(0, 6, size=shape[0])]
+    got, inverse = unique_rows(a)
+    want, want_inverse = np.unique(a, axis=0, return_inverse=True)
+    assert np.array_equal(got, want) and np.array_equal(inverse, want_inverse.reshape(-1))
+    assert np.array_equal(got[inverse], a)
