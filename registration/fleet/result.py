@@ -30,6 +30,17 @@ class FusedTargets:
     covariance: np.ndarray
     n_plots: np.ndarray
 
+    @classmethod
+    def empty(cls) -> "FusedTargets":
+        """No fused positions (a solve that was not asked for them)."""
+        return cls(
+            np.zeros(0, dtype=str),
+            np.zeros(0),
+            np.zeros((0, 3)),
+            np.zeros((0, 3, 3)),
+            np.zeros(0, dtype=np.int64),
+        )
+
     def of(self, target: str):
         """(time, p_ecef, covariance) of one target."""
         sel = self.target == str(target)

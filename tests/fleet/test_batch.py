@@ -112,6 +112,21 @@ def test_fused_targets_and_residual_table(noisy):
     assert all(0.8 < mean < 1.1 for mean, _ in list(by_target.values()) + list(by_sensor.values()))
 
 
+def test_a_solve_without_fused_targets_is_the_same_solve(noisy):
+    """``fused=False`` (the association's solves between passes) leaves the fused positions out and
+    nothing else: the same estimate, covariance and residuals, bit for bit."""
+    sc, result = noisy
+    lean = solve_batch(sc.problem(), fused=False)
+    assert lean.targets.target.size == 0 and lean.targets.covariance.shape == (0, 3, 3)
+    assert result.targets.target.size > 0
+    assert np.array_equal(lean.estimate, result.estimate) and np.array_equal(
+        lean.covariance, result.covariance
+    )
+    assert np.array_equal(lean.residuals, result.residuals, equal_nan=True)
+    with pytest.raises(ValueError, match="no fused positions"):
+        lean.targets.of("T2")
+
+
 def test_a_window_too_long_for_the_manoeuvres_shows_in_the_residuals():
     """At 1/100 of the noise, 60 s windows cannot follow the circling targets (a cubic over 50 deg
     of T1's circle errs by several metres): their residuals stand out, the straight-flying T2's do not."""

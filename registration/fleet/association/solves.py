@@ -165,6 +165,7 @@ class Registrar:
                 x0=self._start(problem),
                 progress=self.progress,
                 coefficients=self._windows_start(),
+                fused=final,
             )
         except ValueError:  # every window set aside: nothing to register yet
             return None

@@ -19,7 +19,7 @@ from registration.fleet.batch.residuals import (
 )
 from registration.fleet.batch.solver import BatchOptions, StartCoefficients, fit
 from registration.fleet.data.problem import FleetProblem
-from registration.fleet.result import BatchResult, ChiSquareCheck
+from registration.fleet.result import BatchResult, ChiSquareCheck, FusedTargets
 
 __all__ = ["HEIGHT_WARNING", "solve_batch"]
 
@@ -55,6 +55,7 @@ def solve_batch(
     *,
     progress: bool = False,
     coefficients: StartCoefficients | None = None,
+    fused: bool = True,
 ) -> BatchResult:
     """Register a fleet: maximum-likelihood (or, with finite priors, maximum a posteriori)
     estimates of every platform's attitude errors and every sensor's biases, jointly with the
@@ -67,6 +68,9 @@ def solve_batch(
     too.
     ``progress``: a bar over the solver's iterations on standard error, shown only on a terminal
     and after about a second (:func:`registration.core.progress.progress_bar`).
+    ``fused`` False: ``targets`` is left empty (:meth:`FusedTargets.empty`), for a caller that needs
+    the estimate only (the association's solves between passes: the fused positions and their
+    covariances at every measured instant cost a third of such a solve).
     """
     fit_ = fit(problem, options or BatchOptions(), x0, progress=progress, coefficients=coefficients)
     problem = fit_.problem
@@ -98,7 +102,7 @@ def solve_batch(
         covariance=known.covariance,
         sigma=known.sigma,
         status=known.status,
-        targets=fused_targets(fit_, sol.reduced, P_sink),
+        targets=fused_targets(fit_, sol.reduced, P_sink) if fused else FusedTargets.empty(),
         residuals=residual_table(problem, fit_.design, sol.evaluation),
         chi_square=_chi_square(fit_, sol.evaluation),
         observability=known.report,
