@@ -11,6 +11,7 @@ time span, the wall time and the speed factor achieved.
 from __future__ import annotations
 
 import argparse
+import datetime as dt
 import math
 import signal
 import sys
@@ -63,6 +64,24 @@ def _rate(text: str) -> float:
     return value
 
 
+def _start_at(text: str) -> float:
+    """A time of day: Unix seconds, or ISO 8601 with its UTC offset (2024-05-01T10:00:00Z)."""
+    try:
+        return float(text)
+    except ValueError:
+        pass
+    try:
+        when = dt.datetime.fromisoformat(text.strip())
+    except ValueError:
+        when = None
+    if when is None or when.tzinfo is None:
+        raise argparse.ArgumentTypeError(
+            f"expected Unix seconds or an ISO 8601 time with its UTC offset (2024-05-01T10:00:00Z), "
+            f"got {text!r}"
+        )
+    return when.timestamp()
+
+
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument(
         "recordings",
@@ -101,6 +120,15 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         metavar="MBPS",
         help="cap on the payload rate, Mbit/s (default: none)",
     )
+    p.add_argument(
+        "--start-at",
+        type=_start_at,
+        default=None,
+        metavar="TIME",
+        help="send the first datagram at this time (Unix seconds, or ISO 8601 with its UTC offset) and "
+        "count every deadline from it: replays to several inputs started with the same TIME stay in "
+        "step (default: at once)",
+    )
     p.add_argument("--progress", action="store_true", help="show a progress bar over the files' sizes")
 
 
@@ -127,6 +155,7 @@ def run(args: argparse.Namespace) -> int:
         ports=args.ports,
         max_rate_mbps=args.max_rate_mbps,
         progress=args.progress,
+        start_at=args.start_at,
     )
     previous = signal.signal(signal.SIGTERM, _terminate)
     stopped = ""

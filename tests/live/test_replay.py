@@ -262,6 +262,69 @@ def test_speed_max_runs_fast(tmp_path):
     assert wall < 5.0 and stats.speed > 20.0
 
 
+def _arrivals(path: Path, n: int, speed: float, start_at: float) -> tuple[list[float], object]:
+    """The time of day (Unix s) each of the ``n`` datagrams of a replay of ``path`` started with
+    ``start_at`` arrived, and the replay's stats."""
+    arrivals: list[float] = []
+    with _receiver() as rx:
+        rx.settimeout(20.0)
+
+        def receive() -> None:
+            while len(arrivals) < n:
+                rx.recv(1 << 16)
+                arrivals.append(time.time())
+
+        thread = threading.Thread(target=receive)
+        thread.start()
+        stats = replay([path], f"udp://127.0.0.1:{rx.getsockname()[1]}", speed, start_at=start_at)
+        thread.join(20)
+    return arrivals, stats
+
+
+def test_start_at_sends_the_first_datagram_then_and_paces_from_it(tmp_path):
+    """--start-at 0.6 s ahead: nothing before it, then the recorded pace counted from it (the
+    tolerances of the pacing test above); the wall time and speed reported run from the start."""
+    blocks, times = _raw_recording(20, 1.0)
+    path = tmp_path / "rec.ast"
+    path.write_bytes(b"".join(blocks))
+    start = time.time() + 0.6
+    arrivals, stats = _arrivals(path, len(blocks), 20.0, start)
+    late = np.array(arrivals) - (start + (np.array(times) - times[0]) / 20.0)
+    assert late.min() > -0.03 and late.max() < 0.25
+    assert stats.speed == pytest.approx(20.0, rel=0.1)
+
+
+def test_a_replay_started_after_its_start_at_catches_up_and_keeps_in_step(tmp_path):
+    """A replay whose process starts 0.5 s after the start agreed with another (a loaded machine):
+    what was due meanwhile goes at once, the rest at the agreed deadlines, so the two stay in step."""
+    blocks, times = _raw_recording(30, 1.0)
+    path = tmp_path / "rec.ast"
+    path.write_bytes(b"".join(blocks))
+    start = time.time() - 0.5
+    arrivals, _ = _arrivals(path, len(blocks), 20.0, start)
+    due = start + (np.array(times) - times[0]) / 20.0
+    late = np.array(arrivals) - due
+    caught_up = due < arrivals[0]  # due before the replay began: sent in one burst
+    assert 8 <= caught_up.sum() <= 12 and np.ptp(np.array(arrivals)[caught_up]) < 0.1
+    assert late[~caught_up].min() > -0.03 and late[~caught_up].max() < 0.25
+
+
+def test_start_at_with_speed_max_waits_then_sends_at_once(tmp_path):
+    blocks, _ = _raw_recording(50, 1.0)
+    path = tmp_path / "rec.ast"
+    path.write_bytes(b"".join(blocks))
+    start = time.time() + 0.4
+    arrivals, _ = _arrivals(path, len(blocks), np.inf, start)
+    assert arrivals[0] > start - 0.03 and arrivals[-1] - start < 0.5
+
+
+@pytest.mark.parametrize("text", ["2024-05-01T10:00:00", "tomorrow", "nan"])
+def test_a_start_at_without_a_utc_offset_or_not_a_time_exits_2(text, capsys):
+    code = main(["replay", str(SAMPLES / "bridge.log"), "--to", "udp://127.0.0.1:4000", "--start-at", text])
+    last = capsys.readouterr().err.strip().splitlines()[-1]
+    assert code == 2 and "--start-at" in last and ("UTC offset" in last or "expected a time" in last)
+
+
 @pytest.mark.parametrize(
     ("to", "words"),
     [

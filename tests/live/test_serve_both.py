@@ -29,11 +29,19 @@ SPEED = "40"
 START = dt.datetime(2024, 5, 1, 10, 0, 0, tzinfo=dt.timezone.utc)
 
 
-def _replay(path, port: int) -> subprocess.Popen:
+#: Seconds between starting the two replays and their common start (``--start-at``): each
+#: process's start-up (an interpreter, numpy, the recording's first piece) is behind it.
+START_AFTER_S = 5.0
+
+
+def _replay(path, port: int, start_at: float) -> subprocess.Popen:
+    """A replay of ``path`` to ``port`` whose first datagram is due at ``start_at`` (Unix s). The
+    two replays keep in step however late either process starts: at 40 times the pace, a start one
+    and a half seconds apart had put the radars a minute of data behind the ship, whose plots then
+    closed the epochs the radars' plots were still to come for (late plots, on a loaded machine)."""
     cmd = [sys.executable, "-m", "registration", "replay", str(path), "--to", f"udp://127.0.0.1:{port}"]
-    return subprocess.Popen(
-        [*cmd, "--speed", SPEED], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True
-    )
+    cmd += ["--speed", SPEED, "--start-at", f"{start_at:.3f}"]
+    return subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
 
 
 def _settled(svc, plots: int, lines: int, timeout_s: float = 90.0) -> dict:
@@ -69,7 +77,11 @@ def run(tmp_path_factory):
     inputs += ("--nmea", "udp://127.0.0.1:0", "--platform", PLATFORM, "--sensors", str(sensors))
     with serving("--date", "2024-05-01", inputs=inputs) as svc:
         nmea_port = int(re.search(r"nmea udp://127\.0\.0\.1:(\d+)", svc.line).group(1))
-        replays = [_replay(SAMPLES / "atc.pcap.gz", svc.input_port), _replay(nmea_path, nmea_port)]
+        start_at = time.time() + START_AFTER_S
+        replays = [
+            _replay(SAMPLES / "atc.pcap.gz", svc.input_port, start_at),
+            _replay(nmea_path, nmea_port, start_at),
+        ]
         for r in replays:
             assert r.wait(120) == 0, r.stderr.read() if r.stderr else ""
         status = _settled(svc, len(atc.plots), lines)

@@ -201,7 +201,8 @@ class _Sender:
 class Replayer:
     """A replay of ``recordings`` (paths, or :class:`Recording`) to ``target``; :meth:`run` sends
     them and can be interrupted (KeyboardInterrupt) with ``stats`` holding what was sent.
-    Arguments as :func:`replay`'s; ``clock`` and ``sleep`` (s) can be replaced in tests."""
+    Arguments as :func:`replay`'s; ``clock``, ``sleep`` and ``now`` (the time of day, Unix s, that
+    ``start_at`` is read on) can be replaced in tests."""
 
     def __init__(
         self,
@@ -213,8 +214,10 @@ class Replayer:
         ports: Iterable[int] | None = None,
         max_rate_mbps: float | None = None,
         progress: bool = False,
+        start_at: float | None = None,
         clock: Callable[[], float] = time.monotonic,
         sleep: Callable[[float], None] = time.sleep,
+        now: Callable[[], float] = time.time,
     ) -> None:
         if not recordings:
             raise ReplayError("no recording given")
@@ -237,6 +240,10 @@ class Replayer:
         self.clock, self.sleep = clock, sleep
         self.stats = ReplayStats()
         self._t0_wall = self._t0_data = math.nan
+        if start_at is not None:  # the first datagram is due then, on the monotonic clock
+            if not math.isfinite(start_at):
+                raise ReplayError(f"--start-at {start_at!r}: expected a time (Unix seconds)")
+            self._t0_wall = self.clock() + (float(start_at) - now())
         self._rate_next = -math.inf
         self._started = math.nan  # the clock at the first send
         self._first, self._latest = math.nan, -math.inf  # the times sent in this pass
@@ -295,8 +302,8 @@ class Replayer:
 
     def _deadlines(self, t: np.ndarray) -> np.ndarray | None:
         """Wall deadlines (K,) of times ``t`` (-inf: at once); None when sending as fast as possible."""
-        if math.isinf(self.speed):
-            return None
+        if math.isinf(self.speed):  # as fast as possible, from ``start_at`` if given
+            return None if math.isnan(self._t0_wall) else np.full(t.size, self._t0_wall)
         ok = np.isfinite(t)
         if math.isnan(self._t0_data):
             if not ok.any():
@@ -318,8 +325,8 @@ class Replayer:
         cum = np.concatenate([[0], np.cumsum(piece.end - piece.start)])
         back_cum = np.concatenate([[0], np.cumsum(back)])
         running = np.fmax.accumulate(t)
-        if math.isnan(self._started):
-            self._started = self.clock()
+        if math.isnan(self._started):  # the first send: now, or the start asked for
+            self._started = self.clock() if math.isnan(self._t0_wall) else max(self.clock(), self._t0_wall)
         deadlines = self._deadlines(t)
         due = None if deadlines is None else np.maximum.accumulate(deadlines)
         batch = RATE_BATCH if self.rate else n
@@ -353,14 +360,25 @@ def replay(
     ports: Iterable[int] | None = None,
     max_rate_mbps: float | None = None,
     progress: bool = False,
+    start_at: float | None = None,
 ) -> ReplayStats:
     """Send ``recordings`` (paths, in order, as one stream) to ``target`` (``udp://HOST:PORT``, or
     ``tcp://HOST:PORT`` for NMEA logs) at ``speed`` times their recorded pace (inf: as fast as
     possible); ``loop``: again and again until interrupted; ``ports``: UDP destination ports kept
     from captures (None: all); ``max_rate_mbps``: a cap on the payload rate (Mbit/s);
-    ``progress``: a bar over the files' sizes (:func:`registration.core.progress.progress_bar`).
+    ``progress``: a bar over the files' sizes (:func:`registration.core.progress.progress_bar`);
+    ``start_at``: the time (Unix s) the first datagram is due (default: at once), every deadline
+    counted from it: replays started apart with the same ``start_at`` stay in step (one that starts
+    after it sends what is already due at once). With ``speed`` inf: nothing is sent before it.
     :class:`~registration.live.replay.recordings.ReplayError` (a ValueError) naming the file or option for
     a recording that is none of the kinds read or a bad target."""
     return Replayer(
-        recordings, target, speed, loop=loop, ports=ports, max_rate_mbps=max_rate_mbps, progress=progress
+        recordings,
+        target,
+        speed,
+        loop=loop,
+        ports=ports,
+        max_rate_mbps=max_rate_mbps,
+        progress=progress,
+        start_at=start_at,
     ).run()
