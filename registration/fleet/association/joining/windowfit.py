@@ -14,7 +14,7 @@ from typing import cast
 import numpy as np
 
 from registration.fleet.batch.blocks import Blocks
-from registration.fleet.batch.initial import initial_coefficients
+from registration.fleet.batch.initial import fitted_coefficients, initial_coefficients
 from registration.fleet.batch.normal import evaluate, normal_equations
 from registration.fleet.batch.schur import masked_blocks, reduce
 from registration.fleet.batch.solver import BatchOptions, determined_design, singular_blocks
@@ -189,11 +189,14 @@ def _window_keys(names: tuple, windows) -> list:
     return [(names[t], c, h) for t, c, h in zip(windows.block_target.tolist(), centre, half)]
 
 
-def start_coefficients(design, names: tuple, x: np.ndarray, prior: WindowFit) -> np.ndarray:
-    """(B, K, 3) starting coefficients: the plots' window means (the batch's start), and for each
-    window that ``prior`` determined (same target, centre, length and degree) its coefficients there."""
+def start_coefficients(
+    design, names: tuple, x: np.ndarray, prior: WindowFit, start=initial_coefficients
+) -> np.ndarray:
+    """(B, K, 3) starting coefficients: ``start(design, x)`` (default the plots' window means, the
+    batch's start), and for each window that ``prior`` determined (same target, centre, length and
+    degree) its coefficients there."""
     blk = design.blocks
-    coef = initial_coefficients(design, x)
+    coef = start(design, x)
     if not prior.names or blk.n_blocks == 0 or prior.coef.shape[1:] != coef.shape[1:]:
         return coef
     known = {key: i for i, key in enumerate(_window_keys(prior.names, prior.windows)) if prior.determined[i]}
@@ -211,9 +214,15 @@ def _warm_design(problem: FleetProblem, options: BatchOptions, x: np.ndarray, pr
         options,
         x,
         coefficients=lambda p, design, x0: start_coefficients(
-            design, tuple(str(t) for t in p.target_ids), x0, prior
+            design, tuple(str(t) for t in p.target_ids), x0, prior, fitted_coefficients
         ),
     )
+
+
+def _fitted(problem: FleetProblem, design, x: np.ndarray) -> np.ndarray:
+    """The windows' polynomials fitted to their plots' positions (:func:`fitted_coefficients`): a fit of
+    the windows alone from them took half the Gauss-Newton steps it took from the plots' means."""
+    return fitted_coefficients(design, x)
 
 
 def window_steps(V: np.ndarray, b_c: np.ndarray, singular: np.ndarray) -> np.ndarray:
@@ -245,7 +254,9 @@ def fit_windows(
     if problem is None:
         return WindowFit.empty(x)
     found = (
-        determined_design(problem, options, x) if prior is None else _warm_design(problem, options, x, prior)
+        determined_design(problem, options, x, coefficients=_fitted)
+        if prior is None
+        else _warm_design(problem, options, x, prior)
     )
     if found is None:
         return WindowFit.empty(x)
