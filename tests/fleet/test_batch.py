@@ -197,3 +197,20 @@ def test_a_warm_start_reaches_the_same_optimum_in_fewer_iterations(noisy):
     assert np.abs((warm.estimate - cold.estimate)[free] / cold.sigma[free]).max() < 0.01
     with pytest.raises(ValueError, match="x0"):
         solve_batch(sc.problem(), x0=np.zeros(3))
+
+
+def test_instant_covariance_is_the_kronecker_product_form():
+    """The fused positions' covariance per instant, (basis (x) I3) cov_c (basis (x) I3)^T, summed over
+    the pairs of coefficients without gathering each instant's window covariance."""
+    from registration.fleet.batch.covariance import instant_covariance
+
+    rng = np.random.default_rng(3)
+    for K in (1, 4):
+        A = rng.normal(size=(6, 3 * K, 3 * K + 2))
+        cov_c = A @ A.transpose(0, 2, 1)
+        block = rng.integers(0, 6, size=50)
+        basis = rng.uniform(-1, 1, size=(50, K))
+        basis[:5, -1] = 0.0  # a masked coefficient
+        B = (basis[:, None, :, None] * np.eye(3)[None, :, None, :]).reshape(-1, 3, 3 * K)
+        expected = B @ cov_c[block] @ B.transpose(0, 2, 1)
+        np.testing.assert_allclose(instant_covariance(basis, block, cov_c), expected, rtol=1e-12, atol=1e-12)

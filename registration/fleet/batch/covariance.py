@@ -30,6 +30,7 @@ __all__ = [
     "StateUncertainty",
     "estimate_from_information",
     "fused_targets",
+    "instant_covariance",
     "solution_information",
     "state_covariance",
 ]
@@ -135,6 +136,25 @@ def _coefficient_covariance(blk, red: Reduced, P_full: np.ndarray) -> np.ndarray
     return 0.5 * (cov + cov.transpose(0, 2, 1))
 
 
+def instant_covariance(basis: np.ndarray, block: np.ndarray, cov_c: np.ndarray) -> np.ndarray:
+    """(M, 3, 3) covariance of the positions ``p = sum_k basis_k c_k`` of M instants (``basis`` (M, K)
+    in windows ``block`` (M,)) from their windows' coefficient covariances ``cov_c`` (B, 3 K, 3 K),
+    coefficient-major: ``sum_k sum_m basis_k basis_m C_km`` with ``C_km`` the (3, 3) block of
+    coefficients k and m, the pairs m > k taken once with their transposes. As
+    ``(basis (x) I3) cov_c (basis (x) I3)^T`` per instant, without gathering each instant's whole
+    window covariance (144 numbers an instant: 200 MB for the 10-radar benchmark's 180 000)."""
+    K = basis.shape[1]
+    C = cov_c.reshape(-1, K, 3, K, 3)
+    cov = np.zeros((block.size, 3, 3))
+    for k in range(K):
+        for m in range(k, K):
+            C_km = np.ascontiguousarray(C[:, k, :, m, :])[block]
+            if m > k:
+                C_km += C_km.transpose(0, 2, 1)
+            cov += (basis[:, k] * basis[:, m])[:, None, None] * C_km
+    return cov
+
+
 def fused_targets(fit, red: Reduced, P_full: np.ndarray) -> FusedTargets:
     """Fused positions and covariances at every measured instant of every target (with time
     biases: the reported times corrected by the estimated biases; the covariance leaves out the
@@ -149,10 +169,7 @@ def fused_targets(fit, red: Reduced, P_full: np.ndarray) -> FusedTargets:
     block, t = blk.block[first], time[first]
     basis = blk.basis_at(block, t)
     p = positions(basis, block, fit.coef)
-    q = 3 * blk.n_coef
-    B = (basis[:, None, :, None] * np.eye(3)[None, :, None, :]).reshape(-1, 3, q)  # basis (x) I3
-    cov_c = _coefficient_covariance(blk, red, P_full)
-    cov = np.matmul(np.matmul(B, cov_c[block]), B.transpose(0, 2, 1))
+    cov = instant_covariance(basis, block, _coefficient_covariance(blk, red, P_full))
     target = np.array(problem.target_ids, dtype=str)[blk.block_target[block]]
     by_target = np.lexsort((t, blk.block_target[block]))
     return FusedTargets(target[by_target], t[by_target], p[by_target], cov[by_target], counts[by_target])
