@@ -11,7 +11,7 @@ the shortcuts the join passes rely on give the numbers of the plain formulation,
 import numpy as np
 import pytest
 
-from registration.fleet.association.joining.pairs import Pairs, evaluate, kalman_update
+from registration.fleet.association.joining.pairs import Pairs, evaluate, forward_solve, kalman_update
 
 LIMITS = np.r_[np.inf, 6.6, 9.2, 11.3]  # chi-square 0.99 quantiles, 1 to 3 channels
 
@@ -49,7 +49,7 @@ def _plain(pairs: Pairs, dx: np.ndarray, P: np.ndarray, keep: np.ndarray) -> np.
     Sc = np.where(both, pairs.Sc, 0.0) + np.where(rows, 0.0, 1.0)[:, :, None] * np.eye(3 * k)
     S = Sc + D @ P @ np.swapaxes(D, 1, 2)
     L = np.linalg.cholesky(0.5 * (S + np.swapaxes(S, 1, 2)))
-    y = np.linalg.solve(L, r[..., None])[..., 0]
+    y = forward_solve(L, r)  # the triangular solve evaluate uses (against numpy's: the last test)
     return np.einsum("ki,ki->k", y, y)
 
 
@@ -102,3 +102,15 @@ def test_kalman_update_leaves_out_the_plots_not_kept():
     dx2, P2 = kalman_update(changed, 0, dx, P, keep)
     np.testing.assert_array_equal(dx1, dx2)
     np.testing.assert_array_equal(P1, P2)
+
+
+@pytest.mark.parametrize(("c", "m", "p"), [(50, 60, None), (300, 3, None), (40, 9, 9), (1, 1, None)])
+def test_forward_solve_is_the_triangular_solve(c, m, p):
+    """forward_solve (the pairs' L^-1 r and L^-1 I, row by row over all pairs) against numpy's
+    general solve of the same triangular systems."""
+    rng = np.random.default_rng(m)
+    A = rng.normal(size=(c, m, m + 2))
+    L = np.linalg.cholesky(A @ np.swapaxes(A, 1, 2))
+    b = rng.normal(size=(c, m) if p is None else (c, m, p))
+    want = np.linalg.solve(L, b[..., None])[..., 0] if p is None else np.linalg.solve(L, b)
+    np.testing.assert_allclose(forward_solve(L, b), want, rtol=1e-10, atol=1e-12 * np.abs(want).max())
