@@ -11,7 +11,8 @@ the shortcuts the join passes rely on give the numbers of the plain formulation,
 import numpy as np
 import pytest
 
-from registration.fleet.association.joining.pairs import Pairs, evaluate, forward_solve, kalman_update
+from registration.core.linalg import forward_solve
+from registration.fleet.association.joining.pairs import Pairs, evaluate, kalman_update
 
 LIMITS = np.r_[np.inf, 6.6, 9.2, 11.3]  # chi-square 0.99 quantiles, 1 to 3 channels
 

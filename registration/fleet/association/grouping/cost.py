@@ -26,6 +26,7 @@ from __future__ import annotations
 import numpy as np
 
 from registration._generated import api as generated
+from registration.core.linalg import forward_solve
 from registration.fleet.association.grouping.geometry import N_COEF, N_LINE
 from registration.fleet.data.problem import FleetProblem
 from registration.fleet.data.tables import NAV_COLUMNS
@@ -42,9 +43,7 @@ def _mahalanobis(d: np.ndarray, S: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         return np.einsum("...i,...i->...", d, np.linalg.solve(S, d[..., None])[..., 0]), np.linalg.slogdet(S)[
             1
         ]
-    y = np.empty_like(d)
-    for i in range(d.shape[1]):  # forward substitution y = L^-1 d
-        y[:, i] = (d[:, i] - np.einsum("ki,ki->k", L[:, i, :i], y[:, :i])) / L[:, i, i]
+    y = forward_solve(L, d)
     diag = np.diagonal(L, axis1=1, axis2=2)
     return np.einsum("ki,ki->k", y, y), 2.0 * np.log(diag).sum(axis=1)
 

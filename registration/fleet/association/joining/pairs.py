@@ -9,15 +9,9 @@ from dataclasses import dataclass, fields
 
 import numpy as np
 
-__all__ = [
-    "MAX_PAIR_CHUNK",
-    "PAIR_CHUNK",
-    "Pairs",
-    "chunk_size",
-    "evaluate",
-    "forward_solve",
-    "kalman_update",
-]
+from registration.core.linalg import forward_solve
+
+__all__ = ["MAX_PAIR_CHUNK", "PAIR_CHUNK", "Pairs", "chunk_size", "evaluate", "kalman_update"]
 
 #: Pairs of ``test_plots`` (20) plots whose tests are formed in one batch (bounds the memory: about
 #: 60 kB per pair); pairs of fewer plots are batched by more, for about the same memory, up to
@@ -86,20 +80,6 @@ def _drop_plots(r: np.ndarray, S: np.ndarray, keep: np.ndarray, valid: np.ndarra
     r = r.copy()
     r[out] = np.where(rows, r[out], 0.0)
     return r, S
-
-
-def forward_solve(L: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """``L^-1 b`` for lower-triangular ``L`` (c, m, m) and ``b`` (c, m) or (c, m, p): forward
-    substitution, row by row over the m rows, each row for all c pairs at once. A general batched
-    solve factorises each triangular L again (LU, m^3 / 3 per pair instead of m^2 / 2): with
-    m = 60 (20 plots of 3 values) that was most of the pairs' tests."""
-    y = np.empty(b.shape, dtype=np.result_type(L, b))
-    for i in range(L.shape[1]):
-        acc = b[:, i]
-        if i:
-            acc = acc - np.einsum("cj,cj...->c...", L[:, i, :i], y[:, :i])
-        y[:, i] = acc / (L[:, i, i] if b.ndim == 2 else L[:, i, i, None])
-    return y
 
 
 def _deletion(S_chol: np.ndarray, r: np.ndarray, k: int) -> np.ndarray:
