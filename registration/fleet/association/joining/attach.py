@@ -162,10 +162,9 @@ def _chunk_tests(problem: FleetProblem, x: np.ndarray, curves: Curves, unit, tar
     same = (block.reshape(c, k)[:, :, None] == block.reshape(c, k)[:, None, :]) & batch.reshape(c, k)[
         :, :, None
     ]
-    Sc = (
-        np.einsum("ckaq,cjbq->ckajb", G.reshape(c, k, 3, q), JA.reshape(c, k, 3, q))
-        * same[:, :, None, :, None]
-    )
+    # A_i C_b A_j^T between the values of plots i, j in one window b: one batched product per pair
+    Sc = (G.reshape(c, 3 * k, q) @ JA.reshape(c, 3 * k, q).transpose(0, 2, 1)).reshape(c, k, 3, k, 3)
+    Sc *= same[:, :, None, :, None]
     own = Jp @ cov @ np.swapaxes(Jp, 1, 2) + sigma[:, :, None] ** 2 * np.eye(3)
     diag = np.arange(k)
     Sc[:, diag, :, diag, :] += np.swapaxes(own.reshape(c, k, 3, 3), 0, 1)
