@@ -16,8 +16,14 @@ __all__ = ["chi2_ppf", "chi2_sf", "chi2_logsf", "norm_isf"]
 
 
 def chi2_ppf(q: ArrayLike, dof: ArrayLike) -> np.ndarray:
-    """The chi-square quantile: x with P(X <= x) = ``q`` for X ~ chi2(``dof``)."""
-    return 2.0 * special.gammaincinv(np.asarray(dof, dtype=float) / 2.0, q)
+    """The chi-square quantile: x with P(X <= x) = ``q`` for X ~ chi2(``dof``). With one ``q`` and
+    many ``dof`` (a gate per tested pair: a few distinct values among thousands), each distinct
+    value is computed once (the inverse incomplete gamma function costs microseconds a value)."""
+    dof = np.asarray(dof, dtype=float)
+    if np.ndim(q) == 0 and dof.size > 16:
+        values, inverse = np.unique(dof, return_inverse=True)
+        return (2.0 * special.gammaincinv(values / 2.0, q))[inverse].reshape(dof.shape)
+    return 2.0 * special.gammaincinv(dof / 2.0, q)
 
 
 def chi2_sf(x: ArrayLike, dof: ArrayLike) -> np.ndarray:

@@ -22,6 +22,18 @@ def test_chi2_quantiles_and_tails_equal_scipy_stats():
     assert float(chi2_ppf(0.95, 1)) == float(stats.chi2.ppf(0.95, 1))  # scalars stay scalars
 
 
+def test_one_quantile_of_many_degrees_of_freedom_is_the_same_per_value():
+    """One q and thousands of dof (a gate per tested pair) are computed once per distinct dof: the
+    same numbers, bit for bit, in the shape given."""
+    from scipy import special
+
+    dof = np.random.default_rng(1).integers(1, 61, size=(40, 50))
+    for q in (0.99, 0.999):
+        expected = 2.0 * special.gammaincinv(dof / 2.0, q)
+        got = chi2_ppf(q, dof)
+        assert got.shape == dof.shape and np.array_equal(got, expected)
+
+
 def test_normal_upper_quantile_equals_scipy_stats():
     from scipy import stats
 
