@@ -101,8 +101,8 @@ def registered_labels(base: np.ndarray, state: JoinState, prov: np.ndarray) -> n
     lab = np.where(base != "", base, state.label).astype(object)
     at = np.flatnonzero((prov != "") & (lab == ""))
     if at.size:
-        joined = {t for t in state.target.tolist() if t}
-        at = at[np.array([t in joined for t in prov[at].tolist()], dtype=bool)]
+        joined = np.unique(state.target[state.target != ""].astype(str))
+        at = at[np.isin(prov[at].astype(str), joined)]
         lab[at] = prov[at]
     return lab
 
