@@ -37,8 +37,12 @@ def plot_positions(design: Design, x: np.ndarray | None = None) -> np.ndarray:
 def initial_coefficients(design: Design, x: np.ndarray | None = None) -> np.ndarray:
     """(B, n_coef, 3) starting coefficients: window means of the plot positions corrected by the
     states ``x`` (default zeros; module docstring)."""
+    return _means(design, plot_positions(design, x))
+
+
+def _means(design: Design, p: np.ndarray) -> np.ndarray:
+    """:func:`initial_coefficients` from the rows' positions ``p`` (rows, 3)."""
     blk = design.blocks
-    p = plot_positions(design, x)
     ranged = (design.weight[:, 0] > 0).astype(np.float64)
     real = design.real.astype(np.float64)
     n_ranged = design.block_sums(ranged)
@@ -67,8 +71,8 @@ def fitted_coefficients(design: Design, x: np.ndarray | None = None) -> np.ndarr
     window at speed (a constant misses it by its speed times half the window): a fit of the windows
     alone converges from it in fewer steps."""
     blk = design.blocks
-    coef = initial_coefficients(design, x)
     p = plot_positions(design, x)
+    coef = _means(design, p)
     ranged = design.weight[:, 0] > 0
     fixed = ranged & (design.weight[:, 1] > 0) & (design.weight[:, 2] > 0)  # range, bearing, elevation
     has_fix = design.block_sums(fixed.astype(np.float64)) > 0

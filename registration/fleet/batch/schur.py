@@ -28,6 +28,7 @@ from registration.fleet.batch.normal import Normal
 
 __all__ = [
     "Reduced",
+    "block_inverses",
     "determined_directions",
     "masked_blocks",
     "reduce",
@@ -57,17 +58,27 @@ def masked_blocks(blk: Blocks, V: np.ndarray) -> np.ndarray:
     return out
 
 
-def reduce(blk: Blocks, normal: Normal, lam: float = 0.0) -> Reduced:
-    """Eliminate the target blocks (damped by ``lam`` times the diagonal)."""
+def block_inverses(
+    blk: Blocks, normal: Normal, lam: float = 0.0
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(V_inv (B, q, q), Y (B, q, w g [+ 1]), y (B, q)) of the target blocks damped by ``lam`` times
+    their diagonal: what back-substitution and a window's covariance need, without the Schur
+    complement (a fit of the windows with the states held needs only these)."""
     V = masked_blocks(blk, normal.V)
     q = V.shape[1]
     diag_V = V[:, np.arange(q), np.arange(q)]
     V[:, np.arange(q), np.arange(q)] += lam * diag_V
     V_inv = np.linalg.inv(V)
     V_inv = 0.5 * (V_inv + V_inv.transpose(0, 2, 1))
-    W = normal.W  # (B, q, w g [+ 1])
-    Y = np.matmul(V_inv, W)
+    Y = np.matmul(V_inv, normal.W)
     y = np.matmul(V_inv, normal.b_c[:, :, None])[:, :, 0]
+    return V_inv, Y, y
+
+
+def reduce(blk: Blocks, normal: Normal, lam: float = 0.0) -> Reduced:
+    """Eliminate the target blocks (damped by ``lam`` times the diagonal)."""
+    V_inv, Y, y = block_inverses(blk, normal, lam)
+    W = normal.W  # (B, q, w g [+ 1])
     n1 = normal.U.shape[0]
     if blk.coupled_width > 6:
         WY, idx = _pattern_sums(blk, W, Y)

@@ -16,7 +16,7 @@ import numpy as np
 from registration.fleet.batch.blocks import Blocks
 from registration.fleet.batch.initial import fitted_coefficients, initial_coefficients
 from registration.fleet.batch.normal import evaluate, normal_equations
-from registration.fleet.batch.schur import masked_blocks, reduce
+from registration.fleet.batch.schur import block_inverses, masked_blocks
 from registration.fleet.batch.solver import BatchOptions, determined_design, singular_blocks
 from registration.fleet.data.problem import FleetProblem
 
@@ -274,7 +274,7 @@ def fit_windows(
     V = normal.V.copy()
     q = V.shape[1]
     V[bad] += np.eye(q) * np.maximum(np.abs(V[bad]).max(axis=(1, 2)), 1.0)[:, None, None]
-    red = reduce(blk, replace(normal, V=V), 0.0)
+    V_inv, Y, _ = block_inverses(blk, replace(normal, V=V))
     determined = np.ones(blk.n_blocks, dtype=bool)
     determined[bad] = False
     windows = Windows(blk.n_coef, blk.block_target, blk.block_centre, blk.block_half, blk.coef_mask)
@@ -283,8 +283,8 @@ def fit_windows(
         tuple(str(t) for t in problem.target_ids),
         windows,
         ev.coef,
-        red.V_inv,
-        red.Y,
+        V_inv,
+        Y,
         blk.local_state,
         determined,
         x,
