@@ -186,9 +186,11 @@ def _seen_by_one_sensor(
     seen by one sensor only."""
     targets = _first_seen(target)
     which = index_of(target, targets)
-    n_sensors = np.zeros(len(targets), dtype=np.int64)
-    pairs = np.unique(np.stack([which, sensor]), axis=1)
-    np.add.at(n_sensors, pairs[0], 1)
+    # the distinct (target, sensor) pairs as one integer key each (np.unique on columns sorts
+    # tuples: a tenth of a second on 180 000 plots)
+    span = int(np.max(sensor, initial=0)) + 1
+    pairs = np.unique(which.astype(np.int64) * span + np.asarray(sensor, dtype=np.int64))
+    n_sensors = np.bincount(pairs // span, minlength=len(targets))
     return targets, which, np.flatnonzero(n_sensors == 1)
 
 
