@@ -64,30 +64,29 @@ UNFITTED_BELOW = 1e-10
 
 def fitted_coefficients(design: Design, x: np.ndarray | None = None) -> np.ndarray:
     """(B, n_coef, 3) starting coefficients: each window's polynomial fitted by least squares to the
-    positions of its plots corrected by the states ``x``: those that fix a position (range, bearing
-    and elevation) where the window has some, else those with a range, else all (a 2-D radar's
-    plots lie at elevation 0, kilometres below an aircraft), where they determine it; elsewhere the
-    means of :func:`initial_coefficients`. Closer than the means for a target that crosses its
-    window at speed (a constant misses it by its speed times half the window): a fit of the windows
-    alone converges from it in fewer steps."""
+    positions, corrected by the states ``x``, of its plots that fix a position (range, bearing and
+    elevation), where they determine it; elsewhere the means of :func:`initial_coefficients`.
+    Closer than the means for a target that crosses its window at speed (a constant misses it by
+    its speed times half the window): a fit of the windows alone converges from it in fewer steps.
+    A window of 2-D plots only keeps its mean: they lie at elevation 0, kilometres below an
+    aircraft, and a polynomial through them started some of those fits elsewhere than the mean did
+    (a window whose height only slant ranges measure has more than one nearby optimum)."""
     blk = design.blocks
     p = plot_positions(design, x)
     coef = _means(design, p)
-    ranged = design.weight[:, 0] > 0
-    fixed = ranged & (design.weight[:, 1] > 0) & (design.weight[:, 2] > 0)  # range, bearing, elevation
-    has_fix = design.block_sums(fixed.astype(np.float64)) > 0
-    has_range = design.block_sums(ranged.astype(np.float64)) > 0
-    use = np.where(has_fix[design.block], fixed, np.where(has_range[design.block], ranged, design.real))
-    use = use.astype(np.float64)
-    b = design.basis * use[:, None]  # (rows, K), masked coefficients 0
+    fixed = (design.weight > 0).all(axis=1)  # range, bearing and elevation measured
+    b = design.basis * fixed[:, None]  # (rows, K), masked coefficients 0
     K = blk.n_coef
     BB = design.block_sums((b[:, :, None] * design.basis[:, None, :]).reshape(-1, K * K)).reshape(-1, K, K)
     Bp = design.block_sums((b[:, :, None] * p[:, None, :]).reshape(-1, K * 3)).reshape(-1, K, 3)
     unused = ~blk.coef_mask
     BB[:, np.arange(K), np.arange(K)] += unused
-    d = np.sqrt(np.abs(BB[:, np.arange(K), np.arange(K)])) + 1e-300
-    w = np.linalg.eigvalsh(BB / d[:, :, None] / d[:, None, :])
-    fit = np.flatnonzero((w[:, 0] > UNFITTED_BELOW * w[:, -1]) & (blk.coef_mask.sum(axis=1) > 1))
+    n_used = blk.coef_mask.sum(axis=1)
+    fit = np.flatnonzero((design.block_sums(fixed.astype(np.float64)) >= n_used) & (n_used > 1))
+    if fit.size:  # those whose fixing plots determine the polynomial (Jacobi-scaled, as singular_blocks)
+        d = np.sqrt(BB[fit][:, np.arange(K), np.arange(K)]) + 1e-300
+        w = np.linalg.eigvalsh(BB[fit] / d[:, :, None] / d[:, None, :])
+        fit = fit[w[:, 0] > UNFITTED_BELOW * w[:, -1]]
     if fit.size:
         c = np.linalg.solve(BB[fit], Bp[fit])
         c[unused[fit]] = 0.0
