@@ -37,6 +37,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from registration._generated import api as generated
+from registration.core.linalg import aos, inv, soa
 from registration.fleet.batch.initial import ASSUMED_RANGE_M
 from registration.fleet.corrected import corrected_positions
 from registration.fleet.data.problem import FleetProblem
@@ -158,7 +159,10 @@ def plot_geometry(problem: FleetProblem, x: np.ndarray, sel: np.ndarray | None =
     Jp, Jx = J[:, :, :3], J[:, :, 3:]
     JtW = np.swapaxes(Jp, 1, 2) * weight[:, None, :]
     info = JtW @ Jp + np.eye(3) / UNCONSTRAINED_SIGMA_M**2
-    cov = np.linalg.inv(info)
+    try:  # by the adjugate over the whole batch: numpy's inv pays a LAPACK call per 3x3 matrix
+        cov = aos(inv(soa(info)))
+    except ValueError:  # a matrix singular to the adjugate's test: LAPACK's inverse decides
+        cov = np.linalg.inv(info)
     dp_dx = -cov @ (JtW @ Jx)
     return PlotGeometry(p, info, cov, dp_dx, J, weight, sel, t, nav, rate)
 
