@@ -74,7 +74,7 @@ def fitted_coefficients(design: Design, x: np.ndarray | None = None) -> np.ndarr
     blk = design.blocks
     p = plot_positions(design, x)
     coef = _means(design, p)
-    fixed = (design.weight > 0).all(axis=1)  # range, bearing and elevation measured
+    fixed: np.ndarray = np.all(design.weight > 0, axis=1)  # range, bearing and elevation measured
     b = design.basis * fixed[:, None]  # (rows, K), masked coefficients 0
     K = blk.n_coef
     BB = design.block_sums((b[:, :, None] * design.basis[:, None, :]).reshape(-1, K * K)).reshape(-1, K, K)
