@@ -69,8 +69,8 @@ def solve_batch(
     ``progress``: a bar over the solver's iterations on standard error, shown only on a terminal
     and after about a second (:func:`registration.core.progress.progress_bar`).
     ``fused`` False: ``targets`` is left empty (:meth:`FusedTargets.empty`), for a caller that needs
-    the estimate only (the association's solves between passes: the fused positions and their
-    covariances at every measured instant cost a third of such a solve).
+    the estimate only (the association's solves between passes, which never read the fused
+    positions: on the 10-radar benchmark they cost 0.2 s of those five solves' 1.0 s).
     """
     fit_ = fit(problem, options or BatchOptions(), x0, progress=progress, coefficients=coefficients)
     problem = fit_.problem

@@ -8,12 +8,14 @@ states, :mod:`registration.fleet.batch.schur`); :mod:`.curves` predicts the anch
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from typing import cast
 
 import numpy as np
 
 from registration.fleet.batch.blocks import Blocks
+from registration.fleet.batch.design import Design
 from registration.fleet.batch.initial import fitted_coefficients, initial_coefficients
 from registration.fleet.batch.normal import evaluate, normal_equations
 from registration.fleet.batch.schur import block_inverses, masked_blocks
@@ -190,7 +192,11 @@ def _window_keys(names: tuple, windows) -> list:
 
 
 def start_coefficients(
-    design, names: tuple, x: np.ndarray, prior: WindowFit, start=initial_coefficients
+    design: Design,
+    names: tuple,
+    x: np.ndarray,
+    prior: WindowFit,
+    start: Callable[[Design, np.ndarray], np.ndarray] = initial_coefficients,
 ) -> np.ndarray:
     """(B, K, 3) starting coefficients: ``start(design, x)`` (default the plots' window means, the
     batch's start), and for each window that ``prior`` determined (same target, centre, length and
