@@ -36,11 +36,14 @@ __all__ = [
     "evaluate",
     "pair_statistics",
     "kalman_update",
+    "lower_bounds",
     "verify_plots",
 ]
 
 #: Rows (plots) whose windows' ``Y`` over the states are gathered at once in :func:`_chunk_tests`.
 WINDOW_ROWS = 512
+#: Plots predicted at once in :func:`lower_bounds`.
+PREDICT_ROWS = 16384
 
 
 def candidate_plots(
@@ -118,12 +121,14 @@ def _residuals(problem: FleetProblem, x: np.ndarray, plots: np.ndarray, p: np.nd
     return np.asarray(res).reshape(-1, 3), np.asarray(J).reshape(-1, 3, 3 + cols.shape[1]), cols
 
 
-def _chunk_tests(problem: FleetProblem, x: np.ndarray, curves: Curves, unit, target, plots) -> Pairs:
-    n = problem.layout.n
+def _predicted(problem: FleetProblem, x: np.ndarray, curves: Curves, target: np.ndarray, plots: np.ndarray):
+    """Of the pairs' ``plots`` (C, k; -1 padding, evaluated as the pair's first plot) against their
+    ``target`` (C,), per plot (m = C k): the plots (m,), measured and not padding (m, 3), and the
+    residuals, Jacobians and state columns of :func:`_residuals`, the window (m,; -1 none), ``A``
+    (m, 3, q) and the position's own covariance (m, 3, 3) of the prediction (:meth:`Curves.predict`)."""
     c, k = plots.shape
     valid = plots >= 0
     flat = np.where(valid, plots, plots[:, :1]).reshape(-1)
-    ok = valid.reshape(-1)
     t_seen = problem.seen(x, flat)[0]
     m = flat.size
     q = curves.V_inv.shape[1] if curves.V_inv.size else 12
@@ -135,7 +140,15 @@ def _chunk_tests(problem: FleetProblem, x: np.ndarray, curves: Curves, unit, tar
         pr = curves.predict(int(j), problem.time[flat[rows]], t_seen[rows])
         p[rows], v[rows], block[rows], A[rows], cov[rows] = pr.p, pr.v, pr.block, pr.A, pr.cov
     res, J, cols = _residuals(problem, x, flat, p, v)
-    mask = problem.mask[flat] & ok[:, None]
+    return flat, problem.mask[flat] & valid.reshape(-1)[:, None], res, J, cols, block, A, cov
+
+
+def _chunk_tests(problem: FleetProblem, x: np.ndarray, curves: Curves, unit, target, plots) -> Pairs:
+    n = problem.layout.n
+    c, k = plots.shape
+    flat, mask, res, J, cols, block, A, cov = _predicted(problem, x, curves, target, plots)
+    m = flat.size
+    q = A.shape[2]
     res, J = np.where(mask, res, 0.0), np.where(mask[..., None], J, 0.0)
     Jp, Jx = J[:, :, :3], J[:, :, 3:]
     JA = Jp @ A
@@ -234,6 +247,50 @@ def pair_statistics(
         pairs = _chunk_tests(problem, x, curves, unit[s], target[s], plots[s])
         d2[s], _, _, dof[s] = evaluate(pairs, dx, P, **options)
     return d2, dof
+
+
+def lower_bounds(
+    problem: FleetProblem, x: np.ndarray, curves: Curves, target: np.ndarray, plots: np.ndarray, P: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """(a lower bound of d^2 (C,), values compared (C,)) of the pairs (``target`` (C,), ``plots`` (C, k),
+    -1 padding) under the estimate ``x`` and covariance ``P``, without forming ``D`` or ``S``: with the
+    values whitened by the sensors' sigmas (W), ``d^2 >= |W r|^2 / tr(W S W)``, and the trace bounded
+    by ``tr(W R W) + tr(W J_p cov J_p^T W) + lambda(C_b) |W A|_F^2 + lambda(P~) |W D diag(s)|_F^2``
+    (``s`` the states' sigmas, ``P~`` their correlation matrix, ``lambda`` the largest eigenvalue),
+    ``|W D diag(s)|_F <= sum_i s_i |W J_x,i| + |W A|_F |Y_b diag(s)|_F``. A pair whose bound is beyond
+    its gate fails its test for certain: the clutter plots the single plots' tests meet, kilometres
+    from every target, need neither the state columns of every window nor the products with P."""
+    n = problem.layout.n
+    s = np.sqrt(np.clip(np.diag(P), 0.0, None))
+    inv_s = np.divide(1.0, s, out=np.zeros_like(s), where=s > 0)
+    lam_P = max(float(np.linalg.eigvalsh(P * inv_s[:, None] * inv_s[None, :])[-1]), 0.0)
+    s_all = np.append(s, 0.0)  # column n: no state
+    y_norm, lam_C = np.zeros(0), np.zeros(0)
+    if curves.V_inv.size:
+        y_norm = np.sqrt(((curves.Y_states * s_all) ** 2).sum(axis=(1, 2)))
+        lam_C = np.maximum(np.linalg.eigvalsh(curves.V_inv)[:, -1], 0.0)
+    c, k = plots.shape
+    bound, dof = np.zeros(c), np.zeros(c, dtype=np.int64)
+    step = max(1, PREDICT_ROWS // k)
+    for a in range(0, c, step):
+        sl = slice(a, a + step)
+        flat, mask, res, J, cols, block, A, cov = _predicted(problem, x, curves, target[sl], plots[sl])
+        sigma = np.nan_to_num(problem.sensor_sigma[problem.sensor[flat]], nan=1.0)
+        w = np.where(mask, 1.0 / sigma, 0.0)
+        Jp = J[:, :, :3] * w[:, :, None]
+        wr2 = ((res * w) ** 2).sum(axis=1)
+        wa = np.sqrt(((Jp @ A) ** 2).sum(axis=(1, 2)))
+        own = np.einsum("mij,mjk,mik->m", Jp, cov, Jp) + 3.0  # W R W: 1 per channel (1 where not measured)
+        jx_norm = np.sqrt(((J[:, :, 3:] * w[:, :, None]) ** 2).sum(axis=1))  # (m, w) per state column
+        jx = (jx_norm * s_all[np.where(cols < 0, n, cols)]).sum(axis=1)
+        win = block >= 0
+        lc, yn = np.zeros(flat.size), np.zeros(flat.size)
+        lc[win], yn[win] = lam_C[block[win]], y_norm[block[win]]
+        trace = own + lc * wa**2 + lam_P * (jx + wa * yn) ** 2
+        rows = flat.size // k
+        bound[sl] = wr2.reshape(rows, k).sum(axis=1) / trace.reshape(rows, k).sum(axis=1)
+        dof[sl] = mask.reshape(rows, 3 * k).sum(axis=1)
+    return bound, dof
 
 
 def verify_plots(

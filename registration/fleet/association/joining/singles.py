@@ -10,6 +10,12 @@ chi-square tail probability is at least ``ambiguity_ratio`` times that of any ot
 when its sensor has no other plot of that target in the same scan. Sensors without any registered
 plot yet are left out (their errors are still unknown), except a radar's channel when the radar
 has registered plots: its errors start from the radar's (association/channels.py).
+
+Most candidates are clutter, or plots of another target, kilometres off: on the 10-radar benchmark
+1 069 of 221 829 pass their gate. A lower bound of the statistic
+(:func:`~registration.fleet.association.joining.attach.lower_bounds`, from the residual and a bound of
+the trace of its covariance) settles those beyond the gate for certain before the full test; the
+plots joined are the same (there the statistic was at least 3.4 and typically 17 times the bound).
 """
 
 from __future__ import annotations
@@ -17,7 +23,7 @@ from __future__ import annotations
 import numpy as np
 
 from registration.core.distributions import chi2_logsf, chi2_ppf
-from registration.fleet.association.joining.attach import pair_statistics
+from registration.fleet.association.joining.attach import lower_bounds, pair_statistics
 from registration.fleet.association.joining.curves import Curves
 from registration.fleet.association.options import AssociationOptions
 from registration.fleet.association.solves import Registrar
@@ -68,10 +74,15 @@ def join_single_plots(
     plot, target = _candidates(reg, curves, free)
     if plot.size == 0:
         return out
-    d2, dof = pair_statistics(
-        problem, reg.x, curves, plot, target, plot[:, None], np.zeros(reg.x.size), reg.P
+    # most candidates are clutter kilometres from the target: a bound of d^2 settles them first
+    bound, dof = lower_bounds(problem, reg.x, curves, target, plot[:, None], reg.P)
+    gate = chi2_ppf(options.gate_probability, np.maximum(dof, 1))
+    near = np.flatnonzero(~(bound >= gate))
+    d2 = np.full(plot.size, np.inf)
+    d2[near], dof[near] = pair_statistics(
+        problem, reg.x, curves, plot[near], target[near], plot[near][:, None], np.zeros(reg.x.size), reg.P
     )
-    ok = (dof > 0) & (d2 < chi2_ppf(options.gate_probability, np.maximum(dof, 1)))
+    ok = (dof > 0) & (d2 < gate)
     lp = np.where(ok, chi2_logsf(d2, np.maximum(dof, 1)), -np.inf)
     order = np.lexsort((-lp, plot))
     plot, target, lp = plot[order], target[order], lp[order]
