@@ -150,3 +150,40 @@ def test_a_last_small_step_on_the_linearised_model_leaves_the_residuals_of_an_ev
     d = np.sqrt(np.abs(np.diagonal(evaluated.V_inv, axis1=1, axis2=2)))
     scale = d[:, :, None] * d[:, None, :] + 1e-300
     assert (np.abs(linear.V_inv - evaluated.V_inv) / scale).max() < 1e-3
+
+
+def test_a_window_fit_that_gauss_newton_throws_off_is_handed_to_levenberg_marquardt(monkeypatch):
+    """On the ATC fleet the anchors' first fit holds 2-D radars' windows of Mode A aircraft whose
+    height only slant ranges and flight levels measure: plain Gauss-Newton steps threw them 10^4 km
+    off (their sums of squares rising to 1e14 in ten steps), and their curves predicted nothing
+    right. A step that raises a window's sum of squares now hands the fit to the batch's per-window
+    Levenberg-Marquardt: every window kept ends within its tolerance, its plots' residuals a few
+    sigma. The test fails with the hand-over switched off."""
+    from registration.fleet import associate_and_register
+    from registration.fleet.association.joining import windowfit
+    from registration.fleet.association.simulated.fleets import atc_fleet
+
+    sim, refs = atc_fleet(101)
+    sc = sim.scenario
+    first = []
+    real_fit = windowfit.fit_windows
+
+    def capture(problem, x, options, prior=None):
+        if problem is not None and not first:
+            first.append((problem, x, options))
+        return real_fit(problem, x, options, prior)
+
+    monkeypatch.setattr("registration.fleet.association.solves.fit_windows", capture)
+    monkeypatch.setattr("registration.fleet.association.joining.curves.fit_windows", capture)
+    associate_and_register(sim.plots, sc.sensors, sc.navigation, sc.platforms, refs)
+    problem, x, options = first[0]
+    handed = []
+    real_each = windowfit.fit_each_window
+    monkeypatch.setattr(windowfit, "fit_each_window", lambda *a: handed.append(1) or real_each(*a))
+    fit = windowfit.fit_windows(problem, x, options)
+    assert handed
+    assert fit.determined.all()
+    assert np.nanmax(np.abs(fit.residuals)) < 10.0  # sigma of each value: 5.7 here
+    monkeypatch.setattr(windowfit, "ROUNDING", np.inf)  # no hand-over: Gauss-Newton to the end
+    thrown = windowfit.fit_windows(problem, x, options)
+    assert np.nanmax(np.abs(thrown.residuals)) > 1e3  # 3e7 here
