@@ -12,16 +12,6 @@ is therefore the last, and the residuals after it are the linearised model's ``e
 rows' Jacobian in their windows' coefficients): below 0.2 from those of a new evaluation in total,
 where a new evaluation of every plot and its normal equations would cost a third of the fit. The
 windows' covariances are then those at the step's start.
-
-Not every window is that tame: a 2-D radar's window of an aircraft whose height only slant ranges
-and flight levels measure can have a Gauss-Newton step that throws it far off (on the ATC fleet of
-the robust table, 10^4 km in the anchors' first fit, the sums of squares rising to 1e14 in ten
-steps: those targets' curves then predicted nothing right and their primary plots stayed
-unassociated). A step that raises any window's sum of squares hands the fit, from where it is, to
-the batch's per-window Levenberg-Marquardt (:func:`~registration.fleet.batch.window_fit.fit_each_window`:
-each window's step kept only when it lowers that window's sum of squares, its damping its own); a
-window it leaves more than a sigma from its minimum predicts nothing. Fits whose steps all lower
-every window (the benchmark's) are unchanged.
 """
 
 from __future__ import annotations
@@ -38,7 +28,6 @@ from registration.fleet.batch.initial import fitted_coefficients, initial_coeffi
 from registration.fleet.batch.normal import evaluate, normal_equations
 from registration.fleet.batch.schur import block_inverses, masked_blocks
 from registration.fleet.batch.solver import BatchOptions, determined_design, singular_blocks
-from registration.fleet.batch.window_fit import UNCONVERGED_REMAINING, fit_each_window, window_costs
 from registration.fleet.data.problem import FleetProblem
 
 __all__ = [
@@ -63,8 +52,6 @@ WINDOW_TOLERANCE = 1e-2
 #: last, taken on the linearised model (module docstring). Steps of fits that wander (a window whose
 #: height only slant ranges measure) predicted 7.9e3 and more, and are evaluated.
 LINEAR_REDUCTION = 1e3
-#: A window's sum of squares counts as raised by a step above this relative (and absolute) rounding.
-ROUNDING = 1e-9
 
 
 @dataclass(frozen=True)
@@ -276,18 +263,15 @@ def window_steps(V: np.ndarray, b_c: np.ndarray, singular: np.ndarray) -> np.nda
     return dc
 
 
-def _gauss_newton(design: Design, ev, normal, options: BatchOptions):
+def _gauss_newton(design: Design, ev, normal):
     """Gauss-Newton on the windows alone (the states held) from the evaluation ``ev`` and its normal
     equations ``normal``: (coefficients (B, n_coef, 3), whitened residuals (rows, 3) there, the normal
-    equations of the last evaluation, the windows to leave out: undetermined there, or not brought
-    within a sigma of their minimum). A step that predicts a reduction of at most LINEAR_REDUCTION is
-    the last: its residuals are the linearised model's ``e + A_c dc`` (module docstring), not a new
-    evaluation. A step that raises some window's sum of squares hands the fit, from where it is, to
-    the batch's per-window Levenberg-Marquardt (module docstring)."""
+    equations of the last evaluation, the windows found undetermined there). A step that predicts
+    a reduction of at most LINEAR_REDUCTION is the last: its residuals are the linearised model's
+    ``e + A_c dc`` (module docstring), not a new evaluation."""
     blk = design.blocks
     mask = np.repeat(blk.coef_mask, 3, axis=1)
     bad = np.zeros(0, dtype=np.int64)  # determined_design leaves no singular window at its start
-    cost = window_costs(design, ev)
     for _ in range(WINDOW_ITERATIONS):  # nearly linear in the windows
         dc = window_steps(masked_blocks(blk, normal.V), normal.b_c, bad) * mask
         reduction = float(np.sum(dc * normal.b_c))
@@ -297,13 +281,7 @@ def _gauss_newton(design: Design, ev, normal, options: BatchOptions):
             q = dc.shape[1]
             e = ev.e + np.einsum("rij,rj->ri", ev.Z[:, :, :q], dc[design.block])
             return ev.coef + dc.reshape(ev.coef.shape), e, normal, bad
-        trial = evaluate(design, ev.x, ev.coef + dc.reshape(ev.coef.shape))
-        trial_cost = window_costs(design, trial)
-        if not np.all(trial_cost <= cost * (1.0 + ROUNDING) + ROUNDING):
-            ev, normal, remaining = fit_each_window(design, ev, normal, options)
-            left_out = np.flatnonzero(remaining > UNCONVERGED_REMAINING)
-            return ev.coef, ev.e, normal, np.union1d(singular_blocks(design, normal), left_out)
-        ev, cost = trial, trial_cost
+        ev = evaluate(design, ev.x, ev.coef + dc.reshape(ev.coef.shape))
         normal = normal_equations(design, ev)
         bad = singular_blocks(design, normal)  # windows the plots do not determine here: they predict nothing
     return ev.coef, ev.e, normal, bad
@@ -327,7 +305,7 @@ def fit_windows(
         return WindowFit.empty(x)
     problem, design, ev, normal = found
     blk = design.blocks
-    coef, e, normal, bad = _gauss_newton(design, ev, normal, options)
+    coef, e, normal, bad = _gauss_newton(design, ev, normal)
     V = normal.V.copy()
     q = V.shape[1]
     V[bad] += np.eye(q) * np.maximum(np.abs(V[bad]).max(axis=(1, 2)), 1.0)[:, None, None]
