@@ -10,20 +10,29 @@ import pytest
 from registration.core.distributions import chi2_ppf
 from registration.fleet import associate_and_register, association_scenario
 from registration.fleet.association.joining import attach, singles
+from registration.fleet.association.simulated.fleets import rolling_fleet
 
 
-@pytest.fixture(scope="module")
-def candidates():
-    """The arguments of the single plots' screen in an association of 5 targets with clutter."""
-    sim = association_scenario(
-        5,
-        crossing=True,
-        angle_bias=np.radians(2.0),
-        p_missed=0.1,
-        clutter_per_scan=1.0,
-        duration_s=150.0,
-        seed=3,
-    )
+def _scenario(name: str):
+    if name == "crossing, clutter":
+        return association_scenario(
+            5,
+            crossing=True,
+            angle_bias=np.radians(2.0),
+            p_missed=0.1,
+            clutter_per_scan=1.0,
+            duration_s=150.0,
+            seed=3,
+        )
+    # rolling ships, a passive sensor, time biases and range gains (the extended errors' residuals)
+    return rolling_fleet(7, duration_s=300.0, clutter_share=0.05, time_bias=0.3, range_gain=3e-4)
+
+
+@pytest.fixture(scope="module", params=["crossing, clutter", "rolling, time bias + gain, clutter"])
+def candidates(request):
+    """The arguments of the single plots' screen in an association with clutter: 5 crossing targets
+    of the default fleet, and a fleet with the extended errors (not the one the bound was measured on)."""
+    sim = _scenario(request.param)
     sc = sim.scenario
     seen = []
     real = singles.lower_bounds
