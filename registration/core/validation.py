@@ -18,6 +18,7 @@ __all__ = [
     "HALF_PI",
     "LATITUDE_SLACK",
     "ALTITUDE_LIMITS_M",
+    "TIME_LIMIT_S",
 ]
 
 HALF_PI = np.pi / 2
@@ -27,6 +28,9 @@ LATITUDE_SLACK = 1e-7
 #: Accepted heights above the WGS-84 ellipsoid (m), for platforms and targets alike: from below the
 #: deepest ocean trench to the top of low Earth orbit.
 ALTITUDE_LIMITS_M = (-12_000.0, 1_000_000.0)
+#: Accepted times (s), plots, navigation and references alike: within +-1e11 s, which holds Unix
+#: seconds to the year 5138 and keeps the microsecond ticks the windows are keyed on within int64.
+TIME_LIMIT_S = 1.0e11
 
 
 def as_float_array(name: str, value) -> np.ndarray:

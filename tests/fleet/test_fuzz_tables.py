@@ -139,10 +139,14 @@ def test_mutated_fleet_tables_through_fleet_register(base, tmp_path, capsys):
         write(mutate(base, rng), folder)
         mode = rng.choice(("stop", "skip"))
         argv = ["fleet", "register", "--tables", str(folder), "--out", str(folder / "out"), "--no-plots"]
-        try:
-            code = main([*argv, "--on-bad-row", mode])
-        except BaseException as exc:  # a traceback: a bug
-            raise AssertionError(f"seed {seed}: {type(exc).__name__}: {exc}") from exc
+        with warnings.catch_warnings(record=True) as caught:  # pytest's capture would hide them from stderr
+            warnings.simplefilter("always", RuntimeWarning)
+            try:
+                code = main([*argv, "--on-bad-row", mode])
+            except BaseException as exc:  # a traceback: a bug
+                raise AssertionError(f"seed {seed}: {type(exc).__name__}: {exc}") from exc
+        runtime = [str(w.message) for w in caught if issubclass(w.category, RuntimeWarning)]
+        assert not runtime, (seed, runtime)
         err = capsys.readouterr().err
         assert code in (0, 2, 3), (seed, code, err)
         assert "Traceback" not in err and "RuntimeWarning" not in err, (seed, err)

@@ -135,7 +135,17 @@ def test_missing_column_and_unknown_reference_target(scenario):
         build_problem(**t)
     t = _tables(scenario)
     t["references"]["target"] = np.full(t["references"]["time"].size, "T99")
-    with pytest.raises(ValueError, match=r"references row 0: reference target 'T99' has no plots"):
+    with pytest.raises(ValueError, match=r"references row 0: target 'T99' of the reference has no plots"):
+        build_problem(**t)
+
+
+@pytest.mark.parametrize("table", ["plots", "navigation", "references"])
+def test_times_beyond_the_limit_are_refused(scenario, table):
+    """A time of 1e308 s once reached the windows' microsecond ticks and overflowed there."""
+    t = _tables(scenario)
+    t[table]["time"] = np.asarray(t[table]["time"], dtype=float).copy()
+    t[table]["time"][0] = 1e308
+    with pytest.raises(ValueError, match=r"row 0.*1e\+?308.*1e\+11 s"):
         build_problem(**t)
 
 

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from registration.core.frames import geodetic2ecef
-from registration.core.validation import check_range
+from registration.core.validation import TIME_LIMIT_S, check_range
 from registration.fleet.data.tables import DEFAULT_REFERENCE_SIGMA, index_of, read_table
 
 __all__ = ["References", "SurfaceTargets", "read_references", "read_surface"]
@@ -74,7 +74,8 @@ def read_references(references, target_ids) -> References:
     for row, t in enumerate(target):
         if t not in known:
             raise table.error(
-                row, f"reference target {str(t)!r} has no plots (targets: {sorted(str(k) for k in known)})"
+                row,
+                f"target {str(t)!r} of the reference has no plots (targets: {sorted(str(k) for k in known)})",
             )
     time = table.floats("time")
     if table.has("x"):
@@ -87,12 +88,13 @@ def read_references(references, target_ids) -> References:
             "references: give the known position as ECEF x, y, z (m) or as lat, lon (rad), alt (m)"
         )
     sigma = table.floats("sigma", default=DEFAULT_REFERENCE_SIGMA)
-    bad = np.flatnonzero(~(np.isfinite(time) & (sigma > 0) & ~np.isnan(sigma)))
+    bad = np.flatnonzero(~((np.abs(time) <= TIME_LIMIT_S) & (sigma > 0) & ~np.isnan(sigma)))
     if bad.size:
         r = int(bad[0])
         raise table.error(
             r,
-            f"reference of target {str(target[r])!r}: time {time[r]} s must be finite and sigma "
+            f"reference of target {str(target[r])!r}: time {time[r]} s must be finite (within "
+            f"+-{TIME_LIMIT_S:g} s) and sigma "
             f"{sigma[r]} m > 0 (the accuracy of the known position; inf: a height only)",
         )
     sigma_up = table.floats("sigma_up", default=np.nan)

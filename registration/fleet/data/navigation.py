@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from registration.core.angles import wrap_angle
-from registration.core.validation import check_range
+from registration.core.validation import TIME_LIMIT_S, check_range
 from registration.fleet.data.tables import NAV_COLUMNS, Table
 
 __all__ = [
@@ -80,13 +80,14 @@ def platform_navigation(nav: Table, platform_ids) -> dict[str, tuple[np.ndarray,
             raise ValueError(f"navigation: platform {str(pid)!r} has no navigation rows")
         t, v = time[rows], values[rows].copy()
         if rows.size > 1:
-            bad = np.flatnonzero(~np.isfinite(t) | ~np.append(np.diff(t) > 0, True))
+            bad = np.flatnonzero(~(np.abs(t) <= TIME_LIMIT_S) | ~np.append(np.diff(t) > 0, True))
             if bad.size:
                 r = int(rows[bad[0]])
                 raise nav.error(
                     r,
                     f"time {t[bad[0]]} s of platform {str(pid)!r} is not finite or the next row's "
-                    "time does not increase (times must be finite and strictly increasing)",
+                    f"time does not increase (times must be finite, within +-{TIME_LIMIT_S:g} s, and "
+                    "strictly increasing)",
                 )
             for c in _UNWRAP:
                 j = NAV_COLUMNS.index(c)

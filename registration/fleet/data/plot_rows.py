@@ -10,7 +10,7 @@ from typing import Callable, NamedTuple
 
 import numpy as np
 
-from registration.core.validation import degree_hint
+from registration.core.validation import TIME_LIMIT_S, degree_hint
 from registration.fleet.data.sensor_specs import SensorSpecs
 from registration.fleet.data.tables import CHANNELS, Table, index_of
 
@@ -119,8 +119,8 @@ def plot_problems(table: Table, sensors: SensorSpecs) -> list[RowProblem]:
         RowProblem(
             "non_finite",
             "time",
-            ~np.isfinite(time),
-            lambda r: f"time {time[r]} is not a finite number of seconds",
+            ~(np.abs(time) <= TIME_LIMIT_S),
+            lambda r: f"time {time[r]} is not a finite number of seconds within +-{TIME_LIMIT_S:g} s",
         ),
         RowProblem(
             "unknown_sensor",

@@ -15,6 +15,8 @@ import math
 from dataclasses import dataclass
 from typing import NamedTuple
 
+from registration.core.validation import TIME_LIMIT_S
+
 __all__ = ["FLEET_FILES", "HELD", "INF_ALLOWED", "POSITIVE", "FileColumn", "held", "FileTable"]
 
 
@@ -44,6 +46,7 @@ class FileTable:
     columns: tuple[FileColumn, ...]
 
 
+_TIME = (-TIME_LIMIT_S, TIME_LIMIT_S)
 _NO_PRIOR = "empty or inf: no prior; 0: known to be zero, held fixed"
 _C = FileColumn
 
@@ -57,7 +60,7 @@ FLEET_FILES = {
         "targets and each other, jointly with the registration; track: a sensor-local track id "
         "(associations.csv)",
         (
-            _C("time_s", "time", "s", True, None, "time of the plot"),
+            _C("time_s", "time", "s", True, _TIME, "time of the plot"),
             _C("sensor", "sensor", "id", True, None, "the sensor that made the plot (listed in sensors)"),
             _C("target", "target", "id", False, None, "the target's id; empty: none, the plot is associated"),
             _C(
@@ -101,7 +104,7 @@ FLEET_FILES = {
         True,
         "one row per platform and time, as reported (one row for a fixed site)",
         (
-            _C("time_s", "time", "s", True, None, "time of the sample"),
+            _C("time_s", "time", "s", True, _TIME, "time of the sample"),
             _C("platform", "platform", "id", True, None, "the platform's id"),
             _C("lat_deg", "lat", "deg", True, (-90.0, 90.0), "geodetic latitude (WGS-84)"),
             _C("lon_deg", "lon", "deg", True, (-360.0, 360.0), "longitude"),
@@ -265,7 +268,7 @@ FLEET_FILES = {
         "per axis, default 1 m; horizontal with sigma_up_m) and sigma_up_m (m, vertical); a height alone "
         "(sigma_m inf), such as a flight level turned into a height; default: none",
         (
-            _C("time_s", "time", "s", True, None, "time of the known position"),
+            _C("time_s", "time", "s", True, _TIME, "time of the known position"),
             _C("target", "target", "id", True, None, "the target's id"),
             _C("lat_deg", "lat", "deg", False, (-90.0, 90.0), "geodetic latitude (WGS-84)"),
             _C("lon_deg", "lon", "deg", False, (-360.0, 360.0), "longitude"),
