@@ -38,10 +38,25 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 N_INPUTS = int(os.environ.get("REGISTRATION_FUZZ_N", "10000"))
 SEED = int(os.environ.get("REGISTRATION_FUZZ_SEED", "20261207"))
+#: Set (s): a seeded fuzz test (:func:`fuzz_seeds`) runs for this long instead of its fixed count.
+CAMPAIGN_S = os.environ.get("REGISTRATION_FUZZ_S")
 #: The time one input may take before it counts as a hang (s); the machine may be loaded.
 PER_INPUT_S = float(os.environ.get("REGISTRATION_FUZZ_INPUT_S", "5"))
 #: The time one batch may take (s), whatever its size.
 BATCH_S = 60.0
+
+
+def fuzz_seeds(first: int, cases: int) -> Iterator[int]:
+    """The seeds of a seeded fuzz test: ``cases`` of them from ``first``, the same on every machine
+    (a time bound let CI, on a faster machine, reach a failing seed that no run here had tried);
+    with ``REGISTRATION_FUZZ_S`` set, as many as that many seconds allow (a longer search)."""
+    if CAMPAIGN_S is None:
+        yield from range(first, first + cases)
+        return
+    start, seed = time.monotonic(), first
+    while time.monotonic() - start < float(CAMPAIGN_S):
+        yield seed
+        seed += 1
 
 
 class Hang(Exception):
