@@ -18,8 +18,8 @@ ids, interleaved (``--repeats`` rounds; the ratio is the median of the rounds' r
 and written to benchmarks/results/association.json: the times, the share of the association's
 time spent in ``linear_sum_assignment``, the ratio of the two times, the association's scores
 against the truth and the largest difference of the two estimates in units of the baseline's
-sigma. The machine's load average is
-printed too (other work slows both).
+sigma; and, from one more run, the association's time by stage (``association_stages.py``). The
+machine's load average is printed too (other work slows both).
 """
 
 from __future__ import annotations
@@ -28,6 +28,7 @@ import argparse
 import os
 
 import numpy as np
+from association_stages import stage_times
 from common import add_arguments, interleave, paired_ratio, summary, write
 
 from registration.fleet import (
@@ -111,6 +112,9 @@ def main(argv=None) -> dict:
     free = base.layout.free
     diff = np.abs(result.batch.estimate - base.estimate)[free] / base.sigma[free]
     out["max_estimate_difference_in_sigma"] = float(np.max(diff))
+    stages = stage_times(lambda: associate_and_register(sim.plots, sc.sensors, sc.navigation, sc.platforms))
+    print("\n".join(stages.lines()))
+    out["stage_seconds"] = {"whole": stages.whole, "solves": stages.solves, "total": stages.total}
     out["load_average_after"] = os.getloadavg()
     for key, value in {**sizes, **out}.items():
         print(f"{key:36s} {value}")

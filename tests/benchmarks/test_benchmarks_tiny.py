@@ -14,9 +14,10 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 BENCH = ROOT / "benchmarks"
-#: Modules of benchmarks/ that are not benchmarks: the shared helper, the docs' tables, and the
-#: NumPy baseline and compiler-flags experiment that bench_online.py imports (run below).
-HELPERS = {"common.py", "tables.py", "online_baseline.py", "online_flags.py"}
+#: Modules of benchmarks/ that are not benchmarks: the shared helper, the docs' tables, the
+#: NumPy baseline and compiler-flags experiment that bench_online.py imports (run below), and the
+#: association's stage timer that bench_association.py runs.
+HELPERS = {"common.py", "tables.py", "online_baseline.py", "online_flags.py", "association_stages.py"}
 SCRIPTS = sorted(p.name for p in BENCH.glob("*.py") if p.name not in HELPERS)
 #: Arguments of a script's tiny run beyond --tiny: bench_online.py runs its compiler-flags
 #: experiment (online_flags.py) too.
