@@ -108,24 +108,14 @@ def stage_times(run: Callable[[], object]) -> StageTimes:
 
 
 def main(argv=None) -> StageTimes:
-    import numpy as np
-    from bench_association import SENSORS_10
+    from bench_association import scenario
 
-    from registration.fleet import associate_and_register, association_scenario
+    from registration.fleet import associate_and_register
 
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--duration", type=float, default=1000.0, help="seconds of data")
     args = parser.parse_args(argv)
-    sim = association_scenario(
-        20,
-        crossing=True,
-        angle_bias=np.radians(2.0),
-        p_missed=0.1,
-        clutter_per_scan=1.0,
-        duration_s=args.duration,
-        seed=5,
-        sensors=SENSORS_10,
-    )
+    sim = scenario(duration_s=args.duration)
     sc = sim.scenario
     times = stage_times(lambda: associate_and_register(sim.plots, sc.sensors, sc.navigation, sc.platforms))
     print("\n".join(times.lines()))

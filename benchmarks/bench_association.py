@@ -55,6 +55,20 @@ SENSORS_10 = {
 }
 
 
+def scenario(targets: int = 20, duration_s: float = 1000.0):
+    """The benchmark's simulation (module docstring): ``targets`` targets over ``duration_s`` s."""
+    return association_scenario(
+        targets,
+        crossing=True,
+        angle_bias=np.radians(2.0),
+        p_missed=0.1,
+        clutter_per_scan=1.0,
+        duration_s=duration_s,
+        seed=5,
+        sensors=SENSORS_10,
+    )
+
+
 def main(argv=None) -> dict:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--duration", type=float, default=1000.0, help="seconds of data")
@@ -65,16 +79,7 @@ def main(argv=None) -> dict:
     if args.tiny:
         args.duration, args.targets, args.repeats = 60.0, 3, 1
 
-    sim = association_scenario(
-        args.targets,
-        crossing=True,
-        angle_bias=np.radians(2.0),
-        p_missed=0.1,
-        clutter_per_scan=1.0,
-        duration_s=args.duration,
-        seed=5,
-        sensors=SENSORS_10,
-    )
+    sim = scenario(args.targets, args.duration)
     sc = sim.scenario
     sizes = {
         "sensors": len(SENSORS_10),
