@@ -27,7 +27,7 @@ STAGES = (
     "name_by_references",
     "make_units",
     "join_units",
-    "_single_plots_stage",
+    "single_plots_stage",
     "outlier_stage",
 )
 

@@ -93,7 +93,7 @@ def _checked_inputs(plots, sensors, navigation, platforms, references, targets, 
     return problem, given, track_id, refs, anchors
 
 
-def _single_plots_stage(
+def single_plots_stage(
     reg: Registrar,
     problem: FleetProblem,
     refs: References,
@@ -174,7 +174,7 @@ def associate_and_register(
         state, units, join_passes, joined_ok = join_units(reg, units, base, options, bar, state)
         labels = np.where(base != "", base, state.label).astype(str)
         progress_status(bar, "single plots")
-        labels, single = _single_plots_stage(
+        labels, single = single_plots_stage(
             reg, problem, refs, labels, (labels == "") & ~state.outlier, options
         )
         outliers = outlier_stage(reg, labels, given, options) | state.outlier
