@@ -1,10 +1,10 @@
 """Every function the runtime may call (the list ``python -m derive`` emits), with the constants
 and variant names recorded beside them in the manifest."""
 
-from . import attitude, eccentric, fleet, geodesy, kalman, landing, polar, pseudo_measurement
+from . import attitude, eccentric, fleet, geodesy, kalman, landing, polar, pseudo_measurement, tracking
 from .constants import CONSTANTS
 
-MODULES = [geodesy, attitude, pseudo_measurement, polar, kalman, landing, fleet, eccentric]
+MODULES = [geodesy, attitude, pseudo_measurement, polar, kalman, landing, fleet, eccentric, tracking]
 
 #: Variant names functions are emitted for, by kind, in derive's order (recorded in the manifest).
 VARIANTS = {

@@ -42,6 +42,14 @@ __all__ = [
     "cartesian2polar2",
     "Cartesian2polar3Outputs",
     "cartesian2polar3",
+    "CvGateOutputs",
+    "cv_gate",
+    "CvPredictOutputs",
+    "cv_predict",
+    "CvStartOutputs",
+    "cv_start",
+    "CvUpdateOutputs",
+    "cv_update",
     "Deck2enuOutputs",
     "deck2enu",
     "Deck2enuJacobiansOutputs",
@@ -510,6 +518,109 @@ def cartesian2polar3(*, p: ArrayLike) -> Cartesian2polar3Outputs:
     """
     outputs = get("cartesian2polar3")(p)
     return Cartesian2polar3Outputs(*outputs)
+
+
+class CvGateOutputs(NamedTuple):
+    """The outputs of :func:`cv_gate`, by name."""
+
+    d2: Array
+    """(N,) [1]"""
+    logdet: Array
+    """(N,) [log m^6]"""
+
+
+def cv_gate(*, x_pred: ArrayLike, P_pred: ArrayLike, z: ArrayLike, R: ArrayLike) -> CvGateOutputs:
+    """A plot z (m, ECEF) of covariance R (m^2) against a constant-velocity prediction: squared Mahalanobis
+    distance d2 of z - x-_p in S = P-_pp + R, and logdet = log det S (log m^6).
+
+    Inputs, each at this shape or with one more leading axis of N points:
+        x_pred: (6,) [m, m/s (ECEF position, velocity)]
+        P_pred: (6, 6) [m^2, m^2/s, m^2/s^2]
+        z: (3,) [m (ECEF)]
+        R: (3, 3) [m^2]
+    Outputs, over the N points (N = 1 when no input has the leading axis):
+        d2: (N,) [1]
+        logdet: (N,) [log m^6]
+    """
+    outputs = get("cv_gate")(x_pred, P_pred, z, R)
+    return CvGateOutputs(*outputs)
+
+
+class CvPredictOutputs(NamedTuple):
+    """The outputs of :func:`cv_predict`, by name."""
+
+    x_pred: Array
+    """(N, 6) [m, m/s (ECEF position, velocity)]"""
+    P_pred: Array
+    """(N, 6, 6) [m^2, m^2/s, m^2/s^2]"""
+
+
+def cv_predict(*, x: ArrayLike, P: ArrayLike, dt: ArrayLike, accel_sigma: ArrayLike) -> CvPredictOutputs:
+    """Constant-velocity prediction of state x (ECEF m, m/s) and covariance P by dt (s) with white
+    acceleration noise of spectral density accel_sigma^2 (m^2/s^3): x- = F x, P- = F P F^T + Q.
+
+    Inputs, each at this shape or with one more leading axis of N points:
+        x: (6,) [m, m/s (ECEF position, velocity)]
+        P: (6, 6) [m^2, m^2/s, m^2/s^2]
+        dt: () [s]
+        accel_sigma: () [m/s^1.5]
+    Outputs, over the N points (N = 1 when no input has the leading axis):
+        x_pred: (N, 6) [m, m/s (ECEF position, velocity)]
+        P_pred: (N, 6, 6) [m^2, m^2/s, m^2/s^2]
+    """
+    outputs = get("cv_predict")(x, P, dt, accel_sigma)
+    return CvPredictOutputs(*outputs)
+
+
+class CvStartOutputs(NamedTuple):
+    """The outputs of :func:`cv_start`, by name."""
+
+    x: Array
+    """(N, 6) [m, m/s (ECEF position, velocity)]"""
+    P: Array
+    """(N, 6, 6) [m^2, m^2/s, m^2/s^2]"""
+
+
+def cv_start(*, z: ArrayLike, R: ArrayLike, max_speed: ArrayLike) -> CvStartOutputs:
+    """Constant-velocity track opened at a plot z (m, ECEF) of covariance R (m^2): x = [z, 0], P = diag(R,
+    max_speed^2 I) (max_speed m/s).
+
+    Inputs, each at this shape or with one more leading axis of N points:
+        z: (3,) [m (ECEF)]
+        R: (3, 3) [m^2]
+        max_speed: () [m/s]
+    Outputs, over the N points (N = 1 when no input has the leading axis):
+        x: (N, 6) [m, m/s (ECEF position, velocity)]
+        P: (N, 6, 6) [m^2, m^2/s, m^2/s^2]
+    """
+    outputs = get("cv_start")(z, R, max_speed)
+    return CvStartOutputs(*outputs)
+
+
+class CvUpdateOutputs(NamedTuple):
+    """The outputs of :func:`cv_update`, by name."""
+
+    x: Array
+    """(N, 6) [m, m/s (ECEF position, velocity)]"""
+    P: Array
+    """(N, 6, 6) [m^2, m^2/s, m^2/s^2]"""
+
+
+def cv_update(*, x_pred: ArrayLike, P_pred: ArrayLike, z: ArrayLike, R: ArrayLike) -> CvUpdateOutputs:
+    """Kalman update of a constant-velocity prediction (x-, P-) with a plot z (m, ECEF) of covariance R (m^2):
+    K = P- H^T S^-1, x = x- + K (z - x-_p), P = sym(P- - K H P-).
+
+    Inputs, each at this shape or with one more leading axis of N points:
+        x_pred: (6,) [m, m/s (ECEF position, velocity)]
+        P_pred: (6, 6) [m^2, m^2/s, m^2/s^2]
+        z: (3,) [m (ECEF)]
+        R: (3, 3) [m^2]
+    Outputs, over the N points (N = 1 when no input has the leading axis):
+        x: (N, 6) [m, m/s (ECEF position, velocity)]
+        P: (N, 6, 6) [m^2, m^2/s, m^2/s^2]
+    """
+    outputs = get("cv_update")(x_pred, P_pred, z, R)
+    return CvUpdateOutputs(*outputs)
 
 
 class Deck2enuOutputs(NamedTuple):

@@ -18,7 +18,7 @@ def test_every_runtime_package_is_listed_in_pyproject():
     assert cfg["package-dir"]["registration._generated"] == "generated"
     data = cfg["package-data"]["registration._generated"]
     assert {"*.c", "*.casadi", "manifest.json"} <= set(data)
-    assert "_batch.c" in cfg["package-data"]["registration._codegen"]
+    assert {"_batch.c", "_tracker.c"} <= set(cfg["package-data"]["registration._codegen"])
 
 
 def test_casadi_and_sympy_are_pinned_exactly():

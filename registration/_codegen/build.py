@@ -17,6 +17,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from collections.abc import Sequence
 from concurrent.futures import ThreadPoolExecutor, as_completed
 from pathlib import Path
 
@@ -87,10 +88,10 @@ def _compile_all(cc: str, flags: list[str], jobs: list[tuple[Path, Path, int]]) 
 
 
 def build_library(
-    cc: str, driver: Path, sources: list[tuple[str, bytes]], lib_path: Path, flags: list[str]
+    cc: str, drivers: Sequence[Path], sources: list[tuple[str, bytes]], lib_path: Path, flags: list[str]
 ) -> None:
-    """Compile ``driver`` and ``sources`` ((file name, bytes) pairs) with ``flags`` (``-shared``
-    is left for the link), link them into ``lib_path`` (published atomically: concurrent builders
+    """Compile the ``drivers`` (C files) and ``sources`` ((file name, bytes) pairs) with ``flags``
+    (``-shared`` is left for the link), link them into ``lib_path`` (published atomically: concurrent builders
     never see half a file); ArtifactError on failure. Says so on standard error before and after."""
     lib_path.parent.mkdir(parents=True, exist_ok=True)
     print(BUILD_MESSAGE.format(folder=lib_path.parent.parent), file=sys.stderr, flush=True)
@@ -98,7 +99,7 @@ def build_library(
     flags = [f for f in flags if f != "-shared"]
     with tempfile.TemporaryDirectory(dir=lib_path.parent) as tmp_name:
         tmp = Path(tmp_name)
-        jobs = [(driver, tmp / "0.o", driver.stat().st_size)]
+        jobs = [(driver, tmp / f"driver{i}.o", driver.stat().st_size) for i, driver in enumerate(drivers)]
         for i, (fname, data) in enumerate(sources, start=1):
             (tmp / fname).write_bytes(data)
             jobs.append((tmp / fname, tmp / f"{i}.o", len(data)))
@@ -106,7 +107,7 @@ def build_library(
         if failed:
             raise ArtifactError(f"C compilation failed: {failed[0].stderr.strip()[:2000]}")
         out = tmp / "lib.so"
-        objects = [str(obj) for _src, obj, _size in jobs]  # link order: the driver, then the sources as given
+        objects = [str(obj) for _src, obj, _size in jobs]  # link order: drivers, then sources
         proc = subprocess.run(
             [cc, "-shared", "-o", str(out), *objects, "-lm"], capture_output=True, text=True
         )

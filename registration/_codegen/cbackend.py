@@ -1,7 +1,8 @@
 """The compiled C backend: build the shipped C sources once into a cached shared library and
 call the generated functions through ctypes with numpy buffers passed by pointer.
 
-The library holds every generated function plus the batch and scan drivers of ``_batch.c``. It
+The library holds every generated function plus the hand-written drivers (:data:`DRIVERS`): the
+batch and scan loops of ``_batch.c`` and the association's tracker loop of ``_tracker.c``. It
 is built once per source hash in a per-user cache (``$REGISTRATION_CACHE_DIR``, else
 ``$XDG_CACHE_HOME`` or ``~/.cache``, subfolder ``sensor-registration``), keyed by the sources,
 the driver, the compiler, the flags and the platform; the build (:mod:`registration._codegen.build`)
@@ -39,7 +40,7 @@ from registration._codegen.build import build_library
 __all__ = [
     "BUILD_MODES",
     "CFLAGS",
-    "DRIVER",
+    "DRIVERS",
     "NATIVE_CFLAGS",
     "NATIVE_ENV",
     "NATIVE_RTOL",
@@ -91,8 +92,9 @@ _MODE_OF_ENV = {
 NATIVE_RTOL = 1e-10
 #: The environment variable that selects the build.
 NATIVE_ENV = "REGISTRATION_NATIVE"
-#: The hand-written batch/scan driver compiled into the library.
-DRIVER = Path(__file__).with_name("_batch.c")
+#: The hand-written drivers compiled into the library: the batch, scan and step loops, and the
+#: association's tracker loop (:mod:`registration._codegen.ctracker`).
+DRIVERS = (Path(__file__).with_name("_batch.c"), Path(__file__).with_name("_tracker.c"))
 LIBRARY_NAME = "libregistration_generated.so"
 
 
@@ -150,11 +152,12 @@ def cache_key(
     cc: str, sources: list[tuple[str, bytes]], flags: list[str] | None = None, target: str = ""
 ) -> str:
     """Key of the library built by ``cc`` with ``flags`` (default :data:`CFLAGS`) from ``sources``
-    ((file name, bytes) pairs) and the driver; ``target`` what ``-march=native`` means, if used."""
+    ((file name, bytes) pairs) and the drivers; ``target`` what ``-march=native`` means, if used."""
     key = hashlib.sha256()
     for fname, data in sources:
         key.update(fname.encode() + data)
-    key.update(DRIVER.read_bytes())
+    for driver in DRIVERS:
+        key.update(driver.read_bytes())
     key.update(
         " ".join([cc, *(CFLAGS if flags is None else flags), platform.machine(), sys.platform]).encode()
     )
@@ -183,12 +186,14 @@ def _library_of(names: tuple[str, ...], mode: str) -> ctypes.CDLL:
     sources = [(f"{n}.c", read_artifact(n, "c")) for n in names]
     lib_path = cache_root() / cache_key(cc, sources, flags, target) / LIBRARY_NAME
     if not lib_path.exists():
-        build_library(cc, DRIVER, sources, lib_path, flags)
+        build_library(cc, DRIVERS, sources, lib_path, flags)
     lib = ctypes.CDLL(str(lib_path))
     lib.registration_batch.restype = ctypes.c_int
     lib.registration_scan.restype = ctypes.c_longlong
     lib.registration_scan_runs.restype = ctypes.c_longlong
     lib.registration_step.restype = ctypes.c_int
+    lib.registration_tracks.restype = ctypes.c_int
+    lib.registration_assign.restype = ctypes.c_int
     return lib
 
 

@@ -36,7 +36,7 @@ def cc():
 def _build(cc, tmp_path, monkeypatch, stderr, sources=SOURCES):
     monkeypatch.setattr("sys.stderr", stderr)
     lib = tmp_path / "cache" / "key" / "lib.so"
-    build.build_library(cc, cbackend.DRIVER, sources, lib, cbackend.cflags())
+    build.build_library(cc, cbackend.DRIVERS, sources, lib, cbackend.cflags())
     return lib
 
 
@@ -62,7 +62,7 @@ def test_a_terminal_gets_a_progress_bar_over_the_files(cc, tmp_path, monkeypatch
     _build(cc, tmp_path, monkeypatch, terminal)
     text = terminal.getvalue()
     assert text.startswith("registration: compiling the generated C code once")
-    assert "\rcompiling 0/3 files:   0%|" in text  # drawn at once (later updates are throttled to 0.1 s)
+    assert "\rcompiling 0/4 files:   0%|" in text  # drawn at once (later updates are throttled to 0.1 s)
     assert (
         text.splitlines()[-1].split("\r")[-1].startswith("registration: compiled in ")
     )  # the bar cleared first
@@ -80,7 +80,7 @@ def test_sources_are_compiled_one_by_one_largest_first_then_linked(cc, tmp_path,
     monkeypatch.setattr(build, "build_workers", lambda: 1)  # one at a time: the order is the submission order
     _build(cc, tmp_path, monkeypatch, io.StringIO())
     compiled = [argv[argv.index("-c") + 1].rsplit("/", 1)[-1] for argv in calls if "-c" in argv]
-    assert compiled == ["_batch.c", "larger.c", "tiny.c"]  # by size: the driver is the largest here
+    assert compiled == ["_tracker.c", "_batch.c", "larger.c", "tiny.c"]  # by size, the drivers largest here
     assert "-shared" in calls[-1] and "-c" not in calls[-1]
 
 

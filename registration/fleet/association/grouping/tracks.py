@@ -19,14 +19,17 @@ from __future__ import annotations
 
 import numpy as np
 
+from registration import _codegen
+from registration._generated import api as generated
 from registration.core.distributions import chi2_ppf
 from registration.fleet.association.grouping.geometry import Assigner, PlotGeometry
 
 __all__ = ["sensor_tracks", "track_breaks"]
 
 
-def _scan_steps(time: np.ndarray, sensor: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
-    """Per step k: (plot indices, their sensor) of scan k of every sensor, sorted by sensor."""
+def _scan_steps(time: np.ndarray, sensor: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(plot indices, bounds): step k, ``indices[bounds[k]:bounds[k + 1]]``, holds scan k of every
+    sensor, sorted by sensor."""
     order = np.lexsort((time, sensor))
     s, t = sensor[order], time[order]
     new_scan = np.ones(order.size, dtype=bool)
@@ -39,54 +42,39 @@ def _scan_steps(time: np.ndarray, sensor: np.ndarray) -> list[tuple[np.ndarray, 
     k = scan_id - first_scan  # scan number within the sensor
     by_step = np.lexsort((s, k))
     idx, ks = order[by_step], k[by_step]
-    bounds = np.flatnonzero(np.r_[True, ks[1:] != ks[:-1], True])
-    return [(idx[a:b], sensor[idx[a:b]]) for a, b in zip(bounds[:-1], bounds[1:])]
+    return idx, np.flatnonzero(np.r_[True, ks[1:] != ks[:-1], True])
 
 
 def _predict(x: np.ndarray, P: np.ndarray, dt: np.ndarray, q: float) -> tuple[np.ndarray, np.ndarray]:
-    """Constant-velocity prediction of states (K, 6) and covariances (K, 6, 6, symmetric) by dt (K,) s
-    (F P F^T + Q written out by blocks: position, velocity)."""
-    d = dt[:, None, None]
-    eye = np.eye(3)
-    P11, P12, P22 = P[:, :3, :3], P[:, :3, 3:], P[:, 3:, 3:]
-    out = np.empty_like(P)
-    out[:, :3, :3] = P11 + d * (P12 + np.swapaxes(P12, 1, 2)) + d * d * P22 + (q * q * d**3 / 3) * eye
-    out[:, :3, 3:] = P12 + d * P22 + (q * q * d * d / 2) * eye
-    out[:, 3:, :3] = np.swapaxes(out[:, :3, 3:], 1, 2)
-    out[:, 3:, 3:] = P22 + (q * q * d) * eye
-    x = x.copy()
-    x[:, :3] += dt[:, None] * x[:, 3:]
-    return x, out
+    """Constant-velocity prediction of states (K, 6) and covariances (K, 6, 6) by dt (K,) s
+    (generated ``cv_predict``)."""
+    if x.shape[0] == 0:
+        return x.copy(), P.copy()
+    return generated.cv_predict(x=x, P=P, dt=dt, accel_sigma=q)
 
 
-def _cholesky3(S: np.ndarray) -> tuple[np.ndarray, ...]:
-    """Cholesky factors (l00, l10, l20, l11, l21, l22), each (K,), of symmetric positive definite
-    3x3 matrices S (K, 3, 3), written out (batched numpy linalg costs more for 3x3)."""
-    l00 = np.sqrt(S[:, 0, 0])
-    l10, l20 = S[:, 1, 0] / l00, S[:, 2, 0] / l00
-    l11 = np.sqrt(S[:, 1, 1] - l10 * l10)
-    l21 = (S[:, 2, 1] - l20 * l10) / l11
-    l22 = np.sqrt(S[:, 2, 2] - l20 * l20 - l21 * l21)
-    return l00, l10, l20, l11, l21, l22
+def _gate(xp: np.ndarray, Pp: np.ndarray, z: np.ndarray, R: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(d2, log det S) (K,) of plots z (K, 3) m, R (K, 3, 3) m^2 against predictions (generated
+    ``cv_gate``)."""
+    if z.shape[0] == 0:
+        return np.zeros(0), np.zeros(0)
+    return generated.cv_gate(x_pred=xp, P_pred=Pp, z=z, R=R)
 
 
-def _forward3(L: tuple[np.ndarray, ...], b: np.ndarray) -> np.ndarray:
-    """y = L^-1 b for the factors L of :func:`_cholesky3` and b (K, 3) or (K, 3, m)."""
-    l00, l10, l20, l11, l21, l22 = (v.reshape(v.shape + (1,) * (b.ndim - 2)) for v in L)
-    y0 = b[:, 0] / l00
-    y1 = (b[:, 1] - l10 * y0) / l11
-    y2 = (b[:, 2] - l20 * y0 - l21 * y1) / l22
-    return np.stack([y0, y1, y2], axis=1)
+def _filtered(xp: np.ndarray, Pp: np.ndarray, z: np.ndarray, R: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Kalman update of predictions (K, 6), (K, 6, 6) with plots z (K, 3) m, R (K, 3, 3) m^2
+    (generated ``cv_update``)."""
+    if z.shape[0] == 0:
+        return xp.copy(), Pp.copy()
+    return generated.cv_update(x_pred=xp, P_pred=Pp, z=z, R=R)
 
 
-def _solve3(L: tuple[np.ndarray, ...], b: np.ndarray) -> np.ndarray:
-    """S^-1 b for S = L L^T (factors of :func:`_cholesky3`) and b (K, 3, m)."""
-    y = _forward3(L, b)
-    l00, l10, l20, l11, l21, l22 = (v[:, None] for v in L)
-    x2 = y[:, 2] / l22
-    x1 = (y[:, 1] - l21 * x2) / l11
-    x0 = (y[:, 0] - l10 * x1 - l20 * x2) / l00
-    return np.stack([x0, x1, x2], axis=1)
+def _started(z: np.ndarray, R: np.ndarray, max_speed: float) -> tuple[np.ndarray, np.ndarray]:
+    """States (K, 6) and covariances (K, 6, 6) of tracks opened at plots z (K, 3) m, R (K, 3, 3)
+    m^2 (generated ``cv_start``)."""
+    if z.shape[0] == 0:
+        return np.zeros((0, 6)), np.zeros((0, 6, 6))
+    return generated.cv_start(z=z, R=R, max_speed=max_speed)
 
 
 class _Tracks:
@@ -116,13 +104,11 @@ class _Tracks:
             return np.zeros(0, dtype=np.int64)
         ids = self.next_id + np.arange(n)
         self.next_id += n
-        P = np.zeros((n, 6, 6))
-        P[:, :3, :3] = R
-        P[:, 3:, 3:] = max_speed**2 * np.eye(3)
+        x, P = _started(z, R, max_speed)
         # np.concatenate, not np.r_ (ten times its cost, once a scan step)
         self.sensor = np.concatenate([self.sensor, sensor])
         self.id = np.concatenate([self.id, ids])
-        self.x = np.concatenate([self.x, np.concatenate([z, np.zeros((n, 3))], axis=1)])
+        self.x = np.concatenate([self.x, x])
         self.P = np.concatenate([self.P, P])
         self.t = np.concatenate([self.t, t])
         self.missed = np.concatenate([self.missed, np.zeros(n, dtype=np.int64)])
@@ -156,10 +142,7 @@ def _match_scan(
     ki, pj, v = ki[near], pj[near], v[near]
     if ki.size == 0:
         return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
-    L = _cholesky3(np.ascontiguousarray(Pp[:, :3, :3])[ki] + cov[pj])
-    y = _forward3(L, v)
-    d2 = np.einsum("ki,ki->k", y, y)
-    logdet = 2.0 * np.log(L[0] * L[3] * L[5])
+    d2, logdet = _gate(xp[ki], Pp[ki], p[pj], cov[pj])
     best = np.full(live.size, np.inf)
     np.minimum.at(best, ki, logdet)
     no_match = 0.5 * (gate + best)
@@ -183,13 +166,7 @@ def _match_scan(
 
 def _update(tracks: _Tracks, ti: np.ndarray, xp, Pp, z: np.ndarray, R: np.ndarray, t: np.ndarray) -> None:
     """Kalman update of tracks ``ti`` (their predictions xp, Pp) with plot positions z (m), R (m^2)."""
-    L = _cholesky3(Pp[:, :3, :3] + R)
-    Kt = _solve3(L, Pp[:, :3, :])  # K^T = S^-1 H P (3, 6)
-    K = np.swapaxes(Kt, 1, 2)
-    x = xp + (K @ (z - xp[:, :3])[..., None])[..., 0]
-    P = Pp - K @ Pp[:, :3, :]
-    tracks.x[ti] = x
-    tracks.P[ti] = 0.5 * (P + np.swapaxes(P, 1, 2))
+    tracks.x[ti], tracks.P[ti] = _filtered(xp, Pp, z, R)
     tracks.t[ti] = t
     tracks.missed[ti] = 0
 
@@ -205,37 +182,71 @@ def sensor_tracks(
     gate_probability: float,
     max_missed: int,
     min_plots: int,
+    compiled: bool | None = None,
 ) -> np.ndarray:
     """(N,) track id of each plot (ids unique over all sensors), -1 for plots in no track of at
-    least ``min_plots`` plots (clutter). ``time`` (N,) s, ``sensor`` (N,) sensor index."""
+    least ``min_plots`` plots (clutter). ``time`` (N,) s, ``sensor`` (N,) sensor index.
+
+    ``compiled``: run the loop in compiled code (``registration._codegen.compiled_tracks``: the
+    same steps, generated functions and assignment as the numpy loop here, its reference) or in
+    numpy; None (default): compiled on the C backend. Its assignments count in ``assigner``."""
     gate = float(chi2_ppf(gate_probability, 3))
+    idx, bounds = _scan_steps(time, sensor)
+    if compiled is None:
+        compiled = _codegen.backend() == "c"
+    if compiled:
+        out = _codegen.compiled_tracks(
+            bounds,
+            idx,
+            geom.p_ecef,
+            geom.cov,
+            time,
+            sensor,
+            gate=gate,
+            accel_sigma=accel_sigma,
+            max_speed=max_speed,
+            max_missed=max_missed,
+        )
+        assigner.seconds += out.seconds_assignment
+        assigner.calls += out.assignments
+        track = out.track
+    else:
+        options = (gate, accel_sigma, max_speed, max_missed)
+        track = _numpy_tracks(idx, bounds, time, sensor, geom, assigner, *options)
+    ids, counts = np.unique(track, return_counts=True)
+    track[np.isin(track, ids[counts < min_plots])] = -1
+    return track
+
+
+def _numpy_tracks(idx, bounds, time, sensor, geom, assigner, gate, accel_sigma, max_speed, max_missed):
+    """The tracker's loop in numpy, step by step (the reference of the compiled loop)."""
     track = np.full(time.size, -1, dtype=np.int64)
     tracks = _Tracks()
     n_sensors = int(sensor.max()) + 1
     scan_time = np.zeros(n_sensors)
     trace = np.trace(geom.cov, axis1=1, axis2=2)
-    for idx, sen in _scan_steps(time, sensor):
+    for a, b in zip(bounds[:-1], bounds[1:]):
+        step = idx[a:b]
+        sen = sensor[step]
         stepping = np.zeros(n_sensors, dtype=bool)
         stepping[sen] = True
         live = np.flatnonzero(stepping[tracks.sensor])
-        scan_time[sen] = time[idx]
+        scan_time[sen] = time[step]
         dt = scan_time[tracks.sensor[live]] - tracks.t[live]
         xp, Pp = _predict(tracks.x[live], tracks.P[live], dt, accel_sigma)
-        p, cov = geom.p_ecef[idx], geom.cov[idx]
-        ti, pj = _match_scan(tracks, live, xp, Pp, sen, p, cov, trace[idx], gate, assigner)
+        p, cov = geom.p_ecef[step], geom.cov[step]
+        ti, pj = _match_scan(tracks, live, xp, Pp, sen, p, cov, trace[step], gate, assigner)
         missed = np.ones(live.size, dtype=bool)
-        fresh = np.ones(idx.size, dtype=bool)
+        fresh = np.ones(step.size, dtype=bool)
         if ti.size:
-            a = np.searchsorted(live, ti)
-            _update(tracks, ti, xp[a], Pp[a], p[pj], cov[pj], time[idx[pj]])
-            track[idx[pj]] = tracks.id[ti]
-            missed[a] = False
+            at = np.searchsorted(live, ti)
+            _update(tracks, ti, xp[at], Pp[at], p[pj], cov[pj], time[step[pj]])
+            track[step[pj]] = tracks.id[ti]
+            missed[at] = False
             fresh[pj] = False
         tracks.missed[live[missed]] += 1
-        track[idx[fresh]] = tracks.open(sen[fresh], p[fresh], cov[fresh], time[idx[fresh]], max_speed)
+        track[step[fresh]] = tracks.open(sen[fresh], p[fresh], cov[fresh], time[step[fresh]], max_speed)
         tracks.keep(tracks.missed <= max_missed)
-    ids, counts = np.unique(track, return_counts=True)
-    track[np.isin(track, ids[counts < min_plots])] = -1
     return track
 
 
@@ -273,22 +284,12 @@ def track_breaks(
         restart = np.ones(at.size, dtype=bool) if k[at[0]] == 0 else np.zeros(at.size, dtype=bool)
         if k[at[0]] > 0:
             xp, Pp = _predict(x[tr], P[tr], time[plot] - t_last[tr], accel_sigma)
-            L = _cholesky3(Pp[:, :3, :3] + cov)
-            y = _forward3(L, p - xp[:, :3])
-            d2 = np.einsum("ki,ki->k", y, y)
+            d2, _logdet = _gate(xp, Pp, p, cov)
             restart = d2 > gate
             breaks[at[restart]], dist[at] = True, d2
             ok = ~restart
-            Kt = _solve3(tuple(v[ok] for v in L), Pp[ok][:, :3, :])
-            K = np.swapaxes(Kt, 1, 2)
-            x[tr[ok]] = xp[ok] + (K @ (p[ok] - xp[ok, :3])[..., None])[..., 0]
-            Pn = Pp[ok] - K @ Pp[ok][:, :3, :]
-            P[tr[ok]] = 0.5 * (Pn + np.swapaxes(Pn, 1, 2))
-        fresh = tr[restart]
-        x[fresh] = np.concatenate([p[restart], np.zeros((fresh.size, 3))], axis=1)
-        P[fresh] = 0.0
-        P[fresh, :3, :3] = cov[restart]
-        P[fresh, 3:, 3:] = max_speed**2 * np.eye(3)
+            x[tr[ok]], P[tr[ok]] = _filtered(xp[ok], Pp[ok], p[ok], cov[ok])
+        x[tr[restart]], P[tr[restart]] = _started(p[restart], cov[restart], max_speed)
         t_last[tr] = time[plot]
     out_b, out_d = np.zeros(order.size, dtype=bool), np.zeros(order.size)
     out_b[order], out_d[order] = breaks, dist
