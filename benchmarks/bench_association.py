@@ -16,10 +16,11 @@ end (checks, tracks per sensor, association passes, the solves between them and 
 and the baseline :func:`build_problem` + :func:`solve_batch` on the real plots with their true
 ids, interleaved (``--repeats`` rounds; the ratio is the median of the rounds' ratios). Printed
 and written to benchmarks/results/association.json: the times, the share of the association's
-time spent in ``linear_sum_assignment``, the ratio of the two times, the association's scores
-against the truth and the largest difference of the two estimates in units of the baseline's
-sigma; and, from one more run, the association's time by stage (``association_stages.py``). The
-machine's load average is printed too (other work slows both).
+time spent in the assignments (``linear_sum_assignment``'s and the compiled tracker's own), the
+ratio of the two times, the association's scores against the truth and the largest difference of
+the two estimates in units of the baseline's sigma; and, from one more run, the association's time
+by stage (``association_stages.py``). The machine's load average is printed too (other work slows
+both).
 """
 
 from __future__ import annotations

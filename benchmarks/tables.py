@@ -89,8 +89,8 @@ def association(doc: dict) -> str:
         f"{s['duration_s']:g} s without target ids, with clutter ({cnt(s['plots'])} plots): "
         f"{num(a['median'])} s (median of {s['repeats']} interleaved rounds; rounds {span(a['rounds'])} s; "
         f"aim ≤ 10 s), {num(f['ratio_over_true_ids'])}× the registration of the same plots with their "
-        f"true ids ({num(ids['median'])} s; the median of the rounds' ratios); `linear_sum_assignment` "
-        f"takes {100 * f['assignment_share']:.1f} % of it, the registration about "
+        f"true ids ({num(ids['median'])} s; the median of the rounds' ratios); the assignments "
+        f"take {100 * f['assignment_share']:.1f} % of it, the registration about "
         f"{100 * f['registration_share']:.0f} %{_cpu(f)} ({measured(doc)})"
     )
 

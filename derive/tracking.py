@@ -158,7 +158,7 @@ def specs() -> list[CasadiSpec]:
                 STATE,
                 COVARIANCE,
                 CasadiPort("dt", scalar, "s"),
-                CasadiPort("accel_sigma", scalar, "m/s^1.5"),
+                CasadiPort("accel_sigma", scalar, "m/s^2/sqrt(Hz)"),
             ),
             outputs=(pred, plot),
             builder=_predict,

@@ -563,7 +563,7 @@ def cv_predict(*, x: ArrayLike, P: ArrayLike, dt: ArrayLike, accel_sigma: ArrayL
         x: (6,) [m, m/s (ECEF position, velocity)]
         P: (6, 6) [m^2, m^2/s, m^2/s^2]
         dt: () [s]
-        accel_sigma: () [m/s^1.5]
+        accel_sigma: () [m/s^2/sqrt(Hz)]
     Outputs, over the N points (N = 1 when no input has the leading axis):
         x_pred: (N, 6) [m, m/s (ECEF position, velocity)]
         P_pred: (N, 6, 6) [m^2, m^2/s, m^2/s^2]

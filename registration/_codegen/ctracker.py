@@ -54,7 +54,7 @@ def compiled_tracks(
     """Run the tracker over the steps ``step_plots[bounds[s]:bounds[s + 1]]`` (plot indices, each
     step sorted by sensor) of plots at ``p_ecef`` (N, 3) m with covariances ``cov`` (N, 3, 3) m^2,
     times ``time`` (N,) s and sensor indices ``sensor`` (N,); ``gate`` the chi-square bound on the
-    squared distance, ``accel_sigma`` m/s^1.5, ``max_speed`` m/s, ``max_missed`` scans.
+    squared distance, ``accel_sigma`` m/s^2/sqrt(Hz), ``max_speed`` m/s, ``max_missed`` scans.
     RuntimeError if the loop fails (out of memory, or a generated function's error flag)."""
     lib = library()
     functions = manifest()["functions"]
