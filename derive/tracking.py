@@ -80,15 +80,21 @@ def _backward(L: ca.SX, y: ca.SX) -> ca.SX:
     return x
 
 
+def _function(name: str, inputs: list, outputs: list, names_in: list, names_out: list) -> ca.Function:
+    """The CasADi function with dense outputs: the runtime reads every output as a dense column-major
+    block, and an entry left structurally zero (an eye assigned into a block) would not be written."""
+    return ca.Function(name, inputs, [ca.densify(o) for o in outputs], names_in, names_out)
+
+
 def _start() -> ca.Function:
     z, R = ca.SX.sym("z", 3, 1), ca.SX.sym("R", 3, 3)
     max_speed = ca.SX.sym("max_speed")
     x = ca.vertcat(z, ca.SX.zeros(3, 1))
     P = ca.SX.zeros(6, 6)
     P[:3, :3] = _mirror_upper(R)
-    for i in range(3):  # by entry: a sparse eye assigned into a block lands on the wrong entries
+    for i in range(3):
         P[3 + i, 3 + i] = max_speed**2
-    return ca.Function("cv_start", [z, R, max_speed], [x, P], ["z", "R", "max_speed"], ["x", "P"])
+    return _function("cv_start", [z, R, max_speed], [x, P], ["z", "R", "max_speed"], ["x", "P"])
 
 
 def _predict() -> ca.Function:
@@ -104,7 +110,7 @@ def _predict() -> ca.Function:
     Q[3:, 3:] = q2 * dt * ca.SX.eye(3)
     P_sym = _mirror_upper(P)
     P_pred = _mirror_upper(F @ P_sym @ F.T + Q)
-    return ca.Function(
+    return _function(
         "cv_predict", [x, P, dt, q], [F @ x, P_pred], ["x", "P", "dt", "accel_sigma"], ["x_pred", "P_pred"]
     )
 
@@ -122,9 +128,7 @@ def _gate() -> ca.Function:
     y = _forward(L, v)
     d2 = ca.dot(y, y)
     logdet = 2 * ca.log(L[0, 0] * L[1, 1] * L[2, 2])
-    return ca.Function(
-        "cv_gate", [x, P, z, R], [d2, logdet], ["x_pred", "P_pred", "z", "R"], ["d2", "logdet"]
-    )
+    return _function("cv_gate", [x, P, z, R], [d2, logdet], ["x_pred", "P_pred", "z", "R"], ["d2", "logdet"])
 
 
 def _update() -> ca.Function:
@@ -134,7 +138,7 @@ def _update() -> ca.Function:
     x_new = x + Kt.T @ v
     P_new = P_sym - Kt.T @ P_sym[:3, :]
     P_new = 0.5 * (P_new + P_new.T)
-    return ca.Function("cv_update", [x, P, z, R], [x_new, P_new], ["x_pred", "P_pred", "z", "R"], ["x", "P"])
+    return _function("cv_update", [x, P, z, R], [x_new, P_new], ["x_pred", "P_pred", "z", "R"], ["x", "P"])
 
 
 def specs() -> list[CasadiSpec]:

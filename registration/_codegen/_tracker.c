@@ -21,11 +21,21 @@
  *    step order); tracks that missed more than max_missed scans in a row are closed, the others
  *    keep their order.
  *
- * Returns 0, -1 if memory ran out, or 1 + the index of the generated function whose flag was
- * non-zero (0 start, 1 predict, 2 gate, 3 update).
+ * A pair whose d2 or log det is not finite (a covariance that is not positive definite) is no pair.
+ *
+ * Returns 0, -1 if memory ran out, -2 if an assignment had no finite cost left (cannot happen with
+ * the pairs kept), or 1 + the index of the generated function whose flag was non-zero (0 start,
+ * 1 predict, 2 gate, 3 update).
  */
 #include <math.h>
 #include <stdlib.h>
+/* No fused multiply-add in this file: the bound and the costs must round as the numpy reference
+ * does (the generated functions are the same compiled code in both). */
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#elif defined(__GNUC__)
+#pragma GCC optimize("fp-contract=off")
+#endif
 #include <string.h>
 #include <time.h>
 
@@ -82,12 +92,14 @@ static int call(tracker_filter *F, int which, const double *in0, const double *i
     return F->f[which](F->arg, F->res, F->iw, F->w, 0) ? which + 1 : 0;
 }
 
-/* The rectangular assignment (nr <= nc) of cost (row-major nr x nc, finite): col4row (nr). Work:
- * u (nr), v, spc, (nc) doubles; path, row4col, remaining (nc) and SR (nr), SC (nc) chars. */
-static void assign(long long nr, long long nc, const double *cost, long long *col4row, double *u,
+/* The rectangular assignment (nr <= nc) of cost (row-major nr x nc, finite): col4row (nr); returns 0,
+ * or -2 when a row finds no finite column (scipy's "infeasible"). Work: u (nr), v, spc, (nc)
+ * doubles; path, row4col, remaining (nc) and SR (nr), SC (nc) chars. */
+static int assign(long long nr, long long nc, const double *cost, long long *col4row, double *u,
                    double *v, double *spc, long long *path, long long *row4col, long long *remaining,
                    char *SR, char *SC)
 {
+    if (nr <= 0 || nc <= 0) return 0;
     for (long long i = 0; i < nr; ++i) { u[i] = 0.0; col4row[i] = -1; }
     for (long long j = 0; j < nc; ++j) { v[j] = 0.0; row4col[j] = -1; path[j] = -1; }
     for (long long cur = 0; cur < nr; ++cur) {
@@ -108,6 +120,7 @@ static void assign(long long nr, long long nc, const double *cost, long long *co
                 if (spc[j] < lowest || (spc[j] == lowest && row4col[j] == -1)) { lowest = spc[j]; index = it; }
             }
             min_val = lowest;
+            if (index < 0 || !(min_val < INFINITY)) return -2;
             long long j = remaining[index];
             if (row4col[j] == -1) sink = j; else i = row4col[j];
             SC[j] = 1;
@@ -126,17 +139,19 @@ static void assign(long long nr, long long nc, const double *cost, long long *co
             if (r == cur) break;
         }
     }
+    return 0;
 }
 
 /* The assignment alone (for tests against scipy): col4row (nr) of cost (nr x nc row-major, nr <= nc,
- * finite). Returns 0, or -1 if memory ran out. */
+ * finite). Returns 0, -1 if memory ran out, -2 if a row has no finite cost. */
 int registration_assign(long long nr, long long nc, const double *cost, long long *col4row)
 {
     double *u = malloc(sizeof(double) * (size_t)(nr + 2 * nc + 1));
     long long *idx = malloc(sizeof(long long) * (size_t)(3 * nc + 1));
     char *flags = malloc((size_t)(nr + nc + 1));
     int status = (u && idx && flags) ? 0 : -1;
-    if (!status) assign(nr, nc, cost, col4row, u, u + nr, u + nr + nc, idx, idx + nc, idx + 2 * nc, flags, flags + nr);
+    if (!status)
+        status = assign(nr, nc, cost, col4row, u, u + nr, u + nr + nc, idx, idx + nc, idx + 2 * nc, flags, flags + nr);
     free(u); free(idx); free(flags);
     return status;
 }
@@ -238,6 +253,7 @@ static int step_pairs(tracker_filter *F, scratch *S, const track_set *T, long lo
             double d2, logdet;
             int flag = call(F, 2, xp, Pp, z, cov + 9 * plot, &d2, &logdet);
             if (flag) return flag;
+            if (!isfinite(d2) || !isfinite(logdet)) continue;
             if (logdet < S->best[l]) S->best[l] = logdet;
             if (d2 < gate) {
                 S->pair_l[k] = l; S->pair_j[k] = j; S->pair_cost[k] = 0.5 * (d2 + logdet);
@@ -282,10 +298,11 @@ static int step_assign(scratch *S, long long n_live, long long m, long long n_pa
     }
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
-    assign(R, nc, A, S->col4row, S->u, S->v, S->spc, S->path, S->row4col, S->remaining, S->SR, S->SC);
+    int status = assign(R, nc, A, S->col4row, S->u, S->v, S->spc, S->path, S->row4col, S->remaining, S->SR, S->SC);
     clock_gettime(CLOCK_MONOTONIC, &t1);
     *seconds += (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
     ++*n_calls;
+    if (status) return status;
     for (long long r = 0; r < R; ++r) {
         long long c = S->col4row[r];
         if (c < C && A[r * nc + c] < FORBIDDEN) {

@@ -38,6 +38,27 @@ def _pointer(a: np.ndarray) -> ctypes.c_void_p:
     return a.ctypes.data_as(ctypes.c_void_p)
 
 
+def _check(bounds, step_plots, p_ecef, cov, time, sensor) -> None:
+    """ValueError unless the arrays fit together (the C loop trusts them)."""
+    n = np.shape(time)[0] if np.ndim(time) == 1 else -1
+    if n < 0 or np.shape(sensor) != (n,) or np.shape(p_ecef) != (n, 3) or np.shape(cov) != (n, 3, 3):
+        raise ValueError(
+            f"time (N,), sensor (N,), p_ecef (N, 3) and cov (N, 3, 3) must agree, got {np.shape(time)}, "
+            f"{np.shape(sensor)}, {np.shape(p_ecef)}, {np.shape(cov)}"
+        )
+    b, steps = np.asarray(bounds), np.asarray(step_plots)
+    if b.ndim != 1 or b.size < 1 or b[0] != 0 or b[-1] != steps.size or (np.diff(b) < 0).any():
+        raise ValueError("bounds must rise from 0 to the number of step plots")
+    if steps.size and (steps.min() < 0 or steps.max() >= n):
+        raise ValueError(f"step plots must be plot indices in [0, {n})")
+    if n and np.min(sensor) < 0:
+        raise ValueError("sensor indices must be >= 0")
+    within = np.ones(max(steps.size - 1, 0), dtype=bool)
+    within[b[1:-1][(b[1:-1] > 0) & (b[1:-1] < steps.size)] - 1] = False  # pairs across a step boundary
+    if (np.diff(np.asarray(sensor)[steps]) < 0)[within].any():
+        raise ValueError("each step's plots must be sorted by sensor")
+
+
 def compiled_tracks(
     bounds: np.ndarray,
     step_plots: np.ndarray,
@@ -56,6 +77,7 @@ def compiled_tracks(
     times ``time`` (N,) s and sensor indices ``sensor`` (N,); ``gate`` the chi-square bound on the
     squared distance, ``accel_sigma`` m/s^2/sqrt(Hz), ``max_speed`` m/s, ``max_missed`` scans.
     RuntimeError if the loop fails (out of memory, or a generated function's error flag)."""
+    _check(bounds, step_plots, p_ecef, cov, time, sensor)
     lib = library()
     functions = manifest()["functions"]
     work = [functions[name]["work"] for name in FILTER_FUNCTIONS]
@@ -99,6 +121,8 @@ def compiled_tracks(
     )
     if status == -1:
         raise RuntimeError("the compiled tracker ran out of memory")
+    if status == -2:
+        raise RuntimeError("the compiled tracker: an assignment had no finite cost")
     if status:
         raise RuntimeError(f"the compiled tracker: generated {FILTER_FUNCTIONS[status - 1]} failed")
     return CompiledTracks(track, float(seconds.value), int(calls.value))
@@ -116,5 +140,5 @@ def compiled_assignment(cost: np.ndarray) -> np.ndarray:
         ctypes.c_longlong(a.shape[0]), ctypes.c_longlong(a.shape[1]), _pointer(a), _pointer(col4row)
     )
     if status:
-        raise RuntimeError("the compiled assignment ran out of memory")
+        raise RuntimeError("the compiled assignment ran out of memory")  # finite costs: always feasible
     return col4row

@@ -93,3 +93,20 @@ def test_the_assignment_is_scipys_even_in_ties(kind):
 def test_the_assignment_refuses_what_it_cannot_solve(cost):
     with pytest.raises(ValueError, match="finite"):
         _codegen.compiled_assignment(cost)
+
+
+def test_the_compiled_assignment_says_when_a_row_has_no_finite_cost():
+    """scipy's "infeasible": the C function returns -2 instead of reading outside its arrays."""
+    import ctypes
+
+    from registration._codegen.cbackend import library
+
+    cost = np.array([[np.inf, np.inf], [1.0, 2.0]])
+    col4row = np.full(2, -1, dtype=np.int64)
+    status = library().registration_assign(
+        ctypes.c_longlong(2),
+        ctypes.c_longlong(2),
+        cost.ctypes.data_as(ctypes.c_void_p),
+        col4row.ctypes.data_as(ctypes.c_void_p),
+    )
+    assert status == -2

@@ -144,11 +144,14 @@ def _match_scan(
     v = p[pj] - np.ascontiguousarray(xp[:, :3])[ki]
     # d2 >= |v|^2 / trace(S): pairs beyond the gate by this bound need no solve
     bound = (Pp[:, 0, 0] + Pp[:, 1, 1] + Pp[:, 2, 2])[ki] + trace[pj]
-    near = np.einsum("ki,ki->k", v, v) < gate * bound
+    # summed in the compiled loop's order: the bound decides which pairs count in ``best`` below
+    near = v[:, 0] * v[:, 0] + v[:, 1] * v[:, 1] + v[:, 2] * v[:, 2] < gate * bound
     ki, pj, v = ki[near], pj[near], v[near]
+    d2, logdet = _gate(xp[ki], Pp[ki], p[pj], cov[pj])
+    finite = np.isfinite(d2) & np.isfinite(logdet)  # not: a covariance not positive definite
+    ki, pj, d2, logdet = ki[finite], pj[finite], d2[finite], logdet[finite]
     if ki.size == 0:
         return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
-    d2, logdet = _gate(xp[ki], Pp[ki], p[pj], cov[pj])
     best = np.full(live.size, np.inf)
     np.minimum.at(best, ki, logdet)
     no_match = 0.5 * (gate + best)
@@ -196,6 +199,8 @@ def sensor_tracks(
     ``compiled``: run the loop in compiled code (``registration._codegen.compiled_tracks``: the
     same steps, generated functions and assignment as the numpy loop here, its reference) or in
     numpy; None (default): compiled on the C backend. Its assignments count in ``assigner``."""
+    if time.size == 0:
+        return np.zeros(0, dtype=np.int64)
     gate = float(chi2_ppf(gate_probability, 3))
     idx, bounds = _scan_steps(time, sensor)
     if compiled is None:
