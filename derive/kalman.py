@@ -38,6 +38,7 @@ from .emit import to_casadi_function
 from .pseudo_measurement import PAIR_DOMAIN
 from .pseudo_measurement import specs as pair_specs
 from .spec import CasadiPort, CasadiSpec
+from .triangular import chol_upper, mirror_upper, tree_sum, whitened
 
 LINEARIZATIONS = ("paper", "relinearized", "fitted")
 #: Covariance updates: ``joseph`` (the functions without a suffix) and ``carlson`` (``_carlson``).
@@ -79,63 +80,7 @@ def _corrected(row: ca.SX, x: ca.SX) -> ca.SX:
 
 def _add_information(info: ca.SX, H: ca.SX, R: ca.SX) -> ca.SX:
     """``info + H^T R^-1 H``, symmetric by construction."""
-    return _mirror_upper(info + H.T @ ca.solve(R, H))
-
-
-def _mirror_upper(A: ca.SX) -> ca.SX:
-    """Symmetric matrix from the upper triangle of A: the lower entries are never computed
-    (about 20 % fewer operations in the step than averaging A and A^T)."""
-    n = A.shape[0]
-    out = ca.SX.zeros(n, n)
-    for i in range(n):
-        for j in range(i, n):
-            out[i, j] = A[i, j]
-            out[j, i] = A[i, j]
-    return out
-
-
-def _tree_sum(terms) -> ca.SX:
-    """Sum by pairs: a dependency chain of log2(n) additions instead of n (the C compiler keeps the
-    order CasADi writes, and the step's time is bound by its longest chain, not its operations)."""
-    terms = list(terms)
-    if not terms:
-        return ca.SX(0)
-    while len(terms) > 1:
-        terms = [terms[i] + terms[i + 1] if i + 1 < len(terms) else terms[i] for i in range(0, len(terms), 2)]
-    return terms[0]
-
-
-def _chol_upper(A: ca.SX) -> tuple[ca.SX, list]:
-    """Upper-triangular U with positive diagonal and ``A = U U^T`` (A symmetric positive definite;
-    only its upper triangle is read), and the reciprocals of its diagonal. The diagonal is a square
-    root of a Schur complement s of A: NaN, never a silently wrong factor, if A is not numerically
-    positive definite. ``1/U_jj = sqrt(1/s)`` and ``U_jj = s sqrt(1/s)``: one division per column
-    (CasADi folds a product with ``1/d`` back into a division, and divisions, not products, bound
-    the step's time)."""
-    n = A.shape[0]
-    U = ca.SX.zeros(n, n)
-    inv: list = [None] * n  # 1/U_jj, filled from the last column
-    for j in reversed(range(n)):
-        s = A[j, j] - _tree_sum(U[j, k] ** 2 for k in range(j + 1, n))
-        inv[j] = ca.sqrt(1 / s)
-        U[j, j] = s * inv[j]
-        for i in range(j):
-            U[i, j] = (A[i, j] - _tree_sum(U[i, k] * U[j, k] for k in range(j + 1, n))) * inv[j]
-    return U, inv
-
-
-def _whitened(R: ca.SX, H: ca.SX) -> ca.SX:
-    """``L^-1 H`` with L the lower Cholesky factor of R (from the upper factor of R reversed),
-    by forward substitution: rows of unit noise."""
-    m = R.shape[0]
-    J = ca.SX(ca.DM.eye(m)[list(reversed(range(m))), :])
-    U, inv = _chol_upper(J @ R @ J)
-    L, inv = J @ U @ J, inv[::-1]
-    rows: list = []
-    for i in range(m):
-        acc = H[i, :] - sum((L[i, k] * rows[k] for k in range(i)), ca.SX.zeros(1, H.shape[1]))
-        rows.append(acc * inv[i])
-    return ca.vertcat(*rows)
+    return mirror_upper(info + H.T @ ca.solve(R, H))
 
 
 def _carlson_scalar(C: ca.SX, h: ca.SX) -> ca.SX:
@@ -148,10 +93,10 @@ def _carlson_scalar(C: ca.SX, h: ca.SX) -> ca.SX:
     alpha = ca.SX(1.0)
     w = [ca.SX(0)] * n
     for j in range(n):
-        sigma = _tree_sum(C[i, j] * h[i] for i in range(j + 1))
+        sigma = tree_sum(C[i, j] * h[i] for i in range(j + 1))
         beta = alpha
         alpha = beta + sigma**2
-        inv_gamma = ca.sqrt(1 / (alpha * beta))  # not 1/sqrt: kept a product (see _chol_upper)
+        inv_gamma = ca.sqrt(1 / (alpha * beta))  # not 1/sqrt: kept a product (see chol_upper)
         eta, zeta = beta * inv_gamma, sigma * inv_gamma
         for i in range(j + 1):
             tau = C[i, j]
@@ -166,15 +111,15 @@ def carlson_update(P_pred: ca.SX, H: ca.SX, R: ca.SX) -> ca.SX:
     then one Carlson update per whitened row. Symmetric by construction (upper triangle of the
     product, mirrored) and positive definite whenever C+ has a positive diagonal (always, for
     a finite P- whose factor exists)."""
-    C, _ = _chol_upper(P_pred)
-    Hw = _whitened(R, H)
+    C, _ = chol_upper(P_pred)
+    Hw = whitened(R, H)
     for k in range(R.shape[0]):
         C = _carlson_scalar(C, Hw[k, :].T)
     n = C.shape[0]
     P_new = ca.SX.zeros(n, n)
     for i in range(n):
         for j in range(i, n):
-            P_new[i, j] = _tree_sum(C[i, k] * C[j, k] for k in range(j, n))
+            P_new[i, j] = tree_sum(C[i, k] * C[j, k] for k in range(j, n))
             P_new[j, i] = P_new[i, j]
     return P_new
 
@@ -215,7 +160,7 @@ def _build(variant: str, linearization: str, update: str = "joseph"):
         x_new = x + K @ nu
         if update == "joseph":
             IKH = ca.SX.eye(N_STATE) - K @ H
-            P_new = _mirror_upper(IKH @ P_pred @ IKH.T + K @ R @ K.T)
+            P_new = mirror_upper(IKH @ P_pred @ IKH.T + K @ R @ K.T)
         else:
             P_new = carlson_update(P_pred, H, R)
         info_new = _add_information(info, H, R)

@@ -24,6 +24,7 @@ runs these per track and per candidate pair, in compiled code (``_tracker.c``) o
 import casadi as ca
 
 from .spec import CasadiPort, CasadiSpec
+from .triangular import backward_substitution, chol_lower, forward_substitution, mirror_upper
 
 STATE = CasadiPort("x", (6, 1), "m, m/s (ECEF position, velocity)")
 COVARIANCE = CasadiPort("P", (6, 6), "m^2, m^2/s, m^2/s^2")
@@ -42,44 +43,6 @@ _DOMAIN = {
 }
 
 
-def _mirror_upper(A: ca.SX) -> ca.SX:
-    """A with its lower triangle replaced by its upper one."""
-    n = A.shape[0]
-    out = ca.SX(A)
-    for i in range(n):
-        for j in range(i):
-            out[i, j] = A[j, i]
-    return out
-
-
-def _chol3(S: ca.SX) -> ca.SX:
-    """Lower Cholesky factor of a symmetric positive definite 3x3 S (its lower triangle read)."""
-    L = ca.SX.zeros(3, 3)
-    for j in range(3):
-        s = S[j, j] - sum((L[j, k] ** 2 for k in range(j)), ca.SX(0))
-        L[j, j] = ca.sqrt(s)
-        for i in range(j + 1, 3):
-            L[i, j] = (S[i, j] - sum((L[i, k] * L[j, k] for k in range(j)), ca.SX(0))) / L[j, j]
-    return L
-
-
-def _forward(L: ca.SX, b: ca.SX) -> ca.SX:
-    """L^-1 b by forward substitution (L lower triangular 3x3, b 3 x m)."""
-    y = ca.SX.zeros(b.shape)
-    for i in range(3):
-        y[i, :] = (b[i, :] - sum((L[i, k] * y[k, :] for k in range(i)), ca.SX.zeros(1, b.shape[1]))) / L[i, i]
-    return y
-
-
-def _backward(L: ca.SX, y: ca.SX) -> ca.SX:
-    """L^-T y by back substitution (L lower triangular 3x3, y 3 x m)."""
-    x = ca.SX.zeros(y.shape)
-    for i in reversed(range(3)):
-        rest = sum((L[k, i] * x[k, :] for k in range(i + 1, 3)), ca.SX.zeros(1, y.shape[1]))
-        x[i, :] = (y[i, :] - rest) / L[i, i]
-    return x
-
-
 def _function(name: str, inputs: list, outputs: list, names_in: list, names_out: list) -> ca.Function:
     """The CasADi function with dense outputs: the runtime reads every output as a dense column-major
     block, and an entry left structurally zero (an eye assigned into a block) would not be written."""
@@ -91,7 +54,7 @@ def _start() -> ca.Function:
     max_speed = ca.SX.sym("max_speed")
     x = ca.vertcat(z, ca.SX.zeros(3, 1))
     P = ca.SX.zeros(6, 6)
-    P[:3, :3] = _mirror_upper(R)
+    P[:3, :3] = mirror_upper(R)
     for i in range(3):
         P[3 + i, 3 + i] = max_speed**2
     return _function("cv_start", [z, R, max_speed], [x, P], ["z", "R", "max_speed"], ["x", "P"])
@@ -108,33 +71,34 @@ def _predict() -> ca.Function:
     Q[:3, 3:] = q2 * dt**2 / 2 * ca.SX.eye(3)
     Q[3:, :3] = q2 * dt**2 / 2 * ca.SX.eye(3)
     Q[3:, 3:] = q2 * dt * ca.SX.eye(3)
-    P_sym = _mirror_upper(P)
-    P_pred = _mirror_upper(F @ P_sym @ F.T + Q)
+    P_sym = mirror_upper(P)
+    P_pred = mirror_upper(F @ P_sym @ F.T + Q)
     return _function(
         "cv_predict", [x, P, dt, q], [F @ x, P_pred], ["x", "P", "dt", "accel_sigma"], ["x_pred", "P_pred"]
     )
 
 
 def _innovation():
-    """Symbols (x-, P-, z, R) and the innovation's Cholesky factor L and residual v = z - x-_p."""
+    """Symbols (x-, P-, z, R), the innovation covariance's lower Cholesky factor L with the
+    reciprocals of its diagonal, and the residual v = z - x-_p."""
     x, P = ca.SX.sym("x_pred", 6, 1), ca.SX.sym("P_pred", 6, 6)
     z, R = ca.SX.sym("z", 3, 1), ca.SX.sym("R", 3, 3)
-    S = _mirror_upper(P[:3, :3] + R)
-    return x, P, z, R, _chol3(S), z - x[:3]
+    S = mirror_upper(P[:3, :3] + R)
+    return x, P, z, R, *chol_lower(S), z - x[:3]
 
 
 def _gate() -> ca.Function:
-    x, P, z, R, L, v = _innovation()
-    y = _forward(L, v)
+    x, P, z, R, L, inv, v = _innovation()
+    y = forward_substitution(L, inv, v)
     d2 = ca.dot(y, y)
-    logdet = 2 * ca.log(L[0, 0] * L[1, 1] * L[2, 2])
+    logdet = 2 * (ca.log(L[0, 0]) + ca.log(L[1, 1]) + ca.log(L[2, 2]))  # a sum: no product to overflow
     return _function("cv_gate", [x, P, z, R], [d2, logdet], ["x_pred", "P_pred", "z", "R"], ["d2", "logdet"])
 
 
 def _update() -> ca.Function:
-    x, P, z, R, L, v = _innovation()
-    P_sym = _mirror_upper(P)
-    Kt = _backward(L, _forward(L, P_sym[:3, :]))  # K^T = S^-1 H P- (3x6)
+    x, P, z, R, L, inv, v = _innovation()
+    P_sym = mirror_upper(P)
+    Kt = backward_substitution(L, inv, forward_substitution(L, inv, P_sym[:3, :]))  # K^T = S^-1 H P- (3x6)
     x_new = x + Kt.T @ v
     P_new = P_sym - Kt.T @ P_sym[:3, :]
     P_new = 0.5 * (P_new + P_new.T)
