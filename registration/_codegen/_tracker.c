@@ -12,7 +12,7 @@
  *    pair's cost (d2 + log det S) / 2 if d2 < gate;
  *  - a pair that is its track's and its plot's only pair is taken alone if it beats the no-match
  *    cost; the other pairs go to one rectangular assignment (rows: their tracks in track order,
- *    columns: their plots in step order, then one no-match column per row; FORBIDDEN elsewhere),
+ *    columns: their plots in step order, then one no-match column per row; `forbidden` elsewhere),
  *    solved by the shortest augmenting path algorithm of D. F. Crouse, "On implementing 2D
  *    rectangular assignment algorithms", IEEE Trans. Aerospace and Electronic Systems 52(4), 2016,
  *    in the column order and tie rule of scipy.optimize.linear_sum_assignment, so that the
@@ -41,8 +41,6 @@
 
 typedef long long int casadi_int;
 typedef int (*casadi_fn)(const double **arg, double **res, casadi_int *iw, double *w, int mem);
-
-#define FORBIDDEN 1.0e12
 
 typedef struct {
     casadi_fn f[4]; /* start, predict, gate, update */
@@ -267,7 +265,7 @@ static int step_pairs(tracker_filter *F, scratch *S, const track_set *T, long lo
 }
 
 /* Pairs taken (match_of_track[l] = j, match_of_plot[j] = l; -1 where none) from the step's pairs. */
-static int step_assign(scratch *S, long long n_live, long long m, long long n_pairs, double gate,
+static int step_assign(scratch *S, long long n_live, long long m, long long n_pairs, double gate, double forbidden,
                        long long *n_calls, double *seconds)
 {
     for (long long l = 0; l < n_live; ++l) { S->n_of_track[l] = 0; S->match_of_track[l] = -1; S->row_of[l] = -1; }
@@ -289,7 +287,7 @@ static int step_assign(scratch *S, long long n_live, long long m, long long n_pa
     long long nc = C + R;
     if (scratch_reserve(S, 0, 0, 0, nc, R * nc)) return -1;
     double *A = S->matrix;
-    for (long long i = 0; i < R * nc; ++i) A[i] = FORBIDDEN;
+    for (long long i = 0; i < R * nc; ++i) A[i] = forbidden;
     for (long long r = 0; r < R; ++r) A[r * nc + C + r] = 0.5 * (gate + S->best[S->rows[r]]);
     for (long long k = 0; k < n_pairs; ++k) {
         long long l = S->pair_l[k], j = S->pair_j[k];
@@ -305,7 +303,7 @@ static int step_assign(scratch *S, long long n_live, long long m, long long n_pa
     if (status) return status;
     for (long long r = 0; r < R; ++r) {
         long long c = S->col4row[r];
-        if (c < C && A[r * nc + c] < FORBIDDEN) {
+        if (c < C && A[r * nc + c] < forbidden) {
             S->match_of_track[S->rows[r]] = S->cols[c];
             S->match_of_plot[S->cols[c]] = S->rows[r];
         }
@@ -323,7 +321,7 @@ int registration_tracks(casadi_fn start, casadi_fn predict, casadi_fn gate_fn, c
                         long long n_steps, const long long *bounds, const long long *step_plots,
                         const double *p, const double *cov, const double *trace, const double *time,
                         const long long *sensor, long long n_sensors,
-                        double gate, double accel_sigma, double max_speed, long long max_missed,
+                        double gate, double forbidden, double accel_sigma, double max_speed, long long max_missed,
                         long long *track, double *seconds, long long *calls)
 {
     tracker_filter F = {{start, predict, gate_fn, update}, arg, res, iw, w};
@@ -358,7 +356,7 @@ int registration_tracks(casadi_fn start, casadi_fn predict, casadi_fn gate_fn, c
         }
         long long n_pairs = 0;
         if ((status = step_pairs(&F, &S, &T, n_live, step, m, lo, hi, p, cov, trace, gate, &n_pairs))) goto done;
-        if ((status = step_assign(&S, n_live, m, n_pairs, gate, calls, seconds))) goto done;
+        if ((status = step_assign(&S, n_live, m, n_pairs, gate, forbidden, calls, seconds))) goto done;
         for (long long l = 0; l < n_live; ++l) {
             long long k = S.live[l], j = S.match_of_track[l];
             if (j < 0) { T.missed[k] += 1; continue; }

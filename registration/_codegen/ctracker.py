@@ -68,6 +68,7 @@ def compiled_tracks(
     sensor: np.ndarray,
     *,
     gate: float,
+    forbidden: float,
     accel_sigma: float,
     max_speed: float,
     max_missed: int,
@@ -75,7 +76,8 @@ def compiled_tracks(
     """Run the tracker over the steps ``step_plots[bounds[s]:bounds[s + 1]]`` (plot indices, each
     step sorted by sensor) of plots at ``p_ecef`` (N, 3) m with covariances ``cov`` (N, 3, 3) m^2,
     times ``time`` (N,) s and sensor indices ``sensor`` (N,); ``gate`` the chi-square bound on the
-    squared distance, ``accel_sigma`` m/s^2/sqrt(Hz), ``max_speed`` m/s, ``max_missed`` scans.
+    squared distance, ``forbidden`` the assignment's cost of a pair not allowed (above any real
+    cost), ``accel_sigma`` m/s^2/sqrt(Hz), ``max_speed`` m/s, ``max_missed`` scans.
     RuntimeError if the loop fails (out of memory, or a generated function's error flag)."""
     _check(bounds, step_plots, p_ecef, cov, time, sensor)
     lib = library()
@@ -112,6 +114,7 @@ def compiled_tracks(
         _pointer(s),
         ctypes.c_longlong(int(s.max()) + 1 if n else 1),
         ctypes.c_double(gate),
+        ctypes.c_double(forbidden),
         ctypes.c_double(accel_sigma),
         ctypes.c_double(max_speed),
         ctypes.c_longlong(max_missed),

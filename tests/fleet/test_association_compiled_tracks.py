@@ -135,4 +135,6 @@ def test_the_compiled_loop_refuses_arrays_that_do_not_fit(change, message):
     )
     arrays.update(change)
     with pytest.raises(ValueError, match=message):
-        _codegen.compiled_tracks(**arrays, gate=11.3, accel_sigma=1.0, max_speed=10.0, max_missed=2)
+        _codegen.compiled_tracks(
+            **arrays, gate=11.3, forbidden=1e12, accel_sigma=1.0, max_speed=10.0, max_missed=2
+        )

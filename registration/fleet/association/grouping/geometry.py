@@ -47,6 +47,7 @@ __all__ = [
     "N_COEF",
     "N_LINE",
     "TIME_BIAS_SLOT",
+    "FORBIDDEN",
     "UNCONSTRAINED_SIGMA_M",
     "PlotGeometry",
     "plot_geometry",

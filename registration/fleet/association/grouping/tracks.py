@@ -28,7 +28,7 @@ import numpy as np
 from registration import _codegen
 from registration._generated import api as generated
 from registration.core.distributions import chi2_ppf
-from registration.fleet.association.grouping.geometry import Assigner, PlotGeometry
+from registration.fleet.association.grouping.geometry import FORBIDDEN, Assigner, PlotGeometry
 
 __all__ = ["sensor_tracks", "track_breaks"]
 
@@ -214,6 +214,7 @@ def sensor_tracks(
             time,
             sensor,
             gate=gate,
+            forbidden=FORBIDDEN,
             accel_sigma=accel_sigma,
             max_speed=max_speed,
             max_missed=max_missed,
